@@ -1,0 +1,12 @@
+# Shared paths and helpers for the rig's scripts. Sourced, never run.
+set -euo pipefail
+RIG_DIR="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
+TOOLS_DIR="$(dirname "$RIG_DIR")"
+PKG_DIR="$(dirname "$TOOLS_DIR")"
+# Build outputs live outside the package so Unity never sees them and git ignores them.
+BUILD_DIR="${GT_BUILD_DIR:-$PKG_DIR/.build}"
+mkdir -p "$BUILD_DIR"
+export DOTNET_CLI_TELEMETRY_OPTOUT=1 DOTNET_NOLOGO=1 DOTNET_SKIP_FIRST_TIME_EXPERIENCE=1
+
+say() { printf '[gt] %s\n' "$*" >&2; }
+die() { printf '[gt] error: %s\n' "$*" >&2; exit 1; }
