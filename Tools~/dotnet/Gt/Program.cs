@@ -1,0 +1,39 @@
+using System;
+using System.Collections.Generic;
+
+namespace GregoryTerrain.Rig
+{
+    /// <summary>
+    /// The rig's C# front end. Each command is a thin layer over Core; the shell scripts in
+    /// Tools~/rig call it. Usage: gt-cli COMMAND [--option value ...]
+    /// </summary>
+    static class Program
+    {
+        static readonly Dictionary<string, (string help, Func<Args, int> run)> Commands =
+            new Dictionary<string, (string, Func<Args, int>)>(StringComparer.Ordinal);
+
+        static int Main(string[] argv)
+        {
+            Register();
+            if (argv.Length == 0 || !Commands.TryGetValue(argv[0], out var cmd))
+            {
+                Console.Error.WriteLine("usage: gt-cli COMMAND [options]");
+                foreach (var kv in Commands) Console.Error.WriteLine($"  {kv.Key,-12} {kv.Value.help}");
+                return argv.Length == 0 ? 0 : 2;
+            }
+            try
+            {
+                return cmd.run(new Args(argv, 1));
+            }
+            catch (Exception e) when (e is ArgumentException || e is FormatException || e is System.IO.IOException)
+            {
+                Console.Error.WriteLine($"gt-cli {argv[0]}: {e.Message}");
+                return 1;
+            }
+        }
+
+        static void Register()
+        {
+        }
+    }
+}
