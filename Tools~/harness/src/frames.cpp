@@ -72,13 +72,13 @@ FrameResults runFrames(const Gpu& gpu, const RenderTarget& target, const Pipelin
         vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_VERTEX_INPUT_BIT |
                              VK_PIPELINE_STAGE_VERTEX_SHADER_BIT, 0, 1, &b, 0, nullptr, 0, nullptr);
     }
+    if (stats.pool) vkCmdBeginQuery(cmd, stats.pool, 0, 0);
     beginRenderPass(cmd, target);
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline.pipeline);
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline.layout, 0, 1, &pipeline.set, 0, nullptr);
-    if (stats.pool) vkCmdBeginQuery(cmd, stats.pool, 0, 0);
     recordDraws(cmd, work);
-    if (stats.pool) vkCmdEndQuery(cmd, stats.pool, 0);
     vkCmdEndRenderPass(cmd);
+    if (stats.pool) vkCmdEndQuery(cmd, stats.pool, 0);
     if (times.pool) vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, times.pool, 1);
     // Shader writes to the readback buffer become visible to the host after the fence.
     VkMemoryBarrier toHost{VK_STRUCTURE_TYPE_MEMORY_BARRIER};

@@ -35,7 +35,7 @@ StatsQuery createStatsQuery(const Gpu& gpu) {
 
 std::vector<std::pair<std::string, uint64_t>> readStats(const Gpu& gpu, const StatsQuery& q) {
     std::vector<uint64_t> values(q.names.size());
-    GT_VK(vkGetQueryPoolResults(gpu.device, q.pool, 0, 1, values.size() * 8, values.data(), 8,
+    GT_VK(vkGetQueryPoolResults(gpu.device, q.pool, 0, 1, values.size() * 8, values.data(), values.size() * 8,
                                 VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT));
     std::vector<std::pair<std::string, uint64_t>> out;
     for (size_t i = 0; i < values.size(); ++i) out.emplace_back(q.names[i], values[i]);
