@@ -5,7 +5,8 @@
 // Readback (GT_READBACK), 3 float4 per vertex at
 //   vertex = tile * (F+1)^2 + round(t*F) * (F+1) + round(s*F)      (internals.md)
 //   [0] (object position x, y, z, 1)    object = (q.x, height, q.y)
-//   [1] (s, t, tile, SV_PrimitiveID)    tile from SV_VertexID / 4; PrimitiveID only reported
+//   [1] (s, t, tile, SV_PrimitiveID)    tile from SV_VertexID / 4; the hull stage's PrimitiveID,
+//                                       only reported: it restarts at 0 in every draw
 //   [2] (_ControlPoints[tile].x, _Regions[tile].y, _GridLines[tile], M)   binding checks
 #include "common.hlsl"
 
@@ -19,6 +20,7 @@ struct TileFactors
 {
     float edges[4] : SV_TessFactor;
     float inside[2] : SV_InsideTessFactor;
+    uint primitive : PRIMITIVE_ID;  // SV_PrimitiveID of the hull stage, for the readback
 };
 
 struct Fragment
@@ -35,9 +37,10 @@ TileVertex vert(uint id : SV_VertexID)
     return v;
 }
 
-TileFactors hull_constant(InputPatch<TileVertex, 4> patch)
+TileFactors hull_constant(InputPatch<TileVertex, 4> patch, uint primitive : SV_PrimitiveID)
 {
     TileFactors f;
+    f.primitive = primitive;
     float factor = _Tess.w;  // uniform integer factor
     f.edges[0] = f.edges[1] = f.edges[2] = f.edges[3] = factor;
     f.inside[0] = f.inside[1] = factor;
@@ -61,9 +64,9 @@ float3 TileColor(uint tile)
 }
 
 [domain("quad")]
-Fragment domain_shader(TileFactors factors, float2 st : SV_DomainLocation, const OutputPatch<TileVertex, 4> patch,
-                       uint primitive : SV_PrimitiveID)
+Fragment domain_shader(TileFactors factors, float2 st : SV_DomainLocation, const OutputPatch<TileVertex, 4> patch)
 {
+    uint primitive = factors.primitive;
     uint tile = patch[0].tile;
     float tiles = _Tess.x;
     uint m = (uint)tiles;
