@@ -37,7 +37,10 @@ ShaderModule loadShader(const Gpu& gpu, const std::string& path, uint32_t execut
     if (words[0] != kMagic) fail("'" + path + "' is not SPIR-V (bad magic number)");
 
     std::vector<std::string> names = entryPoints(words, executionModel);
-    if (names.empty()) fail("'" + path + "' has no entry point of the stage it is given for");
+    static const char* stageNames[] = {"vertex", "tessellation control", "tessellation evaluation", "geometry", "fragment"};
+    if (names.empty())
+        fail("'" + path + "' has no " + (executionModel < 5 ? stageNames[executionModel] : "matching") +
+             " entry point: is it the right stage's SPIR-V?");
     ShaderModule s;
     s.path = path;
     auto has = [&](const std::string& n) { for (auto& x : names) if (x == n) return true; return false; };

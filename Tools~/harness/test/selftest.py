@@ -214,7 +214,14 @@ def main():
         check("static mesh covers a quarter", int(value(l, "image", "nonsky_pixels")[0]) == 64 * 64, str(l.get("image")))
         check("static mesh prints times", value(l, "time", "frame_ms_median") is not None, str(l.get("time")))
 
-    # 7. Errors: bad file size, missing split possibility, unknown device.
+    # 7. Wireframe draws lines only: something drawn, less than the filled image.
+    p, l = run(tess_args(d, 4, extra=["--max-factor", "8", "--wireframe", "--png", WORK + "/wireframe.png"]))
+    check("wireframe runs", p.returncode == 0, p.stderr.strip())
+    if p.returncode == 0:
+        nonsky = int(value(l, "image", "nonsky_pixels")[0])
+        check("wireframe draws lines only", 0 < nonsky < 128 * 128, "nonsky %d" % nonsky)
+
+    # 8. Errors: bad file size, missing split possibility, unknown device.
     bad = make_inputs(WORK + "/in_bad", 4, 8)
     write_f32(bad + "/params.f32", [0] * 35)
     p, l = run(tess_args(bad, 4))
