@@ -31,7 +31,8 @@ float3 TessFactorColor(float factor)
 float3 TerrainAlbedo(TerrainVaryings i)
 {
 #if defined(GT_HEIGHT_COLOR)
-    return HeightColorBlend(i.heightAndColorNoise.x, i.heightAndColorNoise.y, HeightColorSettings(),
+    // heightAndColorNoise = (z, l); eq. 14-15 with gamma = _HeightColor.x.
+    return HeightColorBlend(i.heightAndColorNoise.y, i.heightAndColorNoise.x, HeightColorSettings().x,
                             HeightColorLow(), HeightColorHigh());
 #else
     return GT_DEFAULT_ALBEDO;

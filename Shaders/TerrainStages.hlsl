@@ -61,14 +61,15 @@ TileCorner vert(uint vertexID : SV_VertexID)
 
 // True when the tile's box lies outside the view. The box is the corners' bounds, grown in height
 // by the noise bound (GT_NOISE) plus the corners' own height spread: a cheap allowance for the
-// surface rising between corners, which the corners alone cannot see.
-bool TileCulled(InputPatch<TileCorner, 4> corners)
+// surface rising between corners, which the corners alone cannot see. (Takes the corners as an
+// array, not the InputPatch: not every HLSL compiler accepts an InputPatch as a helper argument.)
+bool TileCulled(float3 cornerOS[4])
 {
-    float3 lo = corners[0].positionOS, hi = lo;
+    float3 lo = cornerOS[0], hi = lo;
     [unroll] for (uint c = 1; c < 4; c++)
     {
-        lo = min(lo, corners[c].positionOS);
-        hi = max(hi, corners[c].positionOS);
+        lo = min(lo, cornerOS[c]);
+        hi = max(hi, cornerOS[c]);
     }
     float margin = hi.y - lo.y;
 #if defined(GT_NOISE)
@@ -82,7 +83,8 @@ bool TileCulled(InputPatch<TileCorner, 4> corners)
         float3 p = float3((k & 1u) ? hi.x : lo.x, (k & 2u) ? hi.y : lo.y, (k & 4u) ? hi.z : lo.z);
         boxCS[k] = GT_ObjectToClip(p);
     }
-    return ClipBoxOutsideFrustum(boxCS);
+    // The height margin is already in the box (object units), so no clip-space margin on top.
+    return BoxOutsideFrustum(boxCS, 0.0);
 }
 
 TileFactors hull_const(InputPatch<TileCorner, 4> corners)
@@ -97,15 +99,18 @@ TileFactors hull_const(InputPatch<TileCorner, 4> corners)
         f.inside[0] = f.inside[1] = u;
         return f;
     }
-    if (TileCulled(corners))
+    float3 cornerOS[4];
+    [unroll] for (uint c = 0; c < 4; c++)
+        cornerOS[c] = corners[c].positionOS;
+    if (TileCulled(cornerOS))
     {
         f.edge[0] = f.edge[1] = f.edge[2] = f.edge[3] = 0.0;   // a zero edge factor drops the patch
         f.inside[0] = f.inside[1] = 0.0;
         return f;
     }
     float4 cornerCS[4];
-    [unroll] for (uint c = 0; c < 4; c++)
-        cornerCS[c] = GT_ObjectToClip(corners[c].positionOS);
+    [unroll] for (uint k = 0; k < 4; k++)
+        cornerCS[k] = GT_ObjectToClip(cornerOS[k]);
     // Each factor depends only on its edge's two endpoints, taken in the same order (lower tess
     // coordinate first) by both tiles that share the edge: their factors agree bit for bit, so the
     // tessellated edges match (no cracks).
@@ -115,6 +120,9 @@ TileFactors hull_const(InputPatch<TileCorner, 4> corners)
     f.edge[1] = EdgeTessFactor(cornerCS[0], cornerCS[1], screen, pixels, maxFactor);   // v = 0
     f.edge[2] = EdgeTessFactor(cornerCS[1], cornerCS[3], screen, pixels, maxFactor);   // u = 1
     f.edge[3] = EdgeTessFactor(cornerCS[2], cornerCS[3], screen, pixels, maxFactor);   // v = 1
+    // Inside factors follow the edges they run along: inside[0] subdivides along u, like the
+    // v = 0 and v = 1 edges. (TessInsideFactor, the max of all four, would over-tessellate long
+    // thin tiles in their short direction.)
     f.inside[0] = max(f.edge[1], f.edge[3]);
     f.inside[1] = max(f.edge[0], f.edge[2]);
     return f;
@@ -130,6 +138,9 @@ TileCorner hull_shader(InputPatch<TileCorner, 4> corners, uint id : SV_OutputCon
     return corners[id];
 }
 
+// The patch index comes from the control points (SV_VertexID / 4), not from SV_PrimitiveID: in
+// paper mode too, because SV_PrimitiveID restarts at 0 in every draw when the rig splits a draw
+// (lavapipe's vertex limit) while SV_VertexID keeps counting from firstVertex.
 [domain("quad")]
 TerrainVaryings domain_shader(TileFactors factors, const OutputPatch<TileCorner, 4> corners,
                               float2 tess : SV_DomainLocation)
