@@ -50,9 +50,10 @@ ALLOWED_OUTPUT = [
 
 # GLSL ES: tessellation is core in ES 3.20, so no GL_EXT_tessellation_shader is needed there; the
 # ES outputs recompile with glslang as they are.
-# MSL: all five stages convert (also without options); 2.1 is asked for as the Metal version that
-# Unity's tessellation path needs at least. spirv-cross turns tesc into a compute kernel; the vertex stage that feeds it must write its
-# outputs to a buffer (--msl-capture-output), as Metal's tessellation pipeline reads them there.
+# MSL: all five stages convert (also without options); the version is pinned to 2.1 so the output
+# does not change with spirv-cross's default. spirv-cross turns tesc into a compute kernel; the
+# vertex stage that feeds it must write its outputs to a buffer (--msl-capture-output), as Metal's
+# tessellation pipeline reads them there.
 # The Metal output is generated and checked for spirv-cross errors only: no Metal compiler here.
 MSL_OPTIONS = ["--msl", "--msl-version", "20100"]
 MSL_STAGE_OPTIONS = {"vert": ["--msl-capture-output"]}
