@@ -47,7 +47,7 @@ float SnowExposureEvaluate(StructuredBuffer<float4> field, uint2 cell, float4 gr
     for (int k = 1; k <= steps; k++)
     {
         float t = k * stepLength;
-        float2 p = x - fall.xy * t;
+        float2 p = x + fall.xy * t; // fall.xy points upwind
         if (p.x < 0.0 || p.x > 1.0 || p.y < 0.0 || p.y > 1.0) break; // beyond the terrain: open ground
         float dz = SnowExposureSampleHeight(field, grid, p) - h0;
         occlusion = max(occlusion, SnowExposureOcclusion(dz, t, fall.z, fall.w));

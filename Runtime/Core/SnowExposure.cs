@@ -64,7 +64,7 @@ namespace GregoryTerrain
             for (int k = 1; k <= steps; k++)
             {
                 float t = k * stepLength;
-                Float2 p = new Float2(x.x - fall.x * t, x.y - fall.y * t);
+                Float2 p = new Float2(x.x + fall.x * t, x.y + fall.y * t);
                 if (p.x < 0f || p.x > 1f || p.y < 0f || p.y > 1f) break;
                 float dz = SampleHeight(field, grid, p) - h0;
                 occlusion = Math.Max(occlusion, Occlusion(dz, t, fall.z, fall.w));
