@@ -29,4 +29,9 @@ if [ -f "$TOOLS_DIR/harness/CMakeLists.txt" ]; then
   cmake -S "$TOOLS_DIR/harness" -B "$BUILD_DIR/harness" -DCMAKE_BUILD_TYPE=Release >/dev/null
   cmake --build "$BUILD_DIR/harness" -j "$(nproc)" >/dev/null || cmake --build "$BUILD_DIR/harness"
 fi
+if [ -f "$TOOLS_DIR/computerig/CMakeLists.txt" ]; then
+  say "building the Vulkan compute runner"
+  cmake -S "$TOOLS_DIR/computerig" -B "$BUILD_DIR/computerig" -DCMAKE_BUILD_TYPE=Release >/dev/null
+  cmake --build "$BUILD_DIR/computerig" -j "$(nproc)" >/dev/null || cmake --build "$BUILD_DIR/computerig"
+fi
 say "setup done"
