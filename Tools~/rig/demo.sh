@@ -2,7 +2,7 @@
 # noise + height colour shaders, and renders the grid through the package's shaders with the
 # harness at the paper's ranges g = h = 1.0, 0.5, 0.2, 0.1, 0.02 (c = d = 0), each range filling
 # the same view (the paper's zoom view). Prints vertices and triangles per range (pipeline
-# statistics: tessellation evaluation invocations and clipping primitives).
+# statistics: tessellation evaluation invocations and clipping invocations, the triangles entering the clipper).
 #   gt demo [--docs] [--no-setup] [--device SUBSTR] [--tiles M] [--factor F] [--width W] [--height H]
 # Writes .build/demo/demo_g<g>.png; with --docs also Documentation~/images/demo_g<g>.png (small RGB).
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
@@ -49,7 +49,7 @@ for g in 1.0 0.5 0.2 0.1 0.02; do
     --buffers "$dir" --patches $((tiles * tiles)) --width "$width" --height "$height" \
     --png "$out/demo_g$g.png" --stats "${dev[@]}" >"$log" 2>&1 || { cat "$log" >&2; die "harness failed at g = $g"; }
   verts=$(awk '$1=="stat" && $2=="tessellation_evaluation_shader_invocations" {print $3}' "$log")
-  tris=$(awk '$1=="stat" && $2=="clipping_primitives" {print $3}' "$log")
+  tris=$(awk '$1=="stat" && $2=="clipping_invocations" {print $3}' "$log")
   nonsky=$(awk '$1=="image" && $2=="nonsky_pixels" {print $3 " of " $5}' "$log")
   printf '%-6s %-24s %12s %12s %14s\n' "$g" "0,0,$g,$g" "$verts" "$tris" "$nonsky"
   if [ "$docs" = 1 ]; then
