@@ -80,12 +80,13 @@ namespace GregoryTerrain.Rig
         /// </summary>
         static CornerRun Corner(Double2 q, double span, PatchGrid grid, NoiseSettings noise, bool noiseOn)
         {
-            double c = q.x, d = q.y, s = 0, t = 0;
-            if (c + span > 1) { c = q.x - span; s = 1; }
-            if (d + span > 1) { d = q.y - span; t = 1; }
-            var range = new TerrainRange(c, d, c + span, d + span);
-            if (s == 1) range.g = q.x;
-            if (t == 1) range.h = q.y;
+            // At the far corner the GPU forms q = c + 1 (g - c). With g the float of the point and
+            // c = g - span (exact for a power-of-two span), g - c is exact, so q is that float exactly,
+            // just as q = c is at the near corner.
+            double c = q.x, d = q.y, s = 0, t = 0, g, h;
+            if (c + span > 1) { g = (float)q.x; c = g - span; s = 1; } else g = c + span;
+            if (d + span > 1) { h = (float)q.y; d = h - span; t = 1; } else h = d + span;
+            var range = new TerrainRange(c, d, g, h);
             // The octave count follows the range; budget it as a view of the whole terrain with
             // VerticesPerUnit vertices across would (the span's share of them), so the point gets the
             // noise such a view shows, not the few octaves a 1 x 1 tile alone would allow.
