@@ -22,14 +22,23 @@ void GregoryEvaluate(float3 cp[20], float2 uv, out float3 position, out float3 d
     }
 }
 
-// Unit normal normalize(cross(dP/du, dP/dv)); zero where the patch is degenerate (as GMath.normalize).
+// Unit normal of a surface with these partial derivatives: cross(dPdu, dPdv) / length, zero where
+// they are parallel (a degenerate patch) instead of NaN. Takes derivatives, so a caller that has
+// added a detail term (the noise gradient) gets the normal of the sum. Mirrors
+// GregoryEval.NormalFromDerivatives.
+float3 GregoryNormalFromDerivatives(float3 dPdu, float3 dPdv)
+{
+    float3 n = cross(dPdu, dPdv);
+    float l = length(n);
+    return l > 0.0 ? n / l : float3(0.0, 0.0, 0.0);
+}
+
+// Unit normal normalize(cross(dP/du, dP/dv)) of the patch at uv.
 float3 GregoryNormal(float3 cp[20], float2 uv)
 {
     float3 position, dPdu, dPdv;
     GregoryEvaluate(cp, uv, position, dPdu, dPdv);
-    float3 n = cross(dPdu, dPdv);
-    float l = length(n);
-    return l > 0.0 ? n / l : float3(0.0, 0.0, 0.0);
+    return GregoryNormalFromDerivatives(dPdu, dPdv);
 }
 
 #endif // GT_GREGORY_EVAL_INCLUDED

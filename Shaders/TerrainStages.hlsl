@@ -121,10 +121,10 @@ TileFactors hull_const(InputPatch<TileCorner, 4> corners)
     f.edge[2] = EdgeTessFactor(cornerCS[1], cornerCS[3], screen, pixels, maxFactor);   // u = 1
     f.edge[3] = EdgeTessFactor(cornerCS[2], cornerCS[3], screen, pixels, maxFactor);   // v = 1
     // Inside factors follow the edges they run along: inside[0] subdivides along u, like the
-    // v = 0 and v = 1 edges. (TessInsideFactor, the max of all four, would over-tessellate long
-    // thin tiles in their short direction.)
-    f.inside[0] = max(f.edge[1], f.edge[3]);
-    f.inside[1] = max(f.edge[0], f.edge[2]);
+    // v = 0 and v = 1 edges.
+    float2 inside = TessInsideFactors(f.edge[0], f.edge[1], f.edge[2], f.edge[3]);
+    f.inside[0] = inside.x;
+    f.inside[1] = inside.y;
     return f;
 }
 

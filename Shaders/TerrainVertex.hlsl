@@ -53,16 +53,6 @@ struct TerrainSurfacePoint
 // maps normals too.
 float3 TerrainToObject(float3 v) { return v.xzy; }
 
-// Unit normal of a surface with these partial derivatives; zero where they are parallel (a
-// degenerate patch), as GregoryNormal does. GregoryNormal takes the control points and evaluates
-// again; here the derivatives already carry the noise term, so the cross product is taken directly.
-float3 SurfaceNormal(float3 dSdu, float3 dSdv)
-{
-    float3 n = cross(dSdu, dSdv);
-    float l = length(n);
-    return l > 0.0 ? n / l : float3(0.0, 0.0, 0.0);
-}
-
 // drawPatch: the index of the patch being drawn: a tile (tile mode, tile = tj * M + ti) or, with
 // GT_PAPER_MODE, a Gregory patch. tess: the coordinate inside it, in [0, 1]^2.
 TerrainSurfacePoint EvaluateSurface(uint drawPatch, float2 tess)
@@ -136,7 +126,8 @@ TerrainVaryings TerrainVertex(uint drawPatch, float2 tess, float tessFactor)
     dPdv.z += gradient.y * regionSize.y;
 #endif
 
-    float3 normal = SurfaceNormal(dPdu, dPdv);
+    // The derivatives already carry the noise term, so the normal is taken from them directly.
+    float3 normal = GregoryNormalFromDerivatives(dPdu, dPdv);
     float3 positionOS = TerrainToObject(position);
     float3 normalOS = TerrainToObject(normal);
 

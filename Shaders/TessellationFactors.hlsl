@@ -32,9 +32,13 @@ float EdgeTessFactor(float4 clip0, float4 clip1, float2 screenSize, float target
     return clamp(len / targetPixels, 1.0, maxFactor);
 }
 
-float TessInsideFactor(float e0, float e1, float e2, float e3)
+// Inside factors of a quad from its edge factors (e0: u = 0, e1: v = 0, e2: u = 1, e3: v = 1): each
+// follows the two edges running the same way, x (inside[0], along u) = max(e1, e3), y (inside[1],
+// along v) = max(e0, e2). The max of all four would over-tessellate long thin tiles in their short
+// direction.
+float2 TessInsideFactors(float e0, float e1, float e2, float e3)
 {
-    return max(max(e0, e1), max(e2, e3));
+    return float2(max(e1, e3), max(e0, e2));
 }
 
 // Plane p of the widened clip volume -w - m <= x, y <= w + m, w >= -m

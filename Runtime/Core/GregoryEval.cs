@@ -67,14 +67,36 @@ namespace GregoryTerrain
         public static Float3 Normal(ReadOnlySpan<Float3> cp, float u, float v)
         {
             Evaluate(cp, u, v, out _, out Float3 du, out Float3 dv);
-            return normalize(cross(du, dv));
+            return NormalFromDerivatives(du, dv);
         }
 
         /// <summary>Unit normal <c>normalize(cross(dP/du, dP/dv))</c> in double (zero where the patch is degenerate).</summary>
         public static Double3 Normal(ReadOnlySpan<Double3> cp, double u, double v)
         {
             Evaluate(cp, u, v, out _, out Double3 du, out Double3 dv);
-            return normalize(cross(du, dv));
+            return NormalFromDerivatives(du, dv);
+        }
+
+        /// <summary>
+        /// Unit normal of a surface with partial derivatives <paramref name="dPdu"/>, <paramref name="dPdv"/>:
+        /// <c>cross(dPdu, dPdv) / length</c>, the zero vector where they are parallel (a degenerate
+        /// patch) instead of NaN. Takes derivatives, not control points, so a caller that has already
+        /// added a detail term (the noise gradient) gets the normal of the sum. Mirrors HLSL
+        /// <c>GregoryNormalFromDerivatives</c> step for step (cross, sqrt of the dot, one division).
+        /// </summary>
+        public static Float3 NormalFromDerivatives(Float3 dPdu, Float3 dPdv)
+        {
+            Float3 n = cross(dPdu, dPdv);
+            float l = length(n);
+            return l > 0f ? n / l : Float3.zero;
+        }
+
+        /// <summary>The double reference of <see cref="NormalFromDerivatives(Float3, Float3)"/>.</summary>
+        public static Double3 NormalFromDerivatives(Double3 dPdu, Double3 dPdv)
+        {
+            Double3 n = cross(dPdu, dPdv);
+            double l = length(n);
+            return l > 0.0 ? n / l : Double3.zero;
         }
 
         static void CheckCount(int n)

@@ -67,8 +67,15 @@ namespace GregoryTerrain
             return EdgeTessFactor(viewProjection.TransformPoint(p0), viewProjection.TransformPoint(p1), screenSize, targetPixels, maxFactor);
         }
 
-        /// <summary>The inside factor: the largest of the four edge factors (never coarser than any edge).</summary>
-        public static float InsideFactor(float e0, float e1, float e2, float e3) => Math.Max(Math.Max(e0, e1), Math.Max(e2, e3));
+        /// <summary>
+        /// The two inside factors of a quad tile from its edge factors, edge order of the quad domain
+        /// (e0: u = 0, e1: v = 0, e2: u = 1, e3: v = 1). Each inside factor follows the two edges that run
+        /// the same way: <c>x</c> (inside[0], subdivides along u) = <c>max(e1, e3)</c>, <c>y</c> (inside[1],
+        /// along v) = <c>max(e0, e2)</c>. The max of all four would over-tessellate a long thin tile in its
+        /// short direction. Mirrors HLSL <c>TessInsideFactors</c>.
+        /// </summary>
+        public static Float2 InsideFactors(float e0, float e1, float e2, float e3) =>
+            new Float2(Math.Max(e1, e3), Math.Max(e0, e2));
 
         // ------------------------------------------------------------ culling
 

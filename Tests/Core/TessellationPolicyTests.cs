@@ -61,7 +61,22 @@ namespace GregoryTerrain.Tests
             float far = TessellationPolicy.EdgeTessFactor(vp, new Float3(0, -0.5f, -100), new Float3(0, 0.5f, -100), Screen, 2f, 64f);
             Assert.That(far, Is.LessThan(f));
             Assert.That(TessellationPolicy.EdgeTessFactor(vp, new Float3(0, 0, -10), new Float3(0, 0, 5), Screen, 2f, 64f), Is.EqualTo(64f));
-            Assert.That(TessellationPolicy.InsideFactor(3f, 9f, 2f, 4f), Is.EqualTo(9f));
+        }
+
+        [Test]
+        public void InsideFactorsFollowTheEdgesRunningTheSameWay()
+        {
+            // e0 (u = 0) and e2 (u = 1) run along v; e1 (v = 0) and e3 (v = 1) run along u.
+            Float2 inside = TessellationPolicy.InsideFactors(3f, 9f, 2f, 4f);
+            Assert.That(inside.x, Is.EqualTo(9f), "inside[0] (along u) = max(e1, e3)");
+            Assert.That(inside.y, Is.EqualTo(3f), "inside[1] (along v) = max(e0, e2)");
+            // A long thin tile: fine along its long direction, still coarse across.
+            Float2 thin = TessellationPolicy.InsideFactors(1f, 40f, 1.5f, 38f);
+            Assert.That(thin.x, Is.EqualTo(40f));
+            Assert.That(thin.y, Is.EqualTo(1.5f));
+            // Never coarser than either edge it runs along.
+            Assert.That(inside.x, Is.GreaterThanOrEqualTo(4f));
+            Assert.That(inside.y, Is.GreaterThanOrEqualTo(2f));
         }
 
         [Test]

@@ -35,6 +35,7 @@ namespace GregoryTerrain.Rig
         static void Register()
         {
             Commands["demo-grid"] = ("build the 5x5 sample grid fitted to a procedural heightmap (--out FILE)", DemoGridCommand.Run);
+            Commands["eval"] = ("Core float, Core double and (--gpu) GPU position and normal at points (--grid FILE --points \"x,y;...\")", EvalCommand.Run);
             Commands["pack"] = ("write the harness's buffer files for one scene (--grid FILE --out DIR ...)", PackCommand.Run);
         }
     }

@@ -6,7 +6,7 @@ namespace GregoryTerrain.Rig
     /// The rig's camera: the 36 floats of the <c>RigCamera</c> cbuffer (internals.md, binding 1).
     /// Matrices are built in double, row-major in maths (<c>clip = M * p</c>), and written column
     /// after column, which is how HLSL's default column_major packing reads them.
-    /// Vulkan clip space: y down, depth 0..1.
+    /// Clip space as HLSL/D3D has it: y up (the harness flips the viewport), depth 0..1.
     /// </summary>
     sealed class RigCamera
     {
@@ -31,11 +31,12 @@ namespace GregoryTerrain.Rig
                 { 0, 0, 0, 1 },
             };
             double t = 1.0 / Math.Tan(fovYDegrees * Math.PI / 360.0), aspect = (double)width / height;
-            // Right-handed view (camera looks down -z) to Vulkan clip: y flipped, depth near 0 far 1.
+            // Right-handed view (camera looks down -z) to D3D-style clip: y up (the harness's viewport
+            // has a negative height, as internals.md says), depth near 0 far 1.
             var proj = new double[,]
             {
                 { t / aspect, 0, 0, 0 },
-                { 0, -t, 0, 0 },
+                { 0, t, 0, 0 },
                 { 0, 0, far / (near - far), near * far / (near - far) },
                 { 0, 0, -1, 0 },
             };
@@ -72,7 +73,8 @@ namespace GregoryTerrain.Rig
             var c = new double[4];
             for (int i = 0; i < 4; i++)
                 c[i] = m[i, 0] * objectPoint[0] + m[i, 1] * objectPoint[1] + m[i, 2] * objectPoint[2] + m[i, 3];
-            return new[] { (c[0] / c[3] * 0.5 + 0.5) * Width, (c[1] / c[3] * 0.5 + 0.5) * Height, c[2] / c[3], c[3] };
+            // Pixel rows count down from the top; clip y is up.
+            return new[] { (c[0] / c[3] * 0.5 + 0.5) * Width, (0.5 - c[1] / c[3] * 0.5) * Height, c[2] / c[3], c[3] };
         }
 
         static void WriteColumns(double[,] m, float[] dst, int at)

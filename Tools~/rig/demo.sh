@@ -1,0 +1,61 @@
+# gt demo: the README's first command. Sets up the rig, builds the 5x5 sample grid, compiles the
+# noise + height colour shaders, and renders the grid through the package's shaders with the
+# harness at the paper's ranges g = h = 1.0, 0.5, 0.2, 0.1, 0.02 (c = d = 0), each range filling
+# the same view (the paper's zoom view). Prints vertices and triangles per range (pipeline
+# statistics: tessellation evaluation invocations and clipping invocations, the triangles entering the clipper).
+#   gt demo [--docs] [--no-setup] [--device SUBSTR] [--tiles M] [--factor F] [--width W] [--height H]
+# Writes .build/demo/demo_g<g>.png; with --docs also Documentation~/images/demo_g<g>.png (small RGB).
+source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
+docs=0 setup=1 device="" tiles=16 factor=15 width=640 height=480
+while [ $# -gt 0 ]; do
+  case "$1" in
+    --docs) docs=1 ;;
+    --no-setup) setup=0 ;;
+    --device) device="$2"; shift ;;
+    --tiles) tiles="$2"; shift ;;
+    --factor) factor="$2"; shift ;;
+    --width) width="$2"; shift ;;
+    --height) height="$2"; shift ;;
+    *) die "demo: unknown option '$1' (see the header of $0)" ;;
+  esac
+  shift
+done
+[ "$setup" = 1 ] && bash "$RIG_DIR/setup.sh"
+cli="$BUILD_DIR/gt-cli/gt-cli"
+harness="$BUILD_DIR/harness/gt-harness"
+[ -x "$cli" ] || die "$cli is missing (run: gt setup)"
+[ -x "$harness" ] || die "$harness is missing (run: gt setup)"
+out="$BUILD_DIR/demo"
+mkdir -p "$out"
+
+"$cli" demo-grid --out "$out/grid.json" >&2
+variant="noise+height_color"
+# Its own build folder: gt shaders empties the spirv folder it writes.
+GT_BUILD_DIR="$out/shaders" bash "$RIG_DIR/shaders.sh" --only "$variant" >"$out/shaders.log" 2>&1 \
+  || { cat "$out/shaders.log" >&2; die "compiling $variant failed"; }
+spv="$out/shaders/spirv/$variant"
+dev=(); [ -n "$device" ] && dev=(--device "$device")
+
+# The factor is odd: shipped shaders partition fractional_odd, which rounds an even factor up.
+# Noise: 8 octaves, so that the narrow ranges show detail the wide ones cannot (the octave count
+# follows the range width); a gentle light from the side-front.
+printf '%-6s %-24s %12s %12s %14s\n' "g=h" "range" "vertices" "triangles" "nonsky pixels"
+for g in 1.0 0.5 0.2 0.1 0.02; do
+  dir="$out/buffers_g$g"
+  "$cli" pack --grid "$out/grid.json" --range "0,0,$g,$g" --tiles "$tiles" --factor "$factor" \
+    --noise 0.004,16,2,2 --octaves 8 --width "$width" --height "$height" --out "$dir" >/dev/null
+  log="$out/harness_g$g.log"
+  "$harness" --vert "$spv/vert.spv" --tesc "$spv/tesc.spv" --tese "$spv/tese.spv" --frag "$spv/frag.spv" \
+    --buffers "$dir" --patches $((tiles * tiles)) --width "$width" --height "$height" \
+    --png "$out/demo_g$g.png" --stats "${dev[@]}" >"$log" 2>&1 || { cat "$log" >&2; die "harness failed at g = $g"; }
+  verts=$(awk '$1=="stat" && $2=="tessellation_evaluation_shader_invocations" {print $3}' "$log")
+  tris=$(awk '$1=="stat" && $2=="clipping_invocations" {print $3}' "$log")
+  nonsky=$(awk '$1=="image" && $2=="nonsky_pixels" {print $3 " of " $5}' "$log")
+  printf '%-6s %-24s %12s %12s %14s\n' "$g" "0,0,$g,$g" "$verts" "$tris" "$nonsky"
+  if [ "$docs" = 1 ]; then
+    mkdir -p "$PKG_DIR/Documentation~/images"
+    python3 "$RIG_DIR/png_small.py" "$out/demo_g$g.png" "$PKG_DIR/Documentation~/images/demo_g$g.png"
+  fi
+done
+say "images: $out/demo_g*.png$([ "$docs" = 1 ] && echo " and Documentation~/images/demo_g*.png")"
+say "device: $(awk '$1=="device" && $2=="name" {$1=$2=""; print substr($0,3)}' "$out/harness_g1.0.log")"
