@@ -55,7 +55,7 @@ TileCorner vert(uint vertexID : SV_VertexID)
     // Corners depend only on (tile, corner) integers, so a corner shared by neighbouring tiles is
     // evaluated from identical inputs: identical positions, identical edge factors.
     TerrainSurfacePoint s = EvaluateSurface(o.drawPatch, CornerTessCoordinate(vertexID % 4u));
-    o.positionOS = TerrainToObject(s.position);
+    o.positionOS = TerrainToObject(OutputSurfacePosition(s));
     return o;
 }
 

@@ -14,6 +14,7 @@
 #include "RangeMapping.hlsl"
 #include "PatchGrid.hlsl"
 #include "GregoryEval.hlsl"
+#include "RelativeSurface.hlsl"
 #if defined(GT_NOISE)
     #include "OctaveNoise.hlsl"
 #endif
@@ -82,6 +83,20 @@ TerrainSurfacePoint EvaluateSurface(uint drawPatch, float2 tess)
     return s;
 }
 
+// The surface position a vertex outputs (before noise): S(q) itself, or, while a range origin is
+// set (deep zoom), S(q) - S(O) from precise differences (RelativeSurface.hlsl, precision.md); the
+// renderer then adds S(O) in the object-to-world transform. Paper mode always outputs S(q).
+float3 OutputSurfacePosition(TerrainSurfacePoint s)
+{
+#if defined(GT_PAPER_MODE)
+    return s.position;
+#else
+    [branch] if (RelativeSurfaceIsActive(_RangeOrigin))
+        return RelativeSurfaceFromOrigin(s.q, _RangeOrigin);
+    return s.position;
+#endif
+}
+
 #if defined(GT_READBACK)
 // Rig only (internals.md, "Rig-only readback"): 3 float4 per vertex at the index of an integer
 // uniform factor F. The domain stage may run more than once per vertex; it writes the same values.
@@ -102,7 +117,7 @@ void WriteReadback(uint drawPatch, float2 tess, float3 positionOS, float3 normal
 TerrainVaryings TerrainVertex(uint drawPatch, float2 tess, float tessFactor)
 {
     TerrainSurfacePoint s = EvaluateSurface(drawPatch, tess);
-    float3 position = s.position;
+    float3 position = OutputSurfacePosition(s);
     float3 dPdu = s.dPdu;
     float3 dPdv = s.dPdv;
 
@@ -119,7 +134,8 @@ TerrainVaryings TerrainVertex(uint drawPatch, float2 tess, float tessFactor)
     #endif
     float octaves = OctaveCount(RangeWidth(), NoiseVerticesAcross(), NoiseSettings(), MaxNoiseOctaves());
     float2 gradient;   // d(noise)/dq
-    position.z += OctaveNoise(noisePoint, NoiseSettings(), octaves, gradient);
+    float noiseHeight = OctaveNoise(noisePoint, NoiseSettings(), octaves, gradient);
+    position.z += noiseHeight;
     // q = (a + u (e - a), b + v (f - b)), so the chain rule scales the gradient by the region size.
     float2 regionSize = s.region.zw - s.region.xy;
     dPdu.z += gradient.x * regionSize.x;
@@ -139,7 +155,12 @@ TerrainVaryings TerrainVertex(uint drawPatch, float2 tess, float tessFactor)
     o.positionCS = GT_ObjectToClip(positionOS);
     o.normalWS = GT_ObjectToWorldNormal(normalOS);
 #if defined(GT_HEIGHT_COLOR)
-    o.heightAndColorNoise = float2(position.z, HeightColorNoise(s.q, HeightColorSettings()));
+    // The absolute height S'z (position.z is relative to S(O) at deep zoom).
+    float absoluteHeight = s.position.z;
+    #if defined(GT_NOISE)
+    absoluteHeight += noiseHeight;
+    #endif
+    o.heightAndColorNoise = float2(absoluteHeight, HeightColorNoise(s.q, HeightColorSettings()));
 #endif
 #if defined(GT_DEBUG_PATCH_ID)
     o.patch = s.patch;

@@ -47,12 +47,16 @@ namespace GregoryTerrain.Rig
             double w = Math.Max(s.Range.Width, s.Range.Height), scale = 1.0 / w;
             double cx = 0.5 * (s.Range.c + s.Range.g), cy = 0.5 * (s.Range.d + s.Range.h);
             double z0 = CoreSurface.HeightAt(s.Grid, cx, cy);
-            // object (x, z, y) -> world ((x - cx) s, (z - z0) s, (y - cy) s)
+            // object (x, z, y) -> world ((x - cx) s, (z - z0) s, (y - cy) s). While a range origin is
+            // set the shaders output S(q) - S(O) (precision.md): add S(O) back here, in double, where it
+            // cancels against the centre (only the small difference reaches the float matrix).
+            Double3 r = RelativeSurface.IsActive(s.Origin.ToFloat4())
+                ? RelativeSurface.ReferencePoint(s.Grid, s.Origin) : new Double3(0, 0, 0);
             var objectToWorld = new double[,]
             {
-                { scale, 0, 0, -cx * scale },
-                { 0, scale, 0, -z0 * scale },
-                { 0, 0, scale, -cy * scale },
+                { scale, 0, 0, (r.x - cx) * scale },
+                { 0, scale, 0, (r.z - z0) * scale },
+                { 0, 0, scale, (r.y - cy) * scale },
                 { 0, 0, 0, 1 },
             };
             return RigCamera.LookAt(new[] { 0.0, 0.75, -1.05 }, new[] { 0.0, -0.05, 0.0 }, 50, width, height, 0.01, 20, objectToWorld);

@@ -1,0 +1,97 @@
+using System;
+using NUnit.Framework;
+
+namespace GregoryTerrain.Tests
+{
+    /// <summary>
+    /// Deep zoom (DESIGN section 2 "Precision", precision.md): the difference evaluation against the
+    /// double reference, and the vertex jitter table, plain float vs the shipped path.
+    /// </summary>
+    [TestFixture]
+    public class DeepZoomTests
+    {
+        static PatchGrid _grid;
+        static PatchGrid Grid => _grid ??= HardCaseGrids.Fitted();
+
+        [Test]
+        public void BernsteinDifferenceMatchesTheDefinitionInDouble()
+        {
+            Span<double> b = stackalloc double[4], db = stackalloc double[4];
+            foreach (double t0 in new[] { 0.0, 0.3, 0.999, 1.0 })
+                foreach (double dt in new[] { -0.3, 1e-7, 0.25 })
+                {
+                    GregoryDifference.BernsteinDifference(t0, dt, b, db);
+                    for (int i = 0; i < 4; i++)
+                        Assert.That(db[i], Is.EqualTo(TestPatches.B3(i, t0 + dt) - TestPatches.B3(i, t0)).Within(1e-14), $"i {i} t0 {t0} dt {dt}");
+                }
+        }
+
+        [Test]
+        public void DifferenceOfRandomPatchesMatchesTwoDoubleEvaluations()
+        {
+            var rng = new Random(7);
+            double worst = 0;
+            for (int n = 0; n < 400; n++)
+            {
+                GregoryPatch p = TestPatches.Random(n);
+                double u0 = rng.NextDouble(), v0 = rng.NextDouble();
+                if (n % 4 == 0) { u0 = 0; v0 = rng.NextDouble() < 0.5 ? 0 : 1; }   // corners: the pair guard
+                double du = (rng.NextDouble() - 0.5) * Math.Pow(10, -rng.Next(0, 8)), dv = (rng.NextDouble() - 0.5) * Math.Pow(10, -rng.Next(0, 8));
+                du = Math.Clamp(u0 + du, 0, 1) - u0; dv = Math.Clamp(v0 + dv, 0, 1) - v0;
+                Double3 d = GregoryDifference.Evaluate(p.Points, u0, v0, du, dv);
+                Double3 r = GregoryEval.Position(p.Points, u0 + du, v0 + dv) - GregoryEval.Position(p.Points, u0, v0);
+                worst = Math.Max(worst, TestPatches.Dist(d, r));
+                Float3 f = GregoryDifference.Evaluate(TestPatches.ToFloat(p), (float)u0, (float)v0, (float)du, (float)dv);
+                Assert.That(f.IsFinite, Is.True);
+                // float: relative to the step (|S'| <= ~10 for points in [-1, 1]) plus the float rounding of u0
+                double step = Math.Max(Math.Abs(du), Math.Abs(dv));
+                Assert.That(HardCaseGrids.Dist(f, r), Is.LessThanOrEqualTo(40 * step * 1.2e-7 + 1e-6 * step + 1e-12), $"n {n} u0 {u0} du {du}");
+            }
+            Assert.That(worst, Is.LessThan(1e-13));
+            TestContext.Out.WriteLine($"difference vs two double evaluations: max {worst:G3} (double) over 400 random patches and steps");
+        }
+
+        [Test]
+        public void RelativeSurfaceMatchesTheDoubleReferenceAcrossPatchLines()
+        {
+            var fg = new RelativeSurface.FloatGrid(Grid);
+            foreach (var c in new[] { new Double2(0.5137, 0.6262), new Double2(0.4, 0.6), new Double2(0.2, 0.2 + 3e-8) })
+                foreach (double w in new[] { 1e-3, 1e-6 })
+                {
+                    var range = new TerrainRange(c.x - w / 2, c.y - w / 2, c.x + w / 2, c.y + w / 2);
+                    RangeOrigin o = RangeOrigin.For(range);
+                    RangeMapping.EncodeRange(range, o, out Float4 rf, out Float4 of);
+                    double worst = 0;
+                    for (int k = 0; k <= 16; k++)
+                        for (int l = 0; l <= 16; l++)
+                        {
+                            float s = k / 16f, t = l / 16f;
+                            TerrainPoint q = RangeMapping.ToTerrainPoint(rf, of, 1, 0, 0, s, t);
+                            Float3 d = RelativeSurface.FromOrigin(fg, q, of);
+                            Double3 r = RelativeSurface.FromOrigin(Grid, q.ToDouble(), o.Value);
+                            worst = Math.Max(worst, HardCaseGrids.Dist(d, r));
+                        }
+                    // Bound: the GPU's float grid lines and control points move the surface by ~1e-8 * slope
+                    // (systematic, the same in every frame), far below it the difference arithmetic.
+                    Assert.That(worst / w, Is.LessThan(1e-5), $"centre {c} width {w}");
+                    TestContext.Out.WriteLine($"relative surface centre {c} width {w:G3}: max |float - double| = {worst:G3} = {worst / w:G3} widths");
+                }
+        }
+
+        [TestCase(1e-2)]
+        [TestCase(1e-4)]
+        [TestCase(1e-6)]
+        public void ShippedPathJitterStaysBelowHalfAPixel(double width)
+        {
+            foreach (var c in new[] { new Double2(0.5137, 0.6262), new Double2(0.4, 0.6) })
+            {
+                double plain = ZoomJitter.Measure(Grid, VertexPath.Plain, c, width, 800, 4, 8, 0.25, out _);
+                double shipped = ZoomJitter.Measure(Grid, VertexPath.Shipped, c, width, 800, 4, 8, 0.25, out double err);
+                TestContext.Out.WriteLine($"jitter width {width:G3} centre {c}: plain {plain:G3} px, shipped {shipped:G3} px (largest error {err:G3} px)");
+                Assert.That(shipped, Is.LessThan(0.5));
+                Assert.That(err, Is.LessThan(0.5));
+                if (width <= 1e-4) Assert.That(plain, Is.GreaterThan(1.0), "plain float should break down here");
+            }
+        }
+    }
+}

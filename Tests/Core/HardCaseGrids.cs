@@ -1,0 +1,43 @@
+using System;
+
+namespace GregoryTerrain.Tests
+{
+    /// <summary>Grids for the hard-case, deep-zoom and property tests (no files: built here).</summary>
+    static class HardCaseGrids
+    {
+        /// <summary>A smooth heightmap (broad hills, heights ~0.1) of size x size samples, with a phase per seed.</summary>
+        public static double[] Heightmap(int size, int seed, double amplitude = 0.1)
+        {
+            var rng = new Random(seed);
+            double p0 = rng.NextDouble() * 6.3, p1 = rng.NextDouble() * 6.3, f0 = 1 + 3 * rng.NextDouble(), f1 = 1 + 3 * rng.NextDouble();
+            var h = new double[size * size];
+            for (int j = 0; j < size; j++)
+                for (int i = 0; i < size; i++)
+                {
+                    double x = i / (size - 1.0), y = j / (size - 1.0);
+                    h[j * size + i] = amplitude * (0.6 * Math.Sin(f0 * x * 3.1 + p0) * Math.Cos(f1 * y * 2.3 + p1)
+                                                   + 0.4 * Math.Exp(-((x - 0.6) * (x - 0.6) + (y - 0.4) * (y - 0.4)) / 0.05));
+                }
+            return h;
+        }
+
+        /// <summary>A 5 x 5 G1 grid fitted to <see cref="Heightmap"/>.</summary>
+        public static PatchGrid Fitted(int columns = 5, int rows = 5, int seed = 1, int samples = 33) =>
+            HeightmapFitter.Fit(Heightmap(samples, seed), samples, samples, columns, rows).Grid;
+
+        /// <summary>The float evaluation path of the shaders at a global point (no noise): patch, u v, GregoryEval float.</summary>
+        public static Float3 FloatSurface(RelativeSurface.FloatGrid grid, TerrainPoint q)
+        {
+            int patch = grid.FindPatch(RangeMapping.Approximate(q));
+            Float4 region = grid.Region(patch);
+            Float2 uv = RangeMapping.PatchLocalUV(q, region);
+            Span<Float3> cp = stackalloc Float3[GregoryPatch.SlotCount];
+            grid.Load(patch, cp);
+            GregoryEval.Evaluate(cp, uv.x, uv.y, out Float3 p, out Float3 du, out Float3 dv);
+            return p;
+        }
+
+        public static bool Finite(Float3 a) => a.IsFinite;
+        public static double Dist(Float3 a, Double3 b) => TestPatches.MaxAbs(new Double3(a.x, a.y, a.z) - b);
+    }
+}

@@ -1,0 +1,39 @@
+using System;
+using System.IO;
+
+namespace GregoryTerrain.Rig
+{
+    /// <summary>
+    /// gt-cli jitter: the deep-zoom table of precision.md. For each range width, the vertex jitter
+    /// (pixels; Core.ZoomJitter defines it) of the plain float path, the origin-only path and the
+    /// shipped path, on the CPU with the float arithmetic the shaders use.
+    /// Options: --grid FILE (default: the demo grid fitted here), --center x,y, --widths w1,w2,...,
+    /// --pixels W (800), --tiles M (8), --factor F (16), --pan P (0.25 pixel).
+    /// </summary>
+    static class JitterCommand
+    {
+        public static int Run(Args a)
+        {
+            PatchGrid grid = a.Flag("grid")
+                ? PatchGridJson.Read(File.ReadAllText(a.String("grid")))
+                : HeightmapFitter.Fit(DemoGridCommand.Heightmap(129), 129, 129, 5, 5).Grid;
+            var c = a.Doubles("center", 2, "0.5137,0.6262");
+            string[] widths = a.String("widths", "1e-2,1e-4,1e-6").Split(',');
+            double pixels = a.Double("pixels", 800), pan = a.Double("pan", 0.25);
+            int tiles = a.Int("tiles", 8), factor = a.Int("factor", 16);
+            Console.WriteLine(FormattableString.Invariant(
+                $"jitter (px) of a {pixels:R}-pixel zoom view, {tiles}x{tiles} tiles at factor {factor}, pan {pan:R} px, centre ({c[0]:R}, {c[1]:R})"));
+            Console.WriteLine("width     plain      origin-only  shipped    (shipped largest error px)");
+            foreach (string ws in widths)
+            {
+                double w = double.Parse(ws, System.Globalization.CultureInfo.InvariantCulture);
+                var center = new Double2(c[0], c[1]);
+                double plain = ZoomJitter.Measure(grid, VertexPath.Plain, center, w, pixels, tiles, factor, pan, out _);
+                double origin = ZoomJitter.Measure(grid, VertexPath.OriginOnly, center, w, pixels, tiles, factor, pan, out _);
+                double shipped = ZoomJitter.Measure(grid, VertexPath.Shipped, center, w, pixels, tiles, factor, pan, out double err);
+                Console.WriteLine(FormattableString.Invariant($"{w,-9:G3} {plain,-10:G3} {origin,-12:G3} {shipped,-10:G3} {err:G3}"));
+            }
+            return 0;
+        }
+    }
+}
