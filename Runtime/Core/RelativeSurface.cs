@@ -25,43 +25,6 @@ namespace GregoryTerrain
     /// </summary>
     public static class RelativeSurface
     {
-        /// <summary>The grid as the GPU holds it (GpuLayout's float arrays), for the float mirror.</summary>
-        public sealed class FloatGrid
-        {
-            public readonly float[] ControlPoints, Regions, GridLines;
-            public readonly int Columns, Rows;
-
-            public FloatGrid(PatchGrid grid)
-            {
-                ControlPoints = GpuLayout.PackControlPoints(grid);
-                Regions = GpuLayout.PackRegions(grid);
-                GridLines = GpuLayout.PackGridLines(grid);
-                Columns = grid.Columns;
-                Rows = grid.Rows;
-            }
-
-            /// <summary>Mirrors HLSL <c>FindPatch</c> on the float lines.</summary>
-            public int FindPatch(Float2 q)
-            {
-                var lines = new ReadOnlySpan<float>(GridLines);
-                int i = PatchGrid.FindInterval(lines.Slice(0, Columns + 1), q.x);
-                int j = PatchGrid.FindInterval(lines.Slice(Columns + 1, Rows + 1), q.y);
-                return j * Columns + i;
-            }
-
-            public Float4 Region(int patch) =>
-                new Float4(Regions[4 * patch], Regions[4 * patch + 1], Regions[4 * patch + 2], Regions[4 * patch + 3]);
-
-            public void Load(int patch, Span<Float3> cp)
-            {
-                for (int k = 0; k < GregoryPatch.SlotCount; k++)
-                {
-                    int o = (GregoryPatch.SlotCount * patch + k) * 4;
-                    cp[k] = new Float3(ControlPoints[o], ControlPoints[o + 1], ControlPoints[o + 2]);
-                }
-            }
-        }
-
         /// <summary>
         /// <c>p - r</c> per axis for two hi/lo points, precise to float's relative precision of the
         /// result: the large parts' difference is taken exactly (TwoSum), the small parts added to it.
@@ -87,19 +50,19 @@ namespace GregoryTerrain
         /// step (~6e-8) of a grid line, where u or v would then be slightly outside [0, 1] and get
         /// clamped, a flat strip 0.05 range widths wide at w = 1e-6. One step to the neighbour fixes it.
         /// </summary>
-        public static int FindPatchPrecise(FloatGrid grid, TerrainPoint q)
+        public static int FindPatchPrecise(TerrainInputs grid, TerrainPoint q)
         {
             if (grid == null) throw new ArgumentNullException(nameof(grid));
             int patch = grid.FindPatch(RangeMapping.Approximate(q));
-            int i = patch % grid.Columns, j = patch / grid.Columns;
-            Float4 region = grid.Region(patch);
+            int i = patch % grid.GridColumns(), j = patch / grid.GridColumns();
+            Float4 region = grid.PatchRegion(patch);
             Float2 lo = Difference(q, new TerrainPoint(new Float2(region.x, region.y), default));
             Float2 hi = Difference(q, new TerrainPoint(new Float2(region.z, region.w), default));
             if (lo.x < 0f && i > 0) i--;
-            else if (hi.x >= 0f && i < grid.Columns - 1) i++;
+            else if (hi.x >= 0f && i < grid.GridColumns() - 1) i++;
             if (lo.y < 0f && j > 0) j--;
-            else if (hi.y >= 0f && j < grid.Rows - 1) j++;
-            return j * grid.Columns + i;
+            else if (hi.y >= 0f && j < grid.GridRows() - 1) j++;
+            return j * grid.GridColumns() + i;
         }
 
         /// <summary>
@@ -141,21 +104,21 @@ namespace GregoryTerrain
         /// <c>S(q) - S(O)</c> in float, as the shaders compute it (HLSL <c>RelativeSurfaceFromOrigin</c>).
         /// <paramref name="q"/>: the vertex's global point (RangeMapping.ToTerrainPoint).
         /// </summary>
-        public static Float3 FromOrigin(FloatGrid grid, TerrainPoint q, Float4 rangeOriginF)
+        public static Float3 FromOrigin(TerrainInputs grid, TerrainPoint q, Float4 rangeOriginF)
         {
             if (grid == null) throw new ArgumentNullException(nameof(grid));
             Span<Float3> cp = stackalloc Float3[GregoryPatch.SlotCount];
             TerrainPoint origin = OriginPoint(rangeOriginF);
             int patch = FindPatchPrecise(grid, q);
-            Float4 region = grid.Region(patch);
+            Float4 region = grid.PatchRegion(patch);
             TerrainPoint r1 = ClampToRegion(origin, region);
-            grid.Load(patch, cp);
+            grid.LoadGregoryPatch(patch, cp);
             Float3 d = PatchDifference(cp, region, q, r1);
             if (!r1.Equals(origin))
             {
                 int patch0 = FindPatchPrecise(grid, origin);
-                Float4 region0 = grid.Region(patch0);
-                grid.Load(patch0, cp);
+                Float4 region0 = grid.PatchRegion(patch0);
+                grid.LoadGregoryPatch(patch0, cp);
                 d += PatchDifference(cp, region0, ClampToRegion(r1, region0), origin);
             }
             return d;

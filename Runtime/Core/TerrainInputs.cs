@@ -64,6 +64,16 @@ namespace GregoryTerrain
             return new TerrainInputs(GpuLayout.PackControlPoints(grid), GpuLayout.PackRegions(grid), GpuLayout.PackGridLines(grid), parameters);
         }
 
+        /// <summary>
+        /// The grid's buffers with constants that hold only its size: enough for the buffer reads
+        /// (<see cref="FindPatch"/>, <see cref="PatchRegion"/>, <see cref="LoadGregoryPatch"/>).
+        /// </summary>
+        public static TerrainInputs ForGrid(PatchGrid grid)
+        {
+            if (grid == null) throw new ArgumentNullException(nameof(grid));
+            return Create(grid, new TerrainParams { gridSize = new Float4(grid.Columns, grid.Rows, 0f, 0f) });
+        }
+
         /// <summary>The same buffers with other constants (a new range, other settings).</summary>
         public TerrainInputs WithParams(TerrainParams parameters) => new TerrainInputs(ControlPoints, Regions, GridLines, parameters);
 

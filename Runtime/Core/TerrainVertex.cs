@@ -132,9 +132,34 @@ namespace GregoryTerrain
             return Finish(inputs, EvaluateSurfaceAt(inputs, q), keywords);
         }
 
+        /// <summary>
+        /// The surface position a vertex outputs before noise: S(q), or, while a range origin is set
+        /// (deep zoom), S(q) - S(O) from precise differences (<see cref="RelativeSurface"/>); the
+        /// renderer adds S(O) in the object-to-world transform. Paper mode always outputs S(q).
+        /// Mirrors HLSL <c>OutputSurfacePosition</c>.
+        /// </summary>
+        public static Float3 OutputSurfacePosition(TerrainInputs inputs, TerrainSurfacePoint s, TerrainKeywords keywords)
+        {
+            if ((keywords & TerrainKeywords.PaperMode) != 0) return s.position;
+            Float4 origin = inputs.Params.rangeOrigin;
+            return RelativeSurface.IsActive(origin) ? RelativeSurface.FromOrigin(inputs, s.q, origin) : s.position;
+        }
+
+        /// <summary>
+        /// What the renderer adds back to <see cref="OutputSurfacePosition"/> in the object-to-world
+        /// transform, in double: S(O) while a range origin is set, else zero. Reference positions
+        /// minus this are comparable with a vertex's output.
+        /// </summary>
+        public static Double3 OutputOffset(PatchGrid grid, Float4 rangeOriginF, TerrainKeywords keywords)
+        {
+            if ((keywords & TerrainKeywords.PaperMode) != 0 || !RelativeSurface.IsActive(rangeOriginF)) return Double3.zero;
+            var origin = new RangeOrigin { hi = new Float2(rangeOriginF.x, rangeOriginF.y), lo = new Float2(rangeOriginF.z, rangeOriginF.w) };
+            return RelativeSurface.ReferencePoint(grid, origin);
+        }
+
         static TerrainVertexOutput Finish(TerrainInputs inputs, TerrainSurfacePoint s, TerrainKeywords keywords)
         {
-            Float3 position = s.position, dPdu = s.dPdu, dPdv = s.dPdv;
+            Float3 position = OutputSurfacePosition(inputs, s, keywords), dPdu = s.dPdu, dPdv = s.dPdv;
             if ((keywords & TerrainKeywords.Noise) != 0)
             {
                 // Noise lives on the global point; in paper mode a clamped vertex takes the noise of

@@ -47,7 +47,7 @@ namespace GregoryTerrain
                 throw new ArgumentException(FormattableString.Invariant($"factor ({factor}) must lie in [1, 64]"), nameof(factor));
             if (!GMath.isfinite(panPixels) || panPixels < 0.0)
                 throw new ArgumentException(FormattableString.Invariant($"panPixels ({panPixels:R}) must be finite and >= 0"), nameof(panPixels));
-            var fgrid = new RelativeSurface.FloatGrid(grid);
+            var fgrid = TerrainInputs.ForGrid(grid);
             TerrainRange range0 = Square(center, width, 0.0, 0.0);
             RangeOrigin origin = path == VertexPath.Plain ? RangeOrigin.zero : RangeOrigin.For(range0);
             if (path == VertexPath.OriginOnly && origin.Equals(RangeOrigin.zero)) origin = RangeOrigin.Snap(range0.Center);
@@ -82,7 +82,7 @@ namespace GregoryTerrain
         }
 
         /// <summary>The vertex position a path computes, in double (relative output + its reference point).</summary>
-        static Double3 PathPosition(RelativeSurface.FloatGrid grid, bool relative, Double3 reference,
+        static Double3 PathPosition(TerrainInputs grid, bool relative, Double3 reference,
             Float4 rangeF, Float4 originF, int tiles, int ti, int tj, float s, float t)
         {
             TerrainPoint q = RangeMapping.ToTerrainPoint(rangeF, originF, tiles, ti, tj, s, t);
@@ -92,10 +92,10 @@ namespace GregoryTerrain
                 return reference + new Double3(d.x, d.y, d.z);
             }
             int patch = grid.FindPatch(RangeMapping.Approximate(q));
-            Float4 region = grid.Region(patch);
+            Float4 region = grid.PatchRegion(patch);
             Float2 uv = RangeMapping.PatchLocalUV(q, region);
             Span<Float3> cp = stackalloc Float3[GregoryPatch.SlotCount];
-            grid.Load(patch, cp);
+            grid.LoadGregoryPatch(patch, cp);
             GregoryEval.Evaluate(cp, uv.x, uv.y, out Float3 position, out _, out _);
             return new Double3(position.x, position.y, position.z);
         }

@@ -54,7 +54,7 @@ namespace GregoryTerrain.Tests
         [Test]
         public void RelativeSurfaceMatchesTheDoubleReferenceAcrossPatchLines()
         {
-            var fg = new RelativeSurface.FloatGrid(Grid);
+            var fg = TerrainInputs.ForGrid(Grid);
             foreach (var c in new[] { new Double2(0.5137, 0.6262), new Double2(0.4, 0.6), new Double2(0.2, 0.2 + 3e-8) })
                 foreach (double w in new[] { 1e-3, 1e-6 })
                 {

@@ -136,7 +136,7 @@ namespace GregoryTerrain.Tests
         /// <summary>Float surface via the shader path vs double surface at points of a range; max error.</summary>
         static double RangeError(PatchGrid g, TerrainRange range, int tiles, int factor)
         {
-            var fg = new RelativeSurface.FloatGrid(g);
+            var fg = TerrainInputs.ForGrid(g);
             RangeMapping.EncodeRange(range, RangeOrigin.For(range), out Float4 rf, out Float4 of);
             double worst = 0;
             for (int tj = 0; tj < tiles; tj++)
@@ -178,7 +178,7 @@ namespace GregoryTerrain.Tests
             PatchGrid g = HardCaseGrids.Fitted();
             double err = Math.Max(RangeError(g, new TerrainRange(0.9, 0.0, 1.0, 0.1), 4, 8), RangeError(g, TerrainRange.full, 4, 8));
             // the far corner q = 1 exactly lands on the last patch's corner: exact control point
-            var fg = new RelativeSurface.FloatGrid(g);
+            var fg = TerrainInputs.ForGrid(g);
             RangeMapping.EncodeRange(TerrainRange.full, RangeOrigin.zero, out Float4 rf, out Float4 of);
             Float3 corner = HardCaseGrids.FloatSurface(fg, RangeMapping.ToTerrainPoint(rf, of, 4, 3, 3, 1f, 1f));
             Assert.That(corner.z, Is.EqualTo((float)g.Patches[g.PatchCount - 1][15].z));

@@ -28,7 +28,7 @@ namespace GregoryTerrain.Tests
                 double angle = ContinuityMeasure.MaxNormalAngleDegrees(g, 9);
                 worstAngle = Math.Max(worstAngle, angle);
                 Assert.That(angle, Is.LessThan(1e-6), $"grid {gi} is G1 (normal angle in degrees)");
-                var fg = new RelativeSurface.FloatGrid(g);
+                var fg = TerrainInputs.ForGrid(g);
                 for (int ri = 0; ri < RangesPerGrid; ri++, iterations++)
                 {
                     double w = Math.Pow(10, -6 * rng.NextDouble());

@@ -208,6 +208,7 @@ namespace GregoryTerrain.Rig.Tests
                 TerrainVertex.Reference(_grid, core.surface.q.ToDouble(),
                     (run.Keywords & TerrainKeywords.Noise) != 0 ? Noise : (NoiseSettings?)null, run.Inputs.NoiseOctaveCount(),
                     out Double3 rp, out _);
+                rp -= TerrainVertex.OutputOffset(_grid, run.Inputs.Params.rangeOrigin, run.Keywords);
                 c.MaxReference = Math.Max(c.MaxReference, GMath.length(new Double3(core.position.x, core.position.y, core.position.z) - rp) / extent);
             }
             return c;
