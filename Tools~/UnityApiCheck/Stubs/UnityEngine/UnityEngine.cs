@@ -88,6 +88,7 @@ namespace UnityEngine
         public static float Clamp01(float value) => value;                            // SR:Mathf.Clamp01
         public static float Abs(float f) => f;                                        // SR:Mathf.Abs
         public static float Max(float a, float b) => a;                               // SR:Mathf.Max
+        public static int Max(int a, int b) => a;                                     // SR:Mathf.Max
         public static float Min(float a, float b) => a;                               // SR:Mathf.Min
         public static float Tan(float f) => f;                                        // SR:Mathf.Tan
         public static float Sin(float f) => f;                                        // SR:Mathf.Sin
@@ -152,6 +153,7 @@ namespace UnityEngine
     {
         public float m00, m01, m02, m03, m10, m11, m12, m13, m20, m21, m22, m23, m30, m31, m32, m33;
         public Vector3 MultiplyPoint3x4(Vector3 point) => point;                      // SR:Matrix4x4.MultiplyPoint3x4
+        public static Matrix4x4 identity => default;                                  // SR:Matrix4x4-identity
     }
 
     public struct Color                                                               // SR:Color
@@ -287,4 +289,28 @@ namespace UnityEngine
 namespace UnityEngine.Rendering
 {
     public enum ShadowCastingMode { Off = 0, On = 1, TwoSided = 2, ShadowsOnly = 3 } // SR:Rendering.ShadowCastingMode
+}
+
+namespace UnityEngine
+{
+    // ---- IMGUI types used by the editor code ----------------------------------------------------
+    public class GUIContent                                                           // SR:GUIContent
+    {
+        public GUIContent(string text) { }                                            // SR:GUIContent-ctor
+        public GUIContent(string text, string tooltip) { }                            // SR:GUIContent-ctor
+    }
+    public class GUILayoutOption { }                                                  // SR:GUILayoutOption
+    public class GUILayout                                                            // SR:GUILayout
+    {
+        public static bool Button(GUIContent content, params GUILayoutOption[] options) => false; // SR:GUILayout.Button
+    }
+    public enum EventType { MouseDown = 0, MouseUp = 1, MouseDrag = 3, KeyDown = 4, KeyUp = 5, Repaint = 7, Layout = 8 } // SR:EventType
+    public enum KeyCode { C = 99, V = 118, X = 120, Z = 122 }                         // SR:KeyCode (values: ASCII, as listed)
+    public sealed class Event                                                         // SR:Event
+    {
+        public static Event current { get => null; set { } }                          // SR:Event-current
+        public EventType type { get; set; }                                           // SR:Event-type
+        public KeyCode keyCode { get; set; }                                          // SR:Event-keyCode
+        public void Use() { }                                                         // SR:Event.Use
+    }
 }
