@@ -83,6 +83,7 @@ namespace UnityEngine
     public static class Mathf                                                         // SR:Mathf
     {
         public const float Deg2Rad = 0.017453292f;                                    // SR:Mathf.Deg2Rad
+        public const float PI = 3.14159274f;                                          // SR:Mathf.PI
         public static float Clamp(float value, float min, float max) => value;        // SR:Mathf.Clamp
         public static int Clamp(int value, int min, int max) => value;                // SR:Mathf.Clamp
         public static float Clamp01(float value) => value;                            // SR:Mathf.Clamp01
