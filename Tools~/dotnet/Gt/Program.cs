@@ -34,6 +34,8 @@ namespace GregoryTerrain.Rig
 
         static void Register()
         {
+            Commands["demo-grid"] = ("build the 5x5 sample grid fitted to a procedural heightmap (--out FILE)", DemoGridCommand.Run);
+            Commands["pack"] = ("write the harness's buffer files for one scene (--grid FILE --out DIR ...)", PackCommand.Run);
         }
     }
 }

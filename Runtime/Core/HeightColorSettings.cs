@@ -1,0 +1,43 @@
+using System;
+
+namespace GregoryTerrain
+{
+    /// <summary>
+    /// Eq. 14-15's parameters: gamma (height per unit of colour blend) and the colour noise l
+    /// (amplitude, frequency). Uploaded as <c>_HeightColor = (gamma, amplitude, frequency, 0)</c>;
+    /// the colours themselves go in <c>_ColorLow</c> (C) and <c>_ColorHigh</c> (B).
+    /// </summary>
+    [Serializable]
+    public struct HeightColorSettings : IEquatable<HeightColorSettings>
+    {
+        public float gamma;
+        public float noiseAmplitude;
+        public float noiseFrequency;
+
+        public HeightColorSettings(float gamma, float noiseAmplitude, float noiseFrequency)
+        {
+            this.gamma = gamma; this.noiseAmplitude = noiseAmplitude; this.noiseFrequency = noiseFrequency;
+        }
+
+        /// <summary>Throws <see cref="ArgumentException"/> unless gamma is finite and not 0, and the noise
+        /// amplitude finite and its frequency finite, positive and below 2^24.</summary>
+        public void Validate(string name = "heightColor")
+        {
+            if (!GMath.isfinite(gamma) || gamma == 0f)
+                throw new ArgumentException(FormattableString.Invariant($"{name}.gamma ({gamma:R}) must be finite and not 0"), name + ".gamma");
+            if (!GMath.isfinite(noiseAmplitude))
+                throw new ArgumentException(FormattableString.Invariant($"{name}.noiseAmplitude ({noiseAmplitude:R}) must be finite"), name + ".noiseAmplitude");
+            if (!GMath.isfinite(noiseFrequency) || !(noiseFrequency > 0f) || !(noiseFrequency < 16777216f))
+                throw new ArgumentException(FormattableString.Invariant(
+                    $"{name}.noiseFrequency ({noiseFrequency:R}) must be finite, greater than 0 and below 2^24"), name + ".noiseFrequency");
+        }
+
+        /// <summary><c>_HeightColor = (gamma, noiseAmplitude, noiseFrequency, 0)</c>.</summary>
+        public Float4 ToFloat4() => new Float4(gamma, noiseAmplitude, noiseFrequency, 0f);
+
+        public bool Equals(HeightColorSettings o) => gamma.Equals(o.gamma) && noiseAmplitude.Equals(o.noiseAmplitude) && noiseFrequency.Equals(o.noiseFrequency);
+        public override bool Equals(object obj) => obj is HeightColorSettings o && Equals(o);
+        public override int GetHashCode() => HashCode.Combine(gamma, noiseAmplitude, noiseFrequency);
+        public override string ToString() => FormattableString.Invariant($"gamma {gamma:R}, noise amplitude {noiseAmplitude:R}, frequency {noiseFrequency:R}");
+    }
+}

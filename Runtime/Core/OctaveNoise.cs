@@ -1,0 +1,93 @@
+using System;
+
+namespace GregoryTerrain
+{
+    /// <summary>
+    /// Height detail <c>p = amplitude * sum_k beta^-k * K(f_k q + offset_k)</c> over octaves
+    /// k = 0 .. count-1 (eq. 12-13 with N octaves), K = <see cref="GradientNoise"/>, the last octave
+    /// weighted by the fractional part of the count. Mirrored by Shaders/OctaveNoise.hlsl
+    /// (<c>OctaveNoise.Evaluate</c> is HLSL <c>OctaveNoise</c>).
+    /// Octave frequencies are defined as the float sequence <c>f_0 = frequency, f_{k+1} = f_k * alpha</c>
+    /// (the same on CPU and GPU); the double reference uses exactly those values, because at
+    /// q ~ 0.7 and f ~ 1e4 a relative frequency difference of 1e-7 already moves the lattice by 1e-3 cells.
+    /// </summary>
+    public static class OctaveNoise
+    {
+        /// <summary>
+        /// Float evaluation at a <see cref="TerrainPoint"/> (deep-zoom safe, see <see cref="GradientNoise.AtPoint"/>).
+        /// <paramref name="gradient"/> is d p / d q (terrain units), for the normal.
+        /// <paramref name="octaveCount"/> is clamped to [0, settings.octaves].
+        /// </summary>
+        public static float Evaluate(TerrainPoint p, NoiseSettings settings, float octaveCount, out Float2 gradient)
+        {
+            settings.Validate(nameof(settings));
+            if (float.IsNaN(octaveCount)) throw new ArgumentException("octaveCount (NaN) must be a number", nameof(octaveCount));
+            float count = GMath.clamp(octaveCount, 0f, settings.octaves);
+            float f = settings.frequency, w = 1f, invBeta = 1f / settings.beta;
+            float n = 0f;
+            var g = new Float2(0f, 0f);
+            for (int k = 0; k < settings.octaves; k++)
+            {
+                float fade = GMath.saturate(count - k);   // 1 for whole octaves, the fraction for the last
+                if (fade <= 0f) break;
+                float nk = GradientNoise.AtPoint(p, f, GradientNoise.StreamOffset((uint)k), out Float2 gk);
+                float wk = w * fade;
+                n += wk * nk;
+                g += gk * (wk * f);                        // chain rule: d/dq = f * d/d(lattice)
+                f *= settings.alpha;
+                w *= invBeta;
+            }
+            gradient = g * settings.amplitude;
+            return settings.amplitude * n;
+        }
+
+        /// <summary>The double reference at <c>(x, y)</c>, same octaves, frequencies and offsets.</summary>
+        public static double Evaluate(double x, double y, NoiseSettings settings, double octaveCount, out Double2 gradient)
+        {
+            settings.Validate(nameof(settings));
+            if (!GMath.isfinite(x) || !GMath.isfinite(y))
+                throw new ArgumentException(FormattableString.Invariant($"point ({x:R}, {y:R}) must be finite"), nameof(x));
+            if (double.IsNaN(octaveCount)) throw new ArgumentException("octaveCount (NaN) must be a number", nameof(octaveCount));
+            double count = GMath.clamp(octaveCount, 0.0, settings.octaves);
+            float f = settings.frequency;
+            double w = 1.0, invBeta = 1.0 / settings.beta;
+            double n = 0.0;
+            var g = new Double2(0.0, 0.0);
+            for (int k = 0; k < settings.octaves; k++)
+            {
+                double fade = GMath.saturate(count - k);
+                if (fade <= 0.0) break;
+                Double2 off = GradientNoise.StreamOffset((uint)k);
+                double nk = GradientNoise.Evaluate(f * x + off.x, f * y + off.y, out Double2 gk);
+                double wk = w * fade;
+                n += wk * nk;
+                g += gk * (wk * f);
+                f *= settings.alpha;
+                w *= invBeta;
+            }
+            gradient = g * settings.amplitude;
+            return settings.amplitude * n;
+        }
+
+        /// <summary>
+        /// How many octaves are worth evaluating: octave k counts when its wavelength
+        /// <c>1 / (frequency * alpha^k)</c> is at least two vertex spacings, <c>2 * rangeWidth / verticesAcross</c>
+        /// (finer detail falls between vertices and only aliases). So the count is
+        /// <c>1 + log_alpha(verticesAcross / (2 * rangeWidth * frequency))</c>, clamped to [0, octaves]; its
+        /// fraction fades octave <c>floor(count)</c> in: its weight rises from 0 to 1 while its wavelength
+        /// grows from <c>2 / alpha</c> to 2 vertex spacings as the range narrows. Fine octaves thus
+        /// appear only as the range narrows (the paper's intent for beta). It depends only on
+        /// per-frame values, so every vertex of a frame uses the same count.
+        /// </summary>
+        public static double OctaveCount(double rangeWidth, double verticesAcross, NoiseSettings settings)
+        {
+            settings.Validate(nameof(settings));
+            if (!GMath.isfinite(rangeWidth) || !(rangeWidth > 0.0))
+                throw new ArgumentException(FormattableString.Invariant($"rangeWidth ({rangeWidth:R}) must be finite and greater than 0"), nameof(rangeWidth));
+            if (!GMath.isfinite(verticesAcross) || !(verticesAcross > 0.0))
+                throw new ArgumentException(FormattableString.Invariant($"verticesAcross ({verticesAcross:R}) must be finite and greater than 0"), nameof(verticesAcross));
+            double k = 1.0 + Math.Log(verticesAcross / (2.0 * rangeWidth * settings.frequency)) / Math.Log(settings.alpha);
+            return GMath.clamp(k, 0.0, settings.octaves);
+        }
+    }
+}

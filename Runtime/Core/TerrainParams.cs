@@ -1,0 +1,74 @@
+using System;
+
+namespace GregoryTerrain
+{
+    /// <summary>
+    /// The <c>TerrainParams</c> constants every stage reads (internals.md, binding 0): nine float4 in
+    /// one fixed order. The rig uploads <see cref="Pack"/> as one block; Unity sets each float4 by name.
+    /// Only <see cref="range"/> changes per frame.
+    /// </summary>
+    public struct TerrainParams
+    {
+        public const int Float4Count = 9;
+        public const int Floats = Float4Count * 4;
+
+        /// <summary>Names in cbuffer order; <see cref="Pack"/> and the shaders agree on it.</summary>
+        public static readonly string[] PropertyNames =
+        {
+            "_Range", "_RangeOrigin", "_GridSize", "_Tess", "_Noise", "_NoiseOctaves", "_HeightColor", "_ColorLow", "_ColorHigh",
+        };
+
+        public Float4 range, rangeOrigin, gridSize, tess, noise, noiseOctaves, heightColor, colorLow, colorHigh;
+
+        /// <summary>Validates every input (naming the field and value) and encodes the range against its origin.</summary>
+        public static TerrainParams Create(PatchGrid grid, TerrainRange range, RangeOrigin origin,
+            TessellationSettings tessellation, NoiseSettings noise, HeightColorSettings heightColor,
+            Float3 colorLow, Float3 colorHigh, float noiseVerticesAcross = 0f)
+        {
+            if (grid == null) throw new ArgumentNullException(nameof(grid));
+            range.Validate();
+            tessellation.Validate();
+            noise.Validate();
+            heightColor.Validate();
+            if (!colorLow.IsFinite) throw new ArgumentException($"colorLow {colorLow} must be finite", nameof(colorLow));
+            if (!colorHigh.IsFinite) throw new ArgumentException($"colorHigh {colorHigh} must be finite", nameof(colorHigh));
+            if (!(noiseVerticesAcross >= 0f) || !GMath.isfinite(noiseVerticesAcross))
+                throw new ArgumentException(FormattableString.Invariant($"noiseVerticesAcross ({noiseVerticesAcross:R}) must be finite and >= 0"), nameof(noiseVerticesAcross));
+
+            RangeMapping.EncodeRange(range, origin, out Float4 rangeF, out Float4 originF);
+            float[] size = GpuLayout.GridSize(grid);
+            return new TerrainParams
+            {
+                range = rangeF,
+                rangeOrigin = originF,
+                gridSize = new Float4(size[0], size[1], size[2], size[3]),
+                tess = tessellation.ToFloat4(),
+                noise = noise.ToFloat4(),
+                noiseOctaves = new Float4(noise.octaves, noiseVerticesAcross, 0f, 0f),
+                heightColor = heightColor.ToFloat4(),
+                colorLow = new Float4(colorLow.x, colorLow.y, colorLow.z, 1f),
+                colorHigh = new Float4(colorHigh.x, colorHigh.y, colorHigh.z, 1f),
+            };
+        }
+
+        /// <summary>The float4 at cbuffer position <paramref name="index"/> (see <see cref="PropertyNames"/>).</summary>
+        public Float4 this[int index] => index switch
+        {
+            0 => range, 1 => rangeOrigin, 2 => gridSize, 3 => tess, 4 => noise,
+            5 => noiseOctaves, 6 => heightColor, 7 => colorLow, 8 => colorHigh,
+            _ => throw new ArgumentOutOfRangeException(nameof(index), index, "TerrainParams has 9 float4"),
+        };
+
+        /// <summary>The 36 floats of the cbuffer, in order.</summary>
+        public float[] Pack()
+        {
+            var r = new float[Floats];
+            for (int i = 0; i < Float4Count; i++)
+            {
+                Float4 v = this[i];
+                r[4 * i] = v.x; r[4 * i + 1] = v.y; r[4 * i + 2] = v.z; r[4 * i + 3] = v.w;
+            }
+            return r;
+        }
+    }
+}

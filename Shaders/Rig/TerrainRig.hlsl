@@ -1,0 +1,7 @@
+// Entry file the off-Unity rig compiles (Tools~/rig/shaders.sh): the standalone adapter, then the
+// pipeline-agnostic stages. Entry points: vert, hull_shader, domain_shader, frag, vert_fallback.
+#ifndef GT_TERRAIN_RIG_INCLUDED
+#define GT_TERRAIN_RIG_INCLUDED
+#include "../Adapters/StandaloneAdapter.hlsl"
+#include "../TerrainStages.hlsl"
+#endif

@@ -1,0 +1,59 @@
+// Fragment colour of the terrain: Lambert lighting from the adapter's main light, the height
+// colour of eq. 14-15 (GT_HEIGHT_COLOR) and the debug views (each replaces the lit colour):
+//   GT_DEBUG_NORMALS      world normal as RGB (n * 0.5 + 0.5)
+//   GT_DEBUG_PATCH_ID     one flat colour per Gregory patch
+//   GT_DEBUG_TESS_FACTOR  tessellation factor, blue (1) to red (maxFactor)
+#ifndef GT_TERRAIN_SHADING_INCLUDED
+#define GT_TERRAIN_SHADING_INCLUDED
+
+#include "TerrainVertex.hlsl"
+
+static const float3 GT_DEFAULT_ALBEDO = float3(0.55, 0.55, 0.5);
+// Light from the sky on faces turned away from the main light, so slopes never go black.
+static const float GT_AMBIENT = 0.2;
+
+// A stable, well-spread colour per patch index (integer hash to three bytes).
+float3 PatchIdColor(uint patch)
+{
+    uint h = patch * 0x9E3779B1u;
+    h ^= h >> 15;
+    h *= 0x85EBCA77u;
+    h ^= h >> 13;
+    return float3(h & 0xFFu, (h >> 8) & 0xFFu, (h >> 16) & 0xFFu) * (1.0 / 255.0);
+}
+
+float3 TessFactorColor(float factor)
+{
+    float t = saturate((factor - 1.0) / max(MaxTessFactor() - 1.0, 1.0));
+    return lerp(float3(0.1, 0.2, 1.0), float3(1.0, 0.15, 0.1), t);
+}
+
+float3 TerrainAlbedo(TerrainVaryings i)
+{
+#if defined(GT_HEIGHT_COLOR)
+    // heightAndColorNoise = (z, l); eq. 14-15 with gamma = _HeightColor.x.
+    return HeightColorBlend(i.heightAndColorNoise.y, i.heightAndColorNoise.x, HeightColorSettings().x,
+                            HeightColorLow(), HeightColorHigh());
+#else
+    return GT_DEFAULT_ALBEDO;
+#endif
+}
+
+float4 TerrainFragmentColor(TerrainVaryings i)
+{
+    float3 normalWS = normalize(i.normalWS);
+#if defined(GT_DEBUG_NORMALS)
+    return float4(normalWS * 0.5 + 0.5, 1.0);
+#elif defined(GT_DEBUG_PATCH_ID)
+    return float4(PatchIdColor(i.patch), 1.0);
+#elif defined(GT_DEBUG_TESS_FACTOR)
+    return float4(TessFactorColor(i.tessFactor), 1.0);
+#else
+    float3 lightDirectionWS, lightColor;
+    GT_MainLight(lightDirectionWS, lightColor);
+    float lambert = saturate(dot(normalWS, lightDirectionWS));
+    return float4(TerrainAlbedo(i) * (GT_AMBIENT + lightColor * lambert), 1.0);
+#endif
+}
+
+#endif // GT_TERRAIN_SHADING_INCLUDED

@@ -1,0 +1,162 @@
+// The one evaluation path from (draw patch, tess coordinate) to a shaded terrain vertex. The domain
+// stage (tessellated tiles) and vert_fallback (the instanced UV grid) both call TerrainVertex, so the
+// two draw paths cannot drift apart (DESIGN section 2).
+//
+//   tess coordinate --RangeToTerrainPoint--> global point q (hi/lo, bit-identical on shared edges)
+//     --FindPatch--> Gregory patch --PatchLocalUV--> (u, v) --GregoryEvaluate--> S, dS/du, dS/dv
+//     [GT_NOISE]        + OctaveNoise(q) on the height, its gradient in the normal
+//     [GT_HEIGHT_COLOR] height and ColorNoise(q) for eq. 14-15 in the fragment stage
+//     -> object space (x, z, y), Unity is Y-up -> clip space through the adapter.
+#ifndef GT_TERRAIN_VERTEX_INCLUDED
+#define GT_TERRAIN_VERTEX_INCLUDED
+
+#include "TerrainInputs.hlsl"
+#include "RangeMapping.hlsl"
+#include "PatchGrid.hlsl"
+#include "GregoryEval.hlsl"
+#if defined(GT_NOISE)
+    #include "OctaveNoise.hlsl"
+#endif
+#if defined(GT_HEIGHT_COLOR)
+    #include "HeightColor.hlsl"
+#endif
+
+// Domain/fallback output, fragment input.
+struct TerrainVaryings
+{
+    float4 positionCS : SV_Position;
+    float3 normalWS : TEXCOORD0;
+#if defined(GT_HEIGHT_COLOR)
+    float2 heightAndColorNoise : TEXCOORD1;   // (S'z, l) of eq. 14
+#endif
+#if defined(GT_DEBUG_PATCH_ID)
+    nointerpolation uint patch : TEXCOORD2;   // Gregory patch index
+#endif
+#if defined(GT_DEBUG_TESS_FACTOR)
+    float tessFactor : TEXCOORD3;
+#endif
+};
+
+// A point of the Gregory surface (no noise yet), in terrain space (x, y, z).
+struct TerrainSurfacePoint
+{
+    TerrainPoint q;      // global point, hi/lo
+    uint patch;          // Gregory patch that was evaluated
+    float4 region;       // its (a, b, e, f)
+    float2 uv;           // patch-local coordinate that was evaluated
+    float3 position;
+    float3 dPdu;
+    float3 dPdv;
+};
+
+// Terrain space (x, y, z = height) to Unity object space (x, z, y). The swap is orthogonal, so it
+// maps normals too.
+float3 TerrainToObject(float3 v) { return v.xzy; }
+
+// Unit normal of a surface with these partial derivatives; zero where they are parallel (a
+// degenerate patch), as GregoryNormal does. GregoryNormal takes the control points and evaluates
+// again; here the derivatives already carry the noise term, so the cross product is taken directly.
+float3 SurfaceNormal(float3 dSdu, float3 dSdv)
+{
+    float3 n = cross(dSdu, dSdv);
+    float l = length(n);
+    return l > 0.0 ? n / l : float3(0.0, 0.0, 0.0);
+}
+
+// drawPatch: the index of the patch being drawn: a tile (tile mode, tile = tj * M + ti) or, with
+// GT_PAPER_MODE, a Gregory patch. tess: the coordinate inside it, in [0, 1]^2.
+TerrainSurfacePoint EvaluateSurface(uint drawPatch, float2 tess)
+{
+    TerrainSurfacePoint s;
+#if defined(GT_PAPER_MODE)
+    // The paper's method: every Gregory patch is tessellated over the whole range (one "tile"),
+    // with the corrected eq. 10 and u, v clamped, so the part outside the patch collapses onto its
+    // boundary.
+    s.q = RangeToTerrainPoint(_Range, _RangeOrigin, 1.0, uint2(0, 0), tess);
+    s.patch = drawPatch;
+    s.region = PatchRegion(s.patch);
+    s.uv = saturate(PatchLocalUV(s.q, s.region));
+#else
+    // Integer tile index first: RangeCoordinate forms ti + s before dividing, so the vertices of a
+    // shared tile edge get bit-identical q (watertight).
+    uint tiles = TileCountInt();
+    uint2 tile = uint2(drawPatch % tiles, drawPatch / tiles);
+    s.q = RangeToTerrainPoint(_Range, _RangeOrigin, TileCount(), tile, tess);
+    s.patch = FindPatch(TerrainPointApprox(s.q));
+    s.region = PatchRegion(s.patch);
+    s.uv = PatchLocalUV(s.q, s.region);
+#endif
+    float3 cp[20];
+    LoadGregoryPatch(s.patch, cp);
+    GregoryEvaluate(cp, s.uv, s.position, s.dPdu, s.dPdv);
+    return s;
+}
+
+#if defined(GT_READBACK)
+// Rig only (internals.md, "Rig-only readback"): 3 float4 per vertex at the index of an integer
+// uniform factor F. The domain stage may run more than once per vertex; it writes the same values.
+RWStructuredBuffer<float4> _Readback GT_REGISTER(u0);
+
+void WriteReadback(uint drawPatch, float2 tess, float3 positionOS, float3 normalOS, float2 q, float2 uv)
+{
+    uint f = (uint)UniformTessFactor();
+    uint2 grid = (uint2)round(tess * (float)f);
+    uint vertex = drawPatch * (f + 1) * (f + 1) + grid.y * (f + 1) + grid.x;
+    _Readback[3 * vertex + 0] = float4(positionOS, 1.0);
+    _Readback[3 * vertex + 1] = float4(normalOS, 0.0);
+    _Readback[3 * vertex + 2] = float4(q, uv);
+}
+#endif
+
+// tessFactor is only carried to the GT_DEBUG_TESS_FACTOR view.
+TerrainVaryings TerrainVertex(uint drawPatch, float2 tess, float tessFactor)
+{
+    TerrainSurfacePoint s = EvaluateSurface(drawPatch, tess);
+    float3 position = s.position;
+    float3 dPdu = s.dPdu;
+    float3 dPdv = s.dPdv;
+
+#if defined(GT_NOISE)
+    // Noise lives on the global point, so it is continuous across patches and tiles. In paper mode
+    // a clamped vertex sits on the patch boundary, so it takes the noise of that boundary point.
+    TerrainPoint noisePoint = s.q;
+    #if defined(GT_PAPER_MODE)
+    if (any(s.uv != PatchLocalUV(s.q, s.region)))
+    {
+        noisePoint.originHi = float2(0.0, 0.0);
+        noisePoint.local = lerp(s.region.xy, s.region.zw, s.uv);
+    }
+    #endif
+    float octaves = OctaveCount(RangeWidth(), NoiseVerticesAcross(), NoiseSettings(), MaxNoiseOctaves());
+    float2 gradient;   // d(noise)/dq
+    position.z += OctaveNoise(noisePoint, NoiseSettings(), octaves, gradient);
+    // q = (a + u (e - a), b + v (f - b)), so the chain rule scales the gradient by the region size.
+    float2 regionSize = s.region.zw - s.region.xy;
+    dPdu.z += gradient.x * regionSize.x;
+    dPdv.z += gradient.y * regionSize.y;
+#endif
+
+    float3 normal = SurfaceNormal(dPdu, dPdv);
+    float3 positionOS = TerrainToObject(position);
+    float3 normalOS = TerrainToObject(normal);
+
+#if defined(GT_READBACK)
+    WriteReadback(drawPatch, tess, positionOS, normalOS, TerrainPointApprox(s.q), s.uv);
+#endif
+
+    TerrainVaryings o;
+    o.positionCS = GT_ObjectToClip(positionOS);
+    o.normalWS = GT_ObjectToWorldNormal(normalOS);
+#if defined(GT_HEIGHT_COLOR)
+    o.heightAndColorNoise = float2(position.z, HeightColorNoise(s.q, HeightColorSettings()));
+#endif
+#if defined(GT_DEBUG_PATCH_ID)
+    o.patch = s.patch;
+#endif
+#if defined(GT_DEBUG_TESS_FACTOR)
+    o.tessFactor = tessFactor;
+#endif
+    return o;
+}
+
+#endif // GT_TERRAIN_VERTEX_INCLUDED

@@ -1,0 +1,138 @@
+using System;
+using System.Collections.Generic;
+using System.Threading;
+using NUnit.Framework;
+
+namespace GregoryTerrain.Tests
+{
+    [TestFixture]
+    public class HeightmapFitterTests
+    {
+        /// <summary>A smooth test terrain: two sines and two gaussians, heights within about +-0.15.</summary>
+        public static double Terrain(double x, double y) =>
+            0.05 * Math.Sin(2 * Math.PI * x) * Math.Cos(Math.PI * y)
+            + 0.03 * Math.Sin(3 * Math.PI * (x + 0.5 * y))
+            + 0.08 * Math.Exp(-((x - 0.3) * (x - 0.3) + (y - 0.6) * (y - 0.6)) / 0.05)
+            - 0.04 * Math.Exp(-((x - 0.75) * (x - 0.75) + (y - 0.25) * (y - 0.25)) / 0.03);
+
+        public static double[] Samples(int w, int h)
+        {
+            var a = new double[w * h];
+            for (int r = 0; r < h; r++)
+                for (int c = 0; c < w; c++)
+                    a[r * w + c] = Terrain((double)c / (w - 1), (double)r / (h - 1));
+            return a;
+        }
+
+        public static HeightmapFit Fit5x5() => HeightmapFitter.Fit(Samples(129, 129), 129, 129, 5, 5);
+
+        // Stated tolerances: the terrain's heights span about 0.25 and its gaussians are about one
+        // patch wide; a 5 x 5 grid must reproduce the samples to 1% of that range at worst (2.5e-3)
+        // and 0.4% RMS (1e-3). (Measured: max 1.8e-3, RMS 5.3e-4.)
+        const double MaxTolerance = 2.5e-3, RmsTolerance = 1e-3;
+
+        [Test]
+        public void FittedGridIsG1AndReproducesHeights()
+        {
+            HeightmapFit fit = Fit5x5();
+            Assert.DoesNotThrow(fit.Grid.Validate);
+            double angle = ContinuityMeasure.MaxNormalAngleDegrees(fit.Grid);
+            TestContext.Out.WriteLine($"5x5 fit of 129x129 samples: max error {fit.MaxError:E3}, RMS {fit.RmsError:E3} (tolerances {MaxTolerance:E1}, {RmsTolerance:E1}); max normal angle across shared edges {angle:E3} deg ({ContinuityMeasure.DefaultSamplesPerEdge} samples per edge)");
+            Assert.That(angle, Is.LessThan(0.1));
+            Assert.That(ContinuityMeasure.MaxPositionGap(fit.Grid), Is.EqualTo(0.0));
+            Assert.That(fit.MaxError, Is.LessThan(MaxTolerance));
+            Assert.That(fit.RmsError, Is.LessThan(RmsTolerance));
+        }
+
+        [Test]
+        public void ErrorFallsWithFinerGrids()
+        {
+            double[] a = Samples(129, 129);
+            HeightmapFit coarse = HeightmapFitter.Fit(a, 129, 129, 4, 4), fine = HeightmapFitter.Fit(a, 129, 129, 8, 8);
+            TestContext.Out.WriteLine($"max error 4x4: {coarse.MaxError:E3}, 8x8: {fine.MaxError:E3} (ratio {coarse.MaxError / fine.MaxError:F1}); RMS {coarse.RmsError:E3}, {fine.RmsError:E3}");
+            // Cubic edges with cubic cross slopes: at least third order, so halving h divides the error by > 6.
+            Assert.That(fine.MaxError, Is.LessThan(coarse.MaxError / 6));
+            Assert.That(ContinuityMeasure.MaxNormalAngleDegrees(fine.Grid), Is.LessThan(0.1));
+        }
+
+        [Test]
+        public void ReportedErrorMatchesAnIndependentCheck()
+        {
+            HeightmapFit fit = Fit5x5();
+            // Recompute at every 4th sample by evaluating through regions found independently.
+            double max = 0;
+            for (int r = 0; r < 129; r += 4)
+                for (int c = 0; c < 129; c += 4)
+                {
+                    double x = c / 128.0, y = r / 128.0;
+                    int i = Math.Min(4, (int)Math.Floor(x * 5)), j = Math.Min(4, (int)Math.Floor(y * 5));
+                    Region reg = fit.Grid.RegionOf(i, j);
+                    Double3 p = GregoryEval.Position(fit.Grid.Patch(i, j).Points, (x - reg.a) / reg.Width, (y - reg.b) / reg.Height);
+                    Assert.That(p.x, Is.EqualTo(x).Within(1e-14));
+                    Assert.That(p.y, Is.EqualTo(y).Within(1e-14));
+                    max = Math.Max(max, Math.Abs(p.z - Terrain(x, y)));
+                }
+            Assert.That(max, Is.LessThanOrEqualTo(fit.MaxError + 1e-15));
+            Assert.That(max, Is.GreaterThan(0.0));
+        }
+
+        [Test]
+        public void ReproducesAPlaneExactly()
+        {
+            // A plane is reproduced by every step (interpolant, Hermite curves, cubic slopes).
+            int w = 17, h = 9;
+            var a = new double[w * h];
+            for (int r = 0; r < h; r++)
+                for (int c = 0; c < w; c++)
+                    a[r * w + c] = 0.25 + 0.5 * c / (w - 1.0) - 0.125 * r / (h - 1.0);
+            HeightmapFit fit = HeightmapFitter.Fit(a, w, h, 3, 2);
+            Assert.That(fit.MaxError, Is.LessThan(1e-14));
+        }
+
+        [Test]
+        public void ReportsProgressUpToOne()
+        {
+            var seen = new List<float>();
+            HeightmapFitter.Fit(Samples(33, 33), 33, 33, 2, 2, new SyncProgress(seen));
+            Assert.That(seen.Count, Is.GreaterThan(2));
+            Assert.That(seen[seen.Count - 1], Is.EqualTo(1f));
+            for (int k = 1; k < seen.Count; k++) Assert.That(seen[k], Is.GreaterThanOrEqualTo(seen[k - 1]));
+        }
+
+        [Test]
+        public void CancellationThrows()
+        {
+            using var cts = new CancellationTokenSource();
+            cts.Cancel();
+            Assert.Throws<OperationCanceledException>(() => HeightmapFitter.Fit(Samples(33, 33), 33, 33, 2, 2, null, cts.Token));
+            // Cancelled from the progress callback, mid-way.
+            using var cts2 = new CancellationTokenSource();
+            var p = new SyncProgress(new List<float>(), f => { if (f > 0.3f) cts2.Cancel(); });
+            Assert.Throws<OperationCanceledException>(() => HeightmapFitter.Fit(Samples(33, 33), 33, 33, 4, 4, p, cts2.Token));
+        }
+
+        [Test]
+        public void RejectsBadInput()
+        {
+            var ex = Assert.Throws<ArgumentException>(() => HeightmapFitter.Fit(new double[10], 3, 3, 1, 1));
+            Assert.That(ex.Message, Does.Contain("heights.Length = 10"));
+            var bad = Samples(5, 5);
+            bad[7] = double.PositiveInfinity;
+            ex = Assert.Throws<ArgumentException>(() => HeightmapFitter.Fit(bad, 5, 5, 1, 1));
+            Assert.That(ex.Message, Does.Contain("heights[7]").And.Contain("column 2, row 1").And.Contain("Infinity"));
+            ex = Assert.Throws<ArgumentException>(() => HeightmapFitter.Fit(Samples(5, 5), 5, 5, 0, 1));
+            Assert.That(ex.Message, Does.Contain("columns = 0"));
+            ex = Assert.Throws<ArgumentException>(() => HeightmapFitter.Fit(new double[5], 5, 1, 1, 1));
+            Assert.That(ex.Message, Does.Contain("height = 1"));
+        }
+
+        /// <summary>IProgress that reports synchronously (System.Progress posts to a context).</summary>
+        sealed class SyncProgress : IProgress<float>
+        {
+            readonly List<float> seen;
+            readonly Action<float> also;
+            public SyncProgress(List<float> seen, Action<float> also = null) { this.seen = seen; this.also = also; }
+            public void Report(float value) { seen.Add(value); also?.Invoke(value); }
+        }
+    }
+}

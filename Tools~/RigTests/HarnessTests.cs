@@ -1,0 +1,404 @@
+// GPU tests through the Vulkan harness (Tools~/harness) on Mesa's lavapipe: the harness binds,
+// splits, reads back and counts what Documentation~/internals.md says. They fail (never skip)
+// when the harness, glslang or lavapipe is missing: `gt setup` provides all three.
+using System;
+using System.Collections.Generic;
+using System.Diagnostics;
+using System.IO;
+using System.IO.Compression;
+using System.Linq;
+using NUnit.Framework;
+
+namespace GregoryTerrain.Rig.Tests
+{
+    /// <summary>Runs gt-harness and parses its "KEY SUB VALUE..." lines.</summary>
+    public sealed class HarnessRun
+    {
+        public int ExitCode;
+        public string Stdout = "";
+        public string Stderr = "";
+
+        public const string LavapipeIcd = "/usr/share/vulkan/icd.d/lvp_icd.x86_64.json";
+
+        public static string PackageRoot()
+        {
+            string dir = TestContext.CurrentContext.TestDirectory;
+            while (dir != null && !File.Exists(Path.Combine(dir, "package.json")))
+                dir = Path.GetDirectoryName(dir);
+            if (dir == null)
+                throw new InvalidOperationException("no package.json above " + TestContext.CurrentContext.TestDirectory);
+            return dir;
+        }
+
+        public static string HarnessPath()
+        {
+            return Path.Combine(PackageRoot(), ".build", "harness", "gt-harness");
+        }
+
+        public static HarnessRun Start(string file, IEnumerable<string> args)
+        {
+            var psi = new ProcessStartInfo(file)
+            {
+                RedirectStandardOutput = true,
+                RedirectStandardError = true,
+                UseShellExecute = false,
+            };
+            foreach (string a in args) psi.ArgumentList.Add(a);
+            psi.Environment["VK_ICD_FILENAMES"] = LavapipeIcd;
+            psi.Environment["VK_DRIVER_FILES"] = LavapipeIcd;
+            using (var p = Process.Start(psi))
+            {
+                var stderrTask = p.StandardError.ReadToEndAsync();
+                string stdout = p.StandardOutput.ReadToEnd();
+                p.WaitForExit();
+                return new HarnessRun { ExitCode = p.ExitCode, Stdout = stdout, Stderr = stderrTask.Result };
+            }
+        }
+
+        public static HarnessRun Harness(params string[] args)
+        {
+            return Start(HarnessPath(), args);
+        }
+
+        /// <summary>The words after "key sub" on the first such line, or null.</summary>
+        public string[] Value(string key, string sub)
+        {
+            foreach (string line in Stdout.Split('\n'))
+            {
+                string[] w = line.Trim().Split(' ', StringSplitOptions.RemoveEmptyEntries);
+                if (w.Length >= 2 && w[0] == key && w[1] == sub) return w.Skip(2).ToArray();
+            }
+            return null;
+        }
+
+        public long Long(string key, string sub)
+        {
+            string[] v = Value(key, sub);
+            Assert.That(v, Is.Not.Null, "harness printed no '" + key + " " + sub + "' line:\n" + Stdout + Stderr);
+            return long.Parse(v[0], System.Globalization.CultureInfo.InvariantCulture);
+        }
+
+        public void AssertSucceeded()
+        {
+            Assert.That(ExitCode, Is.EqualTo(0), "gt-harness failed:\n" + Stdout + Stderr);
+        }
+    }
+
+    [TestFixture]
+    public class HarnessTests
+    {
+        const int Size = 128;  // render target width = height
+        string _work;
+        string _spv;
+
+        [OneTimeSetUp]
+        public void CompileTestShaders()
+        {
+            Assert.That(File.Exists(HarnessRun.HarnessPath()), Is.True,
+                "gt-harness not built at " + HarnessRun.HarnessPath() + " (run Tools~/gt setup)");
+            Assert.That(File.Exists(HarnessRun.LavapipeIcd), Is.True,
+                "lavapipe is not installed (" + HarnessRun.LavapipeIcd + "; apt package mesa-vulkan-drivers)");
+            _work = Path.Combine(HarnessRun.PackageRoot(), ".build", "rigtests-harness");
+            _spv = Path.Combine(_work, "spv");
+            Directory.CreateDirectory(_work);
+            string compile = Path.Combine(HarnessRun.PackageRoot(), "Tools~", "harness", "test", "compile.sh");
+            HarnessRun c = HarnessRun.Start("bash", new[] { compile, _spv });
+            Assert.That(c.ExitCode, Is.EqualTo(0), "compiling the harness test shaders failed:\n" + c.Stdout + c.Stderr);
+        }
+
+        // ---- inputs -------------------------------------------------------------------------
+
+        static void WriteFloats(string path, IEnumerable<float> values)
+        {
+            using (var w = new BinaryWriter(File.Create(path)))
+                foreach (float v in values) w.Write(v);  // BinaryWriter is little-endian
+        }
+
+        /// <summary>Params with _Range = range and _Tess = (tiles, F, 1, F); a top-down orthographic
+        /// camera mapping object (x, z) in [0,1]^2 to the whole target; buffers whose element i
+        /// holds i + 0.25 (control point x), i + 0.5 (region y), i + 0.75 (grid line).</summary>
+        string MakeInputs(string name, int tiles, int factor, float[] range)
+        {
+            string dir = Path.Combine(_work, name);
+            Directory.CreateDirectory(dir);
+            var p = new List<float>(range) { 0, 0, 0, 0, 8, 8, 0, 0, tiles, factor, 1, factor };
+            while (p.Count < 36) p.Add(0);
+            WriteFloats(Path.Combine(dir, "params.f32"), p);
+            // clip = M * (x, y, z, 1) with rows (2,0,0,-1) (0,0,2,-1) (0,0,0,0.5) (0,0,0,1); stored column after column.
+            float[,] m = { { 2, 0, 0, -1 }, { 0, 0, 2, -1 }, { 0, 0, 0, 0.5f }, { 0, 0, 0, 1 } };
+            var cam = new List<float>();
+            for (int c = 0; c < 4; c++) for (int r = 0; r < 4; r++) cam.Add(m[r, c]);
+            for (int c = 0; c < 4; c++) for (int r = 0; r < 4; r++) cam.Add(r == c ? 1 : 0);
+            cam.AddRange(new float[] { 0.5f, 2, 0.5f, 1, Size, Size, 1f / Size, 1f / Size, 0, 1, 0, 0 });
+            WriteFloats(Path.Combine(dir, "camera.f32"), cam);
+            const int patches = 64;
+            WriteFloats(Path.Combine(dir, "control_points.f32"),
+                Enumerable.Range(0, 20 * patches).SelectMany(i => new[] { i + 0.25f, 0, 0, 1 }));
+            WriteFloats(Path.Combine(dir, "regions.f32"), Enumerable.Range(0, patches).SelectMany(i => new[] { 0, i + 0.5f, 0, 0 }));
+            WriteFloats(Path.Combine(dir, "grid_lines.f32"), Enumerable.Range(0, 65).Select(i => i + 0.75f));
+            return dir;
+        }
+
+        string[] TessArgs(string buffers, int tiles, int factor, string readback, params string[] extra)
+        {
+            var a = new List<string>
+            {
+                "--vert", Path.Combine(_spv, "tiles.vert.spv"), "--tesc", Path.Combine(_spv, "tiles.tesc.spv"),
+                "--tese", Path.Combine(_spv, readback != null ? "tiles_readback.tese.spv" : "tiles.tese.spv"),
+                "--frag", Path.Combine(_spv, "tiles.frag.spv"), "--buffers", buffers,
+                "--patches", (tiles * tiles).ToString(), "--max-factor", factor.ToString(),
+                "--width", Size.ToString(), "--height", Size.ToString(), "--device", "llvmpipe",
+            };
+            if (readback != null)
+            {
+                int vertices = tiles * tiles * (factor + 1) * (factor + 1);
+                a.AddRange(new[] { "--readback", readback, "--readback-floats", (12 * vertices).ToString() });
+            }
+            a.AddRange(extra);
+            return a.ToArray();
+        }
+
+        static float[] ReadFloats(string path)
+        {
+            byte[] b = File.ReadAllBytes(path);
+            var f = new float[b.Length / 4];
+            Buffer.BlockCopy(b, 0, f, 0, f.Length * 4);
+            return f;
+        }
+
+        /// <summary>Every readback slot holds the vertex internals.md's index formula puts there:
+        /// vertex = tile (F+1)^2 + round(t F)(F+1) + round(s F); the hull stage's SV_PrimitiveID is
+        /// tile % perDraw, since it restarts at 0 in each draw of perDraw patches.</summary>
+        static void AssertReadback(string path, int m, int f, float[] range, int perDraw)
+        {
+            float[] v = ReadFloats(path);
+            int n = m * m * (f + 1) * (f + 1);
+            Assert.That(v.Length, Is.EqualTo(12 * n));
+            double worst = 0;
+            for (int k = 0; k < n; k++)
+            {
+                int tile = k / ((f + 1) * (f + 1)), r = k % ((f + 1) * (f + 1));
+                int row = r / (f + 1), col = r % (f + 1);
+                int o = 12 * k;
+                // The tessellator's coordinates are fixed point on lavapipe (off by ~1e-4 at F = 63):
+                // within a quarter spacing identifies the vertex.
+                Assert.That(v[o + 4], Is.EqualTo((double)col / f).Within(0.25 / f), "s of vertex " + k);
+                Assert.That(v[o + 5], Is.EqualTo((double)row / f).Within(0.25 / f), "t of vertex " + k);
+                worst = Math.Max(worst, Math.Abs(v[o + 4] - (double)col / f));
+                Assert.That(v[o + 6], Is.EqualTo(tile), "tile of vertex " + k);
+                double qx = range[0] + (tile % m + (double)v[o + 4]) / m * (range[2] - range[0]);
+                double qy = range[1] + (tile / m + (double)v[o + 5]) / m * (range[3] - range[1]);
+                Assert.That(v[o + 0], Is.EqualTo(qx).Within(1e-6), "q.x of vertex " + k);
+                Assert.That(v[o + 2], Is.EqualTo(qy).Within(1e-6), "q.y of vertex " + k);
+                Assert.That(v[o + 8], Is.EqualTo(tile + 0.25f), "_ControlPoints[tile].x (binding 2) of vertex " + k);
+                Assert.That(v[o + 9], Is.EqualTo(tile + 0.5f), "_Regions[tile].y (binding 3) of vertex " + k);
+                Assert.That(v[o + 10], Is.EqualTo(tile + 0.75f), "_GridLines[tile] (binding 4) of vertex " + k);
+                Assert.That(v[o + 7], Is.EqualTo(tile % perDraw), "SV_PrimitiveID of vertex " + k);
+            }
+            TestContext.Out.WriteLine("readback {0}: {1} vertices, largest |s - col/F| = {2:G3}", Path.GetFileName(path), n, worst);
+        }
+
+        // ---- tests --------------------------------------------------------------------------
+
+        [Test]
+        public void ListDevices_ShowsLavapipe()
+        {
+            HarnessRun r = HarnessRun.Harness("--list-devices");
+            r.AssertSucceeded();
+            Assert.That(r.Stdout, Does.Contain("llvmpipe"));
+        }
+
+        [Test]
+        public void Tiles4x4Factor8_OneDraw_ReadbackStatsAndImageMatchTheContract()
+        {
+            string dir = MakeInputs("in_4x4_f8", 4, 8, new[] { 0f, 0, 1, 1 });
+            string rb = Path.Combine(_work, "rb_4x4_f8.f32");
+            string png = Path.Combine(_work, "tiles_4x4_f8.png");
+            HarnessRun r = HarnessRun.Harness(TessArgs(dir, 4, 8, rb, "--stats", "--png", png));
+            r.AssertSucceeded();
+            Assert.That(r.Value("device", "lavapipe")[0], Is.EqualTo("1"));
+            Assert.That(r.Value("draws", "1"), Is.Not.Null, "expected one draw:\n" + r.Stdout);
+            Assert.That(r.Value("readback", rb)[3], Is.EqualTo("0"), "unwritten (NaN) readback floats");
+            AssertReadback(rb, 4, 8, new[] { 0f, 0, 1, 1 }, 16);
+            Assert.That(r.Long("image", "nonsky_pixels"), Is.EqualTo(Size * Size));
+
+            // Counts an integer-partitioned quad draw must give (lavapipe reports these exactly).
+            Assert.That(r.Long("stat", "input_assembly_vertices"), Is.EqualTo(16 * 4));
+            Assert.That(r.Long("stat", "input_assembly_primitives"), Is.EqualTo(16));
+            Assert.That(r.Long("stat", "vertex_shader_invocations"), Is.EqualTo(16 * 4));
+            Assert.That(r.Long("stat", "tessellation_control_shader_patches"), Is.EqualTo(16));
+            Assert.That(r.Long("stat", "tessellation_evaluation_shader_invocations"), Is.EqualTo(16 * 9 * 9));
+            Assert.That(r.Long("stat", "clipping_primitives"), Is.EqualTo(16 * 2 * 8 * 8));
+            // Fragment invocations include helper lanes (lavapipe: 2x the pixels here): a lower bound only.
+            Assert.That(r.Long("stat", "fragment_shader_invocations"), Is.GreaterThanOrEqualTo(Size * Size));
+
+            Assert.That(DecodePngNonSky(png), Is.EqualTo(Size * Size), "PNG pixels differ from the harness's count");
+        }
+
+        [Test]
+        public void Tiles6x6Factor63_SplitIntoThreeDraws_EveryVertexLandsRight()
+        {
+            // 36 tiles * 64^2 = 147,456 vertices > 65,536: split into whole-patch draws of 16 tiles.
+            float[] range = { 0.25f, 0.25f, 0.75f, 0.75f };
+            string dir = MakeInputs("in_6x6_f63", 6, 63, range);
+            string rb = Path.Combine(_work, "rb_6x6_f63.f32");
+            HarnessRun r = HarnessRun.Harness(TessArgs(dir, 6, 63, rb, "--stats"));
+            r.AssertSucceeded();
+            Assert.That(r.Long("split", "max_vertices_per_draw"), Is.EqualTo(65536), "lavapipe's default limit");
+            Assert.That(r.Value("draws", "3"), Is.Not.Null, "expected 3 draws:\n" + r.Stdout);
+            Assert.That(r.Value("readback", rb)[3], Is.EqualTo("0"), "unwritten (NaN) readback floats");
+            // SV_PrimitiveID restarts in every draw (so it cannot be the tile index); the tile from
+            // SV_VertexID / 4 (firstVertex included) is right for all 36 tiles.
+            AssertReadback(rb, 6, 63, range, 16);
+            // The range covers a quarter of the target, every pixel of it drawn.
+            Assert.That(r.Long("image", "nonsky_pixels"), Is.EqualTo(Size * Size / 4).Within(2 * Size));
+            Assert.That(r.Long("stat", "tessellation_evaluation_shader_invocations"), Is.EqualTo(36 * 64 * 64));
+            Assert.That(r.Long("stat", "clipping_primitives"), Is.EqualTo(36 * 2 * 63 * 63));
+        }
+
+        [Test]
+        public void Tiles6x6Factor63_WithoutSplit_LavapipeDropsTriangles()
+        {
+            // Documents why the split exists (DESIGN section 5): one draw of 147,456 vertices.
+            // If a future Mesa fixes the bug, this test fails and the default limit can go.
+            float[] range = { 0.25f, 0.25f, 0.75f, 0.75f };
+            string dir = MakeInputs("in_6x6_f63", 6, 63, range);
+            string rb = Path.Combine(_work, "rb_6x6_f63_unsplit.f32");
+            HarnessRun r = HarnessRun.Harness(TessArgs(dir, 6, 63, rb, "--max-vertices-per-draw", "0"));
+            r.AssertSucceeded();
+            AssertReadback(rb, 6, 63, range, int.MaxValue);  // the domain stage's output is right...
+            Assert.That(r.Value("draws", "1"), Is.Not.Null);
+            long nonSky = r.Long("image", "nonsky_pixels");
+            TestContext.Out.WriteLine("unsplit 6x6 tiles at factor 63: {0} of {1} pixels drawn", nonSky, Size * Size / 4);
+            Assert.That(nonSky, Is.LessThan(Size * Size / 4 - 2 * Size));  // ...but triangles are lost
+        }
+
+        [Test]
+        public void RangeOverride_ReplacesTheFirstFloat4OfParams()
+        {
+            string dir = MakeInputs("in_range", 4, 8, new[] { 0f, 0, 1, 1 });
+            string rb = Path.Combine(_work, "rb_range.f32");
+            HarnessRun r = HarnessRun.Harness(TessArgs(dir, 4, 8, rb, "--range", "0.5,0.5,1,1"));
+            r.AssertSucceeded();
+            AssertReadback(rb, 4, 8, new[] { 0.5f, 0.5f, 1f, 1f }, 16);
+        }
+
+        [Test]
+        public void Fallback_InstancedGrid_ReadbackMatchesTheContract()
+        {
+            string dir = MakeInputs("in_fallback", 4, 8, new[] { 0f, 0, 1, 1 });
+            string rb = Path.Combine(_work, "rb_fallback.f32");
+            HarnessRun r = HarnessRun.Harness("--vert", Path.Combine(_spv, "fallback_readback.vert.spv"),
+                "--frag", Path.Combine(_spv, "tiles.frag.spv"), "--buffers", dir, "--grid-factor", "8", "--instances", "16",
+                "--width", Size.ToString(), "--height", Size.ToString(), "--readback", rb,
+                "--readback-floats", (12 * 16 * 81).ToString(), "--stats");
+            r.AssertSucceeded();
+            AssertReadback(rb, 4, 8, new[] { 0f, 0, 1, 1 }, 1);  // no primitive ID in the fallback: slot holds 0
+            Assert.That(r.Long("image", "nonsky_pixels"), Is.EqualTo(Size * Size));
+            Assert.That(r.Long("stat", "input_assembly_primitives"), Is.EqualTo(16 * 2 * 8 * 8));
+        }
+
+        [Test]
+        public void StaticMesh_DrawsAndTimesFrames()
+        {
+            string dir = MakeInputs("in_mesh", 4, 8, new[] { 0f, 0, 1, 1 });
+            string pos = Path.Combine(_work, "quad_positions.f32"), idx = Path.Combine(_work, "quad_indices.u32");
+            WriteFloats(pos, new[] { 0.25f, 0, 0.25f, 0.75f, 0, 0.25f, 0.75f, 0, 0.75f, 0.25f, 0, 0.75f });
+            using (var w = new BinaryWriter(File.Create(idx)))
+                foreach (uint i in new uint[] { 0, 1, 2, 0, 2, 3 }) w.Write(i);
+            HarnessRun r = HarnessRun.Harness("--static-mesh", "--mesh", pos, idx, "--vert", Path.Combine(_spv, "mesh.vert.spv"),
+                "--frag", Path.Combine(_spv, "mesh.frag.spv"), "--buffers", dir, "--width", Size.ToString(),
+                "--height", Size.ToString(), "--frames", "4", "--warmup", "1", "--timestamps", "--update-range-per-frame",
+                "--resend-bytes", "65536");
+            r.AssertSucceeded();
+            Assert.That(r.Long("image", "nonsky_pixels"), Is.EqualTo(Size / 2 * (Size / 2)));
+            Assert.That(r.Stdout.Split('\n').Count(l => l.StartsWith("time frame_ms ")), Is.EqualTo(4));
+            double median = double.Parse(r.Value("time", "frame_ms_median")[0], System.Globalization.CultureInfo.InvariantCulture);
+            Assert.That(median, Is.GreaterThan(0.0));
+        }
+
+        [TestCase("params.f32", 35, "144")]
+        [TestCase("camera.f32", 10, "176")]
+        [TestCase("control_points.f32", 81, "320")]
+        public void BadFileSize_FailsNamingTheFile(string file, int floats, string expectedBytes)
+        {
+            string dir = MakeInputs("in_bad_" + file, 4, 8, new[] { 0f, 0, 1, 1 });
+            WriteFloats(Path.Combine(dir, file), new float[floats]);
+            HarnessRun r = HarnessRun.Harness(TessArgs(dir, 4, 8, null));
+            Assert.That(r.ExitCode, Is.Not.EqualTo(0));
+            Assert.That(r.Stderr, Does.Contain(file).And.Contain(expectedBytes));
+        }
+
+        [Test]
+        public void UnknownDevice_Fails()
+        {
+            string dir = MakeInputs("in_4x4_f8", 4, 8, new[] { 0f, 0, 1, 1 });
+            var args = TessArgs(dir, 4, 8, null).ToList();
+            args[args.IndexOf("llvmpipe")] = "no-such-gpu";
+            HarnessRun r = HarnessRun.Harness(args.ToArray());
+            Assert.That(r.ExitCode, Is.Not.EqualTo(0));
+            Assert.That(r.Stderr, Does.Contain("no-such-gpu"));
+        }
+
+        // ---- PNG check: chunk CRCs, zlib Adler-32, then count the non-sky pixels ---------------
+
+        static uint Crc32(byte[] b, int start, int count)
+        {
+            uint c = 0xffffffffu;
+            for (int i = start; i < start + count; i++)
+            {
+                c ^= b[i];
+                for (int k = 0; k < 8; k++) c = (c & 1) != 0 ? 0xedb88320u ^ (c >> 1) : c >> 1;
+            }
+            return ~c;
+        }
+
+        static uint BigEndian(byte[] b, int i)
+        {
+            return (uint)(b[i] << 24 | b[i + 1] << 16 | b[i + 2] << 8 | b[i + 3]);
+        }
+
+        static long DecodePngNonSky(string path)
+        {
+            byte[] png = File.ReadAllBytes(path);
+            Assert.That(png.Take(8), Is.EqualTo(new byte[] { 0x89, 0x50, 0x4e, 0x47, 0x0d, 0x0a, 0x1a, 0x0a }));
+            int width = 0, height = 0;
+            var idat = new MemoryStream();
+            for (int i = 8; i < png.Length;)
+            {
+                int len = (int)BigEndian(png, i);
+                string type = System.Text.Encoding.ASCII.GetString(png, i + 4, 4);
+                Assert.That(BigEndian(png, i + 8 + len), Is.EqualTo(Crc32(png, i + 4, len + 4)), "CRC of " + type);
+                if (type == "IHDR") { width = (int)BigEndian(png, i + 8); height = (int)BigEndian(png, i + 12); }
+                if (type == "IDAT") idat.Write(png, i + 8, len);
+                i += 12 + len;
+            }
+            byte[] z = idat.ToArray();
+            byte[] raw;
+            using (var inflate = new ZLibStream(new MemoryStream(z), CompressionMode.Decompress))
+            using (var o = new MemoryStream())
+            {
+                inflate.CopyTo(o);
+                raw = o.ToArray();
+            }
+            uint a = 1, s = 0;
+            foreach (byte x in raw) { a = (a + x) % 65521; s = (s + a) % 65521; }
+            Assert.That(BigEndian(z, z.Length - 4), Is.EqualTo(s << 16 | a), "Adler-32");
+            Assert.That(raw.Length, Is.EqualTo(height * (1 + 4 * width)));
+            byte[] sky = { (byte)Math.Round(0.55 * 255), (byte)Math.Round(0.70 * 255), (byte)Math.Round(0.90 * 255) };
+            long n = 0;
+            for (int y = 0; y < height; y++)
+            {
+                int row = y * (1 + 4 * width);
+                Assert.That(raw[row], Is.EqualTo(0), "filter byte");
+                for (int x = 0; x < width; x++)
+                {
+                    bool differs = false;
+                    for (int c = 0; c < 3; c++) differs |= Math.Abs(raw[row + 1 + 4 * x + c] - sky[c]) > 2;
+                    if (differs) n++;
+                }
+            }
+            return n;
+        }
+    }
+}

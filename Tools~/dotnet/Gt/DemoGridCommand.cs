@@ -1,0 +1,47 @@
+using System;
+using System.IO;
+
+namespace GregoryTerrain.Rig
+{
+    /// <summary>
+    /// gt-cli demo-grid: the sample grid of the demo and the Unity sample: 5 x 5 Gregory patches
+    /// fitted to a procedural heightmap (a few broad hills and a ridge plus several noise octaves).
+    /// </summary>
+    static class DemoGridCommand
+    {
+        public static int Run(Args a)
+        {
+            string output = a.String("out");
+            int columns = a.Int("columns", 5), rows = a.Int("rows", 5), samples = a.Int("samples", 257);
+            double[] heights = Heightmap(samples);
+            var fit = HeightmapFitter.Fit(heights, samples, samples, columns, rows);
+            fit.Grid.Validate();
+            Directory.CreateDirectory(Path.GetDirectoryName(Path.GetFullPath(output)));
+            File.WriteAllText(output, PatchGridJson.Write(fit.Grid));
+            Console.WriteLine(FormattableString.Invariant(
+                $"grid {columns}x{rows} fitted to {samples}x{samples} samples: max error {fit.MaxError:G3}, rms {fit.RmsError:G3}, G1 {ContinuityMeasure.MaxNormalAngleDegrees(fit.Grid):G3} deg -> {output}"));
+            return 0;
+        }
+
+        /// <summary>Heights in terrain units (the terrain is the unit square), row-major, y rows.</summary>
+        public static double[] Heightmap(int samples)
+        {
+            var detail = new NoiseSettings(0.035f, 3f, 2f, 2.2f, 5);
+            var h = new double[samples * samples];
+            for (int j = 0; j < samples; j++)
+                for (int i = 0; i < samples; i++)
+                {
+                    double x = i / (samples - 1.0), y = j / (samples - 1.0);
+                    double hills = 0.10 * Bump(x, y, 0.30, 0.35, 0.18) + 0.14 * Bump(x, y, 0.70, 0.62, 0.15)
+                                 + 0.06 * Bump(x, y, 0.55, 0.20, 0.10);
+                    double ridge = 0.05 * Math.Exp(-Math.Pow((x + 0.6 * y - 0.95) / 0.06, 2));
+                    double noise = OctaveNoise.Evaluate(x, y, detail, detail.octaves, out _);
+                    h[j * samples + i] = hills + ridge + noise;
+                }
+            return h;
+        }
+
+        static double Bump(double x, double y, double cx, double cy, double r) =>
+            Math.Exp(-((x - cx) * (x - cx) + (y - cy) * (y - cy)) / (r * r));
+    }
+}

@@ -1,0 +1,107 @@
+using System;
+
+namespace GregoryTerrain.Rig
+{
+    /// <summary>
+    /// The rig's camera: the 36 floats of the <c>RigCamera</c> cbuffer (internals.md, binding 1).
+    /// Matrices are built in double, row-major in maths (<c>clip = M * p</c>), and written column
+    /// after column, which is how HLSL's default column_major packing reads them.
+    /// Vulkan clip space: y down, depth 0..1.
+    /// </summary>
+    sealed class RigCamera
+    {
+        public double[,] ObjectToWorld = Identity();
+        public double[,] WorldToClip = Identity();
+        public double[] Position = new double[3];
+        public double[] LightDirection = { -0.4, 0.8, -0.45 };
+        public int Width = 1024, Height = 768;
+
+        /// <summary>Perspective camera at <paramref name="eye"/> looking at <paramref name="target"/>, +Y up.</summary>
+        public static RigCamera LookAt(double[] eye, double[] target, double fovYDegrees, int width, int height,
+                                       double near, double far, double[,] objectToWorld)
+        {
+            var f = Normalize(Sub(target, eye));
+            var s = Normalize(Cross(f, new[] { 0.0, 1.0, 0.0 }));
+            var u = Cross(s, f);
+            var view = new double[,]
+            {
+                { s[0], s[1], s[2], -Dot(s, eye) },
+                { u[0], u[1], u[2], -Dot(u, eye) },
+                { -f[0], -f[1], -f[2], Dot(f, eye) },
+                { 0, 0, 0, 1 },
+            };
+            double t = 1.0 / Math.Tan(fovYDegrees * Math.PI / 360.0), aspect = (double)width / height;
+            // Right-handed view (camera looks down -z) to Vulkan clip: y flipped, depth near 0 far 1.
+            var proj = new double[,]
+            {
+                { t / aspect, 0, 0, 0 },
+                { 0, -t, 0, 0 },
+                { 0, 0, far / (near - far), near * far / (near - far) },
+                { 0, 0, -1, 0 },
+            };
+            return new RigCamera
+            {
+                ObjectToWorld = objectToWorld,
+                WorldToClip = Mul(proj, view),
+                Position = (double[])eye.Clone(),
+                Width = width,
+                Height = height,
+            };
+        }
+
+        public static double[,] Scale(double x, double y, double z) =>
+            new double[,] { { x, 0, 0, 0 }, { 0, y, 0, 0 }, { 0, 0, z, 0 }, { 0, 0, 0, 1 } };
+
+        /// <summary>The cbuffer's floats: ObjectToClip, ObjectToWorld, CameraPosition, ScreenSize, LightDirection.</summary>
+        public float[] Pack()
+        {
+            var r = new float[16 + 16 + 4 + 4 + 4];
+            WriteColumns(Mul(WorldToClip, ObjectToWorld), r, 0);
+            WriteColumns(ObjectToWorld, r, 16);
+            r[32] = (float)Position[0]; r[33] = (float)Position[1]; r[34] = (float)Position[2]; r[35] = 1;
+            r[36] = Width; r[37] = Height; r[38] = 1f / Width; r[39] = 1f / Height;
+            var l = Normalize(LightDirection);
+            r[40] = (float)l[0]; r[41] = (float)l[1]; r[42] = (float)l[2]; r[43] = 0;
+            return r;
+        }
+
+        /// <summary>Object-space point to pixel coordinates and NDC depth, for error measures in pixels.</summary>
+        public double[] ToPixels(double[] objectPoint)
+        {
+            var m = Mul(WorldToClip, ObjectToWorld);
+            var c = new double[4];
+            for (int i = 0; i < 4; i++)
+                c[i] = m[i, 0] * objectPoint[0] + m[i, 1] * objectPoint[1] + m[i, 2] * objectPoint[2] + m[i, 3];
+            return new[] { (c[0] / c[3] * 0.5 + 0.5) * Width, (c[1] / c[3] * 0.5 + 0.5) * Height, c[2] / c[3], c[3] };
+        }
+
+        static void WriteColumns(double[,] m, float[] dst, int at)
+        {
+            for (int col = 0; col < 4; col++)
+                for (int row = 0; row < 4; row++)
+                    dst[at + col * 4 + row] = (float)m[row, col];
+        }
+
+        static double[,] Identity() => Scale(1, 1, 1);
+
+        static double[,] Mul(double[,] a, double[,] b)
+        {
+            var r = new double[4, 4];
+            for (int i = 0; i < 4; i++)
+                for (int j = 0; j < 4; j++)
+                    for (int k = 0; k < 4; k++)
+                        r[i, j] += a[i, k] * b[k, j];
+            return r;
+        }
+
+        static double[] Sub(double[] a, double[] b) => new[] { a[0] - b[0], a[1] - b[1], a[2] - b[2] };
+        static double Dot(double[] a, double[] b) => a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+        static double[] Cross(double[] a, double[] b) =>
+            new[] { a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0] };
+        static double[] Normalize(double[] a)
+        {
+            double l = Math.Sqrt(Dot(a, a));
+            return new[] { a[0] / l, a[1] / l, a[2] / l };
+        }
+    }
+}

@@ -1,0 +1,40 @@
+// Buffers and memory: device-local buffers filled once through a staging copy, host-visible
+// ones for what the CPU writes or reads every frame, and a one-shot command helper.
+#pragma once
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "device.hpp"
+
+namespace gt {
+
+struct Buffer {
+    VkBuffer buffer = VK_NULL_HANDLE;
+    VkDeviceMemory memory = VK_NULL_HANDLE;
+    VkDeviceSize size = 0;
+    void* mapped = nullptr;  // non-null for host-visible buffers (kept mapped, coherent)
+};
+
+// Host-visible + coherent; prefers memory that is also device-local (resizable BAR) when
+// preferDeviceLocal is set, so a per-frame uniform buffer is not read across the bus.
+Buffer createHostBuffer(const Gpu& gpu, VkDeviceSize size, VkBufferUsageFlags usage, bool preferDeviceLocal = false);
+
+// Device-local buffer of bytes.size() (at least 16) filled through a staging buffer.
+Buffer createDeviceBuffer(const Gpu& gpu, const std::vector<uint8_t>& bytes, VkBufferUsageFlags usage);
+
+// Device-local, uninitialised.
+Buffer createDeviceBuffer(const Gpu& gpu, VkDeviceSize size, VkBufferUsageFlags usage);
+
+void destroyBuffer(const Gpu& gpu, Buffer& buffer);
+
+// Records into a fresh command buffer, submits, waits.
+void submitOnce(const Gpu& gpu, const std::function<void(VkCommandBuffer)>& record);
+
+// The whole file; throws gt::Error naming it when it cannot be read.
+std::vector<uint8_t> readFile(const std::string& path);
+
+void writeFile(const std::string& path, const void* data, size_t size);
+
+}  // namespace gt

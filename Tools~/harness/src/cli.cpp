@@ -1,0 +1,158 @@
+#include "cli.hpp"
+
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <sstream>
+#include <vector>
+
+#include "check.hpp"
+
+namespace gt {
+
+namespace {
+
+uint64_t parseUnsigned(const std::string& flag, const std::string& text, uint64_t maxValue) {
+    if (text.empty() || text[0] == '-') fail(flag + ": expected a non-negative integer, got '" + text + "'");
+    errno = 0;
+    char* end = nullptr;
+    unsigned long long v = std::strtoull(text.c_str(), &end, 10);
+    if (errno != 0 || *end != '\0' || v > maxValue)
+        fail(flag + ": expected an integer in [0, " + std::to_string(maxValue) + "], got '" + text + "'");
+    return v;
+}
+
+std::array<float, 4> parseRange(const std::string& text) {
+    std::array<float, 4> r{};
+    std::stringstream ss(text);
+    std::string item;
+    int n = 0;
+    while (std::getline(ss, item, ',')) {
+        if (n == 4) fail("--range: expected 4 comma-separated numbers c,d,g,h, got '" + text + "'");
+        char* end = nullptr;
+        r[n] = std::strtof(item.c_str(), &end);
+        if (item.empty() || *end != '\0' || !std::isfinite(r[n]))
+            fail("--range: '" + item + "' is not a finite number (in '" + text + "')");
+        ++n;
+    }
+    if (n != 4) fail("--range: expected 4 comma-separated numbers c,d,g,h, got '" + text + "'");
+    if (!(r[0] < r[2]) || !(r[1] < r[3])) fail("--range: need c < g and d < h, got '" + text + "'");
+    return r;
+}
+
+}  // namespace
+
+const char* usageText() {
+    return R"(gt-harness: run SPIR-V terrain shaders headless on a Vulkan device.
+
+  --list-devices                 list physical devices and exit
+  --device SUBSTR                pick the device whose name contains SUBSTR (case-insensitive)
+  --vert F --tesc F --tese F --frag F   SPIR-V stages (no tesc/tese: fallback grid mode)
+  --entry-vert/--entry-tesc/--entry-tese/--entry-frag NAME
+                                 entry points (default: the module's only one, else
+                                 vert / hull_shader / domain_shader / frag)
+  --buffers DIR                  control_points.f32 regions.f32 grid_lines.f32 params.f32 camera.f32
+  --range c,d,g,h                overrides _Range (first float4 of params.f32)
+  --patches N                    patches drawn (tessellated mode)
+  --control-points K             control points per patch (default 4)
+  --grid-factor F --instances N  fallback mode: (F+1)^2-vertex grid, N instances
+  --static-mesh --mesh P.f32 I.u32   draw a static float3/uint32 mesh with --vert/--frag
+  --width W --height H           render target size (default 256x256)
+  --png FILE                     write the colour image as PNG
+  --wireframe                    polygonMode LINE (needs fillModeNonSolid)
+  --readback FILE --readback-floats K   storage buffer of K floats at binding 5, dumped to FILE
+  --readback-fill nan|zero       initial readback contents (default nan)
+  --stats                        pipeline statistics of the last frame ("stat NAME VALUE")
+  --frames N --warmup K          draw N measured frames after K warm-up frames
+  --timestamps                   GPU time of each frame ("time ..." lines)
+  --update-range-per-frame       write a new _Range into the uniform buffer every frame
+  --resend-bytes B               re-upload B bytes through a staging copy every frame
+  --max-vertices-per-draw V      split tessellated draws so each stays <= V generated vertices
+                                 (default 65536 on lavapipe, 0 = no split elsewhere)
+  --max-factor F                 per-patch tessellation factor bound for the split ((F+1)^2 vertices)
+  --help
+)";
+}
+
+Options parseOptions(int argc, char** argv) {
+    Options o;
+    bool staticMesh = false;
+    std::vector<std::string> args(argv + 1, argv + argc);
+    for (size_t i = 0; i < args.size(); ++i) {
+        const std::string& a = args[i];
+        auto value = [&]() -> const std::string& {
+            if (i + 1 >= args.size()) fail(a + ": missing value");
+            return args[++i];
+        };
+        auto u32 = [&](uint64_t maxValue = 0xffffffffull) { return static_cast<uint32_t>(parseUnsigned(a, value(), maxValue)); };
+        if (a == "--help" || a == "-h") { std::fputs(usageText(), stdout); std::exit(0); }
+        else if (a == "--list-devices") o.listDevices = true;
+        else if (a == "--device") o.deviceSubstring = value();
+        else if (a == "--vert") o.vertPath = value();
+        else if (a == "--tesc") o.tescPath = value();
+        else if (a == "--tese") o.tesePath = value();
+        else if (a == "--frag") o.fragPath = value();
+        else if (a == "--entry-vert") o.vertEntry = value();
+        else if (a == "--entry-tesc") o.tescEntry = value();
+        else if (a == "--entry-tese") o.teseEntry = value();
+        else if (a == "--entry-frag") o.fragEntry = value();
+        else if (a == "--buffers") o.buffersDir = value();
+        else if (a == "--range") o.range = parseRange(value());
+        else if (a == "--patches") o.patches = u32();
+        else if (a == "--control-points") o.controlPoints = u32(32);
+        else if (a == "--grid-factor") o.gridFactor = u32(4096);
+        else if (a == "--instances") o.instances = u32();
+        else if (a == "--static-mesh") staticMesh = true;
+        else if (a == "--mesh") { o.meshPositions = value(); o.meshIndices = value(); }
+        else if (a == "--width") o.width = u32(16384);
+        else if (a == "--height") o.height = u32(16384);
+        else if (a == "--png") o.pngPath = value();
+        else if (a == "--wireframe") o.wireframe = true;
+        else if (a == "--readback") o.readbackPath = value();
+        else if (a == "--readback-floats") o.readbackFloats = parseUnsigned(a, value(), 1ull << 32);
+        else if (a == "--readback-fill") {
+            const std::string& v = value();
+            if (v == "nan") o.readbackFillNan = true;
+            else if (v == "zero") o.readbackFillNan = false;
+            else fail("--readback-fill: expected 'nan' or 'zero', got '" + v + "'");
+        }
+        else if (a == "--stats") o.stats = true;
+        else if (a == "--frames") o.frames = u32(1000000);
+        else if (a == "--warmup") o.warmup = u32(1000000);
+        else if (a == "--timestamps") o.timestamps = true;
+        else if (a == "--update-range-per-frame") o.updateRangePerFrame = true;
+        else if (a == "--resend-bytes") o.resendBytes = parseUnsigned(a, value(), 1ull << 34);
+        else if (a == "--max-vertices-per-draw") o.maxVerticesPerDraw = parseUnsigned(a, value(), 1ull << 40);
+        else if (a == "--max-factor") o.maxFactor = u32(4096);
+        else fail("unknown argument '" + a + "' (see --help)");
+    }
+    if (o.listDevices) return o;
+
+    if (o.vertPath.empty()) fail("--vert is required (see --help)");
+    if (o.fragPath.empty()) fail("--frag is required (see --help)");
+    if (o.buffersDir.empty()) fail("--buffers DIR is required (see --help)");
+    if (o.frames == 0) fail("--frames: must be at least 1");
+    if (o.width == 0 || o.height == 0) fail("--width/--height: must be at least 1");
+    if (o.tescPath.empty() != o.tesePath.empty()) fail("--tesc and --tese go together: give both or neither");
+    if (!o.readbackPath.empty() && o.readbackFloats == 0) fail("--readback needs --readback-floats K (K > 0)");
+    if (o.readbackPath.empty() && o.readbackFloats != 0) fail("--readback-floats needs --readback FILE");
+
+    if (staticMesh) {
+        o.mode = Mode::StaticMesh;
+        if (o.meshPositions.empty()) fail("--static-mesh needs --mesh positions.f32 indices.u32");
+        if (!o.tescPath.empty()) fail("--static-mesh draws without tessellation: drop --tesc/--tese");
+    } else if (o.tescPath.empty()) {
+        o.mode = Mode::Fallback;
+        if (o.gridFactor == 0) fail("fallback mode (no --tesc/--tese) needs --grid-factor F (F >= 1)");
+        if (o.instances == 0) fail("--instances: must be at least 1");
+    } else {
+        o.mode = Mode::Tessellated;
+        if (o.patches == 0) fail("tessellated mode needs --patches N (N >= 1)");
+        if (o.controlPoints == 0) fail("--control-points: must be at least 1");
+    }
+    return o;
+}
+
+}  // namespace gt

@@ -1,0 +1,57 @@
+// Command line of gt-harness (documented in ../README.md).
+#pragma once
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string>
+
+namespace gt {
+
+enum class Mode {
+    Tessellated,  // --vert --tesc --tese --frag: patch-list draw, SV_VertexID only
+    Fallback,     // --vert --frag without tesc/tese: indexed (F+1)^2 grid, one instance per tile
+    StaticMesh,   // --static-mesh --mesh P I: a plain indexed triangle mesh (benchmark baseline)
+};
+
+struct Options {
+    bool listDevices = false;
+    std::string deviceSubstring;  // "" = first device that has what the run needs
+
+    std::string vertPath, tescPath, tesePath, fragPath;
+    std::string vertEntry, tescEntry, teseEntry, fragEntry;  // "" = the module's only entry point, else the default name
+
+    std::string buffersDir;
+    std::optional<std::array<float, 4>> range;  // --range c,d,g,h patches params.f32's first float4
+
+    Mode mode = Mode::Tessellated;
+    uint32_t patches = 0;
+    uint32_t controlPoints = 4;
+    uint32_t gridFactor = 0;  // fallback
+    uint32_t instances = 1;   // fallback
+    std::string meshPositions, meshIndices;
+
+    uint32_t width = 256, height = 256;
+    std::string pngPath;
+    bool wireframe = false;
+
+    std::string readbackPath;
+    uint64_t readbackFloats = 0;
+    bool readbackFillNan = true;
+
+    bool stats = false;
+    uint32_t frames = 1, warmup = 0;
+    bool timestamps = false;
+    bool updateRangePerFrame = false;
+    uint64_t resendBytes = 0;
+
+    std::optional<uint64_t> maxVerticesPerDraw;  // unset: 65,536 on lavapipe, no limit elsewhere
+    std::optional<uint32_t> maxFactor;            // unset: the device's maxTessellationGenerationLevel
+};
+
+// Parses argv; throws gt::Error with the offending flag/value on bad input.
+Options parseOptions(int argc, char** argv);
+
+// The usage text printed by --help.
+const char* usageText();
+
+}  // namespace gt

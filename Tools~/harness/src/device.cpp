@@ -1,0 +1,221 @@
+#include "device.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cstdio>
+#include <cstring>
+#include <vector>
+
+#include "check.hpp"
+
+namespace gt {
+
+namespace {
+
+std::string lower(std::string s) {
+    std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    return s;
+}
+
+std::string versionText(uint32_t v) {
+    return std::to_string(VK_API_VERSION_MAJOR(v)) + "." + std::to_string(VK_API_VERSION_MINOR(v)) + "." +
+           std::to_string(VK_API_VERSION_PATCH(v));
+}
+
+const char* typeText(VkPhysicalDeviceType t) {
+    switch (t) {
+        case VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU: return "integrated";
+        case VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU: return "discrete";
+        case VK_PHYSICAL_DEVICE_TYPE_VIRTUAL_GPU: return "virtual";
+        case VK_PHYSICAL_DEVICE_TYPE_CPU: return "cpu";
+        default: return "other";
+    }
+}
+
+VkInstance createInstance() {
+    // Vulkan 1.2 when the loader has it (driver properties are core there), else 1.1.
+    uint32_t loaderVersion = VK_API_VERSION_1_0;
+    auto enumerateVersion = reinterpret_cast<PFN_vkEnumerateInstanceVersion>(
+        vkGetInstanceProcAddr(VK_NULL_HANDLE, "vkEnumerateInstanceVersion"));
+    if (enumerateVersion) enumerateVersion(&loaderVersion);
+    if (loaderVersion < VK_API_VERSION_1_1) fail("the Vulkan loader supports only " + versionText(loaderVersion) + "; need 1.1");
+
+    VkApplicationInfo app{VK_STRUCTURE_TYPE_APPLICATION_INFO};
+    app.pApplicationName = "gt-harness";
+    app.apiVersion = loaderVersion >= VK_API_VERSION_1_2 ? VK_API_VERSION_1_2 : VK_API_VERSION_1_1;
+    VkInstanceCreateInfo info{VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO};
+    info.pApplicationInfo = &app;  // no extensions: nothing here may depend on a display
+    VkInstance instance = VK_NULL_HANDLE;
+    VkResult r = vkCreateInstance(&info, nullptr, &instance);
+    if (r == VK_ERROR_INCOMPATIBLE_DRIVER)
+        fail("no Vulkan driver found (VK_ERROR_INCOMPATIBLE_DRIVER); for lavapipe set "
+             "VK_ICD_FILENAMES=/usr/share/vulkan/icd.d/lvp_icd.x86_64.json");
+    GT_VK(r);
+    return instance;
+}
+
+std::vector<VkPhysicalDevice> physicalDevices(VkInstance instance) {
+    uint32_t n = 0;
+    GT_VK(vkEnumeratePhysicalDevices(instance, &n, nullptr));
+    std::vector<VkPhysicalDevice> list(n);
+    GT_VK(vkEnumeratePhysicalDevices(instance, &n, list.data()));
+    list.resize(n);
+    return list;
+}
+
+bool hasDeviceExtension(VkPhysicalDevice pd, const char* name) {
+    uint32_t n = 0;
+    vkEnumerateDeviceExtensionProperties(pd, nullptr, &n, nullptr);
+    std::vector<VkExtensionProperties> ext(n);
+    vkEnumerateDeviceExtensionProperties(pd, nullptr, &n, ext.data());
+    for (const auto& e : ext)
+        if (std::strcmp(e.extensionName, name) == 0) return true;
+    return false;
+}
+
+struct DriverText {
+    std::string name, info;
+    VkDriverId id = static_cast<VkDriverId>(0);
+};
+
+DriverText driverText(VkPhysicalDevice pd) {
+    VkPhysicalDeviceProperties p{};
+    vkGetPhysicalDeviceProperties(pd, &p);
+    DriverText t;
+    if (p.apiVersion < VK_API_VERSION_1_2 && !hasDeviceExtension(pd, VK_KHR_DRIVER_PROPERTIES_EXTENSION_NAME)) return t;
+    VkPhysicalDeviceDriverProperties driver{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DRIVER_PROPERTIES};
+    VkPhysicalDeviceProperties2 p2{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2};
+    p2.pNext = &driver;
+    vkGetPhysicalDeviceProperties2(pd, &p2);
+    t.name = driver.driverName;
+    t.info = driver.driverInfo;
+    t.id = driver.driverID;
+    return t;
+}
+
+bool isLavapipe(const VkPhysicalDeviceProperties& p, const DriverText& d) {
+    std::string n = lower(p.deviceName);
+    return d.id == VK_DRIVER_ID_MESA_LLVMPIPE || n.find("llvmpipe") != std::string::npos ||
+           n.find("lavapipe") != std::string::npos;
+}
+
+int graphicsQueueFamily(VkPhysicalDevice pd, uint32_t* timestampBits) {
+    uint32_t n = 0;
+    vkGetPhysicalDeviceQueueFamilyProperties(pd, &n, nullptr);
+    std::vector<VkQueueFamilyProperties> q(n);
+    vkGetPhysicalDeviceQueueFamilyProperties(pd, &n, q.data());
+    for (uint32_t i = 0; i < n; ++i)
+        if (q[i].queueFlags & VK_QUEUE_GRAPHICS_BIT) {
+            *timestampBits = q[i].timestampValidBits;
+            return static_cast<int>(i);
+        }
+    return -1;
+}
+
+}  // namespace
+
+void listDevices() {
+    VkInstance instance = createInstance();
+    auto list = physicalDevices(instance);
+    for (size_t i = 0; i < list.size(); ++i) {
+        VkPhysicalDeviceProperties p{};
+        vkGetPhysicalDeviceProperties(list[i], &p);
+        DriverText d = driverText(list[i]);
+        std::printf("device %zu %s | type %s | api %s | driver %s %s\n", i, p.deviceName, typeText(p.deviceType),
+                    versionText(p.apiVersion).c_str(), d.name.c_str(), d.info.c_str());
+    }
+    if (list.empty()) std::printf("no Vulkan devices\n");
+    vkDestroyInstance(instance, nullptr);
+}
+
+Gpu createGpu(const std::string& nameSubstring, const FeatureRequest& request) {
+    Gpu gpu;
+    gpu.instance = createInstance();
+    auto list = physicalDevices(gpu.instance);
+    if (list.empty()) fail("no Vulkan physical device found (is a driver installed? VK_ICD_FILENAMES?)");
+
+    std::string names;
+    for (VkPhysicalDevice pd : list) {
+        VkPhysicalDeviceProperties p{};
+        vkGetPhysicalDeviceProperties(pd, &p);
+        names += std::string(names.empty() ? "" : ", ") + "'" + p.deviceName + "'";
+        if (lower(p.deviceName).find(lower(nameSubstring)) != std::string::npos) {
+            gpu.physical = pd;
+            break;
+        }
+    }
+    if (!gpu.physical) fail("--device '" + nameSubstring + "' matches none of the devices: " + names);
+
+    vkGetPhysicalDeviceProperties(gpu.physical, &gpu.properties);
+    vkGetPhysicalDeviceMemoryProperties(gpu.physical, &gpu.memory);
+    if (gpu.properties.apiVersion < VK_API_VERSION_1_1)
+        fail(std::string(gpu.properties.deviceName) + " supports only Vulkan " + versionText(gpu.properties.apiVersion) +
+             "; need 1.1 (negative viewport height)");
+    DriverText d = driverText(gpu.physical);
+    gpu.driverName = d.name;
+    gpu.driverInfo = d.info;
+    gpu.isLavapipe = isLavapipe(gpu.properties, d);
+
+    int family = graphicsQueueFamily(gpu.physical, &gpu.timestampValidBits);
+    if (family < 0) fail(std::string(gpu.properties.deviceName) + " has no graphics queue");
+    gpu.queueFamily = static_cast<uint32_t>(family);
+
+    VkPhysicalDeviceFeatures supported{};
+    vkGetPhysicalDeviceFeatures(gpu.physical, &supported);
+    const std::string dev = gpu.properties.deviceName;
+    auto need = [&](bool wanted, VkBool32 has, VkBool32& enable, const char* feature, const char* why) {
+        if (!wanted) return;
+        if (!has) fail(dev + " lacks the Vulkan feature " + feature + ", needed for " + why);
+        enable = VK_TRUE;
+    };
+    need(request.tessellation, supported.tessellationShader, gpu.enabled.tessellationShader, "tessellationShader",
+         "the tessellated draw (use the fallback mode: no --tesc/--tese)");
+    need(request.wireframe, supported.fillModeNonSolid, gpu.enabled.fillModeNonSolid, "fillModeNonSolid", "--wireframe");
+    need(request.vertexStores, supported.vertexPipelineStoresAndAtomics, gpu.enabled.vertexPipelineStoresAndAtomics,
+         "vertexPipelineStoresAndAtomics", "--readback (the domain/vertex stage writes _Readback)");
+    need(request.statistics, supported.pipelineStatisticsQuery, gpu.enabled.pipelineStatisticsQuery,
+         "pipelineStatisticsQuery", "--stats");
+    // Turned on whenever available: harmless, and a statistics query may then count tessellation.
+    gpu.enabled.tessellationShader = supported.tessellationShader;
+
+    float priority = 1.0f;
+    VkDeviceQueueCreateInfo queueInfo{VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};
+    queueInfo.queueFamilyIndex = gpu.queueFamily;
+    queueInfo.queueCount = 1;
+    queueInfo.pQueuePriorities = &priority;
+    VkDeviceCreateInfo info{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO};
+    info.queueCreateInfoCount = 1;
+    info.pQueueCreateInfos = &queueInfo;
+    info.pEnabledFeatures = &gpu.enabled;
+    GT_VK(vkCreateDevice(gpu.physical, &info, nullptr, &gpu.device));
+    vkGetDeviceQueue(gpu.device, gpu.queueFamily, 0, &gpu.queue);
+
+    VkCommandPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
+    poolInfo.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
+    poolInfo.queueFamilyIndex = gpu.queueFamily;
+    GT_VK(vkCreateCommandPool(gpu.device, &poolInfo, nullptr, &gpu.commandPool));
+    return gpu;
+}
+
+void destroyGpu(Gpu& gpu) {
+    if (gpu.device) {
+        vkDeviceWaitIdle(gpu.device);
+        if (gpu.commandPool) vkDestroyCommandPool(gpu.device, gpu.commandPool, nullptr);
+        vkDestroyDevice(gpu.device, nullptr);
+    }
+    if (gpu.instance) vkDestroyInstance(gpu.instance, nullptr);
+    gpu = Gpu{};
+}
+
+void printDevice(const Gpu& gpu) {
+    const auto& p = gpu.properties;
+    std::printf("device name %s\n", p.deviceName);
+    std::printf("device type %s\n", typeText(p.deviceType));
+    std::printf("device api %s\n", versionText(p.apiVersion).c_str());
+    std::printf("device driver_version 0x%08x\n", p.driverVersion);
+    std::printf("device driver %s | %s\n", gpu.driverName.empty() ? "unknown" : gpu.driverName.c_str(),
+                gpu.driverInfo.c_str());
+    std::printf("device lavapipe %d\n", gpu.isLavapipe ? 1 : 0);
+}
+
+}  // namespace gt

@@ -1,0 +1,44 @@
+// Device selection: instance without any window-system extension, one physical device picked
+// by name, one queue that does graphics (and so transfers), the features the run asks for.
+#pragma once
+#include <string>
+#include <vulkan/vulkan.h>
+
+namespace gt {
+
+struct FeatureRequest {
+    bool tessellation = false;    // tessellationShader
+    bool wireframe = false;       // fillModeNonSolid
+    bool vertexStores = false;    // vertexPipelineStoresAndAtomics (readback from the domain/vertex stage)
+    bool statistics = false;      // pipelineStatisticsQuery
+};
+
+struct Gpu {
+    VkInstance instance = VK_NULL_HANDLE;
+    VkPhysicalDevice physical = VK_NULL_HANDLE;
+    VkDevice device = VK_NULL_HANDLE;
+    VkQueue queue = VK_NULL_HANDLE;
+    uint32_t queueFamily = 0;
+    VkCommandPool commandPool = VK_NULL_HANDLE;
+
+    VkPhysicalDeviceProperties properties{};
+    VkPhysicalDeviceMemoryProperties memory{};
+    VkPhysicalDeviceFeatures enabled{};  // what was turned on
+    std::string driverName, driverInfo;  // VK_KHR_driver_properties / Vulkan 1.2, "" if unavailable
+    bool isLavapipe = false;             // Mesa's CPU driver (llvmpipe), see DESIGN section 5
+    uint32_t timestampValidBits = 0;     // of the chosen queue family; 0 = no timestamps
+};
+
+// Prints one line per physical device: "device INDEX NAME | type T | api X.Y.Z | driver ...".
+void listDevices();
+
+// Creates the instance and the device. Throws gt::Error naming the missing feature, or the
+// substring that matched no device.
+Gpu createGpu(const std::string& nameSubstring, const FeatureRequest& request);
+
+void destroyGpu(Gpu& gpu);
+
+// Prints the chosen device: "device name ...", "device api ...", "device driver ...".
+void printDevice(const Gpu& gpu);
+
+}  // namespace gt

@@ -1,0 +1,45 @@
+// The frame loop: one command buffer recorded once and submitted once per frame (each frame its
+// own vkQueueSubmit + fence wait), with optional per-frame range update, geometry re-send,
+// timestamps and pipeline statistics.
+#pragma once
+#include <array>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "buffers.hpp"
+#include "cli.hpp"
+#include "draw_split.hpp"
+#include "inputs.hpp"
+#include "pipeline.hpp"
+#include "target.hpp"
+
+namespace gt {
+
+// What one frame draws.
+struct DrawWork {
+    Mode mode = Mode::Tessellated;
+    uint32_t controlPoints = 4;
+    std::vector<PatchRange> draws;  // tessellated: one vkCmdDraw per range
+    Buffer indices;                 // fallback and static mesh: uint32 index buffer
+    uint32_t indexCount = 0;
+    uint32_t instances = 1;
+    Buffer positions;               // static mesh: float3 vertex buffer
+};
+
+struct FrameSettings {
+    uint32_t frames = 1, warmup = 0;
+    bool timestamps = false, stats = false, updateRange = false;
+    uint64_t resendBytes = 0;
+};
+
+struct FrameResults {
+    std::vector<double> gpuMs;  // measured frames only (with timestamps)
+    std::vector<double> cpuMs;  // submit to fence, measured frames only
+    std::vector<std::pair<std::string, uint64_t>> stats;  // of the last frame
+};
+
+FrameResults runFrames(const Gpu& gpu, const RenderTarget& target, const Pipeline& pipeline, Inputs& inputs,
+                       const DrawWork& work, const FrameSettings& settings);
+
+}  // namespace gt

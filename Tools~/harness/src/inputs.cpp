@@ -1,0 +1,70 @@
+#include "inputs.hpp"
+
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <vector>
+
+#include "check.hpp"
+
+namespace gt {
+
+namespace {
+
+std::vector<uint8_t> readSized(const std::string& path, size_t exact, size_t multiple) {
+    std::vector<uint8_t> bytes = readFile(path);
+    if (exact && bytes.size() != exact)
+        fail("'" + path + "' has " + std::to_string(bytes.size()) + " bytes; expected exactly " + std::to_string(exact));
+    if (multiple && (bytes.empty() || bytes.size() % multiple != 0))
+        fail("'" + path + "' has " + std::to_string(bytes.size()) + " bytes; expected a non-zero multiple of " +
+             std::to_string(multiple));
+    return bytes;
+}
+
+}  // namespace
+
+Inputs loadInputs(const Gpu& gpu, const std::string& dir, const std::optional<std::array<float, 4>>& range,
+                  uint64_t readbackFloats, bool fillNan) {
+    const std::string d = dir + "/";
+    std::vector<uint8_t> params = readSized(d + "params.f32", kParamsBytes, 0);
+    std::vector<uint8_t> camera = readSized(d + "camera.f32", kCameraBytes, 0);
+    std::vector<uint8_t> points = readSized(d + "control_points.f32", 0, kPatchBytes);
+    std::vector<uint8_t> regions = readSized(d + "regions.f32", 0, 16);
+    std::vector<uint8_t> lines = readSized(d + "grid_lines.f32", 0, 4);
+    if (regions.size() / 16 != points.size() / kPatchBytes)
+        fail("control_points.f32 holds " + std::to_string(points.size() / kPatchBytes) + " patches but regions.f32 holds " +
+             std::to_string(regions.size() / 16) + " regions");
+
+    Inputs in;
+    in.gregoryPatches = static_cast<uint32_t>(points.size() / kPatchBytes);
+    std::memcpy(in.params.data(), params.data(), kParamsBytes);
+    if (range) std::copy(range->begin(), range->end(), in.params.begin());
+
+    const VkBufferUsageFlags storage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
+    in.bindings[kBindingParams] = createHostBuffer(gpu, kParamsBytes, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, true);
+    std::memcpy(in.bindings[kBindingParams].mapped, in.params.data(), kParamsBytes);
+    in.bindings[kBindingCamera] = createDeviceBuffer(gpu, camera, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
+    in.bindings[kBindingControlPoints] = createDeviceBuffer(gpu, points, storage);
+    in.bindings[kBindingRegions] = createDeviceBuffer(gpu, regions, storage);
+    in.bindings[kBindingGridLines] = createDeviceBuffer(gpu, lines, storage);
+
+    // Readback: host-visible so the dump is a plain memcpy; pre-filled so unwritten slots show.
+    const uint64_t floats = readbackFloats ? readbackFloats : 4;
+    Buffer& rb = in.bindings[kBindingReadback];
+    rb = createHostBuffer(gpu, floats * 4, storage);
+    const float fill = fillNan ? std::numeric_limits<float>::quiet_NaN() : 0.0f;
+    float* f = static_cast<float*>(rb.mapped);
+    for (uint64_t i = 0; i < rb.size / 4; ++i) f[i] = fill;
+    return in;
+}
+
+void destroyInputs(const Gpu& gpu, Inputs& inputs) {
+    for (Buffer& b : inputs.bindings) destroyBuffer(gpu, b);
+}
+
+void writeRange(Inputs& inputs, const std::array<float, 4>& range) {
+    std::copy(range.begin(), range.end(), inputs.params.begin());
+    std::memcpy(inputs.bindings[kBindingParams].mapped, range.data(), 16);
+}
+
+}  // namespace gt

@@ -1,0 +1,186 @@
+// gt-harness entry point: parse the command line, set the device up, draw, report.
+// Output is line-oriented and machine-readable ("KEY [SUBKEY] VALUE"), see ../README.md.
+#include <algorithm>
+#include <cstdio>
+#include <numeric>
+#include <vector>
+
+#include "check.hpp"
+#include "cli.hpp"
+#include "device.hpp"
+#include "draw_split.hpp"
+#include "frames.hpp"
+#include "inputs.hpp"
+#include "pipeline.hpp"
+#include "png.hpp"
+#include "readback.hpp"
+#include "spirv.hpp"
+#include "target.hpp"
+
+namespace gt {
+namespace {
+
+// Indices of the two triangles of each cell of a (F+1) x (F+1) vertex grid, row-major vertices.
+std::vector<uint8_t> gridIndices(uint32_t f, uint32_t* count) {
+    std::vector<uint32_t> idx;
+    idx.reserve(static_cast<size_t>(f) * f * 6);
+    const uint32_t row = f + 1;
+    for (uint32_t j = 0; j < f; ++j)
+        for (uint32_t i = 0; i < f; ++i) {
+            const uint32_t a = j * row + i, b = a + 1, c = a + row, d = c + 1;
+            idx.insert(idx.end(), {a, b, d, a, d, c});
+        }
+    *count = static_cast<uint32_t>(idx.size());
+    std::vector<uint8_t> bytes(idx.size() * 4);
+    std::copy_n(reinterpret_cast<const uint8_t*>(idx.data()), bytes.size(), bytes.data());
+    return bytes;
+}
+
+DrawWork prepareWork(const Options& o, const Gpu& gpu) {
+    DrawWork w;
+    w.mode = o.mode;
+    w.controlPoints = o.controlPoints;
+    w.instances = o.instances;
+    if (o.mode == Mode::Tessellated) {
+        const uint64_t limit = o.maxVerticesPerDraw ? *o.maxVerticesPerDraw : (gpu.isLavapipe ? kLavapipeMaxVerticesPerDraw : 0);
+        const uint32_t factor = o.maxFactor ? *o.maxFactor : gpu.properties.limits.maxTessellationGenerationLevel;
+        const uint64_t perPatch = quadVerticesBound(factor);
+        w.draws = splitPatches(o.patches, perPatch, limit);
+        std::printf("split max_vertices_per_draw %llu\n", static_cast<unsigned long long>(limit));
+        std::printf("split max_factor %u\n", factor);
+        std::printf("split vertices_per_patch_bound %llu\n", static_cast<unsigned long long>(perPatch));
+        std::printf("draws %zu\n", w.draws.size());
+        for (size_t i = 0; i < w.draws.size(); ++i)
+            std::printf("draw %zu first_patch %u patches %u\n", i, w.draws[i].firstPatch, w.draws[i].patchCount);
+    } else if (o.mode == Mode::Fallback) {
+        w.indices = createDeviceBuffer(gpu, gridIndices(o.gridFactor, &w.indexCount), VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
+        std::printf("draws 1\n");
+        std::printf("fallback grid_vertices %u indices %u instances %u\n", (o.gridFactor + 1) * (o.gridFactor + 1),
+                    w.indexCount, o.instances);
+    } else {
+        std::vector<uint8_t> pos = readFile(o.meshPositions), idx = readFile(o.meshIndices);
+        if (pos.empty() || pos.size() % 12 != 0)
+            fail("'" + o.meshPositions + "' has " + std::to_string(pos.size()) + " bytes; expected a non-zero multiple of 12 (float3)");
+        if (idx.empty() || idx.size() % 12 != 0)
+            fail("'" + o.meshIndices + "' has " + std::to_string(idx.size()) + " bytes; expected a non-zero multiple of 12 (3 uint32 per triangle)");
+        const uint32_t vertexCount = static_cast<uint32_t>(pos.size() / 12);
+        const uint32_t* ip = reinterpret_cast<const uint32_t*>(idx.data());
+        for (size_t i = 0; i < idx.size() / 4; ++i)
+            if (ip[i] >= vertexCount)
+                fail("'" + o.meshIndices + "': index " + std::to_string(ip[i]) + " at " + std::to_string(i) +
+                     " >= vertex count " + std::to_string(vertexCount));
+        w.positions = createDeviceBuffer(gpu, pos, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
+        w.indices = createDeviceBuffer(gpu, idx, VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
+        w.indexCount = static_cast<uint32_t>(idx.size() / 4);
+        w.instances = 1;
+        std::printf("draws 1\n");
+        std::printf("mesh vertices %u triangles %u\n", vertexCount, w.indexCount / 3);
+    }
+    return w;
+}
+
+void printTimes(const char* key, std::vector<double> ms) {
+    if (ms.empty()) return;
+    std::sort(ms.begin(), ms.end());
+    const size_t n = ms.size();
+    const double median = n % 2 ? ms[n / 2] : 0.5 * (ms[n / 2 - 1] + ms[n / 2]);
+    const double mean = std::accumulate(ms.begin(), ms.end(), 0.0) / static_cast<double>(n);
+    std::printf("time %s_median %.6f\n", key, median);
+    std::printf("time %s_min %.6f\n", key, ms.front());
+    std::printf("time %s_mean %.6f\n", key, mean);
+}
+
+int run(const Options& o) {
+    if (o.listDevices) {
+        listDevices();
+        return 0;
+    }
+    FeatureRequest request;
+    request.tessellation = o.mode == Mode::Tessellated;
+    request.wireframe = o.wireframe;
+    request.vertexStores = !o.readbackPath.empty();
+    request.statistics = o.stats;
+    Gpu gpu = createGpu(o.deviceSubstring, request);
+    printDevice(gpu);
+
+    Inputs inputs = loadInputs(gpu, o.buffersDir, o.range, o.readbackFloats, o.readbackFillNan);
+    std::printf("inputs gregory_patches %u\n", inputs.gregoryPatches);
+    std::printf("inputs range %.9g %.9g %.9g %.9g\n", inputs.params[0], inputs.params[1], inputs.params[2], inputs.params[3]);
+
+    PipelineDesc desc;
+    desc.mode = o.mode;
+    desc.controlPoints = o.controlPoints;
+    desc.wireframe = o.wireframe;
+    const std::string vertDefault = o.mode == Mode::Fallback ? "vert_fallback" : "vert";
+    desc.vert = loadShader(gpu, o.vertPath, 0, o.vertEntry, vertDefault);
+    if (o.mode == Mode::Tessellated) {
+        desc.tesc = loadShader(gpu, o.tescPath, 1, o.tescEntry, "hull_shader");
+        desc.tese = loadShader(gpu, o.tesePath, 2, o.teseEntry, "domain_shader");
+    }
+    desc.frag = loadShader(gpu, o.fragPath, 4, o.fragEntry, "frag");
+
+    RenderTarget target = createRenderTarget(gpu, o.width, o.height);
+    Pipeline pipeline = createPipeline(gpu, desc, target, inputs);
+    DrawWork work = prepareWork(o, gpu);
+
+    FrameSettings fs;
+    fs.frames = o.frames;
+    fs.warmup = o.warmup;
+    fs.timestamps = o.timestamps;
+    fs.stats = o.stats;
+    fs.updateRange = o.updateRangePerFrame;
+    fs.resendBytes = o.resendBytes;
+    FrameResults results = runFrames(gpu, target, pipeline, inputs, work, fs);
+
+    for (const auto& s : results.stats) std::printf("stat %s %llu\n", s.first.c_str(), static_cast<unsigned long long>(s.second));
+    if (o.frames > 1 || o.timestamps) {
+        std::printf("time frames %u warmup %u\n", o.frames, o.warmup);
+        for (size_t i = 0; i < results.gpuMs.size(); ++i) std::printf("time frame_ms %zu %.6f\n", i, results.gpuMs[i]);
+        printTimes("frame_ms", results.gpuMs);
+        printTimes("cpu_frame_ms", results.cpuMs);
+        if (gpu.isLavapipe) std::printf("note lavapipe timings are functional figures, not performance\n");
+    }
+
+    std::vector<uint8_t> rgba = readColor(gpu, target);
+    std::printf("image nonsky_pixels %llu of %llu\n", static_cast<unsigned long long>(countNonSkyPixels(rgba)),
+                static_cast<unsigned long long>(rgba.size() / 4));
+    if (!o.pngPath.empty()) {
+        writePng(o.pngPath, rgba.data(), o.width, o.height);
+        std::printf("png %s %u %u\n", o.pngPath.c_str(), o.width, o.height);
+    }
+    if (!o.readbackPath.empty()) {
+        const uint64_t nan = dumpReadback(inputs.bindings[kBindingReadback], o.readbackFloats, o.readbackPath);
+        std::printf("readback %s floats %llu nan %llu\n", o.readbackPath.c_str(),
+                    static_cast<unsigned long long>(o.readbackFloats), static_cast<unsigned long long>(nan));
+    }
+
+    destroyBuffer(gpu, work.indices);
+    destroyBuffer(gpu, work.positions);
+    destroyPipeline(gpu, pipeline);
+    destroyRenderTarget(gpu, target);
+    destroyShader(gpu, desc.vert);
+    destroyShader(gpu, desc.tesc);
+    destroyShader(gpu, desc.tese);
+    destroyShader(gpu, desc.frag);
+    destroyInputs(gpu, inputs);
+    destroyGpu(gpu);
+    return 0;
+}
+
+}  // namespace
+}  // namespace gt
+
+int main(int argc, char** argv) {
+    std::setvbuf(stdout, nullptr, _IOLBF, 0);
+    try {
+        return gt::run(gt::parseOptions(argc, argv));
+    } catch (const gt::Error& e) {
+        std::fflush(stdout);
+        std::fprintf(stderr, "gt-harness: error: %s\n", e.what());
+        return 1;
+    } catch (const std::exception& e) {
+        std::fflush(stdout);
+        std::fprintf(stderr, "gt-harness: error: %s\n", e.what());
+        return 1;
+    }
+}

@@ -1,0 +1,154 @@
+#include "pipeline.hpp"
+
+#include <vector>
+
+#include "check.hpp"
+
+namespace gt {
+
+namespace {
+
+VkDescriptorType bindingType(uint32_t binding) {
+    return binding <= kBindingCamera ? VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER : VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+}
+
+void createDescriptors(const Gpu& gpu, Pipeline& p, const Inputs& inputs) {
+    VkDescriptorSetLayoutBinding b[kBindingCount]{};
+    for (uint32_t i = 0; i < kBindingCount; ++i) {
+        b[i].binding = i;
+        b[i].descriptorType = bindingType(i);
+        b[i].descriptorCount = 1;
+        b[i].stageFlags = VK_SHADER_STAGE_ALL_GRAPHICS;
+    }
+    VkDescriptorSetLayoutCreateInfo li{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
+    li.bindingCount = kBindingCount;
+    li.pBindings = b;
+    GT_VK(vkCreateDescriptorSetLayout(gpu.device, &li, nullptr, &p.setLayout));
+
+    VkDescriptorPoolSize sizes[2] = {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 2}, {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 4}};
+    VkDescriptorPoolCreateInfo pi{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
+    pi.maxSets = 1;
+    pi.poolSizeCount = 2;
+    pi.pPoolSizes = sizes;
+    GT_VK(vkCreateDescriptorPool(gpu.device, &pi, nullptr, &p.pool));
+    VkDescriptorSetAllocateInfo ai{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
+    ai.descriptorPool = p.pool;
+    ai.descriptorSetCount = 1;
+    ai.pSetLayouts = &p.setLayout;
+    GT_VK(vkAllocateDescriptorSets(gpu.device, &ai, &p.set));
+
+    VkDescriptorBufferInfo infos[kBindingCount]{};
+    VkWriteDescriptorSet writes[kBindingCount]{};
+    for (uint32_t i = 0; i < kBindingCount; ++i) {
+        infos[i] = {inputs.bindings[i].buffer, 0, VK_WHOLE_SIZE};
+        writes[i] = {VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+        writes[i].dstSet = p.set;
+        writes[i].dstBinding = i;
+        writes[i].descriptorCount = 1;
+        writes[i].descriptorType = bindingType(i);
+        writes[i].pBufferInfo = &infos[i];
+    }
+    vkUpdateDescriptorSets(gpu.device, kBindingCount, writes, 0, nullptr);
+}
+
+VkPipelineShaderStageCreateInfo stage(VkShaderStageFlagBits s, const ShaderModule& m) {
+    VkPipelineShaderStageCreateInfo info{VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
+    info.stage = s;
+    info.module = m.module;
+    info.pName = m.entry.c_str();
+    return info;
+}
+
+}  // namespace
+
+Pipeline createPipeline(const Gpu& gpu, const PipelineDesc& d, const RenderTarget& target, const Inputs& inputs) {
+    Pipeline p;
+    createDescriptors(gpu, p, inputs);
+    VkPipelineLayoutCreateInfo pl{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
+    pl.setLayoutCount = 1;
+    pl.pSetLayouts = &p.setLayout;
+    GT_VK(vkCreatePipelineLayout(gpu.device, &pl, nullptr, &p.layout));
+
+    const bool tess = d.mode == Mode::Tessellated;
+    std::vector<VkPipelineShaderStageCreateInfo> stages = {stage(VK_SHADER_STAGE_VERTEX_BIT, d.vert)};
+    if (tess) {
+        stages.push_back(stage(VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT, d.tesc));
+        stages.push_back(stage(VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT, d.tese));
+    }
+    stages.push_back(stage(VK_SHADER_STAGE_FRAGMENT_BIT, d.frag));
+
+    // Static mesh: float3 positions at location 0 (HLSL POSITION). Other modes: no vertex
+    // buffer at all, the vertex stage builds everything from SV_VertexID / SV_InstanceID.
+    VkVertexInputBindingDescription vb{0, 12, VK_VERTEX_INPUT_RATE_VERTEX};
+    VkVertexInputAttributeDescription va{0, 0, VK_FORMAT_R32G32B32_SFLOAT, 0};
+    VkPipelineVertexInputStateCreateInfo vi{VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
+    if (d.mode == Mode::StaticMesh) {
+        vi.vertexBindingDescriptionCount = 1;
+        vi.pVertexBindingDescriptions = &vb;
+        vi.vertexAttributeDescriptionCount = 1;
+        vi.pVertexAttributeDescriptions = &va;
+    }
+    VkPipelineInputAssemblyStateCreateInfo ia{VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO};
+    ia.topology = tess ? VK_PRIMITIVE_TOPOLOGY_PATCH_LIST : VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
+    VkPipelineTessellationStateCreateInfo ts{VK_STRUCTURE_TYPE_PIPELINE_TESSELLATION_STATE_CREATE_INFO};
+    ts.patchControlPoints = d.controlPoints;
+    if (tess && d.controlPoints > gpu.properties.limits.maxTessellationPatchSize)
+        fail("--control-points " + std::to_string(d.controlPoints) + " exceeds the device's maxTessellationPatchSize " +
+             std::to_string(gpu.properties.limits.maxTessellationPatchSize));
+
+    // Negative viewport height (Vulkan 1.1): clip-space +y is up, as in D3D/HLSL and Unity's
+    // projection, so images come out upright. It flips the winding, hence no culling.
+    VkViewport viewport{0.0f, static_cast<float>(target.height), static_cast<float>(target.width),
+                        -static_cast<float>(target.height), 0.0f, 1.0f};
+    VkRect2D scissor{{0, 0}, {target.width, target.height}};
+    VkPipelineViewportStateCreateInfo vp{VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO};
+    vp.viewportCount = 1;
+    vp.pViewports = &viewport;
+    vp.scissorCount = 1;
+    vp.pScissors = &scissor;
+
+    VkPipelineRasterizationStateCreateInfo rs{VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO};
+    rs.polygonMode = d.wireframe ? VK_POLYGON_MODE_LINE : VK_POLYGON_MODE_FILL;
+    rs.cullMode = VK_CULL_MODE_NONE;
+    rs.frontFace = VK_FRONT_FACE_COUNTER_CLOCKWISE;
+    rs.lineWidth = 1.0f;
+    VkPipelineMultisampleStateCreateInfo ms{VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO};
+    ms.rasterizationSamples = VK_SAMPLE_COUNT_1_BIT;
+    VkPipelineDepthStencilStateCreateInfo ds{VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO};
+    ds.depthTestEnable = VK_TRUE;
+    ds.depthWriteEnable = VK_TRUE;
+    ds.depthCompareOp = VK_COMPARE_OP_LESS_OR_EQUAL;
+    VkPipelineColorBlendAttachmentState blend{};
+    blend.colorWriteMask = VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT | VK_COLOR_COMPONENT_B_BIT |
+                           VK_COLOR_COMPONENT_A_BIT;
+    VkPipelineColorBlendStateCreateInfo cb{VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO};
+    cb.attachmentCount = 1;
+    cb.pAttachments = &blend;
+
+    VkGraphicsPipelineCreateInfo info{VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO};
+    info.stageCount = static_cast<uint32_t>(stages.size());
+    info.pStages = stages.data();
+    info.pVertexInputState = &vi;
+    info.pInputAssemblyState = &ia;
+    info.pTessellationState = tess ? &ts : nullptr;
+    info.pViewportState = &vp;
+    info.pRasterizationState = &rs;
+    info.pMultisampleState = &ms;
+    info.pDepthStencilState = &ds;
+    info.pColorBlendState = &cb;
+    info.layout = p.layout;
+    info.renderPass = target.renderPass;
+    VkResult r = vkCreateGraphicsPipelines(gpu.device, VK_NULL_HANDLE, 1, &info, nullptr, &p.pipeline);
+    if (r != VK_SUCCESS) fail("vkCreateGraphicsPipelines failed (" + resultName(r) + "): check the SPIR-V stages and entry points");
+    return p;
+}
+
+void destroyPipeline(const Gpu& gpu, Pipeline& p) {
+    if (p.pipeline) vkDestroyPipeline(gpu.device, p.pipeline, nullptr);
+    if (p.layout) vkDestroyPipelineLayout(gpu.device, p.layout, nullptr);
+    if (p.pool) vkDestroyDescriptorPool(gpu.device, p.pool, nullptr);
+    if (p.setLayout) vkDestroyDescriptorSetLayout(gpu.device, p.setLayout, nullptr);
+    p = Pipeline{};
+}
+
+}  // namespace gt

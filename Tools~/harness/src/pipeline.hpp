@@ -1,0 +1,28 @@
+// The graphics pipeline and its one descriptor set (set 0, bindings 0..5 as in internals.md).
+#pragma once
+#include "cli.hpp"
+#include "inputs.hpp"
+#include "spirv.hpp"
+#include "target.hpp"
+
+namespace gt {
+
+struct PipelineDesc {
+    Mode mode = Mode::Tessellated;
+    uint32_t controlPoints = 4;  // patch size for the tessellated mode
+    bool wireframe = false;
+    ShaderModule vert, tesc, tese, frag;  // tesc/tese empty outside the tessellated mode
+};
+
+struct Pipeline {
+    VkDescriptorSetLayout setLayout = VK_NULL_HANDLE;
+    VkDescriptorPool pool = VK_NULL_HANDLE;
+    VkDescriptorSet set = VK_NULL_HANDLE;
+    VkPipelineLayout layout = VK_NULL_HANDLE;
+    VkPipeline pipeline = VK_NULL_HANDLE;
+};
+
+Pipeline createPipeline(const Gpu& gpu, const PipelineDesc& desc, const RenderTarget& target, const Inputs& inputs);
+void destroyPipeline(const Gpu& gpu, Pipeline& pipeline);
+
+}  // namespace gt

@@ -1,0 +1,46 @@
+#include "readback.hpp"
+
+#include <cmath>
+#include <cstdlib>
+
+namespace gt {
+
+std::vector<uint8_t> readColor(const Gpu& gpu, const RenderTarget& t) {
+    const VkDeviceSize size = static_cast<VkDeviceSize>(t.width) * t.height * 4;
+    Buffer host = createHostBuffer(gpu, size, VK_BUFFER_USAGE_TRANSFER_DST_BIT);
+    submitOnce(gpu, [&](VkCommandBuffer cmd) {
+        VkBufferImageCopy region{};
+        region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+        region.imageExtent = {t.width, t.height, 1};
+        vkCmdCopyImageToBuffer(cmd, t.color.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, host.buffer, 1, &region);
+        VkMemoryBarrier toHost{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+        toHost.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
+        toHost.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
+        vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 1, &toHost, 0, nullptr, 0,
+                             nullptr);
+    });
+    const uint8_t* p = static_cast<const uint8_t*>(host.mapped);
+    std::vector<uint8_t> rgba(p, p + size);
+    destroyBuffer(gpu, host);
+    return rgba;
+}
+
+uint64_t countNonSkyPixels(const std::vector<uint8_t>& rgba) {
+    uint64_t n = 0;
+    for (size_t i = 0; i + 3 < rgba.size(); i += 4) {
+        bool differs = false;
+        for (int c = 0; c < 3; ++c) differs |= std::abs(rgba[i + c] - static_cast<int>(std::lround(kSky[c] * 255.0f))) > 2;
+        n += differs;
+    }
+    return n;
+}
+
+uint64_t dumpReadback(const Buffer& readback, uint64_t floats, const std::string& path) {
+    const float* f = static_cast<const float*>(readback.mapped);
+    uint64_t nan = 0;
+    for (uint64_t i = 0; i < floats; ++i) nan += std::isnan(f[i]) ? 1 : 0;
+    writeFile(path, f, floats * 4);
+    return nan;
+}
+
+}  // namespace gt

@@ -1,0 +1,66 @@
+#include "spirv.hpp"
+
+#include <cstring>
+
+#include "buffers.hpp"
+#include "check.hpp"
+
+namespace gt {
+
+namespace {
+constexpr uint32_t kMagic = 0x07230203;
+constexpr uint32_t kOpEntryPoint = 15;
+}  // namespace
+
+std::vector<std::string> entryPoints(const std::vector<uint32_t>& words, uint32_t executionModel) {
+    std::vector<std::string> names;
+    // Header is 5 words; each instruction starts with (word count << 16) | opcode.
+    for (size_t i = 5; i < words.size();) {
+        uint32_t count = words[i] >> 16, op = words[i] & 0xffff;
+        if (count == 0 || i + count > words.size()) break;
+        if (op == kOpEntryPoint && count >= 4 && words[i + 1] == executionModel) {
+            const char* s = reinterpret_cast<const char*>(&words[i + 3]);
+            names.emplace_back(s, strnlen(s, (count - 3) * 4));
+        }
+        i += count;
+    }
+    return names;
+}
+
+ShaderModule loadShader(const Gpu& gpu, const std::string& path, uint32_t executionModel, const std::string& requested,
+                        const std::string& fallbackName) {
+    std::vector<uint8_t> bytes = readFile(path);
+    if (bytes.size() < 20 || bytes.size() % 4 != 0)
+        fail("'" + path + "' is not SPIR-V (" + std::to_string(bytes.size()) + " bytes, not a multiple of 4 >= 20)");
+    std::vector<uint32_t> words(bytes.size() / 4);
+    std::memcpy(words.data(), bytes.data(), bytes.size());
+    if (words[0] != kMagic) fail("'" + path + "' is not SPIR-V (bad magic number)");
+
+    std::vector<std::string> names = entryPoints(words, executionModel);
+    static const char* stageNames[] = {"vertex", "tessellation control", "tessellation evaluation", "geometry", "fragment"};
+    if (names.empty())
+        fail("'" + path + "' has no " + (executionModel < 5 ? stageNames[executionModel] : "matching") +
+             " entry point: is it the right stage's SPIR-V?");
+    ShaderModule s;
+    s.path = path;
+    auto has = [&](const std::string& n) { for (auto& x : names) if (x == n) return true; return false; };
+    if (!requested.empty()) {
+        if (!has(requested)) fail("'" + path + "' has no entry point '" + requested + "' (it has '" + names[0] + "')");
+        s.entry = requested;
+    } else {
+        s.entry = names.size() == 1 ? names[0] : fallbackName;
+        if (!has(s.entry)) fail("'" + path + "' has several entry points and none named '" + fallbackName + "'");
+    }
+    VkShaderModuleCreateInfo info{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
+    info.codeSize = bytes.size();
+    info.pCode = words.data();
+    GT_VK(vkCreateShaderModule(gpu.device, &info, nullptr, &s.module));
+    return s;
+}
+
+void destroyShader(const Gpu& gpu, ShaderModule& shader) {
+    if (shader.module) vkDestroyShaderModule(gpu.device, shader.module, nullptr);
+    shader = ShaderModule{};
+}
+
+}  // namespace gt

@@ -1,0 +1,27 @@
+// SPIR-V modules: load a file, check it is SPIR-V, find its entry points (OpEntryPoint).
+#pragma once
+#include <string>
+#include <vector>
+
+#include "device.hpp"
+
+namespace gt {
+
+struct ShaderModule {
+    VkShaderModule module = VK_NULL_HANDLE;
+    std::string entry;  // the entry point used
+    std::string path;
+};
+
+// The names of the module's OpEntryPoint instructions that have the given execution model
+// (0 vertex, 1 tessellation control, 2 tessellation evaluation, 4 fragment).
+std::vector<std::string> entryPoints(const std::vector<uint32_t>& words, uint32_t executionModel);
+
+// Loads path. Entry: `requested` when given (must exist in the module); otherwise the module's
+// only entry point of that stage, else `fallbackName`. Throws gt::Error naming the file.
+ShaderModule loadShader(const Gpu& gpu, const std::string& path, uint32_t executionModel, const std::string& requested,
+                        const std::string& fallbackName);
+
+void destroyShader(const Gpu& gpu, ShaderModule& shader);
+
+}  // namespace gt

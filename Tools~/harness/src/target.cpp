@@ -1,0 +1,151 @@
+#include "target.hpp"
+
+#include "check.hpp"
+
+namespace gt {
+
+namespace {
+
+Image createImage(const Gpu& gpu, uint32_t w, uint32_t h, VkFormat format, VkImageUsageFlags usage,
+                  VkImageAspectFlags aspect) {
+    VkFormatProperties fp{};
+    vkGetPhysicalDeviceFormatProperties(gpu.physical, format, &fp);
+    VkFormatFeatureFlags need = (aspect & VK_IMAGE_ASPECT_DEPTH_BIT) ? VK_FORMAT_FEATURE_DEPTH_STENCIL_ATTACHMENT_BIT
+                                                                     : VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BIT;
+    if ((fp.optimalTilingFeatures & need) != need) fail("the device cannot render to format " + std::to_string(format));
+
+    Image img;
+    VkImageCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
+    info.imageType = VK_IMAGE_TYPE_2D;
+    info.format = format;
+    info.extent = {w, h, 1};
+    info.mipLevels = 1;
+    info.arrayLayers = 1;
+    info.samples = VK_SAMPLE_COUNT_1_BIT;
+    info.tiling = VK_IMAGE_TILING_OPTIMAL;
+    info.usage = usage;
+    info.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
+    GT_VK(vkCreateImage(gpu.device, &info, nullptr, &img.image));
+    VkMemoryRequirements req{};
+    vkGetImageMemoryRequirements(gpu.device, img.image, &req);
+    int type = -1;
+    for (uint32_t i = 0; i < gpu.memory.memoryTypeCount && type < 0; ++i)
+        if ((req.memoryTypeBits & (1u << i)) &&
+            (gpu.memory.memoryTypes[i].propertyFlags & VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT))
+            type = static_cast<int>(i);
+    for (uint32_t i = 0; i < gpu.memory.memoryTypeCount && type < 0; ++i)
+        if (req.memoryTypeBits & (1u << i)) type = static_cast<int>(i);
+    if (type < 0) fail("no memory type for a render target image");
+    VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
+    alloc.allocationSize = req.size;
+    alloc.memoryTypeIndex = static_cast<uint32_t>(type);
+    GT_VK(vkAllocateMemory(gpu.device, &alloc, nullptr, &img.memory));
+    GT_VK(vkBindImageMemory(gpu.device, img.image, img.memory, 0));
+    VkImageViewCreateInfo view{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
+    view.image = img.image;
+    view.viewType = VK_IMAGE_VIEW_TYPE_2D;
+    view.format = format;
+    view.subresourceRange = {aspect, 0, 1, 0, 1};
+    GT_VK(vkCreateImageView(gpu.device, &view, nullptr, &img.view));
+    return img;
+}
+
+void destroyImage(const Gpu& gpu, Image& img) {
+    if (img.view) vkDestroyImageView(gpu.device, img.view, nullptr);
+    if (img.image) vkDestroyImage(gpu.device, img.image, nullptr);
+    if (img.memory) vkFreeMemory(gpu.device, img.memory, nullptr);
+    img = Image{};
+}
+
+}  // namespace
+
+RenderTarget createRenderTarget(const Gpu& gpu, uint32_t width, uint32_t height) {
+    RenderTarget t;
+    t.width = width;
+    t.height = height;
+    t.color = createImage(gpu, width, height, kColorFormat,
+                          VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT, VK_IMAGE_ASPECT_COLOR_BIT);
+    t.depth = createImage(gpu, width, height, kDepthFormat, VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT,
+                          VK_IMAGE_ASPECT_DEPTH_BIT);
+
+    VkAttachmentDescription att[2]{};
+    att[0].format = kColorFormat;
+    att[0].samples = VK_SAMPLE_COUNT_1_BIT;
+    att[0].loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
+    att[0].storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+    att[0].stencilLoadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
+    att[0].stencilStoreOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
+    att[0].initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
+    att[0].finalLayout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
+    att[1] = att[0];
+    att[1].format = kDepthFormat;
+    att[1].storeOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
+    att[1].finalLayout = VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL;
+    VkAttachmentReference colorRef{0, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
+    VkAttachmentReference depthRef{1, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL};
+    VkSubpassDescription sub{};
+    sub.pipelineBindPoint = VK_PIPELINE_BIND_POINT_GRAPHICS;
+    sub.colorAttachmentCount = 1;
+    sub.pColorAttachments = &colorRef;
+    sub.pDepthStencilAttachment = &depthRef;
+    // The pass may run many times from one command buffer: order against the previous frame's
+    // copy-out (colour) and depth writes, and make this frame's colour visible to the copy.
+    VkSubpassDependency deps[2]{};
+    deps[0].srcSubpass = VK_SUBPASS_EXTERNAL;
+    deps[0].dstSubpass = 0;
+    deps[0].srcStageMask = VK_PIPELINE_STAGE_TRANSFER_BIT | VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT |
+                           VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
+    deps[0].dstStageMask = VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
+    deps[0].srcAccessMask = VK_ACCESS_TRANSFER_READ_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT |
+                            VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
+    deps[0].dstAccessMask = VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT |
+                            VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
+    deps[1].srcSubpass = 0;
+    deps[1].dstSubpass = VK_SUBPASS_EXTERNAL;
+    deps[1].srcStageMask = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
+    deps[1].dstStageMask = VK_PIPELINE_STAGE_TRANSFER_BIT;
+    deps[1].srcAccessMask = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
+    deps[1].dstAccessMask = VK_ACCESS_TRANSFER_READ_BIT;
+    VkRenderPassCreateInfo rp{VK_STRUCTURE_TYPE_RENDER_PASS_CREATE_INFO};
+    rp.attachmentCount = 2;
+    rp.pAttachments = att;
+    rp.subpassCount = 1;
+    rp.pSubpasses = &sub;
+    rp.dependencyCount = 2;
+    rp.pDependencies = deps;
+    GT_VK(vkCreateRenderPass(gpu.device, &rp, nullptr, &t.renderPass));
+
+    VkImageView views[2] = {t.color.view, t.depth.view};
+    VkFramebufferCreateInfo fb{VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO};
+    fb.renderPass = t.renderPass;
+    fb.attachmentCount = 2;
+    fb.pAttachments = views;
+    fb.width = width;
+    fb.height = height;
+    fb.layers = 1;
+    GT_VK(vkCreateFramebuffer(gpu.device, &fb, nullptr, &t.framebuffer));
+    return t;
+}
+
+void destroyRenderTarget(const Gpu& gpu, RenderTarget& t) {
+    if (t.framebuffer) vkDestroyFramebuffer(gpu.device, t.framebuffer, nullptr);
+    if (t.renderPass) vkDestroyRenderPass(gpu.device, t.renderPass, nullptr);
+    destroyImage(gpu, t.color);
+    destroyImage(gpu, t.depth);
+    t = RenderTarget{};
+}
+
+void beginRenderPass(VkCommandBuffer cmd, const RenderTarget& t) {
+    VkClearValue clears[2]{};
+    for (int i = 0; i < 4; ++i) clears[0].color.float32[i] = kSky[i];
+    clears[1].depthStencil = {1.0f, 0};
+    VkRenderPassBeginInfo info{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
+    info.renderPass = t.renderPass;
+    info.framebuffer = t.framebuffer;
+    info.renderArea = {{0, 0}, {t.width, t.height}};
+    info.clearValueCount = 2;
+    info.pClearValues = clears;
+    vkCmdBeginRenderPass(cmd, &info, VK_SUBPASS_CONTENTS_INLINE);
+}
+
+}  // namespace gt

@@ -1,0 +1,32 @@
+// The offscreen render target: RGBA8 colour + D32 depth, one render pass that clears both to
+// the sky colour / far plane and leaves the colour image ready to be copied out.
+#pragma once
+#include "device.hpp"
+
+namespace gt {
+
+constexpr VkFormat kColorFormat = VK_FORMAT_R8G8B8A8_UNORM;
+constexpr VkFormat kDepthFormat = VK_FORMAT_D32_SFLOAT;
+// Sky colour of the clear, also used to tell drawn pixels from background (0..255 per channel).
+constexpr float kSky[4] = {0.55f, 0.70f, 0.90f, 1.0f};
+
+struct Image {
+    VkImage image = VK_NULL_HANDLE;
+    VkDeviceMemory memory = VK_NULL_HANDLE;
+    VkImageView view = VK_NULL_HANDLE;
+};
+
+struct RenderTarget {
+    uint32_t width = 0, height = 0;
+    Image color, depth;
+    VkRenderPass renderPass = VK_NULL_HANDLE;
+    VkFramebuffer framebuffer = VK_NULL_HANDLE;
+};
+
+RenderTarget createRenderTarget(const Gpu& gpu, uint32_t width, uint32_t height);
+void destroyRenderTarget(const Gpu& gpu, RenderTarget& target);
+
+// Begins the render pass with the clears (sky colour, depth 1).
+void beginRenderPass(VkCommandBuffer cmd, const RenderTarget& target);
+
+}  // namespace gt

@@ -1,0 +1,35 @@
+#ifndef GT_HARNESS_TEST_COMMON_INCLUDED
+#define GT_HARNESS_TEST_COMMON_INCLUDED
+// Test-only declarations matching Documentation~/internals.md "Descriptor bindings".
+// The harness self-test uses these shaders to prove the harness (bindings, split draws,
+// readback, stats); they are not the package's shaders.
+
+cbuffer TerrainParams : register(b0)
+{
+    float4 _Range;        // (c, d, g, h) relative to the origin
+    float4 _RangeOrigin;
+    float4 _GridSize;
+    float4 _Tess;         // (tiles M, maxFactor, targetPixelError, uniformFactor)
+    float4 _Noise;
+    float4 _NoiseOctaves;
+    float4 _HeightColor;
+    float4 _ColorLow;
+    float4 _ColorHigh;
+};
+
+cbuffer RigCamera : register(b1)
+{
+    float4x4 _RigObjectToClip;
+    float4x4 _RigObjectToWorld;
+    float4 _RigCameraPosition;
+    float4 _RigScreenSize;
+    float4 _RigLightDirection;
+};
+
+StructuredBuffer<float4> _ControlPoints : register(t0);
+StructuredBuffer<float4> _Regions : register(t1);
+StructuredBuffer<float> _GridLines : register(t2);
+#ifdef GT_READBACK
+RWStructuredBuffer<float4> _Readback : register(u0);
+#endif
+#endif

@@ -1,0 +1,28 @@
+#!/usr/bin/env bash
+# Compiles the self-test HLSL to SPIR-V with the package's register mapping
+# (internals.md "Descriptor bindings": b0->0, b1->1, t0..t2->2..4, u0->5):
+#   --hlsl-iomap            shifts apply per HLSL register class (b/t/u), not per SPIR-V kind
+#   --stb 2                 t registers (StructuredBuffer) start at binding 2
+#   --suavb 5               u registers (RWStructuredBuffer) start at binding 5
+#   (b registers are unshifted: b0 -> 0, b1 -> 1)
+# Usage: compile.sh OUT_DIR
+set -euo pipefail
+here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
+out="${1:?usage: compile.sh OUT_DIR}"
+mkdir -p "$out"
+map=(--hlsl-iomap --stb 2 --suavb 5)
+c() {  # c STAGE ENTRY SOURCE OUTPUT [DEFINES...]
+  local stage=$1 entry=$2 src=$3 dst=$4; shift 4
+  glslangValidator -D -V -S "$stage" -e "$entry" "${map[@]}" "$@" -o "$out/$dst" "$here/$src" >/dev/null \
+    || { glslangValidator -D -V -S "$stage" -e "$entry" "${map[@]}" "$@" -o "$out/$dst" "$here/$src"; exit 1; }
+  spirv-val "$out/$dst"
+}
+c vert vert tiles.hlsl tiles.vert.spv
+c tesc hull_shader tiles.hlsl tiles.tesc.spv
+c tese domain_shader tiles.hlsl tiles.tese.spv
+c tese domain_shader tiles.hlsl tiles_readback.tese.spv -DGT_READBACK
+c vert vert_fallback tiles.hlsl fallback.vert.spv
+c vert vert_fallback tiles.hlsl fallback_readback.vert.spv -DGT_READBACK
+c frag frag tiles.hlsl tiles.frag.spv
+c vert vert mesh.hlsl mesh.vert.spv
+c frag frag mesh.hlsl mesh.frag.spv

@@ -1,0 +1,190 @@
+#!/usr/bin/env python3
+"""`gt shaders`: compiles every stage of every keyword variant and checks the results.
+
+For each variant of shader_variants.txt and each stage of STAGES:
+  1. glslangValidator, HLSL front end -> SPIR-V (Vulkan), registers mapped to the bindings of
+     internals.md ("Descriptor bindings"),
+  2. spirv-val,
+  3. the bindings, read back with spirv-cross --reflect, compared with EXPECTED_BINDINGS,
+  4. spirv-cross -> GLSL 4.50, GLSL ES 3.20 and MSL 2.1,
+  5. the two GLSL outputs compiled again by glslangValidator.
+Prints one line per variant and stage, then the counts. Exit status 1 on any error, and on any
+diagnostic line that ALLOWED_OUTPUT does not explain.
+
+Usage: shaders.py OUT_DIR [-j JOBS] [-I DIR]... [--only VARIANT]...
+"""
+import argparse, json, os, re, subprocess, sys
+from concurrent.futures import ThreadPoolExecutor
+
+RIG_DIR = os.path.dirname(os.path.abspath(__file__))
+PKG_DIR = os.path.dirname(os.path.dirname(RIG_DIR))
+ENTRY_FILE = os.path.join(PKG_DIR, "Shaders", "Rig", "TerrainRig.hlsl")
+VARIANTS_FILE = os.path.join(RIG_DIR, "shader_variants.txt")
+
+# (name, glslang stage, HLSL entry point). "fallback" is the no-tessellator vertex stage.
+STAGES = [
+    ("vert", "vert", "vert"),
+    ("tesc", "tesc", "hull_shader"),
+    ("tese", "tese", "domain_shader"),
+    ("frag", "frag", "frag"),
+    ("fallback", "vert", "vert_fallback"),
+]
+
+# HLSL register -> Vulkan binding (set 0): b0 -> 0, b1 -> 1 (no shift), t0..t2 -> 2..4 (+2),
+# u0 -> 5 (+5). glslang applies the shift of each register class with --hlsl-iomap.
+REGISTER_SHIFTS = ["--shift-cbuffer-binding", "0", "--shift-texture-binding", "2",
+                   "--shift-UAV-binding", "5"]
+EXPECTED_BINDINGS = {
+    "TerrainParams": 0, "RigCamera": 1,
+    "_ControlPoints": 2, "_Regions": 3, "_GridLines": 4, "_Readback": 5,
+}
+TERRAIN_PARAMS_BYTES = 144   # 9 float4
+RIG_CAMERA_BYTES = 176       # 2 float4x4 + 3 float4
+
+# Diagnostics that are known and harmless. Each entry: (regex over one output line, why).
+# Anything else a tool prints counts as a warning and fails the variant.
+ALLOWED_OUTPUT = [
+    # glslangValidator echoes the name of each file it compiles.
+    (r"^\S+\.(hlsl|vert|tesc|tese|frag)$", "glslang prints the input file name"),
+]
+
+# GLSL ES: tessellation is core in ES 3.20, so no GL_EXT_tessellation_shader is needed there; the
+# ES outputs recompile with glslang as they are.
+# MSL: all five stages convert (also without options); the version is pinned to 2.1 so the output
+# does not change with spirv-cross's default. spirv-cross turns tesc into a compute kernel; the
+# vertex stage that feeds it must write its outputs to a buffer (--msl-capture-output), as Metal's
+# tessellation pipeline reads them there.
+# The Metal output is generated and checked for spirv-cross errors only: no Metal compiler here.
+MSL_OPTIONS = ["--msl", "--msl-version", "20100"]
+MSL_STAGE_OPTIONS = {"vert": ["--msl-capture-output"]}
+
+
+def read_variants(path=VARIANTS_FILE):
+    variants = []
+    with open(path) as f:
+        for line in f:
+            line = line.split("#", 1)[0].strip()
+            if not line:
+                continue
+            keywords = [] if line == "-" else line.split()
+            # GT_NOISE GT_READBACK -> "noise+readback": short, and a valid folder name.
+            name = "+".join(k[3:].lower() if k.startswith("GT_") else k.lower() for k in keywords)
+            variants.append((name or "base", keywords))
+    names = [n for n, _ in variants]
+    if len(set(names)) != len(names):
+        sys.exit(f"shaders: duplicate variant in {path}")
+    return variants
+
+
+def run(cmd, log):
+    """Runs cmd; returns (ok, unexplained diagnostic lines). Appends everything to log."""
+    p = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+    log.append("$ " + " ".join(cmd) + "\n" + p.stdout)
+    bad = [l for l in p.stdout.splitlines()
+           if l.strip() and not any(re.search(rx, l.strip()) for rx, _ in ALLOWED_OUTPUT)]
+    return p.returncode == 0, bad
+
+
+def check_bindings(spv, log):
+    """Every resource must sit in set 0 at the binding of internals.md."""
+    p = subprocess.run(["spirv-cross", spv, "--reflect"], stdout=subprocess.PIPE,
+                       stderr=subprocess.PIPE, text=True)
+    if p.returncode != 0:
+        return [f"spirv-cross --reflect failed: {p.stderr.strip()}"]
+    refl = json.loads(p.stdout)
+    errors = []
+    for kind in ("ubos", "ssbos", "textures", "separate_images", "separate_samplers", "images"):
+        for r in refl.get(kind, []):
+            name, binding, dset = r.get("name"), r.get("binding"), r.get("set")
+            want = EXPECTED_BINDINGS.get(name)
+            if want is None:
+                errors.append(f"{kind} '{name}' is not in the binding table")
+            elif binding != want or dset != 0:
+                errors.append(f"'{name}' at set {dset} binding {binding}, expected set 0 binding {want}")
+            size = r.get("block_size")
+            if name == "TerrainParams" and size != TERRAIN_PARAMS_BYTES:
+                errors.append(f"TerrainParams is {size} bytes, expected {TERRAIN_PARAMS_BYTES}")
+            if name == "RigCamera" and size != RIG_CAMERA_BYTES:
+                errors.append(f"RigCamera is {size} bytes, expected {RIG_CAMERA_BYTES}")
+    log.append("bindings: " + json.dumps({k: [(r["name"], r.get("binding")) for r in v]
+                                          for k, v in refl.items() if k in ("ubos", "ssbos")}))
+    return errors
+
+
+def compile_one(out_dir, variant, stage, includes):
+    name, keywords = variant
+    sname, gstage, entry = stage
+    vdir = os.path.join(out_dir, name)
+    spv = os.path.join(vdir, sname + ".spv")
+    log, problems, targets = [], [], []
+
+    def step(label, cmd):
+        ok, bad = run(cmd, log)
+        if not ok:
+            problems.append(f"{label} failed")
+        problems.extend(f"{label}: {l}" for l in bad)
+        return ok and not bad
+
+    cmd = (["glslangValidator", "-D", "-V", "-S", gstage, "-e", entry, "--hlsl-iomap"]
+           + REGISTER_SHIFTS + [f"-I{d}" for d in includes]
+           + [f"-D{k}" for k in keywords] + ["-o", spv, ENTRY_FILE])
+    if step("glslang", cmd) and step("spirv-val", ["spirv-val", spv]):
+        targets.append("spirv")
+        problems.extend(check_bindings(spv, log))
+        glsl = os.path.join(vdir, f"{sname}.450.{gstage}")
+        essl = os.path.join(vdir, f"{sname}.es320.{gstage}")
+        msl = os.path.join(vdir, f"{sname}.metal")
+        if (step("spirv-cross glsl450", ["spirv-cross", spv, "--entry", entry, "--no-es",
+                                         "--version", "450", "--output", glsl])
+                and step("glslang glsl450", ["glslangValidator", "-S", gstage, glsl])):
+            targets.append("glsl450")
+        if (step("spirv-cross essl320", ["spirv-cross", spv, "--entry", entry, "--es",
+                                         "--version", "320", "--output", essl])
+                and step("glslang essl320", ["glslangValidator", "-S", gstage, essl])):
+            targets.append("essl320")
+        if step("spirv-cross msl", ["spirv-cross", spv, "--entry", entry] + MSL_OPTIONS
+                + MSL_STAGE_OPTIONS.get(sname, []) + ["--output", msl]):
+            targets.append("msl21")
+    with open(os.path.join(vdir, sname + ".log"), "w") as f:
+        f.write("\n".join(log))
+    return name, sname, problems, targets
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("out_dir")
+    ap.add_argument("-j", "--jobs", type=int, default=os.cpu_count() or 1)
+    ap.add_argument("-I", dest="includes", action="append", default=[],
+                    help="extra include directory (searched after the includer's own folder)")
+    ap.add_argument("--only", action="append", default=[], help="compile only this variant")
+    args = ap.parse_args()
+
+    variants = read_variants()
+    if args.only:
+        unknown = set(args.only) - {n for n, _ in variants}
+        if unknown:
+            sys.exit(f"shaders: unknown variant(s) {sorted(unknown)}")
+        variants = [v for v in variants if v[0] in args.only]
+    for name, _ in variants:
+        os.makedirs(os.path.join(args.out_dir, name), exist_ok=True)
+
+    jobs = [(v, s) for v in variants for s in STAGES]
+    with ThreadPoolExecutor(max_workers=max(1, args.jobs)) as pool:
+        results = list(pool.map(lambda j: compile_one(args.out_dir, j[0], j[1], args.includes), jobs))
+
+    failed = 0
+    for name, sname, problems, targets in results:
+        status = "FAIL" if problems else "PASS"
+        failed += bool(problems)
+        print(f"{status} {name:<38} {sname:<8} {' '.join(targets)}")
+        for p in problems:
+            print(f"     {p}")
+        if problems:
+            print(f"     log: {os.path.join(args.out_dir, name, sname + '.log')}")
+    print(f"variants: {len(variants)}, stages: {len(STAGES)}, "
+          f"compiled: {len(results)}, passed: {len(results) - failed}, failed: {failed}")
+    return 1 if failed else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
