@@ -28,8 +28,11 @@ namespace GregoryTerrain.EditorTools
             {
                 if (GUILayout.Button(MeasureLabel))
                 {
-                    ContinuityReport r = ContinuityMeasure.Measure(asset.ToPatchGrid(), 16);
-                    _measure = $"max position gap {r.MaxPositionGap:G3}, max normal angle {r.MaxNormalAngleDegrees:G3} degrees";
+                    PatchGrid grid = asset.ToPatchGrid();
+                    double gap = ContinuityMeasure.MaxPositionGap(grid);
+                    double angle = ContinuityMeasure.MaxNormalAngleDegrees(grid);
+                    _measure = $"max position gap {gap:G3}, max normal angle {angle:G3} degrees " +
+                               $"({ContinuityMeasure.DefaultSamplesPerEdge} samples per shared edge)";
                 }
                 if (_measure != null) EditorGUILayout.HelpBox(_measure, MessageType.None);
                 if (GUILayout.Button(ExportLabel)) Export(asset);

@@ -64,8 +64,7 @@ namespace GregoryTerrain.EditorTools
 
         void MakeFlat()
         {
-            var heights = new float[4];
-            Apply("Make flat grid", HeightmapFitter.Fit(heights, 2, 2, columns, rows, null, CancellationToken.None));
+            Apply("Make flat grid", PatchGrid.CreateFlat(columns, rows));
         }
 
         void FitTexture()
@@ -76,7 +75,7 @@ namespace GregoryTerrain.EditorTools
                 return;
             }
             Color[] pixels = heightmap.GetPixels();
-            var heights = new float[pixels.Length];
+            var heights = new double[pixels.Length];
             for (int k = 0; k < pixels.Length; k++) heights[k] = pixels[k].grayscale * heightScale;
             Fit(heights, heightmap.width, heightmap.height, heightmap.name);
         }
@@ -92,21 +91,24 @@ namespace GregoryTerrain.EditorTools
                 Report($"{Path.GetFileName(path)} has {bytes.Length} bytes; {rawWidth} x {rawHeight} 16-bit samples need {expected}. Check the size.", MessageType.Error);
                 return;
             }
-            var heights = new float[rawWidth * rawHeight];
+            var heights = new double[rawWidth * rawHeight];
             for (int k = 0; k < heights.Length; k++)
-                heights[k] = (bytes[2 * k] | (bytes[2 * k + 1] << 8)) / 65535f * heightScale;   // little-endian
+                heights[k] = (bytes[2 * k] | (bytes[2 * k + 1] << 8)) / 65535.0 * heightScale;   // little-endian
             Fit(heights, rawWidth, rawHeight, Path.GetFileName(path));
         }
 
         /// <summary>Runs the fitter with a cancellable progress bar; a cancel leaves the asset as it was.</summary>
-        void Fit(float[] heights, int width, int height, string source)
+        void Fit(double[] heights, int width, int height, string source)
         {
             using var cancel = new CancellationTokenSource();
             var progress = new ProgressBar($"Fitting {columns} x {rows} patches to {source}", cancel);
             try
             {
-                PatchGrid grid = HeightmapFitter.Fit(heights, width, height, columns, rows, progress, cancel.Token);
-                Apply($"Fit patch grid to {source}", grid);
+                // Texture rows run bottom-up and RAW rows as stored: sample (c, r) lands at
+                // (c / (W-1), r / (H-1)) of the unit square either way (HeightmapFitter's convention).
+                HeightmapFit fit = HeightmapFitter.Fit(heights, width, height, columns, rows, progress, cancel.Token);
+                Apply($"Fit patch grid to {source}", fit.Grid);
+                Report($"Fitted {columns} x {rows} patches to {source}: max error {fit.MaxError:G3}, RMS {fit.RmsError:G3} (terrain units).", MessageType.Info);
             }
             catch (OperationCanceledException) { Report("Fit cancelled; the grid was not changed.", MessageType.Warning); }
             catch (ArgumentException e) { Report(e.Message, MessageType.Error); }
@@ -115,7 +117,13 @@ namespace GregoryTerrain.EditorTools
 
         void EnforceG1()
         {
-            try { Apply("Enforce G1", G1Builder.Enforce(asset.ToPatchGrid())); }
+            try
+            {
+                PatchGrid grid = asset.ToPatchGrid();   // a copy: MakeG1 changes it in place, or throws and changes nothing
+                G1Builder.MakeG1(grid);
+                Apply("Enforce G1", grid);
+                Report($"Enforce G1: max normal angle across shared edges now {ContinuityMeasure.MaxNormalAngleDegrees(grid):G3} degrees.", MessageType.Info);
+            }
             catch (ArgumentException e) { Report(e.Message, MessageType.Error); }
         }
 

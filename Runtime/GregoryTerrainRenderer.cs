@@ -25,11 +25,13 @@ namespace GregoryTerrain
     public sealed class GregoryTerrainRenderer : MonoBehaviour
     {
         /// <summary>
-        /// Bytes set per frame in the steady state: one float4, <c>_Range</c> (one
-        /// MaterialPropertyBlock.SetVector, then one Graphics.RenderPrimitives call).
-        /// Anything else is sent only on change: <c>_RangeOrigin</c> (16 bytes, on re-snap),
-        /// <c>_GtObjectToWorld/_GtWorldToObject</c> (128 bytes, when the Transform changes),
-        /// the seven settings float4s (112 bytes, when a setting changes), the buffers (on a new asset version).
+        /// Bytes this script sets per frame in the steady state: one float4, <c>_Range</c> (one
+        /// MaterialPropertyBlock.SetVector in PushRange, then one Graphics.RenderPrimitives call).
+        /// Anything else is set only on change: <c>_RangeOrigin</c> (16 bytes, on re-snap),
+        /// <c>_GtObjectToWorld/_GtWorldToObject</c> (128 bytes, when the Transform changes), the
+        /// whole TerrainParams block (9 float4, 144 bytes, when a setting or the grid changes) and the
+        /// buffers (on a new asset version). What Unity does with the property block inside the draw
+        /// (it builds the draw's constant buffers from it) is Unity's and not counted here.
         /// </summary>
         public const int PerFrameTrafficBytes = 16;
 
@@ -39,17 +41,33 @@ namespace GregoryTerrain
             public static readonly int ControlPoints = Shader.PropertyToID("_ControlPoints");
             public static readonly int Regions = Shader.PropertyToID("_Regions");
             public static readonly int GridLines = Shader.PropertyToID("_GridLines");
-            public static readonly int GridSize = Shader.PropertyToID("_GridSize");
-            public static readonly int Range = Shader.PropertyToID("_Range");
-            public static readonly int RangeOrigin = Shader.PropertyToID("_RangeOrigin");
-            public static readonly int Tess = Shader.PropertyToID("_Tess");
-            public static readonly int Noise = Shader.PropertyToID("_Noise");
-            public static readonly int NoiseOctaves = Shader.PropertyToID("_NoiseOctaves");
-            public static readonly int HeightColor = Shader.PropertyToID("_HeightColor");
-            public static readonly int ColorLow = Shader.PropertyToID("_ColorLow");
-            public static readonly int ColorHigh = Shader.PropertyToID("_ColorHigh");
             public static readonly int ObjectToWorld = Shader.PropertyToID("_GtObjectToWorld");
             public static readonly int WorldToObject = Shader.PropertyToID("_GtWorldToObject");
+
+            /// <summary>
+            /// The nine float4 of the TerrainParams cbuffer, in the order of Core's
+            /// <see cref="TerrainParams.PropertyNames"/> (the one place that order is written), so
+            /// <c>Params[k]</c> is the ID of <c>TerrainParams[k]</c>.
+            /// </summary>
+            public static readonly int[] Params = ParamIds();
+
+            /// <summary>Positions of the two range constants in <see cref="Params"/>.</summary>
+            public static readonly int RangeIndex = ParamIndex("_Range");
+            public static readonly int RangeOriginIndex = ParamIndex("_RangeOrigin");
+
+            static int[] ParamIds()
+            {
+                var ids = new int[TerrainParams.Float4Count];
+                for (int k = 0; k < ids.Length; k++) ids[k] = Shader.PropertyToID(TerrainParams.PropertyNames[k]);
+                return ids;
+            }
+
+            static int ParamIndex(string property)
+            {
+                int k = Array.IndexOf(TerrainParams.PropertyNames, property);
+                if (k < 0) throw new InvalidOperationException($"TerrainParams.PropertyNames has no '{property}'");
+                return k;
+            }
         }
 
         [Header("Content")]
@@ -124,7 +142,9 @@ namespace GregoryTerrain
         int _uploadedVersion;
         int _fallbackIndexFactor;
         bool _settingsDirty = true;
-        bool _rangeDirty = true;
+        bool _originDirty = true;
+        string _settingsError;
+        PatchGrid _uploadedPatchGrid;
         TerrainRange _range = TerrainRange.full;
         readonly RangeOriginTracker _origin = new RangeOriginTracker();
         float _gridMinZ, _gridMaxZ;
@@ -156,17 +176,21 @@ namespace GregoryTerrain
                 value.Validate("Range");
                 _range = value;
                 range = new Vector4((float)value.c, (float)value.d, (float)value.g, (float)value.h);
-                _rangeDirty = true;
             }
         }
 
         /// <summary>True when this device has no tessellator and the vertex-shader fallback is drawn.</summary>
         public static bool UsesFallback => !SystemInfo.supportsTessellationShaders;
 
-        /// <summary>Triangles the current settings can produce at most (Core's TessellationPolicy).</summary>
-        public long EstimatedTriangleCount =>
-            UsesFallback ? 2L * tiles * tiles * fallbackGridFactor * fallbackGridFactor
-                         : TessellationPolicy.EstimateTriangleCount(tiles, maxFactor);
+        /// <summary>
+        /// Triangles the current settings can produce at most (Core's TessellationPolicy: 2 F^2 per
+        /// tile, F = the uniform factor, else maxFactor; the fallback grid's F without a tessellator).
+        /// </summary>
+        public double EstimatedTriangleCount => TessellationPolicy.EstimateTriangleCount(tiles,
+            UsesFallback ? fallbackGridFactor : uniformFactor > 0 ? uniformFactor : maxFactor);
+
+        /// <summary>Why the current settings cannot be drawn (Core's message, naming field and value), or null.</summary>
+        public string SettingsError => _settingsError;
 
         /// <summary>True while GPU buffers for a grid are held.</summary>
         public bool HasGpuResources => _controlPoints != null;
@@ -176,7 +200,7 @@ namespace GregoryTerrain
         void OnEnable()
         {
             _settingsDirty = true;
-            _rangeDirty = true;
+            _originDirty = true;
             SyncRangeFromSerialized();
 #if UNITY_EDITOR
             // Buffers are native memory: free them before scripts reload, or they leak (Unity warns).
@@ -204,7 +228,11 @@ namespace GregoryTerrain
 
         // ---- drawing --------------------------------------------------------------------------------
 
-        /// <summary>Issues this frame's single draw. No allocation once the buffers exist.</summary>
+        /// <summary>
+        /// Issues this frame's single draw. In the steady state (no setting, Transform, origin or grid
+        /// change) the only value set is <c>_Range</c>: see <see cref="PerFrameTrafficBytes"/>.
+        /// No allocation once the buffers exist.
+        /// </summary>
         void Draw()
         {
             if (material == null || grid == null || !grid.IsValid) return;
@@ -213,12 +241,19 @@ namespace GregoryTerrain
             bool fallback = UsesFallback;
             if (fallback && !EnsureFallbackIndices()) return;
 
-            if (_settingsDirty) PushSettings(fallback);
-            if (transform.hasChanged || _settingsDirty) PushMatrices();
-            _settingsDirty = false;
-
-            if (_origin.Update(_range)) _rangeDirty = true;
-            PushRange();
+            if (_origin.Update(_range)) _originDirty = true;
+            if (_settingsDirty)
+            {
+                PushSettings(fallback);   // all nine TerrainParams float4, _Range and _RangeOrigin included
+                PushMatrices();
+                _settingsDirty = false;
+            }
+            else
+            {
+                if (transform.hasChanged) PushMatrices();
+                PushRange();
+            }
+            if (_settingsError != null) return;   // logged once; drawn again after the next valid change
 
             var rp = new RenderParams(material)
             {
@@ -239,31 +274,51 @@ namespace GregoryTerrain
         }
 
         /// <summary>
-        /// The per-frame part: <c>_Range</c> (relative to the origin). <c>_RangeOrigin</c> only goes
-        /// with it when the origin re-snapped.
+        /// The per-frame part: <c>_Range</c> relative to the origin (16 bytes). <c>_RangeOrigin</c>
+        /// goes with it only in a frame where the origin re-snapped.
         /// </summary>
         void PushRange()
         {
             RangeMapping.EncodeRange(_range, _origin.Origin, out Float4 r, out Float4 o);
-            _props.SetVector(Ids.Range, new Vector4(r.x, r.y, r.z, r.w));
-            if (_rangeDirty)
+            _props.SetVector(Ids.Params[Ids.RangeIndex], ToVector(r));
+            if (_originDirty)
             {
-                _props.SetVector(Ids.RangeOrigin, new Vector4(o.x, o.y, o.z, o.w));
-                _rangeDirty = false;
+                _props.SetVector(Ids.Params[Ids.RangeOriginIndex], ToVector(o));
+                _originDirty = false;
             }
         }
 
+        /// <summary>
+        /// Builds the TerrainParams block with Core (which validates every input and knows the order)
+        /// and sets each float4 by its name. On invalid settings nothing is set and the renderer
+        /// stops drawing until a change fixes them, so the GPU never sees half-updated constants.
+        /// </summary>
         void PushSettings(bool fallback)
         {
-            float uniform = fallback ? fallbackGridFactor : uniformFactor;
-            _props.SetVector(Ids.Tess, new Vector4(tiles, maxFactor, targetPixelError, uniform));
-            _props.SetVector(Ids.Noise, new Vector4(noiseAmplitude, noiseFrequency, noiseAlpha, noiseBeta));
-            _props.SetVector(Ids.NoiseOctaves, new Vector4(noiseOctaves, noiseVerticesAcross, 0f, 0f));
-            _props.SetVector(Ids.HeightColor, new Vector4(colorGamma, colorNoiseAmplitude, colorNoiseFrequency, 0f));
+            var tess = new TessellationSettings(tiles, maxFactor, targetPixelError, fallback ? fallbackGridFactor : uniformFactor);
+            var noise = new NoiseSettings(noiseAmplitude, noiseFrequency, noiseAlpha, noiseBeta, noiseOctaves);
+            var heightColor = new HeightColorSettings(colorGamma, colorNoiseAmplitude, colorNoiseFrequency);
             Color low = colorLow.linear, high = colorHigh.linear;
-            _props.SetVector(Ids.ColorLow, new Vector4(low.r, low.g, low.b, 1f));
-            _props.SetVector(Ids.ColorHigh, new Vector4(high.r, high.g, high.b, 1f));
+            TerrainParams p;
+            try
+            {
+                p = TerrainParams.Create(_uploadedPatchGrid, _range, _origin.Origin, tess, noise, heightColor,
+                    new Float3(low.r, low.g, low.b), new Float3(high.r, high.g, high.b), noiseVerticesAcross);
+            }
+            catch (ArgumentException e)
+            {
+                if (_settingsError != e.Message)
+                    Debug.LogError($"{name}: cannot draw with these settings: {e.Message}", this);
+                _settingsError = e.Message;
+                return;
+            }
+            _settingsError = null;
+            for (int k = 0; k < TerrainParams.Float4Count; k++)
+                _props.SetVector(Ids.Params[k], ToVector(p[k]));
+            _originDirty = false;
         }
+
+        static Vector4 ToVector(Float4 v) => new Vector4(v.x, v.y, v.z, v.w);
 
         /// <summary>
         /// RenderPrimitives has no object matrix (the shader gets none from Unity), so the adapters
@@ -320,29 +375,41 @@ namespace GregoryTerrain
                 _uploadedGrid = grid; _uploadedVersion = grid.Version;   // do not retry every frame
                 return false;
             }
-            Float4[] cps = GpuLayout.ControlPoints(g);
-            Float4[] regions = GpuLayout.Regions(g);
-            float[] lines = GpuLayout.GridLines(g);
-            Float4 size = GpuLayout.GridSize(g);
+            float[] cps, regions, lines;
+            try
+            {
+                // GpuLayout validates (bit-identical shared edges, float-representable lines) and packs.
+                cps = GpuLayout.PackControlPoints(g);
+                regions = GpuLayout.PackRegions(g);
+                lines = GpuLayout.PackGridLines(g);
+            }
+            catch (ArgumentException e)
+            {
+                Debug.LogError($"{name}: patch grid '{grid.name}' cannot be drawn: {e.Message}", this);
+                _uploadedGrid = grid; _uploadedVersion = grid.Version;   // do not retry every frame
+                return false;
+            }
 
-            _controlPoints = new GraphicsBuffer(GraphicsBuffer.Target.Structured, cps.Length, 16);
+            // Float arrays of float4 elements: count = floats / 4, stride 16 (GpuLayout.Float4Stride).
+            _controlPoints = new GraphicsBuffer(GraphicsBuffer.Target.Structured, cps.Length / GpuLayout.Float4Size, GpuLayout.Float4Stride);
             _controlPoints.SetData(cps);
-            _regions = new GraphicsBuffer(GraphicsBuffer.Target.Structured, regions.Length, 16);
+            _regions = new GraphicsBuffer(GraphicsBuffer.Target.Structured, regions.Length / GpuLayout.Float4Size, GpuLayout.Float4Stride);
             _regions.SetData(regions);
-            _gridLines = new GraphicsBuffer(GraphicsBuffer.Target.Structured, lines.Length, 4);
+            _gridLines = new GraphicsBuffer(GraphicsBuffer.Target.Structured, lines.Length, GpuLayout.GridLineStride);
             _gridLines.SetData(lines);
 
             _props ??= new MaterialPropertyBlock();
             _props.SetBuffer(Ids.ControlPoints, _controlPoints);
             _props.SetBuffer(Ids.Regions, _regions);
             _props.SetBuffer(Ids.GridLines, _gridLines);
-            _props.SetVector(Ids.GridSize, new Vector4(size.x, size.y, size.z, size.w));
+            // _GridSize is part of TerrainParams: PushSettings sets it (settings are dirty below).
             grid.GetHeightRange(out _gridMinZ, out _gridMaxZ);
 
             _uploadedGrid = grid;
+            _uploadedPatchGrid = g;
             _uploadedVersion = grid.Version;
             _settingsDirty = true;
-            _rangeDirty = true;
+            _originDirty = true;
             _origin.Reset();
             return true;
         }
@@ -383,6 +450,7 @@ namespace GregoryTerrain
             _gridLines?.Release(); _gridLines = null;
             _fallbackIndices?.Release(); _fallbackIndices = null;
             _uploadedGrid = null;
+            _uploadedPatchGrid = null;
             _uploadedVersion = 0;
             _props?.Clear();
         }
@@ -397,7 +465,6 @@ namespace GregoryTerrain
                 return;
             }
             _range = r;
-            _rangeDirty = true;
         }
     }
 }

@@ -9,6 +9,13 @@
 // (#pragma require tessellation tessHW) followed by a fallback SubShader (vert_fallback) that
 // devices without hull/domain stages get instead. Shadow and depth passes run the same stages, so
 // shadows and depth come from the same tessellated surface as the colour.
+//
+// Keywords: exactly the shipped ones of Tools~/rig/shader_variants.txt (GT_PAPER_MODE and
+// GT_READBACK are rig-only and never declared here), all shader_feature_local; depth and shadow
+// passes declare only GT_NOISE, the one that changes the shape. Each pass defines one GT_PASS_*
+// (and GT_FALLBACK without a tessellator) before its adapter. Checked off Unity by
+// Tools~/RigTests/ShaderLabTests.cs and compiled pass by pass by `gt shaderlab` (glslang, Unity's
+// libraries mocked).
 Shader "GregoryTerrain/Terrain"
 {
     Properties

@@ -26,21 +26,39 @@ namespace GregoryTerrain.Rig.Tests
             using var p = Process.Start(psi);
             string output = p.StandardOutput.ReadToEnd() + p.StandardError.ReadToEnd();
             p.WaitForExit();
-            var standIns = output.Split('\n').Where(l => l.Contains("[unity-api] Core stand-in")).Select(l => l.Trim()).Distinct().ToList();
-            TestContext.Out.WriteLine($"Core stand-ins in use: {standIns.Count}");
-            foreach (var s in standIns) TestContext.Out.WriteLine("  " + s);
             Assert.That(p.ExitCode, Is.EqualTo(0), "dotnet build of UnityApiCheck failed:\n" +
                 string.Join("\n", output.Split('\n').Where(l => l.Contains("error")).Distinct().Take(40)));
         }
 
+        /// <summary>
+        /// The check must compile against the real Core, never against stand-ins: every project
+        /// reference of every check project is a stub, another check project or Core's own project.
+        /// </summary>
         [Test]
-        public void EveryCoreStandInIsListedInItsProject()
+        public void ChecksReferenceOnlyStubsAndTheRealCore()
         {
             string dir = PackageRoot.Combine("Tools~", "UnityApiCheck");
-            string csproj = File.ReadAllText(Path.Combine(dir, "CoreExpectedProject", "CoreExpected.csproj"));
-            var missing = Directory.GetFiles(Path.Combine(dir, "CoreExpected"), "*.cs")
-                .Select(Path.GetFileName).Where(n => !csproj.Contains("CoreExpected/" + n + "\"")).ToList();
-            Assert.That(missing, Is.Empty, "not compiled by CoreExpected.csproj: " + string.Join(", ", missing));
+            var projects = Directory.GetFiles(dir, "*.csproj", SearchOption.AllDirectories)
+                .Where(f => !f.Contains(Path.DirectorySeparatorChar + "obj" + Path.DirectorySeparatorChar)).ToList();
+            Assert.That(projects.Count, Is.GreaterThanOrEqualTo(6), "UnityApiCheck projects found");
+            var bad = new System.Collections.Generic.List<string>();
+            int coreRefs = 0;
+            foreach (string f in projects)
+            {
+                foreach (System.Xml.Linq.XElement r in System.Xml.Linq.XDocument.Load(f).Descendants("ProjectReference"))
+                {
+                    string include = r.Attribute("Include").Value.Replace('\\', '/');
+                    if (include.EndsWith("Tools~/dotnet/Core/GregoryTerrain.Core.csproj")) { coreRefs++; continue; }
+                    if (include.StartsWith("../Stubs/") || include.StartsWith("Stubs/")) continue;
+                    bool fromStub = f.Replace('\\', '/').Contains("/Stubs/");
+                    if (fromStub && System.Text.RegularExpressions.Regex.IsMatch(include, @"^\.\./Unity(Engine|Editor)/Unity(Engine|Editor)\.csproj$")) continue;
+                    if (System.Text.RegularExpressions.Regex.IsMatch(include, @"^(\.\./)?(RuntimePlayer|RuntimeEditor|EditorCheck|SamplesCheck)/\w+\.csproj$")) continue;
+                    bad.Add($"{Path.GetFileName(f)} -> {include}");
+                }
+            }
+            Assert.That(bad, Is.Empty, "unexpected project references");
+            Assert.That(coreRefs, Is.GreaterThanOrEqualTo(4), "projects referencing the real Core");
+            Assert.That(Directory.Exists(Path.Combine(dir, "CoreExpected")), Is.False, "Core stand-ins must not come back");
         }
     }
 }
