@@ -35,6 +35,7 @@ namespace GregoryTerrain.Rig
         static void Register()
         {
             Commands["demo-grid"] = ("build the 5x5 sample grid fitted to a procedural heightmap (--out FILE)", DemoGridCommand.Run);
+            Commands["unity-asset"] = ("write a grid JSON as the YAML of a PatchGridAsset (--grid FILE --out FILE.asset --script-guid GUID [--name NAME])", UnityAssetCommand.Run);
             Commands["pack"] = ("write the harness's buffer files for one scene (--grid FILE --out DIR ...)", PackCommand.Run);
         }
     }
