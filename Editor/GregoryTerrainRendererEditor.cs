@@ -17,12 +17,14 @@ namespace GregoryTerrain.EditorTools
         public override void OnInspectorGUI()
         {
             var r = (GregoryTerrainRenderer)target;
-            EditorGUILayout.LabelField(new GUIContent("Estimated triangles", "Most triangles the current tiles and max factor can produce (Core's TessellationPolicy)."),
+            EditorGUILayout.LabelField(new GUIContent("Estimated triangles", "Most triangles the current settings can produce: 2 F^2 per tile, F the uniform factor, else the max factor (Core's TessellationPolicy)."),
                 new GUIContent(r.EstimatedTriangleCount.ToString("N0")));
             if (GregoryTerrainRenderer.UsesFallback)
                 EditorGUILayout.HelpBox("This GPU has no tessellation shaders: the vertex-shader fallback is drawn (fixed grid per tile).", MessageType.Warning);
             if (r.Grid != null && !r.Grid.IsValid)
                 EditorGUILayout.HelpBox("Grid: " + r.Grid.ValidationError, MessageType.Error);
+            if (r.SettingsError != null)
+                EditorGUILayout.HelpBox("Settings: " + r.SettingsError, MessageType.Error);
             if (r.Material == null)
                 EditorGUILayout.HelpBox("Assign a material that uses GregoryTerrain/Terrain.", MessageType.Warning);
             DrawDefaultInspector();

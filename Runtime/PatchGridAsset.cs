@@ -139,19 +139,47 @@ namespace GregoryTerrain
         }
 
         /// <summary>
-        /// Moves one control point (terrain space). Record an undo step first. Does not enforce G1:
-        /// run the Patch Grid window's "Enforce G1" afterwards if the grid must stay smooth.
+        /// Moves one control point (terrain space). Record an undo step first. A boundary point is
+        /// stored once per patch that shares it, bit for bit (PatchGrid.Validate and the GPU's
+        /// watertight edges rely on it), so every copy in the neighbouring patches moves with it.
+        /// Does not enforce G1: run the Patch Grid window's "Enforce G1" afterwards if the grid must
+        /// stay smooth.
         /// </summary>
         public void SetControlPoint(int patch, int slot, Vector3 terrainPosition)
         {
             int k = Index(patch, slot);
             if (!float.IsFinite(terrainPosition.x) || !float.IsFinite(terrainPosition.y) || !float.IsFinite(terrainPosition.z))
                 throw new ArgumentException($"control point ({patch}, {slot}) = {terrainPosition} must be finite", nameof(terrainPosition));
+            double ox = controlPoints[k], oy = controlPoints[k + 1], oz = controlPoints[k + 2];
+            if (IsBoundarySlot(slot))
+            {
+                // The copies of a shared boundary point sit in the 3 x 3 block of patches around it.
+                int pi = patch % columns, pj = patch / columns;
+                for (int j = Math.Max(pj - 1, 0); j <= Math.Min(pj + 1, rows - 1); j++)
+                for (int i = Math.Max(pi - 1, 0); i <= Math.Min(pi + 1, columns - 1); i++)
+                for (int s = 0; s < 16; s++)
+                {
+                    if (!IsBoundarySlot(s)) continue;
+                    int q = (j * columns + i) * DoublesPerPatch + 3 * s;
+                    if (q == k) continue;
+                    if (SameBits(controlPoints[q], ox) && SameBits(controlPoints[q + 1], oy) && SameBits(controlPoints[q + 2], oz))
+                    {
+                        controlPoints[q] = terrainPosition.x;
+                        controlPoints[q + 1] = terrainPosition.y;
+                        controlPoints[q + 2] = terrainPosition.z;
+                    }
+                }
+            }
             controlPoints[k] = terrainPosition.x;
             controlPoints[k + 1] = terrainPosition.y;
             controlPoints[k + 2] = terrainPosition.z;
             MarkChanged();
         }
+
+        /// <summary>Slots 0..15 on the border of the 4 x 4 net (i or j is 0 or 3), slot = 4 i + j.</summary>
+        static bool IsBoundarySlot(int slot) => slot < 16 && (slot / 4 == 0 || slot / 4 == 3 || slot % 4 == 0 || slot % 4 == 3);
+
+        static bool SameBits(double a, double b) => BitConverter.DoubleToInt64Bits(a) == BitConverter.DoubleToInt64Bits(b);
 
         /// <summary>Smallest and largest control point height (z); the surface lies between them.</summary>
         public void GetHeightRange(out float minZ, out float maxZ)
