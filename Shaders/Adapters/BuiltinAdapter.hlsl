@@ -1,9 +1,16 @@
 // Built-in render pipeline adapter (interface: see StandaloneAdapter.hlsl).
 // Unity API names used: HLSLSupport.cginc (CBUFFER_START/CBUFFER_END), UnityCG.cginc
-// (UnityObjectToClipPos, UnityWorldToClipPos, UnityObjectToWorldNormal, unity_ObjectToWorld,
-// _WorldSpaceCameraPos, _ScreenParams, _WorldSpaceLightPos0) and UnityLightingCommon.cginc
-// (_LightColor0). Use it in a pass with Tags { "LightMode" = "ForwardBase" } so Unity fills the
-// main directional light. Not compiled off Unity (no Unity shader library here): checked by review only.
+// (UnityWorldToClipPos, UnityApplyLinearShadowBias, _WorldSpaceCameraPos, _ScreenParams,
+// _WorldSpaceLightPos0) and UnityLightingCommon.cginc (_LightColor0). Use it in a pass with
+// Tags { "LightMode" = "ForwardBase" } so Unity fills the main directional light.
+// Not compiled against Unity's .cginc files off Unity: Tools~/rig/shaderlab.py compiles it against
+// a labelled mock of these names (Tools~/rig/unity-mock) to catch syntax and type errors only.
+//
+// Object matrix: Graphics.RenderPrimitives gives the shader no object matrix (unity_ObjectToWorld
+// is not the renderer's Transform, so UnityObjectToClipPos and UnityObjectToWorldNormal cannot be
+// used), so GregoryTerrainRenderer sets _GtObjectToWorld / _GtWorldToObject.
+// Shadows: directional and spot lights (depth). Point-light shadows (SHADOWS_CUBE, distance
+// output) are not supported: the pass has no multi_compile_shadowcaster.
 #ifndef GT_BUILTIN_ADAPTER_INCLUDED
 #define GT_BUILTIN_ADAPTER_INCLUDED
 
@@ -16,10 +23,25 @@
 #define GT_CBUFFER_END CBUFFER_END
 #define GT_REGISTER(r)
 
-float3 GT_ObjectToWorld(float3 positionOS) { return mul(unity_ObjectToWorld, float4(positionOS, 1.0)).xyz; }
-float3 GT_ObjectToWorldNormal(float3 normalOS) { return UnityObjectToWorldNormal(normalOS); }
+// Set by GregoryTerrainRenderer (MaterialPropertyBlock), only when its Transform changes.
+float4x4 _GtObjectToWorld;
+float4x4 _GtWorldToObject;
+
+float3 GT_ObjectToWorld(float3 positionOS) { return mul(_GtObjectToWorld, float4(positionOS, 1.0)).xyz; }
+// Inverse transpose: n^T * WorldToObject.
+float3 GT_ObjectToWorldNormal(float3 normalOS) { return normalize(mul(normalOS, (float3x3)_GtWorldToObject)); }
 float4 GT_WorldToClip(float3 positionWS) { return UnityWorldToClipPos(positionWS); }
-float4 GT_ObjectToClip(float3 positionOS) { return UnityObjectToClipPos(positionOS); }
+
+float4 GT_ObjectToClip(float3 positionOS)
+{
+    float4 positionCS = UnityWorldToClipPos(GT_ObjectToWorld(positionOS));
+#if defined(GT_PASS_SHADOWCASTER)
+    // The light's depth bias (unity_LightShadowBias.x) in clip space, clamped to the near plane.
+    positionCS = UnityApplyLinearShadowBias(positionCS);
+#endif
+    return positionCS;
+}
+
 float3 GT_CameraPositionWS() { return _WorldSpaceCameraPos; }
 float2 GT_ScreenSize() { return _ScreenParams.xy; }
 

@@ -1,13 +1,18 @@
 // High Definition Render Pipeline adapter (interface: see StandaloneAdapter.hlsl).
 // Unity API names used: Common.hlsl (CBUFFER_START/CBUFFER_END), ShaderVariables.hlsl
-// (TransformObjectToWorld, TransformObjectToWorldNormal, TransformWorldToHClip,
-// TransformObjectToHClip, GetCameraRelativePositionWS, _WorldSpaceCameraPos, _ScreenSize),
+// (TransformWorldToHClip, GetCameraRelativePositionWS, _WorldSpaceCameraPos, _ScreenSize),
 // LightDefinition.cs.hlsl and ShaderVariablesLightLoop.hlsl (_DirectionalLightCount,
 // _DirectionalLightDatas, DirectionalLightData.forward/.color).
-// Not compiled off Unity (no Unity shader library here): checked by review only.
+// Not compiled against HDRP off Unity: Tools~/rig/shaderlab.py compiles it against a labelled mock
+// of these names (Tools~/rig/unity-mock) to catch syntax and type errors only.
 //
 // HDRP renders camera-relative: its "world space" has the camera at the origin, and so does ours
 // here (GT_CameraPositionWS is the camera in that space, i.e. 0 when camera-relative is on).
+// Object matrix: Graphics.RenderPrimitives gives the shader no object matrix, so
+// GregoryTerrainRenderer sets _GtObjectToWorld / _GtWorldToObject (absolute world space, as
+// Transform.localToWorldMatrix is); GT_ObjectToWorld makes the result camera-relative.
+// Shadow bias: HDRP applies it as rasterizer depth bias from the light's shadow settings, so the
+// ShadowCaster pass needs nothing here.
 #ifndef GT_HDRP_ADAPTER_INCLUDED
 #define GT_HDRP_ADAPTER_INCLUDED
 
@@ -21,10 +26,18 @@
 #define GT_CBUFFER_END CBUFFER_END
 #define GT_REGISTER(r)
 
-float3 GT_ObjectToWorld(float3 positionOS) { return TransformObjectToWorld(positionOS); }
-float3 GT_ObjectToWorldNormal(float3 normalOS) { return TransformObjectToWorldNormal(normalOS); }
+// Set by GregoryTerrainRenderer (MaterialPropertyBlock), only when its Transform changes.
+float4x4 _GtObjectToWorld;
+float4x4 _GtWorldToObject;
+
+float3 GT_ObjectToWorld(float3 positionOS)
+{
+    return GetCameraRelativePositionWS(mul(_GtObjectToWorld, float4(positionOS, 1.0)).xyz);
+}
+// Inverse transpose (a direction: no camera-relative shift).
+float3 GT_ObjectToWorldNormal(float3 normalOS) { return normalize(mul(normalOS, (float3x3)_GtWorldToObject)); }
 float4 GT_WorldToClip(float3 positionWS) { return TransformWorldToHClip(positionWS); }
-float4 GT_ObjectToClip(float3 positionOS) { return TransformObjectToHClip(positionOS); }
+float4 GT_ObjectToClip(float3 positionOS) { return TransformWorldToHClip(GT_ObjectToWorld(positionOS)); }
 float3 GT_CameraPositionWS() { return GetCameraRelativePositionWS(_WorldSpaceCameraPos); }
 float2 GT_ScreenSize() { return _ScreenSize.xy; }
 

@@ -1,8 +1,14 @@
 // Universal Render Pipeline adapter (interface: see StandaloneAdapter.hlsl).
-// Unity API names used: Core.hlsl (TransformObjectToWorld, TransformObjectToWorldNormal,
-// TransformWorldToHClip, TransformObjectToHClip, GetCameraPositionWS, _ScreenParams,
-// CBUFFER_START/CBUFFER_END) and Lighting.hlsl (GetMainLight, Light.direction, Light.color).
-// Not compiled off Unity (no Unity shader library here): checked by review only.
+// Unity API names used: Core.hlsl (TransformWorldToHClip, GetCameraPositionWS, _ScreenParams,
+// CBUFFER_START/CBUFFER_END, UNITY_REVERSED_Z, UNITY_NEAR_CLIP_VALUE), Lighting.hlsl (GetMainLight,
+// Light.direction, Light.color) and Shadows.hlsl, which Lighting.hlsl includes (_ShadowBias).
+// Not compiled against URP off Unity: Tools~/rig/shaderlab.py compiles it against a labelled mock
+// of these names (Tools~/rig/unity-mock) to catch syntax and type errors only.
+//
+// Object matrix: Graphics.RenderPrimitives gives the shader no object matrix (UNITY_MATRIX_M /
+// unity_ObjectToWorld are not the renderer's Transform), so GregoryTerrainRenderer sets
+// _GtObjectToWorld and _GtWorldToObject and every object-space transform here uses them
+// (internals.md, "Unity side").
 #ifndef GT_URP_ADAPTER_INCLUDED
 #define GT_URP_ADAPTER_INCLUDED
 
@@ -10,15 +16,50 @@
 #include "Packages/com.unity.render-pipelines.universal/ShaderLibrary/Lighting.hlsl"
 
 #define GT_ADAPTER_URP 1
-// All material constants in UnityPerMaterial, so the SRP Batcher keeps the terrain batched.
+// All material constants in UnityPerMaterial, so the SRP Batcher layout stays the same for every
+// material of this shader.
 #define GT_CBUFFER_START(name) CBUFFER_START(UnityPerMaterial)
 #define GT_CBUFFER_END CBUFFER_END
 #define GT_REGISTER(r)
 
-float3 GT_ObjectToWorld(float3 positionOS) { return TransformObjectToWorld(positionOS); }
-float3 GT_ObjectToWorldNormal(float3 normalOS) { return TransformObjectToWorldNormal(normalOS); }
+// Set by GregoryTerrainRenderer (MaterialPropertyBlock), only when its Transform changes.
+float4x4 _GtObjectToWorld;
+float4x4 _GtWorldToObject;
+
+#if defined(GT_PASS_SHADOWCASTER)
+// Set by URP for the light whose shadow map is being drawn (directional: towards the light).
+float3 _LightDirection;
+#endif
+
+float3 GT_ObjectToWorld(float3 positionOS) { return mul(_GtObjectToWorld, float4(positionOS, 1.0)).xyz; }
+
+// Normals go through the inverse transpose: n^T * WorldToObject (as URP's own
+// TransformObjectToWorldNormal does with UNITY_MATRIX_I_M).
+float3 GT_ObjectToWorldNormal(float3 normalOS) { return normalize(mul(normalOS, (float3x3)_GtWorldToObject)); }
+
 float4 GT_WorldToClip(float3 positionWS) { return TransformWorldToHClip(positionWS); }
-float4 GT_ObjectToClip(float3 positionOS) { return TransformObjectToHClip(positionOS); }
+
+float4 GT_ObjectToClip(float3 positionOS)
+{
+    float3 positionWS = GT_ObjectToWorld(positionOS);
+#if defined(GT_PASS_SHADOWCASTER)
+    // URP's depth bias along the light (the x of _ShadowBias). The normal bias (y) needs the
+    // surface normal, which a clip-space transform does not get; the tile corners used for the
+    // tessellation factors have none either. Then keep the caster in front of the near plane, as
+    // URP's ShadowCasterPass does, so geometry behind it still casts.
+    positionWS += _LightDirection * _ShadowBias.x;
+    float4 positionCS = TransformWorldToHClip(positionWS);
+    #if UNITY_REVERSED_Z
+    positionCS.z = min(positionCS.z, positionCS.w * UNITY_NEAR_CLIP_VALUE);
+    #else
+    positionCS.z = max(positionCS.z, positionCS.w * UNITY_NEAR_CLIP_VALUE);
+    #endif
+    return positionCS;
+#else
+    return TransformWorldToHClip(positionWS);
+#endif
+}
+
 float3 GT_CameraPositionWS() { return GetCameraPositionWS(); }
 float2 GT_ScreenSize() { return _ScreenParams.xy; }
 

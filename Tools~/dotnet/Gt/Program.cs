@@ -36,6 +36,7 @@ namespace GregoryTerrain.Rig
         {
             Commands["demo-grid"] = ("build the 5x5 sample grid fitted to a procedural heightmap (--out FILE)", DemoGridCommand.Run);
             Commands["eval"] = ("Core float, Core double and (--gpu) GPU position and normal at points (--grid FILE --points \"x,y;...\")", EvalCommand.Run);
+            Commands["unity-asset"] = ("write a grid JSON as the YAML of a PatchGridAsset (--grid FILE --out FILE.asset --script-guid GUID [--name NAME])", UnityAssetCommand.Run);
             Commands["pack"] = ("write the harness's buffer files for one scene (--grid FILE --out DIR ...)", PackCommand.Run);
             Commands["jitter"] = ("deep-zoom vertex jitter table, plain vs shipped float path (--widths 1e-2,1e-4,1e-6 ...)", JitterCommand.Run);
         }

@@ -1,0 +1,109 @@
+using GregoryTerrain;
+using UnityEditor;
+using UnityEngine;
+
+namespace GregoryTerrain.EditorTools
+{
+    /// <summary>
+    /// Renderer inspector (triangle estimate, fallback status) and Scene-view tools: control points
+    /// and patch wireframe drawn with Handles, control points moved with position handles (undoable),
+    /// and the demo's keys while the Scene view has focus: Z control points, X wireframe, C/V factor -/+.
+    /// </summary>
+    [CustomEditor(typeof(GregoryTerrainRenderer))]
+    public sealed class GregoryTerrainRendererEditor : Editor
+    {
+        int _selectedPatch = -1, _selectedSlot = -1;
+
+        public override void OnInspectorGUI()
+        {
+            var r = (GregoryTerrainRenderer)target;
+            EditorGUILayout.LabelField(new GUIContent("Estimated triangles", "Most triangles the current settings can produce: 2 F^2 per tile, F the uniform factor, else the max factor (Core's TessellationPolicy)."),
+                new GUIContent(r.EstimatedTriangleCount.ToString("N0")));
+            if (GregoryTerrainRenderer.UsesFallback)
+                EditorGUILayout.HelpBox("This GPU has no tessellation shaders: the vertex-shader fallback is drawn (fixed grid per tile).", MessageType.Warning);
+            if (r.Grid != null && !r.Grid.IsValid)
+                EditorGUILayout.HelpBox("Grid: " + r.Grid.ValidationError, MessageType.Error);
+            if (r.SettingsError != null)
+                EditorGUILayout.HelpBox("Settings: " + r.SettingsError, MessageType.Error);
+            if (r.Material == null)
+                EditorGUILayout.HelpBox("Assign a material that uses GregoryTerrain/Terrain.", MessageType.Warning);
+            DrawDefaultInspector();
+        }
+
+        void OnSceneGUI()
+        {
+            var r = (GregoryTerrainRenderer)target;
+            HandleKeys(r);
+            PatchGridAsset grid = r.Grid;
+            if (grid == null || !grid.IsValid) return;
+            Handles.matrix = r.transform.localToWorldMatrix;
+            if (r.debugShowPatchWireframe) DrawWireframe(grid);
+            if (r.debugShowControlPoints) EditControlPoints(grid);
+            Handles.matrix = Matrix4x4.identity;
+        }
+
+        static void HandleKeys(GregoryTerrainRenderer r)
+        {
+            Event e = Event.current;
+            if (e.type != EventType.KeyDown) return;
+            switch (e.keyCode)
+            {
+                case KeyCode.Z: Undo.RecordObject(r, "Toggle control points"); r.debugShowControlPoints = !r.debugShowControlPoints; break;
+                case KeyCode.X: Undo.RecordObject(r, "Toggle wireframe"); r.debugShowPatchWireframe = !r.debugShowPatchWireframe; break;
+                case KeyCode.C: Undo.RecordObject(r, "Tessellation factor -"); r.UniformFactor = r.UniformFactor - 1; break;
+                case KeyCode.V: Undo.RecordObject(r, "Tessellation factor +"); r.UniformFactor = r.UniformFactor + 1; break;
+                default: return;
+            }
+            e.Use();
+            SceneView.RepaintAll();
+        }
+
+        // Terrain point (x, y, z) -> object position (x, z, y): Unity is Y-up.
+        static Vector3 ToObject(Vector3 terrain) => new Vector3(terrain.x, terrain.z, terrain.y);
+        static Vector3 ToTerrain(Vector3 obj) => new Vector3(obj.x, obj.z, obj.y);
+
+        static void DrawWireframe(PatchGridAsset grid)
+        {
+            Handles.color = Color.cyan;
+            for (int p = 0; p < grid.PatchCount; p++)
+            {
+                // The four boundary curves' control polygons (slots 0-3, 12-15, 0-12, 3-15).
+                for (int k = 0; k < 3; k++)
+                {
+                    Line(grid, p, k, k + 1);
+                    Line(grid, p, 12 + k, 13 + k);
+                    Line(grid, p, 4 * k, 4 * k + 4);
+                    Line(grid, p, 4 * k + 3, 4 * k + 7);
+                }
+            }
+        }
+
+        static void Line(PatchGridAsset grid, int p, int a, int b) =>
+            Handles.DrawLine(ToObject(grid.GetControlPoint(p, a)), ToObject(grid.GetControlPoint(p, b)));
+
+        void EditControlPoints(PatchGridAsset grid)
+        {
+            for (int p = 0; p < grid.PatchCount; p++)
+            for (int s = 0; s < GregoryPatch.SlotCount; s++)
+            {
+                Vector3 pos = ToObject(grid.GetControlPoint(p, s));
+                float size = 0.06f * HandleUtility.GetHandleSize(pos);
+                Handles.color = s >= 16 ? Color.yellow : Color.white;
+                if (Handles.Button(pos, Quaternion.identity, size, size, Handles.DotHandleCap))
+                {
+                    _selectedPatch = p; _selectedSlot = s;
+                }
+            }
+            if (_selectedPatch < 0 || _selectedPatch >= grid.PatchCount) return;
+            Vector3 current = ToObject(grid.GetControlPoint(_selectedPatch, _selectedSlot));
+            EditorGUI.BeginChangeCheck();
+            Vector3 moved = Handles.PositionHandle(current, Quaternion.identity);
+            if (EditorGUI.EndChangeCheck())
+            {
+                Undo.RecordObject(grid, "Move control point");
+                grid.SetControlPoint(_selectedPatch, _selectedSlot, ToTerrain(moved));
+                EditorUtility.SetDirty(grid);
+            }
+        }
+    }
+}

@@ -1,0 +1,42 @@
+using UnityEngine;
+
+namespace GregoryTerrain
+{
+    /// <summary>
+    /// World view: the range follows a camera flying over the terrain, a square of
+    /// <see cref="viewDistance"/> around the point below the camera (pushed ahead along its view).
+    /// Each frame it sets the range only (one float4); the camera is Unity's own.
+    /// </summary>
+    [ExecuteAlways]
+    [AddComponentMenu("Gregory Terrain/Camera Range Controller")]
+    public sealed class CameraRangeController : MonoBehaviour
+    {
+        [Tooltip("The terrain whose range follows the camera.")]
+        [SerializeField] GregoryTerrainRenderer target = null;
+
+        [Tooltip("The camera to follow; the main camera when empty.")]
+        [SerializeField] Camera followCamera = null;
+
+        [Tooltip("Side of the drawn square, in terrain units (1 = the whole terrain).")]
+        [SerializeField, Range(0.0001f, 1f)] float viewDistance = 0.5f;
+
+        [Tooltip("How far ahead of the camera (fraction of the side) the square's centre is pushed, so more of it lies in view.")]
+        [SerializeField, Range(0f, 0.5f)] float lookAhead = 0.3f;
+
+        void LateUpdate()
+        {
+            if (target == null) return;
+            Camera cam = followCamera != null ? followCamera : Camera.main;
+            if (cam == null) return;
+            Transform t = target.transform;
+            // Terrain object space is (x, height, y): q = (object x, object z).
+            Vector3 camOS = t.InverseTransformPoint(cam.transform.position);
+            Vector3 fwdOS = t.InverseTransformDirection(cam.transform.forward);
+            Vector2 ahead = new Vector2(fwdOS.x, fwdOS.z);
+            if (ahead.sqrMagnitude > 1e-12f) ahead.Normalize();
+            double cx = camOS.x + ahead.x * lookAhead * viewDistance;
+            double cy = camOS.z + ahead.y * lookAhead * viewDistance;
+            target.Range = RangeFit.Around(cx, cy, viewDistance, viewDistance);
+        }
+    }
+}

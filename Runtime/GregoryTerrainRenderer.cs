@@ -1,0 +1,470 @@
+using System;
+using UnityEngine;
+using UnityEngine.Rendering;
+#if UNITY_EDITOR
+using UnityEditor;
+#endif
+
+namespace GregoryTerrain
+{
+    /// <summary>
+    /// Draws a <see cref="PatchGridAsset"/> with the GregoryTerrain/Terrain shader in one procedural
+    /// draw call: M x M tiles over the current <see cref="Range"/>, each a 4-control-point patch that
+    /// the hull/domain stages tessellate and evaluate (internals.md, "Draw modes").
+    ///
+    /// GPU traffic (see <see cref="PerFrameTrafficBytes"/>): the control points, regions and grid lines
+    /// go up once per asset version; the settings constants when a setting changes; the object
+    /// matrices when the Transform moves; the range origin when it re-snaps; and every frame
+    /// <c>_Range</c> alone.
+    /// </summary>
+    [ExecuteAlways]
+    [DisallowMultipleComponent]
+    [AddComponentMenu("Gregory Terrain/Gregory Terrain Renderer")]
+    // After the range controllers (default order 0), so this frame's range is drawn this frame.
+    [DefaultExecutionOrder(100)]
+    public sealed class GregoryTerrainRenderer : MonoBehaviour
+    {
+        /// <summary>
+        /// Bytes this script sets per frame in the steady state: one float4, <c>_Range</c> (one
+        /// MaterialPropertyBlock.SetVector in PushRange, then one Graphics.RenderPrimitives call).
+        /// Anything else is set only on change: <c>_RangeOrigin</c> (16 bytes, on re-snap),
+        /// <c>_GtObjectToWorld/_GtWorldToObject</c> (128 bytes, when the Transform changes), the
+        /// whole TerrainParams block (9 float4, 144 bytes, when a setting or the grid changes) and the
+        /// buffers (on a new asset version). What Unity does with the property block inside the draw
+        /// (it builds the draw's constant buffers from it) is Unity's and not counted here.
+        /// </summary>
+        public const int PerFrameTrafficBytes = 16;
+
+        /// <summary>Property IDs, looked up once (Shader.PropertyToID), never a string per frame.</summary>
+        static class Ids
+        {
+            public static readonly int ControlPoints = Shader.PropertyToID("_ControlPoints");
+            public static readonly int Regions = Shader.PropertyToID("_Regions");
+            public static readonly int GridLines = Shader.PropertyToID("_GridLines");
+            public static readonly int ObjectToWorld = Shader.PropertyToID("_GtObjectToWorld");
+            public static readonly int WorldToObject = Shader.PropertyToID("_GtWorldToObject");
+
+            /// <summary>
+            /// The nine float4 of the TerrainParams cbuffer, in the order of Core's
+            /// <see cref="TerrainParams.PropertyNames"/> (the one place that order is written), so
+            /// <c>Params[k]</c> is the ID of <c>TerrainParams[k]</c>.
+            /// </summary>
+            public static readonly int[] Params = ParamIds();
+
+            /// <summary>Positions of the two range constants in <see cref="Params"/>.</summary>
+            public static readonly int RangeIndex = ParamIndex("_Range");
+            public static readonly int RangeOriginIndex = ParamIndex("_RangeOrigin");
+
+            static int[] ParamIds()
+            {
+                var ids = new int[TerrainParams.Float4Count];
+                for (int k = 0; k < ids.Length; k++) ids[k] = Shader.PropertyToID(TerrainParams.PropertyNames[k]);
+                return ids;
+            }
+
+            static int ParamIndex(string property)
+            {
+                int k = Array.IndexOf(TerrainParams.PropertyNames, property);
+                if (k < 0) throw new InvalidOperationException($"TerrainParams.PropertyNames has no '{property}'");
+                return k;
+            }
+        }
+
+        [Header("Content")]
+        [Tooltip("The patch grid to draw. Swapping it releases the old GPU buffers and uploads the new grid once.")]
+        [SerializeField] PatchGridAsset grid;
+
+        [Tooltip("A material using the GregoryTerrain/Terrain shader. Effects (noise, height colour, debug views) are its keyword toggles.")]
+        [SerializeField] Material material;
+
+        [Header("Tessellation")]
+        [Tooltip("M: the drawn range is covered by M x M tile patches. The vertex budget is constant at any zoom: about 2 x (M x maxFactor)^2 triangles at most.")]
+        [SerializeField, Range(1, 64)] int tiles = 16;
+
+        [Tooltip("Largest tessellation factor a tile edge may get (hardware limit 64). Caps the triangle count.")]
+        [SerializeField, Range(1f, 64f)] float maxFactor = 64f;
+
+        [Tooltip("Target screen length, in pixels, of one tessellated edge segment. Smaller = denser mesh, more accurate silhouette, more time.")]
+        [SerializeField, Range(1f, 64f)] float targetPixelError = 8f;
+
+        [Tooltip("0 = adaptive (screen-space) factors. A value > 0 uses that factor for every edge: for debugging and measurements.")]
+        [SerializeField, Range(0, 64)] int uniformFactor;
+
+        [Tooltip("Fallback only (GPUs without a tessellator): each tile is a fixed (F+1) x (F+1) vertex grid.")]
+        [SerializeField, Range(1, 64)] int fallbackGridFactor = 16;
+
+        [Header("Range (terrain unit square)")]
+        [Tooltip("Part of the terrain drawn: [c, g] x [d, h] inside [0, 1]^2. Range controllers set it every frame.")]
+        [SerializeField] Vector4 range = new Vector4(0f, 0f, 1f, 1f);
+
+        [Header("Noise detail (material keyword GT_NOISE)")]
+        [Tooltip("Height of the first octave, terrain units.")]
+        [SerializeField, Range(0f, 0.5f)] float noiseAmplitude = 0.02f;
+        [Tooltip("Lattice cells of the first octave across the whole terrain.")]
+        [SerializeField, Range(0.5f, 4096f)] float noiseFrequency = 16f;
+        [Tooltip("alpha (eq. 12): frequency ratio between octaves.")]
+        [SerializeField, Range(1.1f, 8f)] float noiseAlpha = 2f;
+        [Tooltip("beta (eq. 12): amplitude divisor between octaves.")]
+        [SerializeField, Range(1.1f, 8f)] float noiseBeta = 2f;
+        [Tooltip("Most octaves evaluated; fewer are used where their wavelength is below two vertex spacings.")]
+        [SerializeField, Range(0, 16)] int noiseOctaves = 6;
+        [Tooltip("0 = vertices across the range follow the tessellation; > 0 overrides it for the octave count.")]
+        [SerializeField, Min(0f)] float noiseVerticesAcross = 0f;
+
+        [Header("Height colour (material keyword GT_HEIGHT_COLOR)")]
+        [Tooltip("gamma (eq. 14): height over which the colour goes from low to high.")]
+        [SerializeField, Range(0.001f, 4f)] float colorGamma = 0.5f;
+        [Tooltip("Amplitude of the colour noise l (eq. 14).")]
+        [SerializeField, Range(0f, 1f)] float colorNoiseAmplitude = 0.1f;
+        [Tooltip("Frequency of the colour noise across the terrain.")]
+        [SerializeField, Range(0.5f, 4096f)] float colorNoiseFrequency = 64f;
+        [Tooltip("C (eq. 15): colour at low heights.")]
+        [SerializeField] Color colorLow = new Color(0.22f, 0.33f, 0.14f);
+        [Tooltip("B (eq. 15): colour at high heights.")]
+        [SerializeField] Color colorHigh = new Color(0.9f, 0.9f, 0.92f);
+
+        [Header("Lighting")]
+        [Tooltip("Whether the terrain casts shadows (the ShadowCaster pass tessellates the same surface).")]
+        [SerializeField] ShadowCastingMode shadowCasting = ShadowCastingMode.On;
+        [Tooltip("Whether the terrain receives shadows.")]
+        [SerializeField] bool receiveShadows = true;
+
+        [Header("Debug (Scene view: Z control points, X wireframe, C/V factor -/+)")]
+        [Tooltip("Draw the control points in the Scene view (key Z with the Scene view focused).")]
+        public bool debugShowControlPoints;
+        [Tooltip("Draw the patch boundaries in the Scene view (key X).")]
+        public bool debugShowPatchWireframe;
+
+        // ---- state ----------------------------------------------------------------------------------
+        MaterialPropertyBlock _props;
+        GraphicsBuffer _controlPoints, _regions, _gridLines, _fallbackIndices;
+        PatchGridAsset _uploadedGrid;
+        int _uploadedVersion;
+        int _fallbackIndexFactor;
+        bool _settingsDirty = true;
+        bool _originDirty = true;
+        string _settingsError;
+        PatchGrid _uploadedPatchGrid;
+        TerrainRange _range = TerrainRange.full;
+        readonly RangeOriginTracker _origin = new RangeOriginTracker();
+        float _gridMinZ, _gridMaxZ;
+        static bool s_FallbackLogged;
+
+        // ---- public API -----------------------------------------------------------------------------
+
+        /// <summary>The patch grid drawn. Setting another asset releases and re-uploads on the next frame.</summary>
+        public PatchGridAsset Grid { get => grid; set => grid = value; }
+
+        /// <summary>The material (GregoryTerrain/Terrain shader).</summary>
+        public Material Material { get => material; set => material = value; }
+
+        /// <summary>Tiles per side M.</summary>
+        public int Tiles { get => tiles; set { tiles = Mathf.Clamp(value, 1, 64); _settingsDirty = true; } }
+
+        /// <summary>Uniform factor (0 = adaptive); the Scene view's C/V keys change it.</summary>
+        public int UniformFactor { get => uniformFactor; set { uniformFactor = Mathf.Clamp(value, 0, 64); _settingsDirty = true; } }
+
+        /// <summary>
+        /// The drawn range. Throws ArgumentException (naming the field and value) unless it is finite,
+        /// non-empty and inside the unit square; the old range is then kept.
+        /// </summary>
+        public TerrainRange Range
+        {
+            get => _range;
+            set
+            {
+                value.Validate("Range");
+                _range = value;
+                range = new Vector4((float)value.c, (float)value.d, (float)value.g, (float)value.h);
+            }
+        }
+
+        /// <summary>True when this device has no tessellator and the vertex-shader fallback is drawn.</summary>
+        public static bool UsesFallback => !SystemInfo.supportsTessellationShaders;
+
+        /// <summary>
+        /// Triangles the current settings can produce at most (Core's TessellationPolicy: 2 F^2 per
+        /// tile, F = the uniform factor, else maxFactor; the fallback grid's F without a tessellator).
+        /// </summary>
+        public double EstimatedTriangleCount => TessellationPolicy.EstimateTriangleCount(tiles,
+            UsesFallback ? fallbackGridFactor : uniformFactor > 0 ? uniformFactor : maxFactor);
+
+        /// <summary>Why the current settings cannot be drawn (Core's message, naming field and value), or null.</summary>
+        public string SettingsError => _settingsError;
+
+        /// <summary>True while GPU buffers for a grid are held.</summary>
+        public bool HasGpuResources => _controlPoints != null;
+
+        // ---- Unity messages -------------------------------------------------------------------------
+
+        void OnEnable()
+        {
+            _settingsDirty = true;
+            _originDirty = true;
+            SyncRangeFromSerialized();
+#if UNITY_EDITOR
+            // Buffers are native memory: free them before scripts reload, or they leak (Unity warns).
+            AssemblyReloadEvents.beforeAssemblyReload += ReleaseGpuResources;
+#endif
+        }
+
+        void OnDisable()
+        {
+#if UNITY_EDITOR
+            AssemblyReloadEvents.beforeAssemblyReload -= ReleaseGpuResources;
+#endif
+            ReleaseGpuResources();
+        }
+
+        void OnDestroy() => ReleaseGpuResources();
+
+        void OnValidate()
+        {
+            _settingsDirty = true;
+            SyncRangeFromSerialized();
+        }
+
+        void LateUpdate() => Draw();
+
+        // ---- drawing --------------------------------------------------------------------------------
+
+        /// <summary>
+        /// Issues this frame's single draw. In the steady state (no setting, Transform, origin or grid
+        /// change) the only value set is <c>_Range</c>: see <see cref="PerFrameTrafficBytes"/>.
+        /// No allocation once the buffers exist.
+        /// </summary>
+        void Draw()
+        {
+            if (material == null || grid == null || !grid.IsValid) return;
+            if (!EnsureUploaded()) return;
+
+            bool fallback = UsesFallback;
+            if (fallback && !EnsureFallbackIndices()) return;
+
+            if (_origin.Update(_range)) _originDirty = true;
+            if (_settingsDirty)
+            {
+                PushSettings(fallback);   // all nine TerrainParams float4, _Range and _RangeOrigin included
+                PushMatrices();
+                _settingsDirty = false;
+            }
+            else
+            {
+                if (transform.hasChanged) PushMatrices();
+                PushRange();
+            }
+            if (_settingsError != null) return;   // logged once; drawn again after the next valid change
+
+            var rp = new RenderParams(material)
+            {
+                worldBounds = WorldBounds(),
+                matProps = _props,
+                shadowCastingMode = shadowCasting,
+                receiveShadows = receiveShadows,
+                layer = gameObject.layer,
+            };
+            int tileCount = tiles * tiles;
+            if (fallback)
+                Graphics.RenderPrimitivesIndexed(rp, MeshTopology.Triangles, _fallbackIndices,
+                    _fallbackIndices.count, 0, tileCount);
+            else
+                // One 4-control-point patch per tile; the vertex stage derives tile and corner from
+                // SV_VertexID, so there is no vertex buffer.
+                Graphics.RenderPrimitives(rp, MeshTopology.Quads, 4 * tileCount, 1);
+        }
+
+        /// <summary>
+        /// The per-frame part: <c>_Range</c> relative to the origin (16 bytes). <c>_RangeOrigin</c>
+        /// goes with it only in a frame where the origin re-snapped.
+        /// </summary>
+        void PushRange()
+        {
+            RangeMapping.EncodeRange(_range, _origin.Origin, out Float4 r, out Float4 o);
+            _props.SetVector(Ids.Params[Ids.RangeIndex], ToVector(r));
+            if (_originDirty)
+            {
+                _props.SetVector(Ids.Params[Ids.RangeOriginIndex], ToVector(o));
+                _originDirty = false;
+            }
+        }
+
+        /// <summary>
+        /// Builds the TerrainParams block with Core (which validates every input and knows the order)
+        /// and sets each float4 by its name. On invalid settings nothing is set and the renderer
+        /// stops drawing until a change fixes them, so the GPU never sees half-updated constants.
+        /// </summary>
+        void PushSettings(bool fallback)
+        {
+            var tess = new TessellationSettings(tiles, maxFactor, targetPixelError, fallback ? fallbackGridFactor : uniformFactor);
+            var noise = new NoiseSettings(noiseAmplitude, noiseFrequency, noiseAlpha, noiseBeta, noiseOctaves);
+            var heightColor = new HeightColorSettings(colorGamma, colorNoiseAmplitude, colorNoiseFrequency);
+            Color low = colorLow.linear, high = colorHigh.linear;
+            TerrainParams p;
+            try
+            {
+                p = TerrainParams.Create(_uploadedPatchGrid, _range, _origin.Origin, tess, noise, heightColor,
+                    new Float3(low.r, low.g, low.b), new Float3(high.r, high.g, high.b), noiseVerticesAcross);
+            }
+            catch (ArgumentException e)
+            {
+                if (_settingsError != e.Message)
+                    Debug.LogError($"{name}: cannot draw with these settings: {e.Message}", this);
+                _settingsError = e.Message;
+                return;
+            }
+            _settingsError = null;
+            for (int k = 0; k < TerrainParams.Float4Count; k++)
+                _props.SetVector(Ids.Params[k], ToVector(p[k]));
+            _originDirty = false;
+        }
+
+        static Vector4 ToVector(Float4 v) => new Vector4(v.x, v.y, v.z, v.w);
+
+        /// <summary>
+        /// RenderPrimitives has no object matrix (the shader gets none from Unity), so the adapters
+        /// read ours. Sent when the Transform changes only.
+        /// </summary>
+        void PushMatrices()
+        {
+            _props.SetMatrix(Ids.ObjectToWorld, transform.localToWorldMatrix);
+            _props.SetMatrix(Ids.WorldToObject, transform.worldToLocalMatrix);
+            transform.hasChanged = false;
+        }
+
+        /// <summary>
+        /// World bounds of the drawn range: object x in [c, g], z in [d, h] (the shaders output
+        /// (x, z, y)), height between the lowest and highest control point (the patch lies in their
+        /// hull) widened by the largest noise the octaves can add.
+        /// </summary>
+        Bounds WorldBounds()
+        {
+            float noise = NoiseMargin();
+            Vector3 min = new Vector3((float)_range.c, _gridMinZ - noise, (float)_range.d);
+            Vector3 max = new Vector3((float)_range.g, _gridMaxZ + noise, (float)_range.h);
+            Matrix4x4 m = transform.localToWorldMatrix;
+            Vector3 c = m.MultiplyPoint3x4(0.5f * (min + max));
+            Vector3 e = 0.5f * (max - min);
+            // Extents of a transformed box: |M| applied to the half sizes.
+            Vector3 we = new Vector3(
+                Mathf.Abs(m.m00) * e.x + Mathf.Abs(m.m01) * e.y + Mathf.Abs(m.m02) * e.z,
+                Mathf.Abs(m.m10) * e.x + Mathf.Abs(m.m11) * e.y + Mathf.Abs(m.m12) * e.z,
+                Mathf.Abs(m.m20) * e.x + Mathf.Abs(m.m21) * e.y + Mathf.Abs(m.m22) * e.z);
+            return new Bounds(c, 2f * we);
+        }
+
+        /// <summary>sum_k amplitude / beta^k over the octaves: the most noise can move a point.</summary>
+        float NoiseMargin()
+        {
+            float sum = 0f, a = noiseAmplitude;
+            for (int k = 0; k < noiseOctaves; k++) { sum += a; a /= noiseBeta; }
+            return sum;
+        }
+
+        // ---- GPU resources --------------------------------------------------------------------------
+
+        /// <summary>Uploads the grid when it is new or changed; false when it cannot be drawn.</summary>
+        bool EnsureUploaded()
+        {
+            if (_uploadedGrid == grid && _uploadedVersion == grid.Version && _controlPoints != null) return true;
+            ReleaseGpuResources();
+            PatchGrid g;
+            try { g = grid.ToPatchGrid(); }
+            catch (ArgumentException e)
+            {
+                Debug.LogError($"{name}: patch grid '{grid.name}' cannot be drawn: {e.Message}", this);
+                _uploadedGrid = grid; _uploadedVersion = grid.Version;   // do not retry every frame
+                return false;
+            }
+            float[] cps, regions, lines;
+            try
+            {
+                // GpuLayout validates (bit-identical shared edges, float-representable lines) and packs.
+                cps = GpuLayout.PackControlPoints(g);
+                regions = GpuLayout.PackRegions(g);
+                lines = GpuLayout.PackGridLines(g);
+            }
+            catch (ArgumentException e)
+            {
+                Debug.LogError($"{name}: patch grid '{grid.name}' cannot be drawn: {e.Message}", this);
+                _uploadedGrid = grid; _uploadedVersion = grid.Version;   // do not retry every frame
+                return false;
+            }
+
+            // Float arrays of float4 elements: count = floats / 4, stride 16 (GpuLayout.Float4Stride).
+            _controlPoints = new GraphicsBuffer(GraphicsBuffer.Target.Structured, cps.Length / GpuLayout.Float4Size, GpuLayout.Float4Stride);
+            _controlPoints.SetData(cps);
+            _regions = new GraphicsBuffer(GraphicsBuffer.Target.Structured, regions.Length / GpuLayout.Float4Size, GpuLayout.Float4Stride);
+            _regions.SetData(regions);
+            _gridLines = new GraphicsBuffer(GraphicsBuffer.Target.Structured, lines.Length, GpuLayout.GridLineStride);
+            _gridLines.SetData(lines);
+
+            _props ??= new MaterialPropertyBlock();
+            _props.SetBuffer(Ids.ControlPoints, _controlPoints);
+            _props.SetBuffer(Ids.Regions, _regions);
+            _props.SetBuffer(Ids.GridLines, _gridLines);
+            // _GridSize is part of TerrainParams: PushSettings sets it (settings are dirty below).
+            grid.GetHeightRange(out _gridMinZ, out _gridMaxZ);
+
+            _uploadedGrid = grid;
+            _uploadedPatchGrid = g;
+            _uploadedVersion = grid.Version;
+            _settingsDirty = true;
+            _originDirty = true;
+            _origin.Reset();
+            return true;
+        }
+
+        /// <summary>The fallback's (F+1)^2-vertex grid as triangles, built when F changes.</summary>
+        bool EnsureFallbackIndices()
+        {
+            if (!s_FallbackLogged)
+            {
+                s_FallbackLogged = true;
+                Debug.Log("Gregory Terrain: this GPU has no tessellation shaders " +
+                          "(SystemInfo.supportsTessellationShaders is false); drawing the vertex-shader fallback.", this);
+            }
+            int f = fallbackGridFactor;
+            if (_fallbackIndices != null && _fallbackIndexFactor == f) return true;
+            _fallbackIndices?.Release();
+            var indices = new int[6 * f * f];
+            int k = 0, row = f + 1;
+            for (int t = 0; t < f; t++)
+            for (int s = 0; s < f; s++)
+            {
+                int v = t * row + s;
+                indices[k++] = v; indices[k++] = v + row; indices[k++] = v + 1;
+                indices[k++] = v + 1; indices[k++] = v + row; indices[k++] = v + row + 1;
+            }
+            _fallbackIndices = new GraphicsBuffer(GraphicsBuffer.Target.Index, indices.Length, sizeof(int));
+            _fallbackIndices.SetData(indices);
+            _fallbackIndexFactor = f;
+            _settingsDirty = true;
+            return true;
+        }
+
+        /// <summary>Releases every GPU buffer this renderer holds. Safe to call twice.</summary>
+        public void ReleaseGpuResources()
+        {
+            _controlPoints?.Release(); _controlPoints = null;
+            _regions?.Release(); _regions = null;
+            _gridLines?.Release(); _gridLines = null;
+            _fallbackIndices?.Release(); _fallbackIndices = null;
+            _uploadedGrid = null;
+            _uploadedPatchGrid = null;
+            _uploadedVersion = 0;
+            _props?.Clear();
+        }
+
+        void SyncRangeFromSerialized()
+        {
+            var r = new TerrainRange(range.x, range.y, range.z, range.w);
+            try { r.Validate("range"); }
+            catch (ArgumentException e)
+            {
+                Debug.LogError($"{name}: {e.Message}; keeping {_range}", this);
+                return;
+            }
+            _range = r;
+        }
+    }
+}

@@ -1,0 +1,107 @@
+using UnityEngine;
+
+namespace GregoryTerrain
+{
+    /// <summary>
+    /// The paper's zoom view: the range is always shown in the same display box. Zooming and panning
+    /// change only the range (one float4 per frame); the camera is placed over the range so it fills
+    /// the view, and camera data is what Unity sends anyway. Drive it with <see cref="Zoom"/> and
+    /// <see cref="Pan"/>, or with the mouse wheel and arrow keys when the legacy Input Manager is on.
+    /// </summary>
+    [ExecuteAlways]
+    [AddComponentMenu("Gregory Terrain/Zoom Range Controller")]
+    public sealed class ZoomRangeController : MonoBehaviour
+    {
+        [Tooltip("The terrain whose range this controller sets.")]
+        [SerializeField] GregoryTerrainRenderer target = null;
+
+        [Tooltip("Camera placed over the range so the range fills its view (optional).")]
+        [SerializeField] Camera viewCamera = null;
+
+        [Tooltip("Range centre in the terrain's unit square.")]
+        [SerializeField] Vector2 center = new Vector2(0.5f, 0.5f);
+
+        [Tooltip("log2 of the zoom: range width = 2^-zoomLevel. 0 shows the whole terrain; about 20 reaches widths of 1e-6.")]
+        [SerializeField, Range(0f, 23f)] float zoomLevel;
+
+        [Tooltip("Zoom levels per mouse-wheel notch.")]
+        [SerializeField, Range(0.01f, 2f)] float wheelZoomStep = 0.25f;
+
+        [Tooltip("Pan speed in range widths per second (arrow keys / WASD).")]
+        [SerializeField, Range(0.01f, 4f)] float panSpeed = 0.5f;
+
+        [Tooltip("Camera pitch in degrees (90 = looking straight down).")]
+        [SerializeField, Range(10f, 90f)] float cameraPitch = 50f;
+
+        // Centre kept in double: a float centre cannot address a 1e-6 range precisely.
+        double _cx = 0.5, _cy = 0.5;
+
+        /// <summary>Range width 2^-zoomLevel.</summary>
+        public double Width => System.Math.Pow(2.0, -zoomLevel);
+
+        void OnEnable() { _cx = center.x; _cy = center.y; }
+
+        void OnValidate() { _cx = center.x; _cy = center.y; }
+
+        /// <summary>Zooms by <paramref name="levels"/> (positive = in) keeping the point at <paramref name="pivot01"/> of the view fixed.</summary>
+        public void Zoom(float levels, Vector2 pivot01)
+        {
+            double before = Width;
+            zoomLevel = Mathf.Clamp(zoomLevel + levels, 0f, 23f);
+            double after = Width;
+            // The pivot's terrain point stays where it is on screen.
+            _cx += (pivot01.x - 0.5) * (before - after);
+            _cy += (pivot01.y - 0.5) * (before - after);
+        }
+
+        /// <summary>Moves the range by <paramref name="deltaInWidths"/> range widths.</summary>
+        public void Pan(Vector2 deltaInWidths)
+        {
+            double w = Width;
+            _cx += deltaInWidths.x * w;
+            _cy += deltaInWidths.y * w;
+        }
+
+        void Update()
+        {
+#if ENABLE_LEGACY_INPUT_MANAGER
+            if (Application.isPlaying)
+            {
+                float wheel = Input.mouseScrollDelta.y;
+                if (wheel != 0f) Zoom(wheel * wheelZoomStep, new Vector2(0.5f, 0.5f));
+                Vector2 pan = new Vector2(Input.GetAxis("Horizontal"), Input.GetAxis("Vertical"));
+                if (pan != Vector2.zero) Pan(pan * (panSpeed * Time.deltaTime));
+            }
+#endif
+            Apply();
+        }
+
+        /// <summary>Sends the range to the terrain and places the camera over it.</summary>
+        public void Apply()
+        {
+            if (target == null) return;
+            double w = Width;
+            TerrainRange r = RangeFit.Around(_cx, _cy, w, w);
+            _cx = 0.5 * (r.c + r.g);          // stay where the clamped range is
+            _cy = 0.5 * (r.d + r.h);
+            center = new Vector2((float)_cx, (float)_cy);
+            target.Range = r;
+            if (viewCamera != null) PlaceCamera(r);
+        }
+
+        void PlaceCamera(TerrainRange r)
+        {
+            Transform t = target.transform;
+            // Object space is (x, height, y); the range's centre at mid height.
+            Vector3 centreOS = new Vector3((float)(0.5 * (r.c + r.g)), 0f, (float)(0.5 * (r.d + r.h)));
+            Vector3 centreWS = t.TransformPoint(centreOS);
+            float worldWidth = (float)r.Width * t.lossyScale.x;
+            float halfFov = 0.5f * viewCamera.fieldOfView * Mathf.Deg2Rad;
+            float distance = 0.5f * worldWidth / Mathf.Tan(halfFov) * 1.1f;
+            Quaternion rot = Quaternion.Euler(cameraPitch, 0f, 0f);
+            viewCamera.transform.SetPositionAndRotation(centreWS - rot * Vector3.forward * distance, rot);
+            viewCamera.nearClipPlane = Mathf.Max(1e-4f, 0.01f * distance);
+            viewCamera.farClipPlane = Mathf.Max(viewCamera.nearClipPlane * 10f, 10f * distance);
+        }
+    }
+}

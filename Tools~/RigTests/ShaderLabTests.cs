@@ -1,0 +1,237 @@
+using System;
+using System.Collections.Generic;
+using System.Diagnostics;
+using System.IO;
+using System.Linq;
+using System.Text.RegularExpressions;
+using NUnit.Framework;
+
+namespace GregoryTerrain.Rig.Tests
+{
+    /// <summary>
+    /// Reads Shaders/GregoryTerrain.shader as text (no Unity here) and checks its structure against
+    /// the stages and the rig: pragmas per SubShader, keywords against Tools~/rig/shader_variants.txt,
+    /// include paths, LightMode tags per pipeline; then compiles every pass with <c>gt shaderlab</c>
+    /// (glslang, Unity's libraries mocked: a syntax and type check, not Unity's compiler).
+    /// </summary>
+    [TestFixture]
+    public class ShaderLabTests
+    {
+        const string PackageName = "com.gregoryterrain.tessellation";
+        static readonly string[] RigOnlyKeywords = { "GT_PAPER_MODE", "GT_READBACK" };
+        static readonly string[] ForwardModes = { "UniversalForward", "ForwardOnly", "ForwardBase" };
+
+        sealed class PassInfo
+        {
+            public string Name, LightMode, Program;
+            public List<string[]> Pragmas;
+            public HashSet<string> Keywords;
+        }
+
+        sealed class SubShaderInfo
+        {
+            public int Index;
+            public string Pipeline;   // "URP", "HDRP", "Builtin"
+            public bool Tessellated;
+            public List<PassInfo> Passes;
+            public override string ToString() => $"SubShader {Index} ({Pipeline}, {(Tessellated ? "tessellated" : "fallback")})";
+        }
+
+        List<SubShaderInfo> _subShaders;
+
+        [OneTimeSetUp]
+        public void Parse()
+        {
+            string text = StripComments(File.ReadAllText(PackageRoot.Combine("Shaders", "GregoryTerrain.shader")));
+            _subShaders = new List<SubShaderInfo>();
+            foreach (string sub in Blocks(text, "SubShader"))
+            {
+                var info = new SubShaderInfo { Index = _subShaders.Count, Passes = new List<PassInfo>() };
+                string pipeline = Regex.Match(OuterPart(sub), "\"RenderPipeline\"\\s*=\\s*\"(\\w+)\"").Groups[1].Value;
+                info.Pipeline = pipeline == "UniversalPipeline" ? "URP" : pipeline == "HDRenderPipeline" ? "HDRP" : pipeline == "" ? "Builtin" : pipeline;
+                foreach (string pass in Blocks(sub, "Pass"))
+                {
+                    var m = Regex.Match(pass, "HLSLPROGRAM(.*?)ENDHLSL", RegexOptions.Singleline);
+                    string program = m.Success ? m.Groups[1].Value : "";
+                    var pragmas = program.Split('\n').Select(l => l.Trim()).Where(l => l.StartsWith("#pragma"))
+                        .Select(l => l.Substring("#pragma".Length).Split(new[] { ' ', '\t' }, StringSplitOptions.RemoveEmptyEntries)).ToList();
+                    info.Passes.Add(new PassInfo
+                    {
+                        Name = Regex.Match(pass, "\\bName\\s+\"([^\"]+)\"").Groups[1].Value,
+                        LightMode = Regex.Match(pass, "\"LightMode\"\\s*=\\s*\"(\\w+)\"").Groups[1].Value,
+                        Program = program,
+                        Pragmas = pragmas,
+                        Keywords = new HashSet<string>(pragmas.Where(p => p.Length > 1 && p[0].StartsWith("shader_feature") || p.Length > 1 && p[0].StartsWith("multi_compile"))
+                            .SelectMany(p => p.Skip(1)).Where(k => k != "_")),
+                    });
+                }
+                info.Tessellated = info.Passes.Any(p => HasPragma(p, "hull"));
+                _subShaders.Add(info);
+            }
+            TestContext.Out.WriteLine(string.Join("\n", _subShaders.Select(s => $"{s}: " + string.Join(", ", s.Passes.Select(p => $"{p.Name}[{p.LightMode}]")))));
+        }
+
+        [Test]
+        public void EveryPipelineHasATessellatedThenAFallbackSubShader()
+        {
+            Assert.That(_subShaders.Select(s => s.Pipeline + (s.Tessellated ? "+tess" : "+fallback")),
+                Is.EqualTo(new[] { "URP+tess", "URP+fallback", "HDRP+tess", "HDRP+fallback", "Builtin+tess", "Builtin+fallback" }));
+        }
+
+        [Test]
+        public void EveryPassHasTheStagePragmasOfItsSubShader()
+        {
+            foreach (SubShaderInfo s in _subShaders)
+                foreach (PassInfo p in s.Passes)
+                {
+                    string where = $"{s} pass {p.Name}";
+                    Assert.That(p.Program, Is.Not.Empty, where + ": HLSLPROGRAM block");
+                    if (s.Tessellated)
+                    {
+                        Assert.That(PragmaArg(p, "vertex"), Is.EqualTo("vert"), where);
+                        Assert.That(PragmaArg(p, "hull"), Is.EqualTo("hull_shader"), where);
+                        Assert.That(PragmaArg(p, "domain"), Is.EqualTo("domain_shader"), where);
+                        Assert.That(PragmaArg(p, "fragment"), Is.EqualTo("frag"), where);
+                        Assert.That(p.Pragmas.Any(a => a.Length >= 2 && a[0] == "require" && a.Contains("tessellation")), Is.True,
+                            where + ": #pragma require tessellation");
+                    }
+                    else
+                    {
+                        Assert.That(PragmaArg(p, "vertex"), Is.EqualTo("vert_fallback"), where);
+                        Assert.That(PragmaArg(p, "fragment"), Is.EqualTo("frag"), where);
+                        Assert.That(HasPragma(p, "hull") || HasPragma(p, "domain"), Is.False, where + ": no hull/domain in a fallback");
+                        Assert.That(p.Pragmas.Any(a => a.Contains("tessellation")), Is.False, where + ": a fallback must not require tessellation");
+                        Assert.That(Regex.IsMatch(p.Program, @"#define\s+GT_FALLBACK\b"), Is.True, where + ": GT_FALLBACK");
+                    }
+                    Assert.That(Regex.Matches(p.Program, @"#define\s+GT_PASS_(FORWARD|SHADOWCASTER|DEPTH|DEPTH_NORMALS)\b").Count, Is.EqualTo(1),
+                        where + ": exactly one GT_PASS_* define");
+                }
+        }
+
+        [Test]
+        public void KeywordsAreTheShippedVariantKeywordsWithoutTheRigOnlyOnes()
+        {
+            var listed = File.ReadAllLines(PackageRoot.Combine("Tools~", "rig", "shader_variants.txt"))
+                .Select(l => l.Trim()).Where(l => l.Length > 0 && !l.StartsWith("#") && l != "-")
+                .SelectMany(l => l.Split(' ', StringSplitOptions.RemoveEmptyEntries)).Distinct().ToList();
+            var shipped = new HashSet<string>(listed.Except(RigOnlyKeywords));
+            Assert.That(listed, Does.Contain("GT_PAPER_MODE").And.Contain("GT_READBACK"), "rig-only keywords are in the list");
+            Assert.That(shipped, Is.EquivalentTo(new[] { "GT_NOISE", "GT_HEIGHT_COLOR", "GT_DEBUG_NORMALS", "GT_DEBUG_PATCH_ID", "GT_DEBUG_TESS_FACTOR" }));
+
+            var all = new HashSet<string>(_subShaders.SelectMany(s => s.Passes).SelectMany(p => p.Keywords));
+            Assert.That(all, Is.EquivalentTo(shipped), "keywords declared anywhere in the .shader");
+            foreach (SubShaderInfo s in _subShaders)
+                foreach (PassInfo p in s.Passes)
+                {
+                    string where = $"{s} pass {p.Name}";
+                    // Only shader_feature_local: a material's toggles, stripped from builds when unused.
+                    foreach (string[] a in p.Pragmas.Where(a => a[0].StartsWith("shader_feature") || a[0].StartsWith("multi_compile")))
+                        Assert.That(a[0], Is.EqualTo("shader_feature_local"), where);
+                    if (ForwardModes.Contains(p.LightMode))
+                        Assert.That(p.Keywords, Is.EquivalentTo(shipped), where);
+                    else
+                        // Depth and shadow passes: only what changes the shape.
+                        Assert.That(p.Keywords, Is.EquivalentTo(new[] { "GT_NOISE" }), where);
+                    foreach (string rigOnly in RigOnlyKeywords)
+                        Assert.That(Regex.IsMatch(p.Program, @"\b" + rigOnly + @"\b"), Is.False, where + ": mentions " + rigOnly);
+                }
+            // The debug views replace each other: one keyword set, so at most one is on.
+            foreach (PassInfo p in _subShaders.SelectMany(s => s.Passes).Where(p => ForwardModes.Contains(p.LightMode)))
+                Assert.That(p.Pragmas.Any(a => a.SequenceEqual(new[] { "shader_feature_local", "_", "GT_DEBUG_NORMALS", "GT_DEBUG_PATCH_ID", "GT_DEBUG_TESS_FACTOR" })),
+                    Is.True, p.Name + ": the debug views as one set");
+        }
+
+        [Test]
+        public void EveryIncludeResolvesToAPackageFile()
+        {
+            int count = 0;
+            foreach (SubShaderInfo s in _subShaders)
+                foreach (PassInfo p in s.Passes)
+                {
+                    var includes = Regex.Matches(p.Program, "#include\\s+\"([^\"]+)\"").Select(m => m.Groups[1].Value).ToList();
+                    string adapter = s.Pipeline == "Builtin" ? "BuiltinAdapter" : s.Pipeline + "Adapter";
+                    Assert.That(includes, Is.EqualTo(new[]
+                    {
+                        $"Packages/{PackageName}/Shaders/Adapters/{adapter}.hlsl",
+                        $"Packages/{PackageName}/Shaders/TerrainStages.hlsl",
+                    }), $"{s} pass {p.Name}: the adapter, then the stages");
+                    foreach (string inc in includes)
+                    {
+                        string relative = inc.Substring($"Packages/{PackageName}/".Length);
+                        Assert.That(File.Exists(PackageRoot.Combine(relative.Split('/'))), Is.True, inc);
+                        count++;
+                    }
+                }
+            Assert.That(count, Is.GreaterThan(0));
+        }
+
+        [TestCase("URP", new[] { "UniversalForward", "ShadowCaster", "DepthOnly", "DepthNormals" })]
+        [TestCase("HDRP", new[] { "ForwardOnly", "DepthForwardOnly", "ShadowCaster" })]
+        [TestCase("Builtin", new[] { "ForwardBase", "ShadowCaster" })]
+        public void LightModesPerPipelineAreTheRequiredSet(string pipeline, string[] required)
+        {
+            var subs = _subShaders.Where(s => s.Pipeline == pipeline).ToList();
+            Assert.That(subs.Count, Is.EqualTo(2), pipeline);
+            foreach (SubShaderInfo s in subs)
+            {
+                var modes = s.Passes.Select(p => p.LightMode).ToList();
+                if (pipeline == "HDRP" && !modes.Contains("DepthForwardOnly") && modes.Contains("DepthOnly"))
+                    modes[modes.IndexOf("DepthOnly")] = "DepthForwardOnly";   // either depth pass is accepted
+                Assert.That(modes, Is.EquivalentTo(required), s.ToString());
+            }
+        }
+
+        [Test]
+        public void EveryPassCompilesWithGlslangAgainstTheMockedUnityLibraries()
+        {
+            var psi = new ProcessStartInfo("python3", $"\"{PackageRoot.Combine("Tools~", "rig", "shaderlab.py")}\"")
+            {
+                RedirectStandardOutput = true, RedirectStandardError = true, UseShellExecute = false,
+            };
+            using var p = Process.Start(psi);
+            string output = p.StandardOutput.ReadToEnd() + p.StandardError.ReadToEnd();
+            p.WaitForExit();
+            string summary = output.Split('\n').LastOrDefault(l => l.StartsWith("shaderlab:")) ?? "(no summary)";
+            TestContext.Out.WriteLine(summary);
+            Assert.That(p.ExitCode, Is.EqualTo(0), string.Join("\n", output.Split('\n').Where(l => !l.StartsWith("PASS")).Take(60)));
+            var m = Regex.Match(summary, @"(\d+) compiled, (\d+) failed");
+            Assert.That(m.Success, Is.True, summary);
+            // At least every stage pragma of every pass once (the base variant), counted from the parse.
+            int minimum = _subShaders.SelectMany(s => s.Passes).Sum(x => x.Pragmas.Count(a => a[0] == "vertex" || a[0] == "hull" || a[0] == "domain" || a[0] == "fragment"));
+            Assert.That(int.Parse(m.Groups[1].Value), Is.GreaterThanOrEqualTo(minimum));
+            Assert.That(int.Parse(m.Groups[2].Value), Is.EqualTo(0));
+        }
+
+        static bool HasPragma(PassInfo p, string name) => p.Pragmas.Any(a => a.Length > 0 && a[0] == name);
+
+        static string PragmaArg(PassInfo p, string name) => p.Pragmas.Where(a => a.Length > 1 && a[0] == name).Select(a => a[1]).SingleOrDefault();
+
+        static string StripComments(string text) =>
+            Regex.Replace(Regex.Replace(text, @"/\*.*?\*/", "", RegexOptions.Singleline), @"//[^\n]*", "");
+
+        /// <summary>The part of a SubShader outside its passes (its own Tags).</summary>
+        static string OuterPart(string sub)
+        {
+            int k = Regex.Match(sub, @"\bPass\s*\{").Index;
+            return k > 0 ? sub.Substring(0, k) : sub;
+        }
+
+        /// <summary>Bodies of each "keyword { ... }" at any depth, HLSL blocks skipped when matching braces.</summary>
+        static List<string> Blocks(string text, string keyword)
+        {
+            var result = new List<string>();
+            foreach (Match m in Regex.Matches(text, @"\b" + keyword + @"\s*\{"))
+            {
+                int open = m.Index + m.Length - 1, depth = 0, i = open;
+                for (; i < text.Length; i++)
+                {
+                    if (string.CompareOrdinal(text, i, "HLSLPROGRAM", 0, 11) == 0) { i = text.IndexOf("ENDHLSL", i, StringComparison.Ordinal) + 6; continue; }
+                    if (text[i] == '{') depth++;
+                    else if (text[i] == '}' && --depth == 0) break;
+                }
+                result.Add(text.Substring(open + 1, i - open - 1));
+            }
+            return result;
+        }
+    }
+}

@@ -1,0 +1,64 @@
+using System.Diagnostics;
+using System.IO;
+using System.Linq;
+using NUnit.Framework;
+
+namespace GregoryTerrain.Rig.Tests
+{
+    /// <summary>
+    /// Builds Tools~/UnityApiCheck: the package's Unity-side C# (Runtime player and editor builds,
+    /// Editor, Samples~) against stubs written from Unity's Scripting Reference. Honest only as far
+    /// as the stubs are faithful to the documentation (Tools~/UnityApiCheck/README.md).
+    /// </summary>
+    [TestFixture]
+    public class UnityApiCheckTests
+    {
+        [Test]
+        public void UnitySideCodeCompilesAgainstTheDocumentedApi()
+        {
+            string project = PackageRoot.Combine("Tools~", "UnityApiCheck", "UnityApiCheck.csproj");
+            var psi = new ProcessStartInfo("dotnet", $"build \"{project}\" -c Release -nologo")
+            {
+                RedirectStandardOutput = true, RedirectStandardError = true, UseShellExecute = false,
+            };
+            psi.Environment["DOTNET_CLI_TELEMETRY_OPTOUT"] = "1";
+            psi.Environment["DOTNET_NOLOGO"] = "1";
+            using var p = Process.Start(psi);
+            string output = p.StandardOutput.ReadToEnd() + p.StandardError.ReadToEnd();
+            p.WaitForExit();
+            Assert.That(p.ExitCode, Is.EqualTo(0), "dotnet build of UnityApiCheck failed:\n" +
+                string.Join("\n", output.Split('\n').Where(l => l.Contains("error")).Distinct().Take(40)));
+        }
+
+        /// <summary>
+        /// The check must compile against the real Core, never against stand-ins: every project
+        /// reference of every check project is a stub, another check project or Core's own project.
+        /// </summary>
+        [Test]
+        public void ChecksReferenceOnlyStubsAndTheRealCore()
+        {
+            string dir = PackageRoot.Combine("Tools~", "UnityApiCheck");
+            var projects = Directory.GetFiles(dir, "*.csproj", SearchOption.AllDirectories)
+                .Where(f => !f.Contains(Path.DirectorySeparatorChar + "obj" + Path.DirectorySeparatorChar)).ToList();
+            Assert.That(projects.Count, Is.GreaterThanOrEqualTo(6), "UnityApiCheck projects found");
+            var bad = new System.Collections.Generic.List<string>();
+            int coreRefs = 0;
+            foreach (string f in projects)
+            {
+                foreach (System.Xml.Linq.XElement r in System.Xml.Linq.XDocument.Load(f).Descendants("ProjectReference"))
+                {
+                    string include = r.Attribute("Include").Value.Replace('\\', '/');
+                    if (include.EndsWith("Tools~/dotnet/Core/GregoryTerrain.Core.csproj")) { coreRefs++; continue; }
+                    if (include.StartsWith("../Stubs/") || include.StartsWith("Stubs/")) continue;
+                    bool fromStub = f.Replace('\\', '/').Contains("/Stubs/");
+                    if (fromStub && System.Text.RegularExpressions.Regex.IsMatch(include, @"^\.\./Unity(Engine|Editor)/Unity(Engine|Editor)\.csproj$")) continue;
+                    if (System.Text.RegularExpressions.Regex.IsMatch(include, @"^(\.\./)?(RuntimePlayer|RuntimeEditor|EditorCheck|SamplesCheck)/\w+\.csproj$")) continue;
+                    bad.Add($"{Path.GetFileName(f)} -> {include}");
+                }
+            }
+            Assert.That(bad, Is.Empty, "unexpected project references");
+            Assert.That(coreRefs, Is.GreaterThanOrEqualTo(4), "projects referencing the real Core");
+            Assert.That(Directory.Exists(Path.Combine(dir, "CoreExpected")), Is.False, "Core stand-ins must not come back");
+        }
+    }
+}

@@ -1,0 +1,104 @@
+// A STUB of the UnityEditor members the package uses, written from Unity's Scripting Reference
+// (2022.3; SR:<Page> = https://docs.unity3d.com/2022.3/Documentation/ScriptReference/<Page>.html).
+// NOT Unity's assembly: signatures only.
+#pragma warning disable CS0067, CS1591
+using System;
+using UnityEngine;
+using Object = UnityEngine.Object;
+
+namespace UnityEditor
+{
+    public delegate void AssemblyReloadCallback();                                           // SR:AssemblyReloadEvents.AssemblyReloadCallback
+    public static class AssemblyReloadEvents                                                 // SR:AssemblyReloadEvents
+    {
+        public static event AssemblyReloadCallback beforeAssemblyReload;                     // SR:AssemblyReloadEvents-beforeAssemblyReload
+    }
+
+    [AttributeUsage(AttributeTargets.Class, AllowMultiple = true)]
+    public sealed class CustomEditor : Attribute { public CustomEditor(Type inspectedType) { } } // SR:CustomEditor-ctor
+
+    [AttributeUsage(AttributeTargets.Method, AllowMultiple = true)]
+    public sealed class MenuItem : Attribute                                                 // SR:MenuItem-ctor
+    {
+        public MenuItem(string itemName) { }
+        public MenuItem(string itemName, bool isValidateFunction, int priority) { }
+    }
+
+
+    public class Editor : UnityEngine.ScriptableObject                                       // SR:Editor
+    {
+        public Object target { get => null; set { } }                                       // SR:Editor-target
+        public virtual void OnInspectorGUI() { }                                             // SR:Editor.OnInspectorGUI
+        public bool DrawDefaultInspector() => false;                                         // SR:Editor.DrawDefaultInspector
+    }
+
+    public class EditorWindow : UnityEngine.ScriptableObject                                 // SR:EditorWindow
+    {
+        public static T GetWindow<T>(string title) where T : EditorWindow => null;           // SR:EditorWindow.GetWindow
+        public void Repaint() { }                                                            // SR:EditorWindow.Repaint
+    }
+
+    public enum MessageType { None = 0, Info = 1, Warning = 2, Error = 3 }                   // SR:MessageType
+
+    public sealed class EditorGUI                                                            // SR:EditorGUI
+    {
+        public struct DisabledScope : IDisposable                                            // SR:EditorGUI.DisabledScope
+        {
+            public DisabledScope(bool disabled) { }
+            public void Dispose() { }
+        }
+        public static void BeginChangeCheck() { }                                            // SR:EditorGUI.BeginChangeCheck
+        public static bool EndChangeCheck() => false;                                        // SR:EditorGUI.EndChangeCheck
+    }
+
+    public sealed class EditorGUILayout                                                      // SR:EditorGUILayout
+    {
+        public static void LabelField(string label, string label2, params GUILayoutOption[] options) { }           // SR:EditorGUILayout.LabelField
+        public static void LabelField(GUIContent label, GUIContent label2, params GUILayoutOption[] options) { }   // SR:EditorGUILayout.LabelField
+        public static void HelpBox(string message, MessageType type) { }                                          // SR:EditorGUILayout.HelpBox
+        public static void Space() { }                                                                              // SR:EditorGUILayout.Space
+        public static int IntField(string label, int value, params GUILayoutOption[] options) => value;             // SR:EditorGUILayout.IntField
+        public static int IntField(GUIContent label, int value, params GUILayoutOption[] options) => value;         // SR:EditorGUILayout.IntField
+        public static float FloatField(GUIContent label, float value, params GUILayoutOption[] options) => value;   // SR:EditorGUILayout.FloatField
+        public static Object ObjectField(GUIContent label, Object obj, Type objType, bool allowSceneObjects, params GUILayoutOption[] options) => obj; // SR:EditorGUILayout.ObjectField
+    }
+
+    public static class EditorUtility                                                        // SR:EditorUtility
+    {
+        public static string SaveFilePanel(string title, string directory, string defaultName, string extension) => null; // SR:EditorUtility.SaveFilePanel
+        public static string OpenFilePanel(string title, string directory, string extension) => null;                     // SR:EditorUtility.OpenFilePanel
+        public static void SetDirty(Object target) { }                                                                    // SR:EditorUtility.SetDirty
+        public static bool DisplayDialog(string title, string message, string ok) => true;                                // SR:EditorUtility.DisplayDialog
+        public static bool DisplayCancelableProgressBar(string title, string info, float progress) => false;              // SR:EditorUtility.DisplayCancelableProgressBar
+        public static void ClearProgressBar() { }                                                                         // SR:EditorUtility.ClearProgressBar
+    }
+
+    public static class Undo                                                                 // SR:Undo
+    {
+        public static void RecordObject(Object objectToUndo, string name) { }                // SR:Undo.RecordObject
+        public static void RegisterCreatedObjectUndo(Object objectToUndo, string name) { }   // SR:Undo.RegisterCreatedObjectUndo
+    }
+
+    public static class AssetDatabase                                                        // SR:AssetDatabase
+    {
+        public static void CreateAsset(Object asset, string path) { }                        // SR:AssetDatabase.CreateAsset
+        public static string GenerateUniqueAssetPath(string path) => path;                   // SR:AssetDatabase.GenerateUniqueAssetPath
+    }
+
+    public sealed class Selection { public static Object activeObject { get; set; } }        // SR:Selection-activeObject
+
+    public class SceneView : EditorWindow { public static void RepaintAll() { } }            // SR:SceneView.RepaintAll
+
+    public sealed class Handles                                                              // SR:Handles
+    {
+        public delegate void CapFunction(int controlID, Vector3 position, Quaternion rotation, float size, EventType eventType); // SR:Handles.CapFunction
+        public static Color color { get; set; }                                              // SR:Handles-color
+        public static Matrix4x4 matrix { get; set; }                                         // SR:Handles-matrix
+        public static void DrawLine(Vector3 p1, Vector3 p2) { }                              // SR:Handles.DrawLine
+        public static bool Button(Vector3 position, Quaternion direction, float size, float pickSize, CapFunction capFunction) => false; // SR:Handles.Button
+        public static void DotHandleCap(int controlID, Vector3 position, Quaternion rotation, float size, EventType eventType) { }     // SR:Handles.DotHandleCap
+        public static Vector3 PositionHandle(Vector3 position, Quaternion rotation) => position;                                        // SR:Handles.PositionHandle
+    }
+
+    public static class HandleUtility { public static float GetHandleSize(Vector3 position) => 1f; } // SR:HandleUtility.GetHandleSize
+}

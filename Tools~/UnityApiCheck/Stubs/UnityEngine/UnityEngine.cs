@@ -1,0 +1,317 @@
+// A STUB of the UnityEngine API members the package's Runtime, Editor and Samples~ code uses, written
+// by hand from Unity's Scripting Reference (2022.3; the page of each member is named beside it as
+// SR:<Page>, meaning https://docs.unity3d.com/2022.3/Documentation/ScriptReference/<Page>.html).
+// It is NOT Unity's assembly: only the signatures matter, every body is empty. Where the docs and the
+// shipped assembly differ the difference is written down (RenderParams is passed `in`, see Graphics).
+#pragma warning disable CS0067, CS1591, CS0626
+using System;
+using System.Collections.Generic;
+
+namespace UnityEngine
+{
+    // SR:Object
+    public class Object
+    {
+        public string name { get => null; set { } }                                  // SR:Object-name
+        public static implicit operator bool(Object o) => !ReferenceEquals(o, null);  // SR:Object-operator_Object
+        public static bool operator ==(Object x, Object y) => ReferenceEquals(x, y);  // SR:Object-operator_eq
+        public static bool operator !=(Object x, Object y) => !ReferenceEquals(x, y); // SR:Object-operator_ne
+        public override bool Equals(object other) => ReferenceEquals(this, other);
+        public override int GetHashCode() => 0;
+        public static void DestroyImmediate(Object obj) { }                           // SR:Object.DestroyImmediate
+        public static T Instantiate<T>(T original) where T : Object => original;     // SR:Object.Instantiate
+    }
+
+    public class Component : Object                                                   // SR:Component
+    {
+        public Transform transform => null;                                           // SR:Component-transform
+        public GameObject gameObject => null;                                         // SR:Component-gameObject
+        public T GetComponent<T>() => default;                                        // SR:Component.GetComponent
+    }
+    public class Behaviour : Component { public bool enabled { get; set; } }         // SR:Behaviour-enabled
+    public class MonoBehaviour : Behaviour { }                                        // SR:MonoBehaviour
+    public class ScriptableObject : Object                                            // SR:ScriptableObject
+    {
+        public static T CreateInstance<T>() where T : ScriptableObject => null;       // SR:ScriptableObject.CreateInstance
+    }
+
+    public sealed class GameObject : Object                                           // SR:GameObject
+    {
+        public GameObject(string name) { }                                            // SR:GameObject-ctor
+        public Transform transform => null;                                           // SR:GameObject-transform
+        public int layer { get; set; }                                                // SR:GameObject-layer
+        public T AddComponent<T>() where T : Component => null;                       // SR:GameObject.AddComponent
+        public T GetComponent<T>() => default;                                        // SR:GameObject.GetComponent
+    }
+
+    public class Transform : Component                                                // SR:Transform
+    {
+        public Vector3 position { get; set; }                                         // SR:Transform-position
+        public Quaternion rotation { get; set; }                                      // SR:Transform-rotation
+        public Vector3 localScale { get; set; }                                       // SR:Transform-localScale
+        public Vector3 lossyScale => default;                                         // SR:Transform-lossyScale
+        public Vector3 forward { get; set; }                                          // SR:Transform-forward
+        public bool hasChanged { get; set; }                                          // SR:Transform-hasChanged
+        public Matrix4x4 localToWorldMatrix => default;                               // SR:Transform-localToWorldMatrix
+        public Matrix4x4 worldToLocalMatrix => default;                               // SR:Transform-worldToLocalMatrix
+        public Vector3 TransformPoint(Vector3 position) => default;                   // SR:Transform.TransformPoint
+        public Vector3 InverseTransformPoint(Vector3 position) => default;            // SR:Transform.InverseTransformPoint
+        public Vector3 InverseTransformDirection(Vector3 direction) => default;       // SR:Transform.InverseTransformDirection
+        public void SetPositionAndRotation(Vector3 position, Quaternion rotation) { } // SR:Transform.SetPositionAndRotation
+        public void LookAt(Vector3 worldPosition) { }                                 // SR:Transform.LookAt
+    }
+
+    public class Camera : Behaviour                                                   // SR:Camera
+    {
+        public static Camera main => null;                                            // SR:Camera-main
+        public float fieldOfView { get; set; }                                        // SR:Camera-fieldOfView
+        public float nearClipPlane { get; set; }                                      // SR:Camera-nearClipPlane
+        public float farClipPlane { get; set; }                                       // SR:Camera-farClipPlane
+    }
+
+    public static class Debug                                                         // SR:Debug
+    {
+        public static void Log(object message, Object context) { }                    // SR:Debug.Log
+        public static void LogWarning(object message, Object context) { }             // SR:Debug.LogWarning
+        public static void LogError(object message, Object context) { }               // SR:Debug.LogError
+        public static void LogError(object message) { }                               // SR:Debug.LogError
+    }
+
+    public static class Application { public static bool isPlaying => false; }       // SR:Application-isPlaying
+    public static class Time { public static float deltaTime => 0f; public static float time => 0f; } // SR:Time-deltaTime, SR:Time-time
+
+    public static class Mathf                                                         // SR:Mathf
+    {
+        public const float Deg2Rad = 0.017453292f;                                    // SR:Mathf.Deg2Rad
+        public const float PI = 3.14159274f;                                          // SR:Mathf.PI
+        public static float Clamp(float value, float min, float max) => value;        // SR:Mathf.Clamp
+        public static int Clamp(int value, int min, int max) => value;                // SR:Mathf.Clamp
+        public static float Clamp01(float value) => value;                            // SR:Mathf.Clamp01
+        public static float Abs(float f) => f;                                        // SR:Mathf.Abs
+        public static float Max(float a, float b) => a;                               // SR:Mathf.Max
+        public static int Max(int a, int b) => a;                                     // SR:Mathf.Max
+        public static float Min(float a, float b) => a;                               // SR:Mathf.Min
+        public static float Tan(float f) => f;                                        // SR:Mathf.Tan
+        public static float Sin(float f) => f;                                        // SR:Mathf.Sin
+        public static float Cos(float f) => f;                                        // SR:Mathf.Cos
+        public static float Lerp(float a, float b, float t) => a;                     // SR:Mathf.Lerp
+        public static float Repeat(float t, float length) => t;                       // SR:Mathf.Repeat
+    }
+
+    public struct Vector2                                                             // SR:Vector2
+    {
+        public float x, y;
+        public Vector2(float x, float y) { this.x = x; this.y = y; }
+        public static Vector2 zero => default;                                        // SR:Vector2-zero
+        public float sqrMagnitude => 0f;                                              // SR:Vector2-sqrMagnitude
+        public void Normalize() { }                                                   // SR:Vector2.Normalize
+        public static Vector2 operator *(Vector2 a, float d) => a;                    // SR:Vector2-operator_multiply
+        public static bool operator ==(Vector2 l, Vector2 r) => true;                 // SR:Vector2-operator_eq
+        public static bool operator !=(Vector2 l, Vector2 r) => false;                // SR:Vector2-operator_ne
+        public override bool Equals(object o) => false;
+        public override int GetHashCode() => 0;
+    }
+
+    public struct Vector2Int                                                          // SR:Vector2Int
+    {
+        public int x { get; set; }
+        public int y { get; set; }
+        public Vector2Int(int x, int y) { this.x = x; this.y = y; }
+    }
+
+    public struct Vector3                                                             // SR:Vector3
+    {
+        public float x, y, z;
+        public Vector3(float x, float y, float z) { this.x = x; this.y = y; this.z = z; }
+        public static Vector3 zero => default;                                        // SR:Vector3-zero
+        public static Vector3 one => default;                                         // SR:Vector3-one
+        public static Vector3 forward => default;                                     // SR:Vector3-forward
+        public static Vector3 up => default;                                          // SR:Vector3-up
+        public static Vector3 operator +(Vector3 a, Vector3 b) => a;                  // SR:Vector3-operator_add
+        public static Vector3 operator -(Vector3 a, Vector3 b) => a;                  // SR:Vector3-operator_subtract
+        public static Vector3 operator *(Vector3 a, float d) => a;                    // SR:Vector3-operator_multiply
+        public static Vector3 operator *(float d, Vector3 a) => a;                    // SR:Vector3-operator_multiply
+        public static bool operator ==(Vector3 l, Vector3 r) => true;                 // SR:Vector3-operator_eq
+        public static bool operator !=(Vector3 l, Vector3 r) => false;                // SR:Vector3-operator_ne
+        public override bool Equals(object o) => false;
+        public override int GetHashCode() => 0;
+    }
+
+    public struct Vector4                                                             // SR:Vector4
+    {
+        public float x, y, z, w;
+        public Vector4(float x, float y, float z, float w) { this.x = x; this.y = y; this.z = z; this.w = w; }
+    }
+
+    public struct Quaternion                                                          // SR:Quaternion
+    {
+        public static Quaternion identity => default;                                 // SR:Quaternion-identity
+        public static Quaternion Euler(float x, float y, float z) => default;         // SR:Quaternion.Euler
+        public static Vector3 operator *(Quaternion rotation, Vector3 point) => point; // SR:Quaternion-operator_multiply
+    }
+
+    public struct Matrix4x4                                                           // SR:Matrix4x4
+    {
+        public float m00, m01, m02, m03, m10, m11, m12, m13, m20, m21, m22, m23, m30, m31, m32, m33;
+        public Vector3 MultiplyPoint3x4(Vector3 point) => point;                      // SR:Matrix4x4.MultiplyPoint3x4
+        public static Matrix4x4 identity => default;                                  // SR:Matrix4x4-identity
+    }
+
+    public struct Color                                                               // SR:Color
+    {
+        public float r, g, b, a;
+        public Color(float r, float g, float b) { this.r = r; this.g = g; this.b = b; a = 1f; }
+        public Color(float r, float g, float b, float a) { this.r = r; this.g = g; this.b = b; this.a = a; }
+        public Color linear => this;                                                  // SR:Color-linear
+        public float grayscale => 0f;                                                 // SR:Color-grayscale
+        public static Color white => default;                                         // SR:Color-white
+        public static Color yellow => default;                                        // SR:Color-yellow
+        public static Color cyan => default;                                          // SR:Color-cyan
+    }
+
+    public struct Bounds                                                              // SR:Bounds
+    {
+        public Bounds(Vector3 center, Vector3 size) { }                               // SR:Bounds-ctor
+    }
+
+    public class Texture : Object                                                     // SR:Texture
+    {
+        public virtual int width { get => 0; set { } }                                // SR:Texture-width
+        public virtual int height { get => 0; set { } }                               // SR:Texture-height
+        public virtual bool isReadable => false;                                      // SR:Texture-isReadable
+    }
+    public sealed class Texture2D : Texture                                           // SR:Texture2D
+    {
+        public Color[] GetPixels() => null;                                           // SR:Texture2D.GetPixels
+    }
+
+    public class Shader : Object                                                      // SR:Shader
+    {
+        public static int PropertyToID(string name) => 0;                             // SR:Shader.PropertyToID
+        public static Shader Find(string name) => null;                               // SR:Shader.Find
+    }
+
+    public class Material : Object                                                    // SR:Material
+    {
+        public Material(Shader shader) { }                                            // SR:Material-ctor
+        public Shader shader { get; set; }                                            // SR:Material-shader
+        public bool IsKeywordEnabled(string keyword) => false;                        // SR:Material.IsKeywordEnabled
+    }
+
+    public sealed class MaterialPropertyBlock                                         // SR:MaterialPropertyBlock
+    {
+        public void SetVector(int nameID, Vector4 value) { }                          // SR:MaterialPropertyBlock.SetVector
+        public void SetMatrix(int nameID, Matrix4x4 value) { }                        // SR:MaterialPropertyBlock.SetMatrix
+        public void SetBuffer(int nameID, GraphicsBuffer value) { }                   // SR:MaterialPropertyBlock.SetBuffer
+        public void Clear() { }                                                       // SR:MaterialPropertyBlock.Clear
+    }
+
+    public sealed class GraphicsBuffer : IDisposable                                  // SR:GraphicsBuffer
+    {
+        [Flags]
+        public enum Target { Vertex = 1, Index = 2, CopySource = 4, CopyDestination = 8, Structured = 16, Raw = 32, Append = 64, Counter = 128, IndirectArguments = 256, Constant = 512 } // SR:GraphicsBuffer.Target
+        public GraphicsBuffer(Target target, int count, int stride) { }               // SR:GraphicsBuffer-ctor
+        public int count => 0;                                                        // SR:GraphicsBuffer-count
+        public int stride => 0;                                                       // SR:GraphicsBuffer-stride
+        public void SetData(Array data) { }                                           // SR:GraphicsBuffer.SetData
+        public void Release() { }                                                     // SR:GraphicsBuffer.Release
+        public bool IsValid() => false;                                               // SR:GraphicsBuffer.IsValid
+        public void Dispose() { }                                                     // SR:GraphicsBuffer.Dispose
+    }
+
+    public enum MeshTopology { Triangles = 0, Quads = 2, Lines = 3, LineStrip = 4, Points = 5 } // SR:MeshTopology
+
+    // SR:RenderParams. Properties with get/set; the constructor takes the material. Its defaults
+    // (verified in the 2022.3 page's property list): no shadows cast, none received.
+    public struct RenderParams
+    {
+        public RenderParams(Material mat) { }
+        public Material material { get => null; set { } }
+        public Bounds worldBounds { get => default; set { } }
+        public MaterialPropertyBlock matProps { get => null; set { } }
+        public Rendering.ShadowCastingMode shadowCastingMode { get => default; set { } }
+        public bool receiveShadows { get => false; set { } }
+        public int layer { get => 0; set { } }
+        public Camera camera { get => null; set { } }
+    }
+
+    public static class Graphics                                                      // SR:Graphics
+    {
+        // SR:Graphics.RenderPrimitives. The page prints `ref RenderParams`; Unity's shipped assembly
+        // (2022.2 and later, as decompiled listings show) declares `in`, which is why callers pass the
+        // struct without a modifier. A `ref` here would reject that call; `in` accepts it.
+        public static void RenderPrimitives(in RenderParams rparams, MeshTopology topology, int vertexCount, int instanceCount = 1) { }
+        // SR:Graphics.RenderPrimitivesIndexed (same note on in/ref).
+        public static void RenderPrimitivesIndexed(in RenderParams rparams, MeshTopology topology, GraphicsBuffer indexBuffer, int indexCount, int startIndex = 0, int instanceCount = 1) { }
+    }
+
+    public static class SystemInfo                                                    // SR:SystemInfo
+    {
+        public static bool supportsTessellationShaders => false;                      // SR:SystemInfo-supportsTessellationShaders
+        public static bool supportsInstancing => false;                               // SR:SystemInfo-supportsInstancing
+    }
+
+    public static class Gizmos                                                        // SR:Gizmos
+    {
+        public static Color color { get; set; }                                       // SR:Gizmos-color
+        public static Matrix4x4 matrix { get; set; }                                  // SR:Gizmos-matrix
+    }
+
+#if ENABLE_LEGACY_INPUT_MANAGER
+    public static class Input                                                         // SR:Input (legacy Input Manager)
+    {
+        public static Vector2 mouseScrollDelta => default;                            // SR:Input-mouseScrollDelta
+        public static float GetAxis(string axisName) => 0f;                           // SR:Input.GetAxis
+    }
+#endif
+
+    // ---- attributes ----------------------------------------------------------------------------
+    [AttributeUsage(AttributeTargets.Class)] public sealed class ExecuteAlways : Attribute { }                         // SR:ExecuteAlways
+    [AttributeUsage(AttributeTargets.Class)] public sealed class DisallowMultipleComponent : Attribute { }             // SR:DisallowMultipleComponent
+    [AttributeUsage(AttributeTargets.Class)] public sealed class AddComponentMenu : Attribute { public AddComponentMenu(string menuName) { } } // SR:AddComponentMenu
+    [AttributeUsage(AttributeTargets.Class)] public sealed class DefaultExecutionOrder : Attribute { public DefaultExecutionOrder(int order) { } } // SR:DefaultExecutionOrder
+    [AttributeUsage(AttributeTargets.Class)] public sealed class RequireComponent : Attribute { public RequireComponent(Type requiredComponent) { } } // SR:RequireComponent
+    [AttributeUsage(AttributeTargets.Class)]
+    public sealed class CreateAssetMenuAttribute : Attribute                                                           // SR:CreateAssetMenuAttribute
+    {
+        public string menuName { get; set; }
+        public string fileName { get; set; }
+        public int order { get; set; }
+    }
+    [AttributeUsage(AttributeTargets.Field)] public sealed class SerializeField : Attribute { }                       // SR:SerializeField
+    [AttributeUsage(AttributeTargets.Field)] public class PropertyAttribute : Attribute { }                          // SR:PropertyAttribute
+    [AttributeUsage(AttributeTargets.Field)] public sealed class TooltipAttribute : PropertyAttribute { public TooltipAttribute(string tooltip) { } } // SR:TooltipAttribute
+    [AttributeUsage(AttributeTargets.Field)] public sealed class RangeAttribute : PropertyAttribute { public RangeAttribute(float min, float max) { } } // SR:RangeAttribute
+    [AttributeUsage(AttributeTargets.Field)] public sealed class MinAttribute : PropertyAttribute { public MinAttribute(float min) { } } // SR:MinAttribute
+    [AttributeUsage(AttributeTargets.Field, AllowMultiple = true)] public class HeaderAttribute : PropertyAttribute { public HeaderAttribute(string header) { } } // SR:HeaderAttribute
+    [AttributeUsage(AttributeTargets.Field)] public sealed class HideInInspector : Attribute { }                     // SR:HideInInspector
+}
+
+namespace UnityEngine.Rendering
+{
+    public enum ShadowCastingMode { Off = 0, On = 1, TwoSided = 2, ShadowsOnly = 3 } // SR:Rendering.ShadowCastingMode
+}
+
+namespace UnityEngine
+{
+    // ---- IMGUI types used by the editor code ----------------------------------------------------
+    public class GUIContent                                                           // SR:GUIContent
+    {
+        public GUIContent(string text) { }                                            // SR:GUIContent-ctor
+        public GUIContent(string text, string tooltip) { }                            // SR:GUIContent-ctor
+    }
+    public class GUILayoutOption { }                                                  // SR:GUILayoutOption
+    public class GUILayout                                                            // SR:GUILayout
+    {
+        public static bool Button(GUIContent content, params GUILayoutOption[] options) => false; // SR:GUILayout.Button
+    }
+    public enum EventType { MouseDown = 0, MouseUp = 1, MouseDrag = 3, KeyDown = 4, KeyUp = 5, Repaint = 7, Layout = 8 } // SR:EventType
+    public enum KeyCode { C = 99, V = 118, X = 120, Z = 122 }                         // SR:KeyCode (values: ASCII, as listed)
+    public sealed class Event                                                         // SR:Event
+    {
+        public static Event current { get => null; set { } }                          // SR:Event-current
+        public EventType type { get; set; }                                           // SR:Event-type
+        public KeyCode keyCode { get; set; }                                          // SR:Event-keyCode
+        public void Use() { }                                                         // SR:Event.Use
+    }
+}
