@@ -28,7 +28,11 @@ namespace UnityEngine
         public GameObject gameObject => null;                                         // SR:Component-gameObject
         public T GetComponent<T>() => default;                                        // SR:Component.GetComponent
     }
-    public class Behaviour : Component { public bool enabled { get; set; } }         // SR:Behaviour-enabled
+    public class Behaviour : Component                                                // SR:Behaviour
+    {
+        public bool enabled { get; set; }                                             // SR:Behaviour-enabled
+        public bool isActiveAndEnabled => false;                                      // SR:Behaviour-isActiveAndEnabled
+    }
     public class MonoBehaviour : Behaviour { }                                        // SR:MonoBehaviour
     public class ScriptableObject : Object                                            // SR:ScriptableObject
     {
@@ -196,6 +200,33 @@ namespace UnityEngine
         public Material(Shader shader) { }                                            // SR:Material-ctor
         public Shader shader { get; set; }                                            // SR:Material-shader
         public bool IsKeywordEnabled(string keyword) => false;                        // SR:Material.IsKeywordEnabled
+        public void EnableKeyword(string keyword) { }                                 // SR:Material.EnableKeyword
+        public void DisableKeyword(string keyword) { }                                // SR:Material.DisableKeyword
+        public void SetVector(int nameID, Vector4 value) { }                          // SR:Material.SetVector
+        public void SetBuffer(int nameID, ComputeBuffer value) { }                    // SR:Material.SetBuffer
+        public void SetBuffer(int nameID, GraphicsBuffer value) { }                   // SR:Material.SetBuffer
+    }
+
+    public sealed class ComputeBuffer : IDisposable                                   // SR:ComputeBuffer
+    {
+        public ComputeBuffer(int count, int stride) { }                               // SR:ComputeBuffer-ctor
+        public int count => 0;                                                        // SR:ComputeBuffer-count
+        public int stride => 0;                                                       // SR:ComputeBuffer-stride
+        public void SetData(Array data) { }                                           // SR:ComputeBuffer.SetData
+        public void GetData(Array data) { }                                           // SR:ComputeBuffer.GetData
+        public void Release() { }                                                     // SR:ComputeBuffer.Release
+        public bool IsValid() => false;                                               // SR:ComputeBuffer.IsValid
+        public void Dispose() { }                                                     // SR:ComputeBuffer.Dispose
+    }
+
+    public sealed class ComputeShader : Object                                        // SR:ComputeShader
+    {
+        public int FindKernel(string name) => 0;                                      // SR:ComputeShader.FindKernel
+        public bool HasKernel(string name) => false;                                  // SR:ComputeShader.HasKernel
+        public void SetBuffer(int kernelIndex, int nameID, ComputeBuffer buffer) { }  // SR:ComputeShader.SetBuffer
+        public void SetBuffer(int kernelIndex, int nameID, GraphicsBuffer buffer) { } // SR:ComputeShader.SetBuffer
+        public void SetVector(int nameID, Vector4 val) { }                            // SR:ComputeShader.SetVector
+        public void Dispatch(int kernelIndex, int threadGroupsX, int threadGroupsY, int threadGroupsZ) { } // SR:ComputeShader.Dispatch
     }
 
     public sealed class MaterialPropertyBlock                                         // SR:MaterialPropertyBlock
@@ -248,6 +279,7 @@ namespace UnityEngine
     public static class SystemInfo                                                    // SR:SystemInfo
     {
         public static bool supportsTessellationShaders => false;                      // SR:SystemInfo-supportsTessellationShaders
+        public static bool supportsComputeShaders => false;                           // SR:SystemInfo-supportsComputeShaders
         public static bool supportsInstancing => false;                               // SR:SystemInfo-supportsInstancing
     }
 
