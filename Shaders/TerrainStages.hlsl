@@ -157,9 +157,13 @@ TileFactors ComputeTileFactors(InputPatch<TileCorner, 4> corners)
     f.edge[3] = EdgeErrorTessFactor(patch, float2(0, 1), float2(1, 1), cornerOS[2], cornerOS[3], target, maxFactor);   // v = 1
     // Inside factors follow the edges they run along: inside[0] subdivides along u, like the
     // v = 0 and v = 1 edges. (TessInsideFactor, the max of all four, would over-tessellate long
-    // thin tiles in their short direction.)
-    f.inside[0] = max(f.edge[1], f.edge[3]);
-    f.inside[1] = max(f.edge[0], f.edge[2]);
+    // thin tiles in their short direction.) They also cover the bend only the inside shows (a
+    // twist bends the diagonals, not the edges): they match no neighbour, so the centre may count.
+    float3 centre = SurfaceObjectPosition(patch, float2(0.5, 0.5));
+    float diagonal = InsideErrorTessFactor(DiagonalSagittaPixels(cornerOS[0], cornerOS[1], cornerOS[2], cornerOS[3],
+                                                                 centre, ObjectPixelsPerUnit(centre)), target, maxFactor);
+    f.inside[0] = max(max(f.edge[1], f.edge[3]), diagonal);
+    f.inside[1] = max(max(f.edge[0], f.edge[2]), diagonal);
     return f;
 }
 

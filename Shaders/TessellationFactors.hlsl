@@ -76,6 +76,24 @@ float ErrorTessFactor(float sagittaPixels, float targetPixelError, float maxFact
     return clamp(sqrt(2.0 * max(sagittaPixels, 0.0) / targetPixelError), 1.0, maxFactor);
 }
 
+// The tile's bend its edges cannot see (a twist): the centre's deviation from the middle of each
+// diagonal of the corner quad (corners in tess order (0,0), (1,0), (0,1), (1,1)), the larger one,
+// in pixels (kCentre: PixelsPerUnit at the centre).
+float DiagonalSagittaPixels(float3 p00, float3 p10, float3 p01, float3 p11, float3 pCentre, float kCentre)
+{
+    float d0 = length(pCentre - 0.5 * (p00 + p11));
+    float d1 = length(pCentre - 0.5 * (p10 + p01));
+    return max(d0, d1) * kCentre;
+}
+
+// A diagonal's error already holds both directions' bending: F = sqrt(s / target). Inside factors
+// match no neighbour, so they may look inside the tile.
+float InsideErrorTessFactor(float diagonalSagittaPixels, float targetPixelError, float maxFactor)
+{
+    if (isinf(diagonalSagittaPixels) || isnan(diagonalSagittaPixels)) return maxFactor;
+    return clamp(sqrt(max(diagonalSagittaPixels, 0.0) / targetPixelError), 1.0, maxFactor);
+}
+
 float TessInsideFactor(float e0, float e1, float e2, float e3)
 {
     return max(max(e0, e1), max(e2, e3));

@@ -151,6 +151,32 @@ namespace GregoryTerrain
         }
 
         /// <summary>
+        /// The tile's bend that its edges cannot see: the deviation of the tile centre
+        /// <paramref name="pCentre"/> from the middle of each diagonal of the corner quad (corners in
+        /// tess order (0,0), (1,0), (0,1), (1,1)), the larger one, times the pixel scale at the centre.
+        /// A twisted tile (z ~ x y) has straight edges but bent diagonals.
+        /// </summary>
+        public static float DiagonalSagittaPixels(Float3 p00, Float3 p10, Float3 p01, Float3 p11, Float3 pCentre, float kCentre)
+        {
+            float d0 = GMath.length(pCentre - 0.5f * (p00 + p11));
+            float d1 = GMath.length(pCentre - 0.5f * (p10 + p01));
+            return Math.Max(d0, d1) * kCentre;
+        }
+
+        /// <summary>
+        /// The inside factor a diagonal sagitta asks for: a cell F times smaller has a diagonal error
+        /// <c>s / F^2</c>, which already holds both directions' bending, so <c>F = sqrt(s / target)</c>,
+        /// clamped to [1, maxFactor]. Inside factors need not match any neighbour, so they may use the
+        /// tile's interior; the hull takes the larger of this and the edges along the same direction.
+        /// </summary>
+        public static float InsideErrorTessFactor(float diagonalSagittaPixels, float targetPixelError, float maxFactor)
+        {
+            CheckTarget(targetPixelError, maxFactor);
+            if (!GMath.isfinite(diagonalSagittaPixels)) return maxFactor;
+            return GMath.clamp(GMath.sqrt(Math.Max(diagonalSagittaPixels, 0f) / targetPixelError), 1f, maxFactor);
+        }
+
+        /// <summary>
         /// The edge factor of an edge given as five object-space points (parameter 0, 1/4, 1/2, 3/4, 1),
         /// projected with <paramref name="objectToClip"/> (HLSL <c>EdgeErrorTessFactor</c>): each
         /// deviation counts in pixels at the point where it is measured (<see cref="PixelsPerUnit(Float4x4, Float3, Float2)"/>).

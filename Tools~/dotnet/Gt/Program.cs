@@ -35,6 +35,9 @@ namespace GregoryTerrain.Rig
         static void Register()
         {
             Commands["demo-grid"] = ("build the 5x5 sample grid fitted to a procedural heightmap (--out FILE)", DemoGridCommand.Run);
+            Commands["error"] = ("error of the drawn triangles against the exact surface (scene options; --factors FILE or --factor F)", ErrorCommand.Run);
+            Commands["bench-plan"] = ("write the buffers and the job list of gt bench (--grid FILE --out DIR [--quick])", BenchPlan.Run);
+            Commands["bench-report"] = ("tables of a gt bench run (--plan DIR --raw DIR --grid FILE)", BenchReport.Run);
             Commands["pack"] = ("write the harness's buffer files for one scene (--grid FILE --out DIR ...)", PackCommand.Run);
         }
     }
