@@ -54,8 +54,9 @@ float TileCount() { return _Tess.x; }
 uint TileCountInt() { return (uint)_Tess.x; }
 // Largest edge factor the adaptive policy may choose (at most 64, the hardware limit).
 float MaxTessFactor() { return _Tess.y; }
-// Screen-space length, in pixels, that one tessellated edge segment should have.
-float TargetPixelsPerSegment() { return _Tess.z; }
+// The adaptive knob: target screen-space error, in pixels, of the drawn triangles against the
+// surface (TessellationPolicy.ErrorTessFactor).
+float TargetPixelError() { return _Tess.z; }
 // Factor used for every edge and inside when > 0 (tests, benchmarks, the fallback grid); 0 = adaptive.
 float UniformTessFactor() { return _Tess.w; }
 bool UsesUniformTessFactor() { return _Tess.w > 0; }

@@ -3,7 +3,7 @@
 //
 //   vert           tile mode: one 4-control-point patch per tile, no vertex buffer:
 //                  tile = SV_VertexID / 4, corner = SV_VertexID % 4 (internals.md, "Draw modes")
-//   hull_const     edge factors from the screen length of each tile edge, frustum culling
+//   hull_const     edge factors from each tile edge's chord error in pixels, frustum culling
 //   hull_shader    passes the 4 corners through
 //   domain_shader  tess coordinate -> TerrainVertex (TerrainVertex.hlsl)
 //   vert_fallback  no tessellator: a (F+1)^2 UV grid per instance (= tile), same TerrainVertex
@@ -12,7 +12,7 @@
 // Keywords (Tools~/rig/shader_variants.txt lists the combinations that are compiled):
 //   GT_NOISE, GT_HEIGHT_COLOR                         effects; off means not compiled at all
 //   GT_DEBUG_NORMALS, GT_DEBUG_PATCH_ID, GT_DEBUG_TESS_FACTOR   debug views
-//   GT_PAPER_MODE, GT_READBACK                        off-Unity rig only
+//   GT_PAPER_MODE, GT_READBACK, GT_FACTOR_READBACK    off-Unity rig only
 #ifndef GT_TERRAIN_STAGES_INCLUDED
 #define GT_TERRAIN_STAGES_INCLUDED
 
@@ -26,6 +26,15 @@
     #define GT_PARTITIONING "integer"
 #else
     #define GT_PARTITIONING "fractional_odd"
+#endif
+
+#if defined(GT_FACTOR_READBACK)
+// Rig only (internals.md, "Rig-only readback"): hull_const writes each drawn patch's factors,
+// 2 float4 per patch: (edge[0..3]), (inside[0..1], culled 1/0, 0). Partitioning stays
+// fractional_odd: these are the factors the shipped shader uses.
+    #if !defined(GT_READBACK)
+RWStructuredBuffer<float4> _Readback GT_REGISTER(u0);
+    #endif
 #endif
 
 // vert -> hull -> domain: one corner of a tile (or, in paper mode, of a Gregory patch's range).
@@ -87,7 +96,35 @@ bool TileCulled(float3 cornerOS[4])
     return BoxOutsideFrustum(boxCS, 0.0);
 }
 
-TileFactors hull_const(InputPatch<TileCorner, 4> corners)
+// Object point -> pixels per object unit there (TessellationFactors.hlsl, PixelsPerUnit).
+float ObjectPixelsPerUnit(float3 p)
+{
+    return PixelsPerUnit(GT_ObjectToClip(p), GT_ObjectToClip(p + float3(1.0, 0.0, 0.0)),
+                         GT_ObjectToClip(p + float3(0.0, 1.0, 0.0)), GT_ObjectToClip(p + float3(0.0, 0.0, 1.0)),
+                         GT_ScreenSize());
+}
+
+// Object position of the Gregory surface (no noise) at a tess coordinate of the drawn patch.
+float3 SurfaceObjectPosition(uint drawPatch, float2 tess)
+{
+    return TerrainToObject(EvaluateSurface(drawPatch, tess).position);
+}
+
+// Factor of the edge from tess coordinate a to b (a the lower one) whose end points are pa, pb:
+// the surface is evaluated at 1/4, 1/2, 3/4 of the edge. A neighbour sharing the edge forms the
+// same global points bit for bit (RangeCoordinate adds the integer tile index first), so it gets
+// the same factor: no cracks.
+float EdgeErrorTessFactor(uint drawPatch, float2 a, float2 b, float3 pa, float3 pb, float targetPixelError, float maxFactor)
+{
+    float3 pq = SurfaceObjectPosition(drawPatch, lerp(a, b, 0.25));
+    float3 pm = SurfaceObjectPosition(drawPatch, lerp(a, b, 0.5));
+    float3 pt = SurfaceObjectPosition(drawPatch, lerp(a, b, 0.75));
+    float sagitta = EdgeSagittaPixels(pa, pq, pm, pt, pb,
+        ObjectPixelsPerUnit(pq), ObjectPixelsPerUnit(pm), ObjectPixelsPerUnit(pt));
+    return ErrorTessFactor(sagitta, targetPixelError, maxFactor);
+}
+
+TileFactors ComputeTileFactors(InputPatch<TileCorner, 4> corners)
 {
     TileFactors f;
     if (UsesUniformTessFactor())
@@ -108,23 +145,36 @@ TileFactors hull_const(InputPatch<TileCorner, 4> corners)
         f.inside[0] = f.inside[1] = 0.0;
         return f;
     }
-    float4 cornerCS[4];
-    [unroll] for (uint k = 0; k < 4; k++)
-        cornerCS[k] = GT_ObjectToClip(cornerOS[k]);
-    // Each factor depends only on its edge's two endpoints, taken in the same order (lower tess
-    // coordinate first) by both tiles that share the edge: their factors agree bit for bit, so the
-    // tessellated edges match (no cracks).
-    float2 screen = GT_ScreenSize();
-    float pixels = TargetPixelsPerSegment(), maxFactor = MaxTessFactor();
-    f.edge[0] = EdgeTessFactor(cornerCS[0], cornerCS[2], screen, pixels, maxFactor);   // u = 0
-    f.edge[1] = EdgeTessFactor(cornerCS[0], cornerCS[1], screen, pixels, maxFactor);   // v = 0
-    f.edge[2] = EdgeTessFactor(cornerCS[1], cornerCS[3], screen, pixels, maxFactor);   // u = 1
-    f.edge[3] = EdgeTessFactor(cornerCS[2], cornerCS[3], screen, pixels, maxFactor);   // v = 1
+    // The knob is the target screen-space error in pixels (_Tess.z): each edge gets the segment
+    // count whose chord error is that many pixels (TessellationPolicy.ErrorTessFactor). Each factor
+    // depends only on its edge (end points and three points of the surface on it), taken lower tess
+    // coordinate first by both tiles that share it: their factors agree bit for bit (no cracks).
+    uint patch = corners[0].drawPatch;
+    float target = TargetPixelError(), maxFactor = MaxTessFactor();
+    f.edge[0] = EdgeErrorTessFactor(patch, float2(0, 0), float2(0, 1), cornerOS[0], cornerOS[2], target, maxFactor);   // u = 0
+    f.edge[1] = EdgeErrorTessFactor(patch, float2(0, 0), float2(1, 0), cornerOS[0], cornerOS[1], target, maxFactor);   // v = 0
+    f.edge[2] = EdgeErrorTessFactor(patch, float2(1, 0), float2(1, 1), cornerOS[1], cornerOS[3], target, maxFactor);   // u = 1
+    f.edge[3] = EdgeErrorTessFactor(patch, float2(0, 1), float2(1, 1), cornerOS[2], cornerOS[3], target, maxFactor);   // v = 1
     // Inside factors follow the edges they run along: inside[0] subdivides along u, like the
-    // v = 0 and v = 1 edges.
-    float2 inside = TessInsideFactors(f.edge[0], f.edge[1], f.edge[2], f.edge[3]);
+    // v = 0 and v = 1 edges. They also cover the bend only the inside shows (a
+    // twist bends the diagonals, not the edges): they match no neighbour, so the centre may count.
+    float3 centre = SurfaceObjectPosition(patch, float2(0.5, 0.5));
+    float diagonal = InsideErrorTessFactor(DiagonalSagittaPixels(cornerOS[0], cornerOS[1], cornerOS[2], cornerOS[3],
+                                                                 centre, ObjectPixelsPerUnit(centre)), target, maxFactor);
+    float2 inside = max(TessInsideFactors(f.edge[0], f.edge[1], f.edge[2], f.edge[3]), diagonal);
     f.inside[0] = inside.x;
     f.inside[1] = inside.y;
+    return f;
+}
+
+TileFactors hull_const(InputPatch<TileCorner, 4> corners)
+{
+    TileFactors f = ComputeTileFactors(corners);
+#if defined(GT_FACTOR_READBACK)
+    uint p = corners[0].drawPatch;
+    _Readback[2 * p + 0] = float4(f.edge[0], f.edge[1], f.edge[2], f.edge[3]);
+    _Readback[2 * p + 1] = float4(f.inside[0], f.inside[1], f.edge[0] == 0.0 ? 1.0 : 0.0, 0.0);
+#endif
     return f;
 }
 

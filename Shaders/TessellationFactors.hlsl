@@ -32,6 +32,68 @@ float EdgeTessFactor(float4 clip0, float4 clip1, float2 screenSize, float target
     return clamp(len / targetPixels, 1.0, maxFactor);
 }
 
+// --- Adaptive: target screen-space error (TessellationPolicy.PixelsPerUnit ... ErrorTessFactor) ---
+
+// Largest pixels one object unit covers at a point, in any direction: the largest singular value
+// of the Jacobian of clip -> pixels. clip: the point's clip position; clipX/Y/Z: the point moved by
+// one object unit along x, y, z (a linear map, so the differences are the matrix's columns).
+// +inf at or behind the eye plane.
+float PixelsPerUnit(float4 clip, float4 clipX, float4 clipY, float4 clipZ, float2 screenSize)
+{
+    if (!(clip.w > 0.0)) return asfloat(0x7F800000u);
+    float invW = 1.0 / clip.w;
+    float2 s = clip.xy * invW;
+    float4 ax = clipX - clip, ay = clipY - clip, az = clipZ - clip;
+    float2 h = 0.5 * screenSize * invW;
+    float3 r0 = float3(ax.x - s.x * ax.w, ay.x - s.x * ay.w, az.x - s.x * az.w) * h.x;
+    float3 r1 = float3(ax.y - s.y * ax.w, ay.y - s.y * ay.w, az.y - s.y * az.w) * h.y;
+    // sqrt of the larger eigenvalue of J J^T = [[a, b], [b, c]]
+    float a = dot(r0, r0), b = dot(r0, r1), c = dot(r1, r1);
+    float hd = 0.5 * (a - c);
+    return sqrt(0.5 * (a + c) + sqrt(hd * hd + b * b));
+}
+
+// Chord error (pixels) of an edge drawn as one segment, from its points at edge parameter 0, 1/4,
+// 1/2, 3/4, 1 and the pixel scale at the three inner ones: the middle's deviation from the chord,
+// and four times each half's (the sagitta scales with the span squared); the largest also sees an
+// S-shaped edge. Same value whichever end comes first (shared edges agree: no cracks).
+float EdgeSagittaPixels(float3 p0, float3 pQuarter, float3 pMid, float3 pThreeQuarter, float3 p1,
+                        float kQuarter, float kMid, float kThreeQuarter)
+{
+    precise float whole = length(pMid - 0.5 * (p0 + p1)) * kMid;
+    precise float first = 4.0 * length(pQuarter - 0.5 * (p0 + pMid)) * kQuarter;
+    precise float second = 4.0 * length(pThreeQuarter - 0.5 * (pMid + p1)) * kThreeQuarter;
+    return max(whole, max(first, second));
+}
+
+// F segments leave sagitta / F^2 each; a cell's error at its centre is the sum of its two
+// directions' (quadratic surface), so each edge aims at half the target: F = sqrt(2 sagitta /
+// target), clamped to [1, maxFactor]; a non-finite sagitta (edge crossing the eye plane) gives
+// maxFactor. fractional_odd's longest segment is 1/F of the edge, so the bound holds for fractional F.
+float ErrorTessFactor(float sagittaPixels, float targetPixelError, float maxFactor)
+{
+    if (isinf(sagittaPixels) || isnan(sagittaPixels)) return maxFactor;
+    return clamp(sqrt(2.0 * max(sagittaPixels, 0.0) / targetPixelError), 1.0, maxFactor);
+}
+
+// The tile's bend its edges cannot see (a twist): the centre's deviation from the middle of each
+// diagonal of the corner quad (corners in tess order (0,0), (1,0), (0,1), (1,1)), the larger one,
+// in pixels (kCentre: PixelsPerUnit at the centre).
+float DiagonalSagittaPixels(float3 p00, float3 p10, float3 p01, float3 p11, float3 pCentre, float kCentre)
+{
+    float d0 = length(pCentre - 0.5 * (p00 + p11));
+    float d1 = length(pCentre - 0.5 * (p10 + p01));
+    return max(d0, d1) * kCentre;
+}
+
+// A diagonal's error already holds both directions' bending: F = sqrt(s / target). Inside factors
+// match no neighbour, so they may look inside the tile.
+float InsideErrorTessFactor(float diagonalSagittaPixels, float targetPixelError, float maxFactor)
+{
+    if (isinf(diagonalSagittaPixels) || isnan(diagonalSagittaPixels)) return maxFactor;
+    return clamp(sqrt(max(diagonalSagittaPixels, 0.0) / targetPixelError), 1.0, maxFactor);
+}
+
 // Inside factors of a quad from its edge factors (e0: u = 0, e1: v = 0, e2: u = 1, e3: v = 1): each
 // follows the two edges running the same way, x (inside[0], along u) = max(e1, e3), y (inside[1],
 // along v) = max(e0, e2). The max of all four would over-tessellate long thin tiles in their short

@@ -77,6 +77,146 @@ namespace GregoryTerrain
         public static Float2 InsideFactors(float e0, float e1, float e2, float e3) =>
             new Float2(Math.Max(e1, e3), Math.Max(e0, e2));
 
+        // ------------------------------------------------- adaptive: target screen-space error
+
+        /// <summary>
+        /// The largest number of pixels one object-space unit can cover on screen at a point, in any
+        /// direction: the largest singular value of the Jacobian of (clip -> pixels) at the point.
+        /// Inputs are the clip positions of the point and of the point moved by one object unit along
+        /// x, y and z (the projection is linear in object space, so the differences are the matrix's
+        /// columns). A world distance d at the point is at most <c>d * PixelsPerUnit</c> pixels on
+        /// screen, whatever its direction: the pixel error of a deviation, seen from its worst side.
+        /// +infinity when the point is at or behind the eye plane.
+        /// </summary>
+        public static float PixelsPerUnit(Float4 clip, Float4 clipX, Float4 clipY, Float4 clipZ, Float2 screenSize)
+        {
+            if (!(clip.w > 0f)) return float.PositiveInfinity;
+            float invW = 1f / clip.w;
+            float sx = clip.x * invW, sy = clip.y * invW;
+            // d(x/w)/dX_k = (dx_k - (x/w) dw_k) / w, per column k; then NDC -> pixels.
+            Float4 ax = clipX - clip, ay = clipY - clip, az = clipZ - clip;
+            float hx = 0.5f * screenSize.x * invW, hy = 0.5f * screenSize.y * invW;
+            var r0 = new Float3((ax.x - sx * ax.w) * hx, (ay.x - sx * ay.w) * hx, (az.x - sx * az.w) * hx);
+            var r1 = new Float3((ax.y - sy * ax.w) * hy, (ay.y - sy * ay.w) * hy, (az.y - sy * az.w) * hy);
+            return LargestSingularValue(r0, r1);
+        }
+
+        /// <summary><see cref="PixelsPerUnit(Float4, Float4, Float4, Float4, Float2)"/> of object point <paramref name="p"/>.</summary>
+        public static float PixelsPerUnit(Float4x4 objectToClip, Float3 p, Float2 screenSize)
+        {
+            if (!objectToClip.IsFinite) throw new ArgumentException($"objectToClip {objectToClip} must be finite", nameof(objectToClip));
+            if (!p.IsFinite) throw new ArgumentException($"p {p} must be finite", nameof(p));
+            CheckScreen(screenSize);
+            return PixelsPerUnit(objectToClip.TransformPoint(p), objectToClip.TransformPoint(p + new Float3(1f, 0f, 0f)),
+                objectToClip.TransformPoint(p + new Float3(0f, 1f, 0f)), objectToClip.TransformPoint(p + new Float3(0f, 0f, 1f)), screenSize);
+        }
+
+        // Largest singular value of the 2x3 matrix with rows r0, r1: sqrt of the larger eigenvalue of
+        // the symmetric 2x2 J J^T = [[a, b], [b, c]].
+        static float LargestSingularValue(Float3 r0, Float3 r1)
+        {
+            float a = GMath.dot(r0, r0), b = GMath.dot(r0, r1), c = GMath.dot(r1, r1);
+            float h = 0.5f * (a - c);
+            return GMath.sqrt(0.5f * (a + c) + GMath.sqrt(h * h + b * b));
+        }
+
+        /// <summary>
+        /// The chord error of an edge drawn as one straight segment, from five points of the curve at
+        /// edge parameter 0, 1/4, 1/2, 3/4, 1 (object units, the deviations' lengths). For a curve
+        /// with second derivative c (per unit parameter) the chord over a parameter span h deviates
+        /// by <c>|c| h^2 / 8</c> at its middle (the sagitta, <c>L^2 kappa / 8</c> for an arc of length L
+        /// and curvature kappa). The middle's deviation from the whole chord measures it for h = 1;
+        /// each half's deviation measures it for h = 1/2, so it counts four times. The largest of the
+        /// three also sees an S-shaped edge, whose middle lies on its chord. Depends only on the edge's
+        /// points, and is the same whichever end is first: shared edges agree (crack-free).
+        /// </summary>
+        public static float EdgeSagitta(Float3 p0, Float3 pQuarter, Float3 pMid, Float3 pThreeQuarter, Float3 p1)
+        {
+            float whole = GMath.length(pMid - 0.5f * (p0 + p1));
+            float first = 4f * GMath.length(pQuarter - 0.5f * (p0 + pMid));
+            float second = 4f * GMath.length(pThreeQuarter - 0.5f * (pMid + p1));
+            return Math.Max(whole, Math.Max(first, second));
+        }
+
+        /// <summary>
+        /// The adaptive edge factor: the number of segments F whose chord error is half the target.
+        /// Splitting an edge of sagitta s (pixels) into F equal segments leaves <c>s / F^2</c> per segment
+        /// (the sagitta scales with the square of the span). A tessellation cell is bent along both
+        /// directions, and its triangles' error at the cell centre is the sum of the two directions'
+        /// chord errors (exact for a quadratic surface without twist), so each edge aims at half the
+        /// target: <c>F = sqrt(2 s / targetPixelError)</c>, clamped to [1, maxFactor]. With fractional_odd
+        /// partitioning the longest segment is 1/F of the edge, so the bound holds for fractional F too.
+        /// A non-finite sagitta (an edge crossing the eye plane) gives maxFactor.
+        /// </summary>
+        public static float ErrorTessFactor(float sagittaPixels, float targetPixelError, float maxFactor)
+        {
+            CheckTarget(targetPixelError, maxFactor);
+            return FactorFromSagitta(sagittaPixels, targetPixelError, maxFactor);
+        }
+
+        static float FactorFromSagitta(float sagittaPixels, float target, float maxFactor)
+        {
+            if (!GMath.isfinite(sagittaPixels)) return maxFactor;
+            return GMath.clamp(GMath.sqrt(2f * Math.Max(sagittaPixels, 0f) / target), 1f, maxFactor);
+        }
+
+        /// <summary>
+        /// The tile's bend that its edges cannot see: the deviation of the tile centre
+        /// <paramref name="pCentre"/> from the middle of each diagonal of the corner quad (corners in
+        /// tess order (0,0), (1,0), (0,1), (1,1)), the larger one, times the pixel scale at the centre.
+        /// A twisted tile (z ~ x y) has straight edges but bent diagonals.
+        /// </summary>
+        public static float DiagonalSagittaPixels(Float3 p00, Float3 p10, Float3 p01, Float3 p11, Float3 pCentre, float kCentre)
+        {
+            float d0 = GMath.length(pCentre - 0.5f * (p00 + p11));
+            float d1 = GMath.length(pCentre - 0.5f * (p10 + p01));
+            return Math.Max(d0, d1) * kCentre;
+        }
+
+        /// <summary>
+        /// The inside factor a diagonal sagitta asks for: a cell F times smaller has a diagonal error
+        /// <c>s / F^2</c>, which already holds both directions' bending, so <c>F = sqrt(s / target)</c>,
+        /// clamped to [1, maxFactor]. Inside factors need not match any neighbour, so they may use the
+        /// tile's interior; the hull takes the larger of this and the edges along the same direction.
+        /// </summary>
+        public static float InsideErrorTessFactor(float diagonalSagittaPixels, float targetPixelError, float maxFactor)
+        {
+            CheckTarget(targetPixelError, maxFactor);
+            if (!GMath.isfinite(diagonalSagittaPixels)) return maxFactor;
+            return GMath.clamp(GMath.sqrt(Math.Max(diagonalSagittaPixels, 0f) / targetPixelError), 1f, maxFactor);
+        }
+
+        /// <summary>
+        /// The edge factor of an edge given as five object-space points (parameter 0, 1/4, 1/2, 3/4, 1),
+        /// projected with <paramref name="objectToClip"/> (HLSL <c>EdgeErrorTessFactor</c>): each
+        /// deviation counts in pixels at the point where it is measured (<see cref="PixelsPerUnit(Float4x4, Float3, Float2)"/>).
+        /// </summary>
+        public static float EdgeErrorTessFactor(Float4x4 objectToClip, Float3 p0, Float3 pQuarter, Float3 pMid, Float3 pThreeQuarter, Float3 p1,
+                                                Float2 screenSize, float targetPixelError, float maxFactor)
+        {
+            CheckTarget(targetPixelError, maxFactor);
+            CheckScreen(screenSize);
+            if (!objectToClip.IsFinite) throw new ArgumentException($"objectToClip {objectToClip} must be finite", nameof(objectToClip));
+            float kq = PixelsPerUnit(objectToClip, pQuarter, screenSize);
+            float km = PixelsPerUnit(objectToClip, pMid, screenSize);
+            float kt = PixelsPerUnit(objectToClip, pThreeQuarter, screenSize);
+            return FactorFromSagitta(EdgeSagittaPixels(p0, pQuarter, pMid, pThreeQuarter, p1, kq, km, kt), targetPixelError, maxFactor);
+        }
+
+        /// <summary>
+        /// <see cref="EdgeSagitta"/> with each of its three deviations converted to pixels by the scale
+        /// at its own point (kQuarter, kMid, kThreeQuarter: <see cref="PixelsPerUnit(Float4, Float4, Float4, Float4, Float2)"/>).
+        /// </summary>
+        public static float EdgeSagittaPixels(Float3 p0, Float3 pQuarter, Float3 pMid, Float3 pThreeQuarter, Float3 p1,
+                                              float kQuarter, float kMid, float kThreeQuarter)
+        {
+            float whole = GMath.length(pMid - 0.5f * (p0 + p1)) * kMid;
+            float first = 4f * GMath.length(pQuarter - 0.5f * (p0 + pMid)) * kQuarter;
+            float second = 4f * GMath.length(pThreeQuarter - 0.5f * (pMid + p1)) * kThreeQuarter;
+            return Math.Max(whole, Math.Max(first, second));
+        }
+
+
         // ------------------------------------------------------------ culling
 
         /// <summary>
@@ -136,12 +276,69 @@ namespace GregoryTerrain
             return BoxOutsideFrustum(corners, margin);
         }
 
+        /// <summary>
+        /// Bound on |OctaveNoise| (HLSL <c>NoiseHeightBound</c> in TerrainInputs.hlsl):
+        /// <c>|amplitude| * sum_k beta^-k</c> over all <c>settings.octaves</c> octaves (GradientNoise stays
+        /// within [-1, 1]); the height margin of the tile culling box.
+        /// </summary>
+        public static float NoiseHeightBound(NoiseSettings settings)
+        {
+            settings.Validate(nameof(settings));
+            float beta = Math.Max(settings.beta, 1f), n = settings.octaves;
+            float sum = beta > 1f ? (1f - (float)Math.Pow(beta, -n)) / (1f - 1f / beta) : n;
+            return Math.Abs(settings.amplitude) * sum;
+        }
+
+        /// <summary>
+        /// The tile culling test of <c>hull_const</c> (HLSL <c>TileCulled</c>): the box of the tile's four
+        /// corner positions (object space, Unity's Y-up: height is y), grown in height by the corners'
+        /// own height spread (the surface may rise between corners) plus <paramref name="noiseHeightBound"/>
+        /// (0 without noise), is outside the view. Noise that could reach into the view keeps the tile.
+        /// </summary>
+        public static bool TileCulled(Float4x4 objectToClip, Float3[] cornersOS, float noiseHeightBound)
+        {
+            if (cornersOS == null || cornersOS.Length != 4)
+                throw new ArgumentException(FormattableString.Invariant($"cornersOS (length {cornersOS?.Length ?? 0}) must hold 4 corners"), nameof(cornersOS));
+            if (!GMath.isfinite(noiseHeightBound) || noiseHeightBound < 0f)
+                throw new ArgumentException(FormattableString.Invariant($"noiseHeightBound ({noiseHeightBound:R}) must be finite and >= 0"), nameof(noiseHeightBound));
+            Float3 lo = cornersOS[0], hi = lo;
+            for (int c = 1; c < 4; c++)
+            {
+                lo = new Float3(Math.Min(lo.x, cornersOS[c].x), Math.Min(lo.y, cornersOS[c].y), Math.Min(lo.z, cornersOS[c].z));
+                hi = new Float3(Math.Max(hi.x, cornersOS[c].x), Math.Max(hi.y, cornersOS[c].y), Math.Max(hi.z, cornersOS[c].z));
+            }
+            float margin = hi.y - lo.y + noiseHeightBound;
+            lo.y -= margin;
+            hi.y += margin;
+            return BoxOutsideFrustum(objectToClip, lo, hi, 0f);
+        }
+
         /// <summary>Triangles drawn by <paramref name="tiles"/>^2 quad tiles at a uniform factor F: <c>2 F^2</c> each.</summary>
         public static double EstimateTriangleCount(int tiles, float factor)
         {
             if (tiles < 0) throw new ArgumentException(FormattableString.Invariant($"tiles ({tiles}) must be >= 0"), nameof(tiles));
             if (!GMath.isfinite(factor) || factor < 0f) throw new ArgumentException(FormattableString.Invariant($"factor ({factor:R}) must be finite and >= 0"), nameof(factor));
             return (double)tiles * tiles * 2.0 * factor * factor;
+        }
+
+        /// <summary>
+        /// Triangles the adaptive policy draws, estimated: an edge spanning 1/M of the range has a
+        /// sagitta of <paramref name="rangeSagittaPixels"/> / M^2 (the sagitta of the whole range's width
+        /// drawn as one segment, in pixels: the sagitta scales with the square of the span), so each
+        /// factor is <c>F = clamp(sqrt(2 rangeSagittaPixels / targetPixelError) / M, 1, maxFactor)</c> and the
+        /// count <c>2 M^2 F^2</c>. Unclamped that is <c>4 rangeSagittaPixels / targetPixelError</c>, whatever M:
+        /// halving the pixel error doubles the triangles. With a uniform factor, or when the sagitta is
+        /// unknown (pass +infinity), it is the uniform count, resp. the most the settings allow.
+        /// </summary>
+        public static double EstimateTriangleCount(TessellationSettings settings, double rangeSagittaPixels)
+        {
+            settings.Validate(nameof(settings));
+            if (double.IsNaN(rangeSagittaPixels) || rangeSagittaPixels < 0.0)
+                throw new ArgumentException(FormattableString.Invariant($"rangeSagittaPixels ({rangeSagittaPixels:R}) must be >= 0"), nameof(rangeSagittaPixels));
+            if (settings.IsUniform) return EstimateTriangleCount(settings.tiles, settings.uniformFactor);
+            double f = double.IsPositiveInfinity(rangeSagittaPixels) ? settings.maxFactor
+                : GMath.clamp(Math.Sqrt(2.0 * rangeSagittaPixels / settings.targetPixels) / settings.tiles, 1.0, settings.maxFactor);
+            return 2.0 * settings.tiles * settings.tiles * f * f;
         }
 
         static void CheckTarget(float target, float maxFactor)

@@ -4,7 +4,7 @@ namespace GregoryTerrain
 {
     /// <summary>
     /// How the range is tessellated: M x M tiles, the adaptive policy's limits, or a uniform factor.
-    /// Stored as the GPU gets it: <c>_Tess = (tiles, maxFactor, targetPixels, uniformFactor)</c>.
+    /// Stored as the GPU gets it: <c>_Tess = (tiles, maxFactor, targetPixels (pixel error), uniformFactor)</c>.
     /// </summary>
     [Serializable]
     public struct TessellationSettings : IEquatable<TessellationSettings>
@@ -16,7 +16,11 @@ namespace GregoryTerrain
         public int tiles;
         /// <summary>The largest edge factor the adaptive policy may pick, in [1, 64].</summary>
         public float maxFactor;
-        /// <summary>Screen-space length, in pixels, one tessellated segment should have (adaptive mode).</summary>
+        /// <summary>
+        /// The adaptive knob: target screen-space error in pixels (like Unity Terrain's Pixel Error).
+        /// Each tile edge gets the factor whose chord error, seen from its worst side, is this many
+        /// pixels (<see cref="TessellationPolicy.ErrorTessFactor"/>), at most <see cref="maxFactor"/>.
+        /// </summary>
         public float targetPixels;
         /// <summary>When &gt; 0, every edge and inside factor is this (tests, benchmarks, the fallback grid).</summary>
         public float uniformFactor;

@@ -63,8 +63,9 @@ namespace GregoryTerrain.Rig.Tests
             var seen = ResultLines().Select(l => $"{l.variant}/{l.stage}").ToList();
             Assert.That(seen, Is.EquivalentTo(expected), "missing or extra variant/stage");
             // The variant list must hold what the issue asks for: all 16 combinations of the four
-            // effect/mode keywords and each debug view alone.
-            Assert.That(variants.Count, Is.EqualTo(16 + 3));
+            // effect/mode keywords, each debug view alone, and the factor readback with and
+            // without noise (gt bench).
+            Assert.That(variants.Count, Is.EqualTo(16 + 3 + 2));
             var counts = Regex.Match(output, @"variants: (\d+), stages: (\d+), compiled: (\d+), passed: (\d+), failed: (\d+)");
             Assert.That(counts.Success, Is.True, "no counts line");
             Assert.That(int.Parse(counts.Groups[1].Value), Is.EqualTo(variants.Count));
@@ -102,18 +103,20 @@ namespace GregoryTerrain.Rig.Tests
             Assert.That(InstructionCount(effect, stage), Is.EqualTo(InstructionCount("base", stage)));
         }
 
-        // The rig-only readback buffer exists only in the GT_READBACK variants (never in a Unity build).
+        // The rig-only readback buffer exists only in the GT_READBACK variants (vertices: domain and
+        // fallback stages) and the GT_FACTOR_READBACK ones (factors: hull stage), never in a Unity build.
         [Test]
         public void OnlyReadbackVariantsDeclareTheReadbackBuffer()
         {
             foreach (var (name, keywords) in variants)
             {
                 bool readback = keywords.Contains("GT_READBACK");
+                bool factorReadback = keywords.Contains("GT_FACTOR_READBACK");
                 foreach (var stage in Stages)
                 {
                     bool declares = Disassemble(name, stage).Contains("\"_Readback\"");
-                    bool writes = stage == "tese" || stage == "fallback";
-                    Assert.That(declares, Is.EqualTo(readback && writes), $"{name}/{stage}");
+                    bool writes = (readback && (stage == "tese" || stage == "fallback")) || (factorReadback && stage == "tesc");
+                    Assert.That(declares, Is.EqualTo(writes), $"{name}/{stage}");
                 }
             }
         }

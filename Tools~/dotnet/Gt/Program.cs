@@ -37,6 +37,9 @@ namespace GregoryTerrain.Rig
             Commands["demo-grid"] = ("build the 5x5 sample grid fitted to a procedural heightmap (--out FILE)", DemoGridCommand.Run);
             Commands["eval"] = ("Core float, Core double and (--gpu) GPU position and normal at points (--grid FILE --points \"x,y;...\")", EvalCommand.Run);
             Commands["unity-asset"] = ("write a grid JSON as the YAML of a PatchGridAsset (--grid FILE --out FILE.asset --script-guid GUID [--name NAME])", UnityAssetCommand.Run);
+            Commands["error"] = ("error of the drawn triangles against the exact surface (scene options; --factors FILE or --factor F)", ErrorCommand.Run);
+            Commands["bench-plan"] = ("write the buffers and the job list of gt bench (--grid FILE --out DIR [--quick])", BenchPlan.Run);
+            Commands["bench-report"] = ("tables of a gt bench run (--plan DIR --raw DIR --grid FILE)", BenchReport.Run);
             Commands["pack"] = ("write the harness's buffer files for one scene (--grid FILE --out DIR ...)", PackCommand.Run);
             Commands["jitter"] = ("deep-zoom vertex jitter table, plain vs shipped float path (--widths 1e-2,1e-4,1e-6 ...)", JitterCommand.Run);
         }

@@ -77,6 +77,56 @@ namespace GregoryTerrain.Rig
             return new[] { (c[0] / c[3] * 0.5 + 0.5) * Width, (0.5 - c[1] / c[3] * 0.5) * Height, c[2] / c[3], c[3] };
         }
 
+        /// <summary>True when the object point is in front of the camera and inside the screen rectangle.</summary>
+        public bool Visible(double[] objectPoint)
+        {
+            var c = Clip(objectPoint);
+            return c[3] > 0 && Math.Abs(c[0]) <= c[3] && Math.Abs(c[1]) <= c[3];
+        }
+
+        /// <summary>
+        /// The largest number of pixels one object unit covers at the point, in any direction: the
+        /// largest singular value of the Jacobian of object -> pixels (Core's
+        /// TessellationPolicy.PixelsPerUnit, in double). +infinity at or behind the eye plane.
+        /// </summary>
+        public double PixelsPerUnit(double[] objectPoint)
+        {
+            var c = Clip(objectPoint);
+            var m = _objectToClip;
+            if (!(c[3] > 0)) return double.PositiveInfinity;
+            double sx = c[0] / c[3], sy = c[1] / c[3], hx = 0.5 * Width / c[3], hy = 0.5 * Height / c[3];
+            var r0 = new double[3];
+            var r1 = new double[3];
+            for (int k = 0; k < 3; k++)
+            {
+                r0[k] = (m[0, k] - sx * m[3, k]) * hx;
+                r1[k] = (m[1, k] - sy * m[3, k]) * hy;
+            }
+            double a = Dot(r0, r0), b = Dot(r0, r1), cc = Dot(r1, r1), h = 0.5 * (a - cc);
+            return Math.Sqrt(0.5 * (a + cc) + Math.Sqrt(h * h + b * b));
+        }
+
+        /// <summary>Object -> clip as Core's Float4x4 (what the shader gets, rounded to float).</summary>
+        public Float4x4 ObjectToClipFloat()
+        {
+            var m = Mul(WorldToClip, ObjectToWorld);
+            return Float4x4.FromRows(
+                (float)m[0, 0], (float)m[0, 1], (float)m[0, 2], (float)m[0, 3],
+                (float)m[1, 0], (float)m[1, 1], (float)m[1, 2], (float)m[1, 3],
+                (float)m[2, 0], (float)m[2, 1], (float)m[2, 2], (float)m[2, 3],
+                (float)m[3, 0], (float)m[3, 1], (float)m[3, 2], (float)m[3, 3]);
+        }
+
+        double[] Clip(double[] p)
+        {
+            var m = _objectToClip ??= Mul(WorldToClip, ObjectToWorld);
+            var c = new double[4];
+            for (int i = 0; i < 4; i++) c[i] = m[i, 0] * p[0] + m[i, 1] * p[1] + m[i, 2] * p[2] + m[i, 3];
+            return c;
+        }
+
+        double[,] _objectToClip;
+
         static void WriteColumns(double[,] m, float[] dst, int at)
         {
             for (int col = 0; col < 4; col++)

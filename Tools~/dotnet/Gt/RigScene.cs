@@ -19,9 +19,12 @@ namespace GregoryTerrain.Rig
         public RigCamera Camera;
         public TerrainParams Params;
 
-        public static RigScene FromArgs(Args a)
+        public static RigScene FromArgs(Args a) => FromGrid(PatchGridJson.Read(File.ReadAllText(a.String("grid"))), a);
+
+        /// <summary>The scene of the options in <paramref name="a"/> over an already loaded grid.</summary>
+        public static RigScene FromGrid(PatchGrid grid, Args a)
         {
-            var s = new RigScene { Grid = PatchGridJson.Read(File.ReadAllText(a.String("grid"))) };
+            var s = new RigScene { Grid = grid };
             var r = a.Doubles("range", 4, "0,0,1,1");
             s.Range = new TerrainRange(r[0], r[1], r[2], r[3]);
             s.Range.Validate();

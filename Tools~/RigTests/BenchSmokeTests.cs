@@ -1,0 +1,79 @@
+// gt bench --quick on lavapipe: the benchmark runs end to end and its table is complete and sane.
+// (Its timings are functional figures there; what is asserted is structure and accuracy trends.)
+using System;
+using System.Diagnostics;
+using System.Globalization;
+using System.IO;
+using System.Linq;
+using NUnit.Framework;
+
+namespace GregoryTerrain.Rig.Tests
+{
+    [TestFixture]
+    public class BenchSmokeTests
+    {
+        string _output;
+
+        [OneTimeSetUp]
+        public void RunQuickBench()
+        {
+            var psi = new ProcessStartInfo("bash", Path.Combine(PackageRoot.Path, "Tools~", "gt") + " bench --quick")
+            {
+                RedirectStandardOutput = true, RedirectStandardError = true, UseShellExecute = false,
+                WorkingDirectory = PackageRoot.Path,
+            };
+            psi.Environment["VK_DRIVER_FILES"] = HarnessRun.LavapipeIcd;
+            psi.Environment["VK_ICD_FILENAMES"] = HarnessRun.LavapipeIcd;
+            using var p = Process.Start(psi);
+            var err = p.StandardError.ReadToEndAsync();
+            _output = p.StandardOutput.ReadToEnd();
+            p.WaitForExit();
+            TestContext.Out.WriteLine(_output);
+            Assert.That(p.ExitCode, Is.EqualTo(0), "gt bench --quick failed:\n" + err.Result);
+        }
+
+        string[][] Rows(string method) => _output.Split('\n')
+            .Where(l => l.StartsWith("| " + method, StringComparison.Ordinal))
+            .Select(l => l.Trim().Trim('|').Split('|').Select(c => c.Trim()).ToArray()).ToArray();
+
+        static double D(string s) => double.Parse(s, CultureInfo.InvariantCulture);
+
+        [Test]
+        public void EveryMethodHasCompleteFiniteRows()
+        {
+            Assert.That(_output, Does.Not.Contain("incomplete"));
+            foreach (var m in new[] { "adaptive", "uniform", "paper", "fallback" })
+            {
+                var rows = Rows(m);
+                Assert.That(rows.Length, Is.GreaterThanOrEqualTo(2), m);
+                foreach (var r in rows)
+                {
+                    Assert.That(D(r[6]), Is.GreaterThan(0), $"{m}: triangles");
+                    Assert.That(D(r[7]), Is.GreaterThan(0), $"{m}: shader invocations");
+                    Assert.That(D(r[8]), Is.GreaterThan(0), $"{m}: GPU time");
+                    Assert.That(D(r[9]), Is.GreaterThan(0).And.LessThan(1000), $"{m}: max error px");
+                    Assert.That(D(r[10]), Is.GreaterThan(0).And.LessThanOrEqualTo(D(r[9])), $"{m}: RMS <= max");
+                }
+            }
+            Assert.That(_output, Does.Contain("range-only / nothing changes"));
+            Assert.That(_output, Does.Contain("/ static mesh"));
+        }
+
+        [Test]
+        public void SmallerPixelTargetsGiveSmallerErrorsAndMoreTriangles()
+        {
+            var rows = Rows("adaptive").OrderByDescending(r => D(r[3])).ToArray();   // target px, large to small
+            Assert.That(rows.Length, Is.GreaterThanOrEqualTo(3));
+            for (int i = 1; i < rows.Length; i++)
+            {
+                Assert.That(D(rows[i][6]), Is.GreaterThan(D(rows[i - 1][6])), $"triangles at target {rows[i][3]} vs {rows[i - 1][3]}");
+                Assert.That(D(rows[i][9]), Is.LessThan(D(rows[i - 1][9])), $"max error at target {rows[i][3]} vs {rows[i - 1][3]}");
+                Assert.That(D(rows[i][10]), Is.LessThan(D(rows[i - 1][10])), $"RMS error at target {rows[i][3]} vs {rows[i - 1][3]}");
+            }
+            // Uniform factors: error falls roughly as 1 / F^2.
+            var uni = Rows("uniform").OrderBy(r => D(r[2])).ToArray();
+            for (int i = 1; i < uni.Length; i++)
+                Assert.That(D(uni[i][9]), Is.LessThan(D(uni[i - 1][9])));
+        }
+    }
+}

@@ -1,0 +1,180 @@
+using System;
+using System.Collections.Generic;
+using System.Globalization;
+using System.IO;
+using System.Text;
+
+namespace GregoryTerrain.Rig
+{
+    /// <summary>One configuration of the accuracy sweep (a row of the table, before the camera path).</summary>
+    sealed class BenchConfig
+    {
+        public string Method;       // paper | uniform | adaptive | fallback
+        public int Tiles = 16;
+        public double Factor;       // uniform factor (paper, uniform, fallback)
+        public double Target;       // pixel error (adaptive)
+        public double MaxFactor = 64;
+        public int Octaves;         // 0: GT_NOISE off
+
+        public string Name => Method switch
+        {
+            "adaptive" => Inv($"adaptive_m{Tiles}_e{Target}_max{MaxFactor}_o{Octaves}"),
+            "paper" => Inv($"paper_f{Factor}_o{Octaves}"),
+            _ => Inv($"{Method}_m{Tiles}_f{Factor}_o{Octaves}"),
+        };
+
+        public bool Noise => Octaves > 0;
+        public string Variant => Method == "paper" ? (Noise ? "paper_mode+noise" : "paper_mode") : (Noise ? "noise" : "base");
+        public string FactorVariant => Noise ? "factor_readback+noise" : "factor_readback";
+
+        static string Inv(FormattableString s) => s.ToString(CultureInfo.InvariantCulture);
+    }
+
+    /// <summary>
+    /// gt-cli bench-plan: writes everything one benchmark run needs, so the run itself is a shell
+    /// script and the harness (the NVIDIA machine has no dotnet): the buffers of every
+    /// (configuration, camera) pair, and plan.tsv, one harness job a line:
+    /// <c>ID KIND REF ARGS...</c> (tab-separated) where KIND is run (time + statistics), readback
+    /// (GT_FACTOR_READBACK factors) or static-match (a static grid mesh with as many triangles as job
+    /// REF drew); ARGS may hold @SPV@, @JOB@, @OUT@ and @MESH@, filled in by Tools~/rig/bench_run.sh.
+    /// </summary>
+    static class BenchPlan
+    {
+        /// <summary>The fixed camera path: the paper's zoom view at three ranges, whole terrain to close up.</summary>
+        public static readonly (string name, double[] range)[] CameraPath =
+        {
+            ("far", new[] { 0.0, 0.0, 1.0, 1.0 }),
+            ("mid", new[] { 0.25, 0.30, 0.65, 0.70 }),
+            ("near", new[] { 0.42, 0.45, 0.52, 0.55 }),
+        };
+
+        public static List<BenchConfig> Sweep(bool quick)
+        {
+            var list = new List<BenchConfig>();
+            double[] targets = quick ? new[] { 4.0, 1.0, 0.5 } : new[] { 8.0, 4.0, 2.0, 1.0, 0.5, 0.25 };
+            double[] factors = quick ? new[] { 3.0, 7.0, 15.0 } : new[] { 3.0, 7.0, 15.0, 31.0, 63.0 };
+            int[] octaves = quick ? new[] { 0 } : new[] { 0, 4 };
+            int tiles = quick ? 8 : 16;
+            foreach (int o in octaves)
+            {
+                foreach (double e in targets) list.Add(new BenchConfig { Method = "adaptive", Tiles = tiles, Target = e, Octaves = o });
+                foreach (double f in factors) list.Add(new BenchConfig { Method = "uniform", Tiles = tiles, Factor = f, Octaves = o });
+                double[] few = quick ? new[] { 3.0, 15.0 } : factors;
+                foreach (double f in few) list.Add(new BenchConfig { Method = "paper", Tiles = 1, Factor = f, Octaves = o });
+                foreach (double f in few) list.Add(new BenchConfig { Method = "fallback", Tiles = tiles, Factor = f, Octaves = o });
+            }
+            if (!quick)
+            {
+                // Tile count and max factor at a 1-pixel target, and the tile count for uniform factors.
+                foreach (int m in new[] { 8, 32 })
+                {
+                    list.Add(new BenchConfig { Method = "adaptive", Tiles = m, Target = 1, Octaves = 0 });
+                    list.Add(new BenchConfig { Method = "uniform", Tiles = m, Factor = 15, Octaves = 0 });
+                }
+                foreach (double e in new[] { 1.0, 0.5 })
+                    list.Add(new BenchConfig { Method = "adaptive", Tiles = 16, Target = e, MaxFactor = 16, Octaves = 0 });
+            }
+            return list;
+        }
+
+        public static int Run(Args a)
+        {
+            var grid = PatchGridJson.Read(File.ReadAllText(a.String("grid")));
+            string dir = a.String("out");
+            bool quick = a.Flag("quick");
+            int width = a.Int("width", quick ? 480 : 1920), height = a.Int("height", quick ? 270 : 1080);
+            int frames = a.Int("frames", quick ? 3 : 60), warmup = a.Int("warmup", quick ? 1 : 10);
+            Directory.CreateDirectory(dir);
+            var plan = new StringBuilder();
+            var meta = new StringBuilder("id\tmethod\ttiles\tfactor\ttarget\tmaxfactor\toctaves\tcamera\tpatches\n");
+            string view = Inv($"--width {width} --height {height}");
+            string timing = Inv($"--stats --timestamps --frames {frames} --warmup {warmup}");
+
+            Table1(grid, dir, plan, meta, quick, width, height);   // first: the figures that matter most if a run is cut short
+            var path = quick ? new[] { CameraPath[0], CameraPath[2] } : CameraPath;
+            foreach (var cfg in Sweep(quick))
+                foreach (var (cam, range) in path)
+                {
+                    string id = cfg.Name + "@" + cam;
+                    var scene = Scene(grid, cfg, range, width, height);
+                    scene.WriteBuffers(Path.Combine(dir, "jobs", id));
+                    int patches = cfg.Method == "paper" ? grid.PatchCount : cfg.Tiles * cfg.Tiles;
+                    meta.Append(Inv($"{id}\t{cfg.Method}\t{cfg.Tiles}\t{cfg.Factor}\t{cfg.Target}\t{cfg.MaxFactor}\t{cfg.Octaves}\t{cam}\t{patches}\n"));
+                    string buffers = "--buffers @JOB@/" + id;
+                    if (cfg.Method == "fallback")
+                        plan.Append($"{id}\trun\t-\t{Stages(cfg.Variant, fallback: true)} --grid-factor {Inv($"{cfg.Factor}")} --instances {patches} {buffers} {view} {timing}\n");
+                    else
+                        plan.Append($"{id}\trun\t-\t{Stages(cfg.Variant, fallback: false)} --patches {patches} {buffers} {view} {timing}\n");
+                    if (cfg.Method == "adaptive")
+                        plan.Append($"{id}\treadback\t-\t{Stages(cfg.FactorVariant, fallback: false)} --patches {patches} {buffers} {view} --readback @OUT@/readback/{id}.f32 --readback-floats {8 * patches}\n");
+                }
+            File.WriteAllText(Path.Combine(dir, "plan.tsv"), plan.ToString());
+            File.WriteAllText(Path.Combine(dir, "jobs.tsv"), meta.ToString());
+            File.WriteAllText(Path.Combine(dir, "settings.txt"), Inv($"width {width} height {height} quick {(quick ? 1 : 0)}\n"));
+            Console.WriteLine($"bench plan: {plan.ToString().Split('\n').Length - 1} jobs -> {dir}");
+            return 0;
+        }
+
+        /// <summary>
+        /// The paper's Table 1 and the static-mesh comparison: a 64x64 surface (one tile at factor 64)
+        /// and the same at >= 8M triangles (32 x 32 tiles at factor 64), each drawn with nothing changing,
+        /// only _Range changing, the changed geometry re-sent (the triangle soup, 36 bytes a triangle),
+        /// and as a static mesh of the same triangle count; then the package's terrain (noise, tiles,
+        /// adaptive) at about 0.5M, 2M and 8M triangles, each beside a static mesh of its count.
+        /// </summary>
+        static void Table1(PatchGrid grid, string dir, StringBuilder plan, StringBuilder meta, bool quick, int width, int height)
+        {
+            int frames64 = quick ? 50 : 2000, framesBig = quick ? 3 : 100;
+            string view = Inv($"--width {width} --height {height}");
+            var sizes = quick ? new[] { (1, 64.0, frames64) } : new[] { (1, 64.0, frames64), (32, 64.0, framesBig) };
+            foreach (var (tiles, f, frames) in sizes)
+            {
+                var cfg = new BenchConfig { Method = "uniform", Tiles = tiles, Factor = f };
+                string id = Inv($"t1_m{tiles}_f{f}");
+                Scene(grid, cfg, CameraPath[0].range, width, height).WriteBuffers(Path.Combine(dir, "jobs", id));
+                // fractional_odd clamps the factor to 63, the largest odd count: (63 M)^2 quads.
+                long n = tiles * 63L, tris = 2 * n * n;
+                string t = Inv($"--stats --timestamps --frames {frames} --warmup {Math.Max(5, frames / 20)}");
+                string common = $"{Stages("base", false)} --patches {tiles * tiles} --buffers @JOB@/{id} {view} {t}";
+                plan.Append($"{id}:plain\trun\t-\t{common}\n");
+                plan.Append($"{id}:range\trun\t-\t{common} --update-range-per-frame\n");
+                plan.Append($"{id}:resend\trun\t-\t{common} --resend-bytes {tris * 36}\n");
+                plan.Append($"{id}:static\tstatic-match\t{id}:plain\t--static-mesh --mesh @MESH@ --vert @SPV@/mesh.vert.spv --frag @SPV@/mesh.frag.spv --buffers @JOB@/{id} {view} {t}\n");
+                meta.Append(Inv($"{id}\ttable1\t{tiles}\t{f}\t0\t64\t0\tfar\t{tiles * tiles}\n"));
+            }
+            // The package's terrain (adaptive + noise) at growing triangle counts, each beside a static mesh.
+            var terrain = quick ? new[] { (8, 1.0) } : new[] { (16, 0.5), (32, 0.125), (64, 0.03) };
+            foreach (var (tiles, target) in terrain)
+            {
+                var cfg = new BenchConfig { Method = "adaptive", Tiles = tiles, Target = target, Octaves = 4 };
+                string id = Inv($"vs_m{tiles}_e{target}");
+                Scene(grid, cfg, CameraPath[0].range, width, height).WriteBuffers(Path.Combine(dir, "jobs", id));
+                string t = Inv($"--stats --timestamps --frames {framesBig} --warmup 5");
+                plan.Append($"{id}:terrain\trun\t-\t{Stages("noise", false)} --patches {tiles * tiles} --buffers @JOB@/{id} {view} {t} --update-range-per-frame\n");
+                plan.Append($"{id}:static\tstatic-match\t{id}:terrain\t--static-mesh --mesh @MESH@ --vert @SPV@/mesh.vert.spv --frag @SPV@/mesh.frag.spv --buffers @JOB@/{id} {view} {t}\n");
+                meta.Append(Inv($"{id}\tvs\t{tiles}\t0\t{target}\t64\t4\tfar\t{tiles * tiles}\n"));
+            }
+        }
+
+        static string Stages(string variant, bool fallback) => fallback
+            ? $"--vert @SPV@/{variant}/fallback.spv --frag @SPV@/{variant}/frag.spv"
+            : $"--vert @SPV@/{variant}/vert.spv --tesc @SPV@/{variant}/tesc.spv --tese @SPV@/{variant}/tese.spv --frag @SPV@/{variant}/frag.spv";
+
+        public static RigScene Scene(PatchGrid grid, BenchConfig cfg, double[] range, int width, int height)
+        {
+            var args = new List<string>
+            {
+                "--range", string.Join(",", Array.ConvertAll(range, x => x.ToString("R", CultureInfo.InvariantCulture))),
+                "--tiles", cfg.Tiles.ToString(CultureInfo.InvariantCulture),
+                "--max-factor", Inv($"{(cfg.Method == "adaptive" ? cfg.MaxFactor : Math.Max(cfg.Factor, 1))}"),
+                "--target-pixels", Inv($"{(cfg.Method == "adaptive" ? cfg.Target : 1.0)}"),
+                "--factor", Inv($"{(cfg.Method == "adaptive" ? 0 : cfg.Factor)}"),
+                "--octaves", Math.Max(cfg.Octaves, 1).ToString(CultureInfo.InvariantCulture),
+                "--width", width.ToString(CultureInfo.InvariantCulture), "--height", height.ToString(CultureInfo.InvariantCulture),
+            };
+            return RigScene.FromGrid(grid, new Args(args.ToArray(), 0));
+        }
+
+        static string Inv(FormattableString s) => s.ToString(CultureInfo.InvariantCulture);
+    }
+}

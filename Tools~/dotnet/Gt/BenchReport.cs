@@ -1,0 +1,179 @@
+using System;
+using System.Collections.Generic;
+using System.Globalization;
+using System.IO;
+using System.Linq;
+using System.Text;
+
+namespace GregoryTerrain.Rig
+{
+    /// <summary>
+    /// gt-cli bench-report: turns a run of the plan (bench_run.sh's results.txt and readback.tar,
+    /// from any machine) into the tables: per configuration, over the camera path, the triangles,
+    /// domain-shader invocations and GPU time per frame (means over the cameras) and the error of
+    /// ErrorMeasure (largest over the path; RMS over all samples of the path); then the paper's
+    /// Table 1, the static-mesh comparison and the goals, as ratios.
+    /// Usage: bench-report --plan DIR --raw DIR --grid FILE [--tsv FILE]
+    /// </summary>
+    static class BenchReport
+    {
+        sealed class Job
+        {
+            public Dictionary<string, string> Stat = new Dictionary<string, string>();
+            public double GpuMs = double.NaN, CpuMs = double.NaN, CpuMeanMs = double.NaN;
+            public int Exit = -1;
+            public long Get(string k) => Stat.TryGetValue(k, out var v) ? long.Parse(v, CultureInfo.InvariantCulture) : -1;
+        }
+
+        public static int Run(Args a)
+        {
+            string planDir = a.String("plan"), raw = a.String("raw");
+            var grid = PatchGridJson.Read(File.ReadAllText(a.String("grid")));
+            var settings = File.ReadAllText(Path.Combine(planDir, "settings.txt")).Split(new[] { ' ', '\n' }, StringSplitOptions.RemoveEmptyEntries);
+            int width = int.Parse(settings[1], CultureInfo.InvariantCulture), height = int.Parse(settings[3], CultureInfo.InvariantCulture);
+            bool quick = settings[5] == "1";
+            var jobs = ParseResults(Path.Combine(raw, "results.txt"));
+            string rbDir = Path.Combine(raw, "readback-extracted");
+            if (File.Exists(Path.Combine(raw, "readback.tar")) && !Directory.Exists(rbDir))
+            {
+                Directory.CreateDirectory(rbDir);
+                System.Formats.Tar.TarFile.ExtractToDirectory(Path.Combine(raw, "readback.tar"), rbDir, true);
+            }
+            var o = new StringBuilder();
+            string device = File.Exists(Path.Combine(raw, "device.txt")) ? File.ReadAllLines(Path.Combine(raw, "device.txt")).FirstOrDefault(l => l.StartsWith("device ")) ?? "?" : "?";
+            string name = jobs.Values.Select(j => j.Stat.TryGetValue("name", out var n) ? n : null).FirstOrDefault(n => n != null) ?? device;
+            o.AppendLine($"# gt bench ({(quick ? "quick" : "full")}), {width}x{height}, device: {name}");
+            o.AppendLine();
+            var tsv = new StringBuilder("method\ttiles\tfactor\ttarget\tmaxfactor\toctaves\ttriangles\tds_invocations\tgpu_ms\tmax_px\trms_px\tmax_world\tgpu_vs_core_factor\n");
+            o.AppendLine("| method | tiles | factor | target px | max F | octaves | triangles | DS invocations | GPU ms/frame | max err px | RMS err px | max err (terrain units) |");
+            o.AppendLine("| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |");
+            var cfgs = BenchPlan.Sweep(quick);
+            var path = quick ? new[] { BenchPlan.CameraPath[0], BenchPlan.CameraPath[2] } : BenchPlan.CameraPath;
+            foreach (var cfg in cfgs)
+            {
+                double tris = 0, ds = 0, gpu = 0, maxPx = 0, maxW = 0, sumSq = 0, factorDiff = 0;
+                long samples = 0;
+                bool complete = true;
+                foreach (var (cam, range) in path)
+                {
+                    string id = cfg.Name + "@" + cam;
+                    if (!jobs.TryGetValue(id + " run", out var j) || j.Exit != 0) { complete = false; continue; }
+                    tris += j.Get("clipping_invocations");
+                    ds += cfg.Method == "fallback" ? j.Get("vertex_shader_invocations") : j.Get("tessellation_evaluation_shader_invocations");
+                    gpu += j.GpuMs;
+                    var scene = BenchPlan.Scene(grid, cfg, range, width, height);
+                    float[] rb = null;
+                    if (cfg.Method == "adaptive")
+                    {
+                        string f = Path.Combine(rbDir, "readback", id + ".f32");
+                        if (!File.Exists(f)) { complete = false; continue; }
+                        rb = BufferFiles.Read(f);
+                        var gpuF = PatchFactors.FromReadback(rb, cfg.Tiles * cfg.Tiles);
+                        var coreF = ErrorCommand.CoreFactors(scene);
+                        for (int p = 0; p < gpuF.Length; p++)
+                            if (!gpuF[p].culled && !coreF[p].culled)
+                                factorDiff = Math.Max(factorDiff, Math.Max(Math.Abs(gpuF[p].i0 - coreF[p].i0), Math.Abs(gpuF[p].e0 - coreF[p].e0)));
+                    }
+                    var err = ErrorCommand.Measure(scene, cfg.Method == "paper", cfg.Noise, rb, 1024, cfg.Method == "fallback");
+                    maxPx = Math.Max(maxPx, err.MaxPixels); maxW = Math.Max(maxW, err.MaxWorld);
+                    sumSq += err.RmsPixels * err.RmsPixels * err.Samples; samples += err.Samples;
+                }
+                int n = path.Length;
+                double rms = samples > 0 ? Math.Sqrt(sumSq / samples) : double.NaN;
+                string c = complete ? "" : " (incomplete)";
+                o.AppendLine(Inv($"| {cfg.Method}{c} | {cfg.Tiles} | {(cfg.Method == "adaptive" ? "-" : cfg.Factor.ToString(CultureInfo.InvariantCulture))} | {(cfg.Method == "adaptive" ? cfg.Target.ToString(CultureInfo.InvariantCulture) : "-")} | {cfg.MaxFactor} | {cfg.Octaves} | {tris / n:F0} | {ds / n:F0} | {gpu / n:G4} | {maxPx:G3} | {rms:G3} | {maxW:G3} |"));
+                tsv.AppendLine(Inv($"{cfg.Method}\t{cfg.Tiles}\t{cfg.Factor}\t{cfg.Target}\t{cfg.MaxFactor}\t{cfg.Octaves}\t{tris / n:F0}\t{ds / n:F0}\t{gpu / n:G6}\t{maxPx:G6}\t{rms:G6}\t{maxW:G6}\t{factorDiff:G3}"));
+            }
+            o.AppendLine();
+            o.AppendLine("Triangles and DS invocations (vertex invocations for the fallback) are means per frame over the camera path; GPU time the mean of the per-camera medians; errors the largest (max) and RMS over every sample of the path.");
+            o.AppendLine();
+            Table1(o, jobs, quick);
+            Goals(o, tsv.ToString());
+            Console.Write(o.ToString());
+            string tsvPath = a.String("tsv", Path.Combine(raw, "bench_table.tsv"));
+            File.WriteAllText(tsvPath, tsv.ToString());
+            File.WriteAllText(Path.ChangeExtension(tsvPath, ".md"), o.ToString());
+            return 0;
+        }
+
+        static void Table1(StringBuilder o, Dictionary<string, Job> jobs, bool quick)
+        {
+            o.AppendLine("## The paper's Table 1, and the static mesh");
+            o.AppendLine();
+            o.AppendLine("| case | triangles | GPU ms/frame (median) | CPU ms/frame (mean) | draws/s (1000 / CPU mean) |");
+            o.AppendLine("| --- | ---: | ---: | ---: | ---: |");
+            foreach (var kv in jobs.Where(k => k.Key.StartsWith("t1_") || k.Key.StartsWith("vs_")))
+            {
+                var j = kv.Value;
+                long tris = j.Get("clipping_invocations");
+                o.AppendLine(Inv($"| {kv.Key.Split(' ')[0]} | {tris} | {j.GpuMs:G4} | {j.CpuMeanMs:G4} | {1000.0 / j.CpuMeanMs:F1} |"));
+            }
+            o.AppendLine();
+            foreach (var prefix in jobs.Keys.Where(k => k.StartsWith("t1_") && k.Contains(":plain")).Select(k => k.Substring(0, k.IndexOf(':'))))
+            {
+                Job J(string s) => jobs.TryGetValue($"{prefix}:{s} run", out var j) ? j : jobs.TryGetValue($"{prefix}:{s} static-match", out j) ? j : null;
+                Job plain = J("plain"), range = J("range"), resend = J("resend"), stat = J("static");
+                if (plain == null || range == null || resend == null || stat == null) continue;
+                long tris = plain.Get("clipping_invocations");
+                o.AppendLine(Inv($"- {prefix} ({tris} triangles): range-only / nothing changes = {range.GpuMs / plain.GpuMs:F3}x GPU, {range.CpuMeanMs / plain.CpuMeanMs:F3}x CPU frame; ")
+                    + Inv($"re-send / range-only = {resend.CpuMeanMs / range.CpuMeanMs:F2}x frame time ({1000 / range.CpuMeanMs:F0} vs {1000 / resend.CpuMeanMs:F0} draws/s; the paper: 594.954 / 192.901 = 3.08x), {resend.GpuMs / range.GpuMs:F2}x GPU; ")
+                    + Inv($"tessellated (range-only) / static mesh = {range.GpuMs / stat.GpuMs:F3}x GPU"));
+            }
+            foreach (var prefix in jobs.Keys.Where(k => k.StartsWith("vs_") && k.Contains(":terrain")).Select(k => k.Substring(0, k.IndexOf(':'))))
+            {
+                jobs.TryGetValue($"{prefix}:terrain run", out var t);
+                jobs.TryGetValue($"{prefix}:static static-match", out var s);
+                if (t == null || s == null || double.IsNaN(s.GpuMs)) continue;
+                o.AppendLine(Inv($"- {prefix}: package terrain (adaptive + noise + tiles, range changing every frame, {t.Get("clipping_invocations")} triangles) / static mesh ({s.Get("clipping_invocations")} triangles) = {t.GpuMs / s.GpuMs:F3}x GPU"));
+            }
+            o.AppendLine();
+        }
+
+        /// <summary>Adaptive vs uniform at a 1-pixel largest error (no noise): triangles each needs, log-interpolated.</summary>
+        static void Goals(StringBuilder o, string tsv)
+        {
+            var rows = tsv.Split('\n').Skip(1).Where(l => l.Length > 0).Select(l => l.Split('\t')).ToList();
+            double Need(string method)
+            {
+                string mainTiles = rows.Where(r => r[0] == "adaptive").Select(r => r[1]).FirstOrDefault();
+                var pts = rows.Where(r => r[0] == method && r[5] == "0" && r[1] == mainTiles && (method != "adaptive" || r[4] == "64"))
+                              .Select(r => (tris: double.Parse(r[6], CultureInfo.InvariantCulture), err: double.Parse(r[9], CultureInfo.InvariantCulture)))
+                              .Where(p => p.tris > 0).OrderBy(p => p.tris).ToList();
+                for (int i = 0; i < pts.Count; i++)
+                {
+                    if (pts[i].err > 1.0) continue;
+                    if (i == 0) return pts[0].tris;
+                    var (t0, e0) = pts[i - 1]; var (t1, e1) = pts[i];
+                    double w = (Math.Log(e0) - Math.Log(1.0)) / (Math.Log(e0) - Math.Log(e1));
+                    return Math.Exp(Math.Log(t0) + w * (Math.Log(t1) - Math.Log(t0)));
+                }
+                return double.NaN;
+            }
+            double ad = Need("adaptive"), un = Need("uniform");
+            o.AppendLine(Inv($"- 1-pixel largest error on the camera path (no noise, the sweep's main tile count): adaptive needs {ad:F0} triangles, uniform {un:F0}: {un / ad:F2}x fewer with adaptive factors (goal >= 4x)"));
+        }
+
+        static Dictionary<string, Job> ParseResults(string file)
+        {
+            var jobs = new Dictionary<string, Job>();
+            Job cur = null;
+            foreach (var line in File.ReadLines(file))
+            {
+                var w = line.Split(' ', StringSplitOptions.RemoveEmptyEntries);
+                if (w.Length == 0) continue;
+                if (w[0] == "==" && w.Length >= 3) { cur = new Job(); jobs[w[1] + " " + w[2]] = cur; continue; }
+                if (cur == null) continue;
+                if (w[0] == "stat" && w.Length >= 3) cur.Stat[w[1]] = w[2];
+                else if (w[0] == "device" && w.Length >= 3 && w[1] == "name") cur.Stat["name"] = string.Join(" ", w.Skip(2));
+                else if (w[0] == "time" && w.Length >= 3 && w[1] == "frame_ms_median") cur.GpuMs = D(w[2]);
+                else if (w[0] == "time" && w.Length >= 3 && w[1] == "cpu_frame_ms_median") cur.CpuMs = D(w[2]);
+                else if (w[0] == "time" && w.Length >= 3 && w[1] == "cpu_frame_ms_mean") cur.CpuMeanMs = D(w[2]);
+                else if (w[0] == "exit" && w.Length >= 2) cur.Exit = int.Parse(w[1], CultureInfo.InvariantCulture);
+            }
+            return jobs;
+        }
+
+        static double D(string s) => double.Parse(s, CultureInfo.InvariantCulture);
+        static string Inv(FormattableString s) => s.ToString(CultureInfo.InvariantCulture);
+    }
+}

@@ -1,0 +1,104 @@
+using System;
+
+namespace GregoryTerrain.Rig
+{
+    /// <summary>
+    /// gt-cli error: the largest and RMS distance between the drawn triangles and the exact surface
+    /// (ErrorMeasure), for one scene (RigScene options) and its factors: read back from the GPU
+    /// (--factors FILE, the GT_FACTOR_READBACK buffer) or the uniform factor (--factor F).
+    /// --paper: the paper's per-patch mode (one drawn patch per Gregory patch). --with-noise: the
+    /// GT_NOISE variant (the surface includes the noise). Prints one "error ..." line.
+    /// </summary>
+    static class ErrorCommand
+    {
+        public static int Run(Args a)
+        {
+            var scene = RigScene.FromArgs(a);
+            bool paper = a.Flag("paper"), noise = a.Flag("with-noise");
+            string factorsFile = a.String("factors", "");
+            int maxCells = a.Int("max-cells", 1 << 20);
+            if (a.Flag("print-factors"))
+            {
+                var gpu = factorsFile == "" ? null : PatchFactors.FromReadback(BufferFiles.Read(factorsFile), scene.Tessellation.tiles * scene.Tessellation.tiles);
+                var core = CoreFactors(scene);
+                for (int p = 0; p < core.Length; p++)
+                    Console.WriteLine(FormattableString.Invariant($"tile {p} core {core[p].e0:G4} {core[p].e1:G4} {core[p].e2:G4} {core[p].e3:G4} in {core[p].i0:G4} {core[p].i1:G4}")
+                        + (gpu == null ? "" : FormattableString.Invariant($" gpu {gpu[p].e0:G4} {gpu[p].e1:G4} {gpu[p].e2:G4} {gpu[p].e3:G4} in {gpu[p].i0:G4} {gpu[p].i1:G4}")));
+            }
+            var result = Measure(scene, paper, noise, factorsFile == "" ? null : BufferFiles.Read(factorsFile), maxCells);
+            Console.WriteLine(result);
+            return 0;
+        }
+
+        public static ErrorResult Measure(RigScene scene, bool paper, bool noise, float[] factorReadback, int maxCells, bool integerPartitioning = false)
+        {
+            var t = scene.Tessellation;
+            int patches = paper ? scene.Grid.PatchCount : t.tiles * t.tiles;
+            PatchFactors[] factors;
+            if (factorReadback != null) factors = PatchFactors.FromReadback(factorReadback, patches);
+            else
+            {
+                if (!t.IsUniform && paper) throw new ArgumentException("--paper needs --factor F (the paper's method is uniform)");
+                if (!t.IsUniform) factors = CoreFactors(scene);   // no readback: Core's mirror of hull_const
+                else
+                {
+                    factors = new PatchFactors[patches];
+                    for (int p = 0; p < patches; p++) factors[p] = PatchFactors.Uniform(t.uniformFactor);
+                }
+            }
+            if (!paper) CheckSharedEdges(factors, t.tiles);
+            double octaves = noise ? TerrainReference.ShaderOctaves(scene.Range, scene.Noise, t.tiles, t.maxFactor, scene.Params.noiseOctaves.y) : 0;
+            var reference = new TerrainReference(scene.Grid, scene.Range, paper ? 1 : t.tiles, paper, scene.Noise, octaves);
+            return ErrorMeasure.Measure(reference.ObjectPoint, factors, scene.Camera, fractionalOdd: !integerPartitioning, maxCellsPerPatch: maxCells);
+        }
+
+        /// <summary>
+        /// The factors hull_const should give, from Core's mirror (TessellationPolicy, float) over the
+        /// double reference surface without noise: the cross-check of the GPU readback.
+        /// </summary>
+        public static PatchFactors[] CoreFactors(RigScene scene)
+        {
+            var t = scene.Tessellation;
+            var reference = new TerrainReference(scene.Grid, scene.Range, t.tiles, false, scene.Noise, 0);
+            Float4x4 m = scene.Camera.ObjectToClipFloat();
+            var screen = new Float2(scene.Camera.Width, scene.Camera.Height);
+            float bound = 0f;   // the noise variant adds NoiseHeightBound; culling here without noise
+            var f = new PatchFactors[t.tiles * t.tiles];
+            for (int p = 0; p < f.Length; p++)
+            {
+                Float3 P(double s, double u) { var d = reference.ObjectPoint(p, s, u); return new Float3((float)d[0], (float)d[1], (float)d[2]); }
+                var corners = new[] { P(0, 0), P(1, 0), P(0, 1), P(1, 1) };
+                if (TessellationPolicy.TileCulled(m, corners, bound)) { f[p] = new PatchFactors { culled = true }; continue; }
+                float E(double s0, double t0, double s1, double t1, Float3 a, Float3 b) => TessellationPolicy.EdgeErrorTessFactor(m, a,
+                    P(s0 + 0.25 * (s1 - s0), t0 + 0.25 * (t1 - t0)), P(0.5 * (s0 + s1), 0.5 * (t0 + t1)), P(s0 + 0.75 * (s1 - s0), t0 + 0.75 * (t1 - t0)), b,
+                    screen, t.targetPixels, t.maxFactor);
+                var r = new PatchFactors { e0 = E(0, 0, 0, 1, corners[0], corners[2]), e1 = E(0, 0, 1, 0, corners[0], corners[1]),
+                                           e2 = E(1, 0, 1, 1, corners[1], corners[3]), e3 = E(0, 1, 1, 1, corners[2], corners[3]) };
+                Float3 c = P(0.5, 0.5);
+                float d = TessellationPolicy.InsideErrorTessFactor(TessellationPolicy.DiagonalSagittaPixels(corners[0], corners[1], corners[2], corners[3], c,
+                    TessellationPolicy.PixelsPerUnit(m, c, screen)), t.targetPixels, t.maxFactor);
+                r.i0 = Math.Max(Math.Max(r.e1, r.e3), d); r.i1 = Math.Max(Math.Max(r.e0, r.e2), d);
+                f[p] = r;
+            }
+            return f;
+        }
+
+        /// <summary>
+        /// Crack-freedom as the GPU decided it: two neighbouring tiles that are both drawn must give
+        /// their shared edge the same factor, bit for bit (float32 readback).
+        /// </summary>
+        public static void CheckSharedEdges(PatchFactors[] f, int tiles)
+        {
+            for (int tj = 0; tj < tiles; tj++)
+                for (int ti = 0; ti < tiles; ti++)
+                {
+                    var p = f[tj * tiles + ti];
+                    if (p.culled) continue;
+                    if (ti + 1 < tiles && !f[tj * tiles + ti + 1].culled && p.e2 != f[tj * tiles + ti + 1].e0)
+                        throw new FormatException($"crack: tile ({ti},{tj}) edge u=1 factor {p.e2:R} != tile ({ti + 1},{tj}) edge u=0 factor {f[tj * tiles + ti + 1].e0:R}");
+                    if (tj + 1 < tiles && !f[(tj + 1) * tiles + ti].culled && p.e3 != f[(tj + 1) * tiles + ti].e1)
+                        throw new FormatException($"crack: tile ({ti},{tj}) edge v=1 factor {p.e3:R} != tile ({ti},{tj + 1}) edge v=0 factor {f[(tj + 1) * tiles + ti].e1:R}");
+                }
+        }
+    }
+}

@@ -1,0 +1,74 @@
+# gt bench: the accuracy-vs-time benchmark (prints figures; not a test).
+#   gt bench [--quick] [--device NAME]     plan, run on this machine's Vulkan device, print the tables
+#   gt bench [--quick] --prepare DIR       plan + harness + SPIR-V + scripts into DIR, to run elsewhere:
+#                                          bash DIR/bench_run.sh DIR DIR/gt-harness DIR/spirv OUT [--device NAME]
+#   gt bench [--quick] --report RAW [--plan DIR]  tables of a run's raw output (results.txt, readback.tar)
+#   gt bench --docs RAW                     the tables and the plot of Documentation~/performance.md from RAW
+# --quick: small sizes for lavapipe (CI, about 2 minutes). Without --device the first device is used
+# (lavapipe here: set VK_DRIVER_FILES to choose).
+source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
+quick=() device=() prepare="" report="" docs="" plan=""
+while [ $# -gt 0 ]; do
+  case "$1" in
+    --quick) quick=(--quick) ;;
+    --device) device=(--device "$2"); shift ;;
+    --prepare) prepare=$2; shift ;;
+    --report) report=$2; shift ;;
+    --plan) plan=$2; shift ;;
+    --docs) docs=$2; shift ;;
+    *) die "bench: unknown option $1" ;;
+  esac
+  shift
+done
+cli=(dotnet "$BUILD_DIR/gt-cli/gt-cli.dll")
+[ -f "$BUILD_DIR/gt-cli/gt-cli.dll" ] || die "gt-cli is not built (run: gt setup)"
+bench="$BUILD_DIR/bench"
+grid="$bench/grid.json"
+mkdir -p "$bench"
+[ -f "$grid" ] || "${cli[@]}" demo-grid --out "$grid" >&2
+
+make_plan() {  # make_plan DIR
+  local dir=$1
+  rm -rf "$dir"; mkdir -p "$dir"
+  "${cli[@]}" bench-plan --grid "$grid" --out "$dir" "${quick[@]}" >&2
+  [ -d "$BUILD_DIR/spirv/factor_readback" ] || bash "$RIG_DIR/shaders.sh" -j "$(nproc)" >/dev/null
+  mkdir -p "$dir/spirv"
+  for v in base noise paper_mode paper_mode+noise factor_readback factor_readback+noise; do
+    mkdir -p "$dir/spirv/$v"; cp "$BUILD_DIR/spirv/$v/"*.spv "$dir/spirv/$v/"
+  done
+  bash "$TOOLS_DIR/harness/test/compile.sh" "$dir/mesh-spv" >/dev/null
+  cp "$dir/mesh-spv/mesh.vert.spv" "$dir/mesh-spv/mesh.frag.spv" "$dir/spirv/"; rm -rf "$dir/mesh-spv"
+  cp "$RIG_DIR/bench_run.sh" "$TOOLS_DIR/harness/test/make_grid_mesh.py" "$dir/"
+  cp "$BUILD_DIR/harness/gt-harness" "$dir/"
+}
+
+report_of() {  # report_of RAW PLAN
+  "${cli[@]}" bench-report --plan "$2" --raw "$1" --grid "$grid"
+}
+
+if [ -n "$docs" ]; then
+  [ -n "$plan" ] || { plan="$bench/plan-docs"; make_plan "$plan"; }
+  out="$PKG_DIR/Documentation~/performance"
+  mkdir -p "$out"
+  "${cli[@]}" bench-report --plan "$plan" --raw "$docs" --grid "$grid" --tsv "$out/bench_table.tsv" > /dev/null
+  py=python3; [ -x /usr/bin/python3 ] && /usr/bin/python3 -c "import matplotlib" 2>/dev/null && py=/usr/bin/python3   # the distribution's matplotlib
+  "$py" "$RIG_DIR/bench_plot.py" "$out/bench_table.tsv" "$out/accuracy_vs_time.png"
+  cat "$out/bench_table.md"
+  exit 0
+fi
+if [ -n "$report" ]; then
+  [ -n "$plan" ] || { plan="$bench/plan-report"; make_plan "$plan"; }
+  report_of "$report" "$plan"
+  exit 0
+fi
+if [ -n "$prepare" ]; then
+  make_plan "$prepare"
+  say "prepared $prepare ($(du -sh "$prepare" | cut -f1))"
+  exit 0
+fi
+dir="$bench/plan"
+make_plan "$dir"
+raw="$bench/raw"
+rm -rf "$raw"
+bash "$dir/bench_run.sh" "$dir" "$dir/gt-harness" "$dir/spirv" "$raw" "${device[@]}" >&2
+report_of "$raw" "$dir"

@@ -1,0 +1,35 @@
+#!/usr/bin/env bash
+# Runs the jobs of a gt bench plan (gt-cli bench-plan) with the harness; needs only bash, python3
+# and the harness, so it also runs on the NVIDIA machine (no dotnet there).
+#   bench_run.sh PLAN_DIR HARNESS SPV_DIR OUT_DIR [harness args for every job, e.g. --device NVIDIA]
+# Writes OUT_DIR/results.txt ("== ID KIND" then the harness's lines, "exit N"), OUT_DIR/readback.tar
+# (the factor readbacks) and OUT_DIR/device.txt. Static meshes are made by make_grid_mesh.py
+# (Tools~/harness/test, or beside this script) with as many triangles as the job they match.
+set -uo pipefail
+plan=$1 harness=$2 spv=$3 out=$4; shift 4
+here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
+mesher="$here/make_grid_mesh.py"; [ -f "$mesher" ] || mesher="$here/../harness/test/make_grid_mesh.py"
+mkdir -p "$out/readback" "$out/mesh"
+res="$out/results.txt"; : > "$res"
+"$harness" --list-devices "$@" > "$out/device.txt" 2>&1 || true
+start=$(date +%s)
+n=0
+while IFS=$'\t' read -r id kind ref args; do
+  [ -z "$id" ] && continue
+  n=$((n + 1))
+  if [ "$kind" = static-match ]; then
+    tris=$(awk -v r="== $ref run" '$0 == r {f = 1; next} /^== / {f = 0} f && $1 == "stat" && $2 == "clipping_invocations" {print $3; exit}' "$res")
+    [ -z "$tris" ] && { printf '== %s %s\nskipped: no triangle count for %s\n' "$id" "$kind" "$ref" >> "$res"; continue; }
+    cells=$(python3 -c "import math; print(max(1, round(math.sqrt($tris / 2))))")
+    [ -f "$out/mesh/$cells.u32" ] || python3 "$mesher" "$cells" "$out/mesh/$cells.f32" "$out/mesh/$cells.u32" > /dev/null
+    args=${args//@MESH@/"$out/mesh/$cells.f32 $out/mesh/$cells.u32"}
+  fi
+  args=${args//@SPV@/$spv}; args=${args//@JOB@/$plan/jobs}; args=${args//@OUT@/$out}
+  printf '== %s %s\n' "$id" "$kind" >> "$res"
+  # shellcheck disable=SC2086
+  "$harness" $args "$@" >> "$res" 2>&1
+  echo "exit $?" >> "$res"
+done < "$plan/plan.tsv"
+rm -rf "$out/mesh"
+[ -d "$out/readback" ] && (cd "$out" && tar cf readback.tar readback && rm -rf readback)
+echo "bench_run: $n jobs in $(( $(date +%s) - start )) s -> $out" | tee -a "$res"
