@@ -18,7 +18,7 @@ namespace GregoryTerrain.Rig.Tests
     public class ShaderLabTests
     {
         const string PackageName = "com.gregoryterrain.tessellation";
-        static readonly string[] RigOnlyKeywords = { "GT_PAPER_MODE", "GT_READBACK" };
+        static readonly string[] RigOnlyKeywords = { "GT_PAPER_MODE", "GT_READBACK", "GT_FACTOR_READBACK" };
         static readonly string[] ForwardModes = { "UniversalForward", "ForwardOnly", "ForwardBase" };
 
         sealed class PassInfo
