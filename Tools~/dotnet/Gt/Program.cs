@@ -36,6 +36,7 @@ namespace GregoryTerrain.Rig
         {
             Commands["demo-grid"] = ("build the 5x5 sample grid fitted to a procedural heightmap (--out FILE)", DemoGridCommand.Run);
             Commands["eval"] = ("Core float, Core double and (--gpu) GPU position and normal at points (--grid FILE --points \"x,y;...\")", EvalCommand.Run);
+            Commands["snow-scene"] = ("write a snow run's inputs: ridge grid, harness buffers, field/snow params per R (--out DIR [--cpu])", SnowSceneCommand.Run);
             Commands["pack"] = ("write the harness's buffer files for one scene (--grid FILE --out DIR ...)", PackCommand.Run);
         }
     }
