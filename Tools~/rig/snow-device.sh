@@ -33,8 +33,11 @@ while [ $# -gt 0 ]; do
 done
 out="${OUT:-$run/out}"; mkdir -p "$out"
 # A machine without a Vulkan loader: unpack the carried one (as the harness README says).
-if ! ldconfig -p 2>/dev/null | grep -q libvulkan.so.1 && ls "$run"/.gl/*.deb >/dev/null 2>&1; then
-  for f in "$run"/.gl/*.deb; do dpkg -x "$f" /; done; ldconfig
+# Looked for in RUN_DIR/.gl, then in .gl of the current folder (a repository root with .gl carried).
+if ! ldconfig -p 2>/dev/null | grep -q libvulkan.so.1; then
+  for d in "$run/.gl" ".gl"; do
+    if ls "$d"/*.deb >/dev/null 2>&1; then for f in "$d"/*.deb; do dpkg -x "$f" /; done; ldconfig; break; fi
+  done
 fi
 H="$run/bin/gt-harness"; C="$run/bin/gt-compute"; S="$run/snow"; spv="$run/spv"
 dev=(); [ -n "$device" ] && dev=(--device "$device")
