@@ -11,7 +11,8 @@
 #   diff R depth_mean_cap X depth_max_cap X image_mean X image_px X  (against the highest R)
 # depth_*_cap: |depth - highest R's depth box-averaged down| / cap; image_mean: mean |RGB| difference
 # of the rendered frames in [0, 1]; image_px: fraction of pixels differing by more than 8/255.
-# Files (depth, field, PNGs, logs) go to $OUT when it is set, else RUN_DIR/out.
+# Logs and PNGs go to $OUT when it is set, else RUN_DIR/out; the maps (up to 64 MB at 2048) to
+# $OUT/maps only without $OUT (else to a scratch folder), so a device tool's $OUT stays small.
 #
 # RUN_DIR layout (Tools~/rig/snow-carry.sh assembles it):
 #   bin/gt-harness bin/gt-compute
@@ -32,6 +33,7 @@ while [ $# -gt 0 ]; do
   shift
 done
 out="${OUT:-$run/out}"; mkdir -p "$out"
+if [ -n "${OUT:-}" ]; then maps="$(mktemp -d)"; trap 'rm -rf "$maps"' EXIT; else maps="$out/maps"; mkdir -p "$maps"; fi
 # A machine without a Vulkan loader: unpack the carried one (as the harness README says).
 # Looked for in RUN_DIR/.gl, then in .gl of the current folder (a repository root with .gl carried).
 if ! ldconfig -p 2>/dev/null | grep -q libvulkan.so.1; then
@@ -60,25 +62,25 @@ for r in "${RES[@]}"; do
   g=$((r / 8))
   "$C" --spv "$spv/SnowFieldKernel.spv" --entry SnowFieldKernel "${dev[@]}" --groups "$g,$g" --repeat 3 --timestamps \
     --uniform "0=$S/field_params_$r.f32" --buffer "2=$S/scene/control_points.f32" --buffer "3=$S/scene/regions.f32" \
-    --buffer "4=$S/scene/grid_lines.f32" --zeros "5=$((16 * r * r))" --out "5=$out/field_$r.f32" >"$out/field_$r.log" \
+    --buffer "4=$S/scene/grid_lines.f32" --zeros "5=$((16 * r * r))" --out "5=$maps/field_$r.f32" >"$out/field_$r.log" \
     || { cat "$out/field_$r.log"; exit 1; }
   "$C" --spv "$spv/SnowExposureKernel.spv" --entry SnowExposureKernel "${dev[@]}" --groups "$g,$g" --repeat "$exposure_repeat" \
-    --timestamps --uniform "0=$S/snow_params_$r.f32" --buffer "1=$out/field_$r.f32" --zeros "2=$((4 * r * r))" \
-    --out "2=$out/exposure_$r.f32" >"$out/exposure_$r.log" || { cat "$out/exposure_$r.log"; exit 1; }
+    --timestamps --uniform "0=$S/snow_params_$r.f32" --buffer "1=$maps/field_$r.f32" --zeros "2=$((4 * r * r))" \
+    --out "2=$maps/exposure_$r.f32" >"$out/exposure_$r.log" || { cat "$out/exposure_$r.log"; exit 1; }
   "$C" --spv "$spv/SnowAccumulateKernel.spv" --entry SnowAccumulateKernel "${dev[@]}" --groups "$g,$g" --repeat "$steps" \
-    --timestamps --uniform "0=$S/snow_params_$r.f32" --buffer "1=$out/field_$r.f32" --buffer "2=$out/exposure_$r.f32" \
-    --zeros "3=$((4 * r * r))" --out "3=$out/depth_$r.f32" >"$out/step_$r.log" || { cat "$out/step_$r.log"; exit 1; }
-  draw snow "$out/render_$r.log" "$out/snow_$r.png" --snow-depth "$out/depth_$r.f32" --snow-params "$S/snow_size_$r.f32"
+    --timestamps --uniform "0=$S/snow_params_$r.f32" --buffer "1=$maps/field_$r.f32" --buffer "2=$maps/exposure_$r.f32" \
+    --zeros "3=$((4 * r * r))" --out "3=$maps/depth_$r.f32" >"$out/step_$r.log" || { cat "$out/step_$r.log"; exit 1; }
+  draw snow "$out/render_$r.log" "$out/snow_$r.png" --snow-depth "$maps/depth_$r.f32" --snow-params "$S/snow_size_$r.f32"
   echo "snow R $r field_ms $(med dispatch_ms_median "$out/field_$r.log") exposure_ms $(med dispatch_ms_median "$out/exposure_$r.log")" \
        "step_ms $(med dispatch_ms_median "$out/step_$r.log") render_ms $(med frame_ms_median "$out/render_$r.log")"
 done
 echo "bare render_ms $(med frame_ms_median "$out/render_bare.log")"
 grep -q "^note lavapipe" "$out/render_bare.log" && echo "note lavapipe timings are functional figures, not performance"
 
-python3 - "$out" "$(val cap)" "${RES[@]}" <<'PY'
+python3 - "$out" "$maps" "$(val cap)" "${RES[@]}" <<'PY'
 # Differences against the highest R, standard library only (the GPU machine may have no numpy).
 import array, struct, sys, zlib
-out, cap, res = sys.argv[1], float(sys.argv[2]), [int(r) for r in sys.argv[3:]]
+out, maps, cap, res = sys.argv[1], sys.argv[2], float(sys.argv[3]), [int(r) for r in sys.argv[4:]]
 def floats(path):
     a = array.array("f"); a.frombytes(open(path, "rb").read()); return a
 def rgb(path):   # the harness's PNG: 8-bit RGBA, filter 0 on every row
@@ -90,9 +92,9 @@ def rgb(path):   # the harness's PNG: 8-bit RGBA, filter 0 on every row
         i += 12 + n
     raw = zlib.decompress(idat); stride = 4 * w + 1
     return [raw[y * stride + 1 + 4 * x + c] for y in range(h) for x in range(w) for c in range(3)]
-top = max(res); ref = floats(f"{out}/depth_{top}.f32"); ref_img = rgb(f"{out}/snow_{top}.png")
+top = max(res); ref = floats(f"{maps}/depth_{top}.f32"); ref_img = rgb(f"{out}/snow_{top}.png")
 for r in res:
-    d = floats(f"{out}/depth_{r}.f32"); f = top // r
+    d = floats(f"{maps}/depth_{r}.f32"); f = top // r
     tot = mx = 0.0
     for j in range(r):
         for i in range(r):
