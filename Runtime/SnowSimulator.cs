@@ -16,8 +16,12 @@ namespace GregoryTerrain
     /// material as <c>_SnowDepth</c> with <c>_SnowMapSize = (R, 1/R, depthCap, 0)</c>.
     /// </para>
     /// <para>
-    /// The field (detail normal and height per cell) is given on the CPU with <see cref="Field"/>, or as
-    /// a GPU buffer with <see cref="SetFieldBuffer"/> (what the terrain evaluation will produce).
+    /// The field (detail normal and height per cell) normally comes from the terrain itself:
+    /// <see cref="SetTerrain"/> hands over the renderer's buffers and constants, and
+    /// Shaders/SnowField.compute (<c>SnowFieldKernel</c>, the terrain's own vertex path at the cell
+    /// centres) fills it on the GPU, once per terrain change (<see cref="MarkTerrainChanged"/>); the
+    /// exposure follows, since it is recomputed whenever the field changed. Alternatives for tests and
+    /// custom terrains: a CPU <see cref="Field"/> or a ready GPU buffer (<see cref="SetFieldBuffer"/>).
     /// </para>
     /// </summary>
     [DisallowMultipleComponent]
@@ -36,10 +40,18 @@ namespace GregoryTerrain
             public static readonly int Exposure = Shader.PropertyToID("_SnowExposure");
             public static readonly int Depth = Shader.PropertyToID("_SnowDepth");
             public static readonly int MapSize = Shader.PropertyToID("_SnowMapSize");
+            public static readonly int ControlPoints = Shader.PropertyToID("_ControlPoints");
+            public static readonly int Regions = Shader.PropertyToID("_Regions");
+            public static readonly int GridLines = Shader.PropertyToID("_GridLines");
+            public static readonly int[] TerrainParams = Array.ConvertAll(GregoryTerrain.TerrainParams.PropertyNames, Shader.PropertyToID);
         }
+
+        const string NoiseKeyword = "GT_NOISE";
 
         [Tooltip("Shaders/SnowSimulation.compute")]
         [SerializeField] ComputeShader simulation;
+        [Tooltip("Shaders/SnowField.compute: evaluates the terrain field from the terrain (SetTerrain)")]
+        [SerializeField] ComputeShader fieldShader;
         [Tooltip("The terrain material (the renderer's): gets GT_SNOW and the depth map while snow is on.")]
         [SerializeField] Material terrainMaterial;
         [SerializeField] SnowSettings settings = SnowSettings.Default;
@@ -58,6 +70,11 @@ namespace GregoryTerrain
         int _uploadedCpuVersion = -1;
         ComputeBuffer _externalField;
         int _externalVersion;
+        int _fieldKernel = -1;
+        ComputeBuffer _terrainControlPoints, _terrainRegions, _terrainGridLines;
+        TerrainParams _terrainParams;
+        bool _terrainNoise;
+        int _terrainVersion, _fieldTerrainVersion = -1;
 
         public SnowSettings Settings
         {
@@ -81,6 +98,8 @@ namespace GregoryTerrain
 
         public Material TerrainMaterial { get => terrainMaterial; set { DisableKeyword(); terrainMaterial = value; if (isActiveAndEnabled) Bind(); } }
         public ComputeShader Simulation { get => simulation; set => simulation = value; }
+        /// <summary>Shaders/SnowField.compute; set it before enabling (its kernel is looked up in OnEnable).</summary>
+        public ComputeShader FieldShader { get => fieldShader; set => fieldShader = value; }
 
         /// <summary>The terrain field on the CPU; uploaded whenever its <see cref="SnowField.Version"/> changes.</summary>
         public SnowField Field
@@ -106,13 +125,38 @@ namespace GregoryTerrain
             _externalField = buffer; _externalVersion = version; _cpuField = null;
         }
 
+        /// <summary>
+        /// The terrain the field is evaluated from on the GPU: the renderer's three buffers
+        /// (<c>_ControlPoints</c>, <c>_Regions</c>, <c>_GridLines</c>, as GpuLayout packs them), its
+        /// constants (any range: <see cref="SnowFieldTerrain.ParamsFor"/> replaces it) and whether it has
+        /// noise (GT_NOISE). Marks the terrain changed. Pass null buffers to stop using a terrain.
+        /// </summary>
+        public void SetTerrain(ComputeBuffer controlPoints, ComputeBuffer regions, ComputeBuffer gridLines, TerrainParams parameters, bool noise)
+        {
+            bool none = controlPoints == null && regions == null && gridLines == null;
+            if (!none && (controlPoints == null || regions == null || gridLines == null))
+                throw new ArgumentException("controlPoints, regions and gridLines must all be given, or all be null", nameof(controlPoints));
+            if (!none && (controlPoints.stride != 16 || regions.stride != 16 || gridLines.stride != 4))
+                throw new ArgumentException($"buffer strides ({controlPoints.stride}, {regions.stride}, {gridLines.stride}) must be (16, 16, 4)", nameof(controlPoints));
+            _terrainControlPoints = controlPoints; _terrainRegions = regions; _terrainGridLines = gridLines;
+            _terrainParams = parameters; _terrainNoise = noise;
+            if (!none) { _externalField = null; _cpuField = null; }
+            MarkTerrainChanged();
+        }
+
+        /// <summary>The terrain's shape or noise changed: the field (and so the exposure) is recomputed at the next step.</summary>
+        public void MarkTerrainChanged() => _terrainVersion++;
+
+        bool HasTerrain => _terrainControlPoints != null;
+
         /// <summary>The depth map (R*R floats) while enabled, else null.</summary>
         public ComputeBuffer DepthBuffer => _depth;
 
         /// <summary>True when the next step will recompute the exposure.</summary>
         public bool NeedsExposureUpdate => !_exposureValid || !settings.ExposureEquals(_exposureSettings) || FieldVersion != _exposureFieldVersion;
 
-        int FieldVersion => _externalField != null ? _externalVersion : (_cpuField != null ? _cpuField.Version : 0);
+        int FieldVersion => _externalField != null ? _externalVersion
+            : HasTerrain ? _fieldTerrainVersion : (_cpuField != null ? _cpuField.Version : 0);
 
         void OnEnable()
         {
@@ -126,6 +170,7 @@ namespace GregoryTerrain
             catch (ArgumentException e) { Debug.LogError("SnowSimulator: " + e.Message, this); enabled = false; return; }
             _exposureKernel = simulation.FindKernel("SnowExposureKernel");
             _accumulateKernel = simulation.FindKernel("SnowAccumulateKernel");
+            _fieldKernel = fieldShader != null ? fieldShader.FindKernel("SnowFieldKernel") : -1;
             Allocate();
         }
 
@@ -175,6 +220,12 @@ namespace GregoryTerrain
         ComputeBuffer CurrentField()
         {
             if (_externalField != null) return _externalField;
+            if (HasTerrain)
+            {
+                if (_fieldKernel < 0) return null;   // no SnowField.compute assigned
+                if (_fieldTerrainVersion != _terrainVersion) EvaluateField();
+                return _field;
+            }
             if (_cpuField == null) return null;
             if (_cpuField.Resolution != settings.resolution) return null;
             if (_uploadedCpuVersion != _cpuField.Version)
@@ -183,6 +234,25 @@ namespace GregoryTerrain
                 _uploadedCpuVersion = _cpuField.Version;
             }
             return _field;
+        }
+
+        /// <summary>SnowFieldKernel over the R x R cells: the terrain's vertex path at every cell centre.</summary>
+        void EvaluateField()
+        {
+            TerrainParams p = SnowFieldTerrain.ParamsFor(_terrainParams, settings.resolution);
+            for (int i = 0; i < TerrainParams.Float4Count; i++)
+            {
+                Float4 v = p[i];
+                fieldShader.SetVector(Ids.TerrainParams[i], new Vector4(v.x, v.y, v.z, v.w));
+            }
+            if (_terrainNoise) fieldShader.EnableKeyword(NoiseKeyword); else fieldShader.DisableKeyword(NoiseKeyword);
+            fieldShader.SetBuffer(_fieldKernel, Ids.ControlPoints, _terrainControlPoints);
+            fieldShader.SetBuffer(_fieldKernel, Ids.Regions, _terrainRegions);
+            fieldShader.SetBuffer(_fieldKernel, Ids.GridLines, _terrainGridLines);
+            fieldShader.SetBuffer(_fieldKernel, Ids.Field, _field);
+            int groups = settings.resolution / 8;
+            fieldShader.Dispatch(_fieldKernel, groups, groups, 1);
+            _fieldTerrainVersion = _terrainVersion;   // the field's version: the exposure sees the change
         }
 
         void SetParams(float[] p)
@@ -204,6 +274,7 @@ namespace GregoryTerrain
             _depth.SetData(new float[cells]);
             _exposureValid = false;
             _uploadedCpuVersion = -1;
+            _fieldTerrainVersion = -1;   // a new field buffer: evaluate the terrain again
             Bind();
         }
 

@@ -34,7 +34,21 @@ GT_CBUFFER_START(TerrainParams)
     float4 _HeightColor;   // (gamma, colorNoiseAmplitude, colorNoiseFrequency, 0)
     float4 _ColorLow;      // C of eq. 15, linear RGB
     float4 _ColorHigh;     // B of eq. 15, linear RGB
+#if defined(GT_SNOW)
+    float4 _SnowMapSize;   // (R, 1/R, depthCap, 0): snow variant only, always last   on change
+#endif
 GT_CBUFFER_END
+
+#if defined(GT_SNOW)
+// The snow depth map (internals.md, "Snow"): R x R floats over the unit square, written by the snow
+// simulation. Declared only in the snow variant, so without GT_SNOW nothing needs binding. t4, not
+// t3: the rig's texture shift (+2) would put t3 on binding 5, the readback's.
+StructuredBuffer<float> _SnowDepth GT_REGISTER(t4);
+
+float4 SnowMapSize() { return _SnowMapSize; }
+// Largest snow depth: the tile bounds grow by it.
+float SnowDepthCap() { return _SnowMapSize.z; }
+#endif
 
 // --- Patch grid -----------------------------------------------------------------------------------
 

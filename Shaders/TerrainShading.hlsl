@@ -1,5 +1,6 @@
 // Fragment colour of the terrain: Lambert lighting from the adapter's main light, the height
-// colour of eq. 14-15 (GT_HEIGHT_COLOR) and the debug views (each replaces the lit colour):
+// colour of eq. 14-15 (GT_HEIGHT_COLOR), snow blended by depth (GT_SNOW) and the debug views (each
+// replaces the lit colour):
 //   GT_DEBUG_NORMALS      world normal as RGB (n * 0.5 + 0.5)
 //   GT_DEBUG_PATCH_ID     one flat colour per Gregory patch
 //   GT_DEBUG_TESS_FACTOR  tessellation factor, blue (1) to red (maxFactor)
@@ -28,6 +29,11 @@ float3 TessFactorColor(float factor)
     return lerp(float3(0.1, 0.2, 1.0), float3(1.0, 0.15, 0.1), t);
 }
 
+#if defined(GT_SNOW)
+// The snow variant wraps the ground albedo below (compiled as TerrainGroundAlbedo) with the snow
+// blend; the text of the snow-off build stays exactly what it was, and so does its SPIR-V.
+    #define TerrainAlbedo TerrainGroundAlbedo
+#endif
 float3 TerrainAlbedo(TerrainVaryings i)
 {
 #if defined(GT_HEIGHT_COLOR)
@@ -38,6 +44,14 @@ float3 TerrainAlbedo(TerrainVaryings i)
     return GT_DEFAULT_ALBEDO;
 #endif
 }
+#if defined(GT_SNOW)
+    #undef TerrainAlbedo
+// The ground under snow, blended by the vertex's snow depth.
+float3 TerrainAlbedo(TerrainVaryings i)
+{
+    return lerp(TerrainGroundAlbedo(i), GT_SNOW_ALBEDO, SnowMapCoverage(i.snowDepth, SnowDepthCap()));
+}
+#endif
 
 float4 TerrainFragmentColor(TerrainVaryings i)
 {

@@ -10,7 +10,7 @@
 //   frag           TerrainShading.hlsl
 //
 // Keywords (Tools~/rig/shader_variants.txt lists the combinations that are compiled):
-//   GT_NOISE, GT_HEIGHT_COLOR                         effects; off means not compiled at all
+//   GT_NOISE, GT_HEIGHT_COLOR, GT_SNOW                effects; off means not compiled at all
 //   GT_DEBUG_NORMALS, GT_DEBUG_PATCH_ID, GT_DEBUG_TESS_FACTOR   debug views
 //   GT_PAPER_MODE, GT_READBACK, GT_FACTOR_READBACK    off-Unity rig only
 #ifndef GT_TERRAIN_STAGES_INCLUDED
@@ -86,6 +86,9 @@ bool TileCulled(float3 cornerOS[4])
 #endif
     lo.y -= margin;
     hi.y += margin;
+#if defined(GT_SNOW)
+    hi.y += SnowDepthCap();   // snow only raises the surface, by at most the cap
+#endif
     float4 boxCS[8];
     [unroll] for (uint k = 0; k < 8; k++)
     {

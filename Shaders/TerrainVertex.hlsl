@@ -6,6 +6,7 @@
 //     --FindPatch--> Gregory patch --PatchLocalUV--> (u, v) --GregoryEvaluate--> S, dS/du, dS/dv
 //     [GT_NOISE]        + OctaveNoise(q) on the height, its gradient in the normal
 //     [GT_HEIGHT_COLOR] height and ColorNoise(q) for eq. 14-15 in the fragment stage
+//     [GT_SNOW]         + SnowMapSample(q) on the height, the depth to the fragment stage
 //     -> object space (x, z, y), Unity is Y-up -> clip space through the adapter.
 #ifndef GT_TERRAIN_VERTEX_INCLUDED
 #define GT_TERRAIN_VERTEX_INCLUDED
@@ -21,6 +22,9 @@
 #if defined(GT_HEIGHT_COLOR)
     #include "HeightColor.hlsl"
 #endif
+#if defined(GT_SNOW)
+    #include "SnowMap.hlsl"
+#endif
 
 // Domain/fallback output, fragment input.
 struct TerrainVaryings
@@ -35,6 +39,9 @@ struct TerrainVaryings
 #endif
 #if defined(GT_DEBUG_TESS_FACTOR)
     float tessFactor : TEXCOORD3;
+#endif
+#if defined(GT_SNOW)
+    float snowDepth : TEXCOORD4;              // snow depth on this vertex (SnowMapCoverage)
 #endif
 };
 
@@ -142,6 +149,19 @@ TerrainVaryings TerrainVertex(uint drawPatch, float2 tess, float tessFactor)
     dPdv.z += gradient.y * regionSize.y;
 #endif
 
+#if defined(GT_SNOW)
+    // After the noise: snow lies on the detailed surface. The normal stays the terrain's: the map's
+    // bilinear slope (up to cap / cell size) is no surface normal. In paper mode a clamped vertex
+    // reads the map at the patch point it collapsed onto.
+    #if defined(GT_PAPER_MODE)
+    float2 snowPoint = lerp(s.region.xy, s.region.zw, s.uv);
+    #else
+    float2 snowPoint = TerrainPointApprox(s.q);
+    #endif
+    float snowDepth = SnowMapSample(_SnowDepth, SnowMapSize(), snowPoint);
+    position.z += snowDepth;
+#endif
+
     // The derivatives already carry the noise term, so the normal is taken from them directly.
     float3 normal = GregoryNormalFromDerivatives(dPdu, dPdv);
     float3 positionOS = TerrainToObject(position);
@@ -167,6 +187,9 @@ TerrainVaryings TerrainVertex(uint drawPatch, float2 tess, float tessFactor)
 #endif
 #if defined(GT_DEBUG_TESS_FACTOR)
     o.tessFactor = tessFactor;
+#endif
+#if defined(GT_SNOW)
+    o.snowDepth = snowDepth;
 #endif
     return o;
 }

@@ -74,8 +74,18 @@ namespace GregoryTerrain
             return Create(grid, new TerrainParams { gridSize = new Float4(grid.Columns, grid.Rows, 0f, 0f) });
         }
 
-        /// <summary>The same buffers with other constants (a new range, other settings).</summary>
-        public TerrainInputs WithParams(TerrainParams parameters) => new TerrainInputs(ControlPoints, Regions, GridLines, parameters);
+
+        /// <summary>The same buffers with other constants (a new range, other settings); the snow map stays.</summary>
+        public TerrainInputs WithParams(TerrainParams parameters) => new TerrainInputs(ControlPoints, Regions, GridLines, parameters) { Snow = Snow };
+
+        /// <summary>
+        /// The snow variant's extra inputs (<c>GT_SNOW</c>: <c>_SnowDepth</c> and <c>_SnowMapSize</c>),
+        /// null when there is no snow. Only <see cref="TerrainKeywords.Snow"/> reads it.
+        /// </summary>
+        public SnowMap Snow { get; private set; }
+
+        /// <summary>The same inputs with a snow map (null: none).</summary>
+        public TerrainInputs WithSnow(SnowMap snow) => new TerrainInputs(ControlPoints, Regions, GridLines, Params) { Snow = snow };
 
         // --- Patch grid (TerrainInputs.hlsl) -----------------------------------------------------
 
@@ -129,6 +139,15 @@ namespace GregoryTerrain
 
         public GregoryTerrain.HeightColorSettings HeightColorSettings() =>
             new GregoryTerrain.HeightColorSettings(Params.heightColor.x, Params.heightColor.y, Params.heightColor.z);
+
+        // --- Snow (GT_SNOW only) -------------------------------------------------------------------
+
+        /// <summary><c>_SnowMapSize = (R, 1/R, depthCap, 0)</c>; throws when there is no snow map.</summary>
+        public Float4 SnowMapSize() => RequireSnow().MapSize;
+        /// <summary>Largest snow depth: what the tile bounds grow by.</summary>
+        public float SnowDepthCap() => RequireSnow().DepthCap;
+
+        SnowMap RequireSnow() => Snow ?? throw new ArgumentException("Snow: the GT_SNOW inputs need a snow map (use WithSnow)", "Snow");
 
         // --- Buffer reads (PatchGrid.hlsl) ----------------------------------------------------------
 

@@ -13,6 +13,8 @@ namespace GregoryTerrain
         HeightColor = 2,
         /// <summary>GT_PAPER_MODE: the draw patch is a Gregory patch tessellated over the whole range.</summary>
         PaperMode = 4,
+        /// <summary>GT_SNOW: the surface is raised by the snow depth (<see cref="TerrainInputs.Snow"/>).</summary>
+        Snow = 8,
     }
 
     /// <summary>A point of the Gregory surface (no noise yet), terrain space. HLSL <c>TerrainSurfacePoint</c>.</summary>
@@ -43,6 +45,8 @@ namespace GregoryTerrain
         public Float3 normal;
         /// <summary>l of eq. 14 (0 without <see cref="TerrainKeywords.HeightColor"/>).</summary>
         public float colorNoise;
+        /// <summary>Snow depth added to the height (0 without <see cref="TerrainKeywords.Snow"/>); the fragment stage's coverage input.</summary>
+        public float snowDepth;
 
         /// <summary>Object space position (x, z, y): what the readback's first float4 holds.</summary>
         public Float3 PositionOS => TerrainVertex.TerrainToObject(position);
@@ -174,9 +178,19 @@ namespace GregoryTerrain
                 dPdu.z += gradient.x * sizeX;
                 dPdv.z += gradient.y * sizeY;
             }
+            float snowDepth = 0f;
+            if ((keywords & TerrainKeywords.Snow) != 0)
+            {
+                // After the noise: snow lies on the detailed surface. The normal stays the terrain's
+                // (the map's bilinear slope, up to cap / cell size, is no surface normal).
+                snowDepth = SnowMap.Sample(inputs.Snow?.Depth ?? throw new ArgumentException("keywords: Snow needs inputs.Snow (TerrainInputs.WithSnow)", nameof(keywords)),
+                                           inputs.SnowMapSize(), SnowPoint(s, keywords));
+                position.z += snowDepth;
+            }
             var o = new TerrainVertexOutput
             {
                 surface = s,
+                snowDepth = snowDepth,
                 position = position,
                 normal = GregoryEval.NormalFromDerivatives(dPdu, dPdv),
             };
@@ -184,6 +198,15 @@ namespace GregoryTerrain
                 o.colorNoise = HeightColor.ColorNoise(s.q, inputs.HeightColorSettings());
             return o;
         }
+
+        /// <summary>
+        /// Where the snow map is read (HLSL <c>TerrainSnowPoint</c>): the global point; in paper mode the
+        /// point of the patch that was evaluated (a clamped vertex sits on the patch boundary).
+        /// </summary>
+        static Float2 SnowPoint(TerrainSurfacePoint s, TerrainKeywords keywords) =>
+            (keywords & TerrainKeywords.PaperMode) != 0
+                ? new Float2(GMath.lerp(s.region.x, s.region.z, s.uv.x), GMath.lerp(s.region.y, s.region.w, s.uv.y))
+                : RangeMapping.Approximate(s.q);
 
         // ---------------------------------------------------------------- double reference
 

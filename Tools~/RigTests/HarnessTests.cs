@@ -329,6 +329,24 @@ namespace GregoryTerrain.Rig.Tests
             Assert.That(r.Stderr, Does.Contain(file).And.Contain(expectedBytes));
         }
 
+        // --snow-depth / --snow-params (GT_SNOW): both or neither; the map must hold R*R floats for the
+        // R in _SnowMapSize.x. (The happy path draws the real snow variant in SnowRenderTests.)
+        [TestCase(true, false, 64, "--snow-depth and --snow-params")]
+        [TestCase(true, true, 63, "snow_depth.f32")]
+        public void BadSnowInputs_FailNamingTheOptionOrFile(bool depth, bool size, int r, string expected)
+        {
+            string dir = MakeInputs("in_snow_bad", 4, 8, new[] { 0f, 0, 1, 1 });
+            string d = Path.Combine(dir, "snow_depth.f32"), p = Path.Combine(dir, "snow_size.f32");
+            WriteFloats(d, new float[r * r]);
+            WriteFloats(p, new[] { 64f, 1f / 64, 0.02f, 0f });
+            var args = TessArgs(dir, 4, 8, null).ToList();
+            if (depth) args.AddRange(new[] { "--snow-depth", d });
+            if (size) args.AddRange(new[] { "--snow-params", p });
+            HarnessRun run = HarnessRun.Harness(args.ToArray());
+            Assert.That(run.ExitCode, Is.Not.EqualTo(0));
+            Assert.That(run.Stderr, Does.Contain(expected));
+        }
+
         [Test]
         public void UnknownDevice_Fails()
         {

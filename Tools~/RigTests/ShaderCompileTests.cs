@@ -63,9 +63,10 @@ namespace GregoryTerrain.Rig.Tests
             var seen = ResultLines().Select(l => $"{l.variant}/{l.stage}").ToList();
             Assert.That(seen, Is.EquivalentTo(expected), "missing or extra variant/stage");
             // The variant list must hold what the issue asks for: all 16 combinations of the four
-            // effect/mode keywords, each debug view alone, and the factor readback with and
-            // without noise (gt bench).
-            Assert.That(variants.Count, Is.EqualTo(16 + 3 + 2));
+            // effect/mode keywords, each debug view alone, the factor readback with and without
+            // noise (gt bench), and the six snow variants.
+            Assert.That(variants.Count, Is.EqualTo(16 + 3 + 2 + 6));
+            Assert.That(variants.Count(v => v.keywords.Contains("GT_SNOW")), Is.EqualTo(6));
             var counts = Regex.Match(output, @"variants: (\d+), stages: (\d+), compiled: (\d+), passed: (\d+), failed: (\d+)");
             Assert.That(counts.Success, Is.True, "no counts line");
             Assert.That(int.Parse(counts.Groups[1].Value), Is.EqualTo(variants.Count));
@@ -84,6 +85,10 @@ namespace GregoryTerrain.Rig.Tests
         [TestCase("height_color", "frag")]
         [TestCase("readback", "tese")]
         [TestCase("readback", "fallback")]
+        [TestCase("snow", "tese")]
+        [TestCase("snow", "fallback")]
+        [TestCase("snow", "frag")]           // the blend by depth
+        [TestCase("snow", "tesc")]           // the tile bounds grow by the depth cap
         public void AnEffectThatIsOffHasFewerInstructions(string effect, string stage)
         {
             int off = InstructionCount("base", stage);

@@ -31,14 +31,17 @@ STAGES = [
 ]
 
 # HLSL register -> Vulkan binding (set 0): b0 -> 0, b1 -> 1 (no shift), t0..t2 -> 2..4 (+2),
-# u0 -> 5 (+5). glslang applies the shift of each register class with --hlsl-iomap.
+# u0 -> 5 (+5), t4 -> 6 (+2; GT_SNOW's _SnowDepth). glslang applies the shift of each register class
+# with --hlsl-iomap.
 REGISTER_SHIFTS = ["--shift-cbuffer-binding", "0", "--shift-texture-binding", "2",
                    "--shift-UAV-binding", "5"]
 EXPECTED_BINDINGS = {
     "TerrainParams": 0, "RigCamera": 1,
     "_ControlPoints": 2, "_Regions": 3, "_GridLines": 4, "_Readback": 5,
+    "_SnowDepth": 6,
 }
 TERRAIN_PARAMS_BYTES = 144   # 9 float4
+SNOW_PARAMS_BYTES = 16       # GT_SNOW appends _SnowMapSize to TerrainParams
 RIG_CAMERA_BYTES = 176       # 2 float4x4 + 3 float4
 
 # Diagnostics that are known and harmless. Each entry: (regex over one output line, why).
@@ -85,8 +88,9 @@ def run(cmd, log):
     return p.returncode == 0, bad
 
 
-def check_bindings(spv, log):
+def check_bindings(spv, log, keywords=()):
     """Every resource must sit in set 0 at the binding of internals.md."""
+    params_bytes = TERRAIN_PARAMS_BYTES + (SNOW_PARAMS_BYTES if "GT_SNOW" in keywords else 0)
     p = subprocess.run(["spirv-cross", spv, "--reflect"], stdout=subprocess.PIPE,
                        stderr=subprocess.PIPE, text=True)
     if p.returncode != 0:
@@ -102,8 +106,8 @@ def check_bindings(spv, log):
             elif binding != want or dset != 0:
                 errors.append(f"'{name}' at set {dset} binding {binding}, expected set 0 binding {want}")
             size = r.get("block_size")
-            if name == "TerrainParams" and size != TERRAIN_PARAMS_BYTES:
-                errors.append(f"TerrainParams is {size} bytes, expected {TERRAIN_PARAMS_BYTES}")
+            if name == "TerrainParams" and size != params_bytes:
+                errors.append(f"TerrainParams is {size} bytes, expected {params_bytes}")
             if name == "RigCamera" and size != RIG_CAMERA_BYTES:
                 errors.append(f"RigCamera is {size} bytes, expected {RIG_CAMERA_BYTES}")
     log.append("bindings: " + json.dumps({k: [(r["name"], r.get("binding")) for r in v]
@@ -130,7 +134,7 @@ def compile_one(out_dir, variant, stage, includes):
            + [f"-D{k}" for k in keywords] + ["-o", spv, ENTRY_FILE])
     if step("glslang", cmd) and step("spirv-val", ["spirv-val", spv]):
         targets.append("spirv")
-        problems.extend(check_bindings(spv, log))
+        problems.extend(check_bindings(spv, log, keywords))
         glsl = os.path.join(vdir, f"{sname}.450.{gstage}")
         essl = os.path.join(vdir, f"{sname}.es320.{gstage}")
         msl = os.path.join(vdir, f"{sname}.metal")

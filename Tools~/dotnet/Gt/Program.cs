@@ -40,6 +40,7 @@ namespace GregoryTerrain.Rig
             Commands["error"] = ("error of the drawn triangles against the exact surface (scene options; --factors FILE or --factor F)", ErrorCommand.Run);
             Commands["bench-plan"] = ("write the buffers and the job list of gt bench (--grid FILE --out DIR [--quick])", BenchPlan.Run);
             Commands["bench-report"] = ("tables of a gt bench run (--plan DIR --raw DIR --grid FILE)", BenchReport.Run);
+            Commands["snow-scene"] = ("write a snow run's inputs: ridge grid, harness buffers, field/snow params per R (--out DIR [--cpu])", SnowSceneCommand.Run);
             Commands["pack"] = ("write the harness's buffer files for one scene (--grid FILE --out DIR ...)", PackCommand.Run);
             Commands["jitter"] = ("deep-zoom vertex jitter table, plain vs shipped float path (--widths 1e-2,1e-4,1e-6 ...)", JitterCommand.Run);
         }

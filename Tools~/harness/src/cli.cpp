@@ -55,6 +55,8 @@ const char* usageText() {
                                  vert / hull_shader / domain_shader / frag)
   --buffers DIR                  control_points.f32 regions.f32 grid_lines.f32 params.f32 camera.f32
   --range c,d,g,h                overrides _Range (first float4 of params.f32)
+  --snow-depth F --snow-params F GT_SNOW: R*R float depth map at binding 6, and _SnowMapSize
+                                 (16 bytes) appended to TerrainParams at binding 0
   --patches N                    patches drawn (tessellated mode)
   --control-points K             control points per patch (default 4)
   --grid-factor F --instances N  fallback mode: (F+1)^2-vertex grid, N instances
@@ -100,6 +102,8 @@ Options parseOptions(int argc, char** argv) {
         else if (a == "--entry-frag") o.fragEntry = value();
         else if (a == "--buffers") o.buffersDir = value();
         else if (a == "--range") o.range = parseRange(value());
+        else if (a == "--snow-depth") o.snowDepthPath = value();
+        else if (a == "--snow-params") o.snowParamsPath = value();
         else if (a == "--patches") o.patches = u32();
         else if (a == "--control-points") o.controlPoints = u32(32);
         else if (a == "--grid-factor") o.gridFactor = u32(4096);
@@ -135,6 +139,8 @@ Options parseOptions(int argc, char** argv) {
     if (o.buffersDir.empty()) fail("--buffers DIR is required (see --help)");
     if (o.frames == 0) fail("--frames: must be at least 1");
     if (o.width == 0 || o.height == 0) fail("--width/--height: must be at least 1");
+    if (o.snowDepthPath.empty() != o.snowParamsPath.empty())
+        fail("--snow-depth and --snow-params go together: give both or neither");
     if (o.tescPath.empty() != o.tesePath.empty()) fail("--tesc and --tese go together: give both or neither");
     if (!o.readbackPath.empty() && o.readbackFloats == 0) fail("--readback needs --readback-floats K (K > 0)");
     if (o.readbackPath.empty() && o.readbackFloats != 0) fail("--readback-floats needs --readback FILE");

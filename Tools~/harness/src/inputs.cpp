@@ -24,7 +24,7 @@ std::vector<uint8_t> readSized(const std::string& path, size_t exact, size_t mul
 }  // namespace
 
 Inputs loadInputs(const Gpu& gpu, const std::string& dir, const std::optional<std::array<float, 4>>& range,
-                  uint64_t readbackFloats, bool fillNan) {
+                  uint64_t readbackFloats, bool fillNan, const std::string& snowDepth, const std::string& snowParams) {
     const std::string d = dir + "/";
     std::vector<uint8_t> params = readSized(d + "params.f32", kParamsBytes, 0);
     std::vector<uint8_t> camera = readSized(d + "camera.f32", kCameraBytes, 0);
@@ -40,9 +40,25 @@ Inputs loadInputs(const Gpu& gpu, const std::string& dir, const std::optional<st
     std::memcpy(in.params.data(), params.data(), kParamsBytes);
     if (range) std::copy(range->begin(), range->end(), in.params.begin());
 
+    // GT_SNOW: _SnowMapSize follows TerrainParams' nine float4 in the same cbuffer.
+    std::vector<uint8_t> snowSize, depth;
+    if (!snowParams.empty()) {
+        snowSize = readSized(snowParams, kSnowParamsBytes, 0);
+        float r = 0;
+        std::memcpy(&r, snowSize.data(), 4);
+        if (!(r >= 1 && r <= 65536) || r != std::floor(r))
+            fail("'" + snowParams + "': _SnowMapSize.x (R) must be a whole number in [1, 65536], got " + std::to_string(r));
+        in.snow = true;
+        in.snowResolution = static_cast<uint32_t>(r);
+        depth = readSized(snowDepth, size_t(in.snowResolution) * in.snowResolution * 4, 0);
+    }
+    const size_t paramsBytes = kParamsBytes + (in.snow ? kSnowParamsBytes : 0);
+
     const VkBufferUsageFlags storage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
-    in.bindings[kBindingParams] = createHostBuffer(gpu, kParamsBytes, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, true);
+    in.bindings[kBindingParams] = createHostBuffer(gpu, paramsBytes, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, true);
     std::memcpy(in.bindings[kBindingParams].mapped, in.params.data(), kParamsBytes);
+    if (in.snow)
+        std::memcpy(static_cast<uint8_t*>(in.bindings[kBindingParams].mapped) + kParamsBytes, snowSize.data(), kSnowParamsBytes);
     in.bindings[kBindingCamera] = createDeviceBuffer(gpu, camera, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
     in.bindings[kBindingControlPoints] = createDeviceBuffer(gpu, points, storage);
     in.bindings[kBindingRegions] = createDeviceBuffer(gpu, regions, storage);
@@ -55,6 +71,7 @@ Inputs loadInputs(const Gpu& gpu, const std::string& dir, const std::optional<st
     const float fill = fillNan ? std::numeric_limits<float>::quiet_NaN() : 0.0f;
     float* f = static_cast<float*>(rb.mapped);
     for (uint64_t i = 0; i < rb.size / 4; ++i) f[i] = fill;
+    if (in.snow) in.bindings[kBindingSnowDepth] = createDeviceBuffer(gpu, depth, storage);
     return in;
 }
 

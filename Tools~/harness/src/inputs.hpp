@@ -15,23 +15,33 @@ constexpr uint32_t kBindingControlPoints = 2;  // t0 StructuredBuffer<float4>, 2
 constexpr uint32_t kBindingRegions = 3;        // t1 StructuredBuffer<float4>
 constexpr uint32_t kBindingGridLines = 4;      // t2 StructuredBuffer<float>
 constexpr uint32_t kBindingReadback = 5;       // u0 RWStructuredBuffer<float4> (rig only)
-constexpr uint32_t kBindingCount = 6;
+constexpr uint32_t kBindingSnowDepth = 6;      // t4 StructuredBuffer<float> (GT_SNOW only)
+constexpr uint32_t kBindingCount = 6;          // without snow
+constexpr uint32_t kBindingCountSnow = 7;      // with --snow-depth
 
 constexpr size_t kParamsBytes = 9 * 16;             // _Range .. _ColorHigh
 constexpr size_t kCameraBytes = 2 * 64 + 3 * 16;    // two float4x4 + three float4
 constexpr size_t kPatchBytes = 20 * 16;             // 20 float4 control points
+constexpr size_t kSnowParamsBytes = 16;             // _SnowMapSize = (R, 1/R, depthCap, 0)
 
 struct Inputs {
-    std::array<Buffer, kBindingCount> bindings;
+    std::array<Buffer, kBindingCountSnow> bindings;
     std::array<float, kParamsBytes / 4> params{};  // the CPU copy of TerrainParams (range patched)
     uint32_t gregoryPatches = 0;                    // control_points.f32 / 320 bytes
+    bool snow = false;                              // --snow-depth given: binding 6 exists, params + 16 bytes
+    uint32_t snowResolution = 0;                    // R of the snow map
+    uint32_t bindingCount() const { return snow ? kBindingCountSnow : kBindingCount; }
 };
 
 // Reads DIR/{params,camera,control_points,regions,grid_lines}.f32, checks their sizes, patches
 // _Range, uploads. params is host-visible (the per-frame range goes there); the readback
 // buffer (binding 5) holds readbackFloats floats (a 16-byte dummy when 0), pre-filled.
+// With snowDepth/snowParams (both or neither, GT_SNOW variants): snowParams' 16 bytes are appended
+// to TerrainParams (binding 0 grows to 160 bytes) and snowDepth (R*R floats, R = its first float)
+// goes to binding 6.
 Inputs loadInputs(const Gpu& gpu, const std::string& dir, const std::optional<std::array<float, 4>>& range,
-                  uint64_t readbackFloats, bool fillNan);
+                  uint64_t readbackFloats, bool fillNan, const std::string& snowDepth = "",
+                  const std::string& snowParams = "");
 
 void destroyInputs(const Gpu& gpu, Inputs& inputs);
 

@@ -103,8 +103,10 @@ int run(const Options& o) {
     Gpu gpu = createGpu(o.deviceSubstring, request);
     printDevice(gpu);
 
-    Inputs inputs = loadInputs(gpu, o.buffersDir, o.range, o.readbackFloats, o.readbackFillNan);
+    Inputs inputs = loadInputs(gpu, o.buffersDir, o.range, o.readbackFloats, o.readbackFillNan, o.snowDepthPath,
+                               o.snowParamsPath);
     std::printf("inputs gregory_patches %u\n", inputs.gregoryPatches);
+    if (inputs.snow) std::printf("inputs snow_resolution %u\n", inputs.snowResolution);
     std::printf("inputs range %.9g %.9g %.9g %.9g\n", inputs.params[0], inputs.params[1], inputs.params[2], inputs.params[3]);
 
     PipelineDesc desc;

@@ -13,19 +13,20 @@ VkDescriptorType bindingType(uint32_t binding) {
 }
 
 void createDescriptors(const Gpu& gpu, Pipeline& p, const Inputs& inputs) {
-    VkDescriptorSetLayoutBinding b[kBindingCount]{};
-    for (uint32_t i = 0; i < kBindingCount; ++i) {
+    const uint32_t count = inputs.bindingCount();   // 7 with the snow map
+    VkDescriptorSetLayoutBinding b[kBindingCountSnow]{};
+    for (uint32_t i = 0; i < count; ++i) {
         b[i].binding = i;
         b[i].descriptorType = bindingType(i);
         b[i].descriptorCount = 1;
         b[i].stageFlags = VK_SHADER_STAGE_ALL_GRAPHICS;
     }
     VkDescriptorSetLayoutCreateInfo li{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
-    li.bindingCount = kBindingCount;
+    li.bindingCount = count;
     li.pBindings = b;
     GT_VK(vkCreateDescriptorSetLayout(gpu.device, &li, nullptr, &p.setLayout));
 
-    VkDescriptorPoolSize sizes[2] = {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 2}, {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 4}};
+    VkDescriptorPoolSize sizes[2] = {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 2}, {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 5}};
     VkDescriptorPoolCreateInfo pi{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
     pi.maxSets = 1;
     pi.poolSizeCount = 2;
@@ -37,9 +38,9 @@ void createDescriptors(const Gpu& gpu, Pipeline& p, const Inputs& inputs) {
     ai.pSetLayouts = &p.setLayout;
     GT_VK(vkAllocateDescriptorSets(gpu.device, &ai, &p.set));
 
-    VkDescriptorBufferInfo infos[kBindingCount]{};
-    VkWriteDescriptorSet writes[kBindingCount]{};
-    for (uint32_t i = 0; i < kBindingCount; ++i) {
+    VkDescriptorBufferInfo infos[kBindingCountSnow]{};
+    VkWriteDescriptorSet writes[kBindingCountSnow]{};
+    for (uint32_t i = 0; i < count; ++i) {
         infos[i] = {inputs.bindings[i].buffer, 0, VK_WHOLE_SIZE};
         writes[i] = {VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
         writes[i].dstSet = p.set;
@@ -48,7 +49,7 @@ void createDescriptors(const Gpu& gpu, Pipeline& p, const Inputs& inputs) {
         writes[i].descriptorType = bindingType(i);
         writes[i].pBufferInfo = &infos[i];
     }
-    vkUpdateDescriptorSets(gpu.device, kBindingCount, writes, 0, nullptr);
+    vkUpdateDescriptorSets(gpu.device, count, writes, 0, nullptr);
 }
 
 VkPipelineShaderStageCreateInfo stage(VkShaderStageFlagBits s, const ShaderModule& m) {
