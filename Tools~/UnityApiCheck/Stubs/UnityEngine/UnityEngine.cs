@@ -226,6 +226,8 @@ namespace UnityEngine
         public void SetBuffer(int kernelIndex, int nameID, ComputeBuffer buffer) { }  // SR:ComputeShader.SetBuffer
         public void SetBuffer(int kernelIndex, int nameID, GraphicsBuffer buffer) { } // SR:ComputeShader.SetBuffer
         public void SetVector(int nameID, Vector4 val) { }                            // SR:ComputeShader.SetVector
+        public void EnableKeyword(string keyword) { }                                 // SR:ComputeShader.EnableKeyword (2020.2+)
+        public void DisableKeyword(string keyword) { }                                // SR:ComputeShader.DisableKeyword (2020.2+)
         public void Dispatch(int kernelIndex, int threadGroupsX, int threadGroupsY, int threadGroupsZ) { } // SR:ComputeShader.Dispatch
     }
 
