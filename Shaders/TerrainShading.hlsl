@@ -1,5 +1,6 @@
-// Fragment colour of the terrain: Lambert lighting from the adapter's main light, the height
-// colour of eq. 14-15 (GT_HEIGHT_COLOR) and the debug views (each replaces the lit colour):
+// Fragment colour of the terrain: Lambert lighting from the adapter's main light and its shadow
+// (GT_RECEIVE_SHADOWS, set by the adapter), the height colour of eq. 14-15 (GT_HEIGHT_COLOR) and the
+// debug views (each replaces the lit colour):
 //   GT_DEBUG_NORMALS      world normal as RGB (n * 0.5 + 0.5)
 //   GT_DEBUG_PATCH_ID     one flat colour per Gregory patch
 //   GT_DEBUG_TESS_FACTOR  tessellation factor, blue (1) to red (maxFactor)
@@ -52,8 +53,19 @@ float4 TerrainFragmentColor(TerrainVaryings i)
     float3 lightDirectionWS, lightColor;
     GT_MainLight(lightDirectionWS, lightColor);
     float lambert = saturate(dot(normalWS, lightDirectionWS));
+    #if defined(GT_RECEIVE_SHADOWS)
+    // 1 = lit, 0 = in the main light's shadow; the ambient term stays.
+    lambert *= GT_MainLightShadow(i.positionWS, i.positionCS);
+    #endif
     return float4(TerrainAlbedo(i) * (GT_AMBIENT + lightColor * lambert), 1.0);
 #endif
+}
+
+// The depth-normals output (URP's DepthNormals pass): the world normal as the pipeline packs it
+// (GT_EncodeDepthNormal, adapter). No lighting, no albedo.
+float4 TerrainDepthNormal(TerrainVaryings i)
+{
+    return GT_EncodeDepthNormal(i.normalWS);
 }
 
 #endif // GT_TERRAIN_SHADING_INCLUDED

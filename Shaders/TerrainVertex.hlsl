@@ -36,6 +36,9 @@ struct TerrainVaryings
 #if defined(GT_DEBUG_TESS_FACTOR)
     float tessFactor : TEXCOORD3;
 #endif
+#if defined(GT_RECEIVE_SHADOWS)
+    float3 positionWS : TEXCOORD6;   // main-light shadow lookup (adapter's GT_MainLightShadow)
+#endif
 };
 
 // A point of the Gregory surface (no noise yet), in terrain space (x, y, z).
@@ -154,6 +157,9 @@ TerrainVaryings TerrainVertex(uint drawPatch, float2 tess, float tessFactor)
     TerrainVaryings o;
     o.positionCS = GT_ObjectToClip(positionOS);
     o.normalWS = GT_ObjectToWorldNormal(normalOS);
+#if defined(GT_RECEIVE_SHADOWS)
+    o.positionWS = GT_ObjectToWorld(positionOS);
+#endif
 #if defined(GT_HEIGHT_COLOR)
     // The absolute height S'z (position.z is relative to S(O) at deep zoom).
     float absoluteHeight = s.position.z;
