@@ -14,7 +14,9 @@
 //
 // Keywords: the package's are exactly the shipped ones of Tools~/rig/shader_variants.txt
 // (GT_PAPER_MODE and GT_READBACK are rig-only and never declared here), all shader_feature_local;
-// depth and shadow passes declare only GT_NOISE, the one that changes the shape. The pipelines' own
+// depth and shadow passes declare only GT_NOISE and GT_SNOW, the ones that change the shape (GT_SNOW
+// is enabled at run time by SnowSimulator: as a shader_feature it is in a build only if a material
+// in the build has it on). The pipelines' own
 // keywords are multi_compile, only where a pass reads them: URP's main-light shadow keywords and
 // Built-in's SHADOWS_SCREEN on the forward passes (received shadows), URP's _GBUFFER_NORMALS_OCT on
 // DepthNormals. Each pass defines one GT_PASS_* (and GT_FALLBACK without a tessellator) before its
@@ -75,6 +77,7 @@ Shader "GregoryTerrain/Terrain"
             #pragma fragment frag
             // Effects: off = not compiled into the build at all (shader_feature: unused variants are stripped).
             #pragma shader_feature_local GT_NOISE
+            #pragma shader_feature_local GT_SNOW
             #pragma shader_feature_local GT_HEIGHT_COLOR
             #pragma shader_feature_local _ GT_DEBUG_NORMALS GT_DEBUG_PATCH_ID GT_DEBUG_TESS_FACTOR
             // Main-light shadows received (URPAdapter.hlsl, GT_MainLightShadow): URP's own keywords.
@@ -105,6 +108,7 @@ Shader "GregoryTerrain/Terrain"
             #pragma domain domain_shader
             #pragma fragment frag
             #pragma shader_feature_local GT_NOISE
+            #pragma shader_feature_local GT_SNOW
             #define GT_PASS_SHADOWCASTER 1
             #include "Packages/com.gregoryterrain.tessellation/Shaders/Adapters/URPAdapter.hlsl"
             #include "Packages/com.gregoryterrain.tessellation/Shaders/TerrainStages.hlsl"
@@ -130,6 +134,7 @@ Shader "GregoryTerrain/Terrain"
             #pragma domain domain_shader
             #pragma fragment frag
             #pragma shader_feature_local GT_NOISE
+            #pragma shader_feature_local GT_SNOW
             #define GT_PASS_DEPTH 1
             #include "Packages/com.gregoryterrain.tessellation/Shaders/Adapters/URPAdapter.hlsl"
             #include "Packages/com.gregoryterrain.tessellation/Shaders/TerrainStages.hlsl"
@@ -154,6 +159,7 @@ Shader "GregoryTerrain/Terrain"
             #pragma domain domain_shader
             #pragma fragment frag
             #pragma shader_feature_local GT_NOISE
+            #pragma shader_feature_local GT_SNOW
             // URP's normal packing for the deferred renderer's accurate G-buffer normals.
             #pragma multi_compile_fragment _ _GBUFFER_NORMALS_OCT
             #define GT_PASS_DEPTH_NORMALS 1
@@ -184,6 +190,7 @@ Shader "GregoryTerrain/Terrain"
             #pragma fragment frag
             // Effects: off = not compiled into the build at all (shader_feature: unused variants are stripped).
             #pragma shader_feature_local GT_NOISE
+            #pragma shader_feature_local GT_SNOW
             #pragma shader_feature_local GT_HEIGHT_COLOR
             #pragma shader_feature_local _ GT_DEBUG_NORMALS GT_DEBUG_PATCH_ID GT_DEBUG_TESS_FACTOR
             // Main-light shadows received (URPAdapter.hlsl, GT_MainLightShadow): URP's own keywords.
@@ -211,6 +218,7 @@ Shader "GregoryTerrain/Terrain"
             #pragma vertex vert_fallback
             #pragma fragment frag
             #pragma shader_feature_local GT_NOISE
+            #pragma shader_feature_local GT_SNOW
             #define GT_PASS_SHADOWCASTER 1
             #define GT_FALLBACK 1
             #include "Packages/com.gregoryterrain.tessellation/Shaders/Adapters/URPAdapter.hlsl"
@@ -233,6 +241,7 @@ Shader "GregoryTerrain/Terrain"
             #pragma vertex vert_fallback
             #pragma fragment frag
             #pragma shader_feature_local GT_NOISE
+            #pragma shader_feature_local GT_SNOW
             #define GT_PASS_DEPTH 1
             #define GT_FALLBACK 1
             #include "Packages/com.gregoryterrain.tessellation/Shaders/Adapters/URPAdapter.hlsl"
@@ -254,6 +263,7 @@ Shader "GregoryTerrain/Terrain"
             #pragma vertex vert_fallback
             #pragma fragment frag
             #pragma shader_feature_local GT_NOISE
+            #pragma shader_feature_local GT_SNOW
             // URP's normal packing for the deferred renderer's accurate G-buffer normals.
             #pragma multi_compile_fragment _ _GBUFFER_NORMALS_OCT
             #define GT_PASS_DEPTH_NORMALS 1
@@ -289,6 +299,7 @@ Shader "GregoryTerrain/Terrain"
             #pragma fragment frag
             // Effects: off = not compiled into the build at all (shader_feature: unused variants are stripped).
             #pragma shader_feature_local GT_NOISE
+            #pragma shader_feature_local GT_SNOW
             #pragma shader_feature_local GT_HEIGHT_COLOR
             #pragma shader_feature_local _ GT_DEBUG_NORMALS GT_DEBUG_PATCH_ID GT_DEBUG_TESS_FACTOR
             #define GT_PASS_FORWARD 1
@@ -316,6 +327,7 @@ Shader "GregoryTerrain/Terrain"
             #pragma domain domain_shader
             #pragma fragment frag
             #pragma shader_feature_local GT_NOISE
+            #pragma shader_feature_local GT_SNOW
             #define GT_PASS_DEPTH 1
             #include "Packages/com.gregoryterrain.tessellation/Shaders/Adapters/HDRPAdapter.hlsl"
             #include "Packages/com.gregoryterrain.tessellation/Shaders/TerrainStages.hlsl"
@@ -341,6 +353,7 @@ Shader "GregoryTerrain/Terrain"
             #pragma domain domain_shader
             #pragma fragment frag
             #pragma shader_feature_local GT_NOISE
+            #pragma shader_feature_local GT_SNOW
             #define GT_PASS_SHADOWCASTER 1
             #include "Packages/com.gregoryterrain.tessellation/Shaders/Adapters/HDRPAdapter.hlsl"
             #include "Packages/com.gregoryterrain.tessellation/Shaders/TerrainStages.hlsl"
@@ -369,6 +382,7 @@ Shader "GregoryTerrain/Terrain"
             #pragma fragment frag
             // Effects: off = not compiled into the build at all (shader_feature: unused variants are stripped).
             #pragma shader_feature_local GT_NOISE
+            #pragma shader_feature_local GT_SNOW
             #pragma shader_feature_local GT_HEIGHT_COLOR
             #pragma shader_feature_local _ GT_DEBUG_NORMALS GT_DEBUG_PATCH_ID GT_DEBUG_TESS_FACTOR
             #define GT_PASS_FORWARD 1
@@ -393,6 +407,7 @@ Shader "GregoryTerrain/Terrain"
             #pragma vertex vert_fallback
             #pragma fragment frag
             #pragma shader_feature_local GT_NOISE
+            #pragma shader_feature_local GT_SNOW
             #define GT_PASS_DEPTH 1
             #define GT_FALLBACK 1
             #include "Packages/com.gregoryterrain.tessellation/Shaders/Adapters/HDRPAdapter.hlsl"
@@ -415,6 +430,7 @@ Shader "GregoryTerrain/Terrain"
             #pragma vertex vert_fallback
             #pragma fragment frag
             #pragma shader_feature_local GT_NOISE
+            #pragma shader_feature_local GT_SNOW
             #define GT_PASS_SHADOWCASTER 1
             #define GT_FALLBACK 1
             #include "Packages/com.gregoryterrain.tessellation/Shaders/Adapters/HDRPAdapter.hlsl"
@@ -448,6 +464,7 @@ Shader "GregoryTerrain/Terrain"
             #pragma fragment frag
             // Effects: off = not compiled into the build at all (shader_feature: unused variants are stripped).
             #pragma shader_feature_local GT_NOISE
+            #pragma shader_feature_local GT_SNOW
             #pragma shader_feature_local GT_HEIGHT_COLOR
             #pragma shader_feature_local _ GT_DEBUG_NORMALS GT_DEBUG_PATCH_ID GT_DEBUG_TESS_FACTOR
             // Main directional light's shadow received (BuiltinAdapter.hlsl, GT_MainLightShadow).
@@ -477,6 +494,7 @@ Shader "GregoryTerrain/Terrain"
             #pragma domain domain_shader
             #pragma fragment frag
             #pragma shader_feature_local GT_NOISE
+            #pragma shader_feature_local GT_SNOW
             #define GT_PASS_SHADOWCASTER 1
             #include "Packages/com.gregoryterrain.tessellation/Shaders/Adapters/BuiltinAdapter.hlsl"
             #include "Packages/com.gregoryterrain.tessellation/Shaders/TerrainStages.hlsl"
@@ -505,6 +523,7 @@ Shader "GregoryTerrain/Terrain"
             #pragma fragment frag
             // Effects: off = not compiled into the build at all (shader_feature: unused variants are stripped).
             #pragma shader_feature_local GT_NOISE
+            #pragma shader_feature_local GT_SNOW
             #pragma shader_feature_local GT_HEIGHT_COLOR
             #pragma shader_feature_local _ GT_DEBUG_NORMALS GT_DEBUG_PATCH_ID GT_DEBUG_TESS_FACTOR
             // Main directional light's shadow received (BuiltinAdapter.hlsl, GT_MainLightShadow).
@@ -531,6 +550,7 @@ Shader "GregoryTerrain/Terrain"
             #pragma vertex vert_fallback
             #pragma fragment frag
             #pragma shader_feature_local GT_NOISE
+            #pragma shader_feature_local GT_SNOW
             #define GT_PASS_SHADOWCASTER 1
             #define GT_FALLBACK 1
             #include "Packages/com.gregoryterrain.tessellation/Shaders/Adapters/BuiltinAdapter.hlsl"

@@ -1,6 +1,5 @@
-// Fragment colour of the terrain: Lambert lighting from the adapter's main light and its shadow
-// (GT_RECEIVE_SHADOWS, set by the adapter), the height colour of eq. 14-15 (GT_HEIGHT_COLOR) and the
-// debug views (each replaces the lit colour):
+// Fragment colour of the terrain: Lambert lighting from the adapter's main light, the height
+// colour of eq. 14-15 (GT_HEIGHT_COLOR) and the debug views (each replaces the lit colour):
 //   GT_DEBUG_NORMALS      world normal as RGB (n * 0.5 + 0.5)
 //   GT_DEBUG_PATCH_ID     one flat colour per Gregory patch
 //   GT_DEBUG_TESS_FACTOR  tessellation factor, blue (1) to red (maxFactor)

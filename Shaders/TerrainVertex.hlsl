@@ -27,6 +27,9 @@ struct TerrainVaryings
 {
     float4 positionCS : SV_Position;
     float3 normalWS : TEXCOORD0;
+#if defined(GT_RECEIVE_SHADOWS)
+    float3 positionWS : TEXCOORD6;   // main-light shadow lookup (adapter's GT_MainLightShadow)
+#endif
 #if defined(GT_HEIGHT_COLOR)
     float2 heightAndColorNoise : TEXCOORD1;   // (S'z, l) of eq. 14
 #endif
@@ -35,9 +38,6 @@ struct TerrainVaryings
 #endif
 #if defined(GT_DEBUG_TESS_FACTOR)
     float tessFactor : TEXCOORD3;
-#endif
-#if defined(GT_RECEIVE_SHADOWS)
-    float3 positionWS : TEXCOORD6;   // main-light shadow lookup (adapter's GT_MainLightShadow)
 #endif
 };
 

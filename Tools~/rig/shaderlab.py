@@ -29,7 +29,7 @@ MOCK_DIR = os.path.join(RIG_DIR, "unity-mock")
 PACKAGE_NAME = "com.gregoryterrain.tessellation"
 
 PRAGMA_STAGES = {"vertex": "vert", "hull": "tesc", "domain": "tese", "fragment": "frag"}
-EFFECTS = ["GT_NOISE", "GT_HEIGHT_COLOR"]
+EFFECTS = ["GT_NOISE", "GT_HEIGHT_COLOR", "GT_SNOW"]
 
 
 def strip_comments(text):
