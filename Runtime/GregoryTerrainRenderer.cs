@@ -84,7 +84,7 @@ namespace GregoryTerrain
         [Tooltip("Largest tessellation factor a tile edge may get (hardware limit 64). Caps the triangle count.")]
         [SerializeField, Range(1f, 64f)] float maxFactor = 64f;
 
-        [Tooltip("Target screen length, in pixels, of one tessellated edge segment. Smaller = denser mesh, more accurate silhouette, more time.")]
+        [Tooltip("Target screen-space error in pixels: the largest distance the drawn triangles may lie from the surface (like Unity Terrain's Pixel Error). Halving it about doubles the triangles. See Documentation~/performance.md.")]
         [SerializeField, Range(1f, 64f)] float targetPixelError = 8f;
 
         [Tooltip("0 = adaptive (screen-space) factors. A value > 0 uses that factor for every edge: for debugging and measurements.")]
