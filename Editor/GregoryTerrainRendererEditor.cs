@@ -19,8 +19,8 @@ namespace GregoryTerrain.EditorTools
             var r = (GregoryTerrainRenderer)target;
             EditorGUILayout.LabelField(new GUIContent("Estimated triangles", "Most triangles the current settings can produce: 2 F^2 per tile, F the uniform factor, else the max factor (Core's TessellationPolicy)."),
                 new GUIContent(r.EstimatedTriangleCount.ToString("N0")));
-            if (GregoryTerrainRenderer.UsesFallback)
-                EditorGUILayout.HelpBox("This GPU has no tessellation shaders: the vertex-shader fallback is drawn (fixed grid per tile).", MessageType.Warning);
+            if (r.DrawsFallback)
+                EditorGUILayout.HelpBox("The shader's tessellated SubShader is not used on this GPU: the vertex-shader fallback is drawn (fixed grid per tile, Fallback grid factor).", MessageType.Warning);
             if (r.Grid != null && !r.Grid.IsValid)
                 EditorGUILayout.HelpBox("Grid: " + r.Grid.ValidationError, MessageType.Error);
             if (r.SettingsError != null)

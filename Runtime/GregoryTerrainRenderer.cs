@@ -84,7 +84,7 @@ namespace GregoryTerrain
         [Tooltip("Largest tessellation factor a tile edge may get (hardware limit 64). Caps the triangle count.")]
         [SerializeField, Range(1f, 64f)] float maxFactor = 64f;
 
-        [Tooltip("Target screen length, in pixels, of one tessellated edge segment. Smaller = denser mesh, more accurate silhouette, more time.")]
+        [Tooltip("Target screen-space error in pixels: the largest distance the drawn triangles may lie from the surface (like Unity Terrain's Pixel Error). Halving it about doubles the triangles. See Documentation~/performance.md.")]
         [SerializeField, Range(1f, 64f)] float targetPixelError = 8f;
 
         [Tooltip("0 = adaptive (screen-space) factors. A value > 0 uses that factor for every edge: for debugging and measurements.")]
@@ -148,7 +148,16 @@ namespace GregoryTerrain
         TerrainRange _range = TerrainRange.full;
         readonly RangeOriginTracker _origin = new RangeOriginTracker();
         float _gridMinZ, _gridMaxZ;
+        Material _drawModeMaterial;
+        Shader _drawModeShader;
+        bool _drawFallback;
         static bool s_FallbackLogged;
+
+        /// <summary>
+        /// SubShader tag of GregoryTerrain.shader: "Tessellated" or "Fallback", the draw the SubShader
+        /// expects (4-control-point tile patches, or the instanced vertex grid).
+        /// </summary>
+        const string DrawTag = "GregoryTerrainDraw";
 
         // ---- public API -----------------------------------------------------------------------------
 
@@ -179,15 +188,25 @@ namespace GregoryTerrain
             }
         }
 
-        /// <summary>True when this device has no tessellator and the vertex-shader fallback is drawn.</summary>
+        /// <summary>True when this device has no tessellation shaders (Unity then skips the tessellated SubShaders).</summary>
         public static bool UsesFallback => !SystemInfo.supportsTessellationShaders;
+
+        /// <summary>
+        /// True when this renderer draws the vertex-shader fallback: the SubShader Unity picked for the
+        /// material is a fallback one (its "GregoryTerrainDraw" tag, read with Material.GetTag without
+        /// fallbacks, which queries the SubShader in use), or, for a shader without the tag, the
+        /// device has no tessellation shaders. Following the picked SubShader keeps draw and shader in
+        /// agreement where the device flag alone would not (a device whose tessellation is not the
+        /// hull/domain hardware the tessellated SubShaders require, a lowered shader LOD).
+        /// </summary>
+        public bool DrawsFallback => material != null ? ReadDrawMode() : UsesFallback;
 
         /// <summary>
         /// Triangles the current settings can produce at most (Core's TessellationPolicy: 2 F^2 per
         /// tile, F = the uniform factor, else maxFactor; the fallback grid's F without a tessellator).
         /// </summary>
         public double EstimatedTriangleCount => TessellationPolicy.EstimateTriangleCount(tiles,
-            UsesFallback ? fallbackGridFactor : uniformFactor > 0 ? uniformFactor : maxFactor);
+            DrawsFallback ? fallbackGridFactor : uniformFactor > 0 ? uniformFactor : maxFactor);
 
         /// <summary>Why the current settings cannot be drawn (Core's message, naming field and value), or null.</summary>
         public string SettingsError => _settingsError;
@@ -238,7 +257,7 @@ namespace GregoryTerrain
             if (material == null || grid == null || !grid.IsValid) return;
             if (!EnsureUploaded()) return;
 
-            bool fallback = UsesFallback;
+            bool fallback = ReadDrawMode();
             if (fallback && !EnsureFallbackIndices()) return;
 
             if (_origin.Update(_range)) _originDirty = true;
@@ -319,6 +338,23 @@ namespace GregoryTerrain
         }
 
         static Vector4 ToVector(Float4 v) => new Vector4(v.x, v.y, v.z, v.w);
+
+        /// <summary>
+        /// The draw the material's SubShader in use expects (see <see cref="DrawsFallback"/>). Read
+        /// again only when the material or its shader changes (GetTag returns a new string); a change
+        /// of mode marks the settings dirty, since the uniform factor sent differs between the modes.
+        /// </summary>
+        bool ReadDrawMode()
+        {
+            if (material == _drawModeMaterial && material.shader == _drawModeShader) return _drawFallback;
+            string tag = material.GetTag(DrawTag, false, "");
+            bool fallback = tag == "Fallback" || (tag.Length == 0 && UsesFallback);
+            if (fallback != _drawFallback) _settingsDirty = true;
+            _drawModeMaterial = material;
+            _drawModeShader = material.shader;
+            _drawFallback = fallback;
+            return fallback;
+        }
 
         /// <summary>
         /// RenderPrimitives has no object matrix (the shader gets none from Unity), so the adapters
@@ -420,8 +456,9 @@ namespace GregoryTerrain
             if (!s_FallbackLogged)
             {
                 s_FallbackLogged = true;
-                Debug.Log("Gregory Terrain: this GPU has no tessellation shaders " +
-                          "(SystemInfo.supportsTessellationShaders is false); drawing the vertex-shader fallback.", this);
+                Debug.Log("Gregory Terrain: the shader's tessellated SubShader is not used on this device " +
+                          $"(SystemInfo.supportsTessellationShaders = {SystemInfo.supportsTessellationShaders}); " +
+                          "drawing the vertex-shader fallback (a fixed grid per tile).", this);
             }
             int f = fallbackGridFactor;
             if (_fallbackIndices != null && _fallbackIndexFactor == f) return true;
@@ -452,6 +489,7 @@ namespace GregoryTerrain
             _uploadedGrid = null;
             _uploadedPatchGrid = null;
             _uploadedVersion = 0;
+            _drawModeMaterial = null;   // read the SubShader's tag again (it may change with the shader)
             _props?.Clear();
         }
 

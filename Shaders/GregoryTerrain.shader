@@ -8,12 +8,19 @@
 // active pipeline and whose passes the GPU supports. Each pipeline has a tessellated SubShader
 // (#pragma require tessellation tessHW) followed by a fallback SubShader (vert_fallback) that
 // devices without hull/domain stages get instead. Shadow and depth passes run the same stages, so
-// shadows and depth come from the same tessellated surface as the colour.
+// shadows and depth come from the same tessellated surface as the colour. Each SubShader's
+// "GregoryTerrainDraw" tag (Tessellated / Fallback) tells GregoryTerrainRenderer which draw the
+// SubShader Unity picked expects (Material.GetTag without fallbacks reads the SubShader in use).
 //
-// Keywords: exactly the shipped ones of Tools~/rig/shader_variants.txt (GT_PAPER_MODE and
-// GT_READBACK are rig-only and never declared here), all shader_feature_local; depth and shadow
-// passes declare only GT_NOISE, the one that changes the shape. Each pass defines one GT_PASS_*
-// (and GT_FALLBACK without a tessellator) before its adapter. Checked off Unity by
+// Keywords: the package's are exactly the shipped ones of Tools~/rig/shader_variants.txt
+// (GT_PAPER_MODE and GT_READBACK are rig-only and never declared here), all shader_feature_local;
+// depth and shadow passes declare only GT_NOISE and GT_SNOW, the ones that change the shape (GT_SNOW
+// is enabled at run time by SnowSimulator: as a shader_feature it is in a build only if a material
+// in the build has it on). The pipelines' own
+// keywords are multi_compile, only where a pass reads them: URP's main-light shadow keywords and
+// Built-in's SHADOWS_SCREEN on the forward passes (received shadows), URP's _GBUFFER_NORMALS_OCT on
+// DepthNormals. Each pass defines one GT_PASS_* (and GT_FALLBACK without a tessellator) before its
+// adapter; `frag` writes colour, the packed normal (DepthNormals) or nothing (depth, shadow). Checked off Unity by
 // Tools~/RigTests/ShaderLabTests.cs and compiled pass by pass by `gt shaderlab` (glslang, Unity's
 // libraries mocked).
 Shader "GregoryTerrain/Terrain"
@@ -24,10 +31,12 @@ Shader "GregoryTerrain/Terrain"
         [Toggle(GT_NOISE)] _GtNoise ("Noise detail (eq. 12-13)", Float) = 1
         [Toggle(GT_HEIGHT_COLOR)] _GtHeightColor ("Height colour (eq. 14-15)", Float) = 1
 
-        [Header(Debug views. At most one)]
-        [Toggle(GT_DEBUG_NORMALS)] _GtDebugNormals ("Show normals", Float) = 0
-        [Toggle(GT_DEBUG_PATCH_ID)] _GtDebugPatchId ("Show patch index", Float) = 0
-        [Toggle(GT_DEBUG_TESS_FACTOR)] _GtDebugTessFactor ("Show tessellation factor", Float) = 0
+        // One popup for the debug views, as they replace each other: KeywordEnum enables
+        // GT_DEBUG_<ENTRY> (the property name, '_', the entry upper-cased), which matches the one
+        // `shader_feature_local _ GT_DEBUG_NORMALS GT_DEBUG_PATCH_ID GT_DEBUG_TESS_FACTOR` set of
+        // the forward passes; None enables GT_DEBUG_NONE, which no pass declares (the '_' variant).
+        [Header(Debug view)]
+        [KeywordEnum(None, Normals, Patch_Id, Tess_Factor)] GT_DEBUG ("Debug view (replaces the lit colour)", Float) = 0
 
         [Header(Defaults. The renderer overrides these)]
         _Tess ("Tessellation: tiles M, max factor (1-64), target pixels per segment, uniform factor (0 = adaptive)", Vector) = (16, 64, 8, 0)
@@ -46,7 +55,7 @@ Shader "GregoryTerrain/Terrain"
     // Universal Render Pipeline, tessellated.
     SubShader
     {
-        Tags { "RenderPipeline" = "UniversalPipeline" "RenderType" = "Opaque" "Queue" = "Geometry" }
+        Tags { "RenderPipeline" = "UniversalPipeline" "RenderType" = "Opaque" "Queue" = "Geometry" "GregoryTerrainDraw" = "Tessellated" }
         LOD 300
 
         Pass
@@ -68,8 +77,12 @@ Shader "GregoryTerrain/Terrain"
             #pragma fragment frag
             // Effects: off = not compiled into the build at all (shader_feature: unused variants are stripped).
             #pragma shader_feature_local GT_NOISE
+            #pragma shader_feature_local GT_SNOW
             #pragma shader_feature_local GT_HEIGHT_COLOR
             #pragma shader_feature_local _ GT_DEBUG_NORMALS GT_DEBUG_PATCH_ID GT_DEBUG_TESS_FACTOR
+            // Main-light shadows received (URPAdapter.hlsl, GT_MainLightShadow): URP's own keywords.
+            #pragma multi_compile _ _MAIN_LIGHT_SHADOWS _MAIN_LIGHT_SHADOWS_CASCADE
+            #pragma multi_compile_fragment _ _SHADOWS_SOFT
             #define GT_PASS_FORWARD 1
             #include "Packages/com.gregoryterrain.tessellation/Shaders/Adapters/URPAdapter.hlsl"
             #include "Packages/com.gregoryterrain.tessellation/Shaders/TerrainStages.hlsl"
@@ -95,6 +108,7 @@ Shader "GregoryTerrain/Terrain"
             #pragma domain domain_shader
             #pragma fragment frag
             #pragma shader_feature_local GT_NOISE
+            #pragma shader_feature_local GT_SNOW
             #define GT_PASS_SHADOWCASTER 1
             #include "Packages/com.gregoryterrain.tessellation/Shaders/Adapters/URPAdapter.hlsl"
             #include "Packages/com.gregoryterrain.tessellation/Shaders/TerrainStages.hlsl"
@@ -120,6 +134,7 @@ Shader "GregoryTerrain/Terrain"
             #pragma domain domain_shader
             #pragma fragment frag
             #pragma shader_feature_local GT_NOISE
+            #pragma shader_feature_local GT_SNOW
             #define GT_PASS_DEPTH 1
             #include "Packages/com.gregoryterrain.tessellation/Shaders/Adapters/URPAdapter.hlsl"
             #include "Packages/com.gregoryterrain.tessellation/Shaders/TerrainStages.hlsl"
@@ -144,6 +159,9 @@ Shader "GregoryTerrain/Terrain"
             #pragma domain domain_shader
             #pragma fragment frag
             #pragma shader_feature_local GT_NOISE
+            #pragma shader_feature_local GT_SNOW
+            // URP's normal packing for the deferred renderer's accurate G-buffer normals.
+            #pragma multi_compile_fragment _ _GBUFFER_NORMALS_OCT
             #define GT_PASS_DEPTH_NORMALS 1
             #include "Packages/com.gregoryterrain.tessellation/Shaders/Adapters/URPAdapter.hlsl"
             #include "Packages/com.gregoryterrain.tessellation/Shaders/TerrainStages.hlsl"
@@ -154,7 +172,7 @@ Shader "GregoryTerrain/Terrain"
     // Universal Render Pipeline, no tessellator.
     SubShader
     {
-        Tags { "RenderPipeline" = "UniversalPipeline" "RenderType" = "Opaque" "Queue" = "Geometry" }
+        Tags { "RenderPipeline" = "UniversalPipeline" "RenderType" = "Opaque" "Queue" = "Geometry" "GregoryTerrainDraw" = "Fallback" }
         LOD 200
 
         Pass
@@ -172,8 +190,12 @@ Shader "GregoryTerrain/Terrain"
             #pragma fragment frag
             // Effects: off = not compiled into the build at all (shader_feature: unused variants are stripped).
             #pragma shader_feature_local GT_NOISE
+            #pragma shader_feature_local GT_SNOW
             #pragma shader_feature_local GT_HEIGHT_COLOR
             #pragma shader_feature_local _ GT_DEBUG_NORMALS GT_DEBUG_PATCH_ID GT_DEBUG_TESS_FACTOR
+            // Main-light shadows received (URPAdapter.hlsl, GT_MainLightShadow): URP's own keywords.
+            #pragma multi_compile _ _MAIN_LIGHT_SHADOWS _MAIN_LIGHT_SHADOWS_CASCADE
+            #pragma multi_compile_fragment _ _SHADOWS_SOFT
             #define GT_PASS_FORWARD 1
             #define GT_FALLBACK 1
             #include "Packages/com.gregoryterrain.tessellation/Shaders/Adapters/URPAdapter.hlsl"
@@ -196,6 +218,7 @@ Shader "GregoryTerrain/Terrain"
             #pragma vertex vert_fallback
             #pragma fragment frag
             #pragma shader_feature_local GT_NOISE
+            #pragma shader_feature_local GT_SNOW
             #define GT_PASS_SHADOWCASTER 1
             #define GT_FALLBACK 1
             #include "Packages/com.gregoryterrain.tessellation/Shaders/Adapters/URPAdapter.hlsl"
@@ -218,6 +241,7 @@ Shader "GregoryTerrain/Terrain"
             #pragma vertex vert_fallback
             #pragma fragment frag
             #pragma shader_feature_local GT_NOISE
+            #pragma shader_feature_local GT_SNOW
             #define GT_PASS_DEPTH 1
             #define GT_FALLBACK 1
             #include "Packages/com.gregoryterrain.tessellation/Shaders/Adapters/URPAdapter.hlsl"
@@ -239,6 +263,9 @@ Shader "GregoryTerrain/Terrain"
             #pragma vertex vert_fallback
             #pragma fragment frag
             #pragma shader_feature_local GT_NOISE
+            #pragma shader_feature_local GT_SNOW
+            // URP's normal packing for the deferred renderer's accurate G-buffer normals.
+            #pragma multi_compile_fragment _ _GBUFFER_NORMALS_OCT
             #define GT_PASS_DEPTH_NORMALS 1
             #define GT_FALLBACK 1
             #include "Packages/com.gregoryterrain.tessellation/Shaders/Adapters/URPAdapter.hlsl"
@@ -250,7 +277,7 @@ Shader "GregoryTerrain/Terrain"
     // High Definition Render Pipeline (forward-only material), tessellated.
     SubShader
     {
-        Tags { "RenderPipeline" = "HDRenderPipeline" "RenderType" = "Opaque" "Queue" = "Geometry" }
+        Tags { "RenderPipeline" = "HDRenderPipeline" "RenderType" = "Opaque" "Queue" = "Geometry" "GregoryTerrainDraw" = "Tessellated" }
         LOD 300
 
         Pass
@@ -272,6 +299,7 @@ Shader "GregoryTerrain/Terrain"
             #pragma fragment frag
             // Effects: off = not compiled into the build at all (shader_feature: unused variants are stripped).
             #pragma shader_feature_local GT_NOISE
+            #pragma shader_feature_local GT_SNOW
             #pragma shader_feature_local GT_HEIGHT_COLOR
             #pragma shader_feature_local _ GT_DEBUG_NORMALS GT_DEBUG_PATCH_ID GT_DEBUG_TESS_FACTOR
             #define GT_PASS_FORWARD 1
@@ -299,6 +327,7 @@ Shader "GregoryTerrain/Terrain"
             #pragma domain domain_shader
             #pragma fragment frag
             #pragma shader_feature_local GT_NOISE
+            #pragma shader_feature_local GT_SNOW
             #define GT_PASS_DEPTH 1
             #include "Packages/com.gregoryterrain.tessellation/Shaders/Adapters/HDRPAdapter.hlsl"
             #include "Packages/com.gregoryterrain.tessellation/Shaders/TerrainStages.hlsl"
@@ -324,6 +353,7 @@ Shader "GregoryTerrain/Terrain"
             #pragma domain domain_shader
             #pragma fragment frag
             #pragma shader_feature_local GT_NOISE
+            #pragma shader_feature_local GT_SNOW
             #define GT_PASS_SHADOWCASTER 1
             #include "Packages/com.gregoryterrain.tessellation/Shaders/Adapters/HDRPAdapter.hlsl"
             #include "Packages/com.gregoryterrain.tessellation/Shaders/TerrainStages.hlsl"
@@ -334,7 +364,7 @@ Shader "GregoryTerrain/Terrain"
     // High Definition Render Pipeline, no tessellator.
     SubShader
     {
-        Tags { "RenderPipeline" = "HDRenderPipeline" "RenderType" = "Opaque" "Queue" = "Geometry" }
+        Tags { "RenderPipeline" = "HDRenderPipeline" "RenderType" = "Opaque" "Queue" = "Geometry" "GregoryTerrainDraw" = "Fallback" }
         LOD 200
 
         Pass
@@ -352,6 +382,7 @@ Shader "GregoryTerrain/Terrain"
             #pragma fragment frag
             // Effects: off = not compiled into the build at all (shader_feature: unused variants are stripped).
             #pragma shader_feature_local GT_NOISE
+            #pragma shader_feature_local GT_SNOW
             #pragma shader_feature_local GT_HEIGHT_COLOR
             #pragma shader_feature_local _ GT_DEBUG_NORMALS GT_DEBUG_PATCH_ID GT_DEBUG_TESS_FACTOR
             #define GT_PASS_FORWARD 1
@@ -376,6 +407,7 @@ Shader "GregoryTerrain/Terrain"
             #pragma vertex vert_fallback
             #pragma fragment frag
             #pragma shader_feature_local GT_NOISE
+            #pragma shader_feature_local GT_SNOW
             #define GT_PASS_DEPTH 1
             #define GT_FALLBACK 1
             #include "Packages/com.gregoryterrain.tessellation/Shaders/Adapters/HDRPAdapter.hlsl"
@@ -398,6 +430,7 @@ Shader "GregoryTerrain/Terrain"
             #pragma vertex vert_fallback
             #pragma fragment frag
             #pragma shader_feature_local GT_NOISE
+            #pragma shader_feature_local GT_SNOW
             #define GT_PASS_SHADOWCASTER 1
             #define GT_FALLBACK 1
             #include "Packages/com.gregoryterrain.tessellation/Shaders/Adapters/HDRPAdapter.hlsl"
@@ -409,7 +442,7 @@ Shader "GregoryTerrain/Terrain"
     // Built-in Render Pipeline (no RenderPipeline tag), tessellated.
     SubShader
     {
-        Tags { "RenderType" = "Opaque" "Queue" = "Geometry" }
+        Tags { "RenderType" = "Opaque" "Queue" = "Geometry" "GregoryTerrainDraw" = "Tessellated" }
         LOD 300
 
         Pass
@@ -431,8 +464,11 @@ Shader "GregoryTerrain/Terrain"
             #pragma fragment frag
             // Effects: off = not compiled into the build at all (shader_feature: unused variants are stripped).
             #pragma shader_feature_local GT_NOISE
+            #pragma shader_feature_local GT_SNOW
             #pragma shader_feature_local GT_HEIGHT_COLOR
             #pragma shader_feature_local _ GT_DEBUG_NORMALS GT_DEBUG_PATCH_ID GT_DEBUG_TESS_FACTOR
+            // Main directional light's shadow received (BuiltinAdapter.hlsl, GT_MainLightShadow).
+            #pragma multi_compile _ SHADOWS_SCREEN
             #define GT_PASS_FORWARD 1
             #include "Packages/com.gregoryterrain.tessellation/Shaders/Adapters/BuiltinAdapter.hlsl"
             #include "Packages/com.gregoryterrain.tessellation/Shaders/TerrainStages.hlsl"
@@ -458,6 +494,7 @@ Shader "GregoryTerrain/Terrain"
             #pragma domain domain_shader
             #pragma fragment frag
             #pragma shader_feature_local GT_NOISE
+            #pragma shader_feature_local GT_SNOW
             #define GT_PASS_SHADOWCASTER 1
             #include "Packages/com.gregoryterrain.tessellation/Shaders/Adapters/BuiltinAdapter.hlsl"
             #include "Packages/com.gregoryterrain.tessellation/Shaders/TerrainStages.hlsl"
@@ -468,7 +505,7 @@ Shader "GregoryTerrain/Terrain"
     // Built-in Render Pipeline, no tessellator.
     SubShader
     {
-        Tags { "RenderType" = "Opaque" "Queue" = "Geometry" }
+        Tags { "RenderType" = "Opaque" "Queue" = "Geometry" "GregoryTerrainDraw" = "Fallback" }
         LOD 200
 
         Pass
@@ -486,8 +523,11 @@ Shader "GregoryTerrain/Terrain"
             #pragma fragment frag
             // Effects: off = not compiled into the build at all (shader_feature: unused variants are stripped).
             #pragma shader_feature_local GT_NOISE
+            #pragma shader_feature_local GT_SNOW
             #pragma shader_feature_local GT_HEIGHT_COLOR
             #pragma shader_feature_local _ GT_DEBUG_NORMALS GT_DEBUG_PATCH_ID GT_DEBUG_TESS_FACTOR
+            // Main directional light's shadow received (BuiltinAdapter.hlsl, GT_MainLightShadow).
+            #pragma multi_compile _ SHADOWS_SCREEN
             #define GT_PASS_FORWARD 1
             #define GT_FALLBACK 1
             #include "Packages/com.gregoryterrain.tessellation/Shaders/Adapters/BuiltinAdapter.hlsl"
@@ -510,6 +550,7 @@ Shader "GregoryTerrain/Terrain"
             #pragma vertex vert_fallback
             #pragma fragment frag
             #pragma shader_feature_local GT_NOISE
+            #pragma shader_feature_local GT_SNOW
             #define GT_PASS_SHADOWCASTER 1
             #define GT_FALLBACK 1
             #include "Packages/com.gregoryterrain.tessellation/Shaders/Adapters/BuiltinAdapter.hlsl"

@@ -66,8 +66,19 @@ float4 TerrainFragmentColor(TerrainVaryings i)
     float3 lightDirectionWS, lightColor;
     GT_MainLight(lightDirectionWS, lightColor);
     float lambert = saturate(dot(normalWS, lightDirectionWS));
+    #if defined(GT_RECEIVE_SHADOWS)
+    // 1 = lit, 0 = in the main light's shadow; the ambient term stays.
+    lambert *= GT_MainLightShadow(i.positionWS, i.positionCS);
+    #endif
     return float4(TerrainAlbedo(i) * (GT_AMBIENT + lightColor * lambert), 1.0);
 #endif
+}
+
+// The depth-normals output (URP's DepthNormals pass): the world normal as the pipeline packs it
+// (GT_EncodeDepthNormal, adapter). No lighting, no albedo.
+float4 TerrainDepthNormal(TerrainVaryings i)
+{
+    return GT_EncodeDepthNormal(i.normalWS);
 }
 
 #endif // GT_TERRAIN_SHADING_INCLUDED

@@ -7,7 +7,8 @@
 //   hull_shader    passes the 4 corners through
 //   domain_shader  tess coordinate -> TerrainVertex (TerrainVertex.hlsl)
 //   vert_fallback  no tessellator: a (F+1)^2 UV grid per instance (= tile), same TerrainVertex
-//   frag           TerrainShading.hlsl
+//   frag           TerrainShading.hlsl: colour (forward), packed normal (GT_PASS_DEPTH_NORMALS),
+//                  nothing (GT_PASS_SHADOWCASTER, GT_PASS_DEPTH)
 //
 // Keywords (Tools~/rig/shader_variants.txt lists the combinations that are compiled):
 //   GT_NOISE, GT_HEIGHT_COLOR, GT_SNOW                effects; off means not compiled at all
@@ -210,9 +211,18 @@ TerrainVaryings vert_fallback(uint vertexID : SV_VertexID, uint instanceID : SV_
     return TerrainVertex(instanceID, (float2)grid / (float)f, (float)f);
 }
 
+// One fragment entry for every pass; the pass's GT_PASS_* define (set by GregoryTerrain.shader)
+// picks the output. Depth and shadow passes write no colour (ColorMask 0), so they evaluate nothing
+// here: no albedo, no lighting, no shadow lookup. No GT_PASS_* (the off-Unity rig) = the colour.
 float4 frag(TerrainVaryings i) : SV_Target
 {
+#if defined(GT_PASS_SHADOWCASTER) || defined(GT_PASS_DEPTH)
+    return 0.0;
+#elif defined(GT_PASS_DEPTH_NORMALS)
+    return TerrainDepthNormal(i);
+#else
     return TerrainFragmentColor(i);
+#endif
 }
 
 #endif // GT_TERRAIN_STAGES_INCLUDED

@@ -31,6 +31,9 @@ struct TerrainVaryings
 {
     float4 positionCS : SV_Position;
     float3 normalWS : TEXCOORD0;
+#if defined(GT_RECEIVE_SHADOWS)
+    float3 positionWS : TEXCOORD6;   // main-light shadow lookup (adapter's GT_MainLightShadow)
+#endif
 #if defined(GT_HEIGHT_COLOR)
     float2 heightAndColorNoise : TEXCOORD1;   // (S'z, l) of eq. 14
 #endif
@@ -174,6 +177,9 @@ TerrainVaryings TerrainVertex(uint drawPatch, float2 tess, float tessFactor)
     TerrainVaryings o;
     o.positionCS = GT_ObjectToClip(positionOS);
     o.normalWS = GT_ObjectToWorldNormal(normalOS);
+#if defined(GT_RECEIVE_SHADOWS)
+    o.positionWS = GT_ObjectToWorld(positionOS);
+#endif
 #if defined(GT_HEIGHT_COLOR)
     // The absolute height S'z (position.z is relative to S(O) at deep zoom).
     float absoluteHeight = s.position.z;

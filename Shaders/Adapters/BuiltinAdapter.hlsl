@@ -1,7 +1,8 @@
 // Built-in render pipeline adapter (interface: see StandaloneAdapter.hlsl).
 // Unity API names used: HLSLSupport.cginc (CBUFFER_START/CBUFFER_END), UnityCG.cginc
 // (UnityWorldToClipPos, UnityApplyLinearShadowBias, _WorldSpaceCameraPos, _ScreenParams,
-// _WorldSpaceLightPos0) and UnityLightingCommon.cginc (_LightColor0). Use it in a pass with
+// _WorldSpaceLightPos0, unity_WorldToShadow), UnityLightingCommon.cginc (_LightColor0) and
+// AutoLight.cginc (unitySampleShadow, the SHADOWS_SCREEN keyword). Use it in a pass with
 // Tags { "LightMode" = "ForwardBase" } so Unity fills the main directional light.
 // Not compiled against Unity's .cginc files off Unity: Tools~/rig/shaderlab.py compiles it against
 // a labelled mock of these names (Tools~/rig/unity-mock) to catch syntax and type errors only.
@@ -17,8 +18,16 @@
 #include "HLSLSupport.cginc"
 #include "UnityCG.cginc"
 #include "UnityLightingCommon.cginc"
+#include "AutoLight.cginc"
 
 #define GT_ADAPTER_BUILTIN 1
+
+// Receive the main directional light's shadow in ForwardBase when Unity draws one (SHADOWS_SCREEN:
+// the pass declares `multi_compile _ SHADOWS_SCREEN` rather than multi_compile_fwdbase, whose
+// lightmap and vertex-light variants the terrain does not use).
+#if defined(GT_PASS_FORWARD) && defined(SHADOWS_SCREEN)
+    #define GT_RECEIVE_SHADOWS 1
+#endif
 #define GT_CBUFFER_START(name) CBUFFER_START(UnityPerMaterial)
 #define GT_CBUFFER_END CBUFFER_END
 #define GT_REGISTER(r)
@@ -52,5 +61,28 @@ void GT_MainLight(out float3 directionWS, out float3 color)
     directionWS = normalize(_WorldSpaceLightPos0.xyz);
     color = _LightColor0.rgb;
 }
+
+// The SHADOW_COORDS / TRANSFER_SHADOW macros expect a v2f with a `pos` member and the vertex in
+// unity_ObjectToWorld space, which the domain stage does not have; the coordinate they would pass
+// on is rebuilt here instead. Desktop: Unity's screen-space shadow texture at this pixel (the
+// fragment's SV_Position over the screen size; single-pass stereo not handled). Without screen-space
+// shadows (UNITY_NO_SCREENSPACE_SHADOWS, mobile): the shadow map through unity_WorldToShadow[0]
+// (one cascade there).
+float GT_MainLightShadow(float3 positionWS, float4 positionSS)
+{
+#if defined(GT_RECEIVE_SHADOWS)
+    #if defined(UNITY_NO_SCREENSPACE_SHADOWS)
+    float4 shadowCoord = mul(unity_WorldToShadow[0], float4(positionWS, 1.0));
+    #else
+    float4 shadowCoord = float4(positionSS.xy / _ScreenParams.xy, 0.0, 1.0);
+    #endif
+    return unitySampleShadow(shadowCoord);
+#else
+    return 1.0;
+#endif
+}
+
+// The Built-in pipeline has no DepthNormals pass for this shader; defined for the interface, unused.
+float4 GT_EncodeDepthNormal(float3 normalWS) { return float4(normalize(normalWS), 0.0); }
 
 #endif // GT_BUILTIN_ADAPTER_INCLUDED

@@ -55,4 +55,14 @@ void GT_MainLight(out float3 directionWS, out float3 color)
     }
 }
 
+// Not received in HDRP: its directional shadows are read through the light loop's HDShadowContext
+// (the shadow atlas, cascade data and filtering of the HDRP version), which a forward-only custom
+// pass would have to include and set up as HDRP's Lit does. GT_RECEIVE_SHADOWS is not defined, so
+// the shading never calls this; the terrain still casts shadows (ShadowCaster pass).
+float GT_MainLightShadow(float3 positionWS, float4 positionSS) { return 1.0; }
+
+// HDRP has no DepthNormals pass for this material (its normal buffer is written by the
+// DepthForwardOnly pass of its Lit shaders only); defined for the interface, unused.
+float4 GT_EncodeDepthNormal(float3 normalWS) { return float4(normalize(normalWS), 0.0); }
+
 #endif // GT_HDRP_ADAPTER_INCLUDED

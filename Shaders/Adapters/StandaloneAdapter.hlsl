@@ -11,6 +11,14 @@
 //   void   GT_MainLight(out float3 directionWS, out float3 color)
 //                                                       directionWS: unit, from the surface TOWARDS
 //                                                       the light (the convention of URP's Light)
+//   float  GT_MainLightShadow(float3 positionWS, float4 positionSS)
+//                                                       main light's shadow, 1 = lit, 0 = shadowed;
+//                                                       positionSS: the fragment's SV_Position. The
+//                                                       shading calls it only when the adapter
+//                                                       defines GT_RECEIVE_SHADOWS (then the
+//                                                       varyings carry positionWS)
+//   float4 GT_EncodeDepthNormal(float3 normalWS)        the depth-normals pass's output for a world
+//                                                       normal (packing of the pipeline)
 //
 // Here the camera comes from the cbuffer RigCamera at b1 (internals.md, "Descriptor bindings").
 #ifndef GT_STANDALONE_ADAPTER_INCLUDED
@@ -87,5 +95,10 @@ void GT_MainLight(out float3 directionWS, out float3 color)
     directionWS = normalize(_RigLightDirection.xyz);
     color = float3(1.0, 1.0, 1.0);
 }
+
+// No shadow maps in the rig: always lit (GT_RECEIVE_SHADOWS is not defined here).
+float GT_MainLightShadow(float3 positionWS, float4 positionSS) { return 1.0; }
+
+float4 GT_EncodeDepthNormal(float3 normalWS) { return float4(normalize(normalWS), 0.0); }
 
 #endif // GT_STANDALONE_ADAPTER_INCLUDED

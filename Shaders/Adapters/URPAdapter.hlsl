@@ -1,7 +1,9 @@
 // Universal Render Pipeline adapter (interface: see StandaloneAdapter.hlsl).
 // Unity API names used: Core.hlsl (TransformWorldToHClip, GetCameraPositionWS, _ScreenParams,
-// CBUFFER_START/CBUFFER_END, UNITY_REVERSED_Z, UNITY_NEAR_CLIP_VALUE), Lighting.hlsl (GetMainLight,
-// Light.direction, Light.color) and Shadows.hlsl, which Lighting.hlsl includes (_ShadowBias).
+// CBUFFER_START/CBUFFER_END, UNITY_REVERSED_Z, UNITY_NEAR_CLIP_VALUE, NormalizeNormalPerPixel and,
+// from SRP Core's Packing.hlsl, PackNormalOctQuadEncode / PackFloat2To888), Lighting.hlsl
+// (GetMainLight, Light.direction/.color/.shadowAttenuation) and Shadows.hlsl, which Lighting.hlsl
+// includes (_ShadowBias, TransformWorldToShadowCoord, the _MAIN_LIGHT_SHADOWS* keywords).
 // Not compiled against URP off Unity: Tools~/rig/shaderlab.py compiles it against a labelled mock
 // of these names (Tools~/rig/unity-mock) to catch syntax and type errors only.
 //
@@ -16,6 +18,14 @@
 #include "Packages/com.unity.render-pipelines.universal/ShaderLibrary/Lighting.hlsl"
 
 #define GT_ADAPTER_URP 1
+
+// Receive the main light's shadows in the forward pass when URP draws them: the forward pass
+// declares `multi_compile _ _MAIN_LIGHT_SHADOWS _MAIN_LIGHT_SHADOWS_CASCADE` (and
+// `multi_compile_fragment _ _SHADOWS_SOFT`). _MAIN_LIGHT_SHADOWS_SCREEN (the screen-space shadows
+// renderer feature) is not declared, so with that feature the terrain is drawn unshadowed.
+#if defined(GT_PASS_FORWARD) && (defined(_MAIN_LIGHT_SHADOWS) || defined(_MAIN_LIGHT_SHADOWS_CASCADE))
+    #define GT_RECEIVE_SHADOWS 1
+#endif
 // All material constants in UnityPerMaterial, so the SRP Batcher layout stays the same for every
 // material of this shader.
 #define GT_CBUFFER_START(name) CBUFFER_START(UnityPerMaterial)
@@ -68,6 +78,35 @@ void GT_MainLight(out float3 directionWS, out float3 color)
     Light light = GetMainLight();   // direction: towards the light
     directionWS = light.direction;
     color = light.color;
+}
+
+// The shadow coordinate is computed per pixel from the world position (TransformWorldToShadowCoord
+// picks the cascade there), not interpolated from the vertices: a tessellated triangle can span
+// two cascades. GetMainLight(shadowCoord, positionWS, shadowMask) also fades the shadow out towards
+// the shadow distance; no baked shadow mask (1).
+float GT_MainLightShadow(float3 positionWS, float4 positionSS)
+{
+#if defined(GT_RECEIVE_SHADOWS)
+    float4 shadowCoord = TransformWorldToShadowCoord(positionWS);
+    return GetMainLight(shadowCoord, positionWS, half4(1.0, 1.0, 1.0, 1.0)).shadowAttenuation;
+#else
+    return 1.0;
+#endif
+}
+
+// URP's DepthNormals convention (its own DepthNormalsPass): the world-space normal, normalized per
+// pixel, in rgb; with _GBUFFER_NORMALS_OCT (deferred renderer, accurate G-buffer normals) the
+// octahedral encoding remapped to [0, 1] and packed into three 8-bit channels.
+float4 GT_EncodeDepthNormal(float3 normalWS)
+{
+#if defined(_GBUFFER_NORMALS_OCT)
+    float3 n = normalize(normalWS);
+    float2 octahedral = PackNormalOctQuadEncode(n);            // [-1, 1]^2
+    float2 remapped = saturate(octahedral * 0.5 + 0.5);        // [0, 1]^2
+    return float4(PackFloat2To888(remapped), 0.0);
+#else
+    return float4(NormalizeNormalPerPixel(normalWS), 0.0);
+#endif
 }
 
 #endif // GT_URP_ADAPTER_INCLUDED

@@ -25,7 +25,8 @@ namespace GregoryTerrain.Rig.Tests
         {
             public string Name, LightMode, Program;
             public List<string[]> Pragmas;
-            public HashSet<string> Keywords;
+            public HashSet<string> Keywords;          // the package's: shader_feature*
+            public HashSet<string> PipelineKeywords;  // Unity's: multi_compile*
         }
 
         sealed class SubShaderInfo
@@ -33,6 +34,7 @@ namespace GregoryTerrain.Rig.Tests
             public int Index;
             public string Pipeline;   // "URP", "HDRP", "Builtin"
             public bool Tessellated;
+            public string Body;
             public List<PassInfo> Passes;
             public override string ToString() => $"SubShader {Index} ({Pipeline}, {(Tessellated ? "tessellated" : "fallback")})";
         }
@@ -46,7 +48,7 @@ namespace GregoryTerrain.Rig.Tests
             _subShaders = new List<SubShaderInfo>();
             foreach (string sub in Blocks(text, "SubShader"))
             {
-                var info = new SubShaderInfo { Index = _subShaders.Count, Passes = new List<PassInfo>() };
+                var info = new SubShaderInfo { Index = _subShaders.Count, Body = sub, Passes = new List<PassInfo>() };
                 string pipeline = Regex.Match(OuterPart(sub), "\"RenderPipeline\"\\s*=\\s*\"(\\w+)\"").Groups[1].Value;
                 info.Pipeline = pipeline == "UniversalPipeline" ? "URP" : pipeline == "HDRenderPipeline" ? "HDRP" : pipeline == "" ? "Builtin" : pipeline;
                 foreach (string pass in Blocks(sub, "Pass"))
@@ -61,7 +63,9 @@ namespace GregoryTerrain.Rig.Tests
                         LightMode = Regex.Match(pass, "\"LightMode\"\\s*=\\s*\"(\\w+)\"").Groups[1].Value,
                         Program = program,
                         Pragmas = pragmas,
-                        Keywords = new HashSet<string>(pragmas.Where(p => p.Length > 1 && p[0].StartsWith("shader_feature") || p.Length > 1 && p[0].StartsWith("multi_compile"))
+                        Keywords = new HashSet<string>(pragmas.Where(p => p.Length > 1 && p[0].StartsWith("shader_feature"))
+                            .SelectMany(p => p.Skip(1)).Where(k => k != "_")),
+                        PipelineKeywords = new HashSet<string>(pragmas.Where(p => p.Length > 1 && p[0].StartsWith("multi_compile"))
                             .SelectMany(p => p.Skip(1)).Where(k => k != "_")),
                     });
                 }
@@ -114,9 +118,11 @@ namespace GregoryTerrain.Rig.Tests
             var listed = File.ReadAllLines(PackageRoot.Combine("Tools~", "rig", "shader_variants.txt"))
                 .Select(l => l.Trim()).Where(l => l.Length > 0 && !l.StartsWith("#") && l != "-")
                 .SelectMany(l => l.Split(' ', StringSplitOptions.RemoveEmptyEntries)).Distinct().ToList();
-            var shipped = new HashSet<string>(listed.Except(RigOnlyKeywords));
+            // GT_SNOW (SnowSimulator's keyword) is declared by the .shader; the snow rendering branch
+            // lists it in shader_variants.txt too, so after that merge the union changes nothing.
+            var shipped = new HashSet<string>(listed.Except(RigOnlyKeywords)) { "GT_SNOW" };
             Assert.That(listed, Does.Contain("GT_PAPER_MODE").And.Contain("GT_READBACK"), "rig-only keywords are in the list");
-            Assert.That(shipped, Is.EquivalentTo(new[] { "GT_NOISE", "GT_HEIGHT_COLOR", "GT_DEBUG_NORMALS", "GT_DEBUG_PATCH_ID", "GT_DEBUG_TESS_FACTOR" }));
+            Assert.That(shipped, Is.EquivalentTo(new[] { "GT_NOISE", "GT_HEIGHT_COLOR", "GT_SNOW", "GT_DEBUG_NORMALS", "GT_DEBUG_PATCH_ID", "GT_DEBUG_TESS_FACTOR" }));
 
             var all = new HashSet<string>(_subShaders.SelectMany(s => s.Passes).SelectMany(p => p.Keywords));
             Assert.That(all, Is.EquivalentTo(shipped), "keywords declared anywhere in the .shader");
@@ -124,14 +130,16 @@ namespace GregoryTerrain.Rig.Tests
                 foreach (PassInfo p in s.Passes)
                 {
                     string where = $"{s} pass {p.Name}";
-                    // Only shader_feature_local: a material's toggles, stripped from builds when unused.
-                    foreach (string[] a in p.Pragmas.Where(a => a[0].StartsWith("shader_feature") || a[0].StartsWith("multi_compile")))
+                    // The package's keywords: only shader_feature_local (a material's toggles, stripped
+                    // from builds when unused); multi_compile only for the pipelines' own keywords.
+                    foreach (string[] a in p.Pragmas.Where(a => a[0].StartsWith("shader_feature")))
                         Assert.That(a[0], Is.EqualTo("shader_feature_local"), where);
+                    Assert.That(p.PipelineKeywords.Where(k => k.StartsWith("GT_")), Is.Empty, where + ": a package keyword in multi_compile");
                     if (ForwardModes.Contains(p.LightMode))
                         Assert.That(p.Keywords, Is.EquivalentTo(shipped), where);
                     else
                         // Depth and shadow passes: only what changes the shape.
-                        Assert.That(p.Keywords, Is.EquivalentTo(new[] { "GT_NOISE" }), where);
+                        Assert.That(p.Keywords, Is.EquivalentTo(new[] { "GT_NOISE", "GT_SNOW" }), where);
                     foreach (string rigOnly in RigOnlyKeywords)
                         Assert.That(Regex.IsMatch(p.Program, @"\b" + rigOnly + @"\b"), Is.False, where + ": mentions " + rigOnly);
                 }
@@ -139,6 +147,79 @@ namespace GregoryTerrain.Rig.Tests
             foreach (PassInfo p in _subShaders.SelectMany(s => s.Passes).Where(p => ForwardModes.Contains(p.LightMode)))
                 Assert.That(p.Pragmas.Any(a => a.SequenceEqual(new[] { "shader_feature_local", "_", "GT_DEBUG_NORMALS", "GT_DEBUG_PATCH_ID", "GT_DEBUG_TESS_FACTOR" })),
                     Is.True, p.Name + ": the debug views as one set");
+        }
+
+        /// <summary>
+        /// Unity's keywords are compiled only where a pass reads them: received shadows on the forward
+        /// passes (URP, Built-in), the normal packing on URP's DepthNormals; none on depth and shadow
+        /// passes (each would double their variants for nothing). _SHADOWS_SOFT only changes the
+        /// fragment stage, so it is multi_compile_fragment.
+        /// </summary>
+        [Test]
+        public void PipelineKeywordsAreDeclaredOnlyWhereAPassReadsThem()
+        {
+            foreach (SubShaderInfo s in _subShaders)
+                foreach (PassInfo p in s.Passes)
+                {
+                    string[] expected =
+                        s.Pipeline == "URP" && p.LightMode == "UniversalForward" ? new[] { "_MAIN_LIGHT_SHADOWS", "_MAIN_LIGHT_SHADOWS_CASCADE", "_SHADOWS_SOFT" } :
+                        s.Pipeline == "URP" && p.LightMode == "DepthNormals" ? new[] { "_GBUFFER_NORMALS_OCT" } :
+                        s.Pipeline == "Builtin" && p.LightMode == "ForwardBase" ? new[] { "SHADOWS_SCREEN" } :
+                        Array.Empty<string>();
+                    Assert.That(p.PipelineKeywords, Is.EquivalentTo(expected), $"{s} pass {p.Name}");
+                }
+            foreach (PassInfo p in _subShaders.Where(s => s.Pipeline == "URP").SelectMany(s => s.Passes).Where(p => p.LightMode == "UniversalForward"))
+            {
+                Assert.That(p.Pragmas.Any(a => a.SequenceEqual(new[] { "multi_compile", "_", "_MAIN_LIGHT_SHADOWS", "_MAIN_LIGHT_SHADOWS_CASCADE" })), Is.True,
+                    "URP forward: the main-light shadow keywords as one set");
+                Assert.That(p.Pragmas.Any(a => a.SequenceEqual(new[] { "multi_compile_fragment", "_", "_SHADOWS_SOFT" })), Is.True,
+                    "URP forward: _SHADOWS_SOFT in the fragment stage only");
+            }
+        }
+
+        /// <summary>
+        /// The material inspector's switches produce exactly the keywords the passes declare: each
+        /// [Toggle(KW)] names a declared keyword, and the debug KeywordEnum's keywords (property name,
+        /// '_', entry upper-cased, as Unity builds them) minus the None entry are the debug set.
+        /// </summary>
+        [Test]
+        public void MaterialSwitchesEnableTheDeclaredKeywords()
+        {
+            string text = StripComments(File.ReadAllText(PackageRoot.Combine("Shaders", "GregoryTerrain.shader")));
+            string properties = Blocks(text, "Properties").Single();
+            var declared = new HashSet<string>(_subShaders.SelectMany(s => s.Passes).SelectMany(p => p.Keywords));
+            var toggles = Regex.Matches(properties, @"\[Toggle\((\w+)\)\]").Select(m => m.Groups[1].Value).ToList();
+            Assert.That(toggles, Is.EquivalentTo(new[] { "GT_NOISE", "GT_HEIGHT_COLOR" }));
+            foreach (string k in toggles) Assert.That(declared, Does.Contain(k));
+
+            var enums = Regex.Matches(properties, @"\[KeywordEnum\(([^)]*)\)\]\s*(\w+)").ToList();
+            Assert.That(enums.Count, Is.EqualTo(1), "one KeywordEnum: the debug view");
+            string property = enums[0].Groups[2].Value;
+            var entries = enums[0].Groups[1].Value.Split(',').Select(e => e.Trim()).ToList();
+            Assert.That(entries[0], Is.EqualTo("None"), "the first entry (the default, 0) is no debug view");
+            var produced = entries.Skip(1).Select(e => (property + "_" + e.Replace(' ', '_')).ToUpperInvariant()).ToList();
+            Assert.That(produced, Is.EqualTo(new[] { "GT_DEBUG_NORMALS", "GT_DEBUG_PATCH_ID", "GT_DEBUG_TESS_FACTOR" }));
+            Assert.That(declared, Does.Not.Contain((property + "_None").ToUpperInvariant()), "None maps to the '_' variant");
+            Assert.That(Regex.IsMatch(properties, @"\[Toggle\(GT_DEBUG"), Is.False, "no separate debug toggles (two at once would be a variant that does not exist)");
+        }
+
+        /// <summary>
+        /// Each SubShader says which draw it expects ("GregoryTerrainDraw" tag); the renderer reads the
+        /// tag of the SubShader Unity picked (Material.GetTag without fallbacks), so draw and SubShader
+        /// cannot disagree (e.g. a device with compute-based tessellation only, where Unity skips the
+        /// tessHW SubShader).
+        /// </summary>
+        [Test]
+        public void EverySubShaderNamesTheDrawTheRendererMustIssue()
+        {
+            foreach (SubShaderInfo s in _subShaders)
+            {
+                string tag = Regex.Match(OuterPart(s.Body), "\"GregoryTerrainDraw\"\\s*=\\s*\"(\\w+)\"").Groups[1].Value;
+                Assert.That(tag, Is.EqualTo(s.Tessellated ? "Tessellated" : "Fallback"), s.ToString());
+            }
+            string renderer = File.ReadAllText(PackageRoot.Combine("Runtime", "GregoryTerrainRenderer.cs"));
+            Assert.That(renderer, Does.Contain("\"GregoryTerrainDraw\"").And.Contain("GetTag("), "the renderer reads the tag");
+            Assert.That(renderer, Does.Contain("\"Fallback\""));
         }
 
         [Test]

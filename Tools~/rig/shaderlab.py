@@ -3,8 +3,9 @@
 
 For each SubShader and Pass, the HLSLPROGRAM block is cut out as it is and compiled with glslang's
 HLSL front end, once per stage its #pragma lines name (vertex -> vert, hull -> tesc, domain -> tese,
-fragment -> frag), for the keyword combinations its shader_feature_local lines allow (none, each
-keyword alone, all effect keywords together). Then spirv-val.
+fragment -> frag), for the keyword combinations its shader_feature / multi_compile lines allow
+(none, each keyword alone, all effect keywords together, the effects with one keyword of every
+other set). Then spirv-val.
 
 Includes: "Packages/com.gregoryterrain.tessellation/..." resolves to this package (a link in a
 temporary include root); Unity's own shader libraries (Built-in .cginc, URP, HDRP) resolve to the
@@ -28,7 +29,7 @@ MOCK_DIR = os.path.join(RIG_DIR, "unity-mock")
 PACKAGE_NAME = "com.gregoryterrain.tessellation"
 
 PRAGMA_STAGES = {"vertex": "vert", "hull": "tesc", "domain": "tese", "fragment": "frag"}
-EFFECTS = ["GT_NOISE", "GT_HEIGHT_COLOR"]
+EFFECTS = ["GT_NOISE", "GT_HEIGHT_COLOR", "GT_SNOW"]
 
 
 def strip_comments(text):
@@ -83,16 +84,31 @@ def pragmas(program):
     return [l.strip()[len("#pragma"):].split() for l in program.splitlines() if l.strip().startswith("#pragma")]
 
 
+# Defines Unity's compiler sets per platform rather than per keyword, compiled together with the
+# keyword whose code path they change (Built-in: mobile shadows read the shadow map directly).
+PLATFORM_DEFINES = {"SHADOWS_SCREEN": ["UNITY_NO_SCREENSPACE_SHADOWS"]}
+
+KEYWORD_PRAGMA = re.compile(r"^(shader_feature|multi_compile)(_local)?(_vertex|_fragment|_hull|_domain)?$")
+
+
 def variants(program):
-    """Keyword sets to compile: none, each keyword alone, all effects together."""
-    keywords = []
+    """Keyword sets to compile: none, each keyword alone (plus the platform defines that change
+    its path), all effects together, and the effects with the first keyword of every other set."""
+    keywords, firsts = [], []
     for p in pragmas(program):
-        if p and p[0] in ("shader_feature_local", "shader_feature", "multi_compile_local", "multi_compile"):
-            keywords += [k for k in p[1:] if k != "_"]
+        if p and KEYWORD_PRAGMA.match(p[0]):
+            declared = [k for k in p[1:] if k != "_"]
+            keywords += declared
+            # Debug views replace the lighting, so they would hide the other sets' code paths.
+            if declared and not set(declared) & set(EFFECTS) and not declared[0].startswith("GT_DEBUG"):
+                firsts.append(declared[0])
     out = [[]] + [[k] for k in keywords]
+    out += [[k] + PLATFORM_DEFINES[k] for k in keywords if k in PLATFORM_DEFINES]
     effects = [k for k in EFFECTS if k in keywords]
     if len(effects) > 1:
         out.append(effects)
+    if effects and firsts:
+        out.append(effects + firsts)
     return out
 
 

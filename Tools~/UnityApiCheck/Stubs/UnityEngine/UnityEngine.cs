@@ -199,6 +199,7 @@ namespace UnityEngine
     {
         public Material(Shader shader) { }                                            // SR:Material-ctor
         public Shader shader { get; set; }                                            // SR:Material-shader
+        public string GetTag(string tag, bool searchFallbacks, string defaultValue) => defaultValue; // SR:Material.GetTag
         public bool IsKeywordEnabled(string keyword) => false;                        // SR:Material.IsKeywordEnabled
         public void EnableKeyword(string keyword) { }                                 // SR:Material.EnableKeyword
         public void DisableKeyword(string keyword) { }                                // SR:Material.DisableKeyword

@@ -9,6 +9,7 @@ float3 _WorldSpaceCameraPos;
 float4 _ScreenParams;
 float4 _WorldSpaceLightPos0;
 float4 unity_LightShadowBias;
+float4x4 unity_WorldToShadow[4];
 #define UNITY_REVERSED_Z 1
 #define UNITY_NEAR_CLIP_VALUE (1.0)
 // UnityCG.cginc

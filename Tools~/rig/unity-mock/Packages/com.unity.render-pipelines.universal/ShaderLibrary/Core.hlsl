@@ -12,4 +12,20 @@ float4 _ScreenParams;
 float4x4 GetWorldToHClipMatrix() { return UNITY_MATRIX_VP; }
 float4 TransformWorldToHClip(float3 positionWS) { return mul(GetWorldToHClipMatrix(), float4(positionWS, 1.0)); }
 float3 GetCameraPositionWS() { return _WorldSpaceCameraPos; }
+// Core.hlsl
+float3 NormalizeNormalPerPixel(float3 normalWS) { return normalize(normalWS); }
+// SRP Core Packing.hlsl (included by Core.hlsl): octahedral encoding and 2 x 12 bits in 3 x 8.
+float2 PackNormalOctQuadEncode(float3 n)
+{
+    n *= rcp(max(dot(abs(n), 1.0), 1e-6));
+    float t = saturate(-n.z);
+    return n.xy + float2(n.x >= 0.0 ? t : -t, n.y >= 0.0 ? t : -t);
+}
+float3 PackFloat2To888(float2 f)
+{
+    uint2 i = (uint2)(f * 4095.5);
+    uint2 hi = i >> 8;
+    uint2 lo = i & 255;
+    return float3(lo, hi.x | (hi.y << 4)) / 255.0;
+}
 #endif
