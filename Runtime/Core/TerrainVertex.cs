@@ -135,7 +135,7 @@ namespace GregoryTerrain
         /// <summary>
         /// The surface position a vertex outputs before noise: S(q), or, while a range origin is set
         /// (deep zoom), S(q) - S(O) from precise differences (<see cref="RelativeSurface"/>); the
-        /// renderer adds S(O) (and p(O) with noise, see <see cref="OutputOffset"/>) in the object-to-world transform. Paper mode always outputs S(q).
+        /// renderer adds S(O) (and p(O) with noise, see <see cref="OutputOffset(PatchGrid, TerrainParams, TerrainKeywords)"/>) in the object-to-world transform. Paper mode always outputs S(q).
         /// Mirrors HLSL <c>OutputSurfacePosition</c>.
         /// </summary>
         public static Float3 OutputSurfacePosition(TerrainInputs inputs, TerrainSurfacePoint s, TerrainKeywords keywords)
@@ -149,21 +149,32 @@ namespace GregoryTerrain
         /// What the renderer adds back to a vertex's output position in the object-to-world transform,
         /// in double (terrain space): while a range origin is set (tile mode), S(O) and, with
         /// <see cref="TerrainKeywords.Noise"/>, the noise height p(O) at the frame's octave count
-        /// (<see cref="TerrainInputs.NoiseOctaveCount"/>; it changes with the range width, so a
+        /// (<see cref="TerrainInputs.NoiseOctaveCount()"/>; it changes with the range width, so a
         /// renderer with noise recomputes it when the range changes); else zero. Reference positions
         /// minus this are comparable with a vertex's output.
         /// </summary>
         public static Double3 OutputOffset(TerrainInputs inputs, PatchGrid grid, TerrainKeywords keywords)
         {
             if (inputs == null) throw new ArgumentNullException(nameof(inputs));
-            Float4 rangeOriginF = inputs.Params.rangeOrigin;
+            return OutputOffset(grid, inputs.Params, keywords);
+        }
+
+        /// <summary>
+        /// <see cref="OutputOffset(TerrainInputs, PatchGrid, TerrainKeywords)"/> from the constant block
+        /// alone (what a renderer holds): <paramref name="p"/>'s <c>_RangeOrigin</c>, noise and octave count.
+        /// </summary>
+        public static Double3 OutputOffset(PatchGrid grid, TerrainParams p, TerrainKeywords keywords)
+        {
+            if (grid == null) throw new ArgumentNullException(nameof(grid));
+            Float4 rangeOriginF = p.rangeOrigin;
             if ((keywords & TerrainKeywords.PaperMode) != 0 || !RelativeSurface.IsActive(rangeOriginF)) return Double3.zero;
             var origin = new RangeOrigin { hi = new Float2(rangeOriginF.x, rangeOriginF.y), lo = new Float2(rangeOriginF.z, rangeOriginF.w) };
             Double3 s = RelativeSurface.ReferencePoint(grid, origin);
             if ((keywords & TerrainKeywords.Noise) != 0)
             {
                 Double2 o = origin.Value;
-                s.z += OctaveNoise.Evaluate(o.x, o.y, inputs.NoiseSettingsStruct(), inputs.NoiseOctaveCount(), out _);
+                var noise = new NoiseSettings(p.noise.x, p.noise.y, p.noise.z, p.noise.w, (int)p.noiseOctaves.x);
+                s.z += OctaveNoise.Evaluate(o.x, o.y, noise, TerrainInputs.NoiseOctaveCount(p), out _);
             }
             return s;
         }
@@ -212,7 +223,7 @@ namespace GregoryTerrain
         /// The same surface in double at the exact global point <paramref name="q"/> (terrain space):
         /// Gregory patch of the grid (double control points, double lines), plus, when
         /// <paramref name="noise"/> is given, its octave noise with <paramref name="octaveCount"/>
-        /// octaves (pass the float path's <see cref="TerrainInputs.NoiseOctaveCount"/> so the two
+        /// octaves (pass the float path's <see cref="TerrainInputs.NoiseOctaveCount()"/> so the two
         /// differ only in arithmetic). Position (x, y, z) and unit normal.
         /// </summary>
         public static void Reference(PatchGrid grid, Double2 q, NoiseSettings? noise, double octaveCount,
