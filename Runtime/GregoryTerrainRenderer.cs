@@ -147,6 +147,8 @@ namespace GregoryTerrain
         PatchGrid _uploadedPatchGrid;
         TerrainRange _range = TerrainRange.full;
         readonly RangeOriginTracker _origin = new RangeOriginTracker();
+        TerrainParams _params;          // the constants last sent (range and origin kept current)
+        Double3 _outputOffset;          // terrain space; what the deep-zoom relative output leaves out
         float _gridMinZ, _gridMaxZ;
         Material _drawModeMaterial;
         Shader _drawModeShader;
@@ -264,13 +266,14 @@ namespace GregoryTerrain
             if (_settingsDirty)
             {
                 PushSettings(fallback);   // all nine TerrainParams float4, _Range and _RangeOrigin included
+                UpdateOutputOffset();
                 PushMatrices();
                 _settingsDirty = false;
             }
             else
             {
-                if (transform.hasChanged) PushMatrices();
                 PushRange();
+                if (UpdateOutputOffset() || transform.hasChanged) PushMatrices();
             }
             if (_settingsError != null) return;   // logged once; drawn again after the next valid change
 
@@ -300,6 +303,8 @@ namespace GregoryTerrain
         {
             RangeMapping.EncodeRange(_range, _origin.Origin, out Float4 r, out Float4 o);
             _props.SetVector(Ids.Params[Ids.RangeIndex], ToVector(r));
+            _params.range = r;
+            _params.rangeOrigin = o;
             if (_originDirty)
             {
                 _props.SetVector(Ids.Params[Ids.RangeOriginIndex], ToVector(o));
@@ -332,6 +337,7 @@ namespace GregoryTerrain
                 return;
             }
             _settingsError = null;
+            _params = p;
             for (int k = 0; k < TerrainParams.Float4Count; k++)
                 _props.SetVector(Ids.Params[k], ToVector(p[k]));
             _originDirty = false;
@@ -357,13 +363,45 @@ namespace GregoryTerrain
         }
 
         /// <summary>
+        /// While a range origin is set, the shaders output <c>S(q) - S(O)</c> (and the noise as
+        /// <c>p(q) - p(O)</c>; internals.md, "Deep-zoom output"): the part left out,
+        /// <see cref="TerrainVertex.OutputOffset(PatchGrid, TerrainParams, TerrainKeywords)"/>, in double.
+        /// It changes on a re-snap, and with GT_NOISE also with the range width (the octave count).
+        /// Returns true when it changed (the matrices must be sent again).
+        /// </summary>
+        bool UpdateOutputOffset()
+        {
+            var keywords = material != null && material.IsKeywordEnabled("GT_NOISE") ? TerrainKeywords.Noise : TerrainKeywords.None;
+            Double3 offset = _uploadedPatchGrid == null ? Double3.zero : TerrainVertex.OutputOffset(_uploadedPatchGrid, _params, keywords);
+            if (offset.x == _outputOffset.x && offset.y == _outputOffset.y && offset.z == _outputOffset.z) return false;
+            _outputOffset = offset;
+            return true;
+        }
+
+        /// <summary>
         /// RenderPrimitives has no object matrix (the shader gets none from Unity), so the adapters
-        /// read ours. Sent when the Transform changes only.
+        /// read ours: the Transform's, with the deep-zoom output offset added in object space first
+        /// (object = terrain (x, z, y)): <c>localToWorld * Translate(t)</c> and
+        /// <c>Translate(-t) * worldToLocal</c>, written into the translation entries. Sent when the
+        /// Transform or the offset changes only.
         /// </summary>
         void PushMatrices()
         {
-            _props.SetMatrix(Ids.ObjectToWorld, transform.localToWorldMatrix);
-            _props.SetMatrix(Ids.WorldToObject, transform.worldToLocalMatrix);
+            Matrix4x4 m = transform.localToWorldMatrix, w = transform.worldToLocalMatrix;
+            double tx = _outputOffset.x, ty = _outputOffset.z, tz = _outputOffset.y;   // terrain -> object (x, z, y)
+            if (tx != 0.0 || ty != 0.0 || tz != 0.0)
+            {
+                // M T(t): the translation column gains M's 3x3 times t (summed in double).
+                m.m03 = (float)(m.m03 + m.m00 * tx + m.m01 * ty + m.m02 * tz);
+                m.m13 = (float)(m.m13 + m.m10 * tx + m.m11 * ty + m.m12 * tz);
+                m.m23 = (float)(m.m23 + m.m20 * tx + m.m21 * ty + m.m22 * tz);
+                // T(-t) W for an affine W (last row 0 0 0 1): the translation entries lose t.
+                w.m03 = (float)(w.m03 - tx);
+                w.m13 = (float)(w.m13 - ty);
+                w.m23 = (float)(w.m23 - tz);
+            }
+            _props.SetMatrix(Ids.ObjectToWorld, m);
+            _props.SetMatrix(Ids.WorldToObject, w);
             transform.hasChanged = false;
         }
 

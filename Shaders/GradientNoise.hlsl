@@ -50,13 +50,9 @@ float2 GradientNoiseStreamOffset(uint stream)
 float GradientNoiseFade(float t) { return t * t * t * (t * (t * 6.0 - 15.0) + 10.0); }
 float GradientNoiseFadeDerivative(float t) { float k = t * (t - 1.0); return 30.0 * k * k; }
 
-// Noise in lattice cell `cell` at fraction f (normally in [0, 1]); gradient w.r.t. the lattice coordinate.
-float GradientNoiseCell(int2 cell, float2 f, out float2 gradient)
+// GradientNoiseCell once the cell's four corner gradients are known.
+float GradientNoiseCorners(float2 g00, float2 g10, float2 g01, float2 g11, float2 f, out float2 gradient)
 {
-    float2 g00 = GradientNoiseGradient(GradientNoiseHash2(cell));
-    float2 g10 = GradientNoiseGradient(GradientNoiseHash2(cell + int2(1, 0)));
-    float2 g01 = GradientNoiseGradient(GradientNoiseHash2(cell + int2(0, 1)));
-    float2 g11 = GradientNoiseGradient(GradientNoiseHash2(cell + int2(1, 1)));
     float2 h = f - 1.0;
     float n00 = g00.x * f.x + g00.y * f.y;
     float n10 = g10.x * h.x + g10.y * f.y;
@@ -70,6 +66,55 @@ float GradientNoiseCell(int2 cell, float2 f, out float2 gradient)
              + float2(du * (k1 + v * k3), dv * (k2 + u * k3));
     gradient = GT_NOISE_SCALE * d;
     return GT_NOISE_SCALE * n;
+}
+
+// Noise in lattice cell `cell` at fraction f (normally in [0, 1]); gradient w.r.t. the lattice coordinate.
+float GradientNoiseCell(int2 cell, float2 f, out float2 gradient)
+{
+    float2 g00 = GradientNoiseGradient(GradientNoiseHash2(cell));
+    float2 g10 = GradientNoiseGradient(GradientNoiseHash2(cell + int2(1, 0)));
+    float2 g01 = GradientNoiseGradient(GradientNoiseHash2(cell + int2(0, 1)));
+    float2 g11 = GradientNoiseGradient(GradientNoiseHash2(cell + int2(1, 1)));
+    return GradientNoiseCorners(g00, g10, g01, g11, f, gradient);
+}
+
+// Fade(t + s) - Fade(t) as the quintic's exact Taylor polynomial in the step s: every term carries
+// a factor s, so a tiny step keeps float's relative precision (see the C#).
+float GradientNoiseFadeStep(float t, float s)
+{
+    float f1 = GradientNoiseFadeDerivative(t);        // 30 t^2 (t - 1)^2
+    float f2 = 30.0 * t * ((2.0 * t - 1.0) * (t - 1.0));
+    float f3 = (60.0 * t - 60.0) * t + 10.0;
+    float f4 = 30.0 * t - 15.0;
+    return s * (f1 + s * (f2 + s * (f3 + s * (f4 + s * 6.0))));
+}
+
+// K(cell, f + step) - K(cell, f) within one cell's polynomial from the precise step (lattice units):
+// linear ramps differ by g . step, products by dA B1 + A0 dB, fades by GradientNoiseFadeStep.
+// gradient: at f + step (lattice units); baseValue: K at f (plain float).
+float GradientNoiseCellDifference(int2 cell, float2 f, float2 step, out float2 gradient, out float baseValue)
+{
+    float2 g00 = GradientNoiseGradient(GradientNoiseHash2(cell));
+    float2 g10 = GradientNoiseGradient(GradientNoiseHash2(cell + int2(1, 0)));
+    float2 g01 = GradientNoiseGradient(GradientNoiseHash2(cell + int2(0, 1)));
+    float2 g11 = GradientNoiseGradient(GradientNoiseHash2(cell + int2(1, 1)));
+    float2 h = f - 1.0;
+    float n00 = g00.x * f.x + g00.y * f.y;
+    float n10 = g10.x * h.x + g10.y * f.y;
+    float n01 = g01.x * f.x + g01.y * h.y;
+    float n11 = g11.x * h.x + g11.y * h.y;
+    float d00 = g00.x * step.x + g00.y * step.y, d10 = g10.x * step.x + g10.y * step.y;
+    float d01 = g01.x * step.x + g01.y * step.y, d11 = g11.x * step.x + g11.y * step.y;
+    float k1 = n10 - n00, k2 = n01 - n00, k3 = (n00 - n10) - (n01 - n11);
+    float e1 = d10 - d00, e2 = d01 - d00, e3 = (d00 - d10) - (d01 - d11);
+    float u0 = GradientNoiseFade(f.x), v0 = GradientNoiseFade(f.y);
+    float du = GradientNoiseFadeStep(f.x, step.x), dv = GradientNoiseFadeStep(f.y, step.y);
+    float v1 = v0 + dv, k31 = k3 + e3;
+    float dn = d00 + (du * (k1 + e1) + u0 * e1) + (dv * (k2 + e2) + v0 * e2)
+             + (du * v1 * k31 + u0 * (dv * k31 + v0 * e3));
+    baseValue = GT_NOISE_SCALE * (n00 + u0 * k1 + v0 * k2 + u0 * v0 * k3);
+    GradientNoiseCorners(g00, g10, g01, g11, f + step, gradient);
+    return GT_NOISE_SCALE * dn;
 }
 
 // Noise at x (|x| < 2^31; at |x| ~ 1e6 a float's fraction has only 4 bits: use GradientNoiseAtPoint).

@@ -32,6 +32,58 @@ float OctaveNoise(TerrainPoint p, float4 noise, float octaveCount, out float2 gr
     return noise.x * n;
 }
 
+// One octave of OctaveNoiseRelative: K(f q + offset) - K(f O + offset) from the precise q - O,
+// gradient at q (lattice units). O's cell and fraction are the same for every vertex; q in O's
+// cell: one precise cell difference; in a neighbouring cell: through r1 = O clamped into q's cell
+// (the noise is C2 across cell lines); farther: two absolute values (see the C#).
+float OctaveNoiseDifference(TerrainPoint q, TerrainPoint origin, float2 qMinusOrigin, float frequency, float2 offset, out float2 gradient)
+{
+    int2 c0;
+    float2 f0;
+    GradientNoiseSplitLattice(origin.originHi.x, origin.local.x, frequency, offset.x, c0.x, f0.x);
+    GradientNoiseSplitLattice(origin.originHi.y, origin.local.y, frequency, offset.y, c0.y, f0.y);
+    float2 s = qMinusOrigin * frequency;      // the lattice step
+    int2 m = int2(floor(f0 + s));             // q's cell relative to O's
+    float unused;
+    if (all(m == 0))
+        return GradientNoiseCellDifference(c0, f0, s, gradient, unused);
+    if (all(abs(m) <= 1))
+    {
+        float2 r = float2(m.x == 0 ? f0.x : (m.x > 0 ? 1.0 : 0.0), m.y == 0 ? f0.y : (m.y > 0 ? 1.0 : 0.0));
+        float2 t = r - f0;                    // O -> r1
+        float2 g0;
+        float toR1 = GradientNoiseCellDifference(c0, f0, t, g0, unused);
+        float fromR1 = GradientNoiseCellDifference(c0 + m, r - float2(m), s - t, gradient, unused);
+        return fromR1 + toR1;
+    }
+    float2 g1;
+    float atQ = GradientNoiseAtPoint(q, frequency, offset, gradient);
+    return atQ - GradientNoiseCell(c0, f0, g1);
+}
+
+// Deep-zoom noise height p(q) - p(O), O the range origin, from the precise difference qMinusOrigin
+// (TerrainPointDifference); the renderer adds p(O) back (precision.md). Mirrors OctaveNoise.Relative.
+float OctaveNoiseRelative(TerrainPoint q, TerrainPoint origin, float2 qMinusOrigin, float4 noise, float octaveCount, out float2 gradient)
+{
+    float f = noise.y, w = 1.0, invBeta = 1.0 / noise.w;
+    float n = 0.0;
+    float2 g = 0.0;
+    [loop] for (uint k = 0u; k < GT_MAX_OCTAVES; ++k)
+    {
+        float fade = saturate(octaveCount - float(k));
+        if (fade <= 0.0) break;
+        float2 gk;
+        float nk = OctaveNoiseDifference(q, origin, qMinusOrigin, f, GradientNoiseStreamOffset(k), gk);
+        float wk = w * fade;
+        n += wk * nk;
+        g += gk * (wk * f);
+        f *= noise.z;
+        w *= invBeta;
+    }
+    gradient = g * noise.x;
+    return noise.x * n;
+}
+
 // Octaves whose wavelength 1 / (frequency alpha^k) is at least two vertex spacings
 // (2 rangeWidth / verticesAcross): 1 + log_alpha(verticesAcross / (2 rangeWidth frequency)),
 // clamped to [0, maxOctaves]. Uniform per frame, so every vertex uses the same count.

@@ -144,8 +144,24 @@ TerrainVaryings TerrainVertex(uint drawPatch, float2 tess, float tessFactor)
     #endif
     float octaves = OctaveCount(RangeWidth(), NoiseVerticesAcross(), NoiseSettings(), MaxNoiseOctaves());
     float2 gradient;   // d(noise)/dq
-    float noiseHeight = OctaveNoise(noisePoint, NoiseSettings(), octaves, gradient);
-    position.z += noiseHeight;
+    float noiseHeight = 0.0;   // the absolute p(q): the height of the plain path, and the height colour
+    #if !defined(GT_PAPER_MODE)
+    // Deep zoom: p(q) - p(O) from precise differences, like the surface; the renderer adds p(O).
+    [branch] if (RelativeSurfaceIsActive(_RangeOrigin))
+    {
+        TerrainPoint origin = MakeTerrainPoint(_RangeOrigin.xy, _RangeOrigin.zw);
+        position.z += OctaveNoiseRelative(s.q, origin, TerrainPointDifference(s.q, origin), NoiseSettings(), octaves, gradient);
+        #if defined(GT_HEIGHT_COLOR)
+        float2 colourGradient;
+        noiseHeight = OctaveNoise(noisePoint, NoiseSettings(), octaves, colourGradient);
+        #endif
+    }
+    else
+    #endif
+    {
+        noiseHeight = OctaveNoise(noisePoint, NoiseSettings(), octaves, gradient);
+        position.z += noiseHeight;
+    }
     // q = (a + u (e - a), b + v (f - b)), so the chain rule scales the gradient by the region size.
     float2 regionSize = s.region.zw - s.region.xy;
     dPdu.z += gradient.x * regionSize.x;

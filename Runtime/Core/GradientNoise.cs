@@ -97,6 +97,12 @@ namespace GregoryTerrain
             Float2 g10 = Gradient(Hash(unchecked(ix + 1), iy));
             Float2 g01 = Gradient(Hash(ix, unchecked(iy + 1)));
             Float2 g11 = Gradient(Hash(unchecked(ix + 1), unchecked(iy + 1)));
+            return EvaluateCorners(g00, g10, g01, g11, fx, fy, out gradient);
+        }
+
+        /// <summary><see cref="EvaluateCell"/> once the cell's four corner gradients are known.</summary>
+        static float EvaluateCorners(Float2 g00, Float2 g10, Float2 g01, Float2 g11, float fx, float fy, out Float2 gradient)
+        {
             float gx = fx - 1f, gy = fy - 1f;
             // Each corner's linear ramp g . (x - corner).
             float n00 = g00.x * fx + g00.y * fy;
@@ -114,6 +120,55 @@ namespace GregoryTerrain
                      + dv * (k2 + u * k3);
             gradient = new Float2(Scale * dx, Scale * dy);
             return Scale * n;
+        }
+
+        /// <summary>
+        /// <c>Fade(t + s) - Fade(t)</c> as its exact Taylor polynomial in the step s (Fade is a quintic):
+        /// <c>s (F1 + s (F2/2 + s (F3/6 + s (F4/24 + 6 s))))</c>, Fn the n-th derivative at t. Every
+        /// term carries a factor s, so a tiny step keeps float's relative precision instead of the
+        /// ~6e-8 absolute error of the difference of two rounded fades.
+        /// </summary>
+        public static float FadeStep(float t, float s)
+        {
+            float f1 = FadeDerivative(t);                        // 30 t^2 (t - 1)^2
+            float f2 = 30f * t * ((2f * t - 1f) * (t - 1f));     // F2/2 = 60 t^3 - 90 t^2 + 30 t
+            float f3 = (60f * t - 60f) * t + 10f;                // F3/6
+            float f4 = 30f * t - 15f;                            // F4/24
+            return s * (f1 + s * (f2 + s * (f3 + s * (f4 + s * 6f))));
+        }
+
+        /// <summary>
+        /// <c>K(cell, f + step) - K(cell, f)</c> within one lattice cell's polynomial, from the precise
+        /// step (lattice units, per axis; f + step may leave [0, 1] slightly: the polynomial goes on
+        /// smoothly). The corner ramps are linear, so their differences are <c>g . step</c> exactly;
+        /// products use <c>A1 B1 - A0 B0 = dA B1 + A0 dB</c>; fades use <see cref="FadeStep"/>.
+        /// <paramref name="gradient"/>: d K / d(lattice) at <c>f + step</c>; <paramref name="baseValue"/>:
+        /// K at f (plain float, for uses that do not need the precision).
+        /// </summary>
+        public static float CellDifference(int ix, int iy, float fx, float fy, float sx, float sy, out Float2 gradient, out float baseValue)
+        {
+            Float2 g00 = Gradient(Hash(ix, iy));
+            Float2 g10 = Gradient(Hash(unchecked(ix + 1), iy));
+            Float2 g01 = Gradient(Hash(ix, unchecked(iy + 1)));
+            Float2 g11 = Gradient(Hash(unchecked(ix + 1), unchecked(iy + 1)));
+            float gx = fx - 1f, gy = fy - 1f;
+            float n00 = g00.x * fx + g00.y * fy;
+            float n10 = g10.x * gx + g10.y * fy;
+            float n01 = g01.x * fx + g01.y * gy;
+            float n11 = g11.x * gx + g11.y * gy;
+            float d00 = g00.x * sx + g00.y * sy, d10 = g10.x * sx + g10.y * sy;
+            float d01 = g01.x * sx + g01.y * sy, d11 = g11.x * sx + g11.y * sy;
+            float k1 = n10 - n00, k2 = n01 - n00, k3 = (n00 - n10) - (n01 - n11);
+            float e1 = d10 - d00, e2 = d01 - d00, e3 = (d00 - d10) - (d01 - d11);   // steps of k1, k2, k3
+            float u0 = Fade(fx), v0 = Fade(fy);
+            float du = FadeStep(fx, sx), dv = FadeStep(fy, sy);
+            float v1 = v0 + dv, k31 = k3 + e3;
+            // n = n00 + u k1 + v k2 + u v k3, term by term.
+            float dn = d00 + (du * (k1 + e1) + u0 * e1) + (dv * (k2 + e2) + v0 * e2)
+                     + (du * v1 * k31 + u0 * (dv * k31 + v0 * e3));
+            baseValue = Scale * (n00 + u0 * k1 + v0 * k2 + u0 * v0 * k3);
+            EvaluateCorners(g00, g10, g01, g11, fx + sx, fy + sy, out gradient);
+            return Scale * dn;
         }
 
         /// <summary>

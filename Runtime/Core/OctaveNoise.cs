@@ -41,6 +41,71 @@ namespace GregoryTerrain
             return settings.amplitude * n;
         }
 
+        /// <summary>
+        /// The deep-zoom noise height <c>p(q) - p(O)</c> (precision.md), O the range origin, from the
+        /// precise difference <paramref name="qMinusOrigin"/> = q - O (<c>RelativeSurface.Difference</c>),
+        /// never as the difference of two absolute floats (those resolve only ~6e-8 of the amplitude,
+        /// 0.4 px at a range width of 1e-6). Per octave, O's lattice point is split into cell c0 and
+        /// fraction f0 (<see cref="GradientNoise.SplitLattice"/>, the same for every vertex of a frame)
+        /// and the lattice step is <c>delta = f_k (q - O)</c>:
+        /// <list type="bullet">
+        /// <item>q in O's cell: one <see cref="GradientNoise.CellDifference"/> from f0 by delta.</item>
+        /// <item>q in a neighbouring cell c0 + m (|m| &lt;= 1 per axis): through r1, O clamped into q's
+        /// cell: <c>[K_c(q) - K_c(r1)] + [K_c0(r1) - K_c0(O)]</c>; the two steps add up to delta, and the
+        /// noise is C2 across cell lines, so where exactly r1 sits on the line does not matter.</item>
+        /// <item>farther: the two absolute values (this octave's cells are then smaller than the range,
+        /// and with beta = alpha its weight makes the rounding as small in pixels as the cells are).</item>
+        /// </list>
+        /// Depends on q and per-frame constants only (shared tile edges stay bit-identical).
+        /// <paramref name="gradient"/> is d p / d q at q, as from <see cref="Evaluate(TerrainPoint, NoiseSettings, float, out Float2)"/>.
+        /// Mirrors HLSL <c>OctaveNoiseRelative</c>; the renderer adds p(O) (double) back.
+        /// </summary>
+        public static float Relative(TerrainPoint q, TerrainPoint origin, Float2 qMinusOrigin, NoiseSettings settings, float octaveCount, out Float2 gradient)
+        {
+            settings.Validate(nameof(settings));
+            if (float.IsNaN(octaveCount)) throw new ArgumentException("octaveCount (NaN) must be a number", nameof(octaveCount));
+            float count = GMath.clamp(octaveCount, 0f, settings.octaves);
+            float f = settings.frequency, w = 1f, invBeta = 1f / settings.beta;
+            float n = 0f;
+            var g = new Float2(0f, 0f);
+            for (int k = 0; k < settings.octaves; k++)
+            {
+                float fade = GMath.saturate(count - k);
+                if (fade <= 0f) break;
+                Float2 offset = GradientNoise.StreamOffset((uint)k);
+                float nk = OctaveDifference(q, origin, qMinusOrigin, f, offset, out Float2 gk);
+                float wk = w * fade;
+                n += wk * nk;
+                g += gk * (wk * f);
+                f *= settings.alpha;
+                w *= invBeta;
+            }
+            gradient = g * settings.amplitude;
+            return settings.amplitude * n;
+        }
+
+        /// <summary>One octave of <see cref="Relative"/>: <c>K(f q + offset) - K(f O + offset)</c>, gradient at q (lattice units).</summary>
+        public static float OctaveDifference(TerrainPoint q, TerrainPoint origin, Float2 qMinusOrigin, float frequency, Float2 offset, out Float2 gradient)
+        {
+            GradientNoise.SplitLattice(origin.originHi.x, origin.local.x, frequency, offset.x, out int cx, out float fx);
+            GradientNoise.SplitLattice(origin.originHi.y, origin.local.y, frequency, offset.y, out int cy, out float fy);
+            float sx = qMinusOrigin.x * frequency, sy = qMinusOrigin.y * frequency;   // the lattice step
+            int mx = (int)GMath.floor(fx + sx), my = (int)GMath.floor(fy + sy);      // q's cell relative to O's
+            if (mx == 0 && my == 0)
+                return GradientNoise.CellDifference(cx, cy, fx, fy, sx, sy, out gradient, out _);
+            if (Math.Abs(mx) <= 1 && Math.Abs(my) <= 1)
+            {
+                // r1 = O clamped into q's cell, in O's cell frame: f0, or the line at 1 or 0.
+                float rx = mx == 0 ? fx : (mx > 0 ? 1f : 0f), ry = my == 0 ? fy : (my > 0 ? 1f : 0f);
+                float tx = rx - fx, ty = ry - fy;                                    // O -> r1
+                float toR1 = GradientNoise.CellDifference(cx, cy, fx, fy, tx, ty, out _, out _);
+                float fromR1 = GradientNoise.CellDifference(cx + mx, cy + my, rx - mx, ry - my, sx - tx, sy - ty, out gradient, out _);
+                return fromR1 + toR1;
+            }
+            float atQ = GradientNoise.AtPoint(q, frequency, offset, out gradient);
+            return atQ - GradientNoise.EvaluateCell(cx, cy, fx, fy, out _);
+        }
+
         /// <summary>The double reference at <c>(x, y)</c>, same octaves, frequencies and offsets.</summary>
         public static double Evaluate(double x, double y, NoiseSettings settings, double octaveCount, out Double2 gradient)
         {

@@ -123,12 +123,16 @@ namespace GregoryTerrain
         /// The GPU's log2 is an approximation of its own, so the two may differ in the last bits; only
         /// the faded last octave's weight feels it.
         /// </summary>
-        public float NoiseOctaveCount()
+        public float NoiseOctaveCount() => NoiseOctaveCount(Params);
+
+        /// <summary><see cref="NoiseOctaveCount()"/> of a constant block alone (no buffers needed).</summary>
+        public static float NoiseOctaveCount(TerrainParams p)
         {
-            Float4 noise = NoiseSettings();
-            float ratio = NoiseVerticesAcross() / (2f * RangeWidth() * noise.y);
+            Float4 noise = p.noise;
+            float across = p.noiseOctaves.y > 0f ? p.noiseOctaves.y : p.tess.x * p.tess.y;
+            float ratio = across / (2f * (p.range.z - p.range.x) * noise.y);
             float k = 1f + Log2(ratio) / Log2(noise.z);
-            return GMath.clamp(k, 0f, MaxNoiseOctaves());
+            return GMath.clamp(k, 0f, p.noiseOctaves.x);
         }
 
         /// <summary>The noise settings as <see cref="GregoryTerrain.NoiseSettings"/> (for the Core noise functions).</summary>

@@ -139,7 +139,7 @@ namespace GregoryTerrain
         /// <summary>
         /// The surface position a vertex outputs before noise: S(q), or, while a range origin is set
         /// (deep zoom), S(q) - S(O) from precise differences (<see cref="RelativeSurface"/>); the
-        /// renderer adds S(O) in the object-to-world transform. Paper mode always outputs S(q).
+        /// renderer adds S(O) (and p(O) with noise, see <see cref="OutputOffset(PatchGrid, TerrainParams, TerrainKeywords)"/>) in the object-to-world transform. Paper mode always outputs S(q).
         /// Mirrors HLSL <c>OutputSurfacePosition</c>.
         /// </summary>
         public static Float3 OutputSurfacePosition(TerrainInputs inputs, TerrainSurfacePoint s, TerrainKeywords keywords)
@@ -150,15 +150,37 @@ namespace GregoryTerrain
         }
 
         /// <summary>
-        /// What the renderer adds back to <see cref="OutputSurfacePosition"/> in the object-to-world
-        /// transform, in double: S(O) while a range origin is set, else zero. Reference positions
+        /// What the renderer adds back to a vertex's output position in the object-to-world transform,
+        /// in double (terrain space): while a range origin is set (tile mode), S(O) and, with
+        /// <see cref="TerrainKeywords.Noise"/>, the noise height p(O) at the frame's octave count
+        /// (<see cref="TerrainInputs.NoiseOctaveCount()"/>; it changes with the range width, so a
+        /// renderer with noise recomputes it when the range changes); else zero. Reference positions
         /// minus this are comparable with a vertex's output.
         /// </summary>
-        public static Double3 OutputOffset(PatchGrid grid, Float4 rangeOriginF, TerrainKeywords keywords)
+        public static Double3 OutputOffset(TerrainInputs inputs, PatchGrid grid, TerrainKeywords keywords)
         {
+            if (inputs == null) throw new ArgumentNullException(nameof(inputs));
+            return OutputOffset(grid, inputs.Params, keywords);
+        }
+
+        /// <summary>
+        /// <see cref="OutputOffset(TerrainInputs, PatchGrid, TerrainKeywords)"/> from the constant block
+        /// alone (what a renderer holds): <paramref name="p"/>'s <c>_RangeOrigin</c>, noise and octave count.
+        /// </summary>
+        public static Double3 OutputOffset(PatchGrid grid, TerrainParams p, TerrainKeywords keywords)
+        {
+            if (grid == null) throw new ArgumentNullException(nameof(grid));
+            Float4 rangeOriginF = p.rangeOrigin;
             if ((keywords & TerrainKeywords.PaperMode) != 0 || !RelativeSurface.IsActive(rangeOriginF)) return Double3.zero;
             var origin = new RangeOrigin { hi = new Float2(rangeOriginF.x, rangeOriginF.y), lo = new Float2(rangeOriginF.z, rangeOriginF.w) };
-            return RelativeSurface.ReferencePoint(grid, origin);
+            Double3 s = RelativeSurface.ReferencePoint(grid, origin);
+            if ((keywords & TerrainKeywords.Noise) != 0)
+            {
+                Double2 o = origin.Value;
+                var noise = new NoiseSettings(p.noise.x, p.noise.y, p.noise.z, p.noise.w, (int)p.noiseOctaves.x);
+                s.z += OctaveNoise.Evaluate(o.x, o.y, noise, TerrainInputs.NoiseOctaveCount(p), out _);
+            }
+            return s;
         }
 
         static TerrainVertexOutput Finish(TerrainInputs inputs, TerrainSurfacePoint s, TerrainKeywords keywords)
@@ -172,7 +194,17 @@ namespace GregoryTerrain
                 if ((keywords & TerrainKeywords.PaperMode) != 0 && !s.uv.Equals(RangeMapping.PatchLocalUV(s.q, s.region)))
                     noisePoint = new TerrainPoint(default, new Float2(GMath.lerp(s.region.x, s.region.z, s.uv.x), GMath.lerp(s.region.y, s.region.w, s.uv.y)));
                 float octaves = inputs.NoiseOctaveCount();
-                position.z += OctaveNoise.Evaluate(noisePoint, inputs.NoiseSettingsStruct(), octaves, out Float2 gradient);
+                Float4 originF = inputs.Params.rangeOrigin;
+                Float2 gradient;
+                if ((keywords & TerrainKeywords.PaperMode) == 0 && RelativeSurface.IsActive(originF))
+                {
+                    // Deep zoom: p(q) - p(O) from precise differences, like the surface (precision.md).
+                    TerrainPoint origin = RelativeSurface.OriginPoint(originF);
+                    position.z += OctaveNoise.Relative(s.q, origin, RelativeSurface.Difference(s.q, origin),
+                                                       inputs.NoiseSettingsStruct(), octaves, out gradient);
+                }
+                else
+                    position.z += OctaveNoise.Evaluate(noisePoint, inputs.NoiseSettingsStruct(), octaves, out gradient);
                 // q = (a + u (e - a), b + v (f - b)): the chain rule scales the gradient by the region size.
                 float sizeX = s.region.z - s.region.x, sizeY = s.region.w - s.region.y;
                 dPdu.z += gradient.x * sizeX;
@@ -214,7 +246,7 @@ namespace GregoryTerrain
         /// The same surface in double at the exact global point <paramref name="q"/> (terrain space):
         /// Gregory patch of the grid (double control points, double lines), plus, when
         /// <paramref name="noise"/> is given, its octave noise with <paramref name="octaveCount"/>
-        /// octaves (pass the float path's <see cref="TerrainInputs.NoiseOctaveCount"/> so the two
+        /// octaves (pass the float path's <see cref="TerrainInputs.NoiseOctaveCount()"/> so the two
         /// differ only in arithmetic). Position (x, y, z) and unit normal.
         /// </summary>
         public static void Reference(PatchGrid grid, Double2 q, NoiseSettings? noise, double octaveCount,

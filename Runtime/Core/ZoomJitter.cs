@@ -34,9 +34,12 @@ namespace GregoryTerrain
         /// width <paramref name="width"/> centred at <paramref name="center"/>, drawn as tiles x tiles
         /// tiles at integer factor <paramref name="factor"/>, panned by <paramref name="panPixels"/>
         /// per frame. <paramref name="largestError"/>: the largest |E| itself (accuracy, not jitter).
+        /// With <paramref name="noise"/> the height includes the octave noise (GT_NOISE) at the
+        /// frame-0 octave count for <c>tiles * factor</c> vertices across, kept for all frames; the
+        /// shipped path then adds p(O) (double) to the relative noise as the renderer does.
         /// </summary>
         public static double Measure(PatchGrid grid, VertexPath path, Double2 center, double width,
-            double pixels, int tiles, int factor, double panPixels, out double largestError)
+            double pixels, int tiles, int factor, double panPixels, out double largestError, NoiseSettings? noise = null)
         {
             if (grid == null) throw new ArgumentNullException(nameof(grid));
             if (!GMath.isfinite(width) || !(width > 0.0) || width > 1.0)
@@ -53,6 +56,13 @@ namespace GregoryTerrain
             if (path == VertexPath.OriginOnly && origin.Equals(RangeOrigin.zero)) origin = RangeOrigin.Snap(range0.Center);
             bool relative = path == VertexPath.Shipped && RelativeSurface.IsActive(origin.ToFloat4());
             Double3 reference = relative ? RelativeSurface.ReferencePoint(grid, origin) : default;
+            float octaves = 0f;
+            if (noise.HasValue)
+            {
+                octaves = (float)OctaveNoise.OctaveCount(width, tiles * factor, noise.Value);
+                Double2 o = origin.Value;
+                if (relative) reference.z += OctaveNoise.Evaluate(o.x, o.y, noise.Value, octaves, out _);
+            }
             double scale = pixels / width, pan = panPixels * width / pixels;
             int across = factor + 1, perFrame = tiles * tiles * across * across;
             var first = new Double3[perFrame];
@@ -69,9 +79,11 @@ namespace GregoryTerrain
                             for (int x = 0; x < across; x++, n++)
                             {
                                 float s = (float)x / factor, t = (float)y / factor;
-                                Double3 p = PathPosition(fgrid, relative, reference, rangeF, originF, tiles, ti, tj, s, t);
+                                Double3 p = PathPosition(fgrid, relative, reference, rangeF, originF, tiles, ti, tj, s, t, noise, octaves);
                                 Double2 q = RangeMapping.GlobalPoint(range, tiles, ti, tj, s, t);
-                                Double3 e = (p - RelativeSurface.SurfaceAt(grid, q)) * scale;
+                                Double3 truth = RelativeSurface.SurfaceAt(grid, q);
+                                if (noise.HasValue) truth.z += OctaveNoise.Evaluate(q.x, q.y, noise.Value, octaves, out _);
+                                Double3 e = (p - truth) * scale;
                                 if (!e.IsFinite) return double.PositiveInfinity;
                                 largestError = Math.Max(largestError, Length(e));
                                 if (frame == 0) first[n] = e;
@@ -83,12 +95,17 @@ namespace GregoryTerrain
 
         /// <summary>The vertex position a path computes, in double (relative output + its reference point).</summary>
         static Double3 PathPosition(TerrainInputs grid, bool relative, Double3 reference,
-            Float4 rangeF, Float4 originF, int tiles, int ti, int tj, float s, float t)
+            Float4 rangeF, Float4 originF, int tiles, int ti, int tj, float s, float t, NoiseSettings? noise, float octaves)
         {
             TerrainPoint q = RangeMapping.ToTerrainPoint(rangeF, originF, tiles, ti, tj, s, t);
             if (relative)
             {
                 Float3 d = RelativeSurface.FromOrigin(grid, q, originF);
+                if (noise.HasValue)
+                {
+                    TerrainPoint o = RelativeSurface.OriginPoint(originF);
+                    d.z += OctaveNoise.Relative(q, o, RelativeSurface.Difference(q, o), noise.Value, octaves, out _);
+                }
                 return reference + new Double3(d.x, d.y, d.z);
             }
             int patch = grid.FindPatch(RangeMapping.Approximate(q));
@@ -97,6 +114,7 @@ namespace GregoryTerrain
             Span<Float3> cp = stackalloc Float3[GregoryPatch.SlotCount];
             grid.LoadGregoryPatch(patch, cp);
             GregoryEval.Evaluate(cp, uv.x, uv.y, out Float3 position, out _, out _);
+            if (noise.HasValue) position.z += OctaveNoise.Evaluate(q, noise.Value, octaves, out _);
             return new Double3(position.x, position.y, position.z);
         }
 

@@ -93,5 +93,53 @@ namespace GregoryTerrain.Tests
                 if (width <= 1e-4) Assert.That(plain, Is.GreaterThan(1.0), "plain float should break down here");
             }
         }
+
+        [TestCase(1e-2)]
+        [TestCase(1e-4)]
+        [TestCase(1e-6)]
+        public void ShippedPathJitterWithNoiseStaysBelowHalfAPixel(double width)
+        {
+            // 6 octaves of amplitude 0.004 (the rig's noise); the shipped path adds the noise as
+            // p(q) - p(O) from precise lattice steps plus p(O) in double (OctaveNoise.Relative).
+            var noise = new NoiseSettings(0.004f, 16f, 2f, 2f, 6);
+            foreach (var c in new[] { new Double2(0.5137, 0.6262), new Double2(0.4, 0.6) })
+            {
+                double plain = ZoomJitter.Measure(Grid, VertexPath.Plain, c, width, 800, 4, 8, 0.25, out _, noise);
+                double shipped = ZoomJitter.Measure(Grid, VertexPath.Shipped, c, width, 800, 4, 8, 0.25, out double err, noise);
+                TestContext.Out.WriteLine($"jitter with noise width {width:G3} centre {c}: plain {plain:G3} px, shipped {shipped:G3} px (largest error {err:G3} px)");
+                Assert.That(shipped, Is.LessThan(0.5));
+                Assert.That(err, Is.LessThan(0.5));
+                if (width <= 1e-4) Assert.That(plain, Is.GreaterThan(1.0), "plain float should break down here");
+            }
+        }
+
+        [Test]
+        public void RelativeNoiseMatchesTheDoubleDifference()
+        {
+            // p(q) - p(O) in float against two double evaluations, at deep zoom, with O in the middle
+            // and q across lattice lines of the coarse octaves (range straddling x = 0.5 = cell 8 of 16).
+            var noise = new NoiseSettings(0.004f, 16f, 2f, 2f, 12);
+            double worst = 0, w = 1e-6;
+            foreach (var c in new[] { new Double2(0.5, 0.5 + 1e-7), new Double2(0.5137, 0.6262), new Double2(0.3, 0.7) })
+            {
+                var range = new TerrainRange(c.x - w / 2, c.y - w / 2, c.x + w / 2, c.y + w / 2);
+                RangeOrigin o = RangeOrigin.For(range);
+                RangeMapping.EncodeRange(range, o, out Float4 rf, out Float4 of);
+                TerrainPoint origin = RelativeSurface.OriginPoint(of);
+                for (int k = 0; k <= 16; k++)
+                    for (int l = 0; l <= 16; l++)
+                    {
+                        TerrainPoint q = RangeMapping.ToTerrainPoint(rf, of, 1, 0, 0, k / 16f, l / 16f);
+                        float f = OctaveNoise.Relative(q, origin, RelativeSurface.Difference(q, origin), noise, 12f, out Float2 g);
+                        Assert.That(GMath.isfinite(f) && g.IsFinite, Is.True);
+                        Double2 qd = q.ToDouble(), od = o.Value;
+                        double d = OctaveNoise.Evaluate(qd.x, qd.y, noise, 12.0, out _) - OctaveNoise.Evaluate(od.x, od.y, noise, 12.0, out _);
+                        worst = Math.Max(worst, Math.Abs(f - d));
+                    }
+            }
+            // 1e-5 of the width (0.008 px of an 800-px view); the absolute float noise errs by ~2e-10 (0.2 px)
+            TestContext.Out.WriteLine($"relative noise (12 octaves, width 1e-6): max |float - double difference| = {worst:G3} = {worst / w:G3} widths");
+            Assert.That(worst / w, Is.LessThan(1e-5));
+        }
     }
 }

@@ -25,6 +25,16 @@ namespace GregoryTerrain.Tests
         public static PatchGrid Fitted(int columns = 5, int rows = 5, int seed = 1, int samples = 33) =>
             HeightmapFitter.Fit(Heightmap(samples, seed), samples, samples, columns, rows).Grid;
 
+        /// <summary>A flat grid on the given lines with a smooth height 0.1 sin(7x) cos(5y) through its control points.</summary>
+        public static PatchGrid WithLines(double[] xl, double[] yl)
+        {
+            PatchGrid g = PatchGrid.CreateFlat(xl.Length - 1, yl.Length - 1, xl, yl);
+            foreach (GregoryPatch p in g.Patches)
+                for (int k = 0; k < 20; k++) p[k] = new Double3(p[k].x, p[k].y, 0.1 * Math.Sin(7 * p[k].x) * Math.Cos(5 * p[k].y));
+            g.Validate();
+            return g;
+        }
+
         /// <summary>The float evaluation path of the shaders at a global point (no noise): patch, u v, GregoryEval float.</summary>
         public static Float3 FloatSurface(TerrainInputs grid, TerrainPoint q)
         {

@@ -124,15 +124,6 @@ namespace GregoryTerrain.Tests
 
         // ------------------------------------------------------------------ regions
 
-        static PatchGrid GridWithLines(double[] xl, double[] yl)
-        {
-            PatchGrid g = PatchGrid.CreateFlat(xl.Length - 1, yl.Length - 1, xl, yl);
-            foreach (GregoryPatch p in g.Patches)
-                for (int k = 0; k < 20; k++) p[k] = new Double3(p[k].x, p[k].y, 0.1 * Math.Sin(7 * p[k].x) * Math.Cos(5 * p[k].y));
-            g.Validate();
-            return g;
-        }
-
         /// <summary>Float surface via the shader path vs double surface at points of a range; max error.</summary>
         static double RangeError(PatchGrid g, TerrainRange range, int tiles, int factor)
         {
@@ -157,7 +148,7 @@ namespace GregoryTerrain.Tests
         [Test]
         public void ExtremeAspectRatioRegion()
         {
-            PatchGrid g = GridWithLines(new[] { 0.0, 0.4, 0.401, 1.0 }, new[] { 0.0, 1.0 });   // 0.001 x 1
+            PatchGrid g = HardCaseGrids.WithLines(new[] { 0.0, 0.4, 0.401, 1.0 }, new[] { 0.0, 1.0 });   // 0.001 x 1
             double err = RangeError(g, new TerrainRange(0.399, 0.0, 0.402, 1.0), 4, 16);
             // float u in a 1e-3 wide patch: q resolves 3e-8, u 3e-5; the slope is 0.7, so 3e-8 in height, plus float rounding
             Report("region 1:1000 (height, float vs double)", 1e-7, err);
@@ -166,7 +157,7 @@ namespace GregoryTerrain.Tests
         [Test]
         public void TinyRegion()
         {
-            PatchGrid g = GridWithLines(new[] { 0.0, 0.5, 0.5 + 1e-6, 1.0 }, new[] { 0.0, 0.5, 0.5 + 1e-6, 1.0 });
+            PatchGrid g = HardCaseGrids.WithLines(new[] { 0.0, 0.5, 0.5 + 1e-6, 1.0 }, new[] { 0.0, 0.5, 0.5 + 1e-6, 1.0 });
             double err = RangeError(g, new TerrainRange(0.5 - 1e-6, 0.5 - 1e-6, 0.5 + 2e-6, 0.5 + 2e-6), 3, 8);
             // the GPU's float lines 0.5 + 1e-6 differ from the double ones by up to 3e-8 (slope 0.7)
             Report("region 1e-6 of the terrain (height)", 1e-7, err);

@@ -12,7 +12,7 @@ namespace GregoryTerrain.Tests
     [TestFixture]
     public class PropertyTests
     {
-        const int Grids = 50, RangesPerGrid = 100;
+        public const int Grids = 50, RangesPerGrid = 100;
 
         [Test]
         public void RandomGridsAndRangesStayFiniteG1AndCloseToDouble()

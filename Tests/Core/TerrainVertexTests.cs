@@ -39,7 +39,7 @@ namespace GregoryTerrain.Tests
                             TerrainVertexOutput f = TerrainVertex.Evaluate(inputs, tile, new Float2(i / 8f, j / 8f), keywords);
                             TerrainVertex.Reference(_grid, f.surface.q.ToDouble(), noise ? Noise : (NoiseSettings?)null,
                                 inputs.NoiseOctaveCount(), out Double3 p, out Double3 n);
-                            p -= TerrainVertex.OutputOffset(_grid, inputs.Params.rangeOrigin, keywords);
+                            p -= TerrainVertex.OutputOffset(inputs, _grid, keywords);
                             worstP = Math.Max(worstP, GMath.length(new Double3(f.position.x, f.position.y, f.position.z) - p));
                             worstN = Math.Max(worstN, GMath.length(new Double3(f.normal.x, f.normal.y, f.normal.z) - n));
                             Assert.That(GMath.length(f.normal), Is.EqualTo(1.0).Within(1e-6));

@@ -33,217 +33,37 @@ namespace GregoryTerrain.Rig.Tests
             ("narrow", new TerrainRange(0.6131, 0.2217, 0.6141, 0.2227)),
         };
 
-        string _root, _work, _spirv, _cli, _gridPath;
+        string _work, _spirv, _cli, _gridPath;
         PatchGrid _grid;
-        readonly Dictionary<string, Run> _runs = new Dictionary<string, Run>();
-
-        sealed class Run
-        {
-            public string Name;
-            public TerrainInputs Inputs;
-            public TerrainKeywords Keywords;
-            public float[] Readback;
-            public HarnessRun Harness;
-        }
+        readonly Dictionary<string, ReadbackRun> _runs = new Dictionary<string, ReadbackRun>();
 
         [OneTimeSetUp]
         public void BuildGridAndShaders()
         {
-            _root = HarnessRun.PackageRoot();
-            Assert.That(File.Exists(HarnessRun.HarnessPath()), Is.True, "gt-harness not built at " + HarnessRun.HarnessPath() + " (run Tools~/gt setup)");
-            Assert.That(File.Exists(HarnessRun.LavapipeIcd), Is.True, "lavapipe is not installed (" + HarnessRun.LavapipeIcd + ")");
-            _cli = Path.Combine(_root, ".build", "gt-cli", "gt-cli");
-            Assert.That(File.Exists(_cli), Is.True, "gt-cli not built at " + _cli + " (run Tools~/gt setup)");
-            _work = Path.Combine(_root, ".build", "rigtests-terrain");
-            if (Directory.Exists(_work)) Directory.Delete(_work, true);
-            Directory.CreateDirectory(_work);
+            _work = ReadbackRun.PrepareWork("rigtests-terrain");
+            _cli = ReadbackRun.Cli();
             _gridPath = Path.Combine(_work, "grid.json");
-            Exec(_cli, new[] { "demo-grid", "--samples", "129", "--out", _gridPath }, null);
+            ReadbackRun.Exec(_cli, new[] { "demo-grid", "--samples", "129", "--out", _gridPath }, null);
             _grid = PatchGridJson.Read(File.ReadAllText(_gridPath));
-            Exec("bash", new[] { Path.Combine(_root, "Tools~", "gt"), "shaders", "--only", "readback", "--only", "readback+noise", "--only", "noise+height_color" },
-                 new Dictionary<string, string> { ["GT_BUILD_DIR"] = _work });
-            _spirv = Path.Combine(_work, "spirv");
-        }
-
-        static string Exec(string file, string[] args, Dictionary<string, string> env)
-        {
-            var psi = new ProcessStartInfo(file) { RedirectStandardOutput = true, RedirectStandardError = true, UseShellExecute = false };
-            foreach (string a in args) psi.ArgumentList.Add(a);
-            if (env != null) foreach (var kv in env) psi.Environment[kv.Key] = kv.Value;
-            using (var p = Process.Start(psi))
-            {
-                var err = p.StandardError.ReadToEndAsync();
-                string output = p.StandardOutput.ReadToEnd();
-                p.WaitForExit();
-                Assert.That(p.ExitCode, Is.EqualTo(0), file + " " + string.Join(" ", args) + " failed:\n" + output + err.Result);
-                return output;
-            }
-        }
-
-        // ---- readback runs ----------------------------------------------------------------------
-
-        static void WriteFloats(string path, float[] values)
-        {
-            var bytes = new byte[values.Length * 4];
-            Buffer.BlockCopy(values, 0, bytes, 0, bytes.Length);   // little-endian on every .NET the rig runs
-            File.WriteAllBytes(path, bytes);
-        }
-
-        static float[] ReadFloats(string path)
-        {
-            byte[] b = File.ReadAllBytes(path);
-            var f = new float[b.Length / 4];
-            Buffer.BlockCopy(b, 0, f, 0, f.Length * 4);
-            return f;
+            _spirv = ReadbackRun.CompileVariants(_work, "readback", "readback+noise", "noise+height_color");
         }
 
         /// <summary>Draws the grid at <paramref name="range"/> with M x M tiles at uniform factor F and reads every vertex back.</summary>
-        Run Readback(string name, TerrainRange range, bool noise)
+        ReadbackRun Readback(string name, TerrainRange range, bool noise)
         {
             string key = name + (noise ? "+noise" : "");
-            if (_runs.TryGetValue(key, out Run cached)) return cached;
-            var p = TerrainParams.Create(_grid, range, RangeOrigin.For(range), TessellationSettings.Uniform(Tiles, Factor),
-                Noise, Colors, new Float3(0.2f, 0.3f, 0.1f), new Float3(0.8f, 0.8f, 0.8f));
-            var inputs = TerrainInputs.Create(_grid, p);
-            string dir = Path.Combine(_work, key);
-            Directory.CreateDirectory(dir);
-            WriteFloats(Path.Combine(dir, "control_points.f32"), inputs.ControlPoints);
-            WriteFloats(Path.Combine(dir, "regions.f32"), inputs.Regions);
-            WriteFloats(Path.Combine(dir, "grid_lines.f32"), inputs.GridLines);
-            WriteFloats(Path.Combine(dir, "params.f32"), p.Pack());
-            // A top-down orthographic camera over the unit square (object (x, z) -> clip); the
-            // readback does not depend on it.
-            float[,] m = { { 2, 0, 0, -1 }, { 0, 0, 2, -1 }, { 0, 0.01f, 0, 0.5f }, { 0, 0, 0, 1 } };
-            var cam = new List<float>();
-            for (int c = 0; c < 4; c++) for (int r = 0; r < 4; r++) cam.Add(m[r, c]);
-            for (int c = 0; c < 4; c++) for (int r = 0; r < 4; r++) cam.Add(r == c ? 1 : 0);
-            cam.AddRange(new float[] { 0.5f, 2, 0.5f, 1, 64, 64, 1f / 64, 1f / 64, 0, 1, 0, 0 });
-            WriteFloats(Path.Combine(dir, "camera.f32"), cam.ToArray());
-            string variant = Path.Combine(_spirv, noise ? "readback+noise" : "readback");
-            string readback = Path.Combine(dir, "readback.f32");
-            HarnessRun h = HarnessRun.Harness(
-                "--vert", Path.Combine(variant, "vert.spv"), "--tesc", Path.Combine(variant, "tesc.spv"),
-                "--tese", Path.Combine(variant, "tese.spv"), "--frag", Path.Combine(variant, "frag.spv"),
-                "--buffers", dir, "--patches", (Tiles * Tiles).ToString(), "--width", "64", "--height", "64",
-                "--device", "llvmpipe", "--stats", "--readback", readback, "--readback-floats", (12 * VerticesPerRun).ToString());
-            h.AssertSucceeded();
-            Assert.That(h.Value("readback", readback), Is.Not.Null, "no readback line:\n" + h.Stdout);
-            var run = new Run { Name = key, Inputs = inputs, Keywords = noise ? TerrainKeywords.Noise : TerrainKeywords.None,
-                                Readback = ReadFloats(readback), Harness = h };
-            Assert.That(run.Readback.Length, Is.EqualTo(12 * VerticesPerRun));
+            if (_runs.TryGetValue(key, out ReadbackRun cached)) return cached;
+            var p = ReadbackRun.UniformParams(_grid, range, RangeOrigin.For(range), Tiles, Factor, Noise);
+            ReadbackRun run = ReadbackRun.Draw(Path.Combine(_work, key), _spirv, _grid, p, noise ? Noise : (NoiseSettings?)null);
+            Assert.That(run.VertexCount, Is.EqualTo(VerticesPerRun));
             _runs[key] = run;
             return run;
-        }
-
-        // ---- GPU vs Core ------------------------------------------------------------------------
-
-        /// <summary>
-        /// The tess coordinate lavapipe used on one axis. Its tessellator works in 16.16 fixed point,
-        /// so s is a multiple of 2^-16 near index/F (26/63 reads 0.41259765625): the candidate whose
-        /// q and u, through Core's float RangeToTerrainPoint and PatchLocalUV, are the GPU's bit for
-        /// bit. NaN when none is.
-        /// </summary>
-        static float GpuTessCoordinate(TerrainInputs inputs, bool xAxis, int tile, int index, float gpuQ, float gpuLocal, Float4 region)
-        {
-            double nominal = (double)index / Factor;
-            int centre = (int)Math.Round(nominal * 65536);
-            for (int k = 0; k <= 64; k++)
-                foreach (int sign in k == 0 ? new[] { 1 } : new[] { 1, -1 })
-                {
-                    int fx = centre + sign * k;
-                    if (fx < 0 || fx > 65536) continue;
-                    float s = fx / 65536f;
-                    TerrainPoint q = xAxis
-                        ? RangeMapping.ToTerrainPoint(inputs.Params.range, inputs.Params.rangeOrigin, Tiles, tile, 0, s, 0f)
-                        : RangeMapping.ToTerrainPoint(inputs.Params.range, inputs.Params.rangeOrigin, Tiles, 0, tile, 0f, s);
-                    Float2 approx = RangeMapping.Approximate(q);
-                    Float2 uv = RangeMapping.PatchLocalUV(q, region);
-                    if (xAxis ? approx.x == gpuQ && uv.x == gpuLocal : approx.y == gpuQ && uv.y == gpuLocal) return s;
-                }
-            return float.NaN;
-        }
-
-        sealed class Comparison
-        {
-            public int Vertices, Unmatched, PositionBitIdentical, NormalBitIdentical, QEqual, Nan;
-            public double MaxPosition, MaxNormal, MaxReference;
-            public HashSet<int> Patches = new HashSet<int>();
-        }
-
-        /// <summary>Core's float path at the GPU's tess coordinates, vertex by vertex, against the readback.</summary>
-        Comparison Compare(Run run, double extent)
-        {
-            var c = new Comparison();
-            float[] v = run.Readback;
-            int per = (Factor + 1) * (Factor + 1);
-            var sCache = new Dictionary<(bool, int, int, float, float), float>();
-            for (int k = 0; k < VerticesPerRun; k++)
-            {
-                int o = 12 * k;
-                if (Enumerable.Range(o, 12).Any(i => float.IsNaN(v[i]))) { c.Nan++; continue; }
-                int tile = k / per, row = k % per / (Factor + 1), col = k % (Factor + 1);
-                int ti = tile % Tiles, tj = tile / Tiles;
-                var gpuQ = new Float2(v[o + 8], v[o + 9]);
-                int patch = run.Inputs.FindPatch(gpuQ);
-                Float4 region = run.Inputs.PatchRegion(patch);
-                float s = Cached(sCache, (true, ti, col, gpuQ.x, v[o + 10]), () => GpuTessCoordinate(run.Inputs, true, ti, col, gpuQ.x, v[o + 10], region));
-                float t = Cached(sCache, (false, tj, row, gpuQ.y, v[o + 11]), () => GpuTessCoordinate(run.Inputs, false, tj, row, gpuQ.y, v[o + 11], region));
-                if (float.IsNaN(s) || float.IsNaN(t))
-                {
-                    c.Unmatched++;
-                    s = float.IsNaN(s) ? (float)col / Factor : s;
-                    t = float.IsNaN(t) ? (float)row / Factor : t;
-                }
-                TerrainVertexOutput core = TerrainVertex.Evaluate(run.Inputs, tile, new Float2(s, t), run.Keywords);
-                Float3 gp = new Float3(v[o], v[o + 1], v[o + 2]), gn = new Float3(v[o + 4], v[o + 5], v[o + 6]);
-                Float3 cp = core.PositionOS, cn = core.NormalOS;
-                c.Vertices++;
-                c.Patches.Add(core.surface.patch);
-                if (gp.Equals(cp)) c.PositionBitIdentical++;
-                if (gn.Equals(cn)) c.NormalBitIdentical++;
-                if (RangeMapping.Approximate(core.surface.q).Equals(gpuQ)) c.QEqual++;
-                c.MaxPosition = Math.Max(c.MaxPosition, Distance(gp, cp) / extent);
-                c.MaxNormal = Math.Max(c.MaxNormal, Distance(gn, cn));
-                // And the float path against the double reference at the same exact point.
-                TerrainVertex.Reference(_grid, core.surface.q.ToDouble(),
-                    (run.Keywords & TerrainKeywords.Noise) != 0 ? Noise : (NoiseSettings?)null, run.Inputs.NoiseOctaveCount(),
-                    out Double3 rp, out _);
-                rp -= TerrainVertex.OutputOffset(_grid, run.Inputs.Params.rangeOrigin, run.Keywords);
-                c.MaxReference = Math.Max(c.MaxReference, GMath.length(new Double3(core.position.x, core.position.y, core.position.z) - rp) / extent);
-            }
-            return c;
-        }
-
-        static float Cached(Dictionary<(bool, int, int, float, float), float> cache, (bool, int, int, float, float) key, Func<float> f)
-        {
-            if (!cache.TryGetValue(key, out float s)) cache[key] = s = f();
-            return s;
-        }
-
-        static double Distance(Float3 a, Float3 b)
-        {
-            double dx = (double)a.x - b.x, dy = (double)a.y - b.y, dz = (double)a.z - b.z;
-            return Math.Sqrt(dx * dx + dy * dy + dz * dz);
-        }
-
-        /// <summary>The diagonal of the control points' bounding box: the terrain's extent.</summary>
-        double TerrainExtent()
-        {
-            var lo = new Double3(double.MaxValue, double.MaxValue, double.MaxValue);
-            var hi = new Double3(double.MinValue, double.MinValue, double.MinValue);
-            foreach (GregoryPatch p in _grid.Patches)
-                foreach (Double3 q in p.Points)
-                {
-                    lo = new Double3(Math.Min(lo.x, q.x), Math.Min(lo.y, q.y), Math.Min(lo.z, q.z));
-                    hi = new Double3(Math.Max(hi.x, q.x), Math.Max(hi.y, q.y), Math.Max(hi.z, q.z));
-                }
-            return GMath.length(hi - lo);
         }
 
         [Test]
         public void GpuReadbackMatchesCoreFloatPathOnEveryPatchAtSeveralRanges()
         {
-            double extent = TerrainExtent();
+            double extent = ReadbackRun.TerrainExtent(_grid);
             int total = 0, unmatched = 0, bitPos = 0, bitNormal = 0, qEqual = 0, nan = 0;
             double maxPos = 0, maxNormal = 0, maxRef = 0;
             foreach (bool noise in new[] { false, true })
@@ -251,7 +71,9 @@ namespace GregoryTerrain.Rig.Tests
                 int totalThis = 0;
                 foreach (var (name, range) in Ranges)
                 {
-                    Comparison c = Compare(Readback(name, range, noise), extent);
+                    ReadbackComparison c = Readback(name, range, noise).Compare();
+                    c.MaxPosition /= extent;
+                    c.MaxReference /= extent;
                     TestContext.Out.WriteLine(
                         "{0,-16} vertices {1}, patches {2}, tess found {3}, q equal {4}, position bit-identical {5}, normal bit-identical {6}, " +
                         "max |gpu - core| / extent {7:G3}, max |normal diff| {8:G3}, max |core float - double| / extent {9:G3}",
@@ -286,36 +108,14 @@ namespace GregoryTerrain.Rig.Tests
             foreach (bool noise in new[] { false, true })
                 foreach (var (name, range) in Ranges)
                 {
-                    float[] v = Readback(name, range, noise).Readback;
-                    int per = (Factor + 1) * (Factor + 1);
-                    int Index(int ti, int tj, int row, int col) => (tj * Tiles + ti) * per + row * (Factor + 1) + col;
-                    for (int tj = 0; tj < Tiles; tj++)
-                        for (int ti = 0; ti < Tiles; ti++)
-                            for (int i = 0; i <= Factor; i++)
-                            {
-                                if (ti + 1 < Tiles)   // right edge of (ti, tj) = left edge of (ti + 1, tj)
-                                {
-                                    pairs++;
-                                    if (!SameBits(v, Index(ti, tj, i, Factor), Index(ti + 1, tj, i, 0))) differing++;
-                                }
-                                if (tj + 1 < Tiles)   // top edge of (ti, tj) = bottom edge of (ti, tj + 1)
-                                {
-                                    pairs++;
-                                    if (!SameBits(v, Index(ti, tj, Factor, i), Index(ti, tj + 1, 0, i))) differing++;
-                                }
-                            }
+                    var (p, d) = Readback(name, range, noise).SharedEdges();
+                    pairs += p;
+                    differing += d;
                 }
             TestContext.Out.WriteLine("shared tile edges: {0} vertex pairs, {1} differ in any bit of position, normal, q or u, v", pairs, differing);
             // Per run: M (M - 1) shared edges each way, F + 1 vertices on each.
             Assert.That(pairs, Is.EqualTo(2 * Ranges.Length * 2 * Tiles * (Tiles - 1) * (Factor + 1)));
             Assert.That(differing, Is.EqualTo(0));
-        }
-
-        static bool SameBits(float[] v, int a, int b)
-        {
-            for (int k = 0; k < 12; k++)
-                if (k % 4 != 3 && BitConverter.SingleToInt32Bits(v[12 * a + k]) != BitConverter.SingleToInt32Bits(v[12 * b + k])) return false;
-            return true;
         }
 
         [Test]
@@ -344,7 +144,7 @@ namespace GregoryTerrain.Rig.Tests
         {
             string dir = Path.Combine(_work, "image_g" + g.ToString(System.Globalization.CultureInfo.InvariantCulture));
             string r = "0,0," + g.ToString("R", System.Globalization.CultureInfo.InvariantCulture) + "," + g.ToString("R", System.Globalization.CultureInfo.InvariantCulture);
-            Exec(_cli, new[] { "pack", "--grid", _gridPath, "--range", r, "--tiles", "8", "--width", "160", "--height", "120", "--out", dir }, null);
+            ReadbackRun.Exec(_cli, new[] { "pack", "--grid", _gridPath, "--range", r, "--tiles", "8", "--width", "160", "--height", "120", "--out", dir }, null);
             string v = Path.Combine(_spirv, "noise+height_color");
             string png = Path.Combine(dir, "image.png");
             HarnessRun h = HarnessRun.Harness("--vert", Path.Combine(v, "vert.spv"), "--tesc", Path.Combine(v, "tesc.spv"),

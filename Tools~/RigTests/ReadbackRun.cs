@@ -1,0 +1,355 @@
+// One readback draw through gt-harness on lavapipe and its comparison with Core's float mirror of the
+// shaders (Runtime/Core/TerrainVertex.cs): the helpers every GPU-vs-Core test shares (TerrainGpuTests,
+// HardCaseGpuTests). They fail (never skip) when the harness, lavapipe, glslang or gt-cli is
+// missing: `gt setup` provides them.
+using System;
+using System.Collections.Generic;
+using System.Diagnostics;
+using System.IO;
+using System.Linq;
+using NUnit.Framework;
+
+namespace GregoryTerrain.Rig.Tests
+{
+    /// <summary>GPU-vs-Core figures of one or more readback runs.</summary>
+    public sealed class ReadbackComparison
+    {
+        public int Vertices, Unmatched, PositionBitIdentical, NormalBitIdentical, QEqual, Nan;
+        /// <summary>Largest |GPU - Core float| (terrain units, absolute), largest normal difference,
+        /// largest |Core float - double reference| (terrain units).</summary>
+        public double MaxPosition, MaxNormal, MaxReference;
+        public HashSet<int> Patches = new HashSet<int>();
+
+        public void Add(ReadbackComparison o)
+        {
+            Vertices += o.Vertices; Unmatched += o.Unmatched; PositionBitIdentical += o.PositionBitIdentical;
+            NormalBitIdentical += o.NormalBitIdentical; QEqual += o.QEqual; Nan += o.Nan;
+            MaxPosition = Math.Max(MaxPosition, o.MaxPosition); MaxNormal = Math.Max(MaxNormal, o.MaxNormal);
+            MaxReference = Math.Max(MaxReference, o.MaxReference);
+            Patches.UnionWith(o.Patches);
+        }
+    }
+
+    /// <summary>
+    /// A readback draw: M x M tiles at an integer uniform factor F with the GT_READBACK variant, every
+    /// vertex read back (internals.md, "Rig-only readback"), and the Core float path at the GPU's own
+    /// tess coordinates to compare it with.
+    /// </summary>
+    public sealed class ReadbackRun
+    {
+        public PatchGrid Grid;
+        public TerrainInputs Inputs;
+        public TerrainKeywords Keywords;
+        public NoiseSettings? Noise;
+        public int Tiles, Factor;
+        public float[] Readback;
+        public HarnessRun Harness;
+
+        public int VerticesPerTile => (Factor + 1) * (Factor + 1);
+        public int VertexCount => Tiles * Tiles * VerticesPerTile;
+
+        // ---- setup --------------------------------------------------------------------------------
+
+        /// <summary>A fresh work folder under .build (asserts the harness and lavapipe are there).</summary>
+        public static string PrepareWork(string name)
+        {
+            string root = HarnessRun.PackageRoot();
+            Assert.That(File.Exists(HarnessRun.HarnessPath()), Is.True, "gt-harness not built at " + HarnessRun.HarnessPath() + " (run Tools~/gt setup)");
+            Assert.That(File.Exists(HarnessRun.LavapipeIcd), Is.True, "lavapipe is not installed (" + HarnessRun.LavapipeIcd + ")");
+            string work = Path.Combine(root, ".build", name);
+            if (Directory.Exists(work)) Directory.Delete(work, true);
+            Directory.CreateDirectory(work);
+            return work;
+        }
+
+        /// <summary>gt-cli (built by gt setup).</summary>
+        public static string Cli()
+        {
+            string cli = Path.Combine(HarnessRun.PackageRoot(), ".build", "gt-cli", "gt-cli");
+            Assert.That(File.Exists(cli), Is.True, "gt-cli not built at " + cli + " (run Tools~/gt setup)");
+            return cli;
+        }
+
+        /// <summary>Compiles the named shader variants into <paramref name="work"/>/spirv and returns that folder.</summary>
+        public static string CompileVariants(string work, params string[] variants)
+        {
+            var args = new List<string> { Path.Combine(HarnessRun.PackageRoot(), "Tools~", "gt"), "shaders" };
+            foreach (string v in variants) { args.Add("--only"); args.Add(v); }
+            Exec("bash", args.ToArray(), new Dictionary<string, string> { ["GT_BUILD_DIR"] = work });
+            return Path.Combine(work, "spirv");
+        }
+
+        public static string Exec(string file, string[] args, Dictionary<string, string> env)
+        {
+            var psi = new ProcessStartInfo(file) { RedirectStandardOutput = true, RedirectStandardError = true, UseShellExecute = false };
+            foreach (string a in args) psi.ArgumentList.Add(a);
+            if (env != null) foreach (var kv in env) psi.Environment[kv.Key] = kv.Value;
+            using (var p = Process.Start(psi))
+            {
+                var err = p.StandardError.ReadToEndAsync();
+                string output = p.StandardOutput.ReadToEnd();
+                p.WaitForExit();
+                Assert.That(p.ExitCode, Is.EqualTo(0), file + " " + string.Join(" ", args) + " failed:\n" + output + err.Result);
+                return output;
+            }
+        }
+
+        public static void WriteFloats(string path, float[] values)
+        {
+            var bytes = new byte[values.Length * 4];
+            Buffer.BlockCopy(values, 0, bytes, 0, bytes.Length);   // little-endian on every .NET the rig runs
+            File.WriteAllBytes(path, bytes);
+        }
+
+        public static float[] ReadFloats(string path)
+        {
+            byte[] b = File.ReadAllBytes(path);
+            var f = new float[b.Length / 4];
+            Buffer.BlockCopy(b, 0, f, 0, f.Length * 4);
+            return f;
+        }
+
+        /// <summary>
+        /// RigCamera block (internals.md, binding 1): a top-down orthographic camera over the unit
+        /// square (object (x, z) -> clip). The readback does not depend on it.
+        /// </summary>
+        public static float[] TopDownCamera()
+        {
+            float[,] m = { { 2, 0, 0, -1 }, { 0, 0, 2, -1 }, { 0, 0.01f, 0, 0.5f }, { 0, 0, 0, 1 } };
+            return CameraBlock(m, new[] { 0.5f, 2f, 0.5f }, 64, 64);
+        }
+
+        /// <summary>
+        /// RigCamera block of a perspective camera at object-space <paramref name="eye"/> looking at
+        /// <paramref name="target"/> (object space is Unity's (x, height, y), identity object-to-world):
+        /// right-handed view, clip z in [0, w] (Vulkan/D3D depth), +y up.
+        /// </summary>
+        public static float[] PerspectiveCamera(Double3 eye, Double3 target, double fovYDegrees, int width, int height, double near, double far)
+        {
+            Double3 f = GMath.normalize(target - eye);
+            Double3 up = Math.Abs(f.y) > 0.99 ? new Double3(0, 0, 1) : new Double3(0, 1, 0);
+            Double3 r = GMath.normalize(GMath.cross(f, up));
+            Double3 u = GMath.cross(r, f);
+            double t = 1.0 / Math.Tan(0.5 * fovYDegrees * Math.PI / 180.0), a = (double)width / height;
+            // view: x = r.(p - eye), y = u.(p - eye), depth d = f.(p - eye); clip = (x t / a, y t, z, d)
+            // with z = far (d - near) / (far - near) so that z / w runs 0 .. 1 over [near, far].
+            double k = far / (far - near);
+            var rows = new[]
+            {
+                new[] { r.x * t / a, r.y * t / a, r.z * t / a, -GMath.dot(r, eye) * t / a },
+                new[] { u.x * t, u.y * t, u.z * t, -GMath.dot(u, eye) * t },
+                new[] { f.x * k, f.y * k, f.z * k, -(GMath.dot(f, eye) + near) * k },
+                new[] { f.x, f.y, f.z, -GMath.dot(f, eye) },
+            };
+            var m = new float[4, 4];
+            for (int i = 0; i < 4; i++) for (int j = 0; j < 4; j++) m[i, j] = (float)rows[i][j];
+            return CameraBlock(m, new[] { (float)eye.x, (float)eye.y, (float)eye.z }, width, height);
+        }
+
+        static float[] CameraBlock(float[,] objectToClip, float[] eye, int width, int height)
+        {
+            var cam = new List<float>();
+            for (int c = 0; c < 4; c++) for (int r = 0; r < 4; r++) cam.Add(objectToClip[r, c]);   // column-major
+            for (int c = 0; c < 4; c++) for (int r = 0; r < 4; r++) cam.Add(r == c ? 1 : 0);
+            cam.AddRange(new[] { eye[0], eye[1], eye[2], 1f, width, height, 1f / width, 1f / height, 0f, 1f, 0f, 0f });
+            return cam.ToArray();
+        }
+
+        /// <summary>The packed inputs of one scene written to <paramref name="dir"/> for --buffers.</summary>
+        public static void WriteBuffers(string dir, TerrainInputs inputs, float[] camera)
+        {
+            Directory.CreateDirectory(dir);
+            WriteFloats(Path.Combine(dir, "control_points.f32"), inputs.ControlPoints);
+            WriteFloats(Path.Combine(dir, "regions.f32"), inputs.Regions);
+            WriteFloats(Path.Combine(dir, "grid_lines.f32"), inputs.GridLines);
+            WriteFloats(Path.Combine(dir, "params.f32"), inputs.Params.Pack());
+            WriteFloats(Path.Combine(dir, "camera.f32"), camera);
+        }
+
+        /// <summary>The four tessellated stages of a compiled variant, as harness arguments.</summary>
+        public static string[] Stages(string spirv, string variant)
+        {
+            string v = Path.Combine(spirv, variant);
+            return new[] { "--vert", Path.Combine(v, "vert.spv"), "--tesc", Path.Combine(v, "tesc.spv"),
+                           "--tese", Path.Combine(v, "tese.spv"), "--frag", Path.Combine(v, "frag.spv") };
+        }
+
+        // ---- the draw -----------------------------------------------------------------------------
+
+        /// <summary>
+        /// Draws <paramref name="grid"/> with <paramref name="p"/> (uniform integer factor, tile mode) in
+        /// the readback variant (<c>readback+noise</c> when <paramref name="noise"/> is given) and
+        /// reads every vertex back. <paramref name="extra"/>: more harness options (e.g. --range).
+        /// </summary>
+        public static ReadbackRun Draw(string dir, string spirv, PatchGrid grid, TerrainParams p, NoiseSettings? noise,
+                                       params string[] extra)
+        {
+            var inputs = TerrainInputs.Create(grid, p);
+            int tiles = inputs.TileCountInt(), factor = (int)inputs.UniformTessFactor();
+            Assert.That(factor, Is.InRange(1, 64), "readback needs an integer uniform factor");
+            Assert.That((float)factor, Is.EqualTo(inputs.UniformTessFactor()), "readback needs an integer uniform factor");
+            WriteBuffers(dir, inputs, TopDownCamera());
+            var run = new ReadbackRun { Grid = grid, Inputs = inputs, Noise = noise, Tiles = tiles, Factor = factor,
+                                        Keywords = noise.HasValue ? TerrainKeywords.Noise : TerrainKeywords.None };
+            string readback = Path.Combine(dir, "readback.f32");
+            var args = new List<string>(Stages(spirv, noise.HasValue ? "readback+noise" : "readback"));
+            args.AddRange(new[] { "--buffers", dir, "--patches", (tiles * tiles).ToString(), "--width", "64", "--height", "64",
+                                  "--device", "llvmpipe", "--stats", "--readback", readback, "--readback-floats", (12 * run.VertexCount).ToString() });
+            args.AddRange(extra);
+            run.Harness = HarnessRun.Harness(args.ToArray());
+            run.Harness.AssertSucceeded();
+            Assert.That(run.Harness.Value("readback", readback), Is.Not.Null, "no readback line:\n" + run.Harness.Stdout);
+            run.Readback = ReadFloats(readback);
+            Assert.That(run.Readback.Length, Is.EqualTo(12 * run.VertexCount));
+            return run;
+        }
+
+        /// <summary>Uniform tessellation settings: M x M tiles at integer factor F.</summary>
+        public static TerrainParams UniformParams(PatchGrid grid, TerrainRange range, RangeOrigin origin, int tiles, int factor,
+                                                  NoiseSettings? noise, float noiseVerticesAcross = 0f)
+        {
+            return TerrainParams.Create(grid, range, origin, TessellationSettings.Uniform(tiles, factor),
+                noise ?? new NoiseSettings(0.004f, 16f, 2f, 2f, 6), new HeightColorSettings(0.25f, 0.15f, 24f),
+                new Float3(0.2f, 0.3f, 0.1f), new Float3(0.8f, 0.8f, 0.8f), noiseVerticesAcross);
+        }
+
+        /// <summary>Readback index of vertex (row, col) of tile (ti, tj).</summary>
+        public int Index(int ti, int tj, int row, int col) => (tj * Tiles + ti) * VerticesPerTile + row * (Factor + 1) + col;
+
+        /// <summary>How many read-back floats are NaN or infinite.</summary>
+        public int NonFinite() => Readback.Count(x => !float.IsFinite(x));
+
+        // ---- comparison with Core -----------------------------------------------------------------
+
+        /// <summary>
+        /// The tess coordinate lavapipe used on one axis. Its tessellator works in 16.16 fixed point,
+        /// so s is a multiple of 2^-16 near index/F (26/63 reads 0.41259765625): the candidate whose
+        /// q and u, through Core's float RangeToTerrainPoint and PatchLocalUV, are the GPU's bit for
+        /// bit. NaN when none is.
+        /// </summary>
+        public float GpuTessCoordinate(bool xAxis, int tile, int index, float gpuQ, float gpuLocal, Float4 region)
+        {
+            double nominal = (double)index / Factor;
+            int centre = (int)Math.Round(nominal * 65536);
+            for (int k = 0; k <= 64; k++)
+                foreach (int sign in k == 0 ? new[] { 1 } : new[] { 1, -1 })
+                {
+                    int fx = centre + sign * k;
+                    if (fx < 0 || fx > 65536) continue;
+                    float s = fx / 65536f;
+                    TerrainPoint q = xAxis
+                        ? RangeMapping.ToTerrainPoint(Inputs.Params.range, Inputs.Params.rangeOrigin, Tiles, tile, 0, s, 0f)
+                        : RangeMapping.ToTerrainPoint(Inputs.Params.range, Inputs.Params.rangeOrigin, Tiles, 0, tile, 0f, s);
+                    Float2 approx = RangeMapping.Approximate(q);
+                    Float2 uv = RangeMapping.PatchLocalUV(q, region);
+                    if (xAxis ? approx.x == gpuQ && uv.x == gpuLocal : approx.y == gpuQ && uv.y == gpuLocal) return s;
+                }
+            return float.NaN;
+        }
+
+        /// <summary>Core's float path at the GPU's tess coordinates, vertex by vertex, against the readback (absolute terrain units).</summary>
+        public ReadbackComparison Compare()
+        {
+            var c = new ReadbackComparison();
+            float[] v = Readback;
+            var sCache = new Dictionary<(bool, int, int, float, float), float>();
+            double octaves = Inputs.NoiseOctaveCount();
+            Double3 offset = TerrainVertex.OutputOffset(Inputs, Grid, Keywords);
+            for (int k = 0; k < VertexCount; k++)
+            {
+                int o = 12 * k;
+                bool nan = false;
+                for (int i = o; i < o + 12; i++) nan |= !float.IsFinite(v[i]);
+                if (nan) { c.Nan++; continue; }
+                int tile = k / VerticesPerTile, row = k % VerticesPerTile / (Factor + 1), col = k % (Factor + 1);
+                int ti = tile % Tiles, tj = tile / Tiles;
+                var gpuQ = new Float2(v[o + 8], v[o + 9]);
+                int patch = Inputs.FindPatch(gpuQ);
+                Float4 region = Inputs.PatchRegion(patch);
+                float s = Cached(sCache, (true, ti, col, gpuQ.x, v[o + 10]), () => GpuTessCoordinate(true, ti, col, gpuQ.x, v[o + 10], region));
+                float t = Cached(sCache, (false, tj, row, gpuQ.y, v[o + 11]), () => GpuTessCoordinate(false, tj, row, gpuQ.y, v[o + 11], region));
+                if (float.IsNaN(s) || float.IsNaN(t))
+                {
+                    c.Unmatched++;
+                    s = float.IsNaN(s) ? (float)col / Factor : s;
+                    t = float.IsNaN(t) ? (float)row / Factor : t;
+                }
+                TerrainVertexOutput core = TerrainVertex.Evaluate(Inputs, tile, new Float2(s, t), Keywords);
+                Float3 gp = new Float3(v[o], v[o + 1], v[o + 2]), gn = new Float3(v[o + 4], v[o + 5], v[o + 6]);
+                Float3 cp = core.PositionOS, cn = core.NormalOS;
+                c.Vertices++;
+                c.Patches.Add(core.surface.patch);
+                if (gp.Equals(cp)) c.PositionBitIdentical++;
+                if (gn.Equals(cn)) c.NormalBitIdentical++;
+                if (RangeMapping.Approximate(core.surface.q).Equals(gpuQ)) c.QEqual++;
+                c.MaxPosition = Math.Max(c.MaxPosition, Distance(gp, cp));
+                c.MaxNormal = Math.Max(c.MaxNormal, Distance(gn, cn));
+                // And the float path against the double reference at the same exact point.
+                TerrainVertex.Reference(Grid, core.surface.q.ToDouble(), Noise, octaves, out Double3 rp, out _);
+                rp -= offset;
+                c.MaxReference = Math.Max(c.MaxReference, GMath.length(new Double3(core.position.x, core.position.y, core.position.z) - rp));
+            }
+            return c;
+        }
+
+        static float Cached(Dictionary<(bool, int, int, float, float), float> cache, (bool, int, int, float, float) key, Func<float> f)
+        {
+            if (!cache.TryGetValue(key, out float s)) cache[key] = s = f();
+            return s;
+        }
+
+        public static double Distance(Float3 a, Float3 b)
+        {
+            double dx = (double)a.x - b.x, dy = (double)a.y - b.y, dz = (double)a.z - b.z;
+            return Math.Sqrt(dx * dx + dy * dy + dz * dz);
+        }
+
+        // ---- shared tile edges --------------------------------------------------------------------
+
+        /// <summary>
+        /// Every vertex on a shared tile edge against its neighbour's copy: pairs checked, and pairs that
+        /// differ in any bit of position, normal, q or u, v.
+        /// </summary>
+        public (int pairs, int differing) SharedEdges()
+        {
+            int pairs = 0, differing = 0;
+            for (int tj = 0; tj < Tiles; tj++)
+                for (int ti = 0; ti < Tiles; ti++)
+                    for (int i = 0; i <= Factor; i++)
+                    {
+                        if (ti + 1 < Tiles)   // right edge of (ti, tj) = left edge of (ti + 1, tj)
+                        {
+                            pairs++;
+                            if (!SameBits(Index(ti, tj, i, Factor), Index(ti + 1, tj, i, 0))) differing++;
+                        }
+                        if (tj + 1 < Tiles)   // top edge of (ti, tj) = bottom edge of (ti, tj + 1)
+                        {
+                            pairs++;
+                            if (!SameBits(Index(ti, tj, Factor, i), Index(ti, tj + 1, 0, i))) differing++;
+                        }
+                    }
+            return (pairs, differing);
+        }
+
+        bool SameBits(int a, int b)
+        {
+            for (int k = 0; k < 12; k++)
+                if (k % 4 != 3 && BitConverter.SingleToInt32Bits(Readback[12 * a + k]) != BitConverter.SingleToInt32Bits(Readback[12 * b + k])) return false;
+            return true;
+        }
+
+        /// <summary>The diagonal of the control points' bounding box: the terrain's extent.</summary>
+        public static double TerrainExtent(PatchGrid grid)
+        {
+            var lo = new Double3(double.MaxValue, double.MaxValue, double.MaxValue);
+            var hi = new Double3(double.MinValue, double.MinValue, double.MinValue);
+            foreach (GregoryPatch p in grid.Patches)
+                foreach (Double3 q in p.Points)
+                {
+                    lo = new Double3(Math.Min(lo.x, q.x), Math.Min(lo.y, q.y), Math.Min(lo.z, q.z));
+                    hi = new Double3(Math.Max(hi.x, q.x), Math.Max(hi.y, q.y), Math.Max(hi.z, q.z));
+                }
+            return GMath.length(hi - lo);
+        }
+    }
+}
