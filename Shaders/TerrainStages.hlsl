@@ -7,6 +7,7 @@
 //   hull_shader    passes the 4 corners through
 //   domain_shader  tess coordinate -> TerrainVertex (TerrainVertex.hlsl)
 //   vert_fallback  no tessellator: a (F+1)^2 UV grid per instance (= tile), same TerrainVertex
+//   vert_static    rig only (GT_STATIC_MESH): the terrain's vertices baked once, the fallback's index grid
 //   frag           TerrainShading.hlsl: colour (forward), packed normal (GT_PASS_DEPTH_NORMALS),
 //                  nothing (GT_PASS_SHADOWCASTER, GT_PASS_DEPTH)
 //
@@ -115,16 +116,27 @@ float3 SurfaceObjectPosition(uint drawPatch, float2 tess)
 }
 
 // Factor of the edge from tess coordinate a to b (a the lower one) whose end points are pa, pb:
-// the surface is evaluated at 1/4, 1/2, 3/4 of the edge. A neighbour sharing the edge forms the
-// same global points bit for bit (RangeCoordinate adds the integer tile index first), so it gets
-// the same factor: no cracks.
-float EdgeErrorTessFactor(uint drawPatch, float2 a, float2 b, float3 pa, float3 pb, float targetPixelError, float maxFactor)
+// the surface (no noise) is evaluated at the GT_EDGE_SEGMENTS - 1 inner points of the edge
+// (SampledEdgeSagittaPixels), and the bound of the noise the frame draws is added (noiseCurvature,
+// 0 without GT_NOISE; edgeLength in terrain units). A neighbour sharing the edge forms the same
+// global points bit for bit (RangeCoordinate adds the integer tile index first), so it gets the
+// same factor: no cracks.
+float EdgeErrorTessFactor(uint drawPatch, float2 a, float2 b, float3 pa, float3 pb, float edgeLength, float noiseCurvature,
+                          float targetPixelError, float maxFactor)
 {
-    float3 pq = SurfaceObjectPosition(drawPatch, lerp(a, b, 0.25));
-    float3 pm = SurfaceObjectPosition(drawPatch, lerp(a, b, 0.5));
-    float3 pt = SurfaceObjectPosition(drawPatch, lerp(a, b, 0.75));
-    float sagitta = EdgeSagittaPixels(pa, pq, pm, pt, pb,
-        ObjectPixelsPerUnit(pq), ObjectPixelsPerUnit(pm), ObjectPixelsPerUnit(pt));
+    float3 p[GT_EDGE_SEGMENTS + 1];
+    float k[GT_EDGE_SEGMENTS + 1];
+    p[0] = pa;
+    p[GT_EDGE_SEGMENTS] = pb;
+    k[0] = k[GT_EDGE_SEGMENTS] = 0.0;
+    float kMax = 0.0;
+    [unroll] for (uint i = 1u; i < GT_EDGE_SEGMENTS; i++)
+    {
+        p[i] = SurfaceObjectPosition(drawPatch, lerp(a, b, (float)i / (float)GT_EDGE_SEGMENTS));
+        k[i] = ObjectPixelsPerUnit(p[i]);
+        kMax = max(kMax, k[i]);
+    }
+    float sagitta = SampledEdgeSagittaPixels(p, k) + NoiseSagittaPixels(noiseCurvature, edgeLength, kMax);
     return ErrorTessFactor(sagitta, targetPixelError, maxFactor);
 }
 
@@ -151,21 +163,32 @@ TileFactors ComputeTileFactors(InputPatch<TileCorner, 4> corners)
     }
     // The knob is the target screen-space error in pixels (_Tess.z): each edge gets the segment
     // count whose chord error is that many pixels (TessellationPolicy.ErrorTessFactor). Each factor
-    // depends only on its edge (end points and three points of the surface on it), taken lower tess
+    // depends only on its edge (end points and seven points of the surface on it), taken lower tess
     // coordinate first by both tiles that share it: their factors agree bit for bit (no cracks).
     uint patch = corners[0].drawPatch;
     float target = TargetPixelError(), maxFactor = MaxTessFactor();
-    f.edge[0] = EdgeErrorTessFactor(patch, float2(0, 0), float2(0, 1), cornerOS[0], cornerOS[2], target, maxFactor);   // u = 0
-    f.edge[1] = EdgeErrorTessFactor(patch, float2(0, 0), float2(1, 0), cornerOS[0], cornerOS[1], target, maxFactor);   // v = 0
-    f.edge[2] = EdgeErrorTessFactor(patch, float2(1, 0), float2(1, 1), cornerOS[1], cornerOS[3], target, maxFactor);   // u = 1
-    f.edge[3] = EdgeErrorTessFactor(patch, float2(0, 1), float2(1, 1), cornerOS[2], cornerOS[3], target, maxFactor);   // v = 1
+    float2 edgeLength = (_Range.zw - _Range.xy) / TileCount();   // along u (x) and along v (y), terrain units
+    float noiseCurvature = 0.0;
+#if defined(GT_NOISE)
+    // The octaves this frame draws (the count TerrainVertex uses): the knob counts the noise it shows.
+    noiseCurvature = NoiseCurvatureBound(NoiseSettings(), OctaveCount(RangeWidth(), NoiseVerticesAcross(), NoiseSettings(), MaxNoiseOctaves()));
+#endif
+    f.edge[0] = EdgeErrorTessFactor(patch, float2(0, 0), float2(0, 1), cornerOS[0], cornerOS[2], edgeLength.y, noiseCurvature, target, maxFactor);   // u = 0
+    f.edge[1] = EdgeErrorTessFactor(patch, float2(0, 0), float2(1, 0), cornerOS[0], cornerOS[1], edgeLength.x, noiseCurvature, target, maxFactor);   // v = 0
+    f.edge[2] = EdgeErrorTessFactor(patch, float2(1, 0), float2(1, 1), cornerOS[1], cornerOS[3], edgeLength.y, noiseCurvature, target, maxFactor);   // u = 1
+    f.edge[3] = EdgeErrorTessFactor(patch, float2(0, 1), float2(1, 1), cornerOS[2], cornerOS[3], edgeLength.x, noiseCurvature, target, maxFactor);   // v = 1
     // Inside factors follow the edges they run along: inside[0] subdivides along u, like the
-    // v = 0 and v = 1 edges. They also cover the bend only the inside shows (a
-    // twist bends the diagonals, not the edges): they match no neighbour, so the centre may count.
+    // v = 0 and v = 1 edges. They match no neighbour, so they may look inside: the tile's two
+    // midlines (bumps between the edges) and the centre's deviation from the diagonals (a twist
+    // bends the diagonals, not the edges).
+    float midU = EdgeErrorTessFactor(patch, float2(0, 0.5), float2(1, 0.5), SurfaceObjectPosition(patch, float2(0, 0.5)),
+                                     SurfaceObjectPosition(patch, float2(1, 0.5)), edgeLength.x, noiseCurvature, target, maxFactor);
+    float midV = EdgeErrorTessFactor(patch, float2(0.5, 0), float2(0.5, 1), SurfaceObjectPosition(patch, float2(0.5, 0)),
+                                     SurfaceObjectPosition(patch, float2(0.5, 1)), edgeLength.y, noiseCurvature, target, maxFactor);
     float3 centre = SurfaceObjectPosition(patch, float2(0.5, 0.5));
     float diagonal = InsideErrorTessFactor(DiagonalSagittaPixels(cornerOS[0], cornerOS[1], cornerOS[2], cornerOS[3],
                                                                  centre, ObjectPixelsPerUnit(centre)), target, maxFactor);
-    float2 inside = max(TessInsideFactors(f.edge[0], f.edge[1], f.edge[2], f.edge[3]), diagonal);
+    float2 inside = max(max(TessInsideFactors(f.edge[0], f.edge[1], f.edge[2], f.edge[3]), float2(midU, midV)), diagonal);
     f.inside[0] = inside.x;
     f.inside[1] = inside.y;
     return f;
@@ -210,6 +233,23 @@ TerrainVaryings vert_fallback(uint vertexID : SV_VertexID, uint instanceID : SV_
     uint2 grid = uint2(vertexID % (f + 1u), vertexID / (f + 1u));
     return TerrainVertex(instanceID, (float2)grid / (float)f, (float)f);
 }
+
+#if defined(GT_STATIC_MESH)
+// Rig only (gt bench, "the fair static mesh"): the terrain baked into the static mesh a user could
+// draw instead, drawn with the same frag. Per vertex 2 float4, (object position, 1), (object normal, 0)
+// (Tools~/rig/bench_static_mesh.py packs them from the GT_READBACK vertices of M x M tiles at the
+// uniform factor F = _Tess.w), read from the _ControlPoints binding through the fallback grid's
+// index buffer: vertex = instance (F+1)^2 + SV_VertexID. Nothing is evaluated.
+TerrainVaryings vert_static(uint vertexID : SV_VertexID, uint instanceID : SV_InstanceID)
+{
+    uint f = max((uint)UniformTessFactor(), 1u);
+    uint v = instanceID * (f + 1u) * (f + 1u) + vertexID;
+    TerrainVaryings o = (TerrainVaryings)0;
+    o.positionCS = GT_ObjectToClip(_ControlPoints[2u * v].xyz);
+    o.normalWS = GT_ObjectToWorldNormal(_ControlPoints[2u * v + 1u].xyz);
+    return o;
+}
+#endif
 
 // One fragment entry for every pass; the pass's GT_PASS_* define (set by GregoryTerrain.shader)
 // picks the output. Depth and shadow passes write no colour (ColorMask 0), so they evaluate nothing

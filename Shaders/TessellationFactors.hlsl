@@ -66,6 +66,58 @@ float EdgeSagittaPixels(float3 p0, float3 pQuarter, float3 pMid, float3 pThreeQu
     return max(whole, max(first, second));
 }
 
+// Segments per tile edge the estimate samples (TessellationPolicy.EdgeSegments): the surface is
+// evaluated at the GT_EDGE_SEGMENTS - 1 inner points (the corners are known). A power of two.
+#define GT_EDGE_SEGMENTS 8
+
+// The general form of EdgeSagittaPixels over GT_EDGE_SEGMENTS + 1 points p[i] at edge parameter
+// i / n and the pixel scale k[i] at each (the ends' k are not used): at every level of the binary
+// hierarchy, point i's deviation from the chord of its neighbours at distance d measures the bend
+// over a span 2d/n, which counts (n / 2d)^2 times (the sagitta scales with the span squared); the
+// largest. With n = 4 this is EdgeSagittaPixels. Mirrors TessellationPolicy.EdgeSagittaPixels(points, scales).
+float SampledEdgeSagittaPixels(float3 p[GT_EDGE_SEGMENTS + 1], float k[GT_EDGE_SEGMENTS + 1])
+{
+    float s = 0.0;
+    [unroll] for (uint d = GT_EDGE_SEGMENTS / 2u; d >= 1u; d /= 2u)
+    {
+        float weight = (float)((GT_EDGE_SEGMENTS / (2u * d)) * (GT_EDGE_SEGMENTS / (2u * d)));
+        [unroll] for (uint i = d; i < GT_EDGE_SEGMENTS; i += 2u * d)
+        {
+            precise float e = weight * length(p[i] - 0.5 * (p[i - d] + p[i + d])) * k[i];
+            s = max(s, e);
+        }
+    }
+    return s;
+}
+
+// Largest |d^2 GradientNoise / dx^2| per unit lattice, found on a dense grid (11.26), rounded up
+// (TessellationPolicy.GradientNoiseCurvature).
+#define GT_GRADIENT_NOISE_CURVATURE 12.0
+
+// Bound on OctaveNoise's second derivative along x or y (terrain units per unit^2) for the octaves
+// the frame draws: |amplitude| * C * sum_k fade_k beta^-k (frequency alpha^k)^2, noise =
+// (amplitude, frequency, alpha, beta). Mirrors TessellationPolicy.NoiseCurvatureBound.
+float NoiseCurvatureBound(float4 noise, float octaveCount)
+{
+    float f = noise.y, w = 1.0, invBeta = 1.0 / noise.w, sum = 0.0;
+    [loop] for (uint k = 0u; k < 16u; ++k)   // 16 = GT_MAX_OCTAVES (OctaveNoise.hlsl)
+    {
+        float fade = saturate(octaveCount - float(k));
+        if (fade <= 0.0) break;
+        sum += fade * w * (f * f);
+        f *= noise.z;
+        w *= invBeta;
+    }
+    return abs(noise.x) * GT_GRADIENT_NOISE_CURVATURE * sum;
+}
+
+// The chord error (pixels) the noise can add to an edge edgeLength long (terrain units) drawn as one
+// segment: curvature L^2 / 8 at the edge's largest pixel scale. Mirrors TessellationPolicy.NoiseSagittaPixels.
+float NoiseSagittaPixels(float noiseCurvature, float edgeLength, float maxPixelsPerUnit)
+{
+    return noiseCurvature * (edgeLength * edgeLength) * 0.125 * maxPixelsPerUnit;
+}
+
 // F segments leave sagitta / F^2 each; a cell's error at its centre is the sum of its two
 // directions' (quadratic surface), so each edge aims at half the target: F = sqrt(2 sagitta /
 // target), clamped to [1, maxFactor]; a non-finite sagitta (edge crossing the eye plane) gives

@@ -216,6 +216,84 @@ namespace GregoryTerrain
             return Math.Max(whole, Math.Max(first, second));
         }
 
+        /// <summary>
+        /// Segments per tile edge the adaptive estimate samples (HLSL <c>GT_EDGE_SEGMENTS</c>): the
+        /// surface is evaluated at the <c>EdgeSegments - 1</c> inner points of the edge (the corners are
+        /// known). Four missed bumps inside far tiles (max 2.3 px at a 1 px target on the H200 path);
+        /// eight see detail twice as fine for 4 more evaluations per edge, once per tile per frame.
+        /// </summary>
+        public const int EdgeSegments = 8;
+
+        /// <summary>
+        /// The chord error, in pixels, of a curve drawn as one segment, from <c>n + 1</c> points at
+        /// parameter <c>k / n</c> (<paramref name="points"/>, n = <see cref="EdgeSegments"/> in the shaders,
+        /// any even n here) and the pixel scale at each (<paramref name="pixelScales"/>; the end values are
+        /// not used). Every level of the binary hierarchy counts: the deviation of point <c>k</c> from the
+        /// chord of its two neighbours at distance <c>d</c> measures the second derivative over a span
+        /// <c>2 d / n</c>, and the sagitta scales with the span squared, so it counts <c>(n / 2d)^2</c> times;
+        /// the largest over all levels and points. With n = 4 this is <see cref="EdgeSagittaPixels(Float3, Float3, Float3, Float3, Float3, float, float, float)"/>.
+        /// Symmetric in the direction of travel (shared edges agree bit for bit when both walk it the same way,
+        /// which the hull does: lower tess coordinate first).
+        /// </summary>
+        public static float EdgeSagittaPixels(Float3[] points, float[] pixelScales)
+        {
+            if (points == null || points.Length < 3 || (points.Length - 1) % 2 != 0 || !IsPowerOfTwo(points.Length - 1))
+                throw new ArgumentException(FormattableString.Invariant($"points (length {points?.Length ?? 0}) must hold 2^k + 1 >= 3 points"), nameof(points));
+            if (pixelScales == null || pixelScales.Length != points.Length)
+                throw new ArgumentException(FormattableString.Invariant($"pixelScales (length {pixelScales?.Length ?? 0}) must hold {points.Length} values"), nameof(pixelScales));
+            int n = points.Length - 1;
+            float s = 0f;
+            for (int d = n / 2; d >= 1; d /= 2)
+            {
+                float weight = (float)(n / (2 * d)) * (n / (2 * d));   // (span 1 / span 2d/n)^2, exact in float
+                for (int k = d; k < n; k += 2 * d)
+                    s = Math.Max(s, weight * GMath.length(points[k] - 0.5f * (points[k - d] + points[k + d])) * pixelScales[k]);
+            }
+            return s;
+        }
+
+        static bool IsPowerOfTwo(int n) => n > 0 && (n & (n - 1)) == 0;
+
+        /// <summary>
+        /// Bound on the second derivative of <see cref="GradientNoise"/> along a lattice axis, per unit
+        /// lattice (|d^2 n / dx^2| and |d^2 n / dy^2| &lt;= this): the largest value found on a dense grid
+        /// of 256 x 256 lattice cells (Tests/Core/TessellationErrorTests.cs checks it), rounded up.
+        /// </summary>
+        public const float GradientNoiseCurvature = 12f;
+
+        /// <summary>
+        /// Bound on the second derivative of <see cref="OctaveNoise"/> along x or y, in terrain units per
+        /// (terrain unit)^2, for the octaves a frame draws (<paramref name="octaveCount"/>, the fraction
+        /// weighting the last one as in OctaveNoise): <c>|amplitude| * GradientNoiseCurvature * sum_k
+        /// fade_k beta^-k (frequency alpha^k)^2</c>. Octave k's curvature grows as <c>(alpha^2 / beta)^k</c>,
+        /// so for the default alpha = beta = 2 the finest drawn octave dominates. Mirrors HLSL <c>NoiseCurvatureBound</c>.
+        /// </summary>
+        public static float NoiseCurvatureBound(NoiseSettings settings, float octaveCount)
+        {
+            settings.Validate(nameof(settings));
+            if (float.IsNaN(octaveCount)) throw new ArgumentException("octaveCount (NaN) must be a number", nameof(octaveCount));
+            float f = settings.frequency, w = 1f, invBeta = 1f / settings.beta, sum = 0f;
+            for (int k = 0; k < NoiseSettings.MaxOctaves; k++)
+            {
+                float fade = GMath.saturate(octaveCount - k);
+                if (fade <= 0f) break;
+                sum += fade * w * (f * f);
+                f *= settings.alpha;
+                w *= invBeta;
+            }
+            return Math.Abs(settings.amplitude) * GradientNoiseCurvature * sum;
+        }
+
+        /// <summary>
+        /// The chord error the noise can add to an edge <paramref name="edgeLength"/> long (terrain units,
+        /// along x or y) drawn as one segment: <c>curvature * L^2 / 8</c>, in pixels at the edge's largest
+        /// pixel scale <paramref name="maxPixelsPerUnit"/>. Added to the surface's sagitta (second
+        /// derivatives add) before <see cref="ErrorTessFactor"/>, so the factor counts the noise the frame
+        /// shows. Mirrors HLSL <c>NoiseSagittaPixels</c>.
+        /// </summary>
+        public static float NoiseSagittaPixels(float noiseCurvature, float edgeLength, float maxPixelsPerUnit) =>
+            noiseCurvature * (edgeLength * edgeLength) * 0.125f * maxPixelsPerUnit;
+
 
         // ------------------------------------------------------------ culling
 

@@ -185,5 +185,92 @@ namespace GregoryTerrain.Tests
             Assert.That(TessellationPolicy.EstimateTriangleCount(TessellationSettings.Uniform(8, 5f), 1e9), Is.EqualTo(2.0 * 64 * 25));
             Assert.That(Assert.Throws<ArgumentException>(() => TessellationPolicy.EstimateTriangleCount(s, -1.0)).Message, Does.Contain("rangeSagittaPixels (-1)"));
         }
+
+        [Test]
+        public void SampledEdgeSagittaMatchesTheFivePointFormAndSeesFinerBumps()
+        {
+            var rng = new Random(11);
+            for (int n = 0; n < 50; n++)
+            {
+                var p = new Float3[5];
+                var k = new float[5];
+                for (int i = 0; i < 5; i++)
+                {
+                    p[i] = new Float3((float)rng.NextDouble(), (float)rng.NextDouble(), (float)rng.NextDouble());
+                    k[i] = (float)(1 + rng.NextDouble() * 10);
+                }
+                Assert.That(TessellationPolicy.EdgeSagittaPixels(p, k),
+                    Is.EqualTo(TessellationPolicy.EdgeSagittaPixels(p[0], p[1], p[2], p[3], p[4], k[1], k[2], k[3])), "n = 4 is the five-point form");
+                Array.Reverse(p); Array.Reverse(k);
+                Assert.That(TessellationPolicy.EdgeSagittaPixels(p, k),
+                    Is.EqualTo(TessellationPolicy.EdgeSagittaPixels(p[0], p[1], p[2], p[3], p[4], k[1], k[2], k[3])), "walked the other way");
+            }
+            // A parabola: every level gives the same sagitta k L^2 / 4, with 9 points as with 5.
+            var par = new Float3[9];
+            var ones = new float[9];
+            for (int i = 0; i < 9; i++) { par[i] = Parabola(2f, 0.5f * i / 8f); ones[i] = 1f; }
+            Assert.That(TessellationPolicy.EdgeSagittaPixels(par, ones), Is.EqualTo(2f * 0.25f / 4f).Within(1e-4).Percent);
+            // A bump of width 1/8 between the five-point samples: only the nine-point form sees it.
+            var bump = new Float3[9];
+            for (int i = 0; i < 9; i++) bump[i] = new Float3(i / 8f, 0f, i == 3 ? 0.01f : 0f);
+            Float3 B(int i) => bump[i];
+            Assert.That(TessellationPolicy.EdgeSagittaPixels(B(0), B(2), B(4), B(6), B(8), 1f, 1f, 1f), Is.EqualTo(0f));
+            Assert.That(TessellationPolicy.EdgeSagittaPixels(bump, ones), Is.EqualTo(16f * 0.01f).Within(1e-4).Percent);
+            Assert.Throws<ArgumentException>(() => TessellationPolicy.EdgeSagittaPixels(new Float3[6], new float[6]));
+            Assert.Throws<ArgumentException>(() => TessellationPolicy.EdgeSagittaPixels(par, new float[3]));
+        }
+
+        [Test]
+        public void GradientNoiseCurvatureBoundsTheNoiseSecondDerivative()
+        {
+            // Second differences along x and y (step h, error O(h^2) of a C^2 function: quintic fade) on
+            // 256 x 256 lattice cells, 8 x 8 samples each, away from lattice lines.
+            const double h = 1e-3;
+            double largest = 0;
+            for (int cy = 0; cy < 256; cy++)
+                for (int cx = 0; cx < 256; cx++)
+                    for (int sy = 0; sy < 8; sy++)
+                        for (int sx = 0; sx < 8; sx++)
+                        {
+                            double x = cx - 128 + (sx + 0.5) / 8, y = cy - 128 + (sy + 0.5) / 8;
+                            double c = GradientNoise.Evaluate(x, y, out _);
+                            double dxx = (GradientNoise.Evaluate(x + h, y, out _) - 2 * c + GradientNoise.Evaluate(x - h, y, out _)) / (h * h);
+                            double dyy = (GradientNoise.Evaluate(x, y + h, out _) - 2 * c + GradientNoise.Evaluate(x, y - h, out _)) / (h * h);
+                            largest = Math.Max(largest, Math.Max(Math.Abs(dxx), Math.Abs(dyy)));
+                        }
+            TestContext.Out.WriteLine($"largest |d2 noise / dx2| on the grid: {largest:G4} (bound {TessellationPolicy.GradientNoiseCurvature})");
+            Assert.That(largest, Is.LessThanOrEqualTo(TessellationPolicy.GradientNoiseCurvature));
+            Assert.That(largest, Is.GreaterThan(0.5 * TessellationPolicy.GradientNoiseCurvature), "the bound is not loose by more than 2x");
+        }
+
+        [Test]
+        public void NoiseSagittaBoundsTheChordErrorOfOctaveNoise()
+        {
+            var noise = NoiseSettings.Default;
+            float curvature = TessellationPolicy.NoiseCurvatureBound(noise, 3.5f);
+            // One octave: amplitude * C * f^2; 3.5 octaves: f^2 (1 + alpha^2/beta + (alpha^2/beta)^2 + 0.5 (alpha^2/beta)^3).
+            float one = TessellationPolicy.NoiseCurvatureBound(noise, 1f);
+            Assert.That(one, Is.EqualTo(noise.amplitude * TessellationPolicy.GradientNoiseCurvature * noise.frequency * noise.frequency).Within(1e-5).Percent);
+            Assert.That(curvature, Is.EqualTo(one * (1 + 2 + 4 + 0.5 * 8)).Within(1e-5).Percent);
+            Assert.That(TessellationPolicy.NoiseCurvatureBound(noise, 0f), Is.EqualTo(0f));
+            // Chords of length L along x anywhere: the middle's deviation never exceeds the bound.
+            var rng = new Random(3);
+            double worst = 0;
+            foreach (double length in new[] { 0.002, 0.01, 0.05 })
+            {
+                float bound = TessellationPolicy.NoiseSagittaPixels(curvature, (float)length, 1f);
+                for (int n = 0; n < 20000; n++)
+                {
+                    double x = rng.NextDouble(), y = rng.NextDouble();
+                    double a = OctaveNoise.Evaluate(x, y, noise, 3.5, out _), b = OctaveNoise.Evaluate(x + length, y, noise, 3.5, out _);
+                    double m = OctaveNoise.Evaluate(x + 0.5 * length, y, noise, 3.5, out _);
+                    double dev = Math.Abs(m - 0.5 * (a + b));
+                    Assert.That(dev, Is.LessThanOrEqualTo(bound), $"L {length} at ({x}, {y})");
+                    worst = Math.Max(worst, dev / bound);
+                }
+            }
+            TestContext.Out.WriteLine($"largest noise chord deviation / bound: {worst:G3}");
+            Assert.Throws<ArgumentException>(() => TessellationPolicy.NoiseCurvatureBound(noise, float.NaN));
+        }
     }
 }

@@ -57,6 +57,8 @@ namespace GregoryTerrain.Rig.Tests
             }
             Assert.That(_output, Does.Contain("range-only / nothing changes"));
             Assert.That(_output, Does.Contain("/ static mesh"));
+            Assert.That(_output, Does.Contain("same vertices, same frag"), "the fair static mesh section");
+            Assert.That(_output, Does.Not.Contain("| (incomplete) |"), "every fair static size ran");
         }
 
         [Test]

@@ -33,12 +33,15 @@ make_plan() {  # make_plan DIR
   "${cli[@]}" bench-plan --grid "$grid" --out "$dir" "${quick[@]}" >&2
   [ -d "$BUILD_DIR/spirv/factor_readback" ] || bash "$RIG_DIR/shaders.sh" -j "$(nproc)" >/dev/null
   mkdir -p "$dir/spirv"
-  for v in base noise paper_mode paper_mode+noise factor_readback factor_readback+noise; do
+  for v in base noise paper_mode paper_mode+noise factor_readback factor_readback+noise readback+noise; do
     mkdir -p "$dir/spirv/$v"; cp "$BUILD_DIR/spirv/$v/"*.spv "$dir/spirv/$v/"
   done
+  # The fair static mesh's vertex stage (rig only, GT_STATIC_MESH): reads baked vertices, same frag.
+  glslangValidator -D -V -S vert -e vert_static --hlsl-iomap --shift-cbuffer-binding 0 --shift-texture-binding 2 \
+    --shift-UAV-binding 5 -DGT_STATIC_MESH -o "$dir/spirv/static.spv" "$PKG_DIR/Shaders/Rig/TerrainRig.hlsl" >/dev/null
   bash "$TOOLS_DIR/harness/test/compile.sh" "$dir/mesh-spv" >/dev/null
   cp "$dir/mesh-spv/mesh.vert.spv" "$dir/mesh-spv/mesh.frag.spv" "$dir/spirv/"; rm -rf "$dir/mesh-spv"
-  cp "$RIG_DIR/bench_run.sh" "$TOOLS_DIR/harness/test/make_grid_mesh.py" "$dir/"
+  cp "$RIG_DIR/bench_run.sh" "$RIG_DIR/bench_static_mesh.py" "$TOOLS_DIR/harness/test/make_grid_mesh.py" "$dir/"
   cp "$BUILD_DIR/harness/gt-harness" "$dir/"
 }
 

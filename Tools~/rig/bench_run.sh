@@ -5,11 +5,14 @@
 # Writes OUT_DIR/results.txt ("== ID KIND" then the harness's lines, "exit N"), OUT_DIR/readback.tar
 # (the factor readbacks) and OUT_DIR/device.txt. Static meshes are made by make_grid_mesh.py
 # (Tools~/harness/test, or beside this script) with as many triangles as the job they match.
+# static-bake jobs capture the terrain's vertices (GT_READBACK) and pack them with
+# bench_static_mesh.py into OUT_DIR/static/REF for the fair static mesh's run (vert_static);
+# the captures and packed meshes are deleted at the end (hundreds of MB at 8M triangles).
 set -uo pipefail
 plan=$1 harness=$2 spv=$3 out=$4; shift 4
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 mesher="$here/make_grid_mesh.py"; [ -f "$mesher" ] || mesher="$here/../harness/test/make_grid_mesh.py"
-mkdir -p "$out/readback" "$out/mesh"
+mkdir -p "$out/readback" "$out/mesh" "$out/capture" "$out/static"
 res="$out/results.txt"; : > "$res"
 "$harness" --list-devices "$@" > "$out/device.txt" 2>&1 || true
 start=$(date +%s)
@@ -28,8 +31,14 @@ while IFS=$'\t' read -r id kind ref args; do
   printf '== %s %s\n' "$id" "$kind" >> "$res"
   # shellcheck disable=SC2086
   "$harness" $args "$@" >> "$res" 2>&1
-  echo "exit $?" >> "$res"
+  rc=$?
+  if [ "$kind" = static-bake ] && [ $rc -eq 0 ]; then
+    python3 "$here/bench_static_mesh.py" "$out/capture/$ref.f32" "$plan/jobs/$ref" "$out/static/$ref" >> "$res" 2>&1
+    rc=$?
+    rm -f "$out/capture/$ref.f32"
+  fi
+  echo "exit $rc" >> "$res"
 done < "$plan/plan.tsv"
-rm -rf "$out/mesh"
+rm -rf "$out/mesh" "$out/capture" "$out/static"
 [ -d "$out/readback" ] && (cd "$out" && tar cf readback.tar readback && rm -rf readback)
 echo "bench_run: $n jobs in $(( $(date +%s) - start )) s -> $out" | tee -a "$res"

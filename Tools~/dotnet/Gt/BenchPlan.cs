@@ -35,8 +35,10 @@ namespace GregoryTerrain.Rig
     /// script and the harness (the NVIDIA machine has no dotnet): the buffers of every
     /// (configuration, camera) pair, and plan.tsv, one harness job a line:
     /// <c>ID KIND REF ARGS...</c> (tab-separated) where KIND is run (time + statistics), readback
-    /// (GT_FACTOR_READBACK factors) or static-match (a static grid mesh with as many triangles as job
-    /// REF drew); ARGS may hold @SPV@, @JOB@, @OUT@ and @MESH@, filled in by Tools~/rig/bench_run.sh.
+    /// (GT_FACTOR_READBACK factors), static-match (a static grid mesh with as many triangles as job
+    /// REF drew) or static-bake (a GT_READBACK capture of the terrain's vertices, packed into
+    /// @OUT@/static/REF for vert_static); ARGS may hold @SPV@, @JOB@, @OUT@ and @MESH@, filled in by
+    /// Tools~/rig/bench_run.sh.
     /// </summary>
     static class BenchPlan
     {
@@ -91,6 +93,7 @@ namespace GregoryTerrain.Rig
             string timing = Inv($"--stats --timestamps --frames {frames} --warmup {warmup}");
 
             Table1(grid, dir, plan, meta, quick, width, height);   // first: the figures that matter most if a run is cut short
+            FairStatic(grid, dir, plan, meta, quick, width, height);
             var path = quick ? new[] { CameraPath[0], CameraPath[2] } : CameraPath;
             foreach (var cfg in Sweep(quick))
                 foreach (var (cam, range) in path)
@@ -119,8 +122,8 @@ namespace GregoryTerrain.Rig
         /// The paper's Table 1 and the static-mesh comparison: a 64x64 surface (one tile at factor 64)
         /// and the same at >= 8M triangles (32 x 32 tiles at factor 64), each drawn with nothing changing,
         /// only _Range changing, the changed geometry re-sent (the triangle soup, 36 bytes a triangle),
-        /// and as a static mesh of the same triangle count; then the package's terrain (noise, tiles,
-        /// adaptive) at about 0.5M, 2M and 8M triangles, each beside a static mesh of its count.
+        /// and as a static mesh of the same triangle count (the harness's minimal shader: a floor; the
+        /// fair static mesh is FairStatic's).
         /// </summary>
         static void Table1(PatchGrid grid, string dir, StringBuilder plan, StringBuilder meta, bool quick, int width, int height)
         {
@@ -142,18 +145,84 @@ namespace GregoryTerrain.Rig
                 plan.Append($"{id}:static\tstatic-match\t{id}:plain\t--static-mesh --mesh @MESH@ --vert @SPV@/mesh.vert.spv --frag @SPV@/mesh.frag.spv --buffers @JOB@/{id} {view} {t}\n");
                 meta.Append(Inv($"{id}\ttable1\t{tiles}\t{f}\t0\t64\t0\tfar\t{tiles * tiles}\n"));
             }
-            // The package's terrain (adaptive + noise) at growing triangle counts, each beside a static mesh.
-            var terrain = quick ? new[] { (8, 1.0) } : new[] { (16, 0.5), (32, 0.125), (64, 0.03) };
-            foreach (var (tiles, target) in terrain)
+        }
+
+        /// <summary>Tile count and uniform factor of the fair-static comparison (terrain = static = 2 M^2 F^2 triangles).</summary>
+        public static (int tiles, int factor)[] FairSizes(bool quick) => quick
+            ? new[] { (8, 7) }
+            : new[] { (32, 17), (32, 31), (32, 63), (64, 31), (128, 15), (256, 7) };
+
+        /// <summary>The adaptive terrain beside the fair static meshes: tiles, and the static size whose triangle count it aims at.</summary>
+        public static (int tiles, int staticTiles, int staticFactor)[] AdaptiveVsStatic(bool quick) => quick
+            ? new[] { (8, 8, 7) }
+            : new[] { (64, 32, 17), (64, 32, 31), (64, 32, 63) };
+
+        /// <summary>
+        /// The fair static mesh (Documentation~/performance.md): for M x M tiles at the uniform factor F,
+        /// the package's terrain (tessellated, GT_NOISE, _Range changing every frame), the fallback grid
+        /// (same vertices evaluated without a tessellator), the terrain's vertices baked once
+        /// (GT_READBACK capture on the device, packed by bench_static_mesh.py) and drawn by vert_static
+        /// with the same frag and the same index grid, and the old minimal-shader grid (a floor). Then the
+        /// adaptive terrain (noise, 64 tiles) at the target whose Core-predicted triangle count matches
+        /// each static size.
+        /// </summary>
+        static void FairStatic(PatchGrid grid, string dir, StringBuilder plan, StringBuilder meta, bool quick, int width, int height)
+        {
+            string view = Inv($"--width {width} --height {height}");
+            int frames = quick ? 3 : 100;
+            string t = Inv($"--stats --timestamps --frames {frames} --warmup {(quick ? 1 : 5)}");
+            foreach (var (m, f) in FairSizes(quick))
             {
-                var cfg = new BenchConfig { Method = "adaptive", Tiles = tiles, Target = target, Octaves = 4 };
-                string id = Inv($"vs_m{tiles}_e{target}");
+                var cfg = new BenchConfig { Method = "uniform", Tiles = m, Factor = f, Octaves = 4 };
+                string id = Inv($"fs_m{m}_f{f}");
                 Scene(grid, cfg, CameraPath[0].range, width, height).WriteBuffers(Path.Combine(dir, "jobs", id));
-                string t = Inv($"--stats --timestamps --frames {framesBig} --warmup 5");
-                plan.Append($"{id}:terrain\trun\t-\t{Stages("noise", false)} --patches {tiles * tiles} --buffers @JOB@/{id} {view} {t} --update-range-per-frame\n");
-                plan.Append($"{id}:static\tstatic-match\t{id}:terrain\t--static-mesh --mesh @MESH@ --vert @SPV@/mesh.vert.spv --frag @SPV@/mesh.frag.spv --buffers @JOB@/{id} {view} {t}\n");
-                meta.Append(Inv($"{id}\tvs\t{tiles}\t0\t{target}\t64\t4\tfar\t{tiles * tiles}\n"));
+                int patches = m * m;
+                long vertices = (long)patches * (f + 1) * (f + 1);
+                string buffers = $"--buffers @JOB@/{id}";
+                plan.Append($"{id}:terrain\trun\t-\t{Stages("noise", false)} --patches {patches} {buffers} {view} {t} --update-range-per-frame\n");
+                plan.Append($"{id}:fallback\trun\t-\t{Stages("noise", true)} --grid-factor {f} --instances {patches} {buffers} {view} {t} --update-range-per-frame\n");
+                plan.Append($"{id}:bake\tstatic-bake\t{id}\t{Stages("readback+noise", true)} --grid-factor {f} --instances {patches} {buffers} {view} --readback @OUT@/capture/{id}.f32 --readback-floats {12 * vertices}\n");
+                plan.Append($"{id}:static\trun\t-\t--vert @SPV@/static.spv --frag @SPV@/noise/frag.spv --grid-factor {f} --instances {patches} --buffers @OUT@/static/{id} {view} {t}\n");
+                plan.Append($"{id}:floor\tstatic-match\t{id}:terrain\t--static-mesh --mesh @MESH@ --vert @SPV@/mesh.vert.spv --frag @SPV@/mesh.frag.spv {buffers} {view} {t}\n");
+                meta.Append(Inv($"{id}\tfair\t{m}\t{f}\t0\t{f}\t4\tfar\t{patches}\n"));
             }
+            foreach (var (m, sm, sf) in AdaptiveVsStatic(quick))
+            {
+                double want = 2.0 * sm * sm * sf * sf;
+                double target = TargetForTriangles(grid, m, want, width, height);
+                var cfg = new BenchConfig { Method = "adaptive", Tiles = m, Target = target, Octaves = 4 };
+                string id = Inv($"va_m{m}_s{sm}x{sf}");
+                Scene(grid, cfg, CameraPath[0].range, width, height).WriteBuffers(Path.Combine(dir, "jobs", id));
+                plan.Append($"{id}:terrain\trun\t-\t{Stages("noise", false)} --patches {m * m} --buffers @JOB@/{id} {view} {t} --update-range-per-frame\n");
+                meta.Append(Inv($"{id}\tadaptive-vs\t{m}\t0\t{target:G6}\t64\t4\tfar\t{m * m}\n"));
+            }
+        }
+
+        /// <summary>
+        /// The pixel target at which the adaptive terrain (noise, <paramref name="tiles"/> tiles, far view)
+        /// draws about <paramref name="triangles"/> triangles by Core's mirror of hull_const: 2 n0 n1 per
+        /// tile, n the odd segment count fractional_odd makes of each inside factor (the transition rings
+        /// are not counted). Bisection on log(target).
+        /// </summary>
+        public static double TargetForTriangles(PatchGrid grid, int tiles, double triangles, int width, int height)
+        {
+            double lo = Math.Log(1e-4), hi = Math.Log(100);
+            for (int it = 0; it < 24; it++)
+            {
+                double mid = 0.5 * (lo + hi);
+                var cfg = new BenchConfig { Method = "adaptive", Tiles = tiles, Target = Math.Exp(mid), Octaves = 4 };
+                double n = ModelTriangles(ErrorCommand.CoreFactors(Scene(grid, cfg, CameraPath[0].range, width, height), noise: true));
+                if (n > triangles) lo = mid; else hi = mid;
+            }
+            return double.Parse(Math.Exp(0.5 * (lo + hi)).ToString("G4", CultureInfo.InvariantCulture), CultureInfo.InvariantCulture);
+        }
+
+        public static double ModelTriangles(PatchFactors[] factors)
+        {
+            static double Odd(double f) { double n = Math.Ceiling(Math.Min(Math.Max(f, 1), 63)); return n % 2 == 0 ? n + 1 : n; }
+            double sum = 0;
+            foreach (var p in factors) if (!p.culled) sum += 2 * Odd(p.i0) * Odd(p.i1);
+            return sum;
         }
 
         static string Stages(string variant, bool fallback) => fallback

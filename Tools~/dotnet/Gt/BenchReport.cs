@@ -69,7 +69,7 @@ namespace GregoryTerrain.Rig
                         if (!File.Exists(f)) { complete = false; continue; }
                         rb = BufferFiles.Read(f);
                         var gpuF = PatchFactors.FromReadback(rb, cfg.Tiles * cfg.Tiles);
-                        var coreF = ErrorCommand.CoreFactors(scene);
+                        var coreF = ErrorCommand.CoreFactors(scene, cfg.Noise);
                         for (int p = 0; p < gpuF.Length; p++)
                             if (!gpuF[p].culled && !coreF[p].culled)
                                 factorDiff = Math.Max(factorDiff, Math.Max(Math.Abs(gpuF[p].i0 - coreF[p].i0), Math.Abs(gpuF[p].e0 - coreF[p].e0)));
@@ -88,6 +88,7 @@ namespace GregoryTerrain.Rig
             o.AppendLine("Triangles and DS invocations (vertex invocations for the fallback) are means per frame over the camera path; GPU time the mean of the per-camera medians; errors the largest (max) and RMS over every sample of the path.");
             o.AppendLine();
             Table1(o, jobs, quick);
+            Fair(o, jobs, quick);
             Goals(o, tsv.ToString());
             Console.Write(o.ToString());
             string tsvPath = a.String("tsv", Path.Combine(raw, "bench_table.tsv"));
@@ -102,7 +103,7 @@ namespace GregoryTerrain.Rig
             o.AppendLine();
             o.AppendLine("| case | triangles | GPU ms/frame (median) | CPU ms/frame (mean) | draws/s (1000 / CPU mean) |");
             o.AppendLine("| --- | ---: | ---: | ---: | ---: |");
-            foreach (var kv in jobs.Where(k => k.Key.StartsWith("t1_") || k.Key.StartsWith("vs_")))
+            foreach (var kv in jobs.Where(k => k.Key.StartsWith("t1_") || k.Key.StartsWith("fs_") || k.Key.StartsWith("va_")))
             {
                 var j = kv.Value;
                 long tris = j.Get("clipping_invocations");
@@ -119,12 +120,37 @@ namespace GregoryTerrain.Rig
                     + Inv($"re-send / range-only = {resend.CpuMeanMs / range.CpuMeanMs:F2}x frame time ({1000 / range.CpuMeanMs:F0} vs {1000 / resend.CpuMeanMs:F0} draws/s; the paper: 594.954 / 192.901 = 3.08x), {resend.GpuMs / range.GpuMs:F2}x GPU; ")
                     + Inv($"tessellated (range-only) / static mesh = {range.GpuMs / stat.GpuMs:F3}x GPU"));
             }
-            foreach (var prefix in jobs.Keys.Where(k => k.StartsWith("vs_") && k.Contains(":terrain")).Select(k => k.Substring(0, k.IndexOf(':'))))
+            o.AppendLine();
+        }
+
+        /// <summary>The fair static mesh: terrain, fallback, baked mesh with the same frag, the minimal floor; adaptive beside them.</summary>
+        static void Fair(StringBuilder o, Dictionary<string, Job> jobs, bool quick)
+        {
+            o.AppendLine("## The terrain against the fair static mesh (same vertices, same frag)");
+            o.AppendLine();
+            o.AppendLine("| tiles | F | triangles | terrain GPU ms | fallback GPU ms | fair static GPU ms | floor (minimal shader) GPU ms | terrain / fair static | fallback / fair static | terrain / floor |");
+            o.AppendLine("| ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |");
+            var statics = new List<(long tris, double ms, string id)>();
+            foreach (var (m, f) in BenchPlan.FairSizes(quick))
             {
-                jobs.TryGetValue($"{prefix}:terrain run", out var t);
-                jobs.TryGetValue($"{prefix}:static static-match", out var s);
-                if (t == null || s == null || double.IsNaN(s.GpuMs)) continue;
-                o.AppendLine(Inv($"- {prefix}: package terrain (adaptive + noise + tiles, range changing every frame, {t.Get("clipping_invocations")} triangles) / static mesh ({s.Get("clipping_invocations")} triangles) = {t.GpuMs / s.GpuMs:F3}x GPU"));
+                string id = Inv($"fs_m{m}_f{f}");
+                Job J(string s, string kind = "run") => jobs.TryGetValue($"{id}:{s} {kind}", out var j) && j.Exit == 0 ? j : null;
+                Job ter = J("terrain"), fb = J("fallback"), st = J("static"), fl = J("floor", "static-match");
+                if (ter == null || st == null) { o.AppendLine(Inv($"| {m} | {f} | (incomplete) | | | | | | | |")); continue; }
+                double fbMs = fb?.GpuMs ?? double.NaN, flMs = fl?.GpuMs ?? double.NaN;
+                long tris = ter.Get("clipping_invocations");
+                statics.Add((st.Get("clipping_invocations"), st.GpuMs, id));
+                o.AppendLine(Inv($"| {m} | {f} | {tris} | {ter.GpuMs:G4} | {fbMs:G4} | {st.GpuMs:G4} | {flMs:G4} | {ter.GpuMs / st.GpuMs:F3}x | {fbMs / st.GpuMs:F3}x | {ter.GpuMs / flMs:F3}x |"));
+            }
+            o.AppendLine();
+            foreach (var (m, sm, sf) in BenchPlan.AdaptiveVsStatic(quick))
+            {
+                string id = Inv($"va_m{m}_s{sm}x{sf}");
+                if (!jobs.TryGetValue(id + ":terrain run", out var t) || t.Exit != 0) continue;
+                var s = statics.FirstOrDefault(x => x.id == Inv($"fs_m{sm}_f{sf}"));
+                if (s.id == null) continue;
+                long tris = t.Get("clipping_invocations");
+                o.AppendLine(Inv($"- {id}: package terrain (adaptive + noise, {m} tiles, range changing every frame) {tris} triangles, {t.GpuMs:G4} ms / fair static mesh ({s.id}) {s.tris} triangles, {s.ms:G4} ms = {t.GpuMs / s.ms:F3}x GPU ({t.GpuMs / tris * 1e6 / (s.ms / s.tris * 1e6):F3}x per triangle)"));
             }
             o.AppendLine();
         }

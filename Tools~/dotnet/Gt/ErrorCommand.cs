@@ -20,7 +20,7 @@ namespace GregoryTerrain.Rig
             if (a.Flag("print-factors"))
             {
                 var gpu = factorsFile == "" ? null : PatchFactors.FromReadback(BufferFiles.Read(factorsFile), scene.Tessellation.tiles * scene.Tessellation.tiles);
-                var core = CoreFactors(scene);
+                var core = CoreFactors(scene, a.Flag("with-noise"));
                 for (int p = 0; p < core.Length; p++)
                     Console.WriteLine(FormattableString.Invariant($"tile {p} core {core[p].e0:G4} {core[p].e1:G4} {core[p].e2:G4} {core[p].e3:G4} in {core[p].i0:G4} {core[p].i1:G4}")
                         + (gpu == null ? "" : FormattableString.Invariant($" gpu {gpu[p].e0:G4} {gpu[p].e1:G4} {gpu[p].e2:G4} {gpu[p].e3:G4} in {gpu[p].i0:G4} {gpu[p].i1:G4}")));
@@ -39,7 +39,7 @@ namespace GregoryTerrain.Rig
             else
             {
                 if (!t.IsUniform && paper) throw new ArgumentException("--paper needs --factor F (the paper's method is uniform)");
-                if (!t.IsUniform) factors = CoreFactors(scene);   // no readback: Core's mirror of hull_const
+                if (!t.IsUniform) factors = CoreFactors(scene, noise);   // no readback: Core's mirror of hull_const
                 else
                 {
                     factors = new PatchFactors[patches];
@@ -54,32 +54,62 @@ namespace GregoryTerrain.Rig
 
         /// <summary>
         /// The factors hull_const should give, from Core's mirror (TessellationPolicy, float) over the
-        /// double reference surface without noise: the cross-check of the GPU readback.
+        /// double reference surface without noise: the cross-check of the GPU readback. With
+        /// <paramref name="noise"/> (the GT_NOISE variant) each edge's sagitta also holds the noise
+        /// bound of the frame's octaves and the culling box its height bound.
         /// </summary>
-        public static PatchFactors[] CoreFactors(RigScene scene)
+        public static PatchFactors[] CoreFactors(RigScene scene, bool noise = false)
         {
             var t = scene.Tessellation;
             var reference = new TerrainReference(scene.Grid, scene.Range, t.tiles, false, scene.Noise, 0);
             Float4x4 m = scene.Camera.ObjectToClipFloat();
             var screen = new Float2(scene.Camera.Width, scene.Camera.Height);
-            float bound = 0f;   // the noise variant adds NoiseHeightBound; culling here without noise
+            float bound = noise ? TessellationPolicy.NoiseHeightBound(scene.Noise) : 0f;
+            float curvature = 0f;
+            if (noise)
+            {
+                // The shader's octave count, in float as OctaveCount computes it (TerrainVertex.hlsl).
+                float octaves = (float)TerrainReference.ShaderOctaves(scene.Range, scene.Noise, t.tiles, t.maxFactor, scene.Params.noiseOctaves.y);
+                curvature = TessellationPolicy.NoiseCurvatureBound(scene.Noise, octaves);
+            }
+            // Tile edge lengths in terrain units (x edges run along u, y edges along v).
+            float edgeX = (float)(scene.Range.Width / t.tiles), edgeY = (float)(scene.Range.Height / t.tiles);
+            const int n = TessellationPolicy.EdgeSegments;
             var f = new PatchFactors[t.tiles * t.tiles];
-            for (int p = 0; p < f.Length; p++)
+            System.Threading.Tasks.Parallel.For(0, f.Length, p =>
             {
                 Float3 P(double s, double u) { var d = reference.ObjectPoint(p, s, u); return new Float3((float)d[0], (float)d[1], (float)d[2]); }
                 var corners = new[] { P(0, 0), P(1, 0), P(0, 1), P(1, 1) };
-                if (TessellationPolicy.TileCulled(m, corners, bound)) { f[p] = new PatchFactors { culled = true }; continue; }
-                float E(double s0, double t0, double s1, double t1, Float3 a, Float3 b) => TessellationPolicy.EdgeErrorTessFactor(m, a,
-                    P(s0 + 0.25 * (s1 - s0), t0 + 0.25 * (t1 - t0)), P(0.5 * (s0 + s1), 0.5 * (t0 + t1)), P(s0 + 0.75 * (s1 - s0), t0 + 0.75 * (t1 - t0)), b,
-                    screen, t.targetPixels, t.maxFactor);
-                var r = new PatchFactors { e0 = E(0, 0, 0, 1, corners[0], corners[2]), e1 = E(0, 0, 1, 0, corners[0], corners[1]),
-                                           e2 = E(1, 0, 1, 1, corners[1], corners[3]), e3 = E(0, 1, 1, 1, corners[2], corners[3]) };
+                if (TessellationPolicy.TileCulled(m, corners, bound)) { f[p] = new PatchFactors { culled = true }; return; }
+                // Edge from tess (s0, t0) to (s1, t1), lower coordinate first, as hull_const walks it.
+                float E(double s0, double t0, double s1, double t1, Float3 a, Float3 b, float length)
+                {
+                    var pts = new Float3[n + 1];
+                    var k = new float[n + 1];
+                    pts[0] = a; pts[n] = b;
+                    float kMax = 0f;
+                    for (int i = 1; i < n; i++)
+                    {
+                        double w = (double)i / n;
+                        pts[i] = P(s0 + w * (s1 - s0), t0 + w * (t1 - t0));
+                        k[i] = TessellationPolicy.PixelsPerUnit(m, pts[i], screen);
+                        kMax = Math.Max(kMax, k[i]);
+                    }
+                    float sag = TessellationPolicy.EdgeSagittaPixels(pts, k);
+                    if (noise) sag += TessellationPolicy.NoiseSagittaPixels(curvature, length, kMax);
+                    return TessellationPolicy.ErrorTessFactor(sag, t.targetPixels, t.maxFactor);
+                }
+                var r = new PatchFactors { e0 = E(0, 0, 0, 1, corners[0], corners[2], edgeY), e1 = E(0, 0, 1, 0, corners[0], corners[1], edgeX),
+                                           e2 = E(1, 0, 1, 1, corners[1], corners[3], edgeY), e3 = E(0, 1, 1, 1, corners[2], corners[3], edgeX) };
                 Float3 c = P(0.5, 0.5);
                 float d = TessellationPolicy.InsideErrorTessFactor(TessellationPolicy.DiagonalSagittaPixels(corners[0], corners[1], corners[2], corners[3], c,
                     TessellationPolicy.PixelsPerUnit(m, c, screen)), t.targetPixels, t.maxFactor);
-                r.i0 = Math.Max(Math.Max(r.e1, r.e3), d); r.i1 = Math.Max(Math.Max(r.e0, r.e2), d);
+                // The tile's midlines (inside factors may look inside): bumps between the edges.
+                float mu = E(0, 0.5, 1, 0.5, P(0, 0.5), P(1, 0.5), edgeX), mv = E(0.5, 0, 0.5, 1, P(0.5, 0), P(0.5, 1), edgeY);
+                if (Environment.GetEnvironmentVariable("GT_NO_MIDLINES") == "1") { mu = 1; mv = 1; }
+                r.i0 = Math.Max(Math.Max(Math.Max(r.e1, r.e3), mu), d); r.i1 = Math.Max(Math.Max(Math.Max(r.e0, r.e2), mv), d);
                 f[p] = r;
-            }
+            });
             return f;
         }
 
