@@ -13,10 +13,10 @@
 // SubShader Unity picked expects (Material.GetTag without fallbacks reads the SubShader in use).
 //
 // Keywords: the package's are exactly the shipped ones of Tools~/rig/shader_variants.txt
-// (GT_PAPER_MODE and GT_READBACK are rig-only and never declared here), all shader_feature_local;
-// depth and shadow passes declare only GT_NOISE and GT_SNOW, the ones that change the shape (GT_SNOW
-// is enabled at run time by SnowSimulator: as a shader_feature it is in a build only if a material
-// in the build has it on). The pipelines' own
+// (GT_PAPER_MODE, GT_READBACK and GT_FACTOR_READBACK are rig-only and never declared here), all
+// shader_feature_local except GT_SNOW, which SnowSimulator switches at run time: it is
+// multi_compile_local, so a player build keeps both variants even when no saved material has it on.
+// Depth and shadow passes declare only GT_NOISE and GT_SNOW, the ones that change the shape. The pipelines' own
 // keywords are multi_compile, only where a pass reads them: URP's main-light shadow keywords and
 // Built-in's SHADOWS_SCREEN on the forward passes (received shadows), URP's _GBUFFER_NORMALS_OCT on
 // DepthNormals. Each pass defines one GT_PASS_* (and GT_FALLBACK without a tessellator) before its
@@ -77,7 +77,7 @@ Shader "GregoryTerrain/Terrain"
             #pragma fragment frag
             // Effects: off = not compiled into the build at all (shader_feature: unused variants are stripped).
             #pragma shader_feature_local GT_NOISE
-            #pragma shader_feature_local GT_SNOW
+            #pragma multi_compile_local _ GT_SNOW
             #pragma shader_feature_local GT_HEIGHT_COLOR
             #pragma shader_feature_local _ GT_DEBUG_NORMALS GT_DEBUG_PATCH_ID GT_DEBUG_TESS_FACTOR
             // Main-light shadows received (URPAdapter.hlsl, GT_MainLightShadow): URP's own keywords.
@@ -108,7 +108,7 @@ Shader "GregoryTerrain/Terrain"
             #pragma domain domain_shader
             #pragma fragment frag
             #pragma shader_feature_local GT_NOISE
-            #pragma shader_feature_local GT_SNOW
+            #pragma multi_compile_local _ GT_SNOW
             #define GT_PASS_SHADOWCASTER 1
             #include "Packages/com.gregoryterrain.tessellation/Shaders/Adapters/URPAdapter.hlsl"
             #include "Packages/com.gregoryterrain.tessellation/Shaders/TerrainStages.hlsl"
@@ -134,7 +134,7 @@ Shader "GregoryTerrain/Terrain"
             #pragma domain domain_shader
             #pragma fragment frag
             #pragma shader_feature_local GT_NOISE
-            #pragma shader_feature_local GT_SNOW
+            #pragma multi_compile_local _ GT_SNOW
             #define GT_PASS_DEPTH 1
             #include "Packages/com.gregoryterrain.tessellation/Shaders/Adapters/URPAdapter.hlsl"
             #include "Packages/com.gregoryterrain.tessellation/Shaders/TerrainStages.hlsl"
@@ -159,7 +159,7 @@ Shader "GregoryTerrain/Terrain"
             #pragma domain domain_shader
             #pragma fragment frag
             #pragma shader_feature_local GT_NOISE
-            #pragma shader_feature_local GT_SNOW
+            #pragma multi_compile_local _ GT_SNOW
             // URP's normal packing for the deferred renderer's accurate G-buffer normals.
             #pragma multi_compile_fragment _ _GBUFFER_NORMALS_OCT
             #define GT_PASS_DEPTH_NORMALS 1
@@ -190,7 +190,7 @@ Shader "GregoryTerrain/Terrain"
             #pragma fragment frag
             // Effects: off = not compiled into the build at all (shader_feature: unused variants are stripped).
             #pragma shader_feature_local GT_NOISE
-            #pragma shader_feature_local GT_SNOW
+            #pragma multi_compile_local _ GT_SNOW
             #pragma shader_feature_local GT_HEIGHT_COLOR
             #pragma shader_feature_local _ GT_DEBUG_NORMALS GT_DEBUG_PATCH_ID GT_DEBUG_TESS_FACTOR
             // Main-light shadows received (URPAdapter.hlsl, GT_MainLightShadow): URP's own keywords.
@@ -218,7 +218,7 @@ Shader "GregoryTerrain/Terrain"
             #pragma vertex vert_fallback
             #pragma fragment frag
             #pragma shader_feature_local GT_NOISE
-            #pragma shader_feature_local GT_SNOW
+            #pragma multi_compile_local _ GT_SNOW
             #define GT_PASS_SHADOWCASTER 1
             #define GT_FALLBACK 1
             #include "Packages/com.gregoryterrain.tessellation/Shaders/Adapters/URPAdapter.hlsl"
@@ -241,7 +241,7 @@ Shader "GregoryTerrain/Terrain"
             #pragma vertex vert_fallback
             #pragma fragment frag
             #pragma shader_feature_local GT_NOISE
-            #pragma shader_feature_local GT_SNOW
+            #pragma multi_compile_local _ GT_SNOW
             #define GT_PASS_DEPTH 1
             #define GT_FALLBACK 1
             #include "Packages/com.gregoryterrain.tessellation/Shaders/Adapters/URPAdapter.hlsl"
@@ -263,7 +263,7 @@ Shader "GregoryTerrain/Terrain"
             #pragma vertex vert_fallback
             #pragma fragment frag
             #pragma shader_feature_local GT_NOISE
-            #pragma shader_feature_local GT_SNOW
+            #pragma multi_compile_local _ GT_SNOW
             // URP's normal packing for the deferred renderer's accurate G-buffer normals.
             #pragma multi_compile_fragment _ _GBUFFER_NORMALS_OCT
             #define GT_PASS_DEPTH_NORMALS 1
@@ -299,7 +299,7 @@ Shader "GregoryTerrain/Terrain"
             #pragma fragment frag
             // Effects: off = not compiled into the build at all (shader_feature: unused variants are stripped).
             #pragma shader_feature_local GT_NOISE
-            #pragma shader_feature_local GT_SNOW
+            #pragma multi_compile_local _ GT_SNOW
             #pragma shader_feature_local GT_HEIGHT_COLOR
             #pragma shader_feature_local _ GT_DEBUG_NORMALS GT_DEBUG_PATCH_ID GT_DEBUG_TESS_FACTOR
             #define GT_PASS_FORWARD 1
@@ -327,7 +327,7 @@ Shader "GregoryTerrain/Terrain"
             #pragma domain domain_shader
             #pragma fragment frag
             #pragma shader_feature_local GT_NOISE
-            #pragma shader_feature_local GT_SNOW
+            #pragma multi_compile_local _ GT_SNOW
             #define GT_PASS_DEPTH 1
             #include "Packages/com.gregoryterrain.tessellation/Shaders/Adapters/HDRPAdapter.hlsl"
             #include "Packages/com.gregoryterrain.tessellation/Shaders/TerrainStages.hlsl"
@@ -353,7 +353,7 @@ Shader "GregoryTerrain/Terrain"
             #pragma domain domain_shader
             #pragma fragment frag
             #pragma shader_feature_local GT_NOISE
-            #pragma shader_feature_local GT_SNOW
+            #pragma multi_compile_local _ GT_SNOW
             #define GT_PASS_SHADOWCASTER 1
             #include "Packages/com.gregoryterrain.tessellation/Shaders/Adapters/HDRPAdapter.hlsl"
             #include "Packages/com.gregoryterrain.tessellation/Shaders/TerrainStages.hlsl"
@@ -382,7 +382,7 @@ Shader "GregoryTerrain/Terrain"
             #pragma fragment frag
             // Effects: off = not compiled into the build at all (shader_feature: unused variants are stripped).
             #pragma shader_feature_local GT_NOISE
-            #pragma shader_feature_local GT_SNOW
+            #pragma multi_compile_local _ GT_SNOW
             #pragma shader_feature_local GT_HEIGHT_COLOR
             #pragma shader_feature_local _ GT_DEBUG_NORMALS GT_DEBUG_PATCH_ID GT_DEBUG_TESS_FACTOR
             #define GT_PASS_FORWARD 1
@@ -407,7 +407,7 @@ Shader "GregoryTerrain/Terrain"
             #pragma vertex vert_fallback
             #pragma fragment frag
             #pragma shader_feature_local GT_NOISE
-            #pragma shader_feature_local GT_SNOW
+            #pragma multi_compile_local _ GT_SNOW
             #define GT_PASS_DEPTH 1
             #define GT_FALLBACK 1
             #include "Packages/com.gregoryterrain.tessellation/Shaders/Adapters/HDRPAdapter.hlsl"
@@ -430,7 +430,7 @@ Shader "GregoryTerrain/Terrain"
             #pragma vertex vert_fallback
             #pragma fragment frag
             #pragma shader_feature_local GT_NOISE
-            #pragma shader_feature_local GT_SNOW
+            #pragma multi_compile_local _ GT_SNOW
             #define GT_PASS_SHADOWCASTER 1
             #define GT_FALLBACK 1
             #include "Packages/com.gregoryterrain.tessellation/Shaders/Adapters/HDRPAdapter.hlsl"
@@ -464,7 +464,7 @@ Shader "GregoryTerrain/Terrain"
             #pragma fragment frag
             // Effects: off = not compiled into the build at all (shader_feature: unused variants are stripped).
             #pragma shader_feature_local GT_NOISE
-            #pragma shader_feature_local GT_SNOW
+            #pragma multi_compile_local _ GT_SNOW
             #pragma shader_feature_local GT_HEIGHT_COLOR
             #pragma shader_feature_local _ GT_DEBUG_NORMALS GT_DEBUG_PATCH_ID GT_DEBUG_TESS_FACTOR
             // Main directional light's shadow received (BuiltinAdapter.hlsl, GT_MainLightShadow).
@@ -494,7 +494,7 @@ Shader "GregoryTerrain/Terrain"
             #pragma domain domain_shader
             #pragma fragment frag
             #pragma shader_feature_local GT_NOISE
-            #pragma shader_feature_local GT_SNOW
+            #pragma multi_compile_local _ GT_SNOW
             #define GT_PASS_SHADOWCASTER 1
             #include "Packages/com.gregoryterrain.tessellation/Shaders/Adapters/BuiltinAdapter.hlsl"
             #include "Packages/com.gregoryterrain.tessellation/Shaders/TerrainStages.hlsl"
@@ -523,7 +523,7 @@ Shader "GregoryTerrain/Terrain"
             #pragma fragment frag
             // Effects: off = not compiled into the build at all (shader_feature: unused variants are stripped).
             #pragma shader_feature_local GT_NOISE
-            #pragma shader_feature_local GT_SNOW
+            #pragma multi_compile_local _ GT_SNOW
             #pragma shader_feature_local GT_HEIGHT_COLOR
             #pragma shader_feature_local _ GT_DEBUG_NORMALS GT_DEBUG_PATCH_ID GT_DEBUG_TESS_FACTOR
             // Main directional light's shadow received (BuiltinAdapter.hlsl, GT_MainLightShadow).
@@ -550,7 +550,7 @@ Shader "GregoryTerrain/Terrain"
             #pragma vertex vert_fallback
             #pragma fragment frag
             #pragma shader_feature_local GT_NOISE
-            #pragma shader_feature_local GT_SNOW
+            #pragma multi_compile_local _ GT_SNOW
             #define GT_PASS_SHADOWCASTER 1
             #define GT_FALLBACK 1
             #include "Packages/com.gregoryterrain.tessellation/Shaders/Adapters/BuiltinAdapter.hlsl"

@@ -18,6 +18,7 @@ namespace GregoryTerrain.Rig.Tests
     public class ShaderLabTests
     {
         const string PackageName = "com.gregoryterrain.tessellation";
+        static readonly string[] RuntimeToggledKeywords = { "GT_SNOW" };
         static readonly string[] RigOnlyKeywords = { "GT_PAPER_MODE", "GT_READBACK", "GT_FACTOR_READBACK" };
         static readonly string[] ForwardModes = { "UniversalForward", "ForwardOnly", "ForwardBase" };
 
@@ -64,9 +65,11 @@ namespace GregoryTerrain.Rig.Tests
                         Program = program,
                         Pragmas = pragmas,
                         Keywords = new HashSet<string>(pragmas.Where(p => p.Length > 1 && p[0].StartsWith("shader_feature"))
-                            .SelectMany(p => p.Skip(1)).Where(k => k != "_")),
+                            .SelectMany(p => p.Skip(1)).Where(k => k != "_")
+                            .Concat(pragmas.Where(p => p.Length > 1 && p[0] == "multi_compile_local")
+                                .SelectMany(p => p.Skip(1)).Where(k => k.StartsWith("GT_")))),
                         PipelineKeywords = new HashSet<string>(pragmas.Where(p => p.Length > 1 && p[0].StartsWith("multi_compile"))
-                            .SelectMany(p => p.Skip(1)).Where(k => k != "_")),
+                            .SelectMany(p => p.Skip(1)).Where(k => k != "_" && !k.StartsWith("GT_"))),
                     });
                 }
                 info.Tessellated = info.Passes.Any(p => HasPragma(p, "hull"));
@@ -130,11 +133,20 @@ namespace GregoryTerrain.Rig.Tests
                 foreach (PassInfo p in s.Passes)
                 {
                     string where = $"{s} pass {p.Name}";
-                    // The package's keywords: only shader_feature_local (a material's toggles, stripped
-                    // from builds when unused); multi_compile only for the pipelines' own keywords.
+                    // The package's keywords: shader_feature_local (a material's toggles, stripped
+                    // from builds when unused), except those a script switches at run time (GT_SNOW,
+                    // by SnowSimulator): a shader_feature variant no material enables in the editor
+                    // would be stripped from the player, so those are multi_compile_local.
                     foreach (string[] a in p.Pragmas.Where(a => a[0].StartsWith("shader_feature")))
+                    {
                         Assert.That(a[0], Is.EqualTo("shader_feature_local"), where);
-                    Assert.That(p.PipelineKeywords.Where(k => k.StartsWith("GT_")), Is.Empty, where + ": a package keyword in multi_compile");
+                        Assert.That(a.Intersect(RuntimeToggledKeywords), Is.Empty, where + ": a run-time keyword as shader_feature");
+                    }
+                    foreach (string[] a in p.Pragmas.Where(a => a[0].StartsWith("multi_compile") && a.Any(k => k.StartsWith("GT_"))))
+                    {
+                        Assert.That(a[0], Is.EqualTo("multi_compile_local"), where);
+                        Assert.That(a.Skip(1).Where(k => k != "_"), Is.SubsetOf(RuntimeToggledKeywords), where + ": only run-time keywords in multi_compile_local");
+                    }
                     if (ForwardModes.Contains(p.LightMode))
                         Assert.That(p.Keywords, Is.EquivalentTo(shipped), where);
                     else
