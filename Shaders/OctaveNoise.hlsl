@@ -16,7 +16,11 @@ float OctaveNoise(TerrainPoint p, float4 noise, float octaveCount, out float2 gr
     float f = noise.y, w = 1.0, invBeta = 1.0 / noise.w;
     float n = 0.0;
     float2 g = 0.0;
-    [loop] for (uint k = 0u; k < GT_MAX_OCTAVES; ++k)
+    // [unroll], not [loop]: unrolled, each octave's stream offset is a constant (two hashes of k
+    // per octave folded away) and the early-out is a uniform branch. Same arithmetic in the same
+    // order, so the C# mirror is unchanged. H200: the 8.1M-triangle draw with 4 octaves took
+    // 17.06 ms with [loop], 14.77 ms unrolled (performance.md, "What was tried").
+    [unroll] for (uint k = 0u; k < GT_MAX_OCTAVES; ++k)
     {
         float fade = saturate(octaveCount - float(k));
         if (fade <= 0.0) break;
