@@ -1,8 +1,13 @@
-// The graphics pipeline and its one descriptor set (set 0, bindings 0..5 as in internals.md).
+// The graphics pipeline and its one descriptor set: set 0 with the rig's bindings 0..5 (6 with
+// snow) of internals.md plus the --storage buffers at their bindings; the compute pre-pass
+// (compute.hpp) uses the same layout and set.
 #pragma once
+#include <vector>
+
 #include "cli.hpp"
 #include "inputs.hpp"
 #include "spirv.hpp"
+#include "storage.hpp"
 #include "target.hpp"
 
 namespace gt {
@@ -22,7 +27,8 @@ struct Pipeline {
     VkPipeline pipeline = VK_NULL_HANDLE;
 };
 
-Pipeline createPipeline(const Gpu& gpu, const PipelineDesc& desc, const RenderTarget& target, const Inputs& inputs);
+Pipeline createPipeline(const Gpu& gpu, const PipelineDesc& desc, const RenderTarget& target, const Inputs& inputs,
+                        const std::vector<StorageBuffer>& storage);
 void destroyPipeline(const Gpu& gpu, Pipeline& pipeline);
 
 }  // namespace gt

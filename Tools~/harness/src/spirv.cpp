@@ -37,16 +37,22 @@ ShaderModule loadShader(const Gpu& gpu, const std::string& path, uint32_t execut
     if (words[0] != kMagic) fail("'" + path + "' is not SPIR-V (bad magic number)");
 
     std::vector<std::string> names = entryPoints(words, executionModel);
-    static const char* stageNames[] = {"vertex", "tessellation control", "tessellation evaluation", "geometry", "fragment"};
+    static const char* stageNames[] = {"vertex", "tessellation control", "tessellation evaluation", "geometry", "fragment",
+                                       "compute"};
+    const std::string stage = executionModel < 6 ? stageNames[executionModel] : "matching";
     if (names.empty())
-        fail("'" + path + "' has no " + (executionModel < 5 ? stageNames[executionModel] : "matching") +
-             " entry point: is it the right stage's SPIR-V?");
+        fail("'" + path + "' has no " + stage + " entry point: is it the right stage's SPIR-V?");
     ShaderModule s;
     s.path = path;
     auto has = [&](const std::string& n) { for (auto& x : names) if (x == n) return true; return false; };
     if (!requested.empty()) {
         if (!has(requested)) fail("'" + path + "' has no entry point '" + requested + "' (it has '" + names[0] + "')");
         s.entry = requested;
+    } else if (names.size() > 1 && fallbackName.empty()) {
+        std::string list;
+        for (const std::string& n : names) list += (list.empty() ? "'" : ", '") + n + "'";
+        fail("'" + path + "' has " + std::to_string(names.size()) + " " + stage +
+             " entry points (" + list + "); it needs exactly one (compile one entry point per module, glslangValidator -e NAME)");
     } else {
         s.entry = names.size() == 1 ? names[0] : fallbackName;
         if (!has(s.entry)) fail("'" + path + "' has several entry points and none named '" + fallbackName + "'");

@@ -14,11 +14,14 @@ struct ShaderModule {
 };
 
 // The names of the module's OpEntryPoint instructions that have the given execution model
-// (0 vertex, 1 tessellation control, 2 tessellation evaluation, 4 fragment).
+// (0 vertex, 1 tessellation control, 2 tessellation evaluation, 4 fragment, 5 compute).
 std::vector<std::string> entryPoints(const std::vector<uint32_t>& words, uint32_t executionModel);
 
+constexpr uint32_t kExecutionModelGLCompute = 5;
+
 // Loads path. Entry: `requested` when given (must exist in the module); otherwise the module's
-// only entry point of that stage, else `fallbackName`. Throws gt::Error naming the file.
+// only entry point of that stage, else `fallbackName` (empty: the module must have exactly one).
+// Throws gt::Error naming the file.
 ShaderModule loadShader(const Gpu& gpu, const std::string& path, uint32_t executionModel, const std::string& requested,
                         const std::string& fallbackName);
 
