@@ -43,6 +43,12 @@ ComputePass createComputePass(const Gpu& gpu, const ComputeOption& o, const Pipe
     } catch (const Error& e) {
         fail("--compute '" + o.spec + "': " + e.what());
     }
+    try {
+        checkShaderDescriptors(pass.shader, "--compute", graphics);
+    } catch (const Error&) {
+        destroyShader(gpu, pass.shader);
+        throw;
+    }
     VkComputePipelineCreateInfo info{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
     info.stage = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
     info.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;

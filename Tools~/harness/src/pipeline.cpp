@@ -1,5 +1,6 @@
 #include "pipeline.hpp"
 
+#include <algorithm>
 #include <vector>
 
 #include "check.hpp"
@@ -50,6 +51,8 @@ void createDescriptors(const Gpu& gpu, Pipeline& p, const Inputs& inputs, const 
         b[i].descriptorCount = 1;
         b[i].stageFlags = VK_SHADER_STAGE_ALL_GRAPHICS | VK_SHADER_STAGE_COMPUTE_BIT;
     }
+    for (const DescriptorEntry& e : entries) p.bindings.push_back(e.binding);
+    std::sort(p.bindings.begin(), p.bindings.end());
     VkDescriptorSetLayoutCreateInfo li{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
     li.bindingCount = static_cast<uint32_t>(b.size());
     li.pBindings = b.data();
@@ -91,10 +94,30 @@ VkPipelineShaderStageCreateInfo stage(VkShaderStageFlagBits s, const ShaderModul
 
 }  // namespace
 
+void checkShaderDescriptors(const ShaderModule& shader, const std::string& option, const Pipeline& pipeline) {
+    for (const DescriptorUse& d : shader.descriptors) {
+        const bool bound = d.set == 0 && std::binary_search(pipeline.bindings.begin(), pipeline.bindings.end(), d.binding);
+        if (bound) continue;
+        std::string have;
+        for (uint32_t b : pipeline.bindings) have += (have.empty() ? "" : " ") + std::to_string(b);
+        const std::string hint = d.set != 0 ? "the harness binds set 0 only"
+                                 : d.binding == kBindingSnowDepth ? "give --snow-depth and --snow-params"
+                                 : "give --storage " + std::to_string(d.binding) + ":BYTES";
+        fail(option + " '" + shader.path + "' uses set " + std::to_string(d.set) + " binding " + std::to_string(d.binding) +
+             ", which this run does not bind (set 0 has " + have + "): " + hint);
+    }
+}
+
 Pipeline createPipeline(const Gpu& gpu, const PipelineDesc& d, const RenderTarget& target, const Inputs& inputs,
                         const std::vector<StorageBuffer>& storage) {
     Pipeline p;
     createDescriptors(gpu, p, inputs, storage);
+    checkShaderDescriptors(d.vert, "--vert", p);
+    if (d.mode == Mode::Tessellated) {
+        checkShaderDescriptors(d.tesc, "--tesc", p);
+        checkShaderDescriptors(d.tese, "--tese", p);
+    }
+    checkShaderDescriptors(d.frag, "--frag", p);
     VkPipelineLayoutCreateInfo pl{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
     pl.setLayoutCount = 1;
     pl.pSetLayouts = &p.setLayout;

@@ -25,10 +25,15 @@ struct Pipeline {
     VkDescriptorSet set = VK_NULL_HANDLE;
     VkPipelineLayout layout = VK_NULL_HANDLE;
     VkPipeline pipeline = VK_NULL_HANDLE;
+    std::vector<uint32_t> bindings;  // of set 0, ascending
 };
 
 Pipeline createPipeline(const Gpu& gpu, const PipelineDesc& desc, const RenderTarget& target, const Inputs& inputs,
                         const std::vector<StorageBuffer>& storage);
 void destroyPipeline(const Gpu& gpu, Pipeline& pipeline);
+
+// Throws gt::Error when the shader uses a descriptor the layout lacks (another set, or a binding
+// of set 0 not bound in this run), naming the shader, the option that gave it and what to add.
+void checkShaderDescriptors(const ShaderModule& shader, const std::string& option, const Pipeline& pipeline);
 
 }  // namespace gt
