@@ -54,8 +54,8 @@ def make_inputs(d, tiles, factor, rng=(0.0, 0.0, 1.0, 1.0)):
     return d
 
 
-def run(args):
-    p = subprocess.run([HARNESS] + EXTRA + args, capture_output=True, text=True)
+def run(args, env=None):
+    p = subprocess.run([HARNESS] + EXTRA + args, capture_output=True, text=True, env=env)
     lines = {}
     for line in p.stdout.splitlines():
         parts = line.split()
@@ -229,7 +229,24 @@ def compute_checks(lavapipe):
         nonsky = int(value(l, "image", "nonsky_pixels")[0])
         check("compute fallback vertex stage sees the kernels' scales", nonsky == kept_tiles(4) * 32 * 32, "nonsky %d" % nonsky)
 
-    # e. Bad compute options: exit code 1, the option and the offending value named.
+    # e. The barriers: lavapipe runs a command buffer in order, so a missing one changes no result
+    #    there; the Khronos layer's synchronization validation sees it at the API (checked: without
+    #    the kernel->kernel or kernel->draw barrier it reports SYNC-HAZARD-READ-AFTER-WRITE).
+    layer = "/usr/share/vulkan/explicit_layer.d/VkLayer_khronos_validation.json"
+    if os.path.exists(layer):
+        env = dict(os.environ, VK_INSTANCE_LAYERS="VK_LAYER_KHRONOS_validation",
+                   VK_LAYER_ENABLES="VK_VALIDATION_FEATURE_ENABLE_SYNCHRONIZATION_VALIDATION_EXT")
+        a = tess_args(d, 4, extra=["--max-factor", "8", "--frames", "2", "--timestamps", "--resend-bytes", "4096",
+                                   "--dump-storage", "8:" + WORK + "/sync_8.bin"])
+        a[a.index(SPV + "/tiles.tese.spv")] = SPV + "/tiles_storage.tese.spv"
+        p, l = run(a + compute_tile_args(4), env)
+        messages = [x for x in (p.stdout + p.stderr).splitlines() if "Validation" in x or "VUID" in x]
+        check("compute pre-pass under synchronization validation", p.returncode == 0 and not messages,
+              "exit %d; %s" % (p.returncode, " / ".join(m[:300] for m in messages[:3]) or p.stderr.strip()))
+    else:
+        print("INFO barriers not checked: no Khronos validation layer (apt package vulkan-validationlayers)")
+
+    # f. Bad compute options: exit code 1, the option and the offending value named.
     pattern = SPV + "/pattern.comp.spv"
     cases = [
         (["--storage", "7"], ["--storage", "'7'"]),
