@@ -58,7 +58,8 @@ namespace GregoryTerrain.Rig.Tests
         /// Packs a scene with gt-cli (zoom-view camera) and draws one frame of the cached variant:
         /// both kernels, then the tile draw; dumps both cache buffers.
         /// </summary>
-        CacheFrame DrawCached(string name, string range, int tiles, string[] tessArgs, int width, int height, float[] camera = null)
+        CacheFrame DrawCached(string name, string range, int tiles, string[] tessArgs, int width, int height, float[] camera = null,
+                              params string[] extra)
         {
             string dir = Path.Combine(_work, name);
             var pack = new List<string> { "pack", "--grid", _gridPath, "--range", range, "--tiles", tiles.ToString(CultureInfo.InvariantCulture),
@@ -83,6 +84,7 @@ namespace GregoryTerrain.Rig.Tests
                 "--compute", Path.Combine(v, "cache_vertices.spv") + ":" + tiles.ToString(CultureInfo.InvariantCulture) + "," + tiles.ToString(CultureInfo.InvariantCulture) + ",1",
                 "--dump-storage", "7:" + factors, "--dump-storage", "8:" + records,
             });
+            args.AddRange(extra);
             frame.Run = HarnessRun.Harness(args.ToArray());
             frame.Run.AssertSucceeded();
             frame.Factors = ReadbackRun.ReadFloats(factors);
@@ -164,6 +166,21 @@ namespace GregoryTerrain.Rig.Tests
             Assert.That(nonsky, Is.GreaterThan(192 * 128 / 5), "the terrain fills the view");
             Assert.That(cached.Run.Long("stat", "clipping_invocations"), Is.EqualTo(direct.Long("stat", "clipping_invocations")), "same triangles");
             Assert.That(differing, Is.LessThan(192 * 128 / 200), "at most 0.5% of the pixels differ");
+        }
+
+        /// <summary>
+        /// A frame where nothing changed reuses the cache (the renderer dispatches nothing then; the
+        /// harness's --compute-once): later frames without the kernels draw the first frame's picture.
+        /// </summary>
+        [Test]
+        public void FramesThatReuseTheCacheDrawTheSamePicture()
+        {
+            CacheFrame every = DrawCached("every-frame", "0,0,1,1", 8, new[] { "--factor", "7" }, 192, 128, null, "--frames", "3");
+            CacheFrame once = DrawCached("compute-once", "0,0,1,1", 8, new[] { "--factor", "7" }, 192, 128, null, "--frames", "3", "--compute-once");
+            RigPng a = RigPng.Read(Path.Combine(_work, "every-frame", "image.png")), b = RigPng.Read(Path.Combine(_work, "compute-once", "image.png"));
+            Assert.That(a.PixelsDifferingFrom(b, 0), Is.EqualTo(0));
+            Assert.That(once.Records, Is.EqualTo(every.Records), "the cache after three frames");
+            Assert.That(once.Run.Long("image", "nonsky_pixels"), Is.GreaterThan(192 * 128 / 5));
         }
 
         /// <summary>

@@ -166,6 +166,7 @@ const char* usageText() {
   --timestamps                   GPU time of each frame ("time ..." lines; with --compute also
                                  the compute part alone: "time compute_ms ...")
   --update-range-per-frame       write a new _Range into the uniform buffer every frame
+  --compute-once                 run the --compute passes in the first frame only (later frames reuse their output)
   --resend-bytes B               re-upload B bytes through a staging copy every frame
   --max-vertices-per-draw V      split tessellated draws so each stays <= V generated vertices
                                  (default 65536 on lavapipe, 0 = no split elsewhere)
@@ -226,6 +227,7 @@ Options parseOptions(int argc, char** argv) {
         else if (a == "--warmup") o.warmup = u32(1000000);
         else if (a == "--timestamps") o.timestamps = true;
         else if (a == "--update-range-per-frame") o.updateRangePerFrame = true;
+        else if (a == "--compute-once") o.computeOnce = true;
         else if (a == "--resend-bytes") o.resendBytes = parseUnsigned(a, value(), 1ull << 34);
         else if (a == "--max-vertices-per-draw") o.maxVerticesPerDraw = parseUnsigned(a, value(), 1ull << 40);
         else if (a == "--max-factor") o.maxFactor = u32(4096);
@@ -243,6 +245,7 @@ Options parseOptions(int argc, char** argv) {
     if (o.tescPath.empty() != o.tesePath.empty()) fail("--tesc and --tese go together: give both or neither");
     if (!o.readbackPath.empty() && o.readbackFloats == 0) fail("--readback needs --readback-floats K (K > 0)");
     if (o.readbackPath.empty() && o.readbackFloats != 0) fail("--readback-floats needs --readback FILE");
+    if (o.computeOnce && o.computes.empty()) fail("--compute-once needs at least one --compute SPV:GX,GY,GZ");
     checkDumps(o);
 
     if (staticMesh) {

@@ -67,6 +67,7 @@ struct Options {
     uint32_t frames = 1, warmup = 0;
     bool timestamps = false;
     bool updateRangePerFrame = false;
+    bool computeOnce = false;
     uint64_t resendBytes = 0;
 
     std::optional<uint64_t> maxVerticesPerDraw;  // unset: 65,536 on lavapipe, no limit elsewhere

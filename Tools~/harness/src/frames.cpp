@@ -42,7 +42,8 @@ FrameResults runFrames(const Gpu& gpu, const RenderTarget& target, const Pipelin
     TimestampQuery times;
     if (s.stats) stats = createStatsQuery(gpu);
     // With a pre-pass, a middle timestamp after its last dispatch: query 0 top, 1 compute end, 2 frame end.
-    const bool timeCompute = s.timestamps && !compute.empty();
+    // (--compute-once: no middle timestamp, the frames measured have no pre-pass.)
+    const bool timeCompute = s.timestamps && !compute.empty() && !s.computeOnce;
     if (s.timestamps) times = createTimestampQuery(gpu, timeCompute ? 3 : 2);
     const uint32_t frameEndQuery = timeCompute ? 2 : 1;
 
@@ -55,6 +56,8 @@ FrameResults runFrames(const Gpu& gpu, const RenderTarget& target, const Pipelin
                                       VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
     }
 
+    // One frame's command buffer; withCompute = false leaves the pre-pass out (--compute-once).
+    auto recordFrame = [&](bool withCompute) {
     VkCommandBufferAllocateInfo alloc{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
     alloc.commandPool = gpu.commandPool;
     alloc.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
@@ -67,7 +70,7 @@ FrameResults runFrames(const Gpu& gpu, const RenderTarget& target, const Pipelin
     if (stats.pool) vkCmdResetQueryPool(cmd, stats.pool, 0, 1);
     if (times.pool) vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, times.pool, 0);
     // The pre-pass first, so that its timestamp pair brackets the kernels alone (not the re-send copy).
-    recordComputePasses(cmd, gpu, compute, pipeline);
+    if (withCompute) recordComputePasses(cmd, gpu, compute, pipeline);
     if (timeCompute) vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, times.pool, 1);
     if (s.resendBytes) {
         VkBufferCopy region{0, 0, s.resendBytes};
@@ -95,6 +98,10 @@ FrameResults runFrames(const Gpu& gpu, const RenderTarget& target, const Pipelin
     if (!compute.empty()) writers |= VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT;  // a kernel may write _Readback too
     vkCmdPipelineBarrier(cmd, writers, VK_PIPELINE_STAGE_HOST_BIT, 0, 1, &toHost, 0, nullptr, 0, nullptr);
     GT_VK(vkEndCommandBuffer(cmd));
+    return cmd;
+    };
+    VkCommandBuffer cmd = recordFrame(true);
+    VkCommandBuffer reuseCmd = s.computeOnce ? recordFrame(false) : VK_NULL_HANDLE;
 
     VkFence fence = VK_NULL_HANDLE;
     VkFenceCreateInfo fi{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
@@ -109,7 +116,7 @@ FrameResults runFrames(const Gpu& gpu, const RenderTarget& target, const Pipelin
         if (s.resendBytes) std::memset(staging.mapped, static_cast<int>(f & 0xff), s.resendBytes);
         VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};
         submit.commandBufferCount = 1;
-        submit.pCommandBuffers = &cmd;
+        submit.pCommandBuffers = (s.computeOnce && f > 0) ? &reuseCmd : &cmd;
         GT_VK(vkQueueSubmit(gpu.queue, 1, &submit, fence));
         VkResult r = vkWaitForFences(gpu.device, 1, &fence, VK_TRUE, 600ull * 1000 * 1000 * 1000);
         if (r == VK_TIMEOUT) fail("frame " + std::to_string(f) + " did not finish within 600 s");
@@ -128,6 +135,7 @@ FrameResults runFrames(const Gpu& gpu, const RenderTarget& target, const Pipelin
 
     vkDestroyFence(gpu.device, fence, nullptr);
     vkFreeCommandBuffers(gpu.device, gpu.commandPool, 1, &cmd);
+    if (reuseCmd) vkFreeCommandBuffers(gpu.device, gpu.commandPool, 1, &reuseCmd);
     destroyBuffer(gpu, staging);
     destroyBuffer(gpu, geometry);
     destroyQuery(gpu, stats.pool);

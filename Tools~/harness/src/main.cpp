@@ -136,6 +136,7 @@ int run(const Options& o) {
     fs.timestamps = o.timestamps;
     fs.stats = o.stats;
     fs.updateRange = o.updateRangePerFrame;
+    fs.computeOnce = o.computeOnce;
     fs.resendBytes = o.resendBytes;
     FrameResults results = runFrames(gpu, target, pipeline, inputs, work, compute, fs);
 
