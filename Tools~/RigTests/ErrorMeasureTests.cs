@@ -136,6 +136,9 @@ namespace GregoryTerrain.Rig.Tests
                 Assert.That(Assert.Throws<FormatException>(() => PatchFactors.FromTileFactors(Dump(ones, bad), 2)).Message, Does.Contain("tile 1"),
                             string.Join(",", bad));
             Assert.Throws<FormatException>(() => PatchFactors.FromTileFactors(Dump(ones), 2));
+            // Core's prediction written in the dump's layout reads back as itself.
+            var back = PatchFactors.FromTileFactors(PatchFactors.ToTileFactors(f), 3);
+            Assert.That(back, Is.EqualTo(f));
         }
 
         [Test]

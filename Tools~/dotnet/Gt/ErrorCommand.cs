@@ -10,7 +10,8 @@ namespace GregoryTerrain.Rig
     /// GT_NOISE variant (the surface includes the noise). --vertex-cache: the GT_VERTEX_CACHE path,
     /// integer partitioning at the cache's integer factors: from a dump of its _TileFactors buffer
     /// (--tile-factors FILE, harness --dump-storage 7:FILE) or, without one, Core's mirror made
-    /// integer as the kernel does (PatchFactors.CacheIntegers). Prints one "error ..." line.
+    /// integer as the kernel does (PatchFactors.CacheIntegers); --write-tile-factors FILE writes those
+    /// Core factors in the dump's layout (to compare with a GPU dump). Prints one "error ..." line.
     /// </summary>
     static class ErrorCommand
     {
@@ -34,6 +35,8 @@ namespace GregoryTerrain.Rig
                 string tileFactors = a.String("tile-factors", "");
                 var f = tileFactors != "" ? PatchFactors.FromTileFactors(BufferFiles.Read(tileFactors), scene.Tessellation.tiles * scene.Tessellation.tiles)
                                           : CacheFactors(scene, noise);
+                string write = a.String("write-tile-factors", "");
+                if (write != "") BufferFiles.Write(write, PatchFactors.ToTileFactors(CacheFactors(scene, noise)));
                 result = Measure(scene, false, noise, f, maxCells, integerPartitioning: true);
             }
             else result = Measure(scene, paper, noise, factorsFile == "" ? null : BufferFiles.Read(factorsFile), maxCells);

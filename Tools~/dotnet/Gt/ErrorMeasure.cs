@@ -56,6 +56,19 @@ namespace GregoryTerrain.Rig
         /// [1, 64] and, unless all six are 1, inside factors of at least 2. A tile the kernel never
         /// wrote (the buffer starts zero-filled) reads as drawn with factor 0 and is refused.
         /// </summary>
+        /// <summary>The layout FromTileFactors reads (2 float4 a tile), e.g. for Core's prediction.</summary>
+        public static float[] ToTileFactors(PatchFactors[] f)
+        {
+            var r = new float[8 * f.Length];
+            for (int p = 0; p < f.Length; p++)
+            {
+                if (f[p].culled) { r[8 * p + 6] = 1f; continue; }
+                var v = new[] { f[p].e0, f[p].e1, f[p].e2, f[p].e3, f[p].i0, f[p].i1 };
+                for (int k = 0; k < 6; k++) r[8 * p + k] = (float)v[k];
+            }
+            return r;
+        }
+
         public static PatchFactors[] FromTileFactors(float[] r, int tiles)
         {
             if (r.Length < 8 * tiles)
