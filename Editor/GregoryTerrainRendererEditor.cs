@@ -5,7 +5,7 @@ using UnityEngine;
 namespace GregoryTerrain.EditorTools
 {
     /// <summary>
-    /// Renderer inspector (triangle estimate, fallback status) and Scene-view tools: control points
+    /// Renderer inspector (triangle estimate, vertex cache memory, fallback status) and Scene-view tools: control points
     /// and patch wireframe drawn with Handles, control points moved with position handles (undoable),
     /// and the demo's keys while the Scene view has focus: Z control points, X wireframe, C/V factor -/+.
     /// </summary>
@@ -19,6 +19,13 @@ namespace GregoryTerrain.EditorTools
             var r = (GregoryTerrainRenderer)target;
             EditorGUILayout.LabelField(new GUIContent("Estimated triangles", "Most triangles the current settings can produce: 2 F^2 per tile, F the uniform factor, else the max factor (Core's TessellationPolicy)."),
                 new GUIContent(r.EstimatedTriangleCount.ToString("N0")));
+            bool cache = r.VertexEvaluation == VertexEvaluation.ComputeCache;
+            EditorGUILayout.LabelField(new GUIContent("Vertex cache memory", "GPU memory of the Compute cache's two buffers for the current settings (Core's VertexCacheBudget): _TileFactors 32 M^2 bytes + _VertexCache 16 M^2 ((L+1)^2 + 4 (L+1)) R bytes, L = the uniform factor, else the max factor, rounded up; R = 3 with the material's snow (GT_SNOW), else 2."),
+                new GUIContent(FormatBytes(r.VertexCacheBytes) + (cache ? "" : " (only with Compute cache)")));
+            if (cache && !SystemInfo.supportsComputeShaders)
+                EditorGUILayout.HelpBox("Vertex evaluation is Compute cache, but this GPU has no compute shaders (SystemInfo.supportsComputeShaders is false): the domain stage evaluates the vertices instead.", MessageType.Warning);
+            else if (cache && r.VertexCacheFallbackReason != null)
+                EditorGUILayout.HelpBox("Compute cache not used: " + r.VertexCacheFallbackReason + ". The domain stage evaluates the vertices.", MessageType.Warning);
             if (r.DrawsFallback)
                 EditorGUILayout.HelpBox("The shader's tessellated SubShader is not used on this GPU: the vertex-shader fallback is drawn (fixed grid per tile, Fallback grid factor).", MessageType.Warning);
             if (r.Grid != null && !r.Grid.IsValid)
@@ -29,6 +36,10 @@ namespace GregoryTerrain.EditorTools
                 EditorGUILayout.HelpBox("Assign a material that uses GregoryTerrain/Terrain.", MessageType.Warning);
             DrawDefaultInspector();
         }
+
+        /// <summary>"36,749,312 bytes (35.0 MiB)".</summary>
+        static string FormatBytes(long bytes) =>
+            bytes.ToString("N0") + " bytes (" + (bytes / (1024.0 * 1024.0)).ToString("0.0") + " MiB)";
 
         void OnSceneGUI()
         {

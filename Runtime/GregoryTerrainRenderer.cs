@@ -16,6 +16,10 @@ namespace GregoryTerrain
     /// go up once per asset version; the settings constants when a setting changes; the object
     /// matrices when the Transform moves; the range origin when it re-snaps; and every frame
     /// <c>_Range</c> alone.
+    /// <para>With <see cref="GregoryTerrain.VertexEvaluation.ComputeCache"/> a compute pre-pass
+    /// (<see cref="VertexCachePass"/>, Shaders/TerrainCache.compute) evaluates the vertices into a
+    /// buffer the domain stage reads (keyword <c>GT_VERTEX_CACHE</c>), in frames where the LOD
+    /// camera, the range, the origin or a setting changed; other frames dispatch nothing.</para>
     /// </summary>
     [ExecuteAlways]
     [DisallowMultipleComponent]
@@ -31,7 +35,10 @@ namespace GregoryTerrain
         /// <c>_GtObjectToWorld/_GtWorldToObject</c> (128 bytes, when the Transform changes), the
         /// whole TerrainParams block (9 float4, 144 bytes, when a setting or the grid changes) and the
         /// buffers (on a new asset version). What Unity does with the property block inside the draw
-        /// (it builds the draw's constant buffers from it) is Unity's and not counted here.
+        /// (it builds the draw's constant buffers from it) is Unity's and not counted here. With
+        /// Vertex evaluation = Compute cache the steady state is the same: the cache pass compares its
+        /// inputs on the CPU and sets and dispatches nothing unless the LOD camera, the range, the
+        /// origin, a setting, the grid or the snow map changed.
         /// </summary>
         public const int PerFrameTrafficBytes = 16;
 
@@ -92,6 +99,16 @@ namespace GregoryTerrain
 
         [Tooltip("Fallback only (GPUs without a tessellator): each tile is a fixed (F+1) x (F+1) vertex grid.")]
         [SerializeField, Range(1, 64)] int fallbackGridFactor = 16;
+
+        [Header("Vertex evaluation")]
+        [Tooltip("Domain stage: every pass of every camera evaluates its vertices in the domain shader (fractional factors, each camera its own). Compute cache: a compute pre-pass evaluates each vertex once into a GPU buffer when the LOD camera, the range or a setting changes, and the domain stage only reads it (integer factors from the LOD camera for every camera; a little popping when a factor changes; GPU memory shown below). Falls back to Domain stage, with one warning, where compute shaders are missing.")]
+        [SerializeField] VertexEvaluation vertexEvaluation = VertexEvaluation.DomainStage;
+        [Tooltip("Compute cache only: Shaders/TerrainCache.compute (kernels CacheTileFactors and CacheTileVertices).")]
+        [SerializeField] ComputeShader cacheShader;
+        [Tooltip("Compute cache only: the camera whose view picks the tessellation factors and culls tiles, for every camera and shadow pass. Empty = Camera.main.")]
+        [SerializeField] Camera lodCamera;
+        [Tooltip("Compute cache with snow (material keyword GT_SNOW) only: the Snow Simulator whose depth map the cache samples. Empty = one on this GameObject.")]
+        [SerializeField] SnowSimulator snowSimulator;
 
         [Header("Range (terrain unit square)")]
         [Tooltip("Part of the terrain drawn: [c, g] x [d, h] inside [0, 1]^2. Range controllers set it every frame.")]
@@ -154,6 +171,13 @@ namespace GregoryTerrain
         Shader _drawModeShader;
         bool _drawFallback;
         static bool s_FallbackLogged;
+        Matrix4x4 _objectToWorld = Matrix4x4.identity;   // what PushMatrices sent (deep-zoom offset included)
+        int _gridStamp;                                  // bumped on every upload: the cache sees new grid buffers
+        readonly VertexCachePass _cache = new VertexCachePass();
+        string _cacheError;                              // the size check's message (not drawn until fixed)
+        string _cacheFallbackReason;                     // why Compute cache is not used now, logged once per reason
+        Material _cacheKeywordMaterial;                  // the material this renderer turned GT_VERTEX_CACHE on
+        bool _usesCache;
 
         /// <summary>
         /// SubShader tag of GregoryTerrain.shader: "Tessellated" or "Fallback", the draw the SubShader
@@ -211,7 +235,58 @@ namespace GregoryTerrain
             DrawsFallback ? fallbackGridFactor : uniformFactor > 0 ? uniformFactor : maxFactor);
 
         /// <summary>Why the current settings cannot be drawn (Core's message, naming field and value), or null.</summary>
-        public string SettingsError => _settingsError;
+        public string SettingsError => _settingsError ?? _cacheError;
+
+        /// <summary>
+        /// Where the vertices are evaluated (<see cref="GregoryTerrain.VertexEvaluation"/>). Compute
+        /// cache falls back to the domain stage where it cannot run (<see cref="VertexCacheFallbackReason"/>).
+        /// </summary>
+        public VertexEvaluation VertexEvaluation
+        {
+            get => vertexEvaluation;
+            set
+            {
+                if (value != VertexEvaluation.DomainStage && value != VertexEvaluation.ComputeCache)
+                    throw new ArgumentException($"VertexEvaluation ({(int)value}) must be DomainStage or ComputeCache", nameof(value));
+                vertexEvaluation = value;
+            }
+        }
+
+        /// <summary>Shaders/TerrainCache.compute, for <see cref="VertexEvaluation.ComputeCache"/>.</summary>
+        public ComputeShader CacheShader { get => cacheShader; set { cacheShader = value; _cache.Invalidate(); } }
+
+        /// <summary>The camera whose view sets the cached tessellation (null: Camera.main).</summary>
+        public Camera LodCamera { get => lodCamera; set => lodCamera = value; }
+
+        /// <summary>The Snow Simulator the cache samples when the material has GT_SNOW (null: one on this GameObject).</summary>
+        public SnowSimulator SnowSimulator { get => snowSimulator; set => snowSimulator = value; }
+
+        /// <summary>True when the last frame drew from the vertex cache (GT_VERTEX_CACHE on).</summary>
+        public bool UsesVertexCache => _usesCache;
+
+        /// <summary>
+        /// Why <see cref="VertexEvaluation.ComputeCache"/> is chosen but the domain stage draws
+        /// (no compute shaders, no cache shader, no LOD camera, ...), or null.
+        /// </summary>
+        public string VertexCacheFallbackReason => _cacheFallbackReason;
+
+        /// <summary>
+        /// GPU memory the vertex cache needs for the current settings, in bytes (Core's
+        /// <see cref="VertexCacheBudget.TotalBytes"/>: 32 M^2 + 16 M^2 ((L+1)^2 + 4 (L+1)) R, L the
+        /// uniform factor, else the max factor, rounded up; R = 3 with the material's GT_SNOW, else 2),
+        /// whichever evaluation is chosen.
+        /// </summary>
+        public long VertexCacheBytes
+        {
+            get
+            {
+                int limit = VertexCacheBudget.FactorLimit(new TessellationSettings(tiles, maxFactor, targetPixelError, uniformFactor).ToFloat4());
+                return VertexCacheBudget.TotalBytes(tiles, limit, SnowOn());
+            }
+        }
+
+        /// <summary>GPU memory the vertex cache holds now (0 while it is not allocated).</summary>
+        public long VertexCacheAllocatedBytes => _cache.AllocatedBytes;
 
         /// <summary>True while GPU buffers for a grid are held.</summary>
         public bool HasGpuResources => _controlPoints != null;
@@ -235,6 +310,8 @@ namespace GregoryTerrain
             AssemblyReloadEvents.beforeAssemblyReload -= ReleaseGpuResources;
 #endif
             ReleaseGpuResources();
+            SetCacheKeyword(false);   // a saved material must not keep the renderer's run-time switch
+            _usesCache = false;
         }
 
         void OnDestroy() => ReleaseGpuResources();
@@ -276,6 +353,7 @@ namespace GregoryTerrain
                 if (UpdateOutputOffset() || transform.hasChanged) PushMatrices();
             }
             if (_settingsError != null) return;   // logged once; drawn again after the next valid change
+            if (!UpdateVertexCache(fallback)) return;
 
             var rp = new RenderParams(material)
             {
@@ -402,6 +480,7 @@ namespace GregoryTerrain
             }
             _props.SetMatrix(Ids.ObjectToWorld, m);
             _props.SetMatrix(Ids.WorldToObject, w);
+            _objectToWorld = m;   // the vertex cache's LOD matrix uses the same object matrix
             transform.hasChanged = false;
         }
 
@@ -482,6 +561,7 @@ namespace GregoryTerrain
             _uploadedGrid = grid;
             _uploadedPatchGrid = g;
             _uploadedVersion = grid.Version;
+            _gridStamp++;
             _settingsDirty = true;
             _originDirty = true;
             _origin.Reset();
@@ -524,11 +604,145 @@ namespace GregoryTerrain
             _regions?.Release(); _regions = null;
             _gridLines?.Release(); _gridLines = null;
             _fallbackIndices?.Release(); _fallbackIndices = null;
+            _cache.Release();
             _uploadedGrid = null;
             _uploadedPatchGrid = null;
             _uploadedVersion = 0;
             _drawModeMaterial = null;   // read the SubShader's tag again (it may change with the shader)
             _props?.Clear();
+        }
+
+        // ---- vertex cache (Vertex evaluation = Compute cache) ---------------------------------------
+
+        /// <summary>
+        /// This frame's part of the compute cache, after the constants are current. Decides whether
+        /// the cache runs (else the domain stage draws: GT_VERTEX_CACHE off, buffers released), checks
+        /// the buffer sizes before touching anything, (re)allocates only when M, L or snow changed, and
+        /// dispatches only when the pass's inputs changed (<see cref="VertexCachePass.Update"/>).
+        /// Returns false when nothing may be drawn this frame: the size check failed (logged once,
+        /// <see cref="SettingsError"/>; the old buffers, bindings and keyword are left as they were),
+        /// or the cache has never been filled and the LOD camera has no pixels yet.
+        /// </summary>
+        bool UpdateVertexCache(bool fallback)
+        {
+            _usesCache = false;
+            if (vertexEvaluation != VertexEvaluation.ComputeCache)
+            {
+                _cacheFallbackReason = null;
+                _cacheError = null;
+                StopCache();
+                return true;
+            }
+            bool snow = SnowOn();
+            Camera cam = lodCamera != null ? lodCamera : Camera.main;
+            SnowSimulator snowSource = snow ? SnowSource() : null;
+            string reason = CacheUnavailableReason(fallback, cam, snow, snowSource);
+            if (reason != null)
+            {
+                if (reason != _cacheFallbackReason)
+                    Debug.LogWarning($"{name}: Vertex evaluation is Compute cache, but {reason}; evaluating in the domain stage instead.", this);
+                _cacheFallbackReason = reason;
+                _cacheError = null;
+                StopCache();
+                return true;
+            }
+            _cacheFallbackReason = null;
+
+            int limit = VertexCacheBudget.FactorLimit(_params.tess);
+            long deviceLimit = SystemInfo.maxGraphicsBufferSize;
+            try { VertexCacheBudget.CheckFits(tiles, limit, snow, deviceLimit > 0 ? deviceLimit : GpuLayout.MaxBufferBytes); }
+            catch (ArgumentException e)
+            {
+                string message = $"vertexEvaluation = ComputeCache: {e.Message}";
+                if (_cacheError != message)
+                    Debug.LogError($"{name}: cannot draw with these settings: {message}", this);
+                _cacheError = message;
+                return false;
+            }
+            _cacheError = null;
+
+            _cache.EnsureBuffers(tiles, limit, snow);
+            int w = cam.pixelWidth, h = cam.pixelHeight;
+            if (w > 0 && h > 0)
+            {
+                // The projection the graphics stages get as UNITY_MATRIX_P (platform depth range and
+                // orientation). A render-texture y flip would not change a factor (screen lengths) or
+                // the culling (symmetric in y), so renderIntoTexture = false serves every target.
+                Matrix4x4 viewProjection = GL.GetGPUProjectionMatrix(cam.projectionMatrix, false) * cam.worldToCameraMatrix;
+                var inputs = new VertexCachePass.Inputs
+                {
+                    parameters = _params,
+                    objectToClip = viewProjection * _objectToWorld,
+                    screenSize = new Vector4(w, h, 1f / w, 1f / h),
+                    controlPoints = _controlPoints, regions = _regions, gridLines = _gridLines,
+                    gridStamp = _gridStamp,
+                    effects = Effects(snow),
+                    snowDepth = snowSource != null ? snowSource.DepthBuffer : null,
+                    snowMapSize = snowSource != null ? snowSource.MapSize : default,
+                    snowVersion = snowSource != null ? snowSource.DepthVersion : 0,
+                };
+                if (_cache.Update(cacheShader, inputs)) _cache.BindTo(_props);
+            }
+            if (!_cache.HasContent) return false;   // nothing evaluated yet (a camera without pixels)
+            SetCacheKeyword(true);
+            _usesCache = true;
+            return true;
+        }
+
+        /// <summary>Why the compute cache cannot run this frame, or null. The message names the setting or device flag.</summary>
+        string CacheUnavailableReason(bool fallback, Camera cam, bool snow, SnowSimulator snowSource)
+        {
+            if (fallback)
+                return "the material draws its no-tessellator fallback SubShader (there is no domain stage to feed)";
+            if (!SystemInfo.supportsComputeShaders)
+                return "this device has no compute shaders (SystemInfo.supportsComputeShaders = false)";
+            if (cacheShader == null)
+                return "no compute shader is assigned to Cache Shader (Shaders/TerrainCache.compute)";
+            if (!_cache.FindKernels(cacheShader, out string missing))
+                return $"the Cache Shader '{cacheShader.name}' has no kernel '{missing}'";
+            if (cam == null)
+                return "there is no LOD camera (LOD Camera is empty and no camera is tagged MainCamera)";
+            if (snow && (snowSource == null || snowSource.DepthBuffer == null))
+                return "the material has GT_SNOW and no enabled Snow Simulator is assigned to Snow Simulator or on this GameObject (the cache samples its depth map)";
+            return null;
+        }
+
+        SnowSimulator SnowSource() => snowSimulator != null ? snowSimulator : GetComponent<SnowSimulator>();
+
+        bool SnowOn() => material != null && material.IsKeywordEnabled(VertexCachePass.SnowKeyword);
+
+        VertexCachePass.Effects Effects(bool snow)
+        {
+            var e = VertexCachePass.Effects.None;
+            if (material.IsKeywordEnabled(VertexCachePass.NoiseKeyword)) e |= VertexCachePass.Effects.Noise;
+            if (material.IsKeywordEnabled(VertexCachePass.HeightColorKeyword)) e |= VertexCachePass.Effects.HeightColor;
+            if (snow) e |= VertexCachePass.Effects.Snow;
+            return e;
+        }
+
+        /// <summary>The domain stage draws: keyword off and the cache's memory given back.</summary>
+        void StopCache()
+        {
+            SetCacheKeyword(false);
+            if (_cache.IsAllocated) _cache.Release();
+        }
+
+        /// <summary>
+        /// Switches GT_VERTEX_CACHE on the material (a material property, shared by every renderer
+        /// using the material), and off on a material this renderer turned it on for and no longer uses.
+        /// </summary>
+        void SetCacheKeyword(bool on)
+        {
+            if (_cacheKeywordMaterial != null && (!on || _cacheKeywordMaterial != material))
+            {
+                _cacheKeywordMaterial.DisableKeyword(VertexCachePass.Keyword);
+                _cacheKeywordMaterial = null;
+            }
+            if (material == null) return;
+            bool enabled = material.IsKeywordEnabled(VertexCachePass.Keyword);
+            if (on && !enabled) material.EnableKeyword(VertexCachePass.Keyword);
+            else if (!on && enabled) material.DisableKeyword(VertexCachePass.Keyword);
+            if (on) _cacheKeywordMaterial = material;
         }
 
         void SyncRangeFromSerialized()

@@ -152,6 +152,15 @@ namespace GregoryTerrain
         /// <summary>The depth map (R*R floats) while enabled, else null.</summary>
         public ComputeBuffer DepthBuffer => _depth;
 
+        /// <summary>
+        /// Changes whenever the depth map's contents may have changed (a step, a clear, a new map):
+        /// readers that cache something derived from it (the renderer's vertex cache) compare it.
+        /// </summary>
+        public int DepthVersion { get; private set; }
+
+        /// <summary><c>_SnowMapSize = (R, 1/R, depthCap, 0)</c>, as the terrain material gets it.</summary>
+        public Vector4 MapSize => new Vector4(settings.resolution, 1f / settings.resolution, settings.depthCap, 0f);
+
         /// <summary>True when the next step will recompute the exposure.</summary>
         public bool NeedsExposureUpdate => !_exposureValid || !settings.ExposureEquals(_exposureSettings) || FieldVersion != _exposureFieldVersion;
 
@@ -209,12 +218,14 @@ namespace GregoryTerrain
             simulation.SetBuffer(_accumulateKernel, Ids.Exposure, _exposure);
             simulation.SetBuffer(_accumulateKernel, Ids.Depth, _depth);
             simulation.Dispatch(_accumulateKernel, groups, groups, 1);
+            DepthVersion++;
         }
 
         /// <summary>Clears the snow (the exposure stays valid).</summary>
         public void ClearSnow()
         {
             _depth?.SetData(new float[settings.resolution * settings.resolution]);
+            DepthVersion++;
         }
 
         ComputeBuffer CurrentField()
@@ -272,6 +283,7 @@ namespace GregoryTerrain
             _exposure = new ComputeBuffer(cells, 4);
             _depth = new ComputeBuffer(cells, 4);
             _depth.SetData(new float[cells]);
+            DepthVersion++;
             _exposureValid = false;
             _uploadedCpuVersion = -1;
             _fieldTerrainVersion = -1;   // a new field buffer: evaluate the terrain again
@@ -282,7 +294,7 @@ namespace GregoryTerrain
         {
             if (terrainMaterial == null || _depth == null) return;
             terrainMaterial.SetBuffer(Ids.Depth, _depth);
-            terrainMaterial.SetVector(Ids.MapSize, new Vector4(settings.resolution, 1f / settings.resolution, settings.depthCap, 0f));
+            terrainMaterial.SetVector(Ids.MapSize, MapSize);
             terrainMaterial.EnableKeyword(Keyword);
         }
 

@@ -14,9 +14,12 @@
 //
 // Keywords: the package's are exactly the shipped ones of Tools~/rig/shader_variants.txt
 // (GT_PAPER_MODE, GT_READBACK and GT_FACTOR_READBACK are rig-only and never declared here), all
-// shader_feature_local except GT_SNOW, which SnowSimulator switches at run time: it is
-// multi_compile_local, so a player build keeps both variants even when no saved material has it on.
-// Depth and shadow passes declare only GT_NOISE and GT_SNOW, the ones that change the shape. The pipelines' own
+// shader_feature_local except GT_SNOW, which SnowSimulator switches at run time, and GT_VERTEX_CACHE,
+// which GregoryTerrainRenderer switches (Vertex evaluation = Compute cache: the domain stage reads the
+// vertices TerrainCache.compute evaluated): both are multi_compile_local, so a player build keeps both
+// variants even when no saved material has them on. GT_VERTEX_CACHE only in the tessellated passes
+// (the fallback has no hull/domain stage to feed). Depth and shadow passes declare only GT_NOISE,
+// GT_SNOW (and GT_VERTEX_CACHE), the ones that change the shape or where it comes from. The pipelines' own
 // keywords are multi_compile, only where a pass reads them: URP's main-light shadow keywords and
 // Built-in's SHADOWS_SCREEN on the forward passes (received shadows), URP's _GBUFFER_NORMALS_OCT on
 // DepthNormals. Each pass defines one GT_PASS_* (and GT_FALLBACK without a tessellator) before its
@@ -78,6 +81,8 @@ Shader "GregoryTerrain/Terrain"
             // Effects: off = not compiled into the build at all (shader_feature: unused variants are stripped).
             #pragma shader_feature_local GT_NOISE
             #pragma multi_compile_local _ GT_SNOW
+            // Vertex evaluation (renderer setting): the compute pre-pass's cached vertices, switched at run time.
+            #pragma multi_compile_local _ GT_VERTEX_CACHE
             #pragma shader_feature_local GT_HEIGHT_COLOR
             #pragma shader_feature_local _ GT_DEBUG_NORMALS GT_DEBUG_PATCH_ID GT_DEBUG_TESS_FACTOR
             // Main-light shadows received (URPAdapter.hlsl, GT_MainLightShadow): URP's own keywords.
@@ -109,6 +114,8 @@ Shader "GregoryTerrain/Terrain"
             #pragma fragment frag
             #pragma shader_feature_local GT_NOISE
             #pragma multi_compile_local _ GT_SNOW
+            // Vertex evaluation (renderer setting): the compute pre-pass's cached vertices, switched at run time.
+            #pragma multi_compile_local _ GT_VERTEX_CACHE
             #define GT_PASS_SHADOWCASTER 1
             #include "Packages/com.gregoryterrain.tessellation/Shaders/Adapters/URPAdapter.hlsl"
             #include "Packages/com.gregoryterrain.tessellation/Shaders/TerrainStages.hlsl"
@@ -135,6 +142,8 @@ Shader "GregoryTerrain/Terrain"
             #pragma fragment frag
             #pragma shader_feature_local GT_NOISE
             #pragma multi_compile_local _ GT_SNOW
+            // Vertex evaluation (renderer setting): the compute pre-pass's cached vertices, switched at run time.
+            #pragma multi_compile_local _ GT_VERTEX_CACHE
             #define GT_PASS_DEPTH 1
             #include "Packages/com.gregoryterrain.tessellation/Shaders/Adapters/URPAdapter.hlsl"
             #include "Packages/com.gregoryterrain.tessellation/Shaders/TerrainStages.hlsl"
@@ -160,6 +169,8 @@ Shader "GregoryTerrain/Terrain"
             #pragma fragment frag
             #pragma shader_feature_local GT_NOISE
             #pragma multi_compile_local _ GT_SNOW
+            // Vertex evaluation (renderer setting): the compute pre-pass's cached vertices, switched at run time.
+            #pragma multi_compile_local _ GT_VERTEX_CACHE
             // URP's normal packing for the deferred renderer's accurate G-buffer normals.
             #pragma multi_compile_fragment _ _GBUFFER_NORMALS_OCT
             #define GT_PASS_DEPTH_NORMALS 1
@@ -300,6 +311,8 @@ Shader "GregoryTerrain/Terrain"
             // Effects: off = not compiled into the build at all (shader_feature: unused variants are stripped).
             #pragma shader_feature_local GT_NOISE
             #pragma multi_compile_local _ GT_SNOW
+            // Vertex evaluation (renderer setting): the compute pre-pass's cached vertices, switched at run time.
+            #pragma multi_compile_local _ GT_VERTEX_CACHE
             #pragma shader_feature_local GT_HEIGHT_COLOR
             #pragma shader_feature_local _ GT_DEBUG_NORMALS GT_DEBUG_PATCH_ID GT_DEBUG_TESS_FACTOR
             #define GT_PASS_FORWARD 1
@@ -328,6 +341,8 @@ Shader "GregoryTerrain/Terrain"
             #pragma fragment frag
             #pragma shader_feature_local GT_NOISE
             #pragma multi_compile_local _ GT_SNOW
+            // Vertex evaluation (renderer setting): the compute pre-pass's cached vertices, switched at run time.
+            #pragma multi_compile_local _ GT_VERTEX_CACHE
             #define GT_PASS_DEPTH 1
             #include "Packages/com.gregoryterrain.tessellation/Shaders/Adapters/HDRPAdapter.hlsl"
             #include "Packages/com.gregoryterrain.tessellation/Shaders/TerrainStages.hlsl"
@@ -354,6 +369,8 @@ Shader "GregoryTerrain/Terrain"
             #pragma fragment frag
             #pragma shader_feature_local GT_NOISE
             #pragma multi_compile_local _ GT_SNOW
+            // Vertex evaluation (renderer setting): the compute pre-pass's cached vertices, switched at run time.
+            #pragma multi_compile_local _ GT_VERTEX_CACHE
             #define GT_PASS_SHADOWCASTER 1
             #include "Packages/com.gregoryterrain.tessellation/Shaders/Adapters/HDRPAdapter.hlsl"
             #include "Packages/com.gregoryterrain.tessellation/Shaders/TerrainStages.hlsl"
@@ -465,6 +482,8 @@ Shader "GregoryTerrain/Terrain"
             // Effects: off = not compiled into the build at all (shader_feature: unused variants are stripped).
             #pragma shader_feature_local GT_NOISE
             #pragma multi_compile_local _ GT_SNOW
+            // Vertex evaluation (renderer setting): the compute pre-pass's cached vertices, switched at run time.
+            #pragma multi_compile_local _ GT_VERTEX_CACHE
             #pragma shader_feature_local GT_HEIGHT_COLOR
             #pragma shader_feature_local _ GT_DEBUG_NORMALS GT_DEBUG_PATCH_ID GT_DEBUG_TESS_FACTOR
             // Main directional light's shadow received (BuiltinAdapter.hlsl, GT_MainLightShadow).
@@ -495,6 +514,8 @@ Shader "GregoryTerrain/Terrain"
             #pragma fragment frag
             #pragma shader_feature_local GT_NOISE
             #pragma multi_compile_local _ GT_SNOW
+            // Vertex evaluation (renderer setting): the compute pre-pass's cached vertices, switched at run time.
+            #pragma multi_compile_local _ GT_VERTEX_CACHE
             #define GT_PASS_SHADOWCASTER 1
             #include "Packages/com.gregoryterrain.tessellation/Shaders/Adapters/BuiltinAdapter.hlsl"
             #include "Packages/com.gregoryterrain.tessellation/Shaders/TerrainStages.hlsl"

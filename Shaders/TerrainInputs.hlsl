@@ -50,6 +50,14 @@ float4 SnowMapSize() { return _SnowMapSize; }
 float SnowDepthCap() { return _SnowMapSize.z; }
 #endif
 
+#if defined(GT_VERTEX_CACHE)
+// The vertex cache (internals.md, "Vertex cache"), written this frame by the compute pass
+// (VertexCacheKernels.hlsl: _TileFactorsRW, _VertexCacheRW, the same buffers): 2 float4 per tile
+// (the integer edge factors; inside factors, culled), and GT_VERTEX_CACHE_FLOAT4S float4 per slot.
+StructuredBuffer<float4> _TileFactors GT_REGISTER(t5);
+StructuredBuffer<float4> _VertexCache GT_REGISTER(t6);
+#endif
+
 // --- Patch grid -----------------------------------------------------------------------------------
 
 uint GridColumns() { return (uint)_GridSize.x; }

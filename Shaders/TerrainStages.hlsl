@@ -4,8 +4,10 @@
 //   vert           tile mode: one 4-control-point patch per tile, no vertex buffer:
 //                  tile = SV_VertexID / 4, corner = SV_VertexID % 4 (internals.md, "Draw modes")
 //   hull_const     edge factors from each tile edge's chord error in pixels, frustum culling
+//                  (TileFactors.hlsl); GT_VERTEX_CACHE: the factors the compute pass decided
 //   hull_shader    passes the 4 corners through
-//   domain_shader  tess coordinate -> TerrainVertex (TerrainVertex.hlsl)
+//   domain_shader  tess coordinate -> TerrainVertex (TerrainVertex.hlsl); GT_VERTEX_CACHE: the
+//                  vertex the compute pass stored (VertexCacheKernels.hlsl), transformed
 //   vert_fallback  no tessellator: a (F+1)^2 UV grid per instance (= tile), same TerrainVertex
 //   vert_static    rig only (GT_STATIC_MESH): the terrain's vertices baked once, the fallback's index grid
 //   frag           TerrainShading.hlsl: colour (forward), packed normal (GT_PASS_DEPTH_NORMALS),
@@ -13,6 +15,7 @@
 //
 // Keywords (Tools~/rig/shader_variants.txt lists the combinations that are compiled):
 //   GT_NOISE, GT_HEIGHT_COLOR, GT_SNOW                effects; off means not compiled at all
+//   GT_VERTEX_CACHE                                   vertices evaluated by a compute pre-pass
 //   GT_DEBUG_NORMALS, GT_DEBUG_PATCH_ID, GT_DEBUG_TESS_FACTOR   debug views
 //   GT_PAPER_MODE, GT_READBACK, GT_FACTOR_READBACK    off-Unity rig only
 #ifndef GT_TERRAIN_STAGES_INCLUDED
@@ -20,11 +23,18 @@
 
 #include "TerrainVertex.hlsl"
 #include "TerrainShading.hlsl"
-#include "TessellationFactors.hlsl"
+#include "TileFactors.hlsl"
+#if defined(GT_VERTEX_CACHE)
+    #include "VertexCache.hlsl"
+    #if defined(GT_PAPER_MODE) || defined(GT_READBACK) || defined(GT_FACTOR_READBACK)
+        #error "GT_VERTEX_CACHE draws tiles from the cache: no paper mode, and the cache itself is the readback"
+    #endif
+#endif
 
-// The readback indexes vertices as an (F+1) x (F+1) grid, which only integer partitioning makes.
-// Otherwise fractional_odd: factors change continuously with the view, so no popping.
-#if defined(GT_READBACK)
+// The readback indexes vertices as an (F+1) x (F+1) grid, and the vertex cache (VertexCache.hlsl)
+// stores vertices at k / F: only integer partitioning makes those. Otherwise fractional_odd:
+// factors change continuously with the view, so no popping.
+#if defined(GT_READBACK) || defined(GT_VERTEX_CACHE)
     #define GT_PARTITIONING "integer"
 #else
     #define GT_PARTITIONING "fractional_odd"
@@ -56,147 +66,50 @@ struct TileFactors
     float inside[2] : SV_InsideTessFactor;
 };
 
-// Corner c sits at tess coordinate (c & 1, c >> 1).
-float2 CornerTessCoordinate(uint corner) { return float2(corner & 1u, corner >> 1u); }
-
 TileCorner vert(uint vertexID : SV_VertexID)
 {
     TileCorner o;
     o.drawPatch = vertexID / 4u;
-    // Corners depend only on (tile, corner) integers, so a corner shared by neighbouring tiles is
-    // evaluated from identical inputs: identical positions, identical edge factors.
-    TerrainSurfacePoint s = EvaluateSurface(o.drawPatch, CornerTessCoordinate(vertexID % 4u));
-    o.positionOS = TerrainToObject(OutputSurfacePosition(s));
+#if defined(GT_VERTEX_CACHE)
+    o.positionOS = float3(0.0, 0.0, 0.0);   // the factors come from the cache
+#else
+    o.positionOS = TileCornerObjectPosition(o.drawPatch, vertexID % 4u);
+#endif
     return o;
 }
 
-// True when the tile's box lies outside the view. The box is the corners' bounds, grown in height
-// by the noise bound (GT_NOISE) plus the corners' own height spread: a cheap allowance for the
-// surface rising between corners, which the corners alone cannot see. (Takes the corners as an
-// array, not the InputPatch: not every HLSL compiler accepts an InputPatch as a helper argument.)
-bool TileCulled(float3 cornerOS[4])
-{
-    float3 lo = cornerOS[0], hi = lo;
-    [unroll] for (uint c = 1; c < 4; c++)
-    {
-        lo = min(lo, cornerOS[c]);
-        hi = max(hi, cornerOS[c]);
-    }
-    float margin = hi.y - lo.y;
-#if defined(GT_NOISE)
-    margin += NoiseHeightBound();
-#endif
-    lo.y -= margin;
-    hi.y += margin;
-#if defined(GT_SNOW)
-    hi.y += SnowDepthCap();   // snow only raises the surface, by at most the cap
-#endif
-    float4 boxCS[8];
-    [unroll] for (uint k = 0; k < 8; k++)
-    {
-        float3 p = float3((k & 1u) ? hi.x : lo.x, (k & 2u) ? hi.y : lo.y, (k & 4u) ? hi.z : lo.z);
-        boxCS[k] = GT_ObjectToClip(p);
-    }
-    // The height margin is already in the box (object units), so no clip-space margin on top.
-    return BoxOutsideFrustum(boxCS, 0.0);
-}
-
-// Object point -> pixels per object unit there (TessellationFactors.hlsl, PixelsPerUnit).
-float ObjectPixelsPerUnit(float3 p)
-{
-    return PixelsPerUnit(GT_ObjectToClip(p), GT_ObjectToClip(p + float3(1.0, 0.0, 0.0)),
-                         GT_ObjectToClip(p + float3(0.0, 1.0, 0.0)), GT_ObjectToClip(p + float3(0.0, 0.0, 1.0)),
-                         GT_ScreenSize());
-}
-
-// Object position of the Gregory surface (no noise) at a tess coordinate of the drawn patch.
-float3 SurfaceObjectPosition(uint drawPatch, float2 tess)
-{
-    return TerrainToObject(EvaluateSurface(drawPatch, tess).position);
-}
-
-// Factor of the edge from tess coordinate a to b (a the lower one) whose end points are pa, pb:
-// the surface (no noise) is evaluated at the GT_EDGE_SEGMENTS - 1 inner points of the edge
-// (SampledEdgeSagittaPixels), and the bound of the noise the frame draws is added (noiseCurvature,
-// 0 without GT_NOISE; edgeLength in terrain units). A neighbour sharing the edge forms the same
-// global points bit for bit (RangeCoordinate adds the integer tile index first), so it gets the
-// same factor: no cracks.
-float EdgeErrorTessFactor(uint drawPatch, float2 a, float2 b, float3 pa, float3 pb, float edgeLength, float noiseCurvature,
-                          float targetPixelError, float maxFactor)
-{
-    float3 p[GT_EDGE_SEGMENTS + 1];
-    float k[GT_EDGE_SEGMENTS + 1];
-    p[0] = pa;
-    p[GT_EDGE_SEGMENTS] = pb;
-    k[0] = k[GT_EDGE_SEGMENTS] = 0.0;
-    float kMax = 0.0;
-    [unroll] for (uint i = 1u; i < GT_EDGE_SEGMENTS; i++)
-    {
-        p[i] = SurfaceObjectPosition(drawPatch, lerp(a, b, (float)i / (float)GT_EDGE_SEGMENTS));
-        k[i] = ObjectPixelsPerUnit(p[i]);
-        kMax = max(kMax, k[i]);
-    }
-    float sagitta = SampledEdgeSagittaPixels(p, k) + NoiseSagittaPixels(noiseCurvature, edgeLength, kMax);
-    return ErrorTessFactor(sagitta, targetPixelError, maxFactor);
-}
-
-TileFactors ComputeTileFactors(InputPatch<TileCorner, 4> corners)
+TileFactors ToTileFactors(TileFactorSet set)
 {
     TileFactors f;
-    if (UsesUniformTessFactor())
-    {
-        // Tests and benchmarks: every tile, every edge the same, nothing culled, so the vertex
-        // count is known in advance.
-        float u = UniformTessFactor();
-        f.edge[0] = f.edge[1] = f.edge[2] = f.edge[3] = u;
-        f.inside[0] = f.inside[1] = u;
-        return f;
-    }
+    f.edge[0] = set.edge.x;
+    f.edge[1] = set.edge.y;
+    f.edge[2] = set.edge.z;
+    f.edge[3] = set.edge.w;
+    f.inside[0] = set.inside.x;
+    f.inside[1] = set.inside.y;
+    return f;
+}
+
+TileFactorSet TileFactorsOf(InputPatch<TileCorner, 4> corners)
+{
+    uint patch = corners[0].drawPatch;
+    TileFactorSet set;
+#if defined(GT_VERTEX_CACHE)
+    // Decided by CacheTileFactors this frame, already integers (culled: all 0).
+    set.edge = _TileFactors[2u * patch];
+    set.inside = _TileFactors[2u * patch + 1u].xy;
+#else
     float3 cornerOS[4];
     [unroll] for (uint c = 0; c < 4; c++)
         cornerOS[c] = corners[c].positionOS;
-    if (TileCulled(cornerOS))
-    {
-        f.edge[0] = f.edge[1] = f.edge[2] = f.edge[3] = 0.0;   // a zero edge factor drops the patch
-        f.inside[0] = f.inside[1] = 0.0;
-        return f;
-    }
-    // The knob is the target screen-space error in pixels (_Tess.z): each edge gets the segment
-    // count whose chord error is that many pixels (TessellationPolicy.ErrorTessFactor). Each factor
-    // depends only on its edge (end points and seven points of the surface on it), taken lower tess
-    // coordinate first by both tiles that share it: their factors agree bit for bit (no cracks).
-    uint patch = corners[0].drawPatch;
-    float target = TargetPixelError(), maxFactor = MaxTessFactor();
-    float2 edgeLength = (_Range.zw - _Range.xy) / TileCount();   // along u (x) and along v (y), terrain units
-    float noiseCurvature = 0.0;
-#if defined(GT_NOISE)
-    // The octaves this frame draws (the count TerrainVertex uses): the knob counts the noise it shows.
-    noiseCurvature = NoiseCurvatureBound(NoiseSettings(), OctaveCount(RangeWidth(), NoiseVerticesAcross(), NoiseSettings(), MaxNoiseOctaves()));
+    set = ComputeTileFactors(patch, cornerOS);
 #endif
-    f.edge[0] = EdgeErrorTessFactor(patch, float2(0, 0), float2(0, 1), cornerOS[0], cornerOS[2], edgeLength.y, noiseCurvature, target, maxFactor);   // u = 0
-    f.edge[1] = EdgeErrorTessFactor(patch, float2(0, 0), float2(1, 0), cornerOS[0], cornerOS[1], edgeLength.x, noiseCurvature, target, maxFactor);   // v = 0
-    f.edge[2] = EdgeErrorTessFactor(patch, float2(1, 0), float2(1, 1), cornerOS[1], cornerOS[3], edgeLength.y, noiseCurvature, target, maxFactor);   // u = 1
-    f.edge[3] = EdgeErrorTessFactor(patch, float2(0, 1), float2(1, 1), cornerOS[2], cornerOS[3], edgeLength.x, noiseCurvature, target, maxFactor);   // v = 1
-    // Inside factors follow the edges they run along: inside[0] subdivides along u, like the
-    // v = 0 and v = 1 edges. They match no neighbour, so they may look inside: the tile's two
-    // midlines (bumps between the edges) and the centre's deviation from the diagonals (a twist
-    // bends the diagonals, not the edges).
-    float midU = EdgeErrorTessFactor(patch, float2(0, 0.5), float2(1, 0.5), SurfaceObjectPosition(patch, float2(0, 0.5)),
-                                     SurfaceObjectPosition(patch, float2(1, 0.5)), edgeLength.x, noiseCurvature, target, maxFactor);
-    float midV = EdgeErrorTessFactor(patch, float2(0.5, 0), float2(0.5, 1), SurfaceObjectPosition(patch, float2(0.5, 0)),
-                                     SurfaceObjectPosition(patch, float2(0.5, 1)), edgeLength.y, noiseCurvature, target, maxFactor);
-    float3 centre = SurfaceObjectPosition(patch, float2(0.5, 0.5));
-    float diagonal = InsideErrorTessFactor(DiagonalSagittaPixels(cornerOS[0], cornerOS[1], cornerOS[2], cornerOS[3],
-                                                                 centre, ObjectPixelsPerUnit(centre)), target, maxFactor);
-    float2 inside = max(max(TessInsideFactors(f.edge[0], f.edge[1], f.edge[2], f.edge[3]), float2(midU, midV)), diagonal);
-    f.inside[0] = inside.x;
-    f.inside[1] = inside.y;
-    return f;
+    return set;
 }
 
 TileFactors hull_const(InputPatch<TileCorner, 4> corners)
 {
-    TileFactors f = ComputeTileFactors(corners);
+    TileFactors f = ToTileFactors(TileFactorsOf(corners));
 #if defined(GT_FACTOR_READBACK)
     uint p = corners[0].drawPatch;
     _Readback[2 * p + 0] = float4(f.edge[0], f.edge[1], f.edge[2], f.edge[3]);
@@ -222,7 +135,17 @@ TileCorner hull_shader(InputPatch<TileCorner, 4> corners, uint id : SV_OutputCon
 TerrainVaryings domain_shader(TileFactors factors, const OutputPatch<TileCorner, 4> corners,
                               float2 tess : SV_DomainLocation)
 {
-    return TerrainVertex(corners[0].drawPatch, tess, max(factors.inside[0], factors.inside[1]));
+    float tessFactor = max(factors.inside[0], factors.inside[1]);
+#if defined(GT_VERTEX_CACHE)
+    // The compute pass evaluated this vertex into its slot: only the camera transform is left.
+    float4 edge = float4(factors.edge[0], factors.edge[1], factors.edge[2], factors.edge[3]);
+    float2 inside = float2(factors.inside[0], factors.inside[1]);
+    uint limit = VertexCacheFactorLimit();
+    uint slot = corners[0].drawPatch * VertexCacheSlotsPerTile(limit) + VertexCacheSlot(tess, edge, inside, limit);
+    return TerrainVaryingsFromAttributes(ReadVertexCacheRecord(slot), tessFactor);
+#else
+    return TerrainVertex(corners[0].drawPatch, tess, tessFactor);
+#endif
 }
 
 // No tessellator: draw an index buffer over a (F+1) x (F+1) vertex grid, F = the uniform factor

@@ -123,13 +123,26 @@ void WriteReadback(uint drawPatch, float2 tess, float3 positionOS, float3 normal
 }
 #endif
 
-// tessFactor is only carried to the GT_DEBUG_TESS_FACTOR view.
-TerrainVaryings TerrainVertex(uint drawPatch, float2 tess, float tessFactor)
+// A terrain vertex before the camera: what the domain stage computes per vertex, and what the
+// vertex cache (VertexCache.hlsl) stores. Object space is Unity's Y-up (x, z, y).
+struct TerrainVertexAttributes
+{
+    float3 positionOS;       // noise and snow included; relative to S(O) + p(O) at deep zoom
+    float3 normalOS;         // unit
+    float absoluteHeight;    // S'z of eq. 14: Gregory + noise, absolute even at deep zoom, no snow
+    float colorNoise;        // l of eq. 14 (GT_HEIGHT_COLOR), else 0
+    float snowDepth;         // GT_SNOW, else 0
+    uint patch;              // the Gregory patch that was evaluated
+};
+
+// Everything TerrainVertex computes before the camera.
+TerrainVertexAttributes EvaluateTerrainVertex(uint drawPatch, float2 tess)
 {
     TerrainSurfacePoint s = EvaluateSurface(drawPatch, tess);
     float3 position = OutputSurfacePosition(s);
     float3 dPdu = s.dPdu;
     float3 dPdv = s.dPdv;
+    float noiseHeight = 0.0;   // the absolute p(q): the height of the plain path, and the height colour
 
 #if defined(GT_NOISE)
     // Noise lives on the global point, so it is continuous across patches and tiles. In paper mode
@@ -144,7 +157,6 @@ TerrainVaryings TerrainVertex(uint drawPatch, float2 tess, float tessFactor)
     #endif
     float octaves = OctaveCount(RangeWidth(), NoiseVerticesAcross(), NoiseSettings(), MaxNoiseOctaves());
     float2 gradient;   // d(noise)/dq
-    float noiseHeight = 0.0;   // the absolute p(q): the height of the plain path, and the height colour
     #if !defined(GT_PAPER_MODE)
     // Deep zoom: p(q) - p(O) from precise differences, like the surface; the renderer adds p(O).
     [branch] if (RelativeSurfaceIsActive(_RangeOrigin))
@@ -168,6 +180,8 @@ TerrainVaryings TerrainVertex(uint drawPatch, float2 tess, float tessFactor)
     dPdv.z += gradient.y * regionSize.y;
 #endif
 
+    TerrainVertexAttributes a;
+    a.snowDepth = 0.0;
 #if defined(GT_SNOW)
     // After the noise: snow lies on the detailed surface. The normal stays the terrain's: the map's
     // bilinear slope (up to cap / cell size) is no surface normal. In paper mode a clamped vertex
@@ -177,43 +191,54 @@ TerrainVaryings TerrainVertex(uint drawPatch, float2 tess, float tessFactor)
     #else
     float2 snowPoint = TerrainPointApprox(s.q);
     #endif
-    float snowDepth = SnowMapSample(_SnowDepth, SnowMapSize(), snowPoint);
-    position.z += snowDepth;
+    a.snowDepth = SnowMapSample(_SnowDepth, SnowMapSize(), snowPoint);
+    position.z += a.snowDepth;
 #endif
 
     // The derivatives already carry the noise term, so the normal is taken from them directly.
-    float3 normal = GregoryNormalFromDerivatives(dPdu, dPdv);
-    float3 positionOS = TerrainToObject(position);
-    float3 normalOS = TerrainToObject(normal);
-
-#if defined(GT_READBACK)
-    WriteReadback(drawPatch, tess, positionOS, normalOS, TerrainPointApprox(s.q), s.uv);
+    a.positionOS = TerrainToObject(position);
+    a.normalOS = TerrainToObject(GregoryNormalFromDerivatives(dPdu, dPdv));
+    // The absolute height S'z (position.z is relative to S(O) at deep zoom).
+    a.absoluteHeight = s.position.z + noiseHeight;
+    a.colorNoise = 0.0;
+#if defined(GT_HEIGHT_COLOR)
+    a.colorNoise = HeightColorNoise(s.q, HeightColorSettings());
 #endif
+    a.patch = s.patch;
+#if defined(GT_READBACK)
+    WriteReadback(drawPatch, tess, a.positionOS, a.normalOS, TerrainPointApprox(s.q), s.uv);
+#endif
+    return a;
+}
 
+// The camera part: object space -> the varyings. tessFactor is only carried to the
+// GT_DEBUG_TESS_FACTOR view.
+TerrainVaryings TerrainVaryingsFromAttributes(TerrainVertexAttributes a, float tessFactor)
+{
     TerrainVaryings o;
-    o.positionCS = GT_ObjectToClip(positionOS);
-    o.normalWS = GT_ObjectToWorldNormal(normalOS);
+    o.positionCS = GT_ObjectToClip(a.positionOS);
+    o.normalWS = GT_ObjectToWorldNormal(a.normalOS);
 #if defined(GT_RECEIVE_SHADOWS)
-    o.positionWS = GT_ObjectToWorld(positionOS);
+    o.positionWS = GT_ObjectToWorld(a.positionOS);
 #endif
 #if defined(GT_HEIGHT_COLOR)
-    // The absolute height S'z (position.z is relative to S(O) at deep zoom).
-    float absoluteHeight = s.position.z;
-    #if defined(GT_NOISE)
-    absoluteHeight += noiseHeight;
-    #endif
-    o.heightAndColorNoise = float2(absoluteHeight, HeightColorNoise(s.q, HeightColorSettings()));
+    o.heightAndColorNoise = float2(a.absoluteHeight, a.colorNoise);
 #endif
 #if defined(GT_DEBUG_PATCH_ID)
-    o.patch = s.patch;
+    o.patch = a.patch;
 #endif
 #if defined(GT_DEBUG_TESS_FACTOR)
     o.tessFactor = tessFactor;
 #endif
 #if defined(GT_SNOW)
-    o.snowDepth = snowDepth;
+    o.snowDepth = a.snowDepth;
 #endif
     return o;
+}
+
+TerrainVaryings TerrainVertex(uint drawPatch, float2 tess, float tessFactor)
+{
+    return TerrainVaryingsFromAttributes(EvaluateTerrainVertex(drawPatch, tess), tessFactor);
 }
 
 #endif // GT_TERRAIN_VERTEX_INCLUDED

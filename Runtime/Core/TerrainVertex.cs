@@ -45,6 +45,11 @@ namespace GregoryTerrain
         public Float3 normal;
         /// <summary>l of eq. 14 (0 without <see cref="TerrainKeywords.HeightColor"/>).</summary>
         public float colorNoise;
+        /// <summary>
+        /// S'z of eq. 14: Gregory height plus the absolute noise height, without snow, absolute even at
+        /// deep zoom (where <see cref="position"/> is relative). HLSL <c>TerrainVertexAttributes.absoluteHeight</c>.
+        /// </summary>
+        public float absoluteHeight;
         /// <summary>Snow depth added to the height (0 without <see cref="TerrainKeywords.Snow"/>); the fragment stage's coverage input.</summary>
         public float snowDepth;
 
@@ -186,6 +191,7 @@ namespace GregoryTerrain
         static TerrainVertexOutput Finish(TerrainInputs inputs, TerrainSurfacePoint s, TerrainKeywords keywords)
         {
             Float3 position = OutputSurfacePosition(inputs, s, keywords), dPdu = s.dPdu, dPdv = s.dPdv;
+            float noiseHeight = 0f;   // the absolute p(q)
             if ((keywords & TerrainKeywords.Noise) != 0)
             {
                 // Noise lives on the global point; in paper mode a clamped vertex takes the noise of
@@ -202,9 +208,15 @@ namespace GregoryTerrain
                     TerrainPoint origin = RelativeSurface.OriginPoint(originF);
                     position.z += OctaveNoise.Relative(s.q, origin, RelativeSurface.Difference(s.q, origin),
                                                        inputs.NoiseSettingsStruct(), octaves, out gradient);
+                    // The height colour needs the absolute p(q); HLSL evaluates it only with GT_HEIGHT_COLOR.
+                    if ((keywords & TerrainKeywords.HeightColor) != 0)
+                        noiseHeight = OctaveNoise.Evaluate(noisePoint, inputs.NoiseSettingsStruct(), octaves, out _);
                 }
                 else
-                    position.z += OctaveNoise.Evaluate(noisePoint, inputs.NoiseSettingsStruct(), octaves, out gradient);
+                {
+                    noiseHeight = OctaveNoise.Evaluate(noisePoint, inputs.NoiseSettingsStruct(), octaves, out gradient);
+                    position.z += noiseHeight;
+                }
                 // q = (a + u (e - a), b + v (f - b)): the chain rule scales the gradient by the region size.
                 float sizeX = s.region.z - s.region.x, sizeY = s.region.w - s.region.y;
                 dPdu.z += gradient.x * sizeX;
@@ -223,6 +235,7 @@ namespace GregoryTerrain
             {
                 surface = s,
                 snowDepth = snowDepth,
+                absoluteHeight = s.position.z + noiseHeight,
                 position = position,
                 normal = GregoryEval.NormalFromDerivatives(dPdu, dPdv),
             };

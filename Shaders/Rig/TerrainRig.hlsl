@@ -4,4 +4,7 @@
 #define GT_TERRAIN_RIG_INCLUDED
 #include "../Adapters/StandaloneAdapter.hlsl"
 #include "../TerrainStages.hlsl"
+#if defined(GT_VERTEX_CACHE)
+    #include "../VertexCacheKernels.hlsl"   // entry points CacheTileFactors, CacheTileVertices
+#endif
 #endif

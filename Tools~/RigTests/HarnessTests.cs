@@ -358,6 +358,166 @@ namespace GregoryTerrain.Rig.Tests
             Assert.That(r.Stderr, Does.Contain("no-such-gpu"));
         }
 
+        // ---- compute pre-pass (--storage / --compute / --dump-storage) -------------------------
+        // Test kernels of Tools~/harness/test: storage_pattern.hlsl writes a known pattern to binding 8;
+        // tile_scale.hlsl's tile_flags writes binding 7 (kept = every third tile) and tile_scale copies
+        // it to binding 8, which tiles.hlsl's GT_STORAGE_TEST stages use to scale each tile (0: no pixels).
+
+        const int PatternRecords = 4 * 2 * 3 * 64;  // storage_pattern.hlsl over (4, 2, 3) groups of 64
+
+        string Spv(string name) => Path.Combine(_spv, name);
+
+        /// <summary>TessArgs with the domain stage that reads binding 8.</summary>
+        string[] StorageTessArgs(string buffers, int tiles, int factor, params string[] extra)
+        {
+            var a = TessArgs(buffers, tiles, factor, null, extra).ToList();
+            a[a.IndexOf(Spv("tiles.tese.spv"))] = Spv("tiles_storage.tese.spv");
+            return a.ToArray();
+        }
+
+        /// <summary>Bindings 7 and 8 (one float4 per tile) and the two tile kernels in the given order.</summary>
+        string[] TileKernelArgs(int tiles, params string[] order)
+        {
+            string groups = ((tiles * tiles + 63) / 64).ToString();
+            var a = new List<string> { "--storage", "7:" + 16 * tiles * tiles, "--storage", "8:" + 16 * tiles * tiles };
+            foreach (string k in order) a.AddRange(new[] { "--compute", Spv(k + ".comp.spv") + ":" + groups });
+            return a.ToArray();
+        }
+
+        static int KeptTiles(int tiles) => Enumerable.Range(0, tiles * tiles).Count(t => t % 3 == 0);
+
+        static byte[] ExpectedPattern(int tiles)
+        {
+            var w = new MemoryStream();
+            using (var b = new BinaryWriter(w))
+                for (uint i = 0; i < PatternRecords; i++)
+                {
+                    b.Write(i);
+                    b.Write(unchecked(i * 2654435761u));
+                    b.Write(BitConverter.SingleToInt32Bits(tiles));
+                    b.Write(BitConverter.SingleToInt32Bits(i % 1280 + 0.25f));  // _ControlPoints[i].x = i + 0.25
+                }
+            return w.ToArray();
+        }
+
+        static double[] TimeLines(HarnessRun r, string key) =>
+            r.Stdout.Split('\n').Where(l => l.StartsWith("time " + key + " "))
+                .Select(l => double.Parse(l.Split(' ')[3], System.Globalization.CultureInfo.InvariantCulture)).ToArray();
+
+        [Test]
+        public void ComputePattern_StaticMesh_DumpEqualsThePatternAndComputeIsTimed()
+        {
+            string dir = MakeInputs("in_compute_pattern", 4, 8, new[] { 0f, 0, 1, 1 });
+            string pos = Path.Combine(_work, "cquad_positions.f32"), idx = Path.Combine(_work, "cquad_indices.u32");
+            WriteFloats(pos, new[] { 0.25f, 0, 0.25f, 0.75f, 0, 0.25f, 0.75f, 0, 0.75f, 0.25f, 0, 0.75f });
+            using (var w = new BinaryWriter(File.Create(idx)))
+                foreach (uint i in new uint[] { 0, 1, 2, 0, 2, 3 }) w.Write(i);
+            string d7 = Path.Combine(_work, "pattern_7.bin"), d8 = Path.Combine(_work, "pattern_8.bin");
+            int bytes = 16 * PatternRecords + 256;  // 256 bytes the kernel never writes: the zero fill shows
+            HarnessRun r = HarnessRun.Harness("--static-mesh", "--mesh", pos, idx, "--vert", Spv("mesh.vert.spv"),
+                "--frag", Spv("mesh.frag.spv"), "--buffers", dir, "--width", Size.ToString(), "--height", Size.ToString(),
+                "--device", "llvmpipe", "--storage", "7:64", "--storage", "8:" + bytes,
+                "--compute", Spv("pattern.comp.spv") + ":4,2,3", "--dump-storage", "8:" + d8, "--dump-storage", "7:" + d7,
+                "--frames", "3", "--timestamps");
+            r.AssertSucceeded();
+            Assert.That(r.Value("storage", "8"), Is.EqualTo(new[] { d8, "bytes", bytes.ToString() }));
+            Assert.That(File.ReadAllBytes(d8), Is.EqualTo(ExpectedPattern(4).Concat(new byte[256]).ToArray()),
+                "binding 8 after the pattern kernel (records 256.. need GY and GZ)");
+            Assert.That(File.ReadAllBytes(d7), Is.EqualTo(new byte[64]), "a --storage no kernel writes stays zero");
+            Assert.That(r.Long("image", "nonsky_pixels"), Is.EqualTo(Size / 2 * (Size / 2)), "the mesh still draws");
+
+            double[] frame = TimeLines(r, "frame_ms"), compute = TimeLines(r, "compute_ms");
+            Assert.That(compute.Length, Is.EqualTo(3), r.Stdout);
+            Assert.That(frame.Length, Is.EqualTo(3), r.Stdout);
+            for (int i = 0; i < 3; i++)
+                Assert.That(compute[i], Is.InRange(0.0, frame[i]), "the frame time includes the compute, frame " + i);
+            foreach (string k in new[] { "median", "min", "mean" })
+                Assert.That(r.Value("time", "compute_ms_" + k), Is.Not.Null, "time compute_ms_" + k);
+        }
+
+        [TestCase(4, 8, 1)]
+        [TestCase(8, 32, 2)]  // 64 tiles * 33^2 = 69,696 vertices > 65,536: 2 draws
+        public void ComputeTileScales_DomainStageDrawsOnlyTheKeptTiles(int tiles, int factor, int draws)
+        {
+            string dir = MakeInputs("in_compute_" + tiles, tiles, factor, new[] { 0f, 0, 1, 1 });
+            string d7 = Path.Combine(_work, "tiles_7.bin"), d8 = Path.Combine(_work, "tiles_8.bin");
+            var args = StorageTessArgs(dir, tiles, factor, "--max-vertices-per-draw", "65536")
+                .Concat(TileKernelArgs(tiles, "tile_flags", "tile_scale"))
+                .Concat(new[] { "--dump-storage", "7:" + d7, "--dump-storage", "8:" + d8 });
+            HarnessRun r = HarnessRun.Harness(args.ToArray());
+            r.AssertSucceeded();
+            Assert.That(r.Value("draws", draws.ToString()), Is.Not.Null, "expected " + draws + " draws:\n" + r.Stdout);
+            int tilePixels = (Size / tiles) * (Size / tiles);
+            Assert.That(r.Long("image", "nonsky_pixels"), Is.EqualTo(KeptTiles(tiles) * tilePixels),
+                "only the tiles the kernels kept cover pixels");
+            float[] f7 = ReadFloats(d7), f8 = ReadFloats(d8);
+            Assert.That(f7.Length, Is.EqualTo(4 * tiles * tiles));
+            Assert.That(f8.Length, Is.EqualTo(4 * tiles * tiles));
+            for (int t = 0; t < tiles * tiles; t++)
+            {
+                float kept = t % 3 == 0 ? 1 : 0;
+                Assert.That(f7.Skip(4 * t).Take(4), Is.EqualTo(new[] { kept, t, tiles, 0f }), "binding 7, tile " + t);
+                // tile_scale read binding 7 after tile_flags wrote it (compute -> compute barrier).
+                Assert.That(f8.Skip(4 * t).Take(4), Is.EqualTo(new[] { kept, t + 0.5f, 0f, 0f }), "binding 8, tile " + t);
+            }
+        }
+
+        [Test]
+        public void ComputeKernelsInTheWrongOrder_DomainStageSeesZeros()
+        {
+            // The order given is the order run: tile_scale first reads binding 7 still zero.
+            string dir = MakeInputs("in_compute_order", 4, 8, new[] { 0f, 0, 1, 1 });
+            HarnessRun r = HarnessRun.Harness(StorageTessArgs(dir, 4, 8).Concat(TileKernelArgs(4, "tile_scale", "tile_flags")).ToArray());
+            r.AssertSucceeded();
+            Assert.That(r.Long("image", "nonsky_pixels"), Is.EqualTo(0));
+        }
+
+        [Test]
+        public void ComputeTileScales_FallbackVertexStageDrawsOnlyTheKeptTiles()
+        {
+            string dir = MakeInputs("in_compute_fallback", 4, 8, new[] { 0f, 0, 1, 1 });
+            var args = new List<string> { "--vert", Spv("fallback_storage.vert.spv"), "--frag", Spv("tiles.frag.spv"),
+                "--buffers", dir, "--grid-factor", "8", "--instances", "16", "--width", Size.ToString(),
+                "--height", Size.ToString(), "--device", "llvmpipe" };
+            HarnessRun r = HarnessRun.Harness(args.Concat(TileKernelArgs(4, "tile_flags", "tile_scale")).ToArray());
+            r.AssertSucceeded();
+            Assert.That(r.Long("image", "nonsky_pixels"), Is.EqualTo(KeptTiles(4) * 32 * 32));
+        }
+
+        // Arguments and the words stderr must hold, '|'-separated; {spv} is the test SPIR-V folder.
+        [TestCase("--storage|7", "--storage|'7'")]
+        [TestCase("--storage|7:abc", "--storage|7:abc")]
+        [TestCase("--storage|3:64", "--storage|3:64|_Regions")]
+        [TestCase("--storage|7:6", "--storage|7:6|multiple of 4")]
+        [TestCase("--storage|8:64|--storage|8:128", "--storage|8:128")]
+        [TestCase("--storage|8:4294967292", "--storage|8:4294967292|maxStorageBufferRange")]
+        [TestCase("--compute|pattern.spv", "--compute|pattern.spv")]
+        [TestCase("--compute|{spv}/pattern.comp.spv:0", "--compute|pattern.comp.spv:0")]
+        [TestCase("--compute|{spv}/pattern.comp.spv:1,1,1,1", "--compute|pattern.comp.spv:1,1,1,1")]
+        [TestCase("--storage|8:64|--compute|{spv}/pattern.comp.spv:1,70000", "--compute|pattern.comp.spv:1,70000|maxComputeWorkGroupCount[1]")]
+        [TestCase("--storage|8:64|--compute|{spv}/tiles.vert.spv:1", "--compute|tiles.vert.spv:1|no compute entry point")]
+        [TestCase("--compute|{spv}/pattern.comp.spv:4,2,3", "--compute|pattern.comp.spv|binding 8|--storage 8:BYTES")]
+        [TestCase("--dump-storage|8:out.bin", "--dump-storage|8:out.bin")]
+        public void BadComputeArguments_Exit1NamingTheOptionAndValue(string extra, string expected)
+        {
+            string dir = MakeInputs("in_4x4_f8", 4, 8, new[] { 0f, 0, 1, 1 });
+            var args = TessArgs(dir, 4, 8, null).Concat(extra.Split('|').Select(a => a.Replace("{spv}", _spv)));
+            HarnessRun r = HarnessRun.Harness(args.ToArray());
+            Assert.That(r.ExitCode, Is.EqualTo(1), r.Stdout + r.Stderr);
+            foreach (string word in expected.Split('|'))
+                Assert.That(r.Stderr, Does.Contain(word));
+        }
+
+        [Test]
+        public void StageReadingAnUnboundStorageBinding_FailsNamingStageAndBinding()
+        {
+            // Without the check lavapipe reads garbage there and draws a plausible image.
+            string dir = MakeInputs("in_4x4_f8", 4, 8, new[] { 0f, 0, 1, 1 });
+            HarnessRun r = HarnessRun.Harness(StorageTessArgs(dir, 4, 8));
+            Assert.That(r.ExitCode, Is.EqualTo(1), r.Stdout + r.Stderr);
+            Assert.That(r.Stderr, Does.Contain("--tese").And.Contain("tiles_storage.tese.spv").And.Contain("binding 8"));
+        }
+
         // ---- PNG check: chunk CRCs, zlib Adler-32, then count the non-sky pixels ---------------
 
         static uint Crc32(byte[] b, int start, int count)

@@ -17,6 +17,11 @@ namespace GregoryTerrain.Rig.Tests
     public class ShaderCompileTests
     {
         static readonly string[] Stages = { "vert", "tesc", "tese", "frag", "fallback" };
+        // The vertex cache's compute kernels, compiled for GT_VERTEX_CACHE variants only.
+        static readonly string[] CacheStages = { "cache_factors", "cache_vertices" };
+
+        static string[] StagesOf(string[] keywords) =>
+            keywords.Contains("GT_VERTEX_CACHE") ? Stages.Concat(CacheStages).ToArray() : Stages;
         static readonly string[] Targets = { "spirv", "glsl450", "essl320", "msl21" };
 
         string packageRoot;
@@ -59,21 +64,24 @@ namespace GregoryTerrain.Rig.Tests
         [Test]
         public void EveryListedVariantAndStageWasCompiledExactlyOnce()
         {
-            var expected = variants.SelectMany(v => Stages.Select(s => $"{v.name}/{s}")).ToList();
+            var expected = variants.SelectMany(v => StagesOf(v.keywords).Select(s => $"{v.name}/{s}")).ToList();
             var seen = ResultLines().Select(l => $"{l.variant}/{l.stage}").ToList();
             Assert.That(seen, Is.EquivalentTo(expected), "missing or extra variant/stage");
             // The variant list must hold what the issue asks for: all 16 combinations of the four
             // effect/mode keywords, each debug view alone, the factor readback with and without
-            // noise (gt bench), and the six snow variants.
-            Assert.That(variants.Count, Is.EqualTo(16 + 3 + 2 + 6));
-            Assert.That(variants.Count(v => v.keywords.Contains("GT_SNOW")), Is.EqualTo(6));
-            var counts = Regex.Match(output, @"variants: (\d+), stages: (\d+), compiled: (\d+), passed: (\d+), failed: (\d+)");
+            // noise (gt bench), the six snow variants and the six vertex-cache variants.
+            Assert.That(variants.Count, Is.EqualTo(16 + 3 + 2 + 6 + 6));
+            Assert.That(variants.Count(v => v.keywords.Contains("GT_SNOW")), Is.EqualTo(7));
+            Assert.That(variants.Count(v => v.keywords.Contains("GT_VERTEX_CACHE")), Is.EqualTo(6));
+            var counts = Regex.Match(output, @"variants: (\d+), stages: (\d+) \(\+(\d+) with GT_VERTEX_CACHE\), compiled: (\d+), passed: (\d+), failed: (\d+)");
             Assert.That(counts.Success, Is.True, "no counts line");
+            int total = variants.Sum(v => StagesOf(v.keywords).Length);
             Assert.That(int.Parse(counts.Groups[1].Value), Is.EqualTo(variants.Count));
             Assert.That(int.Parse(counts.Groups[2].Value), Is.EqualTo(Stages.Length));
-            Assert.That(int.Parse(counts.Groups[3].Value), Is.EqualTo(variants.Count * Stages.Length));
-            Assert.That(int.Parse(counts.Groups[4].Value), Is.EqualTo(variants.Count * Stages.Length));
-            Assert.That(int.Parse(counts.Groups[5].Value), Is.EqualTo(0));
+            Assert.That(int.Parse(counts.Groups[3].Value), Is.EqualTo(CacheStages.Length));
+            Assert.That(int.Parse(counts.Groups[4].Value), Is.EqualTo(total));
+            Assert.That(int.Parse(counts.Groups[5].Value), Is.EqualTo(total));
+            Assert.That(int.Parse(counts.Groups[6].Value), Is.EqualTo(0));
         }
 
         // "An effect that is off costs nothing": the keyword removes the code, not a branch around it.
@@ -124,6 +132,50 @@ namespace GregoryTerrain.Rig.Tests
                     Assert.That(declares, Is.EqualTo(writes), $"{name}/{stage}");
                 }
             }
+        }
+
+        // The vertex cache moves the evaluation into the compute kernels: the cached domain stage
+        // reads records and touches no patch data, the hull reads the decided factors, and the
+        // vertex stage evaluates no corners.
+        [Test]
+        public void CachedStagesReadTheCacheAndEvaluateNothing()
+        {
+            foreach (var (name, keywords) in variants.Where(v => v.keywords.Contains("GT_VERTEX_CACHE")))
+            {
+                string tese = Disassemble(name, "tese"), tesc = Disassemble(name, "tesc"), vert = Disassemble(name, "vert");
+                Assert.That(tese, Does.Contain("\"_VertexCache\""), name);
+                Assert.That(tese, Does.Not.Contain("\"_ControlPoints\""), name);
+                Assert.That(tesc, Does.Contain("\"_TileFactors\""), name);
+                Assert.That(tesc, Does.Not.Contain("\"_ControlPoints\""), name);
+                Assert.That(vert, Does.Not.Contain("\"_ControlPoints\""), name);
+                string kernel = Disassemble(name, "cache_vertices");
+                Assert.That(kernel, Does.Contain("\"_ControlPoints\"").And.Contain("\"_VertexCacheRW\""), name);
+                Assert.That(Disassemble(name, "cache_factors"), Does.Contain("\"_TileFactorsRW\""), name);
+            }
+            // Without the keyword nothing of the cache is there.
+            foreach (var stage in Stages)
+                Assert.That(Disassemble("noise+height_color", stage), Does.Not.Contain("_VertexCache").And.Not.Contain("_TileFactors"), stage);
+        }
+
+        // Unity's own file for the kernels (its adapter takes the LOD camera from globals): every
+        // keyword combination its #pragma multi_compile_local lines make compiles and validates.
+        [Test]
+        public void UnityCacheComputeFileCompilesForEveryKeywordCombination()
+        {
+            string src = Path.Combine(packageRoot, "Shaders", "TerrainCache.compute");
+            string[] effects = { "GT_NOISE", "GT_HEIGHT_COLOR", "GT_SNOW" };
+            for (int mask = 0; mask < 8; mask++)
+                foreach (var kernel in new[] { "CacheTileFactors", "CacheTileVertices" })
+                {
+                    string spv = Path.Combine(buildDir, $"unity-cache-{mask}-{kernel}.spv");
+                    var args = new List<string> { "-D", "-V", "-S", "comp", "-e", kernel, "--hlsl-iomap", "--stb", "2", "--suavb", "5" };
+                    args.AddRange(effects.Where((e, i) => (mask & (1 << i)) != 0).Select(e => "-D" + e));
+                    args.AddRange(new[] { "-o", spv, src });
+                    var (rc, text) = Run("glslangValidator", args.ToArray(), null);
+                    Assert.That(rc, Is.EqualTo(0), $"{kernel} mask {mask}: {text}");
+                    var (vrc, vtext) = Run("spirv-val", new[] { spv }, null);
+                    Assert.That(vrc, Is.EqualTo(0), $"{kernel} mask {mask}: {vtext}");
+                }
         }
 
         // --- helpers ------------------------------------------------------------------------------

@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """`gt shaders`: compiles every stage of every keyword variant and checks the results.
 
-For each variant of shader_variants.txt and each stage of STAGES:
+For each variant of shader_variants.txt and each stage of STAGES (plus CACHE_STAGES, the vertex
+cache's compute kernels, for GT_VERTEX_CACHE variants):
   1. glslangValidator, HLSL front end -> SPIR-V (Vulkan), registers mapped to the bindings of
      internals.md ("Descriptor bindings"),
   2. spirv-val,
@@ -29,9 +30,18 @@ STAGES = [
     ("frag", "frag", "frag"),
     ("fallback", "vert", "vert_fallback"),
 ]
+# The vertex cache's compute kernels (VertexCacheKernels.hlsl), compiled for GT_VERTEX_CACHE variants only.
+CACHE_STAGES = [
+    ("cache_factors", "comp", "CacheTileFactors"),
+    ("cache_vertices", "comp", "CacheTileVertices"),
+]
+
+
+def stages_of(keywords):
+    return STAGES + (CACHE_STAGES if "GT_VERTEX_CACHE" in keywords else [])
 
 # HLSL register -> Vulkan binding (set 0): b0 -> 0, b1 -> 1 (no shift), t0..t2 -> 2..4 (+2),
-# u0 -> 5 (+5), t4 -> 6 (+2; GT_SNOW's _SnowDepth). glslang applies the shift of each register class
+# u0 -> 5 (+5), t4 -> 6 (+2; GT_SNOW's _SnowDepth), t5/u2 -> 7 and t6/u3 -> 8 (GT_VERTEX_CACHE). glslang applies the shift of each register class
 # with --hlsl-iomap.
 REGISTER_SHIFTS = ["--shift-cbuffer-binding", "0", "--shift-texture-binding", "2",
                    "--shift-UAV-binding", "5"]
@@ -39,6 +49,7 @@ EXPECTED_BINDINGS = {
     "TerrainParams": 0, "RigCamera": 1,
     "_ControlPoints": 2, "_Regions": 3, "_GridLines": 4, "_Readback": 5,
     "_SnowDepth": 6,
+    "_TileFactors": 7, "_TileFactorsRW": 7, "_VertexCache": 8, "_VertexCacheRW": 8,
 }
 TERRAIN_PARAMS_BYTES = 144   # 9 float4
 SNOW_PARAMS_BYTES = 16       # GT_SNOW appends _SnowMapSize to TerrainParams
@@ -172,7 +183,7 @@ def main():
     for name, _ in variants:
         os.makedirs(os.path.join(args.out_dir, name), exist_ok=True)
 
-    jobs = [(v, s) for v in variants for s in STAGES]
+    jobs = [(v, s) for v in variants for s in stages_of(v[1])]
     with ThreadPoolExecutor(max_workers=max(1, args.jobs)) as pool:
         results = list(pool.map(lambda j: compile_one(args.out_dir, j[0], j[1], args.includes), jobs))
 
@@ -185,7 +196,7 @@ def main():
             print(f"     {p}")
         if problems:
             print(f"     log: {os.path.join(args.out_dir, name, sname + '.log')}")
-    print(f"variants: {len(variants)}, stages: {len(STAGES)}, "
+    print(f"variants: {len(variants)}, stages: {len(STAGES)} (+{len(CACHE_STAGES)} with GT_VERTEX_CACHE), "
           f"compiled: {len(results)}, passed: {len(results) - failed}, failed: {failed}")
     return 1 if failed else 0
 

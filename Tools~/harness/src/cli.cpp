@@ -1,14 +1,17 @@
 #include "cli.hpp"
 
+#include <cctype>
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <sstream>
+#include <utility>
 #include <vector>
 
 #include "check.hpp"
+#include "inputs.hpp"
 
 namespace gt {
 
@@ -42,6 +45,94 @@ std::array<float, 4> parseRange(const std::string& text) {
     return r;
 }
 
+// "LEFT:RIGHT" split at the first colon (atLast: the last one, for a path that may hold colons).
+std::pair<std::string, std::string> splitAtColon(const std::string& option, const std::string& form,
+                                                 const std::string& value, bool atLast) {
+    const size_t colon = atLast ? value.rfind(':') : value.find(':');
+    if (colon == std::string::npos || colon == 0 || colon + 1 == value.size())
+        fail(option + ": expected " + form + ", got '" + value + "'");
+    return {value.substr(0, colon), value.substr(colon + 1)};
+}
+
+// One numeric field of a compound value; the error names the option, the field and the whole value.
+uint64_t parseField(const std::string& option, const std::string& value, const std::string& field,
+                    const std::string& text, uint64_t minValue, uint64_t maxValue) {
+    errno = 0;
+    char* end = nullptr;
+    const unsigned long long v = std::strtoull(text.c_str(), &end, 10);
+    if (text.empty() || !std::isdigit(static_cast<unsigned char>(text[0])) || errno != 0 || *end != '\0' ||
+        v < minValue || v > maxValue)
+        fail(option + ": " + field + " '" + text + "' in '" + value + "' is not an integer in [" +
+             std::to_string(minValue) + ", " + std::to_string(maxValue) + "]");
+    return v;
+}
+
+constexpr uint64_t kMaxStorageBinding = 1023;        // far above any real layout; catches typos
+constexpr uint64_t kMaxStorageBytes = 0xffffffffull;  // maxStorageBufferRange is a uint32_t
+
+StorageOption parseStorage(const std::string& value) {
+    const std::string option = "--storage";
+    const auto [bindingText, bytesText] = splitAtColon(option, "BINDING:BYTES", value, false);
+    StorageOption s;
+    s.binding = static_cast<uint32_t>(parseField(option, value, "BINDING", bindingText, 0, kMaxStorageBinding));
+    if (const char* taken = rigBindingName(s.binding))
+        fail(option + ": binding " + std::to_string(s.binding) + " in '" + value + "' is the rig's " + taken +
+             " (bindings 0.." + std::to_string(kBindingCountSnow - 1) + " are taken)");
+    s.bytes = parseField(option, value, "BYTES", bytesText, 4, kMaxStorageBytes);
+    if (s.bytes % 4 != 0)
+        fail(option + ": BYTES " + bytesText + " in '" + value + "' is not a multiple of 4 (storage buffers hold 32-bit words)");
+    return s;
+}
+
+ComputeOption parseCompute(const std::string& value) {
+    const std::string option = "--compute";
+    const auto [path, groupsText] = splitAtColon(option, "SPV:GX[,GY[,GZ]]", value, true);
+    ComputeOption c;
+    c.spec = value;
+    c.path = path;
+    static const char* fields[3] = {"GX", "GY", "GZ"};
+    std::stringstream ss(groupsText);
+    std::string item;
+    size_t n = 0;
+    while (std::getline(ss, item, ',')) {
+        if (n == 3) fail(option + ": at most 3 work group counts GX,GY,GZ, got '" + value + "'");
+        c.groups[n] = static_cast<uint32_t>(parseField(option, value, fields[n], item, 1, 0xffffffffull));
+        ++n;
+    }
+    if (groupsText.back() == ',') fail(option + ": expected SPV:GX[,GY[,GZ]], got '" + value + "'");
+    return c;
+}
+
+StorageDump parseDump(const std::string& value) {
+    const std::string option = "--dump-storage";
+    const auto [bindingText, path] = splitAtColon(option, "BINDING:FILE", value, false);
+    StorageDump d;
+    d.binding = static_cast<uint32_t>(parseField(option, value, "BINDING", bindingText, 0, kMaxStorageBinding));
+    d.path = path;
+    return d;
+}
+
+// A second --storage at the same binding would leave the shaders' view ambiguous: refuse it.
+void addStorage(Options& o, const std::string& value) {
+    const StorageOption s = parseStorage(value);
+    for (const StorageOption& earlier : o.storage)
+        if (earlier.binding == s.binding)
+            fail("--storage: binding " + std::to_string(s.binding) + " in '" + value + "' is already given (" +
+                 std::to_string(earlier.binding) + ":" + std::to_string(earlier.bytes) + ")");
+    o.storage.push_back(s);
+}
+
+// Each --dump-storage names a --storage buffer (checked after all options, in any order).
+void checkDumps(const Options& o) {
+    for (const StorageDump& d : o.dumps) {
+        bool found = false;
+        for (const StorageOption& s : o.storage) found |= s.binding == d.binding;
+        if (!found)
+            fail("--dump-storage: binding " + std::to_string(d.binding) + " in '" + std::to_string(d.binding) + ":" + d.path +
+                 "' has no --storage buffer");
+    }
+}
+
 }  // namespace
 
 const char* usageText() {
@@ -64,11 +155,16 @@ const char* usageText() {
   --width W --height H           render target size (default 256x256)
   --png FILE                     write the colour image as PNG
   --wireframe                    polygonMode LINE (needs fillModeNonSolid)
+  --storage BINDING:BYTES        zero-filled device-local storage buffer at BINDING (>= 7), repeatable
+  --compute SPV:GX[,GY[,GZ]]     each frame, before the render pass, dispatch the module's compute
+                                 entry point over GX x GY x GZ groups; repeatable, run in order
+  --dump-storage BINDING:FILE    write that storage buffer's bytes after the last frame, repeatable
   --readback FILE --readback-floats K   storage buffer of K floats at binding 5, dumped to FILE
   --readback-fill nan|zero       initial readback contents (default nan)
   --stats                        pipeline statistics of the last frame ("stat NAME VALUE")
   --frames N --warmup K          draw N measured frames after K warm-up frames
-  --timestamps                   GPU time of each frame ("time ..." lines)
+  --timestamps                   GPU time of each frame ("time ..." lines; with --compute also
+                                 the compute part alone: "time compute_ms ...")
   --update-range-per-frame       write a new _Range into the uniform buffer every frame
   --resend-bytes B               re-upload B bytes through a staging copy every frame
   --max-vertices-per-draw V      split tessellated draws so each stays <= V generated vertices
@@ -114,6 +210,9 @@ Options parseOptions(int argc, char** argv) {
         else if (a == "--height") o.height = u32(16384);
         else if (a == "--png") o.pngPath = value();
         else if (a == "--wireframe") o.wireframe = true;
+        else if (a == "--storage") addStorage(o, value());
+        else if (a == "--compute") o.computes.push_back(parseCompute(value()));
+        else if (a == "--dump-storage") o.dumps.push_back(parseDump(value()));
         else if (a == "--readback") o.readbackPath = value();
         else if (a == "--readback-floats") o.readbackFloats = parseUnsigned(a, value(), 1ull << 32);
         else if (a == "--readback-fill") {
@@ -144,6 +243,7 @@ Options parseOptions(int argc, char** argv) {
     if (o.tescPath.empty() != o.tesePath.empty()) fail("--tesc and --tese go together: give both or neither");
     if (!o.readbackPath.empty() && o.readbackFloats == 0) fail("--readback needs --readback-floats K (K > 0)");
     if (o.readbackPath.empty() && o.readbackFloats != 0) fail("--readback-floats needs --readback FILE");
+    checkDumps(o);
 
     if (staticMesh) {
         o.mode = Mode::StaticMesh;

@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace gt {
 
@@ -11,6 +12,25 @@ enum class Mode {
     Tessellated,  // --vert --tesc --tese --frag: patch-list draw, SV_VertexID only
     Fallback,     // --vert --frag without tesc/tese: indexed (F+1)^2 grid, one instance per tile
     StaticMesh,   // --static-mesh --mesh P I: a plain indexed triangle mesh (benchmark baseline)
+};
+
+// --storage BINDING:BYTES: a zero-filled device-local storage buffer at BINDING of set 0.
+struct StorageOption {
+    uint32_t binding = 0;
+    uint64_t bytes = 0;
+};
+
+// --compute SPV:GX[,GY[,GZ]]: a compute kernel dispatched over GX x GY x GZ work groups each frame.
+struct ComputeOption {
+    std::string spec;  // the option's value as given, for error messages
+    std::string path;
+    std::array<uint32_t, 3> groups{1, 1, 1};
+};
+
+// --dump-storage BINDING:FILE: the storage buffer's bytes after the last frame.
+struct StorageDump {
+    uint32_t binding = 0;
+    std::string path;
 };
 
 struct Options {
@@ -34,6 +54,10 @@ struct Options {
     uint32_t width = 256, height = 256;
     std::string pngPath;
     bool wireframe = false;
+
+    std::vector<StorageOption> storage;  // in command-line order
+    std::vector<ComputeOption> computes; // dispatched in command-line order before the render pass
+    std::vector<StorageDump> dumps;
 
     std::string readbackPath;
     uint64_t readbackFloats = 0;

@@ -99,13 +99,16 @@ bool isLavapipe(const VkPhysicalDeviceProperties& p, const DriverText& d) {
            n.find("lavapipe") != std::string::npos;
 }
 
-int graphicsQueueFamily(VkPhysicalDevice pd, uint32_t* timestampBits) {
+// The first family with graphics (and compute, when asked: the pre-pass is recorded in the same
+// command buffer as the draw, so one queue must do both).
+int graphicsQueueFamily(VkPhysicalDevice pd, bool compute, uint32_t* timestampBits) {
     uint32_t n = 0;
     vkGetPhysicalDeviceQueueFamilyProperties(pd, &n, nullptr);
     std::vector<VkQueueFamilyProperties> q(n);
     vkGetPhysicalDeviceQueueFamilyProperties(pd, &n, q.data());
+    const VkQueueFlags needed = VK_QUEUE_GRAPHICS_BIT | (compute ? VK_QUEUE_COMPUTE_BIT : 0);
     for (uint32_t i = 0; i < n; ++i)
-        if (q[i].queueFlags & VK_QUEUE_GRAPHICS_BIT) {
+        if ((q[i].queueFlags & needed) == needed) {
             *timestampBits = q[i].timestampValidBits;
             return static_cast<int>(i);
         }
@@ -156,8 +159,10 @@ Gpu createGpu(const std::string& nameSubstring, const FeatureRequest& request) {
     gpu.driverInfo = d.info;
     gpu.isLavapipe = isLavapipe(gpu.properties, d);
 
-    int family = graphicsQueueFamily(gpu.physical, &gpu.timestampValidBits);
-    if (family < 0) fail(std::string(gpu.properties.deviceName) + " has no graphics queue");
+    int family = graphicsQueueFamily(gpu.physical, request.compute, &gpu.timestampValidBits);
+    if (family < 0)
+        fail(std::string(gpu.properties.deviceName) + " has no graphics queue" +
+             (request.compute ? " that also does compute (needed for --compute)" : ""));
     gpu.queueFamily = static_cast<uint32_t>(family);
 
     VkPhysicalDeviceFeatures supported{};

@@ -1,5 +1,6 @@
 // Device selection: instance without any window-system extension, one physical device picked
-// by name, one queue that does graphics (and so transfers), the features the run asks for.
+// by name, one queue that does graphics (and so transfers; and compute when --compute asks), the
+// features the run asks for.
 #pragma once
 #include <string>
 #include <vulkan/vulkan.h>
@@ -11,6 +12,7 @@ struct FeatureRequest {
     bool wireframe = false;       // fillModeNonSolid
     bool vertexStores = false;    // vertexPipelineStoresAndAtomics (readback from the domain/vertex stage)
     bool statistics = false;      // pipelineStatisticsQuery
+    bool compute = false;         // the queue must also do compute (--compute pre-pass in the frame)
 };
 
 struct Gpu {

@@ -37,11 +37,14 @@ std::array<float, 4> frameRange(const std::array<float, 4>& base, uint32_t frame
 }  // namespace
 
 FrameResults runFrames(const Gpu& gpu, const RenderTarget& target, const Pipeline& pipeline, Inputs& inputs,
-                       const DrawWork& work, const FrameSettings& s) {
+                       const DrawWork& work, const std::vector<ComputePass>& compute, const FrameSettings& s) {
     StatsQuery stats;
     TimestampQuery times;
     if (s.stats) stats = createStatsQuery(gpu);
-    if (s.timestamps) times = createTimestampQuery(gpu);
+    // With a pre-pass, a middle timestamp after its last dispatch: query 0 top, 1 compute end, 2 frame end.
+    const bool timeCompute = s.timestamps && !compute.empty();
+    if (s.timestamps) times = createTimestampQuery(gpu, timeCompute ? 3 : 2);
+    const uint32_t frameEndQuery = timeCompute ? 2 : 1;
 
     // Re-send baseline: host writes B bytes into a staging buffer, the GPU copies them into a
     // device-local buffer before the render pass (inside the timed region).
@@ -60,9 +63,12 @@ FrameResults runFrames(const Gpu& gpu, const RenderTarget& target, const Pipelin
     GT_VK(vkAllocateCommandBuffers(gpu.device, &alloc, &cmd));
     VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
     GT_VK(vkBeginCommandBuffer(cmd, &begin));
-    if (times.pool) vkCmdResetQueryPool(cmd, times.pool, 0, 2);
+    if (times.pool) vkCmdResetQueryPool(cmd, times.pool, 0, times.count);
     if (stats.pool) vkCmdResetQueryPool(cmd, stats.pool, 0, 1);
     if (times.pool) vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, times.pool, 0);
+    // The pre-pass first, so that its timestamp pair brackets the kernels alone (not the re-send copy).
+    recordComputePasses(cmd, gpu, compute, pipeline);
+    if (timeCompute) vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, times.pool, 1);
     if (s.resendBytes) {
         VkBufferCopy region{0, 0, s.resendBytes};
         vkCmdCopyBuffer(cmd, staging.buffer, geometry.buffer, 1, &region);
@@ -79,13 +85,14 @@ FrameResults runFrames(const Gpu& gpu, const RenderTarget& target, const Pipelin
     recordDraws(cmd, work);
     vkCmdEndRenderPass(cmd);
     if (stats.pool) vkCmdEndQuery(cmd, stats.pool, 0);
-    if (times.pool) vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, times.pool, 1);
+    if (times.pool) vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, times.pool, frameEndQuery);
     // Shader writes to the readback buffer become visible to the host after the fence.
     VkMemoryBarrier toHost{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
     toHost.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
     toHost.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
     VkPipelineStageFlags writers = VK_PIPELINE_STAGE_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT;
     if (gpu.enabled.tessellationShader) writers |= VK_PIPELINE_STAGE_TESSELLATION_EVALUATION_SHADER_BIT;
+    if (!compute.empty()) writers |= VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT;  // a kernel may write _Readback too
     vkCmdPipelineBarrier(cmd, writers, VK_PIPELINE_STAGE_HOST_BIT, 0, 1, &toHost, 0, nullptr, 0, nullptr);
     GT_VK(vkEndCommandBuffer(cmd));
 
@@ -111,7 +118,10 @@ FrameResults runFrames(const Gpu& gpu, const RenderTarget& target, const Pipelin
         const auto t1 = std::chrono::steady_clock::now();
         if (f < s.warmup) continue;
         results.cpuMs.push_back(std::chrono::duration<double, std::milli>(t1 - t0).count());
-        if (times.pool) results.gpuMs.push_back(readFrameMs(gpu, times));
+        if (!times.pool) continue;
+        const std::vector<double> ms = readMsSinceFirst(gpu, times);
+        results.gpuMs.push_back(ms.back());
+        if (timeCompute) results.computeMs.push_back(ms.front());
     }
     if (stats.pool) results.stats = readStats(gpu, stats);
     if (s.updateRange) writeRange(inputs, baseRange);

@@ -1,6 +1,6 @@
 // The frame loop: one command buffer recorded once and submitted once per frame (each frame its
-// own vkQueueSubmit + fence wait), with optional per-frame range update, geometry re-send,
-// timestamps and pipeline statistics.
+// own vkQueueSubmit + fence wait), with an optional compute pre-pass, per-frame range update,
+// geometry re-send, timestamps and pipeline statistics.
 #pragma once
 #include <array>
 #include <string>
@@ -9,6 +9,7 @@
 
 #include "buffers.hpp"
 #include "cli.hpp"
+#include "compute.hpp"
 #include "draw_split.hpp"
 #include "inputs.hpp"
 #include "pipeline.hpp"
@@ -34,12 +35,14 @@ struct FrameSettings {
 };
 
 struct FrameResults {
-    std::vector<double> gpuMs;  // measured frames only (with timestamps)
+    std::vector<double> gpuMs;      // measured frames only (with timestamps)
+    std::vector<double> computeMs;  // the compute pre-pass alone, measured frames (timestamps + --compute)
     std::vector<double> cpuMs;  // submit to fence, measured frames only
     std::vector<std::pair<std::string, uint64_t>> stats;  // of the last frame
 };
 
+// compute: the pre-pass dispatched before the render pass of every frame (may be empty).
 FrameResults runFrames(const Gpu& gpu, const RenderTarget& target, const Pipeline& pipeline, Inputs& inputs,
-                       const DrawWork& work, const FrameSettings& settings);
+                       const DrawWork& work, const std::vector<ComputePass>& compute, const FrameSettings& settings);
 
 }  // namespace gt

@@ -79,6 +79,12 @@ void destroyInputs(const Gpu& gpu, Inputs& inputs) {
     for (Buffer& b : inputs.bindings) destroyBuffer(gpu, b);
 }
 
+const char* rigBindingName(uint32_t binding) {
+    static const char* names[kBindingCountSnow] = {"TerrainParams", "RigCamera", "_ControlPoints", "_Regions",
+                                                   "_GridLines", "_Readback", "_SnowDepth"};
+    return binding < kBindingCountSnow ? names[binding] : nullptr;
+}
+
 void writeRange(Inputs& inputs, const std::array<float, 4>& range) {
     std::copy(range.begin(), range.end(), inputs.params.begin());
     std::memcpy(inputs.bindings[kBindingParams].mapped, range.data(), 16);

@@ -45,6 +45,11 @@ Inputs loadInputs(const Gpu& gpu, const std::string& dir, const std::optional<st
 
 void destroyInputs(const Gpu& gpu, Inputs& inputs);
 
+// The name of the rig's buffer at binding ("TerrainParams", ..., "_SnowDepth"), or nullptr when
+// the binding is free for --storage. Binding 6 counts as taken even without snow: the contract
+// reserves it for _SnowDepth, so a --storage there would silently change meaning in GT_SNOW runs.
+const char* rigBindingName(uint32_t binding);
+
 // Writes a new _Range (the first float4) into the host-visible params buffer.
 void writeRange(Inputs& inputs, const std::array<float, 4>& range);
 

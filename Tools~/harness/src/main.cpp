@@ -7,6 +7,7 @@
 
 #include "check.hpp"
 #include "cli.hpp"
+#include "compute.hpp"
 #include "device.hpp"
 #include "draw_split.hpp"
 #include "frames.hpp"
@@ -15,6 +16,7 @@
 #include "png.hpp"
 #include "readback.hpp"
 #include "spirv.hpp"
+#include "storage.hpp"
 #include "target.hpp"
 
 namespace gt {
@@ -100,6 +102,7 @@ int run(const Options& o) {
     request.wireframe = o.wireframe;
     request.vertexStores = !o.readbackPath.empty();
     request.statistics = o.stats;
+    request.compute = !o.computes.empty();
     Gpu gpu = createGpu(o.deviceSubstring, request);
     printDevice(gpu);
 
@@ -108,6 +111,7 @@ int run(const Options& o) {
     std::printf("inputs gregory_patches %u\n", inputs.gregoryPatches);
     if (inputs.snow) std::printf("inputs snow_resolution %u\n", inputs.snowResolution);
     std::printf("inputs range %.9g %.9g %.9g %.9g\n", inputs.params[0], inputs.params[1], inputs.params[2], inputs.params[3]);
+    std::vector<StorageBuffer> storage = createStorageBuffers(gpu, o.storage);
 
     PipelineDesc desc;
     desc.mode = o.mode;
@@ -122,7 +126,8 @@ int run(const Options& o) {
     desc.frag = loadShader(gpu, o.fragPath, 4, o.fragEntry, "frag");
 
     RenderTarget target = createRenderTarget(gpu, o.width, o.height);
-    Pipeline pipeline = createPipeline(gpu, desc, target, inputs);
+    Pipeline pipeline = createPipeline(gpu, desc, target, inputs, storage);
+    std::vector<ComputePass> compute = createComputePasses(gpu, o.computes, pipeline);
     DrawWork work = prepareWork(o, gpu);
 
     FrameSettings fs;
@@ -132,13 +137,16 @@ int run(const Options& o) {
     fs.stats = o.stats;
     fs.updateRange = o.updateRangePerFrame;
     fs.resendBytes = o.resendBytes;
-    FrameResults results = runFrames(gpu, target, pipeline, inputs, work, fs);
+    FrameResults results = runFrames(gpu, target, pipeline, inputs, work, compute, fs);
 
     for (const auto& s : results.stats) std::printf("stat %s %llu\n", s.first.c_str(), static_cast<unsigned long long>(s.second));
     if (o.frames > 1 || o.timestamps) {
         std::printf("time frames %u warmup %u\n", o.frames, o.warmup);
         for (size_t i = 0; i < results.gpuMs.size(); ++i) std::printf("time frame_ms %zu %.6f\n", i, results.gpuMs[i]);
         printTimes("frame_ms", results.gpuMs);
+        for (size_t i = 0; i < results.computeMs.size(); ++i)
+            std::printf("time compute_ms %zu %.6f\n", i, results.computeMs[i]);
+        printTimes("compute_ms", results.computeMs);
         printTimes("cpu_frame_ms", results.cpuMs);
         if (gpu.isLavapipe) std::printf("note lavapipe timings are functional figures, not performance\n");
     }
@@ -156,6 +164,12 @@ int run(const Options& o) {
                     static_cast<unsigned long long>(o.readbackFloats), static_cast<unsigned long long>(nan));
     }
 
+    for (const StorageDump& d : o.dumps) {
+        const uint64_t bytes = dumpStorage(gpu, storage, d);
+        std::printf("storage %u %s bytes %llu\n", d.binding, d.path.c_str(), static_cast<unsigned long long>(bytes));
+    }
+
+    destroyComputePasses(gpu, compute);
     destroyBuffer(gpu, work.indices);
     destroyBuffer(gpu, work.positions);
     destroyPipeline(gpu, pipeline);
@@ -164,6 +178,7 @@ int run(const Options& o) {
     destroyShader(gpu, desc.tesc);
     destroyShader(gpu, desc.tese);
     destroyShader(gpu, desc.frag);
+    destroyStorageBuffers(gpu, storage);
     destroyInputs(gpu, inputs);
     destroyGpu(gpu);
     return 0;

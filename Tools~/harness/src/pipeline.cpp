@@ -1,5 +1,6 @@
 #include "pipeline.hpp"
 
+#include <algorithm>
 #include <vector>
 
 #include "check.hpp"
@@ -8,25 +9,56 @@ namespace gt {
 
 namespace {
 
-VkDescriptorType bindingType(uint32_t binding) {
-    return binding <= kBindingCamera ? VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER : VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+struct DescriptorEntry {
+    uint32_t binding;
+    VkDescriptorType type;
+    VkBuffer buffer;
+};
+
+// The rig's bindings (uniform buffers 0 and 1, storage buffers above) then the --storage ones.
+std::vector<DescriptorEntry> descriptorEntries(const Inputs& inputs, const std::vector<StorageBuffer>& storage) {
+    std::vector<DescriptorEntry> entries;
+    for (uint32_t i = 0; i < inputs.bindingCount(); ++i) {
+        const VkDescriptorType type = i <= kBindingCamera ? VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER : VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+        entries.push_back({i, type, inputs.bindings[i].buffer});
+    }
+    for (const StorageBuffer& s : storage) entries.push_back({s.binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, s.buffer.buffer});
+    return entries;
 }
 
-void createDescriptors(const Gpu& gpu, Pipeline& p, const Inputs& inputs) {
-    const uint32_t count = inputs.bindingCount();   // 7 with the snow map
-    VkDescriptorSetLayoutBinding b[kBindingCountSnow]{};
-    for (uint32_t i = 0; i < count; ++i) {
-        b[i].binding = i;
-        b[i].descriptorType = bindingType(i);
+uint32_t countOf(const std::vector<DescriptorEntry>& entries, VkDescriptorType type) {
+    uint32_t n = 0;
+    for (const DescriptorEntry& e : entries) n += e.type == type ? 1 : 0;
+    return n;
+}
+
+void createDescriptors(const Gpu& gpu, Pipeline& p, const Inputs& inputs, const std::vector<StorageBuffer>& storage) {
+    const std::vector<DescriptorEntry> entries = descriptorEntries(inputs, storage);
+    const uint32_t uniforms = countOf(entries, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER);
+    const uint32_t storages = countOf(entries, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER);
+    // Every binding is visible to every stage, so each stage counts all of them against its limit.
+    const uint32_t limit = gpu.properties.limits.maxPerStageDescriptorStorageBuffers;
+    if (storages > limit)
+        fail("set 0 would hold " + std::to_string(storages) + " storage buffers (" + std::to_string(storage.size()) +
+             " from --storage), more than " + gpu.properties.deviceName + "'s maxPerStageDescriptorStorageBuffers " +
+             std::to_string(limit));
+
+    // Compute included: the --compute kernels share this layout and read the rig's bindings too.
+    std::vector<VkDescriptorSetLayoutBinding> b(entries.size());
+    for (size_t i = 0; i < entries.size(); ++i) {
+        b[i].binding = entries[i].binding;
+        b[i].descriptorType = entries[i].type;
         b[i].descriptorCount = 1;
-        b[i].stageFlags = VK_SHADER_STAGE_ALL_GRAPHICS;
+        b[i].stageFlags = VK_SHADER_STAGE_ALL_GRAPHICS | VK_SHADER_STAGE_COMPUTE_BIT;
     }
+    for (const DescriptorEntry& e : entries) p.bindings.push_back(e.binding);
+    std::sort(p.bindings.begin(), p.bindings.end());
     VkDescriptorSetLayoutCreateInfo li{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
-    li.bindingCount = count;
-    li.pBindings = b;
+    li.bindingCount = static_cast<uint32_t>(b.size());
+    li.pBindings = b.data();
     GT_VK(vkCreateDescriptorSetLayout(gpu.device, &li, nullptr, &p.setLayout));
 
-    VkDescriptorPoolSize sizes[2] = {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 2}, {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 5}};
+    VkDescriptorPoolSize sizes[2] = {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, uniforms}, {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, storages}};
     VkDescriptorPoolCreateInfo pi{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
     pi.maxSets = 1;
     pi.poolSizeCount = 2;
@@ -38,18 +70,18 @@ void createDescriptors(const Gpu& gpu, Pipeline& p, const Inputs& inputs) {
     ai.pSetLayouts = &p.setLayout;
     GT_VK(vkAllocateDescriptorSets(gpu.device, &ai, &p.set));
 
-    VkDescriptorBufferInfo infos[kBindingCountSnow]{};
-    VkWriteDescriptorSet writes[kBindingCountSnow]{};
-    for (uint32_t i = 0; i < count; ++i) {
-        infos[i] = {inputs.bindings[i].buffer, 0, VK_WHOLE_SIZE};
+    std::vector<VkDescriptorBufferInfo> infos(entries.size());
+    std::vector<VkWriteDescriptorSet> writes(entries.size());
+    for (size_t i = 0; i < entries.size(); ++i) {
+        infos[i] = {entries[i].buffer, 0, VK_WHOLE_SIZE};
         writes[i] = {VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
         writes[i].dstSet = p.set;
-        writes[i].dstBinding = i;
+        writes[i].dstBinding = entries[i].binding;
         writes[i].descriptorCount = 1;
-        writes[i].descriptorType = bindingType(i);
+        writes[i].descriptorType = entries[i].type;
         writes[i].pBufferInfo = &infos[i];
     }
-    vkUpdateDescriptorSets(gpu.device, count, writes, 0, nullptr);
+    vkUpdateDescriptorSets(gpu.device, static_cast<uint32_t>(writes.size()), writes.data(), 0, nullptr);
 }
 
 VkPipelineShaderStageCreateInfo stage(VkShaderStageFlagBits s, const ShaderModule& m) {
@@ -62,9 +94,30 @@ VkPipelineShaderStageCreateInfo stage(VkShaderStageFlagBits s, const ShaderModul
 
 }  // namespace
 
-Pipeline createPipeline(const Gpu& gpu, const PipelineDesc& d, const RenderTarget& target, const Inputs& inputs) {
+void checkShaderDescriptors(const ShaderModule& shader, const std::string& option, const Pipeline& pipeline) {
+    for (const DescriptorUse& d : shader.descriptors) {
+        const bool bound = d.set == 0 && std::binary_search(pipeline.bindings.begin(), pipeline.bindings.end(), d.binding);
+        if (bound) continue;
+        std::string have;
+        for (uint32_t b : pipeline.bindings) have += (have.empty() ? "" : " ") + std::to_string(b);
+        const std::string hint = d.set != 0 ? "the harness binds set 0 only"
+                                 : d.binding == kBindingSnowDepth ? "give --snow-depth and --snow-params"
+                                 : "give --storage " + std::to_string(d.binding) + ":BYTES";
+        fail(option + " '" + shader.path + "' uses set " + std::to_string(d.set) + " binding " + std::to_string(d.binding) +
+             ", which this run does not bind (set 0 has " + have + "): " + hint);
+    }
+}
+
+Pipeline createPipeline(const Gpu& gpu, const PipelineDesc& d, const RenderTarget& target, const Inputs& inputs,
+                        const std::vector<StorageBuffer>& storage) {
     Pipeline p;
-    createDescriptors(gpu, p, inputs);
+    createDescriptors(gpu, p, inputs, storage);
+    checkShaderDescriptors(d.vert, "--vert", p);
+    if (d.mode == Mode::Tessellated) {
+        checkShaderDescriptors(d.tesc, "--tesc", p);
+        checkShaderDescriptors(d.tese, "--tese", p);
+    }
+    checkShaderDescriptors(d.frag, "--frag", p);
     VkPipelineLayoutCreateInfo pl{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
     pl.setLayoutCount = 1;
     pl.pSetLayouts = &p.setLayout;

@@ -1,8 +1,13 @@
-// The graphics pipeline and its one descriptor set (set 0, bindings 0..5 as in internals.md).
+// The graphics pipeline and its one descriptor set: set 0 with the rig's bindings 0..5 (6 with
+// snow) of internals.md plus the --storage buffers at their bindings; the compute pre-pass
+// (compute.hpp) uses the same layout and set.
 #pragma once
+#include <vector>
+
 #include "cli.hpp"
 #include "inputs.hpp"
 #include "spirv.hpp"
+#include "storage.hpp"
 #include "target.hpp"
 
 namespace gt {
@@ -20,9 +25,15 @@ struct Pipeline {
     VkDescriptorSet set = VK_NULL_HANDLE;
     VkPipelineLayout layout = VK_NULL_HANDLE;
     VkPipeline pipeline = VK_NULL_HANDLE;
+    std::vector<uint32_t> bindings;  // of set 0, ascending
 };
 
-Pipeline createPipeline(const Gpu& gpu, const PipelineDesc& desc, const RenderTarget& target, const Inputs& inputs);
+Pipeline createPipeline(const Gpu& gpu, const PipelineDesc& desc, const RenderTarget& target, const Inputs& inputs,
+                        const std::vector<StorageBuffer>& storage);
 void destroyPipeline(const Gpu& gpu, Pipeline& pipeline);
+
+// Throws gt::Error when the shader uses a descriptor the layout lacks (another set, or a binding
+// of set 0 not bound in this run), naming the shader, the option that gave it and what to add.
+void checkShaderDescriptors(const ShaderModule& shader, const std::string& option, const Pipeline& pipeline);
 
 }  // namespace gt

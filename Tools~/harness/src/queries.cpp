@@ -42,23 +42,29 @@ std::vector<std::pair<std::string, uint64_t>> readStats(const Gpu& gpu, const St
     return out;
 }
 
-TimestampQuery createTimestampQuery(const Gpu& gpu) {
+TimestampQuery createTimestampQuery(const Gpu& gpu, uint32_t count) {
     if (gpu.timestampValidBits == 0) fail(std::string(gpu.properties.deviceName) + "'s graphics queue has no timestamps");
     TimestampQuery q;
+    q.count = count;
     q.nsPerTick = gpu.properties.limits.timestampPeriod;
     q.mask = gpu.timestampValidBits >= 64 ? ~0ull : ((1ull << gpu.timestampValidBits) - 1);
     VkQueryPoolCreateInfo info{VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};
     info.queryType = VK_QUERY_TYPE_TIMESTAMP;
-    info.queryCount = 2;
+    info.queryCount = count;
     GT_VK(vkCreateQueryPool(gpu.device, &info, nullptr, &q.pool));
     return q;
 }
 
-double readFrameMs(const Gpu& gpu, const TimestampQuery& q) {
-    uint64_t t[2]{};
-    GT_VK(vkGetQueryPoolResults(gpu.device, q.pool, 0, 2, sizeof t, t, 8, VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT));
-    const uint64_t ticks = ((t[1] & q.mask) - (t[0] & q.mask)) & q.mask;  // wrap-safe within the valid bits
-    return static_cast<double>(ticks) * q.nsPerTick * 1e-6;
+std::vector<double> readMsSinceFirst(const Gpu& gpu, const TimestampQuery& q) {
+    std::vector<uint64_t> t(q.count);
+    GT_VK(vkGetQueryPoolResults(gpu.device, q.pool, 0, q.count, t.size() * 8, t.data(), 8,
+                                VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT));
+    std::vector<double> ms;
+    for (uint32_t i = 1; i < q.count; ++i) {
+        const uint64_t ticks = ((t[i] & q.mask) - (t[0] & q.mask)) & q.mask;  // wrap-safe within the valid bits
+        ms.push_back(static_cast<double>(ticks) * q.nsPerTick * 1e-6);
+    }
+    return ms;
 }
 
 void destroyQuery(const Gpu& gpu, VkQueryPool& pool) {

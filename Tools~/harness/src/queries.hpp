@@ -19,15 +19,17 @@ StatsQuery createStatsQuery(const Gpu& gpu);
 std::vector<std::pair<std::string, uint64_t>> readStats(const Gpu& gpu, const StatsQuery& q);
 
 struct TimestampQuery {
-    VkQueryPool pool = VK_NULL_HANDLE;  // two queries: 0 before the frame's work, 1 after
+    VkQueryPool pool = VK_NULL_HANDLE;  // query 0 before the frame's work, the last after it,
+    uint32_t count = 2;                 // any between them at points inside the frame (compute end)
     double nsPerTick = 0.0;
     uint64_t mask = 0;
 };
 
-// Throws gt::Error when the queue family has no timestamps.
-TimestampQuery createTimestampQuery(const Gpu& gpu);
-// Milliseconds between the two timestamps of the last submitted frame (waits for them).
-double readFrameMs(const Gpu& gpu, const TimestampQuery& q);
+// count >= 2 timestamps per frame. Throws gt::Error when the queue family has no timestamps.
+TimestampQuery createTimestampQuery(const Gpu& gpu, uint32_t count = 2);
+// Milliseconds from timestamp 0 to each of timestamps 1..count-1 of the last submitted frame
+// (waits for them): the last value is the frame time.
+std::vector<double> readMsSinceFirst(const Gpu& gpu, const TimestampQuery& q);
 
 void destroyQuery(const Gpu& gpu, VkQueryPool& pool);
 

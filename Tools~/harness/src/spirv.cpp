@@ -1,6 +1,8 @@
 #include "spirv.hpp"
 
 #include <cstring>
+#include <map>
+#include <set>
 
 #include "buffers.hpp"
 #include "check.hpp"
@@ -10,7 +12,33 @@ namespace gt {
 namespace {
 constexpr uint32_t kMagic = 0x07230203;
 constexpr uint32_t kOpEntryPoint = 15;
+constexpr uint32_t kOpDecorate = 71;
+constexpr uint32_t kOpFunction = 54;
+constexpr uint32_t kDecorationBinding = 33;
+constexpr uint32_t kDecorationDescriptorSet = 34;
 }  // namespace
+
+std::vector<DescriptorUse> usedDescriptors(const std::vector<uint32_t>& words) {
+    std::map<uint32_t, uint32_t> bindings, sets;  // by variable id
+    std::set<uint32_t> used;
+    bool inFunctions = false;  // decorations come before the first OpFunction, code after
+    for (size_t i = 5; i < words.size();) {
+        const uint32_t count = words[i] >> 16, op = words[i] & 0xffff;
+        if (count == 0 || i + count > words.size()) break;
+        if (op == kOpFunction) inFunctions = true;
+        if (!inFunctions && op == kOpDecorate && count >= 4) {
+            if (words[i + 2] == kDecorationBinding) bindings[words[i + 1]] = words[i + 3];
+            if (words[i + 2] == kDecorationDescriptorSet) sets[words[i + 1]] = words[i + 3];
+        }
+        if (inFunctions)
+            for (uint32_t k = 1; k < count; ++k) used.insert(words[i + k]);
+        i += count;
+    }
+    std::vector<DescriptorUse> out;
+    for (const auto& [id, binding] : bindings)
+        if (used.count(id)) out.push_back({sets.count(id) ? sets[id] : 0, binding});
+    return out;
+}
 
 std::vector<std::string> entryPoints(const std::vector<uint32_t>& words, uint32_t executionModel) {
     std::vector<std::string> names;
@@ -37,20 +65,27 @@ ShaderModule loadShader(const Gpu& gpu, const std::string& path, uint32_t execut
     if (words[0] != kMagic) fail("'" + path + "' is not SPIR-V (bad magic number)");
 
     std::vector<std::string> names = entryPoints(words, executionModel);
-    static const char* stageNames[] = {"vertex", "tessellation control", "tessellation evaluation", "geometry", "fragment"};
+    static const char* stageNames[] = {"vertex", "tessellation control", "tessellation evaluation", "geometry", "fragment",
+                                       "compute"};
+    const std::string stage = executionModel < 6 ? stageNames[executionModel] : "matching";
     if (names.empty())
-        fail("'" + path + "' has no " + (executionModel < 5 ? stageNames[executionModel] : "matching") +
-             " entry point: is it the right stage's SPIR-V?");
+        fail("'" + path + "' has no " + stage + " entry point: is it the right stage's SPIR-V?");
     ShaderModule s;
     s.path = path;
     auto has = [&](const std::string& n) { for (auto& x : names) if (x == n) return true; return false; };
     if (!requested.empty()) {
         if (!has(requested)) fail("'" + path + "' has no entry point '" + requested + "' (it has '" + names[0] + "')");
         s.entry = requested;
+    } else if (names.size() > 1 && fallbackName.empty()) {
+        std::string list;
+        for (const std::string& n : names) list += (list.empty() ? "'" : ", '") + n + "'";
+        fail("'" + path + "' has " + std::to_string(names.size()) + " " + stage +
+             " entry points (" + list + "); it needs exactly one (compile one entry point per module, glslangValidator -e NAME)");
     } else {
         s.entry = names.size() == 1 ? names[0] : fallbackName;
         if (!has(s.entry)) fail("'" + path + "' has several entry points and none named '" + fallbackName + "'");
     }
+    s.descriptors = usedDescriptors(words);
     VkShaderModuleCreateInfo info{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
     info.codeSize = bytes.size();
     info.pCode = words.data();

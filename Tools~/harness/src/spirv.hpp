@@ -7,18 +7,34 @@
 
 namespace gt {
 
+// A descriptor the module's functions use: (set, binding) of a decorated resource variable.
+struct DescriptorUse {
+    uint32_t set = 0;
+    uint32_t binding = 0;
+};
+
 struct ShaderModule {
     VkShaderModule module = VK_NULL_HANDLE;
     std::string entry;  // the entry point used
     std::string path;
+    std::vector<DescriptorUse> descriptors;  // used by some function of the module
 };
 
 // The names of the module's OpEntryPoint instructions that have the given execution model
-// (0 vertex, 1 tessellation control, 2 tessellation evaluation, 4 fragment).
+// (0 vertex, 1 tessellation control, 2 tessellation evaluation, 4 fragment, 5 compute).
 std::vector<std::string> entryPoints(const std::vector<uint32_t>& words, uint32_t executionModel);
 
+constexpr uint32_t kExecutionModelGLCompute = 5;
+
+// The resource variables (Binding-decorated) that some function of the module refers to. A
+// binding that is only declared needs no descriptor; one that is used must be in the layout, or
+// the shader reads garbage (seen on lavapipe) instead of failing. An operand word inside a function
+// that equals a resource's id counts as a use: literals can only make the list longer, never shorter.
+std::vector<DescriptorUse> usedDescriptors(const std::vector<uint32_t>& words);
+
 // Loads path. Entry: `requested` when given (must exist in the module); otherwise the module's
-// only entry point of that stage, else `fallbackName`. Throws gt::Error naming the file.
+// only entry point of that stage, else `fallbackName` (empty: the module must have exactly one).
+// Throws gt::Error naming the file.
 ShaderModule loadShader(const Gpu& gpu, const std::string& path, uint32_t executionModel, const std::string& requested,
                         const std::string& fallbackName);
 

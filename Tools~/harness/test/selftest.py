@@ -8,7 +8,11 @@ Runs gt-harness with the test shaders of this folder and checks what it must pro
     4x4-tile draw at factor 8 (one draw) and 6x6 tiles at factor 63 (147,456 vertices: split);
   - pipeline statistics equal to the counts an integer-partitioned quad draw must give;
   - the fallback (instanced grid) and static-mesh modes draw;
-  - bad input fails with a non-zero exit code and a message.
+  - the compute pre-pass (--storage/--compute/--dump-storage): a kernel's pattern dumped byte for
+    byte, two chained kernels whose output the domain (or fallback vertex) stage reads, in order,
+    with split draws, and its own timestamps;
+  - bad input fails with a non-zero exit code and a message (exit code 1 and the option and value
+    named for the compute options).
 Prints one "PASS name" / "FAIL name: why" line per check; exit 1 if any failed.
 Only the standard library is used (the harness machine may have no numpy).
 """
@@ -50,8 +54,8 @@ def make_inputs(d, tiles, factor, rng=(0.0, 0.0, 1.0, 1.0)):
     return d
 
 
-def run(args):
-    p = subprocess.run([HARNESS] + EXTRA + args, capture_output=True, text=True)
+def run(args, env=None):
+    p = subprocess.run([HARNESS] + EXTRA + args, capture_output=True, text=True, env=env)
     lines = {}
     for line in p.stdout.splitlines():
         parts = line.split()
@@ -116,6 +120,163 @@ def check_readback(name, path, m, f, rng, per_draw):
     check(name + " primitive_id restarts per draw", not prim_bad, "; ".join(prim_bad[:3]))
 
 
+PATTERN_RECORDS = 4 * 2 * 3 * 64  # storage_pattern.hlsl dispatched over (4, 2, 3) groups of 64
+
+
+def expected_pattern(tiles):
+    """storage_pattern.hlsl's records: (i, i * 2654435761 mod 2^32, bits of _Tess.x, bits of
+    _ControlPoints[i % 1280].x), the control point x being its index + 0.25 (make_inputs)."""
+    bits = lambda f: struct.unpack("<I", struct.pack("<f", f))[0]
+    out = []
+    for i in range(PATTERN_RECORDS):
+        out += [i, (i * 2654435761) % 2 ** 32, bits(float(tiles)), bits(i % 1280 + 0.25)]
+    return struct.pack("<%dI" % len(out), *out)
+
+
+def kept_tiles(m):
+    """tile_scale.hlsl keeps every third tile."""
+    return sum(1 for t in range(m * m) if t % 3 == 0)
+
+
+def compute_tile_args(m, order=("tile_flags", "tile_scale")):
+    groups = str((m * m + 63) // 64)
+    a = ["--storage", "7:%d" % (16 * m * m), "--storage", "8:%d" % (16 * m * m)]
+    for k in order:
+        a += ["--compute", "%s/%s.comp.spv:%s" % (SPV, k, groups)]
+    return a
+
+
+def check_tile_dumps(name, path7, path8, m):
+    """Binding 7: (kept, tile, M, 0) from tile_flags; binding 8: (kept, tile + 0.5, 0, 0) from
+    tile_scale, which read binding 7 after the compute->compute barrier."""
+    f7 = struct.unpack("<%df" % (4 * m * m), open(path7, "rb").read())
+    f8 = struct.unpack("<%df" % (4 * m * m), open(path8, "rb").read())
+    bad = []
+    for t in range(m * m):
+        kept = 1.0 if t % 3 == 0 else 0.0
+        if f7[4 * t:4 * t + 4] != (kept, t, m, 0.0):
+            bad.append("binding 7 tile %d = %r" % (t, f7[4 * t:4 * t + 4]))
+        if f8[4 * t:4 * t + 4] != (kept, t + 0.5, 0.0, 0.0):
+            bad.append("binding 8 tile %d = %r" % (t, f8[4 * t:4 * t + 4]))
+    check(name, not bad, "; ".join(bad[:4]))
+
+
+def compute_checks(lavapipe):
+    """9. The compute pre-pass."""
+    d = make_inputs(WORK + "/in_4x4_f8", 4, 8)
+    mesh = WORK + "/mesh"
+    pattern_bytes = 16 * PATTERN_RECORDS
+    # a. A kernel's pattern at binding 8, dumped; 256 bytes more than it writes stay zero (zero
+    #    fill), binding 7 given but unwritten is all zeros. Static-mesh mode, timed, 3 frames.
+    d7, d8 = WORK + "/pattern_7.bin", WORK + "/pattern_8.bin"
+    p, l = run(["--static-mesh", "--mesh", mesh + "/positions.f32", mesh + "/indices.u32", "--vert", SPV + "/mesh.vert.spv",
+                "--frag", SPV + "/mesh.frag.spv", "--buffers", d, "--width", "128", "--height", "128",
+                "--storage", "7:64", "--storage", "8:%d" % (pattern_bytes + 256),
+                "--compute", SPV + "/pattern.comp.spv:4,2,3", "--dump-storage", "8:" + d8, "--dump-storage", "7:" + d7,
+                "--frames", "3", "--timestamps"])
+    check("compute pattern (static mesh) runs", p.returncode == 0, p.stderr.strip())
+    if p.returncode == 0:
+        check("compute pattern storage line", value(l, "storage", "8") == [d8, "bytes", str(pattern_bytes + 256)],
+              str(l.get("storage")))
+        got = open(d8, "rb").read()
+        want = expected_pattern(4) + bytes(256)
+        first = next((i for i in range(min(len(got), len(want))) if got[i] != want[i]), None)
+        check("compute pattern dump equals the pattern", got == want,
+              "%d bytes, expected %d; first difference at byte %s" % (len(got), len(want), first))
+        check("compute unwritten storage dumps zeros", open(d7, "rb").read() == bytes(64), "binding 7 not zero")
+        check("compute static mesh still covers a quarter", int(value(l, "image", "nonsky_pixels")[0]) == 64 * 64,
+              str(l.get("image")))
+        frame = [float(v[1]) for v in l.get("time", []) if v[0] == "frame_ms"]
+        comp = [float(v[1]) for v in l.get("time", []) if v[0] == "compute_ms"]
+        check("compute_ms per frame", len(comp) == 3 and len(frame) == 3, str(l.get("time")))
+        check("compute_ms within the frame time", all(0 <= c <= f for c, f in zip(comp, frame)),
+              "compute %r frame %r" % (comp, frame))
+        check("compute_ms median/min/mean", all(value(l, "time", "compute_ms_" + k) for k in ("median", "min", "mean")),
+              str(l.get("time")))
+
+    # b. Two chained kernels feed the domain stage: only the kept tiles cover pixels (one draw at
+    #    4x4 tiles, factor 8; split into 2 draws at 8x8 tiles, factor 32 = 69,696 vertices).
+    for m, f, draws in ((4, 8, "1"), (8, 32, "2")):
+        name = "compute tiles %dx%d f%d" % (m, m, f)
+        dm = make_inputs(WORK + "/in_%dx%d_f%d" % (m, m, f), m, f)
+        d7, d8 = WORK + "/tiles_%d_7.bin" % m, WORK + "/tiles_%d_8.bin" % m
+        a = tess_args(dm, m, extra=["--max-factor", str(f), "--max-vertices-per-draw", "65536",
+                                    "--png", WORK + "/compute_tiles_%d.png" % m])
+        a[a.index(SPV + "/tiles.tese.spv")] = SPV + "/tiles_storage.tese.spv"
+        p, l = run(a + compute_tile_args(m) + ["--dump-storage", "7:" + d7, "--dump-storage", "8:" + d8])
+        check(name + " runs", p.returncode == 0, p.stderr.strip())
+        if p.returncode == 0:
+            check(name + " draws", l["draws"][0][0] == draws, str(l.get("draws")))
+            nonsky = int(value(l, "image", "nonsky_pixels")[0])
+            want = kept_tiles(m) * (128 // m) ** 2
+            check(name + " domain stage sees the kernels' scales", nonsky == want, "nonsky %d, expected %d" % (nonsky, want))
+            check_tile_dumps(name + " dumps", d7, d8, m)
+
+    # c. The same kernels in the wrong order: tile_scale reads binding 7 before tile_flags wrote it,
+    #    so every scale is 0 and nothing is drawn (the order given is the order run).
+    a = tess_args(d, 4, extra=["--max-factor", "8"])
+    a[a.index(SPV + "/tiles.tese.spv")] = SPV + "/tiles_storage.tese.spv"
+    p, l = run(a + compute_tile_args(4, ("tile_scale", "tile_flags")))
+    check("compute reversed order runs", p.returncode == 0, p.stderr.strip())
+    if p.returncode == 0:
+        check("compute reversed order draws nothing", int(value(l, "image", "nonsky_pixels")[0]) == 0, str(l.get("image")))
+
+    # d. Fallback mode: the vertex stage reads the kernels' output.
+    p, l = run(["--vert", SPV + "/fallback_storage.vert.spv", "--frag", SPV + "/tiles.frag.spv", "--buffers", d,
+                "--grid-factor", "8", "--instances", "16", "--width", "128", "--height", "128"] + compute_tile_args(4))
+    check("compute fallback runs", p.returncode == 0, p.stderr.strip())
+    if p.returncode == 0:
+        nonsky = int(value(l, "image", "nonsky_pixels")[0])
+        check("compute fallback vertex stage sees the kernels' scales", nonsky == kept_tiles(4) * 32 * 32, "nonsky %d" % nonsky)
+
+    # e. The barriers: lavapipe runs a command buffer in order, so a missing one changes no result
+    #    there; the Khronos layer's synchronization validation sees it at the API (checked: without
+    #    the kernel->kernel or kernel->draw barrier it reports SYNC-HAZARD-READ-AFTER-WRITE).
+    layer = "/usr/share/vulkan/explicit_layer.d/VkLayer_khronos_validation.json"
+    if os.path.exists(layer):
+        env = dict(os.environ, VK_INSTANCE_LAYERS="VK_LAYER_KHRONOS_validation",
+                   VK_LAYER_ENABLES="VK_VALIDATION_FEATURE_ENABLE_SYNCHRONIZATION_VALIDATION_EXT")
+        a = tess_args(d, 4, extra=["--max-factor", "8", "--frames", "2", "--timestamps", "--resend-bytes", "4096",
+                                   "--dump-storage", "8:" + WORK + "/sync_8.bin"])
+        a[a.index(SPV + "/tiles.tese.spv")] = SPV + "/tiles_storage.tese.spv"
+        p, l = run(a + compute_tile_args(4), env)
+        messages = [x for x in (p.stdout + p.stderr).splitlines() if "Validation" in x or "VUID" in x]
+        check("compute pre-pass under synchronization validation", p.returncode == 0 and not messages,
+              "exit %d; %s" % (p.returncode, " / ".join(m[:300] for m in messages[:3]) or p.stderr.strip()))
+    else:
+        print("INFO barriers not checked: no Khronos validation layer (apt package vulkan-validationlayers)")
+
+    # f. Bad compute options: exit code 1, the option and the offending value named.
+    pattern = SPV + "/pattern.comp.spv"
+    cases = [
+        (["--storage", "7"], ["--storage", "'7'"]),
+        (["--storage", "7:abc"], ["--storage", "7:abc"]),
+        (["--storage", "3:64"], ["--storage", "3:64", "_Regions"]),
+        (["--storage", "7:6"], ["--storage", "7:6", "multiple of 4"]),
+        (["--storage", "8:64", "--storage", "8:128"], ["--storage", "8:128"]),
+        (["--compute", "pattern.spv"], ["--compute", "pattern.spv"]),
+        (["--compute", pattern + ":0"], ["--compute", pattern + ":0"]),
+        (["--compute", pattern + ":1,1,1,1"], ["--compute", pattern + ":1,1,1,1"]),
+        # GY: 65,535 is the limit on lavapipe and NVIDIA alike (GX goes to 2^31 - 1 on NVIDIA).
+        (["--storage", "8:64", "--compute", pattern + ":1,70000"], ["--compute", pattern + ":1,70000", "maxComputeWorkGroupCount[1]"]),
+        (["--storage", "8:64", "--compute", SPV + "/tiles.vert.spv:1"], ["--compute", "tiles.vert.spv:1", "no compute entry point"]),
+        (["--compute", pattern + ":4,2,3"], ["--compute", "pattern.comp.spv", "binding 8", "--storage 8:BYTES"]),
+        (["--dump-storage", "8:" + WORK + "/x.bin"], ["--dump-storage", "8:" + WORK + "/x.bin"]),
+    ]
+    if lavapipe:  # 128 MiB there; NVIDIA's limit is 2^32 - 1, which no BYTES that parses exceeds
+        cases.append((["--storage", "8:4294967292"], ["--storage", "8:4294967292", "maxStorageBufferRange"]))
+    for extra, words in cases:
+        p, l = run(tess_args(d, 4, extra=["--max-factor", "8"] + extra))
+        missing = [w for w in words if w not in p.stderr]
+        check("bad compute option %s" % " ".join(extra).replace(SPV + "/", ""), p.returncode == 1 and not missing,
+              "exit %d, stderr lacks %r: %s" % (p.returncode, missing, p.stderr.strip()))
+    # A graphics stage that reads a storage binding the run does not bind.
+    a = tess_args(d, 4, extra=["--max-factor", "8"])
+    a[a.index(SPV + "/tiles.tese.spv")] = SPV + "/tiles_storage.tese.spv"
+    p, l = run(a)
+    check("unbound storage binding fails", p.returncode == 1 and "--tese" in p.stderr and "binding 8" in p.stderr, p.stderr)
+
+
 def main():
     os.makedirs(WORK, exist_ok=True)
     p, l = run(["--list-devices"])
@@ -127,6 +288,7 @@ def main():
     n = 16 * 81
     p, l = run(tess_args(d, 4, rb, 12 * n, stats=True, extra=["--max-factor", "8", "--png", WORK + "/tiles_4x4_f8.png"]))
     check("tess_4x4_f8 runs", p.returncode == 0, p.stderr.strip())
+    lavapipe = value(l, "device", "lavapipe") == ["1"]  # for the checks of lavapipe's own limits
     if p.returncode == 0:
         check("tess_4x4_f8 one draw", l["draws"][0][0] == "1", str(l.get("draws")))
         nonsky = int(value(l, "image", "nonsky_pixels")[0])
@@ -230,6 +392,8 @@ def main():
     check("unknown device fails", p.returncode != 0 and "no-such-gpu-anywhere" in p.stderr, p.stderr)
     p, l = run(tess_args(d, 4, extra=["--max-vertices-per-draw", "100", "--max-factor", "63"]))
     check("unsplittable patch fails", p.returncode != 0 and "per-draw limit" in p.stderr, p.stderr)
+
+    compute_checks(lavapipe)
 
     print("selftest %s (%d failed)" % ("PASSED" if failures == 0 else "FAILED", failures))
     sys.exit(1 if failures else 0)

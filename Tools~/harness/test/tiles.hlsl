@@ -8,7 +8,19 @@
 //   [1] (s, t, tile, SV_PrimitiveID)    tile from SV_VertexID / 4; the hull stage's PrimitiveID,
 //                                       only reported: it restarts at 0 in every draw
 //   [2] (_ControlPoints[tile].x, _Regions[tile].y, _GridLines[tile], M)   binding checks
+//
+// GT_STORAGE_TEST: each tile is scaled about its corner by _TileScale[tile].x, a storage buffer at
+// binding 8 that the --compute pre-pass (tile_scale.hlsl) writes: a tile whose scale is 0
+// collapses to a point and covers no pixel.
 #include "common.hlsl"
+
+#ifdef GT_STORAGE_TEST
+StructuredBuffer<float4> _TileScale : register(t6);
+
+float TileScale(uint tile) { return _TileScale[tile].x; }
+#else
+float TileScale(uint tile) { return 1.0; }
+#endif
 
 struct TileVertex
 {
@@ -71,7 +83,7 @@ Fragment domain_shader(TileFactors factors, float2 st : SV_DomainLocation, const
     float tiles = _Tess.x;
     uint m = (uint)tiles;
     float2 tileIJ = float2(tile % m, tile / m);
-    float2 o = (tileIJ + st) / tiles;                          // range coordinate
+    float2 o = (tileIJ + st * TileScale(tile)) / tiles;        // range coordinate
     float2 q = _Range.xy + o * (_Range.zw - _Range.xy);        // global point
     float height = _ControlPoints[0].z;
     float3 object = float3(q.x, height, q.y);
@@ -99,7 +111,7 @@ Fragment vert_fallback(uint id : SV_VertexID, uint instance : SV_InstanceID)
     uint tile = instance;
     float tiles = _Tess.x;
     uint m = (uint)tiles;
-    float2 o = (float2(tile % m, tile / m) + st) / tiles;
+    float2 o = (float2(tile % m, tile / m) + st * TileScale(tile)) / tiles;
     float2 q = _Range.xy + o * (_Range.zw - _Range.xy);
     float3 object = float3(q.x, _ControlPoints[0].z, q.y);
 #ifdef GT_READBACK

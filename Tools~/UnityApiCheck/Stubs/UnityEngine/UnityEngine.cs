@@ -71,6 +71,15 @@ namespace UnityEngine
         public float fieldOfView { get; set; }                                        // SR:Camera-fieldOfView
         public float nearClipPlane { get; set; }                                      // SR:Camera-nearClipPlane
         public float farClipPlane { get; set; }                                       // SR:Camera-farClipPlane
+        public Matrix4x4 projectionMatrix { get; set; }                               // SR:Camera-projectionMatrix
+        public Matrix4x4 worldToCameraMatrix { get; set; }                            // SR:Camera-worldToCameraMatrix
+        public int pixelWidth => 0;                                                   // SR:Camera-pixelWidth (read only)
+        public int pixelHeight => 0;                                                  // SR:Camera-pixelHeight (read only)
+    }
+
+    public sealed class GL                                                            // SR:GL
+    {
+        public static Matrix4x4 GetGPUProjectionMatrix(Matrix4x4 proj, bool renderIntoTexture) => proj; // SR:GL.GetGPUProjectionMatrix
     }
 
     public static class Debug                                                         // SR:Debug
@@ -159,6 +168,7 @@ namespace UnityEngine
         public float m00, m01, m02, m03, m10, m11, m12, m13, m20, m21, m22, m23, m30, m31, m32, m33;
         public Vector3 MultiplyPoint3x4(Vector3 point) => point;                      // SR:Matrix4x4.MultiplyPoint3x4
         public static Matrix4x4 identity => default;                                  // SR:Matrix4x4-identity
+        public static Matrix4x4 operator *(Matrix4x4 lhs, Matrix4x4 rhs) => lhs;      // SR:Matrix4x4-operator_multiply
     }
 
     public struct Color                                                               // SR:Color
@@ -227,6 +237,7 @@ namespace UnityEngine
         public void SetBuffer(int kernelIndex, int nameID, ComputeBuffer buffer) { }  // SR:ComputeShader.SetBuffer
         public void SetBuffer(int kernelIndex, int nameID, GraphicsBuffer buffer) { } // SR:ComputeShader.SetBuffer
         public void SetVector(int nameID, Vector4 val) { }                            // SR:ComputeShader.SetVector
+        public void SetMatrix(int nameID, Matrix4x4 val) { }                          // SR:ComputeShader.SetMatrix
         public void EnableKeyword(string keyword) { }                                 // SR:ComputeShader.EnableKeyword (2020.2+)
         public void DisableKeyword(string keyword) { }                                // SR:ComputeShader.DisableKeyword (2020.2+)
         public void Dispatch(int kernelIndex, int threadGroupsX, int threadGroupsY, int threadGroupsZ) { } // SR:ComputeShader.Dispatch
@@ -283,6 +294,7 @@ namespace UnityEngine
     {
         public static bool supportsTessellationShaders => false;                      // SR:SystemInfo-supportsTessellationShaders
         public static bool supportsComputeShaders => false;                           // SR:SystemInfo-supportsComputeShaders
+        public static long maxGraphicsBufferSize => 0;                                // SR:SystemInfo-maxGraphicsBufferSize
         public static bool supportsInstancing => false;                               // SR:SystemInfo-supportsInstancing
     }
 

@@ -1,0 +1,146 @@
+using System;
+using System.Collections.Generic;
+
+namespace GregoryTerrain
+{
+    /// <summary>A tile's six tessellation factors. HLSL <c>TileFactorSet</c> (TileFactors.hlsl).</summary>
+    public struct TileFactorSet : IEquatable<TileFactorSet>
+    {
+        /// <summary>Quad domain: x is the edge u = 0, y v = 0, z u = 1, w v = 1.</summary>
+        public Float4 edge;
+        /// <summary>x subdivides along u, y along v.</summary>
+        public Float2 inside;
+
+        public TileFactorSet(Float4 edge, Float2 inside) { this.edge = edge; this.inside = inside; }
+
+        /// <summary>All zero: the tile is culled (a zero edge factor drops the patch).</summary>
+        public bool IsCulled => edge.x == 0f;
+
+        public bool Equals(TileFactorSet o) => edge.Equals(o.edge) && inside.Equals(o.inside);
+        public override bool Equals(object obj) => obj is TileFactorSet o && Equals(o);
+        public override int GetHashCode() => HashCode.Combine(edge, inside);
+        public override string ToString() => FormattableString.Invariant($"edges {edge}, inside {inside}");
+    }
+
+    /// <summary>
+    /// The vertex cache's layout (GT_VERTEX_CACHE; internals.md, "Vertex cache"), name for name as
+    /// <c>Shaders/VertexCache.hlsl</c>: a compute pass evaluates every vertex the tessellator will make
+    /// at a tile's integer factors into a fixed slot, and the domain stage reads it back by index.
+    /// With "integer" partitioning a factor-F edge's vertices sit at exactly k / F and the inside grid
+    /// at (i / Iu, j / Iv), which is what makes the slots known in advance.
+    /// </summary>
+    public static class VertexCache
+    {
+        /// <summary>The hardware's largest tessellation factor.</summary>
+        public const float MaxFactor = TessellationSettings.HardwareMaxFactor;
+
+        /// <summary>float4 per record: (positionOS, absoluteHeight), (normalOS, colorNoise), and with snow (snowDepth, 0, 0, 0).</summary>
+        public static int Float4sPerRecord(bool snow) => snow ? 3 : 2;
+
+        /// <summary>L: the largest integer factor the settings can produce (the uniform factor when set, else the maximum factor), in [1, 64].</summary>
+        public static int FactorLimit(TessellationSettings t) => FactorLimit(t.ToFloat4());
+
+        /// <summary><see cref="FactorLimit(TessellationSettings)"/> from <c>_Tess</c> as packed.</summary>
+        public static int FactorLimit(Float4 tess)
+        {
+            float f = tess.w > 0f ? tess.w : tess.y;
+            return (int)GMath.clamp(MathF.Ceiling(f), 1f, MaxFactor);
+        }
+
+        /// <summary>(L + 1)^2 slots of the inside grid, then 4 edges of L + 1.</summary>
+        public static int SlotsPerTile(int limit)
+        {
+            if (limit < 1 || limit > (int)MaxFactor)
+                throw new ArgumentOutOfRangeException(nameof(limit), limit, "the factor limit must lie in [1, 64]");
+            return (limit + 1) * (limit + 1) + 4 * (limit + 1);
+        }
+
+        /// <summary>Inside grid point (i, j) of a tile whose inside factor along u is <paramref name="insideU"/>.</summary>
+        public static int InteriorSlot(int i, int j, int insideU) => i + j * (insideU + 1);
+
+        /// <summary>Point k (from the edge's lower tess coordinate) of edge e (0: u = 0, 1: v = 0, 2: u = 1, 3: v = 1).</summary>
+        public static int EdgeSlot(int edge, int k, int limit) => (limit + 1) * (limit + 1) + edge * (limit + 1) + k;
+
+        /// <summary>Tess coordinate of point k of edge e at factor f.</summary>
+        public static Float2 EdgeTess(int edge, int k, float f)
+        {
+            float s = k / f;
+            return edge switch
+            {
+                0 => new Float2(0f, s),
+                1 => new Float2(s, 0f),
+                2 => new Float2(1f, s),
+                _ => new Float2(s, 1f),
+            };
+        }
+
+        /// <summary>HLSL <c>VertexCacheSlot</c>: the slot (within its tile) of the vertex at <paramref name="tess"/>.</summary>
+        public static int Slot(Float2 tess, TileFactorSet f, int limit)
+        {
+            if (tess.x == 0f) return EdgeSlot(0, (int)MathF.Round(tess.y * f.edge.x, MidpointRounding.AwayFromZero), limit);
+            if (tess.y == 0f) return EdgeSlot(1, (int)MathF.Round(tess.x * f.edge.y, MidpointRounding.AwayFromZero), limit);
+            if (tess.x == 1f) return EdgeSlot(2, (int)MathF.Round(tess.y * f.edge.z, MidpointRounding.AwayFromZero), limit);
+            if (tess.y == 1f) return EdgeSlot(3, (int)MathF.Round(tess.x * f.edge.w, MidpointRounding.AwayFromZero), limit);
+            return InteriorSlot((int)MathF.Round(tess.x * f.inside.x, MidpointRounding.AwayFromZero),
+                                (int)MathF.Round(tess.y * f.inside.y, MidpointRounding.AwayFromZero), (int)f.inside.x);
+        }
+
+        /// <summary>
+        /// HLSL <c>VertexCacheIntegerFactors</c>: each factor rounded up to an integer in [1, 64] (the
+        /// segments of "integer" partitioning; rounding up keeps the fractional factor's error bound);
+        /// an inside factor of 1 raised to 2 unless all six are 1 (the tessellator treats it as 2 then:
+        /// Vulkan spec, quad tessellation; D3D11 likewise). Culled stays all zero.
+        /// </summary>
+        public static TileFactorSet IntegerFactors(TileFactorSet f)
+        {
+            if (f.IsCulled) return f;
+            float R(float x) => MathF.Ceiling(GMath.clamp(x, 1f, MaxFactor));
+            var e = new Float4(R(f.edge.x), R(f.edge.y), R(f.edge.z), R(f.edge.w));
+            var i = new Float2(R(f.inside.x), R(f.inside.y));
+            bool allOnes = e.x == 1f && e.y == 1f && e.z == 1f && e.w == 1f && i.x == 1f && i.y == 1f;
+            if (!allOnes) i = new Float2(MathF.Max(i.x, 2f), MathF.Max(i.y, 2f));
+            return new TileFactorSet(e, i);
+        }
+
+        /// <summary>
+        /// The points the kernel CacheTileVertices writes for one tile, in its order ("inside points,
+        /// then edge 0, 1, 2, 3"; HLSL <c>VertexCachePoint</c>): tess coordinate and slot. Inside points
+        /// are the (Iu - 1) x (Iv - 1) interior of the grid; the grid's border is the edges'.
+        /// </summary>
+        public static IEnumerable<(Float2 tess, int slot)> TilePoints(TileFactorSet f, int limit)
+        {
+            if (f.IsCulled) yield break;
+            int nu = (int)f.inside.x - 1, nv = (int)f.inside.y - 1;
+            for (int k = 0; k < nu * nv; k++)
+            {
+                int i = 1 + k % nu, j = 1 + k / nu;
+                yield return (new Float2(i / f.inside.x, j / f.inside.y), InteriorSlot(i, j, (int)f.inside.x));
+            }
+            float[] edges = { f.edge.x, f.edge.y, f.edge.z, f.edge.w };
+            for (int e = 0; e < 4; e++)
+            {
+                float fe = edges[e];
+                for (int k = 0; k <= (int)fe; k++)
+                    yield return (EdgeTess(e, k, fe), EdgeSlot(e, k, limit));
+            }
+        }
+
+        /// <summary>Bytes of <c>_TileFactors</c>: 2 float4 per tile.</summary>
+        public static long TileFactorBytes(int tiles) => 2L * 16L * tiles * tiles;
+
+        /// <summary>Bytes of <c>_VertexCache</c>: M^2 tiles of <see cref="SlotsPerTile"/> records.</summary>
+        public static long VertexBytes(int tiles, int limit, bool snow) =>
+            (long)tiles * tiles * SlotsPerTile(limit) * Float4sPerRecord(snow) * 16L;
+
+        /// <summary>The record of a vertex (HLSL <c>VertexCacheRecordPart</c>), object space.</summary>
+        public static Float4[] Record(TerrainVertexOutput v, bool snow)
+        {
+            Float3 p = v.PositionOS, n = v.NormalOS;
+            var r = new Float4[Float4sPerRecord(snow)];
+            r[0] = new Float4(p.x, p.y, p.z, v.absoluteHeight);
+            r[1] = new Float4(n.x, n.y, n.z, v.colorNoise);
+            if (snow) r[2] = new Float4(v.snowDepth, 0f, 0f, 0f);
+            return r;
+        }
+    }
+}

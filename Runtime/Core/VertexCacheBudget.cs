@@ -1,0 +1,124 @@
+using System;
+
+namespace GregoryTerrain
+{
+    /// <summary>
+    /// Sizes of the vertex cache's two buffers (GT_VERTEX_CACHE; the cache spec's "Layout"), for the
+    /// Unity renderer and its inspector. Pure arithmetic from <c>_Tess</c>, M and the snow flag; the
+    /// slot layout itself (which slot a tess point lands in) is the shaders' and Core's
+    /// <c>VertexCache</c>'s business, this class only counts.
+    /// <list type="bullet">
+    /// <item>Factor limit <c>L</c>: <c>ceil(_Tess.w)</c> when <c>_Tess.w &gt; 0</c> (uniform), else
+    /// <c>ceil(_Tess.y)</c> (max factor), clamped to [1, 64]: the largest integer factor the
+    /// <c>CacheTileFactors</c> kernel can give a tile.</item>
+    /// <item>Slots per tile <c>S(L) = (L+1)^2 + 4 (L+1)</c>: the inside grid of the largest inside
+    /// factors, then each of the four edges' <c>L+1</c> points.</item>
+    /// <item>Float4s per slot <c>R</c>: 2, or 3 with GT_SNOW.</item>
+    /// <item><c>_TileFactors</c>: <c>2 M^2</c> float4 (32 M^2 bytes); <c>_VertexCache</c>:
+    /// <c>M^2 S(L) R</c> float4 (16 bytes each).</item>
+    /// </list>
+    /// </summary>
+    public static class VertexCacheBudget
+    {
+        /// <summary>The largest factor limit (the hardware's largest tessellation factor).</summary>
+        public const int MaxFactorLimit = 64;
+        /// <summary>float4 per tile in <c>_TileFactors</c>: (edges 0-3), (inside 0-1, culled, 0).</summary>
+        public const int TileFactorFloat4s = 2;
+
+        /// <summary>
+        /// L from the <c>_Tess</c> float4 the GPU gets (<see cref="TessellationSettings.ToFloat4"/>:
+        /// (tiles, maxFactor, targetPixels, uniformFactor)). Throws ArgumentException naming the
+        /// component when the value it reads is not finite (or w is negative).
+        /// </summary>
+        public static int FactorLimit(Float4 tess)
+        {
+            if (!GMath.isfinite(tess.w) || tess.w < 0f)
+                throw new ArgumentException(FormattableString.Invariant($"_Tess.w (uniformFactor, {tess.w:R}) must be finite and >= 0"), nameof(tess));
+            float f = tess.w > 0f ? tess.w : tess.y;
+            if (!GMath.isfinite(f))
+                throw new ArgumentException(FormattableString.Invariant($"_Tess.y (maxFactor, {tess.y:R}) must be finite"), nameof(tess));
+            // The kernel rounds every factor up (63.2 -> 64 segments) and never below 1; ceil and the
+            // integer clamp commute, so the largest factor it can give is this.
+            double c = Math.Ceiling((double)f);
+            return (int)Math.Max(1.0, Math.Min(MaxFactorLimit, c));
+        }
+
+        /// <summary>L of validated settings (the same number the shaders derive from <c>_Tess</c>).</summary>
+        public static int FactorLimit(TessellationSettings tessellation)
+        {
+            tessellation.Validate();
+            return FactorLimit(tessellation.ToFloat4());
+        }
+
+        /// <summary>S(L) = (L+1)^2 + 4 (L+1). Throws ArgumentException unless L lies in [1, 64].</summary>
+        public static int SlotsPerTile(int factorLimit)
+        {
+            CheckFactorLimit(factorLimit);
+            int n = factorLimit + 1;
+            return n * n + 4 * n;
+        }
+
+        /// <summary>R: (position, height), (normal, colour noise), and with snow (snow depth, 0, 0, 0).</summary>
+        public static int Float4sPerRecord(bool snow) => snow ? 3 : 2;
+
+        /// <summary>float4 elements of <c>_TileFactors</c>: 2 M^2.</summary>
+        public static long TileFactorsFloat4s(int tiles)
+        {
+            CheckTiles(tiles);
+            return TileFactorFloat4s * (long)tiles * tiles;
+        }
+
+        /// <summary>Bytes of <c>_TileFactors</c>: 32 M^2.</summary>
+        public static long TileFactorsBytes(int tiles) => TileFactorsFloat4s(tiles) * GpuLayout.Float4Stride;
+
+        /// <summary>float4 elements of <c>_VertexCache</c>: M^2 S(L) R.</summary>
+        public static long VertexCacheFloat4s(int tiles, int factorLimit, bool snow)
+        {
+            CheckTiles(tiles);
+            return (long)tiles * tiles * SlotsPerTile(factorLimit) * Float4sPerRecord(snow);
+        }
+
+        /// <summary>Bytes of <c>_VertexCache</c>: 16 M^2 S(L) R.</summary>
+        public static long VertexCacheBytes(int tiles, int factorLimit, bool snow) =>
+            VertexCacheFloat4s(tiles, factorLimit, snow) * GpuLayout.Float4Stride;
+
+        /// <summary>GPU memory of both buffers together.</summary>
+        public static long TotalBytes(int tiles, int factorLimit, bool snow) =>
+            TileFactorsBytes(tiles) + VertexCacheBytes(tiles, factorLimit, snow);
+
+        /// <summary>
+        /// Throws ArgumentException, naming the settings and the bytes, when either buffer is larger
+        /// than <paramref name="maxBufferBytes"/> (the device's largest buffer; Unity:
+        /// <c>SystemInfo.maxGraphicsBufferSize</c>) or than <see cref="GpuLayout.MaxBufferBytes"/>
+        /// (2 GiB, the most a GraphicsBuffer's int count of float4 safely addresses everywhere).
+        /// Nothing is allocated here: call it before touching the old buffers.
+        /// </summary>
+        public static void CheckFits(int tiles, int factorLimit, bool snow, long maxBufferBytes)
+        {
+            if (maxBufferBytes <= 0)
+                throw new ArgumentException(FormattableString.Invariant($"maxBufferBytes ({maxBufferBytes}) must be > 0"), nameof(maxBufferBytes));
+            long limit = Math.Min(maxBufferBytes, GpuLayout.MaxBufferBytes);
+            long cache = VertexCacheBytes(tiles, factorLimit, snow);
+            if (cache > limit)
+                throw new ArgumentException(FormattableString.Invariant(
+                    $"the vertex cache for tiles = {tiles}, factor limit {factorLimit}{(snow ? ", snow" : "")} needs {cache} bytes (_VertexCache = M^2 ((L+1)^2 + 4 (L+1)) x {Float4sPerRecord(snow)} float4), more than the largest buffer, {limit} bytes; lower tiles or the max/uniform factor, or evaluate in the domain stage"),
+                    "tiles");
+            long factors = TileFactorsBytes(tiles);
+            if (factors > limit)
+                throw new ArgumentException(FormattableString.Invariant(
+                    $"the tile factors for tiles = {tiles} need {factors} bytes (_TileFactors = 32 M^2), more than the largest buffer, {limit} bytes"), "tiles");
+        }
+
+        static void CheckFactorLimit(int factorLimit)
+        {
+            if (factorLimit < 1 || factorLimit > MaxFactorLimit)
+                throw new ArgumentException(FormattableString.Invariant($"factorLimit ({factorLimit}) must lie in [1, {MaxFactorLimit}]"), nameof(factorLimit));
+        }
+
+        static void CheckTiles(int tiles)
+        {
+            if (tiles < 1 || tiles > 1024)
+                throw new ArgumentException(FormattableString.Invariant($"tiles ({tiles}) must lie in [1, 1024]"), nameof(tiles));
+        }
+    }
+}

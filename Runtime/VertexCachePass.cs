@@ -1,0 +1,221 @@
+using System;
+using UnityEngine;
+
+namespace GregoryTerrain
+{
+    /// <summary>
+    /// The compute pre-pass of <see cref="VertexEvaluation.ComputeCache"/>: owns <c>_TileFactors</c>
+    /// (2 M^2 float4) and <c>_VertexCache</c> (M^2 S(L) R float4, sizes from Core's
+    /// <see cref="VertexCacheBudget"/>) and dispatches <c>CacheTileFactors</c> then
+    /// <c>CacheTileVertices</c> of <c>Shaders/TerrainCache.compute</c> only when something the
+    /// kernels read differs from the last dispatch: the TerrainParams block (range and origin
+    /// included), the LOD camera's object-to-clip matrix and pixel size, the effect keywords, the
+    /// grid's buffers, or the snow map's version. A frame where none changed dispatches nothing.
+    /// <para>The renderer decides whether the pass runs at all (compute support, the shader, the
+    /// LOD camera, the size check); this class only sizes, compares and dispatches.</para>
+    /// </summary>
+    sealed class VertexCachePass
+    {
+        /// <summary>The material keyword of the cache variants (multi_compile_local in GregoryTerrain.shader).</summary>
+        public const string Keyword = "GT_VERTEX_CACHE";
+        public const string FactorsKernelName = "CacheTileFactors";
+        public const string VerticesKernelName = "CacheTileVertices";
+        /// <summary>[numthreads(64, 1, 1)] of both kernels.</summary>
+        public const int ThreadsPerGroup = 64;
+
+        /// <summary>Effect keywords the kernels evaluate, mirrored from the material onto the compute shader.</summary>
+        [Flags]
+        public enum Effects { None = 0, Noise = 1, HeightColor = 2, Snow = 4 }
+        public const string NoiseKeyword = "GT_NOISE", HeightColorKeyword = "GT_HEIGHT_COLOR", SnowKeyword = "GT_SNOW";
+
+        static class Ids
+        {
+            public static readonly int TileFactors = Shader.PropertyToID("_TileFactors");
+            public static readonly int VertexCache = Shader.PropertyToID("_VertexCache");
+            public static readonly int TileFactorsRW = Shader.PropertyToID("_TileFactorsRW");
+            public static readonly int VertexCacheRW = Shader.PropertyToID("_VertexCacheRW");
+            public static readonly int LodObjectToClip = Shader.PropertyToID("_GT_LodObjectToClip");
+            public static readonly int LodScreenSize = Shader.PropertyToID("_GT_LodScreenSize");
+            public static readonly int ControlPoints = Shader.PropertyToID("_ControlPoints");
+            public static readonly int Regions = Shader.PropertyToID("_Regions");
+            public static readonly int GridLines = Shader.PropertyToID("_GridLines");
+            public static readonly int SnowDepth = Shader.PropertyToID("_SnowDepth");
+            public static readonly int SnowMapSize = Shader.PropertyToID("_SnowMapSize");
+            public static readonly int[] Params = Array.ConvertAll(TerrainParams.PropertyNames, Shader.PropertyToID);
+        }
+
+        /// <summary>Everything one dispatch reads besides the buffers this pass owns.</summary>
+        public struct Inputs
+        {
+            public TerrainParams parameters;
+            /// <summary>GPU projection * view (LOD camera) * the renderer's object matrix (deep-zoom offset included).</summary>
+            public Matrix4x4 objectToClip;
+            /// <summary>(w, h, 1/w, 1/h) of the LOD camera in pixels.</summary>
+            public Vector4 screenSize;
+            public GraphicsBuffer controlPoints, regions, gridLines;
+            /// <summary>Bumped by the renderer on every upload, so new grid buffers force a dispatch.</summary>
+            public int gridStamp;
+            public Effects effects;
+            /// <summary>With <see cref="Effects.Snow"/>: the simulator's depth map, its (R, 1/R, cap, 0) and version.</summary>
+            public ComputeBuffer snowDepth;
+            public Vector4 snowMapSize;
+            public int snowVersion;
+        }
+
+        GraphicsBuffer _factors, _vertices;
+        int _tiles, _factorLimit;
+        bool _snow;
+
+        ComputeShader _kernelShader;
+        int _factorsKernel = -1, _verticesKernel = -1;
+
+        bool _valid;          // the buffers hold the result of _last
+        Inputs _last;
+
+        public GraphicsBuffer TileFactors => _factors;
+        public GraphicsBuffer VertexCache => _vertices;
+        public bool IsAllocated => _factors != null;
+        /// <summary>True once a dispatch has filled the current buffers.</summary>
+        public bool HasContent => _valid;
+        /// <summary>GPU memory held now (0 when released).</summary>
+        public long AllocatedBytes => IsAllocated ? VertexCacheBudget.TotalBytes(_tiles, _factorLimit, _snow) : 0;
+
+        /// <summary>
+        /// Looks the two kernels up in <paramref name="shader"/> (once per shader asset). False, with
+        /// the missing kernel's name in <paramref name="missing"/>, when the shader lacks one.
+        /// </summary>
+        public bool FindKernels(ComputeShader shader, out string missing)
+        {
+            missing = null;
+            if (shader == _kernelShader && _factorsKernel >= 0 && _verticesKernel >= 0) return true;
+            _kernelShader = null; _factorsKernel = _verticesKernel = -1;
+            if (!shader.HasKernel(FactorsKernelName)) { missing = FactorsKernelName; return false; }
+            if (!shader.HasKernel(VerticesKernelName)) { missing = VerticesKernelName; return false; }
+            _factorsKernel = shader.FindKernel(FactorsKernelName);
+            _verticesKernel = shader.FindKernel(VerticesKernelName);
+            _kernelShader = shader;
+            _valid = false;   // another shader: its results are not ours
+            return true;
+        }
+
+        /// <summary>
+        /// Allocates both buffers for M = <paramref name="tiles"/>, L = <paramref name="factorLimit"/>
+        /// and the snow record, releasing the old ones, only when one of the three changed. Call
+        /// <see cref="VertexCacheBudget.CheckFits"/> first: this allocates whatever it is asked.
+        /// Returns true when it allocated (the buffers must be bound again).
+        /// </summary>
+        public bool EnsureBuffers(int tiles, int factorLimit, bool snow)
+        {
+            if (IsAllocated && tiles == _tiles && factorLimit == _factorLimit && snow == _snow) return false;
+            long factorCount = VertexCacheBudget.TileFactorsFloat4s(tiles);
+            long vertexCount = VertexCacheBudget.VertexCacheFloat4s(tiles, factorLimit, snow);
+            Release();
+            _factors = new GraphicsBuffer(GraphicsBuffer.Target.Structured, (int)factorCount, GpuLayout.Float4Stride);
+            _vertices = new GraphicsBuffer(GraphicsBuffer.Target.Structured, (int)vertexCount, GpuLayout.Float4Stride);
+            _tiles = tiles; _factorLimit = factorLimit; _snow = snow;
+            _valid = false;
+            return true;
+        }
+
+        /// <summary>Forgets the last dispatch: the next <see cref="Update"/> dispatches.</summary>
+        public void Invalidate() => _valid = false;
+
+        /// <summary>
+        /// Dispatches both kernels when <paramref name="inputs"/> differ from the last dispatch's (or
+        /// nothing was dispatched into these buffers yet). Returns true when it dispatched. Needs
+        /// <see cref="FindKernels"/> and <see cref="EnsureBuffers"/> first.
+        /// </summary>
+        public bool Update(ComputeShader shader, in Inputs inputs)
+        {
+            if (!IsAllocated || shader != _kernelShader) throw new InvalidOperationException("VertexCachePass: FindKernels and EnsureBuffers come first");
+            if (_valid && SameAsLast(inputs)) return false;
+
+            for (int k = 0; k < TerrainParams.Float4Count; k++)
+            {
+                Float4 v = inputs.parameters[k];
+                shader.SetVector(Ids.Params[k], new Vector4(v.x, v.y, v.z, v.w));
+            }
+            shader.SetMatrix(Ids.LodObjectToClip, inputs.objectToClip);
+            shader.SetVector(Ids.LodScreenSize, inputs.screenSize);
+            SetKeyword(shader, NoiseKeyword, (inputs.effects & Effects.Noise) != 0);
+            SetKeyword(shader, HeightColorKeyword, (inputs.effects & Effects.HeightColor) != 0);
+            bool snow = (inputs.effects & Effects.Snow) != 0;
+            SetKeyword(shader, SnowKeyword, snow);
+            if (snow) shader.SetVector(Ids.SnowMapSize, inputs.snowMapSize);
+
+            // Kernel 1 writes the factors (u2, _TileFactorsRW); kernel 2 reads them there and
+            // writes the records (u3, _VertexCacheRW). Both sample the surface: the patch buffers.
+            BindPatchBuffers(shader, _factorsKernel, inputs, snow);
+            shader.SetBuffer(_factorsKernel, Ids.TileFactorsRW, _factors);
+            BindPatchBuffers(shader, _verticesKernel, inputs, snow);
+            shader.SetBuffer(_verticesKernel, Ids.TileFactorsRW, _factors);
+            shader.SetBuffer(_verticesKernel, Ids.VertexCacheRW, _vertices);
+
+            int tileCount = _tiles * _tiles;
+            shader.Dispatch(_factorsKernel, (tileCount + ThreadsPerGroup - 1) / ThreadsPerGroup, 1, 1);
+            shader.Dispatch(_verticesKernel, _tiles, _tiles, 1);   // group (x, y) = tile y M + x
+
+            _last = inputs;
+            _valid = true;
+            return true;
+        }
+
+        /// <summary>Binds the buffers on the draw's property block under the graphics stages' names.</summary>
+        public void BindTo(MaterialPropertyBlock props)
+        {
+            props.SetBuffer(Ids.TileFactors, _factors);
+            props.SetBuffer(Ids.VertexCache, _vertices);
+        }
+
+        /// <summary>Releases both buffers. Safe to call twice.</summary>
+        public void Release()
+        {
+            _factors?.Release(); _factors = null;
+            _vertices?.Release(); _vertices = null;
+            _valid = false;
+        }
+
+        static void BindPatchBuffers(ComputeShader shader, int kernel, in Inputs inputs, bool snow)
+        {
+            shader.SetBuffer(kernel, Ids.ControlPoints, inputs.controlPoints);
+            shader.SetBuffer(kernel, Ids.Regions, inputs.regions);
+            shader.SetBuffer(kernel, Ids.GridLines, inputs.gridLines);
+            if (snow) shader.SetBuffer(kernel, Ids.SnowDepth, inputs.snowDepth);
+        }
+
+        static void SetKeyword(ComputeShader shader, string keyword, bool on)
+        {
+            if (on) shader.EnableKeyword(keyword); else shader.DisableKeyword(keyword);
+        }
+
+        bool SameAsLast(in Inputs i)
+        {
+            if (!SameParams(i.parameters, _last.parameters)) return false;
+            if (!SameMatrix(i.objectToClip, _last.objectToClip)) return false;
+            if (!SameVector(i.screenSize, _last.screenSize)) return false;
+            if (i.controlPoints != _last.controlPoints || i.regions != _last.regions || i.gridLines != _last.gridLines) return false;
+            if (i.gridStamp != _last.gridStamp || i.effects != _last.effects) return false;
+            if ((i.effects & Effects.Snow) != 0 &&
+                (i.snowDepth != _last.snowDepth || i.snowVersion != _last.snowVersion || !SameVector(i.snowMapSize, _last.snowMapSize)))
+                return false;
+            return true;
+        }
+
+        static bool SameParams(in TerrainParams a, in TerrainParams b)
+        {
+            for (int k = 0; k < TerrainParams.Float4Count; k++)
+                if (!a[k].Equals(b[k])) return false;
+            return true;
+        }
+
+        // Bit-level equality through float.Equals (NaN equals NaN, so a NaN never forces a dispatch per frame).
+        static bool SameVector(Vector4 a, Vector4 b) =>
+            a.x.Equals(b.x) && a.y.Equals(b.y) && a.z.Equals(b.z) && a.w.Equals(b.w);
+
+        static bool SameMatrix(in Matrix4x4 a, in Matrix4x4 b) =>
+            a.m00.Equals(b.m00) && a.m01.Equals(b.m01) && a.m02.Equals(b.m02) && a.m03.Equals(b.m03) &&
+            a.m10.Equals(b.m10) && a.m11.Equals(b.m11) && a.m12.Equals(b.m12) && a.m13.Equals(b.m13) &&
+            a.m20.Equals(b.m20) && a.m21.Equals(b.m21) && a.m22.Equals(b.m22) && a.m23.Equals(b.m23) &&
+            a.m30.Equals(b.m30) && a.m31.Equals(b.m31) && a.m32.Equals(b.m32) && a.m33.Equals(b.m33);
+    }
+}

@@ -1,0 +1,32 @@
+// LOD-camera compute adapter: the vertex cache's kernels in Unity (TerrainCache.compute). They
+// decide the tessellation, so unlike ComputeAdapter.hlsl they need a camera: the one whose view the
+// factors are computed for (GregoryTerrainRenderer's LOD camera), set by the renderer as globals:
+//   _GT_LodObjectToClip   GPU projection * view * the terrain's object-to-world (what the draw uses)
+//   _GT_LodScreenSize     (width, height, 1 / width, 1 / height) of that camera's target, in pixels
+// The rest of the adapter interface (StandaloneAdapter.hlsl lists it) is what the kernels never
+// call: lighting, shadows and world space belong to the draw, which reads the cached object-space
+// vertices. Material constants are a plain cbuffer (Unity sets its members by name).
+#ifndef GT_LOD_CAMERA_COMPUTE_ADAPTER_INCLUDED
+#define GT_LOD_CAMERA_COMPUTE_ADAPTER_INCLUDED
+
+#define GT_ADAPTER_COMPUTE 1
+#define GT_CBUFFER_START(name) cbuffer name : register(b0) {
+#define GT_CBUFFER_END };
+#define GT_REGISTER(r) : register(r)
+
+float4x4 _GT_LodObjectToClip;
+float4 _GT_LodScreenSize;
+
+float3 GT_ObjectToWorld(float3 positionOS) { return positionOS; }
+float3 GT_ObjectToWorldNormal(float3 normalOS) { return normalOS; }
+float4 GT_ObjectToClip(float3 positionOS) { return mul(_GT_LodObjectToClip, float4(positionOS, 1.0)); }
+float4 GT_WorldToClip(float3 positionWS) { return GT_ObjectToClip(positionWS); }
+float3 GT_CameraPositionWS() { return float3(0.0, 0.0, 0.0); }
+float2 GT_ScreenSize() { return _GT_LodScreenSize.xy; }
+void GT_MainLight(out float3 directionWS, out float3 color)
+{
+    directionWS = float3(0.0, 1.0, 0.0);
+    color = float3(1.0, 1.0, 1.0);
+}
+
+#endif // GT_LOD_CAMERA_COMPUTE_ADAPTER_INCLUDED

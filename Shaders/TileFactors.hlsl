@@ -1,0 +1,150 @@
+// Per-tile tessellation factors: frustum culling and the adaptive factors from each edge's chord
+// error in pixels (Documentation~/performance.md, "The knob"). Used by the hull stage's
+// hull_const and by the vertex cache's CacheTileFactors kernel (VertexCacheKernels.hlsl), so both
+// decide identically. Mirrors Runtime/Core/TessellationPolicy.cs. Needs the adapter's
+// GT_ObjectToClip and GT_ScreenSize and TerrainVertex.hlsl's EvaluateSurface.
+#ifndef GT_TILE_FACTORS_INCLUDED
+#define GT_TILE_FACTORS_INCLUDED
+
+#include "TerrainVertex.hlsl"
+#include "TessellationFactors.hlsl"
+
+// A tile's six factors. Quad domain: edge.x is u = 0, .y v = 0, .z u = 1, .w v = 1; inside.x
+// subdivides along u, inside.y along v. All zero = culled.
+struct TileFactorSet
+{
+    float4 edge;
+    float2 inside;
+};
+
+// Corner c sits at tess coordinate (c & 1, c >> 1).
+float2 CornerTessCoordinate(uint corner) { return float2(corner & 1u, corner >> 1u); }
+
+// Object position of the tile's corner c (no noise): the input of the culling and the edge factors.
+// Corners depend only on (tile, corner) integers, so a corner shared by neighbouring tiles is
+// evaluated from identical inputs: identical positions, identical edge factors.
+float3 TileCornerObjectPosition(uint drawPatch, uint corner)
+{
+    return TerrainToObject(OutputSurfacePosition(EvaluateSurface(drawPatch, CornerTessCoordinate(corner))));
+}
+
+// True when the tile's box lies outside the view. The box is the corners' bounds, grown in height
+// by the noise bound (GT_NOISE) plus the corners' own height spread: a cheap allowance for the
+// surface rising between corners, which the corners alone cannot see. (Takes the corners as an
+// array, not the InputPatch: not every HLSL compiler accepts an InputPatch as a helper argument.)
+bool TileCulled(float3 cornerOS[4])
+{
+    float3 lo = cornerOS[0], hi = lo;
+    [unroll] for (uint c = 1; c < 4; c++)
+    {
+        lo = min(lo, cornerOS[c]);
+        hi = max(hi, cornerOS[c]);
+    }
+    float margin = hi.y - lo.y;
+#if defined(GT_NOISE)
+    margin += NoiseHeightBound();
+#endif
+    lo.y -= margin;
+    hi.y += margin;
+#if defined(GT_SNOW)
+    hi.y += SnowDepthCap();   // snow only raises the surface, by at most the cap
+#endif
+    float4 boxCS[8];
+    [unroll] for (uint k = 0; k < 8; k++)
+    {
+        float3 p = float3((k & 1u) ? hi.x : lo.x, (k & 2u) ? hi.y : lo.y, (k & 4u) ? hi.z : lo.z);
+        boxCS[k] = GT_ObjectToClip(p);
+    }
+    // The height margin is already in the box (object units), so no clip-space margin on top.
+    return BoxOutsideFrustum(boxCS, 0.0);
+}
+
+// Object point -> pixels per object unit there (TessellationFactors.hlsl, PixelsPerUnit).
+float ObjectPixelsPerUnit(float3 p)
+{
+    return PixelsPerUnit(GT_ObjectToClip(p), GT_ObjectToClip(p + float3(1.0, 0.0, 0.0)),
+                         GT_ObjectToClip(p + float3(0.0, 1.0, 0.0)), GT_ObjectToClip(p + float3(0.0, 0.0, 1.0)),
+                         GT_ScreenSize());
+}
+
+// Object position of the Gregory surface (no noise) at a tess coordinate of the drawn patch.
+float3 SurfaceObjectPosition(uint drawPatch, float2 tess)
+{
+    return TerrainToObject(EvaluateSurface(drawPatch, tess).position);
+}
+
+// Factor of the edge from tess coordinate a to b (a the lower one) whose end points are pa, pb:
+// the surface (no noise) is evaluated at the GT_EDGE_SEGMENTS - 1 inner points of the edge
+// (SampledEdgeSagittaPixels), and the bound of the noise the frame draws is added (noiseCurvature,
+// 0 without GT_NOISE; edgeLength in terrain units). A neighbour sharing the edge forms the same
+// global points bit for bit (RangeCoordinate adds the integer tile index first), so it gets the
+// same factor: no cracks.
+float EdgeErrorTessFactor(uint drawPatch, float2 a, float2 b, float3 pa, float3 pb, float edgeLength, float noiseCurvature,
+                          float targetPixelError, float maxFactor)
+{
+    float3 p[GT_EDGE_SEGMENTS + 1];
+    float k[GT_EDGE_SEGMENTS + 1];
+    p[0] = pa;
+    p[GT_EDGE_SEGMENTS] = pb;
+    k[0] = k[GT_EDGE_SEGMENTS] = 0.0;
+    float kMax = 0.0;
+    [unroll] for (uint i = 1u; i < GT_EDGE_SEGMENTS; i++)
+    {
+        p[i] = SurfaceObjectPosition(drawPatch, lerp(a, b, (float)i / (float)GT_EDGE_SEGMENTS));
+        k[i] = ObjectPixelsPerUnit(p[i]);
+        kMax = max(kMax, k[i]);
+    }
+    float sagitta = SampledEdgeSagittaPixels(p, k) + NoiseSagittaPixels(noiseCurvature, edgeLength, kMax);
+    return ErrorTessFactor(sagitta, targetPixelError, maxFactor);
+}
+
+TileFactorSet ComputeTileFactors(uint patch, float3 cornerOS[4])
+{
+    TileFactorSet f;
+    if (UsesUniformTessFactor())
+    {
+        // Tests and benchmarks: every tile, every edge the same, nothing culled, so the vertex
+        // count is known in advance.
+        float u = UniformTessFactor();
+        f.edge = u;
+        f.inside = u;
+        return f;
+    }
+    if (TileCulled(cornerOS))
+    {
+        f.edge = 0.0;   // a zero edge factor drops the patch
+        f.inside = 0.0;
+        return f;
+    }
+    // The knob is the target screen-space error in pixels (_Tess.z): each edge gets the segment
+    // count whose chord error is that many pixels (TessellationPolicy.ErrorTessFactor). Each factor
+    // depends only on its edge (end points and seven points of the surface on it), taken lower tess
+    // coordinate first by both tiles that share it: their factors agree bit for bit (no cracks).
+    float target = TargetPixelError(), maxFactor = MaxTessFactor();
+    float2 edgeLength = (_Range.zw - _Range.xy) / TileCount();   // along u (x) and along v (y), terrain units
+    float noiseCurvature = 0.0;
+#if defined(GT_NOISE)
+    // The octaves this frame draws (the count TerrainVertex uses): the knob counts the noise it shows.
+    noiseCurvature = NoiseCurvatureBound(NoiseSettings(), OctaveCount(RangeWidth(), NoiseVerticesAcross(), NoiseSettings(), MaxNoiseOctaves()));
+#endif
+    f.edge[0] = EdgeErrorTessFactor(patch, float2(0, 0), float2(0, 1), cornerOS[0], cornerOS[2], edgeLength.y, noiseCurvature, target, maxFactor);   // u = 0
+    f.edge[1] = EdgeErrorTessFactor(patch, float2(0, 0), float2(1, 0), cornerOS[0], cornerOS[1], edgeLength.x, noiseCurvature, target, maxFactor);   // v = 0
+    f.edge[2] = EdgeErrorTessFactor(patch, float2(1, 0), float2(1, 1), cornerOS[1], cornerOS[3], edgeLength.y, noiseCurvature, target, maxFactor);   // u = 1
+    f.edge[3] = EdgeErrorTessFactor(patch, float2(0, 1), float2(1, 1), cornerOS[2], cornerOS[3], edgeLength.x, noiseCurvature, target, maxFactor);   // v = 1
+    // Inside factors follow the edges they run along: inside[0] subdivides along u, like the
+    // v = 0 and v = 1 edges. They match no neighbour, so they may look inside: the tile's two
+    // midlines (bumps between the edges) and the centre's deviation from the diagonals (a twist
+    // bends the diagonals, not the edges).
+    float midU = EdgeErrorTessFactor(patch, float2(0, 0.5), float2(1, 0.5), SurfaceObjectPosition(patch, float2(0, 0.5)),
+                                     SurfaceObjectPosition(patch, float2(1, 0.5)), edgeLength.x, noiseCurvature, target, maxFactor);
+    float midV = EdgeErrorTessFactor(patch, float2(0.5, 0), float2(0.5, 1), SurfaceObjectPosition(patch, float2(0.5, 0)),
+                                     SurfaceObjectPosition(patch, float2(0.5, 1)), edgeLength.y, noiseCurvature, target, maxFactor);
+    float3 centre = SurfaceObjectPosition(patch, float2(0.5, 0.5));
+    float diagonal = InsideErrorTessFactor(DiagonalSagittaPixels(cornerOS[0], cornerOS[1], cornerOS[2], cornerOS[3],
+                                                                 centre, ObjectPixelsPerUnit(centre)), target, maxFactor);
+    float2 inside = max(max(TessInsideFactors(f.edge[0], f.edge[1], f.edge[2], f.edge[3]), float2(midU, midV)), diagonal);
+    f.inside = inside;
+    return f;
+}
+
+#endif // GT_TILE_FACTORS_INCLUDED

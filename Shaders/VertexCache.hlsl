@@ -1,0 +1,117 @@
+// The vertex cache's layout (GT_VERTEX_CACHE; Documentation~/internals.md, "Vertex cache"): where
+// each vertex the tessellator makes at a tile's integer factors is stored, and how a record packs a
+// TerrainVertexAttributes. Written by VertexCacheKernels.hlsl (compute), read by the domain stage.
+// Mirrors Runtime/Core/VertexCache.cs name for name.
+//
+// Why integer factors: with "integer" partitioning the tessellator puts a factor-F edge's vertices at
+// exactly k / F and the inside grid at (i / Iu, j / Iv), so every vertex has a slot known in advance
+// and the compute pass can evaluate it before the draw.
+#ifndef GT_VERTEX_CACHE_INCLUDED
+#define GT_VERTEX_CACHE_INCLUDED
+
+#include "TerrainVertex.hlsl"
+#include "TileFactors.hlsl"
+
+// Hardware limit of a tessellation factor (Vulkan maxTessellationGenerationLevel >= 64, D3D 64).
+#define GT_VERTEX_CACHE_MAX_FACTOR 64.0
+
+#if defined(GT_SNOW)
+    #define GT_VERTEX_CACHE_FLOAT4S 3u
+#else
+    #define GT_VERTEX_CACHE_FLOAT4S 2u
+#endif
+
+// L: the largest integer factor this frame's settings can produce: the uniform factor when set,
+// else the maximum factor; slots are reserved for it.
+uint VertexCacheFactorLimit()
+{
+    float f = UsesUniformTessFactor() ? UniformTessFactor() : MaxTessFactor();
+    return (uint)clamp(ceil(f), 1.0, GT_VERTEX_CACHE_MAX_FACTOR);
+}
+
+// (L + 1)^2 slots of the inside grid, then 4 edges of L + 1.
+uint VertexCacheSlotsPerTile(uint limit) { return (limit + 1u) * (limit + 1u) + 4u * (limit + 1u); }
+
+// Inside grid point (i, j) of a tile whose inside factor along u is insideU.
+uint VertexCacheInteriorSlot(uint2 ij, uint insideU) { return ij.x + ij.y * (insideU + 1u); }
+
+// Point k (from the edge's lower tess coordinate) of edge e (0: u = 0, 1: v = 0, 2: u = 1, 3: v = 1).
+uint VertexCacheEdgeSlot(uint edge, uint k, uint limit)
+{
+    return (limit + 1u) * (limit + 1u) + edge * (limit + 1u) + k;
+}
+
+// Tess coordinate of point k of edge e at factor f.
+float2 VertexCacheEdgeTess(uint edge, uint k, float f)
+{
+    float s = (float)k / f;
+    if (edge == 0u) return float2(0.0, s);
+    if (edge == 1u) return float2(s, 0.0);
+    if (edge == 2u) return float2(1.0, s);
+    return float2(s, 1.0);
+}
+
+// The slot (within its tile) of the vertex the tessellator put at tess. Edge vertices have a tess
+// coordinate of exactly 0 or 1 (the tessellator guarantees it: that is what keeps tiles watertight);
+// inside vertices never do. round() absorbs a fixed-point tessellator's error (lavapipe: 1.2e-4,
+// far below 1 / (2 * 64)).
+uint VertexCacheSlot(float2 tess, float4 edge, float2 inside, uint limit)
+{
+    if (tess.x == 0.0) return VertexCacheEdgeSlot(0u, (uint)round(tess.y * edge.x), limit);
+    if (tess.y == 0.0) return VertexCacheEdgeSlot(1u, (uint)round(tess.x * edge.y), limit);
+    if (tess.x == 1.0) return VertexCacheEdgeSlot(2u, (uint)round(tess.y * edge.z), limit);
+    if (tess.y == 1.0) return VertexCacheEdgeSlot(3u, (uint)round(tess.x * edge.w), limit);
+    return VertexCacheInteriorSlot((uint2)round(tess * inside), (uint)inside.x);
+}
+
+// The factors the cache is built for: each rounded up to an integer (the segments of "integer"
+// partitioning; rounding up keeps the error bound of the fractional factor). An inside factor of 1
+// is raised to 2 unless all six are 1: the tessellator treats it as 2 then anyway (Vulkan spec,
+// quad tessellation; D3D11 likewise), and the slot grid must be the one it draws. Culled (all 0)
+// stays 0.
+TileFactorSet VertexCacheIntegerFactors(TileFactorSet f)
+{
+    if (f.edge.x == 0.0) return f;
+    f.edge = ceil(clamp(f.edge, 1.0, GT_VERTEX_CACHE_MAX_FACTOR));
+    f.inside = ceil(clamp(f.inside, 1.0, GT_VERTEX_CACHE_MAX_FACTOR));
+    bool allOnes = all(f.edge == 1.0) && all(f.inside == 1.0);
+    if (!allOnes) f.inside = max(f.inside, 2.0);
+    return f;
+}
+
+// Record = GT_VERTEX_CACHE_FLOAT4S float4: (positionOS, absoluteHeight), (normalOS, colorNoise),
+// [GT_SNOW: (snowDepth, 0, 0, 0)]. The patch index is not kept (GT_DEBUG_PATCH_ID reads 0).
+float4 VertexCacheRecordPart(TerrainVertexAttributes a, uint part)
+{
+    if (part == 0u) return float4(a.positionOS, a.absoluteHeight);
+    if (part == 1u) return float4(a.normalOS, a.colorNoise);
+    return float4(a.snowDepth, 0.0, 0.0, 0.0);
+}
+
+TerrainVertexAttributes VertexCacheAttributes(float4 r0, float4 r1, float4 r2)
+{
+    TerrainVertexAttributes a;
+    a.positionOS = r0.xyz;
+    a.absoluteHeight = r0.w;
+    a.normalOS = r1.xyz;
+    a.colorNoise = r1.w;
+    a.snowDepth = r2.x;
+    a.patch = 0u;
+    return a;
+}
+
+#if defined(GT_VERTEX_CACHE)
+// The record of a slot (tile base included), as the domain stage reads it.
+TerrainVertexAttributes ReadVertexCacheRecord(uint slot)
+{
+    uint i = GT_VERTEX_CACHE_FLOAT4S * slot;
+    #if defined(GT_SNOW)
+    float4 r2 = _VertexCache[i + 2u];
+    #else
+    float4 r2 = float4(0.0, 0.0, 0.0, 0.0);
+    #endif
+    return VertexCacheAttributes(_VertexCache[i], _VertexCache[i + 1u], r2);
+}
+#endif
+
+#endif // GT_VERTEX_CACHE_INCLUDED

@@ -1,0 +1,115 @@
+using System;
+using System.Collections.Generic;
+using System.Linq;
+using NUnit.Framework;
+
+namespace GregoryTerrain.Tests
+{
+    /// <summary>The vertex cache's layout (VertexCache.cs, mirrored by Shaders/VertexCache.hlsl).</summary>
+    [TestFixture]
+    public class VertexCacheTests
+    {
+        static TileFactorSet Set(float e0, float e1, float e2, float e3, float i0, float i1) =>
+            new TileFactorSet(new Float4(e0, e1, e2, e3), new Float2(i0, i1));
+
+        [Test]
+        public void IntegerFactorsRoundUpAndClamp()
+        {
+            var f = VertexCache.IntegerFactors(Set(1.01f, 2f, 63.5f, 100f, 0.2f, 7.9f));
+            Assert.That(f, Is.EqualTo(Set(2f, 2f, 64f, 64f, 2f, 8f)));
+        }
+
+        [Test]
+        public void InsideFactorOfOneBecomesTwoUnlessEverythingIsOne()
+        {
+            Assert.That(VertexCache.IntegerFactors(Set(1, 1, 1, 1, 1, 1)), Is.EqualTo(Set(1, 1, 1, 1, 1, 1)));
+            Assert.That(VertexCache.IntegerFactors(Set(1, 3, 1, 1, 1, 1)), Is.EqualTo(Set(1, 3, 1, 1, 2, 2)));
+            Assert.That(VertexCache.IntegerFactors(Set(1, 1, 1, 1, 1, 5)), Is.EqualTo(Set(1, 1, 1, 1, 2, 5)));
+        }
+
+        [Test]
+        public void CulledTilesStayCulled()
+        {
+            var culled = VertexCache.IntegerFactors(Set(0, 0, 0, 0, 0, 0));
+            Assert.That(culled.IsCulled, Is.True);
+            Assert.That(VertexCache.TilePoints(culled, 8).Count(), Is.EqualTo(0));
+        }
+
+        [Test]
+        public void FactorLimitIsTheUniformFactorElseTheMaximum()
+        {
+            Assert.That(VertexCache.FactorLimit(TessellationSettings.Uniform(8, 6.5f)), Is.EqualTo(7));
+            Assert.That(VertexCache.FactorLimit(new TessellationSettings(8, 33f, 1f, 0f)), Is.EqualTo(33));
+            Assert.That(VertexCache.FactorLimit(new TessellationSettings(8, 64f, 1f, 0f)), Is.EqualTo(64));
+        }
+
+        [Test]
+        public void SizesFollowTheFormula()
+        {
+            Assert.That(VertexCache.SlotsPerTile(64), Is.EqualTo(65 * 65 + 4 * 65));
+            Assert.That(VertexCache.VertexBytes(32, 64, false), Is.EqualTo(32L * 32 * 4485 * 2 * 16));
+            Assert.That(VertexCache.VertexBytes(32, 64, true), Is.EqualTo(32L * 32 * 4485 * 3 * 16));
+            Assert.That(VertexCache.TileFactorBytes(16), Is.EqualTo(16L * 16 * 32));
+            Assert.That(() => VertexCache.SlotsPerTile(0), Throws.InstanceOf<ArgumentOutOfRangeException>());
+            Assert.That(() => VertexCache.SlotsPerTile(65), Throws.InstanceOf<ArgumentOutOfRangeException>());
+        }
+
+        /// <summary>
+        /// For many factor sets: the kernel's points have distinct slots inside the tile's stride, the
+        /// tessellator's vertices (every tess coordinate integer partitioning makes) all find a written
+        /// slot, and the slot the domain stage computes is the one the kernel wrote that point to.
+        /// </summary>
+        [Test]
+        public void EveryTessellatorVertexFindsTheSlotTheKernelWrote()
+        {
+            var random = new Random(5);
+            for (int trial = 0; trial < 400; trial++)
+            {
+                int limit = trial < 200 ? 1 + random.Next(8) : 1 + random.Next(64);
+                float F() => 1f + (float)(random.NextDouble() * (limit - 1));
+                var f = VertexCache.IntegerFactors(Set(F(), F(), F(), F(), F(), F()));
+                var points = VertexCache.TilePoints(f, limit).ToList();
+                var written = new Dictionary<int, Float2>();
+                foreach (var (tess, slot) in points)
+                {
+                    Assert.That(slot, Is.InRange(0, VertexCache.SlotsPerTile(limit) - 1), $"{f}, limit {limit}");
+                    Assert.That(written.ContainsKey(slot), Is.False, $"{f}: slot {slot} written twice");
+                    written[slot] = tess;
+                }
+                // The domain stage's slot for each point holds that point (a corner is written by both
+                // its edges; the domain reads one of the two).
+                foreach (var (tess, _) in points)
+                    Assert.That(written[VertexCache.Slot(tess, f, limit)], Is.EqualTo(tess), $"{f}: tess {tess}");
+                // Integer partitioning's vertices: the inside grid's interior and each edge's k / F.
+                for (int j = 1; j < f.inside.y; j++)
+                    for (int i = 1; i < f.inside.x; i++)
+                        Assert.That(written.ContainsKey(VertexCache.Slot(new Float2(i / f.inside.x, j / f.inside.y), f, limit)), Is.True, $"{f}: inside ({i}, {j})");
+                Assert.That(points.Count, Is.EqualTo((int)((f.inside.x - 1) * (f.inside.y - 1) + f.edge.x + f.edge.y + f.edge.z + f.edge.w + 4)));
+            }
+        }
+
+        /// <summary>A fixed-point tessellator's coordinates (lavapipe: 1.2e-4 off) still find their slot.</summary>
+        [Test]
+        public void SlotToleratesTessellatorRounding()
+        {
+            var f = Set(63, 64, 17, 5, 64, 63);
+            Assert.That(VertexCache.Slot(new Float2(26f / 64f + 1.2e-4f, 32f / 63f - 1.2e-4f), f, 64), Is.EqualTo(VertexCache.InteriorSlot(26, 32, 64)));
+            Assert.That(VertexCache.Slot(new Float2(1f, 3f / 17f + 1.2e-4f), f, 64), Is.EqualTo(VertexCache.EdgeSlot(2, 3, 64)));
+        }
+
+        [Test]
+        public void RecordPacksObjectSpaceAndTheShadingInputs()
+        {
+            var v = new TerrainVertexOutput
+            {
+                position = new Float3(1f, 2f, 3f), normal = new Float3(0f, 0.6f, 0.8f),
+                absoluteHeight = 2.5f, colorNoise = -0.25f, snowDepth = 0.125f,
+            };
+            Float4[] r = VertexCache.Record(v, snow: true);
+            Assert.That(r[0], Is.EqualTo(new Float4(1f, 3f, 2f, 2.5f)));   // (x, z, y): Unity is Y-up
+            Assert.That(r[1], Is.EqualTo(new Float4(0f, 0.8f, 0.6f, -0.25f)));
+            Assert.That(r[2], Is.EqualTo(new Float4(0.125f, 0f, 0f, 0f)));
+            Assert.That(VertexCache.Record(v, snow: false).Length, Is.EqualTo(2));
+        }
+    }
+}
