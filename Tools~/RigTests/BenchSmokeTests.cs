@@ -81,6 +81,16 @@ namespace GregoryTerrain.Rig.Tests
                 Assert.That(D(c[9]), Is.EqualTo(D(u[9])).Within(1e-6).Percent, $"F {c[2]}: max error px");
             }
             Assert.That(_output, Does.Contain("cached adaptive needs"), "the 4x goal for the vertex cache");
+            // The tessellator draws the integer-partitioning count of the dumped factors (rings included).
+            var model = System.Text.RegularExpressions.Regex.Match(_output, @"count of their dumped factors \(transition rings included\): largest difference ([0-9.eE+-]+)%");
+            Assert.That(model.Success, Is.True, "triangle model line");
+            Assert.That(D(model.Groups[1].Value), Is.LessThan(0.1), "GPU triangles vs the integer model, percent");
+            // The kernel's factors are Core's mirror made integer: at most a ceil flip where a float factor sits at an integer.
+            var core = System.Text.RegularExpressions.Regex.Match(_output, @"made integer \(VertexCache.IntegerFactors\): (\d+) of (\d+) drawn tiles differ \(culling or a factor\), largest factor difference ([0-9.eE+-]+)");
+            Assert.That(core.Success, Is.True, "factor comparison line");
+            Assert.That(D(core.Groups[2].Value), Is.GreaterThan(0));
+            Assert.That(D(core.Groups[1].Value), Is.LessThanOrEqualTo(0.02 * D(core.Groups[2].Value)), "tiles whose cache factors differ from Core's");
+            Assert.That(D(core.Groups[3].Value), Is.LessThanOrEqualTo(1), "largest factor difference");
             Assert.That(_output, Does.Contain("The vertex cache (GT_VERTEX_CACHE) against the same fair static meshes"));
             Assert.That(_output, Does.Match(@"\| fs_m8_f7 \(uniform\) \| 8 \| 7 \| \d+ \|"), "cached fair row ran");
             Assert.That(_output, Does.Match(@"\| vc_m8_s8x7 \(adaptive\) \| 8 \| [0-9.]+ \| \d+ \|"), "cached adaptive fair row ran");

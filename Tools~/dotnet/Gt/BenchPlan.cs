@@ -240,19 +240,11 @@ namespace GregoryTerrain.Rig
             Inv($"--storage 7:{TileFactorsBytes(t.tiles)} --storage 8:{VertexCacheBytes(t)} ")
             + Inv($"--compute @SPV@/{variant}/cache_factors.spv:{(t.tiles * t.tiles + 63) / 64},1,1 --compute @SPV@/{variant}/cache_vertices.spv:{t.tiles},{t.tiles},1");
 
-        /// <summary>Factor limit L of the cache's slot layout: ceil(uniform F) or ceil(max factor), in [1, 64].</summary>
-        public static int CacheFactorLimit(TessellationSettings t) =>
-            (int)Math.Min(64, Math.Max(1, Math.Ceiling(t.IsUniform ? t.uniformFactor : t.maxFactor)));
+        /// <summary>_TileFactors: 2 float4 a tile (Core's VertexCache, the shaders' layout).</summary>
+        public static long TileFactorsBytes(int tiles) => VertexCache.TileFactorBytes(tiles);
 
-        /// <summary>Slots per tile S(L) = (L + 1)^2 grid points + 4 edges of L + 1 points.</summary>
-        public static long CacheSlotsPerTile(int limit) => (limit + 1L) * (limit + 1) + 4L * (limit + 1);
-
-        /// <summary>_TileFactors: 2 float4 a tile.</summary>
-        public static long TileFactorsBytes(int tiles) => 32L * tiles * tiles;
-
-        /// <summary>_VertexCache: M^2 S(L) slots of R float4 (R = 2; 3 with GT_SNOW).</summary>
-        public static long VertexCacheBytes(TessellationSettings t, int records = 2) =>
-            (long)t.tiles * t.tiles * CacheSlotsPerTile(CacheFactorLimit(t)) * records * 16;
+        /// <summary>_VertexCache: M^2 S(L) slots of 2 float4 (no GT_SNOW in the bench), L = ceil(uniform F or max factor).</summary>
+        public static long VertexCacheBytes(TessellationSettings t) => VertexCache.VertexBytes(t.tiles, VertexCache.FactorLimit(t), snow: false);
 
         /// <summary>
         /// The pixel target at which the adaptive terrain (noise, <paramref name="tiles"/> tiles, far view)

@@ -51,6 +51,7 @@ namespace GregoryTerrain.Rig
             o.AppendLine("| method | tiles | factor | target px | max F | octaves | triangles | DS invocations | GPU ms/frame | max err px | RMS err px | max err (terrain units) | compute ms/frame |");
             o.AppendLine("| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |");
             double worstModel = 0; string worstModelId = null;
+            double cacheFactorDiff = 0; long cacheTilesDiffer = 0, cacheTilesDrawn = 0;
             var cfgs = BenchPlan.Sweep(quick);
             var path = quick ? new[] { BenchPlan.CameraPath[0], BenchPlan.CameraPath[2] } : BenchPlan.CameraPath;
             foreach (var cfg in cfgs)
@@ -77,6 +78,13 @@ namespace GregoryTerrain.Rig
                         var cacheF = PatchFactors.FromTileFactors(BufferFiles.Read(tf), cfg.Tiles * cfg.Tiles);
                         var coreI = ErrorCommand.CacheFactors(scene, cfg.Noise);
                         factorDiff = Math.Max(factorDiff, MaxFactorDifference(cacheF, coreI));
+                        cacheFactorDiff = Math.Max(cacheFactorDiff, factorDiff);
+                        for (int p = 0; p < cacheF.Length; p++)
+                        {
+                            if (cacheF[p].culled && coreI[p].culled) continue;
+                            cacheTilesDrawn++;
+                            if (MaxFactorDifference(new[] { cacheF[p] }, new[] { coreI[p] }) != 0 || cacheF[p].culled != coreI[p].culled) cacheTilesDiffer++;
+                        }
                         long m = cacheF.Sum(TessellationCells.IntegerTriangles), g = j.Get("clipping_invocations");
                         model += m;
                         double rel = Math.Abs(g - m) / Math.Max(1.0, m);
@@ -113,7 +121,10 @@ namespace GregoryTerrain.Rig
             o.AppendLine("Triangles and DS invocations (vertex invocations for the fallback) are means per frame over the camera path; GPU time the mean of the per-camera medians; errors the largest (max) and RMS over every sample of the path.");
             o.AppendLine("Cached rows (GT_VERTEX_CACHE): each frame runs the compute pre-pass (kernels CacheTileFactors, CacheTileVertices) before the draw; GPU ms is the whole frame, compute ms the pre-pass alone (mean of the per-camera medians); partitioning is integer, at the factors read back from _TileFactors.");
             if (worstModelId != null)
+            {
                 o.AppendLine(Inv($"Cached rows' triangles against the integer-partitioning count of their dumped factors (transition rings included): largest difference {100 * worstModel:G3}% ({worstModelId})."));
+                o.AppendLine(Inv($"Cached rows' dumped factors against Core's mirror made integer (VertexCache.IntegerFactors): {cacheTilesDiffer} of {cacheTilesDrawn} drawn tiles differ (culling or a factor), largest factor difference {cacheFactorDiff:G3}."));
+            }
             o.AppendLine();
             Table1(o, jobs, quick);
             // Targets chosen at plan time (jobs.tsv: id, method, tiles, factor, target, ...).
@@ -205,21 +216,23 @@ namespace GregoryTerrain.Rig
             // adaptive terrain at the target whose integer-factor prediction matches the static size.
             o.AppendLine("### The vertex cache (GT_VERTEX_CACHE) against the same fair static meshes");
             o.AppendLine();
-            o.AppendLine("Cached: compute pre-pass + draw, _Range changing every frame (both kernels run every frame); compute: the pre-pass alone; nothing changes: the kernels run in the first (warm-up) frame only (harness --compute-once), the measured frames draw from the cache.");
+            o.AppendLine("Cached: compute pre-pass + draw, _Range changing every frame (both kernels run every frame); compute: the pre-pass alone (timestamp after the last dispatch); frame - compute: the rest of that frame (barrier + draw from the cache), derived, not a run of its own; nothing changes: the kernels run in the first (warm-up) frame only (harness --compute-once), the measured frames draw from the cache.");
             o.AppendLine();
-            o.AppendLine("| cached terrain | tiles | F / target px | triangles | cached GPU ms | of which compute ms | nothing changes GPU ms | fair static GPU ms | cached / fair static | nothing changes / fair static |");
-            o.AppendLine("| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |");
+            o.AppendLine("| cached terrain | tiles | F / target px | triangles | cached GPU ms | of which compute ms | frame - compute ms | nothing changes GPU ms | fair static GPU ms | cached / fair static | frame - compute / fair static | nothing changes / fair static |");
+            o.AppendLine("| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |");
             string Still(Job j) => j == null ? "not run" : j.Skipped != null ? "not run (" + j.Skipped + ")" : j.Exit != 0 ? "failed" : Inv($"{j.GpuMs:G4}");
             string Ratio(Job j, double ms) => j == null || j.Skipped != null || j.Exit != 0 || double.IsNaN(ms) ? "-" : Inv($"{j.GpuMs / ms:F3}x");
             Job Any(string key) => jobs.TryGetValue(key, out var j) ? j : null;
+            var notes = new List<string>();
             foreach (var (m, f) in BenchPlan.FairSizes(quick))
             {
                 string id = Inv($"fs_m{m}_f{f}");
                 Job c = Any($"{id}:cached run"), still = Any($"{id}:cached-still run");
                 var s = statics.FirstOrDefault(x => x.id == id);
                 double sms = s.id == null ? double.NaN : s.ms;
-                if (c == null || c.Exit != 0) { o.AppendLine(Inv($"| {id} (uniform) | {m} | {f} | (incomplete) | | | {Still(still)} | {sms:G4} | | |")); continue; }
-                o.AppendLine(Inv($"| {id} (uniform) | {m} | {f} | {c.Get("clipping_invocations")} | {c.GpuMs:G4} | {c.ComputeMs:G4} | {Still(still)} | {sms:G4} | {Ratio(c, sms)} | {Ratio(still, sms)} |"));
+                if (c == null || c.Exit != 0) { o.AppendLine(Inv($"| {id} (uniform) | {m} | {f} | (incomplete) | | | | {Still(still)} | {sms:G4} | | | |")); continue; }
+                double draw = c.GpuMs - c.ComputeMs;
+                o.AppendLine(Inv($"| {id} (uniform) | {m} | {f} | {c.Get("clipping_invocations")} | {c.GpuMs:G4} | {c.ComputeMs:G4} | {draw:G4} | {Still(still)} | {sms:G4} | {Ratio(c, sms)} | {draw / sms:F3}x | {Ratio(still, sms)} |"));
             }
             foreach (var (m, sm, sf) in BenchPlan.AdaptiveVsStatic(quick))
             {
@@ -228,14 +241,20 @@ namespace GregoryTerrain.Rig
                 var s = statics.FirstOrDefault(x => x.id == Inv($"fs_m{sm}_f{sf}"));
                 double sms = s.id == null ? double.NaN : s.ms;
                 string target = planned.TryGetValue(id, out var pt) ? pt : "?";
-                if (c == null || c.Exit != 0) { o.AppendLine(Inv($"| {id} (adaptive) | {m} | {target} | (incomplete) | | | {Still(still)} | {sms:G4} | | |")); continue; }
+                if (c == null || c.Exit != 0) { o.AppendLine(Inv($"| {id} (adaptive) | {m} | {target} | (incomplete) | | | | {Still(still)} | {sms:G4} | | | |")); continue; }
                 long tris = c.Get("clipping_invocations");
-                o.AppendLine(Inv($"| {id} (adaptive) | {m} | {target} | {tris} | {c.GpuMs:G4} | {c.ComputeMs:G4} | {Still(still)} | {sms:G4} | {Ratio(c, sms)} | {Ratio(still, sms)} |"));
+                double draw = c.GpuMs - c.ComputeMs;
+                o.AppendLine(Inv($"| {id} (adaptive) | {m} | {target} | {tris} | {c.GpuMs:G4} | {c.ComputeMs:G4} | {draw:G4} | {Still(still)} | {sms:G4} | {Ratio(c, sms)} | {draw / sms:F3}x | {Ratio(still, sms)} |"));
                 if (s.id != null)
-                    o.AppendLine(Inv($"- {id}: cached adaptive terrain {tris} triangles vs fair static {s.tris} ({100.0 * (tris - s.tris) / s.tris:+0.0;-0.0}%): {c.GpuMs:G4} ms / {s.ms:G4} ms = {c.GpuMs / s.ms:F3}x GPU with the pre-pass every frame")
-                        + (still != null && still.Skipped == null && still.Exit == 0 ? Inv($", {still.GpuMs / s.ms:F3}x with nothing changing") : ""));
+                {
+                    double pct = 100.0 * (tris - s.tris) / s.tris;
+                    notes.Add(Inv($"- {id}: cached adaptive terrain (noise, {m} tiles, target {target} px) {tris} triangles vs fair static {s.tris} ({(pct >= 0 ? "+" : "-")}{Math.Abs(pct):F2}%): {c.GpuMs:G4} ms / {s.ms:G4} ms = {c.GpuMs / s.ms:F3}x GPU with the pre-pass every frame")
+                        + (still != null && still.Skipped == null && still.Exit == 0 ? Inv($", {still.GpuMs / s.ms:F3}x with nothing changing") : Inv($", {draw / s.ms:F3}x for the frame minus the pre-pass (nothing-changes run not made)")));
+                }
             }
             o.AppendLine();
+            foreach (var l in notes) o.AppendLine(l);
+            if (notes.Count > 0) o.AppendLine();
         }
 
 

@@ -34,19 +34,17 @@ namespace GregoryTerrain.Rig
         }
 
         /// <summary>
-        /// The vertex cache's integer factors (kernel CacheTileFactors, cache_spec.md "Integer
-        /// factors") of the factors hull_const would give (Core's mirror): each of the six
-        /// ceil(clamp(F, 1, 64)); a culled tile all 0; unless all six are 1, each inside factor at
-        /// least 2 (the tessellator treats an inside 1 as 2 whenever anything else is subdivided).
+        /// The vertex cache's integer factors (kernel CacheTileFactors) of the factors hull_const would
+        /// give (Core's mirror), by Core's VertexCache.IntegerFactors (HLSL VertexCacheIntegerFactors),
+        /// in float as the kernel: each of the six ceil(clamp(F, 1, 64)); a culled tile all 0; unless
+        /// all six are 1, each inside factor at least 2 (the tessellator treats an inside 1 as 2
+        /// whenever anything else is subdivided).
         /// </summary>
         public PatchFactors CacheIntegers()
         {
             if (culled) return new PatchFactors { culled = true };
-            static double C(double x) => Math.Ceiling(Math.Min(Math.Max(x, 1.0), 64.0));
-            var r = new PatchFactors { e0 = C(e0), e1 = C(e1), e2 = C(e2), e3 = C(e3), i0 = C(i0), i1 = C(i1) };
-            bool allOne = r.e0 == 1 && r.e1 == 1 && r.e2 == 1 && r.e3 == 1 && r.i0 == 1 && r.i1 == 1;
-            if (!allOne) { r.i0 = Math.Max(r.i0, 2); r.i1 = Math.Max(r.i1, 2); }
-            return r;
+            var f = VertexCache.IntegerFactors(new TileFactorSet(new Float4((float)e0, (float)e1, (float)e2, (float)e3), new Float2((float)i0, (float)i1)));
+            return new PatchFactors { e0 = f.edge.x, e1 = f.edge.y, e2 = f.edge.z, e3 = f.edge.w, i0 = f.inside.x, i1 = f.inside.y };
         }
 
         /// <summary>
