@@ -280,7 +280,7 @@ namespace GregoryTerrain
         {
             get
             {
-                int limit = VertexCacheBudget.FactorLimit(new TessellationSettings(tiles, maxFactor, targetPixelError, uniformFactor).ToFloat4());
+                int limit = VertexCache.FactorLimit(new TessellationSettings(tiles, maxFactor, targetPixelError, uniformFactor).ToFloat4());
                 return VertexCacheBudget.TotalBytes(tiles, limit, SnowOn());
             }
         }
@@ -648,7 +648,7 @@ namespace GregoryTerrain
             }
             _cacheFallbackReason = null;
 
-            int limit = VertexCacheBudget.FactorLimit(_params.tess);
+            int limit = VertexCache.FactorLimit(_params.tess);
             long deviceLimit = SystemInfo.maxGraphicsBufferSize;
             try { VertexCacheBudget.CheckFits(tiles, limit, snow, deviceLimit > 0 ? deviceLimit : GpuLayout.MaxBufferBytes); }
             catch (ArgumentException e)

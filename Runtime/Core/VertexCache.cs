@@ -34,24 +34,40 @@ namespace GregoryTerrain
         /// <summary>The hardware's largest tessellation factor.</summary>
         public const float MaxFactor = TessellationSettings.HardwareMaxFactor;
 
-        /// <summary>float4 per record: (positionOS, absoluteHeight), (normalOS, colorNoise), and with snow (snowDepth, 0, 0, 0).</summary>
+        /// <summary>float4 per record (R): (positionOS, absoluteHeight), (normalOS, colorNoise), and with snow (snowDepth, 0, 0, 0).</summary>
         public static int Float4sPerRecord(bool snow) => snow ? 3 : 2;
 
-        /// <summary>L: the largest integer factor the settings can produce (the uniform factor when set, else the maximum factor), in [1, 64].</summary>
-        public static int FactorLimit(TessellationSettings t) => FactorLimit(t.ToFloat4());
-
-        /// <summary><see cref="FactorLimit(TessellationSettings)"/> from <c>_Tess</c> as packed.</summary>
+        /// <summary>
+        /// L from the <c>_Tess</c> float4 the GPU gets (<see cref="TessellationSettings.ToFloat4"/>:
+        /// (tiles, maxFactor, targetPixels, uniformFactor)): the uniform factor when set, else the
+        /// maximum factor, rounded up, in [1, 64]: the largest integer factor CacheTileFactors can give
+        /// a tile. Throws ArgumentException naming the component when the value it reads is not
+        /// finite (or w is negative).
+        /// </summary>
         public static int FactorLimit(Float4 tess)
         {
+            if (!GMath.isfinite(tess.w) || tess.w < 0f)
+                throw new ArgumentException(FormattableString.Invariant($"_Tess.w (uniformFactor, {tess.w:R}) must be finite and >= 0"), nameof(tess));
             float f = tess.w > 0f ? tess.w : tess.y;
+            if (!GMath.isfinite(f))
+                throw new ArgumentException(FormattableString.Invariant($"_Tess.y (maxFactor, {tess.y:R}) must be finite"), nameof(tess));
+            // The kernel rounds every factor up (63.2 -> 64 segments) and never below 1; ceil and the
+            // clamp commute, so the largest factor it can give is this.
             return (int)GMath.clamp(MathF.Ceiling(f), 1f, MaxFactor);
         }
 
-        /// <summary>(L + 1)^2 slots of the inside grid, then 4 edges of L + 1.</summary>
+        /// <summary>L of validated settings (the same number the shaders derive from <c>_Tess</c>).</summary>
+        public static int FactorLimit(TessellationSettings tessellation)
+        {
+            tessellation.Validate();
+            return FactorLimit(tessellation.ToFloat4());
+        }
+
+        /// <summary>S(L) = (L+1)^2 slots of the inside grid, then 4 edges of L + 1. Throws ArgumentException unless L lies in [1, 64].</summary>
         public static int SlotsPerTile(int limit)
         {
             if (limit < 1 || limit > (int)MaxFactor)
-                throw new ArgumentOutOfRangeException(nameof(limit), limit, "the factor limit must lie in [1, 64]");
+                throw new ArgumentException(FormattableString.Invariant($"factorLimit ({limit}) must lie in [1, {(int)MaxFactor}]"), nameof(limit));
             return (limit + 1) * (limit + 1) + 4 * (limit + 1);
         }
 
@@ -124,13 +140,6 @@ namespace GregoryTerrain
                     yield return (EdgeTess(e, k, fe), EdgeSlot(e, k, limit));
             }
         }
-
-        /// <summary>Bytes of <c>_TileFactors</c>: 2 float4 per tile.</summary>
-        public static long TileFactorBytes(int tiles) => 2L * 16L * tiles * tiles;
-
-        /// <summary>Bytes of <c>_VertexCache</c>: M^2 tiles of <see cref="SlotsPerTile"/> records.</summary>
-        public static long VertexBytes(int tiles, int limit, bool snow) =>
-            (long)tiles * tiles * SlotsPerTile(limit) * Float4sPerRecord(snow) * 16L;
 
         /// <summary>The record of a vertex (HLSL <c>VertexCacheRecordPart</c>), object space.</summary>
         public static Float4[] Record(TerrainVertexOutput v, bool snow)

@@ -3,10 +3,10 @@ using System;
 namespace GregoryTerrain
 {
     /// <summary>
-    /// Sizes of the vertex cache's two buffers (GT_VERTEX_CACHE; the cache spec's "Layout"), for the
-    /// Unity renderer and its inspector. Pure arithmetic from <c>_Tess</c>, M and the snow flag; the
-    /// slot layout itself (which slot a tess point lands in) is the shaders' and Core's
-    /// <c>VertexCache</c>'s business, this class only counts.
+    /// Sizes of the vertex cache's two buffers (GT_VERTEX_CACHE; internals.md, "Vertex cache"), for the
+    /// Unity renderer and its inspector. Pure arithmetic from M, the factor limit L
+    /// (<see cref="VertexCache.FactorLimit(Float4)"/>) and the snow flag; the slot layout itself is
+    /// <see cref="VertexCache"/>'s, this class only counts.
     /// <list type="bullet">
     /// <item>Factor limit <c>L</c>: <c>ceil(_Tess.w)</c> when <c>_Tess.w &gt; 0</c> (uniform), else
     /// <c>ceil(_Tess.y)</c> (max factor), clamped to [1, 64]: the largest integer factor the
@@ -20,46 +20,8 @@ namespace GregoryTerrain
     /// </summary>
     public static class VertexCacheBudget
     {
-        /// <summary>The largest factor limit (the hardware's largest tessellation factor).</summary>
-        public const int MaxFactorLimit = 64;
         /// <summary>float4 per tile in <c>_TileFactors</c>: (edges 0-3), (inside 0-1, culled, 0).</summary>
         public const int TileFactorFloat4s = 2;
-
-        /// <summary>
-        /// L from the <c>_Tess</c> float4 the GPU gets (<see cref="TessellationSettings.ToFloat4"/>:
-        /// (tiles, maxFactor, targetPixels, uniformFactor)). Throws ArgumentException naming the
-        /// component when the value it reads is not finite (or w is negative).
-        /// </summary>
-        public static int FactorLimit(Float4 tess)
-        {
-            if (!GMath.isfinite(tess.w) || tess.w < 0f)
-                throw new ArgumentException(FormattableString.Invariant($"_Tess.w (uniformFactor, {tess.w:R}) must be finite and >= 0"), nameof(tess));
-            float f = tess.w > 0f ? tess.w : tess.y;
-            if (!GMath.isfinite(f))
-                throw new ArgumentException(FormattableString.Invariant($"_Tess.y (maxFactor, {tess.y:R}) must be finite"), nameof(tess));
-            // The kernel rounds every factor up (63.2 -> 64 segments) and never below 1; ceil and the
-            // integer clamp commute, so the largest factor it can give is this.
-            double c = Math.Ceiling((double)f);
-            return (int)Math.Max(1.0, Math.Min(MaxFactorLimit, c));
-        }
-
-        /// <summary>L of validated settings (the same number the shaders derive from <c>_Tess</c>).</summary>
-        public static int FactorLimit(TessellationSettings tessellation)
-        {
-            tessellation.Validate();
-            return FactorLimit(tessellation.ToFloat4());
-        }
-
-        /// <summary>S(L) = (L+1)^2 + 4 (L+1). Throws ArgumentException unless L lies in [1, 64].</summary>
-        public static int SlotsPerTile(int factorLimit)
-        {
-            CheckFactorLimit(factorLimit);
-            int n = factorLimit + 1;
-            return n * n + 4 * n;
-        }
-
-        /// <summary>R: (position, height), (normal, colour noise), and with snow (snow depth, 0, 0, 0).</summary>
-        public static int Float4sPerRecord(bool snow) => snow ? 3 : 2;
 
         /// <summary>float4 elements of <c>_TileFactors</c>: 2 M^2.</summary>
         public static long TileFactorsFloat4s(int tiles)
@@ -75,7 +37,7 @@ namespace GregoryTerrain
         public static long VertexCacheFloat4s(int tiles, int factorLimit, bool snow)
         {
             CheckTiles(tiles);
-            return (long)tiles * tiles * SlotsPerTile(factorLimit) * Float4sPerRecord(snow);
+            return (long)tiles * tiles * VertexCache.SlotsPerTile(factorLimit) * VertexCache.Float4sPerRecord(snow);
         }
 
         /// <summary>Bytes of <c>_VertexCache</c>: 16 M^2 S(L) R.</summary>
@@ -101,18 +63,12 @@ namespace GregoryTerrain
             long cache = VertexCacheBytes(tiles, factorLimit, snow);
             if (cache > limit)
                 throw new ArgumentException(FormattableString.Invariant(
-                    $"the vertex cache for tiles = {tiles}, factor limit {factorLimit}{(snow ? ", snow" : "")} needs {cache} bytes (_VertexCache = M^2 ((L+1)^2 + 4 (L+1)) x {Float4sPerRecord(snow)} float4), more than the largest buffer, {limit} bytes; lower tiles or the max/uniform factor, or evaluate in the domain stage"),
+                    $"the vertex cache for tiles = {tiles}, factor limit {factorLimit}{(snow ? ", snow" : "")} needs {cache} bytes (_VertexCache = M^2 ((L+1)^2 + 4 (L+1)) x {VertexCache.Float4sPerRecord(snow)} float4), more than the largest buffer, {limit} bytes; lower tiles or the max/uniform factor, or evaluate in the domain stage"),
                     "tiles");
             long factors = TileFactorsBytes(tiles);
             if (factors > limit)
                 throw new ArgumentException(FormattableString.Invariant(
                     $"the tile factors for tiles = {tiles} need {factors} bytes (_TileFactors = 32 M^2), more than the largest buffer, {limit} bytes"), "tiles");
-        }
-
-        static void CheckFactorLimit(int factorLimit)
-        {
-            if (factorLimit < 1 || factorLimit > MaxFactorLimit)
-                throw new ArgumentException(FormattableString.Invariant($"factorLimit ({factorLimit}) must lie in [1, {MaxFactorLimit}]"), nameof(factorLimit));
         }
 
         static void CheckTiles(int tiles)

@@ -22,26 +22,26 @@ namespace GregoryTerrain.Tests
         [TestCase(200f, 0f, 64)]    // above the hardware limit: clamped down
         public void FactorLimitFollowsUniformElseMaxFactor(float maxFactor, float uniform, int expected)
         {
-            Assert.That(VertexCacheBudget.FactorLimit(new Float4(16f, maxFactor, 8f, uniform)), Is.EqualTo(expected));
+            Assert.That(VertexCache.FactorLimit(new Float4(16f, maxFactor, 8f, uniform)), Is.EqualTo(expected));
         }
 
         [Test]
         public void FactorLimitOfSettingsIsTheOneOfTheirTess()
         {
             var s = new TessellationSettings(16, 40.5f, 4f, 0f);
-            Assert.That(VertexCacheBudget.FactorLimit(s), Is.EqualTo(VertexCacheBudget.FactorLimit(s.ToFloat4())));
-            Assert.That(VertexCacheBudget.FactorLimit(s), Is.EqualTo(41));
-            Assert.Throws<ArgumentException>(() => VertexCacheBudget.FactorLimit(new TessellationSettings(16, 0.5f, 4f, 0f)));
+            Assert.That(VertexCache.FactorLimit(s), Is.EqualTo(VertexCache.FactorLimit(s.ToFloat4())));
+            Assert.That(VertexCache.FactorLimit(s), Is.EqualTo(41));
+            Assert.Throws<ArgumentException>(() => VertexCache.FactorLimit(new TessellationSettings(16, 0.5f, 4f, 0f)));
         }
 
         [Test]
         public void FactorLimitRejectsNonFiniteTess()
         {
-            var e = Assert.Throws<ArgumentException>(() => VertexCacheBudget.FactorLimit(new Float4(16f, float.NaN, 8f, 0f)));
+            var e = Assert.Throws<ArgumentException>(() => VertexCache.FactorLimit(new Float4(16f, float.NaN, 8f, 0f)));
             Assert.That(e.Message, Does.Contain("maxFactor").And.Contain("NaN"));
-            e = Assert.Throws<ArgumentException>(() => VertexCacheBudget.FactorLimit(new Float4(16f, 64f, 8f, float.PositiveInfinity)));
+            e = Assert.Throws<ArgumentException>(() => VertexCache.FactorLimit(new Float4(16f, 64f, 8f, float.PositiveInfinity)));
             Assert.That(e.Message, Does.Contain("uniformFactor"));
-            Assert.Throws<ArgumentException>(() => VertexCacheBudget.FactorLimit(new Float4(16f, 64f, 8f, -1f)));
+            Assert.Throws<ArgumentException>(() => VertexCache.FactorLimit(new Float4(16f, 64f, 8f, -1f)));
         }
 
         /// <summary>
@@ -56,7 +56,7 @@ namespace GregoryTerrain.Tests
         [TestCase(64)]
         public void SlotsPerTileHoldsEverySlotTheLayoutAddresses(int limit)
         {
-            int s = VertexCacheBudget.SlotsPerTile(limit);
+            int s = VertexCache.SlotsPerTile(limit);
             var interior = new HashSet<int>();
             int highest = -1;
             // Interior points (0 < i < Iu, 0 < j < Iv) at slot i + j (Iu + 1), every inside-factor pair.
@@ -89,9 +89,9 @@ namespace GregoryTerrain.Tests
         [Test]
         public void SlotsPerTileRejectsLimitsOutsideTheHardwareRange()
         {
-            var e = Assert.Throws<ArgumentException>(() => VertexCacheBudget.SlotsPerTile(0));
+            var e = Assert.Throws<ArgumentException>(() => VertexCache.SlotsPerTile(0));
             Assert.That(e.Message, Does.Contain("factorLimit").And.Contain("0"));
-            Assert.Throws<ArgumentException>(() => VertexCacheBudget.SlotsPerTile(65));
+            Assert.Throws<ArgumentException>(() => VertexCache.SlotsPerTile(65));
         }
 
         [Test]

@@ -47,11 +47,11 @@ namespace GregoryTerrain.Tests
         public void SizesFollowTheFormula()
         {
             Assert.That(VertexCache.SlotsPerTile(64), Is.EqualTo(65 * 65 + 4 * 65));
-            Assert.That(VertexCache.VertexBytes(32, 64, false), Is.EqualTo(32L * 32 * 4485 * 2 * 16));
-            Assert.That(VertexCache.VertexBytes(32, 64, true), Is.EqualTo(32L * 32 * 4485 * 3 * 16));
-            Assert.That(VertexCache.TileFactorBytes(16), Is.EqualTo(16L * 16 * 32));
-            Assert.That(() => VertexCache.SlotsPerTile(0), Throws.InstanceOf<ArgumentOutOfRangeException>());
-            Assert.That(() => VertexCache.SlotsPerTile(65), Throws.InstanceOf<ArgumentOutOfRangeException>());
+            Assert.That(VertexCacheBudget.VertexCacheBytes(32, 64, false), Is.EqualTo(32L * 32 * 4485 * 2 * 16));
+            Assert.That(VertexCacheBudget.VertexCacheBytes(32, 64, true), Is.EqualTo(32L * 32 * 4485 * 3 * 16));
+            Assert.That(VertexCacheBudget.TileFactorsBytes(16), Is.EqualTo(16L * 16 * 32));
+            Assert.That(() => VertexCache.SlotsPerTile(0), Throws.InstanceOf<ArgumentException>());
+            Assert.That(() => VertexCache.SlotsPerTile(65), Throws.InstanceOf<ArgumentException>());
         }
 
         /// <summary>

@@ -1,0 +1,225 @@
+// The vertex cache (GT_VERTEX_CACHE, internals.md "Vertex cache") on the GPU (lavapipe, through
+// gt-harness's compute pre-pass): the kernels' records against Core's float path, the cached draw
+// against the direct one, and the adaptive cache's factors and shared edges. They fail (never skip)
+// when the harness, lavapipe, glslang or gt-cli is missing: `gt setup` provides them.
+using System;
+using System.Collections.Generic;
+using System.Globalization;
+using System.IO;
+using System.Linq;
+using NUnit.Framework;
+
+namespace GregoryTerrain.Rig.Tests
+{
+    [TestFixture]
+    public class VertexCacheGpuTests
+    {
+        const string Cached = "noise+height_color+vertex_cache";
+        const string Direct = "noise+height_color";
+        const TerrainKeywords Keywords = TerrainKeywords.Noise | TerrainKeywords.HeightColor;
+
+        string _work, _spirv, _cli, _gridPath;
+        PatchGrid _grid;
+
+        [OneTimeSetUp]
+        public void BuildGridAndShaders()
+        {
+            _work = ReadbackRun.PrepareWork("rigtests-vertexcache");
+            _cli = ReadbackRun.Cli();
+            _gridPath = Path.Combine(_work, "grid.json");
+            ReadbackRun.Exec(_cli, new[] { "demo-grid", "--samples", "129", "--out", _gridPath }, null);
+            _grid = PatchGridJson.Read(File.ReadAllText(_gridPath));
+            _spirv = ReadbackRun.CompileVariants(_work, Cached, Direct);
+        }
+
+        /// <summary>What one cached frame left in the two cache buffers.</summary>
+        sealed class CacheFrame
+        {
+            public HarnessRun Run;
+            public TerrainInputs Inputs;
+            public float[] Factors, Records;
+            public int Tiles, Limit, Slots;
+
+            public TileFactorSet FactorsOf(int tile) => new TileFactorSet(
+                new Float4(Factors[8 * tile], Factors[8 * tile + 1], Factors[8 * tile + 2], Factors[8 * tile + 3]),
+                new Float2(Factors[8 * tile + 4], Factors[8 * tile + 5]));
+
+            public bool Culled(int tile) => Factors[8 * tile + 6] != 0f;
+
+            /// <summary>The record at a slot of a tile, as <see cref="VertexCache.Record"/> lays it out.</summary>
+            public Float4 Part(int tile, int slot, int part)
+            {
+                int o = 4 * (2 * (tile * Slots + slot) + part);
+                return new Float4(Records[o], Records[o + 1], Records[o + 2], Records[o + 3]);
+            }
+        }
+
+        /// <summary>
+        /// Packs a scene with gt-cli (zoom-view camera) and draws one frame of the cached variant:
+        /// both kernels, then the tile draw; dumps both cache buffers.
+        /// </summary>
+        CacheFrame DrawCached(string name, string range, int tiles, string[] tessArgs, int width, int height, float[] camera = null)
+        {
+            string dir = Path.Combine(_work, name);
+            var pack = new List<string> { "pack", "--grid", _gridPath, "--range", range, "--tiles", tiles.ToString(CultureInfo.InvariantCulture),
+                                          "--width", width.ToString(CultureInfo.InvariantCulture), "--height", height.ToString(CultureInfo.InvariantCulture), "--out", dir };
+            pack.AddRange(tessArgs);
+            ReadbackRun.Exec(_cli, pack.ToArray(), null);
+            if (camera != null) ReadbackRun.WriteFloats(Path.Combine(dir, "camera.f32"), camera);
+            var p = ReadParams(Path.Combine(dir, "params.f32"));
+            var frame = new CacheFrame { Tiles = tiles, Inputs = TerrainInputs.Create(_grid, p), Limit = VertexCache.FactorLimit(p.tess) };
+            frame.Slots = VertexCache.SlotsPerTile(frame.Limit);
+            string factors = Path.Combine(dir, "tile_factors.f32"), records = Path.Combine(dir, "vertex_cache.f32");
+            string v = Path.Combine(_spirv, Cached);
+            var args = new List<string>(ReadbackRun.Stages(_spirv, Cached));
+            args.AddRange(new[]
+            {
+                "--buffers", dir, "--patches", (tiles * tiles).ToString(CultureInfo.InvariantCulture),
+                "--width", width.ToString(CultureInfo.InvariantCulture), "--height", height.ToString(CultureInfo.InvariantCulture),
+                "--device", "llvmpipe", "--stats", "--png", Path.Combine(dir, "image.png"),
+                "--storage", "7:" + VertexCacheBudget.TileFactorsBytes(tiles).ToString(CultureInfo.InvariantCulture),
+                "--storage", "8:" + VertexCacheBudget.VertexCacheBytes(tiles, frame.Limit, false).ToString(CultureInfo.InvariantCulture),
+                "--compute", Path.Combine(v, "cache_factors.spv") + ":" + ((tiles * tiles + 63) / 64).ToString(CultureInfo.InvariantCulture) + ",1,1",
+                "--compute", Path.Combine(v, "cache_vertices.spv") + ":" + tiles.ToString(CultureInfo.InvariantCulture) + "," + tiles.ToString(CultureInfo.InvariantCulture) + ",1",
+                "--dump-storage", "7:" + factors, "--dump-storage", "8:" + records,
+            });
+            frame.Run = HarnessRun.Harness(args.ToArray());
+            frame.Run.AssertSucceeded();
+            frame.Factors = ReadbackRun.ReadFloats(factors);
+            frame.Records = ReadbackRun.ReadFloats(records);
+            Assert.That(frame.Factors.Length, Is.EqualTo(8 * tiles * tiles));
+            Assert.That(frame.Records.Length, Is.EqualTo(8 * tiles * tiles * frame.Slots));
+            return frame;
+        }
+
+        static TerrainParams ReadParams(string path)
+        {
+            float[] f = ReadbackRun.ReadFloats(path);
+            Float4 F(int i) => new Float4(f[4 * i], f[4 * i + 1], f[4 * i + 2], f[4 * i + 3]);
+            return new TerrainParams { range = F(0), rangeOrigin = F(1), gridSize = F(2), tess = F(3), noise = F(4),
+                                       noiseOctaves = F(5), heightColor = F(6), colorLow = F(7), colorHigh = F(8) };
+        }
+
+        /// <summary>
+        /// Every slot the kernel writes holds Core's float TerrainVertex at that point (position, normal,
+        /// absolute height, colour noise), and no other slot is touched.
+        /// </summary>
+        [Test]
+        public void CacheHoldsTheCoreVertexInEverySlotTheKernelWrites()
+        {
+            CacheFrame f = DrawCached("uniform", "0.2,0.15,0.7,0.65", 4, new[] { "--factor", "7" }, 96, 64);
+            double extent = ReadbackRun.TerrainExtent(_grid);
+            double maxPos = 0, maxNormal = 0, maxHeight = 0, maxColour = 0;
+            int compared = 0, stray = 0;
+            for (int tile = 0; tile < f.Tiles * f.Tiles; tile++)
+            {
+                Assert.That(f.FactorsOf(tile), Is.EqualTo(VertexCache.IntegerFactors(new TileFactorSet(new Float4(7, 7, 7, 7), new Float2(7, 7)))), "tile " + tile);
+                var written = new HashSet<int>();
+                foreach (var (tess, slot) in VertexCache.TilePoints(f.FactorsOf(tile), f.Limit))
+                {
+                    written.Add(slot);
+                    Float4[] core = VertexCache.Record(TerrainVertex.Evaluate(f.Inputs, tile, tess, Keywords), false);
+                    Float4 p = f.Part(tile, slot, 0), n = f.Part(tile, slot, 1);
+                    maxPos = Math.Max(maxPos, ReadbackRun.Distance(new Float3(p.x, p.y, p.z), new Float3(core[0].x, core[0].y, core[0].z)) / extent);
+                    maxNormal = Math.Max(maxNormal, ReadbackRun.Distance(new Float3(n.x, n.y, n.z), new Float3(core[1].x, core[1].y, core[1].z)));
+                    maxHeight = Math.Max(maxHeight, Math.Abs(p.w - core[0].w) / extent);
+                    maxColour = Math.Max(maxColour, Math.Abs(n.w - core[1].w));
+                    compared++;
+                }
+                for (int slot = 0; slot < f.Slots; slot++)
+                    if (!written.Contains(slot) && (!f.Part(tile, slot, 0).Equals(default(Float4)) || !f.Part(tile, slot, 1).Equals(default(Float4)))) stray++;
+            }
+            TestContext.Out.WriteLine("{0} cached vertices against Core: position {1:G3} of the extent, normal {2:G3}, absolute height {3:G3}, colour noise {4:G3}",
+                compared, maxPos, maxNormal, maxHeight, maxColour);
+            Assert.That(compared, Is.EqualTo(16 * (6 * 6 + 4 * 8)), "4 x 4 tiles, 6 x 6 interior points and 4 edges of 8 at F = 7");
+            Assert.That(stray, Is.EqualTo(0), "slots written that no point owns");
+            Assert.That(maxPos, Is.LessThan(1e-5));
+            Assert.That(maxNormal, Is.LessThan(1e-4));
+            Assert.That(maxHeight, Is.LessThan(1e-5));
+            Assert.That(maxColour, Is.LessThan(1e-4));
+        }
+
+        /// <summary>
+        /// At an odd integer uniform factor, fractional_odd and integer partitioning make the same
+        /// vertices, so the cached draw must show the direct draw's picture (the domain stage evaluates
+        /// at the tessellator's fixed-point coordinates, the kernel at exact k / F: sub-pixel shifts).
+        /// </summary>
+        [Test]
+        public void CachedDrawShowsTheDirectDrawsPicture()
+        {
+            CacheFrame cached = DrawCached("compare", "0,0,1,1", 8, new[] { "--factor", "7" }, 192, 128);
+            string dir = Path.Combine(_work, "compare");
+            string png = Path.Combine(dir, "direct.png");
+            HarnessRun direct = HarnessRun.Harness(ReadbackRun.Stages(_spirv, Direct).Concat(new[]
+            {
+                "--buffers", dir, "--patches", "64", "--width", "192", "--height", "128", "--device", "llvmpipe", "--stats", "--png", png,
+            }).ToArray());
+            direct.AssertSucceeded();
+            RigPng a = RigPng.Read(Path.Combine(dir, "image.png")), b = RigPng.Read(png);
+            int differing = a.PixelsDifferingFrom(b, 8);
+            long nonsky = direct.Long("image", "nonsky_pixels");
+            TestContext.Out.WriteLine("cached vs direct: {0} of {1} pixels differ by more than 8/255; non-sky {2} vs {3}; triangles {4} vs {5}",
+                differing, 192 * 128, cached.Run.Long("image", "nonsky_pixels"), nonsky,
+                cached.Run.Long("stat", "clipping_invocations"), direct.Long("stat", "clipping_invocations"));
+            Assert.That(nonsky, Is.GreaterThan(192 * 128 / 5), "the terrain fills the view");
+            Assert.That(cached.Run.Long("stat", "clipping_invocations"), Is.EqualTo(direct.Long("stat", "clipping_invocations")), "same triangles");
+            Assert.That(differing, Is.LessThan(192 * 128 / 200), "at most 0.5% of the pixels differ");
+        }
+
+        /// <summary>
+        /// Adaptive factors through the cache: integers within the limit, the inside rule, some tiles
+        /// culled, shared edges with equal factors and bit-identical vertices on both sides.
+        /// </summary>
+        [Test]
+        public void AdaptiveCacheIsIntegerAndWatertight()
+        {
+            // A low, narrow view into the range (object space is (x, height, y)): the tiles beside and
+            // behind it are out of the frustum.
+            float[] camera = ReadbackRun.PerspectiveCamera(new Double3(0.45, 0.12, 0.28), new Double3(0.47, 0.0, 0.6), 30, 192, 128, 0.01, 10);
+            CacheFrame f = DrawCached("adaptive", "0.25,0.3,0.65,0.7", 8, new[] { "--target-pixels", "1", "--max-factor", "16" }, 192, 128, camera);
+            int culled = 0, edgePairs = 0, vertexPairs = 0, differingVertices = 0;
+            var distinct = new HashSet<float>();
+            for (int tile = 0; tile < 64; tile++)
+            {
+                TileFactorSet t = f.FactorsOf(tile);
+                if (f.Culled(tile)) { culled++; Assert.That(t.IsCulled, Is.True); continue; }
+                foreach (float x in new[] { t.edge.x, t.edge.y, t.edge.z, t.edge.w, t.inside.x, t.inside.y })
+                {
+                    Assert.That(x, Is.EqualTo(MathF.Round(x)).And.InRange(1f, 16f), "tile " + tile + ": " + t);
+                    distinct.Add(x);
+                }
+                Assert.That(VertexCache.IntegerFactors(t), Is.EqualTo(t), "tile " + tile + ": already integer factors");
+            }
+            for (int tj = 0; tj < 8; tj++)
+                for (int ti = 0; ti < 8; ti++)
+                {
+                    int a = tj * 8 + ti;
+                    // (right neighbour: my edge 2 is its edge 0), (upper neighbour: my edge 3 is its edge 1)
+                    foreach (var (b, mine, theirs, ok) in new[] { (a + 1, 2, 0, ti + 1 < 8), (a + 8, 3, 1, tj + 1 < 8) })
+                    {
+                        if (!ok || f.Culled(a) || f.Culled(b)) continue;
+                        float fa = mine == 2 ? f.FactorsOf(a).edge.z : f.FactorsOf(a).edge.w;
+                        float fb = theirs == 0 ? f.FactorsOf(b).edge.x : f.FactorsOf(b).edge.y;
+                        edgePairs++;
+                        Assert.That(fa, Is.EqualTo(fb), $"shared edge of tiles {a} and {b}");
+                        for (int k = 0; k <= (int)fa; k++)
+                        {
+                            vertexPairs++;
+                            for (int part = 0; part < 2; part++)
+                                if (!f.Part(a, VertexCache.EdgeSlot(mine, k, f.Limit), part).Equals(f.Part(b, VertexCache.EdgeSlot(theirs, k, f.Limit), part)))
+                                { differingVertices++; break; }
+                        }
+                    }
+                }
+            int nan = f.Records.Count(x => !float.IsFinite(x));
+            TestContext.Out.WriteLine("adaptive cache: {0} of 64 tiles culled, factors used {1}, {2} shared edges, {3} shared-edge vertex pairs, {4} differ; {5} triangles",
+                culled, string.Join(" ", distinct.OrderBy(x => x)), edgePairs, vertexPairs, differingVertices, f.Run.Long("stat", "clipping_invocations"));
+            Assert.That(nan, Is.EqualTo(0));
+            Assert.That(culled, Is.GreaterThan(0), "the view leaves tiles out");
+            Assert.That(distinct.Count, Is.GreaterThan(2), "adaptive factors vary across the view");
+            Assert.That(edgePairs, Is.GreaterThan(20));
+            Assert.That(differingVertices, Is.EqualTo(0), "vertices on shared edges, bit for bit");
+            Assert.That(f.Run.Long("image", "nonsky_pixels"), Is.GreaterThan(192 * 128 / 5));
+        }
+    }
+}
