@@ -240,11 +240,11 @@ namespace GregoryTerrain.Rig
             Inv($"--storage 7:{TileFactorsBytes(t.tiles)} --storage 8:{VertexCacheBytes(t)} ")
             + Inv($"--compute @SPV@/{variant}/cache_factors.spv:{(t.tiles * t.tiles + 63) / 64},1,1 --compute @SPV@/{variant}/cache_vertices.spv:{t.tiles},{t.tiles},1");
 
-        /// <summary>_TileFactors: 2 float4 a tile (Core's VertexCache, the shaders' layout).</summary>
-        public static long TileFactorsBytes(int tiles) => VertexCache.TileFactorBytes(tiles);
+        /// <summary>_TileFactors: 2 float4 a tile (Core's VertexCacheBudget, the shaders' layout).</summary>
+        public static long TileFactorsBytes(int tiles) => VertexCacheBudget.TileFactorsBytes(tiles);
 
         /// <summary>_VertexCache: M^2 S(L) slots of 2 float4 (no GT_SNOW in the bench), L = ceil(uniform F or max factor).</summary>
-        public static long VertexCacheBytes(TessellationSettings t) => VertexCache.VertexBytes(t.tiles, VertexCache.FactorLimit(t), snow: false);
+        public static long VertexCacheBytes(TessellationSettings t) => VertexCacheBudget.VertexCacheBytes(t.tiles, VertexCache.FactorLimit(t), snow: false);
 
         /// <summary>
         /// The pixel target at which the adaptive terrain (noise, <paramref name="tiles"/> tiles, far view)
