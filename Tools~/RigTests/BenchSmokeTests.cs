@@ -42,7 +42,7 @@ namespace GregoryTerrain.Rig.Tests
         public void EveryMethodHasCompleteFiniteRows()
         {
             Assert.That(_output, Does.Not.Contain("incomplete"));
-            foreach (var m in new[] { "adaptive", "uniform", "paper", "fallback" })
+            foreach (var m in new[] { "adaptive", "uniform", "paper", "fallback", "cached adaptive", "cached uniform" })
             {
                 var rows = Rows(m);
                 Assert.That(rows.Length, Is.GreaterThanOrEqualTo(2), m);
@@ -62,9 +62,45 @@ namespace GregoryTerrain.Rig.Tests
         }
 
         [Test]
-        public void SmallerPixelTargetsGiveSmallerErrorsAndMoreTriangles()
+        public void VertexCacheRowsRunTheComputePrePassAndMatchTheirFactors()
         {
-            var rows = Rows("adaptive").OrderByDescending(r => D(r[3])).ToArray();   // target px, large to small
+            var rows = Rows("cached adaptive").Concat(Rows("cached uniform")).ToArray();
+            Assert.That(rows.Length, Is.GreaterThanOrEqualTo(5), "cached adaptive (3 targets) and cached uniform (2 factors)");
+            foreach (var r in rows)
+            {
+                Assert.That(D(r[12]), Is.GreaterThan(0), $"{r[0]} {r[2]} {r[3]}: compute ms");
+                Assert.That(D(r[12]), Is.LessThanOrEqualTo(D(r[8])), $"{r[0]} {r[2]} {r[3]}: the pre-pass is part of the frame");
+            }
+            foreach (var r in Rows("adaptive").Concat(Rows("uniform")))
+                Assert.That(r[12], Is.EqualTo("-"), "no compute column for the domain-stage rows");
+            // Cached uniform at an odd F draws what fractional_odd draws: the same triangles and error.
+            foreach (var c in Rows("cached uniform"))
+            {
+                var u = Rows("uniform").Single(r => r[2] == c[2] && r[5] == c[5]);
+                Assert.That(D(c[6]), Is.EqualTo(D(u[6])), $"F {c[2]}: triangles");
+                Assert.That(D(c[9]), Is.EqualTo(D(u[9])).Within(1e-6).Percent, $"F {c[2]}: max error px");
+            }
+            Assert.That(_output, Does.Contain("cached adaptive needs"), "the 4x goal for the vertex cache");
+            // The tessellator draws the integer-partitioning count of the dumped factors (rings included).
+            var model = System.Text.RegularExpressions.Regex.Match(_output, @"count of their dumped factors \(transition rings included\): largest difference ([0-9.eE+-]+)%");
+            Assert.That(model.Success, Is.True, "triangle model line");
+            Assert.That(D(model.Groups[1].Value), Is.LessThan(0.1), "GPU triangles vs the integer model, percent");
+            // The kernel's factors are Core's mirror made integer: at most a ceil flip where a float factor sits at an integer.
+            var core = System.Text.RegularExpressions.Regex.Match(_output, @"made integer \(VertexCache.IntegerFactors\): (\d+) of (\d+) drawn tiles differ \(culling or a factor\), largest factor difference ([0-9.eE+-]+)");
+            Assert.That(core.Success, Is.True, "factor comparison line");
+            Assert.That(D(core.Groups[2].Value), Is.GreaterThan(0));
+            Assert.That(D(core.Groups[1].Value), Is.LessThanOrEqualTo(0.02 * D(core.Groups[2].Value)), "tiles whose cache factors differ from Core's");
+            Assert.That(D(core.Groups[3].Value), Is.LessThanOrEqualTo(1), "largest factor difference");
+            Assert.That(_output, Does.Contain("The vertex cache (GT_VERTEX_CACHE) against the same fair static meshes"));
+            Assert.That(_output, Does.Match(@"\| fs_m8_f7 \(uniform\) \| 8 \| 7 \| \d+ \|"), "cached fair row ran");
+            Assert.That(_output, Does.Match(@"\| vc_m8_s8x7 \(adaptive\) \| 8 \| [0-9.]+ \| \d+ \|"), "cached adaptive fair row ran");
+        }
+
+        [TestCase("adaptive")]
+        [TestCase("cached adaptive")]
+        public void SmallerPixelTargetsGiveSmallerErrorsAndMoreTriangles(string method)
+        {
+            var rows = Rows(method + " |").OrderByDescending(r => D(r[3])).ToArray();   // target px, large to small
             Assert.That(rows.Length, Is.GreaterThanOrEqualTo(3));
             for (int i = 1; i < rows.Length; i++)
             {
@@ -73,7 +109,8 @@ namespace GregoryTerrain.Rig.Tests
                 Assert.That(D(rows[i][10]), Is.LessThan(D(rows[i - 1][10])), $"RMS error at target {rows[i][3]} vs {rows[i - 1][3]}");
             }
             // Uniform factors: error falls roughly as 1 / F^2.
-            var uni = Rows("uniform").OrderBy(r => D(r[2])).ToArray();
+            var uni = Rows(method == "adaptive" ? "uniform |" : "cached uniform |").OrderBy(r => D(r[2])).ToArray();
+            Assert.That(uni.Length, Is.GreaterThanOrEqualTo(2));
             for (int i = 1; i < uni.Length; i++)
                 Assert.That(D(uni[i][9]), Is.LessThan(D(uni[i - 1][9])));
         }

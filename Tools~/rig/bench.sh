@@ -31,9 +31,16 @@ make_plan() {  # make_plan DIR
   local dir=$1
   rm -rf "$dir"; mkdir -p "$dir"
   "${cli[@]}" bench-plan --grid "$grid" --out "$dir" "${quick[@]}" >&2
-  [ -d "$BUILD_DIR/spirv/factor_readback" ] || bash "$RIG_DIR/shaders.sh" -j "$(nproc)" >/dev/null
+  # The vertex cache's variants (GT_VERTEX_CACHE) carry their two compute kernels (cache_spec.md).
+  local cache=(vertex_cache noise+vertex_cache)
+  [ -d "$BUILD_DIR/spirv/factor_readback" ] && [ -f "$BUILD_DIR/spirv/${cache[1]}/cache_vertices.spv" ] \
+    || bash "$RIG_DIR/shaders.sh" -j "$(nproc)" >/dev/null
+  for v in "${cache[@]}"; do
+    [ -f "$BUILD_DIR/spirv/$v/cache_factors.spv" ] && [ -f "$BUILD_DIR/spirv/$v/cache_vertices.spv" ] \
+      || die "gt shaders wrote no $v/cache_factors.spv + cache_vertices.spv (GT_VERTEX_CACHE variants and kernels, cache_spec.md)"
+  done
   mkdir -p "$dir/spirv"
-  for v in base noise paper_mode paper_mode+noise factor_readback factor_readback+noise readback+noise; do
+  for v in base noise paper_mode paper_mode+noise factor_readback factor_readback+noise readback+noise "${cache[@]}"; do
     mkdir -p "$dir/spirv/$v"; cp "$BUILD_DIR/spirv/$v/"*.spv "$dir/spirv/$v/"
   done
   # The fair static mesh's vertex stage (rig only, GT_STATIC_MESH): reads baked vertices, same frag.

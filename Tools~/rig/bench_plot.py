@@ -11,13 +11,14 @@ rows = list(csv.DictReader(open(sys.argv[1]), delimiter="\t"))
 main_tiles = next(r["tiles"] for r in rows if r["method"] == "adaptive")
 fig, ax = plt.subplots(figsize=(8, 5.5))
 styles = {"paper": ("tab:red", "s", "paper's per-patch"), "uniform": ("tab:blue", "o", "tiles, uniform factor"),
-          "adaptive": ("tab:green", "^", "tiles, adaptive (pixel error)"), "fallback": ("tab:gray", "D", "fallback (no tessellator)")}
+          "adaptive": ("tab:green", "^", "tiles, adaptive (pixel error)"), "fallback": ("tab:gray", "D", "fallback (no tessellator)"),
+          "cached adaptive": ("tab:purple", "v", "tiles, cached adaptive (compute pre-pass, integer factors)")}
 for method, (color, marker, label) in styles.items():
     for octaves, dash in (("0", "-"), ("4", ":")):
         pts = sorted((float(r["gpu_ms"]), float(r["max_px"])) for r in rows
                      if r["method"] == method and r["octaves"] == octaves
                      and (method == "paper" or r["tiles"] == main_tiles)
-                     and (method != "adaptive" or float(r["maxfactor"]) == 64))
+                     and (not method.endswith("adaptive") or float(r["maxfactor"]) == 64))
         pts = [p for p in pts if p[0] > 0 and p[1] > 0]
         if pts:
             ax.plot([p[0] for p in pts], [p[1] for p in pts], dash, color=color, marker=marker,

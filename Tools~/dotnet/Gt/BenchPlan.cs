@@ -10,21 +10,26 @@ namespace GregoryTerrain.Rig
     sealed class BenchConfig
     {
         public string Method;       // paper | uniform | adaptive | fallback
+        public bool Cached;         // adaptive / uniform through the vertex cache (GT_VERTEX_CACHE, integer partitioning)
         public int Tiles = 16;
         public double Factor;       // uniform factor (paper, uniform, fallback)
         public double Target;       // pixel error (adaptive)
         public double MaxFactor = 64;
         public int Octaves;         // 0: GT_NOISE off
 
-        public string Name => Method switch
+        public string Name => (Cached ? "cached_" : "") + Method switch
         {
             "adaptive" => Inv($"adaptive_m{Tiles}_e{Target}_max{MaxFactor}_o{Octaves}"),
             "paper" => Inv($"paper_f{Factor}_o{Octaves}"),
             _ => Inv($"{Method}_m{Tiles}_f{Factor}_o{Octaves}"),
         };
 
+        /// <summary>The method as the tables name it: "cached adaptive", "cached uniform" for the vertex cache.</summary>
+        public string Label => Cached ? "cached " + Method : Method;
+
         public bool Noise => Octaves > 0;
-        public string Variant => Method == "paper" ? (Noise ? "paper_mode+noise" : "paper_mode") : (Noise ? "noise" : "base");
+        public string Variant => Method == "paper" ? (Noise ? "paper_mode+noise" : "paper_mode")
+            : Cached ? (Noise ? "noise+vertex_cache" : "vertex_cache") : (Noise ? "noise" : "base");
         public string FactorVariant => Noise ? "factor_readback+noise" : "factor_readback";
 
         static string Inv(FormattableString s) => s.ToString(CultureInfo.InvariantCulture);
@@ -34,7 +39,8 @@ namespace GregoryTerrain.Rig
     /// gt-cli bench-plan: writes everything one benchmark run needs, so the run itself is a shell
     /// script and the harness (the NVIDIA machine has no dotnet): the buffers of every
     /// (configuration, camera) pair, and plan.tsv, one harness job a line:
-    /// <c>ID KIND REF ARGS...</c> (tab-separated) where KIND is run (time + statistics), readback
+    /// <c>ID KIND REF ARGS...</c> (tab-separated) where KIND is run (time + statistics; vertex-cache
+    /// jobs also dump their _TileFactors to @OUT@/readback/ID.tiles.f32), readback
     /// (GT_FACTOR_READBACK factors), static-match (a static grid mesh with as many triangles as job
     /// REF drew) or static-bake (a GT_READBACK capture of the terrain's vertices, packed into
     /// @OUT@/static/REF for vert_static); ARGS may hold @SPV@, @JOB@, @OUT@ and @MESH@, filled in by
@@ -64,6 +70,9 @@ namespace GregoryTerrain.Rig
                 double[] few = quick ? new[] { 3.0, 15.0 } : factors;
                 foreach (double f in few) list.Add(new BenchConfig { Method = "paper", Tiles = 1, Factor = f, Octaves = o });
                 foreach (double f in few) list.Add(new BenchConfig { Method = "fallback", Tiles = tiles, Factor = f, Octaves = o });
+                // The vertex cache (compute pre-pass + integer partitioning) at the same targets and factors.
+                foreach (double e in targets) list.Add(new BenchConfig { Method = "adaptive", Cached = true, Tiles = tiles, Target = e, Octaves = o });
+                foreach (double f in quick ? new[] { 3.0, 15.0 } : factors) list.Add(new BenchConfig { Method = "uniform", Cached = true, Tiles = tiles, Factor = f, Octaves = o });
             }
             if (!quick)
             {
@@ -102,13 +111,15 @@ namespace GregoryTerrain.Rig
                     var scene = Scene(grid, cfg, range, width, height);
                     scene.WriteBuffers(Path.Combine(dir, "jobs", id));
                     int patches = cfg.Method == "paper" ? grid.PatchCount : cfg.Tiles * cfg.Tiles;
-                    meta.Append(Inv($"{id}\t{cfg.Method}\t{cfg.Tiles}\t{cfg.Factor}\t{cfg.Target}\t{cfg.MaxFactor}\t{cfg.Octaves}\t{cam}\t{patches}\n"));
+                    meta.Append(Inv($"{id}\t{cfg.Label}\t{cfg.Tiles}\t{cfg.Factor}\t{cfg.Target}\t{cfg.MaxFactor}\t{cfg.Octaves}\t{cam}\t{patches}\n"));
                     string buffers = "--buffers @JOB@/" + id;
-                    if (cfg.Method == "fallback")
+                    if (cfg.Cached)
+                        plan.Append($"{id}\trun\t-\t{Stages(cfg.Variant, fallback: false)} --patches {patches} {CacheArgs(cfg.Variant, scene.Tessellation)} --dump-storage 7:@OUT@/readback/{id}.tiles.f32 {buffers} {view} {timing}\n");
+                    else if (cfg.Method == "fallback")
                         plan.Append($"{id}\trun\t-\t{Stages(cfg.Variant, fallback: true)} --grid-factor {Inv($"{cfg.Factor}")} --instances {patches} {buffers} {view} {timing}\n");
                     else
                         plan.Append($"{id}\trun\t-\t{Stages(cfg.Variant, fallback: false)} --patches {patches} {buffers} {view} {timing}\n");
-                    if (cfg.Method == "adaptive")
+                    if (cfg.Method == "adaptive" && !cfg.Cached)
                         plan.Append($"{id}\treadback\t-\t{Stages(cfg.FactorVariant, fallback: false)} --patches {patches} {buffers} {view} --readback @OUT@/readback/{id}.f32 --readback-floats {8 * patches}\n");
                 }
             File.WriteAllText(Path.Combine(dir, "plan.tsv"), plan.ToString());
@@ -164,7 +175,11 @@ namespace GregoryTerrain.Rig
         /// (GT_READBACK capture on the device, packed by bench_static_mesh.py) and drawn by vert_static
         /// with the same frag and the same index grid, and the old minimal-shader grid (a floor). Then the
         /// adaptive terrain (noise, 64 tiles) at the target whose Core-predicted triangle count matches
-        /// each static size.
+        /// each static size. Beside each, the vertex cache (GT_VERTEX_CACHE, compute pre-pass, integer
+        /// partitioning): at the same uniform F ("cached", _Range changing every frame, so both kernels
+        /// run every frame), the adaptive terrain at the target whose integer-factor prediction matches
+        /// the static size (vc_*), and both with nothing changing ("still": the kernels dispatch in the
+        /// first, warm-up frame only, harness --compute-once; the later frames draw from the cache).
         /// </summary>
         static void FairStatic(PatchGrid grid, string dir, StringBuilder plan, StringBuilder meta, bool quick, int width, int height)
         {
@@ -175,7 +190,8 @@ namespace GregoryTerrain.Rig
             {
                 var cfg = new BenchConfig { Method = "uniform", Tiles = m, Factor = f, Octaves = 4 };
                 string id = Inv($"fs_m{m}_f{f}");
-                Scene(grid, cfg, CameraPath[0].range, width, height).WriteBuffers(Path.Combine(dir, "jobs", id));
+                var scene = Scene(grid, cfg, CameraPath[0].range, width, height);
+                scene.WriteBuffers(Path.Combine(dir, "jobs", id));
                 int patches = m * m;
                 long vertices = (long)patches * (f + 1) * (f + 1);
                 string buffers = $"--buffers @JOB@/{id}";
@@ -184,6 +200,9 @@ namespace GregoryTerrain.Rig
                 plan.Append($"{id}:bake\tstatic-bake\t{id}\t{Stages("readback+noise", true)} --grid-factor {f} --instances {patches} {buffers} {view} --readback @OUT@/capture/{id}.f32 --readback-floats {12 * vertices}\n");
                 plan.Append($"{id}:static\trun\t-\t--vert @SPV@/static.spv --frag @SPV@/noise/frag.spv --grid-factor {f} --instances {patches} --buffers @OUT@/static/{id} {view} {t}\n");
                 plan.Append($"{id}:floor\tstatic-match\t{id}:terrain\t--static-mesh --mesh @MESH@ --vert @SPV@/mesh.vert.spv --frag @SPV@/mesh.frag.spv {buffers} {view} {t}\n");
+                string cache = $"{Stages(CachedNoiseVariant, false)} --patches {patches} {CacheArgs(CachedNoiseVariant, scene.Tessellation)} {buffers} {view} {t}";
+                plan.Append($"{id}:cached\trun\t-\t{cache} --update-range-per-frame\n");
+                plan.Append($"{id}:cached-still\trun\t-\t{cache} --compute-once\n");
                 meta.Append(Inv($"{id}\tfair\t{m}\t{f}\t0\t{f}\t4\tfar\t{patches}\n"));
             }
             foreach (var (m, sm, sf) in AdaptiveVsStatic(quick))
@@ -195,23 +214,55 @@ namespace GregoryTerrain.Rig
                 Scene(grid, cfg, CameraPath[0].range, width, height).WriteBuffers(Path.Combine(dir, "jobs", id));
                 plan.Append($"{id}:terrain\trun\t-\t{Stages("noise", false)} --patches {m * m} --buffers @JOB@/{id} {view} {t} --update-range-per-frame\n");
                 meta.Append(Inv($"{id}\tadaptive-vs\t{m}\t0\t{target:G6}\t64\t4\tfar\t{m * m}\n"));
+
+                // The same through the vertex cache: its own target (integer factors draw more per factor).
+                double ctarget = TargetForTriangles(grid, m, want, width, height, cached: true);
+                var ccfg = new BenchConfig { Method = "adaptive", Cached = true, Tiles = m, Target = ctarget, Octaves = 4 };
+                string cid = Inv($"vc_m{m}_s{sm}x{sf}");
+                var cscene = Scene(grid, ccfg, CameraPath[0].range, width, height);
+                cscene.WriteBuffers(Path.Combine(dir, "jobs", cid));
+                string cache = $"{Stages(CachedNoiseVariant, false)} --patches {m * m} {CacheArgs(CachedNoiseVariant, cscene.Tessellation)} --buffers @JOB@/{cid} {view} {t}";
+                plan.Append($"{cid}:terrain\trun\t-\t{cache} --update-range-per-frame\n");
+                plan.Append($"{cid}:still\trun\t-\t{cache} --compute-once\n");
+                meta.Append(Inv($"{cid}\tcached-adaptive-vs\t{m}\t0\t{ctarget:G6}\t64\t4\tfar\t{m * m}\n"));
             }
         }
+
+        /// <summary>The cache variant of the fair comparison: the existing rows' keywords (GT_NOISE) plus GT_VERTEX_CACHE.</summary>
+        public const string CachedNoiseVariant = "noise+vertex_cache";
+
+        /// <summary>
+        /// The vertex cache's buffers and kernels for the harness (cache_spec.md): _TileFactors at
+        /// binding 7 (32 bytes a tile), _VertexCache at binding 8, CacheTileFactors over ceil(M^2 / 64)
+        /// groups, then CacheTileVertices over M x M groups, each frame before the draw.
+        /// </summary>
+        public static string CacheArgs(string variant, TessellationSettings t) =>
+            Inv($"--storage 7:{TileFactorsBytes(t.tiles)} --storage 8:{VertexCacheBytes(t)} ")
+            + Inv($"--compute @SPV@/{variant}/cache_factors.spv:{(t.tiles * t.tiles + 63) / 64},1,1 --compute @SPV@/{variant}/cache_vertices.spv:{t.tiles},{t.tiles},1");
+
+        /// <summary>_TileFactors: 2 float4 a tile (Core's VertexCacheBudget, the shaders' layout).</summary>
+        public static long TileFactorsBytes(int tiles) => VertexCacheBudget.TileFactorsBytes(tiles);
+
+        /// <summary>_VertexCache: M^2 S(L) slots of 2 float4 (no GT_SNOW in the bench), L = ceil(uniform F or max factor).</summary>
+        public static long VertexCacheBytes(TessellationSettings t) => VertexCacheBudget.VertexCacheBytes(t.tiles, VertexCache.FactorLimit(t), snow: false);
 
         /// <summary>
         /// The pixel target at which the adaptive terrain (noise, <paramref name="tiles"/> tiles, far view)
         /// draws about <paramref name="triangles"/> triangles by Core's mirror of hull_const: 2 n0 n1 per
         /// tile, n the odd segment count fractional_odd makes of each inside factor (the transition rings
-        /// are not counted). Bisection on log(target).
+        /// are not counted). <paramref name="cached"/>: the vertex cache's integer factors (ceil, inside
+        /// >= 2) and the exact integer-partitioning count, rings included (ModelTrianglesInteger).
+        /// Bisection on log(target).
         /// </summary>
-        public static double TargetForTriangles(PatchGrid grid, int tiles, double triangles, int width, int height)
+        public static double TargetForTriangles(PatchGrid grid, int tiles, double triangles, int width, int height, bool cached = false)
         {
             double lo = Math.Log(1e-4), hi = Math.Log(100);
             for (int it = 0; it < 24; it++)
             {
                 double mid = 0.5 * (lo + hi);
                 var cfg = new BenchConfig { Method = "adaptive", Tiles = tiles, Target = Math.Exp(mid), Octaves = 4 };
-                double n = ModelTriangles(ErrorCommand.CoreFactors(Scene(grid, cfg, CameraPath[0].range, width, height), noise: true));
+                var core = ErrorCommand.CoreFactors(Scene(grid, cfg, CameraPath[0].range, width, height), noise: true);
+                double n = cached ? ModelTrianglesInteger(core) : ModelTriangles(core);
                 if (n > triangles) lo = mid; else hi = mid;
             }
             return double.Parse(Math.Exp(0.5 * (lo + hi)).ToString("G4", CultureInfo.InvariantCulture), CultureInfo.InvariantCulture);
@@ -222,6 +273,14 @@ namespace GregoryTerrain.Rig
             static double Odd(double f) { double n = Math.Ceiling(Math.Min(Math.Max(f, 1), 63)); return n % 2 == 0 ? n + 1 : n; }
             double sum = 0;
             foreach (var p in factors) if (!p.culled) sum += 2 * Odd(p.i0) * Odd(p.i1);
+            return sum;
+        }
+
+        /// <summary>Triangles of the vertex cache's draw for Core's float factors: made integer as CacheTileFactors does, counted exactly.</summary>
+        public static double ModelTrianglesInteger(PatchFactors[] factors)
+        {
+            double sum = 0;
+            foreach (var p in factors) sum += TessellationCells.IntegerTriangles(p.CacheIntegers());
             return sum;
         }
 

@@ -12,7 +12,9 @@ namespace GregoryTerrain.Rig
     /// from any machine) into the tables: per configuration, over the camera path, the triangles,
     /// domain-shader invocations and GPU time per frame (means over the cameras) and the error of
     /// ErrorMeasure (largest over the path; RMS over all samples of the path); then the paper's
-    /// Table 1, the static-mesh comparison and the goals, as ratios.
+    /// Table 1, the static-mesh comparison and the goals, as ratios. Vertex-cache rows ("cached
+    /// adaptive", "cached uniform") also give the compute pre-pass's time (harness "time
+    /// compute_ms_median", part of the frame) and take their factors from the dumped _TileFactors.
     /// Usage: bench-report --plan DIR --raw DIR --grid FILE [--tsv FILE]
     /// </summary>
     static class BenchReport
@@ -20,8 +22,9 @@ namespace GregoryTerrain.Rig
         sealed class Job
         {
             public Dictionary<string, string> Stat = new Dictionary<string, string>();
-            public double GpuMs = double.NaN, CpuMs = double.NaN, CpuMeanMs = double.NaN;
+            public double GpuMs = double.NaN, CpuMs = double.NaN, CpuMeanMs = double.NaN, ComputeMs = double.NaN;
             public int Exit = -1;
+            public string Skipped;   // bench_run.sh's reason when the job did not run
             public long Get(string k) => Stat.TryGetValue(k, out var v) ? long.Parse(v, CultureInfo.InvariantCulture) : -1;
         }
 
@@ -44,14 +47,16 @@ namespace GregoryTerrain.Rig
             string name = jobs.Values.Select(j => j.Stat.TryGetValue("name", out var n) ? n : null).FirstOrDefault(n => n != null) ?? device;
             o.AppendLine($"# gt bench ({(quick ? "quick" : "full")}), {width}x{height}, device: {name}");
             o.AppendLine();
-            var tsv = new StringBuilder("method\ttiles\tfactor\ttarget\tmaxfactor\toctaves\ttriangles\tds_invocations\tgpu_ms\tmax_px\trms_px\tmax_world\tgpu_vs_core_factor\n");
-            o.AppendLine("| method | tiles | factor | target px | max F | octaves | triangles | DS invocations | GPU ms/frame | max err px | RMS err px | max err (terrain units) |");
-            o.AppendLine("| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |");
+            var tsv = new StringBuilder("method\ttiles\tfactor\ttarget\tmaxfactor\toctaves\ttriangles\tds_invocations\tgpu_ms\tmax_px\trms_px\tmax_world\tgpu_vs_core_factor\tcompute_ms\tmodel_triangles\n");
+            o.AppendLine("| method | tiles | factor | target px | max F | octaves | triangles | DS invocations | GPU ms/frame | max err px | RMS err px | max err (terrain units) | compute ms/frame |");
+            o.AppendLine("| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |");
+            double worstModel = 0; string worstModelId = null;
+            double cacheFactorDiff = 0; long cacheTilesDiffer = 0, cacheTilesDrawn = 0;
             var cfgs = BenchPlan.Sweep(quick);
             var path = quick ? new[] { BenchPlan.CameraPath[0], BenchPlan.CameraPath[2] } : BenchPlan.CameraPath;
             foreach (var cfg in cfgs)
             {
-                double tris = 0, ds = 0, gpu = 0, maxPx = 0, maxW = 0, sumSq = 0, factorDiff = 0;
+                double tris = 0, ds = 0, gpu = 0, maxPx = 0, maxW = 0, sumSq = 0, factorDiff = 0, compute = 0, model = 0;
                 long samples = 0;
                 bool complete = true;
                 foreach (var (cam, range) in path)
@@ -62,6 +67,33 @@ namespace GregoryTerrain.Rig
                     ds += cfg.Method == "fallback" ? j.Get("vertex_shader_invocations") : j.Get("tessellation_evaluation_shader_invocations");
                     gpu += j.GpuMs;
                     var scene = BenchPlan.Scene(grid, cfg, range, width, height);
+                    if (cfg.Cached)
+                    {
+                        // The vertex cache: the integer factors the kernel wrote (_TileFactors dump),
+                        // checked against Core's mirror made integer, and the exact triangle count
+                        // they imply against the GPU's clipping invocations.
+                        compute += j.ComputeMs;
+                        string tf = Path.Combine(rbDir, "readback", id + ".tiles.f32");
+                        if (!File.Exists(tf)) { complete = false; continue; }
+                        var cacheF = PatchFactors.FromTileFactors(BufferFiles.Read(tf), cfg.Tiles * cfg.Tiles);
+                        var coreI = ErrorCommand.CacheFactors(scene, cfg.Noise);
+                        factorDiff = Math.Max(factorDiff, MaxFactorDifference(cacheF, coreI));
+                        cacheFactorDiff = Math.Max(cacheFactorDiff, factorDiff);
+                        for (int p = 0; p < cacheF.Length; p++)
+                        {
+                            if (cacheF[p].culled && coreI[p].culled) continue;
+                            cacheTilesDrawn++;
+                            if (MaxFactorDifference(new[] { cacheF[p] }, new[] { coreI[p] }) != 0 || cacheF[p].culled != coreI[p].culled) cacheTilesDiffer++;
+                        }
+                        long m = cacheF.Sum(TessellationCells.IntegerTriangles), g = j.Get("clipping_invocations");
+                        model += m;
+                        double rel = Math.Abs(g - m) / Math.Max(1.0, m);
+                        if (rel >= worstModel) { worstModel = rel; worstModelId = $"{id}: GPU {g}, model {m}"; }
+                        var cerr = ErrorCommand.Measure(scene, false, cfg.Noise, cacheF, 1024, integerPartitioning: true);
+                        maxPx = Math.Max(maxPx, cerr.MaxPixels); maxW = Math.Max(maxW, cerr.MaxWorld);
+                        sumSq += cerr.RmsPixels * cerr.RmsPixels * cerr.Samples; samples += cerr.Samples;
+                        continue;
+                    }
                     float[] rb = null;
                     if (cfg.Method == "adaptive")
                     {
@@ -81,14 +113,26 @@ namespace GregoryTerrain.Rig
                 int n = path.Length;
                 double rms = samples > 0 ? Math.Sqrt(sumSq / samples) : double.NaN;
                 string c = complete ? "" : " (incomplete)";
-                o.AppendLine(Inv($"| {cfg.Method}{c} | {cfg.Tiles} | {(cfg.Method == "adaptive" ? "-" : cfg.Factor.ToString(CultureInfo.InvariantCulture))} | {(cfg.Method == "adaptive" ? cfg.Target.ToString(CultureInfo.InvariantCulture) : "-")} | {cfg.MaxFactor} | {cfg.Octaves} | {tris / n:F0} | {ds / n:F0} | {gpu / n:G4} | {maxPx:G3} | {rms:G3} | {maxW:G3} |"));
-                tsv.AppendLine(Inv($"{cfg.Method}\t{cfg.Tiles}\t{cfg.Factor}\t{cfg.Target}\t{cfg.MaxFactor}\t{cfg.Octaves}\t{tris / n:F0}\t{ds / n:F0}\t{gpu / n:G6}\t{maxPx:G6}\t{rms:G6}\t{maxW:G6}\t{factorDiff:G3}"));
+                string cm = cfg.Cached ? Inv($"{compute / n:G4}") : "-";
+                o.AppendLine(Inv($"| {cfg.Label}{c} | {cfg.Tiles} | {(cfg.Method == "adaptive" ? "-" : cfg.Factor.ToString(CultureInfo.InvariantCulture))} | {(cfg.Method == "adaptive" ? cfg.Target.ToString(CultureInfo.InvariantCulture) : "-")} | {cfg.MaxFactor} | {cfg.Octaves} | {tris / n:F0} | {ds / n:F0} | {gpu / n:G4} | {maxPx:G3} | {rms:G3} | {maxW:G3} | {cm} |"));
+                tsv.AppendLine(Inv($"{cfg.Label}\t{cfg.Tiles}\t{cfg.Factor}\t{cfg.Target}\t{cfg.MaxFactor}\t{cfg.Octaves}\t{tris / n:F0}\t{ds / n:F0}\t{gpu / n:G6}\t{maxPx:G6}\t{rms:G6}\t{maxW:G6}\t{factorDiff:G3}\t{(cfg.Cached ? compute / n : double.NaN):G6}\t{(cfg.Cached ? model / n : double.NaN):F0}"));
             }
             o.AppendLine();
             o.AppendLine("Triangles and DS invocations (vertex invocations for the fallback) are means per frame over the camera path; GPU time the mean of the per-camera medians; errors the largest (max) and RMS over every sample of the path.");
+            o.AppendLine("Cached rows (GT_VERTEX_CACHE): each frame runs the compute pre-pass (kernels CacheTileFactors, CacheTileVertices) before the draw; GPU ms is the whole frame, compute ms the pre-pass alone (mean of the per-camera medians); partitioning is integer, at the factors read back from _TileFactors.");
+            if (worstModelId != null)
+            {
+                o.AppendLine(Inv($"Cached rows' triangles against the integer-partitioning count of their dumped factors (transition rings included): largest difference {100 * worstModel:G3}% ({worstModelId})."));
+                o.AppendLine(Inv($"Cached rows' dumped factors against Core's mirror made integer (VertexCache.IntegerFactors): {cacheTilesDiffer} of {cacheTilesDrawn} drawn tiles differ (culling or a factor), largest factor difference {cacheFactorDiff:G3}."));
+            }
             o.AppendLine();
             Table1(o, jobs, quick);
-            Fair(o, jobs, quick);
+            // Targets chosen at plan time (jobs.tsv: id, method, tiles, factor, target, ...).
+            var planned = new Dictionary<string, string>();
+            string jobsTsv = Path.Combine(planDir, "jobs.tsv");
+            if (File.Exists(jobsTsv))
+                foreach (var l in File.ReadLines(jobsTsv).Skip(1)) { var c = l.Split('\t'); if (c.Length > 4) planned[c[0]] = c[4]; }
+            Fair(o, jobs, quick, planned);
             Goals(o, tsv.ToString());
             Console.Write(o.ToString());
             string tsvPath = a.String("tsv", Path.Combine(raw, "bench_table.tsv"));
@@ -97,15 +141,29 @@ namespace GregoryTerrain.Rig
             return 0;
         }
 
+        /// <summary>Largest factor difference over the tiles both draw (as for the GT_FACTOR_READBACK rows).</summary>
+        static double MaxFactorDifference(PatchFactors[] a, PatchFactors[] b)
+        {
+            double d = 0;
+            for (int p = 0; p < a.Length; p++)
+            {
+                if (a[p].culled || b[p].culled) continue;
+                foreach (var (x, y) in new[] { (a[p].e0, b[p].e0), (a[p].e1, b[p].e1), (a[p].e2, b[p].e2), (a[p].e3, b[p].e3), (a[p].i0, b[p].i0), (a[p].i1, b[p].i1) })
+                    d = Math.Max(d, Math.Abs(x - y));
+            }
+            return d;
+        }
+
         static void Table1(StringBuilder o, Dictionary<string, Job> jobs, bool quick)
         {
             o.AppendLine("## The paper's Table 1, and the static mesh");
             o.AppendLine();
             o.AppendLine("| case | triangles | GPU ms/frame (median) | CPU ms/frame (mean) | draws/s (1000 / CPU mean) |");
             o.AppendLine("| --- | ---: | ---: | ---: | ---: |");
-            foreach (var kv in jobs.Where(k => k.Key.StartsWith("t1_") || k.Key.StartsWith("fs_") || k.Key.StartsWith("va_")))
+            foreach (var kv in jobs.Where(k => k.Key.StartsWith("t1_") || k.Key.StartsWith("fs_") || k.Key.StartsWith("va_") || k.Key.StartsWith("vc_")))
             {
                 var j = kv.Value;
+                if (j.Skipped != null) { o.AppendLine($"| {kv.Key.Split(' ')[0]} | not run: {j.Skipped} | | | |"); continue; }
                 long tris = j.Get("clipping_invocations");
                 o.AppendLine(Inv($"| {kv.Key.Split(' ')[0]} | {tris} | {j.GpuMs:G4} | {j.CpuMeanMs:G4} | {1000.0 / j.CpuMeanMs:F1} |"));
             }
@@ -124,7 +182,7 @@ namespace GregoryTerrain.Rig
         }
 
         /// <summary>The fair static mesh: terrain, fallback, baked mesh with the same frag, the minimal floor; adaptive beside them.</summary>
-        static void Fair(StringBuilder o, Dictionary<string, Job> jobs, bool quick)
+        static void Fair(StringBuilder o, Dictionary<string, Job> jobs, bool quick, Dictionary<string, string> planned)
         {
             o.AppendLine("## The terrain against the fair static mesh (same vertices, same frag)");
             o.AppendLine();
@@ -153,7 +211,52 @@ namespace GregoryTerrain.Rig
                 o.AppendLine(Inv($"- {id}: package terrain (adaptive + noise, {m} tiles, range changing every frame) {tris} triangles, {t.GpuMs:G4} ms / fair static mesh ({s.id}) {s.tris} triangles, {s.ms:G4} ms = {t.GpuMs / s.ms:F3}x GPU ({t.GpuMs / tris * 1e6 / (s.ms / s.tris * 1e6):F3}x per triangle)"));
             }
             o.AppendLine();
+
+            // The vertex cache beside them: uniform F (same vertices as the terrain row) and the
+            // adaptive terrain at the target whose integer-factor prediction matches the static size.
+            o.AppendLine("### The vertex cache (GT_VERTEX_CACHE) against the same fair static meshes");
+            o.AppendLine();
+            o.AppendLine("Cached: compute pre-pass + draw, _Range changing every frame (both kernels run every frame); compute: the pre-pass alone (timestamp after the last dispatch); frame - compute: the rest of that frame (barrier + draw from the cache), derived, not a run of its own; nothing changes: the kernels run in the first (warm-up) frame only (harness --compute-once), the measured frames draw from the cache.");
+            o.AppendLine();
+            o.AppendLine("| cached terrain | tiles | F / target px | triangles | cached GPU ms | of which compute ms | frame - compute ms | nothing changes GPU ms | fair static GPU ms | cached / fair static | frame - compute / fair static | nothing changes / fair static |");
+            o.AppendLine("| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |");
+            string Still(Job j) => j == null ? "not run" : j.Skipped != null ? "not run (" + j.Skipped + ")" : j.Exit != 0 ? "failed" : Inv($"{j.GpuMs:G4}");
+            string Ratio(Job j, double ms) => j == null || j.Skipped != null || j.Exit != 0 || double.IsNaN(ms) ? "-" : Inv($"{j.GpuMs / ms:F3}x");
+            Job Any(string key) => jobs.TryGetValue(key, out var j) ? j : null;
+            var notes = new List<string>();
+            foreach (var (m, f) in BenchPlan.FairSizes(quick))
+            {
+                string id = Inv($"fs_m{m}_f{f}");
+                Job c = Any($"{id}:cached run"), still = Any($"{id}:cached-still run");
+                var s = statics.FirstOrDefault(x => x.id == id);
+                double sms = s.id == null ? double.NaN : s.ms;
+                if (c == null || c.Exit != 0) { o.AppendLine(Inv($"| {id} (uniform) | {m} | {f} | (incomplete) | | | | {Still(still)} | {sms:G4} | | | |")); continue; }
+                double draw = c.GpuMs - c.ComputeMs;
+                o.AppendLine(Inv($"| {id} (uniform) | {m} | {f} | {c.Get("clipping_invocations")} | {c.GpuMs:G4} | {c.ComputeMs:G4} | {draw:G4} | {Still(still)} | {sms:G4} | {Ratio(c, sms)} | {draw / sms:F3}x | {Ratio(still, sms)} |"));
+            }
+            foreach (var (m, sm, sf) in BenchPlan.AdaptiveVsStatic(quick))
+            {
+                string id = Inv($"vc_m{m}_s{sm}x{sf}");
+                Job c = Any($"{id}:terrain run"), still = Any($"{id}:still run");
+                var s = statics.FirstOrDefault(x => x.id == Inv($"fs_m{sm}_f{sf}"));
+                double sms = s.id == null ? double.NaN : s.ms;
+                string target = planned.TryGetValue(id, out var pt) ? pt : "?";
+                if (c == null || c.Exit != 0) { o.AppendLine(Inv($"| {id} (adaptive) | {m} | {target} | (incomplete) | | | | {Still(still)} | {sms:G4} | | | |")); continue; }
+                long tris = c.Get("clipping_invocations");
+                double draw = c.GpuMs - c.ComputeMs;
+                o.AppendLine(Inv($"| {id} (adaptive) | {m} | {target} | {tris} | {c.GpuMs:G4} | {c.ComputeMs:G4} | {draw:G4} | {Still(still)} | {sms:G4} | {Ratio(c, sms)} | {draw / sms:F3}x | {Ratio(still, sms)} |"));
+                if (s.id != null)
+                {
+                    double pct = 100.0 * (tris - s.tris) / s.tris;
+                    notes.Add(Inv($"- {id}: cached adaptive terrain (noise, {m} tiles, target {target} px) {tris} triangles vs fair static {s.tris} ({(pct >= 0 ? "+" : "-")}{Math.Abs(pct):F2}%): {c.GpuMs:G4} ms / {s.ms:G4} ms = {c.GpuMs / s.ms:F3}x GPU with the pre-pass every frame")
+                        + (still != null && still.Skipped == null && still.Exit == 0 ? Inv($", {still.GpuMs / s.ms:F3}x with nothing changing") : Inv($", {draw / s.ms:F3}x for the frame minus the pre-pass (nothing-changes run not made)")));
+                }
+            }
+            o.AppendLine();
+            foreach (var l in notes) o.AppendLine(l);
+            if (notes.Count > 0) o.AppendLine();
         }
+
 
         /// <summary>Adaptive vs uniform at a 1-pixel largest error (no noise): triangles each needs, log-interpolated.</summary>
         static void Goals(StringBuilder o, string tsv)
@@ -162,7 +265,7 @@ namespace GregoryTerrain.Rig
             double Need(string method)
             {
                 string mainTiles = rows.Where(r => r[0] == "adaptive").Select(r => r[1]).FirstOrDefault();
-                var pts = rows.Where(r => r[0] == method && r[5] == "0" && r[1] == mainTiles && (method != "adaptive" || r[4] == "64"))
+                var pts = rows.Where(r => r[0] == method && r[5] == "0" && r[1] == mainTiles && (!method.EndsWith("adaptive") || r[4] == "64"))
                               .Select(r => (tris: double.Parse(r[6], CultureInfo.InvariantCulture), err: double.Parse(r[9], CultureInfo.InvariantCulture)))
                               .Where(p => p.tris > 0).OrderBy(p => p.tris).ToList();
                 for (int i = 0; i < pts.Count; i++)
@@ -175,8 +278,9 @@ namespace GregoryTerrain.Rig
                 }
                 return double.NaN;
             }
-            double ad = Need("adaptive"), un = Need("uniform");
+            double ad = Need("adaptive"), un = Need("uniform"), ca = Need("cached adaptive");
             o.AppendLine(Inv($"- 1-pixel largest error on the camera path (no noise, the sweep's main tile count): adaptive needs {ad:F0} triangles, uniform {un:F0}: {un / ad:F2}x fewer with adaptive factors (goal >= 4x)"));
+            o.AppendLine(Inv($"- the same for the vertex cache (integer factors): cached adaptive needs {ca:F0} triangles, uniform {un:F0}: {un / ca:F2}x fewer (goal >= 4x)"));
         }
 
         static Dictionary<string, Job> ParseResults(string file)
@@ -189,11 +293,13 @@ namespace GregoryTerrain.Rig
                 if (w.Length == 0) continue;
                 if (w[0] == "==" && w.Length >= 3) { cur = new Job(); jobs[w[1] + " " + w[2]] = cur; continue; }
                 if (cur == null) continue;
+                if (w[0] == "skipped:") cur.Skipped = string.Join(" ", w.Skip(1));
                 if (w[0] == "stat" && w.Length >= 3) cur.Stat[w[1]] = w[2];
                 else if (w[0] == "device" && w.Length >= 3 && w[1] == "name") cur.Stat["name"] = string.Join(" ", w.Skip(2));
                 else if (w[0] == "time" && w.Length >= 3 && w[1] == "frame_ms_median") cur.GpuMs = D(w[2]);
                 else if (w[0] == "time" && w.Length >= 3 && w[1] == "cpu_frame_ms_median") cur.CpuMs = D(w[2]);
                 else if (w[0] == "time" && w.Length >= 3 && w[1] == "cpu_frame_ms_mean") cur.CpuMeanMs = D(w[2]);
+                else if (w[0] == "time" && w.Length >= 3 && w[1] == "compute_ms_median") cur.ComputeMs = D(w[2]);
                 else if (w[0] == "exit" && w.Length >= 2) cur.Exit = int.Parse(w[1], CultureInfo.InvariantCulture);
             }
             return jobs;

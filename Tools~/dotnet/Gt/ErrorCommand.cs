@@ -7,7 +7,11 @@ namespace GregoryTerrain.Rig
     /// (ErrorMeasure), for one scene (RigScene options) and its factors: read back from the GPU
     /// (--factors FILE, the GT_FACTOR_READBACK buffer) or the uniform factor (--factor F).
     /// --paper: the paper's per-patch mode (one drawn patch per Gregory patch). --with-noise: the
-    /// GT_NOISE variant (the surface includes the noise). Prints one "error ..." line.
+    /// GT_NOISE variant (the surface includes the noise). --vertex-cache: the GT_VERTEX_CACHE path,
+    /// integer partitioning at the cache's integer factors: from a dump of its _TileFactors buffer
+    /// (--tile-factors FILE, harness --dump-storage 7:FILE) or, without one, Core's mirror made
+    /// integer as the kernel does (PatchFactors.CacheIntegers); --write-tile-factors FILE writes those
+    /// Core factors in the dump's layout (to compare with a GPU dump). Prints one "error ..." line.
     /// </summary>
     static class ErrorCommand
     {
@@ -25,18 +29,57 @@ namespace GregoryTerrain.Rig
                     Console.WriteLine(FormattableString.Invariant($"tile {p} core {core[p].e0:G4} {core[p].e1:G4} {core[p].e2:G4} {core[p].e3:G4} in {core[p].i0:G4} {core[p].i1:G4}")
                         + (gpu == null ? "" : FormattableString.Invariant($" gpu {gpu[p].e0:G4} {gpu[p].e1:G4} {gpu[p].e2:G4} {gpu[p].e3:G4} in {gpu[p].i0:G4} {gpu[p].i1:G4}")));
             }
-            var result = Measure(scene, paper, noise, factorsFile == "" ? null : BufferFiles.Read(factorsFile), maxCells);
+            ErrorResult result;
+            if (a.Flag("vertex-cache"))
+            {
+                string tileFactors = a.String("tile-factors", "");
+                var f = tileFactors != "" ? PatchFactors.FromTileFactors(BufferFiles.Read(tileFactors), scene.Tessellation.tiles * scene.Tessellation.tiles)
+                                          : CacheFactors(scene, noise);
+                string write = a.String("write-tile-factors", "");
+                if (write != "") BufferFiles.Write(write, PatchFactors.ToTileFactors(CacheFactors(scene, noise)));
+                result = Measure(scene, false, noise, f, maxCells, integerPartitioning: true);
+            }
+            else result = Measure(scene, paper, noise, factorsFile == "" ? null : BufferFiles.Read(factorsFile), maxCells);
             Console.WriteLine(result);
             return 0;
         }
 
+        /// <summary>
+        /// The vertex cache's integer factors for the scene as Core predicts them: the uniform factor,
+        /// or Core's mirror of hull_const, each made integer as kernel CacheTileFactors does.
+        /// </summary>
+        public static PatchFactors[] CacheFactors(RigScene scene, bool noise)
+        {
+            var t = scene.Tessellation;
+            PatchFactors[] f;
+            if (t.IsUniform)
+            {
+                f = new PatchFactors[t.tiles * t.tiles];
+                for (int p = 0; p < f.Length; p++) f[p] = PatchFactors.Uniform(t.uniformFactor);
+            }
+            else f = CoreFactors(scene, noise);
+            for (int p = 0; p < f.Length; p++) f[p] = f[p].CacheIntegers();
+            return f;
+        }
+
         public static ErrorResult Measure(RigScene scene, bool paper, bool noise, float[] factorReadback, int maxCells, bool integerPartitioning = false)
+        {
+            int patches = paper ? scene.Grid.PatchCount : scene.Tessellation.tiles * scene.Tessellation.tiles;
+            return Measure(scene, paper, noise, factorReadback != null ? PatchFactors.FromReadback(factorReadback, patches) : null, maxCells, integerPartitioning);
+        }
+
+        /// <summary>
+        /// The error of the scene drawn with these per-patch factors (null: the uniform factor, or
+        /// Core's mirror of hull_const for adaptive settings); integerPartitioning: ceil(F) equal
+        /// segments (vertex cache, fallback grid), else fractional_odd.
+        /// </summary>
+        public static ErrorResult Measure(RigScene scene, bool paper, bool noise, PatchFactors[] factors, int maxCells, bool integerPartitioning)
         {
             var t = scene.Tessellation;
             int patches = paper ? scene.Grid.PatchCount : t.tiles * t.tiles;
-            PatchFactors[] factors;
-            if (factorReadback != null) factors = PatchFactors.FromReadback(factorReadback, patches);
-            else
+            if (factors != null && factors.Length != patches)
+                throw new ArgumentException($"{factors.Length} patch factors given, {patches} patches drawn");
+            if (factors == null)
             {
                 if (!t.IsUniform && paper) throw new ArgumentException("--paper needs --factor F (the paper's method is uniform)");
                 if (!t.IsUniform) factors = CoreFactors(scene, noise);   // no readback: Core's mirror of hull_const

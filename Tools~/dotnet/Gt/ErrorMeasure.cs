@@ -32,6 +32,73 @@ namespace GregoryTerrain.Rig
             }
             return f;
         }
+
+        /// <summary>
+        /// The vertex cache's integer factors (kernel CacheTileFactors) of the factors hull_const would
+        /// give (Core's mirror), by Core's VertexCache.IntegerFactors (HLSL VertexCacheIntegerFactors),
+        /// in float as the kernel: each of the six ceil(clamp(F, 1, 64)); a culled tile all 0; unless
+        /// all six are 1, each inside factor at least 2 (the tessellator treats an inside 1 as 2
+        /// whenever anything else is subdivided).
+        /// </summary>
+        public PatchFactors CacheIntegers()
+        {
+            if (culled) return new PatchFactors { culled = true };
+            var f = VertexCache.IntegerFactors(new TileFactorSet(new Float4((float)e0, (float)e1, (float)e2, (float)e3), new Float2((float)i0, (float)i1)));
+            return new PatchFactors { e0 = f.edge.x, e1 = f.edge.y, e2 = f.edge.z, e3 = f.edge.w, i0 = f.inside.x, i1 = f.inside.y };
+        }
+
+        /// <summary>
+        /// Reads a dump of the vertex cache's <c>_TileFactors</c> (binding 7, harness --dump-storage):
+        /// 2 float4 per tile, (edge0..3), (inside0, inside1, culled 1/0, 0), and checks the contract the
+        /// domain stage's slot grid relies on: a culled tile is all 0; a drawn one has six integers in
+        /// [1, 64] and, unless all six are 1, inside factors of at least 2. A tile the kernel never
+        /// wrote (the buffer starts zero-filled) reads as drawn with factor 0 and is refused.
+        /// </summary>
+        /// <summary>The layout FromTileFactors reads (2 float4 a tile), e.g. for Core's prediction.</summary>
+        public static float[] ToTileFactors(PatchFactors[] f)
+        {
+            var r = new float[8 * f.Length];
+            for (int p = 0; p < f.Length; p++)
+            {
+                if (f[p].culled) { r[8 * p + 6] = 1f; continue; }
+                var v = new[] { f[p].e0, f[p].e1, f[p].e2, f[p].e3, f[p].i0, f[p].i1 };
+                for (int k = 0; k < 6; k++) r[8 * p + k] = (float)v[k];
+            }
+            return r;
+        }
+
+        public static PatchFactors[] FromTileFactors(float[] r, int tiles)
+        {
+            if (r.Length < 8 * tiles)
+                throw new FormatException($"_TileFactors dump holds {r.Length} floats, {8 * tiles} expected for {tiles} tiles");
+            var f = new PatchFactors[tiles];
+            for (int p = 0; p < tiles; p++)
+            {
+                int o = 8 * p;
+                string Where() => $"_TileFactors tile {p} ({string.Join(", ", Array.ConvertAll(r[o..(o + 8)], x => x.ToString("R", System.Globalization.CultureInfo.InvariantCulture)))})";
+                if (r[o + 7] != 0f) throw new FormatException($"{Where()}: the last float is not 0");
+                if (r[o + 6] == 1f)
+                {
+                    for (int k = 0; k < 6; k++)
+                        if (r[o + k] != 0f) throw new FormatException($"{Where()}: culled, but its factors are not all 0");
+                    f[p] = new PatchFactors { culled = true };
+                    continue;
+                }
+                if (r[o + 6] != 0f) throw new FormatException($"{Where()}: culled flag is neither 0 nor 1");
+                for (int k = 0; k < 6; k++)
+                {
+                    float x = r[o + k];
+                    if (!(x >= 1f && x <= 64f) || x != MathF.Floor(x))
+                        throw new FormatException($"{Where()}: factor {k} is not an integer in [1, 64]" + (x == 0f ? " (never written?)" : ""));
+                }
+                var t = new PatchFactors { e0 = r[o], e1 = r[o + 1], e2 = r[o + 2], e3 = r[o + 3], i0 = r[o + 4], i1 = r[o + 5] };
+                bool allOne = t.e0 == 1 && t.e1 == 1 && t.e2 == 1 && t.e3 == 1 && t.i0 == 1 && t.i1 == 1;
+                if (!allOne && (t.i0 < 2 || t.i1 < 2))
+                    throw new FormatException($"{Where()}: an inside factor is 1 while another factor is above 1 (the cache makes it 2)");
+                f[p] = t;
+            }
+            return f;
+        }
     }
 
     /// <summary>The largest and RMS distance between the drawn triangles and the exact surface.</summary>
@@ -98,7 +165,9 @@ namespace GregoryTerrain.Rig
             Func<double, double[]> cut = fractionalOdd ? (Func<double, double[]>)TessellationCells.FractionalOdd : TessellationCells.Integer;
             double[] us = cut(f.i0), vs = cut(f.i1);
             int nu = us.Length - 1, nv = vs.Length - 1;
-            r.Triangles = 2L * nu * nv;   // inside grid as if it reached the border (model count)
+            // fractional_odd: the inside grid as if it reached the border (a model count); integer:
+            // the tessellator's exact count, transition rings included.
+            r.Triangles = fractionalOdd ? 2L * nu * nv : TessellationCells.IntegerTriangles(f);
             int stride = Math.Max(1, (int)Math.Ceiling(Math.Sqrt((double)nu * nv / maxCells)));
 
             void Sample(double[] a, double[] b, double[] exactAt)   // a, b: interpolated end points; exactAt: (s, t)

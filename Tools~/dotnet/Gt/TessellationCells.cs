@@ -9,7 +9,8 @@ namespace GregoryTerrain.Rig
     /// left over share the rest, placed symmetrically (at the ends for n = 3, beside the centre
     /// segment otherwise). The hardware's exact placement differs (it is implementation-defined in
     /// detail), but the longest segment is 1/F in both, and that is what bounds the error.
-    /// <c>integer</c>: n = ceil(F) equal segments.
+    /// <c>integer</c>: n = ceil(F) equal segments (the vertex cache's partitioning, GT_VERTEX_CACHE:
+    /// the tessellator's vertices sit exactly at i/n; the fallback grid).
     /// </summary>
     static class TessellationCells
     {
@@ -35,13 +36,36 @@ namespace GregoryTerrain.Rig
             return x;
         }
 
-        /// <summary>n = ceil(F) equal segments (integer partitioning, the uniform benchmarks).</summary>
+        /// <summary>
+        /// n = ceil(F) equal segments (integer partitioning: the vertex cache, the fallback grid);
+        /// 1 for F &lt;= 1. A factor a hair above an integer (1e-9) counts as that integer.
+        /// </summary>
         public static double[] Integer(double factor)
         {
+            if (double.IsNaN(factor) || factor < 0 || factor > 64)
+                throw new ArgumentException($"factor ({factor}) must lie in [0, 64]", nameof(factor));
             int n = Math.Max(1, (int)Math.Ceiling(factor - 1e-9));
             var x = new double[n + 1];
             for (int i = 0; i <= n; i++) x[i] = (double)i / n;
             return x;
+        }
+
+        /// <summary>
+        /// The triangles the tessellator makes of one quad patch with integer partitioning and these
+        /// (already integer) factors, transition rings included: two triangles when all six are 1;
+        /// otherwise (inside factors at least 2, as the cache makes them) an inner grid of
+        /// (i0 - 2) x (i1 - 2) quads and, per side, a strip joining the side's e segments to the inner
+        /// rectangle's (i - 2): e + i - 2 triangles. Uniform n gives 2 n^2. 0 for a culled patch.
+        /// </summary>
+        public static long IntegerTriangles(PatchFactors f)
+        {
+            if (f.culled || f.e0 <= 0 || f.e1 <= 0 || f.e2 <= 0 || f.e3 <= 0) return 0;
+            long N(double x) => Math.Max(1, (long)Math.Ceiling(x - 1e-9));
+            long e0 = N(f.e0), e1 = N(f.e1), e2 = N(f.e2), e3 = N(f.e3), i0 = N(f.i0), i1 = N(f.i1);
+            if (e0 == 1 && e1 == 1 && e2 == 1 && e3 == 1 && i0 == 1 && i1 == 1) return 2;
+            i0 = Math.Max(i0, 2); i1 = Math.Max(i1, 2);
+            // Edges e1 (v = 0) and e3 (v = 1) run along u, beside the inner rectangle's i0 - 2 segments.
+            return 2 * (i0 - 2) * (i1 - 2) + e1 + e3 + 2 * (i0 - 2) + e0 + e2 + 2 * (i1 - 2);
         }
     }
 }
