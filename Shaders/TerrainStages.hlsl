@@ -170,6 +170,11 @@ TerrainVaryings vert_static(uint vertexID : SV_VertexID, uint instanceID : SV_In
     TerrainVaryings o = (TerrainVaryings)0;
     o.positionCS = GT_ObjectToClip(_ControlPoints[2u * v].xyz);
     o.normalWS = GT_ObjectToWorldNormal(_ControlPoints[2u * v + 1u].xyz);
+#if defined(GT_HEIGHT_COLOR)
+    // The baked height (object y; the benchmark draws no range origin) and no colour noise: the frag
+    // does the same work, the vertex stage less than the terrain's.
+    o.heightAndColorNoise = float2(_ControlPoints[2u * v].y, 0.0);
+#endif
     return o;
 }
 #endif

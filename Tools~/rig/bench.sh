@@ -31,21 +31,22 @@ make_plan() {  # make_plan DIR
   local dir=$1
   rm -rf "$dir"; mkdir -p "$dir"
   "${cli[@]}" bench-plan --grid "$grid" --out "$dir" "${quick[@]}" >&2
-  # The vertex cache's variants (GT_VERTEX_CACHE) carry their two compute kernels (cache_spec.md).
-  local cache=(vertex_cache noise+vertex_cache)
+  # The vertex cache's variants (GT_VERTEX_CACHE) carry their two compute kernels (internals.md, "Vertex cache").
+  local cache=(vertex_cache noise+vertex_cache noise+height_color+vertex_cache)
   [ -d "$BUILD_DIR/spirv/factor_readback" ] && [ -f "$BUILD_DIR/spirv/${cache[1]}/cache_vertices.spv" ] \
     || bash "$RIG_DIR/shaders.sh" -j "$(nproc)" >/dev/null
   for v in "${cache[@]}"; do
     [ -f "$BUILD_DIR/spirv/$v/cache_factors.spv" ] && [ -f "$BUILD_DIR/spirv/$v/cache_vertices.spv" ] \
-      || die "gt shaders wrote no $v/cache_factors.spv + cache_vertices.spv (GT_VERTEX_CACHE variants and kernels, cache_spec.md)"
+      || die "gt shaders wrote no $v/cache_factors.spv + cache_vertices.spv (GT_VERTEX_CACHE variants and kernels, internals.md)"
   done
   mkdir -p "$dir/spirv"
-  for v in base noise paper_mode paper_mode+noise factor_readback factor_readback+noise readback+noise "${cache[@]}"; do
+  for v in base noise noise+height_color paper_mode paper_mode+noise factor_readback factor_readback+noise readback+noise "${cache[@]}"; do
     mkdir -p "$dir/spirv/$v"; cp "$BUILD_DIR/spirv/$v/"*.spv "$dir/spirv/$v/"
   done
-  # The fair static mesh's vertex stage (rig only, GT_STATIC_MESH): reads baked vertices, same frag.
+  # The fair static mesh's vertex stage (rig only, GT_STATIC_MESH): reads baked vertices, same frag
+  # (noise+height_color's, so GT_HEIGHT_COLOR: it hands the frag the baked height).
   glslangValidator -D -V -S vert -e vert_static --hlsl-iomap --shift-cbuffer-binding 0 --shift-texture-binding 2 \
-    --shift-UAV-binding 5 -DGT_STATIC_MESH -o "$dir/spirv/static.spv" "$PKG_DIR/Shaders/Rig/TerrainRig.hlsl" >/dev/null
+    --shift-UAV-binding 5 -DGT_STATIC_MESH -DGT_HEIGHT_COLOR -o "$dir/spirv/static.spv" "$PKG_DIR/Shaders/Rig/TerrainRig.hlsl" >/dev/null
   bash "$TOOLS_DIR/harness/test/compile.sh" "$dir/mesh-spv" >/dev/null
   cp "$dir/mesh-spv/mesh.vert.spv" "$dir/mesh-spv/mesh.frag.spv" "$dir/spirv/"; rm -rf "$dir/mesh-spv"
   cp "$RIG_DIR/bench_run.sh" "$RIG_DIR/bench_static_mesh.py" "$TOOLS_DIR/harness/test/make_grid_mesh.py" "$dir/"

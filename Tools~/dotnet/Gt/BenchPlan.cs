@@ -195,10 +195,10 @@ namespace GregoryTerrain.Rig
                 int patches = m * m;
                 long vertices = (long)patches * (f + 1) * (f + 1);
                 string buffers = $"--buffers @JOB@/{id}";
-                plan.Append($"{id}:terrain\trun\t-\t{Stages("noise", false)} --patches {patches} {buffers} {view} {t} --update-range-per-frame\n");
-                plan.Append($"{id}:fallback\trun\t-\t{Stages("noise", true)} --grid-factor {f} --instances {patches} {buffers} {view} {t} --update-range-per-frame\n");
+                plan.Append($"{id}:terrain\trun\t-\t{Stages(FairVariant, false)} --patches {patches} {buffers} {view} {t} --update-range-per-frame\n");
+                plan.Append($"{id}:fallback\trun\t-\t{Stages(FairVariant, true)} --grid-factor {f} --instances {patches} {buffers} {view} {t} --update-range-per-frame\n");
                 plan.Append($"{id}:bake\tstatic-bake\t{id}\t{Stages("readback+noise", true)} --grid-factor {f} --instances {patches} {buffers} {view} --readback @OUT@/capture/{id}.f32 --readback-floats {12 * vertices}\n");
-                plan.Append($"{id}:static\trun\t-\t--vert @SPV@/static.spv --frag @SPV@/noise/frag.spv --grid-factor {f} --instances {patches} --buffers @OUT@/static/{id} {view} {t}\n");
+                plan.Append($"{id}:static\trun\t-\t--vert @SPV@/static.spv --frag @SPV@/{FairVariant}/frag.spv --grid-factor {f} --instances {patches} --buffers @OUT@/static/{id} {view} {t}\n");
                 plan.Append($"{id}:floor\tstatic-match\t{id}:terrain\t--static-mesh --mesh @MESH@ --vert @SPV@/mesh.vert.spv --frag @SPV@/mesh.frag.spv {buffers} {view} {t}\n");
                 string cache = $"{Stages(CachedNoiseVariant, false)} --patches {patches} {CacheArgs(CachedNoiseVariant, scene.Tessellation)} {buffers} {view} {t}";
                 plan.Append($"{id}:cached\trun\t-\t{cache} --update-range-per-frame\n");
@@ -212,7 +212,7 @@ namespace GregoryTerrain.Rig
                 var cfg = new BenchConfig { Method = "adaptive", Tiles = m, Target = target, Octaves = 4 };
                 string id = Inv($"va_m{m}_s{sm}x{sf}");
                 Scene(grid, cfg, CameraPath[0].range, width, height).WriteBuffers(Path.Combine(dir, "jobs", id));
-                plan.Append($"{id}:terrain\trun\t-\t{Stages("noise", false)} --patches {m * m} --buffers @JOB@/{id} {view} {t} --update-range-per-frame\n");
+                plan.Append($"{id}:terrain\trun\t-\t{Stages(FairVariant, false)} --patches {m * m} --buffers @JOB@/{id} {view} {t} --update-range-per-frame\n");
                 meta.Append(Inv($"{id}\tadaptive-vs\t{m}\t0\t{target:G6}\t64\t4\tfar\t{m * m}\n"));
 
                 // The same through the vertex cache: its own target (integer factors draw more per factor).
@@ -228,11 +228,19 @@ namespace GregoryTerrain.Rig
             }
         }
 
-        /// <summary>The cache variant of the fair comparison: the existing rows' keywords (GT_NOISE) plus GT_VERTEX_CACHE.</summary>
-        public const string CachedNoiseVariant = "noise+vertex_cache";
+        /// <summary>
+        /// The fair comparison's look (issue 5: "with noise detail and height colour on"): the terrain,
+        /// the fallback and the static mesh's frag all use it. The static mesh's vertex stage
+        /// (vert_static with GT_HEIGHT_COLOR) hands the frag its baked height and a colour noise of 0:
+        /// the same fragment work, one interpolant less computed per vertex.
+        /// </summary>
+        public const string FairVariant = "noise+height_color";
+
+        /// <summary>The cache variant of the fair comparison: <see cref="FairVariant"/> plus GT_VERTEX_CACHE.</summary>
+        public const string CachedNoiseVariant = "noise+height_color+vertex_cache";
 
         /// <summary>
-        /// The vertex cache's buffers and kernels for the harness (cache_spec.md): _TileFactors at
+        /// The vertex cache's buffers and kernels for the harness (internals.md, "Vertex cache"): _TileFactors at
         /// binding 7 (32 bytes a tile), _VertexCache at binding 8, CacheTileFactors over ceil(M^2 / 64)
         /// groups, then CacheTileVertices over M x M groups, each frame before the draw.
         /// </summary>
