@@ -172,6 +172,7 @@ namespace GregoryTerrain
         bool _drawFallback;
         static bool s_FallbackLogged;
         Matrix4x4 _objectToWorld = Matrix4x4.identity;   // what PushMatrices sent (deep-zoom offset included)
+        Matrix4x4 _worldToObject = Matrix4x4.identity;   // its inverse, as sent (the cache's world normals)
         int _gridStamp;                                  // bumped on every upload: the cache sees new grid buffers
         readonly VertexCachePass _cache = new VertexCachePass();
         string _cacheError;                              // the size check's message (not drawn until fixed)
@@ -481,6 +482,7 @@ namespace GregoryTerrain
             _props.SetMatrix(Ids.ObjectToWorld, m);
             _props.SetMatrix(Ids.WorldToObject, w);
             _objectToWorld = m;   // the vertex cache's LOD matrix uses the same object matrix
+            _worldToObject = w;
             transform.hasChanged = false;
         }
 
@@ -673,6 +675,7 @@ namespace GregoryTerrain
                 {
                     parameters = _params,
                     objectToClip = viewProjection * _objectToWorld,
+                    worldToObject = _worldToObject,
                     screenSize = new Vector4(w, h, 1f / w, 1f / h),
                     controlPoints = _controlPoints, regions = _regions, gridLines = _gridLines,
                     gridStamp = _gridStamp,

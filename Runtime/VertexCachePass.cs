@@ -36,6 +36,7 @@ namespace GregoryTerrain
             public static readonly int VertexCacheRW = Shader.PropertyToID("_VertexCacheRW");
             public static readonly int LodObjectToClip = Shader.PropertyToID("_GT_LodObjectToClip");
             public static readonly int LodScreenSize = Shader.PropertyToID("_GT_LodScreenSize");
+            public static readonly int WorldToObject = Shader.PropertyToID("_GtWorldToObject");
             public static readonly int ControlPoints = Shader.PropertyToID("_ControlPoints");
             public static readonly int Regions = Shader.PropertyToID("_Regions");
             public static readonly int GridLines = Shader.PropertyToID("_GridLines");
@@ -50,6 +51,8 @@ namespace GregoryTerrain
             public TerrainParams parameters;
             /// <summary>GPU projection * view (LOD camera) * the renderer's object matrix (deep-zoom offset included).</summary>
             public Matrix4x4 objectToClip;
+            /// <summary>The renderer's world-to-object (the draw's own): the cache stores world normals.</summary>
+            public Matrix4x4 worldToObject;
             /// <summary>(w, h, 1/w, 1/h) of the LOD camera in pixels.</summary>
             public Vector4 screenSize;
             public GraphicsBuffer controlPoints, regions, gridLines;
@@ -136,6 +139,7 @@ namespace GregoryTerrain
                 shader.SetVector(Ids.Params[k], new Vector4(v.x, v.y, v.z, v.w));
             }
             shader.SetMatrix(Ids.LodObjectToClip, inputs.objectToClip);
+            shader.SetMatrix(Ids.WorldToObject, inputs.worldToObject);
             shader.SetVector(Ids.LodScreenSize, inputs.screenSize);
             SetKeyword(shader, NoiseKeyword, (inputs.effects & Effects.Noise) != 0);
             SetKeyword(shader, HeightColorKeyword, (inputs.effects & Effects.HeightColor) != 0);
@@ -191,7 +195,7 @@ namespace GregoryTerrain
         bool SameAsLast(in Inputs i)
         {
             if (!SameParams(i.parameters, _last.parameters)) return false;
-            if (!SameMatrix(i.objectToClip, _last.objectToClip)) return false;
+            if (!SameMatrix(i.objectToClip, _last.objectToClip) || !SameMatrix(i.worldToObject, _last.worldToObject)) return false;
             if (!SameVector(i.screenSize, _last.screenSize)) return false;
             if (i.controlPoints != _last.controlPoints || i.regions != _last.regions || i.gridLines != _last.gridLines) return false;
             if (i.gridStamp != _last.gridStamp || i.effects != _last.effects) return false;

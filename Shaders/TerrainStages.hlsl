@@ -142,7 +142,9 @@ TerrainVaryings domain_shader(TileFactors factors, const OutputPatch<TileCorner,
     float2 inside = float2(factors.inside[0], factors.inside[1]);
     uint limit = VertexCacheFactorLimit();
     uint slot = corners[0].drawPatch * VertexCacheSlotsPerTile(limit) + VertexCacheSlot(tess, edge, inside, limit);
-    return TerrainVaryingsFromAttributes(ReadVertexCacheRecord(slot), tessFactor);
+    float3 normalWS;
+    TerrainVertexAttributes a = ReadVertexCacheRecord(slot, normalWS);
+    return TerrainVaryingsFromAttributes(a, normalWS, tessFactor);
 #else
     return TerrainVertex(corners[0].drawPatch, tess, tessFactor);
 #endif

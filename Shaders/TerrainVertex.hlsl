@@ -211,13 +211,14 @@ TerrainVertexAttributes EvaluateTerrainVertex(uint drawPatch, float2 tess)
     return a;
 }
 
-// The camera part: object space -> the varyings. tessFactor is only carried to the
+// The camera part: object space -> the varyings, with the world normal the caller has (the
+// vertex cache stores it; TerrainVertex transforms a.normalOS). tessFactor is only carried to the
 // GT_DEBUG_TESS_FACTOR view.
-TerrainVaryings TerrainVaryingsFromAttributes(TerrainVertexAttributes a, float tessFactor)
+TerrainVaryings TerrainVaryingsFromAttributes(TerrainVertexAttributes a, float3 normalWS, float tessFactor)
 {
     TerrainVaryings o;
     o.positionCS = GT_ObjectToClip(a.positionOS);
-    o.normalWS = GT_ObjectToWorldNormal(a.normalOS);
+    o.normalWS = normalWS;
 #if defined(GT_RECEIVE_SHADOWS)
     o.positionWS = GT_ObjectToWorld(a.positionOS);
 #endif
@@ -238,7 +239,8 @@ TerrainVaryings TerrainVaryingsFromAttributes(TerrainVertexAttributes a, float t
 
 TerrainVaryings TerrainVertex(uint drawPatch, float2 tess, float tessFactor)
 {
-    return TerrainVaryingsFromAttributes(EvaluateTerrainVertex(drawPatch, tess), tessFactor);
+    TerrainVertexAttributes a = EvaluateTerrainVertex(drawPatch, tess);
+    return TerrainVaryingsFromAttributes(a, GT_ObjectToWorldNormal(a.normalOS), tessFactor);
 }
 
 #endif // GT_TERRAIN_VERTEX_INCLUDED

@@ -79,21 +79,25 @@ TileFactorSet VertexCacheIntegerFactors(TileFactorSet f)
     return f;
 }
 
-// Record = GT_VERTEX_CACHE_FLOAT4S float4: (positionOS, absoluteHeight), (normalOS, colorNoise),
-// [GT_SNOW: (snowDepth, 0, 0, 0)]. The patch index is not kept (GT_DEBUG_PATCH_ID reads 0).
+// Record = GT_VERTEX_CACHE_FLOAT4S float4: (positionOS, absoluteHeight), (normalWS, colorNoise),
+// [GT_SNOW: (snowDepth, 0, 0, 0)]. The normal is stored in world space (the adapter's
+// GT_ObjectToWorldNormal, in the kernel): the domain stage then only projects the position. The
+// patch index is not kept (GT_DEBUG_PATCH_ID reads 0).
 float4 VertexCacheRecordPart(TerrainVertexAttributes a, uint part)
 {
     if (part == 0u) return float4(a.positionOS, a.absoluteHeight);
-    if (part == 1u) return float4(a.normalOS, a.colorNoise);
+    if (part == 1u) return float4(GT_ObjectToWorldNormal(a.normalOS), a.colorNoise);
     return float4(a.snowDepth, 0.0, 0.0, 0.0);
 }
 
-TerrainVertexAttributes VertexCacheAttributes(float4 r0, float4 r1, float4 r2)
+// The attributes of a record; its world normal goes to normalWS (a.normalOS is left 0).
+TerrainVertexAttributes VertexCacheAttributes(float4 r0, float4 r1, float4 r2, out float3 normalWS)
 {
     TerrainVertexAttributes a;
     a.positionOS = r0.xyz;
     a.absoluteHeight = r0.w;
-    a.normalOS = r1.xyz;
+    a.normalOS = float3(0.0, 0.0, 0.0);
+    normalWS = r1.xyz;
     a.colorNoise = r1.w;
     a.snowDepth = r2.x;
     a.patch = 0u;
@@ -102,7 +106,7 @@ TerrainVertexAttributes VertexCacheAttributes(float4 r0, float4 r1, float4 r2)
 
 #if defined(GT_VERTEX_CACHE)
 // The record of a slot (tile base included), as the domain stage reads it.
-TerrainVertexAttributes ReadVertexCacheRecord(uint slot)
+TerrainVertexAttributes ReadVertexCacheRecord(uint slot, out float3 normalWS)
 {
     uint i = GT_VERTEX_CACHE_FLOAT4S * slot;
     #if defined(GT_SNOW)
@@ -110,7 +114,7 @@ TerrainVertexAttributes ReadVertexCacheRecord(uint slot)
     #else
     float4 r2 = float4(0.0, 0.0, 0.0, 0.0);
     #endif
-    return VertexCacheAttributes(_VertexCache[i], _VertexCache[i + 1u], r2);
+    return VertexCacheAttributes(_VertexCache[i], _VertexCache[i + 1u], r2, normalWS);
 }
 #endif
 

@@ -141,7 +141,10 @@ namespace GregoryTerrain
             }
         }
 
-        /// <summary>The record of a vertex (HLSL <c>VertexCacheRecordPart</c>), object space.</summary>
+        /// <summary>
+        /// The record of a vertex (HLSL <c>VertexCacheRecordPart</c>) for an identity object-to-world
+        /// (the rig's): the GPU stores the normal in world space, which is then the object normal.
+        /// </summary>
         public static Float4[] Record(TerrainVertexOutput v, bool snow)
         {
             Float3 p = v.PositionOS, n = v.NormalOS;

@@ -3,6 +3,8 @@
 // factors are computed for (GregoryTerrainRenderer's LOD camera), set by the renderer as globals:
 //   _GT_LodObjectToClip   GPU projection * view * the terrain's object-to-world (what the draw uses)
 //   _GT_LodScreenSize     (width, height, 1 / width, 1 / height) of that camera's target, in pixels
+//   _GtWorldToObject      the terrain's world-to-object (the draw's own, URPAdapter.hlsl): the cache
+//                         stores world normals, so the domain stage skips that transform
 // The rest of the adapter interface (StandaloneAdapter.hlsl lists it) is what the kernels never
 // call: lighting, shadows and world space belong to the draw, which reads the cached object-space
 // vertices. Material constants are a plain cbuffer (Unity sets its members by name).
@@ -16,9 +18,11 @@
 
 float4x4 _GT_LodObjectToClip;
 float4 _GT_LodScreenSize;
+float4x4 _GtWorldToObject;
 
 float3 GT_ObjectToWorld(float3 positionOS) { return positionOS; }
-float3 GT_ObjectToWorldNormal(float3 normalOS) { return normalOS; }
+// Normals go with the inverse transpose: n^T W (W = world-to-object), as the graphics adapters do.
+float3 GT_ObjectToWorldNormal(float3 normalOS) { return normalize(mul(normalOS, (float3x3)_GtWorldToObject)); }
 float4 GT_ObjectToClip(float3 positionOS) { return mul(_GT_LodObjectToClip, float4(positionOS, 1.0)); }
 float4 GT_WorldToClip(float3 positionWS) { return GT_ObjectToClip(positionWS); }
 float3 GT_CameraPositionWS() { return float3(0.0, 0.0, 0.0); }

@@ -185,7 +185,9 @@ namespace GregoryTerrain.Rig
         {
             string view = Inv($"--width {width} --height {height}");
             int frames = quick ? 3 : 100;
-            string t = Inv($"--stats --timestamps --frames {frames} --warmup {(quick ? 1 : 5)}");
+            // 50 warm-up frames: the jobs before (the bake's packing runs on the CPU) leave the GPU idle
+            // long enough to drop its clocks; with 5, one H200 job's frames ramped from 5.3 to 1.3 ms.
+            string t = Inv($"--stats --timestamps --frames {frames} --warmup {(quick ? 1 : 50)}");
             foreach (var (m, f) in FairSizes(quick))
             {
                 var cfg = new BenchConfig { Method = "uniform", Tiles = m, Factor = f, Octaves = 4 };
