@@ -6,7 +6,6 @@ using System;
 using System.Collections.Generic;
 using System.Diagnostics;
 using System.IO;
-using System.IO.Compression;
 using System.Linq;
 using NUnit.Framework;
 
@@ -182,39 +181,15 @@ namespace GregoryTerrain.Rig.Tests
             return h;
         }
 
-        /// <summary>RGB bytes of a harness PNG (RGBA, filter None per row).</summary>
+        /// <summary>RGB bytes of a harness PNG of the given size.</summary>
         static byte[] DecodeRgb(string path, int width, int height)
         {
-            byte[] png = File.ReadAllBytes(path);
-            var idat = new MemoryStream();
-            for (int i = 8; i < png.Length;)
-            {
-                int len = png[i] << 24 | png[i + 1] << 16 | png[i + 2] << 8 | png[i + 3];
-                string type = System.Text.Encoding.ASCII.GetString(png, i + 4, 4);
-                if (type == "IHDR")
-                {
-                    Assert.That(png[i + 8] << 24 | png[i + 9] << 16 | png[i + 10] << 8 | png[i + 11], Is.EqualTo(width));
-                    Assert.That(png[i + 12] << 24 | png[i + 13] << 16 | png[i + 14] << 8 | png[i + 15], Is.EqualTo(height));
-                }
-                if (type == "IDAT") idat.Write(png, i + 8, len);
-                i += 12 + len;
-            }
-            byte[] raw;
-            using (var inflate = new ZLibStream(new MemoryStream(idat.ToArray()), CompressionMode.Decompress))
-            using (var o = new MemoryStream())
-            {
-                inflate.CopyTo(o);
-                raw = o.ToArray();
-            }
-            Assert.That(raw.Length, Is.EqualTo(height * (1 + 4 * width)));
+            RigPng png = RigPng.Read(path);
+            Assert.That((png.Width, png.Height), Is.EqualTo((width, height)), path);
             var rgb = new byte[3 * width * height];
-            for (int y = 0; y < height; y++)
-            {
-                Assert.That(raw[y * (1 + 4 * width)], Is.EqualTo(0), "filter byte");
-                for (int x = 0; x < width; x++)
-                    for (int c = 0; c < 3; c++)
-                        rgb[3 * (y * width + x) + c] = raw[y * (1 + 4 * width) + 1 + 4 * x + c];
-            }
+            for (int p = 0; p < width * height; p++)
+                for (int c = 0; c < 3; c++)
+                    rgb[3 * p + c] = png.Rgba[4 * p + c];
             return rgb;
         }
     }
