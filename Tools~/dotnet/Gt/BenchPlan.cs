@@ -166,7 +166,8 @@ namespace GregoryTerrain.Rig
         /// <summary>The adaptive terrain beside the fair static meshes: tiles, and the static size whose triangle count it aims at.</summary>
         public static (int tiles, int staticTiles, int staticFactor)[] AdaptiveVsStatic(bool quick) => quick
             ? new[] { (8, 8, 7) }
-            : new[] { (64, 32, 17), (64, 32, 31), (64, 32, 63) };
+            // 64 tiles at each static size, and fewer, larger tiles (larger factors cost less per triangle).
+            : new[] { (64, 32, 17), (64, 32, 31), (64, 32, 63), (32, 32, 17), (32, 32, 31), (32, 32, 63), (16, 32, 17) };
 
         /// <summary>
         /// The fair static mesh (Documentation~/performance.md): for M x M tiles at the uniform factor F,
