@@ -26,13 +26,16 @@ namespace GregoryTerrain
             GregoryBasis.Weights(u, v, w, wu, wv);
             // Start from slot 0's term rather than from zero so a corner value is returned untouched.
             position = w[0] * cp[0];
-            dPdu = wu[0] * cp[0];
-            dPdv = wv[0] * cp[0];
+            // The derivative weights sum to 0: sum the control-point differences from slot 0, not the
+            // points, or a tiny patch far from the origin cancels away (see GregoryEval.hlsl).
+            dPdu = Float3.zero;
+            dPdv = Float3.zero;
             for (int k = 1; k < GregoryBasis.WeightCount; k++)
             {
+                Float3 d = cp[k] - cp[0];
                 position += w[k] * cp[k];
-                dPdu += wu[k] * cp[k];
-                dPdv += wv[k] * cp[k];
+                dPdu += wu[k] * d;
+                dPdv += wv[k] * d;
             }
         }
 
@@ -46,13 +49,14 @@ namespace GregoryTerrain
             Span<double> wv = stackalloc double[GregoryBasis.WeightCount];
             GregoryBasis.Weights(u, v, w, wu, wv);
             position = w[0] * cp[0];
-            dPdu = wu[0] * cp[0];
-            dPdv = wv[0] * cp[0];
+            dPdu = Double3.zero;
+            dPdv = Double3.zero;
             for (int k = 1; k < GregoryBasis.WeightCount; k++)
             {
+                Double3 d = cp[k] - cp[0];
                 position += w[k] * cp[k];
-                dPdu += wu[k] * cp[k];
-                dPdv += wv[k] * cp[k];
+                dPdu += wu[k] * d;
+                dPdv += wv[k] * d;
             }
         }
 
