@@ -166,6 +166,13 @@ namespace GregoryTerrain
         readonly RangeOriginTracker _origin = new RangeOriginTracker();
         TerrainParams _params;          // the constants last sent (range and origin kept current)
         Double3 _outputOffset;          // terrain space; what the deep-zoom relative output leaves out
+        // What _outputOffset was computed from: the origin, the noise block, the octave count, the
+        // keyword and the grid. It is recomputed (a double Gregory evaluation plus the octaves) only
+        // when one of them changes, not every frame the range moves.
+        Float4 _offsetOrigin, _offsetNoise;
+        float _offsetOctaves = float.NaN;
+        TerrainKeywords _offsetKeywords;
+        PatchGrid _offsetGrid;
         float _gridMinZ, _gridMaxZ;
         Material _drawModeMaterial;
         Shader _drawModeShader;
@@ -451,6 +458,14 @@ namespace GregoryTerrain
         bool UpdateOutputOffset()
         {
             var keywords = material != null && material.IsKeywordEnabled("GT_NOISE") ? TerrainKeywords.Noise : TerrainKeywords.None;
+            float octaves = TerrainInputs.NoiseOctaveCount(_params);
+            if (_offsetGrid == _uploadedPatchGrid && _offsetKeywords == keywords && _offsetOrigin.Equals(_params.rangeOrigin)
+                && _offsetNoise.Equals(_params.noise) && _offsetOctaves.Equals(octaves)) return false;
+            _offsetGrid = _uploadedPatchGrid;
+            _offsetKeywords = keywords;
+            _offsetOrigin = _params.rangeOrigin;
+            _offsetNoise = _params.noise;
+            _offsetOctaves = octaves;
             Double3 offset = _uploadedPatchGrid == null ? Double3.zero : TerrainVertex.OutputOffset(_uploadedPatchGrid, _params, keywords);
             if (offset.x == _outputOffset.x && offset.y == _outputOffset.y && offset.z == _outputOffset.z) return false;
             _outputOffset = offset;

@@ -9,13 +9,51 @@
 
 #define GT_MAX_OCTAVES 16
 
-// noise = _Noise = (amplitude, frequency, alpha, beta). octaveCount must already be clamped to
-// [0, N] (OctaveCount does). gradient = d p / d q in terrain units.
+// The running sum over octaves (C# OctaveNoise.OctaveSum): octave k weighted by beta^-k times its
+// fade, its lattice gradient scaled by its frequency (chain rule: d/dq = f d/d(lattice)),
+// frequencies the float sequence f_{k+1} = f_k alpha. noise = _Noise = (amplitude, frequency,
+// alpha, beta).
+struct OctaveSum
+{
+    float frequency;
+    float weight;
+    float invBeta;
+    float height;
+    float2 gradient;
+};
+
+OctaveSum OctaveSumStart(float4 noise)
+{
+    OctaveSum s;
+    s.frequency = noise.y;
+    s.weight = 1.0;
+    s.invBeta = 1.0 / noise.w;
+    s.height = 0.0;
+    s.gradient = float2(0.0, 0.0);
+    return s;
+}
+
+// Adds octave value nk (gradient gk, lattice units) at the current frequency, then steps to the next.
+void OctaveSumAdd(inout OctaveSum s, float fade, float nk, float2 gk, float4 noise)
+{
+    float wk = s.weight * fade;
+    s.height += wk * nk;
+    s.gradient += gk * (wk * s.frequency);
+    s.frequency *= noise.z;
+    s.weight *= s.invBeta;
+}
+
+float OctaveSumResult(OctaveSum s, float4 noise, out float2 gradient)
+{
+    gradient = s.gradient * noise.x;
+    return noise.x * s.height;
+}
+
+// octaveCount must already be clamped to [0, N] (OctaveCount does). gradient = d p / d q in
+// terrain units.
 float OctaveNoise(TerrainPoint p, float4 noise, float octaveCount, out float2 gradient)
 {
-    float f = noise.y, w = 1.0, invBeta = 1.0 / noise.w;
-    float n = 0.0;
-    float2 g = 0.0;
+    OctaveSum sum = OctaveSumStart(noise);
     // [unroll], not [loop]: unrolled, each octave's stream offset is a constant (two hashes of k
     // per octave folded away) and the early-out is a uniform branch. Same arithmetic in the same
     // order, so the C# mirror is unchanged. H200: the 8.1M-triangle draw with 4 octaves took
@@ -25,15 +63,10 @@ float OctaveNoise(TerrainPoint p, float4 noise, float octaveCount, out float2 gr
         float fade = saturate(octaveCount - float(k));
         if (fade <= 0.0) break;
         float2 gk;
-        float nk = GradientNoiseAtPoint(p, f, GradientNoiseStreamOffset(k), gk);
-        float wk = w * fade;
-        n += wk * nk;
-        g += gk * (wk * f);
-        f *= noise.z;
-        w *= invBeta;
+        float nk = GradientNoiseAtPoint(p, sum.frequency, GradientNoiseStreamOffset(k), gk);
+        OctaveSumAdd(sum, fade, nk, gk, noise);
     }
-    gradient = g * noise.x;
-    return noise.x * n;
+    return OctaveSumResult(sum, noise, gradient);
 }
 
 // One octave of OctaveNoiseRelative: K(f q + offset) - K(f O + offset) from the precise q - O,
@@ -69,23 +102,16 @@ float OctaveNoiseDifference(TerrainPoint q, TerrainPoint origin, float2 qMinusOr
 // (TerrainPointDifference); the renderer adds p(O) back (precision.md). Mirrors OctaveNoise.Relative.
 float OctaveNoiseRelative(TerrainPoint q, TerrainPoint origin, float2 qMinusOrigin, float4 noise, float octaveCount, out float2 gradient)
 {
-    float f = noise.y, w = 1.0, invBeta = 1.0 / noise.w;
-    float n = 0.0;
-    float2 g = 0.0;
+    OctaveSum sum = OctaveSumStart(noise);
     [loop] for (uint k = 0u; k < GT_MAX_OCTAVES; ++k)
     {
         float fade = saturate(octaveCount - float(k));
         if (fade <= 0.0) break;
         float2 gk;
-        float nk = OctaveNoiseDifference(q, origin, qMinusOrigin, f, GradientNoiseStreamOffset(k), gk);
-        float wk = w * fade;
-        n += wk * nk;
-        g += gk * (wk * f);
-        f *= noise.z;
-        w *= invBeta;
+        float nk = OctaveNoiseDifference(q, origin, qMinusOrigin, sum.frequency, GradientNoiseStreamOffset(k), gk);
+        OctaveSumAdd(sum, fade, nk, gk, noise);
     }
-    gradient = g * noise.x;
-    return noise.x * n;
+    return OctaveSumResult(sum, noise, gradient);
 }
 
 // Octaves whose wavelength 1 / (frequency alpha^k) is at least two vertex spacings

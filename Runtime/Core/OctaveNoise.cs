@@ -20,25 +20,61 @@ namespace GregoryTerrain
         /// </summary>
         public static float Evaluate(TerrainPoint p, NoiseSettings settings, float octaveCount, out Float2 gradient)
         {
-            settings.Validate(nameof(settings));
-            if (float.IsNaN(octaveCount)) throw new ArgumentException("octaveCount (NaN) must be a number", nameof(octaveCount));
-            float count = GMath.clamp(octaveCount, 0f, settings.octaves);
-            float f = settings.frequency, w = 1f, invBeta = 1f / settings.beta;
-            float n = 0f;
-            var g = new Float2(0f, 0f);
+            float count = ClampedCount(settings, octaveCount);
+            var sum = new OctaveSum(settings);
             for (int k = 0; k < settings.octaves; k++)
             {
                 float fade = GMath.saturate(count - k);   // 1 for whole octaves, the fraction for the last
                 if (fade <= 0f) break;
-                float nk = GradientNoise.AtPoint(p, f, GradientNoise.StreamOffset((uint)k), out Float2 gk);
-                float wk = w * fade;
-                n += wk * nk;
-                g += gk * (wk * f);                        // chain rule: d/dq = f * d/d(lattice)
-                f *= settings.alpha;
-                w *= invBeta;
+                float nk = GradientNoise.AtPoint(p, sum.frequency, GradientNoise.StreamOffset((uint)k), out Float2 gk);
+                sum.Add(fade, nk, gk, settings.alpha);
             }
-            gradient = g * settings.amplitude;
-            return settings.amplitude * n;
+            return sum.Result(settings.amplitude, out gradient);
+        }
+
+        /// <summary>
+        /// The running sum over octaves of the float paths (HLSL <c>OctaveSum</c>): octave k weighted
+        /// by <c>beta^-k</c> times its fade, its lattice gradient scaled by its frequency (chain rule:
+        /// d/dq = f d/d(lattice)), frequencies the float sequence <c>f_{k+1} = f_k alpha</c>.
+        /// </summary>
+        struct OctaveSum
+        {
+            public float frequency;
+            float _weight, _invBeta, _height;
+            Float2 _gradient;
+
+            public OctaveSum(NoiseSettings settings)
+            {
+                frequency = settings.frequency;
+                _weight = 1f;
+                _invBeta = 1f / settings.beta;
+                _height = 0f;
+                _gradient = new Float2(0f, 0f);
+            }
+
+            /// <summary>Adds octave value <paramref name="nk"/> (gradient <paramref name="gk"/>, lattice units) at the current frequency, then steps to the next octave.</summary>
+            public void Add(float fade, float nk, Float2 gk, float alpha)
+            {
+                float wk = _weight * fade;
+                _height += wk * nk;
+                _gradient += gk * (wk * frequency);
+                frequency *= alpha;
+                _weight *= _invBeta;
+            }
+
+            public float Result(float amplitude, out Float2 gradient)
+            {
+                gradient = _gradient * amplitude;
+                return amplitude * _height;
+            }
+        }
+
+        /// <summary>The octave count clamped to [0, settings.octaves], after checking the inputs.</summary>
+        static float ClampedCount(NoiseSettings settings, float octaveCount)
+        {
+            settings.Validate(nameof(settings));
+            if (float.IsNaN(octaveCount)) throw new ArgumentException("octaveCount (NaN) must be a number", nameof(octaveCount));
+            return GMath.clamp(octaveCount, 0f, settings.octaves);
         }
 
         /// <summary>
@@ -62,26 +98,16 @@ namespace GregoryTerrain
         /// </summary>
         public static float Relative(TerrainPoint q, TerrainPoint origin, Float2 qMinusOrigin, NoiseSettings settings, float octaveCount, out Float2 gradient)
         {
-            settings.Validate(nameof(settings));
-            if (float.IsNaN(octaveCount)) throw new ArgumentException("octaveCount (NaN) must be a number", nameof(octaveCount));
-            float count = GMath.clamp(octaveCount, 0f, settings.octaves);
-            float f = settings.frequency, w = 1f, invBeta = 1f / settings.beta;
-            float n = 0f;
-            var g = new Float2(0f, 0f);
+            float count = ClampedCount(settings, octaveCount);
+            var sum = new OctaveSum(settings);
             for (int k = 0; k < settings.octaves; k++)
             {
                 float fade = GMath.saturate(count - k);
                 if (fade <= 0f) break;
-                Float2 offset = GradientNoise.StreamOffset((uint)k);
-                float nk = OctaveDifference(q, origin, qMinusOrigin, f, offset, out Float2 gk);
-                float wk = w * fade;
-                n += wk * nk;
-                g += gk * (wk * f);
-                f *= settings.alpha;
-                w *= invBeta;
+                float nk = OctaveDifference(q, origin, qMinusOrigin, sum.frequency, GradientNoise.StreamOffset((uint)k), out Float2 gk);
+                sum.Add(fade, nk, gk, settings.alpha);
             }
-            gradient = g * settings.amplitude;
-            return settings.amplitude * n;
+            return sum.Result(settings.amplitude, out gradient);
         }
 
         /// <summary>One octave of <see cref="Relative"/>: <c>K(f q + offset) - K(f O + offset)</c>, gradient at q (lattice units).</summary>
