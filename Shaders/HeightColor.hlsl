@@ -14,10 +14,10 @@ float HeightColorWeight(float l, float z, float gamma)
     return saturate(l + z / gamma);
 }
 
-// colour = high s + low (1 - s), linear RGB (B and C of eq. 15).
-float3 HeightColorBlend(float l, float z, float gamma, float3 low, float3 high)
+// colour = high s + low (1 - s), linear RGB (B and C of eq. 15), of a weight already computed: the
+// vertex stages compute s and the fragment stage interpolates it (TerrainVaryings).
+float3 HeightColorOfWeight(float s, float3 low, float3 high)
 {
-    float s = HeightColorWeight(l, z, gamma);
     return high * s + low * (1.0 - s);
 }
 

@@ -37,9 +37,8 @@ float3 TessFactorColor(float factor)
 float3 TerrainAlbedo(TerrainVaryings i)
 {
 #if defined(GT_HEIGHT_COLOR)
-    // heightAndColorNoise = (z, l); eq. 14-15 with gamma = _HeightColor.x.
-    return HeightColorBlend(i.heightAndColorNoise.y, i.heightAndColorNoise.x, HeightColorSettings().x,
-                            HeightColorLow(), HeightColorHigh());
+    // Eq. 15 of the weight s the vertex stage computed (eq. 14, TerrainHeightWeight).
+    return HeightColorOfWeight(i.normalWSAndHeightWeight.w, HeightColorLow(), HeightColorHigh());
 #else
     return GT_DEFAULT_ALBEDO;
 #endif
@@ -55,7 +54,7 @@ float3 TerrainAlbedo(TerrainVaryings i)
 
 float4 TerrainFragmentColor(TerrainVaryings i)
 {
-    float3 normalWS = normalize(i.normalWS);
+    float3 normalWS = normalize(i.normalWSAndHeightWeight.xyz);
 #if defined(GT_DEBUG_NORMALS)
     return float4(normalWS * 0.5 + 0.5, 1.0);
 #elif defined(GT_DEBUG_PATCH_ID)
@@ -78,7 +77,7 @@ float4 TerrainFragmentColor(TerrainVaryings i)
 // (GT_EncodeDepthNormal, adapter). No lighting, no albedo.
 float4 TerrainDepthNormal(TerrainVaryings i)
 {
-    return GT_EncodeDepthNormal(i.normalWS);
+    return GT_EncodeDepthNormal(i.normalWSAndHeightWeight.xyz);
 }
 
 #endif // GT_TERRAIN_SHADING_INCLUDED

@@ -171,12 +171,10 @@ TerrainVaryings vert_static(uint vertexID : SV_VertexID, uint instanceID : SV_In
     uint v = instanceID * (f + 1u) * (f + 1u) + vertexID;
     TerrainVaryings o = (TerrainVaryings)0;
     o.positionCS = GT_ObjectToClip(_ControlPoints[2u * v].xyz);
-    o.normalWS = GT_ObjectToWorldNormal(_ControlPoints[2u * v + 1u].xyz);
-#if defined(GT_HEIGHT_COLOR)
     // The baked height (object y; the benchmark draws no range origin) and no colour noise: the frag
     // does the same work, the vertex stage less than the terrain's.
-    o.heightAndColorNoise = float2(_ControlPoints[2u * v].y, 0.0);
-#endif
+    float heightWeight = TerrainHeightWeight(_ControlPoints[2u * v].y, 0.0);
+    o.normalWSAndHeightWeight = float4(GT_ObjectToWorldNormal(_ControlPoints[2u * v + 1u].xyz), heightWeight);
     return o;
 }
 #endif

@@ -30,12 +30,13 @@
 struct TerrainVaryings
 {
     float4 positionCS : SV_Position;
-    float3 normalWS : TEXCOORD0;
+    // xyz: the world normal; w: the height colour's weight s of eq. 14 (GT_HEIGHT_COLOR, else 0),
+    // computed per vertex. One interpolant, not two: a fragment stage that reads two attribute
+    // vectors made the tessellated draw 1.2x slower (6.5 vs 5.3 ms at 8M triangles, H200;
+    // internals.md, "Varyings"). The normal and s fill exactly one.
+    float4 normalWSAndHeightWeight : TEXCOORD0;
 #if defined(GT_RECEIVE_SHADOWS)
     float3 positionWS : TEXCOORD6;   // main-light shadow lookup (adapter's GT_MainLightShadow)
-#endif
-#if defined(GT_HEIGHT_COLOR)
-    float2 heightAndColorNoise : TEXCOORD1;   // (S'z, l) of eq. 14
 #endif
 #if defined(GT_DEBUG_PATCH_ID)
     nointerpolation uint patch : TEXCOORD2;   // Gregory patch index
@@ -211,6 +212,18 @@ TerrainVertexAttributes EvaluateTerrainVertex(uint drawPatch, float2 tess)
     return a;
 }
 
+// s = saturate(l + z / gamma) of eq. 14 for the absolute height z and colour noise l, 0 without
+// GT_HEIGHT_COLOR. Per vertex: s interpolated differs from s per fragment only inside a triangle
+// that crosses s = 0 or s = 1 (the clamp), by less than that triangle's change of s.
+float TerrainHeightWeight(float absoluteHeight, float colorNoise)
+{
+#if defined(GT_HEIGHT_COLOR)
+    return HeightColorWeight(colorNoise, absoluteHeight, HeightColorSettings().x);
+#else
+    return 0.0;
+#endif
+}
+
 // The camera part: object space -> the varyings, with the world normal the caller has (the
 // vertex cache stores it; TerrainVertex transforms a.normalOS). tessFactor is only carried to the
 // GT_DEBUG_TESS_FACTOR view.
@@ -218,12 +231,9 @@ TerrainVaryings TerrainVaryingsFromAttributes(TerrainVertexAttributes a, float3 
 {
     TerrainVaryings o;
     o.positionCS = GT_ObjectToClip(a.positionOS);
-    o.normalWS = normalWS;
+    o.normalWSAndHeightWeight = float4(normalWS, TerrainHeightWeight(a.absoluteHeight, a.colorNoise));
 #if defined(GT_RECEIVE_SHADOWS)
     o.positionWS = GT_ObjectToWorld(a.positionOS);
-#endif
-#if defined(GT_HEIGHT_COLOR)
-    o.heightAndColorNoise = float2(a.absoluteHeight, a.colorNoise);
 #endif
 #if defined(GT_DEBUG_PATCH_ID)
     o.patch = a.patch;

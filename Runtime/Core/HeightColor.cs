@@ -22,7 +22,15 @@ namespace GregoryTerrain
         /// <summary>Eq. 15: <c>high * s + low * (1 - s)</c>, with s from <see cref="Weight"/>.</summary>
         public static Float3 Blend(float l, float z, float gamma, Float3 low, Float3 high)
         {
-            float s = Weight(l, z, gamma);
+            return OfWeight(Weight(l, z, gamma), low, high);
+        }
+
+        /// <summary>
+        /// Eq. 15 alone: the colour of a weight s already computed. The shader computes s per vertex and
+        /// interpolates it (one interpolant with the normal, internals.md "Varyings").
+        /// </summary>
+        public static Float3 OfWeight(float s, Float3 low, Float3 high)
+        {
             return high * s + low * (1f - s);
         }
 
