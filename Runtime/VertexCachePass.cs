@@ -157,7 +157,8 @@ namespace GregoryTerrain
 
             int tileCount = _tiles * _tiles;
             shader.Dispatch(_factorsKernel, (tileCount + ThreadsPerGroup - 1) / ThreadsPerGroup, 1, 1);
-            shader.Dispatch(_verticesKernel, _tiles, _tiles, 1);   // group (x, y) = tile y M + x
+            // Groups (x, y, 0 .. G - 1) share tile y M + x.
+            shader.Dispatch(_verticesKernel, _tiles, _tiles, VertexCache.GroupsPerTile(_factorLimit));
 
             _last = inputs;
             _valid = true;

@@ -5,7 +5,7 @@
 //
 //   CacheTileFactors    one thread per tile: culling and adaptive (or uniform) factors, rounded to
 //                       the integer factors the draw will use (VertexCacheIntegerFactors)
-//   CacheTileVertices   one group per tile: every vertex the tessellator makes at those factors,
+//   CacheTileVertices   a few groups per tile: every vertex the tessellator makes at those factors,
 //                       evaluated by EvaluateTerrainVertex (the domain stage's own path) into its slot
 //
 // A frame dispatches both, in that order, then draws; the hull stage reads the factors and the
@@ -22,8 +22,6 @@
 // 8 in the rig either way (TerrainInputs.hlsl).
 RWStructuredBuffer<float4> _TileFactorsRW GT_REGISTER(u2);
 RWStructuredBuffer<float4> _VertexCacheRW GT_REGISTER(u3);
-
-#define GT_VERTEX_CACHE_GROUP 64u
 
 // Dispatch (ceil(M^2 / 64), 1, 1).
 [numthreads(64, 1, 1)]
@@ -70,7 +68,8 @@ void VertexCachePoint(uint k, float4 edge, float2 inside, uint limit, out float2
     slot = VertexCacheEdgeSlot(e, k, limit);
 }
 
-// Dispatch (M, M, 1): group (x, y) is tile y M + x; its 64 lanes stride over the tile's points.
+// Dispatch (M, M, G), G = VertexCacheGroupsPerTile(L): groups (x, y, 0 .. G - 1) share tile
+// y M + x, their G x 64 lanes striding over its points (at most GT_VERTEX_CACHE_PASSES each).
 [numthreads(64, 1, 1)]
 void CacheTileVertices(uint3 group : SV_GroupID, uint lane : SV_GroupIndex)
 {
@@ -84,7 +83,8 @@ void CacheTileVertices(uint3 group : SV_GroupID, uint lane : SV_GroupIndex)
     uint base = tile * VertexCacheSlotsPerTile(limit);
     uint2 n = (uint2)inside.xy - 1u;
     uint count = n.x * n.y + (uint)(edge.x + edge.y + edge.z + edge.w) + 4u;
-    for (uint k = lane; k < count; k += GT_VERTEX_CACHE_GROUP)
+    uint stride = VertexCacheGroupsPerTile(limit) * GT_VERTEX_CACHE_GROUP;
+    for (uint k = group.z * GT_VERTEX_CACHE_GROUP + lane; k < count; k += stride)
     {
         float2 tess;
         uint slot;

@@ -71,6 +71,30 @@ namespace GregoryTerrain
             return (limit + 1) * (limit + 1) + 4 * (limit + 1);
         }
 
+        /// <summary>Lanes of a CacheTileVertices group (HLSL <c>GT_VERTEX_CACHE_GROUP</c>).</summary>
+        public const int ThreadsPerGroup = 64;
+
+        /// <summary>The most passes a CacheTileVertices group makes over its tile's points (HLSL <c>GT_VERTEX_CACHE_PASSES</c>).</summary>
+        public const int PassesPerGroup = 4;
+
+        /// <summary>The most points a tile at factors up to L has: the (L - 1)^2 interior and 4 edges of L + 1.</summary>
+        public static int MaxTilePoints(int limit)
+        {
+            SlotsPerTile(limit);   // validates L
+            return (limit - 1) * (limit - 1) + 4 * (limit + 1);
+        }
+
+        /// <summary>
+        /// G, the CacheTileVertices groups that share one tile (dispatch (M, M, G)), so that no group
+        /// makes more than <see cref="PassesPerGroup"/> passes: one group a tile made the pass wait on
+        /// its largest tile. HLSL <c>VertexCacheGroupsPerTile</c>.
+        /// </summary>
+        public static int GroupsPerTile(int limit)
+        {
+            const int perGroup = ThreadsPerGroup * PassesPerGroup;
+            return (MaxTilePoints(limit) + perGroup - 1) / perGroup;
+        }
+
         /// <summary>Inside grid point (i, j) of a tile whose inside factor along u is <paramref name="insideU"/>.</summary>
         public static int InteriorSlot(int i, int j, int insideU) => i + j * (insideU + 1);
 

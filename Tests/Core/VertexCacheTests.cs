@@ -55,6 +55,29 @@ namespace GregoryTerrain.Tests
         }
 
         /// <summary>
+        /// CacheTileVertices' groups per tile: at every limit they cover the largest tile (the one at
+        /// the limit everywhere, whose point count MaxTilePoints is), one group fewer would not, and
+        /// no group makes more than PassesPerGroup passes.
+        /// </summary>
+        [Test]
+        public void GroupsPerTileCoverTheLargestTileInAFewPasses()
+        {
+            const int perGroup = VertexCache.ThreadsPerGroup * VertexCache.PassesPerGroup;
+            for (int limit = 1; limit <= 64; limit++)
+            {
+                var full = VertexCache.IntegerFactors(Set(limit, limit, limit, limit, limit, limit));
+                int points = VertexCache.TilePoints(full, limit).Count();
+                Assert.That(VertexCache.MaxTilePoints(limit), Is.EqualTo(points), $"limit {limit}");
+                int groups = VertexCache.GroupsPerTile(limit);
+                Assert.That(groups * perGroup, Is.GreaterThanOrEqualTo(points), $"limit {limit}");
+                Assert.That((groups - 1) * perGroup, Is.LessThan(points), $"limit {limit}");
+            }
+            Assert.That(VertexCache.GroupsPerTile(17), Is.EqualTo(2));
+            Assert.That(VertexCache.GroupsPerTile(64), Is.EqualTo(17));
+            Assert.That(() => VertexCache.GroupsPerTile(0), Throws.InstanceOf<ArgumentException>());
+        }
+
+        /// <summary>
         /// For many factor sets: the kernel's points have distinct slots inside the tile's stride, the
         /// tessellator's vertices (every tess coordinate integer partitioning makes) all find a written
         /// slot, and the slot the domain stage computes is the one the kernel wrote that point to.

@@ -81,7 +81,8 @@ namespace GregoryTerrain.Rig.Tests
                 "--storage", "7:" + VertexCacheBudget.TileFactorsBytes(tiles).ToString(CultureInfo.InvariantCulture),
                 "--storage", "8:" + VertexCacheBudget.VertexCacheBytes(tiles, frame.Limit, false).ToString(CultureInfo.InvariantCulture),
                 "--compute", Path.Combine(v, "cache_factors.spv") + ":" + ((tiles * tiles + 63) / 64).ToString(CultureInfo.InvariantCulture) + ",1,1",
-                "--compute", Path.Combine(v, "cache_vertices.spv") + ":" + tiles.ToString(CultureInfo.InvariantCulture) + "," + tiles.ToString(CultureInfo.InvariantCulture) + ",1",
+                "--compute", Path.Combine(v, "cache_vertices.spv") + ":" + tiles.ToString(CultureInfo.InvariantCulture) + "," + tiles.ToString(CultureInfo.InvariantCulture)
+                    + "," + VertexCache.GroupsPerTile(frame.Limit).ToString(CultureInfo.InvariantCulture),
                 "--dump-storage", "7:" + factors, "--dump-storage", "8:" + records,
             });
             args.AddRange(extra);
@@ -109,13 +110,15 @@ namespace GregoryTerrain.Rig.Tests
         [Test]
         public void CacheHoldsTheCoreVertexInEverySlotTheKernelWrites()
         {
-            CacheFrame f = DrawCached("uniform", "0.2,0.15,0.7,0.65", 4, new[] { "--factor", "7" }, 96, 64);
+            // F = 17: 328 points a tile, more than one group's 64 x 4, so two groups share each tile.
+            CacheFrame f = DrawCached("uniform", "0.2,0.15,0.7,0.65", 4, new[] { "--factor", "17" }, 96, 64);
+            Assert.That(VertexCache.GroupsPerTile(f.Limit), Is.EqualTo(2));
             double extent = ReadbackRun.TerrainExtent(_grid);
             double maxPos = 0, maxNormal = 0, maxHeight = 0, maxColour = 0;
             int compared = 0, stray = 0;
             for (int tile = 0; tile < f.Tiles * f.Tiles; tile++)
             {
-                Assert.That(f.FactorsOf(tile), Is.EqualTo(VertexCache.IntegerFactors(new TileFactorSet(new Float4(7, 7, 7, 7), new Float2(7, 7)))), "tile " + tile);
+                Assert.That(f.FactorsOf(tile), Is.EqualTo(VertexCache.IntegerFactors(new TileFactorSet(new Float4(17, 17, 17, 17), new Float2(17, 17)))), "tile " + tile);
                 var written = new HashSet<int>();
                 foreach (var (tess, slot) in VertexCache.TilePoints(f.FactorsOf(tile), f.Limit))
                 {
@@ -133,7 +136,7 @@ namespace GregoryTerrain.Rig.Tests
             }
             TestContext.Out.WriteLine("{0} cached vertices against Core: position {1:G3} of the extent, normal {2:G3}, absolute height {3:G3}, colour noise {4:G3}",
                 compared, maxPos, maxNormal, maxHeight, maxColour);
-            Assert.That(compared, Is.EqualTo(16 * (6 * 6 + 4 * 8)), "4 x 4 tiles, 6 x 6 interior points and 4 edges of 8 at F = 7");
+            Assert.That(compared, Is.EqualTo(16 * (16 * 16 + 4 * 18)), "4 x 4 tiles, 16 x 16 interior points and 4 edges of 18 at F = 17");
             Assert.That(stray, Is.EqualTo(0), "slots written that no point owns");
             Assert.That(maxPos, Is.LessThan(1e-5));
             Assert.That(maxNormal, Is.LessThan(1e-4));
