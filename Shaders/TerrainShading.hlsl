@@ -38,7 +38,7 @@ float3 TerrainAlbedo(TerrainVaryings i)
 {
 #if defined(GT_HEIGHT_COLOR)
     // Eq. 15 of the weight s the vertex stage computed (eq. 14, TerrainHeightWeight).
-    return HeightColorOfWeight(i.normalWSAndHeightWeight.w, HeightColorLow(), HeightColorHigh());
+    return HeightColorOfWeight(VaryingsHeightWeight(i), HeightColorLow(), HeightColorHigh());
 #else
     return GT_DEFAULT_ALBEDO;
 #endif
@@ -54,7 +54,7 @@ float3 TerrainAlbedo(TerrainVaryings i)
 
 float4 TerrainFragmentColor(TerrainVaryings i)
 {
-    float3 normalWS = normalize(i.normalWSAndHeightWeight.xyz);
+    float3 normalWS = normalize(VaryingsNormalWS(i));
 #if defined(GT_DEBUG_NORMALS)
     return float4(normalWS * 0.5 + 0.5, 1.0);
 #elif defined(GT_DEBUG_PATCH_ID)
@@ -77,7 +77,7 @@ float4 TerrainFragmentColor(TerrainVaryings i)
 // (GT_EncodeDepthNormal, adapter). No lighting, no albedo.
 float4 TerrainDepthNormal(TerrainVaryings i)
 {
-    return GT_EncodeDepthNormal(i.normalWSAndHeightWeight.xyz);
+    return GT_EncodeDepthNormal(VaryingsNormalWS(i));
 }
 
 #endif // GT_TERRAIN_SHADING_INCLUDED

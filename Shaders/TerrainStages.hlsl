@@ -174,7 +174,7 @@ TerrainVaryings vert_static(uint vertexID : SV_VertexID, uint instanceID : SV_In
     // The baked height (object y; the benchmark draws no range origin) and no colour noise: the frag
     // does the same work, the vertex stage less than the terrain's.
     float heightWeight = TerrainHeightWeight(_ControlPoints[2u * v].y, 0.0);
-    o.normalWSAndHeightWeight = float4(GT_ObjectToWorldNormal(_ControlPoints[2u * v + 1u].xyz), heightWeight);
+    o.normalAndHeightWeight = PackNormalAndHeightWeight(GT_ObjectToWorldNormal(_ControlPoints[2u * v + 1u].xyz), heightWeight);
     return o;
 }
 #endif

@@ -22,6 +22,7 @@
 #if defined(GT_HEIGHT_COLOR)
     #include "HeightColor.hlsl"
 #endif
+#include "NormalEncoding.hlsl"
 #if defined(GT_SNOW)
     #include "SnowMap.hlsl"
 #endif
@@ -30,11 +31,12 @@
 struct TerrainVaryings
 {
     float4 positionCS : SV_Position;
-    // xyz: the world normal; w: the height colour's weight s of eq. 14 (GT_HEIGHT_COLOR, else 0),
-    // computed per vertex. One interpolant, not two: a fragment stage that reads two attribute
-    // vectors made the tessellated draw 1.2x slower (6.5 vs 5.3 ms at 8M triangles, H200;
-    // internals.md, "Varyings"). The normal and s fill exactly one.
-    float4 normalWSAndHeightWeight : TEXCOORD0;
+    // xy: the world normal, Lambert-encoded (NormalEncoding.hlsl); z: the height colour's weight s
+    // of eq. 14 (GT_HEIGHT_COLOR, else 0), computed per vertex. Read them with VaryingsNormalWS and
+    // VaryingsHeightWeight. One interpolant of three numbers: on the H200 two interpolants made the
+    // tessellated draw 1.2x slower at 8M triangles, and four numbers instead of three 1.07x slower
+    // at 0.6M (internals.md, "Varyings").
+    float3 normalAndHeightWeight : TEXCOORD0;
 #if defined(GT_RECEIVE_SHADOWS)
     float3 positionWS : TEXCOORD6;   // main-light shadow lookup (adapter's GT_MainLightShadow)
 #endif
@@ -224,6 +226,16 @@ float TerrainHeightWeight(float absoluteHeight, float colorNoise)
 #endif
 }
 
+// TerrainVaryings.normalAndHeightWeight of a unit world normal and a height weight, and back.
+float3 PackNormalAndHeightWeight(float3 normalWS, float heightWeight)
+{
+    return float3(LambertEncodeNormal(normalWS), heightWeight);
+}
+
+float3 VaryingsNormalWS(TerrainVaryings i) { return LambertDecodeNormal(i.normalAndHeightWeight.xy); }
+
+float VaryingsHeightWeight(TerrainVaryings i) { return i.normalAndHeightWeight.z; }
+
 // The camera part: object space -> the varyings, with the world normal the caller has (the
 // vertex cache stores it; TerrainVertex transforms a.normalOS). tessFactor is only carried to the
 // GT_DEBUG_TESS_FACTOR view.
@@ -231,7 +243,7 @@ TerrainVaryings TerrainVaryingsFromAttributes(TerrainVertexAttributes a, float3 
 {
     TerrainVaryings o;
     o.positionCS = GT_ObjectToClip(a.positionOS);
-    o.normalWSAndHeightWeight = float4(normalWS, TerrainHeightWeight(a.absoluteHeight, a.colorNoise));
+    o.normalAndHeightWeight = PackNormalAndHeightWeight(normalWS, TerrainHeightWeight(a.absoluteHeight, a.colorNoise));
 #if defined(GT_RECEIVE_SHADOWS)
     o.positionWS = GT_ObjectToWorld(a.positionOS);
 #endif

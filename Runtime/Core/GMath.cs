@@ -28,6 +28,8 @@ namespace GregoryTerrain
         public static float frac(float a) => a - floor(a);
         public static double frac(double a) => a - floor(a);
         public static float sqrt(float a) => (float)Math.Sqrt(a);
+        /// <summary>1 / sqrt(a), rounded once; a GPU's rsqrt is within a few ulp of it.</summary>
+        public static float rsqrt(float a) => (float)(1.0 / Math.Sqrt(a));
 
         public static float dot(Float3 a, Float3 b) => a.x * b.x + a.y * b.y + a.z * b.z;
         public static double dot(Double3 a, Double3 b) => a.x * b.x + a.y * b.y + a.z * b.z;

@@ -5,6 +5,7 @@ using System.IO;
 using System.Linq;
 using System.Text.Json;
 using NUnit.Framework;
+using static GregoryTerrain.Rig.Tests.ComputeRunner;
 
 namespace GregoryTerrain.Rig.Tests
 {
@@ -172,55 +173,11 @@ namespace GregoryTerrain.Rig.Tests
             return f;
         }
 
-        static string Runner()
-        {
-            string build = Environment.GetEnvironmentVariable("GT_BUILD_DIR");
-            if (string.IsNullOrEmpty(build)) build = PackageRoot.Combine(".build");
-            string path = Path.Combine(build, "computerig", "gt-compute");
-            if (!File.Exists(path)) Assert.Fail("gt-compute is missing at " + path + " (run Tools~/gt setup)");
-            return path;
-        }
-
         static (int instructions, int loops) Disassemble(string spv)
         {
             string text = Run("spirv-dis", "--no-header", spv);
             var lines = text.Split('\n').Select(l => l.Trim()).Where(l => l.Length > 0 && !l.StartsWith(";")).ToArray();
             return (lines.Length, lines.Count(l => l.Contains("OpLoopMerge")));
-        }
-
-        static void WriteFloats(string path, float[] values)
-        {
-            var bytes = new byte[4 * values.Length];
-            Buffer.BlockCopy(values, 0, bytes, 0, bytes.Length);
-            File.WriteAllBytes(path, bytes);
-        }
-
-        static float[] ReadFloats(string path)
-        {
-            byte[] bytes = File.ReadAllBytes(path);
-            var values = new float[bytes.Length / 4];
-            Buffer.BlockCopy(bytes, 0, values, 0, values.Length * 4);
-            return values;
-        }
-
-        /// <summary>Runs a tool; a missing tool or a non-zero exit fails the test with its output.</summary>
-        static string Run(string file, params string[] args)
-        {
-            var psi = new ProcessStartInfo(file) { RedirectStandardOutput = true, RedirectStandardError = true, UseShellExecute = false };
-            foreach (string a in args) psi.ArgumentList.Add(a);
-            Process p;
-            try { p = Process.Start(psi); }
-            catch (Exception e) { Assert.Fail($"cannot run {file}: {e.Message} (run Tools~/gt setup)"); return null; }
-            using (p)
-            {
-                var stderr = p.StandardError.ReadToEndAsync();
-                string stdout = p.StandardOutput.ReadToEnd();
-                if (!p.WaitForExit(300_000)) { p.Kill(); Assert.Fail(file + " timed out"); }
-                p.WaitForExit();
-                if (p.ExitCode != 0)
-                    Assert.Fail($"{file} {string.Join(" ", args)} exited {p.ExitCode}:\n{stdout}\n{stderr.Result}");
-                return stdout;
-            }
         }
     }
 }
