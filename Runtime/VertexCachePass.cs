@@ -20,8 +20,6 @@ namespace GregoryTerrain
         public const string Keyword = "GT_VERTEX_CACHE";
         public const string FactorsKernelName = "CacheTileFactors";
         public const string VerticesKernelName = "CacheTileVertices";
-        /// <summary>[numthreads(64, 1, 1)] of both kernels.</summary>
-        public const int ThreadsPerGroup = 64;
 
         /// <summary>Effect keywords the kernels evaluate, mirrored from the material onto the compute shader.</summary>
         [Flags]
@@ -155,10 +153,9 @@ namespace GregoryTerrain
             shader.SetBuffer(_verticesKernel, Ids.TileFactorsRW, _factors);
             shader.SetBuffer(_verticesKernel, Ids.VertexCacheRW, _vertices);
 
-            int tileCount = _tiles * _tiles;
-            shader.Dispatch(_factorsKernel, (tileCount + ThreadsPerGroup - 1) / ThreadsPerGroup, 1, 1);
+            shader.Dispatch(_factorsKernel, GregoryTerrain.VertexCache.FactorGroups(_tiles), 1, 1);   // 8 lanes a tile
             // Groups (x, y, 0 .. G - 1) share tile y M + x.
-            shader.Dispatch(_verticesKernel, _tiles, _tiles, VertexCache.GroupsPerTile(_factorLimit));
+            shader.Dispatch(_verticesKernel, _tiles, _tiles, GregoryTerrain.VertexCache.GroupsPerTile(_factorLimit));
 
             _last = inputs;
             _valid = true;

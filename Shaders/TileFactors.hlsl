@@ -98,53 +98,91 @@ float EdgeErrorTessFactor(uint drawPatch, float2 a, float2 b, float3 pa, float3 
     return ErrorTessFactor(sagitta, targetPixelError, maxFactor);
 }
 
-TileFactorSet ComputeTileFactors(uint patch, float3 cornerOS[4])
+// Uniform (every factor _Tess.w, nothing culled) or culled (all 0) tiles: true, with f set. The
+// others need their seven pieces (TileFactorPiece).
+bool TileFactorsWithoutPieces(float3 cornerOS[4], out TileFactorSet f)
 {
-    TileFactorSet f;
     if (UsesUniformTessFactor())
     {
         // Tests and benchmarks: every tile, every edge the same, nothing culled, so the vertex
         // count is known in advance.
-        float u = UniformTessFactor();
-        f.edge = u;
-        f.inside = u;
-        return f;
+        f.edge = UniformTessFactor();
+        f.inside = UniformTessFactor();
+        return true;
     }
-    if (TileCulled(cornerOS))
-    {
-        f.edge = 0.0;   // a zero edge factor drops the patch
-        f.inside = 0.0;
-        return f;
-    }
-    // The knob is the target screen-space error in pixels (_Tess.z): each edge gets the segment
-    // count whose chord error is that many pixels (TessellationPolicy.ErrorTessFactor). Each factor
-    // depends only on its edge (end points and seven points of the surface on it), taken lower tess
-    // coordinate first by both tiles that share it: their factors agree bit for bit (no cracks).
+    f.edge = 0.0;   // a zero edge factor drops the patch
+    f.inside = 0.0;
+    return TileCulled(cornerOS);
+}
+
+// The adaptive factors come in seven pieces, each from its own samples of the surface, so that the
+// vertex cache's kernel can give each its own lane (CacheTileFactors); the hull stage computes the
+// seven in turn (ComputeTileFactors). Pieces 0-3: the edges u = 0, v = 0, u = 1, v = 1 (the
+// tessellator's edge order). 4, 5: the midlines along u and along v. 6: the centre's deviation from
+// the diagonals.
+#define GT_TILE_FACTOR_PIECES 7u
+
+// Piece 0-5 is a line of the tile from tess coordinate a to b (a the lower one); its end points are
+// corners for the edges, surface points for the midlines; its length in terrain units.
+void TileFactorLine(uint piece, out float2 a, out float2 b, out uint2 corners, out uint axis)
+{
+    // u = 0, v = 0, u = 1, v = 1, midline along u (v = 1/2), midline along v (u = 1/2)
+    static const float4 lines[6] = { float4(0, 0, 0, 1), float4(0, 0, 1, 0), float4(1, 0, 1, 1),
+                                     float4(0, 1, 1, 1), float4(0, 0.5, 1, 0.5), float4(0.5, 0, 0.5, 1) };
+    static const uint2 ends[4] = { uint2(0, 2), uint2(0, 1), uint2(1, 3), uint2(2, 3) };
+    a = lines[piece].xy;
+    b = lines[piece].zw;
+    corners = ends[min(piece, 3u)];
+    axis = (piece == 1u || piece == 3u || piece == 4u) ? 0u : 1u;   // 0: along u (x), 1: along v (y)
+}
+
+// The knob is the target screen-space error in pixels (_Tess.z): each line gets the segment count
+// whose chord error is that many pixels (TessellationPolicy.ErrorTessFactor). An edge's factor
+// depends only on that edge (end points and seven points of the surface on it), taken lower tess
+// coordinate first by both tiles that share it: their factors agree bit for bit (no cracks).
+float TileFactorPiece(uint patch, uint piece, float3 cornerOS[4])
+{
     float target = TargetPixelError(), maxFactor = MaxTessFactor();
+    if (piece == 6u)
+    {
+        float3 centre = SurfaceObjectPosition(patch, float2(0.5, 0.5));
+        return InsideErrorTessFactor(DiagonalSagittaPixels(cornerOS[0], cornerOS[1], cornerOS[2], cornerOS[3],
+                                                           centre, ObjectPixelsPerUnit(centre)), target, maxFactor);
+    }
     float2 edgeLength = (_Range.zw - _Range.xy) / TileCount();   // along u (x) and along v (y), terrain units
     float noiseCurvature = 0.0;
 #if defined(GT_NOISE)
     // The octaves this frame draws (the count TerrainVertex uses): the knob counts the noise it shows.
     noiseCurvature = NoiseCurvatureBound(NoiseSettings(), OctaveCount(RangeWidth(), NoiseVerticesAcross(), NoiseSettings(), MaxNoiseOctaves()));
 #endif
-    f.edge[0] = EdgeErrorTessFactor(patch, float2(0, 0), float2(0, 1), cornerOS[0], cornerOS[2], edgeLength.y, noiseCurvature, target, maxFactor);   // u = 0
-    f.edge[1] = EdgeErrorTessFactor(patch, float2(0, 0), float2(1, 0), cornerOS[0], cornerOS[1], edgeLength.x, noiseCurvature, target, maxFactor);   // v = 0
-    f.edge[2] = EdgeErrorTessFactor(patch, float2(1, 0), float2(1, 1), cornerOS[1], cornerOS[3], edgeLength.y, noiseCurvature, target, maxFactor);   // u = 1
-    f.edge[3] = EdgeErrorTessFactor(patch, float2(0, 1), float2(1, 1), cornerOS[2], cornerOS[3], edgeLength.x, noiseCurvature, target, maxFactor);   // v = 1
-    // Inside factors follow the edges they run along: inside[0] subdivides along u, like the
-    // v = 0 and v = 1 edges. They match no neighbour, so they may look inside: the tile's two
-    // midlines (bumps between the edges) and the centre's deviation from the diagonals (a twist
-    // bends the diagonals, not the edges).
-    float midU = EdgeErrorTessFactor(patch, float2(0, 0.5), float2(1, 0.5), SurfaceObjectPosition(patch, float2(0, 0.5)),
-                                     SurfaceObjectPosition(patch, float2(1, 0.5)), edgeLength.x, noiseCurvature, target, maxFactor);
-    float midV = EdgeErrorTessFactor(patch, float2(0.5, 0), float2(0.5, 1), SurfaceObjectPosition(patch, float2(0.5, 0)),
-                                     SurfaceObjectPosition(patch, float2(0.5, 1)), edgeLength.y, noiseCurvature, target, maxFactor);
-    float3 centre = SurfaceObjectPosition(patch, float2(0.5, 0.5));
-    float diagonal = InsideErrorTessFactor(DiagonalSagittaPixels(cornerOS[0], cornerOS[1], cornerOS[2], cornerOS[3],
-                                                                 centre, ObjectPixelsPerUnit(centre)), target, maxFactor);
-    float2 inside = max(max(TessInsideFactors(f.edge[0], f.edge[1], f.edge[2], f.edge[3]), float2(midU, midV)), diagonal);
-    f.inside = inside;
+    float2 a, b;
+    uint2 corners;
+    uint axis;
+    TileFactorLine(piece, a, b, corners, axis);
+    float3 pa = piece < 4u ? cornerOS[corners.x] : SurfaceObjectPosition(patch, a);
+    float3 pb = piece < 4u ? cornerOS[corners.y] : SurfaceObjectPosition(patch, b);
+    return EdgeErrorTessFactor(patch, a, b, pa, pb, edgeLength[axis], noiseCurvature, target, maxFactor);
+}
+
+// Inside factors follow the edges they run along: inside[0] subdivides along u, like the v = 0 and
+// v = 1 edges. They match no neighbour, so they may look inside: the midlines (bumps between the
+// edges) and the diagonal term (a twist bends the diagonals, not the edges).
+TileFactorSet TileFactorsOfPieces(float piece[GT_TILE_FACTOR_PIECES])
+{
+    TileFactorSet f;
+    f.edge = float4(piece[0], piece[1], piece[2], piece[3]);
+    f.inside = max(max(TessInsideFactors(piece[0], piece[1], piece[2], piece[3]), float2(piece[4], piece[5])), piece[6]);
     return f;
+}
+
+TileFactorSet ComputeTileFactors(uint patch, float3 cornerOS[4])
+{
+    TileFactorSet f;
+    if (TileFactorsWithoutPieces(cornerOS, f)) return f;
+    float piece[GT_TILE_FACTOR_PIECES];
+    [unroll] for (uint i = 0u; i < GT_TILE_FACTOR_PIECES; i++)
+        piece[i] = TileFactorPiece(patch, i, cornerOS);
+    return TileFactorsOfPieces(piece);
 }
 
 #endif // GT_TILE_FACTORS_INCLUDED

@@ -71,8 +71,22 @@ namespace GregoryTerrain
             return (limit + 1) * (limit + 1) + 4 * (limit + 1);
         }
 
-        /// <summary>Lanes of a CacheTileVertices group (HLSL <c>GT_VERTEX_CACHE_GROUP</c>).</summary>
+        /// <summary>Lanes of a group of either kernel (HLSL <c>GT_VERTEX_CACHE_GROUP</c>).</summary>
         public const int ThreadsPerGroup = 64;
+
+        /// <summary>
+        /// CacheTileFactors' lanes per tile (HLSL <c>GT_VERTEX_CACHE_FACTOR_LANES</c>): one for each of
+        /// the seven pieces of a tile's adaptive factors, rounded up to a divisor of the group.
+        /// </summary>
+        public const int FactorLanesPerTile = 8;
+
+        /// <summary>CacheTileFactors' dispatch (groups, 1, 1) for M x M tiles: <see cref="FactorLanesPerTile"/> lanes a tile.</summary>
+        public static int FactorGroups(int tiles)
+        {
+            if (tiles < 1)
+                throw new ArgumentException(FormattableString.Invariant($"tiles ({tiles}) must be >= 1"), nameof(tiles));
+            return (int)(((long)tiles * tiles * FactorLanesPerTile + ThreadsPerGroup - 1) / ThreadsPerGroup);
+        }
 
         /// <summary>The most passes a CacheTileVertices group makes over its tile's points (HLSL <c>GT_VERTEX_CACHE_PASSES</c>).</summary>
         public const int PassesPerGroup = 4;

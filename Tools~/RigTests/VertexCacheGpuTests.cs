@@ -16,6 +16,8 @@ namespace GregoryTerrain.Rig.Tests
     {
         const string Cached = "noise+height_color+vertex_cache";
         const string Direct = "noise+height_color";
+        // The domain-stage path's hull_const writing its factors (GT_FACTOR_READBACK), same noise.
+        const string HullFactors = "factor_readback+noise";
         const TerrainKeywords Keywords = TerrainKeywords.Noise | TerrainKeywords.HeightColor;
 
         string _work, _spirv, _cli, _gridPath;
@@ -29,7 +31,7 @@ namespace GregoryTerrain.Rig.Tests
             _gridPath = Path.Combine(_work, "grid.json");
             ReadbackRun.Exec(_cli, new[] { "demo-grid", "--samples", "129", "--out", _gridPath }, null);
             _grid = PatchGridJson.Read(File.ReadAllText(_gridPath));
-            _spirv = ReadbackRun.CompileVariants(_work, Cached, Direct);
+            _spirv = ReadbackRun.CompileVariants(_work, Cached, Direct, HullFactors);
         }
 
         /// <summary>What one cached frame left in the two cache buffers.</summary>
@@ -80,7 +82,7 @@ namespace GregoryTerrain.Rig.Tests
                 "--device", "llvmpipe", "--stats", "--png", Path.Combine(dir, "image.png"),
                 "--storage", "7:" + VertexCacheBudget.TileFactorsBytes(tiles).ToString(CultureInfo.InvariantCulture),
                 "--storage", "8:" + VertexCacheBudget.VertexCacheBytes(tiles, frame.Limit, false).ToString(CultureInfo.InvariantCulture),
-                "--compute", Path.Combine(v, "cache_factors.spv") + ":" + ((tiles * tiles + 63) / 64).ToString(CultureInfo.InvariantCulture) + ",1,1",
+                "--compute", Path.Combine(v, "cache_factors.spv") + ":" + VertexCache.FactorGroups(tiles).ToString(CultureInfo.InvariantCulture) + ",1,1",
                 "--compute", Path.Combine(v, "cache_vertices.spv") + ":" + tiles.ToString(CultureInfo.InvariantCulture) + "," + tiles.ToString(CultureInfo.InvariantCulture)
                     + "," + VertexCache.GroupsPerTile(frame.Limit).ToString(CultureInfo.InvariantCulture),
                 "--dump-storage", "7:" + factors, "--dump-storage", "8:" + records,
@@ -231,6 +233,22 @@ namespace GregoryTerrain.Rig.Tests
                         }
                     }
                 }
+            // The kernel spreads each tile's factor pieces over lanes; hull_const computes them in
+            // one thread: the same factors, rounded up as the kernel rounds.
+            string hullFile = Path.Combine(_work, "adaptive", "hull_factors.f32");
+            HarnessRun hull = HarnessRun.Harness(ReadbackRun.Stages(_spirv, HullFactors).Concat(new[]
+            {
+                "--buffers", Path.Combine(_work, "adaptive"), "--patches", "64", "--width", "192", "--height", "128",
+                "--device", "llvmpipe", "--readback", hullFile, "--readback-floats", "512",
+            }).ToArray());
+            hull.AssertSucceeded();
+            float[] h = ReadbackRun.ReadFloats(hullFile);
+            for (int tile = 0; tile < 64; tile++)
+            {
+                var fromHull = new TileFactorSet(new Float4(h[8 * tile], h[8 * tile + 1], h[8 * tile + 2], h[8 * tile + 3]),
+                                                 new Float2(h[8 * tile + 4], h[8 * tile + 5]));
+                Assert.That(f.FactorsOf(tile), Is.EqualTo(VertexCache.IntegerFactors(fromHull)), "tile " + tile + ": the kernel's factors against hull_const's");
+            }
             int nan = f.Records.Count(x => !float.IsFinite(x));
             TestContext.Out.WriteLine("adaptive cache: {0} of 64 tiles culled, factors used {1}, {2} shared edges, {3} shared-edge vertex pairs, {4} differ; {5} triangles",
                 culled, string.Join(" ", distinct.OrderBy(x => x)), edgePairs, vertexPairs, differingVertices, f.Run.Long("stat", "clipping_invocations"));
