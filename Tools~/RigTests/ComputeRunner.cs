@@ -6,8 +6,8 @@ using NUnit.Framework;
 namespace GregoryTerrain.Rig.Tests
 {
     /// <summary>
-    /// Running compute kernels on lavapipe with gt-compute (Tools~/computerig), and the raw float
-    /// files it reads and writes. A missing tool fails the test that needs it.
+    /// Running compute kernels on lavapipe with gt-compute (Tools~/computerig) and the tools around
+    /// them (raw float files: ReadbackRun). A missing tool fails the test that needs it.
     /// </summary>
     static class ComputeRunner
     {
@@ -18,21 +18,6 @@ namespace GregoryTerrain.Rig.Tests
             string path = Path.Combine(build, "computerig", "gt-compute");
             if (!File.Exists(path)) Assert.Fail("gt-compute is missing at " + path + " (run Tools~/gt setup)");
             return path;
-        }
-
-        internal static void WriteFloats(string path, float[] values)
-        {
-            var bytes = new byte[4 * values.Length];
-            Buffer.BlockCopy(values, 0, bytes, 0, bytes.Length);
-            File.WriteAllBytes(path, bytes);
-        }
-
-        internal static float[] ReadFloats(string path)
-        {
-            byte[] bytes = File.ReadAllBytes(path);
-            var values = new float[bytes.Length / 4];
-            Buffer.BlockCopy(bytes, 0, values, 0, values.Length * 4);
-            return values;
         }
 
         /// <summary>Runs a tool; a missing tool or a non-zero exit fails the test with its output.</summary>

@@ -38,12 +38,12 @@ namespace GregoryTerrain.Rig.Tests
                     input[4 * i] = normals[i].x; input[4 * i + 1] = normals[i].y; input[4 * i + 2] = normals[i].z;
                 }
                 string inFile = Path.Combine(dir, "normals.f32"), outFile = Path.Combine(dir, "encoded.f32");
-                WriteFloats(inFile, input);
+                ReadbackRun.WriteFloats(inFile, input);
                 string o = Run(Runner(), "--spv", spv, "--entry", "NormalEncodingProbe", "--device", "llvmpipe",
                     "--groups", (normals.Count / 64).ToString(), "--buffer", "0=" + inFile,
                     "--zeros", $"1={32 * normals.Count}", "--out", "1=" + outFile);
                 Assert.That(o, Does.Contain("device llvmpipe"));
-                float[] gpu = ReadFloats(outFile);
+                float[] gpu = ReadbackRun.ReadFloats(outFile);
                 Assert.That(gpu.Length, Is.EqualTo(8 * normals.Count));
 
                 double worstCode = 0, worstNormal = 0;

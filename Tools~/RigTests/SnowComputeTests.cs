@@ -114,8 +114,8 @@ namespace GregoryTerrain.Rig.Tests
 
             string fieldFile = Path.Combine(_dir, "field.bin"), paramsFile = Path.Combine(_dir, "params.bin");
             string exposureFile = Path.Combine(_dir, "exposure.bin"), depthFile = Path.Combine(_dir, "depth.bin");
-            WriteFloats(fieldFile, field.Data);
-            WriteFloats(paramsFile, s.PackParams(dt));
+            ReadbackRun.WriteFloats(fieldFile, field.Data);
+            ReadbackRun.WriteFloats(paramsFile, s.PackParams(dt));
             int groups = r / 8, bytes = 4 * r * r;
             string runner = Runner();
             string o1 = Run(runner, "--spv", Spv("SnowExposureKernel"), "--entry", "SnowExposureKernel", "--device", Lavapipe,
@@ -125,7 +125,7 @@ namespace GregoryTerrain.Rig.Tests
             Run(runner, "--spv", Spv("SnowAccumulateKernel"), "--entry", "SnowAccumulateKernel", "--device", Lavapipe,
                 "--groups", $"{groups},{groups}", "--repeat", steps.ToString(), "--uniform", "0=" + paramsFile,
                 "--buffer", "1=" + fieldFile, "--buffer", "2=" + exposureFile, "--zeros", $"3={bytes}", "--out", "3=" + depthFile);
-            float[] gpuExposure = ReadFloats(exposureFile), gpuDepth = ReadFloats(depthFile);
+            float[] gpuExposure = ReadbackRun.ReadFloats(exposureFile), gpuDepth = ReadbackRun.ReadFloats(depthFile);
             Assert.That(gpuExposure.Length, Is.EqualTo(r * r));
             Assert.That(gpuDepth.Length, Is.EqualTo(r * r));
 
