@@ -183,6 +183,7 @@ namespace GregoryTerrain
         int _gridStamp;                                  // bumped on every upload: the cache sees new grid buffers
         readonly VertexCachePass _cache = new VertexCachePass();
         string _cacheError;                              // the size check's message (not drawn until fixed)
+        (int tiles, int limit, bool snow, long deviceLimit) _cacheCheckedFor;   // what _cacheError is the verdict on
         string _cacheFallbackReason;                     // why Compute cache is not used now, logged once per reason
         Material _cacheKeywordMaterial;                  // the material this renderer turned GT_VERTEX_CACHE on
         bool _usesCache;
@@ -646,7 +647,7 @@ namespace GregoryTerrain
             if (vertexEvaluation != VertexEvaluation.ComputeCache)
             {
                 _cacheFallbackReason = null;
-                _cacheError = null;
+                ClearCacheCheck();
                 StopCache();
                 return true;
             }
@@ -659,24 +660,14 @@ namespace GregoryTerrain
                 if (reason != _cacheFallbackReason)
                     Debug.LogWarning($"{name}: Vertex evaluation is Compute cache, but {reason}; evaluating in the domain stage instead.", this);
                 _cacheFallbackReason = reason;
-                _cacheError = null;
+                ClearCacheCheck();
                 StopCache();
                 return true;
             }
             _cacheFallbackReason = null;
 
             int limit = VertexCache.FactorLimit(_params.tess);
-            long deviceLimit = SystemInfo.maxGraphicsBufferSize;
-            try { VertexCacheBudget.CheckFits(tiles, limit, snow, deviceLimit > 0 ? deviceLimit : GpuLayout.MaxBufferBytes); }
-            catch (ArgumentException e)
-            {
-                string message = $"vertexEvaluation = ComputeCache: {e.Message}";
-                if (_cacheError != message)
-                    Debug.LogError($"{name}: cannot draw with these settings: {message}", this);
-                _cacheError = message;
-                return false;
-            }
-            _cacheError = null;
+            if (!CacheFits(limit, snow)) return false;
 
             _cache.EnsureBuffers(tiles, limit, snow);
             int w = cam.pixelWidth, h = cam.pixelHeight;
@@ -705,6 +696,34 @@ namespace GregoryTerrain
             SetCacheKeyword(true);
             _usesCache = true;
             return true;
+        }
+
+        /// <summary>
+        /// The size check (Core's <see cref="VertexCacheBudget.CheckFits"/>), run only when M, L, snow
+        /// or the device's limit changed: a failing check would otherwise throw every frame. Logs once
+        /// per failing setting; <see cref="SettingsError"/> shows it.
+        /// </summary>
+        bool CacheFits(int limit, bool snow)
+        {
+            long deviceLimit = SystemInfo.maxGraphicsBufferSize;
+            var key = (tiles, limit, snow, deviceLimit);
+            if (key.Equals(_cacheCheckedFor)) return _cacheError == null;
+            _cacheCheckedFor = key;
+            _cacheError = null;
+            try { VertexCacheBudget.CheckFits(tiles, limit, snow, deviceLimit > 0 ? deviceLimit : GpuLayout.MaxBufferBytes); }
+            catch (ArgumentException e)
+            {
+                _cacheError = $"vertexEvaluation = ComputeCache: {e.Message}";
+                Debug.LogError($"{name}: cannot draw with these settings: {_cacheError}", this);
+            }
+            return _cacheError == null;
+        }
+
+        /// <summary>Forgets the size check's verdict (the cache is not used now; checked afresh when it is).</summary>
+        void ClearCacheCheck()
+        {
+            _cacheError = null;
+            _cacheCheckedFor = default;
         }
 
         /// <summary>Why the compute cache cannot run this frame, or null. The message names the setting or device flag.</summary>

@@ -98,24 +98,25 @@ float EdgeErrorTessFactor(uint drawPatch, float2 a, float2 b, float3 pa, float3 
     return ErrorTessFactor(sagitta, targetPixelError, maxFactor);
 }
 
-// Uniform (every factor _Tess.w, nothing culled) or culled (all 0) tiles: true, with f set. The
-// others need their seven pieces (TileFactorPiece).
-bool TileFactorsWithoutPieces(float3 cornerOS[4], out TileFactorSet f)
+// Uniform factors (_Tess.w > 0; tests and benchmarks): every tile, every edge _Tess.w, nothing
+// culled, so the vertex count is known in advance, and no corner is needed. True with f set.
+bool UniformTileFactors(out TileFactorSet f)
 {
-    if (UsesUniformTessFactor())
-    {
-        // Tests and benchmarks: every tile, every edge the same, nothing culled, so the vertex
-        // count is known in advance.
-        f.edge = UniformTessFactor();
-        f.inside = UniformTessFactor();
-        return true;
-    }
-    f.edge = 0.0;   // a zero edge factor drops the patch
-    f.inside = 0.0;
-    return TileCulled(cornerOS);
+    f.edge = UniformTessFactor();
+    f.inside = UniformTessFactor();
+    return UsesUniformTessFactor();
 }
 
-// The adaptive factors come in seven pieces, each from its own samples of the surface, so that the
+// A culled tile: a zero edge factor drops the patch.
+TileFactorSet CulledTileFactors()
+{
+    TileFactorSet f;
+    f.edge = 0.0;
+    f.inside = 0.0;
+    return f;
+}
+
+// Otherwise, unless the tile is culled (TileCulled), the adaptive factors come in seven pieces, each from its own samples of the surface, so that the
 // vertex cache's kernel can give each its own lane (CacheTileFactors); the hull stage computes the
 // seven in turn (ComputeTileFactors). Pieces 0-3: the edges u = 0, v = 0, u = 1, v = 1 (the
 // tessellator's edge order). 4, 5: the midlines along u and along v. 6: the centre's deviation from
@@ -178,7 +179,8 @@ TileFactorSet TileFactorsOfPieces(float piece[GT_TILE_FACTOR_PIECES])
 TileFactorSet ComputeTileFactors(uint patch, float3 cornerOS[4])
 {
     TileFactorSet f;
-    if (TileFactorsWithoutPieces(cornerOS, f)) return f;
+    if (UniformTileFactors(f)) return f;
+    if (TileCulled(cornerOS)) return CulledTileFactors();
     float piece[GT_TILE_FACTOR_PIECES];
     [unroll] for (uint i = 0u; i < GT_TILE_FACTOR_PIECES; i++)
         piece[i] = TileFactorPiece(patch, i, cornerOS);

@@ -35,16 +35,15 @@ void CacheTileFactors(uint3 id : SV_DispatchThreadID, uint lane : SV_GroupIndex)
     uint tiles = TileCountInt();
     uint tile = id.x / GT_VERTEX_CACHE_FACTOR_LANES, piece = id.x % GT_VERTEX_CACHE_FACTOR_LANES;
     bool live = tile < tiles * tiles;
-    TileFactorSet f;
-    f.edge = 0.0;
-    f.inside = 0.0;
+    TileFactorSet f = CulledTileFactors();
     bool pieces = false;
-    if (live)
+    if (live && !UniformTileFactors(f))
     {
+        f = CulledTileFactors();
         float3 cornerOS[4];
         [unroll] for (uint c = 0u; c < 4u; c++)
             cornerOS[c] = TileCornerObjectPosition(tile, c);
-        pieces = !TileFactorsWithoutPieces(cornerOS, f);
+        pieces = !TileCulled(cornerOS);
         if (pieces && piece < GT_TILE_FACTOR_PIECES)
             gtTileFactorPieces[lane] = TileFactorPiece(tile, piece, cornerOS);
     }

@@ -1,5 +1,4 @@
 using System;
-using System.Diagnostics;
 using System.IO;
 using NUnit.Framework;
 
@@ -20,24 +19,7 @@ namespace GregoryTerrain.Rig.Tests
             return path;
         }
 
-        /// <summary>Runs a tool; a missing tool or a non-zero exit fails the test with its output.</summary>
-        internal static string Run(string file, params string[] args)
-        {
-            var psi = new ProcessStartInfo(file) { RedirectStandardOutput = true, RedirectStandardError = true, UseShellExecute = false };
-            foreach (string a in args) psi.ArgumentList.Add(a);
-            Process p;
-            try { p = Process.Start(psi); }
-            catch (Exception e) { Assert.Fail($"cannot run {file}: {e.Message} (run Tools~/gt setup)"); return null; }
-            using (p)
-            {
-                var stderr = p.StandardError.ReadToEndAsync();
-                string stdout = p.StandardOutput.ReadToEnd();
-                if (!p.WaitForExit(300_000)) { p.Kill(); Assert.Fail(file + " timed out"); }
-                p.WaitForExit();
-                if (p.ExitCode != 0)
-                    Assert.Fail($"{file} {string.Join(" ", args)} exited {p.ExitCode}:\n{stdout}\n{stderr.Result}");
-                return stdout;
-            }
-        }
+        /// <summary>Runs a tool (ReadbackRun.Exec): a missing tool or a non-zero exit fails the test with its output.</summary>
+        internal static string Run(string file, params string[] args) => ReadbackRun.Exec(file, args, null);
     }
 }

@@ -26,9 +26,7 @@ namespace GregoryTerrain.Rig.Tests
         public void Setup()
         {
             _work = ReadbackRun.PrepareWork("rigtests-deepzoom");
-            string gridPath = Path.Combine(_work, "grid.json");
-            ReadbackRun.Exec(ReadbackRun.Cli(), new[] { "demo-grid", "--samples", "129", "--out", gridPath }, null);
-            _grid = PatchGridJson.Read(File.ReadAllText(gridPath));
+            _grid = ReadbackRun.DemoGrid(_work, out _);
             _spirv = ReadbackRun.CompileVariants(_work, "readback", "readback+noise");
         }
 

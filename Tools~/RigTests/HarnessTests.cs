@@ -114,6 +114,16 @@ namespace GregoryTerrain.Rig.Tests
                 foreach (float v in values) w.Write(v);  // BinaryWriter is little-endian
         }
 
+        /// <summary>A static mesh for --static-mesh: one quad over object (x, z) in [0.25, 0.75]^2, two triangles.</summary>
+        (string positions, string indices) WriteQuadMesh(string name)
+        {
+            string pos = Path.Combine(_work, name + "_positions.f32"), idx = Path.Combine(_work, name + "_indices.u32");
+            WriteFloats(pos, new[] { 0.25f, 0, 0.25f, 0.75f, 0, 0.25f, 0.75f, 0, 0.75f, 0.25f, 0, 0.75f });
+            using (var w = new BinaryWriter(File.Create(idx)))
+                foreach (uint i in new uint[] { 0, 1, 2, 0, 2, 3 }) w.Write(i);
+            return (pos, idx);
+        }
+
         /// <summary>Params with _Range = range and _Tess = (tiles, F, 1, F); a top-down orthographic
         /// camera mapping object (x, z) in [0,1]^2 to the whole target; buffers whose element i
         /// holds i + 0.25 (control point x), i + 0.5 (region y), i + 0.75 (grid line).</summary>
@@ -302,10 +312,7 @@ namespace GregoryTerrain.Rig.Tests
         public void StaticMesh_DrawsAndTimesFrames()
         {
             string dir = MakeInputs("in_mesh", 4, 8, new[] { 0f, 0, 1, 1 });
-            string pos = Path.Combine(_work, "quad_positions.f32"), idx = Path.Combine(_work, "quad_indices.u32");
-            WriteFloats(pos, new[] { 0.25f, 0, 0.25f, 0.75f, 0, 0.25f, 0.75f, 0, 0.75f, 0.25f, 0, 0.75f });
-            using (var w = new BinaryWriter(File.Create(idx)))
-                foreach (uint i in new uint[] { 0, 1, 2, 0, 2, 3 }) w.Write(i);
+            var (pos, idx) = WriteQuadMesh("quad");
             HarnessRun r = HarnessRun.Harness("--static-mesh", "--mesh", pos, idx, "--vert", Path.Combine(_spv, "mesh.vert.spv"),
                 "--frag", Path.Combine(_spv, "mesh.frag.spv"), "--buffers", dir, "--width", Size.ToString(),
                 "--height", Size.ToString(), "--frames", "4", "--warmup", "1", "--timestamps", "--update-range-per-frame",
@@ -408,10 +415,7 @@ namespace GregoryTerrain.Rig.Tests
         public void ComputePattern_StaticMesh_DumpEqualsThePatternAndComputeIsTimed()
         {
             string dir = MakeInputs("in_compute_pattern", 4, 8, new[] { 0f, 0, 1, 1 });
-            string pos = Path.Combine(_work, "cquad_positions.f32"), idx = Path.Combine(_work, "cquad_indices.u32");
-            WriteFloats(pos, new[] { 0.25f, 0, 0.25f, 0.75f, 0, 0.25f, 0.75f, 0, 0.75f, 0.25f, 0, 0.75f });
-            using (var w = new BinaryWriter(File.Create(idx)))
-                foreach (uint i in new uint[] { 0, 1, 2, 0, 2, 3 }) w.Write(i);
+            var (pos, idx) = WriteQuadMesh("cquad");
             string d7 = Path.Combine(_work, "pattern_7.bin"), d8 = Path.Combine(_work, "pattern_8.bin");
             int bytes = 16 * PatternRecords + 256;  // 256 bytes the kernel never writes: the zero fill shows
             HarnessRun r = HarnessRun.Harness("--static-mesh", "--mesh", pos, idx, "--vert", Spv("mesh.vert.spv"),

@@ -70,6 +70,17 @@ namespace GregoryTerrain.Rig.Tests
             return cli;
         }
 
+        /// <summary>
+        /// The sample grid (<c>gt-cli demo-grid</c>, 129 samples) written to <paramref name="work"/>/grid.json,
+        /// read back; its path in <paramref name="path"/>.
+        /// </summary>
+        public static PatchGrid DemoGrid(string work, out string path)
+        {
+            path = Path.Combine(work, "grid.json");
+            Exec(Cli(), new[] { "demo-grid", "--samples", "129", "--out", path }, null);
+            return PatchGridJson.Read(File.ReadAllText(path));
+        }
+
         /// <summary>Compiles the named shader variants into <paramref name="work"/>/spirv and returns that folder.</summary>
         public static string CompileVariants(string work, params string[] variants)
         {
@@ -84,7 +95,10 @@ namespace GregoryTerrain.Rig.Tests
             var psi = new ProcessStartInfo(file) { RedirectStandardOutput = true, RedirectStandardError = true, UseShellExecute = false };
             foreach (string a in args) psi.ArgumentList.Add(a);
             if (env != null) foreach (var kv in env) psi.Environment[kv.Key] = kv.Value;
-            using (var p = Process.Start(psi))
+            Process started;
+            try { started = Process.Start(psi); }
+            catch (Exception e) { Assert.Fail($"cannot run {file}: {e.Message} (run Tools~/gt setup)"); return null; }
+            using (var p = started)
             {
                 var err = p.StandardError.ReadToEndAsync();
                 string output = p.StandardOutput.ReadToEnd();

@@ -5,7 +5,6 @@
 // gt-cli or lavapipe is missing: `gt setup` provides them.
 using System;
 using System.Collections.Generic;
-using System.Diagnostics;
 using System.IO;
 using System.Linq;
 using System.Text;
@@ -319,38 +318,16 @@ namespace GregoryTerrain.Rig.Tests
 
         // ---- helpers ---------------------------------------------------------------------------
 
-        static void WriteFloats(string path, float[] values)
-        {
-            var bytes = new byte[values.Length * 4];
-            Buffer.BlockCopy(values, 0, bytes, 0, bytes.Length);
-            File.WriteAllBytes(path, bytes);
-        }
+        static void WriteFloats(string path, float[] values) => ReadbackRun.WriteFloats(path, values);
 
-        static float[] ReadFloats(string path)
-        {
-            byte[] b = File.ReadAllBytes(path);
-            var f = new float[b.Length / 4];
-            Buffer.BlockCopy(b, 0, f, 0, f.Length * 4);
-            return f;
-        }
+        static float[] ReadFloats(string path) => ReadbackRun.ReadFloats(path);
 
+        // Every tool this fixture runs sees lavapipe only.
         static string Exec(string file, string[] args, Dictionary<string, string> env)
         {
-            var psi = new ProcessStartInfo(file) { RedirectStandardOutput = true, RedirectStandardError = true, UseShellExecute = false };
-            foreach (string a in args) psi.ArgumentList.Add(a);
-            psi.Environment["VK_ICD_FILENAMES"] = HarnessRun.LavapipeIcd;
-            if (env != null) foreach (var kv in env) psi.Environment[kv.Key] = kv.Value;
-            Process p;
-            try { p = Process.Start(psi); }
-            catch (Exception e) { Assert.Fail($"cannot run {file}: {e.Message} (run Tools~/gt setup)"); return null; }
-            using (p)
-            {
-                var err = p.StandardError.ReadToEndAsync();
-                string output = p.StandardOutput.ReadToEnd();
-                p.WaitForExit();
-                Assert.That(p.ExitCode, Is.EqualTo(0), file + " " + string.Join(" ", args) + " failed:\n" + output + err.Result);
-                return output;
-            }
+            var withLavapipe = new Dictionary<string, string> { ["VK_ICD_FILENAMES"] = HarnessRun.LavapipeIcd };
+            if (env != null) foreach (var kv in env) withLavapipe[kv.Key] = kv.Value;
+            return ReadbackRun.Exec(file, args, withLavapipe);
         }
     }
 }

@@ -41,9 +41,7 @@ namespace GregoryTerrain.Rig.Tests
         {
             _work = ReadbackRun.PrepareWork("rigtests-terrain");
             _cli = ReadbackRun.Cli();
-            _gridPath = Path.Combine(_work, "grid.json");
-            ReadbackRun.Exec(_cli, new[] { "demo-grid", "--samples", "129", "--out", _gridPath }, null);
-            _grid = PatchGridJson.Read(File.ReadAllText(_gridPath));
+            _grid = ReadbackRun.DemoGrid(_work, out _gridPath);
             _spirv = ReadbackRun.CompileVariants(_work, "readback", "readback+noise", "noise+height_color");
         }
 
