@@ -502,6 +502,16 @@ namespace GregoryTerrain.Rig.Tests
         [TestCase("--storage|8:64|--compute|{spv}/tiles.vert.spv:1", "--compute|tiles.vert.spv:1|no compute entry point")]
         [TestCase("--compute|{spv}/pattern.comp.spv:4,2,3", "--compute|pattern.comp.spv|binding 8|--storage 8:BYTES")]
         [TestCase("--dump-storage|8:out.bin", "--dump-storage|8:out.bin")]
+        // Frames in flight (inflight.hpp): what one buffer for all frames cannot do, and async compute
+        // where it has no meaning or no queue (lavapipe has one queue family, graphics and compute).
+        [TestCase("--in-flight|0", "--in-flight|at least 1")]
+        [TestCase("--in-flight|4", "--in-flight|'4'")]
+        [TestCase("--in-flight|2|--resend-bytes|64", "--in-flight 2|--resend-bytes")]
+        [TestCase("--in-flight|2|--readback|rb.f32|--readback-floats|4", "--in-flight 2|--readback")]
+        [TestCase("--async-compute", "--async-compute|--compute")]
+        [TestCase("--storage|8:64|--compute|{spv}/pattern.comp.spv:1|--async-compute", "--async-compute|--in-flight 2")]
+        [TestCase("--storage|8:64|--compute|{spv}/pattern.comp.spv:1|--in-flight|2|--async-compute",
+                  "--async-compute|llvmpipe|no queue family with compute and without graphics")]
         public void BadComputeArguments_Exit1NamingTheOptionAndValue(string extra, string expected)
         {
             string dir = MakeInputs("in_4x4_f8", 4, 8, new[] { 0f, 0, 1, 1 });

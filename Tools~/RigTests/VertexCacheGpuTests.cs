@@ -187,6 +187,41 @@ namespace GregoryTerrain.Rig.Tests
         }
 
         /// <summary>
+        /// Frames in flight (harness --in-flight 2: frames queued back to back, each slot its own
+        /// TerrainParams and cache, ordered by timeline semaphores): with the range changing every
+        /// frame, the last frame (slot 1, the copies) draws the picture and holds the cache that frames
+        /// run one at a time end with. A slot reading the other's range or cache would differ.
+        /// </summary>
+        [Test]
+        public void FramesInFlightEndWithThePictureAndCacheOfFramesOneAtATime()
+        {
+            string[] moving = { "--frames", "4", "--update-range-per-frame" };
+            CacheFrame one = DrawCached("one-at-a-time", "0,0,1,1", 8, new[] { "--factor", "7" }, 192, 128, null, moving);
+            CacheFrame two = DrawCached("in-flight", "0,0,1,1", 8, new[] { "--factor", "7" }, 192, 128, null,
+                                        moving.Concat(new[] { "--in-flight", "2" }).ToArray());
+            Assert.That(two.Run.Value("time", "in_flight"), Is.EqualTo(new[] { "2", "async_compute", "0" }));
+            RigPng a = RigPng.Read(Path.Combine(_work, "one-at-a-time", "image.png")), b = RigPng.Read(Path.Combine(_work, "in-flight", "image.png"));
+            Assert.That(b.PixelsDifferingFrom(a, 0), Is.EqualTo(0));
+            Assert.That(two.Records, Is.EqualTo(one.Records), "the last frame's cache");
+            Assert.That(two.Run.Long("image", "nonsky_pixels"), Is.GreaterThan(192 * 128 / 5));
+        }
+
+        /// <summary>
+        /// --compute-once with frames in flight: each slot's cache is built in its own first frame, so
+        /// the fourth frame (slot 1) still draws the whole terrain.
+        /// </summary>
+        [Test]
+        public void FramesInFlightBuildEachSlotsCacheOnce()
+        {
+            CacheFrame every = DrawCached("every-frame-2", "0,0,1,1", 8, new[] { "--factor", "7" }, 192, 128, null, "--frames", "4");
+            CacheFrame once = DrawCached("in-flight-once", "0,0,1,1", 8, new[] { "--factor", "7" }, 192, 128, null,
+                                         "--frames", "4", "--compute-once", "--in-flight", "2");
+            RigPng a = RigPng.Read(Path.Combine(_work, "every-frame-2", "image.png")), b = RigPng.Read(Path.Combine(_work, "in-flight-once", "image.png"));
+            Assert.That(b.PixelsDifferingFrom(a, 0), Is.EqualTo(0));
+            Assert.That(once.Records, Is.EqualTo(every.Records), "slot 1's cache");
+        }
+
+        /// <summary>
         /// Adaptive factors through the cache: integers within the limit, the inside rule, some tiles
         /// culled, shared edges with equal factors and bit-identical vertices on both sides.
         /// </summary>

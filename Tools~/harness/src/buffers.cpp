@@ -24,7 +24,12 @@ Buffer allocate(const Gpu& gpu, VkDeviceSize size, VkBufferUsageFlags usage,
     VkBufferCreateInfo info{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO};
     info.size = b.size;
     info.usage = usage;
-    info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
+    // Async compute: the compute family writes what the graphics family reads; concurrent
+    // sharing makes that legal without a release/acquire pair on every frame.
+    const uint32_t families[2] = {gpu.queueFamily, gpu.computeFamily};
+    info.sharingMode = gpu.asyncCompute ? VK_SHARING_MODE_CONCURRENT : VK_SHARING_MODE_EXCLUSIVE;
+    info.queueFamilyIndexCount = gpu.asyncCompute ? 2 : 0;
+    info.pQueueFamilyIndices = gpu.asyncCompute ? families : nullptr;
     GT_VK(vkCreateBuffer(gpu.device, &info, nullptr, &b.buffer));
     VkMemoryRequirements req{};
     vkGetBufferMemoryRequirements(gpu.device, b.buffer, &req);

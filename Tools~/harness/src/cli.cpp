@@ -168,6 +168,11 @@ const char* usageText() {
   --update-range-per-frame       write a new _Range into the uniform buffer every frame
   --compute-once                 run the --compute passes in the first frame only (later frames reuse their output)
   --resend-bytes B               re-upload B bytes through a staging copy every frame
+  --in-flight N                  N (1-3) frames queued at once, each with its own TerrainParams and
+                                 --storage buffers (--dump-storage: the last frame's); frame_ms is then
+                                 the period between frame ends (default 1: each frame waits for the last)
+  --async-compute                with --in-flight >= 2: the --compute passes go to a queue of a
+                                 compute-only family, alongside the graphics queue
   --max-vertices-per-draw V      split tessellated draws so each stays <= V generated vertices
                                  (default 65536 on lavapipe, 0 = no split elsewhere)
   --max-factor F                 per-patch tessellation factor bound for the split ((F+1)^2 vertices)
@@ -228,6 +233,8 @@ Options parseOptions(int argc, char** argv) {
         else if (a == "--timestamps") o.timestamps = true;
         else if (a == "--update-range-per-frame") o.updateRangePerFrame = true;
         else if (a == "--compute-once") o.computeOnce = true;
+        else if (a == "--in-flight") o.inFlight = u32(3);
+        else if (a == "--async-compute") o.asyncCompute = true;
         else if (a == "--resend-bytes") o.resendBytes = parseUnsigned(a, value(), 1ull << 34);
         else if (a == "--max-vertices-per-draw") o.maxVerticesPerDraw = parseUnsigned(a, value(), 1ull << 40);
         else if (a == "--max-factor") o.maxFactor = u32(4096);
@@ -247,6 +254,15 @@ Options parseOptions(int argc, char** argv) {
     if (o.readbackPath.empty() && o.readbackFloats != 0) fail("--readback-floats needs --readback FILE");
     if (o.computeOnce && o.computes.empty()) fail("--compute-once needs at least one --compute SPV:GX,GY,GZ");
     checkDumps(o);
+    if (o.inFlight == 0) fail("--in-flight: must be at least 1");
+    if (o.inFlight > 1) {
+        // Each of these has one buffer that every frame would write or read at once.
+        if (o.resendBytes) fail("--in-flight " + std::to_string(o.inFlight) + " cannot be combined with --resend-bytes");
+        if (!o.readbackPath.empty()) fail("--in-flight " + std::to_string(o.inFlight) + " cannot be combined with --readback");
+    }
+    if (o.asyncCompute && o.computes.empty()) fail("--async-compute needs at least one --compute SPV:GX,GY,GZ");
+    if (o.asyncCompute && o.inFlight < 2)
+        fail("--async-compute needs --in-flight 2 or more (with one frame at a time there is nothing to overlap)");
 
     if (staticMesh) {
         o.mode = Mode::StaticMesh;

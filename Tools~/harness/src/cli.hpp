@@ -69,6 +69,8 @@ struct Options {
     bool updateRangePerFrame = false;
     bool computeOnce = false;
     uint64_t resendBytes = 0;
+    uint32_t inFlight = 1;       // --in-flight N: frames submitted back to back (inflight.hpp)
+    bool asyncCompute = false;   // --async-compute: the pre-pass on a compute-only queue
 
     std::optional<uint64_t> maxVerticesPerDraw;  // unset: 65,536 on lavapipe, no limit elsewhere
     std::optional<uint32_t> maxFactor;            // unset: the device's maxTessellationGenerationLevel

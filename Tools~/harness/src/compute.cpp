@@ -4,16 +4,14 @@
 
 namespace gt {
 
-namespace {
-
-// The graphics shader stages that may read what the kernels wrote (tessellation stages only when
-// the feature is on: naming them otherwise is invalid).
 VkPipelineStageFlags graphicsShaderStages(const Gpu& gpu) {
     VkPipelineStageFlags s = VK_PIPELINE_STAGE_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT;
     if (gpu.enabled.tessellationShader)
         s |= VK_PIPELINE_STAGE_TESSELLATION_CONTROL_SHADER_BIT | VK_PIPELINE_STAGE_TESSELLATION_EVALUATION_SHADER_BIT;
     return s;
 }
+
+namespace {
 
 void memoryBarrier(VkCommandBuffer cmd, VkPipelineStageFlags src, VkAccessFlags srcAccess, VkPipelineStageFlags dst,
                    VkAccessFlags dstAccess) {
@@ -79,16 +77,18 @@ std::vector<ComputePass> createComputePasses(const Gpu& gpu, const std::vector<C
 }
 
 void recordComputePasses(VkCommandBuffer cmd, const Gpu& gpu, const std::vector<ComputePass>& passes,
-                         const Pipeline& graphics) {
+                         const Pipeline& graphics, VkDescriptorSet set, bool frameBarriers) {
     if (passes.empty()) return;
     const VkPipelineStageFlags graphicsStages = graphicsShaderStages(gpu);
     const VkAccessFlags readWrite = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT;
     // The command buffer is submitted once per frame: this frame's kernels must not overwrite what
     // the previous frame's draw is still reading, nor race its kernels' writes. The fence wait
     // between frames orders execution on the host side only; this barrier is the device-side rule.
-    memoryBarrier(cmd, graphicsStages | VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT,
-                  VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, readWrite);
-    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, graphics.layout, 0, 1, &graphics.set, 0, nullptr);
+    // (Frames in flight: semaphores do this, and on a compute-only queue no graphics stage exists.)
+    if (frameBarriers)
+        memoryBarrier(cmd, graphicsStages | VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT,
+                      VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, readWrite);
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, graphics.layout, 0, 1, &set, 0, nullptr);
     for (size_t i = 0; i < passes.size(); ++i) {
         // Kernel i+1 reads (and may rewrite) what kernel i wrote: e.g. the vertex cache's second
         // kernel reads the tile factors of the first.
@@ -100,8 +100,9 @@ void recordComputePasses(VkCommandBuffer cmd, const Gpu& gpu, const std::vector<
         vkCmdDispatch(cmd, p.groups[0], p.groups[1], p.groups[2]);
     }
     // The draw's hull/domain (or vertex) stages read the kernels' output.
-    memoryBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT, graphicsStages,
-                  VK_ACCESS_SHADER_READ_BIT);
+    if (frameBarriers)
+        memoryBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT, graphicsStages,
+                      VK_ACCESS_SHADER_READ_BIT);
 }
 
 void destroyComputePasses(const Gpu& gpu, std::vector<ComputePass>& passes) {

@@ -23,11 +23,16 @@ struct ComputePass {
 std::vector<ComputePass> createComputePasses(const Gpu& gpu, const std::vector<ComputeOption>& options,
                                              const Pipeline& graphics);
 
-// Records the pre-pass: a barrier ordering it after the previous frame's shader accesses, the
-// dispatches in order with a compute->compute barrier between two, and a barrier making the
-// kernels' writes visible to the graphics shader stages. Nothing when passes is empty.
+// Records the pre-pass over `set` (graphics.set, or a frame-in-flight set): the dispatches in order
+// with a compute->compute barrier between two; with frameBarriers also a barrier ordering it after
+// the previous frame's shader accesses and one making its writes visible to the graphics shader
+// stages (frames in flight order these with semaphores instead). Nothing when passes is empty.
 void recordComputePasses(VkCommandBuffer cmd, const Gpu& gpu, const std::vector<ComputePass>& passes,
-                         const Pipeline& graphics);
+                         const Pipeline& graphics, VkDescriptorSet set, bool frameBarriers);
+
+// The graphics shader stages that may read what the kernels wrote (tessellation stages only when
+// the feature is on: naming them otherwise is invalid).
+VkPipelineStageFlags graphicsShaderStages(const Gpu& gpu);
 
 void destroyComputePasses(const Gpu& gpu, std::vector<ComputePass>& passes);
 

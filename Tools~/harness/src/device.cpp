@@ -115,6 +115,35 @@ int graphicsQueueFamily(VkPhysicalDevice pd, bool compute, uint32_t* timestampBi
     return -1;
 }
 
+// The first family with compute and without graphics: on desktop GPUs the queues that run
+// alongside the graphics queue (NVIDIA's family 2, AMD's "async compute").
+int computeOnlyQueueFamily(VkPhysicalDevice pd) {
+    uint32_t n = 0;
+    vkGetPhysicalDeviceQueueFamilyProperties(pd, &n, nullptr);
+    std::vector<VkQueueFamilyProperties> q(n);
+    vkGetPhysicalDeviceQueueFamilyProperties(pd, &n, q.data());
+    for (uint32_t i = 0; i < n; ++i)
+        if ((q[i].queueFlags & VK_QUEUE_COMPUTE_BIT) && !(q[i].queueFlags & VK_QUEUE_GRAPHICS_BIT)) return static_cast<int>(i);
+    return -1;
+}
+
+bool supportsTimelineSemaphores(VkPhysicalDevice pd) {
+    VkPhysicalDeviceTimelineSemaphoreFeatures timeline{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_TIMELINE_SEMAPHORE_FEATURES};
+    VkPhysicalDeviceFeatures2 f2{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
+    f2.pNext = &timeline;
+    vkGetPhysicalDeviceFeatures2(pd, &f2);
+    return timeline.timelineSemaphore == VK_TRUE;
+}
+
+VkCommandPool createCommandPool(VkDevice device, uint32_t family) {
+    VkCommandPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
+    poolInfo.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
+    poolInfo.queueFamilyIndex = family;
+    VkCommandPool pool = VK_NULL_HANDLE;
+    GT_VK(vkCreateCommandPool(device, &poolInfo, nullptr, &pool));
+    return pool;
+}
+
 }  // namespace
 
 void listDevices() {
@@ -164,6 +193,19 @@ Gpu createGpu(const std::string& nameSubstring, const FeatureRequest& request) {
         fail(std::string(gpu.properties.deviceName) + " has no graphics queue" +
              (request.compute ? " that also does compute (needed for --compute)" : ""));
     gpu.queueFamily = static_cast<uint32_t>(family);
+    if (request.asyncCompute) {
+        const int computeFamily = computeOnlyQueueFamily(gpu.physical);
+        if (computeFamily < 0)
+            fail("--async-compute: " + std::string(gpu.properties.deviceName) +
+                 " has no queue family with compute and without graphics (drop --async-compute: the pre-pass then "
+                 "runs on the graphics queue)");
+        gpu.computeFamily = static_cast<uint32_t>(computeFamily);
+        gpu.asyncCompute = true;
+    }
+    const bool timeline = request.timeline || request.asyncCompute;
+    if (timeline && (gpu.properties.apiVersion < VK_API_VERSION_1_2 || !supportsTimelineSemaphores(gpu.physical)))
+        fail(std::string(gpu.properties.deviceName) +
+             " lacks the Vulkan 1.2 feature timelineSemaphore, needed for --in-flight above 1 and --async-compute");
 
     VkPhysicalDeviceFeatures supported{};
     vkGetPhysicalDeviceFeatures(gpu.physical, &supported);
@@ -184,21 +226,27 @@ Gpu createGpu(const std::string& nameSubstring, const FeatureRequest& request) {
     gpu.enabled.tessellationShader = supported.tessellationShader;
 
     float priority = 1.0f;
-    VkDeviceQueueCreateInfo queueInfo{VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};
-    queueInfo.queueFamilyIndex = gpu.queueFamily;
-    queueInfo.queueCount = 1;
-    queueInfo.pQueuePriorities = &priority;
+    VkDeviceQueueCreateInfo queueInfos[2] = {{VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO},
+                                             {VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO}};
+    queueInfos[0].queueFamilyIndex = gpu.queueFamily;
+    queueInfos[0].queueCount = 1;
+    queueInfos[0].pQueuePriorities = &priority;
+    queueInfos[1] = queueInfos[0];
+    queueInfos[1].queueFamilyIndex = gpu.computeFamily;
+    VkPhysicalDeviceTimelineSemaphoreFeatures timelineFeature{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_TIMELINE_SEMAPHORE_FEATURES};
+    timelineFeature.timelineSemaphore = VK_TRUE;
     VkDeviceCreateInfo info{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO};
-    info.queueCreateInfoCount = 1;
-    info.pQueueCreateInfos = &queueInfo;
+    info.pNext = timeline ? &timelineFeature : nullptr;
+    info.queueCreateInfoCount = gpu.asyncCompute ? 2 : 1;
+    info.pQueueCreateInfos = queueInfos;
     info.pEnabledFeatures = &gpu.enabled;
     GT_VK(vkCreateDevice(gpu.physical, &info, nullptr, &gpu.device));
     vkGetDeviceQueue(gpu.device, gpu.queueFamily, 0, &gpu.queue);
-
-    VkCommandPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
-    poolInfo.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
-    poolInfo.queueFamilyIndex = gpu.queueFamily;
-    GT_VK(vkCreateCommandPool(gpu.device, &poolInfo, nullptr, &gpu.commandPool));
+    gpu.commandPool = createCommandPool(gpu.device, gpu.queueFamily);
+    if (gpu.asyncCompute) {
+        vkGetDeviceQueue(gpu.device, gpu.computeFamily, 0, &gpu.computeQueue);
+        gpu.computePool = createCommandPool(gpu.device, gpu.computeFamily);
+    }
     return gpu;
 }
 
@@ -206,6 +254,7 @@ void destroyGpu(Gpu& gpu) {
     if (gpu.device) {
         vkDeviceWaitIdle(gpu.device);
         if (gpu.commandPool) vkDestroyCommandPool(gpu.device, gpu.commandPool, nullptr);
+        if (gpu.computePool) vkDestroyCommandPool(gpu.device, gpu.computePool, nullptr);
         vkDestroyDevice(gpu.device, nullptr);
     }
     if (gpu.instance) vkDestroyInstance(gpu.instance, nullptr);
@@ -221,6 +270,7 @@ void printDevice(const Gpu& gpu) {
     std::printf("device driver %s | %s\n", gpu.driverName.empty() ? "unknown" : gpu.driverName.c_str(),
                 gpu.driverInfo.c_str());
     std::printf("device lavapipe %d\n", gpu.isLavapipe ? 1 : 0);
+    if (gpu.asyncCompute) std::printf("device async_compute_family %u\n", gpu.computeFamily);
 }
 
 }  // namespace gt

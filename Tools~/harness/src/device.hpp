@@ -1,6 +1,6 @@
 // Device selection: instance without any window-system extension, one physical device picked
-// by name, one queue that does graphics (and so transfers; and compute when --compute asks), the
-// features the run asks for.
+// by name, one queue that does graphics (and so transfers; and compute when --compute asks), with
+// --async-compute a second queue of a compute-only family, the features the run asks for.
 #pragma once
 #include <string>
 #include <vulkan/vulkan.h>
@@ -13,6 +13,8 @@ struct FeatureRequest {
     bool vertexStores = false;    // vertexPipelineStoresAndAtomics (readback from the domain/vertex stage)
     bool statistics = false;      // pipelineStatisticsQuery
     bool compute = false;         // the queue must also do compute (--compute pre-pass in the frame)
+    bool timeline = false;        // timelineSemaphore (Vulkan 1.2): frames in flight (--in-flight 2)
+    bool asyncCompute = false;    // a second queue from a compute-only family (--async-compute)
 };
 
 struct Gpu {
@@ -22,6 +24,12 @@ struct Gpu {
     VkQueue queue = VK_NULL_HANDLE;
     uint32_t queueFamily = 0;
     VkCommandPool commandPool = VK_NULL_HANDLE;
+    // --async-compute: a queue of a family with compute and no graphics, its own pool. Buffers are
+    // then created VK_SHARING_MODE_CONCURRENT over both families (no ownership transfers).
+    VkQueue computeQueue = VK_NULL_HANDLE;
+    uint32_t computeFamily = 0;
+    VkCommandPool computePool = VK_NULL_HANDLE;
+    bool asyncCompute = false;
 
     VkPhysicalDeviceProperties properties{};
     VkPhysicalDeviceMemoryProperties memory{};

@@ -8,8 +8,6 @@
 
 namespace gt {
 
-namespace {
-
 void recordDraws(VkCommandBuffer cmd, const DrawWork& w) {
     if (w.mode == Mode::Tessellated) {
         // firstVertex over whole patches: SV_VertexID (= firstVertex + index) stays global,
@@ -26,15 +24,11 @@ void recordDraws(VkCommandBuffer cmd, const DrawWork& w) {
     vkCmdDrawIndexed(cmd, w.indexCount, w.instances, 0, 0, 0);
 }
 
-// The per-frame _Range of --update-range-per-frame: the base range shifted by a tiny,
-// frame-dependent fraction of its size, so the values really change every frame.
 std::array<float, 4> frameRange(const std::array<float, 4>& base, uint32_t frame) {
     const float dx = (base[2] - base[0]) * 1e-4f * static_cast<float>(frame % 8);
     const float dy = (base[3] - base[1]) * 1e-4f * static_cast<float>(frame % 8);
     return {base[0] + dx, base[1] + dy, base[2] + dx, base[3] + dy};
 }
-
-}  // namespace
 
 FrameResults runFrames(const Gpu& gpu, const RenderTarget& target, const Pipeline& pipeline, Inputs& inputs,
                        const DrawWork& work, const std::vector<ComputePass>& compute, const FrameSettings& s) {
@@ -70,7 +64,7 @@ FrameResults runFrames(const Gpu& gpu, const RenderTarget& target, const Pipelin
     if (stats.pool) vkCmdResetQueryPool(cmd, stats.pool, 0, 1);
     if (times.pool) vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, times.pool, 0);
     // The pre-pass first, so that its timestamp pair brackets the kernels alone (not the re-send copy).
-    if (withCompute) recordComputePasses(cmd, gpu, compute, pipeline);
+    if (withCompute) recordComputePasses(cmd, gpu, compute, pipeline, pipeline.set, true);
     if (timeCompute) vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, times.pool, 1);
     if (s.resendBytes) {
         VkBufferCopy region{0, 0, s.resendBytes};

@@ -44,6 +44,13 @@ struct FrameResults {
     std::vector<std::pair<std::string, uint64_t>> stats;  // of the last frame
 };
 
+// The frame's draw calls (inside the render pass, pipeline and set bound).
+void recordDraws(VkCommandBuffer cmd, const DrawWork& work);
+
+// The per-frame _Range of --update-range-per-frame: the base range shifted by a tiny,
+// frame-dependent fraction of its size, so the values really change every frame.
+std::array<float, 4> frameRange(const std::array<float, 4>& base, uint32_t frame);
+
 // compute: the pre-pass dispatched before the render pass of every frame (may be empty).
 FrameResults runFrames(const Gpu& gpu, const RenderTarget& target, const Pipeline& pipeline, Inputs& inputs,
                        const DrawWork& work, const std::vector<ComputePass>& compute, const FrameSettings& settings);

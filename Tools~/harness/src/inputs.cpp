@@ -79,6 +79,19 @@ void destroyInputs(const Gpu& gpu, Inputs& inputs) {
     for (Buffer& b : inputs.bindings) destroyBuffer(gpu, b);
 }
 
+Inputs copyWithOwnParams(const Gpu& gpu, const Inputs& inputs) {
+    Inputs copy = inputs;
+    const Buffer& from = inputs.bindings[kBindingParams];
+    copy.bindings[kBindingParams] = createHostBuffer(gpu, from.size, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, true);
+    std::memcpy(copy.bindings[kBindingParams].mapped, from.mapped, from.size);
+    return copy;
+}
+
+void destroyParamsCopy(const Gpu& gpu, Inputs& copy) {
+    destroyBuffer(gpu, copy.bindings[kBindingParams]);
+    copy = Inputs{};
+}
+
 const char* rigBindingName(uint32_t binding) {
     static const char* names[kBindingCountSnow] = {"TerrainParams", "RigCamera", "_ControlPoints", "_Regions",
                                                    "_GridLines", "_Readback", "_SnowDepth"};

@@ -50,6 +50,11 @@ void destroyInputs(const Gpu& gpu, Inputs& inputs);
 // reserves it for _SnowDepth, so a --storage there would silently change meaning in GT_SNOW runs.
 const char* rigBindingName(uint32_t binding);
 
+// A copy of inputs whose params buffer (binding 0) is its own, same bytes; every other binding
+// is shared. Destroy only that buffer (destroyParamsCopy), for a frame in flight.
+Inputs copyWithOwnParams(const Gpu& gpu, const Inputs& inputs);
+void destroyParamsCopy(const Gpu& gpu, Inputs& copy);
+
 // Writes a new _Range (the first float4) into the host-visible params buffer.
 void writeRange(Inputs& inputs, const std::array<float, 4>& range);
 

@@ -11,6 +11,7 @@
 #include "device.hpp"
 #include "draw_split.hpp"
 #include "frames.hpp"
+#include "inflight.hpp"
 #include "inputs.hpp"
 #include "pipeline.hpp"
 #include "png.hpp"
@@ -103,6 +104,8 @@ int run(const Options& o) {
     request.vertexStores = !o.readbackPath.empty();
     request.statistics = o.stats;
     request.compute = !o.computes.empty();
+    request.timeline = o.inFlight > 1;
+    request.asyncCompute = o.asyncCompute;
     Gpu gpu = createGpu(o.deviceSubstring, request);
     printDevice(gpu);
 
@@ -117,6 +120,7 @@ int run(const Options& o) {
     desc.mode = o.mode;
     desc.controlPoints = o.controlPoints;
     desc.wireframe = o.wireframe;
+    desc.descriptorSets = o.inFlight;
     const std::string vertDefault = o.mode == Mode::Fallback ? "vert_fallback" : "vert";
     desc.vert = loadShader(gpu, o.vertPath, 0, o.vertEntry, vertDefault);
     if (o.mode == Mode::Tessellated) {
@@ -138,11 +142,14 @@ int run(const Options& o) {
     fs.updateRange = o.updateRangePerFrame;
     fs.computeOnce = o.computeOnce;
     fs.resendBytes = o.resendBytes;
-    FrameResults results = runFrames(gpu, target, pipeline, inputs, work, compute, fs);
+    FrameResults results = o.inFlight > 1 ? runFramesInFlight(gpu, target, pipeline, inputs, storage, o.storage, o.dumps,
+                                                              work, compute, fs, o.inFlight)
+                                          : runFrames(gpu, target, pipeline, inputs, work, compute, fs);
 
     for (const auto& s : results.stats) std::printf("stat %s %llu\n", s.first.c_str(), static_cast<unsigned long long>(s.second));
     if (o.frames > 1 || o.timestamps) {
         std::printf("time frames %u warmup %u\n", o.frames, o.warmup);
+        if (o.inFlight > 1) std::printf("time in_flight %u async_compute %d\n", o.inFlight, o.asyncCompute ? 1 : 0);
         for (size_t i = 0; i < results.gpuMs.size(); ++i) std::printf("time frame_ms %zu %.6f\n", i, results.gpuMs[i]);
         printTimes("frame_ms", results.gpuMs);
         for (size_t i = 0; i < results.computeMs.size(); ++i)
@@ -165,10 +172,11 @@ int run(const Options& o) {
                     static_cast<unsigned long long>(o.readbackFloats), static_cast<unsigned long long>(nan));
     }
 
-    for (const StorageDump& d : o.dumps) {
-        const uint64_t bytes = dumpStorage(gpu, storage, d);
-        std::printf("storage %u %s bytes %llu\n", d.binding, d.path.c_str(), static_cast<unsigned long long>(bytes));
-    }
+    if (o.inFlight == 1)  // (frames in flight dumped their last frame's buffers themselves)
+        for (const StorageDump& d : o.dumps) {
+            const uint64_t bytes = dumpStorage(gpu, storage, d);
+            std::printf("storage %u %s bytes %llu\n", d.binding, d.path.c_str(), static_cast<unsigned long long>(bytes));
+        }
 
     destroyComputePasses(gpu, compute);
     destroyBuffer(gpu, work.indices);

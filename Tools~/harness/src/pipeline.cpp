@@ -32,7 +32,33 @@ uint32_t countOf(const std::vector<DescriptorEntry>& entries, VkDescriptorType t
     return n;
 }
 
-void createDescriptors(const Gpu& gpu, Pipeline& p, const Inputs& inputs, const std::vector<StorageBuffer>& storage) {
+void writeSet(const Gpu& gpu, VkDescriptorSet set, const std::vector<DescriptorEntry>& entries) {
+    std::vector<VkDescriptorBufferInfo> infos(entries.size());
+    std::vector<VkWriteDescriptorSet> writes(entries.size());
+    for (size_t i = 0; i < entries.size(); ++i) {
+        infos[i] = {entries[i].buffer, 0, VK_WHOLE_SIZE};
+        writes[i] = {VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+        writes[i].dstSet = set;
+        writes[i].dstBinding = entries[i].binding;
+        writes[i].descriptorCount = 1;
+        writes[i].descriptorType = entries[i].type;
+        writes[i].pBufferInfo = &infos[i];
+    }
+    vkUpdateDescriptorSets(gpu.device, static_cast<uint32_t>(writes.size()), writes.data(), 0, nullptr);
+}
+
+VkDescriptorSet allocateSet(const Gpu& gpu, const Pipeline& p) {
+    VkDescriptorSetAllocateInfo ai{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
+    ai.descriptorPool = p.pool;
+    ai.descriptorSetCount = 1;
+    ai.pSetLayouts = &p.setLayout;
+    VkDescriptorSet set = VK_NULL_HANDLE;
+    GT_VK(vkAllocateDescriptorSets(gpu.device, &ai, &set));
+    return set;
+}
+
+void createDescriptors(const Gpu& gpu, Pipeline& p, uint32_t sets, const Inputs& inputs,
+                       const std::vector<StorageBuffer>& storage) {
     const std::vector<DescriptorEntry> entries = descriptorEntries(inputs, storage);
     const uint32_t uniforms = countOf(entries, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER);
     const uint32_t storages = countOf(entries, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER);
@@ -58,30 +84,16 @@ void createDescriptors(const Gpu& gpu, Pipeline& p, const Inputs& inputs, const 
     li.pBindings = b.data();
     GT_VK(vkCreateDescriptorSetLayout(gpu.device, &li, nullptr, &p.setLayout));
 
-    VkDescriptorPoolSize sizes[2] = {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, uniforms}, {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, storages}};
+    // Room for the frames-in-flight sets too (addFrameSet): same layout, other buffers.
+    VkDescriptorPoolSize sizes[2] = {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, uniforms * sets},
+                                     {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, storages * sets}};
     VkDescriptorPoolCreateInfo pi{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
-    pi.maxSets = 1;
+    pi.maxSets = sets;
     pi.poolSizeCount = 2;
     pi.pPoolSizes = sizes;
     GT_VK(vkCreateDescriptorPool(gpu.device, &pi, nullptr, &p.pool));
-    VkDescriptorSetAllocateInfo ai{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
-    ai.descriptorPool = p.pool;
-    ai.descriptorSetCount = 1;
-    ai.pSetLayouts = &p.setLayout;
-    GT_VK(vkAllocateDescriptorSets(gpu.device, &ai, &p.set));
-
-    std::vector<VkDescriptorBufferInfo> infos(entries.size());
-    std::vector<VkWriteDescriptorSet> writes(entries.size());
-    for (size_t i = 0; i < entries.size(); ++i) {
-        infos[i] = {entries[i].buffer, 0, VK_WHOLE_SIZE};
-        writes[i] = {VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
-        writes[i].dstSet = p.set;
-        writes[i].dstBinding = entries[i].binding;
-        writes[i].descriptorCount = 1;
-        writes[i].descriptorType = entries[i].type;
-        writes[i].pBufferInfo = &infos[i];
-    }
-    vkUpdateDescriptorSets(gpu.device, static_cast<uint32_t>(writes.size()), writes.data(), 0, nullptr);
+    p.set = allocateSet(gpu, p);
+    writeSet(gpu, p.set, entries);
 }
 
 VkPipelineShaderStageCreateInfo stage(VkShaderStageFlagBits s, const ShaderModule& m) {
@@ -111,7 +123,7 @@ void checkShaderDescriptors(const ShaderModule& shader, const std::string& optio
 Pipeline createPipeline(const Gpu& gpu, const PipelineDesc& d, const RenderTarget& target, const Inputs& inputs,
                         const std::vector<StorageBuffer>& storage) {
     Pipeline p;
-    createDescriptors(gpu, p, inputs, storage);
+    createDescriptors(gpu, p, d.descriptorSets, inputs, storage);
     checkShaderDescriptors(d.vert, "--vert", p);
     if (d.mode == Mode::Tessellated) {
         checkShaderDescriptors(d.tesc, "--tesc", p);
@@ -195,6 +207,18 @@ Pipeline createPipeline(const Gpu& gpu, const PipelineDesc& d, const RenderTarge
     VkResult r = vkCreateGraphicsPipelines(gpu.device, VK_NULL_HANDLE, 1, &info, nullptr, &p.pipeline);
     if (r != VK_SUCCESS) fail("vkCreateGraphicsPipelines failed (" + resultName(r) + "): check the SPIR-V stages and entry points");
     return p;
+}
+
+VkDescriptorSet addFrameSet(const Gpu& gpu, const Pipeline& pipeline, const Inputs& inputs,
+                            const std::vector<StorageBuffer>& storage) {
+    const std::vector<DescriptorEntry> entries = descriptorEntries(inputs, storage);
+    std::vector<uint32_t> bindings;
+    for (const DescriptorEntry& e : entries) bindings.push_back(e.binding);
+    std::sort(bindings.begin(), bindings.end());
+    if (bindings != pipeline.bindings) fail("addFrameSet: the frame's buffers do not match set 0's bindings");
+    VkDescriptorSet set = allocateSet(gpu, pipeline);
+    writeSet(gpu, set, entries);
+    return set;
 }
 
 void destroyPipeline(const Gpu& gpu, Pipeline& p) {

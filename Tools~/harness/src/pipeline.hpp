@@ -17,6 +17,7 @@ struct PipelineDesc {
     uint32_t controlPoints = 4;  // patch size for the tessellated mode
     bool wireframe = false;
     ShaderModule vert, tesc, tese, frag;  // tesc/tese empty outside the tessellated mode
+    uint32_t descriptorSets = 1;          // set 0 of each frame in flight (--in-flight), see addFrameSet
 };
 
 struct Pipeline {
@@ -31,6 +32,12 @@ struct Pipeline {
 Pipeline createPipeline(const Gpu& gpu, const PipelineDesc& desc, const RenderTarget& target, const Inputs& inputs,
                         const std::vector<StorageBuffer>& storage);
 void destroyPipeline(const Gpu& gpu, Pipeline& pipeline);
+
+// Another set 0 of the same layout over another frame's buffers (frames in flight: each has its
+// own TerrainParams and --storage buffers). At most desc.descriptorSets - 1 of them; freed with
+// the pipeline's pool.
+VkDescriptorSet addFrameSet(const Gpu& gpu, const Pipeline& pipeline, const Inputs& inputs,
+                            const std::vector<StorageBuffer>& storage);
 
 // Throws gt::Error when the shader uses a descriptor the layout lacks (another set, or a binding
 // of set 0 not bound in this run), naming the shader, the option that gave it and what to add.

@@ -55,15 +55,23 @@ TimestampQuery createTimestampQuery(const Gpu& gpu, uint32_t count) {
     return q;
 }
 
-std::vector<double> readMsSinceFirst(const Gpu& gpu, const TimestampQuery& q) {
+std::vector<uint64_t> readTicks(const Gpu& gpu, const TimestampQuery& q) {
     std::vector<uint64_t> t(q.count);
     GT_VK(vkGetQueryPoolResults(gpu.device, q.pool, 0, q.count, t.size() * 8, t.data(), 8,
                                 VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT));
+    for (uint64_t& v : t) v &= q.mask;
+    return t;
+}
+
+double ticksToMs(const TimestampQuery& q, uint64_t from, uint64_t to) {
+    const uint64_t ticks = (to - from) & q.mask;  // wrap-safe within the valid bits
+    return static_cast<double>(ticks) * q.nsPerTick * 1e-6;
+}
+
+std::vector<double> readMsSinceFirst(const Gpu& gpu, const TimestampQuery& q) {
+    const std::vector<uint64_t> t = readTicks(gpu, q);
     std::vector<double> ms;
-    for (uint32_t i = 1; i < q.count; ++i) {
-        const uint64_t ticks = ((t[i] & q.mask) - (t[0] & q.mask)) & q.mask;  // wrap-safe within the valid bits
-        ms.push_back(static_cast<double>(ticks) * q.nsPerTick * 1e-6);
-    }
+    for (uint32_t i = 1; i < q.count; ++i) ms.push_back(ticksToMs(q, t[0], t[i]));
     return ms;
 }
 

@@ -31,6 +31,11 @@ TimestampQuery createTimestampQuery(const Gpu& gpu, uint32_t count = 2);
 // (waits for them): the last value is the frame time.
 std::vector<double> readMsSinceFirst(const Gpu& gpu, const TimestampQuery& q);
 
+// The raw ticks of all count timestamps of the last submitted use (waits for them), masked to the
+// valid bits; ticksToMs turns a wrap-safe difference of two into milliseconds.
+std::vector<uint64_t> readTicks(const Gpu& gpu, const TimestampQuery& q);
+double ticksToMs(const TimestampQuery& q, uint64_t from, uint64_t to);
+
 void destroyQuery(const Gpu& gpu, VkQueryPool& pool);
 
 }  // namespace gt
