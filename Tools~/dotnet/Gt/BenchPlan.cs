@@ -201,7 +201,9 @@ namespace GregoryTerrain.Rig
                 plan.Append($"{id}:terrain\trun\t-\t{Stages(FairVariant, false)} --patches {patches} {buffers} {view} {t} --update-range-per-frame\n");
                 plan.Append($"{id}:fallback\trun\t-\t{Stages(FairVariant, true)} --grid-factor {f} --instances {patches} {buffers} {view} {t} --update-range-per-frame\n");
                 plan.Append($"{id}:bake\tstatic-bake\t{id}\t{Stages("readback+noise", true)} --grid-factor {f} --instances {patches} {buffers} {view} --readback @OUT@/capture/{id}.f32 --readback-floats {12 * vertices}\n");
-                plan.Append($"{id}:static\trun\t-\t--vert @SPV@/static.spv --frag @SPV@/{FairVariant}/frag.spv --grid-factor {f} --instances {patches} --buffers @OUT@/static/{id} {view} {t}\n");
+                string staticRun = $"--vert @SPV@/static.spv --frag @SPV@/{FairVariant}/frag.spv --grid-factor {f} --instances {patches} --buffers @OUT@/static/{id} {view} {t}";
+                plan.Append($"{id}:static\trun\t-\t{staticRun}\n");
+                plan.Append($"{id}:static-if2\trun\t-\t{staticRun} {InFlight}\n");
                 plan.Append($"{id}:floor\tstatic-match\t{id}:terrain\t--static-mesh --mesh @MESH@ --vert @SPV@/mesh.vert.spv --frag @SPV@/mesh.frag.spv {buffers} {view} {t}\n");
                 string cache = $"{Stages(CachedNoiseVariant, false)} --patches {patches} {CacheArgs(CachedNoiseVariant, scene.Tessellation)} {buffers} {view} {t}";
                 plan.Append($"{id}:cached\trun\t-\t{cache} --update-range-per-frame\n");
@@ -227,6 +229,10 @@ namespace GregoryTerrain.Rig
                 string cache = $"{Stages(CachedNoiseVariant, false)} --patches {m * m} {CacheArgs(CachedNoiseVariant, cscene.Tessellation)} --buffers @JOB@/{cid} {view} {t}";
                 plan.Append($"{cid}:terrain\trun\t-\t{cache} --update-range-per-frame\n");
                 plan.Append($"{cid}:still\trun\t-\t{cache} --compute-once\n");
+                plan.Append($"{cid}:terrain-if2\trun\t-\t{cache} --update-range-per-frame {InFlight}\n");
+                plan.Append($"{cid}:still-if2\trun\t-\t{cache} --compute-once {InFlight}\n");
+                // lavapipe (the quick run) has one queue family: nothing to run the kernels alongside.
+                if (!quick) plan.Append($"{cid}:terrain-async\trun\t-\t{cache} --update-range-per-frame {InFlight} --async-compute\n");
                 meta.Append(Inv($"{cid}\tcached-adaptive-vs\t{m}\t0\t{ctarget:G6}\t64\t4\tfar\t{m * m}\n"));
             }
         }
@@ -238,6 +244,12 @@ namespace GregoryTerrain.Rig
         /// the same fragment work, one interpolant less computed per vertex.
         /// </summary>
         public const string FairVariant = "noise+height_color";
+
+        /// <summary>
+        /// Frames as an application runs them: two queued at once, each with its own vertex cache and
+        /// TerrainParams, the time per frame the period between frame ends (harness --in-flight).
+        /// </summary>
+        public const string InFlight = "--in-flight 2";
 
         /// <summary>The cache variant of the fair comparison: <see cref="FairVariant"/> plus GT_VERTEX_CACHE.</summary>
         public const string CachedNoiseVariant = "noise+height_color+vertex_cache";

@@ -165,7 +165,9 @@ namespace GregoryTerrain.Rig
                 var j = kv.Value;
                 if (j.Skipped != null) { o.AppendLine($"| {kv.Key.Split(' ')[0]} | not run: {j.Skipped} | | | |"); continue; }
                 long tris = j.Get("clipping_invocations");
-                o.AppendLine(Inv($"| {kv.Key.Split(' ')[0]} | {tris} | {j.GpuMs:G4} | {j.CpuMeanMs:G4} | {1000.0 / j.CpuMeanMs:F1} |"));
+                // Frames in flight (harness --in-flight) print no CPU time: GPU ms is their period.
+                string cpu = double.IsNaN(j.CpuMeanMs) ? "- | -" : Inv($"{j.CpuMeanMs:G4} | {1000.0 / j.CpuMeanMs:F1}");
+                o.AppendLine(Inv($"| {kv.Key.Split(' ')[0]} | {tris} | {j.GpuMs:G4} | {cpu} |"));
             }
             o.AppendLine();
             foreach (var prefix in jobs.Keys.Where(k => k.StartsWith("t1_") && k.Contains(":plain")).Select(k => k.Substring(0, k.IndexOf(':'))))
@@ -255,6 +257,34 @@ namespace GregoryTerrain.Rig
             o.AppendLine();
             foreach (var l in notes) o.AppendLine(l);
             if (notes.Count > 0) o.AppendLine();
+            InFlight(o, jobs, quick);
+        }
+
+        /// <summary>
+        /// The adaptive cached rows again, timed as an application runs frames (harness --in-flight 2,
+        /// BenchPlan.InFlight): two frames queued, each its own cache; the time is the period between
+        /// frame ends. Against the static mesh timed the same way.
+        /// </summary>
+        static void InFlight(StringBuilder o, Dictionary<string, Job> jobs, bool quick)
+        {
+            o.AppendLine("### Frames in flight (two queued, each with its own cache): the period between frame ends");
+            o.AppendLine();
+            o.AppendLine("Every column is a run of its own with harness `--in-flight 2`; async: the pre-pass on a queue of a compute-only family (`--async-compute`), beside the graphics queue. The static mesh runs the same way (`static-if2`).");
+            o.AppendLine();
+            o.AppendLine("| cached terrain | tiles | triangles | static in flight ms | range moving ms | / static | range moving, async compute ms | / static | nothing changes ms | / static |");
+            o.AppendLine("| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |");
+            Job Ok(string key) => jobs.TryGetValue(key, out var j) && j.Skipped == null && j.Exit == 0 ? j : null;
+            string Ms(Job j) => j == null ? "not run" : Inv($"{j.GpuMs:G4}");
+            string Over(Job j, Job st) => j == null || st == null ? "-" : Inv($"{j.GpuMs / st.GpuMs:F3}x");
+            foreach (var (m, sm, sf) in BenchPlan.AdaptiveVsStatic(quick))
+            {
+                string id = Inv($"vc_m{m}_s{sm}x{sf}");
+                Job st = Ok(Inv($"fs_m{sm}_f{sf}:static-if2 run")), moving = Ok($"{id}:terrain-if2 run"),
+                    async = Ok($"{id}:terrain-async run"), still = Ok($"{id}:still-if2 run");
+                string tris = moving == null ? "-" : Inv($"{moving.Get("clipping_invocations")}");
+                o.AppendLine(Inv($"| {id} (adaptive) | {m} | {tris} | {Ms(st)} | {Ms(moving)} | {Over(moving, st)} | {Ms(async)} | {Over(async, st)} | {Ms(still)} | {Over(still, st)} |"));
+            }
+            o.AppendLine();
         }
 
 
