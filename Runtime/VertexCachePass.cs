@@ -153,8 +153,8 @@ namespace GregoryTerrain
             shader.SetBuffer(_verticesKernel, Ids.TileFactorsRW, _factors);
             shader.SetBuffer(_verticesKernel, Ids.VertexCacheRW, _vertices);
 
-            shader.Dispatch(_factorsKernel, GregoryTerrain.VertexCache.FactorGroups(_tiles), 1, 1);   // 8 lanes a tile
-            // Groups (x, y, 0 .. G - 1) share tile y M + x.
+            // A group a tile for the factors; groups (x, y, 0 .. G - 1) share tile y M + x for the vertices.
+            shader.Dispatch(_factorsKernel, _tiles, _tiles, 1);
             shader.Dispatch(_verticesKernel, _tiles, _tiles, GregoryTerrain.VertexCache.GroupsPerTile(_factorLimit));
 
             _last = inputs;

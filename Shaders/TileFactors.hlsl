@@ -73,31 +73,6 @@ float3 SurfaceObjectPosition(uint drawPatch, float2 tess)
     return TerrainToObject(EvaluateSurface(drawPatch, tess).position);
 }
 
-// Factor of the edge from tess coordinate a to b (a the lower one) whose end points are pa, pb:
-// the surface (no noise) is evaluated at the GT_EDGE_SEGMENTS - 1 inner points of the edge
-// (SampledEdgeSagittaPixels), and the bound of the noise the frame draws is added (noiseCurvature,
-// 0 without GT_NOISE; edgeLength in terrain units). A neighbour sharing the edge forms the same
-// global points bit for bit (RangeCoordinate adds the integer tile index first), so it gets the
-// same factor: no cracks.
-float EdgeErrorTessFactor(uint drawPatch, float2 a, float2 b, float3 pa, float3 pb, float edgeLength, float noiseCurvature,
-                          float targetPixelError, float maxFactor)
-{
-    float3 p[GT_EDGE_SEGMENTS + 1];
-    float k[GT_EDGE_SEGMENTS + 1];
-    p[0] = pa;
-    p[GT_EDGE_SEGMENTS] = pb;
-    k[0] = k[GT_EDGE_SEGMENTS] = 0.0;
-    float kMax = 0.0;
-    [unroll] for (uint i = 1u; i < GT_EDGE_SEGMENTS; i++)
-    {
-        p[i] = SurfaceObjectPosition(drawPatch, lerp(a, b, (float)i / (float)GT_EDGE_SEGMENTS));
-        k[i] = ObjectPixelsPerUnit(p[i]);
-        kMax = max(kMax, k[i]);
-    }
-    float sagitta = SampledEdgeSagittaPixels(p, k) + NoiseSagittaPixels(noiseCurvature, edgeLength, kMax);
-    return ErrorTessFactor(sagitta, targetPixelError, maxFactor);
-}
-
 // Uniform factors (_Tess.w > 0; tests and benchmarks): every tile, every edge _Tess.w, nothing
 // culled, so the vertex count is known in advance, and no corner is needed. True with f set.
 bool UniformTileFactors(out TileFactorSet f)
@@ -137,32 +112,99 @@ void TileFactorLine(uint piece, out float2 a, out float2 b, out uint2 corners, o
     axis = (piece == 1u || piece == 3u || piece == 4u) ? 0u : 1u;   // 0: along u (x), 1: along v (y)
 }
 
-// The knob is the target screen-space error in pixels (_Tess.z): each line gets the segment count
-// whose chord error is that many pixels (TessellationPolicy.ErrorTessFactor). An edge's factor
-// depends only on that edge (end points and seven points of the surface on it), taken lower tess
-// coordinate first by both tiles that share it: their factors agree bit for bit (no cracks).
-float TileFactorPiece(uint patch, uint piece, float3 cornerOS[4])
+// The surface samples the adaptive factors read, numbered so that the vertex cache's kernel can
+// give each its own lane (CacheTileFactors): 0-3 the corners, then the GT_EDGE_SEGMENTS - 1 inner
+// points of line 0, 1, .. 5 in turn, then the midlines' end points (line 4's a and b, line 5's a
+// and b), then the centre. A sample is (object position, pixels per object unit), the latter only
+// where a factor reads it (inner points, centre), else 0.
+#define GT_TILE_INNER_POINTS (GT_EDGE_SEGMENTS - 1u)
+#define GT_TILE_MIDLINE_END_SAMPLE (4u + 6u * GT_TILE_INNER_POINTS)
+#define GT_TILE_CENTRE_SAMPLE (GT_TILE_MIDLINE_END_SAMPLE + 4u)
+#define GT_TILE_FACTOR_SAMPLES (GT_TILE_CENTRE_SAMPLE + 1u)
+
+float4 TileFactorSample(uint patch, uint s)
 {
-    float target = TargetPixelError(), maxFactor = MaxTessFactor();
-    if (piece == 6u)
+    if (s < 4u) return float4(TileCornerObjectPosition(patch, s), 0.0);
+    float2 a, b;
+    uint2 corners;
+    uint axis;
+    if (s < GT_TILE_MIDLINE_END_SAMPLE)
     {
-        float3 centre = SurfaceObjectPosition(patch, float2(0.5, 0.5));
-        return InsideErrorTessFactor(DiagonalSagittaPixels(cornerOS[0], cornerOS[1], cornerOS[2], cornerOS[3],
-                                                           centre, ObjectPixelsPerUnit(centre)), target, maxFactor);
+        uint inner = s - 4u;
+        TileFactorLine(inner / GT_TILE_INNER_POINTS, a, b, corners, axis);
+        float t = (float)(inner % GT_TILE_INNER_POINTS + 1u) / (float)GT_EDGE_SEGMENTS;
+        float3 p = SurfaceObjectPosition(patch, lerp(a, b, t));
+        return float4(p, ObjectPixelsPerUnit(p));
     }
+    if (s < GT_TILE_CENTRE_SAMPLE)
+    {
+        uint end = s - GT_TILE_MIDLINE_END_SAMPLE;
+        TileFactorLine(4u + end / 2u, a, b, corners, axis);
+        return float4(SurfaceObjectPosition(patch, (end & 1u) ? b : a), 0.0);
+    }
+    float3 centre = SurfaceObjectPosition(patch, float2(0.5, 0.5));
+    return float4(centre, ObjectPixelsPerUnit(centre));
+}
+
+// The sample at point i (0 .. GT_EDGE_SEGMENTS, from a to b) of line `piece` (0-5).
+uint TileLineSample(uint piece, uint i)
+{
+    float2 a, b;
+    uint2 corners;
+    uint axis;
+    TileFactorLine(piece, a, b, corners, axis);
+    if (i > 0u && i < GT_EDGE_SEGMENTS) return 4u + piece * GT_TILE_INNER_POINTS + i - 1u;
+    if (piece < 4u) return i == 0u ? corners.x : corners.y;
+    return GT_TILE_MIDLINE_END_SAMPLE + 2u * (piece - 4u) + (i == 0u ? 0u : 1u);
+}
+
+// The knob is the target screen-space error in pixels (_Tess.z): each line gets the segment count
+// whose chord error is that many pixels (TessellationPolicy.ErrorTessFactor), from its points p
+// and their pixel scales k (TileLineSample): the chord error of the surface (no noise) plus the
+// bound of the noise the frame draws. An edge's factor depends only on that edge (end points and
+// seven points of the surface on it), taken lower tess coordinate first by both tiles that share
+// it, from the same global points bit for bit (RangeCoordinate adds the integer tile index first):
+// their factors agree (no cracks).
+float LineErrorTessFactor(uint piece, float3 p[GT_EDGE_SEGMENTS + 1], float k[GT_EDGE_SEGMENTS + 1])
+{
+    float kMax = 0.0;
+    [unroll] for (uint i = 1u; i < GT_EDGE_SEGMENTS; i++)
+        kMax = max(kMax, k[i]);
+    float2 a, b;
+    uint2 corners;
+    uint axis;
+    TileFactorLine(piece, a, b, corners, axis);
     float2 edgeLength = (_Range.zw - _Range.xy) / TileCount();   // along u (x) and along v (y), terrain units
     float noiseCurvature = 0.0;
 #if defined(GT_NOISE)
     // The octaves this frame draws (the count TerrainVertex uses): the knob counts the noise it shows.
     noiseCurvature = NoiseCurvatureBound(NoiseSettings(), OctaveCount(RangeWidth(), NoiseVerticesAcross(), NoiseSettings(), MaxNoiseOctaves()));
 #endif
-    float2 a, b;
-    uint2 corners;
-    uint axis;
-    TileFactorLine(piece, a, b, corners, axis);
-    float3 pa = piece < 4u ? cornerOS[corners.x] : SurfaceObjectPosition(patch, a);
-    float3 pb = piece < 4u ? cornerOS[corners.y] : SurfaceObjectPosition(patch, b);
-    return EdgeErrorTessFactor(patch, a, b, pa, pb, edgeLength[axis], noiseCurvature, target, maxFactor);
+    float sagitta = SampledEdgeSagittaPixels(p, k) + NoiseSagittaPixels(noiseCurvature, edgeLength[axis], kMax);
+    return ErrorTessFactor(sagitta, TargetPixelError(), MaxTessFactor());
+}
+
+// Piece 6: the centre's deviation from the diagonals (centre = TileFactorSample's centre sample).
+float CentreErrorTessFactor(float3 cornerOS[4], float4 centre)
+{
+    return InsideErrorTessFactor(DiagonalSagittaPixels(cornerOS[0], cornerOS[1], cornerOS[2], cornerOS[3], centre.xyz, centre.w),
+                                 TargetPixelError(), MaxTessFactor());
+}
+
+// One piece, its samples evaluated in turn (the hull stage's path; the kernel spreads them).
+float TileFactorPiece(uint patch, uint piece, float3 cornerOS[4])
+{
+    if (piece == 6u) return CentreErrorTessFactor(cornerOS, TileFactorSample(patch, GT_TILE_CENTRE_SAMPLE));
+    float3 p[GT_EDGE_SEGMENTS + 1];
+    float k[GT_EDGE_SEGMENTS + 1];
+    [unroll] for (uint i = 0u; i <= GT_EDGE_SEGMENTS; i++)
+    {
+        uint s = TileLineSample(piece, i);
+        float4 v = s < 4u ? float4(cornerOS[s], 0.0) : TileFactorSample(patch, s);
+        p[i] = v.xyz;
+        k[i] = v.w;
+    }
+    return LineErrorTessFactor(piece, p, k);
 }
 
 // Inside factors follow the edges they run along: inside[0] subdivides along u, like the v = 0 and

@@ -32,11 +32,9 @@ uint VertexCacheFactorLimit()
 // (L + 1)^2 slots of the inside grid, then 4 edges of L + 1.
 uint VertexCacheSlotsPerTile(uint limit) { return (limit + 1u) * (limit + 1u) + 4u * (limit + 1u); }
 
-// Lanes per group of both kernels; CacheTileFactors' lanes per tile (GT_TILE_FACTOR_PIECES, 7,
-// rounded up to a divisor of the group); the most passes a CacheTileVertices group makes over a
-// tile's points.
+// Lanes per group of both kernels (CacheTileFactors: a group a tile, a lane for each of its
+// GT_TILE_FACTOR_SAMPLES); the most passes a CacheTileVertices group makes over a tile's points.
 #define GT_VERTEX_CACHE_GROUP 64u
-#define GT_VERTEX_CACHE_FACTOR_LANES 8u
 #define GT_VERTEX_CACHE_PASSES 4u
 
 // The most points a tile at factors <= L has: the (L - 1)^2 interior and 4 edges of L + 1.

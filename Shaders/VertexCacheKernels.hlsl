@@ -3,7 +3,7 @@
 // Unity: TerrainCache.compute with LodCameraComputeAdapter.hlsl): the factors need GT_ObjectToClip
 // and GT_ScreenSize of the camera that decides the tessellation.
 //
-//   CacheTileFactors    8 lanes per tile: culling and adaptive (or uniform) factors, rounded to
+//   CacheTileFactors    a group per tile: culling and adaptive (or uniform) factors, rounded to
 //                       the integer factors the draw will use (VertexCacheIntegerFactors)
 //   CacheTileVertices   a few groups per tile: every vertex the tessellator makes at those factors,
 //                       evaluated by EvaluateTerrainVertex (the domain stage's own path) into its slot
@@ -23,42 +23,68 @@
 RWStructuredBuffer<float4> _TileFactorsRW GT_REGISTER(u2);
 RWStructuredBuffer<float4> _VertexCacheRW GT_REGISTER(u3);
 
-groupshared float gtTileFactorPieces[GT_VERTEX_CACHE_GROUP];
+groupshared float4 gtTileFactorSamples[GT_TILE_FACTOR_SAMPLES];
+groupshared float gtTileFactorPieces[GT_TILE_FACTOR_PIECES];
 
-// Dispatch (ceil(8 M^2 / 64), 1, 1): 8 lanes a tile, lane k < 7 computing piece k of its factors
-// (TileFactorPiece), lane 0 assembling them. Why not one lane a tile: a tile's ~50 surface
-// evaluations in one thread made the pass as long as that chain, on 16 of the GPU's units at
-// 32 x 32 tiles (adaptive, 0.6M triangles: 0.1 ms of pre-pass against 0.04 for uniform factors).
-[numthreads(64, 1, 1)]
-void CacheTileFactors(uint3 id : SV_DispatchThreadID, uint lane : SV_GroupIndex)
+void WriteTileFactors(uint tile, TileFactorSet f)
 {
-    uint tiles = TileCountInt();
-    uint tile = id.x / GT_VERTEX_CACHE_FACTOR_LANES, piece = id.x % GT_VERTEX_CACHE_FACTOR_LANES;
-    bool live = tile < tiles * tiles;
-    TileFactorSet f = CulledTileFactors();
-    bool pieces = false;
-    if (live && !UniformTileFactors(f))
-    {
-        f = CulledTileFactors();
-        float3 cornerOS[4];
-        [unroll] for (uint c = 0u; c < 4u; c++)
-            cornerOS[c] = TileCornerObjectPosition(tile, c);
-        pieces = !TileCulled(cornerOS);
-        if (pieces && piece < GT_TILE_FACTOR_PIECES)
-            gtTileFactorPieces[lane] = TileFactorPiece(tile, piece, cornerOS);
-    }
-    GroupMemoryBarrierWithGroupSync();
-    if (!live || piece != 0u) return;
-    if (pieces)
-    {
-        float p[GT_TILE_FACTOR_PIECES];
-        [unroll] for (uint k = 0u; k < GT_TILE_FACTOR_PIECES; k++)
-            p[k] = gtTileFactorPieces[lane + k];
-        f = TileFactorsOfPieces(p);
-    }
     f = VertexCacheIntegerFactors(f);
     _TileFactorsRW[2u * tile] = f.edge;
     _TileFactorsRW[2u * tile + 1u] = float4(f.inside, f.edge.x == 0.0 ? 1.0 : 0.0, 0.0);
+}
+
+// Dispatch (M, M, 1): a group a tile. The tile's 51 surface samples (TileFactorSample) one a lane,
+// then its seven pieces (TileFactorPiece's arithmetic on the shared samples) one a lane, then lane 0
+// assembles them. Why so wide: the factors are a chain of surface evaluations, and the chain's
+// length is the pass's. One lane a tile: ~50 evaluations (0.6M triangles, 32 x 32 tiles, H200: 0.1
+// ms of pre-pass against 0.04 for uniform factors); one lane a piece: ~11 (0.061 ms); one sample
+// a lane: 1 (0.045 ms, and 0.051 -> 0.038 ms at 16 x 16 tiles, one run).
+[numthreads(64, 1, 1)]
+void CacheTileFactors(uint3 group : SV_GroupID, uint lane : SV_GroupIndex)
+{
+    uint tiles = TileCountInt();
+    if (group.x >= tiles || group.y >= tiles) return;
+    uint tile = group.y * tiles + group.x;
+    TileFactorSet f;
+    if (UniformTileFactors(f))   // the same for every lane of the group: no barrier is skipped by some only
+    {
+        if (lane == 0u) WriteTileFactors(tile, f);
+        return;
+    }
+    if (lane < GT_TILE_FACTOR_SAMPLES) gtTileFactorSamples[lane] = TileFactorSample(tile, lane);
+    GroupMemoryBarrierWithGroupSync();
+    float3 cornerOS[4];
+    [unroll] for (uint c = 0u; c < 4u; c++)
+        cornerOS[c] = gtTileFactorSamples[c].xyz;
+    bool culled = TileCulled(cornerOS);
+    if (!culled && lane < GT_TILE_FACTOR_PIECES)
+    {
+        if (lane == 6u)
+            gtTileFactorPieces[lane] = CentreErrorTessFactor(cornerOS, gtTileFactorSamples[GT_TILE_CENTRE_SAMPLE]);
+        else
+        {
+            float3 p[GT_EDGE_SEGMENTS + 1];
+            float k[GT_EDGE_SEGMENTS + 1];
+            [unroll] for (uint i = 0u; i <= GT_EDGE_SEGMENTS; i++)
+            {
+                float4 v = gtTileFactorSamples[TileLineSample(lane, i)];
+                p[i] = v.xyz;
+                k[i] = v.w;
+            }
+            gtTileFactorPieces[lane] = LineErrorTessFactor(lane, p, k);
+        }
+    }
+    GroupMemoryBarrierWithGroupSync();
+    if (lane != 0u) return;
+    if (culled)
+    {
+        WriteTileFactors(tile, CulledTileFactors());
+        return;
+    }
+    float piece[GT_TILE_FACTOR_PIECES];
+    [unroll] for (uint k = 0u; k < GT_TILE_FACTOR_PIECES; k++)
+        piece[k] = gtTileFactorPieces[k];
+    WriteTileFactors(tile, TileFactorsOfPieces(piece));
 }
 
 void WriteVertexCacheRecord(uint slot, TerrainVertexAttributes a)

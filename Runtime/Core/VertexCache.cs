@@ -75,18 +75,11 @@ namespace GregoryTerrain
         public const int ThreadsPerGroup = 64;
 
         /// <summary>
-        /// CacheTileFactors' lanes per tile (HLSL <c>GT_VERTEX_CACHE_FACTOR_LANES</c>): one for each of
-        /// the seven pieces of a tile's adaptive factors, rounded up to a divisor of the group.
+        /// The surface samples of a tile's adaptive factors (HLSL <c>GT_TILE_FACTOR_SAMPLES</c>): 4 corners,
+        /// 7 inner points on each of 6 lines, the 2 midlines' 4 end points, the centre. CacheTileFactors
+        /// runs one group a tile (dispatch (M, M, 1)) and one sample a lane, so they must fit a group.
         /// </summary>
-        public const int FactorLanesPerTile = 8;
-
-        /// <summary>CacheTileFactors' dispatch (groups, 1, 1) for M x M tiles: <see cref="FactorLanesPerTile"/> lanes a tile.</summary>
-        public static int FactorGroups(int tiles)
-        {
-            if (tiles < 1)
-                throw new ArgumentException(FormattableString.Invariant($"tiles ({tiles}) must be >= 1"), nameof(tiles));
-            return (int)(((long)tiles * tiles * FactorLanesPerTile + ThreadsPerGroup - 1) / ThreadsPerGroup);
-        }
+        public const int FactorSamplesPerTile = 4 + 6 * 7 + 4 + 1;
 
         /// <summary>The most passes a CacheTileVertices group makes over its tile's points (HLSL <c>GT_VERTEX_CACHE_PASSES</c>).</summary>
         public const int PassesPerGroup = 4;

@@ -73,11 +73,8 @@ namespace GregoryTerrain.Tests
                 Assert.That((groups - 1) * perGroup, Is.LessThan(points), $"limit {limit}");
             }
             Assert.That(VertexCache.GroupsPerTile(17), Is.EqualTo(2));
-            // CacheTileFactors: 8 lanes a tile, 64 a group.
-            Assert.That(VertexCache.FactorGroups(1), Is.EqualTo(1));
-            Assert.That(VertexCache.FactorGroups(3), Is.EqualTo(2));
-            Assert.That(VertexCache.FactorGroups(32), Is.EqualTo(128));
-            Assert.That(() => VertexCache.FactorGroups(0), Throws.InstanceOf<ArgumentException>().With.Message.Contains("tiles (0)"));
+            // CacheTileFactors: a group a tile, a sample a lane.
+            Assert.That(VertexCache.FactorSamplesPerTile, Is.EqualTo(51).And.LessThanOrEqualTo(VertexCache.ThreadsPerGroup));
             Assert.That(VertexCache.GroupsPerTile(64), Is.EqualTo(17));
             Assert.That(() => VertexCache.GroupsPerTile(0), Throws.InstanceOf<ArgumentException>());
         }

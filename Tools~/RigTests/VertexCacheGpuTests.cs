@@ -80,7 +80,7 @@ namespace GregoryTerrain.Rig.Tests
                 "--device", "llvmpipe", "--stats", "--png", Path.Combine(dir, "image.png"),
                 "--storage", "7:" + VertexCacheBudget.TileFactorsBytes(tiles).ToString(CultureInfo.InvariantCulture),
                 "--storage", "8:" + VertexCacheBudget.VertexCacheBytes(tiles, frame.Limit, false).ToString(CultureInfo.InvariantCulture),
-                "--compute", Path.Combine(v, "cache_factors.spv") + ":" + VertexCache.FactorGroups(tiles).ToString(CultureInfo.InvariantCulture) + ",1,1",
+                "--compute", Path.Combine(v, "cache_factors.spv") + ":" + tiles.ToString(CultureInfo.InvariantCulture) + "," + tiles.ToString(CultureInfo.InvariantCulture) + ",1",
                 "--compute", Path.Combine(v, "cache_vertices.spv") + ":" + tiles.ToString(CultureInfo.InvariantCulture) + "," + tiles.ToString(CultureInfo.InvariantCulture)
                     + "," + VertexCache.GroupsPerTile(frame.Limit).ToString(CultureInfo.InvariantCulture),
                 "--dump-storage", "7:" + factors, "--dump-storage", "8:" + records,

@@ -33,8 +33,9 @@ make_plan() {  # make_plan DIR
   "${cli[@]}" bench-plan --grid "$grid" --out "$dir" "${quick[@]}" >&2
   # The vertex cache's variants (GT_VERTEX_CACHE) carry their two compute kernels (internals.md, "Vertex cache").
   local cache=(vertex_cache noise+vertex_cache noise+height_color+vertex_cache)
-  [ -d "$BUILD_DIR/spirv/factor_readback" ] && [ -f "$BUILD_DIR/spirv/${cache[1]}/cache_vertices.spv" ] \
-    || bash "$RIG_DIR/shaders.sh" -j "$(nproc)" >/dev/null
+  # Always compiled afresh (~30 s): a plan carried to the GPU with SPIR-V older than Shaders/ times
+  # the old kernels under the new dispatch sizes, and nothing in the run would say so.
+  bash "$RIG_DIR/shaders.sh" -j "$(nproc)" >/dev/null
   for v in "${cache[@]}"; do
     [ -f "$BUILD_DIR/spirv/$v/cache_factors.spv" ] && [ -f "$BUILD_DIR/spirv/$v/cache_vertices.spv" ] \
       || die "gt shaders wrote no $v/cache_factors.spv + cache_vertices.spv (GT_VERTEX_CACHE variants and kernels, internals.md)"
