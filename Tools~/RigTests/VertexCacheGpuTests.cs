@@ -172,18 +172,28 @@ namespace GregoryTerrain.Rig.Tests
         }
 
         /// <summary>
+        /// Two runs of the 8 x 8 tiles at uniform F = 7 that must end alike: the same picture, pixel
+        /// for pixel, and the same cache. Returns the second run.
+        /// </summary>
+        CacheFrame AssertSamePictureAndCache(string nameA, string[] extraA, string nameB, string[] extraB)
+        {
+            CacheFrame a = DrawCached(nameA, "0,0,1,1", 8, new[] { "--factor", "7" }, 192, 128, null, extraA);
+            CacheFrame b = DrawCached(nameB, "0,0,1,1", 8, new[] { "--factor", "7" }, 192, 128, null, extraB);
+            RigPng pa = RigPng.Read(Path.Combine(_work, nameA, "image.png")), pb = RigPng.Read(Path.Combine(_work, nameB, "image.png"));
+            Assert.That(pb.PixelsDifferingFrom(pa, 0), Is.EqualTo(0), nameB + " against " + nameA);
+            Assert.That(b.Records, Is.EqualTo(a.Records), "the last frame's cache, " + nameB + " against " + nameA);
+            Assert.That(b.Run.Long("image", "nonsky_pixels"), Is.GreaterThan(192 * 128 / 5));
+            return b;
+        }
+
+        /// <summary>
         /// A frame where nothing changed reuses the cache (the renderer dispatches nothing then; the
         /// harness's --compute-once): later frames without the kernels draw the first frame's picture.
         /// </summary>
         [Test]
         public void FramesThatReuseTheCacheDrawTheSamePicture()
         {
-            CacheFrame every = DrawCached("every-frame", "0,0,1,1", 8, new[] { "--factor", "7" }, 192, 128, null, "--frames", "3");
-            CacheFrame once = DrawCached("compute-once", "0,0,1,1", 8, new[] { "--factor", "7" }, 192, 128, null, "--frames", "3", "--compute-once");
-            RigPng a = RigPng.Read(Path.Combine(_work, "every-frame", "image.png")), b = RigPng.Read(Path.Combine(_work, "compute-once", "image.png"));
-            Assert.That(a.PixelsDifferingFrom(b, 0), Is.EqualTo(0));
-            Assert.That(once.Records, Is.EqualTo(every.Records), "the cache after three frames");
-            Assert.That(once.Run.Long("image", "nonsky_pixels"), Is.GreaterThan(192 * 128 / 5));
+            AssertSamePictureAndCache("every-frame", new[] { "--frames", "3" }, "compute-once", new[] { "--frames", "3", "--compute-once" });
         }
 
         /// <summary>
@@ -196,14 +206,8 @@ namespace GregoryTerrain.Rig.Tests
         public void FramesInFlightEndWithThePictureAndCacheOfFramesOneAtATime()
         {
             string[] moving = { "--frames", "4", "--update-range-per-frame" };
-            CacheFrame one = DrawCached("one-at-a-time", "0,0,1,1", 8, new[] { "--factor", "7" }, 192, 128, null, moving);
-            CacheFrame two = DrawCached("in-flight", "0,0,1,1", 8, new[] { "--factor", "7" }, 192, 128, null,
-                                        moving.Concat(new[] { "--in-flight", "2" }).ToArray());
+            CacheFrame two = AssertSamePictureAndCache("one-at-a-time", moving, "in-flight", moving.Concat(new[] { "--in-flight", "2" }).ToArray());
             Assert.That(two.Run.Value("time", "in_flight"), Is.EqualTo(new[] { "2", "async_compute", "0" }));
-            RigPng a = RigPng.Read(Path.Combine(_work, "one-at-a-time", "image.png")), b = RigPng.Read(Path.Combine(_work, "in-flight", "image.png"));
-            Assert.That(b.PixelsDifferingFrom(a, 0), Is.EqualTo(0));
-            Assert.That(two.Records, Is.EqualTo(one.Records), "the last frame's cache");
-            Assert.That(two.Run.Long("image", "nonsky_pixels"), Is.GreaterThan(192 * 128 / 5));
         }
 
         /// <summary>
@@ -213,12 +217,7 @@ namespace GregoryTerrain.Rig.Tests
         [Test]
         public void FramesInFlightBuildEachSlotsCacheOnce()
         {
-            CacheFrame every = DrawCached("every-frame-2", "0,0,1,1", 8, new[] { "--factor", "7" }, 192, 128, null, "--frames", "4");
-            CacheFrame once = DrawCached("in-flight-once", "0,0,1,1", 8, new[] { "--factor", "7" }, 192, 128, null,
-                                         "--frames", "4", "--compute-once", "--in-flight", "2");
-            RigPng a = RigPng.Read(Path.Combine(_work, "every-frame-2", "image.png")), b = RigPng.Read(Path.Combine(_work, "in-flight-once", "image.png"));
-            Assert.That(b.PixelsDifferingFrom(a, 0), Is.EqualTo(0));
-            Assert.That(once.Records, Is.EqualTo(every.Records), "slot 1's cache");
+            AssertSamePictureAndCache("every-frame-2", new[] { "--frames", "4" }, "in-flight-once", new[] { "--frames", "4", "--compute-once", "--in-flight", "2" });
         }
 
         /// <summary>
