@@ -122,6 +122,20 @@ void TileFactorLine(uint piece, out float2 a, out float2 b, out uint2 corners, o
 #define GT_TILE_CENTRE_SAMPLE (GT_TILE_MIDLINE_END_SAMPLE + 4u)
 #define GT_TILE_FACTOR_SAMPLES (GT_TILE_CENTRE_SAMPLE + 1u)
 
+// Inner point i (1 .. GT_EDGE_SEGMENTS - 1) of the tile's line from a to b, and the centre: each with
+// its pixels per object unit. Both the kernel's numbered samples and the hull's loop evaluate these.
+float4 TileLineInnerSample(uint patch, float2 a, float2 b, uint i)
+{
+    float3 p = SurfaceObjectPosition(patch, lerp(a, b, (float)i / (float)GT_EDGE_SEGMENTS));
+    return float4(p, ObjectPixelsPerUnit(p));
+}
+
+float4 TileCentreSample(uint patch)
+{
+    float3 centre = SurfaceObjectPosition(patch, float2(0.5, 0.5));
+    return float4(centre, ObjectPixelsPerUnit(centre));
+}
+
 float4 TileFactorSample(uint patch, uint s)
 {
     if (s < 4u) return float4(TileCornerObjectPosition(patch, s), 0.0);
@@ -132,9 +146,7 @@ float4 TileFactorSample(uint patch, uint s)
     {
         uint inner = s - 4u;
         TileFactorLine(inner / GT_TILE_INNER_POINTS, a, b, corners, axis);
-        float t = (float)(inner % GT_TILE_INNER_POINTS + 1u) / (float)GT_EDGE_SEGMENTS;
-        float3 p = SurfaceObjectPosition(patch, lerp(a, b, t));
-        return float4(p, ObjectPixelsPerUnit(p));
+        return TileLineInnerSample(patch, a, b, inner % GT_TILE_INNER_POINTS + 1u);
     }
     if (s < GT_TILE_CENTRE_SAMPLE)
     {
@@ -142,8 +154,7 @@ float4 TileFactorSample(uint patch, uint s)
         TileFactorLine(4u + end / 2u, a, b, corners, axis);
         return float4(SurfaceObjectPosition(patch, (end & 1u) ? b : a), 0.0);
     }
-    float3 centre = SurfaceObjectPosition(patch, float2(0.5, 0.5));
-    return float4(centre, ObjectPixelsPerUnit(centre));
+    return TileCentreSample(patch);
 }
 
 // The sample at point i (0 .. GT_EDGE_SEGMENTS, from a to b) of line `piece` (0-5).
@@ -192,15 +203,11 @@ float CentreErrorTessFactor(float3 cornerOS[4], float4 centre)
 }
 
 // One piece, its samples evaluated in turn: the hull stage's path (the kernel spreads the same
-// samples over its lanes). Written out rather than through TileFactorSample, whose branches on the
-// sample number cost the hull stage ~12% at 64 x 64 tiles (H200); the arithmetic is the same.
+// samples over its lanes). Not through TileFactorSample, whose branches on the sample number cost
+// the hull stage ~12% at 64 x 64 tiles (H200); the samples are the same functions.
 float TileFactorPiece(uint patch, uint piece, float3 cornerOS[4])
 {
-    if (piece == 6u)
-    {
-        float3 centre = SurfaceObjectPosition(patch, float2(0.5, 0.5));
-        return CentreErrorTessFactor(cornerOS, float4(centre, ObjectPixelsPerUnit(centre)));
-    }
+    if (piece == 6u) return CentreErrorTessFactor(cornerOS, TileCentreSample(patch));
     float2 a, b;
     uint2 corners;
     uint axis;
@@ -212,8 +219,9 @@ float TileFactorPiece(uint patch, uint piece, float3 cornerOS[4])
     k[0] = k[GT_EDGE_SEGMENTS] = 0.0;
     [unroll] for (uint i = 1u; i < GT_EDGE_SEGMENTS; i++)
     {
-        p[i] = SurfaceObjectPosition(patch, lerp(a, b, (float)i / (float)GT_EDGE_SEGMENTS));
-        k[i] = ObjectPixelsPerUnit(p[i]);
+        float4 v = TileLineInnerSample(patch, a, b, i);
+        p[i] = v.xyz;
+        k[i] = v.w;
     }
     return LineErrorTessFactor(piece, p, k);
 }

@@ -273,15 +273,17 @@ namespace GregoryTerrain.Rig
             o.AppendLine();
             o.AppendLine("| cached terrain | tiles | triangles | static in flight ms | range moving ms | / static | range moving, async compute ms | / static | nothing changes ms | / static |");
             o.AppendLine("| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |");
-            Job Ok(string key) => jobs.TryGetValue(key, out var j) && j.Skipped == null && j.Exit == 0 ? j : null;
-            string Ms(Job j) => j == null ? "not run" : Inv($"{j.GpuMs:G4}");
-            string Over(Job j, Job st) => j == null || st == null ? "-" : Inv($"{j.GpuMs / st.GpuMs:F3}x");
+            Job Any(string key) => jobs.TryGetValue(key, out var j) ? j : null;
+            bool Ran(Job j) => j != null && j.Skipped == null && j.Exit == 0;
+            // A failed run must not read as one that was not planned (lavapipe plans no async job).
+            string Ms(Job j) => j == null ? "not run" : j.Skipped != null ? "not run (" + j.Skipped + ")" : j.Exit != 0 ? "failed" : Inv($"{j.GpuMs:G4}");
+            string Over(Job j, Job st) => Ran(j) && Ran(st) ? Inv($"{j.GpuMs / st.GpuMs:F3}x") : "-";
             foreach (var (m, sm, sf) in BenchPlan.AdaptiveVsStatic(quick))
             {
                 string id = Inv($"vc_m{m}_s{sm}x{sf}");
-                Job st = Ok(Inv($"fs_m{sm}_f{sf}:static-if2 run")), moving = Ok($"{id}:terrain-if2 run"),
-                    async = Ok($"{id}:terrain-async run"), still = Ok($"{id}:still-if2 run");
-                string tris = moving == null ? "-" : Inv($"{moving.Get("clipping_invocations")}");
+                Job st = Any(Inv($"fs_m{sm}_f{sf}:static-if2 run")), moving = Any($"{id}:terrain-if2 run"),
+                    async = Any($"{id}:terrain-async run"), still = Any($"{id}:still-if2 run");
+                string tris = Ran(moving) ? Inv($"{moving.Get("clipping_invocations")}") : "-";
                 o.AppendLine(Inv($"| {id} (adaptive) | {m} | {tris} | {Ms(st)} | {Ms(moving)} | {Over(moving, st)} | {Ms(async)} | {Over(async, st)} | {Ms(still)} | {Over(still, st)} |"));
             }
             o.AppendLine();

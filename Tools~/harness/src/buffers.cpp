@@ -83,13 +83,18 @@ void destroyBuffer(const Gpu& gpu, Buffer& b) {
     b = Buffer{};
 }
 
-void submitOnce(const Gpu& gpu, const std::function<void(VkCommandBuffer)>& record) {
+VkCommandBuffer allocateCommandBuffer(const Gpu& gpu, VkCommandPool pool) {
     VkCommandBufferAllocateInfo alloc{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
-    alloc.commandPool = gpu.commandPool;
+    alloc.commandPool = pool;
     alloc.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
     alloc.commandBufferCount = 1;
     VkCommandBuffer cmd = VK_NULL_HANDLE;
     GT_VK(vkAllocateCommandBuffers(gpu.device, &alloc, &cmd));
+    return cmd;
+}
+
+void submitOnce(const Gpu& gpu, const std::function<void(VkCommandBuffer)>& record) {
+    VkCommandBuffer cmd = allocateCommandBuffer(gpu, gpu.commandPool);
     VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
     begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
     GT_VK(vkBeginCommandBuffer(cmd, &begin));

@@ -29,6 +29,9 @@ Buffer createDeviceBuffer(const Gpu& gpu, VkDeviceSize size, VkBufferUsageFlags 
 
 void destroyBuffer(const Gpu& gpu, Buffer& buffer);
 
+// A primary command buffer from pool (the graphics pool, or the async compute one).
+VkCommandBuffer allocateCommandBuffer(const Gpu& gpu, VkCommandPool pool);
+
 // Records into a fresh command buffer, submits, waits.
 void submitOnce(const Gpu& gpu, const std::function<void(VkCommandBuffer)>& record);
 

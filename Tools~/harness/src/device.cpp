@@ -99,15 +99,21 @@ bool isLavapipe(const VkPhysicalDeviceProperties& p, const DriverText& d) {
            n.find("lavapipe") != std::string::npos;
 }
 
-// The first family with graphics (and compute, when asked: the pre-pass is recorded in the same
-// command buffer as the draw, so one queue must do both).
-int graphicsQueueFamily(VkPhysicalDevice pd, bool compute, uint32_t* timestampBits) {
+std::vector<VkQueueFamilyProperties> queueFamilies(VkPhysicalDevice pd) {
     uint32_t n = 0;
     vkGetPhysicalDeviceQueueFamilyProperties(pd, &n, nullptr);
     std::vector<VkQueueFamilyProperties> q(n);
     vkGetPhysicalDeviceQueueFamilyProperties(pd, &n, q.data());
+    q.resize(n);
+    return q;
+}
+
+// The first family with graphics (and compute, when asked: the pre-pass is recorded in the same
+// command buffer as the draw, so one queue must do both).
+int graphicsQueueFamily(VkPhysicalDevice pd, bool compute, uint32_t* timestampBits) {
+    const std::vector<VkQueueFamilyProperties> q = queueFamilies(pd);
     const VkQueueFlags needed = VK_QUEUE_GRAPHICS_BIT | (compute ? VK_QUEUE_COMPUTE_BIT : 0);
-    for (uint32_t i = 0; i < n; ++i)
+    for (uint32_t i = 0; i < q.size(); ++i)
         if ((q[i].queueFlags & needed) == needed) {
             *timestampBits = q[i].timestampValidBits;
             return static_cast<int>(i);
@@ -118,11 +124,8 @@ int graphicsQueueFamily(VkPhysicalDevice pd, bool compute, uint32_t* timestampBi
 // The first family with compute and without graphics: on desktop GPUs the queues that run
 // alongside the graphics queue (NVIDIA's family 2, AMD's "async compute").
 int computeOnlyQueueFamily(VkPhysicalDevice pd) {
-    uint32_t n = 0;
-    vkGetPhysicalDeviceQueueFamilyProperties(pd, &n, nullptr);
-    std::vector<VkQueueFamilyProperties> q(n);
-    vkGetPhysicalDeviceQueueFamilyProperties(pd, &n, q.data());
-    for (uint32_t i = 0; i < n; ++i)
+    const std::vector<VkQueueFamilyProperties> q = queueFamilies(pd);
+    for (uint32_t i = 0; i < q.size(); ++i)
         if ((q[i].queueFlags & VK_QUEUE_COMPUTE_BIT) && !(q[i].queueFlags & VK_QUEUE_GRAPHICS_BIT)) return static_cast<int>(i);
     return -1;
 }

@@ -24,6 +24,12 @@ void recordDraws(VkCommandBuffer cmd, const DrawWork& w) {
     vkCmdDrawIndexed(cmd, w.indexCount, w.instances, 0, 0, 0);
 }
 
+void waitFrameFence(const Gpu& gpu, VkFence fence, uint32_t frame) {
+    const VkResult r = vkWaitForFences(gpu.device, 1, &fence, VK_TRUE, 600ull * 1000 * 1000 * 1000);
+    if (r == VK_TIMEOUT) fail("frame " + std::to_string(frame) + " did not finish within 600 s");
+    GT_VK(r);
+}
+
 std::array<float, 4> frameRange(const std::array<float, 4>& base, uint32_t frame) {
     const float dx = (base[2] - base[0]) * 1e-4f * static_cast<float>(frame % 8);
     const float dy = (base[3] - base[1]) * 1e-4f * static_cast<float>(frame % 8);
@@ -52,12 +58,7 @@ FrameResults runFrames(const Gpu& gpu, const RenderTarget& target, const Pipelin
 
     // One frame's command buffer; withCompute = false leaves the pre-pass out (--compute-once).
     auto recordFrame = [&](bool withCompute) {
-    VkCommandBufferAllocateInfo alloc{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
-    alloc.commandPool = gpu.commandPool;
-    alloc.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
-    alloc.commandBufferCount = 1;
-    VkCommandBuffer cmd = VK_NULL_HANDLE;
-    GT_VK(vkAllocateCommandBuffers(gpu.device, &alloc, &cmd));
+    VkCommandBuffer cmd = allocateCommandBuffer(gpu, gpu.commandPool);
     VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
     GT_VK(vkBeginCommandBuffer(cmd, &begin));
     if (times.pool) vkCmdResetQueryPool(cmd, times.pool, 0, times.count);
@@ -112,9 +113,7 @@ FrameResults runFrames(const Gpu& gpu, const RenderTarget& target, const Pipelin
         submit.commandBufferCount = 1;
         submit.pCommandBuffers = (s.computeOnce && f > 0) ? &reuseCmd : &cmd;
         GT_VK(vkQueueSubmit(gpu.queue, 1, &submit, fence));
-        VkResult r = vkWaitForFences(gpu.device, 1, &fence, VK_TRUE, 600ull * 1000 * 1000 * 1000);
-        if (r == VK_TIMEOUT) fail("frame " + std::to_string(f) + " did not finish within 600 s");
-        GT_VK(r);
+        waitFrameFence(gpu, fence, f);
         GT_VK(vkResetFences(gpu.device, 1, &fence));
         const auto t1 = std::chrono::steady_clock::now();
         if (f < s.warmup) continue;

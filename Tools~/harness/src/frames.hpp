@@ -47,6 +47,9 @@ struct FrameResults {
 // The frame's draw calls (inside the render pass, pipeline and set bound).
 void recordDraws(VkCommandBuffer cmd, const DrawWork& work);
 
+// Waits for frame's fence; a frame that has not finished after 600 s fails naming it.
+void waitFrameFence(const Gpu& gpu, VkFence fence, uint32_t frame);
+
 // The per-frame _Range of --update-range-per-frame: the base range shifted by a tiny,
 // frame-dependent fraction of its size, so the values really change every frame.
 std::array<float, 4> frameRange(const std::array<float, 4>& base, uint32_t frame);

@@ -21,15 +21,8 @@ struct Slot {
     bool submitted = false;
 };
 
-VkCommandBuffer allocateCommandBuffer(const Gpu& gpu, VkCommandPool pool) {
-    VkCommandBufferAllocateInfo alloc{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
-    alloc.commandPool = pool;
-    alloc.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
-    alloc.commandBufferCount = 1;
-    VkCommandBuffer cmd = VK_NULL_HANDLE;
-    GT_VK(vkAllocateCommandBuffers(gpu.device, &alloc, &cmd));
-    return cmd;
-}
+// The pool of the queue the pre-pass goes to.
+VkCommandPool prePassPool(const Gpu& gpu) { return gpu.asyncCompute ? gpu.computePool : gpu.commandPool; }
 
 VkSemaphore createTimeline(const Gpu& gpu) {
     VkSemaphoreTypeCreateInfo type{VK_STRUCTURE_TYPE_SEMAPHORE_TYPE_CREATE_INFO};
@@ -44,7 +37,7 @@ VkSemaphore createTimeline(const Gpu& gpu) {
 
 VkCommandBuffer recordPrePass(const Gpu& gpu, const Pipeline& pipeline, const std::vector<ComputePass>& compute,
                               const Slot& slot) {
-    VkCommandBuffer cmd = allocateCommandBuffer(gpu, gpu.asyncCompute ? gpu.computePool : gpu.commandPool);
+    VkCommandBuffer cmd = allocateCommandBuffer(gpu, prePassPool(gpu));
     VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
     GT_VK(vkBeginCommandBuffer(cmd, &begin));
     recordComputePasses(cmd, gpu, compute, pipeline, slot.set, false);
@@ -97,12 +90,6 @@ void submit(VkQueue queue, VkCommandBuffer cmd, VkSemaphore wait, uint64_t waitV
     GT_VK(vkQueueSubmit(queue, 1, &info, fence));
 }
 
-void waitFence(const Gpu& gpu, VkFence fence, uint32_t frame) {
-    const VkResult r = vkWaitForFences(gpu.device, 1, &fence, VK_TRUE, 600ull * 1000 * 1000 * 1000);
-    if (r == VK_TIMEOUT) fail("frame " + std::to_string(frame) + " did not finish within 600 s");
-    GT_VK(r);
-}
-
 }  // namespace
 
 FrameResults runFramesInFlight(const Gpu& gpu, const RenderTarget& target, const Pipeline& pipeline, Inputs& inputs,
@@ -136,7 +123,7 @@ FrameResults runFramesInFlight(const Gpu& gpu, const RenderTarget& target, const
     const uint32_t total = s.warmup + s.frames;
     std::vector<uint64_t> frameEnd(total, 0);
     auto collect = [&](Slot& slot, uint32_t frame) {
-        waitFence(gpu, slot.fence, frame);
+        waitFrameFence(gpu, slot.fence, frame);
         GT_VK(vkResetFences(gpu.device, 1, &slot.fence));
         slot.submitted = false;
         if (slot.times.pool) frameEnd[frame] = readTicks(gpu, slot.times)[1];
@@ -178,7 +165,7 @@ FrameResults runFramesInFlight(const Gpu& gpu, const RenderTarget& target, const
     for (uint32_t i = 0; i < inFlight; ++i) {
         Slot& slot = slots[i];
         vkDestroyFence(gpu.device, slot.fence, nullptr);
-        if (slot.pre) vkFreeCommandBuffers(gpu.device, gpu.asyncCompute ? gpu.computePool : gpu.commandPool, 1, &slot.pre);
+        if (slot.pre) vkFreeCommandBuffers(gpu.device, prePassPool(gpu), 1, &slot.pre);
         vkFreeCommandBuffers(gpu.device, gpu.commandPool, 1, &slot.draw);
         destroyQuery(gpu, slot.times.pool);
         destroyQuery(gpu, slot.stats.pool);
