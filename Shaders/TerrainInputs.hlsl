@@ -53,7 +53,8 @@ float SnowDepthCap() { return _SnowMapSize.z; }
 #if defined(GT_VERTEX_CACHE)
 // The vertex cache (internals.md, "Vertex cache"), written this frame by the compute pass
 // (VertexCacheKernels.hlsl: _TileFactorsRW, _VertexCacheRW, the same buffers): 2 float4 per tile
-// (the integer edge factors; inside factors, culled), and GT_VERTEX_CACHE_FLOAT4S float4 per slot.
+// (the integer edge factors; inside factors, culled, evaluated) then one (the range the tile's slots
+// hold; VertexCache.hlsl), and GT_VERTEX_CACHE_FLOAT4S float4 per slot.
 StructuredBuffer<float4> _TileFactors GT_REGISTER(t5);
 StructuredBuffer<float4> _VertexCache GT_REGISTER(t6);
 #endif

@@ -96,8 +96,8 @@ TileFactorSet TileFactorsOf(InputPatch<TileCorner, 4> corners)
     TileFactorSet set;
 #if defined(GT_VERTEX_CACHE)
     // Decided by CacheTileFactors this frame, already integers (culled: all 0).
-    set.edge = _TileFactors[2u * patch];
-    set.inside = _TileFactors[2u * patch + 1u].xy;
+    set.edge = _TileFactors[VertexCacheFactorIndex(patch)];
+    set.inside = _TileFactors[VertexCacheFactorIndex(patch) + 1u].xy;
 #else
     float3 cornerOS[4];
     [unroll] for (uint c = 0; c < 4; c++)

@@ -6,7 +6,8 @@
 //   CacheTileFactors    a group per tile: culling and adaptive (or uniform) factors, rounded to
 //                       the integer factors the draw will use (VertexCacheIntegerFactors)
 //   CacheTileVertices   a few groups per tile: every vertex the tessellator makes at those factors,
-//                       evaluated by EvaluateTerrainVertex (the domain stage's own path) into its slot
+//                       evaluated by EvaluateTerrainVertex (the domain stage's own path) into its slot,
+//                       for the tiles whose factors or range changed since their last evaluation
 //
 // A frame dispatches both, in that order, then draws; the hull stage reads the factors and the
 // domain stage reads the records (TerrainStages.hlsl). Why: the per-vertex work (FindPatch, the 20
@@ -26,11 +27,28 @@ RWStructuredBuffer<float4> _VertexCacheRW GT_REGISTER(u3);
 groupshared float4 gtTileFactorSamples[GT_TILE_FACTOR_SAMPLES];
 groupshared float gtTileFactorPieces[GT_TILE_FACTOR_PIECES];
 
+// True when the tile's slots do not hold its vertices at factors f and the current _Range: it was
+// culled or drawn at other factors last pass, or the range moved. Everything else the records depend
+// on (origin, grid, noise, colour, snow, object transform) the renderer guards: it clears
+// _TileFactors when one of those changes, and a zero record never matches (factors >= 1).
+bool TileSlotsOutdated(uint tile, TileFactorSet f)
+{
+    uint i = VertexCacheFactorIndex(tile);
+    float4 edge = _TileFactorsRW[i];
+    float4 inside = _TileFactorsRW[i + 1u];
+    float4 range = _TileFactorsRW[VertexCacheEvaluatedRangeIndex(tile, TileCountInt())];
+    return inside.z != 0.0 || any(edge != f.edge) || any(inside.xy != f.inside) || any(range != _Range);
+}
+
 void WriteTileFactors(uint tile, TileFactorSet f)
 {
     f = VertexCacheIntegerFactors(f);
-    _TileFactorsRW[2u * tile] = f.edge;
-    _TileFactorsRW[2u * tile + 1u] = float4(f.inside, f.edge.x == 0.0 ? 1.0 : 0.0, 0.0);
+    bool culled = f.edge.x == 0.0;
+    bool evaluate = !culled && TileSlotsOutdated(tile, f);
+    uint i = VertexCacheFactorIndex(tile);
+    _TileFactorsRW[i] = f.edge;
+    _TileFactorsRW[i + 1u] = float4(f.inside, culled ? 1.0 : 0.0, evaluate ? 1.0 : 0.0);
+    if (evaluate) _TileFactorsRW[VertexCacheEvaluatedRangeIndex(tile, TileCountInt())] = _Range;
 }
 
 // Dispatch (M, M, 1): a group a tile. The tile's 51 surface samples (TileFactorSample) one a lane,
@@ -125,9 +143,9 @@ void CacheTileVertices(uint3 group : SV_GroupID, uint lane : SV_GroupIndex)
     uint tiles = TileCountInt();
     if (group.x >= tiles || group.y >= tiles) return;
     uint tile = group.y * tiles + group.x;
-    float4 edge = _TileFactorsRW[2u * tile];
-    float4 inside = _TileFactorsRW[2u * tile + 1u];
-    if (inside.z != 0.0) return;   // culled: the draw emits nothing for it
+    float4 edge = _TileFactorsRW[VertexCacheFactorIndex(tile)];
+    float4 inside = _TileFactorsRW[VertexCacheFactorIndex(tile) + 1u];
+    if (inside.w == 0.0) return;   // culled (the draw emits nothing), or its slots are up to date
     uint limit = VertexCacheFactorLimit();
     uint base = tile * VertexCacheSlotsPerTile(limit);
     uint2 n = (uint2)inside.xy - 1u;

@@ -49,7 +49,7 @@ namespace GregoryTerrain.Tests
             Assert.That(VertexCache.SlotsPerTile(64), Is.EqualTo(65 * 65 + 4 * 65));
             Assert.That(VertexCacheBudget.VertexCacheBytes(32, 64, false), Is.EqualTo(32L * 32 * 4485 * 2 * 16));
             Assert.That(VertexCacheBudget.VertexCacheBytes(32, 64, true), Is.EqualTo(32L * 32 * 4485 * 3 * 16));
-            Assert.That(VertexCacheBudget.TileFactorsBytes(16), Is.EqualTo(16L * 16 * 32));
+            Assert.That(VertexCacheBudget.TileFactorsBytes(16), Is.EqualTo(16L * 16 * 48));
             Assert.That(() => VertexCache.SlotsPerTile(0), Throws.InstanceOf<ArgumentException>());
             Assert.That(() => VertexCache.SlotsPerTile(65), Throws.InstanceOf<ArgumentException>());
         }

@@ -120,18 +120,19 @@ namespace GregoryTerrain.Rig.Tests
         public void TileFactorsDumpIsReadAndItsIntegerContractChecked()
         {
             float[] Dump(params float[][] tiles) => tiles.SelectMany(t => t).ToArray();
-            float[] drawn = { 3, 4, 5, 6, 7, 8, 0, 0 }, ones = { 1, 1, 1, 1, 1, 1, 0, 0 }, culled = { 0, 0, 0, 0, 0, 0, 1, 0 };
+            float[] drawn = { 3, 4, 5, 6, 7, 8, 0, 1 }, ones = { 1, 1, 1, 1, 1, 1, 0, 0 }, culled = { 0, 0, 0, 0, 0, 0, 1, 0 };
             var f = PatchFactors.FromTileFactors(Dump(drawn, ones, culled), 3);
             Assert.That(new[] { f[0].e0, f[0].e1, f[0].e2, f[0].e3, f[0].i0, f[0].i1 }, Is.EqualTo(new[] { 3.0, 4, 5, 6, 7, 8 }));
             Assert.That(f[0].culled || f[1].culled, Is.False);
             Assert.That(f[2].culled, Is.True);
             // Refused, naming the tile: never written (zero-filled), fractional, inside 1 beside a
-            // subdivided edge, above 64, a culled tile with factors, a bad flag, a short dump.
+            // subdivided edge, above 64, a culled tile with factors, a bad culled or evaluated flag, a
+            // culled tile marked evaluated, a short dump.
             foreach (var bad in new[]
             {
                 new float[] { 0, 0, 0, 0, 0, 0, 0, 0 }, new float[] { 3, 4, 5, 6, 7.5f, 8, 0, 0 }, new float[] { 2, 1, 1, 1, 1, 2, 0, 0 },
                 new float[] { 65, 4, 5, 6, 7, 8, 0, 0 }, new float[] { 3, 0, 0, 0, 0, 0, 1, 0 }, new float[] { 3, 4, 5, 6, 7, 8, 0.5f, 0 },
-                new float[] { 3, 4, 5, 6, 7, 8, 0, 1 }, new float[] { float.NaN, 4, 5, 6, 7, 8, 0, 0 },
+                new float[] { 3, 4, 5, 6, 7, 8, 0, 0.5f }, new float[] { 0, 0, 0, 0, 0, 0, 1, 1 }, new float[] { float.NaN, 4, 5, 6, 7, 8, 0, 0 },
             })
                 Assert.That(Assert.Throws<FormatException>(() => PatchFactors.FromTileFactors(Dump(ones, bad), 2)).Message, Does.Contain("tile 1"),
                             string.Join(",", bad));

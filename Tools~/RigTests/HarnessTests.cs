@@ -508,6 +508,7 @@ namespace GregoryTerrain.Rig.Tests
         [TestCase("--in-flight|4", "--in-flight|'4'")]
         [TestCase("--in-flight|2|--resend-bytes|64", "--in-flight 2|--resend-bytes")]
         [TestCase("--in-flight|2|--readback|rb.f32|--readback-floats|4", "--in-flight 2|--readback")]
+        [TestCase("--in-flight|2|--camera-path|path.f32", "--in-flight 2|--camera-path")]
         [TestCase("--async-compute", "--async-compute|--compute")]
         [TestCase("--storage|8:64|--compute|{spv}/pattern.comp.spv:1|--async-compute", "--async-compute|--in-flight 2")]
         [TestCase("--storage|8:64|--compute|{spv}/pattern.comp.spv:1|--in-flight|2|--async-compute",
@@ -520,6 +521,20 @@ namespace GregoryTerrain.Rig.Tests
             Assert.That(r.ExitCode, Is.EqualTo(1), r.Stdout + r.Stderr);
             foreach (string word in expected.Split('|'))
                 Assert.That(r.Stderr, Does.Contain(word));
+        }
+
+        /// <summary>A camera path must be whole RigCamera blocks (176 bytes each), at least one.</summary>
+        [TestCase(0)]
+        [TestCase(100)]
+        [TestCase(176 + 4)]
+        public void CameraPathOfPartBlocks_Exit1NamingTheFileAndItsSize(int bytes)
+        {
+            string dir = MakeInputs("in_4x4_f8", 4, 8, new[] { 0f, 0, 1, 1 });
+            string path = Path.Combine(dir, "camera_path_" + bytes + ".f32");
+            File.WriteAllBytes(path, new byte[bytes]);
+            HarnessRun r = HarnessRun.Harness(TessArgs(dir, 4, 8, null).Concat(new[] { "--camera-path", path }).ToArray());
+            Assert.That(r.ExitCode, Is.EqualTo(1), r.Stdout + r.Stderr);
+            Assert.That(r.Stderr, Does.Contain(path).And.Contain(bytes + " bytes").And.Contain("multiple of 176"));
         }
 
         [Test]

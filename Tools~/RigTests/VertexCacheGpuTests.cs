@@ -46,6 +46,9 @@ namespace GregoryTerrain.Rig.Tests
 
             public bool Culled(int tile) => Factors[8 * tile + 6] != 0f;
 
+            /// <summary>The kernel (re)evaluated the tile's slots in the last frame.</summary>
+            public bool Evaluated(int tile) => Factors[8 * tile + 7] != 0f;
+
             /// <summary>The record at a slot of a tile, as <see cref="VertexCache.Record"/> lays it out.</summary>
             public Float4 Part(int tile, int slot, int part)
             {
@@ -90,7 +93,7 @@ namespace GregoryTerrain.Rig.Tests
             frame.Run.AssertSucceeded();
             frame.Factors = ReadbackRun.ReadFloats(factors);
             frame.Records = ReadbackRun.ReadFloats(records);
-            Assert.That(frame.Factors.Length, Is.EqualTo(8 * tiles * tiles));
+            Assert.That(frame.Factors.Length, Is.EqualTo(12 * tiles * tiles), "2 float4 of factors, then 1 of range, a tile");
             Assert.That(frame.Records.Length, Is.EqualTo(8 * tiles * tiles * frame.Slots));
             return frame;
         }
@@ -219,6 +222,53 @@ namespace GregoryTerrain.Rig.Tests
         {
             AssertSamePictureAndCache("every-frame-2", new[] { "--frames", "4" }, "in-flight-once", new[] { "--frames", "4", "--compute-once", "--in-flight", "2" });
         }
+
+        /// <summary>
+        /// A camera move (harness --camera-path, the orbit of gt-cli pack) re-evaluates only the tiles
+        /// whose integer factors changed: frame 0 builds every tile at the path's first camera, frame 1,
+        /// turned by 3 degrees, updates. It ends with the picture, factors and slots of a cache built
+        /// from scratch at the second camera. With the range moving too, every drawn tile is evaluated.
+        /// </summary>
+        [Test]
+        public void CameraMoveReevaluatesOnlyTheTilesWhoseFactorsChanged()
+        {
+            const string range = "0.1,0.1,0.9,0.9";
+            const int tiles = 8, width = 160, height = 120;
+            string[] tess = { "--target-pixels", "1", "--max-factor", "16" }, orbit = tess.Concat(new[] { "--orbit", "4,3" }).ToArray();
+            string CameraPathOf(string name) => Path.Combine(_work, name, PackCommandCameraPath);
+            CacheFrame moved = DrawCached("orbit", range, tiles, orbit, width, height, null, "--frames", "2", "--camera-path", CameraPathOf("orbit"));
+            float[] path = ReadbackRun.ReadFloats(CameraPathOf("orbit"));
+            float[] Camera(int k) => path.Skip(44 * k).Take(44).ToArray();
+            CacheFrame first = DrawCached("orbit-first", range, tiles, tess, width, height, Camera(0));
+            CacheFrame fresh = DrawCached("orbit-fresh", range, tiles, tess, width, height, Camera(1));
+
+            RigPng pm = RigPng.Read(Path.Combine(_work, "orbit", "image.png")), pf = RigPng.Read(Path.Combine(_work, "orbit-fresh", "image.png"));
+            Assert.That(pm.PixelsDifferingFrom(pf, 0), Is.EqualTo(0), "the updated frame against one built from scratch");
+            int drawn = 0, evaluated = 0, slots = 0;
+            for (int tile = 0; tile < tiles * tiles; tile++)
+            {
+                Assert.That(moved.FactorsOf(tile), Is.EqualTo(fresh.FactorsOf(tile)), "tile " + tile);
+                Assert.That(moved.Culled(tile), Is.EqualTo(fresh.Culled(tile)), "tile " + tile);
+                if (fresh.Culled(tile)) { Assert.That(moved.Evaluated(tile), Is.False, "culled tile " + tile); continue; }
+                drawn++;
+                bool changed = first.Culled(tile) || !first.FactorsOf(tile).Equals(fresh.FactorsOf(tile));
+                Assert.That(moved.Evaluated(tile), Is.EqualTo(changed), "tile " + tile + ": evaluated exactly when its factors changed");
+                if (changed) evaluated++;
+                foreach (var (_, slot) in VertexCache.TilePoints(fresh.FactorsOf(tile), fresh.Limit))
+                    for (int part = 0; part < 2; part++, slots++)
+                        Assert.That(moved.Part(tile, slot, part), Is.EqualTo(fresh.Part(tile, slot, part)), "tile " + tile + " slot " + slot);
+            }
+            TestContext.Out.WriteLine("camera turned 3 degrees: {0} of {1} drawn tiles evaluated again, {2} record parts equal to a fresh build", evaluated, drawn, slots);
+            Assert.That(evaluated, Is.GreaterThan(0).And.LessThan(drawn), "some tiles kept their factors, some did not");
+
+            CacheFrame ranged = DrawCached("orbit-range", range, tiles, orbit, width, height, null,
+                                           "--frames", "2", "--camera-path", CameraPathOf("orbit-range"), "--update-range-per-frame");
+            for (int tile = 0; tile < tiles * tiles; tile++)
+                Assert.That(ranged.Evaluated(tile), Is.EqualTo(!ranged.Culled(tile)), "range moved: tile " + tile);
+        }
+
+        // gt-cli pack --orbit's file (Tools~/dotnet/Gt/PackCommand.cs, CameraPathFile).
+        const string PackCommandCameraPath = "camera_path.f32";
 
         /// <summary>
         /// Adaptive factors through the cache: integers within the limit, the inside rule, some tiles

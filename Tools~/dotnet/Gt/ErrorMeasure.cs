@@ -49,8 +49,9 @@ namespace GregoryTerrain.Rig
 
         /// <summary>
         /// Reads a dump of the vertex cache's <c>_TileFactors</c> (binding 7, harness --dump-storage):
-        /// 2 float4 per tile, (edge0..3), (inside0, inside1, culled 1/0, 0), and checks the contract the
-        /// domain stage's slot grid relies on: a culled tile is all 0; a drawn one has six integers in
+        /// 2 float4 per tile, (edge0..3), (inside0, inside1, culled 1/0, evaluated 1/0), and checks the
+        /// contract the domain stage's slot grid relies on: a culled tile is all 0 and not evaluated; a
+        /// drawn one has six integers in
         /// [1, 64] and, unless all six are 1, inside factors of at least 2. A tile the kernel never
         /// wrote (the buffer starts zero-filled) reads as drawn with factor 0 and is refused.
         /// </summary>
@@ -76,11 +77,12 @@ namespace GregoryTerrain.Rig
             {
                 int o = 8 * p;
                 string Where() => $"_TileFactors tile {p} ({string.Join(", ", Array.ConvertAll(r[o..(o + 8)], x => x.ToString("R", System.Globalization.CultureInfo.InvariantCulture)))})";
-                if (r[o + 7] != 0f) throw new FormatException($"{Where()}: the last float is not 0");
+                if (r[o + 7] != 0f && r[o + 7] != 1f) throw new FormatException($"{Where()}: the evaluated flag is neither 0 nor 1");
                 if (r[o + 6] == 1f)
                 {
                     for (int k = 0; k < 6; k++)
                         if (r[o + k] != 0f) throw new FormatException($"{Where()}: culled, but its factors are not all 0");
+                    if (r[o + 7] != 0f) throw new FormatException($"{Where()}: culled, but marked evaluated");
                     f[p] = new PatchFactors { culled = true };
                     continue;
                 }

@@ -1,4 +1,5 @@
 using System;
+using System.Collections.Generic;
 using System.IO;
 
 namespace GregoryTerrain.Rig
@@ -45,7 +46,7 @@ namespace GregoryTerrain.Rig
         /// scaled uniformly (heights too, so zooming in is a camera coming closer), looked at from
         /// above at an angle. The height at the range's centre is the box's centre height.
         /// </summary>
-        static RigCamera ZoomViewCamera(RigScene s, int width, int height)
+        static RigCamera ZoomViewCamera(RigScene s, int width, int height, double yawDegrees = 0)
         {
             double w = Math.Max(s.Range.Width, s.Range.Height), scale = 1.0 / w;
             double cx = 0.5 * (s.Range.c + s.Range.g), cy = 0.5 * (s.Range.d + s.Range.h);
@@ -62,7 +63,23 @@ namespace GregoryTerrain.Rig
                 { 0, 0, scale, (r.y - cy) * scale },
                 { 0, 0, 0, 1 },
             };
-            return RigCamera.LookAt(new[] { 0.0, 0.75, -1.05 }, new[] { 0.0, -0.05, 0.0 }, 50, width, height, 0.01, 20, objectToWorld);
+            // yaw: the eye turned about the vertical through the target (x, z of the eye rotated).
+            double a = yawDegrees * Math.PI / 180.0, ex = -1.05 * Math.Sin(a), ez = -1.05 * Math.Cos(a);
+            return RigCamera.LookAt(new[] { ex, 0.75, ez }, new[] { 0.0, -0.05, 0.0 }, 50, width, height, 0.01, 20, objectToWorld);
+        }
+
+        /// <summary>
+        /// A camera moving around the terrain (harness --camera-path): <paramref name="frames"/>
+        /// RigCamera blocks, the zoom view turned by <c>amplitudeDegrees sin(2 pi f / frames)</c> about
+        /// the vertical through its target, so every frame moves a little (at most
+        /// <c>2 pi amplitude / frames</c> degrees) and the path returns to its start.
+        /// </summary>
+        public float[] OrbitCameraPath(int frames, double amplitudeDegrees)
+        {
+            var path = new List<float>();
+            for (int f = 0; f < frames; f++)
+                path.AddRange(ZoomViewCamera(this, Camera.Width, Camera.Height, amplitudeDegrees * Math.Sin(2 * Math.PI * f / frames)).Pack());
+            return path.ToArray();
         }
 
         /// <summary>Writes the five buffer files the harness reads (--buffers DIR).</summary>

@@ -166,6 +166,8 @@ const char* usageText() {
   --timestamps                   GPU time of each frame ("time ..." lines; with --compute also
                                  the compute part alone: "time compute_ms ...")
   --update-range-per-frame       write a new _Range into the uniform buffer every frame
+  --camera-path FILE             a moving camera: FILE holds N RigCamera blocks (176 bytes each, the
+                                 layout of camera.f32); frame f draws with block f mod N
   --compute-once                 run the --compute passes in the first frame only (later frames reuse their output)
   --resend-bytes B               re-upload B bytes through a staging copy every frame
   --in-flight N                  N (1-3) frames queued at once, each with its own TerrainParams and
@@ -233,6 +235,7 @@ Options parseOptions(int argc, char** argv) {
         else if (a == "--timestamps") o.timestamps = true;
         else if (a == "--update-range-per-frame") o.updateRangePerFrame = true;
         else if (a == "--compute-once") o.computeOnce = true;
+        else if (a == "--camera-path") o.cameraPath = value();
         else if (a == "--in-flight") o.inFlight = u32(3);
         else if (a == "--async-compute") o.asyncCompute = true;
         else if (a == "--resend-bytes") o.resendBytes = parseUnsigned(a, value(), 1ull << 34);
@@ -259,6 +262,7 @@ Options parseOptions(int argc, char** argv) {
         // Each of these has one buffer that every frame would write or read at once.
         if (o.resendBytes) fail("--in-flight " + std::to_string(o.inFlight) + " cannot be combined with --resend-bytes");
         if (!o.readbackPath.empty()) fail("--in-flight " + std::to_string(o.inFlight) + " cannot be combined with --readback");
+        if (!o.cameraPath.empty()) fail("--in-flight " + std::to_string(o.inFlight) + " cannot be combined with --camera-path");
     }
     if (o.asyncCompute && o.computes.empty()) fail("--async-compute needs at least one --compute SPV:GX,GY,GZ");
     if (o.asyncCompute && o.inFlight < 2)

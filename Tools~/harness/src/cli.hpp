@@ -67,6 +67,7 @@ struct Options {
     uint32_t frames = 1, warmup = 0;
     bool timestamps = false;
     bool updateRangePerFrame = false;
+    std::string cameraPath;      // --camera-path FILE: N RigCamera blocks, frame f draws with block f mod N
     bool computeOnce = false;
     uint64_t resendBytes = 0;
     uint32_t inFlight = 1;       // --in-flight N: frames submitted back to back (inflight.hpp)

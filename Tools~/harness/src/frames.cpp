@@ -108,6 +108,7 @@ FrameResults runFrames(const Gpu& gpu, const RenderTarget& target, const Pipelin
     for (uint32_t f = 0; f < total; ++f) {
         const auto t0 = std::chrono::steady_clock::now();
         if (s.updateRange) writeRange(inputs, frameRange(baseRange, f));
+        if (!s.cameraPath.empty()) writeCamera(inputs, s.cameraPath, f);
         if (s.resendBytes) std::memset(staging.mapped, static_cast<int>(f & 0xff), s.resendBytes);
         VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};
         submit.commandBufferCount = 1;

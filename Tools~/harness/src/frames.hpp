@@ -31,6 +31,7 @@ struct DrawWork {
 struct FrameSettings {
     uint32_t frames = 1, warmup = 0;
     bool timestamps = false, stats = false, updateRange = false;
+    std::vector<uint8_t> cameraPath;  // --camera-path: RigCamera blocks, frame f draws with block f mod N
     // --compute-once: the pre-pass runs in the first frame only; later frames reuse what it wrote
     // (the vertex cache of a frame where nothing changed).
     bool computeOnce = false;

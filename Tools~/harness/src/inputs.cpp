@@ -98,6 +98,19 @@ const char* rigBindingName(uint32_t binding) {
     return binding < kBindingCountSnow ? names[binding] : nullptr;
 }
 
+std::vector<uint8_t> loadCameraPath(const Gpu& gpu, Inputs& inputs, const std::string& path) {
+    std::vector<uint8_t> blocks = readSized(path, 0, kCameraBytes);
+    destroyBuffer(gpu, inputs.bindings[kBindingCamera]);
+    inputs.bindings[kBindingCamera] = createHostBuffer(gpu, kCameraBytes, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, true);
+    writeCamera(inputs, blocks, 0);
+    return blocks;
+}
+
+void writeCamera(Inputs& inputs, const std::vector<uint8_t>& path, uint32_t frame) {
+    const size_t block = frame % (path.size() / kCameraBytes);
+    std::memcpy(inputs.bindings[kBindingCamera].mapped, path.data() + block * kCameraBytes, kCameraBytes);
+}
+
 void writeRange(Inputs& inputs, const std::array<float, 4>& range) {
     std::copy(range.begin(), range.end(), inputs.params.begin());
     std::memcpy(inputs.bindings[kBindingParams].mapped, range.data(), 16);

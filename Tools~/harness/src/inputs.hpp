@@ -58,4 +58,11 @@ void destroyParamsCopy(const Gpu& gpu, Inputs& copy);
 // Writes a new _Range (the first float4) into the host-visible params buffer.
 void writeRange(Inputs& inputs, const std::array<float, 4>& range);
 
+// --camera-path: reads path's RigCamera blocks (a non-zero multiple of kCameraBytes) and replaces
+// binding 1 by a host-visible buffer holding the first, so writeCamera can move the camera.
+std::vector<uint8_t> loadCameraPath(const Gpu& gpu, Inputs& inputs, const std::string& path);
+
+// Copies block (frame mod N) of a camera path into binding 1.
+void writeCamera(Inputs& inputs, const std::vector<uint8_t>& path, uint32_t frame);
+
 }  // namespace gt

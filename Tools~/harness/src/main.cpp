@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <numeric>
+#include <utility>
 #include <vector>
 
 #include "check.hpp"
@@ -111,6 +112,12 @@ int run(const Options& o) {
 
     Inputs inputs = loadInputs(gpu, o.buffersDir, o.range, o.readbackFloats, o.readbackFillNan, o.snowDepthPath,
                                o.snowParamsPath);
+    // Before the pipeline: its descriptor set points at the camera buffer this replaces.
+    std::vector<uint8_t> cameraPath;
+    if (!o.cameraPath.empty()) {
+        cameraPath = loadCameraPath(gpu, inputs, o.cameraPath);
+        std::printf("inputs camera_path %zu\n", cameraPath.size() / kCameraBytes);
+    }
     std::printf("inputs gregory_patches %u\n", inputs.gregoryPatches);
     if (inputs.snow) std::printf("inputs snow_resolution %u\n", inputs.snowResolution);
     std::printf("inputs range %.9g %.9g %.9g %.9g\n", inputs.params[0], inputs.params[1], inputs.params[2], inputs.params[3]);
@@ -140,6 +147,7 @@ int run(const Options& o) {
     fs.timestamps = o.timestamps;
     fs.stats = o.stats;
     fs.updateRange = o.updateRangePerFrame;
+    fs.cameraPath = std::move(cameraPath);
     fs.computeOnce = o.computeOnce;
     fs.resendBytes = o.resendBytes;
     FrameResults results = o.inFlight > 1 ? runFramesInFlight(gpu, target, pipeline, inputs, storage, o.storage, o.dumps,
