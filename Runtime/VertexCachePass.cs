@@ -11,6 +11,11 @@ namespace GregoryTerrain
     /// kernels read differs from the last dispatch: the TerrainParams block (range and origin
     /// included), the LOD camera's object-to-clip matrix and pixel size, the effect keywords, the
     /// grid's buffers, or the snow map's version. A frame where none changed dispatches nothing.
+    /// <para>The kernels re-evaluate only the tiles whose integer factors or <c>_Range</c> differ from
+    /// what their slots hold (a camera move leaves most tiles alone). Whatever else the records
+    /// depend on is this class's to notice: when the origin, the grid, a noise or colour setting, the
+    /// object transform, the effects or the snow map changed, or the buffers are new, it zeroes
+    /// <c>_TileFactors</c> first, and a zero record matches no tile, so every tile starts over.</para>
     /// <para>The renderer decides whether the pass runs at all (compute support, the shader, the
     /// LOD camera, the size check); this class only sizes, compares and dispatches.</para>
     /// </summary>
@@ -72,6 +77,7 @@ namespace GregoryTerrain
 
         bool _valid;          // the buffers hold the result of _last
         Inputs _last;
+        Vector4[] _zeroFactors;   // _TileFactors' size, all zero: the "nothing evaluated yet" state
 
         public GraphicsBuffer TileFactors => _factors;
         public GraphicsBuffer VertexCache => _vertices;
@@ -130,6 +136,7 @@ namespace GregoryTerrain
         {
             if (!IsAllocated || shader != _kernelShader) throw new InvalidOperationException("VertexCachePass: FindKernels and EnsureBuffers come first");
             if (_valid && SameAsLast(inputs)) return false;
+            if (!_valid || !SameRecordInputs(inputs)) ForgetEvaluatedTiles();
 
             for (int k = 0; k < TerrainParams.Float4Count; k++)
             {
@@ -162,6 +169,13 @@ namespace GregoryTerrain
             return true;
         }
 
+        // Zero factors: the kernels then see no tile as up to date (a drawn tile's factors are >= 1).
+        void ForgetEvaluatedTiles()
+        {
+            if (_zeroFactors == null || _zeroFactors.Length != _factors.count) _zeroFactors = new Vector4[_factors.count];
+            _factors.SetData(_zeroFactors);
+        }
+
         /// <summary>Binds the buffers on the draw's property block under the graphics stages' names.</summary>
         public void BindTo(MaterialPropertyBlock props)
         {
@@ -190,17 +204,33 @@ namespace GregoryTerrain
             if (on) shader.EnableKeyword(keyword); else shader.DisableKeyword(keyword);
         }
 
-        bool SameAsLast(in Inputs i)
+        bool SameAsLast(in Inputs i) =>
+            SameRecordInputs(i) && SameParams(i.parameters, _last.parameters) &&
+            SameMatrix(i.objectToClip, _last.objectToClip) && SameVector(i.screenSize, _last.screenSize);
+
+        /// <summary>
+        /// Everything a tile's records depend on besides its factors and <c>_Range</c> (the kernels
+        /// compare those per tile): the camera, the pixel target and the uniform factor only move
+        /// factors (a new factor limit L reallocates, which forgets everything anyway).
+        /// </summary>
+        bool SameRecordInputs(in Inputs i)
         {
-            if (!SameParams(i.parameters, _last.parameters)) return false;
-            if (!SameMatrix(i.objectToClip, _last.objectToClip) || !SameMatrix(i.worldToObject, _last.worldToObject)) return false;
-            if (!SameVector(i.screenSize, _last.screenSize)) return false;
+            if (!SameParams(WithoutPerTileInputs(i.parameters), WithoutPerTileInputs(_last.parameters))) return false;
+            if (!SameMatrix(i.worldToObject, _last.worldToObject)) return false;
             if (i.controlPoints != _last.controlPoints || i.regions != _last.regions || i.gridLines != _last.gridLines) return false;
             if (i.gridStamp != _last.gridStamp || i.effects != _last.effects) return false;
             if ((i.effects & Effects.Snow) != 0 &&
                 (i.snowDepth != _last.snowDepth || i.snowVersion != _last.snowVersion || !SameVector(i.snowMapSize, _last.snowMapSize)))
                 return false;
             return true;
+        }
+
+        // _Range (the kernels compare it per tile) and _Tess.zw (pixel target, uniform factor) zeroed.
+        static TerrainParams WithoutPerTileInputs(TerrainParams p)
+        {
+            p.range = default;
+            p.tess = new Float4(p.tess.x, p.tess.y, 0f, 0f);
+            return p;
         }
 
         static bool SameParams(in TerrainParams a, in TerrainParams b)
