@@ -195,6 +195,7 @@ namespace GregoryTerrain.Rig
                 string id = Inv($"fs_m{m}_f{f}");
                 var scene = Scene(grid, cfg, CameraPath[0].range, width, height);
                 scene.WriteBuffers(Path.Combine(dir, "jobs", id));
+                WriteOrbit(scene, dir, id);
                 int patches = m * m;
                 long vertices = (long)patches * (f + 1) * (f + 1);
                 string buffers = $"--buffers @JOB@/{id}";
@@ -204,6 +205,7 @@ namespace GregoryTerrain.Rig
                 string staticRun = $"--vert @SPV@/static.spv --frag @SPV@/{FairVariant}/frag.spv --grid-factor {f} --instances {patches} --buffers @OUT@/static/{id} {view} {t}";
                 plan.Append($"{id}:static\trun\t-\t{staticRun}\n");
                 plan.Append($"{id}:static-if2\trun\t-\t{staticRun} {InFlight}\n");
+                plan.Append($"{id}:static-orbit\trun\t-\t{staticRun} {Orbit(id)}\n");
                 plan.Append($"{id}:floor\tstatic-match\t{id}:terrain\t--static-mesh --mesh @MESH@ --vert @SPV@/mesh.vert.spv --frag @SPV@/mesh.frag.spv {buffers} {view} {t}\n");
                 string cache = $"{Stages(CachedNoiseVariant, false)} --patches {patches} {CacheArgs(CachedNoiseVariant, scene.Tessellation)} {buffers} {view} {t}";
                 plan.Append($"{id}:cached\trun\t-\t{cache} --update-range-per-frame\n");
@@ -217,7 +219,10 @@ namespace GregoryTerrain.Rig
                 var cfg = new BenchConfig { Method = "adaptive", Tiles = m, Target = target, Octaves = 4 };
                 string id = Inv($"va_m{m}_s{sm}x{sf}");
                 Scene(grid, cfg, CameraPath[0].range, width, height).WriteBuffers(Path.Combine(dir, "jobs", id));
-                plan.Append($"{id}:terrain\trun\t-\t{Stages(FairVariant, false)} --patches {m * m} --buffers @JOB@/{id} {view} {t} --update-range-per-frame\n");
+                string direct = $"{Stages(FairVariant, false)} --patches {m * m} --buffers @JOB@/{id} {view} {t}";
+                plan.Append($"{id}:terrain\trun\t-\t{direct} --update-range-per-frame\n");
+                // Goal "only _Range changes within 1.02x of nothing changing", with noise and colour on.
+                plan.Append($"{id}:still\trun\t-\t{direct}\n");
                 meta.Append(Inv($"{id}\tadaptive-vs\t{m}\t0\t{target:G6}\t64\t4\tfar\t{m * m}\n"));
 
                 // The same through the vertex cache: its own target (integer factors draw more per factor).
@@ -226,9 +231,12 @@ namespace GregoryTerrain.Rig
                 string cid = Inv($"vc_m{m}_s{sm}x{sf}");
                 var cscene = Scene(grid, ccfg, CameraPath[0].range, width, height);
                 cscene.WriteBuffers(Path.Combine(dir, "jobs", cid));
+                WriteOrbit(cscene, dir, cid);
                 string cache = $"{Stages(CachedNoiseVariant, false)} --patches {m * m} {CacheArgs(CachedNoiseVariant, cscene.Tessellation)} --buffers @JOB@/{cid} {view} {t}";
                 plan.Append($"{cid}:terrain\trun\t-\t{cache} --update-range-per-frame\n");
                 plan.Append($"{cid}:still\trun\t-\t{cache} --compute-once\n");
+                // The camera moving, the range still: only tiles whose factors change are evaluated.
+                plan.Append($"{cid}:orbit\trun\t-\t{cache} {Orbit(cid)} --dump-storage 7:@OUT@/readback/{cid}-orbit.tiles.f32\n");
                 plan.Append($"{cid}:terrain-if2\trun\t-\t{cache} --update-range-per-frame {InFlight}\n");
                 plan.Append($"{cid}:still-if2\trun\t-\t{cache} --compute-once {InFlight}\n");
                 // lavapipe (the quick run) has one queue family: nothing to run the kernels alongside.
@@ -251,19 +259,31 @@ namespace GregoryTerrain.Rig
         /// </summary>
         public const string InFlight = "--in-flight 2";
 
+        /// <summary>
+        /// The moving camera of the *-orbit jobs (harness --camera-path): the zoom view turning about
+        /// its target by OrbitDegrees sin(2 pi f / OrbitFrames), at most 0.13 degrees a frame.
+        /// </summary>
+        public const int OrbitFrames = 100;
+        public const double OrbitDegrees = 2.0;
+
+        static void WriteOrbit(RigScene scene, string dir, string id) =>
+            BufferFiles.Write(Path.Combine(dir, "jobs", id, PackCommand.CameraPathFile), scene.OrbitCameraPath(OrbitFrames, OrbitDegrees));
+
+        static string Orbit(string id) => $"--camera-path @JOB@/{id}/{PackCommand.CameraPathFile}";
+
         /// <summary>The cache variant of the fair comparison: <see cref="FairVariant"/> plus GT_VERTEX_CACHE.</summary>
         public const string CachedNoiseVariant = "noise+height_color+vertex_cache";
 
         /// <summary>
         /// The vertex cache's buffers and kernels for the harness (internals.md, "Vertex cache"): _TileFactors at
-        /// binding 7 (32 bytes a tile), _VertexCache at binding 8, CacheTileFactors over M x M
+        /// binding 7 (48 bytes a tile), _VertexCache at binding 8, CacheTileFactors over M x M
         /// groups (one a tile), then CacheTileVertices over M x M x G groups (G = VertexCache.GroupsPerTile), each frame before the draw.
         /// </summary>
         public static string CacheArgs(string variant, TessellationSettings t) =>
             Inv($"--storage 7:{TileFactorsBytes(t.tiles)} --storage 8:{VertexCacheBytes(t)} ")
             + Inv($"--compute @SPV@/{variant}/cache_factors.spv:{t.tiles},{t.tiles},1 --compute @SPV@/{variant}/cache_vertices.spv:{t.tiles},{t.tiles},{VertexCache.GroupsPerTile(VertexCache.FactorLimit(t))}");
 
-        /// <summary>_TileFactors: 2 float4 a tile (Core's VertexCacheBudget, the shaders' layout).</summary>
+        /// <summary>_TileFactors: 3 float4 a tile (Core's VertexCacheBudget, the shaders' layout).</summary>
         public static long TileFactorsBytes(int tiles) => VertexCacheBudget.TileFactorsBytes(tiles);
 
         /// <summary>_VertexCache: M^2 S(L) slots of 2 float4 (no GT_SNOW in the bench), L = ceil(uniform F or max factor).</summary>

@@ -133,6 +133,8 @@ namespace GregoryTerrain.Rig
             if (File.Exists(jobsTsv))
                 foreach (var l in File.ReadLines(jobsTsv).Skip(1)) { var c = l.Split('\t'); if (c.Length > 4) planned[c[0]] = c[4]; }
             Fair(o, jobs, quick, planned);
+            CameraMoving(o, jobs, quick, rbDir);
+            RangeOnlyWithEffects(o, jobs, quick);
             Goals(o, tsv.ToString());
             Console.Write(o.ToString());
             string tsvPath = a.String("tsv", Path.Combine(raw, "bench_table.tsv"));
@@ -289,6 +291,59 @@ namespace GregoryTerrain.Rig
             o.AppendLine();
         }
 
+        /// <summary>
+        /// The camera moving with the range still (harness --camera-path, BenchPlan.OrbitFrames): the
+        /// cached terrain re-evaluates only the tiles whose integer factors changed; against the static
+        /// mesh on the same camera path. Tiles evaluated: the last frame's, from its _TileFactors dump.
+        /// </summary>
+        static void CameraMoving(StringBuilder o, Dictionary<string, Job> jobs, bool quick, string rbDir)
+        {
+            o.AppendLine("### The camera moving, the range still");
+            o.AppendLine();
+            o.AppendLine(Inv($"The far view turning about its target by {BenchPlan.OrbitDegrees:G} sin(2 pi f / {BenchPlan.OrbitFrames}) degrees at frame f (harness `--camera-path`), for the cached terrain (`orbit`) and the static mesh (`static-orbit`) alike. Both kernels run every frame; CacheTileVertices evaluates only the tiles whose factors (or range) changed. Tiles evaluated: in the last frame, from its `_TileFactors` dump."));
+            o.AppendLine();
+            o.AppendLine("| cached terrain | tiles | triangles | static, camera moving ms | cached, camera moving ms (of which compute) | / static | range moving ms (of which compute) | / static | tiles evaluated / drawn, last frame |");
+            o.AppendLine("| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |");
+            Job Any(string key) => jobs.TryGetValue(key, out var j) && j.Skipped == null && j.Exit == 0 ? j : null;
+            foreach (var (m, sm, sf) in BenchPlan.AdaptiveVsStatic(quick))
+            {
+                string id = Inv($"vc_m{m}_s{sm}x{sf}");
+                Job st = Any(Inv($"fs_m{sm}_f{sf}:static-orbit run")), orbit = Any($"{id}:orbit run"), moving = Any($"{id}:terrain run");
+                if (st == null || orbit == null) { o.AppendLine(Inv($"| {id} (adaptive) | {m} | (not run or failed) | | | | | | |")); continue; }
+                string evaluated = "-";
+                string dump = Path.Combine(rbDir, "readback", id + "-orbit.tiles.f32");
+                if (File.Exists(dump))
+                {
+                    float[] r = BufferFiles.Read(dump);
+                    int n = m * m, drawn = 0, again = 0;
+                    for (int t = 0; t < n && 8 * t + 7 < r.Length; t++)
+                        if (r[8 * t + 6] == 0f) { drawn++; if (r[8 * t + 7] != 0f) again++; }
+                    evaluated = Inv($"{again} / {drawn}");
+                }
+                string range = moving == null ? "- | -" : Inv($"{moving.GpuMs:G4} ({moving.ComputeMs:G3}) | {moving.GpuMs / st.GpuMs:F3}x");
+                o.AppendLine(Inv($"| {id} (adaptive) | {m} | {orbit.Get("clipping_invocations")} | {st.GpuMs:G4} | {orbit.GpuMs:G4} ({orbit.ComputeMs:G3}) | {orbit.GpuMs / st.GpuMs:F3}x | {range} | {evaluated} |"));
+            }
+            o.AppendLine();
+        }
+
+        /// <summary>
+        /// Goal "changing only _Range: frame time within 1.02x of changing nothing", for the package's
+        /// terrain (adaptive, noise, height colour): the domain-stage path (va_*: terrain / still) and
+        /// the vertex cache (vc_*: terrain / still, where "still" dispatches nothing).
+        /// </summary>
+        static void RangeOnlyWithEffects(StringBuilder o, Dictionary<string, Job> jobs, bool quick)
+        {
+            Job Any(string key) => jobs.TryGetValue(key, out var j) && j.Skipped == null && j.Exit == 0 ? j : null;
+            foreach (var (m, sm, sf) in BenchPlan.AdaptiveVsStatic(quick))
+                foreach (var (prefix, path) in new[] { ("va", "domain stage"), ("vc", "vertex cache") })
+                {
+                    string id = Inv($"{prefix}_m{m}_s{sm}x{sf}");
+                    Job moving = Any($"{id}:terrain run"), still = Any($"{id}:still run");
+                    if (moving == null || still == null) continue;
+                    o.AppendLine(Inv($"- {id} ({path}, noise + height colour, {moving.Get("clipping_invocations")} triangles): range-only / nothing changes = {moving.GpuMs:G4} / {still.GpuMs:G4} ms = {moving.GpuMs / still.GpuMs:F3}x GPU"));
+                }
+            o.AppendLine();
+        }
 
         /// <summary>Adaptive vs uniform at a 1-pixel largest error (no noise): triangles each needs, log-interpolated.</summary>
         static void Goals(StringBuilder o, string tsv)
