@@ -214,6 +214,16 @@ namespace GregoryTerrain.Rig.Tests
         }
 
         /// <summary>
+        /// --update-range-per-frame shifts the range in every frame but the last, which draws the
+        /// inputs' own range: the run ends with the picture and cache of a single frame there.
+        /// </summary>
+        [Test]
+        public void RangeMovingRunsEndAtTheirInputsRange()
+        {
+            AssertSamePictureAndCache("single-frame", new[] { "--frames", "1" }, "range-moving", new[] { "--frames", "5", "--update-range-per-frame" });
+        }
+
+        /// <summary>
         /// --compute-once with frames in flight: each slot's cache is built in its own first frame, so
         /// the fourth frame (slot 1) still draws the whole terrain.
         /// </summary>
@@ -261,8 +271,9 @@ namespace GregoryTerrain.Rig.Tests
             TestContext.Out.WriteLine("camera turned 3 degrees: {0} of {1} drawn tiles evaluated again, {2} record parts equal to a fresh build", evaluated, drawn, slots);
             Assert.That(evaluated, Is.GreaterThan(0).And.LessThan(drawn), "some tiles kept their factors, some did not");
 
+            // Three frames: the harness shifts the range in frame 1 and draws the plan's in the last.
             CacheFrame ranged = DrawCached("orbit-range", range, tiles, orbit, width, height, null,
-                                           "--frames", "2", "--camera-path", CameraPathOf("orbit-range"), "--update-range-per-frame");
+                                           "--frames", "3", "--camera-path", CameraPathOf("orbit-range"), "--update-range-per-frame");
             for (int tile = 0; tile < tiles * tiles; tile++)
                 Assert.That(ranged.Evaluated(tile), Is.EqualTo(!ranged.Culled(tile)), "range moved: tile " + tile);
         }

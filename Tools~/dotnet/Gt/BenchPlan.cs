@@ -113,8 +113,10 @@ namespace GregoryTerrain.Rig
                     int patches = cfg.Method == "paper" ? grid.PatchCount : cfg.Tiles * cfg.Tiles;
                     meta.Append(Inv($"{id}\t{cfg.Label}\t{cfg.Tiles}\t{cfg.Factor}\t{cfg.Target}\t{cfg.MaxFactor}\t{cfg.Octaves}\t{cam}\t{patches}\n"));
                     string buffers = "--buffers @JOB@/" + id;
+                    // Cached rows: the range changing every frame, so both kernels evaluate every tile
+                    // every frame, as while the view moves (the last frame draws the plan's range).
                     if (cfg.Cached)
-                        plan.Append($"{id}\trun\t-\t{Stages(cfg.Variant, fallback: false)} --patches {patches} {CacheArgs(cfg.Variant, scene.Tessellation)} --dump-storage 7:@OUT@/readback/{id}.tiles.f32 {buffers} {view} {timing}\n");
+                        plan.Append($"{id}\trun\t-\t{Stages(cfg.Variant, fallback: false)} --patches {patches} {CacheArgs(cfg.Variant, scene.Tessellation)} --dump-storage 7:@OUT@/readback/{id}.tiles.f32 {buffers} {view} {timing} --update-range-per-frame\n");
                     else if (cfg.Method == "fallback")
                         plan.Append($"{id}\trun\t-\t{Stages(cfg.Variant, fallback: true)} --grid-factor {Inv($"{cfg.Factor}")} --instances {patches} {buffers} {view} {timing}\n");
                     else

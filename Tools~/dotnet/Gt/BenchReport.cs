@@ -119,7 +119,7 @@ namespace GregoryTerrain.Rig
             }
             o.AppendLine();
             o.AppendLine("Triangles and DS invocations (vertex invocations for the fallback) are means per frame over the camera path; GPU time the mean of the per-camera medians; errors the largest (max) and RMS over every sample of the path.");
-            o.AppendLine("Cached rows (GT_VERTEX_CACHE): each frame runs the compute pre-pass (kernels CacheTileFactors, CacheTileVertices) before the draw; GPU ms is the whole frame, compute ms the pre-pass alone (mean of the per-camera medians); partitioning is integer, at the factors read back from _TileFactors.");
+            o.AppendLine("Cached rows (GT_VERTEX_CACHE): each frame runs the compute pre-pass (kernels CacheTileFactors, CacheTileVertices) before the draw, with _Range changing every frame so that every tile is evaluated again (the last frame draws the plan's range); GPU ms is the whole frame, compute ms the pre-pass alone (mean of the per-camera medians); partitioning is integer, at the factors read back from _TileFactors.");
             if (worstModelId != null)
             {
                 o.AppendLine(Inv($"Cached rows' triangles against the integer-partitioning count of their dumped factors (transition rings included): largest difference {100 * worstModel:G3}% ({worstModelId})."));
@@ -302,14 +302,15 @@ namespace GregoryTerrain.Rig
             o.AppendLine();
             o.AppendLine(Inv($"The far view turning about its target by {BenchPlan.OrbitDegrees:G} sin(2 pi f / {BenchPlan.OrbitFrames}) degrees at frame f (harness `--camera-path`), for the cached terrain (`orbit`) and the static mesh (`static-orbit`) alike. Both kernels run every frame; CacheTileVertices evaluates only the tiles whose factors (or range) changed. Tiles evaluated: in the last frame, from its `_TileFactors` dump."));
             o.AppendLine();
-            o.AppendLine("| cached terrain | tiles | triangles | static, camera moving ms | cached, camera moving ms (of which compute) | / static | range moving ms (of which compute) | / static | tiles evaluated / drawn, last frame |");
-            o.AppendLine("| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |");
+            o.AppendLine("| cached terrain | tiles | triangles | static, camera moving ms | cached, camera moving ms (of which compute) | / static | static, camera still ms | cached, range moving ms (of which compute) | / static | tiles evaluated / drawn, last frame |");
+            o.AppendLine("| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |");
             Job Any(string key) => jobs.TryGetValue(key, out var j) && j.Skipped == null && j.Exit == 0 ? j : null;
             foreach (var (m, sm, sf) in BenchPlan.AdaptiveVsStatic(quick))
             {
                 string id = Inv($"vc_m{m}_s{sm}x{sf}");
-                Job st = Any(Inv($"fs_m{sm}_f{sf}:static-orbit run")), orbit = Any($"{id}:orbit run"), moving = Any($"{id}:terrain run");
-                if (st == null || orbit == null) { o.AppendLine(Inv($"| {id} (adaptive) | {m} | (not run or failed) | | | | | | |")); continue; }
+                Job st = Any(Inv($"fs_m{sm}_f{sf}:static-orbit run")), orbit = Any($"{id}:orbit run"), moving = Any($"{id}:terrain run"),
+                    still = Any(Inv($"fs_m{sm}_f{sf}:static run"));
+                if (st == null || orbit == null) { o.AppendLine(Inv($"| {id} (adaptive) | {m} | (not run or failed) | | | | | | | |")); continue; }
                 string evaluated = "-";
                 string dump = Path.Combine(rbDir, "readback", id + "-orbit.tiles.f32");
                 if (File.Exists(dump))
@@ -320,7 +321,7 @@ namespace GregoryTerrain.Rig
                         if (r[8 * t + 6] == 0f) { drawn++; if (r[8 * t + 7] != 0f) again++; }
                     evaluated = Inv($"{again} / {drawn}");
                 }
-                string range = moving == null ? "- | -" : Inv($"{moving.GpuMs:G4} ({moving.ComputeMs:G3}) | {moving.GpuMs / st.GpuMs:F3}x");
+                string range = moving == null || still == null ? "- | - | -" : Inv($"{still.GpuMs:G4} | {moving.GpuMs:G4} ({moving.ComputeMs:G3}) | {moving.GpuMs / still.GpuMs:F3}x");
                 o.AppendLine(Inv($"| {id} (adaptive) | {m} | {orbit.Get("clipping_invocations")} | {st.GpuMs:G4} | {orbit.GpuMs:G4} ({orbit.ComputeMs:G3}) | {orbit.GpuMs / st.GpuMs:F3}x | {range} | {evaluated} |"));
             }
             o.AppendLine();

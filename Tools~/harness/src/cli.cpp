@@ -165,7 +165,8 @@ const char* usageText() {
   --frames N --warmup K          draw N measured frames after K warm-up frames
   --timestamps                   GPU time of each frame ("time ..." lines; with --compute also
                                  the compute part alone: "time compute_ms ...")
-  --update-range-per-frame       write a new _Range into the uniform buffer every frame
+  --update-range-per-frame       write a new _Range into the uniform buffer every frame (the last
+                                 frame: the inputs' own range)
   --camera-path FILE             a moving camera: FILE holds N RigCamera blocks (176 bytes each, the
                                  layout of camera.f32); frame f draws with block f mod N
   --compute-once                 run the --compute passes in the first frame only (later frames reuse their output)

@@ -30,7 +30,8 @@ void waitFrameFence(const Gpu& gpu, VkFence fence, uint32_t frame) {
     GT_VK(r);
 }
 
-std::array<float, 4> frameRange(const std::array<float, 4>& base, uint32_t frame) {
+std::array<float, 4> frameRange(const std::array<float, 4>& base, uint32_t frame, uint32_t frames) {
+    if (frame + 1 == frames) return base;
     const float dx = (base[2] - base[0]) * 1e-4f * static_cast<float>(frame % 8);
     const float dy = (base[3] - base[1]) * 1e-4f * static_cast<float>(frame % 8);
     return {base[0] + dx, base[1] + dy, base[2] + dx, base[3] + dy};
@@ -107,7 +108,7 @@ FrameResults runFrames(const Gpu& gpu, const RenderTarget& target, const Pipelin
     const uint32_t total = s.warmup + s.frames;
     for (uint32_t f = 0; f < total; ++f) {
         const auto t0 = std::chrono::steady_clock::now();
-        if (s.updateRange) writeRange(inputs, frameRange(baseRange, f));
+        if (s.updateRange) writeRange(inputs, frameRange(baseRange, f, total));
         if (!s.cameraPath.empty()) writeCamera(inputs, s.cameraPath, f);
         if (s.resendBytes) std::memset(staging.mapped, static_cast<int>(f & 0xff), s.resendBytes);
         VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};

@@ -52,8 +52,10 @@ void recordDraws(VkCommandBuffer cmd, const DrawWork& work);
 void waitFrameFence(const Gpu& gpu, VkFence fence, uint32_t frame);
 
 // The per-frame _Range of --update-range-per-frame: the base range shifted by a tiny,
-// frame-dependent fraction of its size, so the values really change every frame.
-std::array<float, 4> frameRange(const std::array<float, 4>& base, uint32_t frame);
+// frame-dependent fraction of its size, so the values really change every frame; the last of
+// `frames` frames draws the base range itself, so what a run leaves (picture, statistics, dumps)
+// is of the range its inputs name.
+std::array<float, 4> frameRange(const std::array<float, 4>& base, uint32_t frame, uint32_t frames);
 
 // compute: the pre-pass dispatched before the render pass of every frame (may be empty).
 FrameResults runFrames(const Gpu& gpu, const RenderTarget& target, const Pipeline& pipeline, Inputs& inputs,
