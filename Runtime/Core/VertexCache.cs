@@ -102,6 +102,18 @@ namespace GregoryTerrain
             return (MaxTilePoints(limit) + perGroup - 1) / perGroup;
         }
 
+        /// <summary>
+        /// Index of tile t's factor record in <c>_TileFactors</c>: float4 (edges), then (inside 0-1,
+        /// culled, evaluate). HLSL <c>VertexCacheFactorIndex</c>.
+        /// </summary>
+        public static long FactorIndex(int tile) => 2L * tile;
+
+        /// <summary>
+        /// Index in <c>_TileFactors</c> of the <c>_Range</c> tile t's slots were last evaluated at: after
+        /// the M^2 factor records. HLSL <c>VertexCacheEvaluatedRangeIndex</c>.
+        /// </summary>
+        public static long EvaluatedRangeIndex(int tile, int tiles) => 2L * tiles * tiles + tile;
+
         /// <summary>Inside grid point (i, j) of a tile whose inside factor along u is <paramref name="insideU"/>.</summary>
         public static int InteriorSlot(int i, int j, int insideU) => i + j * (insideU + 1);
 

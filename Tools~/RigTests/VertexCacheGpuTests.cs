@@ -234,6 +234,42 @@ namespace GregoryTerrain.Rig.Tests
         }
 
         /// <summary>
+        /// The layout the kernels and the domain stage address (Shaders/VertexCache.hlsl, the sample
+        /// count of TileFactors.hlsl) is Core's, run on lavapipe through VertexCacheLayoutProbe.hlsl:
+        /// slots, groups and points a tile for every factor limit 1-64, the factor samples, the
+        /// factor-record and evaluated-range indices, the group's lanes and passes.
+        /// </summary>
+        [Test]
+        public void ShaderLayoutIsCoresLayout()
+        {
+            string dir = Path.Combine(_work, "layout-probe");
+            Directory.CreateDirectory(dir);
+            string spv = Path.Combine(dir, "probe.spv"), output = Path.Combine(dir, "layout.u32");
+            ComputeRunner.Run("glslangValidator", "-D", "-V", "-S", "comp", "-e", "VertexCacheLayoutProbe", "--hlsl-iomap",
+                "--shift-cbuffer-binding", "0", "--shift-texture-binding", "2", "--shift-UAV-binding", "5", "-o", spv,
+                PackageRoot.Combine("Tools~", "RigTests", "VertexCacheLayoutProbe.hlsl"));
+            ComputeRunner.Run("spirv-val", spv);
+            string o = ComputeRunner.Run(ComputeRunner.Runner(), "--spv", spv, "--entry", "VertexCacheLayoutProbe", "--device", "llvmpipe",
+                "--groups", "1", "--zeros", "9=" + (64 * 32).ToString(CultureInfo.InvariantCulture), "--out", "9=" + output);
+            Assert.That(o, Does.Contain("device llvmpipe"));
+            byte[] bytes = File.ReadAllBytes(output);
+            uint U(int lane, int k) => BitConverter.ToUInt32(bytes, 4 * (8 * lane + k));
+            for (int lane = 0; lane < 64; lane++)
+            {
+                int limit = lane + 1;
+                string at = "L = " + limit + ", tile " + lane;
+                Assert.That(U(lane, 0), Is.EqualTo(VertexCache.SlotsPerTile(limit)), at + ": slots a tile");
+                Assert.That(U(lane, 1), Is.EqualTo(VertexCache.GroupsPerTile(limit)), at + ": groups a tile");
+                Assert.That(U(lane, 2), Is.EqualTo(VertexCache.MaxTilePoints(limit)), at + ": points a tile");
+                Assert.That(U(lane, 3), Is.EqualTo(VertexCache.FactorSamplesPerTile), "factor samples a tile");
+                Assert.That(U(lane, 4), Is.EqualTo(VertexCache.FactorIndex(lane)), at + ": factor record");
+                Assert.That(U(lane, 5), Is.EqualTo(VertexCache.EvaluatedRangeIndex(lane, 7)), at + ": evaluated range of 7 x 7 tiles");
+                Assert.That(U(lane, 6), Is.EqualTo(VertexCache.ThreadsPerGroup), "lanes a group");
+                Assert.That(U(lane, 7), Is.EqualTo(VertexCache.PassesPerGroup), "passes a group");
+            }
+        }
+
+        /// <summary>
         /// A camera move (harness --camera-path, the orbit of gt-cli pack) re-evaluates only the tiles
         /// whose integer factors changed: frame 0 builds every tile at the path's first camera, frame 1,
         /// turned by 3 degrees, updates. It ends with the picture, factors and slots of a cache built
@@ -254,10 +290,15 @@ namespace GregoryTerrain.Rig.Tests
 
             RigPng pm = RigPng.Read(Path.Combine(_work, "orbit", "image.png")), pf = RigPng.Read(Path.Combine(_work, "orbit-fresh", "image.png"));
             Assert.That(pm.PixelsDifferingFrom(pf, 0), Is.EqualTo(0), "the updated frame against one built from scratch");
+            Float4 planRange = ReadParams(Path.Combine(_work, "orbit", "params.f32")).range;
             int drawn = 0, evaluated = 0, slots = 0;
             for (int tile = 0; tile < tiles * tiles; tile++)
             {
                 Assert.That(moved.FactorsOf(tile), Is.EqualTo(fresh.FactorsOf(tile)), "tile " + tile);
+                long r = 4 * VertexCache.EvaluatedRangeIndex(tile, tiles);
+                if (!first.Culled(tile))
+                    Assert.That(new Float4(moved.Factors[r], moved.Factors[r + 1], moved.Factors[r + 2], moved.Factors[r + 3]), Is.EqualTo(planRange),
+                                "tile " + tile + ": the range its slots were evaluated at");
                 Assert.That(moved.Culled(tile), Is.EqualTo(fresh.Culled(tile)), "tile " + tile);
                 if (fresh.Culled(tile)) { Assert.That(moved.Evaluated(tile), Is.False, "culled tile " + tile); continue; }
                 drawn++;
