@@ -5,7 +5,7 @@ namespace GregoryTerrain
 {
     /// <summary>
     /// The compute pre-pass of <see cref="VertexEvaluation.ComputeCache"/>: owns <c>_TileFactors</c>
-    /// (3 M^2 float4) and <c>_VertexCache</c> (M^2 S(L) R float4, sizes from Core's
+    /// (54 M^2 float4) and <c>_VertexCache</c> (M^2 S(L) R float4, sizes from Core's
     /// <see cref="VertexCacheBudget"/>) and dispatches <c>CacheTileFactors</c> then
     /// <c>CacheTileVertices</c> of <c>Shaders/TerrainCache.compute</c> only when something the
     /// kernels read differs from the last dispatch: the TerrainParams block (range and origin

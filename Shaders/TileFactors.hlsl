@@ -136,9 +136,12 @@ float4 TileCentreSample(uint patch)
     return float4(centre, ObjectPixelsPerUnit(centre));
 }
 
-float4 TileFactorSample(uint patch, uint s)
+// Sample s's object position: what depends on the surface and the range, not on the camera (the
+// vertex cache keeps it while the range holds). The same positions TileLineInnerSample,
+// TileCentreSample and the corners give.
+float3 TileFactorSamplePosition(uint patch, uint s)
 {
-    if (s < 4u) return float4(TileCornerObjectPosition(patch, s), 0.0);
+    if (s < 4u) return TileCornerObjectPosition(patch, s);
     float2 a, b;
     uint2 corners;
     uint axis;
@@ -146,16 +149,26 @@ float4 TileFactorSample(uint patch, uint s)
     {
         uint inner = s - 4u;
         TileFactorLine(inner / GT_TILE_INNER_POINTS, a, b, corners, axis);
-        return TileLineInnerSample(patch, a, b, inner % GT_TILE_INNER_POINTS + 1u);
+        return SurfaceObjectPosition(patch, lerp(a, b, (float)(inner % GT_TILE_INNER_POINTS + 1u) / (float)GT_EDGE_SEGMENTS));
     }
     if (s < GT_TILE_CENTRE_SAMPLE)
     {
         uint end = s - GT_TILE_MIDLINE_END_SAMPLE;
         TileFactorLine(4u + end / 2u, a, b, corners, axis);
-        return float4(SurfaceObjectPosition(patch, (end & 1u) ? b : a), 0.0);
+        return SurfaceObjectPosition(patch, (end & 1u) ? b : a);
     }
-    return TileCentreSample(patch);
+    return SurfaceObjectPosition(patch, float2(0.5, 0.5));
 }
+
+// Sample s at its position p: the camera's part, pixels per object unit, where a factor reads it
+// (the lines' inner points and the centre), else 0.
+float4 TileFactorSampleAt(uint s, float3 p)
+{
+    bool scaled = (s >= 4u && s < GT_TILE_MIDLINE_END_SAMPLE) || s == GT_TILE_CENTRE_SAMPLE;
+    return float4(p, scaled ? ObjectPixelsPerUnit(p) : 0.0);
+}
+
+float4 TileFactorSample(uint patch, uint s) { return TileFactorSampleAt(s, TileFactorSamplePosition(patch, s)); }
 
 // The sample at point i (0 .. GT_EDGE_SEGMENTS, from a to b) of line `piece` (0-5).
 uint TileLineSample(uint piece, uint i)

@@ -49,12 +49,18 @@ uint VertexCacheGroupsPerTile(uint limit)
     return (VertexCacheMaxTilePoints(limit) + perGroup - 1u) / perGroup;
 }
 
-// _TileFactors: M^2 factor records of 2 float4, (edge 0-3) and (inside 0-1, culled 1/0, evaluated
-// 1/0), then M^2 float4: the _Range each tile's slots were last evaluated at. "evaluated" tells
+// _TileFactors: M^2 factor records of 2 float4, (edge 0-3) and (inside 0-1, culled 1/0, evaluate
+// 1/0); then M^2 float4, the _Range of each tile's last pass; then M^2 x GT_TILE_FACTOR_SAMPLES
+// float4, the tile's factor samples' object positions (w = 1 once written). "evaluate" tells
 // CacheTileVertices which tiles to (re)evaluate this pass: a tile whose factors and range are the
-// ones its slots already hold keeps them (a camera move that leaves its integer factors alone).
+// ones its slots already hold keeps them (a camera move that leaves its integer factors alone), and
+// while the range holds the factors kernel reads its samples back instead of evaluating the surface.
 uint VertexCacheFactorIndex(uint tile) { return 2u * tile; }
 uint VertexCacheEvaluatedRangeIndex(uint tile, uint tiles) { return 2u * tiles * tiles + tile; }
+uint VertexCacheFactorSampleIndex(uint tile, uint s, uint tiles)
+{
+    return 3u * tiles * tiles + tile * GT_TILE_FACTOR_SAMPLES + s;
+}
 
 // Inside grid point (i, j) of a tile whose inside factor along u is insideU.
 uint VertexCacheInteriorSlot(uint2 ij, uint insideU) { return ij.x + ij.y * (insideU + 1u); }

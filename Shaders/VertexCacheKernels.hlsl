@@ -27,31 +27,50 @@ RWStructuredBuffer<float4> _VertexCacheRW GT_REGISTER(u3);
 groupshared float4 gtTileFactorSamples[GT_TILE_FACTOR_SAMPLES];
 groupshared float gtTileFactorPieces[GT_TILE_FACTOR_PIECES];
 
-// True when the tile's slots do not hold its vertices at factors f and the current _Range: it was
-// culled or drawn at other factors last pass, or the range moved. Everything else the records depend
-// on (origin, grid, noise, colour, snow, object transform) the renderer guards: it clears
-// _TileFactors when one of those changes, and a zero record never matches (factors >= 1).
-bool TileSlotsOutdated(uint tile, TileFactorSet f)
+// Whether _Range moved since the tile's last pass (its record keeps that pass's range). Read by
+// every lane before lane 0 writes the new one (WriteTileFactors, after the group's barriers).
+bool TileRangeMoved(uint tile) { return any(_TileFactorsRW[VertexCacheEvaluatedRangeIndex(tile, TileCountInt())] != _Range); }
+
+// True when the tile's slots do not hold its vertices at factors f: the range moved, or last pass
+// it was culled or drawn at other factors. Everything else the records depend on (origin, grid,
+// noise, colour, snow, object transform) the renderer guards: it clears _TileFactors when one of
+// those changes, and a zero record never matches (a drawn tile's factors are >= 1).
+bool TileSlotsOutdated(uint tile, TileFactorSet f, bool rangeMoved)
 {
     uint i = VertexCacheFactorIndex(tile);
     float4 edge = _TileFactorsRW[i];
     float4 inside = _TileFactorsRW[i + 1u];
-    float4 range = _TileFactorsRW[VertexCacheEvaluatedRangeIndex(tile, TileCountInt())];
-    return inside.z != 0.0 || any(edge != f.edge) || any(inside.xy != f.inside) || any(range != _Range);
+    return rangeMoved || inside.z != 0.0 || any(edge != f.edge) || any(inside.xy != f.inside);
 }
 
-void WriteTileFactors(uint tile, TileFactorSet f)
+void WriteTileFactors(uint tile, TileFactorSet f, bool rangeMoved)
 {
     f = VertexCacheIntegerFactors(f);
     bool culled = f.edge.x == 0.0;
-    bool evaluate = !culled && TileSlotsOutdated(tile, f);
+    bool evaluate = !culled && TileSlotsOutdated(tile, f, rangeMoved);
     uint i = VertexCacheFactorIndex(tile);
     _TileFactorsRW[i] = f.edge;
     _TileFactorsRW[i + 1u] = float4(f.inside, culled ? 1.0 : 0.0, evaluate ? 1.0 : 0.0);
-    if (evaluate) _TileFactorsRW[VertexCacheEvaluatedRangeIndex(tile, TileCountInt())] = _Range;
+    if (rangeMoved) _TileFactorsRW[VertexCacheEvaluatedRangeIndex(tile, TileCountInt())] = _Range;
 }
 
-// Dispatch (M, M, 1): a group a tile. The tile's 51 surface samples (TileFactorSample) one a lane,
+// Sample s of the tile: its position read back while the range holds and the sample was written
+// (w = 1), else evaluated and kept; then the camera's part (TileFactorSampleAt). The positions
+// depend on the range only, so a camera move costs no surface evaluation here.
+float4 CachedTileFactorSample(uint tile, uint s, bool rangeMoved)
+{
+    uint k = VertexCacheFactorSampleIndex(tile, s, TileCountInt());
+    float4 kept = _TileFactorsRW[k];
+    float3 p = kept.xyz;
+    if (rangeMoved || kept.w != 1.0)
+    {
+        p = TileFactorSamplePosition(tile, s);
+        _TileFactorsRW[k] = float4(p, 1.0);
+    }
+    return TileFactorSampleAt(s, p);
+}
+
+// Dispatch (M, M, 1): a group a tile. The tile's 51 surface samples (CachedTileFactorSample) one a lane,
 // then its seven pieces (TileFactorPiece's arithmetic on the shared samples) one a lane, then lane 0
 // assembles them. Why so wide: the factors are a chain of surface evaluations, and the chain's
 // length is the pass's. One lane a tile: ~50 evaluations (0.6M triangles, 32 x 32 tiles, H200: 0.1
@@ -63,13 +82,18 @@ void CacheTileFactors(uint3 group : SV_GroupID, uint lane : SV_GroupIndex)
     uint tiles = TileCountInt();
     if (group.x >= tiles || group.y >= tiles) return;
     uint tile = group.y * tiles + group.x;
+    bool rangeMoved = TileRangeMoved(tile);   // the same for every lane
     TileFactorSet f;
     if (UniformTileFactors(f))   // the same for every lane of the group: no barrier is skipped by some only
     {
-        if (lane == 0u) WriteTileFactors(tile, f);
+        // No samples here: those kept belong to the range of the last adaptive pass.
+        if (rangeMoved && lane < GT_TILE_FACTOR_SAMPLES)
+            _TileFactorsRW[VertexCacheFactorSampleIndex(tile, lane, tiles)] = float4(0.0, 0.0, 0.0, 0.0);
+        GroupMemoryBarrierWithGroupSync();   // every lane has read the old range before lane 0 writes
+        if (lane == 0u) WriteTileFactors(tile, f, rangeMoved);
         return;
     }
-    if (lane < GT_TILE_FACTOR_SAMPLES) gtTileFactorSamples[lane] = TileFactorSample(tile, lane);
+    if (lane < GT_TILE_FACTOR_SAMPLES) gtTileFactorSamples[lane] = CachedTileFactorSample(tile, lane, rangeMoved);
     GroupMemoryBarrierWithGroupSync();
     float3 cornerOS[4];
     [unroll] for (uint c = 0u; c < 4u; c++)
@@ -96,13 +120,13 @@ void CacheTileFactors(uint3 group : SV_GroupID, uint lane : SV_GroupIndex)
     if (lane != 0u) return;
     if (culled)
     {
-        WriteTileFactors(tile, CulledTileFactors());
+        WriteTileFactors(tile, CulledTileFactors(), rangeMoved);
         return;
     }
     float piece[GT_TILE_FACTOR_PIECES];
     [unroll] for (uint k = 0u; k < GT_TILE_FACTOR_PIECES; k++)
         piece[k] = gtTileFactorPieces[k];
-    WriteTileFactors(tile, TileFactorsOfPieces(piece));
+    WriteTileFactors(tile, TileFactorsOfPieces(piece), rangeMoved);
 }
 
 void WriteVertexCacheRecord(uint slot, TerrainVertexAttributes a)

@@ -114,6 +114,12 @@ namespace GregoryTerrain
         /// </summary>
         public static long EvaluatedRangeIndex(int tile, int tiles) => 2L * tiles * tiles + tile;
 
+        /// <summary>
+        /// Index in <c>_TileFactors</c> of factor sample s of tile t (its object position, w = 1 once
+        /// written): after the ranges. HLSL <c>VertexCacheFactorSampleIndex</c>.
+        /// </summary>
+        public static long FactorSampleIndex(int tile, int s, int tiles) => 3L * tiles * tiles + (long)tile * FactorSamplesPerTile + s;
+
         /// <summary>Inside grid point (i, j) of a tile whose inside factor along u is <paramref name="insideU"/>.</summary>
         public static int InteriorSlot(int i, int j, int insideU) => i + j * (insideU + 1);
 

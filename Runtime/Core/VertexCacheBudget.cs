@@ -14,7 +14,7 @@ namespace GregoryTerrain
     /// <item>Slots per tile <c>S(L) = (L+1)^2 + 4 (L+1)</c>: the inside grid of the largest inside
     /// factors, then each of the four edges' <c>L+1</c> points.</item>
     /// <item>Float4s per slot <c>R</c>: 2, or 3 with GT_SNOW.</item>
-    /// <item><c>_TileFactors</c>: <c>3 M^2</c> float4 (48 M^2 bytes); <c>_VertexCache</c>:
+    /// <item><c>_TileFactors</c>: <c>54 M^2</c> float4 (864 M^2 bytes); <c>_VertexCache</c>:
     /// <c>M^2 S(L) R</c> float4 (16 bytes each).</item>
     /// </list>
     /// </summary>
@@ -23,17 +23,23 @@ namespace GregoryTerrain
         /// <summary>float4 per tile in <c>_TileFactors</c>' first part: (edges 0-3), (inside 0-1, culled, evaluated).</summary>
         public const int TileFactorFloat4s = 2;
 
-        /// <summary>float4 per tile in its second part: the <c>_Range</c> the tile's slots were evaluated at.</summary>
+        /// <summary>float4 per tile in its second part: the <c>_Range</c> of the tile's last pass.</summary>
         public const int EvaluatedRangeFloat4s = 1;
 
-        /// <summary>float4 elements of <c>_TileFactors</c>: 3 M^2 (2 M^2 factor records, then M^2 ranges).</summary>
+        /// <summary>float4 per tile in its third part: the positions of its factor samples.</summary>
+        public const int FactorSampleFloat4s = VertexCache.FactorSamplesPerTile;
+
+        /// <summary>float4 per tile in all: 2 + 1 + 51 = 54.</summary>
+        public const int TileFactorsFloat4sPerTile = TileFactorFloat4s + EvaluatedRangeFloat4s + FactorSampleFloat4s;
+
+        /// <summary>float4 elements of <c>_TileFactors</c>: 54 M^2 (factor records, ranges, factor samples).</summary>
         public static long TileFactorsFloat4s(int tiles)
         {
             CheckTiles(tiles);
-            return (TileFactorFloat4s + EvaluatedRangeFloat4s) * (long)tiles * tiles;
+            return TileFactorsFloat4sPerTile * (long)tiles * tiles;
         }
 
-        /// <summary>Bytes of <c>_TileFactors</c>: 48 M^2.</summary>
+        /// <summary>Bytes of <c>_TileFactors</c>: 864 M^2.</summary>
         public static long TileFactorsBytes(int tiles) => TileFactorsFloat4s(tiles) * GpuLayout.Float4Stride;
 
         /// <summary>float4 elements of <c>_VertexCache</c>: M^2 S(L) R.</summary>
@@ -71,7 +77,7 @@ namespace GregoryTerrain
             long factors = TileFactorsBytes(tiles);
             if (factors > limit)
                 throw new ArgumentException(FormattableString.Invariant(
-                    $"the tile factors for tiles = {tiles} need {factors} bytes (_TileFactors = 48 M^2), more than the largest buffer, {limit} bytes"), "tiles");
+                    $"the tile factors for tiles = {tiles} need {factors} bytes (_TileFactors = 864 M^2), more than the largest buffer, {limit} bytes"), "tiles");
         }
 
         static void CheckTiles(int tiles)

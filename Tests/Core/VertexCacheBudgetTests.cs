@@ -105,9 +105,9 @@ namespace GregoryTerrain.Tests
             Assert.That(VertexCacheBudget.VertexCacheFloat4s(16, 64, false), Is.EqualTo(256L * 4485 * 2));
             Assert.That(VertexCacheBudget.VertexCacheBytes(16, 64, false), Is.EqualTo(36_741_120L));
             // Tile factors: two float4 per tile.
-            Assert.That(VertexCacheBudget.TileFactorsFloat4s(16), Is.EqualTo(768));
-            Assert.That(VertexCacheBudget.TileFactorsBytes(16), Is.EqualTo(12288));
-            Assert.That(VertexCacheBudget.TotalBytes(16, 64, false), Is.EqualTo(36_741_120L + 12288));
+            Assert.That(VertexCacheBudget.TileFactorsFloat4s(16), Is.EqualTo(256 * 54));
+            Assert.That(VertexCacheBudget.TileFactorsBytes(16), Is.EqualTo(221_184));
+            Assert.That(VertexCacheBudget.TotalBytes(16, 64, false), Is.EqualTo(36_741_120L + 221_184));
             TestContext.Out.WriteLine($"M = 16, L = 64: {VertexCacheBudget.TotalBytes(16, 64, false)} bytes, with snow {VertexCacheBudget.TotalBytes(16, 64, true)}; M = 64, L = 64, snow: {VertexCacheBudget.TotalBytes(64, 64, true)}");
         }
 

@@ -49,12 +49,16 @@ namespace GregoryTerrain.Tests
             Assert.That(VertexCache.SlotsPerTile(64), Is.EqualTo(65 * 65 + 4 * 65));
             Assert.That(VertexCacheBudget.VertexCacheBytes(32, 64, false), Is.EqualTo(32L * 32 * 4485 * 2 * 16));
             Assert.That(VertexCacheBudget.VertexCacheBytes(32, 64, true), Is.EqualTo(32L * 32 * 4485 * 3 * 16));
-            Assert.That(VertexCacheBudget.TileFactorsBytes(16), Is.EqualTo(16L * 16 * 48));
-            // The factor records, then the evaluated ranges: every index of both parts inside the
-            // buffer, none shared.
+            Assert.That(VertexCacheBudget.TileFactorsBytes(16), Is.EqualTo(16L * 16 * 54 * 16));
+            // The factor records, the ranges, the factor samples: every index of the three parts
+            // inside the buffer, none shared.
             var used = new HashSet<long>();
             for (int t = 0; t < 16 * 16; t++)
+            {
                 Assert.That(used.Add(VertexCache.FactorIndex(t)) && used.Add(VertexCache.FactorIndex(t) + 1) && used.Add(VertexCache.EvaluatedRangeIndex(t, 16)), Is.True, "tile " + t);
+                for (int s = 0; s < VertexCache.FactorSamplesPerTile; s++)
+                    Assert.That(used.Add(VertexCache.FactorSampleIndex(t, s, 16)), Is.True, "tile " + t + " sample " + s);
+            }
             Assert.That(used.Count, Is.EqualTo(VertexCacheBudget.TileFactorsFloat4s(16)));
             Assert.That(used.Min(), Is.EqualTo(0));
             Assert.That(used.Max(), Is.EqualTo(VertexCacheBudget.TileFactorsFloat4s(16) - 1));

@@ -93,7 +93,7 @@ namespace GregoryTerrain.Rig.Tests
             frame.Run.AssertSucceeded();
             frame.Factors = ReadbackRun.ReadFloats(factors);
             frame.Records = ReadbackRun.ReadFloats(records);
-            Assert.That(frame.Factors.Length, Is.EqualTo(12 * tiles * tiles), "2 float4 of factors, then 1 of range, a tile");
+            Assert.That(frame.Factors.Length, Is.EqualTo(4 * VertexCacheBudget.TileFactorsFloat4s(tiles)), "factors, range and factor samples of every tile");
             Assert.That(frame.Records.Length, Is.EqualTo(8 * tiles * tiles * frame.Slots));
             return frame;
         }
@@ -250,10 +250,10 @@ namespace GregoryTerrain.Rig.Tests
                 PackageRoot.Combine("Tools~", "RigTests", "VertexCacheLayoutProbe.hlsl"));
             ComputeRunner.Run("spirv-val", spv);
             string o = ComputeRunner.Run(ComputeRunner.Runner(), "--spv", spv, "--entry", "VertexCacheLayoutProbe", "--device", "llvmpipe",
-                "--groups", "1", "--zeros", "9=" + (64 * 32).ToString(CultureInfo.InvariantCulture), "--out", "9=" + output);
+                "--groups", "1", "--zeros", "9=" + (64 * 48).ToString(CultureInfo.InvariantCulture), "--out", "9=" + output);
             Assert.That(o, Does.Contain("device llvmpipe"));
             byte[] bytes = File.ReadAllBytes(output);
-            uint U(int lane, int k) => BitConverter.ToUInt32(bytes, 4 * (8 * lane + k));
+            uint U(int lane, int k) => BitConverter.ToUInt32(bytes, 4 * (12 * lane + k));
             for (int lane = 0; lane < 64; lane++)
             {
                 int limit = lane + 1;
@@ -264,6 +264,7 @@ namespace GregoryTerrain.Rig.Tests
                 Assert.That(U(lane, 3), Is.EqualTo(VertexCache.FactorSamplesPerTile), "factor samples a tile");
                 Assert.That(U(lane, 4), Is.EqualTo(VertexCache.FactorIndex(lane)), at + ": factor record");
                 Assert.That(U(lane, 5), Is.EqualTo(VertexCache.EvaluatedRangeIndex(lane, 7)), at + ": evaluated range of 7 x 7 tiles");
+                Assert.That(U(lane, 8), Is.EqualTo(VertexCache.FactorSampleIndex(lane, lane % VertexCache.FactorSamplesPerTile, 7)), at + ": factor sample");
                 Assert.That(U(lane, 6), Is.EqualTo(VertexCache.ThreadsPerGroup), "lanes a group");
                 Assert.That(U(lane, 7), Is.EqualTo(VertexCache.PassesPerGroup), "passes a group");
             }

@@ -278,14 +278,14 @@ namespace GregoryTerrain.Rig
 
         /// <summary>
         /// The vertex cache's buffers and kernels for the harness (internals.md, "Vertex cache"): _TileFactors at
-        /// binding 7 (48 bytes a tile), _VertexCache at binding 8, CacheTileFactors over M x M
+        /// binding 7 (864 bytes a tile), _VertexCache at binding 8, CacheTileFactors over M x M
         /// groups (one a tile), then CacheTileVertices over M x M x G groups (G = VertexCache.GroupsPerTile), each frame before the draw.
         /// </summary>
         public static string CacheArgs(string variant, TessellationSettings t) =>
             Inv($"--storage 7:{TileFactorsBytes(t.tiles)} --storage 8:{VertexCacheBytes(t)} ")
             + Inv($"--compute @SPV@/{variant}/cache_factors.spv:{t.tiles},{t.tiles},1 --compute @SPV@/{variant}/cache_vertices.spv:{t.tiles},{t.tiles},{VertexCache.GroupsPerTile(VertexCache.FactorLimit(t))}");
 
-        /// <summary>_TileFactors: 3 float4 a tile (Core's VertexCacheBudget, the shaders' layout).</summary>
+        /// <summary>_TileFactors: 54 float4 a tile (Core's VertexCacheBudget, the shaders' layout).</summary>
         public static long TileFactorsBytes(int tiles) => VertexCacheBudget.TileFactorsBytes(tiles);
 
         /// <summary>_VertexCache: M^2 S(L) slots of 2 float4 (no GT_SNOW in the bench), L = ceil(uniform F or max factor).</summary>
