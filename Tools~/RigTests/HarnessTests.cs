@@ -422,9 +422,10 @@ namespace GregoryTerrain.Rig.Tests
                 "--frag", Spv("mesh.frag.spv"), "--buffers", dir, "--width", Size.ToString(), "--height", Size.ToString(),
                 "--device", "llvmpipe", "--storage", "7:64", "--storage", "8:" + bytes,
                 "--compute", Spv("pattern.comp.spv") + ":4,2,3", "--dump-storage", "8:" + d8, "--dump-storage", "7:" + d7,
-                "--frames", "3", "--timestamps");
+                "--dump-storage-prefix", "8:64:" + d8 + ".prefix", "--frames", "3", "--timestamps");
             r.AssertSucceeded();
             Assert.That(r.Value("storage", "8"), Is.EqualTo(new[] { d8, "bytes", bytes.ToString() }));
+            Assert.That(File.ReadAllBytes(d8 + ".prefix"), Is.EqualTo(ExpectedPattern(4).Take(64).ToArray()), "--dump-storage-prefix: the first 64 bytes");
             Assert.That(File.ReadAllBytes(d8), Is.EqualTo(ExpectedPattern(4).Concat(new byte[256]).ToArray()),
                 "binding 8 after the pattern kernel (records 256.. need GY and GZ)");
             Assert.That(File.ReadAllBytes(d7), Is.EqualTo(new byte[64]), "a --storage no kernel writes stays zero");
@@ -502,6 +503,9 @@ namespace GregoryTerrain.Rig.Tests
         [TestCase("--storage|8:64|--compute|{spv}/tiles.vert.spv:1", "--compute|tiles.vert.spv:1|no compute entry point")]
         [TestCase("--compute|{spv}/pattern.comp.spv:4,2,3", "--compute|pattern.comp.spv|binding 8|--storage 8:BYTES")]
         [TestCase("--dump-storage|8:out.bin", "--dump-storage|8:out.bin")]
+        [TestCase("--storage|8:64|--dump-storage-prefix|8:128:out.bin", "--dump-storage-prefix|128 bytes|binding 8|holds 64")]
+        [TestCase("--storage|8:64|--dump-storage-prefix|8:6:out.bin", "--dump-storage-prefix|multiple of 4|8:6:out.bin")]
+        [TestCase("--storage|8:64|--dump-storage-prefix|8:out.bin", "--dump-storage-prefix|BINDING:BYTES:FILE")]
         // Frames in flight (inflight.hpp): what one buffer for all frames cannot do, and async compute
         // where it has no meaning or no queue (lavapipe has one queue family, graphics and compute).
         [TestCase("--in-flight|0", "--in-flight|at least 1")]

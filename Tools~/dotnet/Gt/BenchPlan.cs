@@ -116,7 +116,7 @@ namespace GregoryTerrain.Rig
                     // Cached rows: the range changing every frame, so both kernels evaluate every tile
                     // every frame, as while the view moves (the last frame draws the plan's range).
                     if (cfg.Cached)
-                        plan.Append($"{id}\trun\t-\t{Stages(cfg.Variant, fallback: false)} --patches {patches} {CacheArgs(cfg.Variant, scene.Tessellation)} --dump-storage 7:@OUT@/readback/{id}.tiles.f32 {buffers} {view} {timing} --update-range-per-frame\n");
+                        plan.Append($"{id}\trun\t-\t{Stages(cfg.Variant, fallback: false)} --patches {patches} {CacheArgs(cfg.Variant, scene.Tessellation)} {FactorRecordsDump(scene.Tessellation.tiles, id)} {buffers} {view} {timing} --update-range-per-frame\n");
                     else if (cfg.Method == "fallback")
                         plan.Append($"{id}\trun\t-\t{Stages(cfg.Variant, fallback: true)} --grid-factor {Inv($"{cfg.Factor}")} --instances {patches} {buffers} {view} {timing}\n");
                     else
@@ -238,7 +238,7 @@ namespace GregoryTerrain.Rig
                 plan.Append($"{cid}:terrain\trun\t-\t{cache} --update-range-per-frame\n");
                 plan.Append($"{cid}:still\trun\t-\t{cache} --compute-once\n");
                 // The camera moving, the range still: only tiles whose factors change are evaluated.
-                plan.Append($"{cid}:orbit\trun\t-\t{cache} {Orbit(cid)} --dump-storage 7:@OUT@/readback/{cid}-orbit.tiles.f32\n");
+                plan.Append($"{cid}:orbit\trun\t-\t{cache} {Orbit(cid)} {FactorRecordsDump(m, cid + "-orbit")}\n");
                 plan.Append($"{cid}:terrain-if2\trun\t-\t{cache} --update-range-per-frame {InFlight}\n");
                 plan.Append($"{cid}:still-if2\trun\t-\t{cache} --compute-once {InFlight}\n");
                 // lavapipe (the quick run) has one queue family: nothing to run the kernels alongside.
@@ -284,6 +284,14 @@ namespace GregoryTerrain.Rig
         public static string CacheArgs(string variant, TessellationSettings t) =>
             Inv($"--storage 7:{TileFactorsBytes(t.tiles)} --storage 8:{VertexCacheBytes(t)} ")
             + Inv($"--compute @SPV@/{variant}/cache_factors.spv:{t.tiles},{t.tiles},1 --compute @SPV@/{variant}/cache_vertices.spv:{t.tiles},{t.tiles},{VertexCache.GroupsPerTile(VertexCache.FactorLimit(t))}");
+
+        /// <summary>
+        /// The factor records of _TileFactors only (2 float4 a tile, what the report reads): the whole
+        /// buffer, with its ranges and factor samples, is 27 times that and would not come back from a
+        /// GPU machine in one piece at 64 tiles and more.
+        /// </summary>
+        static string FactorRecordsDump(int tiles, string name) =>
+            Inv($"--dump-storage-prefix 7:{(long)VertexCacheBudget.TileFactorFloat4s * GpuLayout.Float4Stride * tiles * tiles}:@OUT@/readback/{name}.tiles.f32");
 
         /// <summary>_TileFactors: 54 float4 a tile (Core's VertexCacheBudget, the shaders' layout).</summary>
         public static long TileFactorsBytes(int tiles) => VertexCacheBudget.TileFactorsBytes(tiles);

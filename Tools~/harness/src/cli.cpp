@@ -112,6 +112,19 @@ StorageDump parseDump(const std::string& value) {
     return d;
 }
 
+// --dump-storage-prefix BINDING:BYTES:FILE: the first BYTES (a non-zero multiple of 4).
+StorageDump parseDumpPrefix(const std::string& value) {
+    const std::string option = "--dump-storage-prefix";
+    const auto [bindingText, rest] = splitAtColon(option, "BINDING:BYTES:FILE", value, false);
+    const auto [bytesText, path] = splitAtColon(option, "BINDING:BYTES:FILE", rest, false);
+    StorageDump d;
+    d.binding = static_cast<uint32_t>(parseField(option, value, "BINDING", bindingText, 0, kMaxStorageBinding));
+    d.path = path;
+    d.bytes = parseField(option, value, "BYTES", bytesText, 4, 1ull << 40);
+    if (d.bytes % 4 != 0) fail(option + ": BYTES must be a multiple of 4, got '" + value + "'");
+    return d;
+}
+
 // A second --storage at the same binding would leave the shaders' view ambiguous: refuse it.
 void addStorage(Options& o, const std::string& value) {
     const StorageOption s = parseStorage(value);
@@ -130,6 +143,10 @@ void checkDumps(const Options& o) {
         if (!found)
             fail("--dump-storage: binding " + std::to_string(d.binding) + " in '" + std::to_string(d.binding) + ":" + d.path +
                  "' has no --storage buffer");
+        for (const StorageOption& s : o.storage)
+            if (s.binding == d.binding && d.bytes > s.bytes)
+                fail("--dump-storage-prefix: " + std::to_string(d.bytes) + " bytes of binding " + std::to_string(d.binding) +
+                     " for '" + d.path + "', but its --storage buffer holds " + std::to_string(s.bytes));
     }
 }
 
@@ -159,6 +176,7 @@ const char* usageText() {
   --compute SPV:GX[,GY[,GZ]]     each frame, before the render pass, dispatch the module's compute
                                  entry point over GX x GY x GZ groups; repeatable, run in order
   --dump-storage BINDING:FILE    write that storage buffer's bytes after the last frame, repeatable
+  --dump-storage-prefix BINDING:BYTES:FILE   the same, its first BYTES only
   --readback FILE --readback-floats K   storage buffer of K floats at binding 5, dumped to FILE
   --readback-fill nan|zero       initial readback contents (default nan)
   --stats                        pipeline statistics of the last frame ("stat NAME VALUE")
@@ -222,6 +240,7 @@ Options parseOptions(int argc, char** argv) {
         else if (a == "--storage") addStorage(o, value());
         else if (a == "--compute") o.computes.push_back(parseCompute(value()));
         else if (a == "--dump-storage") o.dumps.push_back(parseDump(value()));
+        else if (a == "--dump-storage-prefix") o.dumps.push_back(parseDumpPrefix(value()));
         else if (a == "--readback") o.readbackPath = value();
         else if (a == "--readback-floats") o.readbackFloats = parseUnsigned(a, value(), 1ull << 32);
         else if (a == "--readback-fill") {

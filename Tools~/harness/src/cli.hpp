@@ -31,6 +31,7 @@ struct ComputeOption {
 struct StorageDump {
     uint32_t binding = 0;
     std::string path;
+    uint64_t bytes = 0;   // --dump-storage-prefix: the first `bytes` only; 0: the whole buffer
 };
 
 struct Options {

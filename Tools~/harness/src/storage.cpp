@@ -39,7 +39,8 @@ uint64_t dumpStorage(const Gpu& gpu, const std::vector<StorageBuffer>& storage, 
         if (s.binding == dump.binding) source = &s;
     if (!source) fail("--dump-storage: binding " + std::to_string(dump.binding) + " has no --storage buffer");
 
-    Buffer host = createHostBuffer(gpu, source->bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT);
+    const uint64_t bytes = dump.bytes ? dump.bytes : source->bytes;
+    Buffer host = createHostBuffer(gpu, bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT);
     submitOnce(gpu, [&](VkCommandBuffer cmd) {
         // Shader writes of the frames (compute or graphics) -> this copy; the copy -> the host read.
         VkMemoryBarrier written{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
@@ -47,7 +48,7 @@ uint64_t dumpStorage(const Gpu& gpu, const std::vector<StorageBuffer>& storage, 
         written.dstAccessMask = VK_ACCESS_TRANSFER_READ_BIT;
         vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 1, &written, 0,
                              nullptr, 0, nullptr);
-        VkBufferCopy region{0, 0, source->bytes};
+        VkBufferCopy region{0, 0, bytes};
         vkCmdCopyBuffer(cmd, source->buffer.buffer, host.buffer, 1, &region);
         VkMemoryBarrier toHost{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
         toHost.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
@@ -56,13 +57,13 @@ uint64_t dumpStorage(const Gpu& gpu, const std::vector<StorageBuffer>& storage, 
                              nullptr);
     });
     try {
-        writeFile(dump.path, host.mapped, source->bytes);
+        writeFile(dump.path, host.mapped, bytes);
     } catch (const Error& e) {
         destroyBuffer(gpu, host);
         fail("--dump-storage '" + std::to_string(dump.binding) + ":" + dump.path + "': " + e.what());
     }
     destroyBuffer(gpu, host);
-    return source->bytes;
+    return bytes;
 }
 
 void destroyStorageBuffers(const Gpu& gpu, std::vector<StorageBuffer>& storage) {
