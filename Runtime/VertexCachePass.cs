@@ -14,8 +14,9 @@ namespace GregoryTerrain
     /// <para>The kernels re-evaluate only the tiles whose integer factors or <c>_Range</c> differ from
     /// what their slots hold (a camera move leaves most tiles alone). Whatever else the records
     /// depend on is this class's to notice: when the origin, the grid, a noise or colour setting, the
-    /// object transform, the effects or the snow map changed, or the buffers are new, it zeroes
-    /// <c>_TileFactors</c> first, and a zero record matches no tile, so every tile starts over.</para>
+    /// object transform, the effects or the snow map changed, or the buffers are new, it zeroes the
+    /// tiles' range records (16 M^2 bytes) first; a zero range is never <c>_Range</c> (a range has a
+    /// width), so every tile's samples and slots are evaluated again.</para>
     /// <para>The renderer decides whether the pass runs at all (compute support, the shader, the
     /// LOD camera, the size check); this class only sizes, compares and dispatches.</para>
     /// </summary>
@@ -77,7 +78,7 @@ namespace GregoryTerrain
 
         bool _valid;          // the buffers hold the result of _last
         Inputs _last;
-        Vector4[] _zeroFactors;   // _TileFactors' size, all zero: the "nothing evaluated yet" state
+        Vector4[] _zeroRanges;   // M^2 zero float4: the range records of "nothing evaluated yet"
 
         public GraphicsBuffer TileFactors => _factors;
         public GraphicsBuffer VertexCache => _vertices;
@@ -169,11 +170,13 @@ namespace GregoryTerrain
             return true;
         }
 
-        // Zero factors: the kernels then see no tile as up to date (a drawn tile's factors are >= 1).
+        // Zero range records: the kernels then see every tile's range as moved. Only that part of
+        // _TileFactors is uploaded (the snow path comes here every simulation step).
         void ForgetEvaluatedTiles()
         {
-            if (_zeroFactors == null || _zeroFactors.Length != _factors.count) _zeroFactors = new Vector4[_factors.count];
-            _factors.SetData(_zeroFactors);
+            int count = _tiles * _tiles;
+            if (_zeroRanges == null || _zeroRanges.Length != count) _zeroRanges = new Vector4[count];
+            _factors.SetData(_zeroRanges, 0, (int)GregoryTerrain.VertexCache.EvaluatedRangeIndex(0, _tiles), count);
         }
 
         /// <summary>Binds the buffers on the draw's property block under the graphics stages' names.</summary>

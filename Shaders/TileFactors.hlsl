@@ -122,23 +122,30 @@ void TileFactorLine(uint piece, out float2 a, out float2 b, out uint2 corners, o
 #define GT_TILE_CENTRE_SAMPLE (GT_TILE_MIDLINE_END_SAMPLE + 4u)
 #define GT_TILE_FACTOR_SAMPLES (GT_TILE_CENTRE_SAMPLE + 1u)
 
-// Inner point i (1 .. GT_EDGE_SEGMENTS - 1) of the tile's line from a to b, and the centre: each with
-// its pixels per object unit. Both the kernel's numbered samples and the hull's loop evaluate these.
+// Inner point i (1 .. GT_EDGE_SEGMENTS - 1) of the tile's line from a to b, and the centre: their
+// positions, and each with its pixels per object unit. Both the kernel's numbered samples and the
+// hull's loop evaluate these.
+float3 TileLineInnerPosition(uint patch, float2 a, float2 b, uint i)
+{
+    return SurfaceObjectPosition(patch, lerp(a, b, (float)i / (float)GT_EDGE_SEGMENTS));
+}
+
+float3 TileCentrePosition(uint patch) { return SurfaceObjectPosition(patch, float2(0.5, 0.5)); }
+
 float4 TileLineInnerSample(uint patch, float2 a, float2 b, uint i)
 {
-    float3 p = SurfaceObjectPosition(patch, lerp(a, b, (float)i / (float)GT_EDGE_SEGMENTS));
+    float3 p = TileLineInnerPosition(patch, a, b, i);
     return float4(p, ObjectPixelsPerUnit(p));
 }
 
 float4 TileCentreSample(uint patch)
 {
-    float3 centre = SurfaceObjectPosition(patch, float2(0.5, 0.5));
+    float3 centre = TileCentrePosition(patch);
     return float4(centre, ObjectPixelsPerUnit(centre));
 }
 
 // Sample s's object position: what depends on the surface and the range, not on the camera (the
-// vertex cache keeps it while the range holds). The same positions TileLineInnerSample,
-// TileCentreSample and the corners give.
+// vertex cache keeps it while the range holds).
 float3 TileFactorSamplePosition(uint patch, uint s)
 {
     if (s < 4u) return TileCornerObjectPosition(patch, s);
@@ -149,7 +156,7 @@ float3 TileFactorSamplePosition(uint patch, uint s)
     {
         uint inner = s - 4u;
         TileFactorLine(inner / GT_TILE_INNER_POINTS, a, b, corners, axis);
-        return SurfaceObjectPosition(patch, lerp(a, b, (float)(inner % GT_TILE_INNER_POINTS + 1u) / (float)GT_EDGE_SEGMENTS));
+        return TileLineInnerPosition(patch, a, b, inner % GT_TILE_INNER_POINTS + 1u);
     }
     if (s < GT_TILE_CENTRE_SAMPLE)
     {
@@ -157,7 +164,7 @@ float3 TileFactorSamplePosition(uint patch, uint s)
         TileFactorLine(4u + end / 2u, a, b, corners, axis);
         return SurfaceObjectPosition(patch, (end & 1u) ? b : a);
     }
-    return SurfaceObjectPosition(patch, float2(0.5, 0.5));
+    return TileCentrePosition(patch);
 }
 
 // Sample s at its position p: the camera's part, pixels per object unit, where a factor reads it
@@ -167,8 +174,6 @@ float4 TileFactorSampleAt(uint s, float3 p)
     bool scaled = (s >= 4u && s < GT_TILE_MIDLINE_END_SAMPLE) || s == GT_TILE_CENTRE_SAMPLE;
     return float4(p, scaled ? ObjectPixelsPerUnit(p) : 0.0);
 }
-
-float4 TileFactorSample(uint patch, uint s) { return TileFactorSampleAt(s, TileFactorSamplePosition(patch, s)); }
 
 // The sample at point i (0 .. GT_EDGE_SEGMENTS, from a to b) of line `piece` (0-5).
 uint TileLineSample(uint piece, uint i)
@@ -208,7 +213,7 @@ float LineErrorTessFactor(uint piece, float3 p[GT_EDGE_SEGMENTS + 1], float k[GT
     return ErrorTessFactor(sagitta, TargetPixelError(), MaxTessFactor());
 }
 
-// Piece 6: the centre's deviation from the diagonals (centre = TileFactorSample's centre sample).
+// Piece 6: the centre's deviation from the diagonals (centre: sample GT_TILE_CENTRE_SAMPLE, with its pixel scale).
 float CentreErrorTessFactor(float3 cornerOS[4], float4 centre)
 {
     return InsideErrorTessFactor(DiagonalSagittaPixels(cornerOS[0], cornerOS[1], cornerOS[2], cornerOS[3], centre.xyz, centre.w),
@@ -216,7 +221,7 @@ float CentreErrorTessFactor(float3 cornerOS[4], float4 centre)
 }
 
 // One piece, its samples evaluated in turn: the hull stage's path (the kernel spreads the same
-// samples over its lanes). Not through TileFactorSample, whose branches on the sample number cost
+// samples over its lanes). Not through TileFactorSamplePosition, whose branches on the sample number cost
 // the hull stage ~12% at 64 x 64 tiles (H200); the samples are the same functions.
 float TileFactorPiece(uint patch, uint piece, float3 cornerOS[4])
 {

@@ -33,8 +33,8 @@ bool TileRangeMoved(uint tile) { return any(_TileFactorsRW[VertexCacheEvaluatedR
 
 // True when the tile's slots do not hold its vertices at factors f: the range moved, or last pass
 // it was culled or drawn at other factors. Everything else the records depend on (origin, grid,
-// noise, colour, snow, object transform) the renderer guards: it clears _TileFactors when one of
-// those changes, and a zero record never matches (a drawn tile's factors are >= 1).
+// noise, colour, snow, object transform) the renderer guards: it zeroes the range records when one
+// of those changes, and a zero range is never _Range (a range has a width), so every tile moved.
 bool TileSlotsOutdated(uint tile, TileFactorSet f, bool rangeMoved)
 {
     uint i = VertexCacheFactorIndex(tile);

@@ -40,14 +40,16 @@ namespace GregoryTerrain.Rig.Tests
             public float[] Factors, Records;
             public int Tiles, Limit, Slots;
 
-            public TileFactorSet FactorsOf(int tile) => new TileFactorSet(
-                new Float4(Factors[8 * tile], Factors[8 * tile + 1], Factors[8 * tile + 2], Factors[8 * tile + 3]),
-                new Float2(Factors[8 * tile + 4], Factors[8 * tile + 5]));
+            // The tile's factor record, float k of its two float4 (VertexCache.FactorIndex).
+            float Record(int tile, int k) => Factors[4 * VertexCache.FactorIndex(tile) + k];
 
-            public bool Culled(int tile) => Factors[8 * tile + 6] != 0f;
+            public TileFactorSet FactorsOf(int tile) => new TileFactorSet(
+                new Float4(Record(tile, 0), Record(tile, 1), Record(tile, 2), Record(tile, 3)), new Float2(Record(tile, 4), Record(tile, 5)));
+
+            public bool Culled(int tile) => Record(tile, 6) != 0f;
 
             /// <summary>The kernel (re)evaluated the tile's slots in the last frame.</summary>
-            public bool Evaluated(int tile) => Factors[8 * tile + 7] != 0f;
+            public bool Evaluated(int tile) => Record(tile, 7) != 0f;
 
             /// <summary>The record at a slot of a tile, as <see cref="VertexCache.Record"/> lays it out.</summary>
             public Float4 Part(int tile, int slot, int part)

@@ -259,6 +259,7 @@ namespace UnityEngine
         public int count => 0;                                                        // SR:GraphicsBuffer-count
         public int stride => 0;                                                       // SR:GraphicsBuffer-stride
         public void SetData(Array data) { }                                           // SR:GraphicsBuffer.SetData
+        public void SetData(Array data, int managedBufferStartIndex, int graphicsBufferStartIndex, int count) { } // SR:GraphicsBuffer.SetData
         public void Release() { }                                                     // SR:GraphicsBuffer.Release
         public bool IsValid() => false;                                               // SR:GraphicsBuffer.IsValid
         public void Dispose() { }                                                     // SR:GraphicsBuffer.Dispose
