@@ -5,7 +5,7 @@ using UnityEngine;
 namespace GregoryTerrain.EditorTools
 {
     /// <summary>
-    /// Renderer inspector (triangle estimate, vertex cache memory, fallback status) and Scene-view tools: control points
+    /// Renderer inspector (triangles in view and at most, vertex cache memory, fallback status) and Scene-view tools: control points
     /// and patch wireframe drawn with Handles, control points moved with position handles (undoable),
     /// and the demo's keys while the Scene view has focus: Z control points, X wireframe, C/V factor -/+.
     /// </summary>
@@ -13,11 +13,18 @@ namespace GregoryTerrain.EditorTools
     public sealed class GregoryTerrainRendererEditor : Editor
     {
         int _selectedPatch = -1, _selectedSlot = -1;
+        // The in-view estimate evaluates up to 256 tiles' surface samples on the CPU: at most every
+        // EstimateSeconds, on Layout events, not on each of the inspector's many GUI events.
+        const double EstimateSeconds = 0.25;
+        double _estimateTime = double.NegativeInfinity;
+        string _estimateText = "";
 
         public override void OnInspectorGUI()
         {
             var r = (GregoryTerrainRenderer)target;
-            EditorGUILayout.LabelField(new GUIContent("Estimated triangles", "Most triangles the current settings can produce: 2 F^2 per tile, F the uniform factor, else the max factor (Core's TessellationPolicy)."),
+            EditorGUILayout.LabelField(new GUIContent("Triangles in view", "What the draw makes for the LOD camera (else the main camera, else the Scene view's) at the current settings and range: each tile's factors from Core's mirror of the hull stage, counted as the tessellator triangulates. Lower the target pixel error and watch it rise. Up to 256 tiles are evaluated, an even sample of them beyond that."),
+                new GUIContent(InViewText(r)));
+            EditorGUILayout.LabelField(new GUIContent("Most triangles", "Most triangles the current settings can produce: 2 F^2 per tile, F the uniform factor, else the max factor (Core's TessellationPolicy)."),
                 new GUIContent(r.EstimatedTriangleCount.ToString("N0")));
             bool cache = r.VertexEvaluation == VertexEvaluation.ComputeCache;
             EditorGUILayout.LabelField(new GUIContent("Vertex cache memory", "GPU memory of the Compute cache's two buffers for the current settings (Core's VertexCacheBudget): _TileFactors 864 M^2 bytes + _VertexCache 16 M^2 ((L+1)^2 + 4 (L+1)) R bytes, L = the uniform factor, else the max factor, rounded up; R = 3 with the material's snow (GT_SNOW), else 2."),
@@ -35,6 +42,24 @@ namespace GregoryTerrain.EditorTools
             if (r.Material == null)
                 EditorGUILayout.HelpBox("Assign a material that uses GregoryTerrain/Terrain.", MessageType.Warning);
             DrawDefaultInspector();
+        }
+
+        string InViewText(GregoryTerrainRenderer r)
+        {
+            if (Event.current.type != EventType.Layout || EditorApplication.timeSinceStartup - _estimateTime < EstimateSeconds) return _estimateText;
+            _estimateTime = EditorApplication.timeSinceStartup;
+            Camera cam = r.LodCamera != null ? r.LodCamera : Camera.main;
+            if (cam == null && SceneView.lastActiveSceneView != null) cam = SceneView.lastActiveSceneView.camera;
+            TriangleEstimate? e = cam != null ? r.EstimateTrianglesInView(cam) : null;
+            if (cam == null) _estimateText = "no camera";
+            else if (e == null) _estimateText = r.DrawsFallback ? "fallback: see Most triangles" : "(nothing drawn yet)";
+            else
+            {
+                TriangleEstimate v = e.Value;
+                string sample = v.tilesSampled < v.tileCount ? $", {v.tilesSampled} of {v.tileCount} tiles sampled" : "";
+                _estimateText = $"{v.triangles:N0} ({cam.name}: {v.tilesSampledDrawn} of {v.tilesSampled} tiles drawn{sample})";
+            }
+            return _estimateText;
         }
 
         /// <summary>"36,749,312 bytes (35.0 MiB)".</summary>

@@ -26,7 +26,7 @@ namespace GregoryTerrain
     [AddComponentMenu("Gregory Terrain/Gregory Terrain Renderer")]
     // After the range controllers (default order 0), so this frame's range is drawn this frame.
     [DefaultExecutionOrder(100)]
-    public sealed class GregoryTerrainRenderer : MonoBehaviour
+    public sealed partial class GregoryTerrainRenderer : MonoBehaviour
     {
         /// <summary>
         /// Bytes this script sets per frame in the steady state: one float4, <c>_Range</c> (one
@@ -239,6 +239,7 @@ namespace GregoryTerrain
         /// <summary>
         /// Triangles the current settings can produce at most (Core's TessellationPolicy: 2 F^2 per
         /// tile, F = the uniform factor, else maxFactor; the fallback grid's F without a tessellator).
+        /// What a camera's view draws: <see cref="EstimateTrianglesInView"/>.
         /// </summary>
         public double EstimatedTriangleCount => TessellationPolicy.EstimateTriangleCount(tiles,
             DrawsFallback ? fallbackGridFactor : uniformFactor > 0 ? uniformFactor : maxFactor);

@@ -1,7 +1,8 @@
 // Per-tile tessellation factors: frustum culling and the adaptive factors from each edge's chord
 // error in pixels (Documentation~/performance.md, "The knob"). Used by the hull stage's
 // hull_const and by the vertex cache's CacheTileFactors kernel (VertexCacheKernels.hlsl), so both
-// decide identically. Mirrors Runtime/Core/TessellationPolicy.cs. Needs the adapter's
+// decide identically. Mirrors Runtime/Core/TileFactors.cs name for name (the pieces' arithmetic:
+// TessellationPolicy.cs). Needs the adapter's
 // GT_ObjectToClip and GT_ScreenSize and TerrainVertex.hlsl's EvaluateSurface.
 #ifndef GT_TILE_FACTORS_INCLUDED
 #define GT_TILE_FACTORS_INCLUDED

@@ -396,5 +396,59 @@ namespace GregoryTerrain.Rig.Tests
             Assert.That(differingVertices, Is.EqualTo(0), "vertices on shared edges, bit for bit");
             Assert.That(f.Run.Long("image", "nonsky_pixels"), Is.GreaterThan(192 * 128 / 5));
         }
+
+        /// <summary>
+        /// The inspector's triangle estimate (Core's TerrainTriangleEstimate) is what the GPU draws:
+        /// Core's mirror of the factors against hull_const's readback tile by tile, the tessellator's
+        /// triangles of those factors against the clipping invocations of both paths (fractional_odd
+        /// domain stage, integer cache).
+        /// </summary>
+        [Test]
+        public void TriangleEstimateIsWhatTheGpuDraws()
+        {
+            const int width = 320, height = 180, tiles = 8;
+            float[] camera = ReadbackRun.PerspectiveCamera(new Double3(0.45, 0.14, 0.22), new Double3(0.5, 0.0, 0.62), 40, width, height, 0.01, 10);
+            CacheFrame f = DrawCached("estimate", "0.1,0.1,0.9,0.9", tiles, new[] { "--target-pixels", "2", "--max-factor", "32" }, width, height, camera);
+            var objectToClip = Float4x4.FromRows(camera[0], camera[4], camera[8], camera[12], camera[1], camera[5], camera[9], camera[13],
+                                                 camera[2], camera[6], camera[10], camera[14], camera[3], camera[7], camera[11], camera[15]);
+            var screen = new Float2(width, height);
+            string hullFile = Path.Combine(_work, "estimate", "hull_factors.f32");
+            HarnessRun hull = HarnessRun.Harness(ReadbackRun.Stages(_spirv, HullFactors).Concat(new[]
+            {
+                "--buffers", Path.Combine(_work, "estimate"), "--patches", (tiles * tiles).ToString(CultureInfo.InvariantCulture),
+                "--width", width.ToString(CultureInfo.InvariantCulture), "--height", height.ToString(CultureInfo.InvariantCulture),
+                "--device", "llvmpipe", "--stats", "--readback", hullFile, "--readback-floats", (8 * tiles * tiles).ToString(CultureInfo.InvariantCulture),
+            }).ToArray());
+            hull.AssertSucceeded();
+            float[] h = ReadbackRun.ReadFloats(hullFile);
+            long hullModel = 0, cacheModel = 0;
+            int culled = 0;
+            double worst = 0;
+            for (int tile = 0; tile < tiles * tiles; tile++)
+            {
+                var gpu = new TileFactorSet(new Float4(h[8 * tile], h[8 * tile + 1], h[8 * tile + 2], h[8 * tile + 3]), new Float2(h[8 * tile + 4], h[8 * tile + 5]));
+                TileFactorSet core = TileFactors.ComputeTileFactors(f.Inputs, tile, objectToClip, screen, TerrainKeywords.Noise);
+                Assert.That(core.IsCulled, Is.EqualTo(h[8 * tile + 6] != 0f), "tile " + tile + ": culled on the GPU and in Core alike");
+                if (core.IsCulled) { culled++; continue; }
+                float[] a = { gpu.edge.x, gpu.edge.y, gpu.edge.z, gpu.edge.w, gpu.inside.x, gpu.inside.y };
+                float[] b = { core.edge.x, core.edge.y, core.edge.z, core.edge.w, core.inside.x, core.inside.y };
+                for (int k = 0; k < 6; k++) worst = Math.Max(worst, Math.Abs(a[k] - b[k]) / a[k]);
+                hullModel += TerrainTriangleEstimate.PatchTriangles(gpu, TessellationPartitioning.FractionalOdd);
+                cacheModel += TerrainTriangleEstimate.PatchTriangles(f.FactorsOf(tile), TessellationPartitioning.Integer);
+            }
+            var domain = TerrainTriangleEstimate.InView(f.Inputs, objectToClip, screen, TerrainKeywords.Noise, TessellationPartitioning.FractionalOdd);
+            var cached = TerrainTriangleEstimate.InView(f.Inputs, objectToClip, screen, TerrainKeywords.Noise, TessellationPartitioning.Integer);
+            long hullDrawn = hull.Long("stat", "clipping_invocations"), cacheDrawn = f.Run.Long("stat", "clipping_invocations");
+            TestContext.Out.WriteLine("{0} of {1} tiles culled; factors: largest relative difference GPU vs Core {2:E2}", culled, tiles * tiles, worst);
+            TestContext.Out.WriteLine("domain stage: GPU {0:N0} triangles, model of its factors {1:N0}, Core's estimate {2:N0}", hullDrawn, hullModel, domain.triangles);
+            TestContext.Out.WriteLine("vertex cache: GPU {0:N0} triangles, model of its factors {1:N0}, Core's estimate {2:N0}", cacheDrawn, cacheModel, cached.triangles);
+            Assert.That(culled, Is.GreaterThan(0).And.LessThan(tiles * tiles - 8), "the view leaves some tiles out, not most");
+            Assert.That(worst, Is.LessThan(1e-3), "Core's factors are the GPU's to float rounding");
+            Assert.That(cacheModel, Is.EqualTo(cacheDrawn), "integer partitioning: the model counts what the tessellator made");
+            Assert.That(hullModel, Is.EqualTo(hullDrawn), "fractional_odd: the model counts what the tessellator made");
+            // Core's factors may round differently from another GPU's; here they agree bit for bit.
+            Assert.That(domain.triangles, Is.EqualTo(hullDrawn).Within(0.5).Percent);
+            Assert.That(cached.triangles, Is.EqualTo(cacheDrawn).Within(0.5).Percent);
+        }
     }
 }

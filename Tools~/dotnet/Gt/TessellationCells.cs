@@ -52,20 +52,13 @@ namespace GregoryTerrain.Rig
 
         /// <summary>
         /// The triangles the tessellator makes of one quad patch with integer partitioning and these
-        /// (already integer) factors, transition rings included: two triangles when all six are 1;
-        /// otherwise (inside factors at least 2, as the cache makes them) an inner grid of
-        /// (i0 - 2) x (i1 - 2) quads and, per side, a strip joining the side's e segments to the inner
-        /// rectangle's (i - 2): e + i - 2 triangles. Uniform n gives 2 n^2. 0 for a culled patch.
+        /// (already integer) factors: Core's <see cref="TerrainTriangleEstimate.PatchTriangles"/>.
         /// </summary>
         public static long IntegerTriangles(PatchFactors f)
         {
-            if (f.culled || f.e0 <= 0 || f.e1 <= 0 || f.e2 <= 0 || f.e3 <= 0) return 0;
-            long N(double x) => Math.Max(1, (long)Math.Ceiling(x - 1e-9));
-            long e0 = N(f.e0), e1 = N(f.e1), e2 = N(f.e2), e3 = N(f.e3), i0 = N(f.i0), i1 = N(f.i1);
-            if (e0 == 1 && e1 == 1 && e2 == 1 && e3 == 1 && i0 == 1 && i1 == 1) return 2;
-            i0 = Math.Max(i0, 2); i1 = Math.Max(i1, 2);
-            // Edges e1 (v = 0) and e3 (v = 1) run along u, beside the inner rectangle's i0 - 2 segments.
-            return 2 * (i0 - 2) * (i1 - 2) + e1 + e3 + 2 * (i0 - 2) + e0 + e2 + 2 * (i1 - 2);
+            if (f.culled) return 0;
+            var set = new TileFactorSet(new Float4((float)f.e0, (float)f.e1, (float)f.e2, (float)f.e3), new Float2((float)f.i0, (float)f.i1));
+            return TerrainTriangleEstimate.PatchTriangles(set, TessellationPartitioning.Integer);
         }
     }
 }

@@ -87,7 +87,14 @@ namespace UnityEditor
 
     public sealed class Selection { public static Object activeObject { get; set; } }        // SR:Selection-activeObject
 
-    public class SceneView : EditorWindow { public static void RepaintAll() { } }            // SR:SceneView.RepaintAll
+    public class SceneView : EditorWindow                                                    // SR:SceneView
+    {
+        public static void RepaintAll() { }                                                  // SR:SceneView.RepaintAll
+        public static SceneView lastActiveSceneView => null;                                 // SR:SceneView-lastActiveSceneView
+        public Camera camera => null;                                                        // SR:SceneView-camera
+    }
+
+    public sealed class EditorApplication { public static double timeSinceStartup => 0.0; } // SR:EditorApplication-timeSinceStartup
 
     public sealed class Handles                                                              // SR:Handles
     {

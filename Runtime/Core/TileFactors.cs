@@ -1,0 +1,155 @@
+using System;
+
+namespace GregoryTerrain
+{
+    /// <summary>
+    /// A tile's tessellation factors as the hull stage decides them: frustum culling, then the
+    /// adaptive factors from the chord error of the tile's edges, midlines and diagonals in pixels.
+    /// Mirrors <c>Shaders/TileFactors.hlsl</c> name for name (<c>ComputeTileFactors</c> and its
+    /// pieces) on Core's float path (<see cref="TerrainVertex.EvaluateSurface"/>), so the CPU can
+    /// tell what the GPU will draw for a camera: the renderer's triangle estimate
+    /// (<see cref="TerrainTriangleEstimate"/>). The arithmetic per piece is
+    /// <see cref="TessellationPolicy"/>'s.
+    /// </summary>
+    public static class TileFactors
+    {
+        /// <summary>Pieces: the edges u = 0, v = 0, u = 1, v = 1, the midlines along u and along v, the centre.</summary>
+        public const int Pieces = 7;
+
+        const int Segments = TessellationPolicy.EdgeSegments;
+
+        /// <summary>Corner c sits at tess coordinate (c &amp; 1, c &gt;&gt; 1).</summary>
+        public static Float2 CornerTessCoordinate(int corner) => new Float2(corner & 1, corner >> 1);
+
+        /// <summary>Object position of the tile's corner (no noise): the culling box and the edges' ends.</summary>
+        public static Float3 TileCornerObjectPosition(TerrainInputs inputs, int tile, int corner)
+        {
+            TerrainSurfacePoint s = TerrainVertex.EvaluateSurface(inputs, tile, CornerTessCoordinate(corner));
+            return TerrainVertex.TerrainToObject(TerrainVertex.OutputSurfacePosition(inputs, s, TerrainKeywords.None));
+        }
+
+        /// <summary>Object position of the Gregory surface (no noise) at a tess coordinate of the tile.</summary>
+        public static Float3 SurfaceObjectPosition(TerrainInputs inputs, int tile, Float2 tess) =>
+            TerrainVertex.TerrainToObject(TerrainVertex.EvaluateSurface(inputs, tile, tess).position);
+
+        /// <summary>
+        /// HLSL <c>TileCulled</c>: the corners' box, grown in height by their spread plus the noise
+        /// bound (<see cref="TerrainKeywords.Noise"/>), and upwards by the snow cap
+        /// (<see cref="TerrainKeywords.Snow"/>: snow only raises the surface), lies outside the view.
+        /// </summary>
+        public static bool TileCulled(TerrainInputs inputs, Float4x4 objectToClip, Float3[] cornersOS, TerrainKeywords keywords)
+        {
+            float noise = (keywords & TerrainKeywords.Noise) != 0 ? TessellationPolicy.NoiseHeightBound(inputs.NoiseSettingsStruct()) : 0f;
+            if ((keywords & TerrainKeywords.Snow) == 0) return TessellationPolicy.TileCulled(objectToClip, cornersOS, noise);
+            Float3 lo = cornersOS[0], hi = lo;
+            for (int c = 1; c < 4; c++)
+            {
+                lo = new Float3(Math.Min(lo.x, cornersOS[c].x), Math.Min(lo.y, cornersOS[c].y), Math.Min(lo.z, cornersOS[c].z));
+                hi = new Float3(Math.Max(hi.x, cornersOS[c].x), Math.Max(hi.y, cornersOS[c].y), Math.Max(hi.z, cornersOS[c].z));
+            }
+            float margin = hi.y - lo.y + noise;
+            lo.y -= margin;
+            hi.y += margin;
+            hi.y += inputs.SnowDepthCap();
+            return TessellationPolicy.BoxOutsideFrustum(objectToClip, lo, hi, 0f);
+        }
+
+        /// <summary>
+        /// HLSL <c>TileFactorLine</c>: piece 0-5 runs from tess coordinate a to b (a the lower one);
+        /// an edge's ends are corners, a midline's are surface points; axis 0 runs along u, 1 along v.
+        /// </summary>
+        public static void TileFactorLine(int piece, out Float2 a, out Float2 b, out int cornerA, out int cornerB, out int axis)
+        {
+            switch (piece)
+            {
+                case 0: a = new Float2(0f, 0f); b = new Float2(0f, 1f); cornerA = 0; cornerB = 2; axis = 1; return;
+                case 1: a = new Float2(0f, 0f); b = new Float2(1f, 0f); cornerA = 0; cornerB = 1; axis = 0; return;
+                case 2: a = new Float2(1f, 0f); b = new Float2(1f, 1f); cornerA = 1; cornerB = 3; axis = 1; return;
+                case 3: a = new Float2(0f, 1f); b = new Float2(1f, 1f); cornerA = 2; cornerB = 3; axis = 0; return;
+                case 4: a = new Float2(0f, 0.5f); b = new Float2(1f, 0.5f); cornerA = cornerB = -1; axis = 0; return;
+                case 5: a = new Float2(0.5f, 0f); b = new Float2(0.5f, 1f); cornerA = cornerB = -1; axis = 1; return;
+                default: throw new ArgumentOutOfRangeException(nameof(piece), piece, "a line piece is 0-5");
+            }
+        }
+
+        /// <summary>
+        /// HLSL <c>LineErrorTessFactor</c>: the factor whose chord error is the target, from the
+        /// line's <see cref="TessellationPolicy.EdgeSegments"/> + 1 points and their pixel scales
+        /// (0 at the ends), plus the bound of the noise the frame draws.
+        /// </summary>
+        public static float LineErrorTessFactor(TerrainInputs inputs, int piece, Float3[] p, float[] k, TerrainKeywords keywords)
+        {
+            float kMax = 0f;
+            for (int i = 1; i < Segments; i++) kMax = Math.Max(kMax, k[i]);
+            TileFactorLine(piece, out _, out _, out _, out _, out int axis);
+            Float4 range = inputs.Params.range;
+            float edgeLength = (axis == 0 ? range.z - range.x : range.w - range.y) / inputs.TileCount();
+            float noiseCurvature = 0f;
+            if ((keywords & TerrainKeywords.Noise) != 0)
+                noiseCurvature = TessellationPolicy.NoiseCurvatureBound(inputs.NoiseSettingsStruct(), inputs.NoiseOctaveCount());
+            float sagitta = TessellationPolicy.EdgeSagittaPixels(p, k) + TessellationPolicy.NoiseSagittaPixels(noiseCurvature, edgeLength, kMax);
+            return TessellationPolicy.ErrorTessFactor(sagitta, inputs.TargetPixelsPerSegment(), inputs.MaxTessFactor());
+        }
+
+        /// <summary>HLSL <c>TileFactorPiece</c>: one piece, its surface samples evaluated in turn.</summary>
+        public static float TileFactorPiece(TerrainInputs inputs, int tile, int piece, Float3[] cornersOS,
+                                            Float4x4 objectToClip, Float2 screenSize, TerrainKeywords keywords)
+        {
+            if (piece == 6)
+            {
+                Float3 centre = SurfaceObjectPosition(inputs, tile, new Float2(0.5f, 0.5f));
+                float d = TessellationPolicy.DiagonalSagittaPixels(cornersOS[0], cornersOS[1], cornersOS[2], cornersOS[3], centre,
+                    TessellationPolicy.PixelsPerUnit(objectToClip, centre, screenSize));
+                return TessellationPolicy.InsideErrorTessFactor(d, inputs.TargetPixelsPerSegment(), inputs.MaxTessFactor());
+            }
+            TileFactorLine(piece, out Float2 a, out Float2 b, out int cornerA, out int cornerB, out _);
+            var p = new Float3[Segments + 1];
+            var k = new float[Segments + 1];
+            p[0] = piece < 4 ? cornersOS[cornerA] : SurfaceObjectPosition(inputs, tile, a);
+            p[Segments] = piece < 4 ? cornersOS[cornerB] : SurfaceObjectPosition(inputs, tile, b);
+            for (int i = 1; i < Segments; i++)
+            {
+                // lerp(a, b, i / n) in float, as the shader forms the sample's tess coordinate.
+                float w = (float)i / Segments;
+                p[i] = SurfaceObjectPosition(inputs, tile, a + (b - a) * w);
+                k[i] = TessellationPolicy.PixelsPerUnit(objectToClip, p[i], screenSize);
+            }
+            return LineErrorTessFactor(inputs, piece, p, k, keywords);
+        }
+
+        /// <summary>HLSL <c>TileFactorsOfPieces</c>: the inside factors follow the edges along them, the midlines and the centre.</summary>
+        public static TileFactorSet TileFactorsOfPieces(float[] piece)
+        {
+            Float2 inside = TessellationPolicy.InsideFactors(piece[0], piece[1], piece[2], piece[3]);
+            float centre = piece[6];
+            inside = new Float2(Math.Max(Math.Max(inside.x, piece[4]), centre), Math.Max(Math.Max(inside.y, piece[5]), centre));
+            return new TileFactorSet(new Float4(piece[0], piece[1], piece[2], piece[3]), inside);
+        }
+
+        /// <summary>
+        /// HLSL <c>ComputeTileFactors</c> (hull_const's path): the uniform factor when one is set;
+        /// else all zero for a culled tile; else the seven pieces. <paramref name="objectToClip"/>:
+        /// the camera's <c>GT_ObjectToClip</c>; <paramref name="screenSize"/> in pixels.
+        /// <see cref="TerrainKeywords.Noise"/> adds the noise bound, <see cref="TerrainKeywords.Snow"/>
+        /// the snow cap to the culling box (its inputs then need a snow map).
+        /// </summary>
+        public static TileFactorSet ComputeTileFactors(TerrainInputs inputs, int tile, Float4x4 objectToClip, Float2 screenSize,
+                                                       TerrainKeywords keywords)
+        {
+            if (inputs == null) throw new ArgumentNullException(nameof(inputs));
+            if ((keywords & TerrainKeywords.PaperMode) != 0)
+                throw new ArgumentException("keywords: tile factors are the tile mode's (paper mode has no hull_const factors)", nameof(keywords));
+            if (inputs.UsesUniformTessFactor())
+            {
+                float f = inputs.UniformTessFactor();
+                return new TileFactorSet(new Float4(f, f, f, f), new Float2(f, f));
+            }
+            var corners = new Float3[4];
+            for (int c = 0; c < 4; c++) corners[c] = TileCornerObjectPosition(inputs, tile, c);
+            if (TileCulled(inputs, objectToClip, corners, keywords)) return default;
+            var piece = new float[Pieces];
+            for (int i = 0; i < Pieces; i++) piece[i] = TileFactorPiece(inputs, tile, i, corners, objectToClip, screenSize, keywords);
+            return TileFactorsOfPieces(piece);
+        }
+    }
+}
