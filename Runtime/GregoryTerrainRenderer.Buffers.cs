@@ -1,0 +1,106 @@
+using System;
+using UnityEngine;
+
+namespace GregoryTerrain
+{
+    // The renderer's GPU buffers: the grid uploaded once per asset version, the fallback's index grid.
+    public sealed partial class GregoryTerrainRenderer
+    {
+        /// <summary>Uploads the grid when it is new or changed; false when it cannot be drawn.</summary>
+        bool EnsureUploaded()
+        {
+            if (_uploadedGrid == grid && _uploadedVersion == grid.Version && _controlPoints != null) return true;
+            ReleaseGpuResources();
+            PatchGrid g;
+            try { g = grid.ToPatchGrid(); }
+            catch (ArgumentException e)
+            {
+                Debug.LogError($"{name}: patch grid '{grid.name}' cannot be drawn: {e.Message}", this);
+                _uploadedGrid = grid; _uploadedVersion = grid.Version;   // do not retry every frame
+                return false;
+            }
+            float[] cps, regions, lines;
+            try
+            {
+                // GpuLayout validates (bit-identical shared edges, float-representable lines) and packs.
+                cps = GpuLayout.PackControlPoints(g);
+                regions = GpuLayout.PackRegions(g);
+                lines = GpuLayout.PackGridLines(g);
+            }
+            catch (ArgumentException e)
+            {
+                Debug.LogError($"{name}: patch grid '{grid.name}' cannot be drawn: {e.Message}", this);
+                _uploadedGrid = grid; _uploadedVersion = grid.Version;   // do not retry every frame
+                return false;
+            }
+
+            // Float arrays of float4 elements: count = floats / 4, stride 16 (GpuLayout.Float4Stride).
+            _controlPoints = new GraphicsBuffer(GraphicsBuffer.Target.Structured, cps.Length / GpuLayout.Float4Size, GpuLayout.Float4Stride);
+            _controlPoints.SetData(cps);
+            _regions = new GraphicsBuffer(GraphicsBuffer.Target.Structured, regions.Length / GpuLayout.Float4Size, GpuLayout.Float4Stride);
+            _regions.SetData(regions);
+            _gridLines = new GraphicsBuffer(GraphicsBuffer.Target.Structured, lines.Length, GpuLayout.GridLineStride);
+            _gridLines.SetData(lines);
+
+            _props ??= new MaterialPropertyBlock();
+            _props.SetBuffer(Ids.ControlPoints, _controlPoints);
+            _props.SetBuffer(Ids.Regions, _regions);
+            _props.SetBuffer(Ids.GridLines, _gridLines);
+            // _GridSize is part of TerrainParams: PushSettings sets it (settings are dirty below).
+            grid.GetHeightRange(out _gridMinZ, out _gridMaxZ);
+
+            _uploadedGrid = grid;
+            _uploadedPatchGrid = g;
+            _uploadedVersion = grid.Version;
+            _gridStamp++;
+            _settingsDirty = true;
+            _originDirty = true;
+            _origin.Reset();
+            return true;
+        }
+
+        /// <summary>The fallback's (F+1)^2-vertex grid as triangles, built when F changes.</summary>
+        bool EnsureFallbackIndices()
+        {
+            if (!s_FallbackLogged)
+            {
+                s_FallbackLogged = true;
+                Debug.Log("Gregory Terrain: the shader's tessellated SubShader is not used on this device " +
+                          $"(SystemInfo.supportsTessellationShaders = {SystemInfo.supportsTessellationShaders}); " +
+                          "drawing the vertex-shader fallback (a fixed grid per tile).", this);
+            }
+            int f = fallbackGridFactor;
+            if (_fallbackIndices != null && _fallbackIndexFactor == f) return true;
+            _fallbackIndices?.Release();
+            var indices = new int[6 * f * f];
+            int k = 0, row = f + 1;
+            for (int t = 0; t < f; t++)
+            for (int s = 0; s < f; s++)
+            {
+                int v = t * row + s;
+                indices[k++] = v; indices[k++] = v + row; indices[k++] = v + 1;
+                indices[k++] = v + 1; indices[k++] = v + row; indices[k++] = v + row + 1;
+            }
+            _fallbackIndices = new GraphicsBuffer(GraphicsBuffer.Target.Index, indices.Length, sizeof(int));
+            _fallbackIndices.SetData(indices);
+            _fallbackIndexFactor = f;
+            _settingsDirty = true;
+            return true;
+        }
+
+        /// <summary>Releases every GPU buffer this renderer holds. Safe to call twice.</summary>
+        public void ReleaseGpuResources()
+        {
+            _controlPoints?.Release(); _controlPoints = null;
+            _regions?.Release(); _regions = null;
+            _gridLines?.Release(); _gridLines = null;
+            _fallbackIndices?.Release(); _fallbackIndices = null;
+            _cache.Release();
+            _uploadedGrid = null;
+            _uploadedPatchGrid = null;
+            _uploadedVersion = 0;
+            _drawModeMaterial = null;   // read the SubShader's tag again (it may change with the shader)
+            _props?.Clear();
+        }
+    }
+}
