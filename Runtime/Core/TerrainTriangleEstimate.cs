@@ -73,9 +73,9 @@ namespace GregoryTerrain
         /// <summary>
         /// The draw's triangles for a camera (<paramref name="objectToClip"/>, <paramref name="screenSize"/>
         /// pixels) at the inputs' settings and range. At most <paramref name="maxTiles"/> tiles are
-        /// evaluated (51 surface points each): with more, an evenly spread sample of them, its count
-        /// scaled to all M^2. The vertex cache's factors are the integers it rounds them to
-        /// (<see cref="VertexCache.IntegerFactors"/>).
+        /// evaluated (51 surface points each): with more, the k x k tiles nearest the centres of a
+        /// k x k split of the range (k = floor(sqrt(maxTiles))), their count scaled to all M^2. The
+        /// vertex cache's factors are the integers it rounds them to (<see cref="VertexCache.IntegerFactors"/>).
         /// </summary>
         public static TriangleEstimate InView(TerrainInputs inputs, Float4x4 objectToClip, Float2 screenSize, TerrainKeywords keywords,
                                               TessellationPartitioning partitioning, int maxTiles = 256)
@@ -86,13 +86,15 @@ namespace GregoryTerrain
                 throw new ArgumentException($"screenSize {screenSize} must be finite and positive", nameof(screenSize));
             if (maxTiles < 1) throw new ArgumentException(FormattableString.Invariant($"maxTiles ({maxTiles}) must be >= 1"), nameof(maxTiles));
             int tiles = inputs.TileCountInt(), count = tiles * tiles;
-            int sampled = Math.Min(count, maxTiles);
+            int k = count <= maxTiles ? tiles : Math.Max(1, (int)Math.Sqrt(maxTiles));
+            int sampled = k * k;
             var e = new TriangleEstimate { tileCount = count, tilesSampled = sampled };
             long sum = 0;
             for (int i = 0; i < sampled; i++)
             {
-                // Evenly spread: the middle tile of each of `sampled` equal runs of the tile order.
-                int tile = (int)(((long)i * count + count / 2) / sampled);
+                // Stratified in both directions: the tile holding the centre of cell (i mod k, i / k) of a k x k split.
+                int ti = (int)((2L * (i % k) + 1) * tiles / (2L * k)), tj = (int)((2L * (i / k) + 1) * tiles / (2L * k));
+                int tile = tj * tiles + ti;
                 TileFactorSet f = TileFactors.ComputeTileFactors(inputs, tile, objectToClip, screenSize, keywords);
                 if (partitioning == TessellationPartitioning.Integer) f = VertexCache.IntegerFactors(f);
                 if (f.IsCulled) continue;
