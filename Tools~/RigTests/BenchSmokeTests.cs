@@ -91,6 +91,14 @@ namespace GregoryTerrain.Rig.Tests
             Assert.That(D(core.Groups[2].Value), Is.GreaterThan(0));
             Assert.That(D(core.Groups[1].Value), Is.LessThanOrEqualTo(0.02 * D(core.Groups[2].Value)), "tiles whose cache factors differ from Core's");
             Assert.That(D(core.Groups[3].Value), Is.LessThanOrEqualTo(1), "largest factor difference");
+            // The inspector's estimate (Core's mirror of the factors, counted) is what each adaptive job drew.
+            foreach (string path in new[] { "adaptive (fractional_odd)", "cached adaptive (integer)" })
+            {
+                var est = System.Text.RegularExpressions.Regex.Match(_output, @"clipping invocations, " + System.Text.RegularExpressions.Regex.Escape(path) + @" jobs: (\d+) of (\d+) exact, largest difference ([0-9.eE+-]+)%");
+                Assert.That(est.Success, Is.True, path + ": estimate line");
+                Assert.That(D(est.Groups[2].Value), Is.GreaterThan(0), path + ": jobs compared");
+                Assert.That(D(est.Groups[3].Value), Is.LessThan(1), path + ": the estimate against the GPU's triangles, percent");
+            }
             Assert.That(_output, Does.Contain("The vertex cache (GT_VERTEX_CACHE) against the same fair static meshes"));
             Assert.That(_output, Does.Match(@"\| fs_m8_f7 \(uniform\) \| 8 \| 7 \| \d+ \|"), "cached fair row ran");
             Assert.That(_output, Does.Match(@"\| vc_m8_s8x7 \(adaptive\) \| 8 \| [0-9.]+ \| \d+ \|"), "cached adaptive fair row ran");

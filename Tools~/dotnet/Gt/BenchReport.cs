@@ -52,6 +52,7 @@ namespace GregoryTerrain.Rig
             o.AppendLine("| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |");
             double worstModel = 0; string worstModelId = null;
             double cacheFactorDiff = 0; long cacheTilesDiffer = 0, cacheTilesDrawn = 0;
+            var estimate = new EstimateCheck();
             var cfgs = BenchPlan.Sweep(quick);
             var path = quick ? new[] { BenchPlan.CameraPath[0], BenchPlan.CameraPath[2] } : BenchPlan.CameraPath;
             foreach (var cfg in cfgs)
@@ -67,6 +68,7 @@ namespace GregoryTerrain.Rig
                     ds += cfg.Method == "fallback" ? j.Get("vertex_shader_invocations") : j.Get("tessellation_evaluation_shader_invocations");
                     gpu += j.GpuMs;
                     var scene = BenchPlan.Scene(grid, cfg, range, width, height);
+                    if (cfg.Method == "adaptive") estimate.Add(cfg.Cached, id, j.Get("clipping_invocations"), InspectorEstimate(grid, scene, cfg));
                     if (cfg.Cached)
                     {
                         // The vertex cache: the integer factors the kernel wrote (_TileFactors dump),
@@ -125,6 +127,7 @@ namespace GregoryTerrain.Rig
                 o.AppendLine(Inv($"Cached rows' triangles against the integer-partitioning count of their dumped factors (transition rings included): largest difference {100 * worstModel:G3}% ({worstModelId})."));
                 o.AppendLine(Inv($"Cached rows' dumped factors against Core's mirror made integer (VertexCache.IntegerFactors): {cacheTilesDiffer} of {cacheTilesDrawn} drawn tiles differ (culling or a factor), largest factor difference {cacheFactorDiff:G3}."));
             }
+            estimate.Report(o);
             o.AppendLine();
             Table1(o, jobs, quick);
             // Targets chosen at plan time (jobs.tsv: id, method, tiles, factor, target, ...).
@@ -369,6 +372,37 @@ namespace GregoryTerrain.Rig
             double ad = Need("adaptive"), un = Need("uniform"), ca = Need("cached adaptive");
             o.AppendLine(Inv($"- 1-pixel largest error on the camera path (no noise, the sweep's main tile count): adaptive needs {ad:F0} triangles, uniform {un:F0}: {un / ad:F2}x fewer with adaptive factors (goal >= 4x)"));
             o.AppendLine(Inv($"- the same for the vertex cache (integer factors): cached adaptive needs {ca:F0} triangles, uniform {un:F0}: {un / ca:F2}x fewer (goal >= 4x)"));
+        }
+
+        /// <summary>The renderer inspector's "Triangles in view" for a job's camera: Core's TerrainTriangleEstimate over every tile.</summary>
+        static double InspectorEstimate(PatchGrid grid, RigScene scene, BenchConfig cfg) =>
+            TerrainTriangleEstimate.InView(TerrainInputs.Create(grid, scene.Params), scene.Camera.ObjectToClipFloat(),
+                new Float2(scene.Camera.Width, scene.Camera.Height), cfg.Noise ? TerrainKeywords.Noise : TerrainKeywords.None,
+                cfg.Cached ? TessellationPartitioning.Integer : TessellationPartitioning.FractionalOdd, int.MaxValue).triangles;
+
+        /// <summary>The inspector's estimate against the GPU's clipping invocations, per path: the largest relative difference.</summary>
+        sealed class EstimateCheck
+        {
+            readonly double[] _worst = new double[2];
+            readonly string[] _worstId = new string[2];
+            readonly int[] _jobs = new int[2], _exact = new int[2];
+
+            public void Add(bool cached, string id, long gpu, double estimate)
+            {
+                int k = cached ? 1 : 0;
+                double rel = Math.Abs(estimate - gpu) / Math.Max(1.0, gpu);
+                _jobs[k]++;
+                if (estimate == gpu) _exact[k]++;
+                if (rel >= _worst[k]) { _worst[k] = rel; _worstId[k] = Inv($"{id}: GPU {gpu}, estimate {estimate:F0}"); }
+            }
+
+            public void Report(StringBuilder o)
+            {
+                string[] names = { "adaptive (fractional_odd)", "cached adaptive (integer)" };
+                for (int k = 0; k < 2; k++)
+                    if (_jobs[k] > 0)
+                        o.AppendLine(Inv($"The inspector's triangle estimate (Core's TerrainTriangleEstimate, every tile) against the GPU's clipping invocations, {names[k]} jobs: {_exact[k]} of {_jobs[k]} exact, largest difference {100 * _worst[k]:G3}% ({_worstId[k]})."));
+            }
         }
 
         static Dictionary<string, Job> ParseResults(string file)
