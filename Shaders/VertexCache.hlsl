@@ -32,9 +32,13 @@ uint VertexCacheFactorLimit()
 // (L + 1)^2 slots of the inside grid, then 4 edges of L + 1.
 uint VertexCacheSlotsPerTile(uint limit) { return (limit + 1u) * (limit + 1u) + 4u * (limit + 1u); }
 
-// Lanes per group of both kernels (CacheTileFactors: a group a tile, a lane for each of its
-// GT_TILE_FACTOR_SAMPLES); the most passes a CacheTileVertices group makes over a tile's points.
+// Lanes of a CacheTileFactors group (a group a tile, a lane for each of its GT_TILE_FACTOR_SAMPLES);
+// lanes of a CacheTileVertices group, and the most passes it makes over its tile's points. Why
+// 128 x 4: fewer groups than 64 x 4 for the same lanes, which costs less where most find nothing to
+// do (a camera move, many tiles) and no more elsewhere (H200 A/B of 64-256 lanes x 1-8 passes:
+// Documentation~/performance.md, "The vertex kernel's group size").
 #define GT_VERTEX_CACHE_GROUP 64u
+#define GT_VERTEX_CACHE_VERTEX_GROUP 128u
 #define GT_VERTEX_CACHE_PASSES 4u
 
 // The most points a tile at factors <= L has: the (L - 1)^2 interior and 4 edges of L + 1.
@@ -45,7 +49,7 @@ uint VertexCacheMaxTilePoints(uint limit) { return (limit - 1u) * (limit - 1u) +
 // idle (adaptive factors, 32 x 32 tiles, 0.6M triangles: 0.12 ms against 0.04 for uniform ones).
 uint VertexCacheGroupsPerTile(uint limit)
 {
-    uint perGroup = GT_VERTEX_CACHE_GROUP * GT_VERTEX_CACHE_PASSES;
+    uint perGroup = GT_VERTEX_CACHE_VERTEX_GROUP * GT_VERTEX_CACHE_PASSES;
     return (VertexCacheMaxTilePoints(limit) + perGroup - 1u) / perGroup;
 }
 

@@ -160,8 +160,9 @@ void VertexCachePoint(uint k, float4 edge, float2 inside, uint limit, out float2
 }
 
 // Dispatch (M, M, G), G = VertexCacheGroupsPerTile(L): groups (x, y, 0 .. G - 1) share tile
-// y M + x, their G x 64 lanes striding over its points (at most GT_VERTEX_CACHE_PASSES each).
-[numthreads(64, 1, 1)]
+// y M + x, their G x GT_VERTEX_CACHE_VERTEX_GROUP lanes striding over its points (at most
+// GT_VERTEX_CACHE_PASSES each).
+[numthreads(GT_VERTEX_CACHE_VERTEX_GROUP, 1, 1)]
 void CacheTileVertices(uint3 group : SV_GroupID, uint lane : SV_GroupIndex)
 {
     uint tiles = TileCountInt();
@@ -174,8 +175,8 @@ void CacheTileVertices(uint3 group : SV_GroupID, uint lane : SV_GroupIndex)
     uint base = tile * VertexCacheSlotsPerTile(limit);
     uint2 n = (uint2)inside.xy - 1u;
     uint count = n.x * n.y + (uint)(edge.x + edge.y + edge.z + edge.w) + 4u;
-    uint stride = VertexCacheGroupsPerTile(limit) * GT_VERTEX_CACHE_GROUP;
-    for (uint k = group.z * GT_VERTEX_CACHE_GROUP + lane; k < count; k += stride)
+    uint stride = VertexCacheGroupsPerTile(limit) * GT_VERTEX_CACHE_VERTEX_GROUP;
+    for (uint k = group.z * GT_VERTEX_CACHE_VERTEX_GROUP + lane; k < count; k += stride)
     {
         float2 tess;
         uint slot;

@@ -71,8 +71,11 @@ namespace GregoryTerrain
             return (limit + 1) * (limit + 1) + 4 * (limit + 1);
         }
 
-        /// <summary>Lanes of a group of either kernel (HLSL <c>GT_VERTEX_CACHE_GROUP</c>).</summary>
-        public const int ThreadsPerGroup = 64;
+        /// <summary>Lanes of a CacheTileFactors group (HLSL <c>GT_VERTEX_CACHE_GROUP</c>): a lane a factor sample.</summary>
+        public const int FactorThreadsPerGroup = 64;
+
+        /// <summary>Lanes of a CacheTileVertices group (HLSL <c>GT_VERTEX_CACHE_VERTEX_GROUP</c>).</summary>
+        public const int VertexThreadsPerGroup = 128;
 
         /// <summary>
         /// The surface samples of a tile's adaptive factors (HLSL <c>GT_TILE_FACTOR_SAMPLES</c>): 4 corners,
@@ -98,7 +101,7 @@ namespace GregoryTerrain
         /// </summary>
         public static int GroupsPerTile(int limit)
         {
-            const int perGroup = ThreadsPerGroup * PassesPerGroup;
+            const int perGroup = VertexThreadsPerGroup * PassesPerGroup;
             return (MaxTilePoints(limit) + perGroup - 1) / perGroup;
         }
 

@@ -74,7 +74,7 @@ namespace GregoryTerrain.Tests
         [Test]
         public void GroupsPerTileCoverTheLargestTileInAFewPasses()
         {
-            const int perGroup = VertexCache.ThreadsPerGroup * VertexCache.PassesPerGroup;
+            const int perGroup = VertexCache.VertexThreadsPerGroup * VertexCache.PassesPerGroup;
             for (int limit = 1; limit <= 64; limit++)
             {
                 var full = VertexCache.IntegerFactors(Set(limit, limit, limit, limit, limit, limit));
@@ -84,10 +84,10 @@ namespace GregoryTerrain.Tests
                 Assert.That(groups * perGroup, Is.GreaterThanOrEqualTo(points), $"limit {limit}");
                 Assert.That((groups - 1) * perGroup, Is.LessThan(points), $"limit {limit}");
             }
-            Assert.That(VertexCache.GroupsPerTile(17), Is.EqualTo(2));
+            Assert.That(VertexCache.GroupsPerTile(17), Is.EqualTo(1));
             // CacheTileFactors: a group a tile, a sample a lane.
-            Assert.That(VertexCache.FactorSamplesPerTile, Is.EqualTo(51).And.LessThanOrEqualTo(VertexCache.ThreadsPerGroup));
-            Assert.That(VertexCache.GroupsPerTile(64), Is.EqualTo(17));
+            Assert.That(VertexCache.FactorSamplesPerTile, Is.EqualTo(51).And.LessThanOrEqualTo(VertexCache.FactorThreadsPerGroup));
+            Assert.That(VertexCache.GroupsPerTile(64), Is.EqualTo(9));
             Assert.That(() => VertexCache.GroupsPerTile(0), Throws.InstanceOf<ArgumentException>());
         }
 

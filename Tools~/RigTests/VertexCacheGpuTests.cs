@@ -115,15 +115,15 @@ namespace GregoryTerrain.Rig.Tests
         [Test]
         public void CacheHoldsTheCoreVertexInEverySlotTheKernelWrites()
         {
-            // F = 17: 328 points a tile, more than one group's 64 x 4, so two groups share each tile.
-            CacheFrame f = DrawCached("uniform", "0.2,0.15,0.7,0.65", 4, new[] { "--factor", "17" }, 96, 64);
-            Assert.That(VertexCache.GroupsPerTile(f.Limit), Is.EqualTo(2));
+            // F = 31: 1,028 points a tile, more than two groups' 128 x 4, so three groups share each tile.
+            CacheFrame f = DrawCached("uniform", "0.2,0.15,0.7,0.65", 4, new[] { "--factor", "31" }, 96, 64);
+            Assert.That(VertexCache.GroupsPerTile(f.Limit), Is.EqualTo(3));
             double extent = ReadbackRun.TerrainExtent(_grid);
             double maxPos = 0, maxNormal = 0, maxHeight = 0, maxColour = 0;
             int compared = 0, stray = 0;
             for (int tile = 0; tile < f.Tiles * f.Tiles; tile++)
             {
-                Assert.That(f.FactorsOf(tile), Is.EqualTo(VertexCache.IntegerFactors(new TileFactorSet(new Float4(17, 17, 17, 17), new Float2(17, 17)))), "tile " + tile);
+                Assert.That(f.FactorsOf(tile), Is.EqualTo(VertexCache.IntegerFactors(new TileFactorSet(new Float4(31, 31, 31, 31), new Float2(31, 31)))), "tile " + tile);
                 var written = new HashSet<int>();
                 foreach (var (tess, slot) in VertexCache.TilePoints(f.FactorsOf(tile), f.Limit))
                 {
@@ -141,7 +141,7 @@ namespace GregoryTerrain.Rig.Tests
             }
             TestContext.Out.WriteLine("{0} cached vertices against Core: position {1:G3} of the extent, normal {2:G3}, absolute height {3:G3}, colour noise {4:G3}",
                 compared, maxPos, maxNormal, maxHeight, maxColour);
-            Assert.That(compared, Is.EqualTo(16 * (16 * 16 + 4 * 18)), "4 x 4 tiles, 16 x 16 interior points and 4 edges of 18 at F = 17");
+            Assert.That(compared, Is.EqualTo(16 * (30 * 30 + 4 * 32)), "4 x 4 tiles, 30 x 30 interior points and 4 edges of 32 at F = 31");
             Assert.That(stray, Is.EqualTo(0), "slots written that no point owns");
             Assert.That(maxPos, Is.LessThan(1e-5));
             Assert.That(maxNormal, Is.LessThan(1e-4));
@@ -267,8 +267,9 @@ namespace GregoryTerrain.Rig.Tests
                 Assert.That(U(lane, 4), Is.EqualTo(VertexCache.FactorIndex(lane)), at + ": factor record");
                 Assert.That(U(lane, 5), Is.EqualTo(VertexCache.EvaluatedRangeIndex(lane, 7)), at + ": evaluated range of 7 x 7 tiles");
                 Assert.That(U(lane, 8), Is.EqualTo(VertexCache.FactorSampleIndex(lane, lane % VertexCache.FactorSamplesPerTile, 7)), at + ": factor sample");
-                Assert.That(U(lane, 6), Is.EqualTo(VertexCache.ThreadsPerGroup), "lanes a group");
-                Assert.That(U(lane, 7), Is.EqualTo(VertexCache.PassesPerGroup), "passes a group");
+                Assert.That(U(lane, 6), Is.EqualTo(VertexCache.FactorThreadsPerGroup), "lanes a factors group");
+                Assert.That(U(lane, 7), Is.EqualTo(VertexCache.PassesPerGroup), "passes a vertex group");
+                Assert.That(U(lane, 9), Is.EqualTo(VertexCache.VertexThreadsPerGroup), "lanes a vertex group");
             }
         }
 

@@ -2,8 +2,8 @@
 // and the factor sample count (Shaders/TileFactors.hlsl) on the GPU, for Core's mirrors
 // VertexCache and VertexCacheBudget. Lane i writes, for the factor limit L = i + 1 and tile i of
 // 7 x 7 tiles: (slots a tile, groups a tile, most points a tile, factor samples a tile), then
-// (factor record index, evaluated-range index, lanes a group, passes a group), then (the index of
-// the tile's factor sample i mod 51, 0, 0, 0). Compiled with the
+// (factor record index, evaluated-range index, lanes a factors group, passes a vertex group), then
+// (the index of the tile's factor sample i mod 51, lanes a vertex group, 0, 0). Compiled with the
 // rig's register shifts (u4 -> binding 9); only pure functions are called, so the terrain's own
 // buffers and constants are declared but never read.
 #define GT_VERTEX_CACHE
@@ -20,5 +20,5 @@ void VertexCacheLayoutProbe(uint3 id : SV_DispatchThreadID)
                                VertexCacheMaxTilePoints(limit), GT_TILE_FACTOR_SAMPLES);
     _Layout[3u * id.x + 1u] = uint4(VertexCacheFactorIndex(id.x), VertexCacheEvaluatedRangeIndex(id.x, 7u),
                                     GT_VERTEX_CACHE_GROUP, GT_VERTEX_CACHE_PASSES);
-    _Layout[3u * id.x + 2u] = uint4(VertexCacheFactorSampleIndex(id.x, id.x % GT_TILE_FACTOR_SAMPLES, 7u), 0u, 0u, 0u);
+    _Layout[3u * id.x + 2u] = uint4(VertexCacheFactorSampleIndex(id.x, id.x % GT_TILE_FACTOR_SAMPLES, 7u), GT_VERTEX_CACHE_VERTEX_GROUP, 0u, 0u);
 }
