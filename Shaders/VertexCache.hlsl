@@ -36,7 +36,7 @@ uint VertexCacheSlotsPerTile(uint limit) { return (limit + 1u) * (limit + 1u) + 
 // lanes of a CacheTileVertices group, and the most passes it makes over its tile's points. Why
 // 128 x 4: fewer groups than 64 x 4 for the same lanes, which costs less where most find nothing to
 // do (a camera move, many tiles) and no more elsewhere (H200 A/B of 64-256 lanes x 1-8 passes:
-// Documentation~/performance.md, "The vertex kernel's group size").
+// Documentation~/performance/raw-h200-vertex-groups/README.md).
 #define GT_VERTEX_CACHE_GROUP 64u
 #define GT_VERTEX_CACHE_VERTEX_GROUP 128u
 #define GT_VERTEX_CACHE_PASSES 4u
