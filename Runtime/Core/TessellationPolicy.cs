@@ -371,14 +371,18 @@ namespace GregoryTerrain
         /// The tile culling test of <c>hull_const</c> (HLSL <c>TileCulled</c>): the box of the tile's four
         /// corner positions (object space, Unity's Y-up: height is y), grown in height by the corners'
         /// own height spread (the surface may rise between corners) plus <paramref name="noiseHeightBound"/>
-        /// (0 without noise), is outside the view. Noise that could reach into the view keeps the tile.
+        /// (0 without noise), and upwards only by <paramref name="raiseBound"/> (the snow cap with
+        /// GT_SNOW: snow only raises the surface), is outside the view. Noise that could reach into
+        /// the view keeps the tile.
         /// </summary>
-        public static bool TileCulled(Float4x4 objectToClip, Float3[] cornersOS, float noiseHeightBound)
+        public static bool TileCulled(Float4x4 objectToClip, Float3[] cornersOS, float noiseHeightBound, float raiseBound = 0f)
         {
             if (cornersOS == null || cornersOS.Length != 4)
                 throw new ArgumentException(FormattableString.Invariant($"cornersOS (length {cornersOS?.Length ?? 0}) must hold 4 corners"), nameof(cornersOS));
             if (!GMath.isfinite(noiseHeightBound) || noiseHeightBound < 0f)
                 throw new ArgumentException(FormattableString.Invariant($"noiseHeightBound ({noiseHeightBound:R}) must be finite and >= 0"), nameof(noiseHeightBound));
+            if (!GMath.isfinite(raiseBound) || raiseBound < 0f)
+                throw new ArgumentException(FormattableString.Invariant($"raiseBound ({raiseBound:R}) must be finite and >= 0"), nameof(raiseBound));
             Float3 lo = cornersOS[0], hi = lo;
             for (int c = 1; c < 4; c++)
             {
@@ -388,6 +392,7 @@ namespace GregoryTerrain
             float margin = hi.y - lo.y + noiseHeightBound;
             lo.y -= margin;
             hi.y += margin;
+            hi.y += raiseBound;   // a separate add, as the shader adds it
             return BoxOutsideFrustum(objectToClip, lo, hi, 0f);
         }
 

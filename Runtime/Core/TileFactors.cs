@@ -40,18 +40,8 @@ namespace GregoryTerrain
         public static bool TileCulled(TerrainInputs inputs, Float4x4 objectToClip, Float3[] cornersOS, TerrainKeywords keywords)
         {
             float noise = (keywords & TerrainKeywords.Noise) != 0 ? TessellationPolicy.NoiseHeightBound(inputs.NoiseSettingsStruct()) : 0f;
-            if ((keywords & TerrainKeywords.Snow) == 0) return TessellationPolicy.TileCulled(objectToClip, cornersOS, noise);
-            Float3 lo = cornersOS[0], hi = lo;
-            for (int c = 1; c < 4; c++)
-            {
-                lo = new Float3(Math.Min(lo.x, cornersOS[c].x), Math.Min(lo.y, cornersOS[c].y), Math.Min(lo.z, cornersOS[c].z));
-                hi = new Float3(Math.Max(hi.x, cornersOS[c].x), Math.Max(hi.y, cornersOS[c].y), Math.Max(hi.z, cornersOS[c].z));
-            }
-            float margin = hi.y - lo.y + noise;
-            lo.y -= margin;
-            hi.y += margin;
-            hi.y += inputs.SnowDepthCap();
-            return TessellationPolicy.BoxOutsideFrustum(objectToClip, lo, hi, 0f);
+            float snow = (keywords & TerrainKeywords.Snow) != 0 ? inputs.SnowDepthCap() : 0f;
+            return TessellationPolicy.TileCulled(objectToClip, cornersOS, noise, snow);
         }
 
         /// <summary>

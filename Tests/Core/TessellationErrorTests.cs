@@ -155,6 +155,16 @@ namespace GregoryTerrain.Tests
             Assert.That(TessellationPolicy.TileCulled(m, corners, 0.1f), Is.True, "0.1 cannot bridge 0.3 (+ the slant)");
             Assert.Throws<ArgumentException>(() => TessellationPolicy.TileCulled(m, new Float3[3], 0f));
             Assert.Throws<ArgumentException>(() => TessellationPolicy.TileCulled(m, corners, -1f));
+            // Snow only raises the surface: a raise of 0.375 lifts the box into the view as the noise
+            // did; the same tile above the view's upper edge is not brought in by any raise.
+            Assert.That(TessellationPolicy.TileCulled(m, corners, 0f, 0.375f), Is.False, "snow could reach into the view");
+            Assert.That(TessellationPolicy.TileCulled(m, corners, 0f, 0.1f), Is.True);
+            float above = -bottom + 0.3f;
+            var high = new[] { new Float3(-1, above, -9.9f), new Float3(1, above, -9.9f), new Float3(-1, above, -10.1f), new Float3(1, above, -10.1f) };
+            Assert.That(TessellationPolicy.TileCulled(m, high, 0f, 10f), Is.True, "a raise never lowers the box");
+            Assert.That(TessellationPolicy.TileCulled(m, high, 0.375f), Is.False, "noise lowers it as well as raising it");
+            var e = Assert.Throws<ArgumentException>(() => TessellationPolicy.TileCulled(m, corners, 0f, float.NaN));
+            StringAssert.Contains("raiseBound (NaN)", e.Message);
         }
 
         [Test]
