@@ -98,6 +98,8 @@ namespace GregoryTerrain
             _cache.Release();
             _uploadedGrid = null;
             _uploadedPatchGrid = null;
+            _estimateInputs = null;   // the grid's CPU copy for the view estimate
+            _estimateGrid = null;
             _uploadedVersion = 0;
             _drawModeMaterial = null;   // read the SubShader's tag again (it may change with the shader)
             _props?.Clear();
