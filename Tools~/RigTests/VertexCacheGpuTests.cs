@@ -451,5 +451,21 @@ namespace GregoryTerrain.Rig.Tests
             Assert.That(domain.triangles, Is.EqualTo(hullDrawn).Within(0.5).Percent);
             Assert.That(cached.triangles, Is.EqualTo(cacheDrawn).Within(0.5).Percent);
         }
+
+        /// <summary>
+        /// gt-cli estimate (the estimate's CPU cost, a benchmark that prints figures) runs, counts
+        /// every tile when there are at most 256, and its 256-tile sample of 1,024 stays near the count
+        /// over every tile.
+        /// </summary>
+        [Test]
+        public void EstimateBenchmarkPrintsItsTable()
+        {
+            string o = ReadbackRun.Exec(_cli, new[] { "estimate", "--grid", _gridPath, "--tiles", "8,32", "--repeat", "2" }, null);
+            TestContext.Out.WriteLine(o);
+            Assert.That(o, Does.Match(@"\| 8 \| 0\.25 \| 64 of 64 \| [0-9.]+ \| [0-9,]+ \| [0-9,]+ \| 0\.0% \|"), "8 x 8 tiles: every tile, no difference");
+            var row = System.Text.RegularExpressions.Regex.Match(o, @"\| 32 \| 0\.25 \| 256 of 1024 \| [0-9.]+ \| ([0-9,]+) \| ([0-9,]+) \| ([-+0-9.]+)% \|");
+            Assert.That(row.Success, Is.True, "32 x 32 tiles: a 256-tile sample");
+            Assert.That(Math.Abs(double.Parse(row.Groups[3].Value, CultureInfo.InvariantCulture)), Is.LessThan(5), "the sample against every tile, percent");
+        }
     }
 }
