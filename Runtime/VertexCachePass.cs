@@ -136,8 +136,9 @@ namespace GregoryTerrain
         public bool Update(ComputeShader shader, in Inputs inputs)
         {
             if (!IsAllocated || shader != _kernelShader) throw new InvalidOperationException("VertexCachePass: FindKernels and EnsureBuffers come first");
-            if (_valid && SameAsLast(inputs)) return false;
-            if (!_valid || !SameRecordInputs(inputs)) ForgetEvaluatedTiles();
+            bool recordsHold = _valid && SameRecordInputs(inputs);
+            if (recordsHold && SameFactorInputs(inputs)) return false;
+            if (!recordsHold) ForgetEvaluatedTiles();
 
             for (int k = 0; k < TerrainParams.Float4Count; k++)
             {
@@ -207,8 +208,9 @@ namespace GregoryTerrain
             if (on) shader.EnableKeyword(keyword); else shader.DisableKeyword(keyword);
         }
 
-        bool SameAsLast(in Inputs i) =>
-            SameRecordInputs(i) && SameParams(i.parameters, _last.parameters) &&
+        /// <summary>The rest of what the kernels read: the range, the pixel target, the uniform factor, the LOD camera.</summary>
+        bool SameFactorInputs(in Inputs i) =>
+            SameParams(i.parameters, _last.parameters) &&
             SameMatrix(i.objectToClip, _last.objectToClip) && SameVector(i.screenSize, _last.screenSize);
 
         /// <summary>

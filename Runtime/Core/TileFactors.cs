@@ -32,6 +32,21 @@ namespace GregoryTerrain
         public static Float3 SurfaceObjectPosition(TerrainInputs inputs, int tile, Float2 tess) =>
             TerrainVertex.TerrainToObject(TerrainVertex.EvaluateSurface(inputs, tile, tess).position);
 
+        /// <summary>HLSL <c>ObjectPixelsPerUnit</c>: pixels per object unit at p (TessellationPolicy.PixelsPerUnit).</summary>
+        public static float ObjectPixelsPerUnit(Float4x4 objectToClip, Float3 p, Float2 screenSize) =>
+            TessellationPolicy.PixelsPerUnit(objectToClip, p, screenSize);
+
+        /// <summary>HLSL <c>UniformTileFactors</c>: every factor the uniform one, when the inputs set one (true, f set).</summary>
+        public static bool UniformTileFactors(TerrainInputs inputs, out TileFactorSet f)
+        {
+            float u = inputs.UniformTessFactor();
+            f = new TileFactorSet(new Float4(u, u, u, u), new Float2(u, u));
+            return inputs.UsesUniformTessFactor();
+        }
+
+        /// <summary>HLSL <c>CulledTileFactors</c>: all zero, the patch is dropped.</summary>
+        public static TileFactorSet CulledTileFactors() => default;
+
         /// <summary>
         /// HLSL <c>TileCulled</c>: the corners' box, grown in height by their spread plus the noise
         /// bound (<see cref="TerrainKeywords.Noise"/>), and upwards by the snow cap
@@ -62,6 +77,28 @@ namespace GregoryTerrain
             }
         }
 
+        /// <summary>HLSL <c>TileLineInnerPosition</c>: inner point i (1 .. n - 1) of the tile's line from a to b.</summary>
+        public static Float3 TileLineInnerPosition(TerrainInputs inputs, int tile, Float2 a, Float2 b, int i) =>
+            // lerp(a, b, i / n) in float, as the shader forms the sample's tess coordinate.
+            SurfaceObjectPosition(inputs, tile, a + (b - a) * ((float)i / Segments));
+
+        /// <summary>HLSL <c>TileCentrePosition</c>.</summary>
+        public static Float3 TileCentrePosition(TerrainInputs inputs, int tile) => SurfaceObjectPosition(inputs, tile, new Float2(0.5f, 0.5f));
+
+        /// <summary>HLSL <c>TileLineInnerSample</c>: the inner point and its pixels per object unit (w).</summary>
+        public static Float4 TileLineInnerSample(TerrainInputs inputs, int tile, Float2 a, Float2 b, int i, Float4x4 objectToClip, Float2 screenSize)
+        {
+            Float3 p = TileLineInnerPosition(inputs, tile, a, b, i);
+            return new Float4(p, ObjectPixelsPerUnit(objectToClip, p, screenSize));
+        }
+
+        /// <summary>HLSL <c>TileCentreSample</c>.</summary>
+        public static Float4 TileCentreSample(TerrainInputs inputs, int tile, Float4x4 objectToClip, Float2 screenSize)
+        {
+            Float3 centre = TileCentrePosition(inputs, tile);
+            return new Float4(centre, ObjectPixelsPerUnit(objectToClip, centre, screenSize));
+        }
+
         /// <summary>
         /// HLSL <c>LineErrorTessFactor</c>: the factor whose chord error is the target, from the
         /// line's <see cref="TessellationPolicy.EdgeSegments"/> + 1 points and their pixel scales
@@ -81,17 +118,17 @@ namespace GregoryTerrain
             return TessellationPolicy.ErrorTessFactor(sagitta, inputs.TargetPixelsPerSegment(), inputs.MaxTessFactor());
         }
 
+        /// <summary>HLSL <c>CentreErrorTessFactor</c>: piece 6, the centre's deviation from the diagonals (centre.w: its pixel scale).</summary>
+        public static float CentreErrorTessFactor(TerrainInputs inputs, Float3[] cornersOS, Float4 centre) =>
+            TessellationPolicy.InsideErrorTessFactor(
+                TessellationPolicy.DiagonalSagittaPixels(cornersOS[0], cornersOS[1], cornersOS[2], cornersOS[3], centre.xyz, centre.w),
+                inputs.TargetPixelsPerSegment(), inputs.MaxTessFactor());
+
         /// <summary>HLSL <c>TileFactorPiece</c>: one piece, its surface samples evaluated in turn.</summary>
         public static float TileFactorPiece(TerrainInputs inputs, int tile, int piece, Float3[] cornersOS,
                                             Float4x4 objectToClip, Float2 screenSize, TerrainKeywords keywords)
         {
-            if (piece == 6)
-            {
-                Float3 centre = SurfaceObjectPosition(inputs, tile, new Float2(0.5f, 0.5f));
-                float d = TessellationPolicy.DiagonalSagittaPixels(cornersOS[0], cornersOS[1], cornersOS[2], cornersOS[3], centre,
-                    TessellationPolicy.PixelsPerUnit(objectToClip, centre, screenSize));
-                return TessellationPolicy.InsideErrorTessFactor(d, inputs.TargetPixelsPerSegment(), inputs.MaxTessFactor());
-            }
+            if (piece == 6) return CentreErrorTessFactor(inputs, cornersOS, TileCentreSample(inputs, tile, objectToClip, screenSize));
             TileFactorLine(piece, out Float2 a, out Float2 b, out int cornerA, out int cornerB, out _);
             var p = new Float3[Segments + 1];
             var k = new float[Segments + 1];
@@ -99,10 +136,9 @@ namespace GregoryTerrain
             p[Segments] = piece < 4 ? cornersOS[cornerB] : SurfaceObjectPosition(inputs, tile, b);
             for (int i = 1; i < Segments; i++)
             {
-                // lerp(a, b, i / n) in float, as the shader forms the sample's tess coordinate.
-                float w = (float)i / Segments;
-                p[i] = SurfaceObjectPosition(inputs, tile, a + (b - a) * w);
-                k[i] = TessellationPolicy.PixelsPerUnit(objectToClip, p[i], screenSize);
+                Float4 v = TileLineInnerSample(inputs, tile, a, b, i, objectToClip, screenSize);
+                p[i] = v.xyz;
+                k[i] = v.w;
             }
             return LineErrorTessFactor(inputs, piece, p, k, keywords);
         }
@@ -129,14 +165,10 @@ namespace GregoryTerrain
             if (inputs == null) throw new ArgumentNullException(nameof(inputs));
             if ((keywords & TerrainKeywords.PaperMode) != 0)
                 throw new ArgumentException("keywords: tile factors are the tile mode's (paper mode has no hull_const factors)", nameof(keywords));
-            if (inputs.UsesUniformTessFactor())
-            {
-                float f = inputs.UniformTessFactor();
-                return new TileFactorSet(new Float4(f, f, f, f), new Float2(f, f));
-            }
+            if (UniformTileFactors(inputs, out TileFactorSet f)) return f;
             var corners = new Float3[4];
             for (int c = 0; c < 4; c++) corners[c] = TileCornerObjectPosition(inputs, tile, c);
-            if (TileCulled(inputs, objectToClip, corners, keywords)) return default;
+            if (TileCulled(inputs, objectToClip, corners, keywords)) return CulledTileFactors();
             var piece = new float[Pieces];
             for (int i = 0; i < Pieces; i++) piece[i] = TileFactorPiece(inputs, tile, i, corners, objectToClip, screenSize, keywords);
             return TileFactorsOfPieces(piece);

@@ -90,7 +90,7 @@ namespace GregoryTerrain.Rig
 
         public static int Run(Args a)
         {
-            var grid = PatchGridJson.Read(File.ReadAllText(a.String("grid")));
+            var grid = RigScene.ReadGrid(a);
             string dir = a.String("out");
             bool quick = a.Flag("quick");
             int width = a.Int("width", quick ? 480 : 1920), height = a.Int("height", quick ? 270 : 1080);

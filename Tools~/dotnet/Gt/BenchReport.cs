@@ -31,7 +31,7 @@ namespace GregoryTerrain.Rig
         public static int Run(Args a)
         {
             string planDir = a.String("plan"), raw = a.String("raw");
-            var grid = PatchGridJson.Read(File.ReadAllText(a.String("grid")));
+            var grid = RigScene.ReadGrid(a);
             var settings = File.ReadAllText(Path.Combine(planDir, "settings.txt")).Split(new[] { ' ', '\n' }, StringSplitOptions.RemoveEmptyEntries);
             int width = int.Parse(settings[1], CultureInfo.InvariantCulture), height = int.Parse(settings[3], CultureInfo.InvariantCulture);
             bool quick = settings[5] == "1";

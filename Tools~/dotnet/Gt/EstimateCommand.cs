@@ -18,7 +18,7 @@ namespace GregoryTerrain.Rig
     {
         public static int Run(Args a)
         {
-            var grid = PatchGridJson.Read(File.ReadAllText(a.String("grid")));
+            var grid = RigScene.ReadGrid(a);
             int[] tileCounts = a.String("tiles", "16,32,64").Split(',').Select(t => int.Parse(t, CultureInfo.InvariantCulture)).ToArray();
             double target = a.Double("target", 0.25);
             int repeat = a.Int("repeat", 20);

@@ -16,7 +16,7 @@ namespace GregoryTerrain.Rig
     {
         public static int Run(Args a)
         {
-            var grid = PatchGridJson.Read(File.ReadAllText(a.String("grid")));
+            var grid = RigScene.ReadGrid(a);
             List<Double2> points = ReadPoints(a);
             bool noiseOn = !a.Flag("no-noise");
             var n = a.Doubles("noise", 4, "0.004,16,2,2");

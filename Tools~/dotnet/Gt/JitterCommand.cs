@@ -17,7 +17,7 @@ namespace GregoryTerrain.Rig
         public static int Run(Args a)
         {
             PatchGrid grid = a.Flag("grid")
-                ? PatchGridJson.Read(File.ReadAllText(a.String("grid")))
+                ? RigScene.ReadGrid(a)
                 : HeightmapFitter.Fit(DemoGridCommand.Heightmap(129), 129, 129, 5, 5).Grid;
             var c = a.Doubles("center", 2, "0.5137,0.6262");
             string[] widths = a.String("widths", "1e-2,1e-4,1e-6").Split(',');
