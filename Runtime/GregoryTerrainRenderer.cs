@@ -280,7 +280,7 @@ namespace GregoryTerrain
         /// <summary>
         /// GPU memory the vertex cache needs for the current settings, in bytes (Core's
         /// <see cref="VertexCacheBudget.TotalBytes"/>: 864 M^2 + 16 M^2 ((L+1)^2 + 4 (L+1)) R, L the
-        /// uniform factor, else the max factor, rounded up; R = 3 with the material's GT_SNOW, else 2),
+        /// uniform factor, else the max factor, rounded up; R = 2 with the material's GT_SNOW, else 1),
         /// whichever evaluation is chosen.
         /// </summary>
         public long VertexCacheBytes

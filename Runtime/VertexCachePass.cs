@@ -5,7 +5,7 @@ namespace GregoryTerrain
 {
     /// <summary>
     /// The compute pre-pass of <see cref="VertexEvaluation.ComputeCache"/>: owns <c>_TileFactors</c>
-    /// (54 M^2 float4) and <c>_VertexCache</c> (M^2 S(L) R float4, sizes from Core's
+    /// (54 M^2 float4) and <c>_VertexCache</c> (M^2 S(L) R uint4, sizes from Core's
     /// <see cref="VertexCacheBudget"/>) and dispatches <c>CacheTileFactors</c> then
     /// <c>CacheTileVertices</c> of <c>Shaders/TerrainCache.compute</c> only when something the
     /// kernels read differs from the last dispatch: the TerrainParams block (range and origin
@@ -116,10 +116,10 @@ namespace GregoryTerrain
         {
             if (IsAllocated && tiles == _tiles && factorLimit == _factorLimit && snow == _snow) return false;
             long factorCount = VertexCacheBudget.TileFactorsFloat4s(tiles);
-            long vertexCount = VertexCacheBudget.VertexCacheFloat4s(tiles, factorLimit, snow);
+            long vertexCount = VertexCacheBudget.VertexCacheUint4s(tiles, factorLimit, snow);
             Release();
             _factors = new GraphicsBuffer(GraphicsBuffer.Target.Structured, (int)factorCount, GpuLayout.Float4Stride);
-            _vertices = new GraphicsBuffer(GraphicsBuffer.Target.Structured, (int)vertexCount, GpuLayout.Float4Stride);
+            _vertices = new GraphicsBuffer(GraphicsBuffer.Target.Structured, (int)vertexCount, GpuLayout.Uint4Stride);
             _tiles = tiles; _factorLimit = factorLimit; _snow = snow;
             _valid = false;
             return true;

@@ -54,9 +54,9 @@ float SnowDepthCap() { return _SnowMapSize.z; }
 // The vertex cache (internals.md, "Vertex cache"), written this frame by the compute pass
 // (VertexCacheKernels.hlsl: _TileFactorsRW, _VertexCacheRW, the same buffers): 2 float4 per tile
 // (the integer edge factors; inside factors, culled, evaluated) then one (the range the tile's slots
-// hold; VertexCache.hlsl), and GT_VERTEX_CACHE_FLOAT4S float4 per slot.
+// hold; VertexCache.hlsl), and GT_VERTEX_CACHE_RECORD_UINT4S uint4 per slot.
 StructuredBuffer<float4> _TileFactors GT_REGISTER(t5);
-StructuredBuffer<float4> _VertexCache GT_REGISTER(t6);
+StructuredBuffer<uint4> _VertexCache GT_REGISTER(t6);
 #endif
 
 // --- Patch grid -----------------------------------------------------------------------------------

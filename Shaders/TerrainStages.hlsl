@@ -142,9 +142,7 @@ TerrainVaryings domain_shader(TileFactors factors, const OutputPatch<TileCorner,
     float2 inside = float2(factors.inside[0], factors.inside[1]);
     uint limit = VertexCacheFactorLimit();
     uint slot = corners[0].drawPatch * VertexCacheSlotsPerTile(limit) + VertexCacheSlot(tess, edge, inside, limit);
-    float3 normalWS;
-    TerrainVertexAttributes a = ReadVertexCacheRecord(slot, normalWS);
-    return TerrainVaryingsFromAttributes(a, normalWS, tessFactor);
+    return CachedTerrainVaryings(slot, tessFactor);
 #else
     return TerrainVertex(corners[0].drawPatch, tess, tessFactor);
 #endif

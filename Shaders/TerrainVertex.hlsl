@@ -236,33 +236,40 @@ float3 VaryingsNormalWS(TerrainVaryings i) { return LambertDecodeNormal(i.normal
 
 float VaryingsHeightWeight(TerrainVaryings i) { return i.normalAndHeightWeight.z; }
 
-// The camera part: object space -> the varyings, with the world normal the caller has (the
-// vertex cache stores it; TerrainVertex transforms a.normalOS). tessFactor is only carried to the
-// GT_DEBUG_TESS_FACTOR view.
-TerrainVaryings TerrainVaryingsFromAttributes(TerrainVertexAttributes a, float3 normalWS, float tessFactor)
+// The camera part: object space -> the varyings, from the fragment's three numbers (the vertex
+// cache stores them packed; TerrainVertex computes them). tessFactor is only carried to the
+// GT_DEBUG_TESS_FACTOR view, patch to GT_DEBUG_PATCH_ID's.
+TerrainVaryings TerrainVaryingsOf(float3 positionOS, float3 normalAndHeightWeight, float snowDepth, uint patch, float tessFactor)
 {
     TerrainVaryings o;
-    o.positionCS = GT_ObjectToClip(a.positionOS);
-    o.normalAndHeightWeight = PackNormalAndHeightWeight(normalWS, TerrainHeightWeight(a.absoluteHeight, a.colorNoise));
+    o.positionCS = GT_ObjectToClip(positionOS);
+    o.normalAndHeightWeight = normalAndHeightWeight;
 #if defined(GT_RECEIVE_SHADOWS)
-    o.positionWS = GT_ObjectToWorld(a.positionOS);
+    o.positionWS = GT_ObjectToWorld(positionOS);
 #endif
 #if defined(GT_DEBUG_PATCH_ID)
-    o.patch = a.patch;
+    o.patch = patch;
 #endif
 #if defined(GT_DEBUG_TESS_FACTOR)
     o.tessFactor = tessFactor;
 #endif
 #if defined(GT_SNOW)
-    o.snowDepth = a.snowDepth;
+    o.snowDepth = snowDepth;
 #endif
     return o;
+}
+
+// The fragment's three numbers of a vertex whose normal is already in world space.
+float3 TerrainNormalAndHeightWeight(TerrainVertexAttributes a, float3 normalWS)
+{
+    return PackNormalAndHeightWeight(normalWS, TerrainHeightWeight(a.absoluteHeight, a.colorNoise));
 }
 
 TerrainVaryings TerrainVertex(uint drawPatch, float2 tess, float tessFactor)
 {
     TerrainVertexAttributes a = EvaluateTerrainVertex(drawPatch, tess);
-    return TerrainVaryingsFromAttributes(a, GT_ObjectToWorldNormal(a.normalOS), tessFactor);
+    float3 shading = TerrainNormalAndHeightWeight(a, GT_ObjectToWorldNormal(a.normalOS));
+    return TerrainVaryingsOf(a.positionOS, shading, a.snowDepth, a.patch, tessFactor);
 }
 
 #endif // GT_TERRAIN_VERTEX_INCLUDED

@@ -16,9 +16,9 @@
 #define GT_VERTEX_CACHE_MAX_FACTOR 64.0
 
 #if defined(GT_SNOW)
-    #define GT_VERTEX_CACHE_FLOAT4S 3u
+    #define GT_VERTEX_CACHE_RECORD_UINT4S 2u
 #else
-    #define GT_VERTEX_CACHE_FLOAT4S 2u
+    #define GT_VERTEX_CACHE_RECORD_UINT4S 1u
 #endif
 
 // L: the largest integer factor this frame's settings can produce: the uniform factor when set,
@@ -113,42 +113,54 @@ TileFactorSet VertexCacheIntegerFactors(TileFactorSet f)
     return f;
 }
 
-// Record = GT_VERTEX_CACHE_FLOAT4S float4: (positionOS, absoluteHeight), (normalWS, colorNoise),
-// [GT_SNOW: (snowDepth, 0, 0, 0)]. The normal is stored in world space (the adapter's
-// GT_ObjectToWorldNormal, in the kernel): the domain stage then only projects the position. The
-// patch index is not kept (GT_DEBUG_PATCH_ID reads 0).
-float4 VertexCacheRecordPart(TerrainVertexAttributes a, uint part)
+// The fragment's one interpolant (TerrainVaryings.normalAndHeightWeight: the Lambert-encoded world
+// normal e, |e| <= 2, and the height weight s in [0, 1]) in 32 bits: 11 bits for each of e.x and
+// e.y, in steps of 2 / 1023 with 0 exact (a flat terrain stays flat), and 10 bits for s, in steps of
+// 1 / 1023. Why: a 16-byte record instead of 32 (VertexCacheRecordPart). What it costs: at most a
+// half step on e, 0.105 degrees of normal over the upper hemisphere (Core's
+// PackedVaryingsStayWithinHalfAStep), and 1 / 2046 on s; both move a lit 8-bit colour by less than
+// half of one of its steps. Positions are never packed: shared edge
+// vertices must stay bit-identical (no cracks), and deep zoom needs their float.
+uint PackCachedVaryings(float3 normalAndHeightWeight)
 {
-    if (part == 0u) return float4(a.positionOS, a.absoluteHeight);
-    if (part == 1u) return float4(GT_ObjectToWorldNormal(a.normalOS), a.colorNoise);
-    return float4(a.snowDepth, 0.0, 0.0, 0.0);
+    float2 e = round(clamp(normalAndHeightWeight.xy, -2.0, 2.0) * 511.5) + 1023.0;   // 0 .. 2046
+    float s = round(saturate(normalAndHeightWeight.z) * 1023.0);                     // 0 .. 1023
+    return (uint)e.x | ((uint)e.y << 11u) | ((uint)s << 22u);
 }
 
-// The attributes of a record; its world normal goes to normalWS (a.normalOS is left 0).
-TerrainVertexAttributes VertexCacheAttributes(float4 r0, float4 r1, float4 r2, out float3 normalWS)
+float3 UnpackCachedVaryings(uint bits)
 {
-    TerrainVertexAttributes a;
-    a.positionOS = r0.xyz;
-    a.absoluteHeight = r0.w;
-    a.normalOS = float3(0.0, 0.0, 0.0);
-    normalWS = r1.xyz;
-    a.colorNoise = r1.w;
-    a.snowDepth = r2.x;
-    a.patch = 0u;
-    return a;
+    float2 e = float2(bits & 2047u, (bits >> 11u) & 2047u) - 1023.0;
+    return float3(e * (2.0 / 1023.0), (float)(bits >> 22u) * (1.0 / 1023.0));
+}
+
+// Record = GT_VERTEX_CACHE_RECORD_UINT4S uint4: (positionOS bits, PackCachedVaryings), [GT_SNOW:
+// (snowDepth bits, 0, 0, 0)]. The kernel computes what the fragment needs (the world normal through
+// the adapter's GT_ObjectToWorldNormal, encoded; the height weight), so the domain stage only
+// projects the position. uint4, not float4: the packed word is any bit pattern, NaNs included, and
+// integer loads and stores keep every bit. Why 16 bytes: the cached draw read 32 bytes a vertex
+// before, and halving that made it 1.0-1.7% faster at 2M-8M triangles on the H200 (two A/B runs,
+// performance.md); reading half of a 32-byte record changed nothing. The patch index is not kept
+// (GT_DEBUG_PATCH_ID reads 0).
+uint4 VertexCacheRecordPart(TerrainVertexAttributes a, uint part)
+{
+    if (part == 0u)
+        return uint4(asuint(a.positionOS), PackCachedVaryings(TerrainNormalAndHeightWeight(a, GT_ObjectToWorldNormal(a.normalOS))));
+    return uint4(asuint(a.snowDepth), 0u, 0u, 0u);
 }
 
 #if defined(GT_VERTEX_CACHE)
-// The record of a slot (tile base included), as the domain stage reads it.
-TerrainVertexAttributes ReadVertexCacheRecord(uint slot, out float3 normalWS)
+// The varyings of a slot's record (tile base included): what the domain stage returns.
+TerrainVaryings CachedTerrainVaryings(uint slot, float tessFactor)
 {
-    uint i = GT_VERTEX_CACHE_FLOAT4S * slot;
+    uint i = GT_VERTEX_CACHE_RECORD_UINT4S * slot;
+    uint4 r = _VertexCache[i];
     #if defined(GT_SNOW)
-    float4 r2 = _VertexCache[i + 2u];
+    float snowDepth = asfloat(_VertexCache[i + 1u].x);
     #else
-    float4 r2 = float4(0.0, 0.0, 0.0, 0.0);
+    float snowDepth = 0.0;
     #endif
-    return VertexCacheAttributes(_VertexCache[i], _VertexCache[i + 1u], r2, normalWS);
+    return TerrainVaryingsOf(asfloat(r.xyz), UnpackCachedVaryings(r.w), snowDepth, 0u, tessFactor);
 }
 #endif
 

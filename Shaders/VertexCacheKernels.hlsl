@@ -22,7 +22,7 @@
 // The same bindings as the graphics stages' _TileFactors and _VertexCache (t5, t6): binding 7 and
 // 8 in the rig either way (TerrainInputs.hlsl).
 RWStructuredBuffer<float4> _TileFactorsRW GT_REGISTER(u2);
-RWStructuredBuffer<float4> _VertexCacheRW GT_REGISTER(u3);
+RWStructuredBuffer<uint4> _VertexCacheRW GT_REGISTER(u3);
 
 groupshared float4 gtTileFactorSamples[GT_TILE_FACTOR_SAMPLES];
 groupshared float gtTileFactorPieces[GT_TILE_FACTOR_PIECES];
@@ -131,8 +131,8 @@ void CacheTileFactors(uint3 group : SV_GroupID, uint lane : SV_GroupIndex)
 
 void WriteVertexCacheRecord(uint slot, TerrainVertexAttributes a)
 {
-    [unroll] for (uint part = 0u; part < GT_VERTEX_CACHE_FLOAT4S; part++)
-        _VertexCacheRW[GT_VERTEX_CACHE_FLOAT4S * slot + part] = VertexCacheRecordPart(a, part);
+    [unroll] for (uint part = 0u; part < GT_VERTEX_CACHE_RECORD_UINT4S; part++)
+        _VertexCacheRW[GT_VERTEX_CACHE_RECORD_UINT4S * slot + part] = VertexCacheRecordPart(a, part);
 }
 
 // Point k of the tile's list "inside points, then edge 0, 1, 2, 3": its tess coordinate and slot.

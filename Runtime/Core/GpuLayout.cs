@@ -21,6 +21,9 @@ namespace GregoryTerrain
         public const int Float4Size = 4;
         /// <summary>Bytes per float4 element: the stride of every StructuredBuffer&lt;float4&gt;.</summary>
         public const int Float4Stride = 16;
+
+        /// <summary>Stride in bytes of a uint4 element (_VertexCache's records).</summary>
+        public const int Uint4Stride = 16;
         /// <summary>float4 elements of _ControlPoints per patch.</summary>
         public const int ControlPointsPerPatch = GregoryPatch.SlotCount;
         /// <summary>Floats of _ControlPoints per patch (80).</summary>

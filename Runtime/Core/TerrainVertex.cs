@@ -245,6 +245,13 @@ namespace GregoryTerrain
         }
 
         /// <summary>
+        /// HLSL <c>TerrainHeightWeight</c>: s = saturate(l + z / gamma) of eq. 14 for the vertex's
+        /// absolute height z and colour noise l, 0 without <see cref="TerrainKeywords.HeightColor"/>.
+        /// </summary>
+        public static float HeightWeight(TerrainVertexOutput v, TerrainInputs inputs, TerrainKeywords keywords) =>
+            (keywords & TerrainKeywords.HeightColor) != 0 ? HeightColor.Weight(v.colorNoise, v.absoluteHeight, inputs.HeightColorSettings().gamma) : 0f;
+
+        /// <summary>
         /// Where the snow map is read (HLSL <c>TerrainSnowPoint</c>): the global point; in paper mode the
         /// point of the patch that was evaluated (a clamped vertex sits on the patch boundary).
         /// </summary>

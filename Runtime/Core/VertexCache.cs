@@ -34,8 +34,8 @@ namespace GregoryTerrain
         /// <summary>The hardware's largest tessellation factor.</summary>
         public const float MaxFactor = TessellationSettings.HardwareMaxFactor;
 
-        /// <summary>float4 per record (R): (positionOS, absoluteHeight), (normalOS, colorNoise), and with snow (snowDepth, 0, 0, 0).</summary>
-        public static int Float4sPerRecord(bool snow) => snow ? 3 : 2;
+        /// <summary>uint4 per record (R): (positionOS bits, <see cref="PackCachedVaryings"/>), and with snow (snowDepth bits, 0, 0, 0).</summary>
+        public static int Uint4sPerRecord(bool snow) => snow ? 2 : 1;
 
         /// <summary>
         /// L from the <c>_Tess</c> float4 the GPU gets (<see cref="TessellationSettings.ToFloat4"/>:
@@ -194,16 +194,42 @@ namespace GregoryTerrain
         }
 
         /// <summary>
-        /// The record of a vertex (HLSL <c>VertexCacheRecordPart</c>) for an identity object-to-world
-        /// (the rig's): the GPU stores the normal in world space, which is then the object normal.
+        /// HLSL <c>PackCachedVaryings</c>: the fragment's three numbers (Lambert-encoded world normal
+        /// e, |e| &lt;= 2; height weight s in [0, 1]) in one uint: e.x and e.y in 11 bits each, steps of
+        /// 2 / 1023 with 0 exact, s in the top 10 bits, steps of 1 / 1023. Out-of-range values clamp.
+        /// Rounds half to even (MathF.Round); HLSL's round may not on ties, which only the unlikely
+        /// exact halves reach: compare packed words to one step.
         /// </summary>
-        public static Float4[] Record(TerrainVertexOutput v, bool snow)
+        public static uint PackCachedVaryings(Float3 normalAndHeightWeight)
         {
-            Float3 p = v.PositionOS, n = v.NormalOS;
-            var r = new Float4[Float4sPerRecord(snow)];
-            r[0] = new Float4(p.x, p.y, p.z, v.absoluteHeight);
-            r[1] = new Float4(n.x, n.y, n.z, v.colorNoise);
-            if (snow) r[2] = new Float4(v.snowDepth, 0f, 0f, 0f);
+            float ex = MathF.Round(GMath.clamp(normalAndHeightWeight.x, -2f, 2f) * 511.5f) + 1023f;   // 0 .. 2046
+            float ey = MathF.Round(GMath.clamp(normalAndHeightWeight.y, -2f, 2f) * 511.5f) + 1023f;
+            float s = MathF.Round(GMath.saturate(normalAndHeightWeight.z) * 1023f);                   // 0 .. 1023
+            return (uint)ex | ((uint)ey << 11) | ((uint)s << 22);
+        }
+
+        /// <summary>HLSL <c>UnpackCachedVaryings</c>: the three numbers of a packed word.</summary>
+        public static Float3 UnpackCachedVaryings(uint bits)
+        {
+            float ex = (bits & 2047u) - 1023f, ey = ((bits >> 11) & 2047u) - 1023f;
+            return new Float3(ex * (2f / 1023f), ey * (2f / 1023f), (bits >> 22) * (1f / 1023f));
+        }
+
+        /// <summary>
+        /// The record of a vertex (HLSL <c>VertexCacheRecordPart</c>), as 4 R words, for an identity
+        /// object-to-world (the rig's): the GPU encodes the world normal, which is then the object
+        /// normal. <paramref name="heightWeight"/>: <see cref="TerrainVertex.HeightWeight"/>.
+        /// </summary>
+        public static uint[] Record(TerrainVertexOutput v, float heightWeight, bool snow)
+        {
+            Float3 p = v.PositionOS;
+            var r = new uint[4 * Uint4sPerRecord(snow)];
+            r[0] = (uint)BitConverter.SingleToInt32Bits(p.x);
+            r[1] = (uint)BitConverter.SingleToInt32Bits(p.y);
+            r[2] = (uint)BitConverter.SingleToInt32Bits(p.z);
+            Float2 e = NormalEncoding.LambertEncode(v.NormalOS);
+            r[3] = PackCachedVaryings(new Float3(e.x, e.y, heightWeight));
+            if (snow) r[4] = (uint)BitConverter.SingleToInt32Bits(v.snowDepth);
             return r;
         }
     }

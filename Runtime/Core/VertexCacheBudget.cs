@@ -13,9 +13,9 @@ namespace GregoryTerrain
     /// <c>CacheTileFactors</c> kernel can give a tile.</item>
     /// <item>Slots per tile <c>S(L) = (L+1)^2 + 4 (L+1)</c>: the inside grid of the largest inside
     /// factors, then each of the four edges' <c>L+1</c> points.</item>
-    /// <item>Float4s per slot <c>R</c>: 2, or 3 with GT_SNOW.</item>
+    /// <item>uint4 per slot <c>R</c>: 1, or 2 with GT_SNOW.</item>
     /// <item><c>_TileFactors</c>: <c>54 M^2</c> float4 (864 M^2 bytes); <c>_VertexCache</c>:
-    /// <c>M^2 S(L) R</c> float4 (16 bytes each).</item>
+    /// <c>M^2 S(L) R</c> uint4 (16 bytes each).</item>
     /// </list>
     /// </summary>
     public static class VertexCacheBudget
@@ -42,16 +42,16 @@ namespace GregoryTerrain
         /// <summary>Bytes of <c>_TileFactors</c>: 864 M^2.</summary>
         public static long TileFactorsBytes(int tiles) => TileFactorsFloat4s(tiles) * GpuLayout.Float4Stride;
 
-        /// <summary>float4 elements of <c>_VertexCache</c>: M^2 S(L) R.</summary>
-        public static long VertexCacheFloat4s(int tiles, int factorLimit, bool snow)
+        /// <summary>uint4 elements of <c>_VertexCache</c>: M^2 S(L) R.</summary>
+        public static long VertexCacheUint4s(int tiles, int factorLimit, bool snow)
         {
             CheckTiles(tiles);
-            return (long)tiles * tiles * VertexCache.SlotsPerTile(factorLimit) * VertexCache.Float4sPerRecord(snow);
+            return (long)tiles * tiles * VertexCache.SlotsPerTile(factorLimit) * VertexCache.Uint4sPerRecord(snow);
         }
 
         /// <summary>Bytes of <c>_VertexCache</c>: 16 M^2 S(L) R.</summary>
         public static long VertexCacheBytes(int tiles, int factorLimit, bool snow) =>
-            VertexCacheFloat4s(tiles, factorLimit, snow) * GpuLayout.Float4Stride;
+            VertexCacheUint4s(tiles, factorLimit, snow) * GpuLayout.Uint4Stride;
 
         /// <summary>GPU memory of both buffers together.</summary>
         public static long TotalBytes(int tiles, int factorLimit, bool snow) =>
@@ -72,7 +72,7 @@ namespace GregoryTerrain
             long cache = VertexCacheBytes(tiles, factorLimit, snow);
             if (cache > limit)
                 throw new ArgumentException(FormattableString.Invariant(
-                    $"the vertex cache for tiles = {tiles}, factor limit {factorLimit}{(snow ? ", snow" : "")} needs {cache} bytes (_VertexCache = M^2 ((L+1)^2 + 4 (L+1)) x {VertexCache.Float4sPerRecord(snow)} float4), more than the largest buffer, {limit} bytes; lower tiles or the max/uniform factor, or evaluate in the domain stage"),
+                    $"the vertex cache for tiles = {tiles}, factor limit {factorLimit}{(snow ? ", snow" : "")} needs {cache} bytes (_VertexCache = M^2 ((L+1)^2 + 4 (L+1)) x {VertexCache.Uint4sPerRecord(snow)} uint4), more than the largest buffer, {limit} bytes; lower tiles or the max/uniform factor, or evaluate in the domain stage"),
                     "tiles");
             long factors = TileFactorsBytes(tiles);
             if (factors > limit)

@@ -98,16 +98,16 @@ namespace GregoryTerrain.Tests
         public void BytesOfHandWorkedCases()
         {
             // M = 1, L = 1: a 2 x 2 inside grid (4 slots) + 4 edges of 2 points (8) = 12 slots;
-            // 2 float4 each, 16 bytes: 384 bytes; with snow 3 float4: 576.
-            Assert.That(VertexCacheBudget.VertexCacheBytes(1, 1, false), Is.EqualTo(384));
-            Assert.That(VertexCacheBudget.VertexCacheBytes(1, 1, true), Is.EqualTo(576));
-            // M = 16, L = 64: 65^2 + 4 * 65 = 4485 slots per tile, 256 tiles, 2 float4: 2,296,320 float4.
-            Assert.That(VertexCacheBudget.VertexCacheFloat4s(16, 64, false), Is.EqualTo(256L * 4485 * 2));
-            Assert.That(VertexCacheBudget.VertexCacheBytes(16, 64, false), Is.EqualTo(36_741_120L));
+            // one uint4 each, 16 bytes: 192 bytes; with snow 2 uint4: 384.
+            Assert.That(VertexCacheBudget.VertexCacheBytes(1, 1, false), Is.EqualTo(192));
+            Assert.That(VertexCacheBudget.VertexCacheBytes(1, 1, true), Is.EqualTo(384));
+            // M = 16, L = 64: 65^2 + 4 * 65 = 4485 slots per tile, 256 tiles, one uint4: 1,148,160 uint4.
+            Assert.That(VertexCacheBudget.VertexCacheUint4s(16, 64, false), Is.EqualTo(256L * 4485));
+            Assert.That(VertexCacheBudget.VertexCacheBytes(16, 64, false), Is.EqualTo(18_370_560L));
             // Tile factors: two float4 per tile.
             Assert.That(VertexCacheBudget.TileFactorsFloat4s(16), Is.EqualTo(256 * 54));
             Assert.That(VertexCacheBudget.TileFactorsBytes(16), Is.EqualTo(221_184));
-            Assert.That(VertexCacheBudget.TotalBytes(16, 64, false), Is.EqualTo(36_741_120L + 221_184));
+            Assert.That(VertexCacheBudget.TotalBytes(16, 64, false), Is.EqualTo(18_370_560L + 221_184));
             TestContext.Out.WriteLine($"M = 16, L = 64: {VertexCacheBudget.TotalBytes(16, 64, false)} bytes, with snow {VertexCacheBudget.TotalBytes(16, 64, true)}; M = 64, L = 64, snow: {VertexCacheBudget.TotalBytes(64, 64, true)}");
         }
 
@@ -116,7 +116,7 @@ namespace GregoryTerrain.Tests
         {
             // M = 1024 (TessellationSettings' limit), L = 64, snow: about 2.3e11 bytes, far above int.
             long bytes = VertexCacheBudget.VertexCacheBytes(1024, 64, true);
-            double expect = 1024.0 * 1024.0 * 4485.0 * 3.0 * 16.0;
+            double expect = 1024.0 * 1024.0 * 4485.0 * 2.0 * 16.0;
             Assert.That((double)bytes, Is.EqualTo(expect));
             Assert.That(bytes, Is.GreaterThan((long)int.MaxValue));
         }
@@ -135,9 +135,9 @@ namespace GregoryTerrain.Tests
         [Test]
         public void CheckFitsCapsAtTwoGibibytesWhateverTheDeviceSays()
         {
-            // M = 64, L = 64, snow: 64^2 * 4485 * 3 * 16 = 881,725,440 bytes: fits 2 GiB.
+            // M = 64, L = 64, snow: 64^2 * 4485 * 2 * 16 = 587,857,920 bytes: fits 2 GiB.
             Assert.DoesNotThrow(() => VertexCacheBudget.CheckFits(64, 64, true, long.MaxValue));
-            // M = 128: four times that, above 2 GiB even on a device reporting more.
+            // M = 128: four times that (2,351,431,680), above 2 GiB even on a device reporting more.
             var e = Assert.Throws<ArgumentException>(() => VertexCacheBudget.CheckFits(128, 64, true, long.MaxValue));
             Assert.That(e.Message, Does.Contain((1L << 31).ToString(System.Globalization.CultureInfo.InvariantCulture)));
         }

@@ -47,8 +47,8 @@ namespace GregoryTerrain.Tests
         public void SizesFollowTheFormula()
         {
             Assert.That(VertexCache.SlotsPerTile(64), Is.EqualTo(65 * 65 + 4 * 65));
-            Assert.That(VertexCacheBudget.VertexCacheBytes(32, 64, false), Is.EqualTo(32L * 32 * 4485 * 2 * 16));
-            Assert.That(VertexCacheBudget.VertexCacheBytes(32, 64, true), Is.EqualTo(32L * 32 * 4485 * 3 * 16));
+            Assert.That(VertexCacheBudget.VertexCacheBytes(32, 64, false), Is.EqualTo(32L * 32 * 4485 * 1 * 16));
+            Assert.That(VertexCacheBudget.VertexCacheBytes(32, 64, true), Is.EqualTo(32L * 32 * 4485 * 2 * 16));
             Assert.That(VertexCacheBudget.TileFactorsBytes(16), Is.EqualTo(16L * 16 * 54 * 16));
             // The factor records, the ranges, the factor samples: every index of the three parts
             // inside the buffer, none shared.
@@ -135,18 +135,74 @@ namespace GregoryTerrain.Tests
         }
 
         [Test]
-        public void RecordPacksObjectSpaceAndTheShadingInputs()
+        public void RecordHoldsThePositionBitsAndThePackedShading()
         {
             var v = new TerrainVertexOutput
             {
-                position = new Float3(1f, 2f, 3f), normal = new Float3(0f, 0.6f, 0.8f),
+                position = new Float3(1f, 2f, -3.5f), normal = new Float3(0f, 0.6f, 0.8f),
                 absoluteHeight = 2.5f, colorNoise = -0.25f, snowDepth = 0.125f,
             };
-            Float4[] r = VertexCache.Record(v, snow: true);
-            Assert.That(r[0], Is.EqualTo(new Float4(1f, 3f, 2f, 2.5f)));   // (x, z, y): Unity is Y-up
-            Assert.That(r[1], Is.EqualTo(new Float4(0f, 0.8f, 0.6f, -0.25f)));
-            Assert.That(r[2], Is.EqualTo(new Float4(0.125f, 0f, 0f, 0f)));
-            Assert.That(VertexCache.Record(v, snow: false).Length, Is.EqualTo(2));
+            uint[] r = VertexCache.Record(v, 0.75f, snow: true);
+            Assert.That(r.Length, Is.EqualTo(8));
+            // (x, z, y): Unity is Y-up; the float bits as they are.
+            Assert.That(new[] { r[0], r[1], r[2] }, Is.EqualTo(new[] { Bits(1f), Bits(-3.5f), Bits(2f) }));
+            Float2 e = NormalEncoding.LambertEncode(new Float3(0f, 0.8f, 0.6f));
+            Assert.That(r[3], Is.EqualTo(VertexCache.PackCachedVaryings(new Float3(e.x, e.y, 0.75f))));
+            Assert.That(new[] { r[4], r[5], r[6], r[7] }, Is.EqualTo(new[] { Bits(0.125f), 0u, 0u, 0u }));
+            Assert.That(VertexCache.Record(v, 0.75f, snow: false).Length, Is.EqualTo(4));
+            Assert.That(VertexCache.Uint4sPerRecord(false), Is.EqualTo(1));
+            Assert.That(VertexCache.Uint4sPerRecord(true), Is.EqualTo(2));
+        }
+
+        static uint Bits(float f) => (uint)BitConverter.SingleToInt32Bits(f);
+
+        [Test]
+        public void PackedVaryingsLayOutElevenElevenTenBits()
+        {
+            // e = 0 is code 1023 exactly: a flat terrain's normal comes back straight up.
+            Assert.That(VertexCache.PackCachedVaryings(new Float3(0f, 0f, 0f)), Is.EqualTo(1023u | (1023u << 11)));
+            Assert.That(VertexCache.UnpackCachedVaryings(1023u | (1023u << 11)), Is.EqualTo(new Float3(0f, 0f, 0f)));
+            // The ends: e = -2 -> 0, e = 2 -> 2046, s = 1 -> 1023.
+            Assert.That(VertexCache.PackCachedVaryings(new Float3(-2f, 2f, 1f)), Is.EqualTo(0u | (2046u << 11) | (1023u << 22)));
+            Assert.That(VertexCache.UnpackCachedVaryings(0u | (2046u << 11) | (1023u << 22)), Is.EqualTo(new Float3(-2f, 2f, 1f)));
+            // Out of range clamps (never spills into the next field); NaN would not reach here (the
+            // kernel's normal is unit, the weight saturated).
+            Assert.That(VertexCache.PackCachedVaryings(new Float3(-7f, 9f, 3f)), Is.EqualTo(VertexCache.PackCachedVaryings(new Float3(-2f, 2f, 1f))));
+            Assert.That(VertexCache.PackCachedVaryings(new Float3(0f, 0f, -0.5f)) >> 22, Is.EqualTo(0u));
+        }
+
+        /// <summary>
+        /// Every upper-hemisphere normal and every weight comes back within half a step of its code
+        /// (1 / 1023 on e, 1 / 2046 on s), and the decoded normal within 0.12 degrees: less than half
+        /// an 8-bit step of a Lambert term (0.5 / 255 = 0.0020 rad, as a change of n . l).
+        /// </summary>
+        [Test]
+        public void PackedVaryingsStayWithinHalfAStep()
+        {
+            double worstE = 0, worstS = 0, worstAngle = 0;
+            for (int i = 0; i <= 400; i++)
+            {
+                double polar = Math.PI / 2 * i / 400;   // 0: straight up, pi / 2: a vertical wall
+                for (int j = 0; j < 360; j++)
+                {
+                    double azimuth = 2 * Math.PI * (j + 0.37) / 360;
+                    var n = new Float3((float)(Math.Sin(polar) * Math.Cos(azimuth)), (float)Math.Cos(polar), (float)(Math.Sin(polar) * Math.Sin(azimuth)));
+                    Float2 e = NormalEncoding.LambertEncode(n);
+                    float s = (i * 360 + j) / (401f * 360f);
+                    Float3 back = VertexCache.UnpackCachedVaryings(VertexCache.PackCachedVaryings(new Float3(e.x, e.y, s)));
+                    worstE = Math.Max(worstE, Math.Max(Math.Abs(back.x - e.x), Math.Abs(back.y - e.y)));
+                    worstS = Math.Max(worstS, Math.Abs(back.z - s));
+                    Float3 m = NormalEncoding.LambertDecode(new Float2(back.x, back.y));
+                    double cos = GMath.dot(m, n) / (GMath.length(m) * GMath.length(n));
+                    worstAngle = Math.Max(worstAngle, Math.Acos(Math.Min(1.0, cos)));
+                }
+            }
+            TestContext.Out.WriteLine("packed varyings, upper hemisphere: e within {0:G4} (half step {1:G4}), s within {2:G4} (half step {3:G4}), normal within {4:G4} degrees",
+                worstE, 1.0 / 1023, worstS, 0.5 / 1023, worstAngle * 180 / Math.PI);
+            Assert.That(worstE, Is.LessThanOrEqualTo(1.0 / 1023 + 1e-6));
+            Assert.That(worstS, Is.LessThanOrEqualTo(0.5 / 1023 + 1e-6));
+            Assert.That(worstAngle * 180 / Math.PI, Is.LessThan(0.12));
+            Assert.That(worstAngle, Is.LessThan(0.5 / 255));
         }
     }
 }

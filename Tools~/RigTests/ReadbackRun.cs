@@ -115,6 +115,15 @@ namespace GregoryTerrain.Rig.Tests
             File.WriteAllBytes(path, bytes);
         }
 
+        /// <summary>A dump's 32-bit words as they are (records holding bits, not floats).</summary>
+        public static uint[] ReadUints(string path)
+        {
+            byte[] b = File.ReadAllBytes(path);
+            var u = new uint[b.Length / 4];
+            Buffer.BlockCopy(b, 0, u, 0, u.Length * 4);
+            return u;
+        }
+
         public static float[] ReadFloats(string path)
         {
             byte[] b = File.ReadAllBytes(path);

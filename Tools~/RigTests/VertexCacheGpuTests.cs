@@ -37,7 +37,8 @@ namespace GregoryTerrain.Rig.Tests
         {
             public HarnessRun Run;
             public TerrainInputs Inputs;
-            public float[] Factors, Records;
+            public float[] Factors;
+            public uint[] Records;
             public int Tiles, Limit, Slots;
 
             // The tile's factor record, float k of its two float4 (VertexCache.FactorIndex).
@@ -51,11 +52,18 @@ namespace GregoryTerrain.Rig.Tests
             /// <summary>The kernel (re)evaluated the tile's slots in the last frame.</summary>
             public bool Evaluated(int tile) => Record(tile, 7) != 0f;
 
-            /// <summary>The record at a slot of a tile, as <see cref="VertexCache.Record"/> lays it out.</summary>
-            public Float4 Part(int tile, int slot, int part)
+            /// <summary>uint4 part of the record at a slot of a tile, as <see cref="VertexCache.Record"/> lays it out (no snow: one part).</summary>
+            public (uint x, uint y, uint z, uint w) Part(int tile, int slot, int part)
             {
-                int o = 4 * (2 * (tile * Slots + slot) + part);
-                return new Float4(Records[o], Records[o + 1], Records[o + 2], Records[o + 3]);
+                int o = 4 * (VertexCache.Uint4sPerRecord(false) * (tile * Slots + slot) + part);
+                return (Records[o], Records[o + 1], Records[o + 2], Records[o + 3]);
+            }
+
+            /// <summary>The record's object-space position (its first three words' float bits).</summary>
+            public Float3 PositionOS(int tile, int slot)
+            {
+                var r = Part(tile, slot, 0);
+                return new Float3(BitConverter.Int32BitsToSingle((int)r.x), BitConverter.Int32BitsToSingle((int)r.y), BitConverter.Int32BitsToSingle((int)r.z));
             }
         }
 
@@ -94,9 +102,9 @@ namespace GregoryTerrain.Rig.Tests
             frame.Run = HarnessRun.Harness(args.ToArray());
             frame.Run.AssertSucceeded();
             frame.Factors = ReadbackRun.ReadFloats(factors);
-            frame.Records = ReadbackRun.ReadFloats(records);
+            frame.Records = ReadbackRun.ReadUints(records);
             Assert.That(frame.Factors.Length, Is.EqualTo(4 * VertexCacheBudget.TileFactorsFloat4s(tiles)), "factors, range and factor samples of every tile");
-            Assert.That(frame.Records.Length, Is.EqualTo(8 * tiles * tiles * frame.Slots));
+            Assert.That(frame.Records.Length, Is.EqualTo(4 * VertexCache.Uint4sPerRecord(false) * tiles * tiles * frame.Slots));
             return frame;
         }
 
@@ -109,8 +117,9 @@ namespace GregoryTerrain.Rig.Tests
         }
 
         /// <summary>
-        /// Every slot the kernel writes holds Core's float TerrainVertex at that point (position, normal,
-        /// absolute height, colour noise), and no other slot is touched.
+        /// Every slot the kernel writes holds Core's float TerrainVertex at that point (position; the
+        /// packed world normal and height weight within half a step of Core's, plus float error), and
+        /// no other slot is touched.
         /// </summary>
         [Test]
         public void CacheHoldsTheCoreVertexInEverySlotTheKernelWrites()
@@ -119,8 +128,8 @@ namespace GregoryTerrain.Rig.Tests
             CacheFrame f = DrawCached("uniform", "0.2,0.15,0.7,0.65", 4, new[] { "--factor", "31" }, 96, 64);
             Assert.That(VertexCache.GroupsPerTile(f.Limit), Is.EqualTo(3));
             double extent = ReadbackRun.TerrainExtent(_grid);
-            double maxPos = 0, maxNormal = 0, maxHeight = 0, maxColour = 0;
-            int compared = 0, stray = 0;
+            double maxPos = 0, maxNormal = 0, maxWeight = 0;
+            int compared = 0, stray = 0, sameWord = 0;
             for (int tile = 0; tile < f.Tiles * f.Tiles; tile++)
             {
                 Assert.That(f.FactorsOf(tile), Is.EqualTo(VertexCache.IntegerFactors(new TileFactorSet(new Float4(31, 31, 31, 31), new Float2(31, 31)))), "tile " + tile);
@@ -128,25 +137,30 @@ namespace GregoryTerrain.Rig.Tests
                 foreach (var (tess, slot) in VertexCache.TilePoints(f.FactorsOf(tile), f.Limit))
                 {
                     written.Add(slot);
-                    Float4[] core = VertexCache.Record(TerrainVertex.Evaluate(f.Inputs, tile, tess, Keywords), false);
-                    Float4 p = f.Part(tile, slot, 0), n = f.Part(tile, slot, 1);
-                    maxPos = Math.Max(maxPos, ReadbackRun.Distance(new Float3(p.x, p.y, p.z), new Float3(core[0].x, core[0].y, core[0].z)) / extent);
-                    maxNormal = Math.Max(maxNormal, ReadbackRun.Distance(new Float3(n.x, n.y, n.z), new Float3(core[1].x, core[1].y, core[1].z)));
-                    maxHeight = Math.Max(maxHeight, Math.Abs(p.w - core[0].w) / extent);
-                    maxColour = Math.Max(maxColour, Math.Abs(n.w - core[1].w));
+                    TerrainVertexOutput v = TerrainVertex.Evaluate(f.Inputs, tile, tess, Keywords);
+                    uint[] core = VertexCache.Record(v, TerrainVertex.HeightWeight(v, f.Inputs, Keywords), false);
+                    maxPos = Math.Max(maxPos, ReadbackRun.Distance(f.PositionOS(tile, slot), v.PositionOS) / extent);
+                    // The encoded normal and the weight before packing (Core's), against the GPU's unpacked.
+                    Float2 e = NormalEncoding.LambertEncode(v.NormalOS);
+                    Float3 gpu = VertexCache.UnpackCachedVaryings(f.Part(tile, slot, 0).w);
+                    maxNormal = Math.Max(maxNormal, Math.Max(Math.Abs(gpu.x - e.x), Math.Abs(gpu.y - e.y)));
+                    maxWeight = Math.Max(maxWeight, Math.Abs(gpu.z - TerrainVertex.HeightWeight(v, f.Inputs, Keywords)));
+                    if (f.Part(tile, slot, 0).w == core[3]) sameWord++;
                     compared++;
                 }
                 for (int slot = 0; slot < f.Slots; slot++)
-                    if (!written.Contains(slot) && (!f.Part(tile, slot, 0).Equals(default(Float4)) || !f.Part(tile, slot, 1).Equals(default(Float4)))) stray++;
+                    if (!written.Contains(slot) && !f.Part(tile, slot, 0).Equals(default((uint, uint, uint, uint)))) stray++;
             }
-            TestContext.Out.WriteLine("{0} cached vertices against Core: position {1:G3} of the extent, normal {2:G3}, absolute height {3:G3}, colour noise {4:G3}",
-                compared, maxPos, maxNormal, maxHeight, maxColour);
+            TestContext.Out.WriteLine("{0} cached vertices against Core: position {1:G3} of the extent, encoded normal {2:G3} (half step {3:G3}), height weight {4:G3} (half step {5:G3}); packed word equal to Core's in {6}",
+                compared, maxPos, maxNormal, 1.0 / 1023, maxWeight, 0.5 / 1023, sameWord);
             Assert.That(compared, Is.EqualTo(16 * (30 * 30 + 4 * 32)), "4 x 4 tiles, 30 x 30 interior points and 4 edges of 32 at F = 31");
             Assert.That(stray, Is.EqualTo(0), "slots written that no point owns");
             Assert.That(maxPos, Is.LessThan(1e-5));
-            Assert.That(maxNormal, Is.LessThan(1e-4));
-            Assert.That(maxHeight, Is.LessThan(1e-5));
-            Assert.That(maxColour, Is.LessThan(1e-4));
+            // Half a step, plus the float difference of the unpacked value's inputs (1e-4 on the normal
+            // and the colour noise before this change).
+            Assert.That(maxNormal, Is.LessThan(1.0 / 1023 + 1e-4));
+            Assert.That(maxWeight, Is.LessThan(0.5 / 1023 + 1e-4));
+            Assert.That(sameWord, Is.GreaterThan(compared * 9 / 10), "most packed words are Core's exactly");
         }
 
         /// <summary>
@@ -310,7 +324,7 @@ namespace GregoryTerrain.Rig.Tests
                 Assert.That(moved.Evaluated(tile), Is.EqualTo(changed), "tile " + tile + ": evaluated exactly when its factors changed");
                 if (changed) evaluated++;
                 foreach (var (_, slot) in VertexCache.TilePoints(fresh.FactorsOf(tile), fresh.Limit))
-                    for (int part = 0; part < 2; part++, slots++)
+                    for (int part = 0; part < VertexCache.Uint4sPerRecord(false); part++, slots++)
                         Assert.That(moved.Part(tile, slot, part), Is.EqualTo(fresh.Part(tile, slot, part)), "tile " + tile + " slot " + slot);
             }
             TestContext.Out.WriteLine("camera turned 3 degrees: {0} of {1} drawn tiles evaluated again, {2} record parts equal to a fresh build", evaluated, drawn, slots);
@@ -365,7 +379,7 @@ namespace GregoryTerrain.Rig.Tests
                         for (int k = 0; k <= (int)fa; k++)
                         {
                             vertexPairs++;
-                            for (int part = 0; part < 2; part++)
+                            for (int part = 0; part < VertexCache.Uint4sPerRecord(false); part++)
                                 if (!f.Part(a, VertexCache.EdgeSlot(mine, k, f.Limit), part).Equals(f.Part(b, VertexCache.EdgeSlot(theirs, k, f.Limit), part)))
                                 { differingVertices++; break; }
                         }
@@ -387,7 +401,7 @@ namespace GregoryTerrain.Rig.Tests
                                                  new Float2(h[8 * tile + 4], h[8 * tile + 5]));
                 Assert.That(f.FactorsOf(tile), Is.EqualTo(VertexCache.IntegerFactors(fromHull)), "tile " + tile + ": the kernel's factors against hull_const's");
             }
-            int nan = f.Records.Count(x => !float.IsFinite(x));
+            int nan = f.Records.Where((w, i) => i % 4 != 3).Count(w => !float.IsFinite(BitConverter.Int32BitsToSingle((int)w)));   // position words
             TestContext.Out.WriteLine("adaptive cache: {0} of 64 tiles culled, factors used {1}, {2} shared edges, {3} shared-edge vertex pairs, {4} differ; {5} triangles",
                 culled, string.Join(" ", distinct.OrderBy(x => x)), edgePairs, vertexPairs, differingVertices, f.Run.Long("stat", "clipping_invocations"));
             Assert.That(nan, Is.EqualTo(0));
