@@ -37,7 +37,7 @@ namespace GregoryTerrain.Rig.Tests
             _work = Path.Combine(Path.GetTempPath(), "gt-snowrender-" + Guid.NewGuid().ToString("N"));
             Directory.CreateDirectory(_work);
             var args = new List<string> { Path.Combine(_root, "Tools~", "gt"), "shaders" };
-            foreach (string v in new[] { "base", "snow", "readback", "readback+snow", "noise+height_color+snow" }) { args.Add("--only"); args.Add(v); }
+            foreach (string v in new[] { "base", "snow", "readback", "readback+snow", "noise+height_color+snow", "noise+snow", "noise+snow+vertex_cache" }) { args.Add("--only"); args.Add(v); }
             Exec("bash", args.ToArray(), new Dictionary<string, string> { ["GT_BUILD_DIR"] = _work });
             _spirv = Path.Combine(_work, "spirv");
         }
@@ -152,13 +152,20 @@ namespace GregoryTerrain.Rig.Tests
 
         // ---- the snow stages against Core --------------------------------------------------------
 
-        [Test]
-        public void ReadbackWithSnowIsCoresTerrainVertexWithSnow()
+        const int SceneTiles = 8, SceneFactor = 15, SceneMapSize = 128;
+        const float SceneCap = 0.02f;
+
+        /// <summary>
+        /// The snow scene of the readback tests, its buffers written to <paramref name="dir"/>: the demo
+        /// grid, 8 x 8 tiles at F = 15, noise, a top-down camera, and a depth map with structure at every
+        /// scale the bilinear read sees, from 0 to the cap (depth.f32, size.f32).
+        /// </summary>
+        TerrainInputs WriteSnowScene(string dir)
         {
-            const int tiles = 8, factor = 15, r = 128;
-            const float cap = 0.02f;
+            const int tiles = SceneTiles, factor = SceneFactor, r = SceneMapSize;
+            const float cap = SceneCap;
             string grid = Path.Combine(_work, "grid.json");
-            Exec(_cli, new[] { "demo-grid", "--samples", "129", "--out", grid }, null);
+            if (!File.Exists(grid)) Exec(_cli, new[] { "demo-grid", "--samples", "129", "--out", grid }, null);
             PatchGrid g = PatchGridJson.Read(File.ReadAllText(grid));
             var p = TerrainParams.Create(g, TerrainRange.full, RangeOrigin.zero, TessellationSettings.Uniform(tiles, factor),
                 new NoiseSettings(0.004f, 16f, 2f, 2f, 6), new HeightColorSettings(0.25f, 0.15f, 24f), new Float3(0, 0, 0), new Float3(1, 1, 1));
@@ -169,7 +176,6 @@ namespace GregoryTerrain.Rig.Tests
                     depth[j * r + i] = cap * (float)(0.5 + 0.5 * Math.Sin(0.37 * i + 0.11 * j * j / r) * Math.Cos(0.23 * j));
             var snow = new SnowMap(depth, r, cap);
             TerrainInputs inputs = TerrainInputs.Create(g, p).WithSnow(snow);
-            string dir = Path.Combine(_work, "readback");
             Directory.CreateDirectory(dir);
             WriteFloats(Path.Combine(dir, "control_points.f32"), inputs.ControlPoints);
             WriteFloats(Path.Combine(dir, "regions.f32"), inputs.Regions);
@@ -179,13 +185,27 @@ namespace GregoryTerrain.Rig.Tests
             WriteFloats(Path.Combine(dir, "depth.f32"), depth);
             Float4 size = snow.MapSize;
             WriteFloats(Path.Combine(dir, "size.f32"), new[] { size.x, size.y, size.z, size.w });
+            return inputs;
+        }
+
+        string[] SnowMapArgs(string dir) => new[] { "--snow-depth", Path.Combine(dir, "depth.f32"), "--snow-params", Path.Combine(dir, "size.f32") };
+
+        [Test]
+        public void ReadbackWithSnowIsCoresTerrainVertexWithSnow()
+        {
+            const int tiles = SceneTiles, factor = SceneFactor, r = SceneMapSize;
+            const float cap = SceneCap;
+            string dir = Path.Combine(_work, "readback");
+            TerrainInputs inputs = WriteSnowScene(dir);
             int vertices = tiles * tiles * (factor + 1) * (factor + 1);
             string v = Path.Combine(_spirv, "readback+snow"), readback = Path.Combine(dir, "readback.f32");
-            HarnessRun h = HarnessRun.Harness("--vert", Path.Combine(v, "vert.spv"), "--tesc", Path.Combine(v, "tesc.spv"),
+            HarnessRun h = HarnessRun.Harness(new[]
+            {
+                "--vert", Path.Combine(v, "vert.spv"), "--tesc", Path.Combine(v, "tesc.spv"),
                 "--tese", Path.Combine(v, "tese.spv"), "--frag", Path.Combine(v, "frag.spv"), "--buffers", dir,
                 "--patches", (tiles * tiles).ToString(), "--width", "64", "--height", "64", "--device", "llvmpipe",
                 "--readback", readback, "--readback-floats", (12 * vertices).ToString(),
-                "--snow-depth", Path.Combine(dir, "depth.f32"), "--snow-params", Path.Combine(dir, "size.f32"));
+            }.Concat(SnowMapArgs(dir)).ToArray());
             Assert.That(h.ExitCode, Is.EqualTo(0), h.Stdout + h.Stderr);
             Assert.That(h.Long("inputs", "snow_resolution"), Is.EqualTo(r));
             float[] rb = ReadFloats(readback);
@@ -209,6 +229,78 @@ namespace GregoryTerrain.Rig.Tests
             // readback test holds the same path to this size).
             Assert.That(worst, Is.LessThan(2e-6));
         }
+
+        /// <summary>
+        /// GT_SNOW through the vertex cache: the record's second uint4 holds the vertex's snow depth
+        /// (its first, the snowed position and the packed shading), each slot Core's vertex with snow,
+        /// and the cached draw shows the direct snow draw's picture (F = 15 is odd: fractional_odd and
+        /// integer partitioning make the same vertices).
+        /// </summary>
+        [Test]
+        public void CachedSnowRecordsHoldCoresSnowedVertexAndDrawTheDirectPicture()
+        {
+            const int tiles = SceneTiles;
+            const TerrainKeywords keywords = TerrainKeywords.Noise | TerrainKeywords.Snow;
+            string dir = Path.Combine(_work, "cached");
+            TerrainInputs inputs = WriteSnowScene(dir);
+            int limit = VertexCache.FactorLimit(inputs.Params.tess), slots = VertexCache.SlotsPerTile(limit);
+            string cache = Path.Combine(_spirv, "noise+snow+vertex_cache"), direct = Path.Combine(_spirv, "noise+snow");
+            string factorsFile = Path.Combine(dir, "tile_factors.f32"), recordsFile = Path.Combine(dir, "vertex_cache.u32");
+            string n = tiles.ToString(System.Globalization.CultureInfo.InvariantCulture);
+            HarnessRun Draw(string variant, string png, params string[] extra) => HarnessRun.Harness(new[]
+            {
+                "--vert", Path.Combine(variant, "vert.spv"), "--tesc", Path.Combine(variant, "tesc.spv"), "--tese", Path.Combine(variant, "tese.spv"),
+                "--frag", Path.Combine(variant, "frag.spv"), "--buffers", dir, "--patches", (tiles * tiles).ToString(), "--width", "64", "--height", "64",
+                "--device", "llvmpipe", "--stats", "--png", png,
+            }.Concat(SnowMapArgs(dir)).Concat(extra).ToArray());
+            HarnessRun cached = Draw(cache, Path.Combine(dir, "cached.png"),
+                "--storage", "7:" + VertexCacheBudget.TileFactorsBytes(tiles), "--storage", "8:" + VertexCacheBudget.VertexCacheBytes(tiles, limit, true),
+                "--compute", Path.Combine(cache, "cache_factors.spv") + ":" + n + "," + n + ",1",
+                "--compute", Path.Combine(cache, "cache_vertices.spv") + ":" + n + "," + n + "," + VertexCache.GroupsPerTile(limit),
+                "--dump-storage", "7:" + factorsFile, "--dump-storage", "8:" + recordsFile);
+            cached.AssertSucceeded();
+            HarnessRun plain = Draw(direct, Path.Combine(dir, "direct.png"));
+            plain.AssertSucceeded();
+            float[] factors = ReadFloats(factorsFile);
+            uint[] records = ReadbackRun.ReadUints(recordsFile);
+            Assert.That(records.Length, Is.EqualTo(8 * tiles * tiles * slots), "two uint4 a slot with snow");
+            double worstPosition = 0, worstDepth = 0, worstNormal = 0, maxDepth = 0;
+            int compared = 0, padding = 0;
+            for (int tile = 0; tile < tiles * tiles; tile++)
+            {
+                long fi = 4 * VertexCache.FactorIndex(tile);
+                var f = new TileFactorSet(new Float4(factors[fi], factors[fi + 1], factors[fi + 2], factors[fi + 3]), new Float2(factors[fi + 4], factors[fi + 5]));
+                Assert.That(f.IsCulled, Is.False, "the top-down view sees tile " + tile);
+                foreach (var (tess, slot) in VertexCache.TilePoints(f, limit))
+                {
+                    TerrainVertexOutput v = TerrainVertex.Evaluate(inputs, tile, tess, keywords);
+                    uint[] core = VertexCache.Record(v, TerrainVertex.HeightWeight(v, inputs, keywords), snow: true);
+                    int o = 8 * (tile * slots + slot);
+                    var gpuPosition = new Float3(Float(records[o]), Float(records[o + 1]), Float(records[o + 2]));
+                    worstPosition = Math.Max(worstPosition, GMath.length(gpuPosition - v.PositionOS));
+                    Float3 gpuShading = VertexCache.UnpackCachedVaryings(records[o + 3]), coreShading = VertexCache.UnpackCachedVaryings(core[3]);
+                    worstNormal = Math.Max(worstNormal, Math.Max(Math.Abs(gpuShading.x - coreShading.x), Math.Abs(gpuShading.y - coreShading.y)));
+                    worstDepth = Math.Max(worstDepth, Math.Abs(Float(records[o + 4]) - v.snowDepth));
+                    maxDepth = Math.Max(maxDepth, Float(records[o + 4]));
+                    if (records[o + 5] != 0u || records[o + 6] != 0u || records[o + 7] != 0u) padding++;
+                    compared++;
+                }
+            }
+            RigPng a = RigPng.Read(Path.Combine(dir, "cached.png")), b = RigPng.Read(Path.Combine(dir, "direct.png"));
+            int differing = a.PixelsDifferingFrom(b, 8);
+            TestContext.Out.WriteLine("{0} cached snow vertices against Core: position {1:E2}, snow depth {2:E2} (max depth {3:E3}), encoded normal {4:G3}; cached vs direct: {5} of 4096 pixels differ by more than 8/255",
+                compared, worstPosition, worstDepth, maxDepth, worstNormal, differing);
+            Assert.That(compared, Is.EqualTo(tiles * tiles * (14 * 14 + 4 * 16)), "8 x 8 tiles, 14 x 14 interior points and 4 edges of 16 at F = 15");
+            Assert.That(maxDepth, Is.GreaterThan(0.9 * SceneCap), "the map must raise the surface");
+            Assert.That(worstPosition, Is.LessThan(2e-6), "the readback test's bound");
+            Assert.That(worstDepth, Is.LessThan(1e-6));
+            Assert.That(worstNormal, Is.LessThanOrEqualTo(2.0 / 1023 + 1e-6), "one step of the packing at most");
+            Assert.That(padding, Is.EqualTo(0), "the snow part's last three words are zero");
+            Assert.That(cached.Long("stat", "clipping_invocations"), Is.EqualTo(plain.Long("stat", "clipping_invocations")), "same triangles");
+            Assert.That(differing, Is.LessThan(4096 / 200), "at most 0.5% of the pixels differ");
+        }
+
+        static float Float(uint bits) => BitConverter.Int32BitsToSingle((int)bits);
 
         static float[] TopDownCamera()
         {
