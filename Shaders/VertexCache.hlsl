@@ -119,8 +119,8 @@ TileFactorSet VertexCacheIntegerFactors(TileFactorSet f)
 // 1 / 1023. Why: a 16-byte record instead of 32 (VertexCacheRecordPart). What it costs: at most a
 // half step on e, 0.105 degrees of normal over the upper hemisphere (Core's
 // PackedVaryingsStayWithinHalfAStep), and 1 / 2046 on s; both move a lit 8-bit colour by less than
-// half of one of its steps. Positions are never packed: shared edge
-// vertices must stay bit-identical (no cracks), and deep zoom needs their float.
+// half of one of its steps. Positions are never packed: shared edge vertices must stay
+// bit-identical (no cracks), and deep zoom needs their float.
 uint PackCachedVaryings(float3 normalAndHeightWeight)
 {
     float2 e = round(clamp(normalAndHeightWeight.xy, -2.0, 2.0) * 511.5) + 1023.0;   // 0 .. 2046
