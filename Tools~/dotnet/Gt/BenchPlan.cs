@@ -296,7 +296,7 @@ namespace GregoryTerrain.Rig
         /// <summary>_TileFactors: 54 float4 a tile (Core's VertexCacheBudget, the shaders' layout).</summary>
         public static long TileFactorsBytes(int tiles) => VertexCacheBudget.TileFactorsBytes(tiles);
 
-        /// <summary>_VertexCache: M^2 S(L) slots of 2 float4 (no GT_SNOW in the bench), L = ceil(uniform F or max factor).</summary>
+        /// <summary>_VertexCache: M^2 S(L) slots of one uint4 (no GT_SNOW in the bench), L = ceil(uniform F or max factor).</summary>
         public static long VertexCacheBytes(TessellationSettings t) => VertexCacheBudget.VertexCacheBytes(t.tiles, VertexCache.FactorLimit(t), snow: false);
 
         /// <summary>
