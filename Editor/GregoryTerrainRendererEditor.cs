@@ -48,7 +48,7 @@ namespace GregoryTerrain.EditorTools
         {
             if (Event.current.type != EventType.Layout || EditorApplication.timeSinceStartup - _estimateTime < EstimateSeconds) return _estimateText;
             _estimateTime = EditorApplication.timeSinceStartup;
-            Camera cam = r.LodCamera != null ? r.LodCamera : Camera.main;
+            Camera cam = r.EffectiveLodCamera;
             if (cam == null && SceneView.lastActiveSceneView != null) cam = SceneView.lastActiveSceneView.camera;
             TriangleEstimate? e = cam != null ? r.EstimateTrianglesInView(cam) : null;
             if (cam == null) _estimateText = "no camera";

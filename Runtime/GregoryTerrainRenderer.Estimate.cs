@@ -32,8 +32,7 @@ namespace GregoryTerrain
                 _estimateGrid = _uploadedPatchGrid;
             }
             else _estimateInputs = _estimateInputs.WithParams(_params);
-            // The clip transform the shaders get (GT_ObjectToClip), as the cache pass builds it.
-            Matrix4x4 m = GL.GetGPUProjectionMatrix(cam.projectionMatrix, false) * cam.worldToCameraMatrix * _objectToWorld;
+            Matrix4x4 m = ObjectToClip(cam);
             var keywords = material != null && material.IsKeywordEnabled(VertexCachePass.NoiseKeyword) ? TerrainKeywords.Noise : TerrainKeywords.None;
             var partitioning = _usesCache ? TessellationPartitioning.Integer : TessellationPartitioning.FractionalOdd;
             return TerrainTriangleEstimate.InView(_estimateInputs, ToFloat4x4(m), new Float2(w, h), keywords, partitioning, maxTiles);

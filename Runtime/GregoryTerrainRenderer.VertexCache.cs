@@ -34,7 +34,7 @@ namespace GregoryTerrain
                 return true;
             }
             bool snow = SnowOn();
-            Camera cam = lodCamera != null ? lodCamera : Camera.main;
+            Camera cam = EffectiveLodCamera;
             SnowSimulator snowSource = snow ? SnowSource() : null;
             string reason = CacheUnavailableReason(fallback, cam, snow, snowSource);
             if (reason != null)
@@ -55,14 +55,10 @@ namespace GregoryTerrain
             int w = cam.pixelWidth, h = cam.pixelHeight;
             if (w > 0 && h > 0)
             {
-                // The projection the graphics stages get as UNITY_MATRIX_P (platform depth range and
-                // orientation). A render-texture y flip would not change a factor (screen lengths) or
-                // the culling (symmetric in y), so renderIntoTexture = false serves every target.
-                Matrix4x4 viewProjection = GL.GetGPUProjectionMatrix(cam.projectionMatrix, false) * cam.worldToCameraMatrix;
                 var inputs = new VertexCachePass.Inputs
                 {
                     parameters = _params,
-                    objectToClip = viewProjection * _objectToWorld,
+                    objectToClip = ObjectToClip(cam),
                     worldToObject = _worldToObject,
                     screenSize = new Vector4(w, h, 1f / w, 1f / h),
                     controlPoints = _controlPoints, regions = _regions, gridLines = _gridLines,
@@ -79,6 +75,15 @@ namespace GregoryTerrain
             _usesCache = true;
             return true;
         }
+
+        /// <summary>
+        /// The terrain's object -> clip transform for a camera, as the graphics stages get it
+        /// (GT_ObjectToClip: UNITY_MATRIX_P with the platform's depth range and orientation). A
+        /// render-texture y flip would not change a factor (screen lengths) or the culling (symmetric
+        /// in y), so renderIntoTexture = false serves every target.
+        /// </summary>
+        Matrix4x4 ObjectToClip(Camera cam) =>
+            GL.GetGPUProjectionMatrix(cam.projectionMatrix, false) * cam.worldToCameraMatrix * _objectToWorld;
 
         /// <summary>
         /// The size check (Core's <see cref="VertexCacheBudget.CheckFits"/>), run only when M, L, snow

@@ -265,6 +265,9 @@ namespace GregoryTerrain
         /// <summary>The camera whose view sets the cached tessellation (null: Camera.main).</summary>
         public Camera LodCamera { get => lodCamera; set => lodCamera = value; }
 
+        /// <summary>The camera the cache's tessellation follows now: <see cref="LodCamera"/>, else Camera.main (may be null).</summary>
+        public Camera EffectiveLodCamera => lodCamera != null ? lodCamera : Camera.main;
+
         /// <summary>The Snow Simulator the cache samples when the material has GT_SNOW (null: one on this GameObject).</summary>
         public SnowSimulator SnowSimulator { get => snowSimulator; set => snowSimulator = value; }
 

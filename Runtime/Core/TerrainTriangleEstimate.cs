@@ -30,7 +30,8 @@ namespace GregoryTerrain
     /// mirror of the hull stage (<see cref="TileFactors.ComputeTileFactors"/>), counted as the
     /// tessellator triangulates a quad (<see cref="PatchTriangles"/>). The renderer's inspector shows
     /// it, so that the target pixel error's cost is visible before anything is drawn. The rig checks
-    /// it against the GPU's clipping invocations (Tools~/RigTests/TriangleEstimateGpuTests.cs).
+    /// it against the GPU's clipping invocations (Tools~/RigTests/VertexCacheGpuTests.cs,
+    /// <c>TriangleEstimateIsWhatTheGpuDraws</c>; and every adaptive job of <c>gt bench</c>).
     /// </summary>
     public static class TerrainTriangleEstimate
     {
@@ -44,7 +45,7 @@ namespace GregoryTerrain
             if (!(factor >= 0f) || float.IsInfinity(factor))
                 throw new ArgumentException(FormattableString.Invariant($"factor ({factor:R}) must be finite and >= 0"), nameof(factor));
             if (factor <= 1f) return 1;
-            if (partitioning == TessellationPartitioning.Integer) return (int)Math.Ceiling(Math.Min(factor, 64f));
+            if (partitioning == TessellationPartitioning.Integer) return (int)Math.Ceiling(Math.Min(factor, VertexCache.MaxFactor));
             int n = (int)Math.Ceiling(Math.Min(factor, 63f));
             return n % 2 == 0 ? n + 1 : n;
         }

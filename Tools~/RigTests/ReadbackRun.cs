@@ -5,6 +5,7 @@
 using System;
 using System.Collections.Generic;
 using System.Diagnostics;
+using System.Globalization;
 using System.IO;
 using System.Linq;
 using NUnit.Framework;
@@ -115,6 +116,9 @@ namespace GregoryTerrain.Rig.Tests
             File.WriteAllBytes(path, bytes);
         }
 
+        /// <summary>The float whose bits a record word holds (the vertex cache's uint4 records).</summary>
+        public static float FloatOfBits(uint bits) => BitConverter.Int32BitsToSingle((int)bits);
+
         /// <summary>A dump's 32-bit words as they are (records holding bits, not floats).</summary>
         public static uint[] ReadUints(string path)
         {
@@ -195,6 +199,33 @@ namespace GregoryTerrain.Rig.Tests
             string v = Path.Combine(spirv, variant);
             return new[] { "--vert", Path.Combine(v, "vert.spv"), "--tesc", Path.Combine(v, "tesc.spv"),
                            "--tese", Path.Combine(v, "tese.spv"), "--frag", Path.Combine(v, "frag.spv") };
+        }
+
+        /// <summary>Tile t's integer factors in a <c>_TileFactors</c> dump (VertexCache.FactorIndex: edges, then inside).</summary>
+        public static TileFactorSet CacheTileFactors(float[] dump, int tile)
+        {
+            long i = 4 * VertexCache.FactorIndex(tile);
+            return new TileFactorSet(new Float4(dump[i], dump[i + 1], dump[i + 2], dump[i + 3]), new Float2(dump[i + 4], dump[i + 5]));
+        }
+
+        /// <summary>
+        /// The harness options of the vertex cache (GT_VERTEX_CACHE) for M = <paramref name="tiles"/>
+        /// and factor limit <paramref name="limit"/>: its two buffers (sized by Core's
+        /// VertexCacheBudget), both kernels of <paramref name="variantDir"/> each frame
+        /// (CacheTileFactors over M x M groups, CacheTileVertices over M x M x G), and dumps of both
+        /// buffers after the last frame.
+        /// </summary>
+        public static string[] VertexCacheArgs(string variantDir, int tiles, int limit, bool snow, string factorsDump, string recordsDump)
+        {
+            string m = tiles.ToString(CultureInfo.InvariantCulture);
+            return new[]
+            {
+                "--storage", "7:" + VertexCacheBudget.TileFactorsBytes(tiles).ToString(CultureInfo.InvariantCulture),
+                "--storage", "8:" + VertexCacheBudget.VertexCacheBytes(tiles, limit, snow).ToString(CultureInfo.InvariantCulture),
+                "--compute", Path.Combine(variantDir, "cache_factors.spv") + ":" + m + "," + m + ",1",
+                "--compute", Path.Combine(variantDir, "cache_vertices.spv") + ":" + m + "," + m + "," + VertexCache.GroupsPerTile(limit).ToString(CultureInfo.InvariantCulture),
+                "--dump-storage", "7:" + factorsDump, "--dump-storage", "8:" + recordsDump,
+            };
         }
 
         // ---- the draw -----------------------------------------------------------------------------

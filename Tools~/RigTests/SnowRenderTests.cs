@@ -246,7 +246,6 @@ namespace GregoryTerrain.Rig.Tests
             int limit = VertexCache.FactorLimit(inputs.Params.tess), slots = VertexCache.SlotsPerTile(limit);
             string cache = Path.Combine(_spirv, "noise+snow+vertex_cache"), direct = Path.Combine(_spirv, "noise+snow");
             string factorsFile = Path.Combine(dir, "tile_factors.f32"), recordsFile = Path.Combine(dir, "vertex_cache.u32");
-            string n = tiles.ToString(System.Globalization.CultureInfo.InvariantCulture);
             HarnessRun Draw(string variant, string png, params string[] extra) => HarnessRun.Harness(new[]
             {
                 "--vert", Path.Combine(variant, "vert.spv"), "--tesc", Path.Combine(variant, "tesc.spv"), "--tese", Path.Combine(variant, "tese.spv"),
@@ -254,10 +253,7 @@ namespace GregoryTerrain.Rig.Tests
                 "--device", "llvmpipe", "--stats", "--png", png,
             }.Concat(SnowMapArgs(dir)).Concat(extra).ToArray());
             HarnessRun cached = Draw(cache, Path.Combine(dir, "cached.png"),
-                "--storage", "7:" + VertexCacheBudget.TileFactorsBytes(tiles), "--storage", "8:" + VertexCacheBudget.VertexCacheBytes(tiles, limit, true),
-                "--compute", Path.Combine(cache, "cache_factors.spv") + ":" + n + "," + n + ",1",
-                "--compute", Path.Combine(cache, "cache_vertices.spv") + ":" + n + "," + n + "," + VertexCache.GroupsPerTile(limit),
-                "--dump-storage", "7:" + factorsFile, "--dump-storage", "8:" + recordsFile);
+                ReadbackRun.VertexCacheArgs(cache, tiles, limit, true, factorsFile, recordsFile));
             cached.AssertSucceeded();
             HarnessRun plain = Draw(direct, Path.Combine(dir, "direct.png"));
             plain.AssertSucceeded();
@@ -268,20 +264,19 @@ namespace GregoryTerrain.Rig.Tests
             int compared = 0, padding = 0;
             for (int tile = 0; tile < tiles * tiles; tile++)
             {
-                long fi = 4 * VertexCache.FactorIndex(tile);
-                var f = new TileFactorSet(new Float4(factors[fi], factors[fi + 1], factors[fi + 2], factors[fi + 3]), new Float2(factors[fi + 4], factors[fi + 5]));
+                TileFactorSet f = ReadbackRun.CacheTileFactors(factors, tile);
                 Assert.That(f.IsCulled, Is.False, "the top-down view sees tile " + tile);
                 foreach (var (tess, slot) in VertexCache.TilePoints(f, limit))
                 {
                     TerrainVertexOutput v = TerrainVertex.Evaluate(inputs, tile, tess, keywords);
                     uint[] core = VertexCache.Record(v, TerrainVertex.HeightWeight(v, inputs, keywords), snow: true);
                     int o = 8 * (tile * slots + slot);
-                    var gpuPosition = new Float3(Float(records[o]), Float(records[o + 1]), Float(records[o + 2]));
+                    var gpuPosition = new Float3(ReadbackRun.FloatOfBits(records[o]), ReadbackRun.FloatOfBits(records[o + 1]), ReadbackRun.FloatOfBits(records[o + 2]));
                     worstPosition = Math.Max(worstPosition, GMath.length(gpuPosition - v.PositionOS));
                     Float3 gpuShading = VertexCache.UnpackCachedVaryings(records[o + 3]), coreShading = VertexCache.UnpackCachedVaryings(core[3]);
                     worstNormal = Math.Max(worstNormal, Math.Max(Math.Abs(gpuShading.x - coreShading.x), Math.Abs(gpuShading.y - coreShading.y)));
-                    worstDepth = Math.Max(worstDepth, Math.Abs(Float(records[o + 4]) - v.snowDepth));
-                    maxDepth = Math.Max(maxDepth, Float(records[o + 4]));
+                    worstDepth = Math.Max(worstDepth, Math.Abs(ReadbackRun.FloatOfBits(records[o + 4]) - v.snowDepth));
+                    maxDepth = Math.Max(maxDepth, ReadbackRun.FloatOfBits(records[o + 4]));
                     if (records[o + 5] != 0u || records[o + 6] != 0u || records[o + 7] != 0u) padding++;
                     compared++;
                 }
@@ -299,8 +294,6 @@ namespace GregoryTerrain.Rig.Tests
             Assert.That(cached.Long("stat", "clipping_invocations"), Is.EqualTo(plain.Long("stat", "clipping_invocations")), "same triangles");
             Assert.That(differing, Is.LessThan(4096 / 200), "at most 0.5% of the pixels differ");
         }
-
-        static float Float(uint bits) => BitConverter.Int32BitsToSingle((int)bits);
 
         static float[] TopDownCamera()
         {

@@ -44,8 +44,7 @@ namespace GregoryTerrain.Rig.Tests
             // The tile's factor record, float k of its two float4 (VertexCache.FactorIndex).
             float Record(int tile, int k) => Factors[4 * VertexCache.FactorIndex(tile) + k];
 
-            public TileFactorSet FactorsOf(int tile) => new TileFactorSet(
-                new Float4(Record(tile, 0), Record(tile, 1), Record(tile, 2), Record(tile, 3)), new Float2(Record(tile, 4), Record(tile, 5)));
+            public TileFactorSet FactorsOf(int tile) => ReadbackRun.CacheTileFactors(Factors, tile);
 
             public bool Culled(int tile) => Record(tile, 6) != 0f;
 
@@ -63,7 +62,7 @@ namespace GregoryTerrain.Rig.Tests
             public Float3 PositionOS(int tile, int slot)
             {
                 var r = Part(tile, slot, 0);
-                return new Float3(BitConverter.Int32BitsToSingle((int)r.x), BitConverter.Int32BitsToSingle((int)r.y), BitConverter.Int32BitsToSingle((int)r.z));
+                return new Float3(ReadbackRun.FloatOfBits(r.x), ReadbackRun.FloatOfBits(r.y), ReadbackRun.FloatOfBits(r.z));
             }
         }
 
@@ -83,21 +82,15 @@ namespace GregoryTerrain.Rig.Tests
             var p = ReadParams(Path.Combine(dir, "params.f32"));
             var frame = new CacheFrame { Tiles = tiles, Inputs = TerrainInputs.Create(_grid, p), Limit = VertexCache.FactorLimit(p.tess) };
             frame.Slots = VertexCache.SlotsPerTile(frame.Limit);
-            string factors = Path.Combine(dir, "tile_factors.f32"), records = Path.Combine(dir, "vertex_cache.f32");
-            string v = Path.Combine(_spirv, Cached);
+            string factors = Path.Combine(dir, "tile_factors.f32"), records = Path.Combine(dir, "vertex_cache.u32");
             var args = new List<string>(ReadbackRun.Stages(_spirv, Cached));
             args.AddRange(new[]
             {
                 "--buffers", dir, "--patches", (tiles * tiles).ToString(CultureInfo.InvariantCulture),
                 "--width", width.ToString(CultureInfo.InvariantCulture), "--height", height.ToString(CultureInfo.InvariantCulture),
                 "--device", "llvmpipe", "--stats", "--png", Path.Combine(dir, "image.png"),
-                "--storage", "7:" + VertexCacheBudget.TileFactorsBytes(tiles).ToString(CultureInfo.InvariantCulture),
-                "--storage", "8:" + VertexCacheBudget.VertexCacheBytes(tiles, frame.Limit, false).ToString(CultureInfo.InvariantCulture),
-                "--compute", Path.Combine(v, "cache_factors.spv") + ":" + tiles.ToString(CultureInfo.InvariantCulture) + "," + tiles.ToString(CultureInfo.InvariantCulture) + ",1",
-                "--compute", Path.Combine(v, "cache_vertices.spv") + ":" + tiles.ToString(CultureInfo.InvariantCulture) + "," + tiles.ToString(CultureInfo.InvariantCulture)
-                    + "," + VertexCache.GroupsPerTile(frame.Limit).ToString(CultureInfo.InvariantCulture),
-                "--dump-storage", "7:" + factors, "--dump-storage", "8:" + records,
             });
+            args.AddRange(ReadbackRun.VertexCacheArgs(Path.Combine(_spirv, Cached), tiles, frame.Limit, false, factors, records));
             args.AddRange(extra);
             frame.Run = HarnessRun.Harness(args.ToArray());
             frame.Run.AssertSucceeded();
@@ -107,6 +100,27 @@ namespace GregoryTerrain.Rig.Tests
             Assert.That(frame.Records.Length, Is.EqualTo(4 * VertexCache.Uint4sPerRecord(false) * tiles * tiles * frame.Slots));
             return frame;
         }
+
+        /// <summary>
+        /// Draws a DrawCached scene (its folder <paramref name="name"/>) through the domain-stage path
+        /// with hull_const writing its factors (GT_FACTOR_READBACK): 2 float4 a tile (the factors, then
+        /// culled in the third float of the second), read with <see cref="HullFactorsOf"/>.
+        /// </summary>
+        float[] DrawHullFactors(string name, int tiles, int width, int height, out HarnessRun run)
+        {
+            string dir = Path.Combine(_work, name), file = Path.Combine(dir, "hull_factors.f32");
+            run = HarnessRun.Harness(ReadbackRun.Stages(_spirv, HullFactors).Concat(new[]
+            {
+                "--buffers", dir, "--patches", (tiles * tiles).ToString(CultureInfo.InvariantCulture),
+                "--width", width.ToString(CultureInfo.InvariantCulture), "--height", height.ToString(CultureInfo.InvariantCulture),
+                "--device", "llvmpipe", "--stats", "--readback", file, "--readback-floats", (8 * tiles * tiles).ToString(CultureInfo.InvariantCulture),
+            }).ToArray());
+            run.AssertSucceeded();
+            return ReadbackRun.ReadFloats(file);
+        }
+
+        static TileFactorSet HullFactorsOf(float[] h, int tile) =>
+            new TileFactorSet(new Float4(h[8 * tile], h[8 * tile + 1], h[8 * tile + 2], h[8 * tile + 3]), new Float2(h[8 * tile + 4], h[8 * tile + 5]));
 
         static TerrainParams ReadParams(string path)
         {
@@ -387,21 +401,13 @@ namespace GregoryTerrain.Rig.Tests
                 }
             // The kernel spreads each tile's factor pieces over lanes; hull_const computes them in
             // one thread: the same factors, rounded up as the kernel rounds.
-            string hullFile = Path.Combine(_work, "adaptive", "hull_factors.f32");
-            HarnessRun hull = HarnessRun.Harness(ReadbackRun.Stages(_spirv, HullFactors).Concat(new[]
-            {
-                "--buffers", Path.Combine(_work, "adaptive"), "--patches", "64", "--width", "192", "--height", "128",
-                "--device", "llvmpipe", "--readback", hullFile, "--readback-floats", "512",
-            }).ToArray());
-            hull.AssertSucceeded();
-            float[] h = ReadbackRun.ReadFloats(hullFile);
+            float[] h = DrawHullFactors("adaptive", 8, 192, 128, out _);
             for (int tile = 0; tile < 64; tile++)
             {
-                var fromHull = new TileFactorSet(new Float4(h[8 * tile], h[8 * tile + 1], h[8 * tile + 2], h[8 * tile + 3]),
-                                                 new Float2(h[8 * tile + 4], h[8 * tile + 5]));
+                TileFactorSet fromHull = HullFactorsOf(h, tile);
                 Assert.That(f.FactorsOf(tile), Is.EqualTo(VertexCache.IntegerFactors(fromHull)), "tile " + tile + ": the kernel's factors against hull_const's");
             }
-            int nan = f.Records.Where((w, i) => i % 4 != 3).Count(w => !float.IsFinite(BitConverter.Int32BitsToSingle((int)w)));   // position words
+            int nan = f.Records.Where((w, i) => i % 4 != 3).Count(w => !float.IsFinite(ReadbackRun.FloatOfBits(w)));   // position words
             TestContext.Out.WriteLine("adaptive cache: {0} of 64 tiles culled, factors used {1}, {2} shared edges, {3} shared-edge vertex pairs, {4} differ; {5} triangles",
                 culled, string.Join(" ", distinct.OrderBy(x => x)), edgePairs, vertexPairs, differingVertices, f.Run.Long("stat", "clipping_invocations"));
             Assert.That(nan, Is.EqualTo(0));
@@ -427,21 +433,13 @@ namespace GregoryTerrain.Rig.Tests
             var objectToClip = Float4x4.FromRows(camera[0], camera[4], camera[8], camera[12], camera[1], camera[5], camera[9], camera[13],
                                                  camera[2], camera[6], camera[10], camera[14], camera[3], camera[7], camera[11], camera[15]);
             var screen = new Float2(width, height);
-            string hullFile = Path.Combine(_work, "estimate", "hull_factors.f32");
-            HarnessRun hull = HarnessRun.Harness(ReadbackRun.Stages(_spirv, HullFactors).Concat(new[]
-            {
-                "--buffers", Path.Combine(_work, "estimate"), "--patches", (tiles * tiles).ToString(CultureInfo.InvariantCulture),
-                "--width", width.ToString(CultureInfo.InvariantCulture), "--height", height.ToString(CultureInfo.InvariantCulture),
-                "--device", "llvmpipe", "--stats", "--readback", hullFile, "--readback-floats", (8 * tiles * tiles).ToString(CultureInfo.InvariantCulture),
-            }).ToArray());
-            hull.AssertSucceeded();
-            float[] h = ReadbackRun.ReadFloats(hullFile);
+            float[] h = DrawHullFactors("estimate", tiles, width, height, out HarnessRun hull);
             long hullModel = 0, cacheModel = 0;
             int culled = 0;
             double worst = 0;
             for (int tile = 0; tile < tiles * tiles; tile++)
             {
-                var gpu = new TileFactorSet(new Float4(h[8 * tile], h[8 * tile + 1], h[8 * tile + 2], h[8 * tile + 3]), new Float2(h[8 * tile + 4], h[8 * tile + 5]));
+                TileFactorSet gpu = HullFactorsOf(h, tile);
                 TileFactorSet core = TileFactors.ComputeTileFactors(f.Inputs, tile, objectToClip, screen, TerrainKeywords.Noise);
                 Assert.That(core.IsCulled, Is.EqualTo(h[8 * tile + 6] != 0f), "tile " + tile + ": culled on the GPU and in Core alike");
                 if (core.IsCulled) { culled++; continue; }
