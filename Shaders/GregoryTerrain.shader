@@ -53,6 +53,7 @@ Shader "GregoryTerrain/Terrain"
         [HideInInspector] _Range ("Range (c, d, g, h) relative to the origin", Vector) = (0, 0, 1, 1)
         [HideInInspector] _RangeOrigin ("Range origin (hi.x, hi.y, lo.x, lo.y)", Vector) = (0, 0, 0, 0)
         [HideInInspector] _GridSize ("Grid size (n, m, 0, 0)", Vector) = (1, 1, 0, 0)
+        [HideInInspector] _TileLattice ("Tile lattice: 0 (tiles on the range) or the range the tiles were anchored at", Vector) = (0, 0, 0, 0)
     }
 
     // Universal Render Pipeline, tessellated.

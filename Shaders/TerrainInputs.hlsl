@@ -23,7 +23,7 @@ StructuredBuffer<float4> _Regions GT_REGISTER(t1);
 // xLines[0..n] then yLines[0..m], each strictly increasing from 0 to 1.
 StructuredBuffer<float> _GridLines GT_REGISTER(t2);
 
-// 9 float4, 144 bytes, in exactly this order (the rig uploads it as one block).
+// 10 float4, 160 bytes, in exactly this order (the rig uploads it as one block).
 GT_CBUFFER_START(TerrainParams)
     float4 _Range;         // (c, d, g, h) relative to the range origin        per frame
     float4 _RangeOrigin;   // (O.x hi, O.y hi, O.x lo, O.y lo)                  on re-snap
@@ -34,6 +34,7 @@ GT_CBUFFER_START(TerrainParams)
     float4 _HeightColor;   // (gamma, colorNoiseAmplitude, colorNoiseFrequency, 0)
     float4 _ColorLow;      // C of eq. 15, linear RGB
     float4 _ColorHigh;     // B of eq. 15, linear RGB
+    float4 _TileLattice;   // 0, or the range the tiles were anchored at (TileLattice.hlsl)  on anchoring
 #if defined(GT_SNOW)
     float4 _SnowMapSize;   // (R, 1/R, depthCap, 0): snow variant only, always last   on change
 #endif
@@ -72,9 +73,17 @@ float RangeWidth() { return _Range.z - _Range.x; }
 
 // --- Tessellation ---------------------------------------------------------------------------------
 
-// M: the range is covered by M x M tiles. A float, because RangeCoordinate divides by it.
+// M: the range is covered by M x M tiles (anchored: the lattice's width by M cells). A float,
+// because RangeCoordinate divides by it.
 float TileCount() { return _Tess.x; }
 uint TileCountInt() { return (uint)_Tess.x; }
+// Whether the tiles are anchored to the terrain (TileLattice.hlsl): a nonzero lattice.
+bool TilesAnchored() { return _TileLattice.z != _TileLattice.x; }
+// Tiles (draw patches, cache tiles) per axis: M, or M + 1 anchored.
+uint TilesAcrossInt() { return TileCountInt() + (TilesAnchored() ? 1u : 0u); }
+// The width whose M tiles set the vertex spacing: the lattice's when anchored (a pan keeps it, so
+// the octave count and the cached vertices stay put), else the range's.
+float TileLayoutWidth() { return TilesAnchored() ? _TileLattice.z - _TileLattice.x : RangeWidth(); }
 // Largest edge factor the adaptive policy may choose (at most 64, the hardware limit).
 float MaxTessFactor() { return _Tess.y; }
 // The adaptive knob: target screen-space error, in pixels, of the drawn triangles against the

@@ -13,6 +13,7 @@
 
 #include "TerrainInputs.hlsl"
 #include "RangeMapping.hlsl"
+#include "TileLattice.hlsl"
 #include "PatchGrid.hlsl"
 #include "GregoryEval.hlsl"
 #include "RelativeSurface.hlsl"
@@ -81,11 +82,9 @@ TerrainSurfacePoint EvaluateSurface(uint drawPatch, float2 tess)
     s.region = PatchRegion(s.patch);
     s.uv = saturate(PatchLocalUV(s.q, s.region));
 #else
-    // Integer tile index first: RangeCoordinate forms ti + s before dividing, so the vertices of a
-    // shared tile edge get bit-identical q (watertight).
-    uint tiles = TileCountInt();
-    uint2 tile = uint2(drawPatch % tiles, drawPatch / tiles);
-    s.q = RangeToTerrainPoint(_Range, _RangeOrigin, TileCount(), tile, tess);
+    // Integer tile index first: RangeCoordinate (LatticePoint) forms ti + s before dividing, so the
+    // vertices of a shared tile edge get bit-identical q (watertight).
+    s.q = TileToTerrainPoint(drawPatch, tess);
     s.patch = FindPatch(TerrainPointApprox(s.q));
     s.region = PatchRegion(s.patch);
     s.uv = PatchLocalUV(s.q, s.region);
@@ -158,7 +157,7 @@ TerrainVertexAttributes EvaluateTerrainVertex(uint drawPatch, float2 tess)
         noisePoint.local = lerp(s.region.xy, s.region.zw, s.uv);
     }
     #endif
-    float octaves = OctaveCount(RangeWidth(), NoiseVerticesAcross(), NoiseSettings(), MaxNoiseOctaves());
+    float octaves = OctaveCount(TileLayoutWidth(), NoiseVerticesAcross(), NoiseSettings(), MaxNoiseOctaves());
     float2 gradient;   // d(noise)/dq
     #if !defined(GT_PAPER_MODE)
     // Deep zoom: p(q) - p(O) from precise differences, like the surface; the renderer adds p(O).

@@ -193,9 +193,10 @@ uint TileLineSample(uint piece, uint i)
 // and their pixel scales k (TileLineSample): the chord error of the surface (no noise) plus the
 // bound of the noise the frame draws. An edge's factor depends only on that edge (end points and
 // seven points of the surface on it), taken lower tess coordinate first by both tiles that share
-// it, from the same global points bit for bit (RangeCoordinate adds the integer tile index first):
+// it, from the same global points bit for bit (RangeCoordinate adds the integer tile index first)
+// and the same edge length (its row's or column's):
 // their factors agree (no cracks).
-float LineErrorTessFactor(uint piece, float3 p[GT_EDGE_SEGMENTS + 1], float k[GT_EDGE_SEGMENTS + 1])
+float LineErrorTessFactor(uint patch, uint piece, float3 p[GT_EDGE_SEGMENTS + 1], float k[GT_EDGE_SEGMENTS + 1])
 {
     float kMax = 0.0;
     [unroll] for (uint i = 1u; i < GT_EDGE_SEGMENTS; i++)
@@ -204,11 +205,11 @@ float LineErrorTessFactor(uint piece, float3 p[GT_EDGE_SEGMENTS + 1], float k[GT
     uint2 corners;
     uint axis;
     TileFactorLine(piece, a, b, corners, axis);
-    float2 edgeLength = (_Range.zw - _Range.xy) / TileCount();   // along u (x) and along v (y), terrain units
+    float2 edgeLength = TileEdgeLengths(patch);   // along u (x) and along v (y), terrain units
     float noiseCurvature = 0.0;
 #if defined(GT_NOISE)
     // The octaves this frame draws (the count TerrainVertex uses): the knob counts the noise it shows.
-    noiseCurvature = NoiseCurvatureBound(NoiseSettings(), OctaveCount(RangeWidth(), NoiseVerticesAcross(), NoiseSettings(), MaxNoiseOctaves()));
+    noiseCurvature = NoiseCurvatureBound(NoiseSettings(), OctaveCount(TileLayoutWidth(), NoiseVerticesAcross(), NoiseSettings(), MaxNoiseOctaves()));
 #endif
     float sagitta = SampledEdgeSagittaPixels(p, k) + NoiseSagittaPixels(noiseCurvature, edgeLength[axis], kMax);
     return ErrorTessFactor(sagitta, TargetPixelError(), MaxTessFactor());
@@ -242,7 +243,7 @@ float TileFactorPiece(uint patch, uint piece, float3 cornerOS[4])
         p[i] = v.xyz;
         k[i] = v.w;
     }
-    return LineErrorTessFactor(piece, p, k);
+    return LineErrorTessFactor(patch, piece, p, k);
 }
 
 // Inside factors follow the edges they run along: inside[0] subdivides along u, like the v = 0 and
@@ -259,6 +260,7 @@ TileFactorSet TileFactorsOfPieces(float piece[GT_TILE_FACTOR_PIECES])
 TileFactorSet ComputeTileFactors(uint patch, float3 cornerOS[4])
 {
     TileFactorSet f;
+    if (TileEmpty(patch)) return CulledTileFactors();
     if (UniformTileFactors(f)) return f;
     if (TileCulled(cornerOS)) return CulledTileFactors();
     float piece[GT_TILE_FACTOR_PIECES];

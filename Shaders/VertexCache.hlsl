@@ -53,12 +53,14 @@ uint VertexCacheGroupsPerTile(uint limit)
     return (VertexCacheMaxTilePoints(limit) + perGroup - 1u) / perGroup;
 }
 
-// _TileFactors: M^2 factor records of 2 float4, (edge 0-3) and (inside 0-1, culled 1/0, evaluate
-// 1/0); then M^2 float4, the _Range of each tile's last pass; then M^2 x GT_TILE_FACTOR_SAMPLES
-// float4, the tile's factor samples' object positions (w = 1 once written). "evaluate" tells
-// CacheTileVertices which tiles to (re)evaluate this pass: a tile whose factors and range are the
-// ones its slots already hold keeps them (a camera move that leaves its integer factors alone), and
-// while the range holds the factors kernel reads its samples back instead of evaluating the surface.
+// _TileFactors, for T x T tiles (T = TilesAcrossInt(): M, or M + 1 anchored): T^2 factor records of
+// 2 float4, (edge 0-3) and (inside 0-1, culled 1/0, evaluate 1/0); then T^2 float4, the key of each
+// tile's last pass (TileRecordKey: _Range, or anchored the tile's span); then T^2 x
+// GT_TILE_FACTOR_SAMPLES float4, the tile's factor samples' object positions (w = 1 once written).
+// "evaluate" tells CacheTileVertices which tiles to (re)evaluate this pass: a tile whose factors and
+// key are the ones its slots already hold keeps them (a camera move that leaves its integer factors
+// alone; anchored, a pan that leaves the tile whole), and while the key holds the factors kernel
+// reads its samples back instead of evaluating the surface.
 uint VertexCacheFactorIndex(uint tile) { return 2u * tile; }
 uint VertexCacheEvaluatedRangeIndex(uint tile, uint tiles) { return 2u * tiles * tiles + tile; }
 uint VertexCacheFactorSampleIndex(uint tile, uint s, uint tiles)

@@ -27,14 +27,24 @@ RWStructuredBuffer<uint4> _VertexCacheRW GT_REGISTER(u3);
 groupshared float4 gtTileFactorSamples[GT_TILE_FACTOR_SAMPLES];
 groupshared float gtTileFactorPieces[GT_TILE_FACTOR_PIECES];
 
-// Whether _Range moved since the tile's last pass (its record keeps that pass's range). Read by
-// every lane before lane 0 writes the new one (WriteTileFactors, after the group's barriers).
-bool TileRangeMoved(uint tile) { return any(_TileFactorsRW[VertexCacheEvaluatedRangeIndex(tile, TileCountInt())] != _Range); }
+// What a tile's slots depend on besides its factors: the range, or anchored, only the tile's own
+// span (a pan that leaves the tile whole changes nothing in it).
+float4 TileRecordKey(uint tile) { return TilesAnchored() ? TileSpan(tile) : _Range; }
+
+// Whether the tile's key moved since its last pass (its record keeps that pass's key). A zero
+// record was never written (the renderer zeroes the records to force a pass): always moved, even
+// for a key that happens to be 0. Read by every lane before lane 0 writes the new one
+// (WriteTileFactors, after the group's barriers).
+bool TileRangeMoved(uint tile)
+{
+    float4 kept = _TileFactorsRW[VertexCacheEvaluatedRangeIndex(tile, TilesAcrossInt())];
+    return all(kept == 0.0) || any(kept != TileRecordKey(tile));
+}
 
 // True when the tile's slots do not hold its vertices at factors f: the range moved, or last pass
 // it was culled or drawn at other factors. Everything else the records depend on (origin, grid,
 // noise, colour, snow, object transform) the renderer guards: it zeroes the range records when one
-// of those changes, and a zero range is never _Range (a range has a width), so every tile moved.
+// of those changes, and a zero record always reads as moved (TileRangeMoved).
 bool TileSlotsOutdated(uint tile, TileFactorSet f, bool rangeMoved)
 {
     uint i = VertexCacheFactorIndex(tile);
@@ -51,7 +61,7 @@ void WriteTileFactors(uint tile, TileFactorSet f, bool rangeMoved)
     uint i = VertexCacheFactorIndex(tile);
     _TileFactorsRW[i] = f.edge;
     _TileFactorsRW[i + 1u] = float4(f.inside, culled ? 1.0 : 0.0, evaluate ? 1.0 : 0.0);
-    if (rangeMoved) _TileFactorsRW[VertexCacheEvaluatedRangeIndex(tile, TileCountInt())] = _Range;
+    if (rangeMoved) _TileFactorsRW[VertexCacheEvaluatedRangeIndex(tile, TilesAcrossInt())] = TileRecordKey(tile);
 }
 
 // Sample s of the tile: its position read back while the range holds and the sample was written
@@ -59,7 +69,7 @@ void WriteTileFactors(uint tile, TileFactorSet f, bool rangeMoved)
 // depend on the range only, so a camera move costs no surface evaluation here.
 float4 CachedTileFactorSample(uint tile, uint s, bool rangeMoved)
 {
-    uint k = VertexCacheFactorSampleIndex(tile, s, TileCountInt());
+    uint k = VertexCacheFactorSampleIndex(tile, s, TilesAcrossInt());
     float4 kept = _TileFactorsRW[k];
     float3 p = kept.xyz;
     if (rangeMoved || kept.w != 1.0)
@@ -70,7 +80,7 @@ float4 CachedTileFactorSample(uint tile, uint s, bool rangeMoved)
     return TileFactorSampleAt(s, p);
 }
 
-// Dispatch (M, M, 1): a group a tile. The tile's 51 surface samples (CachedTileFactorSample) one a lane,
+// Dispatch (T, T, 1), T = TilesAcrossInt(): a group a tile. The tile's 51 surface samples (CachedTileFactorSample) one a lane,
 // then its seven pieces (TileFactorPiece's arithmetic on the shared samples) one a lane, then lane 0
 // assembles them. Why so wide: the factors are a chain of surface evaluations, and the chain's
 // length is the pass's. One lane a tile: ~50 evaluations (0.6M triangles, 32 x 32 tiles, H200: 0.1
@@ -79,18 +89,20 @@ float4 CachedTileFactorSample(uint tile, uint s, bool rangeMoved)
 [numthreads(64, 1, 1)]
 void CacheTileFactors(uint3 group : SV_GroupID, uint lane : SV_GroupIndex)
 {
-    uint tiles = TileCountInt();
+    uint tiles = TilesAcrossInt();
     if (group.x >= tiles || group.y >= tiles) return;
     uint tile = group.y * tiles + group.x;
     bool rangeMoved = TileRangeMoved(tile);   // the same for every lane
     TileFactorSet f;
-    if (UniformTileFactors(f))   // the same for every lane of the group: no barrier is skipped by some only
+    bool uniformFactors = UniformTileFactors(f);
+    bool empty = TileEmpty(tile);   // an anchored tile without area: culled
+    if (empty || uniformFactors)   // the same for every lane of the group: no barrier is skipped by some only
     {
         // No samples here: those kept belong to the range of the last adaptive pass.
         if (rangeMoved && lane < GT_TILE_FACTOR_SAMPLES)
             _TileFactorsRW[VertexCacheFactorSampleIndex(tile, lane, tiles)] = float4(0.0, 0.0, 0.0, 0.0);
         GroupMemoryBarrierWithGroupSync();   // every lane has read the old range before lane 0 writes
-        if (lane == 0u) WriteTileFactors(tile, f, rangeMoved);
+        if (lane == 0u) WriteTileFactors(tile, empty ? CulledTileFactors() : f, rangeMoved);
         return;
     }
     if (lane < GT_TILE_FACTOR_SAMPLES) gtTileFactorSamples[lane] = CachedTileFactorSample(tile, lane, rangeMoved);
@@ -113,7 +125,7 @@ void CacheTileFactors(uint3 group : SV_GroupID, uint lane : SV_GroupIndex)
                 p[i] = v.xyz;
                 k[i] = v.w;
             }
-            gtTileFactorPieces[lane] = LineErrorTessFactor(lane, p, k);
+            gtTileFactorPieces[lane] = LineErrorTessFactor(tile, lane, p, k);
         }
     }
     GroupMemoryBarrierWithGroupSync();
@@ -159,13 +171,13 @@ void VertexCachePoint(uint k, float4 edge, float2 inside, uint limit, out float2
     slot = VertexCacheEdgeSlot(e, k, limit);
 }
 
-// Dispatch (M, M, G), G = VertexCacheGroupsPerTile(L): groups (x, y, 0 .. G - 1) share tile
-// y M + x, their G x GT_VERTEX_CACHE_VERTEX_GROUP lanes striding over its points (at most
+// Dispatch (T, T, G), G = VertexCacheGroupsPerTile(L): groups (x, y, 0 .. G - 1) share tile
+// y T + x, their G x GT_VERTEX_CACHE_VERTEX_GROUP lanes striding over its points (at most
 // GT_VERTEX_CACHE_PASSES each).
 [numthreads(GT_VERTEX_CACHE_VERTEX_GROUP, 1, 1)]
 void CacheTileVertices(uint3 group : SV_GroupID, uint lane : SV_GroupIndex)
 {
-    uint tiles = TileCountInt();
+    uint tiles = TilesAcrossInt();
     if (group.x >= tiles || group.y >= tiles) return;
     uint tile = group.y * tiles + group.x;
     float4 edge = _TileFactorsRW[VertexCacheFactorIndex(tile)];

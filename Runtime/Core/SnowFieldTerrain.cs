@@ -27,8 +27,8 @@ namespace GregoryTerrain
 
         /// <summary>
         /// The <c>TerrainParams</c> the field kernel runs with: <paramref name="terrain"/>'s grid, noise
-        /// and colours, the range (0, 0, 1, 1) with no origin, <c>_Tess = (R, maxFactor, pixels, 1)</c>
-        /// and the noise budget <c>verticesAcross = R</c>.
+        /// and colours, the range (0, 0, 1, 1) with no origin, <c>_Tess = (R, maxFactor, pixels, 1)</c>,
+        /// the noise budget <c>verticesAcross = R</c> and the cells on that range (no tile lattice).
         /// </summary>
         public static TerrainParams ParamsFor(TerrainParams terrain, int resolution)
         {
@@ -38,6 +38,7 @@ namespace GregoryTerrain
             p.rangeOrigin = new Float4(0f, 0f, 0f, 0f);
             p.tess = new Float4(resolution, terrain.tess.y, terrain.tess.z, 1f);
             p.noiseOctaves = new Float4(terrain.noiseOctaves.x, resolution, 0f, 0f);
+            p.tileLattice = new Float4(0f, 0f, 0f, 0f);
             return p;
         }
 

@@ -21,7 +21,7 @@ namespace GregoryTerrain
         public float[] Regions { get; }
         /// <summary>_GridLines: xLines[0..n] then yLines[0..m].</summary>
         public float[] GridLines { get; }
-        /// <summary>The nine float4 constants (binding 0).</summary>
+        /// <summary>The ten float4 constants (binding 0).</summary>
         public TerrainParams Params { get; }
 
         /// <summary>
@@ -100,8 +100,11 @@ namespace GregoryTerrain
 
         // --- Tessellation --------------------------------------------------------------------------
 
+        /// <summary>M: tiles across the range (the lattice's cells per its width when anchored).</summary>
         public float TileCount() => Params.tess.x;
         public int TileCountInt() => (int)Params.tess.x;
+        /// <summary>Tiles (draw patches, cache tiles) per axis: M, or M + 1 when anchored (<see cref="TileLattice"/>).</summary>
+        public int TilesAcross() => TileLattice.TilesAcross(Params);
         public float MaxTessFactor() => Params.tess.y;
         public float TargetPixelsPerSegment() => Params.tess.z;
         public float UniformTessFactor() => Params.tess.w;
@@ -117,7 +120,7 @@ namespace GregoryTerrain
         public float NoiseVerticesAcross() => Params.noiseOctaves.y > 0f ? Params.noiseOctaves.y : TileCount() * MaxTessFactor();
 
         /// <summary>
-        /// The frame's octave count as the vertex stage forms it (HLSL <c>OctaveCount(RangeWidth(),
+        /// The frame's octave count as the vertex stage forms it (HLSL <c>OctaveCount(TileLayoutWidth(),
         /// NoiseVerticesAcross(), NoiseSettings(), MaxNoiseOctaves())</c>), in float:
         /// <c>clamp(1 + log2(across / (2 width frequency)) / log2(alpha), 0, N)</c>.
         /// The GPU's log2 is an approximation of its own, so the two may differ in the last bits; only
@@ -130,7 +133,7 @@ namespace GregoryTerrain
         {
             Float4 noise = p.noise;
             float across = p.noiseOctaves.y > 0f ? p.noiseOctaves.y : p.tess.x * p.tess.y;
-            float ratio = across / (2f * (p.range.z - p.range.x) * noise.y);
+            float ratio = across / (2f * TileLattice.LayoutWidth(p) * noise.y);
             float k = 1f + Log2(ratio) / Log2(noise.z);
             return GMath.clamp(k, 0f, p.noiseOctaves.x);
         }

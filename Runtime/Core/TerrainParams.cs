@@ -3,22 +3,32 @@ using System;
 namespace GregoryTerrain
 {
     /// <summary>
-    /// The <c>TerrainParams</c> constants every stage reads (internals.md, binding 0): nine float4 in
+    /// The <c>TerrainParams</c> constants every stage reads (internals.md, binding 0): ten float4 in
     /// one fixed order. The rig uploads <see cref="Pack"/> as one block; Unity sets each float4 by name.
     /// Only <see cref="range"/> changes per frame.
     /// </summary>
     public struct TerrainParams
     {
-        public const int Float4Count = 9;
+        public const int Float4Count = 10;
         public const int Floats = Float4Count * 4;
 
         /// <summary>Names in cbuffer order; <see cref="Pack"/> and the shaders agree on it.</summary>
         public static readonly string[] PropertyNames =
         {
             "_Range", "_RangeOrigin", "_GridSize", "_Tess", "_Noise", "_NoiseOctaves", "_HeightColor", "_ColorLow", "_ColorHigh",
+            "_TileLattice",
         };
 
         public Float4 range, rangeOrigin, gridSize, tess, noise, noiseOctaves, heightColor, colorLow, colorHigh;
+
+        /// <summary>
+        /// <c>_TileLattice</c>: 0 (the default) lays the M x M tiles over the range, as the paper does;
+        /// else the range, relative to the origin like <see cref="range"/>, at which the tiles were
+        /// anchored to the terrain (internals.md, "Anchored tiles"): (M + 1)^2 tiles then follow the
+        /// lattice of that range's tiles, clipped to the current range, so a pan moves only the
+        /// clipped ones. Set with <see cref="WithTileLattice"/>.
+        /// </summary>
+        public Float4 tileLattice;
 
         /// <summary>Validates every input (naming the field and value) and encodes the range against its origin.</summary>
         public static TerrainParams Create(PatchGrid grid, TerrainRange range, RangeOrigin origin,
@@ -55,11 +65,28 @@ namespace GregoryTerrain
         public Float4 this[int index] => index switch
         {
             0 => range, 1 => rangeOrigin, 2 => gridSize, 3 => tess, 4 => noise,
-            5 => noiseOctaves, 6 => heightColor, 7 => colorLow, 8 => colorHigh,
-            _ => throw new ArgumentOutOfRangeException(nameof(index), index, "TerrainParams has 9 float4"),
+            5 => noiseOctaves, 6 => heightColor, 7 => colorLow, 8 => colorHigh, 9 => tileLattice,
+            _ => throw new ArgumentOutOfRangeException(nameof(index), index, "TerrainParams has 10 float4"),
         };
 
-        /// <summary>The 36 floats of the cbuffer, in order.</summary>
+        /// <summary>Whether the tiles are anchored to the terrain (a nonzero <see cref="tileLattice"/>).</summary>
+        public bool TilesAnchored => TileLattice.IsAnchored(tileLattice);
+
+        /// <summary>
+        /// These constants with <c>_TileLattice = lattice</c>: <see cref="Float4"/> 0 lays the tiles over
+        /// the range; else a range (relative to the origin) with positive, finite widths that the
+        /// current range fits in (<see cref="TileLattice.Validate"/>). Throws, naming the value, and
+        /// changes nothing when it does not.
+        /// </summary>
+        public TerrainParams WithTileLattice(Float4 lattice)
+        {
+            TileLattice.Validate(lattice, range, tess.x, "tileLattice");
+            TerrainParams p = this;
+            p.tileLattice = lattice;
+            return p;
+        }
+
+        /// <summary>The 40 floats of the cbuffer, in order.</summary>
         public float[] Pack()
         {
             var r = new float[Floats];

@@ -18,7 +18,7 @@ namespace GregoryTerrain
         public double triangles;
         /// <summary>Tiles whose factors were computed, and how many of them are drawn (not culled).</summary>
         public int tilesSampled, tilesSampledDrawn;
-        /// <summary>M^2.</summary>
+        /// <summary>Tiles drawn: M^2, or (M + 1)^2 anchored.</summary>
         public int tileCount;
 
         public override string ToString() => FormattableString.Invariant(
@@ -75,7 +75,7 @@ namespace GregoryTerrain
         /// The draw's triangles for a camera (<paramref name="objectToClip"/>, <paramref name="screenSize"/>
         /// pixels) at the inputs' settings and range. At most <paramref name="maxTiles"/> tiles are
         /// evaluated (51 surface points each): with more, the k x k tiles nearest the centres of a
-        /// k x k split of the range (k = floor(sqrt(maxTiles))), their count scaled to all M^2. The
+        /// k x k split of the tiles (k = floor(sqrt(maxTiles))), their count scaled to all of them (M^2, or (M + 1)^2 anchored). The
         /// vertex cache's factors are the integers it rounds them to (<see cref="VertexCache.IntegerFactors"/>).
         /// </summary>
         public static TriangleEstimate InView(TerrainInputs inputs, Float4x4 objectToClip, Float2 screenSize, TerrainKeywords keywords,
@@ -86,7 +86,7 @@ namespace GregoryTerrain
             if (!screenSize.IsFinite || !(screenSize.x > 0f) || !(screenSize.y > 0f))
                 throw new ArgumentException($"screenSize {screenSize} must be finite and positive", nameof(screenSize));
             if (maxTiles < 1) throw new ArgumentException(FormattableString.Invariant($"maxTiles ({maxTiles}) must be >= 1"), nameof(maxTiles));
-            int tiles = inputs.TileCountInt(), count = tiles * tiles;
+            int tiles = inputs.TilesAcross(), count = tiles * tiles;
             int k = count <= maxTiles ? tiles : Math.Max(1, (int)Math.Sqrt(maxTiles));
             int sampled = k * k;
             var e = new TriangleEstimate { tileCount = count, tilesSampled = sampled };

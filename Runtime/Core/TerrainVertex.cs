@@ -98,11 +98,11 @@ namespace GregoryTerrain
                 Float2 uv = RangeMapping.PatchLocalUV(q, region);
                 return EvaluatePatch(inputs, q, drawPatch, region, new Float2(GMath.saturate(uv.x), GMath.saturate(uv.y)));
             }
-            int tiles = inputs.TileCountInt();
+            int tiles = inputs.TilesAcross();
             if (tiles < 1 || (uint)drawPatch >= (uint)(tiles * tiles))
                 throw new ArgumentException(FormattableString.Invariant($"drawPatch ({drawPatch}) must lie in [0, {tiles * tiles - 1}] for {tiles} x {tiles} tiles"), nameof(drawPatch));
-            // Integer tile index first; RangeCoordinate forms ti + s before dividing (watertight).
-            TerrainPoint point = RangeMapping.ToTerrainPoint(p.range, p.rangeOrigin, tiles, drawPatch % tiles, drawPatch / tiles, tess.x, tess.y);
+            // Integer tile index first; the lattice point forms k + s before dividing (watertight).
+            TerrainPoint point = TileLattice.TileToTerrainPoint(p, drawPatch, tess.x, tess.y);
             return EvaluateSurfaceAt(inputs, point);
         }
 

@@ -104,13 +104,13 @@ namespace GregoryTerrain
         /// line's <see cref="TessellationPolicy.EdgeSegments"/> + 1 points and their pixel scales
         /// (0 at the ends), plus the bound of the noise the frame draws.
         /// </summary>
-        public static float LineErrorTessFactor(TerrainInputs inputs, int piece, Float3[] p, float[] k, TerrainKeywords keywords)
+        public static float LineErrorTessFactor(TerrainInputs inputs, int tile, int piece, Float3[] p, float[] k, TerrainKeywords keywords)
         {
             float kMax = 0f;
             for (int i = 1; i < Segments; i++) kMax = Math.Max(kMax, k[i]);
             TileFactorLine(piece, out _, out _, out _, out _, out int axis);
-            Float4 range = inputs.Params.range;
-            float edgeLength = (axis == 0 ? range.z - range.x : range.w - range.y) / inputs.TileCount();
+            Float2 edgeLengths = TileLattice.TileEdgeLengths(inputs.Params, tile);
+            float edgeLength = axis == 0 ? edgeLengths.x : edgeLengths.y;
             float noiseCurvature = 0f;
             if ((keywords & TerrainKeywords.Noise) != 0)
                 noiseCurvature = TessellationPolicy.NoiseCurvatureBound(inputs.NoiseSettingsStruct(), inputs.NoiseOctaveCount());
@@ -140,7 +140,7 @@ namespace GregoryTerrain
                 p[i] = v.xyz;
                 k[i] = v.w;
             }
-            return LineErrorTessFactor(inputs, piece, p, k, keywords);
+            return LineErrorTessFactor(inputs, tile, piece, p, k, keywords);
         }
 
         /// <summary>HLSL <c>TileFactorsOfPieces</c>: the inside factors follow the edges along them, the midlines and the centre.</summary>
@@ -165,6 +165,7 @@ namespace GregoryTerrain
             if (inputs == null) throw new ArgumentNullException(nameof(inputs));
             if ((keywords & TerrainKeywords.PaperMode) != 0)
                 throw new ArgumentException("keywords: tile factors are the tile mode's (paper mode has no hull_const factors)", nameof(keywords));
+            if (TileLattice.TileEmpty(inputs.Params, tile)) return CulledTileFactors();
             if (UniformTileFactors(inputs, out TileFactorSet f)) return f;
             var corners = new Float3[4];
             for (int c = 0; c < 4; c++) corners[c] = TileCornerObjectPosition(inputs, tile, c);

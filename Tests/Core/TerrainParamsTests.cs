@@ -16,7 +16,7 @@ namespace GregoryTerrain.Tests
         {
             var p = Make(new TerrainRange(0.25, 0.125, 0.75, 0.5), TessellationSettings.Uniform(8, 16f));
             float[] f = p.Pack();
-            Assert.That(f.Length, Is.EqualTo(36));
+            Assert.That(f.Length, Is.EqualTo(40));
             Assert.That(TerrainParams.PropertyNames[0], Is.EqualTo("_Range"));
             // _Range with a zero origin is the paper's (c, d, g, h).
             Assert.That(new[] { f[0], f[1], f[2], f[3] }, Is.EqualTo(new[] { 0.25f, 0.125f, 0.75f, 0.5f }));
@@ -26,6 +26,11 @@ namespace GregoryTerrain.Tests
             Assert.That(new[] { f[12], f[13], f[15] }, Is.EqualTo(new[] { 8f, 16f, 16f }));
             // _NoiseOctaves.x is the octave count.
             Assert.That(f[20], Is.EqualTo((float)NoiseSettings.Default.octaves));
+            // _TileLattice sits tenth, 0 (tiles on the range) unless anchored.
+            Assert.That(TerrainParams.PropertyNames[9], Is.EqualTo("_TileLattice"));
+            Assert.That(new[] { f[36], f[37], f[38], f[39] }, Is.EqualTo(new[] { 0f, 0f, 0f, 0f }));
+            float[] anchored = p.WithTileLattice(p.range).Pack();
+            Assert.That(new[] { anchored[36], anchored[37], anchored[38], anchored[39] }, Is.EqualTo(new[] { f[0], f[1], f[2], f[3] }));
             for (int i = 0; i < TerrainParams.Float4Count; i++)
                 Assert.That(f[4 * i + 3], Is.EqualTo(p[i].w), TerrainParams.PropertyNames[i]);
         }

@@ -132,7 +132,7 @@ namespace GregoryTerrain.Rig.Tests
             string dir = Path.Combine(_work, name);
             Directory.CreateDirectory(dir);
             var p = new List<float>(range) { 0, 0, 0, 0, 8, 8, 0, 0, tiles, factor, 1, factor };
-            while (p.Count < 36) p.Add(0);
+            while (p.Count < 40) p.Add(0);
             WriteFloats(Path.Combine(dir, "params.f32"), p);
             // clip = M * (x, y, z, 1) with rows (2,0,0,-1) (0,0,2,-1) (0,0,0,0.5) (0,0,0,1); stored column after column.
             float[,] m = { { 2, 0, 0, -1 }, { 0, 0, 2, -1 }, { 0, 0, 0, 0.5f }, { 0, 0, 0, 1 } };
@@ -324,7 +324,7 @@ namespace GregoryTerrain.Rig.Tests
             Assert.That(median, Is.GreaterThan(0.0));
         }
 
-        [TestCase("params.f32", 35, "144")]
+        [TestCase("params.f32", 39, "160")]
         [TestCase("camera.f32", 10, "176")]
         [TestCase("control_points.f32", 81, "320")]
         public void BadFileSize_FailsNamingTheFile(string file, int floats, string expectedBytes)

@@ -239,7 +239,7 @@ namespace GregoryTerrain.Rig.Tests
                                        params string[] extra)
         {
             var inputs = TerrainInputs.Create(grid, p);
-            int tiles = inputs.TileCountInt(), factor = (int)inputs.UniformTessFactor();
+            int tiles = inputs.TilesAcross(), factor = (int)inputs.UniformTessFactor();
             Assert.That(factor, Is.InRange(1, 64), "readback needs an integer uniform factor");
             Assert.That((float)factor, Is.EqualTo(inputs.UniformTessFactor()), "readback needs an integer uniform factor");
             WriteBuffers(dir, inputs, TopDownCamera());
@@ -278,10 +278,10 @@ namespace GregoryTerrain.Rig.Tests
         /// <summary>
         /// The tess coordinate lavapipe used on one axis. Its tessellator works in 16.16 fixed point,
         /// so s is a multiple of 2^-16 near index/F (26/63 reads 0.41259765625): the candidate whose
-        /// q and u, through Core's float RangeToTerrainPoint and PatchLocalUV, are the GPU's bit for
-        /// bit. NaN when none is.
+        /// q and u, through Core's float TileToTerrainPoint (the range's tiles or anchored ones) and
+        /// PatchLocalUV, are the GPU's bit for bit. NaN when none is.
         /// </summary>
-        public float GpuTessCoordinate(bool xAxis, int tile, int index, float gpuQ, float gpuLocal, Float4 region)
+        public float GpuTessCoordinate(bool xAxis, int slot, int index, float gpuQ, float gpuLocal, Float4 region)
         {
             double nominal = (double)index / Factor;
             int centre = (int)Math.Round(nominal * 65536);
@@ -292,8 +292,8 @@ namespace GregoryTerrain.Rig.Tests
                     if (fx < 0 || fx > 65536) continue;
                     float s = fx / 65536f;
                     TerrainPoint q = xAxis
-                        ? RangeMapping.ToTerrainPoint(Inputs.Params.range, Inputs.Params.rangeOrigin, Tiles, tile, 0, s, 0f)
-                        : RangeMapping.ToTerrainPoint(Inputs.Params.range, Inputs.Params.rangeOrigin, Tiles, 0, tile, 0f, s);
+                        ? TileLattice.TileToTerrainPoint(Inputs.Params, slot, s, 0f)
+                        : TileLattice.TileToTerrainPoint(Inputs.Params, slot, 0f, s);
                     Float2 approx = RangeMapping.Approximate(q);
                     Float2 uv = RangeMapping.PatchLocalUV(q, region);
                     if (xAxis ? approx.x == gpuQ && uv.x == gpuLocal : approx.y == gpuQ && uv.y == gpuLocal) return s;
@@ -320,8 +320,9 @@ namespace GregoryTerrain.Rig.Tests
                 var gpuQ = new Float2(v[o + 8], v[o + 9]);
                 int patch = Inputs.FindPatch(gpuQ);
                 Float4 region = Inputs.PatchRegion(patch);
-                float s = Cached(sCache, (true, ti, col, gpuQ.x, v[o + 10]), () => GpuTessCoordinate(true, ti, col, gpuQ.x, v[o + 10], region));
-                float t = Cached(sCache, (false, tj, row, gpuQ.y, v[o + 11]), () => GpuTessCoordinate(false, tj, row, gpuQ.y, v[o + 11], region));
+                // A column's x (a row's y) is the same in every tile of it: cached per column and row.
+                float s = Cached(sCache, (true, ti, col, gpuQ.x, v[o + 10]), () => GpuTessCoordinate(true, tile, col, gpuQ.x, v[o + 10], region));
+                float t = Cached(sCache, (false, tj, row, gpuQ.y, v[o + 11]), () => GpuTessCoordinate(false, tile, row, gpuQ.y, v[o + 11], region));
                 if (float.IsNaN(s) || float.IsNaN(t))
                 {
                     c.Unmatched++;

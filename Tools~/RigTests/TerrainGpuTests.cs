@@ -115,6 +115,53 @@ namespace GregoryTerrain.Rig.Tests
             Assert.That(differing, Is.EqualTo(0));
         }
 
+        /// <summary>
+        /// Anchored tiles (TileLattice) through the domain stage: the range panned by part of a cell
+        /// (and, deep-zoom, from a snapped origin) over the lattice anchored at its start. Every vertex
+        /// of the (M + 1)^2 tiles is Core's, inside the range, and shared edges are bit-identical.
+        /// </summary>
+        [Test]
+        public void AnchoredTilesReadBackCoresVerticesWatertight()
+        {
+            double extent = ReadbackRun.TerrainExtent(_grid);
+            foreach (var (name, lattice) in new[] { ("quarter", Ranges[1].range), ("narrow", Ranges[3].range) })
+                foreach (bool noise in new[] { false, true })
+                {
+                    // A pan of 0.37 cell in x and 0.81 in y: the first cell stays k0 = 0, so slot order is tile order.
+                    double cx = lattice.Width / Tiles, cy = lattice.Height / Tiles;
+                    var range = new TerrainRange(lattice.c + 0.37 * cx, lattice.d + 0.81 * cy, lattice.g + 0.37 * cx, lattice.h + 0.81 * cy);
+                    RangeOrigin origin = RangeOrigin.For(lattice);
+                    var p = ReadbackRun.UniformParams(_grid, range, origin, Tiles, Factor, Noise);
+                    RangeMapping.EncodeRange(lattice, origin, out Float4 latticeF, out _);
+                    p = p.WithTileLattice(latticeF);
+                    string key = "anchored-" + name + (noise ? "+noise" : "");
+                    ReadbackRun run = ReadbackRun.Draw(Path.Combine(_work, key), _spirv, _grid, p, noise ? Noise : (NoiseSettings?)null);
+                    Assert.That(run.Tiles, Is.EqualTo(Tiles + 1), key);
+                    ReadbackComparison c = run.Compare();
+                    var (pairs, differing) = run.SharedEdges();
+                    TestContext.Out.WriteLine("{0,-24} vertices {1}, tess found {2}, q equal {3}, max |gpu - core| / extent {4:G3}, max |normal diff| {5:G3}; shared edges {6} pairs, {7} differ",
+                        key, c.Vertices, c.Vertices - c.Unmatched, c.QEqual, c.MaxPosition / extent, c.MaxNormal, pairs, differing);
+                    Assert.That(c.Nan, Is.EqualTo(0), key);
+                    Assert.That(c.Vertices, Is.EqualTo((Tiles + 1) * (Tiles + 1) * (Factor + 1) * (Factor + 1)), key);
+                    Assert.That(c.Unmatched, Is.EqualTo(0), key + ": tess coordinates recovered through Core's anchored mapping");
+                    Assert.That(c.QEqual, Is.EqualTo(c.Vertices), key + ": global points q");
+                    Assert.That(c.MaxPosition / extent, Is.LessThan(1e-5), key);
+                    Assert.That(c.MaxNormal, Is.LessThan(1e-4), key);
+                    Assert.That(pairs, Is.EqualTo(2 * (Tiles + 1) * Tiles * (Factor + 1)), key + ": M (M + 1) shared edges each way");
+                    Assert.That(differing, Is.EqualTo(0), key + ": shared edges bit-identical");
+                    // Every vertex lies in the range (the first tile starts at c, the last ends at g): the
+                    // read-back q is rounded to float, so within 2e-7 (three of its steps near 0.6).
+                    Float4 r = p.range;
+                    double ox = (double)p.rangeOrigin.x + p.rangeOrigin.z, oy = (double)p.rangeOrigin.y + p.rangeOrigin.w;
+                    for (int k = 0; k < run.VertexCount; k++)
+                    {
+                        double qx = run.Readback[12 * k + 8], qy = run.Readback[12 * k + 9];
+                        Assert.That(qx >= ox + r.x - 2e-7 && qx <= ox + r.z + 2e-7 && qy >= oy + r.y - 2e-7 && qy <= oy + r.w + 2e-7,
+                                    Is.True, $"{key}: vertex {k} at ({qx:R}, {qy:R}) outside the range {r} + origin ({ox:R}, {oy:R})");
+                    }
+                }
+        }
+
         [Test]
         public void VertexCountIsTheSameAtEveryRange()
         {

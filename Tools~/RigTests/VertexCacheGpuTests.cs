@@ -80,6 +80,7 @@ namespace GregoryTerrain.Rig.Tests
             ReadbackRun.Exec(_cli, pack.ToArray(), null);
             if (camera != null) ReadbackRun.WriteFloats(Path.Combine(dir, "camera.f32"), camera);
             var p = ReadParams(Path.Combine(dir, "params.f32"));
+            tiles = TileLattice.TilesAcross(p);   // M, or M + 1 with --anchor-at
             var frame = new CacheFrame { Tiles = tiles, Inputs = TerrainInputs.Create(_grid, p), Limit = VertexCache.FactorLimit(p.tess) };
             frame.Slots = VertexCache.SlotsPerTile(frame.Limit);
             string factors = Path.Combine(dir, "tile_factors.f32"), records = Path.Combine(dir, "vertex_cache.u32");
@@ -127,7 +128,7 @@ namespace GregoryTerrain.Rig.Tests
             float[] f = ReadbackRun.ReadFloats(path);
             Float4 F(int i) => new Float4(f[4 * i], f[4 * i + 1], f[4 * i + 2], f[4 * i + 3]);
             return new TerrainParams { range = F(0), rangeOrigin = F(1), gridSize = F(2), tess = F(3), noise = F(4),
-                                       noiseOctaves = F(5), heightColor = F(6), colorLow = F(7), colorHigh = F(8) };
+                                       noiseOctaves = F(5), heightColor = F(6), colorLow = F(7), colorHigh = F(8), tileLattice = F(9) };
         }
 
         /// <summary>
@@ -349,6 +350,67 @@ namespace GregoryTerrain.Rig.Tests
                                            "--frames", "3", "--camera-path", CameraPathOf("orbit-range"), "--update-range-per-frame");
             for (int tile = 0; tile < tiles * tiles; tile++)
                 Assert.That(ranged.Evaluated(tile), Is.EqualTo(!ranged.Culled(tile)), "range moved: tile " + tile);
+        }
+
+        /// <summary>
+        /// Anchored tiles (TileLattice), the range panning: a frame evaluates again only the tiles whose
+        /// span the pan changed (those the range's edges cut), keeps the rest, and ends with the
+        /// picture and cache of one frame built from scratch at its range. Crossing: the lattice is
+        /// placed so that frame 1's pan crosses a lattice line (the first cell changes, and the cell
+        /// leaving takes the slot of the one entering).
+        /// </summary>
+        [TestCase(false)]
+        [TestCase(true)]
+        public void AnchoredPanReevaluatesOnlyTheTilesItsEdgesCut(bool crossing)
+        {
+            const string range = "0.1,0.1,0.9,0.9";
+            const int tiles = 8, width = 160, height = 120;
+            // A cell is 0.1 wide; frame 1 moves the range by 8e-5: with the lattice 4e-5 past the
+            // range's corner, line 1 (0.10004) falls between the two frames' c.
+            string lattice = crossing ? "0.00004,0.00004,0.80004,0.80004" : range;
+            string name = crossing ? "anchored-cross" : "anchored-pan";
+            string[] tess = { "--target-pixels", "1", "--max-factor", "16", "--anchor-at", lattice };
+            // Three frames: the harness shifts the range by 1e-4 of its size in frame 1 and draws the
+            // plan's range in the last; the lattice stays where --anchor-at put it.
+            CacheFrame panned = DrawCached(name, range, tiles, tess, width, height, null, "--frames", "3", "--update-range-per-frame");
+            CacheFrame fresh = DrawCached(name + "-fresh", range, tiles, tess, width, height);
+            Assert.That(panned.Tiles, Is.EqualTo(tiles + 1), "(M + 1)^2 tiles");
+
+            RigPng pp = RigPng.Read(Path.Combine(_work, name, "image.png")), pf = RigPng.Read(Path.Combine(_work, name + "-fresh", "image.png"));
+            Assert.That(pp.PixelsDifferingFrom(pf, 0), Is.EqualTo(0), "after the pan against one frame built from scratch");
+            Assert.That(panned.Run.Long("stat", "clipping_invocations"), Is.EqualTo(fresh.Run.Long("stat", "clipping_invocations")));
+
+            TerrainParams p = ReadParams(Path.Combine(_work, name, "params.f32"));
+            TerrainParams shifted = p;
+            float dx = (p.range.z - p.range.x) * 1e-4f * 1f, dy = (p.range.w - p.range.y) * 1e-4f * 1f;   // harness frameRange, frame 1
+            shifted.range = new Float4(p.range.x + dx, p.range.y + dy, p.range.z + dx, p.range.w + dy);
+            int drawn = 0, evaluated = 0, slots = 0;
+            for (int tile = 0; tile < panned.Tiles * panned.Tiles; tile++)
+            {
+                Assert.That(panned.FactorsOf(tile), Is.EqualTo(fresh.FactorsOf(tile)), "tile " + tile);
+                Assert.That(panned.Culled(tile), Is.EqualTo(fresh.Culled(tile)), "tile " + tile);
+                if (fresh.Culled(tile)) continue;
+                drawn++;
+                bool cut = !TileLattice.TileSpan(shifted, tile).Equals(TileLattice.TileSpan(p, tile));
+                Assert.That(panned.Evaluated(tile), Is.EqualTo(cut), "tile " + tile + ": evaluated exactly when the pan moved its span");
+                if (cut) evaluated++;
+                long r = 4 * VertexCache.EvaluatedRangeIndex(tile, panned.Tiles);
+                Assert.That(new Float4(panned.Factors[r], panned.Factors[r + 1], panned.Factors[r + 2], panned.Factors[r + 3]),
+                            Is.EqualTo(TileLattice.TileSpan(p, tile)), "tile " + tile + ": its record holds the span its slots were evaluated at");
+                foreach (var (_, slot) in VertexCache.TilePoints(fresh.FactorsOf(tile), fresh.Limit))
+                    for (int part = 0; part < VertexCache.Uint4sPerRecord(false); part++, slots++)
+                        Assert.That(panned.Part(tile, slot, part), Is.EqualTo(fresh.Part(tile, slot, part)), "tile " + tile + " slot " + slot);
+            }
+            int k0 = TileLattice.FirstCell(p.range.x, p.tileLattice.x, p.tileLattice.z, p.tess.x);
+            int k1 = TileLattice.FirstCell(shifted.range.x, p.tileLattice.x, p.tileLattice.z, p.tess.x);
+            Assert.That(k1 - k0, Is.EqualTo(crossing ? 1 : 0), "frame 1's first cell");
+            TestContext.Out.WriteLine("anchored pan{0}: {1} of {2} drawn tiles evaluated again (the range's edges), {3} record parts equal to a fresh build",
+                                      crossing ? " across a lattice line" : "", evaluated, drawn, slots);
+            // The edge ring; crossing a line (diagonally) also moves the cell leaving, the cell entering
+            // in its slot and the cell that turns whole: three columns and three rows.
+            int moved = crossing ? (tiles + 1) * (tiles + 1) - (tiles - 2) * (tiles - 2) : 4 * tiles;
+            Assert.That(evaluated, Is.GreaterThan(0).And.LessThanOrEqualTo(moved), "the tiles the pan moved at most");
+            Assert.That(drawn - evaluated, Is.GreaterThanOrEqualTo((tiles - 1) * (tiles - 1) / 2), "most tiles kept");
         }
 
         // gt-cli pack --orbit's file (Tools~/dotnet/Gt/PackCommand.cs, CameraPathFile).

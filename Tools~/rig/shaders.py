@@ -51,7 +51,7 @@ EXPECTED_BINDINGS = {
     "_SnowDepth": 6,
     "_TileFactors": 7, "_TileFactorsRW": 7, "_VertexCache": 8, "_VertexCacheRW": 8,
 }
-TERRAIN_PARAMS_BYTES = 144   # 9 float4
+TERRAIN_PARAMS_BYTES = 160   # 10 float4
 SNOW_PARAMS_BYTES = 16       # GT_SNOW appends _SnowMapSize to TerrainParams
 RIG_CAMERA_BYTES = 176       # 2 float4x4 + 3 float4
 

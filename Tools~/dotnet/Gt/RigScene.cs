@@ -40,6 +40,14 @@ namespace GregoryTerrain.Rig
             s.HeightColor = new HeightColorSettings((float)a.Double("gamma", 0.25), 0.15f, 24f);
             s.Params = TerrainParams.Create(s.Grid, s.Range, s.Origin, s.Tessellation, s.Noise, s.HeightColor,
                 s.ColorLow, s.ColorHigh, (float)a.Double("noise-vertices", 0));
+            // --anchor-at c,d,g,h: tiles anchored to the terrain at that range (TileLattice), as the
+            // renderer anchors them at the range it had when a pan began.
+            if (a.Flag("anchor-at"))
+            {
+                var l = a.Doubles("anchor-at", 4);
+                RangeMapping.EncodeRange(new TerrainRange(l[0], l[1], l[2], l[3]), s.Origin, out Float4 lattice, out _);
+                s.Params = s.Params.WithTileLattice(lattice);
+            }
             s.Camera = ZoomViewCamera(s, a.Int("width", 800), a.Int("height", 600));
             return s;
         }

@@ -40,7 +40,7 @@ Inputs loadInputs(const Gpu& gpu, const std::string& dir, const std::optional<st
     std::memcpy(in.params.data(), params.data(), kParamsBytes);
     if (range) std::copy(range->begin(), range->end(), in.params.begin());
 
-    // GT_SNOW: _SnowMapSize follows TerrainParams' nine float4 in the same cbuffer.
+    // GT_SNOW: _SnowMapSize follows TerrainParams' ten float4 in the same cbuffer.
     std::vector<uint8_t> snowSize, depth;
     if (!snowParams.empty()) {
         snowSize = readSized(snowParams, kSnowParamsBytes, 0);

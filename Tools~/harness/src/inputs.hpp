@@ -9,7 +9,7 @@
 
 namespace gt {
 
-constexpr uint32_t kBindingParams = 0;         // b0 TerrainParams, 9 float4
+constexpr uint32_t kBindingParams = 0;         // b0 TerrainParams, 10 float4
 constexpr uint32_t kBindingCamera = 1;         // b1 RigCamera
 constexpr uint32_t kBindingControlPoints = 2;  // t0 StructuredBuffer<float4>, 20 per patch
 constexpr uint32_t kBindingRegions = 3;        // t1 StructuredBuffer<float4>
@@ -19,7 +19,7 @@ constexpr uint32_t kBindingSnowDepth = 6;      // t4 StructuredBuffer<float> (GT
 constexpr uint32_t kBindingCount = 6;          // without snow
 constexpr uint32_t kBindingCountSnow = 7;      // with --snow-depth
 
-constexpr size_t kParamsBytes = 9 * 16;             // _Range .. _ColorHigh
+constexpr size_t kParamsBytes = 10 * 16;            // _Range .. _TileLattice
 constexpr size_t kCameraBytes = 2 * 64 + 3 * 16;    // two float4x4 + three float4
 constexpr size_t kPatchBytes = 20 * 16;             // 20 float4 control points
 constexpr size_t kSnowParamsBytes = 16;             // _SnowMapSize = (R, 1/R, depthCap, 0)

@@ -41,7 +41,7 @@ def make_inputs(d, tiles, factor, rng=(0.0, 0.0, 1.0, 1.0)):
     element i holds i + 0.25 / 0.5 / 0.75 so the shader's reads can be checked."""
     os.makedirs(d, exist_ok=True)
     patches = 64
-    params = list(rng) + [0] * 4 + [8, 8, 0, 0] + [tiles, factor, 1, factor] + [0] * 20
+    params = list(rng) + [0] * 4 + [8, 8, 0, 0] + [tiles, factor, 1, factor] + [0] * 24
     write_f32(os.path.join(d, "params.f32"), params)
     # clip = (2x - 1, 2z - 1, 0.5, 1) for object (x, y, z); column-major: column c at [4c..4c+3].
     rows = [[2, 0, 0, -1], [0, 0, 2, -1], [0, 0, 0, 0.5], [0, 0, 0, 1]]
@@ -385,9 +385,9 @@ def main():
 
     # 8. Errors: bad file size, missing split possibility, unknown device.
     bad = make_inputs(WORK + "/in_bad", 4, 8)
-    write_f32(bad + "/params.f32", [0] * 35)
+    write_f32(bad + "/params.f32", [0] * 39)
     p, l = run(tess_args(bad, 4))
-    check("bad params size fails", p.returncode != 0 and "params.f32" in p.stderr and "144" in p.stderr, p.stderr)
+    check("bad params size fails", p.returncode != 0 and "params.f32" in p.stderr and "160" in p.stderr, p.stderr)
     p, l = run(tess_args(d, 4, extra=["--device", "no-such-gpu-anywhere"]))
     check("unknown device fails", p.returncode != 0 and "no-such-gpu-anywhere" in p.stderr, p.stderr)
     p, l = run(tess_args(d, 4, extra=["--max-vertices-per-draw", "100", "--max-factor", "63"]))

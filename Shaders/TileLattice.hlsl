@@ -1,0 +1,120 @@
+// Tiles anchored to the terrain (Documentation~/internals.md, "Anchored tiles"). Mirrors
+// Runtime/Core/TileLattice.cs, same names, step for step.
+//
+// _TileLattice = 0: the M x M tiles lie on the range (the paper's layout). Else it is the range the
+// tiles were anchored at: its M x M cells, repeated beyond it, form a lattice fixed in terrain space;
+// the current range (no wider) meets M + 1 cells per axis, and tile i is cell k0 + i clipped to the
+// range. A pan moves only the clipped cells, so whole cells keep their points bit for bit (no
+// swimming; the vertex cache keeps their vertices). Cell k sits in slot k mod (M + 1) per axis.
+#ifndef GT_TILE_LATTICE_INCLUDED
+#define GT_TILE_LATTICE_INCLUDED
+
+#include "TerrainInputs.hlsl"
+#include "RangeMapping.hlsl"
+
+// --- One axis (parameters in) ---------------------------------------------------------------------
+
+// Point s of lattice cell k: lo + ((k + s) / M)(hi - lo), RangeCoordinate's formula (k + s first,
+// so cell k at s = 1 and cell k + 1 at s = 0 form the same float).
+float LatticePoint(float lo, float hi, float tiles, int k, float s)
+{
+    precise float sum = float(k) + s;
+    precise float p = lo + (sum / tiles) * (hi - lo);
+    return p;
+}
+
+float LatticeLine(float lo, float hi, float tiles, int k) { return LatticePoint(lo, hi, tiles, k, 0.0); }
+
+// The cell holding c, corrected against the lines themselves (a division alone may be off by one).
+int FirstCell(float c, float lo, float hi, float tiles)
+{
+    int k = (int)floor((c - lo) / (hi - lo) * tiles);
+    if (LatticeLine(lo, hi, tiles, k) > c) k -= 1;
+    else if (LatticeLine(lo, hi, tiles, k + 1) <= c) k += 1;
+    return k;
+}
+
+// The part of cell k0 + i (i = 0..M) inside [c, g]; cells past g shrink to g.
+float2 AxisSpan(float c, float g, float lo, float hi, float tiles, int k0, int i)
+{
+    int k = k0 + i;
+    float a = LatticeLine(lo, hi, tiles, k), b = LatticeLine(lo, hi, tiles, k + 1);
+    float l = i == 0 ? c : clamp(a, c, g);
+    float h = i == (int)tiles ? g : clamp(b, c, g);
+    return float2(l, h);
+}
+
+// A whole cell keeps the lattice formula (bit-stable while the range pans); a clipped one
+// interpolates its span, exact at both ends, so a line shared with a whole neighbour matches.
+float AxisPoint(float c, float g, float lo, float hi, float tiles, int k0, int i, float s)
+{
+    float2 span = AxisSpan(c, g, lo, hi, tiles, k0, i);
+    int k = k0 + i;
+    if (span.x == LatticeLine(lo, hi, tiles, k) && span.y == LatticeLine(lo, hi, tiles, k + 1))
+        return LatticePoint(lo, hi, tiles, k, s);
+    precise float p = (1.0 - s) * span.x + s * span.y;
+    return p;
+}
+
+// The tile index (0..M) slot `slot` holds: (slot - k0) mod (M + 1), never negative.
+int TileOfSlot(int slot, int k0, int across)
+{
+    int r = (slot - k0) % across;
+    return r < 0 ? r + across : r;
+}
+
+// --- Both axes, from the frame's inputs ---------------------------------------------------------------
+
+float4 AnchoredTileSpan(uint slot, out int2 k0, out int2 ij)
+{
+    int across = (int)TilesAcrossInt();
+    float m = TileCount();
+    k0 = int2(FirstCell(_Range.x, _TileLattice.x, _TileLattice.z, m), FirstCell(_Range.y, _TileLattice.y, _TileLattice.w, m));
+    ij = int2(TileOfSlot((int)slot % across, k0.x, across), TileOfSlot((int)slot / across, k0.y, across));
+    float2 x = AxisSpan(_Range.x, _Range.z, _TileLattice.x, _TileLattice.z, m, k0.x, ij.x);
+    float2 y = AxisSpan(_Range.y, _Range.w, _TileLattice.y, _TileLattice.w, m, k0.y, ij.y);
+    return float4(x.x, y.x, x.y, y.y);
+}
+
+// The global point of tess coordinate `tess` in the tile of draw patch (slot) `slot`.
+TerrainPoint TileToTerrainPoint(uint slot, float2 tess)
+{
+    uint across = TilesAcrossInt();
+    if (!TilesAnchored())
+        return RangeToTerrainPoint(_Range, _RangeOrigin, TileCount(), uint2(slot % across, slot / across), tess);
+    int2 k0, ij;
+    AnchoredTileSpan(slot, k0, ij);
+    float m = TileCount();
+    TerrainPoint p;
+    p.originHi = _RangeOrigin.xy;
+    p.local = _RangeOrigin.zw + float2(AxisPoint(_Range.x, _Range.z, _TileLattice.x, _TileLattice.z, m, k0.x, ij.x, tess.x),
+                                       AxisPoint(_Range.y, _Range.w, _TileLattice.y, _TileLattice.w, m, k0.y, ij.y, tess.y));
+    return p;
+}
+
+// The terrain part (relative to the origin) slot `slot` draws, (l.x, l.y, h.x, h.y): anchored only.
+float4 TileSpan(uint slot)
+{
+    int2 k0, ij;
+    return AnchoredTileSpan(slot, k0, ij);
+}
+
+// An anchored tile without area (a cell past g, or the last one when the range ends on a lattice
+// line): culled, so its degenerate triangles cost nothing.
+bool TileEmpty(uint slot)
+{
+    if (!TilesAnchored()) return false;
+    float4 span = TileSpan(slot);
+    return span.x == span.z || span.y == span.w;
+}
+
+// Edge lengths along x and y in terrain units: a shared edge's is its row's or column's, so both
+// tiles see the same.
+float2 TileEdgeLengths(uint slot)
+{
+    if (!TilesAnchored()) return (_Range.zw - _Range.xy) / TileCount();
+    float4 span = TileSpan(slot);
+    return span.zw - span.xy;
+}
+
+#endif // GT_TILE_LATTICE_INCLUDED
