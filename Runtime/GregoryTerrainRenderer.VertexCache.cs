@@ -51,7 +51,7 @@ namespace GregoryTerrain
             int limit = VertexCache.FactorLimit(_params.tess);
             if (!CacheFits(limit, snow)) return false;
 
-            _cache.EnsureBuffers(tiles, limit, snow);
+            _cache.EnsureBuffers(CacheTilesAcross, limit, snow);
             int w = cam.pixelWidth, h = cam.pixelHeight;
             if (w > 0 && h > 0)
             {
@@ -93,11 +93,12 @@ namespace GregoryTerrain
         bool CacheFits(int limit, bool snow)
         {
             long deviceLimit = SystemInfo.maxGraphicsBufferSize;
-            var key = (tiles, limit, snow, deviceLimit);
+            int across = CacheTilesAcross;
+            var key = (across, limit, snow, deviceLimit);
             if (key.Equals(_cacheCheckedFor)) return _cacheError == null;
             _cacheCheckedFor = key;
             _cacheError = null;
-            try { VertexCacheBudget.CheckFits(tiles, limit, snow, deviceLimit > 0 ? deviceLimit : GpuLayout.MaxBufferBytes); }
+            try { VertexCacheBudget.CheckFits(across, limit, snow, deviceLimit > 0 ? deviceLimit : GpuLayout.MaxBufferBytes); }
             catch (ArgumentException e)
             {
                 _cacheError = $"vertexEvaluation = ComputeCache: {e.Message}";

@@ -35,8 +35,9 @@ namespace GregoryTerrain
         /// Bytes this script sets per frame in the steady state: one float4, <c>_Range</c> (one
         /// MaterialPropertyBlock.SetVector in PushRange, then one Graphics.RenderPrimitives call).
         /// Anything else is set only on change: <c>_RangeOrigin</c> (16 bytes, on re-snap),
-        /// <c>_GtObjectToWorld/_GtWorldToObject</c> (128 bytes, when the Transform changes), the
-        /// whole TerrainParams block (9 float4, 144 bytes, when a setting or the grid changes) and the
+        /// <c>_GtObjectToWorld/_GtWorldToObject</c> (128 bytes, when the Transform changes),
+        /// <c>_TileLattice</c> (16 bytes, when anchored tiles are anchored again: a zoom, a re-snap), the
+        /// whole TerrainParams block (10 float4, 160 bytes, when a setting or the grid changes) and the
         /// buffers (on a new asset version). What Unity does with the property block inside the draw
         /// (it builds the draw's constant buffers from it) is Unity's and not counted here. With
         /// Vertex evaluation = Compute cache the steady state is the same: the cache pass compares its
@@ -64,6 +65,7 @@ namespace GregoryTerrain
             /// <summary>Positions of the two range constants in <see cref="Params"/>.</summary>
             public static readonly int RangeIndex = ParamIndex("_Range");
             public static readonly int RangeOriginIndex = ParamIndex("_RangeOrigin");
+            public static readonly int TileLatticeIndex = ParamIndex("_TileLattice");
 
             static int[] ParamIds()
             {
@@ -99,6 +101,9 @@ namespace GregoryTerrain
 
         [Tooltip("0 = adaptive (screen-space) factors. A value > 0 uses that factor for every edge: for debugging and measurements.")]
         [SerializeField, Range(0, 64)] int uniformFactor;
+
+        [Tooltip("Anchor the tiles to the terrain: while the range pans, the vertices stay where they are on the terrain (no swimming), and the Compute cache evaluates again only the tiles the range's edges cut, not all of them. Draws (M + 1) x (M + 1) tiles, the outer ones clipped to the range; a zoom anchors them again. Adaptive factors only: with a uniform factor or the fallback grid the tiles lie on the range. Off: the tiles always lie on the range (the paper's layout).")]
+        [SerializeField] bool anchorTiles = true;
 
         [Tooltip("Fallback only (GPUs without a tessellator): each tile is a fixed (F+1) x (F+1) vertex grid.")]
         [SerializeField, Range(1, 64)] int fallbackGridFactor = 16;
@@ -238,7 +243,7 @@ namespace GregoryTerrain
         /// tile, F = the uniform factor, else maxFactor; the fallback grid's F without a tessellator).
         /// What a camera's view draws: <see cref="EstimateTrianglesInView"/>.
         /// </summary>
-        public double EstimatedTriangleCount => TessellationPolicy.EstimateTriangleCount(tiles,
+        public double EstimatedTriangleCount => TessellationPolicy.EstimateTriangleCount(tiles + (anchorTiles && uniformFactor == 0 && !DrawsFallback ? 1 : 0),
             DrawsFallback ? fallbackGridFactor : uniformFactor > 0 ? uniformFactor : maxFactor);
 
         /// <summary>Why the current settings cannot be drawn (Core's message, naming field and value), or null.</summary>
@@ -282,7 +287,8 @@ namespace GregoryTerrain
 
         /// <summary>
         /// GPU memory the vertex cache needs for the current settings, in bytes (Core's
-        /// <see cref="VertexCacheBudget.TotalBytes"/>: 864 M^2 + 16 M^2 ((L+1)^2 + 4 (L+1)) R, L the
+        /// <see cref="VertexCacheBudget.TotalBytes"/>: 864 T^2 + 16 T^2 ((L+1)^2 + 4 (L+1)) R, T = M, or
+        /// M + 1 with anchored tiles (<see cref="CacheTilesAcross"/>), L the
         /// uniform factor, else the max factor, rounded up; R = 2 with the material's GT_SNOW, else 1),
         /// whichever evaluation is chosen.
         /// </summary>
@@ -291,9 +297,12 @@ namespace GregoryTerrain
             get
             {
                 int limit = VertexCache.FactorLimit(new TessellationSettings(tiles, maxFactor, targetPixelError, uniformFactor).ToFloat4());
-                return VertexCacheBudget.TotalBytes(tiles, limit, SnowOn());
+                return VertexCacheBudget.TotalBytes(CacheTilesAcross, limit, SnowOn());
             }
         }
+
+        /// <summary>Tiles per axis the cache holds: M + 1 with anchored tiles (adaptive factors), else M.</summary>
+        int CacheTilesAcross => tiles + (anchorTiles && uniformFactor == 0 ? 1 : 0);
 
         /// <summary>GPU memory the vertex cache holds now (0 while it is not allocated).</summary>
         public long VertexCacheAllocatedBytes => _cache.AllocatedBytes;
@@ -350,9 +359,12 @@ namespace GregoryTerrain
             if (fallback && !EnsureFallbackIndices()) return;
 
             if (_origin.Update(_range)) _originDirty = true;
+            // The lattice before the output offset: with noise the offset's octave count follows
+            // the lattice's width (TileLattice.LayoutWidth).
             if (_settingsDirty)
             {
-                PushSettings(fallback);   // all nine TerrainParams float4, _Range and _RangeOrigin included
+                PushSettings(fallback);   // all ten TerrainParams float4, _Range and _RangeOrigin included
+                if (_settingsError == null) UpdateTileLattice(fallback);
                 UpdateOutputOffset();
                 PushMatrices();
                 _settingsDirty = false;
@@ -360,6 +372,7 @@ namespace GregoryTerrain
             else
             {
                 PushRange();
+                if (_settingsError == null) UpdateTileLattice(fallback);
                 if (UpdateOutputOffset() || transform.hasChanged) PushMatrices();
             }
             if (_settingsError != null) return;   // logged once; drawn again after the next valid change
@@ -373,7 +386,7 @@ namespace GregoryTerrain
                 receiveShadows = receiveShadows,
                 layer = gameObject.layer,
             };
-            int tileCount = tiles * tiles;
+            int across = TileLattice.TilesAcross(_params), tileCount = across * across;
             if (fallback)
                 Graphics.RenderPrimitivesIndexed(rp, MeshTopology.Triangles, _fallbackIndices,
                     _fallbackIndices.count, 0, tileCount);
@@ -396,8 +409,24 @@ namespace GregoryTerrain
             if (_originDirty)
             {
                 _props.SetVector(Ids.Params[Ids.RangeOriginIndex], ToVector(o));
+                _params.tileLattice = default;   // in the old origin's coordinates: anchor again
                 _originDirty = false;
             }
+        }
+
+        /// <summary>
+        /// Anchored tiles (<see cref="TileLattice"/>): keeps <c>_TileLattice</c> while the range only
+        /// pans and anchors it at the range on a zoom, a re-snap or a settings change (16 bytes then);
+        /// 0 when the tiles lie on the range (off, a uniform factor, the fallback grid). The cache pass
+        /// sees a new lattice as a new record input and evaluates every tile again.
+        /// </summary>
+        void UpdateTileLattice(bool fallback)
+        {
+            bool anchor = anchorTiles && !fallback && uniformFactor == 0;
+            Float4 lattice = anchor ? TileLattice.Follow(_params.tileLattice, _params.range, tiles) : default;
+            if (lattice.Equals(_params.tileLattice)) return;   // PushSettings sent 0 with the block
+            _params = _params.WithTileLattice(lattice);
+            _props.SetVector(Ids.Params[Ids.TileLatticeIndex], ToVector(lattice));
         }
 
         /// <summary>
@@ -428,7 +457,7 @@ namespace GregoryTerrain
             _params = p;
             for (int k = 0; k < TerrainParams.Float4Count; k++)
                 _props.SetVector(Ids.Params[k], ToVector(p[k]));
-            _originDirty = false;
+            _originDirty = false;   // and _TileLattice = 0: UpdateTileLattice anchors at the range if it should
         }
 
         static Vector4 ToVector(Float4 v) => new Vector4(v.x, v.y, v.z, v.w);

@@ -5,18 +5,19 @@ namespace GregoryTerrain
 {
     /// <summary>
     /// The compute pre-pass of <see cref="VertexEvaluation.ComputeCache"/>: owns <c>_TileFactors</c>
-    /// (54 M^2 float4) and <c>_VertexCache</c> (M^2 S(L) R uint4, sizes from Core's
+    /// (54 T^2 float4) and <c>_VertexCache</c> (T^2 S(L) R uint4, T = M, or M + 1 with anchored tiles; sizes from Core's
     /// <see cref="VertexCacheBudget"/>) and dispatches <c>CacheTileFactors</c> then
     /// <c>CacheTileVertices</c> of <c>Shaders/TerrainCache.compute</c> only when something the
     /// kernels read differs from the last dispatch: the TerrainParams block (range and origin
     /// included), the LOD camera's object-to-clip matrix and pixel size, the effect keywords, the
     /// grid's buffers, or the snow map's version. A frame where none changed dispatches nothing.
-    /// <para>The kernels re-evaluate only the tiles whose integer factors or <c>_Range</c> differ from
-    /// what their slots hold (a camera move leaves most tiles alone). Whatever else the records
-    /// depend on is this class's to notice: when the origin, the grid, a noise or colour setting, the
+    /// <para>The kernels re-evaluate only the tiles whose integer factors or range key (<c>_Range</c>,
+    /// or with anchored tiles the tile's own span) differ from what their slots hold (a camera move,
+    /// or an anchored pan, leaves most tiles alone). Whatever else the records depend on is this
+    /// class's to notice: when the origin, the tile lattice, the grid, a noise or colour setting, the
     /// object transform, the effects or the snow map changed, or the buffers are new, it zeroes the
-    /// tiles' range records (16 M^2 bytes) first; a zero range is never <c>_Range</c> (a range has a
-    /// width), so every tile's samples and slots are evaluated again.</para>
+    /// tiles' range records (16 T^2 bytes) first; a zero record always reads as moved, so every
+    /// tile's samples and slots are evaluated again.</para>
     /// <para>The renderer decides whether the pass runs at all (compute support, the shader, the
     /// LOD camera, the size check); this class only sizes, compares and dispatches.</para>
     /// </summary>
@@ -162,7 +163,7 @@ namespace GregoryTerrain
             shader.SetBuffer(_verticesKernel, Ids.TileFactorsRW, _factors);
             shader.SetBuffer(_verticesKernel, Ids.VertexCacheRW, _vertices);
 
-            // A group a tile for the factors; groups (x, y, 0 .. G - 1) share tile y M + x for the vertices.
+            // A group a tile for the factors; groups (x, y, 0 .. G - 1) share tile y T + x for the vertices.
             shader.Dispatch(_factorsKernel, _tiles, _tiles, 1);
             shader.Dispatch(_verticesKernel, _tiles, _tiles, GregoryTerrain.VertexCache.GroupsPerTile(_factorLimit));
 
@@ -230,7 +231,8 @@ namespace GregoryTerrain
             return true;
         }
 
-        // _Range (the kernels compare it per tile) and _Tess.zw (pixel target, uniform factor) zeroed.
+        // _Range (the kernels compare it, or the anchored tile's span, per tile) and _Tess.zw (pixel
+        // target, uniform factor) zeroed. _TileLattice stays: a new lattice forgets every tile.
         static TerrainParams WithoutPerTileInputs(TerrainParams p)
         {
             p.range = default;
