@@ -440,6 +440,36 @@ namespace GregoryTerrain.Rig.Tests
                 Assert.That(r.Value("time", "compute_ms_" + k), Is.Not.Null, "time compute_ms_" + k);
         }
 
+        /// <summary>
+        /// --no-compute-timestamp: the kernels still run (their output is dumped), the frames are
+        /// timed, and no timestamp splits the pre-pass from the draw (no compute_ms lines); with
+        /// frames in flight it is refused, naming both options.
+        /// </summary>
+        [Test]
+        public void NoComputeTimestamp_TimesOnlyTheFrame()
+        {
+            string dir = MakeInputs("in_compute_nots", 4, 8, new[] { 0f, 0, 1, 1 });
+            var (pos, idx) = WriteQuadMesh("cquad_nots");
+            string d8 = Path.Combine(_work, "nots_8.bin");
+            string[] args =
+            {
+                "--static-mesh", "--mesh", pos, idx, "--vert", Spv("mesh.vert.spv"), "--frag", Spv("mesh.frag.spv"),
+                "--buffers", dir, "--width", Size.ToString(), "--height", Size.ToString(), "--device", "llvmpipe",
+                "--storage", "8:" + (16 * PatternRecords), "--compute", Spv("pattern.comp.spv") + ":4,2,3",
+                "--dump-storage", "8:" + d8, "--frames", "3", "--timestamps", "--no-compute-timestamp",
+            };
+            HarnessRun r = HarnessRun.Harness(args);
+            r.AssertSucceeded();
+            Assert.That(File.ReadAllBytes(d8), Is.EqualTo(ExpectedPattern(4)), "the kernel ran");
+            Assert.That(TimeLines(r, "frame_ms").Length, Is.EqualTo(3), r.Stdout);
+            Assert.That(TimeLines(r, "compute_ms").Length, Is.EqualTo(0), r.Stdout);
+            Assert.That(r.Value("time", "compute_ms_median"), Is.Null);
+
+            HarnessRun refused = HarnessRun.Harness(args.Concat(new[] { "--in-flight", "2" }).ToArray());
+            Assert.That(refused.ExitCode, Is.Not.EqualTo(0));
+            Assert.That(refused.Stderr, Does.Contain("--no-compute-timestamp").And.Contain("--in-flight 2"));
+        }
+
         [TestCase(4, 8, 1)]
         [TestCase(8, 32, 2)]  // 64 tiles * 33^2 = 69,696 vertices > 65,536: 2 draws
         public void ComputeTileScales_DomainStageDrawsOnlyTheKeptTiles(int tiles, int factor, int draws)

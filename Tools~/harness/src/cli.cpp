@@ -188,6 +188,8 @@ const char* usageText() {
   --camera-path FILE             a moving camera: FILE holds N RigCamera blocks (176 bytes each, the
                                  layout of camera.f32); frame f draws with block f mod N
   --compute-once                 run the --compute passes in the first frame only (later frames reuse their output)
+  --no-compute-timestamp         with --timestamps, time only the whole frame (no timestamp between
+                                 the --compute passes and the draw, so no "time compute_ms" lines)
   --resend-bytes B               re-upload B bytes through a staging copy every frame
   --in-flight N                  N (1-3) frames queued at once, each with its own TerrainParams and
                                  --storage buffers (--dump-storage: the last frame's); frame_ms is then
@@ -255,6 +257,7 @@ Options parseOptions(int argc, char** argv) {
         else if (a == "--timestamps") o.timestamps = true;
         else if (a == "--update-range-per-frame") o.updateRangePerFrame = true;
         else if (a == "--compute-once") o.computeOnce = true;
+        else if (a == "--no-compute-timestamp") o.computeTimestamp = false;
         else if (a == "--camera-path") o.cameraPath = value();
         else if (a == "--in-flight") o.inFlight = u32(3);
         else if (a == "--async-compute") o.asyncCompute = true;
@@ -276,6 +279,7 @@ Options parseOptions(int argc, char** argv) {
     if (!o.readbackPath.empty() && o.readbackFloats == 0) fail("--readback needs --readback-floats K (K > 0)");
     if (o.readbackPath.empty() && o.readbackFloats != 0) fail("--readback-floats needs --readback FILE");
     if (o.computeOnce && o.computes.empty()) fail("--compute-once needs at least one --compute SPV:GX,GY,GZ");
+    if (!o.computeTimestamp && o.inFlight > 1) fail("--no-compute-timestamp is for one frame in flight (--in-flight " + std::to_string(o.inFlight) + " given)");
     checkDumps(o);
     if (o.inFlight == 0) fail("--in-flight: must be at least 1");
     if (o.inFlight > 1) {

@@ -70,6 +70,7 @@ struct Options {
     bool updateRangePerFrame = false;
     std::string cameraPath;      // --camera-path FILE: N RigCamera blocks, frame f draws with block f mod N
     bool computeOnce = false;
+    bool computeTimestamp = true;  // --no-compute-timestamp: frame timestamps only
     uint64_t resendBytes = 0;
     uint32_t inFlight = 1;       // --in-flight N: frames submitted back to back (inflight.hpp)
     bool asyncCompute = false;   // --async-compute: the pre-pass on a compute-only queue

@@ -44,7 +44,7 @@ FrameResults runFrames(const Gpu& gpu, const RenderTarget& target, const Pipelin
     if (s.stats) stats = createStatsQuery(gpu);
     // With a pre-pass, a middle timestamp after its last dispatch: query 0 top, 1 compute end, 2 frame end.
     // (--compute-once: no middle timestamp, the frames measured have no pre-pass.)
-    const bool timeCompute = s.timestamps && !compute.empty() && !s.computeOnce;
+    const bool timeCompute = s.timestamps && s.computeTimestamp && !compute.empty() && !s.computeOnce;
     if (s.timestamps) times = createTimestampQuery(gpu, timeCompute ? 3 : 2);
     const uint32_t frameEndQuery = timeCompute ? 2 : 1;
 

@@ -35,6 +35,9 @@ struct FrameSettings {
     // --compute-once: the pre-pass runs in the first frame only; later frames reuse what it wrote
     // (the vertex cache of a frame where nothing changed).
     bool computeOnce = false;
+    // --no-compute-timestamp: no timestamp between the pre-pass and the draw (a bottom-of-pipe
+    // timestamp there waits for the kernels, so it may keep the render pass from starting under them).
+    bool computeTimestamp = true;
     uint64_t resendBytes = 0;
 };
 

@@ -149,6 +149,7 @@ int run(const Options& o) {
     fs.updateRange = o.updateRangePerFrame;
     fs.cameraPath = std::move(cameraPath);
     fs.computeOnce = o.computeOnce;
+    fs.computeTimestamp = o.computeTimestamp;
     fs.resendBytes = o.resendBytes;
     FrameResults results = o.inFlight > 1 ? runFramesInFlight(gpu, target, pipeline, inputs, storage, o.storage, o.dumps,
                                                               work, compute, fs, o.inFlight)
