@@ -487,15 +487,22 @@ namespace GregoryTerrain.Rig.Tests
         /// domain stage, integer cache).
         /// </summary>
         [Test]
-        public void TriangleEstimateIsWhatTheGpuDraws()
+        [TestCase(false)]
+        [TestCase(true)]   // anchored tiles, the lattice 0.03 off the range: (M + 1)^2 tiles, clipped ones at the edges
+        public void TriangleEstimateIsWhatTheGpuDraws(bool anchored)
         {
-            const int width = 320, height = 180, tiles = 8;
+            const int width = 320, height = 180, m = 8;
             float[] camera = ReadbackRun.PerspectiveCamera(new Double3(0.45, 0.14, 0.22), new Double3(0.5, 0.0, 0.62), 40, width, height, 0.01, 10);
-            CacheFrame f = DrawCached("estimate", "0.1,0.1,0.9,0.9", tiles, new[] { "--target-pixels", "2", "--max-factor", "32" }, width, height, camera);
+            string name = anchored ? "estimate-anchored" : "estimate";
+            string[] tess = { "--target-pixels", "2", "--max-factor", "32" };
+            if (anchored) tess = tess.Concat(new[] { "--anchor-at", "0.13,0.07,0.93,0.87" }).ToArray();
+            CacheFrame f = DrawCached(name, "0.1,0.1,0.9,0.9", m, tess, width, height, camera);
+            int tiles = f.Tiles;
+            Assert.That(tiles, Is.EqualTo(anchored ? m + 1 : m));
             var objectToClip = Float4x4.FromRows(camera[0], camera[4], camera[8], camera[12], camera[1], camera[5], camera[9], camera[13],
                                                  camera[2], camera[6], camera[10], camera[14], camera[3], camera[7], camera[11], camera[15]);
             var screen = new Float2(width, height);
-            float[] h = DrawHullFactors("estimate", tiles, width, height, out HarnessRun hull);
+            float[] h = DrawHullFactors(name, tiles, width, height, out HarnessRun hull);
             long hullModel = 0, cacheModel = 0;
             int culled = 0;
             double worst = 0;

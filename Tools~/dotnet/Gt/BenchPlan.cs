@@ -244,6 +244,16 @@ namespace GregoryTerrain.Rig
                 // lavapipe (the quick run) has one queue family: nothing to run the kernels alongside.
                 if (!quick) plan.Append($"{cid}:terrain-async\trun\t-\t{cache} --update-range-per-frame {InFlight} --async-compute\n");
                 meta.Append(Inv($"{cid}\tcached-adaptive-vs\t{m}\t0\t{ctarget:G6}\t64\t4\tfar\t{m * m}\n"));
+
+                // Anchored tiles (TileLattice): the lattice is the plan's range, as the renderer anchors
+                // it; the range pans over it every frame, so only the tiles its edges cut are evaluated.
+                string aid = cid + "-anchored";
+                cscene.Params = cscene.Params.WithTileLattice(cscene.Params.range);
+                cscene.WriteBuffers(Path.Combine(dir, "jobs", aid));
+                int across = m + 1;
+                string anchored = $"{Stages(CachedNoiseVariant, false)} --patches {across * across} {CacheArgs(CachedNoiseVariant, cscene.Tessellation, across)} --buffers @JOB@/{aid} {view} {t}";
+                plan.Append($"{cid}:pan\trun\t-\t{anchored} --update-range-per-frame {FactorRecordsDump(across, cid + "-pan")}\n");
+                plan.Append($"{cid}:pan-still\trun\t-\t{anchored} --compute-once\n");
             }
         }
 
@@ -281,9 +291,12 @@ namespace GregoryTerrain.Rig
         /// binding 7 (864 bytes a tile), _VertexCache at binding 8, CacheTileFactors over M x M
         /// groups (one a tile), then CacheTileVertices over M x M x G groups (G = VertexCache.GroupsPerTile), each frame before the draw.
         /// </summary>
-        public static string CacheArgs(string variant, TessellationSettings t) =>
-            Inv($"--storage 7:{TileFactorsBytes(t.tiles)} --storage 8:{VertexCacheBytes(t)} ")
-            + Inv($"--compute @SPV@/{variant}/cache_factors.spv:{t.tiles},{t.tiles},1 --compute @SPV@/{variant}/cache_vertices.spv:{t.tiles},{t.tiles},{VertexCache.GroupsPerTile(VertexCache.FactorLimit(t))}");
+        public static string CacheArgs(string variant, TessellationSettings t) => CacheArgs(variant, t, t.tiles);
+
+        /// <summary><see cref="CacheArgs(string, TessellationSettings)"/> for T x T tiles (anchored: M + 1).</summary>
+        public static string CacheArgs(string variant, TessellationSettings t, int across) =>
+            Inv($"--storage 7:{TileFactorsBytes(across)} --storage 8:{VertexCacheBudget.VertexCacheBytes(across, VertexCache.FactorLimit(t), snow: false)} ")
+            + Inv($"--compute @SPV@/{variant}/cache_factors.spv:{across},{across},1 --compute @SPV@/{variant}/cache_vertices.spv:{across},{across},{VertexCache.GroupsPerTile(VertexCache.FactorLimit(t))}");
 
         /// <summary>
         /// The factor records of _TileFactors only (2 float4 a tile, what the report reads): the whole

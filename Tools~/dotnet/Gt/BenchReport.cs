@@ -137,6 +137,7 @@ namespace GregoryTerrain.Rig
                 foreach (var l in File.ReadLines(jobsTsv).Skip(1)) { var c = l.Split('\t'); if (c.Length > 4) planned[c[0]] = c[4]; }
             Fair(o, jobs, quick, planned);
             CameraMoving(o, jobs, quick, rbDir);
+            AnchoredPan(o, jobs, quick, rbDir);
             RangeOnlyWithEffects(o, jobs, quick);
             Goals(o, tsv.ToString());
             Console.Write(o.ToString());
@@ -314,18 +315,51 @@ namespace GregoryTerrain.Rig
                 Job st = Any(Inv($"fs_m{sm}_f{sf}:static-orbit run")), orbit = Any($"{id}:orbit run"), moving = Any($"{id}:terrain run"),
                     still = Any(Inv($"fs_m{sm}_f{sf}:static run"));
                 if (st == null || orbit == null) { o.AppendLine(Inv($"| {id} (adaptive) | {m} | (not run or failed) | | | | | | | |")); continue; }
-                string evaluated = "-";
-                string dump = Path.Combine(rbDir, "readback", id + "-orbit.tiles.f32");
-                if (File.Exists(dump))
-                {
-                    float[] r = BufferFiles.Read(dump);
-                    int n = m * m, drawn = 0, again = 0;
-                    for (int t = 0; t < n && 8 * t + 7 < r.Length; t++)
-                        if (r[8 * t + 6] == 0f) { drawn++; if (r[8 * t + 7] != 0f) again++; }
-                    evaluated = Inv($"{again} / {drawn}");
-                }
+                string evaluated = TilesEvaluated(rbDir, id + "-orbit", m);
                 string range = moving == null || still == null ? "- | - | -" : Inv($"{still.GpuMs:G4} | {moving.GpuMs:G4} ({moving.ComputeMs:G3}) | {moving.GpuMs / still.GpuMs:F3}x");
                 o.AppendLine(Inv($"| {id} (adaptive) | {m} | {orbit.Get("clipping_invocations")} | {st.GpuMs:G4} | {orbit.GpuMs:G4} ({orbit.ComputeMs:G3}) | {orbit.GpuMs / st.GpuMs:F3}x | {range} | {evaluated} |"));
+            }
+            o.AppendLine();
+        }
+
+        /// <summary>
+        /// "evaluated / drawn" of a last frame's factor records (BenchPlan.FactorRecordsDump NAME):
+        /// tiles not culled, and of those the ones CacheTileVertices evaluated; "-" without a dump.
+        /// </summary>
+        static string TilesEvaluated(string rbDir, string name, int tilesAcross)
+        {
+            string dump = Path.Combine(rbDir, "readback", name + ".tiles.f32");
+            if (!File.Exists(dump)) return "-";
+            float[] r = BufferFiles.Read(dump);
+            int n = tilesAcross * tilesAcross, drawn = 0, again = 0;
+            for (int t = 0; t < n && 8 * t + 7 < r.Length; t++)
+                if (r[8 * t + 6] == 0f) { drawn++; if (r[8 * t + 7] != 0f) again++; }
+            return Inv($"{again} / {drawn}");
+        }
+
+        /// <summary>
+        /// Anchored tiles (TileLattice, the renderer's default with adaptive factors): the cached
+        /// terrain with the range panning every frame over the lattice anchored at the plan's range
+        /// (vc_*:pan) and with nothing changing (vc_*:pan-still), against the fair static mesh.
+        /// Tiles evaluated: the last frame's, from its _TileFactors dump.
+        /// </summary>
+        static void AnchoredPan(StringBuilder o, Dictionary<string, Job> jobs, bool quick, string rbDir)
+        {
+            o.AppendLine("### Anchored tiles, the range panning");
+            o.AppendLine();
+            o.AppendLine("The cached terrain with its (M + 1)^2 tiles anchored to the terrain at the plan's range (`_TileLattice`), the range panning over them every frame (`pan`, harness `--update-range-per-frame`) or holding still (`pan-still`). Only the tiles the range's edges cut are evaluated again. Tiles evaluated: in the last frame, from its `_TileFactors` dump.");
+            o.AppendLine();
+            o.AppendLine("| cached terrain | tiles drawn | triangles | panning ms (of which compute) | still ms | panning / still | fair static ms | panning / static | still / static | tiles evaluated / drawn, last frame |");
+            o.AppendLine("| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |");
+            Job Any(string key) => jobs.TryGetValue(key, out var j) && j.Skipped == null && j.Exit == 0 ? j : null;
+            foreach (var (m, sm, sf) in BenchPlan.AdaptiveVsStatic(quick))
+            {
+                string id = Inv($"vc_m{m}_s{sm}x{sf}");
+                Job pan = Any($"{id}:pan run"), still = Any($"{id}:pan-still run"), st = Any(Inv($"fs_m{sm}_f{sf}:static run"));
+                int across = m + 1;
+                if (pan == null || still == null || st == null) { o.AppendLine(Inv($"| {id} (adaptive) | {across * across} | (not run or failed) | | | | | | | |")); continue; }
+                string evaluated = TilesEvaluated(rbDir, id + "-pan", across);
+                o.AppendLine(Inv($"| {id} (adaptive) | {across * across} | {pan.Get("clipping_invocations")} | {pan.GpuMs:G4} ({pan.ComputeMs:G3}) | {still.GpuMs:G4} | {pan.GpuMs / still.GpuMs:F3}x | {st.GpuMs:G4} | {pan.GpuMs / st.GpuMs:F3}x | {still.GpuMs / st.GpuMs:F3}x | {evaluated} |"));
             }
             o.AppendLine();
         }
