@@ -470,6 +470,20 @@ namespace GregoryTerrain.Rig.Tests
             Assert.That(refused.Stderr, Does.Contain("--no-compute-timestamp").And.Contain("--in-flight 2"));
         }
 
+        /// <summary>--range-pan takes a fraction in [0, 1], and only with --update-range-per-frame.</summary>
+        [TestCase("0.1", false, "--range-pan needs --update-range-per-frame")]
+        [TestCase("1.5", true, "--range-pan: expected a fraction in [0, 1], got '1.5'")]
+        [TestCase("x", true, "--range-pan: expected a fraction in [0, 1], got 'x'")]
+        public void RangePan_RefusesWhatItCannotUse(string value, bool updateRange, string message)
+        {
+            string dir = MakeInputs("in_range_pan", 4, 8, new[] { 0f, 0, 1, 1 });
+            var args = TessArgs(dir, 4, 8, null).Concat(new[] { "--range-pan", value }).ToList();
+            if (updateRange) args.Add("--update-range-per-frame");
+            HarnessRun r = HarnessRun.Harness(args.ToArray());
+            Assert.That(r.ExitCode, Is.Not.EqualTo(0));
+            Assert.That(r.Stderr, Does.Contain(message));
+        }
+
         [TestCase(4, 8, 1)]
         [TestCase(8, 32, 2)]  // 64 tiles * 33^2 = 69,696 vertices > 65,536: 2 draws
         public void ComputeTileScales_DomainStageDrawsOnlyTheKeptTiles(int tiles, int factor, int draws)

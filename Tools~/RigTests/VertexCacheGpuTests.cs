@@ -359,20 +359,23 @@ namespace GregoryTerrain.Rig.Tests
         /// placed so that frame 1's pan crosses a lattice line (the first cell changes, and the cell
         /// leaving takes the slot of the one entering).
         /// </summary>
-        [TestCase(false)]
-        [TestCase(true)]
-        public void AnchoredPanReevaluatesOnlyTheTilesItsEdgesCut(bool crossing)
+        [TestCase(false, 0f)]
+        [TestCase(true, 0f)]
+        [TestCase(false, 0.1f)]   // harness --range-pan 0.1: frame 1 moves the range by 0.1 sin(2 pi / 100) of its size
+        public void AnchoredPanReevaluatesOnlyTheTilesItsEdgesCut(bool crossing, float rangePan)
         {
             const string range = "0.1,0.1,0.9,0.9";
             const int tiles = 8, width = 160, height = 120;
             // A cell is 0.1 wide; frame 1 moves the range by 8e-5: with the lattice 4e-5 past the
             // range's corner, line 1 (0.10004) falls between the two frames' c.
             string lattice = crossing ? "0.00004,0.00004,0.80004,0.80004" : range;
-            string name = crossing ? "anchored-cross" : "anchored-pan";
+            string name = crossing ? "anchored-cross" : rangePan > 0f ? "anchored-range-pan" : "anchored-pan";
             string[] tess = { "--target-pixels", "1", "--max-factor", "16", "--anchor-at", lattice };
             // Three frames: the harness shifts the range by 1e-4 of its size in frame 1 and draws the
             // plan's range in the last; the lattice stays where --anchor-at put it.
-            CacheFrame panned = DrawCached(name, range, tiles, tess, width, height, null, "--frames", "3", "--update-range-per-frame");
+            string[] frames = { "--frames", "3", "--update-range-per-frame" };
+            if (rangePan > 0f) frames = frames.Concat(new[] { "--range-pan", rangePan.ToString("R", CultureInfo.InvariantCulture) }).ToArray();
+            CacheFrame panned = DrawCached(name, range, tiles, tess, width, height, null, frames);
             CacheFrame fresh = DrawCached(name + "-fresh", range, tiles, tess, width, height);
             Assert.That(panned.Tiles, Is.EqualTo(tiles + 1), "(M + 1)^2 tiles");
 
@@ -382,7 +385,9 @@ namespace GregoryTerrain.Rig.Tests
 
             TerrainParams p = ReadParams(Path.Combine(_work, name, "params.f32"));
             TerrainParams shifted = p;
-            float dx = (p.range.z - p.range.x) * 1e-4f * 1f, dy = (p.range.w - p.range.y) * 1e-4f * 1f;   // harness frameRange, frame 1
+            // Harness frameRange, frame 1: the tiny shift, or the pan's first step.
+            float k = rangePan > 0f ? rangePan * (float)Math.Sin(2.0 * 3.14159265358979 * 1 / 100.0) : 1e-4f * 1f;
+            float dx = (p.range.z - p.range.x) * k, dy = (p.range.w - p.range.y) * k;
             shifted.range = new Float4(p.range.x + dx, p.range.y + dy, p.range.z + dx, p.range.w + dy);
             int drawn = 0, evaluated = 0, slots = 0;
             for (int tile = 0; tile < panned.Tiles * panned.Tiles; tile++)

@@ -27,6 +27,15 @@ uint64_t parseUnsigned(const std::string& flag, const std::string& text, uint64_
     return v;
 }
 
+// A finite number in [0, 1] for FLAG: a fraction of the range's size.
+float parseFraction(const std::string& flag, const std::string& text) {
+    char* end = nullptr;
+    const float v = std::strtof(text.c_str(), &end);
+    if (text.empty() || *end != '\0' || !std::isfinite(v) || v < 0.0f || v > 1.0f)
+        fail(flag + ": expected a fraction in [0, 1], got '" + text + "'");
+    return v;
+}
+
 std::array<float, 4> parseRange(const std::string& text) {
     std::array<float, 4> r{};
     std::stringstream ss(text);
@@ -183,6 +192,8 @@ const char* usageText() {
   --frames N --warmup K          draw N measured frames after K warm-up frames
   --timestamps                   GPU time of each frame ("time ..." lines; with --compute also
                                  the compute part alone: "time compute_ms ...")
+  --range-pan FRACTION           with --update-range-per-frame: pan the range to and fro by FRACTION
+                                 sin(2 pi f / 100) of its size (diagonally) instead of the tiny shifts
   --update-range-per-frame       write a new _Range into the uniform buffer every frame (the last
                                  frame: the inputs' own range)
   --camera-path FILE             a moving camera: FILE holds N RigCamera blocks (176 bytes each, the
@@ -256,6 +267,7 @@ Options parseOptions(int argc, char** argv) {
         else if (a == "--warmup") o.warmup = u32(1000000);
         else if (a == "--timestamps") o.timestamps = true;
         else if (a == "--update-range-per-frame") o.updateRangePerFrame = true;
+        else if (a == "--range-pan") o.rangePan = parseFraction(a, value());
         else if (a == "--compute-once") o.computeOnce = true;
         else if (a == "--no-compute-timestamp") o.computeTimestamp = false;
         else if (a == "--camera-path") o.cameraPath = value();
@@ -279,6 +291,7 @@ Options parseOptions(int argc, char** argv) {
     if (!o.readbackPath.empty() && o.readbackFloats == 0) fail("--readback needs --readback-floats K (K > 0)");
     if (o.readbackPath.empty() && o.readbackFloats != 0) fail("--readback-floats needs --readback FILE");
     if (o.computeOnce && o.computes.empty()) fail("--compute-once needs at least one --compute SPV:GX,GY,GZ");
+    if (o.rangePan > 0.0f && !o.updateRangePerFrame) fail("--range-pan needs --update-range-per-frame");
     if (!o.computeTimestamp && o.inFlight > 1) fail("--no-compute-timestamp is for one frame in flight (--in-flight " + std::to_string(o.inFlight) + " given)");
     checkDumps(o);
     if (o.inFlight == 0) fail("--in-flight: must be at least 1");

@@ -68,6 +68,7 @@ struct Options {
     uint32_t frames = 1, warmup = 0;
     bool timestamps = false;
     bool updateRangePerFrame = false;
+    float rangePan = 0.0f;      // --range-pan FRACTION (with --update-range-per-frame)
     std::string cameraPath;      // --camera-path FILE: N RigCamera blocks, frame f draws with block f mod N
     bool computeOnce = false;
     bool computeTimestamp = true;  // --no-compute-timestamp: frame timestamps only

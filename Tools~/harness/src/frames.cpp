@@ -1,6 +1,7 @@
 #include "frames.hpp"
 
 #include <chrono>
+#include <cmath>
 #include <cstring>
 
 #include "check.hpp"
@@ -30,10 +31,12 @@ void waitFrameFence(const Gpu& gpu, VkFence fence, uint32_t frame) {
     GT_VK(r);
 }
 
-std::array<float, 4> frameRange(const std::array<float, 4>& base, uint32_t frame, uint32_t frames) {
+std::array<float, 4> frameRange(const std::array<float, 4>& base, uint32_t frame, uint32_t frames, float pan) {
     if (frame + 1 == frames) return base;
-    const float dx = (base[2] - base[0]) * 1e-4f * static_cast<float>(frame % 8);
-    const float dy = (base[3] - base[1]) * 1e-4f * static_cast<float>(frame % 8);
+    const float k = pan > 0.0f ? pan * static_cast<float>(std::sin(2.0 * 3.14159265358979 * (frame % 100) / 100.0))
+                               : 1e-4f * static_cast<float>(frame % 8);
+    const float dx = (base[2] - base[0]) * k;
+    const float dy = (base[3] - base[1]) * k;
     return {base[0] + dx, base[1] + dy, base[2] + dx, base[3] + dy};
 }
 
@@ -108,7 +111,7 @@ FrameResults runFrames(const Gpu& gpu, const RenderTarget& target, const Pipelin
     const uint32_t total = s.warmup + s.frames;
     for (uint32_t f = 0; f < total; ++f) {
         const auto t0 = std::chrono::steady_clock::now();
-        if (s.updateRange) writeRange(inputs, frameRange(baseRange, f, total));
+        if (s.updateRange) writeRange(inputs, frameRange(baseRange, f, total, s.rangePan));
         if (!s.cameraPath.empty()) writeCamera(inputs, s.cameraPath, f);
         if (s.resendBytes) std::memset(staging.mapped, static_cast<int>(f & 0xff), s.resendBytes);
         VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};

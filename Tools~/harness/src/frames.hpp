@@ -31,6 +31,7 @@ struct DrawWork {
 struct FrameSettings {
     uint32_t frames = 1, warmup = 0;
     bool timestamps = false, stats = false, updateRange = false;
+    float rangePan = 0.0f;  // --range-pan: amplitude of the range's pan, a fraction of its size (0: the tiny shifts)
     std::vector<uint8_t> cameraPath;  // --camera-path: RigCamera blocks, frame f draws with block f mod N
     // --compute-once: the pre-pass runs in the first frame only; later frames reuse what it wrote
     // (the vertex cache of a frame where nothing changed).
@@ -55,10 +56,11 @@ void recordDraws(VkCommandBuffer cmd, const DrawWork& work);
 void waitFrameFence(const Gpu& gpu, VkFence fence, uint32_t frame);
 
 // The per-frame _Range of --update-range-per-frame: the base range shifted by a tiny,
-// frame-dependent fraction of its size, so the values really change every frame; the last of
-// `frames` frames draws the base range itself, so what a run leaves (picture, statistics, dumps)
-// is of the range its inputs name.
-std::array<float, 4> frameRange(const std::array<float, 4>& base, uint32_t frame, uint32_t frames);
+// frame-dependent fraction of its size, so the values really change every frame, or with pan > 0
+// (--range-pan) by pan sin(2 pi f / 100) of its size, a pan to and fro; the last of `frames`
+// frames draws the base range itself, so what a run leaves (picture, statistics, dumps) is of the
+// range its inputs name.
+std::array<float, 4> frameRange(const std::array<float, 4>& base, uint32_t frame, uint32_t frames, float pan);
 
 // compute: the pre-pass dispatched before the render pass of every frame (may be empty).
 FrameResults runFrames(const Gpu& gpu, const RenderTarget& target, const Pipeline& pipeline, Inputs& inputs,

@@ -131,7 +131,7 @@ FrameResults runFramesInFlight(const Gpu& gpu, const RenderTarget& target, const
     for (uint32_t f = 0; f < total; ++f) {
         Slot& slot = slots[f % inFlight];
         if (slot.submitted) collect(slot, f - inFlight);
-        if (s.updateRange) writeRange(slot.inputs, frameRange(baseRange, f, total));
+        if (s.updateRange) writeRange(slot.inputs, frameRange(baseRange, f, total, s.rangePan));
         const bool pre = slot.pre && (!s.computeOnce || f < inFlight);
         if (pre) {
             // Frame f - inFlight read this slot's buffers; value 0 (no such frame yet) is already reached.

@@ -150,6 +150,7 @@ int run(const Options& o) {
     fs.cameraPath = std::move(cameraPath);
     fs.computeOnce = o.computeOnce;
     fs.computeTimestamp = o.computeTimestamp;
+    fs.rangePan = o.rangePan;
     fs.resendBytes = o.resendBytes;
     FrameResults results = o.inFlight > 1 ? runFramesInFlight(gpu, target, pipeline, inputs, storage, o.storage, o.dumps,
                                                               work, compute, fs, o.inFlight)
