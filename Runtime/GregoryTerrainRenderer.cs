@@ -62,7 +62,7 @@ namespace GregoryTerrain
             /// </summary>
             public static readonly int[] Params = ParamIds();
 
-            /// <summary>Positions of the two range constants in <see cref="Params"/>.</summary>
+            /// <summary>Positions in <see cref="Params"/> of the constants set on their own (range, origin, tile lattice).</summary>
             public static readonly int RangeIndex = ParamIndex("_Range");
             public static readonly int RangeOriginIndex = ParamIndex("_RangeOrigin");
             public static readonly int TileLatticeIndex = ParamIndex("_TileLattice");
