@@ -243,7 +243,7 @@ namespace GregoryTerrain
         /// tile, F = the uniform factor, else maxFactor; the fallback grid's F without a tessellator).
         /// What a camera's view draws: <see cref="EstimateTrianglesInView"/>.
         /// </summary>
-        public double EstimatedTriangleCount => TessellationPolicy.EstimateTriangleCount(tiles + (anchorTiles && uniformFactor == 0 && !DrawsFallback ? 1 : 0),
+        public double EstimatedTriangleCount => TessellationPolicy.EstimateTriangleCount(TilesAcross(DrawsFallback),
             DrawsFallback ? fallbackGridFactor : uniformFactor > 0 ? uniformFactor : maxFactor);
 
         /// <summary>Why the current settings cannot be drawn (Core's message, naming field and value), or null.</summary>
@@ -301,8 +301,14 @@ namespace GregoryTerrain
             }
         }
 
-        /// <summary>Tiles per axis the cache holds: M + 1 with anchored tiles (adaptive factors), else M.</summary>
-        int CacheTilesAcross => tiles + (anchorTiles && uniformFactor == 0 ? 1 : 0);
+        /// <summary>Whether the tiles are anchored to the terrain: the setting, with adaptive factors and a tessellator.</summary>
+        bool AnchorsTiles(bool fallback) => anchorTiles && !fallback && uniformFactor == 0;
+
+        /// <summary>Tiles per axis the draw makes: M + 1 anchored (<see cref="AnchorsTiles"/>), else M.</summary>
+        int TilesAcross(bool fallback) => tiles + (AnchorsTiles(fallback) ? 1 : 0);
+
+        /// <summary>Tiles per axis the cache holds (it never runs with the fallback grid).</summary>
+        int CacheTilesAcross => TilesAcross(false);
 
         /// <summary>GPU memory the vertex cache holds now (0 while it is not allocated).</summary>
         public long VertexCacheAllocatedBytes => _cache.AllocatedBytes;
@@ -422,8 +428,7 @@ namespace GregoryTerrain
         /// </summary>
         void UpdateTileLattice(bool fallback)
         {
-            bool anchor = anchorTiles && !fallback && uniformFactor == 0;
-            Float4 lattice = anchor ? TileLattice.Follow(_params.tileLattice, _params.range, tiles) : default;
+            Float4 lattice = AnchorsTiles(fallback) ? TileLattice.Follow(_params.tileLattice, _params.range, tiles) : default;
             if (lattice.Equals(_params.tileLattice)) return;   // PushSettings sent 0 with the block
             _params = _params.WithTileLattice(lattice);
             _props.SetVector(Ids.Params[Ids.TileLatticeIndex], ToVector(lattice));

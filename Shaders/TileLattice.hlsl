@@ -34,24 +34,24 @@ int FirstCell(float c, float lo, float hi, float tiles)
     return k;
 }
 
-// The part of cell k0 + i (i = 0..M) inside [c, g]; cells past g shrink to g.
-float2 AxisSpan(float c, float g, float lo, float hi, float tiles, int k0, int i)
+// The part of cell k0 + i (i = 0..M) inside [c, g]; cells past g shrink to g. whole: the span is
+// the whole cell.
+float2 AxisSpan(float c, float g, float lo, float hi, float tiles, int k0, int i, out bool whole)
 {
     int k = k0 + i;
     float a = LatticeLine(lo, hi, tiles, k), b = LatticeLine(lo, hi, tiles, k + 1);
     float l = i == 0 ? c : clamp(a, c, g);
     float h = i == (int)tiles ? g : clamp(b, c, g);
+    whole = l == a && h == b;
     return float2(l, h);
 }
 
-// A whole cell keeps the lattice formula (bit-stable while the range pans); a clipped one
-// interpolates its span, exact at both ends, so a line shared with a whole neighbour matches.
-float AxisPoint(float c, float g, float lo, float hi, float tiles, int k0, int i, float s)
+// Point s of a tile on one axis, from its AxisSpan and cell k. A whole cell keeps the lattice
+// formula (bit-stable while the range pans); a clipped one interpolates its span, exact at both
+// ends, so a line shared with a whole neighbour matches.
+float AxisPoint(float2 span, bool whole, float lo, float hi, float tiles, int k, float s)
 {
-    float2 span = AxisSpan(c, g, lo, hi, tiles, k0, i);
-    int k = k0 + i;
-    if (span.x == LatticeLine(lo, hi, tiles, k) && span.y == LatticeLine(lo, hi, tiles, k + 1))
-        return LatticePoint(lo, hi, tiles, k, s);
+    if (whole) return LatticePoint(lo, hi, tiles, k, s);
     precise float p = (1.0 - s) * span.x + s * span.y;
     return p;
 }
@@ -65,14 +65,19 @@ int TileOfSlot(int slot, int k0, int across)
 
 // --- Both axes, from the frame's inputs ---------------------------------------------------------------
 
-float4 AnchoredTileSpan(uint slot, out int2 k0, out int2 ij)
+// The anchored tile of slot `slot`: its span (l.x, l.y, h.x, h.y), its cell on each axis and
+// whether each axis holds the whole cell.
+float4 AnchoredTileSpan(uint slot, out int2 cell, out bool2 whole)
 {
     int across = (int)TilesAcrossInt();
     float m = TileCount();
-    k0 = int2(FirstCell(_Range.x, _TileLattice.x, _TileLattice.z, m), FirstCell(_Range.y, _TileLattice.y, _TileLattice.w, m));
-    ij = int2(TileOfSlot((int)slot % across, k0.x, across), TileOfSlot((int)slot / across, k0.y, across));
-    float2 x = AxisSpan(_Range.x, _Range.z, _TileLattice.x, _TileLattice.z, m, k0.x, ij.x);
-    float2 y = AxisSpan(_Range.y, _Range.w, _TileLattice.y, _TileLattice.w, m, k0.y, ij.y);
+    int2 k0 = int2(FirstCell(_Range.x, _TileLattice.x, _TileLattice.z, m), FirstCell(_Range.y, _TileLattice.y, _TileLattice.w, m));
+    int2 ij = int2(TileOfSlot((int)slot % across, k0.x, across), TileOfSlot((int)slot / across, k0.y, across));
+    bool wholeX, wholeY;
+    float2 x = AxisSpan(_Range.x, _Range.z, _TileLattice.x, _TileLattice.z, m, k0.x, ij.x, wholeX);
+    float2 y = AxisSpan(_Range.y, _Range.w, _TileLattice.y, _TileLattice.w, m, k0.y, ij.y, wholeY);
+    cell = k0 + ij;
+    whole = bool2(wholeX, wholeY);
     return float4(x.x, y.x, x.y, y.y);
 }
 
@@ -82,21 +87,23 @@ TerrainPoint TileToTerrainPoint(uint slot, float2 tess)
     uint across = TilesAcrossInt();
     if (!TilesAnchored())
         return RangeToTerrainPoint(_Range, _RangeOrigin, TileCount(), uint2(slot % across, slot / across), tess);
-    int2 k0, ij;
-    AnchoredTileSpan(slot, k0, ij);
+    int2 cell;
+    bool2 whole;
+    float4 span = AnchoredTileSpan(slot, cell, whole);
     float m = TileCount();
     TerrainPoint p;
     p.originHi = _RangeOrigin.xy;
-    p.local = _RangeOrigin.zw + float2(AxisPoint(_Range.x, _Range.z, _TileLattice.x, _TileLattice.z, m, k0.x, ij.x, tess.x),
-                                       AxisPoint(_Range.y, _Range.w, _TileLattice.y, _TileLattice.w, m, k0.y, ij.y, tess.y));
+    p.local = _RangeOrigin.zw + float2(AxisPoint(span.xz, whole.x, _TileLattice.x, _TileLattice.z, m, cell.x, tess.x),
+                                       AxisPoint(span.yw, whole.y, _TileLattice.y, _TileLattice.w, m, cell.y, tess.y));
     return p;
 }
 
 // The terrain part (relative to the origin) slot `slot` draws, (l.x, l.y, h.x, h.y): anchored only.
 float4 TileSpan(uint slot)
 {
-    int2 k0, ij;
-    return AnchoredTileSpan(slot, k0, ij);
+    int2 cell;
+    bool2 whole;
+    return AnchoredTileSpan(slot, cell, whole);
 }
 
 // An anchored tile without area (a cell past g, or the last one when the range ends on a lattice

@@ -96,29 +96,26 @@ namespace GregoryTerrain
         /// <summary>
         /// The part of cell <c>k0 + i</c> (i = 0..M) inside [c, g]: the first tile starts at c, the
         /// last ends at g, and cells past g shrink to g (a range narrower than the lattice).
+        /// <paramref name="whole"/>: the span is the whole cell.
         /// </summary>
-        public static Float2 AxisSpan(float c, float g, float lo, float hi, float tiles, int k0, int i)
+        public static Float2 AxisSpan(float c, float g, float lo, float hi, float tiles, int k0, int i, out bool whole)
         {
             int k = k0 + i;
             float a = LatticeLine(lo, hi, tiles, k), b = LatticeLine(lo, hi, tiles, k + 1);
             float l = i == 0 ? c : GMath.clamp(a, c, g);
             float h = i == (int)tiles ? g : GMath.clamp(b, c, g);
+            whole = l == a && h == b;
             return new Float2(l, h);
         }
 
         /// <summary>
-        /// Point s of tile i on one axis. A whole cell uses the lattice formula, so its points do not
-        /// move while the range pans; a clipped one <c>(1 - s) l + s h</c>, exact at both ends, so a
-        /// line it shares with a whole neighbour is bit-identical.
+        /// Point s of a tile on one axis, from its <see cref="AxisSpan"/> and cell k. A whole cell
+        /// uses the lattice formula, so its points do not move while the range pans; a clipped one
+        /// <c>(1 - s) l + s h</c>, exact at both ends, so a line it shares with a whole neighbour is
+        /// bit-identical.
         /// </summary>
-        public static float AxisPoint(float c, float g, float lo, float hi, float tiles, int k0, int i, float s)
-        {
-            Float2 span = AxisSpan(c, g, lo, hi, tiles, k0, i);
-            int k = k0 + i;
-            if (span.x == LatticeLine(lo, hi, tiles, k) && span.y == LatticeLine(lo, hi, tiles, k + 1))
-                return LatticePoint(lo, hi, tiles, k, s);
-            return (1f - s) * span.x + s * span.y;
-        }
+        public static float AxisPoint(Float2 span, bool whole, float lo, float hi, float tiles, int k, float s) =>
+            whole ? LatticePoint(lo, hi, tiles, k, s) : (1f - s) * span.x + s * span.y;
 
         /// <summary>The tile index i (0..M) that slot <paramref name="slot"/> holds: <c>(slot - k0) mod (M + 1)</c>.</summary>
         public static int TileOfSlot(int slot, int k0, int across)
@@ -139,12 +136,12 @@ namespace GregoryTerrain
             int across = TilesAcross(p);
             if (!IsAnchored(p.tileLattice))
                 return RangeMapping.ToTerrainPoint(p.range, p.rangeOrigin, across, slot % across, slot / across, s, t);
-            AnchoredTileSpan(p, slot, out int k0x, out int k0y, out int i, out int j);
+            Float4 span = AnchoredTileSpan(p, slot, out int cellX, out int cellY, out bool wholeX, out bool wholeY);
             float m = p.tess.x;
-            Float4 r = p.range, lat = p.tileLattice;
+            Float4 lat = p.tileLattice;
             var local = new Float2(
-                p.rangeOrigin.z + AxisPoint(r.x, r.z, lat.x, lat.z, m, k0x, i, s),
-                p.rangeOrigin.w + AxisPoint(r.y, r.w, lat.y, lat.w, m, k0y, j, t));
+                p.rangeOrigin.z + AxisPoint(new Float2(span.x, span.z), wholeX, lat.x, lat.z, m, cellX, s),
+                p.rangeOrigin.w + AxisPoint(new Float2(span.y, span.w), wholeY, lat.y, lat.w, m, cellY, t));
             return new TerrainPoint(p.rangeOrigin.xy, local);
         }
 
@@ -189,17 +186,21 @@ namespace GregoryTerrain
         public static float LayoutWidth(TerrainParams p) =>
             IsAnchored(p.tileLattice) ? p.tileLattice.z - p.tileLattice.x : p.range.z - p.range.x;
 
-        static Float4 AnchoredTileSpan(TerrainParams p, int slot, out int k0x, out int k0y, out int i, out int j)
+        /// <summary>
+        /// The anchored tile of slot <paramref name="slot"/>: its span (l.x, l.y, h.x, h.y), its cell
+        /// on each axis and whether each axis holds the whole cell. HLSL <c>AnchoredTileSpan</c>.
+        /// </summary>
+        static Float4 AnchoredTileSpan(TerrainParams p, int slot, out int cellX, out int cellY, out bool wholeX, out bool wholeY)
         {
             int across = TilesAcross(p);
             float m = p.tess.x;
             Float4 r = p.range, lat = p.tileLattice;
-            k0x = FirstCell(r.x, lat.x, lat.z, m);
-            k0y = FirstCell(r.y, lat.y, lat.w, m);
-            i = TileOfSlot(slot % across, k0x, across);
-            j = TileOfSlot(slot / across, k0y, across);
-            Float2 x = AxisSpan(r.x, r.z, lat.x, lat.z, m, k0x, i);
-            Float2 y = AxisSpan(r.y, r.w, lat.y, lat.w, m, k0y, j);
+            int k0x = FirstCell(r.x, lat.x, lat.z, m), k0y = FirstCell(r.y, lat.y, lat.w, m);
+            int i = TileOfSlot(slot % across, k0x, across), j = TileOfSlot(slot / across, k0y, across);
+            Float2 x = AxisSpan(r.x, r.z, lat.x, lat.z, m, k0x, i, out wholeX);
+            Float2 y = AxisSpan(r.y, r.w, lat.y, lat.w, m, k0y, j, out wholeY);
+            cellX = k0x + i;
+            cellY = k0y + j;
             return new Float4(x.x, y.x, x.y, y.y);
         }
     }

@@ -308,7 +308,7 @@ namespace GregoryTerrain.Rig
             o.AppendLine();
             o.AppendLine("| cached terrain | tiles | triangles | static, camera moving ms | cached, camera moving ms (of which compute) | / static | static, camera still ms | cached, range moving ms (of which compute) | / static | tiles evaluated / drawn, last frame |");
             o.AppendLine("| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |");
-            Job Any(string key) => jobs.TryGetValue(key, out var j) && j.Skipped == null && j.Exit == 0 ? j : null;
+            Job Any(string key) => Ran(jobs, key);
             foreach (var (m, sm, sf) in BenchPlan.AdaptiveVsStatic(quick))
             {
                 string id = Inv($"vc_m{m}_s{sm}x{sf}");
@@ -321,6 +321,10 @@ namespace GregoryTerrain.Rig
             }
             o.AppendLine();
         }
+
+        /// <summary>The job <paramref name="key"/> ("ID KIND") when it ran and exited 0, else null.</summary>
+        static Job Ran(Dictionary<string, Job> jobs, string key) =>
+            jobs.TryGetValue(key, out var j) && j.Skipped == null && j.Exit == 0 ? j : null;
 
         /// <summary>
         /// "evaluated / drawn" of a last frame's factor records (BenchPlan.FactorRecordsDump NAME):
@@ -351,7 +355,7 @@ namespace GregoryTerrain.Rig
             o.AppendLine();
             o.AppendLine("| cached terrain | tiles drawn | triangles | panning ms (of which compute) | still ms | panning / still | fair static ms | panning / static | still / static | tiles evaluated / drawn, last frame |");
             o.AppendLine("| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |");
-            Job Any(string key) => jobs.TryGetValue(key, out var j) && j.Skipped == null && j.Exit == 0 ? j : null;
+            Job Any(string key) => Ran(jobs, key);
             foreach (var (m, sm, sf) in BenchPlan.AdaptiveVsStatic(quick))
             {
                 string id = Inv($"vc_m{m}_s{sm}x{sf}");
@@ -371,7 +375,7 @@ namespace GregoryTerrain.Rig
         /// </summary>
         static void RangeOnlyWithEffects(StringBuilder o, Dictionary<string, Job> jobs, bool quick)
         {
-            Job Any(string key) => jobs.TryGetValue(key, out var j) && j.Skipped == null && j.Exit == 0 ? j : null;
+            Job Any(string key) => Ran(jobs, key);
             foreach (var (m, sm, sf) in BenchPlan.AdaptiveVsStatic(quick))
                 foreach (var (prefix, path) in new[] { ("va", "domain stage"), ("vc", "vertex cache") })
                 {
