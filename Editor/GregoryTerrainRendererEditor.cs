@@ -27,7 +27,7 @@ namespace GregoryTerrain.EditorTools
             EditorGUILayout.LabelField(new GUIContent("Most triangles", "Most triangles the current settings can produce: 2 F^2 per tile, F the uniform factor, else the max factor (Core's TessellationPolicy)."),
                 new GUIContent(r.EstimatedTriangleCount.ToString("N0")));
             bool cache = r.VertexEvaluation == VertexEvaluation.ComputeCache;
-            EditorGUILayout.LabelField(new GUIContent("Vertex cache memory", "GPU memory of the Compute cache's two buffers for the current settings (Core's VertexCacheBudget): _TileFactors 864 T^2 bytes + _VertexCache 16 T^2 ((L+1)^2 + 4 (L+1)) R bytes, T = M, or M + 1 with Anchor Tiles (adaptive factors), L = the uniform factor, else the max factor, rounded up; R = 2 with the material's snow (GT_SNOW), else 1."),
+            EditorGUILayout.LabelField(new GUIContent("Vertex cache memory", "GPU memory of the Compute cache's two buffers for the current settings (Core's VertexCacheBudget): _TileFactors 992 T^2 bytes + _VertexCache 16 T^2 ((L+1)^2 + 4 (L+1)) R bytes, T = M, or M + 1 with Anchor Tiles (adaptive factors), L = the uniform factor, else the max factor, rounded up; R = 2 with the material's snow (GT_SNOW), else 1."),
                 new GUIContent(FormatBytes(r.VertexCacheBytes) + (cache ? "" : " (only with Compute cache)")));
             if (cache && !SystemInfo.supportsComputeShaders)
                 EditorGUILayout.HelpBox("Vertex evaluation is Compute cache, but this GPU has no compute shaders (SystemInfo.supportsComputeShaders is false): the domain stage evaluates the vertices instead.", MessageType.Warning);

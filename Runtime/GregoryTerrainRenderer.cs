@@ -287,7 +287,7 @@ namespace GregoryTerrain
 
         /// <summary>
         /// GPU memory the vertex cache needs for the current settings, in bytes (Core's
-        /// <see cref="VertexCacheBudget.TotalBytes"/>: 864 T^2 + 16 T^2 ((L+1)^2 + 4 (L+1)) R, T = M, or
+        /// <see cref="VertexCacheBudget.TotalBytes"/>: 992 T^2 + 16 T^2 ((L+1)^2 + 4 (L+1)) R, T = M, or
         /// M + 1 with anchored tiles (<see cref="CacheTilesAcross"/>), L the
         /// uniform factor, else the max factor, rounded up; R = 2 with the material's GT_SNOW, else 1),
         /// whichever evaluation is chosen.

@@ -5,7 +5,7 @@ namespace GregoryTerrain
 {
     /// <summary>
     /// The compute pre-pass of <see cref="VertexEvaluation.ComputeCache"/>: owns <c>_TileFactors</c>
-    /// (54 T^2 float4) and <c>_VertexCache</c> (T^2 S(L) R uint4, T = M, or M + 1 with anchored tiles; sizes from Core's
+    /// (62 T^2 float4) and <c>_VertexCache</c> (T^2 S(L) R uint4, T = M, or M + 1 with anchored tiles; sizes from Core's
     /// <see cref="VertexCacheBudget"/>) and dispatches <c>CacheTileFactors</c> then
     /// <c>CacheTileVertices</c> of <c>Shaders/TerrainCache.compute</c> only when something the
     /// kernels read differs from the last dispatch: the TerrainParams block (range and origin
@@ -13,11 +13,12 @@ namespace GregoryTerrain
     /// grid's buffers, or the snow map's version. A frame where none changed dispatches nothing.
     /// <para>The kernels re-evaluate only the tiles whose integer factors or range key (<c>_Range</c>,
     /// or with anchored tiles the tile's own span) differ from what their slots hold (a camera move,
-    /// or an anchored pan, leaves most tiles alone). Whatever else the records depend on is this
-    /// class's to notice: when the origin, the tile lattice, the grid, a noise or colour setting, the
-    /// object transform, the effects or the snow map changed, or the buffers are new, it zeroes the
-    /// tiles' range records (16 T^2 bytes) first; a zero record always reads as moved, so every
-    /// tile's samples and slots are evaluated again.</para>
+    /// or an anchored pan, leaves most tiles alone), and keep a cell's factors while its key, the
+    /// camera and the factor settings hold (an anchored pan samples no surface). Whatever else the
+    /// records depend on is this class's to notice: when the origin, the tile lattice, the grid, a
+    /// noise or colour setting, the object transform, the effects or the snow map changed, or the
+    /// buffers are new, it zeroes the tiles' keys (32 T^2 bytes) first; a zero key always reads as
+    /// moved, so every tile's samples, factors and slots are evaluated again.</para>
     /// <para>The renderer decides whether the pass runs at all (compute support, the shader, the
     /// LOD camera, the size check); this class only sizes, compares and dispatches.</para>
     /// </summary>
@@ -79,7 +80,7 @@ namespace GregoryTerrain
 
         bool _valid;          // the buffers hold the result of _last
         Inputs _last;
-        Vector4[] _zeroRanges;   // M^2 zero float4: the range records of "nothing evaluated yet"
+        Vector4[] _zeroRanges;   // 2 T^2 zero float4: the keys of "nothing evaluated yet"
 
         public GraphicsBuffer TileFactors => _factors;
         public GraphicsBuffer VertexCache => _vertices;
@@ -172,11 +173,12 @@ namespace GregoryTerrain
             return true;
         }
 
-        // Zero range records: the kernels then see every tile's range as moved. Only that part of
-        // _TileFactors is uploaded (the snow path comes here every simulation step).
+        // Zero the keys (the slots' and the cells', adjacent): the kernels then see every tile and
+        // every cell as moved. Only that part of _TileFactors is uploaded (the snow path comes here
+        // every simulation step).
         void ForgetEvaluatedTiles()
         {
-            int count = _tiles * _tiles;
+            int count = GregoryTerrain.VertexCache.KeyFloat4sPerTile * _tiles * _tiles;
             if (_zeroRanges == null || _zeroRanges.Length != count) _zeroRanges = new Vector4[count];
             _factors.SetData(_zeroRanges, 0, (int)GregoryTerrain.VertexCache.EvaluatedRangeIndex(0, _tiles), count);
         }

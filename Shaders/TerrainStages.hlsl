@@ -73,7 +73,7 @@ TileCorner vert(uint vertexID : SV_VertexID)
 #if defined(GT_VERTEX_CACHE)
     o.positionOS = float3(0.0, 0.0, 0.0);   // the factors come from the cache
 #else
-    o.positionOS = TileCornerObjectPosition(o.drawPatch, vertexID % 4u);
+    o.positionOS = CellCornerObjectPosition(o.drawPatch, vertexID % 4u);
 #endif
     return o;
 }

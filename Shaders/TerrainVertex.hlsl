@@ -68,31 +68,54 @@ struct TerrainSurfacePoint
 // maps normals too.
 float3 TerrainToObject(float3 v) { return v.xzy; }
 
-// drawPatch: the index of the patch being drawn: a tile (tile mode, tile = tj * M + ti) or, with
-// GT_PAPER_MODE, a Gregory patch. tess: the coordinate inside it, in [0, 1]^2.
-TerrainSurfacePoint EvaluateSurface(uint drawPatch, float2 tess)
+// The tile path after the global point q is formed: FindPatch on the float lines, PatchLocalUV,
+// GregoryEval (Core's TerrainVertex.EvaluateSurfaceAt).
+TerrainSurfacePoint EvaluateSurfaceAt(TerrainPoint q)
 {
     TerrainSurfacePoint s;
-#if defined(GT_PAPER_MODE)
-    // The paper's method: every Gregory patch is tessellated over the whole range (one "tile"),
-    // with the corrected eq. 10 and u, v clamped, so the part outside the patch collapses onto its
-    // boundary.
-    s.q = RangeToTerrainPoint(_Range, _RangeOrigin, 1.0, uint2(0, 0), tess);
-    s.patch = drawPatch;
+    s.q = q;
+    s.patch = FindPatch(TerrainPointApprox(q));
     s.region = PatchRegion(s.patch);
-    s.uv = saturate(PatchLocalUV(s.q, s.region));
-#else
-    // Integer tile index first: RangeCoordinate (LatticePoint) forms ti + s before dividing, so the
-    // vertices of a shared tile edge get bit-identical q (watertight).
-    s.q = TileToTerrainPoint(drawPatch, tess);
-    s.patch = FindPatch(TerrainPointApprox(s.q));
-    s.region = PatchRegion(s.patch);
-    s.uv = PatchLocalUV(s.q, s.region);
-#endif
+    s.uv = PatchLocalUV(q, s.region);
     float3 cp[20];
     LoadGregoryPatch(s.patch, cp);
     GregoryEvaluate(cp, s.uv, s.position, s.dPdu, s.dPdv);
     return s;
+}
+
+// drawPatch: the index of the patch being drawn: a tile (tile mode, tile = tj * M + ti) or, with
+// GT_PAPER_MODE, a Gregory patch. tess: the coordinate inside it, in [0, 1]^2.
+TerrainSurfacePoint EvaluateSurface(uint drawPatch, float2 tess)
+{
+#if defined(GT_PAPER_MODE)
+    // The paper's method: every Gregory patch is tessellated over the whole range (one "tile"),
+    // with the corrected eq. 10 and u, v clamped, so the part outside the patch collapses onto its
+    // boundary.
+    TerrainSurfacePoint s;
+    s.q = RangeToTerrainPoint(_Range, _RangeOrigin, 1.0, uint2(0, 0), tess);
+    s.patch = drawPatch;
+    s.region = PatchRegion(s.patch);
+    s.uv = saturate(PatchLocalUV(s.q, s.region));
+    float3 cp[20];
+    LoadGregoryPatch(s.patch, cp);
+    GregoryEvaluate(cp, s.uv, s.position, s.dPdu, s.dPdv);
+    return s;
+#else
+    // Integer tile index first: RangeCoordinate (LatticePoint) forms ti + s before dividing, so the
+    // vertices of a shared tile edge get bit-identical q (watertight).
+    return EvaluateSurfaceAt(TileToTerrainPoint(drawPatch, tess));
+#endif
+}
+
+// The surface at tess in the whole cell slot `slot` holds (CellToTerrainPoint): where the adaptive
+// factors sample it (TileFactors.hlsl). Paper mode has no cells: its draw patch's own point.
+TerrainSurfacePoint EvaluateCellSurface(uint slot, float2 tess)
+{
+#if defined(GT_PAPER_MODE)
+    return EvaluateSurface(slot, tess);
+#else
+    return EvaluateSurfaceAt(CellToTerrainPoint(slot, tess));
+#endif
 }
 
 // The surface position a vertex outputs (before noise): S(q) itself, or, while a range origin is

@@ -3,7 +3,11 @@
 // hull_const and by the vertex cache's CacheTileFactors kernel (VertexCacheKernels.hlsl), so both
 // decide identically. Mirrors Runtime/Core/TileFactors.cs name for name (the pieces' arithmetic:
 // TessellationPolicy.cs). Needs the adapter's
-// GT_ObjectToClip and GT_ScreenSize and TerrainVertex.hlsl's EvaluateSurface.
+// GT_ObjectToClip and GT_ScreenSize and TerrainVertex.hlsl's EvaluateCellSurface.
+//
+// Every sample below is of the tile's cell (TileLattice.hlsl): the tile itself unless anchored and
+// clipped to the range. A clipped tile draws its cell's factors scaled to the part it keeps
+// (TileFactorsOfCell), so a pan, which only moves the clipped tiles, changes no sample.
 #ifndef GT_TILE_FACTORS_INCLUDED
 #define GT_TILE_FACTORS_INCLUDED
 
@@ -21,15 +25,15 @@ struct TileFactorSet
 // Corner c sits at tess coordinate (c & 1, c >> 1).
 float2 CornerTessCoordinate(uint corner) { return float2(corner & 1u, corner >> 1u); }
 
-// Object position of the tile's corner c (no noise): the input of the culling and the edge factors.
-// Corners depend only on (tile, corner) integers, so a corner shared by neighbouring tiles is
-// evaluated from identical inputs: identical positions, identical edge factors.
-float3 TileCornerObjectPosition(uint drawPatch, uint corner)
+// Object position of corner c of the tile's cell (no noise): the input of the culling and the edge
+// factors. Corners are lattice points, so a corner shared by neighbouring cells is evaluated from
+// identical inputs: identical positions, identical edge factors.
+float3 CellCornerObjectPosition(uint drawPatch, uint corner)
 {
-    return TerrainToObject(OutputSurfacePosition(EvaluateSurface(drawPatch, CornerTessCoordinate(corner))));
+    return TerrainToObject(OutputSurfacePosition(EvaluateCellSurface(drawPatch, CornerTessCoordinate(corner))));
 }
 
-// True when the tile's box lies outside the view. The box is the corners' bounds, grown in height
+// True when the cell's box lies outside the view (so does the tile's part of it). The box is the corners' bounds, grown in height
 // by the noise bound (GT_NOISE) plus the corners' own height spread: a cheap allowance for the
 // surface rising between corners, which the corners alone cannot see. (Takes the corners as an
 // array, not the InputPatch: not every HLSL compiler accepts an InputPatch as a helper argument.)
@@ -68,10 +72,10 @@ float ObjectPixelsPerUnit(float3 p)
                          GT_ScreenSize());
 }
 
-// Object position of the Gregory surface (no noise) at a tess coordinate of the drawn patch.
-float3 SurfaceObjectPosition(uint drawPatch, float2 tess)
+// Object position of the Gregory surface (no noise) at a tess coordinate of the tile's cell.
+float3 CellSurfaceObjectPosition(uint drawPatch, float2 tess)
 {
-    return TerrainToObject(EvaluateSurface(drawPatch, tess).position);
+    return TerrainToObject(EvaluateCellSurface(drawPatch, tess).position);
 }
 
 // Uniform factors (_Tess.w > 0; tests and benchmarks): every tile, every edge _Tess.w, nothing
@@ -128,10 +132,10 @@ void TileFactorLine(uint piece, out float2 a, out float2 b, out uint2 corners, o
 // hull's loop evaluate these.
 float3 TileLineInnerPosition(uint patch, float2 a, float2 b, uint i)
 {
-    return SurfaceObjectPosition(patch, lerp(a, b, (float)i / (float)GT_EDGE_SEGMENTS));
+    return CellSurfaceObjectPosition(patch, lerp(a, b, (float)i / (float)GT_EDGE_SEGMENTS));
 }
 
-float3 TileCentrePosition(uint patch) { return SurfaceObjectPosition(patch, float2(0.5, 0.5)); }
+float3 TileCentrePosition(uint patch) { return CellSurfaceObjectPosition(patch, float2(0.5, 0.5)); }
 
 float4 TileLineInnerSample(uint patch, float2 a, float2 b, uint i)
 {
@@ -149,7 +153,7 @@ float4 TileCentreSample(uint patch)
 // vertex cache keeps it while the range holds).
 float3 TileFactorSamplePosition(uint patch, uint s)
 {
-    if (s < 4u) return TileCornerObjectPosition(patch, s);
+    if (s < 4u) return CellCornerObjectPosition(patch, s);
     float2 a, b;
     uint2 corners;
     uint axis;
@@ -163,7 +167,7 @@ float3 TileFactorSamplePosition(uint patch, uint s)
     {
         uint end = s - GT_TILE_MIDLINE_END_SAMPLE;
         TileFactorLine(4u + end / 2u, a, b, corners, axis);
-        return SurfaceObjectPosition(patch, (end & 1u) ? b : a);
+        return CellSurfaceObjectPosition(patch, (end & 1u) ? b : a);
     }
     return TileCentrePosition(patch);
 }
@@ -205,7 +209,7 @@ float LineErrorTessFactor(uint patch, uint piece, float3 p[GT_EDGE_SEGMENTS + 1]
     uint2 corners;
     uint axis;
     TileFactorLine(piece, a, b, corners, axis);
-    float2 edgeLength = TileEdgeLengths(patch);   // along u (x) and along v (y), terrain units
+    float2 edgeLength = CellEdgeLengths(patch);   // along u (x) and along v (y), terrain units
     float noiseCurvature = 0.0;
 #if defined(GT_NOISE)
     // The octaves this frame draws (the count TerrainVertex uses): the knob counts the noise it shows.
@@ -234,8 +238,8 @@ float TileFactorPiece(uint patch, uint piece, float3 cornerOS[4])
     TileFactorLine(piece, a, b, corners, axis);
     float3 p[GT_EDGE_SEGMENTS + 1];
     float k[GT_EDGE_SEGMENTS + 1];
-    p[0] = piece < 4u ? cornerOS[corners.x] : SurfaceObjectPosition(patch, a);
-    p[GT_EDGE_SEGMENTS] = piece < 4u ? cornerOS[corners.y] : SurfaceObjectPosition(patch, b);
+    p[0] = piece < 4u ? cornerOS[corners.x] : CellSurfaceObjectPosition(patch, a);
+    p[GT_EDGE_SEGMENTS] = piece < 4u ? cornerOS[corners.y] : CellSurfaceObjectPosition(patch, b);
     k[0] = k[GT_EDGE_SEGMENTS] = 0.0;
     [unroll] for (uint i = 1u; i < GT_EDGE_SEGMENTS; i++)
     {
@@ -257,6 +261,22 @@ TileFactorSet TileFactorsOfPieces(float piece[GT_TILE_FACTOR_PIECES])
     return f;
 }
 
+// The factors of a tile that keeps the part `kept` (TileKeptFraction) of its cell along x and y:
+// each line's factor scaled by the part of it the tile keeps, at least 1. Its segments are then no
+// longer than the cell's, so the cell's error bound holds (a part of a line bends no more than the
+// line). Edges u = 0, 1 (edge.x, .z) run along v (y), edges v = 0, 1 along u (x); inside.x
+// subdivides along u. Tiles sharing an edge share the cell line and the row or column that scale
+// it: crack-free. Whole (kept = 1): the cell's factors bit for bit. Culled stays culled.
+TileFactorSet TileFactorsOfCell(TileFactorSet cell, float2 kept)
+{
+    if (cell.edge.x == 0.0) return cell;
+    TileFactorSet f;
+    f.edge = max(cell.edge * kept.yxyx, 1.0);
+    f.inside = max(cell.inside * kept, 1.0);
+    return f;
+}
+
+// The hull stage's path; cornerOS: the cell's corners (CellCornerObjectPosition).
 TileFactorSet ComputeTileFactors(uint patch, float3 cornerOS[4])
 {
     TileFactorSet f;
@@ -266,7 +286,7 @@ TileFactorSet ComputeTileFactors(uint patch, float3 cornerOS[4])
     float piece[GT_TILE_FACTOR_PIECES];
     [unroll] for (uint i = 0u; i < GT_TILE_FACTOR_PIECES; i++)
         piece[i] = TileFactorPiece(patch, i, cornerOS);
-    return TileFactorsOfPieces(piece);
+    return TileFactorsOfCell(TileFactorsOfPieces(piece), TileKeptFraction(patch));
 }
 
 #endif // GT_TILE_FACTORS_INCLUDED

@@ -6,6 +6,8 @@
 // the current range (no wider) meets M + 1 cells per axis, and tile i is cell k0 + i clipped to the
 // range. A pan moves only the clipped cells, so whole cells keep their points bit for bit (no
 // swimming; the vertex cache keeps their vertices). Cell k sits in slot k mod (M + 1) per axis.
+// A clipped tile's factors come from its whole cell's (TileFactors.hlsl, TileFactorsOfCell), so a
+// pan with the camera held samples nothing: the cache holds each cell's factors.
 #ifndef GT_TILE_LATTICE_INCLUDED
 #define GT_TILE_LATTICE_INCLUDED
 
@@ -115,13 +117,64 @@ bool TileEmpty(uint slot)
     return span.x == span.z || span.y == span.w;
 }
 
-// Edge lengths along x and y in terrain units: a shared edge's is its row's or column's, so both
-// tiles see the same.
-float2 TileEdgeLengths(uint slot)
+// --- The cells the adaptive factors are decided on -------------------------------------------------
+
+// Lattice cell (cell.x, cell.y), relative to the origin: (l.x, l.y, h.x, h.y).
+float4 LatticeCell(int2 cell)
+{
+    float m = TileCount();
+    return float4(LatticeLine(_TileLattice.x, _TileLattice.z, m, cell.x), LatticeLine(_TileLattice.y, _TileLattice.w, m, cell.y),
+                  LatticeLine(_TileLattice.x, _TileLattice.z, m, cell.x + 1), LatticeLine(_TileLattice.y, _TileLattice.w, m, cell.y + 1));
+}
+
+// The whole cell slot `slot` holds (anchored only): its tile before clipping.
+float4 CellSpan(uint slot)
+{
+    int2 cell;
+    bool2 whole;
+    AnchoredTileSpan(slot, cell, whole);
+    return LatticeCell(cell);
+}
+
+// The global point of tess coordinate `tess` in the whole cell slot `slot` holds: the tile's own
+// point where the tile is the whole cell (the lattice formula, bit for bit), else also beyond its
+// clipped side. Laid over the range, the tile's point. The adaptive factors sample the cell, not
+// the clipped tile (TileFactors.hlsl), so a pan changes no cell's samples.
+TerrainPoint CellToTerrainPoint(uint slot, float2 tess)
+{
+    if (!TilesAnchored()) return TileToTerrainPoint(slot, tess);
+    int2 cell;
+    bool2 whole;
+    AnchoredTileSpan(slot, cell, whole);
+    float m = TileCount();
+    TerrainPoint p;
+    p.originHi = _RangeOrigin.xy;
+    p.local = _RangeOrigin.zw + float2(LatticePoint(_TileLattice.x, _TileLattice.z, m, cell.x, tess.x),
+                                       LatticePoint(_TileLattice.y, _TileLattice.w, m, cell.y, tess.y));
+    return p;
+}
+
+// How much of its cell the tile keeps along x and y: exactly 1 on a whole axis (and laid over the
+// range), else its span's width over the cell's (never above 1: the span lies in the cell and
+// float subtraction is monotonic). Tiles sharing an edge share the row or column that decides it.
+float2 TileKeptFraction(uint slot)
+{
+    if (!TilesAnchored()) return float2(1.0, 1.0);
+    int2 cell;
+    bool2 whole;
+    float4 span = AnchoredTileSpan(slot, cell, whole);
+    float4 c = LatticeCell(cell);
+    return float2(whole.x ? 1.0 : (span.z - span.x) / (c.z - c.x), whole.y ? 1.0 : (span.w - span.y) / (c.w - c.y));
+}
+
+// Edge lengths of the slot's cell along x and y in terrain units (the factors' noise term): from
+// the lattice lines, so a shared edge's length is its row's or column's and both tiles see the
+// same. Laid over the range: (range width) / M.
+float2 CellEdgeLengths(uint slot)
 {
     if (!TilesAnchored()) return (_Range.zw - _Range.xy) / TileCount();
-    float4 span = TileSpan(slot);
-    return span.zw - span.xy;
+    float4 c = CellSpan(slot);
+    return c.zw - c.xy;
 }
 
 #endif // GT_TILE_LATTICE_INCLUDED

@@ -53,19 +53,32 @@ uint VertexCacheGroupsPerTile(uint limit)
     return (VertexCacheMaxTilePoints(limit) + perGroup - 1u) / perGroup;
 }
 
-// _TileFactors, for T x T tiles (T = TilesAcrossInt(): M, or M + 1 anchored): T^2 factor records of
-// 2 float4, (edge 0-3) and (inside 0-1, culled 1/0, evaluate 1/0); then T^2 float4, the key of each
-// tile's last pass (TileRecordKey: _Range, or anchored the tile's span); then T^2 x
-// GT_TILE_FACTOR_SAMPLES float4, the tile's factor samples' object positions (w = 1 once written).
-// "evaluate" tells CacheTileVertices which tiles to (re)evaluate this pass: a tile whose factors and
-// key are the ones its slots already hold keeps them (a camera move that leaves its integer factors
-// alone; anchored, a pan that leaves the tile whole), and while the key holds the factors kernel
-// reads its samples back instead of evaluating the surface.
+// _TileFactors, for T x T tiles (T = TilesAcrossInt(): M, or M + 1 anchored), in parts of T^2:
+//   factor records, 2 float4 a tile: (edge 0-3), (inside 0-1, culled 1/0, evaluate 1/0): what the
+//     draw reads; "evaluate" tells CacheTileVertices which tiles to (re)evaluate this pass;
+//   keys, 1 float4 a tile each, adjacent so that one upload of zeros forgets both: the key of the
+//     tile's slots (TileRecordKey: _Range, or anchored the tile's span), then of its cell
+//     (CellRecordKey: _Range, or anchored the cell's span);
+//   factor samples, GT_TILE_FACTOR_SAMPLES float4 a tile: the cell's object positions (w = 1 once
+//     written), kept while the cell's key holds (a camera move evaluates no surface);
+//   cell factors, 2 float4 a tile: the float factors the cell's samples gave (before
+//     TileFactorsOfCell and rounding), then GT_FACTOR_INPUTS float4: what they were computed with
+//     (FactorInputs). While the cell's key and those hold, a pass takes the factors as they are (an
+//     anchored pan, the camera still, evaluates no sample and no factor).
+// A tile whose factors and slot key are the ones its slots already hold keeps its slots (a camera
+// move that leaves its integer factors alone; anchored, a pan that leaves the tile whole).
+#define GT_FACTOR_INPUTS 5u
 uint VertexCacheFactorIndex(uint tile) { return 2u * tile; }
 uint VertexCacheEvaluatedRangeIndex(uint tile, uint tiles) { return 2u * tiles * tiles + tile; }
+uint VertexCacheCellKeyIndex(uint tile, uint tiles) { return 3u * tiles * tiles + tile; }
 uint VertexCacheFactorSampleIndex(uint tile, uint s, uint tiles)
 {
-    return 3u * tiles * tiles + tile * GT_TILE_FACTOR_SAMPLES + s;
+    return 4u * tiles * tiles + tile * GT_TILE_FACTOR_SAMPLES + s;
+}
+uint VertexCacheCellFactorIndex(uint tile, uint tiles) { return (4u + GT_TILE_FACTOR_SAMPLES) * tiles * tiles + 2u * tile; }
+uint VertexCacheFactorInputsIndex(uint tile, uint tiles)
+{
+    return (6u + GT_TILE_FACTOR_SAMPLES) * tiles * tiles + GT_FACTOR_INPUTS * tile;
 }
 
 // Inside grid point (i, j) of a tile whose inside factor along u is insideU.

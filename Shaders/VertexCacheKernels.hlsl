@@ -1,10 +1,11 @@
 // The vertex cache's two compute kernels (GT_VERTEX_CACHE; Documentation~/internals.md, "Vertex
-// cache"). Include a pipeline adapter first (the rig: StandaloneAdapter through TerrainRig.hlsl;
+// cache"). Include a pipeline adapter first (with GT_ObjectToClipMatrix) (the rig: StandaloneAdapter through TerrainRig.hlsl;
 // Unity: TerrainCache.compute with LodCameraComputeAdapter.hlsl): the factors need GT_ObjectToClip
 // and GT_ScreenSize of the camera that decides the tessellation.
 //
 //   CacheTileFactors    a group per tile: culling and adaptive (or uniform) factors, rounded to
-//                       the integer factors the draw will use (VertexCacheIntegerFactors)
+//                       the integer factors the draw will use (VertexCacheIntegerFactors); a
+//                       cell's factors are kept while nothing they depend on moved
 //   CacheTileVertices   a few groups per tile: every vertex the tessellator makes at those factors,
 //                       evaluated by EvaluateTerrainVertex (the domain stage's own path) into its slot,
 //                       for the tiles whose factors or range changed since their last evaluation
@@ -31,20 +32,75 @@ groupshared float gtTileFactorPieces[GT_TILE_FACTOR_PIECES];
 // span (a pan that leaves the tile whole changes nothing in it).
 float4 TileRecordKey(uint tile) { return TilesAnchored() ? TileSpan(tile) : _Range; }
 
-// Whether the tile's key moved since its last pass (its record keeps that pass's key). A zero
-// record was never written (the renderer zeroes the records to force a pass): always moved, even
-// for a key that happens to be 0. Read by every lane before lane 0 writes the new one
-// (WriteTileFactors, after the group's barriers).
-bool TileRangeMoved(uint tile)
+// What a tile's factor samples depend on: the range, or anchored, only its cell (a pan that keeps
+// the tile's cell, clipped or not, changes no sample).
+float4 CellRecordKey(uint tile) { return TilesAnchored() ? CellSpan(tile) : _Range; }
+
+// Whether a key moved since the tile's last pass: a zero record was never written (the renderer
+// zeroes the keys to force a pass), so it always reads as moved, even for a key that happens to be
+// 0. Every lane reads both; only lane 0 acts on the slots' key, and the cell's key is written
+// after the group's barriers.
+bool KeyMoved(uint index, float4 key)
 {
-    float4 kept = _TileFactorsRW[VertexCacheEvaluatedRangeIndex(tile, TilesAcrossInt())];
-    return all(kept == 0.0) || any(kept != TileRecordKey(tile));
+    float4 kept = _TileFactorsRW[index];
+    return all(kept == 0.0) || any(kept != key);
+}
+
+bool TileRangeMoved(uint tile) { return KeyMoved(VertexCacheEvaluatedRangeIndex(tile, TilesAcrossInt()), TileRecordKey(tile)); }
+bool TileCellMoved(uint tile) { return KeyMoved(VertexCacheCellKeyIndex(tile, TilesAcrossInt()), CellRecordKey(tile)); }
+
+// The inputs of a cell's factors that the keys do not cover: the camera (its object-to-clip matrix,
+// the object transform included; its pixel size) and the knob (max factor, target). The rest (grid,
+// origin, noise, snow) the renderer guards by zeroing the keys. Compared whole, so factors are
+// never kept across a camera change, however small: neighbours decided in different passes agree.
+float4 FactorInput(uint k)
+{
+    float4x4 m = GT_ObjectToClipMatrix();
+    return k < 4u ? m[k] : float4(GT_ScreenSize(), MaxTessFactor(), TargetPixelError());
+}
+
+bool FactorInputsHeld(uint tile)
+{
+    uint i = VertexCacheFactorInputsIndex(tile, TilesAcrossInt());
+    bool held = true;
+    [unroll] for (uint k = 0u; k < GT_FACTOR_INPUTS; k++)
+        held = held && all(_TileFactorsRW[i + k] == FactorInput(k));
+    return held;
+}
+
+// How the last pass decided the cell's factors (the cell record's z; the rig's tests read it).
+#define GT_CELL_FACTORS_SAMPLED 0.0       // from the surface: the cell moved (or its key was zeroed)
+#define GT_CELL_FACTORS_RESCALED 1.0      // from the kept samples: the camera or the knob moved
+#define GT_CELL_FACTORS_HELD 2.0          // as they were
+
+// The cell factors of the tile's last adaptive pass, marked as held by this one; keeping new ones
+// with what they hold for (KeepCellFactors).
+TileFactorSet HeldCellFactors(uint tile)
+{
+    uint i = VertexCacheCellFactorIndex(tile, TilesAcrossInt());
+    TileFactorSet f;
+    f.edge = _TileFactorsRW[i];
+    f.inside = _TileFactorsRW[i + 1u].xy;
+    _TileFactorsRW[i + 1u] = float4(f.inside, GT_CELL_FACTORS_HELD, 0.0);
+    return f;
+}
+
+void KeepCellFactors(uint tile, TileFactorSet cell, bool cellMoved)
+{
+    uint tiles = TilesAcrossInt();
+    uint i = VertexCacheCellFactorIndex(tile, tiles);
+    _TileFactorsRW[i] = cell.edge;
+    _TileFactorsRW[i + 1u] = float4(cell.inside, cellMoved ? GT_CELL_FACTORS_SAMPLED : GT_CELL_FACTORS_RESCALED, 0.0);
+    uint k0 = VertexCacheFactorInputsIndex(tile, tiles);
+    [unroll] for (uint k = 0u; k < GT_FACTOR_INPUTS; k++)
+        _TileFactorsRW[k0 + k] = FactorInput(k);
+    _TileFactorsRW[VertexCacheCellKeyIndex(tile, tiles)] = CellRecordKey(tile);
 }
 
 // True when the tile's slots do not hold its vertices at factors f: the range moved, or last pass
 // it was culled or drawn at other factors. Everything else the records depend on (origin, grid,
-// noise, colour, snow, object transform) the renderer guards: it zeroes the range records when one
-// of those changes, and a zero record always reads as moved (TileRangeMoved).
+// noise, colour, snow, object transform) the renderer guards: it zeroes the keys when one of those
+// changes, and a zero key always reads as moved (KeyMoved).
 bool TileSlotsOutdated(uint tile, TileFactorSet f, bool rangeMoved)
 {
     uint i = VertexCacheFactorIndex(tile);
@@ -64,15 +120,15 @@ void WriteTileFactors(uint tile, TileFactorSet f, bool rangeMoved)
     if (rangeMoved) _TileFactorsRW[VertexCacheEvaluatedRangeIndex(tile, TilesAcrossInt())] = TileRecordKey(tile);
 }
 
-// Sample s of the tile: its position read back while the range holds and the sample was written
-// (w = 1), else evaluated and kept; then the camera's part (TileFactorSampleAt). The positions
-// depend on the range only, so a camera move costs no surface evaluation here.
-float4 CachedTileFactorSample(uint tile, uint s, bool rangeMoved)
+// Sample s of the tile's cell: its position read back while the cell holds and the sample was
+// written (w = 1), else evaluated and kept; then the camera's part (TileFactorSampleAt). The
+// positions depend on the cell only, so a camera move costs no surface evaluation here.
+float4 CachedTileFactorSample(uint tile, uint s, bool cellMoved)
 {
     uint k = VertexCacheFactorSampleIndex(tile, s, TilesAcrossInt());
     float4 kept = _TileFactorsRW[k];
     float3 p = kept.xyz;
-    if (rangeMoved || kept.w != 1.0)
+    if (cellMoved || kept.w != 1.0)
     {
         p = TileFactorSamplePosition(tile, s);
         _TileFactorsRW[k] = float4(p, 1.0);
@@ -80,32 +136,41 @@ float4 CachedTileFactorSample(uint tile, uint s, bool rangeMoved)
     return TileFactorSampleAt(s, p);
 }
 
-// Dispatch (T, T, 1), T = TilesAcrossInt(): a group a tile. The tile's 51 surface samples (CachedTileFactorSample) one a lane,
-// then its seven pieces (TileFactorPiece's arithmetic on the shared samples) one a lane, then lane 0
-// assembles them. Why so wide: the factors are a chain of surface evaluations, and the chain's
-// length is the pass's. One lane a tile: ~50 evaluations (0.6M triangles, 32 x 32 tiles, H200: 0.1
-// ms of pre-pass against 0.04 for uniform factors); one lane a piece: ~11 (0.061 ms); one sample
-// a lane: 1 (0.045 ms, and 0.051 -> 0.038 ms at 16 x 16 tiles, one run).
+// Dispatch (T, T, 1), T = TilesAcrossInt(): a group a tile. Three ways, the same for every lane:
+//   the cell's factors held (its key and FactorInputs unchanged: an anchored pan, the camera still):
+//     lane 0 scales them to the tile (TileFactorsOfCell); no sample, no barrier;
+//   else the cell's 51 surface samples (CachedTileFactorSample) one a lane, read back while the
+//     cell holds; then its seven pieces (TileFactorPiece's arithmetic on the shared samples) one a
+//     lane; then lane 0 assembles, keeps the cell's factors and scales them to the tile.
+// Why so wide: the factors are a chain of surface evaluations, and the chain's length is the pass's.
+// One lane a tile: ~50 evaluations (0.6M triangles, 32 x 32 tiles, H200: 0.1 ms of pre-pass against
+// 0.04 for uniform factors); one lane a piece: ~11 (0.061 ms); one sample a lane: 1 (0.045 ms, and
+// 0.051 -> 0.038 ms at 16 x 16 tiles, one run). Why the held way: that one evaluation is still most
+// of a pan's pre-pass (Documentation~/performance.md, "Anchored tiles").
 [numthreads(64, 1, 1)]
 void CacheTileFactors(uint3 group : SV_GroupID, uint lane : SV_GroupIndex)
 {
     uint tiles = TilesAcrossInt();
     if (group.x >= tiles || group.y >= tiles) return;
     uint tile = group.y * tiles + group.x;
-    bool rangeMoved = TileRangeMoved(tile);   // the same for every lane
+    bool rangeMoved = TileRangeMoved(tile);
+    bool cellMoved = TileCellMoved(tile);
     TileFactorSet f;
     bool uniformFactors = UniformTileFactors(f);
     bool empty = TileEmpty(tile);   // an anchored tile without area: culled
-    if (empty || uniformFactors)   // the same for every lane of the group: no barrier is skipped by some only
+    if (empty || uniformFactors)
     {
-        // No samples here: those kept belong to the range of the last adaptive pass.
-        if (rangeMoved && lane < GT_TILE_FACTOR_SAMPLES)
-            _TileFactorsRW[VertexCacheFactorSampleIndex(tile, lane, tiles)] = float4(0.0, 0.0, 0.0, 0.0);
-        GroupMemoryBarrierWithGroupSync();   // every lane has read the old range before lane 0 writes
+        // No samples: the cell's key stays that of the samples and factors kept, which the next
+        // adaptive pass then trusts only for the same cell.
         if (lane == 0u) WriteTileFactors(tile, empty ? CulledTileFactors() : f, rangeMoved);
         return;
     }
-    if (lane < GT_TILE_FACTOR_SAMPLES) gtTileFactorSamples[lane] = CachedTileFactorSample(tile, lane, rangeMoved);
+    if (!cellMoved && FactorInputsHeld(tile))
+    {
+        if (lane == 0u) WriteTileFactors(tile, TileFactorsOfCell(HeldCellFactors(tile), TileKeptFraction(tile)), rangeMoved);
+        return;
+    }
+    if (lane < GT_TILE_FACTOR_SAMPLES) gtTileFactorSamples[lane] = CachedTileFactorSample(tile, lane, cellMoved);
     GroupMemoryBarrierWithGroupSync();
     float3 cornerOS[4];
     [unroll] for (uint c = 0u; c < 4u; c++)
@@ -130,15 +195,16 @@ void CacheTileFactors(uint3 group : SV_GroupID, uint lane : SV_GroupIndex)
     }
     GroupMemoryBarrierWithGroupSync();
     if (lane != 0u) return;
-    if (culled)
+    TileFactorSet cell = CulledTileFactors();
+    if (!culled)
     {
-        WriteTileFactors(tile, CulledTileFactors(), rangeMoved);
-        return;
+        float piece[GT_TILE_FACTOR_PIECES];
+        [unroll] for (uint k = 0u; k < GT_TILE_FACTOR_PIECES; k++)
+            piece[k] = gtTileFactorPieces[k];
+        cell = TileFactorsOfPieces(piece);
     }
-    float piece[GT_TILE_FACTOR_PIECES];
-    [unroll] for (uint k = 0u; k < GT_TILE_FACTOR_PIECES; k++)
-        piece[k] = gtTileFactorPieces[k];
-    WriteTileFactors(tile, TileFactorsOfPieces(piece), rangeMoved);
+    KeepCellFactors(tile, cell, cellMoved);
+    WriteTileFactors(tile, TileFactorsOfCell(cell, TileKeptFraction(tile)), rangeMoved);
 }
 
 void WriteVertexCacheRecord(uint slot, TerrainVertexAttributes a)

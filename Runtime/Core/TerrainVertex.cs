@@ -107,6 +107,20 @@ namespace GregoryTerrain
         }
 
         /// <summary>
+        /// HLSL <c>EvaluateCellSurface(slot, tess)</c>: the surface at tess in the whole cell slot
+        /// <paramref name="slot"/> holds (<see cref="TileLattice.CellToTerrainPoint"/>), where the
+        /// adaptive factors sample it. Tile mode only.
+        /// </summary>
+        public static TerrainSurfacePoint EvaluateCellSurface(TerrainInputs inputs, int slot, Float2 tess)
+        {
+            if (inputs == null) throw new ArgumentNullException(nameof(inputs));
+            int tiles = inputs.TilesAcross();
+            if (tiles < 1 || (uint)slot >= (uint)(tiles * tiles))
+                throw new ArgumentException(FormattableString.Invariant($"slot ({slot}) must lie in [0, {tiles * tiles - 1}] for {tiles} x {tiles} tiles"), nameof(slot));
+            return EvaluateSurfaceAt(inputs, TileLattice.CellToTerrainPoint(inputs.Params, slot, tess.x, tess.y));
+        }
+
+        /// <summary>
         /// The tile path of <see cref="EvaluateSurface"/> after the global point is formed: FindPatch on
         /// the float lines, PatchLocalUV, GregoryEval. Use it with the q a GPU read back to compare
         /// the rest of the path at exactly the point the GPU used.

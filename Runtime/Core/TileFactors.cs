@@ -10,6 +10,10 @@ namespace GregoryTerrain
     /// tell what the GPU will draw for a camera: the renderer's triangle estimate
     /// (<see cref="TerrainTriangleEstimate"/>). The arithmetic per piece is
     /// <see cref="TessellationPolicy"/>'s.
+    /// <para>Every sample is of the tile's cell (<see cref="TileLattice.CellToTerrainPoint"/>): the
+    /// tile itself unless anchored and clipped to the range. A clipped tile draws its cell's factors
+    /// scaled to the part it keeps (<see cref="TileFactorsOfCell"/>), so a pan, which only moves the
+    /// clipped tiles, changes no sample.</para>
     /// </summary>
     public static class TileFactors
     {
@@ -21,16 +25,16 @@ namespace GregoryTerrain
         /// <summary>Corner c sits at tess coordinate (c &amp; 1, c &gt;&gt; 1).</summary>
         public static Float2 CornerTessCoordinate(int corner) => new Float2(corner & 1, corner >> 1);
 
-        /// <summary>Object position of the tile's corner (no noise): the culling box and the edges' ends.</summary>
-        public static Float3 TileCornerObjectPosition(TerrainInputs inputs, int tile, int corner)
+        /// <summary>Object position of corner c of the tile's cell (no noise): the culling box and the edges' ends.</summary>
+        public static Float3 CellCornerObjectPosition(TerrainInputs inputs, int tile, int corner)
         {
-            TerrainSurfacePoint s = TerrainVertex.EvaluateSurface(inputs, tile, CornerTessCoordinate(corner));
+            TerrainSurfacePoint s = TerrainVertex.EvaluateCellSurface(inputs, tile, CornerTessCoordinate(corner));
             return TerrainVertex.TerrainToObject(TerrainVertex.OutputSurfacePosition(inputs, s, TerrainKeywords.None));
         }
 
-        /// <summary>Object position of the Gregory surface (no noise) at a tess coordinate of the tile.</summary>
-        public static Float3 SurfaceObjectPosition(TerrainInputs inputs, int tile, Float2 tess) =>
-            TerrainVertex.TerrainToObject(TerrainVertex.EvaluateSurface(inputs, tile, tess).position);
+        /// <summary>Object position of the Gregory surface (no noise) at a tess coordinate of the tile's cell.</summary>
+        public static Float3 CellSurfaceObjectPosition(TerrainInputs inputs, int tile, Float2 tess) =>
+            TerrainVertex.TerrainToObject(TerrainVertex.EvaluateCellSurface(inputs, tile, tess).position);
 
         /// <summary>HLSL <c>ObjectPixelsPerUnit</c>: pixels per object unit at p (TessellationPolicy.PixelsPerUnit).</summary>
         public static float ObjectPixelsPerUnit(Float4x4 objectToClip, Float3 p, Float2 screenSize) =>
@@ -80,10 +84,10 @@ namespace GregoryTerrain
         /// <summary>HLSL <c>TileLineInnerPosition</c>: inner point i (1 .. n - 1) of the tile's line from a to b.</summary>
         public static Float3 TileLineInnerPosition(TerrainInputs inputs, int tile, Float2 a, Float2 b, int i) =>
             // lerp(a, b, i / n) in float, as the shader forms the sample's tess coordinate.
-            SurfaceObjectPosition(inputs, tile, a + (b - a) * ((float)i / Segments));
+            CellSurfaceObjectPosition(inputs, tile, a + (b - a) * ((float)i / Segments));
 
         /// <summary>HLSL <c>TileCentrePosition</c>.</summary>
-        public static Float3 TileCentrePosition(TerrainInputs inputs, int tile) => SurfaceObjectPosition(inputs, tile, new Float2(0.5f, 0.5f));
+        public static Float3 TileCentrePosition(TerrainInputs inputs, int tile) => CellSurfaceObjectPosition(inputs, tile, new Float2(0.5f, 0.5f));
 
         /// <summary>HLSL <c>TileLineInnerSample</c>: the inner point and its pixels per object unit (w).</summary>
         public static Float4 TileLineInnerSample(TerrainInputs inputs, int tile, Float2 a, Float2 b, int i, Float4x4 objectToClip, Float2 screenSize)
@@ -109,7 +113,7 @@ namespace GregoryTerrain
             float kMax = 0f;
             for (int i = 1; i < Segments; i++) kMax = Math.Max(kMax, k[i]);
             TileFactorLine(piece, out _, out _, out _, out _, out int axis);
-            Float2 edgeLengths = TileLattice.TileEdgeLengths(inputs.Params, tile);
+            Float2 edgeLengths = TileLattice.CellEdgeLengths(inputs.Params, tile);
             float edgeLength = axis == 0 ? edgeLengths.x : edgeLengths.y;
             float noiseCurvature = 0f;
             if ((keywords & TerrainKeywords.Noise) != 0)
@@ -132,8 +136,8 @@ namespace GregoryTerrain
             TileFactorLine(piece, out Float2 a, out Float2 b, out int cornerA, out int cornerB, out _);
             var p = new Float3[Segments + 1];
             var k = new float[Segments + 1];
-            p[0] = piece < 4 ? cornersOS[cornerA] : SurfaceObjectPosition(inputs, tile, a);
-            p[Segments] = piece < 4 ? cornersOS[cornerB] : SurfaceObjectPosition(inputs, tile, b);
+            p[0] = piece < 4 ? cornersOS[cornerA] : CellSurfaceObjectPosition(inputs, tile, a);
+            p[Segments] = piece < 4 ? cornersOS[cornerB] : CellSurfaceObjectPosition(inputs, tile, b);
             for (int i = 1; i < Segments; i++)
             {
                 Float4 v = TileLineInnerSample(inputs, tile, a, b, i, objectToClip, screenSize);
@@ -153,6 +157,22 @@ namespace GregoryTerrain
         }
 
         /// <summary>
+        /// HLSL <c>TileFactorsOfCell</c>: the factors of a tile that keeps the part
+        /// <paramref name="kept"/> (<see cref="TileLattice.TileKeptFraction"/>) of its cell along x and
+        /// y: each line's factor times the part of it the tile keeps, at least 1, so its segments are
+        /// no longer than the cell's and the cell's error bound holds. Edges u = 0, 1 run along v
+        /// (y), edges v = 0, 1 along u (x). Whole: the cell's factors bit for bit; culled stays culled.
+        /// </summary>
+        public static TileFactorSet TileFactorsOfCell(TileFactorSet cell, Float2 kept)
+        {
+            if (cell.IsCulled) return cell;
+            Float4 edge = cell.edge;
+            return new TileFactorSet(
+                new Float4(Math.Max(edge.x * kept.y, 1f), Math.Max(edge.y * kept.x, 1f), Math.Max(edge.z * kept.y, 1f), Math.Max(edge.w * kept.x, 1f)),
+                new Float2(Math.Max(cell.inside.x * kept.x, 1f), Math.Max(cell.inside.y * kept.y, 1f)));
+        }
+
+        /// <summary>
         /// HLSL <c>ComputeTileFactors</c> (hull_const's path): the uniform factor when one is set;
         /// else all zero for a culled tile; else the seven pieces. <paramref name="objectToClip"/>:
         /// the camera's <c>GT_ObjectToClip</c>; <paramref name="screenSize"/> in pixels.
@@ -168,11 +188,11 @@ namespace GregoryTerrain
             if (TileLattice.TileEmpty(inputs.Params, tile)) return CulledTileFactors();
             if (UniformTileFactors(inputs, out TileFactorSet f)) return f;
             var corners = new Float3[4];
-            for (int c = 0; c < 4; c++) corners[c] = TileCornerObjectPosition(inputs, tile, c);
+            for (int c = 0; c < 4; c++) corners[c] = CellCornerObjectPosition(inputs, tile, c);
             if (TileCulled(inputs, objectToClip, corners, keywords)) return CulledTileFactors();
             var piece = new float[Pieces];
             for (int i = 0; i < Pieces; i++) piece[i] = TileFactorPiece(inputs, tile, i, corners, objectToClip, screenSize, keywords);
-            return TileFactorsOfPieces(piece);
+            return TileFactorsOfCell(TileFactorsOfPieces(piece), TileLattice.TileKeptFraction(inputs.Params, tile));
         }
     }
 }

@@ -166,17 +166,68 @@ namespace GregoryTerrain
             return span.x == span.z || span.y == span.w;
         }
 
+        // ---------------------------------------------------------------- the cells the factors are decided on
+
+        /// <summary>Lattice cell (<paramref name="cellX"/>, <paramref name="cellY"/>) relative to the origin: (l.x, l.y, h.x, h.y). HLSL <c>LatticeCell</c>.</summary>
+        public static Float4 LatticeCell(TerrainParams p, int cellX, int cellY)
+        {
+            float m = p.tess.x;
+            Float4 lat = p.tileLattice;
+            return new Float4(LatticeLine(lat.x, lat.z, m, cellX), LatticeLine(lat.y, lat.w, m, cellY),
+                              LatticeLine(lat.x, lat.z, m, cellX + 1), LatticeLine(lat.y, lat.w, m, cellY + 1));
+        }
+
+        /// <summary>The whole cell slot <paramref name="slot"/> holds (anchored only): its tile before clipping. HLSL <c>CellSpan</c>.</summary>
+        public static Float4 CellSpan(TerrainParams p, int slot)
+        {
+            if (!IsAnchored(p.tileLattice)) throw new InvalidOperationException("CellSpan: the tiles are not anchored (tileLattice is 0)");
+            AnchoredTileSpan(p, slot, out int cellX, out int cellY, out _, out _);
+            return LatticeCell(p, cellX, cellY);
+        }
+
         /// <summary>
-        /// The edge lengths of slot <paramref name="slot"/>'s tile along x and y, in terrain units: a
-        /// shared edge's length is its row's or column's, so both tiles see the same. Laid over the
-        /// range: <c>(range width) / M</c>, as before anchoring existed. HLSL <c>TileEdgeLengths</c>.
+        /// The global point of tess coordinate (s, t) in the whole cell slot <paramref name="slot"/>
+        /// holds: the tile's own point where the tile is the whole cell (bit for bit), else also
+        /// beyond its clipped side; laid over the range, the tile's point. The adaptive factors
+        /// sample the cell (<see cref="TileFactors"/>), so a pan changes no cell's samples. HLSL
+        /// <c>CellToTerrainPoint</c>.
         /// </summary>
-        public static Float2 TileEdgeLengths(TerrainParams p, int slot)
+        public static TerrainPoint CellToTerrainPoint(TerrainParams p, int slot, float s, float t)
+        {
+            if (!IsAnchored(p.tileLattice)) return TileToTerrainPoint(p, slot, s, t);
+            AnchoredTileSpan(p, slot, out int cellX, out int cellY, out _, out _);
+            float m = p.tess.x;
+            Float4 lat = p.tileLattice;
+            var local = new Float2(p.rangeOrigin.z + LatticePoint(lat.x, lat.z, m, cellX, s),
+                                   p.rangeOrigin.w + LatticePoint(lat.y, lat.w, m, cellY, t));
+            return new TerrainPoint(p.rangeOrigin.xy, local);
+        }
+
+        /// <summary>
+        /// How much of its cell slot <paramref name="slot"/>'s tile keeps along x and y: exactly 1 on
+        /// a whole axis (and laid over the range), else the span's width over the cell's (never above
+        /// 1). The tile's factors are its cell's scaled by it (<see cref="TileFactors.TileFactorsOfCell"/>).
+        /// HLSL <c>TileKeptFraction</c>.
+        /// </summary>
+        public static Float2 TileKeptFraction(TerrainParams p, int slot)
+        {
+            if (!IsAnchored(p.tileLattice)) return new Float2(1f, 1f);
+            Float4 span = AnchoredTileSpan(p, slot, out int cellX, out int cellY, out bool wholeX, out bool wholeY);
+            Float4 c = LatticeCell(p, cellX, cellY);
+            return new Float2(wholeX ? 1f : (span.z - span.x) / (c.z - c.x), wholeY ? 1f : (span.w - span.y) / (c.w - c.y));
+        }
+
+        /// <summary>
+        /// The edge lengths of slot <paramref name="slot"/>'s cell along x and y, in terrain units
+        /// (the factors' noise term): from the lattice lines, so a shared edge's length is its row's or
+        /// column's. Laid over the range: <c>(range width) / M</c>. HLSL <c>CellEdgeLengths</c>.
+        /// </summary>
+        public static Float2 CellEdgeLengths(TerrainParams p, int slot)
         {
             if (!IsAnchored(p.tileLattice))
                 return new Float2((p.range.z - p.range.x) / p.tess.x, (p.range.w - p.range.y) / p.tess.x);
-            Float4 span = TileSpan(p, slot);
-            return new Float2(span.z - span.x, span.w - span.y);
+            Float4 c = CellSpan(p, slot);
+            return new Float2(c.z - c.x, c.w - c.y);
         }
 
         /// <summary>

@@ -112,16 +112,52 @@ namespace GregoryTerrain
         public static long FactorIndex(int tile) => 2L * tile;
 
         /// <summary>
-        /// Index in <c>_TileFactors</c> of the <c>_Range</c> tile t's slots were last evaluated at: after
-        /// the M^2 factor records. HLSL <c>VertexCacheEvaluatedRangeIndex</c>.
+        /// Index in <c>_TileFactors</c> of the key tile t's slots were last evaluated at (the
+        /// <c>_Range</c>, or anchored the tile's span): after the M^2 factor records. HLSL
+        /// <c>VertexCacheEvaluatedRangeIndex</c>.
         /// </summary>
         public static long EvaluatedRangeIndex(int tile, int tiles) => 2L * tiles * tiles + tile;
 
         /// <summary>
-        /// Index in <c>_TileFactors</c> of factor sample s of tile t (its object position, w = 1 once
-        /// written): after the ranges. HLSL <c>VertexCacheFactorSampleIndex</c>.
+        /// Index in <c>_TileFactors</c> of the key of the cell whose samples and factors tile t keeps
+        /// (the <c>_Range</c>, or anchored the cell's span): right after the slots' keys, so that one
+        /// upload of 2 M^2 zeros forgets both. HLSL <c>VertexCacheCellKeyIndex</c>.
         /// </summary>
-        public static long FactorSampleIndex(int tile, int s, int tiles) => 3L * tiles * tiles + (long)tile * FactorSamplesPerTile + s;
+        public static long CellKeyIndex(int tile, int tiles) => 3L * tiles * tiles + tile;
+
+        /// <summary>float4 of keys per tile that a renderer zeroes to make the kernels evaluate the tile afresh: the slots' and the cell's.</summary>
+        public const int KeyFloat4sPerTile = 2;
+
+        /// <summary>
+        /// Index in <c>_TileFactors</c> of factor sample s of tile t (its object position, w = 1 once
+        /// written): after the keys. HLSL <c>VertexCacheFactorSampleIndex</c>.
+        /// </summary>
+        public static long FactorSampleIndex(int tile, int s, int tiles) => 4L * tiles * tiles + (long)tile * FactorSamplesPerTile + s;
+
+        /// <summary>
+        /// Index in <c>_TileFactors</c> of tile t's cell factors (the float factors its cell's samples
+        /// gave, before <see cref="TileFactors.TileFactorsOfCell"/> and rounding): 2 float4, after the
+        /// samples. HLSL <c>VertexCacheCellFactorIndex</c>.
+        /// </summary>
+        public static long CellFactorIndex(int tile, int tiles) => (4L + FactorSamplesPerTile) * tiles * tiles + 2L * tile;
+
+        /// <summary>
+        /// Index in <c>_TileFactors</c> of the inputs tile t's cell factors were computed with
+        /// (<see cref="FactorInputsFloat4s"/> float4: the camera's object-to-clip rows, then screen
+        /// width and height, max factor and target): after the cell factors. HLSL
+        /// <c>VertexCacheFactorInputsIndex</c>.
+        /// </summary>
+        public static long FactorInputsIndex(int tile, int tiles) => (6L + FactorSamplesPerTile) * tiles * tiles + (long)FactorInputsFloat4s * tile;
+
+        /// <summary>float4 per tile of <see cref="FactorInputsIndex"/>.</summary>
+        public const int FactorInputsFloat4s = 5;
+
+        /// <summary>
+        /// How the last pass decided a tile's cell factors (z of the cell record's second float4; HLSL
+        /// <c>GT_CELL_FACTORS_*</c>): from the surface (the cell moved, or its key was zeroed), from
+        /// the kept samples (the camera or the knob moved), or held as they were.
+        /// </summary>
+        public const float CellFactorsSampled = 0f, CellFactorsRescaled = 1f, CellFactorsHeld = 2f;
 
         /// <summary>Inside grid point (i, j) of a tile whose inside factor along u is <paramref name="insideU"/>.</summary>
         public static int InteriorSlot(int i, int j, int insideU) => i + j * (insideU + 1);

@@ -14,7 +14,7 @@ namespace GregoryTerrain
     /// <item>Slots per tile <c>S(L) = (L+1)^2 + 4 (L+1)</c>: the inside grid of the largest inside
     /// factors, then each of the four edges' <c>L+1</c> points.</item>
     /// <item>uint4 per slot <c>R</c>: 1, or 2 with GT_SNOW.</item>
-    /// <item><c>_TileFactors</c>: <c>54 M^2</c> float4 (864 M^2 bytes); <c>_VertexCache</c>:
+    /// <item><c>_TileFactors</c>: <c>62 M^2</c> float4 (992 M^2 bytes); <c>_VertexCache</c>:
     /// <c>M^2 S(L) R</c> uint4 (16 bytes each).</item>
     /// </list>
     /// </summary>
@@ -23,23 +23,26 @@ namespace GregoryTerrain
         /// <summary>float4 per tile in <c>_TileFactors</c>' first part: (edges 0-3), (inside 0-1, culled, evaluated).</summary>
         public const int TileFactorFloat4s = 2;
 
-        /// <summary>float4 per tile in its second part: the <c>_Range</c> of the tile's last pass.</summary>
-        public const int EvaluatedRangeFloat4s = 1;
+        /// <summary>float4 per tile in its second part: the keys of the tile's slots and of its cell.</summary>
+        public const int KeyFloat4s = VertexCache.KeyFloat4sPerTile;
 
         /// <summary>float4 per tile in its third part: the positions of its factor samples.</summary>
         public const int FactorSampleFloat4s = VertexCache.FactorSamplesPerTile;
 
-        /// <summary>float4 per tile in all: 2 + 1 + 51 = 54.</summary>
-        public const int TileFactorsFloat4sPerTile = TileFactorFloat4s + EvaluatedRangeFloat4s + FactorSampleFloat4s;
+        /// <summary>float4 per tile in its fourth part: its cell's factors and the inputs they were computed with.</summary>
+        public const int CellFactorFloat4s = 2 + VertexCache.FactorInputsFloat4s;
 
-        /// <summary>float4 elements of <c>_TileFactors</c>: 54 M^2 (factor records, ranges, factor samples).</summary>
+        /// <summary>float4 per tile in all: 2 + 2 + 51 + 7 = 62.</summary>
+        public const int TileFactorsFloat4sPerTile = TileFactorFloat4s + KeyFloat4s + FactorSampleFloat4s + CellFactorFloat4s;
+
+        /// <summary>float4 elements of <c>_TileFactors</c>: 62 M^2 (factor records, keys, factor samples, cell factors).</summary>
         public static long TileFactorsFloat4s(int tiles)
         {
             CheckTiles(tiles);
             return TileFactorsFloat4sPerTile * (long)tiles * tiles;
         }
 
-        /// <summary>Bytes of <c>_TileFactors</c>: 864 M^2.</summary>
+        /// <summary>Bytes of <c>_TileFactors</c>: 992 M^2.</summary>
         public static long TileFactorsBytes(int tiles) => TileFactorsFloat4s(tiles) * GpuLayout.Float4Stride;
 
         /// <summary>uint4 elements of <c>_VertexCache</c>: M^2 S(L) R.</summary>
@@ -77,7 +80,7 @@ namespace GregoryTerrain
             long factors = TileFactorsBytes(tiles);
             if (factors > limit)
                 throw new ArgumentException(FormattableString.Invariant(
-                    $"the tile factors for tiles = {tiles} need {factors} bytes (_TileFactors = 864 M^2), more than the largest buffer, {limit} bytes"), "tiles");
+                    $"the tile factors for tiles = {tiles} need {factors} bytes (_TileFactors = 992 M^2), more than the largest buffer, {limit} bytes"), "tiles");
         }
 
         static void CheckTiles(int tiles)

@@ -23,7 +23,8 @@ float4x4 _GtWorldToObject;
 float3 GT_ObjectToWorld(float3 positionOS) { return positionOS; }
 // Normals go with the inverse transpose: n^T W (W = world-to-object), as the graphics adapters do.
 float3 GT_ObjectToWorldNormal(float3 normalOS) { return normalize(mul(normalOS, (float3x3)_GtWorldToObject)); }
-float4 GT_ObjectToClip(float3 positionOS) { return mul(_GT_LodObjectToClip, float4(positionOS, 1.0)); }
+float4x4 GT_ObjectToClipMatrix() { return _GT_LodObjectToClip; }
+float4 GT_ObjectToClip(float3 positionOS) { return mul(GT_ObjectToClipMatrix(), float4(positionOS, 1.0)); }
 float4 GT_WorldToClip(float3 positionWS) { return GT_ObjectToClip(positionWS); }
 float3 GT_CameraPositionWS() { return float3(0.0, 0.0, 0.0); }
 float2 GT_ScreenSize() { return _GT_LodScreenSize.xy; }

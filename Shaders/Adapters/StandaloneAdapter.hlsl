@@ -6,6 +6,9 @@
 //   float3 GT_ObjectToWorldNormal(float3 normalOS)      unit length
 //   float4 GT_WorldToClip(float3 positionWS)
 //   float4 GT_ObjectToClip(float3 positionOS)
+//   float4x4 GT_ObjectToClipMatrix()                    the matrix GT_ObjectToClip applies: only
+//                                                       adapters of the vertex cache's kernels (a
+//                                                       key of the factors they keep)
 //   float3 GT_CameraPositionWS()
 //   float2 GT_ScreenSize()                              render target size in pixels
 //   void   GT_MainLight(out float3 directionWS, out float3 color)
@@ -69,9 +72,11 @@ float3 GT_ObjectToWorldNormal(float3 normalOS)
     return normalize(dot(c0, x0) < 0.0 ? -n : n);
 }
 
+float4x4 GT_ObjectToClipMatrix() { return _RigObjectToClip; }
+
 float4 GT_ObjectToClip(float3 positionOS)
 {
-    return mul(_RigObjectToClip, float4(positionOS, 1.0));
+    return mul(GT_ObjectToClipMatrix(), float4(positionOS, 1.0));
 }
 
 // RigCamera carries object-to-clip and object-to-world only, so world-to-clip maps back to object

@@ -21,7 +21,7 @@ namespace GregoryTerrain.Tests
         static readonly float[] Pans = { 0f, 1e-4f, 0.013f, 0.05f, 0.0499f, -0.031f, 0.17f, -0.4f };
         static readonly float[] Tess = { 0f, 0.125f, 1f / 3f, 0.5f, 0.7f, 1f };
 
-        static int SlotOf(TerrainParams p, int i, int j)
+        internal static int SlotOf(TerrainParams p, int i, int j)
         {
             int across = TileLattice.TilesAcross(p);
             int k0x = TileLattice.FirstCell(p.range.x, p.tileLattice.x, p.tileLattice.z, p.tess.x);
@@ -126,20 +126,54 @@ namespace GregoryTerrain.Tests
             Assert.That(kept, Is.EqualTo((M - 2) * (M - 1)), $"{kept} kept, {moved} moved");
         }
 
+        /// <summary>
+        /// The cells the factors are decided on: each holds its tile; a whole tile is its cell point
+        /// for point; the part kept is 1 exactly on a whole axis, else the span over the cell, and
+        /// shared along rows and columns (as are the cells' edge lengths), so tiles sharing an edge
+        /// scale it alike; a pan that keeps a slot's cell keeps its cell points bit for bit.
+        /// </summary>
         [Test]
-        public void EdgeLengthsAreTheSpansAndSharedAlongRowsAndColumns()
+        public void CellsHoldTheirTilesAndAPanKeepsThem()
         {
             TerrainParams p = Params(Panned(0.0123f, -0.0456f), Lattice);
+            TerrainParams q = Params(Panned(0.0125f, -0.0451f), Lattice);   // the same first cells
+            int clipped = 0;
             for (int j = 0; j <= M; j++)
                 for (int i = 0; i <= M; i++)
                 {
-                    Float2 e = TileLattice.TileEdgeLengths(p, SlotOf(p, i, j));
-                    Float2 row = TileLattice.TileEdgeLengths(p, SlotOf(p, 0, j)), column = TileLattice.TileEdgeLengths(p, SlotOf(p, i, 0));
-                    Assert.That(e.y, Is.EqualTo(row.y), $"tile ({i}, {j}): a row shares its height");
-                    Assert.That(e.x, Is.EqualTo(column.x), $"tile ({i}, {j}): a column shares its width");
-                    Assert.That(e.x, Is.GreaterThanOrEqualTo(0f).And.LessThanOrEqualTo((Lattice.z - Lattice.x) / M * 1.000001f));
+                    int slot = SlotOf(p, i, j);
+                    string at = $"tile ({i}, {j})";
+                    Float4 span = TileLattice.TileSpan(p, slot), cell = TileLattice.CellSpan(p, slot);
+                    Assert.That(cell.x <= span.x && cell.y <= span.y && span.z <= cell.z && span.w <= cell.w, Is.True, $"{at}: {cell} holds {span}");
+                    Float2 kept = TileLattice.TileKeptFraction(p, slot);
+                    Assert.That(kept.x, Is.EqualTo(TileLattice.TileKeptFraction(p, SlotOf(p, i, 0)).x), $"{at}: a column shares its part");
+                    Assert.That(kept.y, Is.EqualTo(TileLattice.TileKeptFraction(p, SlotOf(p, 0, j)).y), $"{at}: a row shares its part");
+                    Assert.That(kept.x, Is.InRange(0f, 1f), at);
+                    Assert.That(kept.y, Is.InRange(0f, 1f), at);
+                    bool wholeX = span.x == cell.x && span.z == cell.z, wholeY = span.y == cell.y && span.w == cell.w;
+                    Assert.That(kept.x == 1f, Is.EqualTo(wholeX || span.z - span.x == cell.z - cell.x), $"{at}: x");
+                    if (!wholeX) Assert.That(kept.x, Is.EqualTo((span.z - span.x) / (cell.z - cell.x)).Within(1e-6f), at);
+                    Float2 e = TileLattice.CellEdgeLengths(p, slot);
+                    Assert.That(e.x, Is.EqualTo(TileLattice.CellEdgeLengths(p, SlotOf(p, i, 0)).x), $"{at}: a column shares its width");
+                    Assert.That(e.y, Is.EqualTo(TileLattice.CellEdgeLengths(p, SlotOf(p, 0, j)).y), $"{at}: a row shares its height");
+                    Assert.That(e.x, Is.EqualTo(cell.z - cell.x), at);
+                    if (!(wholeX && wholeY)) clipped++;
+                    foreach (float s in Tess)
+                        foreach (float t in Tess)
+                        {
+                            Float2 c = TileLattice.CellToTerrainPoint(p, slot, s, t).local, cq = TileLattice.CellToTerrainPoint(q, slot, s, t).local;
+                            Assert.That(c.x == cq.x && c.y == cq.y, Is.True, $"{at} ({s}, {t}): the pan kept the cell, {c} vs {cq}");
+                            if (wholeX && wholeY)
+                            {
+                                Float2 tile = At(p, slot, s, t);
+                                Assert.That(c.x == tile.x && c.y == tile.y, Is.True, $"{at} ({s}, {t}): a whole tile is its cell, {c} vs {tile}");
+                            }
+                        }
                 }
+            Assert.That(clipped, Is.EqualTo(4 * M), "the first and last row and column are clipped");
             Assert.That(TileLattice.LayoutWidth(p), Is.EqualTo(Lattice.z - Lattice.x), "the spacing follows the lattice");
+            Assert.That(TileLattice.TileKeptFraction(Params(Lattice, new Float4(0f, 0f, 0f, 0f)), 5), Is.EqualTo(new Float2(1f, 1f)), "on the range: whole");
+            Assert.Throws<InvalidOperationException>(() => TileLattice.CellSpan(Params(Lattice, new Float4(0f, 0f, 0f, 0f)), 0));
         }
 
         [Test]

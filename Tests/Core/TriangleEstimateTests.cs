@@ -13,9 +13,9 @@ namespace GregoryTerrain.Tests
     public class TriangleEstimateTests
     {
         const int Width = 640, Height = 360;
-        static readonly Float2 Screen = new Float2(Width, Height);
+        internal static readonly Float2 Screen = new Float2(Width, Height);
         static PatchGrid _grid;
-        static PatchGrid Grid => _grid ??= HardCaseGrids.Fitted(4, 4, 3, 17);
+        internal static PatchGrid Grid => _grid ??= HardCaseGrids.Fitted(4, 4, 3, 17);
 
         static TerrainInputs Inputs(TessellationSettings tess, NoiseSettings? noise = null) =>
             TerrainInputs.Create(Grid, TerrainParams.Create(Grid, TerrainRange.full, RangeOrigin.zero, tess, noise ?? NoiseSettings.Default,
@@ -36,8 +36,8 @@ namespace GregoryTerrain.Tests
                 (float)f.x, (float)f.y, (float)f.z, (float)-GMath.dot(f, eye));
         }
 
-        static readonly Float4x4 Oblique = Camera(new Double3(0.5, 0.45, -0.35), new Double3(0.5, 0.0, 0.55));
-        static readonly Float4x4 Low = Camera(new Double3(0.5, 0.15, 0.2), new Double3(0.55, 0.0, 0.6), 40);
+        internal static readonly Float4x4 Oblique = Camera(new Double3(0.5, 0.45, -0.35), new Double3(0.5, 0.0, 0.55));
+        internal static readonly Float4x4 Low = Camera(new Double3(0.5, 0.15, 0.2), new Double3(0.55, 0.0, 0.6), 40);
 
         static double Estimate(TessellationSettings tess, Float4x4 camera, TessellationPartitioning p = TessellationPartitioning.FractionalOdd,
                                int maxTiles = 4096) =>

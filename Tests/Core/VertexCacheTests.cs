@@ -49,19 +49,24 @@ namespace GregoryTerrain.Tests
             Assert.That(VertexCache.SlotsPerTile(64), Is.EqualTo(65 * 65 + 4 * 65));
             Assert.That(VertexCacheBudget.VertexCacheBytes(32, 64, false), Is.EqualTo(32L * 32 * 4485 * 1 * 16));
             Assert.That(VertexCacheBudget.VertexCacheBytes(32, 64, true), Is.EqualTo(32L * 32 * 4485 * 2 * 16));
-            Assert.That(VertexCacheBudget.TileFactorsBytes(16), Is.EqualTo(16L * 16 * 54 * 16));
-            // The factor records, the ranges, the factor samples: every index of the three parts
-            // inside the buffer, none shared.
+            Assert.That(VertexCacheBudget.TileFactorsBytes(16), Is.EqualTo(16L * 16 * 62 * 16));
+            // The factor records, the keys, the factor samples, the cell factors and their inputs:
+            // every index of the parts inside the buffer, none shared; the two keys adjacent (one
+            // upload of zeros forgets them).
             var used = new HashSet<long>();
             for (int t = 0; t < 16 * 16; t++)
             {
                 Assert.That(used.Add(VertexCache.FactorIndex(t)) && used.Add(VertexCache.FactorIndex(t) + 1) && used.Add(VertexCache.EvaluatedRangeIndex(t, 16)), Is.True, "tile " + t);
+                Assert.That(used.Add(VertexCache.CellKeyIndex(t, 16)) && used.Add(VertexCache.CellFactorIndex(t, 16)) && used.Add(VertexCache.CellFactorIndex(t, 16) + 1), Is.True, "tile " + t);
+                for (int k = 0; k < VertexCache.FactorInputsFloat4s; k++)
+                    Assert.That(used.Add(VertexCache.FactorInputsIndex(t, 16) + k), Is.True, "tile " + t + " factor input " + k);
                 for (int s = 0; s < VertexCache.FactorSamplesPerTile; s++)
                     Assert.That(used.Add(VertexCache.FactorSampleIndex(t, s, 16)), Is.True, "tile " + t + " sample " + s);
             }
             Assert.That(used.Count, Is.EqualTo(VertexCacheBudget.TileFactorsFloat4s(16)));
             Assert.That(used.Min(), Is.EqualTo(0));
             Assert.That(used.Max(), Is.EqualTo(VertexCacheBudget.TileFactorsFloat4s(16) - 1));
+            Assert.That(VertexCache.CellKeyIndex(0, 16), Is.EqualTo(VertexCache.EvaluatedRangeIndex(0, 16) + 16 * 16));
             Assert.That(() => VertexCache.SlotsPerTile(0), Throws.InstanceOf<ArgumentException>());
             Assert.That(() => VertexCache.SlotsPerTile(65), Throws.InstanceOf<ArgumentException>());
         }

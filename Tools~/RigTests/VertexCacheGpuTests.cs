@@ -51,6 +51,9 @@ namespace GregoryTerrain.Rig.Tests
             /// <summary>The kernel (re)evaluated the tile's slots in the last frame.</summary>
             public bool Evaluated(int tile) => Record(tile, 7) != 0f;
 
+            /// <summary>How the last frame decided the tile's cell factors (VertexCache.CellFactorsSampled, ...).</summary>
+            public float CellFactorsWay(int tile) => Factors[4 * (VertexCache.CellFactorIndex(tile, Tiles) + 1) + 2];
+
             /// <summary>uint4 part of the record at a slot of a tile, as <see cref="VertexCache.Record"/> lays it out (no snow: one part).</summary>
             public (uint x, uint y, uint z, uint w) Part(int tile, int slot, int part)
             {
@@ -281,10 +284,10 @@ namespace GregoryTerrain.Rig.Tests
                 PackageRoot.Combine("Tools~", "RigTests", "VertexCacheLayoutProbe.hlsl"));
             ComputeRunner.Run("spirv-val", spv);
             string o = ComputeRunner.Run(ComputeRunner.Runner(), "--spv", spv, "--entry", "VertexCacheLayoutProbe", "--device", "llvmpipe",
-                "--groups", "1", "--zeros", "9=" + (64 * 48).ToString(CultureInfo.InvariantCulture), "--out", "9=" + output);
+                "--groups", "1", "--zeros", "9=" + (64 * 64).ToString(CultureInfo.InvariantCulture), "--out", "9=" + output);
             Assert.That(o, Does.Contain("device llvmpipe"));
             byte[] bytes = File.ReadAllBytes(output);
-            uint U(int lane, int k) => BitConverter.ToUInt32(bytes, 4 * (12 * lane + k));
+            uint U(int lane, int k) => BitConverter.ToUInt32(bytes, 4 * (16 * lane + k));
             for (int lane = 0; lane < 64; lane++)
             {
                 int limit = lane + 1;
@@ -299,6 +302,10 @@ namespace GregoryTerrain.Rig.Tests
                 Assert.That(U(lane, 6), Is.EqualTo(VertexCache.FactorThreadsPerGroup), "lanes a factors group");
                 Assert.That(U(lane, 7), Is.EqualTo(VertexCache.PassesPerGroup), "passes a vertex group");
                 Assert.That(U(lane, 9), Is.EqualTo(VertexCache.VertexThreadsPerGroup), "lanes a vertex group");
+                Assert.That(U(lane, 10), Is.EqualTo(VertexCache.CellKeyIndex(lane, 7)), at + ": cell key");
+                Assert.That(U(lane, 11), Is.EqualTo(VertexCache.CellFactorIndex(lane, 7)), at + ": cell factors");
+                Assert.That(U(lane, 12), Is.EqualTo(VertexCache.FactorInputsIndex(lane, 7)), at + ": factor inputs");
+                Assert.That(U(lane, 13), Is.EqualTo(VertexCache.FactorInputsFloat4s), "float4 of factor inputs");
             }
         }
 
@@ -335,6 +342,7 @@ namespace GregoryTerrain.Rig.Tests
                 Assert.That(moved.Culled(tile), Is.EqualTo(fresh.Culled(tile)), "tile " + tile);
                 if (fresh.Culled(tile)) { Assert.That(moved.Evaluated(tile), Is.False, "culled tile " + tile); continue; }
                 drawn++;
+                Assert.That(moved.CellFactorsWay(tile), Is.EqualTo(VertexCache.CellFactorsRescaled), "tile " + tile + ": its cell's factors from its kept samples");
                 bool changed = first.Culled(tile) || !first.FactorsOf(tile).Equals(fresh.FactorsOf(tile));
                 Assert.That(moved.Evaluated(tile), Is.EqualTo(changed), "tile " + tile + ": evaluated exactly when its factors changed");
                 if (changed) evaluated++;
@@ -349,7 +357,10 @@ namespace GregoryTerrain.Rig.Tests
             CacheFrame ranged = DrawCached("orbit-range", range, tiles, orbit, width, height, null,
                                            "--frames", "3", "--camera-path", CameraPathOf("orbit-range"), "--update-range-per-frame");
             for (int tile = 0; tile < tiles * tiles; tile++)
+            {
                 Assert.That(ranged.Evaluated(tile), Is.EqualTo(!ranged.Culled(tile)), "range moved: tile " + tile);
+                Assert.That(ranged.CellFactorsWay(tile), Is.EqualTo(VertexCache.CellFactorsSampled), "range moved: tile " + tile + " samples its cell");
+            }
         }
 
         /// <summary>
@@ -389,11 +400,19 @@ namespace GregoryTerrain.Rig.Tests
             float k = rangePan > 0f ? rangePan * (float)Math.Sin(2.0 * 3.14159265358979 * 1 / 100.0) : 1e-4f * 1f;
             float dx = (p.range.z - p.range.x) * k, dy = (p.range.w - p.range.y) * k;
             shifted.range = new Float4(p.range.x + dx, p.range.y + dy, p.range.z + dx, p.range.w + dy);
-            int drawn = 0, evaluated = 0, slots = 0;
+            int drawn = 0, evaluated = 0, slots = 0, held = 0;
             for (int tile = 0; tile < panned.Tiles * panned.Tiles; tile++)
             {
                 Assert.That(panned.FactorsOf(tile), Is.EqualTo(fresh.FactorsOf(tile)), "tile " + tile);
                 Assert.That(panned.Culled(tile), Is.EqualTo(fresh.Culled(tile)), "tile " + tile);
+                if (!TileLattice.TileEmpty(p, tile) && !TileLattice.TileEmpty(shifted, tile))
+                {
+                    // The camera held: a cell the last frame also drew keeps its factors, samples no surface.
+                    bool sameCell = TileLattice.CellSpan(p, tile).Equals(TileLattice.CellSpan(shifted, tile));
+                    Assert.That(panned.CellFactorsWay(tile), Is.EqualTo(sameCell ? VertexCache.CellFactorsHeld : VertexCache.CellFactorsSampled),
+                                "tile " + tile + (sameCell ? ": same cell, factors held" : ": a new cell in its slot"));
+                    if (sameCell) held++;
+                }
                 if (fresh.Culled(tile)) continue;
                 drawn++;
                 bool cut = !TileLattice.TileSpan(shifted, tile).Equals(TileLattice.TileSpan(p, tile));
@@ -409,8 +428,9 @@ namespace GregoryTerrain.Rig.Tests
             int k0 = TileLattice.FirstCell(p.range.x, p.tileLattice.x, p.tileLattice.z, p.tess.x);
             int k1 = TileLattice.FirstCell(shifted.range.x, p.tileLattice.x, p.tileLattice.z, p.tess.x);
             Assert.That(k1 - k0, Is.EqualTo(crossing ? 1 : 0), "frame 1's first cell");
-            TestContext.Out.WriteLine("anchored pan{0}: {1} of {2} drawn tiles evaluated again (the range's edges), {3} record parts equal to a fresh build",
-                                      crossing ? " across a lattice line" : "", evaluated, drawn, slots);
+            TestContext.Out.WriteLine("anchored pan{0}: {1} of {2} drawn tiles evaluated again (the range's edges), {3} record parts equal to a fresh build, {4} cells' factors held",
+                                      crossing ? " across a lattice line" : "", evaluated, drawn, slots, held);
+            Assert.That(held, Is.GreaterThan(drawn / 2), "most cells held their factors");
             // The edge ring; crossing a line (diagonally) also moves the cell leaving, the cell entering
             // in its slot and the cell that turns whole: three columns and three rows.
             int moved = crossing ? (tiles + 1) * (tiles + 1) - (tiles - 2) * (tiles - 2) : 4 * tiles;

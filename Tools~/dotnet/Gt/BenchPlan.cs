@@ -288,7 +288,7 @@ namespace GregoryTerrain.Rig
 
         /// <summary>
         /// The vertex cache's buffers and kernels for the harness (internals.md, "Vertex cache"): _TileFactors at
-        /// binding 7 (864 bytes a tile), _VertexCache at binding 8, CacheTileFactors over M x M
+        /// binding 7 (992 bytes a tile), _VertexCache at binding 8, CacheTileFactors over M x M
         /// groups (one a tile), then CacheTileVertices over M x M x G groups (G = VertexCache.GroupsPerTile), each frame before the draw.
         /// </summary>
         public static string CacheArgs(string variant, TessellationSettings t) => CacheArgs(variant, t, t.tiles);
@@ -306,7 +306,7 @@ namespace GregoryTerrain.Rig
         static string FactorRecordsDump(int tiles, string name) =>
             Inv($"--dump-storage-prefix 7:{(long)VertexCacheBudget.TileFactorFloat4s * GpuLayout.Float4Stride * tiles * tiles}:@OUT@/readback/{name}.tiles.f32");
 
-        /// <summary>_TileFactors: 54 float4 a tile (Core's VertexCacheBudget, the shaders' layout).</summary>
+        /// <summary>_TileFactors: 62 float4 a tile (Core's VertexCacheBudget, the shaders' layout).</summary>
         public static long TileFactorsBytes(int tiles) => VertexCacheBudget.TileFactorsBytes(tiles);
 
         /// <summary>_VertexCache: M^2 S(L) slots of one uint4 (no GT_SNOW in the bench), L = ceil(uniform F or max factor).</summary>
