@@ -80,7 +80,7 @@ namespace GregoryTerrain
         /// <summary>
         /// The surface samples of a tile's adaptive factors (HLSL <c>GT_TILE_FACTOR_SAMPLES</c>): 4 corners,
         /// 7 inner points on each of 6 lines, the 2 midlines' 4 end points, the centre. CacheTileFactors
-        /// runs one group a tile (dispatch (M, M, 1)) and one sample a lane, so they must fit a group.
+        /// runs one group a tile (dispatch (T, T, 1), T the tiles per axis) and one sample a lane, so they must fit a group.
         /// </summary>
         public const int FactorSamplesPerTile = 4 + 6 * 7 + 4 + 1;
 
@@ -95,7 +95,7 @@ namespace GregoryTerrain
         }
 
         /// <summary>
-        /// G, the CacheTileVertices groups that share one tile (dispatch (M, M, G)), so that no group
+        /// G, the CacheTileVertices groups that share one tile (dispatch (T, T, G)), so that no group
         /// makes more than <see cref="PassesPerGroup"/> passes: one group a tile made the pass wait on
         /// its largest tile. HLSL <c>VertexCacheGroupsPerTile</c>.
         /// </summary>
