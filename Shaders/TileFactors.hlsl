@@ -96,6 +96,9 @@ TileFactorSet CulledTileFactors()
     return f;
 }
 
+// A zero edge factor drops the patch (Core's TileFactorSet.IsCulled).
+bool TileFactorsCulled(TileFactorSet f) { return f.edge.x == 0.0; }
+
 // Otherwise, unless the tile is culled (TileCulled), the adaptive factors come in seven pieces, each from its own samples of the surface, so that the
 // vertex cache's kernel can give each its own lane (CacheTileFactors); the hull stage computes the
 // seven in turn (ComputeTileFactors). Pieces 0-3: the edges u = 0, v = 0, u = 1, v = 1 (the
@@ -269,7 +272,7 @@ TileFactorSet TileFactorsOfPieces(float piece[GT_TILE_FACTOR_PIECES])
 // it: crack-free. Whole (kept = 1): the cell's factors bit for bit. Culled stays culled.
 TileFactorSet TileFactorsOfCell(TileFactorSet cell, float2 kept)
 {
-    if (cell.edge.x == 0.0) return cell;
+    if (TileFactorsCulled(cell)) return cell;
     TileFactorSet f;
     f.edge = max(cell.edge * kept.yxyx, 1.0);
     f.inside = max(cell.inside * kept, 1.0);

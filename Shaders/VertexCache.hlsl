@@ -120,7 +120,7 @@ uint VertexCacheSlot(float2 tess, float4 edge, float2 inside, uint limit)
 // stays 0.
 TileFactorSet VertexCacheIntegerFactors(TileFactorSet f)
 {
-    if (f.edge.x == 0.0) return f;
+    if (TileFactorsCulled(f)) return f;
     f.edge = ceil(clamp(f.edge, 1.0, GT_VERTEX_CACHE_MAX_FACTOR));
     f.inside = ceil(clamp(f.inside, 1.0, GT_VERTEX_CACHE_MAX_FACTOR));
     bool allOnes = all(f.edge == 1.0) && all(f.inside == 1.0);

@@ -112,7 +112,7 @@ bool TileSlotsOutdated(uint tile, TileFactorSet f, bool rangeMoved)
 void WriteTileFactors(uint tile, TileFactorSet f, bool rangeMoved)
 {
     f = VertexCacheIntegerFactors(f);
-    bool culled = f.edge.x == 0.0;
+    bool culled = TileFactorsCulled(f);
     bool evaluate = !culled && TileSlotsOutdated(tile, f, rangeMoved);
     uint i = VertexCacheFactorIndex(tile);
     _TileFactorsRW[i] = f.edge;

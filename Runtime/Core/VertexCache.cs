@@ -113,7 +113,7 @@ namespace GregoryTerrain
 
         /// <summary>
         /// Index in <c>_TileFactors</c> of the key tile t's slots were last evaluated at (the
-        /// <c>_Range</c>, or anchored the tile's span): after the M^2 factor records. HLSL
+        /// <c>_Range</c>, or anchored the tile's span): after the T^2 factor records (T tiles per axis). HLSL
         /// <c>VertexCacheEvaluatedRangeIndex</c>.
         /// </summary>
         public static long EvaluatedRangeIndex(int tile, int tiles) => 2L * tiles * tiles + tile;
@@ -121,7 +121,7 @@ namespace GregoryTerrain
         /// <summary>
         /// Index in <c>_TileFactors</c> of the key of the cell whose samples and factors tile t keeps
         /// (the <c>_Range</c>, or anchored the cell's span): right after the slots' keys, so that one
-        /// upload of 2 M^2 zeros forgets both. HLSL <c>VertexCacheCellKeyIndex</c>.
+        /// upload of 2 T^2 zeros forgets both. HLSL <c>VertexCacheCellKeyIndex</c>.
         /// </summary>
         public static long CellKeyIndex(int tile, int tiles) => 3L * tiles * tiles + tile;
 

@@ -14,15 +14,8 @@ namespace GregoryTerrain.Tests
         const int M = 8;
         static readonly Float4 Lattice = new Float4(0.1f, 0.15f, 0.9f, 0.95f);
 
-        static TerrainInputs Inputs(Float4 range, Float4 lattice)
-        {
-            PatchGrid grid = TriangleEstimateTests.Grid;
-            TerrainParams p = TerrainParams.Create(grid, new TerrainRange(range.x, range.y, range.z, range.w), RangeOrigin.zero,
-                new TessellationSettings(M, 64f, 2f, 0f), NoiseSettings.Default, new HeightColorSettings(0.5f, 0.1f, 16f),
-                new Float3(0.2f, 0.3f, 0.1f), new Float3(0.9f, 0.9f, 0.9f));
-            p.tileLattice = lattice;
-            return TerrainInputs.Create(grid, p);
-        }
+        static TerrainInputs Inputs(Float4 range, Float4 lattice) =>
+            TriangleEstimateTests.Inputs(new TessellationSettings(M, 64f, 2f, 0f), null, new TerrainRange(range.x, range.y, range.z, range.w), lattice);
 
         static TileFactorSet Factors(TerrainInputs inputs, int slot) =>
             TileFactors.ComputeTileFactors(inputs, slot, TriangleEstimateTests.Oblique, TriangleEstimateTests.Screen, TerrainKeywords.Noise);

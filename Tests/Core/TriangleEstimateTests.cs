@@ -17,9 +17,10 @@ namespace GregoryTerrain.Tests
         static PatchGrid _grid;
         internal static PatchGrid Grid => _grid ??= HardCaseGrids.Fitted(4, 4, 3, 17);
 
-        static TerrainInputs Inputs(TessellationSettings tess, NoiseSettings? noise = null) =>
-            TerrainInputs.Create(Grid, TerrainParams.Create(Grid, TerrainRange.full, RangeOrigin.zero, tess, noise ?? NoiseSettings.Default,
-                new HeightColorSettings(0.5f, 0.1f, 16f), new Float3(0.2f, 0.3f, 0.1f), new Float3(0.9f, 0.9f, 0.9f)));
+        // The sample settings on Grid; range: the whole terrain unless given; lattice: 0 (tiles on the range) unless given.
+        internal static TerrainInputs Inputs(TessellationSettings tess, NoiseSettings? noise = null, TerrainRange? range = null, Float4 lattice = default) =>
+            TerrainInputs.Create(Grid, TerrainParams.Create(Grid, range ?? TerrainRange.full, RangeOrigin.zero, tess, noise ?? NoiseSettings.Default,
+                new HeightColorSettings(0.5f, 0.1f, 16f), new Float3(0.2f, 0.3f, 0.1f), new Float3(0.9f, 0.9f, 0.9f)).WithTileLattice(lattice));
 
         // Object space is (x, height, y). Clip = (x t / a, y t, depth, depth) seen from eye towards target.
         static Float4x4 Camera(Double3 eye, Double3 target, double fovYDegrees = 50)

@@ -308,12 +308,11 @@ namespace GregoryTerrain.Rig
             o.AppendLine();
             o.AppendLine("| cached terrain | tiles | triangles | static, camera moving ms | cached, camera moving ms (of which compute) | / static | static, camera still ms | cached, range moving ms (of which compute) | / static | tiles evaluated / drawn, last frame |");
             o.AppendLine("| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |");
-            Job Any(string key) => Ran(jobs, key);
             foreach (var (m, sm, sf) in BenchPlan.AdaptiveVsStatic(quick))
             {
                 string id = Inv($"vc_m{m}_s{sm}x{sf}");
-                Job st = Any(Inv($"fs_m{sm}_f{sf}:static-orbit run")), orbit = Any($"{id}:orbit run"), moving = Any($"{id}:terrain run"),
-                    still = Any(Inv($"fs_m{sm}_f{sf}:static run"));
+                Job st = Ran(jobs, Inv($"fs_m{sm}_f{sf}:static-orbit run")), orbit = Ran(jobs, $"{id}:orbit run"), moving = Ran(jobs, $"{id}:terrain run"),
+                    still = Ran(jobs, Inv($"fs_m{sm}_f{sf}:static run"));
                 if (st == null || orbit == null) { o.AppendLine(Inv($"| {id} (adaptive) | {m} | (not run or failed) | | | | | | | |")); continue; }
                 string evaluated = TilesEvaluated(rbDir, id + "-orbit", m);
                 string range = moving == null || still == null ? "- | - | -" : Inv($"{still.GpuMs:G4} | {moving.GpuMs:G4} ({moving.ComputeMs:G3}) | {moving.GpuMs / still.GpuMs:F3}x");
@@ -355,11 +354,10 @@ namespace GregoryTerrain.Rig
             o.AppendLine();
             o.AppendLine("| cached terrain | tiles drawn | triangles | panning ms (of which compute) | still ms | panning / still | fair static ms | panning / static | still / static | tiles evaluated / drawn, last frame |");
             o.AppendLine("| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |");
-            Job Any(string key) => Ran(jobs, key);
             foreach (var (m, sm, sf) in BenchPlan.AdaptiveVsStatic(quick))
             {
                 string id = Inv($"vc_m{m}_s{sm}x{sf}");
-                Job pan = Any($"{id}:pan run"), still = Any($"{id}:pan-still run"), st = Any(Inv($"fs_m{sm}_f{sf}:static run"));
+                Job pan = Ran(jobs, $"{id}:pan run"), still = Ran(jobs, $"{id}:pan-still run"), st = Ran(jobs, Inv($"fs_m{sm}_f{sf}:static run"));
                 int across = m + 1;
                 if (pan == null || still == null || st == null) { o.AppendLine(Inv($"| {id} (adaptive) | {across * across} | (not run or failed) | | | | | | | |")); continue; }
                 string evaluated = TilesEvaluated(rbDir, id + "-pan", across);
@@ -375,12 +373,11 @@ namespace GregoryTerrain.Rig
         /// </summary>
         static void RangeOnlyWithEffects(StringBuilder o, Dictionary<string, Job> jobs, bool quick)
         {
-            Job Any(string key) => Ran(jobs, key);
             foreach (var (m, sm, sf) in BenchPlan.AdaptiveVsStatic(quick))
                 foreach (var (prefix, path) in new[] { ("va", "domain stage"), ("vc", "vertex cache") })
                 {
                     string id = Inv($"{prefix}_m{m}_s{sm}x{sf}");
-                    Job moving = Any($"{id}:terrain run"), still = Any($"{id}:still run");
+                    Job moving = Ran(jobs, $"{id}:terrain run"), still = Ran(jobs, $"{id}:still run");
                     if (moving == null || still == null) continue;
                     o.AppendLine(Inv($"- {id} ({path}, noise + height colour, {moving.Get("clipping_invocations")} triangles): range-only / nothing changes = {moving.GpuMs:G4} / {still.GpuMs:G4} ms = {moving.GpuMs / still.GpuMs:F3}x GPU"));
                 }
