@@ -218,6 +218,25 @@ namespace GregoryTerrain
         }
 
         /// <summary>
+        /// The part of its cell slot <paramref name="slot"/>'s tile keeps, in the cell's own
+        /// parameters: (s0.x, s1.x, s0.y, s1.y), exactly (0, 1, 0, 1) on whole axes (and laid over the
+        /// range), so a whole tile reads its cell's slots as they are (<see cref="ClippedCell"/>).
+        /// Tiles of one column share x, of one row y: tiles sharing an edge agree on its part.
+        /// HLSL <c>TileKeptCellSpan</c>.
+        /// </summary>
+        public static Float4 TileKeptCellSpan(TerrainParams p, int slot)
+        {
+            if (!IsAnchored(p.tileLattice)) return new Float4(0f, 1f, 0f, 1f);
+            Float4 span = AnchoredTileSpan(p, slot, out int cellX, out int cellY, out _, out _);
+            Float4 c = LatticeCell(p, cellX, cellY);
+            return new Float4(CellParameter(span.x, c.x, c.z), CellParameter(span.z, c.x, c.z),
+                              CellParameter(span.y, c.y, c.w), CellParameter(span.w, c.y, c.w));
+        }
+
+        /// <summary>Where x lies in the cell [lo, hi]: exactly 0 and 1 at its lines, else (x - lo) / (hi - lo). HLSL <c>CellParameter</c>.</summary>
+        public static float CellParameter(float x, float lo, float hi) => x == lo ? 0f : x == hi ? 1f : (x - lo) / (hi - lo);
+
+        /// <summary>
         /// The edge lengths of slot <paramref name="slot"/>'s cell along x and y, in terrain units
         /// (the factors' noise term): from the lattice lines, so a shared edge's length is its row's or
         /// column's. Laid over the range: <c>(range width) / M</c>. HLSL <c>CellEdgeLengths</c>.
