@@ -25,7 +25,7 @@
 #include "TerrainShading.hlsl"
 #include "TileFactors.hlsl"
 #if defined(GT_VERTEX_CACHE)
-    #include "VertexCache.hlsl"
+    #include "ClippedCell.hlsl"
     #if defined(GT_PAPER_MODE) || defined(GT_READBACK) || defined(GT_FACTOR_READBACK)
         #error "GT_VERTEX_CACHE draws tiles from the cache: no paper mode, and the cache itself is the readback"
     #endif
@@ -64,6 +64,10 @@ struct TileFactors
 {
     float edge[4] : SV_TessFactor;
     float inside[2] : SV_InsideTessFactor;
+#if defined(GT_VERTEX_CACHE)
+    // The part of its cell the tile keeps (TileKeptCellSpan): the domain stage reads the cell's records.
+    float4 keptCellSpan : TEXCOORD1;
+#endif
 };
 
 TileCorner vert(uint vertexID : SV_VertexID)
@@ -95,9 +99,11 @@ TileFactorSet TileFactorsOf(InputPatch<TileCorner, 4> corners)
     uint patch = corners[0].drawPatch;
     TileFactorSet set;
 #if defined(GT_VERTEX_CACHE)
-    // Decided by CacheTileFactors this frame, already integers (culled: all 0).
+    // The cell's, decided by CacheTileFactors, already integers (culled: all 0); clipped to the part
+    // of the cell the tile keeps (ClippedCell.hlsl).
     set.edge = _TileFactors[VertexCacheFactorIndex(patch)];
     set.inside = _TileFactors[VertexCacheFactorIndex(patch) + 1u].xy;
+    set = ClippedTileFactors(set, TileKeptCellSpan(patch));
 #else
     float3 cornerOS[4];
     [unroll] for (uint c = 0; c < 4; c++)
@@ -110,6 +116,9 @@ TileFactorSet TileFactorsOf(InputPatch<TileCorner, 4> corners)
 TileFactors hull_const(InputPatch<TileCorner, 4> corners)
 {
     TileFactors f = ToTileFactors(TileFactorsOf(corners));
+#if defined(GT_VERTEX_CACHE)
+    f.keptCellSpan = TileKeptCellSpan(corners[0].drawPatch);
+#endif
 #if defined(GT_FACTOR_READBACK)
     uint p = corners[0].drawPatch;
     _Readback[2 * p + 0] = float4(f.edge[0], f.edge[1], f.edge[2], f.edge[3]);
@@ -141,8 +150,17 @@ TerrainVaryings domain_shader(TileFactors factors, const OutputPatch<TileCorner,
     float4 edge = float4(factors.edge[0], factors.edge[1], factors.edge[2], factors.edge[3]);
     float2 inside = float2(factors.inside[0], factors.inside[1]);
     uint limit = VertexCacheFactorLimit();
-    uint slot = corners[0].drawPatch * VertexCacheSlotsPerTile(limit) + VertexCacheSlot(tess, edge, inside, limit);
-    return CachedTerrainVaryings(slot, tessFactor);
+    uint base = corners[0].drawPatch * VertexCacheSlotsPerTile(limit);
+    if (!CellKeptWhole(factors.keptCellSpan))
+    {
+        TileFactorSet tile, cell;
+        tile.edge = edge;
+        tile.inside = inside;
+        cell.edge = _TileFactors[VertexCacheFactorIndex(corners[0].drawPatch)];
+        cell.inside = _TileFactors[VertexCacheFactorIndex(corners[0].drawPatch) + 1u].xy;
+        return CachedCellPointVaryings(base, CellPoint(tess, tile, cell, factors.keptCellSpan, limit), tessFactor);
+    }
+    return CachedTerrainVaryings(base + VertexCacheSlot(tess, edge, inside, limit), tessFactor);
 #else
     return TerrainVertex(corners[0].drawPatch, tess, tessFactor);
 #endif

@@ -160,10 +160,9 @@ struct TerrainVertexAttributes
     uint patch;              // the Gregory patch that was evaluated
 };
 
-// Everything TerrainVertex computes before the camera.
-TerrainVertexAttributes EvaluateTerrainVertex(uint drawPatch, float2 tess)
+// Everything TerrainVertex computes before the camera, from the surface point s.
+TerrainVertexAttributes FinishTerrainVertex(TerrainSurfacePoint s)
 {
-    TerrainSurfacePoint s = EvaluateSurface(drawPatch, tess);
     float3 position = OutputSurfacePosition(s);
     float3 dPdu = s.dPdu;
     float3 dPdv = s.dPdv;
@@ -230,10 +229,25 @@ TerrainVertexAttributes EvaluateTerrainVertex(uint drawPatch, float2 tess)
     a.colorNoise = HeightColorNoise(s.q, HeightColorSettings());
 #endif
     a.patch = s.patch;
+    return a;
+}
+
+// Everything TerrainVertex computes before the camera.
+TerrainVertexAttributes EvaluateTerrainVertex(uint drawPatch, float2 tess)
+{
+    TerrainSurfacePoint s = EvaluateSurface(drawPatch, tess);
+    TerrainVertexAttributes a = FinishTerrainVertex(s);
 #if defined(GT_READBACK)
     WriteReadback(drawPatch, tess, a.positionOS, a.normalOS, TerrainPointApprox(s.q), s.uv);
 #endif
     return a;
+}
+
+// The same at tess of the whole cell slot `slot` holds (CellToTerrainPoint): what the vertex cache
+// stores (ClippedCell.hlsl). The tile's own vertex wherever the tile is the whole cell, bit for bit.
+TerrainVertexAttributes EvaluateCellTerrainVertex(uint slot, float2 tess)
+{
+    return FinishTerrainVertex(EvaluateCellSurface(slot, tess));
 }
 
 // s = saturate(l + z / gamma) of eq. 14 for the absolute height z and colour noise l, 0 without

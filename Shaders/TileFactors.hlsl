@@ -7,7 +7,8 @@
 //
 // Every sample below is of the tile's cell (TileLattice.hlsl): the tile itself unless anchored and
 // clipped to the range. A clipped tile draws its cell's factors scaled to the part it keeps
-// (TileFactorsOfCell), so a pan, which only moves the clipped tiles, changes no sample.
+// (TileFactorsOfCell; the vertex cache's draw: ClippedCell.hlsl), so a pan, which only moves the
+// clipped tiles, changes no sample.
 #ifndef GT_TILE_FACTORS_INCLUDED
 #define GT_TILE_FACTORS_INCLUDED
 

@@ -6,8 +6,9 @@
 // the current range (no wider) meets M + 1 cells per axis, and tile i is cell k0 + i clipped to the
 // range. A pan moves only the clipped cells, so whole cells keep their points bit for bit (no
 // swimming; the vertex cache keeps their vertices). Cell k sits in slot k mod (M + 1) per axis.
-// A clipped tile's factors come from its whole cell's (TileFactors.hlsl, TileFactorsOfCell), so a
-// pan with the camera held samples nothing: the cache holds each cell's factors.
+// A clipped tile's factors come from its whole cell's (TileFactors.hlsl, TileFactorsOfCell; with
+// the vertex cache ClippedCell.hlsl, which also draws it from the whole cell's cached vertices), so
+// a pan with the camera held samples nothing, and one that keeps the first cells dispatches nothing.
 #ifndef GT_TILE_LATTICE_INCLUDED
 #define GT_TILE_LATTICE_INCLUDED
 
@@ -165,6 +166,23 @@ float2 TileKeptFraction(uint slot)
     float4 span = AnchoredTileSpan(slot, cell, whole);
     float4 c = LatticeCell(cell);
     return float2(whole.x ? 1.0 : (span.z - span.x) / (c.z - c.x), whole.y ? 1.0 : (span.w - span.y) / (c.w - c.y));
+}
+
+// Where x lies in the cell [lo, hi]: exactly 0 and 1 at its lines, else (x - lo) / (hi - lo).
+float CellParameter(float x, float lo, float hi) { return x == lo ? 0.0 : (x == hi ? 1.0 : (x - lo) / (hi - lo)); }
+
+// The part of its cell the tile keeps, in the cell's own parameters: (s0.x, s1.x, s0.y, s1.y),
+// exactly (0, 1, 0, 1) on whole axes (and laid over the range). Tiles of one column share x, of one
+// row y: tiles sharing an edge agree on its part (ClippedCell.hlsl draws it from the whole cell).
+float4 TileKeptCellSpan(uint slot)
+{
+    if (!TilesAnchored()) return float4(0.0, 1.0, 0.0, 1.0);
+    int2 cell;
+    bool2 whole;
+    float4 span = AnchoredTileSpan(slot, cell, whole);
+    float4 c = LatticeCell(cell);
+    return float4(CellParameter(span.x, c.x, c.z), CellParameter(span.z, c.x, c.z),
+                  CellParameter(span.y, c.y, c.w), CellParameter(span.w, c.y, c.w));
 }
 
 // Edge lengths of the slot's cell along x and y in terrain units (the factors' noise term): from

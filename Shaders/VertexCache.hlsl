@@ -41,8 +41,9 @@ uint VertexCacheSlotsPerTile(uint limit) { return (limit + 1u) * (limit + 1u) + 
 #define GT_VERTEX_CACHE_VERTEX_GROUP 128u
 #define GT_VERTEX_CACHE_PASSES 4u
 
-// The most points a tile at factors <= L has: the (L - 1)^2 interior and 4 edges of L + 1.
-uint VertexCacheMaxTilePoints(uint limit) { return (limit - 1u) * (limit - 1u) + 4u * (limit + 1u); }
+// The most points a tile at factors <= L has: anchored, its cell's whole (L + 1)^2 grid (the
+// border too: ClippedCell.hlsl blends a clipped tile's edge from it) and 4 edges of L + 1.
+uint VertexCacheMaxTilePoints(uint limit) { return (limit + 1u) * (limit + 1u) + 4u * (limit + 1u); }
 
 // Groups that share one tile's points (dispatch z). Why not one group a tile: the pass then lasts
 // as long as its largest tile, 4,229 points at L = 64 = 67 passes of one group while most units
@@ -57,12 +58,12 @@ uint VertexCacheGroupsPerTile(uint limit)
 //   factor records, 2 float4 a tile: (edge 0-3), (inside 0-1, culled 1/0, evaluate 1/0): what the
 //     draw reads; "evaluate" tells CacheTileVertices which tiles to (re)evaluate this pass;
 //   keys, 1 float4 a tile each, adjacent so that one upload of zeros forgets both: the key of the
-//     tile's slots (TileRecordKey: _Range, or anchored the tile's span), then of its cell
-//     (CellRecordKey: _Range, or anchored the cell's span);
+//     tile's slots (TileRecordKey), then of its cell (CellRecordKey): both _Range, or anchored the
+//     cell's span (the slots hold the whole cell; ClippedCell.hlsl);
 //   factor samples, GT_TILE_FACTOR_SAMPLES float4 a tile: the cell's object positions (w = 1 once
 //     written), kept while the cell's key holds (a camera move evaluates no surface);
 //   cell factors, 2 float4 a tile: the float factors the cell's samples gave (before
-//     TileFactorsOfCell and rounding), then GT_FACTOR_INPUTS float4: what they were computed with
+//     rounding), then GT_FACTOR_INPUTS float4: what they were computed with
 //     (FactorInputs). While the cell's key and those hold, a pass takes the factors as they are (an
 //     anchored pan, the camera still, evaluates no sample and no factor).
 // A tile whose factors and slot key are the ones its slots already hold keeps its slots (a camera

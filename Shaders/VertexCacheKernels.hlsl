@@ -28,9 +28,10 @@ RWStructuredBuffer<uint4> _VertexCacheRW GT_REGISTER(u3);
 groupshared float4 gtTileFactorSamples[GT_TILE_FACTOR_SAMPLES];
 groupshared float gtTileFactorPieces[GT_TILE_FACTOR_PIECES];
 
-// What a tile's slots depend on besides its factors: the range, or anchored, only the tile's own
-// span (a pan that leaves the tile whole changes nothing in it).
-float4 TileRecordKey(uint tile) { return TilesAnchored() ? TileSpan(tile) : _Range; }
+// What a tile's slots depend on besides its factors: the range, or anchored, only its cell (the
+// slots hold the whole cell, and the draw clips it: ClippedCell.hlsl; a pan that keeps the cell
+// changes nothing in them).
+float4 TileRecordKey(uint tile) { return TilesAnchored() ? CellSpan(tile) : _Range; }
 
 // What a tile's factor samples depend on: the range, or anchored, only its cell (a pan that keeps
 // the tile's cell, clipped or not, changes no sample).
@@ -138,10 +139,11 @@ float4 CachedTileFactorSample(uint tile, uint s, bool cellMoved)
 
 // Dispatch (T, T, 1), T = TilesAcrossInt(): a group a tile. Three ways, the same for every lane:
 //   the cell's factors held (its key and FactorInputs unchanged: an anchored pan, the camera still):
-//     lane 0 scales them to the tile (TileFactorsOfCell); no sample, no barrier;
+//     lane 0 writes them (rounded) as the tile's; no sample, no barrier;
 //   else the cell's 51 surface samples (CachedTileFactorSample) one a lane, read back while the
 //     cell holds; then its seven pieces (TileFactorPiece's arithmetic on the shared samples) one a
-//     lane; then lane 0 assembles, keeps the cell's factors and scales them to the tile.
+//     lane; then lane 0 assembles, keeps the cell's factors and writes them rounded. Anchored, the
+//     slots hold the whole cell and the hull clips it (ClippedCell.hlsl).
 // Why so wide: the factors are a chain of surface evaluations, and the chain's length is the pass's.
 // One lane a tile: ~50 evaluations (0.6M triangles, 32 x 32 tiles, H200: 0.1 ms of pre-pass against
 // 0.04 for uniform factors); one lane a piece: ~11 (0.061 ms); one sample a lane: 1 (0.045 ms, and
@@ -157,17 +159,18 @@ void CacheTileFactors(uint3 group : SV_GroupID, uint lane : SV_GroupIndex)
     bool cellMoved = TileCellMoved(tile);
     TileFactorSet f;
     bool uniformFactors = UniformTileFactors(f);
-    bool empty = TileEmpty(tile);   // an anchored tile without area: culled
-    if (empty || uniformFactors)
+    if (uniformFactors)
     {
         // No samples: the cell's key stays that of the samples and factors kept, which the next
         // adaptive pass then trusts only for the same cell.
-        if (lane == 0u) WriteTileFactors(tile, empty ? CulledTileFactors() : f, rangeMoved);
+        if (lane == 0u) WriteTileFactors(tile, f, rangeMoved);
         return;
     }
+    // Anchored, the cell's factors and slots, even where the range keeps none of it yet: a pan
+    // that keeps the cells dispatches nothing, and the hull clips (ClippedTileFactors).
     if (!cellMoved && FactorInputsHeld(tile))
     {
-        if (lane == 0u) WriteTileFactors(tile, TileFactorsOfCell(HeldCellFactors(tile), TileKeptFraction(tile)), rangeMoved);
+        if (lane == 0u) WriteTileFactors(tile, HeldCellFactors(tile), rangeMoved);
         return;
     }
     if (lane < GT_TILE_FACTOR_SAMPLES) gtTileFactorSamples[lane] = CachedTileFactorSample(tile, lane, cellMoved);
@@ -204,7 +207,7 @@ void CacheTileFactors(uint3 group : SV_GroupID, uint lane : SV_GroupIndex)
         cell = TileFactorsOfPieces(piece);
     }
     KeepCellFactors(tile, cell, cellMoved);
-    WriteTileFactors(tile, TileFactorsOfCell(cell, TileKeptFraction(tile)), rangeMoved);
+    WriteTileFactors(tile, cell, rangeMoved);
 }
 
 void WriteVertexCacheRecord(uint slot, TerrainVertexAttributes a)
@@ -213,15 +216,20 @@ void WriteVertexCacheRecord(uint slot, TerrainVertexAttributes a)
         _VertexCacheRW[GT_VERTEX_CACHE_RECORD_UINT4S * slot + part] = VertexCacheRecordPart(a, part);
 }
 
+// The inside points a tile's slots hold per axis: the (Iu - 1) x (Iv - 1) interior of the grid
+// (its border is the edges'), or anchored the whole (Iu + 1) x (Iv + 1) grid (ClippedCell.hlsl
+// blends a clipped tile's edge from the border too).
+uint2 VertexCacheGridPoints(float2 inside) { return TilesAnchored() ? (uint2)inside + 1u : (uint2)inside - 1u; }
+
 // Point k of the tile's list "inside points, then edge 0, 1, 2, 3": its tess coordinate and slot.
-// Inside points are the (Iu - 1) x (Iv - 1) interior of the grid (its border is the edges').
 void VertexCachePoint(uint k, float4 edge, float2 inside, uint limit, out float2 tess, out uint slot)
 {
-    uint2 n = (uint2)inside - 1u;
+    uint2 n = VertexCacheGridPoints(inside);
     uint interior = n.x * n.y;
     if (k < interior)
     {
-        uint2 ij = uint2(1u + k % n.x, 1u + k / n.x);
+        uint first = TilesAnchored() ? 0u : 1u;
+        uint2 ij = uint2(first + k % n.x, first + k / n.x);
         tess = (float2)ij / inside;
         slot = VertexCacheInteriorSlot(ij, (uint)inside.x);
         return;
@@ -251,7 +259,7 @@ void CacheTileVertices(uint3 group : SV_GroupID, uint lane : SV_GroupIndex)
     if (inside.w == 0.0) return;   // culled (the draw emits nothing), or its slots are up to date
     uint limit = VertexCacheFactorLimit();
     uint base = tile * VertexCacheSlotsPerTile(limit);
-    uint2 n = (uint2)inside.xy - 1u;
+    uint2 n = VertexCacheGridPoints(inside.xy);
     uint count = n.x * n.y + (uint)(edge.x + edge.y + edge.z + edge.w) + 4u;
     uint stride = VertexCacheGroupsPerTile(limit) * GT_VERTEX_CACHE_VERTEX_GROUP;
     for (uint k = group.z * GT_VERTEX_CACHE_VERTEX_GROUP + lane; k < count; k += stride)
@@ -259,7 +267,7 @@ void CacheTileVertices(uint3 group : SV_GroupID, uint lane : SV_GroupIndex)
         float2 tess;
         uint slot;
         VertexCachePoint(k, edge, inside.xy, limit, tess, slot);
-        WriteVertexCacheRecord(base + slot, EvaluateTerrainVertex(tile, tess));
+        WriteVertexCacheRecord(base + slot, EvaluateCellTerrainVertex(tile, tess));
     }
 }
 

@@ -96,8 +96,9 @@ namespace GregoryTerrain
                 // Stratified in both directions: the tile holding the centre of cell (i mod k, i / k) of a k x k split.
                 int ti = (int)((2L * (i % k) + 1) * tiles / (2L * k)), tj = (int)((2L * (i / k) + 1) * tiles / (2L * k));
                 int tile = tj * tiles + ti;
-                TileFactorSet f = TileFactors.ComputeTileFactors(inputs, tile, objectToClip, screenSize, keywords);
-                if (partitioning == TessellationPartitioning.Integer) f = VertexCache.IntegerFactors(f);
+                TileFactorSet f = partitioning == TessellationPartitioning.Integer
+                    ? TileFactors.ComputeCachedTileFactors(inputs, tile, objectToClip, screenSize, keywords)
+                    : TileFactors.ComputeTileFactors(inputs, tile, objectToClip, screenSize, keywords);
                 if (f.IsCulled) continue;
                 e.tilesSampledDrawn++;
                 sum += PatchTriangles(f, partitioning);

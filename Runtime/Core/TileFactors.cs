@@ -187,12 +187,40 @@ namespace GregoryTerrain
                 throw new ArgumentException("keywords: tile factors are the tile mode's (paper mode has no hull_const factors)", nameof(keywords));
             if (TileLattice.TileEmpty(inputs.Params, tile)) return CulledTileFactors();
             if (UniformTileFactors(inputs, out TileFactorSet f)) return f;
+            return TileFactorsOfCell(ComputeCellFactors(inputs, tile, objectToClip, screenSize, keywords), TileLattice.TileKeptFraction(inputs.Params, tile));
+        }
+
+        /// <summary>
+        /// The float factors of slot <paramref name="tile"/>'s whole cell (the tile itself unless
+        /// anchored and clipped): culled by the cell's corners, else the seven pieces of its samples.
+        /// What the vertex cache's kernel decides for a tile with adaptive factors (before rounding).
+        /// </summary>
+        public static TileFactorSet ComputeCellFactors(TerrainInputs inputs, int tile, Float4x4 objectToClip, Float2 screenSize,
+                                                       TerrainKeywords keywords)
+        {
+            if (inputs == null) throw new ArgumentNullException(nameof(inputs));
             var corners = new Float3[4];
             for (int c = 0; c < 4; c++) corners[c] = CellCornerObjectPosition(inputs, tile, c);
             if (TileCulled(inputs, objectToClip, corners, keywords)) return CulledTileFactors();
             var piece = new float[Pieces];
             for (int i = 0; i < Pieces; i++) piece[i] = TileFactorPiece(inputs, tile, i, corners, objectToClip, screenSize, keywords);
-            return TileFactorsOfCell(TileFactorsOfPieces(piece), TileLattice.TileKeptFraction(inputs.Params, tile));
+            return TileFactorsOfPieces(piece);
+        }
+
+        /// <summary>
+        /// What the vertex cache's draw gives slot <paramref name="tile"/>: its cell's factors rounded
+        /// as the kernel rounds them (<see cref="VertexCache.IntegerFactors"/>; the uniform factor when
+        /// one is set), clipped to the part of the cell the tile keeps as the hull clips them
+        /// (<see cref="ClippedCell.ClippedTileFactors"/>).
+        /// </summary>
+        public static TileFactorSet ComputeCachedTileFactors(TerrainInputs inputs, int tile, Float4x4 objectToClip, Float2 screenSize,
+                                                             TerrainKeywords keywords)
+        {
+            if (inputs == null) throw new ArgumentNullException(nameof(inputs));
+            if ((keywords & TerrainKeywords.PaperMode) != 0)
+                throw new ArgumentException("keywords: tile factors are the tile mode's (paper mode has no hull_const factors)", nameof(keywords));
+            TileFactorSet cell = UniformTileFactors(inputs, out TileFactorSet f) ? f : ComputeCellFactors(inputs, tile, objectToClip, screenSize, keywords);
+            return ClippedCell.ClippedTileFactors(VertexCache.IntegerFactors(cell), TileLattice.TileKeptCellSpan(inputs.Params, tile));
         }
     }
 }

@@ -87,11 +87,14 @@ namespace GregoryTerrain
         /// <summary>The most passes a CacheTileVertices group makes over its tile's points (HLSL <c>GT_VERTEX_CACHE_PASSES</c>).</summary>
         public const int PassesPerGroup = 4;
 
-        /// <summary>The most points a tile at factors up to L has: the (L - 1)^2 interior and 4 edges of L + 1.</summary>
+        /// <summary>
+        /// The most points a tile at factors up to L has: anchored, its cell's whole (L + 1)^2 grid
+        /// (the border too: <see cref="ClippedCell"/> blends a clipped tile's edge from it) and 4 edges of L + 1.
+        /// </summary>
         public static int MaxTilePoints(int limit)
         {
             SlotsPerTile(limit);   // validates L
-            return (limit - 1) * (limit - 1) + 4 * (limit + 1);
+            return (limit + 1) * (limit + 1) + 4 * (limit + 1);
         }
 
         /// <summary>
@@ -136,7 +139,7 @@ namespace GregoryTerrain
 
         /// <summary>
         /// Index in <c>_TileFactors</c> of tile t's cell factors (the float factors its cell's samples
-        /// gave, before <see cref="TileFactors.TileFactorsOfCell"/> and rounding): 2 float4, after the
+        /// gave, before rounding): 2 float4, after the
         /// samples. HLSL <c>VertexCacheCellFactorIndex</c>.
         /// </summary>
         public static long CellFactorIndex(int tile, int tiles) => (4L + FactorSamplesPerTile) * tiles * tiles + 2L * tile;
@@ -209,15 +212,17 @@ namespace GregoryTerrain
         /// <summary>
         /// The points the kernel CacheTileVertices writes for one tile, in its order ("inside points,
         /// then edge 0, 1, 2, 3"; HLSL <c>VertexCachePoint</c>): tess coordinate and slot. Inside points
-        /// are the (Iu - 1) x (Iv - 1) interior of the grid; the grid's border is the edges'.
+        /// are the (Iu - 1) x (Iv - 1) interior of the grid (its border is the edges'), or with
+        /// <paramref name="anchored"/> tiles the whole (Iu + 1) x (Iv + 1) grid (HLSL <c>VertexCacheGridPoints</c>).
         /// </summary>
-        public static IEnumerable<(Float2 tess, int slot)> TilePoints(TileFactorSet f, int limit)
+        public static IEnumerable<(Float2 tess, int slot)> TilePoints(TileFactorSet f, int limit, bool anchored = false)
         {
             if (f.IsCulled) yield break;
-            int nu = (int)f.inside.x - 1, nv = (int)f.inside.y - 1;
+            int first = anchored ? 0 : 1;
+            int nu = (int)f.inside.x + (anchored ? 1 : -1), nv = (int)f.inside.y + (anchored ? 1 : -1);
             for (int k = 0; k < nu * nv; k++)
             {
-                int i = 1 + k % nu, j = 1 + k / nu;
+                int i = first + k % nu, j = first + k / nu;
                 yield return (new Float2(i / f.inside.x, j / f.inside.y), InteriorSlot(i, j, (int)f.inside.x));
             }
             float[] edges = { f.edge.x, f.edge.y, f.edge.z, f.edge.w };

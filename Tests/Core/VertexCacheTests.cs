@@ -83,7 +83,8 @@ namespace GregoryTerrain.Tests
             for (int limit = 1; limit <= 64; limit++)
             {
                 var full = VertexCache.IntegerFactors(Set(limit, limit, limit, limit, limit, limit));
-                int points = VertexCache.TilePoints(full, limit).Count();
+                int points = VertexCache.TilePoints(full, limit, anchored: true).Count();
+                Assert.That(VertexCache.TilePoints(full, limit).Count(), Is.EqualTo(points - 4 * limit), $"limit {limit}: the grid's border");
                 Assert.That(VertexCache.MaxTilePoints(limit), Is.EqualTo(points), $"limit {limit}");
                 int groups = VertexCache.GroupsPerTile(limit);
                 Assert.That(groups * perGroup, Is.GreaterThanOrEqualTo(points), $"limit {limit}");
