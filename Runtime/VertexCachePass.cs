@@ -211,9 +211,12 @@ namespace GregoryTerrain
             if (on) shader.EnableKeyword(keyword); else shader.DisableKeyword(keyword);
         }
 
-        /// <summary>The rest of what the kernels read: the range, the pixel target, the uniform factor, the LOD camera.</summary>
+        /// <summary>
+        /// The rest of what the kernels read: the range (anchored, only its first cells: a pan inside
+        /// them dispatches nothing, ClippedCell), the pixel target, the uniform factor, the LOD camera.
+        /// </summary>
         bool SameFactorInputs(in Inputs i) =>
-            SameParams(i.parameters, _last.parameters) &&
+            SameParams(WithKernelRange(i.parameters), WithKernelRange(_last.parameters)) &&
             SameMatrix(i.objectToClip, _last.objectToClip) && SameVector(i.screenSize, _last.screenSize);
 
         /// <summary>
@@ -239,6 +242,12 @@ namespace GregoryTerrain
         {
             p.range = default;
             p.tess = new Float4(p.tess.x, p.tess.y, 0f, 0f);
+            return p;
+        }
+
+        static TerrainParams WithKernelRange(TerrainParams p)
+        {
+            p.range = TileLattice.KernelRange(p);
             return p;
         }
 

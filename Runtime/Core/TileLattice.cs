@@ -233,6 +233,19 @@ namespace GregoryTerrain
                               CellParameter(span.y, c.y, c.w), CellParameter(span.w, c.y, c.w));
         }
 
+        /// <summary>
+        /// What the vertex cache's kernels read of <c>_Range</c>: the range itself, or anchored only
+        /// the first cell on each axis, (k0.x, k0.y, 0, 0): their keys, samples and slots are the
+        /// cells' (<see cref="ClippedCell"/>), so a pan that keeps the first cells changes nothing they
+        /// compute, and a renderer need not dispatch them.
+        /// </summary>
+        public static Float4 KernelRange(TerrainParams p)
+        {
+            if (!IsAnchored(p.tileLattice)) return p.range;
+            return new Float4(FirstCell(p.range.x, p.tileLattice.x, p.tileLattice.z, p.tess.x),
+                              FirstCell(p.range.y, p.tileLattice.y, p.tileLattice.w, p.tess.x), 0f, 0f);
+        }
+
         /// <summary>Where x lies in the cell [lo, hi]: exactly 0 and 1 at its lines, else (x - lo) / (hi - lo). HLSL <c>CellParameter</c>.</summary>
         public static float CellParameter(float x, float lo, float hi) => x == lo ? 0f : x == hi ? 1f : (x - lo) / (hi - lo);
 

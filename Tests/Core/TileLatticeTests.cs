@@ -37,6 +37,18 @@ namespace GregoryTerrain.Tests
         }
 
         [Test]
+        public void TheKernelsSeeOnlyThePansThatChangeTheFirstCells()
+        {
+            TerrainParams p = Params(Panned(0.0123f, -0.0456f), Lattice);
+            Float4 k = TileLattice.KernelRange(p);
+            Assert.That(TileLattice.KernelRange(Params(Panned(0.0125f, -0.0451f), Lattice)), Is.EqualTo(k), "a pan inside the cells");
+            Assert.That(TileLattice.KernelRange(Params(Panned(0.0123f + 0.05f, -0.0456f), Lattice)), Is.Not.EqualTo(k), "a pan across a lattice line");
+            Assert.That(TileLattice.KernelRange(Params(Panned(0.0123f, -0.0456f - 0.05f), Lattice)), Is.Not.EqualTo(k), "across a row");
+            var range = new Float4(0.1f, 0.2f, 0.7f, 0.9f);
+            Assert.That(TileLattice.KernelRange(Params(range, new Float4(0f, 0f, 0f, 0f))), Is.EqualTo(range), "laid over the range: the range");
+        }
+
+        [Test]
         public void ZeroLatticeLeavesTheTilesOnTheRangeBitForBit()
         {
             var range = new Float4(0.1f, 0.2f, 0.7f, 0.9f);

@@ -246,14 +246,38 @@ namespace GregoryTerrain.Rig
                 meta.Append(Inv($"{cid}\tcached-adaptive-vs\t{m}\t0\t{ctarget:G6}\t64\t4\tfar\t{m * m}\n"));
 
                 // Anchored tiles (TileLattice): the lattice is the plan's range, as the renderer anchors
-                // it; the range pans over it every frame, so only the tiles its edges cut are evaluated.
+                // it. The range pans inside the first cells every frame (the harness's shifts), which
+                // changes nothing the kernels read (TileLattice.KernelRange): the renderer dispatches
+                // nothing and the draw clips the cached cells (ClippedCell), so `pan` builds the cache
+                // once. `pan-dispatched` runs the kernels every frame anyway (they find nothing to do):
+                // the floor of a frame that brings cells in.
                 string aid = cid + "-anchored";
                 cscene.Params = cscene.Params.WithTileLattice(cscene.Params.range);
                 cscene.WriteBuffers(Path.Combine(dir, "jobs", aid));
                 int across = m + 1;
                 string anchored = $"{Stages(CachedNoiseVariant, false)} --patches {across * across} {CacheArgs(CachedNoiseVariant, cscene.Tessellation, across)} --buffers @JOB@/{aid} {view} {t}";
-                plan.Append($"{cid}:pan\trun\t-\t{anchored} --update-range-per-frame {FactorRecordsDump(across, cid + "-pan")}\n");
+                RequirePanInsideFirstCells(cscene.Params);
+                plan.Append($"{cid}:pan\trun\t-\t{anchored} --compute-once --update-range-per-frame\n");
+                plan.Append($"{cid}:pan-dispatched\trun\t-\t{anchored} --update-range-per-frame {FactorRecordsDump(across, cid + "-pan")}\n");
                 plan.Append($"{cid}:pan-still\trun\t-\t{anchored} --compute-once\n");
+            }
+        }
+
+        /// <summary>
+        /// The harness's <c>--update-range-per-frame</c> moves the range by (f mod 8) 1e-4 of its
+        /// size (frame f): the `pan` job builds the cache once only because no such frame changes the
+        /// first cells, as a renderer would then dispatch nothing. Throws if one would.
+        /// </summary>
+        static void RequirePanInsideFirstCells(TerrainParams p)
+        {
+            Float4 first = TileLattice.KernelRange(p);
+            for (int f = 0; f < 8; f++)
+            {
+                TerrainParams q = p;
+                float k = 1e-4f * f, dx = (p.range.z - p.range.x) * k, dy = (p.range.w - p.range.y) * k;
+                q.range = new Float4(p.range.x + dx, p.range.y + dy, p.range.z + dx, p.range.w + dy);
+                if (!TileLattice.KernelRange(q).Equals(first))
+                    throw new InvalidOperationException(Inv($"bench plan: the pan's frame {f} leaves the first cells {first}: the kernels would run"));
             }
         }
 
