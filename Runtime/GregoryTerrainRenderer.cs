@@ -102,7 +102,7 @@ namespace GregoryTerrain
         [Tooltip("0 = adaptive (screen-space) factors. A value > 0 uses that factor for every edge: for debugging and measurements.")]
         [SerializeField, Range(0, 64)] int uniformFactor;
 
-        [Tooltip("Anchor the tiles to the terrain: while the range pans, the vertices stay where they are on the terrain (no swimming), and the Compute cache evaluates again only the tiles the range's edges cut, not all of them. Draws (M + 1) x (M + 1) tiles, the outer ones clipped to the range; a zoom anchors them again. Adaptive factors only: with a uniform factor or the fallback grid the tiles lie on the range. Off: the tiles always lie on the range (the paper's layout).")]
+        [Tooltip("Anchor the tiles to the terrain: while the range pans, the vertices stay where they are on the terrain (no swimming), and the Compute cache, which holds whole cells that the draw clips, evaluates only the cells a pan brings in, not every tile. Draws (M + 1) x (M + 1) tiles, the outer ones clipped to the range; a zoom anchors them again. Adaptive factors only: with a uniform factor or the fallback grid the tiles lie on the range. Off: the tiles always lie on the range (the paper's layout).")]
         [SerializeField] bool anchorTiles = true;
 
         [Tooltip("Fallback only (GPUs without a tessellator): each tile is a fixed (F+1) x (F+1) vertex grid.")]
