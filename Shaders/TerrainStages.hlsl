@@ -99,11 +99,10 @@ TileFactorSet TileFactorsOf(InputPatch<TileCorner, 4> corners)
     uint patch = corners[0].drawPatch;
     TileFactorSet set;
 #if defined(GT_VERTEX_CACHE)
-    // The cell's, decided by CacheTileFactors, already integers (culled: all 0); clipped to the part
-    // of the cell the tile keeps (ClippedCell.hlsl).
+    // The cell's, decided by CacheTileFactors, already integers (culled: all 0); hull_const clips
+    // them to the part of the cell the tile keeps.
     set.edge = _TileFactors[VertexCacheFactorIndex(patch)];
     set.inside = _TileFactors[VertexCacheFactorIndex(patch) + 1u].xy;
-    set = ClippedTileFactors(set, TileKeptCellSpan(patch));
 #else
     float3 cornerOS[4];
     [unroll] for (uint c = 0; c < 4; c++)
@@ -115,9 +114,14 @@ TileFactorSet TileFactorsOf(InputPatch<TileCorner, 4> corners)
 
 TileFactors hull_const(InputPatch<TileCorner, 4> corners)
 {
-    TileFactors f = ToTileFactors(TileFactorsOf(corners));
 #if defined(GT_VERTEX_CACHE)
-    f.keptCellSpan = TileKeptCellSpan(corners[0].drawPatch);
+    // Anchored, the cache holds the tile's whole cell: draw the part of it the tile keeps
+    // (ClippedCell.hlsl), and tell the domain stage which part that is.
+    float4 kept = TileKeptCellSpan(corners[0].drawPatch);
+    TileFactors f = ToTileFactors(ClippedTileFactors(TileFactorsOf(corners), kept));
+    f.keptCellSpan = kept;
+#else
+    TileFactors f = ToTileFactors(TileFactorsOf(corners));
 #endif
 #if defined(GT_FACTOR_READBACK)
     uint p = corners[0].drawPatch;

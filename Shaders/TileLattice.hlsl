@@ -155,19 +155,6 @@ TerrainPoint CellToTerrainPoint(uint slot, float2 tess)
     return p;
 }
 
-// How much of its cell the tile keeps along x and y: exactly 1 on a whole axis (and laid over the
-// range), else its span's width over the cell's (never above 1: the span lies in the cell and
-// float subtraction is monotonic). Tiles sharing an edge share the row or column that decides it.
-float2 TileKeptFraction(uint slot)
-{
-    if (!TilesAnchored()) return float2(1.0, 1.0);
-    int2 cell;
-    bool2 whole;
-    float4 span = AnchoredTileSpan(slot, cell, whole);
-    float4 c = LatticeCell(cell);
-    return float2(whole.x ? 1.0 : (span.z - span.x) / (c.z - c.x), whole.y ? 1.0 : (span.w - span.y) / (c.w - c.y));
-}
-
 // Where x lies in the cell [lo, hi]: exactly 0 and 1 at its lines, else (x - lo) / (hi - lo).
 float CellParameter(float x, float lo, float hi) { return x == lo ? 0.0 : (x == hi ? 1.0 : (x - lo) / (hi - lo)); }
 
@@ -183,6 +170,15 @@ float4 TileKeptCellSpan(uint slot)
     float4 c = LatticeCell(cell);
     return float4(CellParameter(span.x, c.x, c.z), CellParameter(span.z, c.x, c.z),
                   CellParameter(span.y, c.y, c.w), CellParameter(span.w, c.y, c.w));
+}
+
+// How much of its cell the tile keeps along x and y: the width of its TileKeptCellSpan, exactly 1
+// on a whole axis (and laid over the range), never above 1. Tiles sharing an edge share the row or
+// column that decides it. The domain-stage path scales the cell's factors by it (TileFactorsOfCell).
+float2 TileKeptFraction(uint slot)
+{
+    float4 kept = TileKeptCellSpan(slot);
+    return kept.yw - kept.xz;
 }
 
 // Edge lengths of the slot's cell along x and y in terrain units (the factors' noise term): from

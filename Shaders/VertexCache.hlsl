@@ -58,8 +58,8 @@ uint VertexCacheGroupsPerTile(uint limit)
 //   factor records, 2 float4 a tile: (edge 0-3), (inside 0-1, culled 1/0, evaluate 1/0): what the
 //     draw reads; "evaluate" tells CacheTileVertices which tiles to (re)evaluate this pass;
 //   keys, 1 float4 a tile each, adjacent so that one upload of zeros forgets both: the key of the
-//     tile's slots (TileRecordKey), then of its cell (CellRecordKey): both _Range, or anchored the
-//     cell's span (the slots hold the whole cell; ClippedCell.hlsl);
+//     tile's slots, then of its cell's samples and factors (both CellRecordKey: _Range, or anchored
+//     the cell's span (the slots hold the whole cell; ClippedCell.hlsl);
 //   factor samples, GT_TILE_FACTOR_SAMPLES float4 a tile: the cell's object positions (w = 1 once
 //     written), kept while the cell's key holds (a camera move evaluates no surface);
 //   cell factors, 2 float4 a tile: the float factors the cell's samples gave (before

@@ -28,13 +28,11 @@ RWStructuredBuffer<uint4> _VertexCacheRW GT_REGISTER(u3);
 groupshared float4 gtTileFactorSamples[GT_TILE_FACTOR_SAMPLES];
 groupshared float gtTileFactorPieces[GT_TILE_FACTOR_PIECES];
 
-// What a tile's slots depend on besides its factors: the range, or anchored, only its cell (the
-// slots hold the whole cell, and the draw clips it: ClippedCell.hlsl; a pan that keeps the cell
-// changes nothing in them).
-float4 TileRecordKey(uint tile) { return TilesAnchored() ? CellSpan(tile) : _Range; }
-
-// What a tile's factor samples depend on: the range, or anchored, only its cell (a pan that keeps
-// the tile's cell, clipped or not, changes no sample).
+// What a tile's slots and its factor samples depend on (besides factors and camera): the range, or
+// anchored, only its cell (the slots hold the whole cell and the draw clips it, ClippedCell.hlsl; a
+// pan that keeps the cell changes nothing in them). Two records keep it: the slots' (written when
+// the slots are, WriteTileFactors) and the samples' (written with the cell's factors, which a
+// uniform-factor pass leaves alone).
 float4 CellRecordKey(uint tile) { return TilesAnchored() ? CellSpan(tile) : _Range; }
 
 // Whether a key moved since the tile's last pass: a zero record was never written (the renderer
@@ -47,7 +45,7 @@ bool KeyMoved(uint index, float4 key)
     return all(kept == 0.0) || any(kept != key);
 }
 
-bool TileRangeMoved(uint tile) { return KeyMoved(VertexCacheEvaluatedRangeIndex(tile, TilesAcrossInt()), TileRecordKey(tile)); }
+bool TileRangeMoved(uint tile) { return KeyMoved(VertexCacheEvaluatedRangeIndex(tile, TilesAcrossInt()), CellRecordKey(tile)); }
 bool TileCellMoved(uint tile) { return KeyMoved(VertexCacheCellKeyIndex(tile, TilesAcrossInt()), CellRecordKey(tile)); }
 
 // The inputs of a cell's factors that the keys do not cover: the camera (its object-to-clip matrix,
@@ -118,7 +116,7 @@ void WriteTileFactors(uint tile, TileFactorSet f, bool rangeMoved)
     uint i = VertexCacheFactorIndex(tile);
     _TileFactorsRW[i] = f.edge;
     _TileFactorsRW[i + 1u] = float4(f.inside, culled ? 1.0 : 0.0, evaluate ? 1.0 : 0.0);
-    if (rangeMoved) _TileFactorsRW[VertexCacheEvaluatedRangeIndex(tile, TilesAcrossInt())] = TileRecordKey(tile);
+    if (rangeMoved) _TileFactorsRW[VertexCacheEvaluatedRangeIndex(tile, TilesAcrossInt())] = CellRecordKey(tile);
 }
 
 // Sample s of the tile's cell: its position read back while the cell holds and the sample was

@@ -145,14 +145,14 @@ namespace GregoryTerrain
 
         /// <summary>HLSL <c>TerrainVertex(drawPatch, tess, ...)</c> without the camera.</summary>
         public static TerrainVertexOutput Evaluate(TerrainInputs inputs, int drawPatch, Float2 tess, TerrainKeywords keywords = TerrainKeywords.None) =>
-            Finish(inputs, EvaluateSurface(inputs, drawPatch, tess, keywords), keywords);
+            FinishTerrainVertex(inputs, EvaluateSurface(inputs, drawPatch, tess, keywords), keywords);
 
         /// <summary><see cref="Evaluate"/> in tile mode from a given global point (see <see cref="EvaluateSurfaceAt"/>).</summary>
         public static TerrainVertexOutput EvaluateAt(TerrainInputs inputs, TerrainPoint q, TerrainKeywords keywords = TerrainKeywords.None)
         {
             if ((keywords & TerrainKeywords.PaperMode) != 0)
                 throw new ArgumentException("keywords: EvaluateAt is the tile path; paper mode needs the draw patch (use Evaluate)", nameof(keywords));
-            return Finish(inputs, EvaluateSurfaceAt(inputs, q), keywords);
+            return FinishTerrainVertex(inputs, EvaluateSurfaceAt(inputs, q), keywords);
         }
 
         /// <summary>
@@ -202,7 +202,8 @@ namespace GregoryTerrain
             return s;
         }
 
-        static TerrainVertexOutput Finish(TerrainInputs inputs, TerrainSurfacePoint s, TerrainKeywords keywords)
+        // HLSL FinishTerrainVertex: everything TerrainVertex computes from the surface point on, before the camera.
+        static TerrainVertexOutput FinishTerrainVertex(TerrainInputs inputs, TerrainSurfacePoint s, TerrainKeywords keywords)
         {
             Float3 position = OutputSurfacePosition(inputs, s, keywords), dPdu = s.dPdu, dPdv = s.dPdv;
             float noiseHeight = 0f;   // the absolute p(q)

@@ -204,20 +204,6 @@ namespace GregoryTerrain
         }
 
         /// <summary>
-        /// How much of its cell slot <paramref name="slot"/>'s tile keeps along x and y: exactly 1 on
-        /// a whole axis (and laid over the range), else the span's width over the cell's (never above
-        /// 1). The tile's factors are its cell's scaled by it (<see cref="TileFactors.TileFactorsOfCell"/>).
-        /// HLSL <c>TileKeptFraction</c>.
-        /// </summary>
-        public static Float2 TileKeptFraction(TerrainParams p, int slot)
-        {
-            if (!IsAnchored(p.tileLattice)) return new Float2(1f, 1f);
-            Float4 span = AnchoredTileSpan(p, slot, out int cellX, out int cellY, out bool wholeX, out bool wholeY);
-            Float4 c = LatticeCell(p, cellX, cellY);
-            return new Float2(wholeX ? 1f : (span.z - span.x) / (c.z - c.x), wholeY ? 1f : (span.w - span.y) / (c.w - c.y));
-        }
-
-        /// <summary>
         /// The part of its cell slot <paramref name="slot"/>'s tile keeps, in the cell's own
         /// parameters: (s0.x, s1.x, s0.y, s1.y), exactly (0, 1, 0, 1) on whole axes (and laid over the
         /// range), so a whole tile reads its cell's slots as they are (<see cref="ClippedCell"/>).
@@ -231,6 +217,18 @@ namespace GregoryTerrain
             Float4 c = LatticeCell(p, cellX, cellY);
             return new Float4(CellParameter(span.x, c.x, c.z), CellParameter(span.z, c.x, c.z),
                               CellParameter(span.y, c.y, c.w), CellParameter(span.w, c.y, c.w));
+        }
+
+        /// <summary>
+        /// How much of its cell slot <paramref name="slot"/>'s tile keeps along x and y: the width of
+        /// its <see cref="TileKeptCellSpan"/>, exactly 1 on a whole axis (and laid over the range),
+        /// never above 1. The domain-stage path scales the cell's factors by it
+        /// (<see cref="TileFactors.TileFactorsOfCell"/>). HLSL <c>TileKeptFraction</c>.
+        /// </summary>
+        public static Float2 TileKeptFraction(TerrainParams p, int slot)
+        {
+            Float4 kept = TileKeptCellSpan(p, slot);
+            return new Float2(kept.y - kept.x, kept.w - kept.z);
         }
 
         /// <summary>

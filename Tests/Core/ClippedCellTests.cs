@@ -137,39 +137,8 @@ namespace GregoryTerrain.Tests
 
         static float Edge(TileFactorSet f, int e) => e == 0 ? f.edge.x : e == 1 ? f.edge.y : e == 2 ? f.edge.z : f.edge.w;
 
-        static CellPointBlend EdgeVertex(Tile t, int e, int k) =>
-            ClippedCell.CellPoint(VertexCache.EdgeTess(e, k, Edge(t.drawn, e)), t.drawn, t.cell, t.kept, Limit);
-
-        [Test]
-        public void NeighboursReadTheSameRecordsForEveryVertexOfTheirSharedEdge()
-        {
-            int clipped = 0;
-            foreach (var (dx, dy) in Pans)
-            {
-                TerrainParams p = Params(dx, dy);
-                for (int j = 0; j <= M; j++)
-                    for (int i = 0; i <= M; i++)
-                    {
-                        Tile a = TileAt(p, i, j);
-                        if (a.drawn.IsCulled) continue;
-                        if (!ClippedCell.IsWhole(a.kept)) clipped++;
-                        foreach (var (ni, nj, ea, eb) in new[] { (i + 1, j, 2, 0), (i, j + 1, 3, 1) })
-                        {
-                            if (ni > M || nj > M) continue;
-                            Tile b = TileAt(p, ni, nj);
-                            if (b.drawn.IsCulled) continue;
-                            string at = $"pan ({dx}, {dy}), tiles ({i}, {j}) and ({ni}, {nj})";
-                            Assert.That(Edge(b.drawn, eb), Is.EqualTo(Edge(a.drawn, ea)), at + ": one factor");
-                            for (int k = 0; k <= (int)Edge(a.drawn, ea); k++)
-                                Assert.That(Resolve(p, b, EdgeVertex(b, eb, k)), Is.EqualTo(Resolve(p, a, EdgeVertex(a, ea, k))), $"{at}, vertex {k}");
-                        }
-                    }
-            }
-            Assert.That(clipped, Is.GreaterThan(4 * M), "the pans clip tiles");
-        }
-
-        [Test]
-        public void AClippedTilesVerticesLieInItsPartInOrder()
+        // Every drawn (not culled) tile (i, j) of every pan.
+        static IEnumerable<(TerrainParams p, int i, int j, Tile t, string at)> DrawnTiles()
         {
             foreach (var (dx, dy) in Pans)
             {
@@ -178,36 +147,67 @@ namespace GregoryTerrain.Tests
                     for (int i = 0; i <= M; i++)
                     {
                         Tile t = TileAt(p, i, j);
-                        if (t.drawn.IsCulled) continue;
-                        Float4 span = TileLattice.TileSpan(p, t.slot);
-                        string at = $"pan ({dx}, {dy}), tile ({i}, {j})";
-                        for (int e = 0; e < 4; e++)
-                        {
-                            int n = (int)Edge(t.drawn, e);
-                            Float2 prev = default;
-                            for (int k = 0; k <= n; k++)
-                            {
-                                Float2 q = Place(p, t, EdgeVertex(t, e, k));
-                                Assert.That(q.x, Is.InRange(span.x - 1e-6f, span.z + 1e-6f), $"{at}, edge {e} vertex {k}: x");
-                                Assert.That(q.y, Is.InRange(span.y - 1e-6f, span.w + 1e-6f), $"{at}, edge {e} vertex {k}: y");
-                                float along = e == 0 || e == 2 ? q.y : q.x;
-                                if (k > 0) Assert.That(along, Is.GreaterThan(e == 0 || e == 2 ? prev.y : prev.x), $"{at}, edge {e} vertex {k}: in order");
-                                prev = q;
-                            }
-                        }
-                        // The corners are the span's own (the range's edge, or the cell's lines).
-                        Float2 c00 = Place(p, t, EdgeVertex(t, 1, 0)), c11 = Place(p, t, EdgeVertex(t, 3, (int)t.drawn.edge.w));
-                        Assert.That(c00.x, Is.EqualTo(span.x).Within(1e-6f), at + ": corner (0, 0)");
-                        Assert.That(c00.y, Is.EqualTo(span.y).Within(1e-6f), at + ": corner (0, 0)");
-                        Assert.That(c11.x, Is.EqualTo(span.z).Within(1e-6f), at + ": corner (1, 1)");
-                        Assert.That(c11.y, Is.EqualTo(span.w).Within(1e-6f), at + ": corner (1, 1)");
-                        for (int gj = 1; gj < (int)t.drawn.inside.y; gj++)
-                            for (int gi = 1; gi < (int)t.drawn.inside.x; gi++)
-                            {
-                                var tess = new Float2(gi / t.drawn.inside.x, gj / t.drawn.inside.y);
-                                Float2 q = Place(p, t, ClippedCell.CellPoint(tess, t.drawn, t.cell, t.kept, Limit));
-                                Assert.That(q.x > span.x && q.x < span.z && q.y > span.y && q.y < span.w, Is.True, $"{at}, inside ({gi}, {gj}): {q} in {span}");
-                            }
+                        if (!t.drawn.IsCulled) yield return (p, i, j, t, $"pan ({dx}, {dy}), tile ({i}, {j})");
+                    }
+            }
+        }
+
+        static CellPointBlend EdgeVertex(Tile t, int e, int k) =>
+            ClippedCell.CellPoint(VertexCache.EdgeTess(e, k, Edge(t.drawn, e)), t.drawn, t.cell, t.kept, Limit);
+
+        [Test]
+        public void NeighboursReadTheSameRecordsForEveryVertexOfTheirSharedEdge()
+        {
+            int clipped = 0;
+            foreach (var (p, i, j, a, atA) in DrawnTiles())
+            {
+                if (!ClippedCell.IsWhole(a.kept)) clipped++;
+                foreach (var (ni, nj, ea, eb) in new[] { (i + 1, j, 2, 0), (i, j + 1, 3, 1) })
+                {
+                    if (ni > M || nj > M) continue;
+                    Tile b = TileAt(p, ni, nj);
+                    if (b.drawn.IsCulled) continue;
+                    string at = $"{atA} and ({ni}, {nj})";
+                    Assert.That(Edge(b.drawn, eb), Is.EqualTo(Edge(a.drawn, ea)), at + ": one factor");
+                    for (int k = 0; k <= (int)Edge(a.drawn, ea); k++)
+                        Assert.That(Resolve(p, b, EdgeVertex(b, eb, k)), Is.EqualTo(Resolve(p, a, EdgeVertex(a, ea, k))), $"{at}, vertex {k}");
+                }
+            }
+            Assert.That(clipped, Is.GreaterThan(4 * M), "the pans clip tiles");
+        }
+
+        [Test]
+        public void AClippedTilesVerticesLieInItsPartInOrder()
+        {
+            foreach (var (p, _, _, t, at) in DrawnTiles())
+            {
+                Float4 span = TileLattice.TileSpan(p, t.slot);
+                for (int e = 0; e < 4; e++)
+                {
+                    int n = (int)Edge(t.drawn, e);
+                    Float2 prev = default;
+                    for (int k = 0; k <= n; k++)
+                    {
+                        Float2 q = Place(p, t, EdgeVertex(t, e, k));
+                        Assert.That(q.x, Is.InRange(span.x - 1e-6f, span.z + 1e-6f), $"{at}, edge {e} vertex {k}: x");
+                        Assert.That(q.y, Is.InRange(span.y - 1e-6f, span.w + 1e-6f), $"{at}, edge {e} vertex {k}: y");
+                        float along = e == 0 || e == 2 ? q.y : q.x;
+                        if (k > 0) Assert.That(along, Is.GreaterThan(e == 0 || e == 2 ? prev.y : prev.x), $"{at}, edge {e} vertex {k}: in order");
+                        prev = q;
+                    }
+                }
+                // The corners are the span's own (the range's edge, or the cell's lines).
+                Float2 c00 = Place(p, t, EdgeVertex(t, 1, 0)), c11 = Place(p, t, EdgeVertex(t, 3, (int)t.drawn.edge.w));
+                Assert.That(c00.x, Is.EqualTo(span.x).Within(1e-6f), at + ": corner (0, 0)");
+                Assert.That(c00.y, Is.EqualTo(span.y).Within(1e-6f), at + ": corner (0, 0)");
+                Assert.That(c11.x, Is.EqualTo(span.z).Within(1e-6f), at + ": corner (1, 1)");
+                Assert.That(c11.y, Is.EqualTo(span.w).Within(1e-6f), at + ": corner (1, 1)");
+                for (int gj = 1; gj < (int)t.drawn.inside.y; gj++)
+                    for (int gi = 1; gi < (int)t.drawn.inside.x; gi++)
+                    {
+                        var tess = new Float2(gi / t.drawn.inside.x, gj / t.drawn.inside.y);
+                        Float2 q = Place(p, t, ClippedCell.CellPoint(tess, t.drawn, t.cell, t.kept, Limit));
+                        Assert.That(q.x > span.x && q.x < span.z && q.y > span.y && q.y < span.w, Is.True, $"{at}, inside ({gi}, {gj}): {q} in {span}");
                     }
             }
         }
