@@ -202,6 +202,8 @@ const char* usageText() {
   --no-compute-timestamp         with --timestamps, time only the whole frame (no timestamp between
                                  the --compute passes and the draw, so no "time compute_ms" lines)
   --resend-bytes B               re-upload B bytes through a staging copy every frame
+  --placement-pad BYTES          allocate BYTES of device memory before the job's own buffers, so that
+                                 they land elsewhere (where buffers land moves a frame: performance.md)
   --in-flight N                  N (1-3) frames queued at once, each with its own TerrainParams and
                                  --storage buffers (--dump-storage: the last frame's); frame_ms is then
                                  the period between frame ends (default 1: each frame waits for the last)
@@ -274,6 +276,7 @@ Options parseOptions(int argc, char** argv) {
         else if (a == "--in-flight") o.inFlight = u32(3);
         else if (a == "--async-compute") o.asyncCompute = true;
         else if (a == "--resend-bytes") o.resendBytes = parseUnsigned(a, value(), 1ull << 34);
+        else if (a == "--placement-pad") o.placementPad = parseUnsigned(a, value(), 1ull << 34);
         else if (a == "--max-vertices-per-draw") o.maxVerticesPerDraw = parseUnsigned(a, value(), 1ull << 40);
         else if (a == "--max-factor") o.maxFactor = u32(4096);
         else fail("unknown argument '" + a + "' (see --help)");

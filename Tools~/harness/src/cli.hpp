@@ -73,6 +73,7 @@ struct Options {
     bool computeOnce = false;
     bool computeTimestamp = true;  // --no-compute-timestamp: frame timestamps only
     uint64_t resendBytes = 0;
+    uint64_t placementPad = 0;   // --placement-pad BYTES: a buffer allocated before the job's own
     uint32_t inFlight = 1;       // --in-flight N: frames submitted back to back (inflight.hpp)
     bool asyncCompute = false;   // --async-compute: the pre-pass on a compute-only queue
 

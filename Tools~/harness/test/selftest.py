@@ -306,6 +306,16 @@ def main():
         check("stat clipping_primitives = 2 F^2 patches", stats.get("clipping_primitives") == 2 * 64 * 16, str(stats))
         check("stat fragment_shader_invocations >= pixels", stats.get("fragment_shader_invocations", 0) >= 128 * 128, str(stats))
 
+    # The same draw behind a placement pad: the same picture and readback (only the memory moved).
+    rb_pad = WORK + "/rb_4x4_f8_pad.f32"
+    p, l = run(tess_args(d, 4, rb_pad, 12 * n, extra=["--max-factor", "8", "--placement-pad", "1048580"]))
+    check("placement pad runs and says so", p.returncode == 0 and value(l, "inputs", "placement_pad") == ["1048580"],
+          p.stderr.strip() or str(l.get("inputs")))
+    if p.returncode == 0:
+        with open(rb, "rb") as a, open(rb_pad, "rb") as b:
+            check("placement pad changes no output", a.read() == b.read()
+                  and int(value(l, "image", "nonsky_pixels")[0]) == 128 * 128, "readback or image differs")
+
     # 2. 6x6 tiles at factor 63 = 147,456 vertices: must split on lavapipe (16 patches per draw).
     d = make_inputs(WORK + "/in_6x6_f63", 6, 63, (0.25, 0.25, 0.75, 0.75))
     rb = WORK + "/rb_6x6_f63.f32"
