@@ -140,10 +140,17 @@ namespace GregoryTerrain.Rig.Tests
         /// RigCamera block (internals.md, binding 1): a top-down orthographic camera over the unit
         /// square (object (x, z) -> clip). The readback does not depend on it.
         /// </summary>
-        public static float[] TopDownCamera()
+        public static float[] TopDownCamera() => TopDownCameraOver(0, 0, 1, 1, 64, 64);
+
+        /// <summary>
+        /// RigCamera block: orthographic, straight down, the object rectangle [x0, x1] x [z0, z1]
+        /// filling the view; clip z = 0.5 + 0.01 height (heights within +-50 stay inside the depth range).
+        /// </summary>
+        public static float[] TopDownCameraOver(double x0, double z0, double x1, double z1, int width, int height)
         {
-            float[,] m = { { 2, 0, 0, -1 }, { 0, 0, 2, -1 }, { 0, 0.01f, 0, 0.5f }, { 0, 0, 0, 1 } };
-            return CameraBlock(m, new[] { 0.5f, 2f, 0.5f }, 64, 64);
+            float sx = (float)(2 / (x1 - x0)), sz = (float)(2 / (z1 - z0));
+            float[,] m = { { sx, 0, 0, (float)(-1 - sx * x0) }, { 0, 0, sz, (float)(-1 - sz * z0) }, { 0, 0.01f, 0, 0.5f }, { 0, 0, 0, 1 } };
+            return CameraBlock(m, new[] { (float)(0.5 * (x0 + x1)), 2f, (float)(0.5 * (z0 + z1)) }, width, height);
         }
 
         /// <summary>

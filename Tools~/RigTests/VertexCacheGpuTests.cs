@@ -435,6 +435,59 @@ namespace GregoryTerrain.Rig.Tests
             else Assert.That(evaluated, Is.EqualTo(0), "a pan inside the cells evaluates nothing");
         }
 
+        /// <summary>
+        /// Clipped tiles leave no gap on the GPU: the lattice anchored off the range on both axes, so
+        /// the range's edges cut the first and last cells (the domain stage blends their records,
+        /// ClippedCell.hlsl). Seen straight from above over a rectangle just inside the range's
+        /// footprint, every pixel is terrain; over a rectangle wider than the terrain, sky shows.
+        /// What it catches: a tile whose drawn part leaves its neighbour's edge in x or z (a domain
+        /// stage that shrank clipped tiles by 10% showed 3,687 sky pixels). A crack in height only
+        /// has no width from above: the Core test NeighboursReadTheSameRecordsForEveryVertexOfTheirSharedEdge
+        /// covers the records and fractions both sides read.
+        /// </summary>
+        [Test]
+        public void ClippedTilesLeaveNoGapSeenFromAbove()
+        {
+            const string range = "0.1,0.1,0.9,0.9";
+            const int tiles = 8, size = 384;
+            // Cells 0.1 wide, lines at 0.055 + 0.1 k (u) and 0.035 + 0.1 k (v): the range keeps 55% and
+            // 45% of the first and last cells along u, 35% and 65% along v.
+            string[] tess = { "--target-pixels", "2", "--max-factor", "32", "--anchor-at", "0.155,0.135,0.955,0.935" };
+            // The grid's object (x, z) (terrain (x, y); object space is (x, height, y)) spans its control
+            // points' box; the range's part of it, less a margin of 2% of the box (the surface's x, y
+            // follow its parameters to far less).
+            double x0 = double.MaxValue, z0 = double.MaxValue, x1 = double.MinValue, z1 = double.MinValue;
+            foreach (GregoryPatch patch in _grid.Patches)
+                foreach (Double3 q in patch.Points)
+                {
+                    x0 = Math.Min(x0, q.x); x1 = Math.Max(x1, q.x);
+                    z0 = Math.Min(z0, q.y); z1 = Math.Max(z1, q.y);
+                }
+            double w = x1 - x0, d = z1 - z0;
+            float[] inside = ReadbackRun.TopDownCameraOver(x0 + 0.12 * w, z0 + 0.12 * d, x0 + 0.88 * w, z0 + 0.88 * d, size, size);
+            float[] wider = ReadbackRun.TopDownCameraOver(x0 - 0.05 * w, z0 - 0.05 * d, x1 + 0.05 * w, z1 + 0.05 * d, size, size);
+            CacheFrame f = DrawCached("clipped-above", range, tiles, tess, size, size, inside);
+            CacheFrame g = DrawCached("clipped-above-wider", range, tiles, tess, size, size, wider);
+
+            TerrainParams p = ReadParams(Path.Combine(_work, "clipped-above", "params.f32"));
+            int clipped = 0;
+            var factors = new HashSet<float>();
+            for (int tile = 0; tile < f.Tiles * f.Tiles; tile++)
+            {
+                if (f.Culled(tile)) continue;
+                if (!ClippedCell.IsWhole(TileLattice.TileKeptCellSpan(p, tile))) clipped++;
+                factors.Add(f.FactorsOf(tile).inside.x);
+            }
+            long covered = f.Run.Long("image", "nonsky_pixels"), coveredWider = g.Run.Long("image", "nonsky_pixels");
+            TestContext.Out.WriteLine("clipped tiles from above: {0} of {1} tiles clipped, inside factors {2}; terrain pixels {3} of {4} over the range, {5} over a wider view",
+                                      clipped, f.Tiles * f.Tiles, string.Join(" ", factors.OrderBy(x => x)), covered, size * size, coveredWider);
+            Assert.That(f.Tiles, Is.EqualTo(tiles + 1), "(M + 1)^2 tiles");
+            Assert.That(clipped, Is.EqualTo(4 * tiles), "the ring of cells the range's edges cut");
+            Assert.That(factors.Count, Is.GreaterThan(1), "neighbours at different factors");
+            Assert.That(covered, Is.EqualTo((long)size * size), "sky shows through the terrain: a gap");
+            Assert.That(coveredWider, Is.LessThan((long)size * size * 3 / 4), "the wider view sees past the terrain");
+        }
+
         // gt-cli pack --orbit's file (Tools~/dotnet/Gt/PackCommand.cs, CameraPathFile).
         const string PackCommandCameraPath = "camera_path.f32";
 
