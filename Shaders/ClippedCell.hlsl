@@ -32,9 +32,8 @@ TileFactorSet ClippedTileFactors(TileFactorSet cell, float4 kept)
                     kept.z > 0.0 ? inside.x : KeptSegments(cell.edge.y, kept.x, kept.y),
                     kept.y < 1.0 ? inside.y : KeptSegments(cell.edge.z, kept.z, kept.w),
                     kept.w < 1.0 ? inside.x : KeptSegments(cell.edge.w, kept.x, kept.y));
-    bool allOnes = all(f.edge == 1.0) && all(inside == 1.0);
-    f.inside = allOnes ? inside : max(inside, 2.0);
-    return f;
+    f.inside = inside;
+    return VertexCacheDrawnFactors(f);
 }
 
 // Where point k of the d a tile draws over [s0, s1] of a line of n segments sits, in that line's

@@ -114,19 +114,24 @@ uint VertexCacheSlot(float2 tess, float4 edge, float2 inside, uint limit)
     return VertexCacheInteriorSlot((uint2)round(tess * inside), (uint)inside.x);
 }
 
+// Integer factors as the tessellator draws them: an inside factor of 1 is 2 unless all six are 1
+// (Vulkan spec, quad tessellation; D3D11 likewise), and the slot grid must be the one it draws.
+TileFactorSet VertexCacheDrawnFactors(TileFactorSet f)
+{
+    bool allOnes = all(f.edge == 1.0) && all(f.inside == 1.0);
+    if (!allOnes) f.inside = max(f.inside, 2.0);
+    return f;
+}
+
 // The factors the cache is built for: each rounded up to an integer (the segments of "integer"
-// partitioning; rounding up keeps the error bound of the fractional factor). An inside factor of 1
-// is raised to 2 unless all six are 1: the tessellator treats it as 2 then anyway (Vulkan spec,
-// quad tessellation; D3D11 likewise), and the slot grid must be the one it draws. Culled (all 0)
-// stays 0.
+// partitioning; rounding up keeps the error bound of the fractional factor), as drawn
+// (VertexCacheDrawnFactors). Culled (all 0) stays 0.
 TileFactorSet VertexCacheIntegerFactors(TileFactorSet f)
 {
     if (TileFactorsCulled(f)) return f;
     f.edge = ceil(clamp(f.edge, 1.0, GT_VERTEX_CACHE_MAX_FACTOR));
     f.inside = ceil(clamp(f.inside, 1.0, GT_VERTEX_CACHE_MAX_FACTOR));
-    bool allOnes = all(f.edge == 1.0) && all(f.inside == 1.0);
-    if (!allOnes) f.inside = max(f.inside, 2.0);
-    return f;
+    return VertexCacheDrawnFactors(f);
 }
 
 // The fragment's one interpolant (TerrainVaryings.normalAndHeightWeight: the Lambert-encoded world

@@ -60,9 +60,7 @@ namespace GregoryTerrain
                 kept.z > 0f ? inside.x : KeptSegments(cell.edge.y, kept.x, kept.y),
                 kept.y < 1f ? inside.y : KeptSegments(cell.edge.z, kept.z, kept.w),
                 kept.w < 1f ? inside.x : KeptSegments(cell.edge.w, kept.x, kept.y));
-            bool allOnes = edge.x == 1f && edge.y == 1f && edge.z == 1f && edge.w == 1f && inside.x == 1f && inside.y == 1f;
-            if (!allOnes) inside = new Float2(MathF.Max(inside.x, 2f), MathF.Max(inside.y, 2f));
-            return new TileFactorSet(edge, inside);
+            return VertexCache.DrawnFactors(new TileFactorSet(edge, inside));
         }
 
         /// <summary>
@@ -109,7 +107,8 @@ namespace GregoryTerrain
             return p;
         }
 
-        static float Component(Float4 v, int i) => i == 0 ? v.x : i == 1 ? v.y : i == 2 ? v.z : v.w;
+        /// <summary>Edge e's factor of a factor set's edges. HLSL <c>CellFactorOfEdge</c>.</summary>
+        static float CellFactorOfEdge(Float4 edge, int e) => e == 0 ? edge.x : e == 1 ? edge.y : e == 2 ? edge.z : edge.w;
 
         /// <summary>
         /// HLSL <c>CellPoint</c>: the records the vertex at <paramref name="tess"/> of a tile drawn at
@@ -130,29 +129,27 @@ namespace GregoryTerrain
             if (onU && onV)
             {
                 if (!clipU && !clipV) return CellPointBlend.Slot(VertexCache.Slot(tess, cell, limit));
-                if (!clipV) { int e = v0 ? 1 : 3; return CellEdgeBlend(e, su * Component(cell.edge, e), limit); }
-                if (!clipU) { int e = u0 ? 0 : 2; return CellEdgeBlend(e, sv * Component(cell.edge, e), limit); }
+                if (!clipV) { int e = v0 ? 1 : 3; return CellEdgeBlend(e, su * CellFactorOfEdge(cell.edge, e), limit); }
+                if (!clipU) { int e = u0 ? 0 : 2; return CellEdgeBlend(e, sv * CellFactorOfEdge(cell.edge, e), limit); }
                 return CellGridBlend(su * cell.inside.x, sv * cell.inside.y, cell.inside.x);
             }
             if (onU)
             {
                 int e = u0 ? 0 : 2;
-                float d = Component(tile.edge, e), k = Round(tess.y * d);
+                float d = CellFactorOfEdge(tile.edge, e), k = VertexCache.RoundToPoint(tess.y * d);
                 return clipU ? CellGridBlend(su * cell.inside.x, KeptLinePosition(cell.inside.y, kept.z, kept.w, d, k), cell.inside.x)
-                             : CellEdgeBlend(e, KeptLinePosition(Component(cell.edge, e), kept.z, kept.w, d, k), limit);
+                             : CellEdgeBlend(e, KeptLinePosition(CellFactorOfEdge(cell.edge, e), kept.z, kept.w, d, k), limit);
             }
             if (onV)
             {
                 int e = v0 ? 1 : 3;
-                float d = Component(tile.edge, e), k = Round(tess.x * d);
+                float d = CellFactorOfEdge(tile.edge, e), k = VertexCache.RoundToPoint(tess.x * d);
                 return clipV ? CellGridBlend(KeptLinePosition(cell.inside.x, kept.x, kept.y, d, k), sv * cell.inside.y, cell.inside.x)
-                             : CellEdgeBlend(e, KeptLinePosition(Component(cell.edge, e), kept.x, kept.y, d, k), limit);
+                             : CellEdgeBlend(e, KeptLinePosition(CellFactorOfEdge(cell.edge, e), kept.x, kept.y, d, k), limit);
             }
-            float i = Round(tess.x * tile.inside.x), j = Round(tess.y * tile.inside.y);
+            float i = VertexCache.RoundToPoint(tess.x * tile.inside.x), j = VertexCache.RoundToPoint(tess.y * tile.inside.y);
             return CellGridBlend(KeptLinePosition(cell.inside.x, kept.x, kept.y, tile.inside.x, i),
                                  KeptLinePosition(cell.inside.y, kept.z, kept.w, tile.inside.y, j), cell.inside.x);
         }
-
-        static float Round(float x) => MathF.Round(x, MidpointRounding.AwayFromZero);
     }
 }

@@ -184,30 +184,40 @@ namespace GregoryTerrain
         /// <summary>HLSL <c>VertexCacheSlot</c>: the slot (within its tile) of the vertex at <paramref name="tess"/>.</summary>
         public static int Slot(Float2 tess, TileFactorSet f, int limit)
         {
-            if (tess.x == 0f) return EdgeSlot(0, (int)MathF.Round(tess.y * f.edge.x, MidpointRounding.AwayFromZero), limit);
-            if (tess.y == 0f) return EdgeSlot(1, (int)MathF.Round(tess.x * f.edge.y, MidpointRounding.AwayFromZero), limit);
-            if (tess.x == 1f) return EdgeSlot(2, (int)MathF.Round(tess.y * f.edge.z, MidpointRounding.AwayFromZero), limit);
-            if (tess.y == 1f) return EdgeSlot(3, (int)MathF.Round(tess.x * f.edge.w, MidpointRounding.AwayFromZero), limit);
-            return InteriorSlot((int)MathF.Round(tess.x * f.inside.x, MidpointRounding.AwayFromZero),
-                                (int)MathF.Round(tess.y * f.inside.y, MidpointRounding.AwayFromZero), (int)f.inside.x);
+            if (tess.x == 0f) return EdgeSlot(0, (int)RoundToPoint(tess.y * f.edge.x), limit);
+            if (tess.y == 0f) return EdgeSlot(1, (int)RoundToPoint(tess.x * f.edge.y), limit);
+            if (tess.x == 1f) return EdgeSlot(2, (int)RoundToPoint(tess.y * f.edge.z), limit);
+            if (tess.y == 1f) return EdgeSlot(3, (int)RoundToPoint(tess.x * f.edge.w), limit);
+            return InteriorSlot((int)RoundToPoint(tess.x * f.inside.x), (int)RoundToPoint(tess.y * f.inside.y), (int)f.inside.x);
         }
 
         /// <summary>
         /// HLSL <c>VertexCacheIntegerFactors</c>: each factor rounded up to an integer in [1, 64] (the
-        /// segments of "integer" partitioning; rounding up keeps the fractional factor's error bound);
-        /// an inside factor of 1 raised to 2 unless all six are 1 (the tessellator treats it as 2 then:
-        /// Vulkan spec, quad tessellation; D3D11 likewise). Culled stays all zero.
+        /// segments of "integer" partitioning; rounding up keeps the fractional factor's error bound),
+        /// as drawn (<see cref="DrawnFactors"/>: the tessellator treats a lone inside 1 as 2, Vulkan
+        /// spec, quad tessellation; D3D11 likewise). Culled stays all zero.
         /// </summary>
         public static TileFactorSet IntegerFactors(TileFactorSet f)
         {
             if (f.IsCulled) return f;
             float R(float x) => MathF.Ceiling(GMath.clamp(x, 1f, MaxFactor));
-            var e = new Float4(R(f.edge.x), R(f.edge.y), R(f.edge.z), R(f.edge.w));
-            var i = new Float2(R(f.inside.x), R(f.inside.y));
-            bool allOnes = e.x == 1f && e.y == 1f && e.z == 1f && e.w == 1f && i.x == 1f && i.y == 1f;
-            if (!allOnes) i = new Float2(MathF.Max(i.x, 2f), MathF.Max(i.y, 2f));
-            return new TileFactorSet(e, i);
+            return DrawnFactors(new TileFactorSet(new Float4(R(f.edge.x), R(f.edge.y), R(f.edge.z), R(f.edge.w)),
+                                                  new Float2(R(f.inside.x), R(f.inside.y))));
         }
+
+        /// <summary>
+        /// Integer factors as the tessellator draws them: an inside factor of 1 is 2 unless all six
+        /// are 1, so the slot grid is the one it draws. HLSL <c>VertexCacheDrawnFactors</c>.
+        /// </summary>
+        public static TileFactorSet DrawnFactors(TileFactorSet f)
+        {
+            Float4 e = f.edge;
+            bool allOnes = e.x == 1f && e.y == 1f && e.z == 1f && e.w == 1f && f.inside.x == 1f && f.inside.y == 1f;
+            return allOnes ? f : new TileFactorSet(e, new Float2(MathF.Max(f.inside.x, 2f), MathF.Max(f.inside.y, 2f)));
+        }
+
+        /// <summary>Round half away from zero: the integer a tessellator's coordinate times a factor stands for (HLSL <c>round</c>).</summary>
+        internal static float RoundToPoint(float x) => MathF.Round(x, MidpointRounding.AwayFromZero);
 
         /// <summary>
         /// The points the kernel CacheTileVertices writes for one tile, in its order ("inside points,

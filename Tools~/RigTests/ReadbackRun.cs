@@ -403,6 +403,13 @@ namespace GregoryTerrain.Rig.Tests
         /// <summary>The diagonal of the control points' bounding box: the terrain's extent.</summary>
         public static double TerrainExtent(PatchGrid grid)
         {
+            var (lo, hi) = ControlPointBox(grid);
+            return GMath.length(hi - lo);
+        }
+
+        /// <summary>The control points' bounding box, in terrain space (x, y, height).</summary>
+        public static (Double3 lo, Double3 hi) ControlPointBox(PatchGrid grid)
+        {
             var lo = new Double3(double.MaxValue, double.MaxValue, double.MaxValue);
             var hi = new Double3(double.MinValue, double.MinValue, double.MinValue);
             foreach (GregoryPatch p in grid.Patches)
@@ -411,7 +418,7 @@ namespace GregoryTerrain.Rig.Tests
                     lo = new Double3(Math.Min(lo.x, q.x), Math.Min(lo.y, q.y), Math.Min(lo.z, q.z));
                     hi = new Double3(Math.Max(hi.x, q.x), Math.Max(hi.y, q.y), Math.Max(hi.z, q.z));
                 }
-            return GMath.length(hi - lo);
+            return (lo, hi);
         }
     }
 }

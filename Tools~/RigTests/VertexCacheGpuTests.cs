@@ -456,14 +456,8 @@ namespace GregoryTerrain.Rig.Tests
             // The grid's object (x, z) (terrain (x, y); object space is (x, height, y)) spans its control
             // points' box; the range's part of it, less a margin of 2% of the box (the surface's x, y
             // follow its parameters to far less).
-            double x0 = double.MaxValue, z0 = double.MaxValue, x1 = double.MinValue, z1 = double.MinValue;
-            foreach (GregoryPatch patch in _grid.Patches)
-                foreach (Double3 q in patch.Points)
-                {
-                    x0 = Math.Min(x0, q.x); x1 = Math.Max(x1, q.x);
-                    z0 = Math.Min(z0, q.y); z1 = Math.Max(z1, q.y);
-                }
-            double w = x1 - x0, d = z1 - z0;
+            var (lo, hi) = ReadbackRun.ControlPointBox(_grid);
+            double x0 = lo.x, z0 = lo.y, x1 = hi.x, z1 = hi.y, w = x1 - x0, d = z1 - z0;
             float[] inside = ReadbackRun.TopDownCameraOver(x0 + 0.12 * w, z0 + 0.12 * d, x0 + 0.88 * w, z0 + 0.88 * d, size, size);
             float[] wider = ReadbackRun.TopDownCameraOver(x0 - 0.05 * w, z0 - 0.05 * d, x1 + 0.05 * w, z1 + 0.05 * d, size, size);
             CacheFrame f = DrawCached("clipped-above", range, tiles, tess, size, size, inside);
