@@ -102,6 +102,12 @@ namespace GregoryTerrain.Rig.Tests
             Assert.That(_output, Does.Contain("The vertex cache (GT_VERTEX_CACHE) against the same fair static meshes"));
             Assert.That(_output, Does.Match(@"\| fs_m8_f7 \(uniform\) \| 8 \| 7 \| \d+ \|"), "cached fair row ran");
             Assert.That(_output, Does.Match(@"\| vc_m8_s8x7 \(adaptive\) \| 8 \| [0-9.]+ \| \d+ \|"), "cached adaptive fair row ran");
+            // The tile-count knob: the cached adaptive row with its error at the plan's view, which
+            // the adaptive factors keep near the target (the sweep's worst overshoot is 1.5x).
+            var tile = System.Text.RegularExpressions.Regex.Match(_output, @"\| fs_m8_f7 \| 8 \| ([0-9.]+) \| \d+ \| ([0-9.eE+-]+) \| ([0-9.eE+-]+) \| [0-9.]+x \|");
+            Assert.That(tile.Success, Is.True, "tile-count row");
+            Assert.That(D(tile.Groups[2].Value), Is.GreaterThan(0).And.LessThan(2 * D(tile.Groups[1].Value)), "tile-count row: max error px against the target");
+            Assert.That(D(tile.Groups[3].Value), Is.GreaterThan(0).And.LessThan(D(tile.Groups[2].Value)), "tile-count row: RMS below the max");
         }
 
         [TestCase("adaptive")]

@@ -168,8 +168,12 @@ namespace GregoryTerrain.Rig
         /// <summary>The adaptive terrain beside the fair static meshes: tiles, and the static size whose triangle count it aims at.</summary>
         public static (int tiles, int staticTiles, int staticFactor)[] AdaptiveVsStatic(bool quick) => quick
             ? new[] { (8, 8, 7) }
-            // 64 tiles at each static size, and fewer, larger tiles (larger factors cost less per triangle).
-            : new[] { (64, 32, 17), (64, 32, 31), (64, 32, 63), (32, 32, 17), (32, 32, 31), (32, 32, 63), (16, 32, 17) };
+            // Per static size: 64 and 32 tiles, and fewer, larger tiles, down to about the count whose
+            // cells still hold the triangles below the max factor (larger factors cost less per
+            // triangle; performance/raw-h200-tile-count/ swept 10-16 tiles at 0.6M, 16-24 at 2M).
+            : new[] { (64, 32, 17), (32, 32, 17), (16, 32, 17), (10, 32, 17),
+                      (64, 32, 31), (32, 32, 31), (20, 32, 31),
+                      (64, 32, 63), (32, 32, 63) };
 
         /// <summary>
         /// The fair static mesh (Documentation~/performance.md): for M x M tiles at the uniform factor F,

@@ -17,7 +17,7 @@ namespace GregoryTerrain.Rig
     /// compute_ms_median", part of the frame) and take their factors from the dumped _TileFactors.
     /// Usage: bench-report --plan DIR --raw DIR --grid FILE [--tsv FILE]
     /// </summary>
-    static class BenchReport
+    static partial class BenchReport
     {
         sealed class Job
         {
@@ -138,6 +138,7 @@ namespace GregoryTerrain.Rig
             Fair(o, jobs, quick, planned);
             CameraMoving(o, jobs, quick, rbDir);
             AnchoredPan(o, jobs, quick, rbDir);
+            TileCount(o, jobs, quick, planned, grid, width, height);
             RangeOnlyWithEffects(o, jobs, quick);
             Goals(o, tsv.ToString());
             Console.Write(o.ToString());
