@@ -90,7 +90,7 @@ namespace GregoryTerrain
         [SerializeField] Material material;
 
         [Header("Tessellation")]
-        [Tooltip("M: the drawn range is covered by M x M tile patches. The vertex budget is constant at any zoom: about 2 x (M x maxFactor)^2 triangles at most.")]
+        [Tooltip("M: the drawn range is covered by M x M tile patches. The vertex budget is constant at any zoom: about 2 x (M x maxFactor)^2 triangles at most. At a given triangle count fewer, larger tiles draw faster, as long as that budget still holds the triangles.")]
         [SerializeField, Range(1, 64)] int tiles = 16;
 
         [Tooltip("Largest tessellation factor a tile edge may get (hardware limit 64). Caps the triangle count.")]
