@@ -18,12 +18,14 @@ namespace GregoryTerrain.EditorTools
         const double EstimateSeconds = 0.25;
         double _estimateTime = double.NegativeInfinity;
         string _estimateText = "";
+        string _estimateCapped;   // why tiles held at the max factor matter, when the last estimate found some
 
         public override void OnInspectorGUI()
         {
             var r = (GregoryTerrainRenderer)target;
             EditorGUILayout.LabelField(new GUIContent("Triangles in view", "What the draw makes for the LOD camera (else the main camera, else the Scene view's) at the current settings and range: each tile's factors from Core's mirror of the hull stage, counted as the tessellator triangulates. Lower the target pixel error and watch it rise. Up to 256 tiles are evaluated, an even sample of them beyond that."),
                 new GUIContent(InViewText(r)));
+            if (_estimateCapped != null) EditorGUILayout.HelpBox(_estimateCapped, MessageType.Info);
             EditorGUILayout.LabelField(new GUIContent("Most triangles", "Most triangles the current settings can produce: 2 F^2 per tile, F the uniform factor, else the max factor (Core's TessellationPolicy)."),
                 new GUIContent(r.EstimatedTriangleCount.ToString("N0")));
             bool cache = r.VertexEvaluation == VertexEvaluation.ComputeCache;
@@ -48,6 +50,7 @@ namespace GregoryTerrain.EditorTools
         {
             if (Event.current.type != EventType.Layout || EditorApplication.timeSinceStartup - _estimateTime < EstimateSeconds) return _estimateText;
             _estimateTime = EditorApplication.timeSinceStartup;
+            _estimateCapped = null;
             Camera cam = r.EffectiveLodCamera;
             if (cam == null && SceneView.lastActiveSceneView != null) cam = SceneView.lastActiveSceneView.camera;
             TriangleEstimate? e = cam != null ? r.EstimateTrianglesInView(cam) : null;
@@ -58,6 +61,9 @@ namespace GregoryTerrain.EditorTools
                 TriangleEstimate v = e.Value;
                 string sample = v.tilesSampled < v.tileCount ? $", {v.tilesSampled} of {v.tileCount} tiles sampled" : "";
                 _estimateText = $"{v.triangles:N0} ({cam.name}: {v.tilesSampledDrawn} of {v.tilesSampled} tiles drawn{sample})";
+                // Tiles held at the max factor may miss the target: more, smaller tiles need smaller factors.
+                if (v.tilesSampledAtMaxFactor > 0)
+                    _estimateCapped = $"{v.tilesSampledAtMaxFactor} of the {v.tilesSampledDrawn} tiles evaluated and drawn are held at the max factor: the target pixel error may not hold there. More tiles (Tiles M) need smaller factors; fewer, larger tiles draw the same triangles faster until they reach it.";
             }
             return _estimateText;
         }

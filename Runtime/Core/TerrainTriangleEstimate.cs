@@ -20,9 +20,15 @@ namespace GregoryTerrain
         public int tilesSampled, tilesSampledDrawn;
         /// <summary>Tiles drawn: M^2, or (M + 1)^2 anchored.</summary>
         public int tileCount;
+        /// <summary>
+        /// Of the sampled tiles drawn, those with an adaptive factor held at the max factor: the
+        /// target pixel error may not hold there, and more tiles (or a larger max factor) would
+        /// restore it. 0 with a uniform factor.
+        /// </summary>
+        public int tilesSampledAtMaxFactor;
 
         public override string ToString() => FormattableString.Invariant(
-            $"{triangles:N0} triangles ({tilesSampledDrawn} of {tilesSampled} sampled tiles drawn, {tileCount} tiles)");
+            $"{triangles:N0} triangles ({tilesSampledDrawn} of {tilesSampled} sampled tiles drawn, {tilesSampledAtMaxFactor} at the max factor, {tileCount} tiles)");
     }
 
     /// <summary>
@@ -71,6 +77,15 @@ namespace GregoryTerrain
             return 2L * (i0 - 2) * (i1 - 2) + e1 + e3 + 2L * (i0 - 2) + e0 + e2 + 2L * (i1 - 2);
         }
 
+        /// <summary>Whether any of a drawn tile's factors makes as many segments as the max factor allows.</summary>
+        public static bool ReachesMaxFactor(TileFactorSet f, float maxFactor, TessellationPartitioning partitioning)
+        {
+            int most = Segments(maxFactor, partitioning);
+            foreach (float x in new[] { f.edge.x, f.edge.y, f.edge.z, f.edge.w, f.inside.x, f.inside.y })
+                if (Segments(x, partitioning) >= most) return true;
+            return false;
+        }
+
         /// <summary>
         /// The draw's triangles for a camera (<paramref name="objectToClip"/>, <paramref name="screenSize"/>
         /// pixels) at the inputs' settings and range. At most <paramref name="maxTiles"/> tiles are
@@ -101,6 +116,7 @@ namespace GregoryTerrain
                     : TileFactors.ComputeTileFactors(inputs, tile, objectToClip, screenSize, keywords);
                 if (f.IsCulled) continue;
                 e.tilesSampledDrawn++;
+                if (!inputs.UsesUniformTessFactor() && ReachesMaxFactor(f, inputs.MaxTessFactor(), partitioning)) e.tilesSampledAtMaxFactor++;
                 sum += PatchTriangles(f, partitioning);
             }
             e.triangles = (double)sum * count / sampled;

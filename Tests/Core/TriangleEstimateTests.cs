@@ -122,6 +122,26 @@ namespace GregoryTerrain.Tests
             Assert.That(Estimate(new TessellationSettings(8, 64f, 2f, 0f), Low), Is.Not.EqualTo(fine), "the camera decides the factors");
         }
 
+        [TestCase(TessellationPartitioning.Integer)]
+        [TestCase(TessellationPartitioning.FractionalOdd)]
+        public void TilesHeldAtTheMaxFactorAreCounted(TessellationPartitioning p)
+        {
+            TriangleEstimate At(TessellationSettings tess) =>
+                TerrainTriangleEstimate.InView(Inputs(tess), Oblique, Screen, TerrainKeywords.Noise, p, 4096);
+            var coarse = At(new TessellationSettings(8, 64f, 32f, 0f));
+            var capped = At(new TessellationSettings(8, 4f, 2f, 0f));
+            var uniform = At(TessellationSettings.Uniform(8, 64f));
+            TestContext.Out.WriteLine("{0}: 32 px {1}; 2 px, max factor 4: {2}", p, coarse, capped);
+            Assert.That(coarse.tilesSampledDrawn, Is.GreaterThan(0));
+            Assert.That(coarse.tilesSampledAtMaxFactor, Is.EqualTo(0), "a coarse target needs no tile at 64");
+            Assert.That(capped.tilesSampledAtMaxFactor, Is.EqualTo(capped.tilesSampledDrawn).And.GreaterThan(0), "a 2 px target wants more than 4 segments everywhere");
+            Assert.That(uniform.tilesSampledAtMaxFactor, Is.EqualTo(0), "a uniform factor is no cap");
+            // More tiles for the same target: fewer tiles (or none) held at the cap.
+            var more = At(new TessellationSettings(32, 4f, 2f, 0f));
+            Assert.That((double)more.tilesSampledAtMaxFactor / more.tilesSampledDrawn,
+                        Is.LessThan((double)capped.tilesSampledAtMaxFactor / capped.tilesSampledDrawn), "smaller tiles need smaller factors");
+        }
+
         [Test]
         public void ASampleOfTheTilesEstimatesTheWhole()
         {
