@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """The tables of README.md from results.txt: frame ms per pad, mean and range; ratios of the means
 (and the range of the per-pad ratios). usage: tables.py results.txt"""
-import sys, collections, statistics
+import sys, re, collections, statistics
 med = collections.defaultdict(dict); tris = {}
 for block in open(sys.argv[1]).read().split('\n== '):
     lines = block.strip().split('\n')
@@ -22,12 +22,16 @@ def ratio(a, b):
 print()
 print('| tiles | triangles (static) | camera moving / static | still / static | panning / static | range moving (tiles on the range) / static |')
 print('| ---: | ---: | ---: | ---: | ---: | ---: |')
-for size, ms, kinds in (('s32x17', (16, 14, 12, 10), ('orbit', 'still', 'pan', 'terrain')), ('s32x31', (24, 20, 16), ('orbit', 'still', 'pan'))):
+groups = {}   # static size -> tile counts, in the order the results list them
+for job in med:
+    m = re.match(r'vc_m(\d+)_(s32x\d+):', job)
+    if m and int(m.group(1)) not in groups.setdefault(m.group(2), []): groups[m.group(2)].append(int(m.group(1)))
+for size, ms in groups.items():
     static = 'fs_m32_f%s' % size.split('x')[1]
     for m in ms:
         cells = []
         for k in ('orbit', 'still', 'pan', 'terrain'):
-            if k not in kinds: cells.append(''); continue
+            if 'vc_m%d_%s:%s' % (m, size, k) not in med: cells.append(''); continue
             r, lo, hi = ratio('vc_m%d_%s:%s' % (m, size, k), static + (':static-orbit' if k == 'orbit' else ':static'))
             cells.append('**%.4fx** (%.4f-%.4f)' % (r, lo, hi))
         print('| %d | %s | %s |' % (m, format(tris[static + ':static'], ','), ' | '.join(cells)))
