@@ -94,15 +94,25 @@ TileFactors ToTileFactors(TileFactorSet set)
     return f;
 }
 
+#if defined(GT_VERTEX_CACHE)
+// The cell's factors, decided by CacheTileFactors, already integers (culled: all 0): what its
+// slots hold. hull_const clips them to the part of the cell the tile keeps; the domain stage reads
+// them again for a clipped tile's records.
+TileFactorSet CachedCellFactors(uint patch)
+{
+    TileFactorSet set;
+    set.edge = _TileFactors[VertexCacheFactorIndex(patch)];
+    set.inside = _TileFactors[VertexCacheFactorIndex(patch) + 1u].xy;
+    return set;
+}
+#endif
+
 TileFactorSet TileFactorsOf(InputPatch<TileCorner, 4> corners)
 {
     uint patch = corners[0].drawPatch;
     TileFactorSet set;
 #if defined(GT_VERTEX_CACHE)
-    // The cell's, decided by CacheTileFactors, already integers (culled: all 0); hull_const clips
-    // them to the part of the cell the tile keeps.
-    set.edge = _TileFactors[VertexCacheFactorIndex(patch)];
-    set.inside = _TileFactors[VertexCacheFactorIndex(patch) + 1u].xy;
+    set = CachedCellFactors(patch);
 #else
     float3 cornerOS[4];
     [unroll] for (uint c = 0; c < 4; c++)
@@ -157,11 +167,10 @@ TerrainVaryings domain_shader(TileFactors factors, const OutputPatch<TileCorner,
     uint base = corners[0].drawPatch * VertexCacheSlotsPerTile(limit);
     if (!CellKeptWhole(factors.keptCellSpan))
     {
-        TileFactorSet tile, cell;
+        TileFactorSet tile;
         tile.edge = edge;
         tile.inside = inside;
-        cell.edge = _TileFactors[VertexCacheFactorIndex(corners[0].drawPatch)];
-        cell.inside = _TileFactors[VertexCacheFactorIndex(corners[0].drawPatch) + 1u].xy;
+        TileFactorSet cell = CachedCellFactors(corners[0].drawPatch);
         return CachedCellPointVaryings(base, CellPoint(tess, tile, cell, factors.keptCellSpan, limit), tessFactor);
     }
     return CachedTerrainVaryings(base + VertexCacheSlot(tess, edge, inside, limit), tessFactor);

@@ -59,7 +59,7 @@ uint VertexCacheGroupsPerTile(uint limit)
 //     draw reads; "evaluate" tells CacheTileVertices which tiles to (re)evaluate this pass;
 //   keys, 1 float4 a tile each, adjacent so that one upload of zeros forgets both: the key of the
 //     tile's slots, then of its cell's samples and factors (both CellRecordKey: _Range, or anchored
-//     the cell's span (the slots hold the whole cell; ClippedCell.hlsl);
+//     the cell's span, since the slots hold the whole cell: ClippedCell.hlsl);
 //   factor samples, GT_TILE_FACTOR_SAMPLES float4 a tile: the cell's object positions (w = 1 once
 //     written), kept while the cell's key holds (a camera move evaluates no surface);
 //   cell factors, 2 float4 a tile: the float factors the cell's samples gave (before

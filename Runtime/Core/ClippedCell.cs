@@ -12,8 +12,6 @@ namespace GregoryTerrain
         public int a, b, c, d;
         public Float2 t;
 
-        public static CellPointBlend Slot(int slot) => new CellPointBlend { a = slot, b = slot, c = slot, d = slot };
-
         public bool Equals(CellPointBlend o) => a == o.a && b == o.b && c == o.c && d == o.d && t.Equals(o.t);
         public override bool Equals(object obj) => obj is CellPointBlend o && Equals(o);
         public override int GetHashCode() => HashCode.Combine(a, b, c, d, t);
@@ -31,8 +29,8 @@ namespace GregoryTerrain
     /// </summary>
     public static class ClippedCell
     {
-        /// <summary>Exactly (0, 1, 0, 1): the tile is its whole cell.</summary>
-        public static bool IsWhole(Float4 kept) => kept.x == 0f && kept.y == 1f && kept.z == 0f && kept.w == 1f;
+        /// <summary>Exactly (0, 1, 0, 1): the tile is its whole cell. HLSL <c>CellKeptWhole</c>.</summary>
+        public static bool CellKeptWhole(Float4 kept) => kept.x == 0f && kept.y == 1f && kept.z == 0f && kept.w == 1f;
 
         /// <summary>
         /// The segments of a line of n that meet [s0, s1] (cell parameters): ceil(s1 n) - floor(s0 n).
@@ -52,7 +50,7 @@ namespace GregoryTerrain
         /// </summary>
         public static TileFactorSet ClippedTileFactors(TileFactorSet cell, Float4 kept)
         {
-            if (cell.IsCulled || IsWhole(kept)) return cell;
+            if (cell.IsCulled || CellKeptWhole(kept)) return cell;
             if (kept.x == kept.y || kept.z == kept.w) return default;
             var inside = new Float2(KeptSegments(cell.inside.x, kept.x, kept.y), KeptSegments(cell.inside.y, kept.z, kept.w));
             var edge = new Float4(
@@ -77,12 +75,15 @@ namespace GregoryTerrain
             return MathF.Floor(s0 * n) + k;
         }
 
+        /// <summary>One record, unblended. HLSL <c>CellSlotBlend</c>.</summary>
+        public static CellPointBlend CellSlotBlend(int slot) => new CellPointBlend { a = slot, b = slot, c = slot, d = slot };
+
         /// <summary>Point x (line units) of edge e: its point floor(x), blended towards the next by the rest. HLSL <c>CellEdgeBlend</c>.</summary>
         public static CellPointBlend CellEdgeBlend(int edge, float x, int limit)
         {
             float a = MathF.Floor(x);
             int slot = VertexCache.EdgeSlot(edge, (int)a, limit);
-            CellPointBlend p = CellPointBlend.Slot(slot);
+            CellPointBlend p = CellSlotBlend(slot);
             if (x > a) { p.b = slot + 1; p.t.x = x - a; }
             return p;
         }
@@ -96,7 +97,7 @@ namespace GregoryTerrain
             float au = MathF.Floor(xu), av = MathF.Floor(xv);
             int w = (int)insideU;
             int slot = VertexCache.InteriorSlot((int)au, (int)av, w);
-            CellPointBlend p = CellPointBlend.Slot(slot);
+            CellPointBlend p = CellSlotBlend(slot);
             if (xu > au) { p.b = slot + 1; p.t.x = xu - au; }
             if (xv > av)
             {
@@ -121,14 +122,14 @@ namespace GregoryTerrain
         /// </summary>
         public static CellPointBlend CellPoint(Float2 tess, TileFactorSet tile, TileFactorSet cell, Float4 kept, int limit)
         {
-            if (IsWhole(kept)) return CellPointBlend.Slot(VertexCache.Slot(tess, tile, limit));
+            if (CellKeptWhole(kept)) return CellSlotBlend(VertexCache.Slot(tess, tile, limit));
             bool u0 = tess.x == 0f, u1 = tess.x == 1f, v0 = tess.y == 0f, v1 = tess.y == 1f;
             bool onU = u0 || u1, onV = v0 || v1;
             float su = u0 ? kept.x : kept.y, sv = v0 ? kept.z : kept.w;   // the cell parameter of the side at tess
             bool clipU = u0 ? kept.x > 0f : kept.y < 1f, clipV = v0 ? kept.z > 0f : kept.w < 1f;
             if (onU && onV)
             {
-                if (!clipU && !clipV) return CellPointBlend.Slot(VertexCache.Slot(tess, cell, limit));
+                if (!clipU && !clipV) return CellSlotBlend(VertexCache.Slot(tess, cell, limit));
                 if (!clipV) { int e = v0 ? 1 : 3; return CellEdgeBlend(e, su * CellFactorOfEdge(cell.edge, e), limit); }
                 if (!clipU) { int e = u0 ? 0 : 2; return CellEdgeBlend(e, sv * CellFactorOfEdge(cell.edge, e), limit); }
                 return CellGridBlend(su * cell.inside.x, sv * cell.inside.y, cell.inside.x);

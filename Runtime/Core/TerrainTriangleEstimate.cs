@@ -77,13 +77,14 @@ namespace GregoryTerrain
             return 2L * (i0 - 2) * (i1 - 2) + e1 + e3 + 2L * (i0 - 2) + e0 + e2 + 2L * (i1 - 2);
         }
 
-        /// <summary>Whether any of a drawn tile's factors makes as many segments as the max factor allows.</summary>
+        /// <summary>
+        /// Whether any of a drawn tile's factors makes as many segments as the max factor allows
+        /// (segments grow with the factor, so the largest factor decides).
+        /// </summary>
         public static bool ReachesMaxFactor(TileFactorSet f, float maxFactor, TessellationPartitioning partitioning)
         {
-            int most = Segments(maxFactor, partitioning);
-            foreach (float x in new[] { f.edge.x, f.edge.y, f.edge.z, f.edge.w, f.inside.x, f.inside.y })
-                if (Segments(x, partitioning) >= most) return true;
-            return false;
+            float largest = MathF.Max(MathF.Max(MathF.Max(f.edge.x, f.edge.y), MathF.Max(f.edge.z, f.edge.w)), MathF.Max(f.inside.x, f.inside.y));
+            return Segments(largest, partitioning) >= Segments(maxFactor, partitioning);
         }
 
         /// <summary>

@@ -172,6 +172,14 @@ namespace GregoryTerrain
                 new Float2(Math.Max(cell.inside.x * kept.x, 1f), Math.Max(cell.inside.y * kept.y, 1f)));
         }
 
+        /// <summary>Tile factors exist in tile mode only (paper mode has no hull_const factors).</summary>
+        static void RequireTileMode(TerrainInputs inputs, TerrainKeywords keywords)
+        {
+            if (inputs == null) throw new ArgumentNullException(nameof(inputs));
+            if ((keywords & TerrainKeywords.PaperMode) != 0)
+                throw new ArgumentException("keywords: tile factors are the tile mode's (paper mode has no hull_const factors)", nameof(keywords));
+        }
+
         /// <summary>
         /// HLSL <c>ComputeTileFactors</c> (hull_const's path): the uniform factor when one is set;
         /// else all zero for a culled tile; else the seven pieces. <paramref name="objectToClip"/>:
@@ -182,9 +190,7 @@ namespace GregoryTerrain
         public static TileFactorSet ComputeTileFactors(TerrainInputs inputs, int tile, Float4x4 objectToClip, Float2 screenSize,
                                                        TerrainKeywords keywords)
         {
-            if (inputs == null) throw new ArgumentNullException(nameof(inputs));
-            if ((keywords & TerrainKeywords.PaperMode) != 0)
-                throw new ArgumentException("keywords: tile factors are the tile mode's (paper mode has no hull_const factors)", nameof(keywords));
+            RequireTileMode(inputs, keywords);
             if (TileLattice.TileEmpty(inputs.Params, tile)) return CulledTileFactors();
             if (UniformTileFactors(inputs, out TileFactorSet f)) return f;
             return TileFactorsOfCell(ComputeCellFactors(inputs, tile, objectToClip, screenSize, keywords), TileLattice.TileKeptFraction(inputs.Params, tile));
@@ -216,9 +222,7 @@ namespace GregoryTerrain
         public static TileFactorSet ComputeCachedTileFactors(TerrainInputs inputs, int tile, Float4x4 objectToClip, Float2 screenSize,
                                                              TerrainKeywords keywords)
         {
-            if (inputs == null) throw new ArgumentNullException(nameof(inputs));
-            if ((keywords & TerrainKeywords.PaperMode) != 0)
-                throw new ArgumentException("keywords: tile factors are the tile mode's (paper mode has no hull_const factors)", nameof(keywords));
+            RequireTileMode(inputs, keywords);
             TileFactorSet cell = UniformTileFactors(inputs, out TileFactorSet f) ? f : ComputeCellFactors(inputs, tile, objectToClip, screenSize, keywords);
             return ClippedCell.ClippedTileFactors(VertexCache.IntegerFactors(cell), TileLattice.TileKeptCellSpan(inputs.Params, tile));
         }

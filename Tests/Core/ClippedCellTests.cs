@@ -161,7 +161,7 @@ namespace GregoryTerrain.Tests
             int clipped = 0;
             foreach (var (p, i, j, a, atA) in DrawnTiles())
             {
-                if (!ClippedCell.IsWhole(a.kept)) clipped++;
+                if (!ClippedCell.CellKeptWhole(a.kept)) clipped++;
                 foreach (var (ni, nj, ea, eb) in new[] { (i + 1, j, 2, 0), (i, j + 1, 3, 1) })
                 {
                     if (ni > M || nj > M) continue;
@@ -223,7 +223,7 @@ namespace GregoryTerrain.Tests
             foreach (var (tess, slots) in written)
             {
                 CellPointBlend b = ClippedCell.CellPoint(tess, f, f, new Float4(0f, 1f, 0f, 1f), Limit);
-                Assert.That(b, Is.EqualTo(CellPointBlend.Slot(b.a)), $"{tess}: one record");
+                Assert.That(b, Is.EqualTo(ClippedCell.CellSlotBlend(b.a)), $"{tess}: one record");
                 Assert.That(slots, Does.Contain(b.a), $"{tess}");
             }
         }

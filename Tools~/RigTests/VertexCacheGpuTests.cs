@@ -413,7 +413,7 @@ namespace GregoryTerrain.Rig.Tests
                 if (sameCell) held++;
                 if (fresh.Culled(tile)) continue;
                 drawn++;
-                if (!ClippedCell.IsWhole(TileLattice.TileKeptCellSpan(shifted, tile))) clipped++;
+                if (!ClippedCell.CellKeptWhole(TileLattice.TileKeptCellSpan(shifted, tile))) clipped++;
                 Assert.That(panned.Evaluated(tile), Is.EqualTo(!sameCell), "tile " + tile + ": evaluated exactly when the pan brought its cell in");
                 if (!sameCell) evaluated++;
                 long r = 4 * VertexCache.EvaluatedRangeIndex(tile, panned.Tiles);
@@ -469,7 +469,7 @@ namespace GregoryTerrain.Rig.Tests
             for (int tile = 0; tile < f.Tiles * f.Tiles; tile++)
             {
                 if (f.Culled(tile)) continue;
-                if (!ClippedCell.IsWhole(TileLattice.TileKeptCellSpan(p, tile))) clipped++;
+                if (!ClippedCell.CellKeptWhole(TileLattice.TileKeptCellSpan(p, tile))) clipped++;
                 factors.Add(f.FactorsOf(tile).inside.x);
             }
             long covered = f.Run.Long("image", "nonsky_pixels"), coveredWider = g.Run.Long("image", "nonsky_pixels");
