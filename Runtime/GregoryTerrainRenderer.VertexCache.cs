@@ -122,7 +122,7 @@ namespace GregoryTerrain
             if (!SystemInfo.supportsComputeShaders)
                 return "this device has no compute shaders (SystemInfo.supportsComputeShaders = false)";
             if (cacheShader == null)
-                return "no compute shader is assigned to Cache Shader (Shaders/TerrainCache.compute)";
+                return "no compute shader is assigned to Cache Shader (Shaders/Cache/TerrainCache.compute)";
             if (!_cache.FindKernels(cacheShader, out string missing))
                 return $"the Cache Shader '{cacheShader.name}' has no kernel '{missing}'";
             if (cam == null)

@@ -17,7 +17,7 @@ namespace GregoryTerrain
     /// matrices when the Transform moves; the range origin when it re-snaps; and every frame
     /// <c>_Range</c> alone.
     /// <para>With <see cref="GregoryTerrain.VertexEvaluation.ComputeCache"/> a compute pre-pass
-    /// (<see cref="VertexCachePass"/>, Shaders/TerrainCache.compute) evaluates the vertices into a
+    /// (<see cref="VertexCachePass"/>, Shaders/Cache/TerrainCache.compute) evaluates the vertices into a
     /// buffer the domain stage reads (keyword <c>GT_VERTEX_CACHE</c>), in frames where the LOD
     /// camera, the range, the origin or a setting changed; other frames dispatch nothing.</para>
     /// <para>Files: this one (settings, public API, the draw and its constants),
@@ -111,7 +111,7 @@ namespace GregoryTerrain
         [Header("Vertex evaluation")]
         [Tooltip("Domain stage: every pass of every camera evaluates its vertices in the domain shader (fractional factors, each camera its own). Compute cache: a compute pre-pass evaluates each vertex once into a GPU buffer when the LOD camera, the range or a setting changes, and the domain stage only reads it (integer factors from the LOD camera for every camera; a little popping when a factor changes; GPU memory shown below). Falls back to Domain stage, with one warning, where compute shaders are missing.")]
         [SerializeField] VertexEvaluation vertexEvaluation = VertexEvaluation.DomainStage;
-        [Tooltip("Compute cache only: Shaders/TerrainCache.compute (kernels CacheTileFactors and CacheTileVertices).")]
+        [Tooltip("Compute cache only: Shaders/Cache/TerrainCache.compute (kernels CacheTileFactors and CacheTileVertices).")]
         [SerializeField] ComputeShader cacheShader;
         [Tooltip("Compute cache only: the camera whose view picks the tessellation factors and culls tiles, for every camera and shadow pass. Empty = Camera.main.")]
         [SerializeField] Camera lodCamera;
@@ -264,7 +264,7 @@ namespace GregoryTerrain
             }
         }
 
-        /// <summary>Shaders/TerrainCache.compute, for <see cref="VertexEvaluation.ComputeCache"/>.</summary>
+        /// <summary>Shaders/Cache/TerrainCache.compute, for <see cref="VertexEvaluation.ComputeCache"/>.</summary>
         public ComputeShader CacheShader { get => cacheShader; set { cacheShader = value; _cache.Invalidate(); } }
 
         /// <summary>The camera whose view sets the cached tessellation (null: Camera.main).</summary>

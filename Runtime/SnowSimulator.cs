@@ -5,7 +5,7 @@ namespace GregoryTerrain
 {
     /// <summary>
     /// Wind-driven snow on the terrain (Moriya and Takahashi, eq. 1), simulated on the GPU with
-    /// Shaders/SnowSimulation.compute. Add it only to scenes that want snow: while it is disabled or
+    /// Shaders/Snow/SnowSimulation.compute. Add it only to scenes that want snow: while it is disabled or
     /// absent there is no snow buffer, no dispatch and the terrain material's <c>GT_SNOW</c> keyword is
     /// off, so the terrain shader compiles the snow code out.
     /// <para>
@@ -18,7 +18,7 @@ namespace GregoryTerrain
     /// <para>
     /// The field (detail normal and height per cell) normally comes from the terrain itself:
     /// <see cref="SetTerrain"/> hands over the renderer's buffers and constants, and
-    /// Shaders/SnowField.compute (<c>SnowFieldKernel</c>, the terrain's own vertex path at the cell
+    /// Shaders/Snow/SnowField.compute (<c>SnowFieldKernel</c>, the terrain's own vertex path at the cell
     /// centres) fills it on the GPU, once per terrain change (<see cref="MarkTerrainChanged"/>); the
     /// exposure follows, since it is recomputed whenever the field changed. Alternatives for tests and
     /// custom terrains: a CPU <see cref="Field"/> or a ready GPU buffer (<see cref="SetFieldBuffer"/>).
@@ -48,9 +48,9 @@ namespace GregoryTerrain
 
         const string NoiseKeyword = "GT_NOISE";
 
-        [Tooltip("Shaders/SnowSimulation.compute")]
+        [Tooltip("Shaders/Snow/SnowSimulation.compute")]
         [SerializeField] ComputeShader simulation;
-        [Tooltip("Shaders/SnowField.compute: evaluates the terrain field from the terrain (SetTerrain)")]
+        [Tooltip("Shaders/Snow/SnowField.compute: evaluates the terrain field from the terrain (SetTerrain)")]
         [SerializeField] ComputeShader fieldShader;
         [Tooltip("The terrain material (the renderer's): gets GT_SNOW and the depth map while snow is on.")]
         [SerializeField] Material terrainMaterial;
@@ -98,7 +98,7 @@ namespace GregoryTerrain
 
         public Material TerrainMaterial { get => terrainMaterial; set { DisableKeyword(); terrainMaterial = value; if (isActiveAndEnabled) Bind(); } }
         public ComputeShader Simulation { get => simulation; set => simulation = value; }
-        /// <summary>Shaders/SnowField.compute; set it before enabling (its kernel is looked up in OnEnable).</summary>
+        /// <summary>Shaders/Snow/SnowField.compute; set it before enabling (its kernel is looked up in OnEnable).</summary>
         public ComputeShader FieldShader { get => fieldShader; set => fieldShader = value; }
 
         /// <summary>The terrain field on the CPU; uploaded whenever its <see cref="SnowField.Version"/> changes.</summary>
