@@ -50,7 +50,7 @@ namespace GregoryTerrain
                 layer = gameObject.layer,
             };
             int across = TileLattice.TilesAcross(_params), tileCount = across * across;
-            if (_drawFallbackNow)
+            if (_drawFallback)
                 Graphics.RenderPrimitivesIndexed(rp, MeshTopology.Triangles, _fallbackIndices,
                     _fallbackIndices.count, 0, tileCount);
             else

@@ -34,8 +34,6 @@ namespace GregoryTerrain
     [ExecuteAlways]
     [DisallowMultipleComponent]
     [AddComponentMenu("Gregory Terrain/Gregory Terrain Renderer")]
-    // After the range controllers (default order 0), so this frame's range is drawn this frame.
-    [DefaultExecutionOrder(100)]
     public sealed partial class GregoryTerrainRenderer : MonoBehaviour
     {
         /// <summary>
@@ -196,7 +194,6 @@ namespace GregoryTerrain
         Matrix4x4 _worldToObject = Matrix4x4.identity;   // its inverse, as sent (the cache's world normals)
         int _gridStamp;                                  // bumped on every upload: the cache sees new grid buffers
         readonly System.Collections.Generic.List<int> _setLastPrepare = new System.Collections.Generic.List<int>(16);
-        bool _drawFallbackNow;                           // the last Prepare's draw mode
         SnowSimulator _snow;                             // the enabled simulator attached to this renderer
 
         /// <summary>
@@ -417,7 +414,6 @@ namespace GregoryTerrain
             if (_settingsError != null) return false;   // logged once; drawn again after the next valid change
             if (!UpdateVertexCache(fallback)) return false;
             UpdateSnowBinding();
-            _drawFallbackNow = fallback;
             return UpdateDrawMaterial(_usesCache, SnowOn()) != null;
         }
 
