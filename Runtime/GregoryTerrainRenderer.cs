@@ -242,6 +242,9 @@ namespace GregoryTerrain
             _range = value;
         }
 
+        /// <summary>The saved range (the serialized field), which <see cref="SetDrawnRange"/> leaves alone.</summary>
+        internal Vector4 SavedRange => range;
+
         /// <summary>True when this device has no tessellation shaders (Unity then skips the tessellated SubShaders).</summary>
         public static bool UsesFallback => !SystemInfo.supportsTessellationShaders;
 

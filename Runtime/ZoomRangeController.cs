@@ -83,7 +83,13 @@ namespace GregoryTerrain
             Apply();
         }
 
-        /// <summary>Whether the View Camera is moved now: always in Play Mode, in Edit Mode only when asked.</summary>
+        /// <summary>The terrain whose range this controller sets.</summary>
+        public GregoryTerrainRenderer Target { get => target; set => target = value; }
+
+        /// <summary>The camera placed over the range (optional).</summary>
+        public Camera ViewCamera { get => viewCamera; set => viewCamera = value; }
+
+        /// <summary>Whether the View Camera is also moved in Edit Mode (off by default; in Play Mode it always is).</summary>
         public bool PlaceCameraInEditMode { get => placeCameraInEditMode; set => placeCameraInEditMode = value; }
 
         /// <summary>
