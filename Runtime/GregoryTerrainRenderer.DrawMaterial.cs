@@ -18,8 +18,28 @@ namespace GregoryTerrain
         Material _drawMaterial;        // the runtime copy, or null while the asset itself is drawn
         Material _drawMaterialSource;  // the asset _drawMaterial was copied from
         int _drawMaterialCrc;          // the asset's Material.ComputeCRC() at the last sync
+        int _drawMaterialKeywords;     // the asset's package keywords (AssetKeywordBits) at the last sync
         GraphicsBuffer _boundSnowDepth;
         Vector4 _boundSnowMapSize;
+
+        /// <summary>
+        /// The package's own material keywords. Their state on the asset is compared bit by bit as
+        /// well as the CRC, so a keyword toggled on the asset reaches the copy whether or not
+        /// Unity's CRC covers keywords; reading them allocates nothing (shaderKeywords would).
+        /// </summary>
+        static readonly string[] AssetKeywords =
+        {
+            VertexCachePass.NoiseKeyword, VertexCachePass.HeightColorKeyword,
+            "GT_DEBUG_NORMALS", "GT_DEBUG_PATCH_ID", "GT_DEBUG_TESS_FACTOR",
+        };
+
+        int AssetKeywordBits()
+        {
+            int bits = 0;
+            for (int k = 0; k < AssetKeywords.Length; k++)
+                if (material.IsKeywordEnabled(AssetKeywords[k])) bits |= 1 << k;
+            return bits;
+        }
 
         static class KeywordIds
         {
@@ -46,20 +66,22 @@ namespace GregoryTerrain
                 ReleaseDrawMaterial();
                 return material;
             }
-            int crc = material.ComputeCRC();
+            int crc = material.ComputeCRC(), keywords = AssetKeywordBits();
             if (_drawMaterial == null)
             {
                 _drawMaterial = new Material(material) { name = material.name + " (Gregory Terrain runtime copy)", hideFlags = HideFlags.HideAndDontSave };
             }
-            else if (_drawMaterialSource != material || _drawMaterialCrc != crc)
+            else if (_drawMaterialSource != material || _drawMaterialCrc != crc || _drawMaterialKeywords != keywords)
             {
                 _drawMaterial.shader = material.shader;
-                _drawMaterial.CopyPropertiesFromMaterial(material);   // values and keywords of the asset
+                _drawMaterial.CopyPropertiesFromMaterial(material);
+                _drawMaterial.shaderKeywords = material.shaderKeywords;   // the asset's keywords, whatever the copy above took
             }
             else if (_drawMaterial.IsKeywordEnabled(VertexCachePass.Keyword) == cache && _drawMaterial.IsKeywordEnabled(VertexCachePass.SnowKeyword) == snow)
                 return _drawMaterial;   // steady state: nothing set
             _drawMaterialSource = material;
             _drawMaterialCrc = crc;
+            _drawMaterialKeywords = keywords;
             SetKeyword(_drawMaterial, VertexCachePass.Keyword, cache);
             SetKeyword(_drawMaterial, VertexCachePass.SnowKeyword, snow);
             return _drawMaterial;
