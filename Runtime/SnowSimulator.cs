@@ -29,6 +29,7 @@ namespace GregoryTerrain
     /// </para>
     /// </summary>
     [DisallowMultipleComponent]
+    [AddComponentMenu("Gregory Terrain/Snow Simulator")]
     public sealed class SnowSimulator : MonoBehaviour
     {
         public const string Keyword = "GT_SNOW";
@@ -179,6 +180,10 @@ namespace GregoryTerrain
             _exposureKernel = simulation.FindKernel("SnowExposureKernel");
             _accumulateKernel = simulation.FindKernel("SnowAccumulateKernel");
             _fieldKernel = fieldShader != null ? fieldShader.FindKernel("SnowFieldKernel") : -1;
+            if (terrain == null)
+                Debug.LogWarning("SnowSimulator: Terrain is empty; assign the Gregory Terrain Renderer the snow falls on.", this);
+            else if (fieldShader == null)
+                Debug.LogWarning("SnowSimulator: Field Shader is empty (Shaders/SnowField.compute); the terrain's snow field cannot be evaluated, so no snow falls.", this);
             Allocate();
             Attach();
         }
