@@ -181,7 +181,7 @@ namespace GregoryTerrain
             _accumulateKernel = simulation.FindKernel("SnowAccumulateKernel");
             _fieldKernel = fieldShader != null ? fieldShader.FindKernel("SnowFieldKernel") : -1;
             if (terrain == null)
-                Debug.LogWarning("SnowSimulator: Terrain is empty; assign the Gregory Terrain Renderer the snow falls on.", this);
+                Debug.LogWarning("SnowSimulator: Terrain is empty; assign the Gregory Terrain Renderer the snow falls on (or give it a Field from code).", this);
             else if (fieldShader == null)
                 Debug.LogWarning("SnowSimulator: Field Shader is empty (Shaders/SnowField.compute); the terrain's snow field cannot be evaluated, so no snow falls.", this);
             Allocate();
