@@ -66,7 +66,7 @@ namespace GregoryTerrain
             public int gridStamp;
             public Effects effects;
             /// <summary>With <see cref="Effects.Snow"/>: the simulator's depth map, its (R, 1/R, cap, 0) and version.</summary>
-            public ComputeBuffer snowDepth;
+            public GraphicsBuffer snowDepth;
             public Vector4 snowMapSize;
             public int snowVersion;
         }
