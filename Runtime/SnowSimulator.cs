@@ -131,7 +131,7 @@ namespace GregoryTerrain
         /// constants (any range: <see cref="SnowFieldTerrain.ParamsFor"/> replaces it) and whether it has
         /// noise (GT_NOISE). Marks the terrain changed. Pass null buffers to stop using a terrain.
         /// </summary>
-        public void SetTerrain(ComputeBuffer controlPoints, ComputeBuffer regions, ComputeBuffer gridLines, TerrainParams parameters, bool noise)
+        internal void SetTerrain(ComputeBuffer controlPoints, ComputeBuffer regions, ComputeBuffer gridLines, TerrainParams parameters, bool noise)
         {
             bool none = controlPoints == null && regions == null && gridLines == null;
             if (!none && (controlPoints == null || regions == null || gridLines == null))

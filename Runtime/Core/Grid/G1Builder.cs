@@ -23,7 +23,7 @@ namespace GregoryTerrain
     /// the neighbour's own A1, A2 (a fitter's data) and eq. 8-9 still give an exact G1 join; otherwise
     /// it rewrites the neighbour's interior points to the linear A.</para>
     /// </summary>
-    public static partial class G1Builder
+    internal static partial class G1Builder
     {
         /// <summary>Relative difference of k0 and k1 below which k is treated as constant.</summary>
         public const double ConstantKTolerance = 1e-9;

@@ -19,9 +19,6 @@ namespace GregoryTerrain
         public static Float3 operator *(float s, Float3 a) => new Float3(a.x * s, a.y * s, a.z * s);
         public static Float3 operator /(Float3 a, float s) => new Float3(a.x / s, a.y / s, a.z / s);
 
-        /// <summary>Rounds a double vector to float per component, as an upload to the GPU does.</summary>
-        public static explicit operator Float3(Double3 d) => new Float3((float)d.x, (float)d.y, (float)d.z);
-
         public bool IsFinite => GMath.isfinite(x) && GMath.isfinite(y) && GMath.isfinite(z);
 
         public bool Equals(Float3 o) => x.Equals(o.x) && y.Equals(o.y) && z.Equals(o.z);

@@ -33,7 +33,7 @@ namespace GregoryTerrain
         }
 
         /// <summary><c>_HeightColor = (gamma, noiseAmplitude, noiseFrequency, 0)</c>.</summary>
-        public Float4 ToFloat4() => new Float4(gamma, noiseAmplitude, noiseFrequency, 0f);
+        internal Float4 ToFloat4() => new Float4(gamma, noiseAmplitude, noiseFrequency, 0f);
 
         public bool Equals(HeightColorSettings o) => gamma.Equals(o.gamma) && noiseAmplitude.Equals(o.noiseAmplitude) && noiseFrequency.Equals(o.noiseFrequency);
         public override bool Equals(object obj) => obj is HeightColorSettings o && Equals(o);

@@ -52,7 +52,7 @@ namespace GregoryTerrain
             new ArgumentException(FormattableString.Invariant($"{field} ({value:R}) {what}"), field);
 
         /// <summary><c>_Noise = (amplitude, frequency, alpha, beta)</c>.</summary>
-        public Float4 ToFloat4() => new Float4(amplitude, frequency, alpha, beta);
+        internal Float4 ToFloat4() => new Float4(amplitude, frequency, alpha, beta);
 
         public bool Equals(NoiseSettings o) => amplitude.Equals(o.amplitude) && frequency.Equals(o.frequency)
             && alpha.Equals(o.alpha) && beta.Equals(o.beta) && octaves == o.octaves;

@@ -7,7 +7,7 @@ namespace GregoryTerrain
     /// (DESIGN sections 1-2, internals.md "The tile layout"). Float methods do what
     /// Shaders/Library/RangeMapping.hlsl does, step for step; double methods are the reference.
     /// </summary>
-    public static class RangeMapping
+    internal static class RangeMapping
     {
         // ---------------------------------------------------------------- local coordinate (eq. 10)
 

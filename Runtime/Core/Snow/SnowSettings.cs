@@ -69,7 +69,7 @@ namespace GregoryTerrain
         /// The march as the shaders get it: <c>(upwind.x, upwind.y, cos F, sin F)</c>, upwind the unit
         /// horizontal direction the snow comes from. With no horizontal motion: <c>(0, 0, 0, 1)</c>.
         /// </summary>
-        public Float4 FallLine
+        internal Float4 FallLine
         {
             get
             {

@@ -22,9 +22,9 @@ namespace GregoryTerrain
         /// <summary><c>h - d</c>, in terrain units.</summary>
         public double Height => h - d;
 
-        public Double2 Min => new Double2(c, d);
-        public Double2 Max => new Double2(g, h);
-        public Double2 Center => new Double2(0.5 * (c + g), 0.5 * (d + h));
+        internal Double2 Min => new Double2(c, d);
+        internal Double2 Max => new Double2(g, h);
+        internal Double2 Center => new Double2(0.5 * (c + g), 0.5 * (d + h));
 
         /// <summary>
         /// Throws <see cref="ArgumentException"/> unless every field is finite, <c>c &lt; g</c>,

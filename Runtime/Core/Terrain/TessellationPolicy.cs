@@ -12,7 +12,7 @@ namespace GregoryTerrain
     /// bit-identical). The functions are also symmetric bit for bit in the two endpoints, because the
     /// neighbour walks the shared edge the other way round.</para>
     /// </summary>
-    public static class TessellationPolicy
+    internal static class TessellationPolicy
     {
         /// <summary>
         /// Factor for an edge <paramref name="edgeLengthPixels"/> long on screen, aiming at

@@ -49,7 +49,7 @@ namespace GregoryTerrain
                 throw new ArgumentException(FormattableString.Invariant($"{name}.uniformFactor ({uniformFactor:R}) must be 0 (adaptive) or lie in [1, 64]"), name + ".uniformFactor");
         }
 
-        public Float4 ToFloat4() => new Float4(tiles, maxFactor, targetPixels, uniformFactor);
+        internal Float4 ToFloat4() => new Float4(tiles, maxFactor, targetPixels, uniformFactor);
 
         public bool Equals(TessellationSettings o) => tiles == o.tiles && maxFactor.Equals(o.maxFactor)
             && targetPixels.Equals(o.targetPixels) && uniformFactor.Equals(o.uniformFactor);
