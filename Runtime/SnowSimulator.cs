@@ -27,6 +27,7 @@ namespace GregoryTerrain
     [DisallowMultipleComponent]
     public sealed class SnowSimulator : MonoBehaviour
     {
+        /// <summary>The terrain material keyword this component turns on while it runs.</summary>
         public const string Keyword = "GT_SNOW";
 
         static class Ids
@@ -76,6 +77,7 @@ namespace GregoryTerrain
         bool _terrainNoise;
         int _terrainVersion, _fieldTerrainVersion = -1;
 
+        /// <summary>The simulation settings. Setting them validates them (ArgumentException naming the field and value); a new resolution starts a new, empty snow map.</summary>
         public SnowSettings Settings
         {
             get => settings;
@@ -96,7 +98,9 @@ namespace GregoryTerrain
             }
         }
 
+        /// <summary>The terrain material (the renderer's): it gets the GT_SNOW keyword and the depth map while the simulation runs.</summary>
         public Material TerrainMaterial { get => terrainMaterial; set { DisableKeyword(); terrainMaterial = value; if (isActiveAndEnabled) Bind(); } }
+        /// <summary>Shaders/Snow/SnowSimulation.compute; set it before enabling.</summary>
         public ComputeShader Simulation { get => simulation; set => simulation = value; }
         /// <summary>Shaders/Snow/SnowField.compute; set it before enabling (its kernel is looked up in OnEnable).</summary>
         public ComputeShader FieldShader { get => fieldShader; set => fieldShader = value; }

@@ -24,6 +24,7 @@ namespace GregoryTerrain
     [Serializable]
     public struct SnowSettings : IEquatable<SnowSettings>
     {
+        /// <summary>Limits <see cref="Validate"/> enforces: the snow map resolution R (64 to 4096) and the exposure march samples (at most 256).</summary>
         public const int MinResolution = 64, MaxResolution = 4096, MaxRaySteps = 256;
 
         /// <summary>Snow map cells per side, R (power of two, 64..4096). The map covers the whole unit square.</summary>
@@ -138,10 +139,14 @@ namespace GregoryTerrain
             };
         }
 
+        /// <inheritdoc/>
         public bool Equals(SnowSettings o) => ExposureEquals(o) && scale.Equals(o.scale) && edgeStrength.Equals(o.edgeStrength) &&
             edgeWidth.Equals(o.edgeWidth) && depthCap.Equals(o.depthCap) && meltRate.Equals(o.meltRate);
+        /// <inheritdoc/>
         public override bool Equals(object obj) => obj is SnowSettings o && Equals(o);
+        /// <inheritdoc/>
         public override int GetHashCode() => HashCode.Combine(resolution, wind, fallSpeed, gravity, scale, depthCap, rayLength, raySteps);
+        /// <inheritdoc/>
         public override string ToString() => FormattableString.Invariant(
             $"snow R {resolution}, s {scale:R}, wind {wind}, fall {fallSpeed:R}, cap {depthCap:R}, melt {meltRate:R}");
     }

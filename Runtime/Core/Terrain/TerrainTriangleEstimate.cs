@@ -27,6 +27,7 @@ namespace GregoryTerrain
         /// </summary>
         public int tilesSampledAtMaxFactor;
 
+        /// <inheritdoc/>
         public override string ToString() => FormattableString.Invariant(
             $"{triangles:N0} triangles ({tilesSampledDrawn} of {tilesSampled} sampled tiles drawn, {tilesSampledAtMaxFactor} at the max factor, {tileCount} tiles)");
     }
