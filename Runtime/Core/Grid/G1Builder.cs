@@ -4,7 +4,7 @@ using System.Globalization;
 namespace GregoryTerrain
 {
     /// <summary>
-    /// Chiyokura-Kimura G1 joins (DESIGN section 1, eq. 7-9). Along a shared edge with edge vectors
+    /// Chiyokura-Kimura G1 joins (the paper's eq. 7-9; internals.md, "The Gregory patch"). Along a shared edge with edge vectors
     /// C0, C1, C2 (differences of consecutive boundary points, in the edge's parameter direction), the
     /// neighbour's cross-boundary vectors A0..A3 and this side's B0..B3 (each the difference from an
     /// edge point to the next point inwards), the two patches share a tangent plane all along the
