@@ -115,7 +115,7 @@ namespace GregoryTerrain
             new ArgumentException(FormattableString.Invariant($"{name}.{field} ({value}) {rule}"), name + "." + field);
 
         /// <summary>Number of float4 in the <c>SnowParams</c> cbuffer.</summary>
-        public const int ParamsFloat4Count = 5;
+        internal const int ParamsFloat4Count = 5;
 
         /// <summary>
         /// The <c>SnowParams</c> cbuffer (internals.md, "Snow"), 5 float4, this order:
@@ -123,7 +123,7 @@ namespace GregoryTerrain
         /// <c>_SnowCatch = (Gn.xyz, scale)</c>, <c>_SnowEdge = (edgeStrength, edgeWidth, exposureSoftness, 0)</c>,
         /// <c>_SnowStep = (dt, depthCap, meltRate, 0)</c>.
         /// </summary>
-        public float[] PackParams(float dt)
+        internal float[] PackParams(float dt)
         {
             Validate();
             if (!GMath.isfinite(dt) || dt < 0f) throw new ArgumentException(FormattableString.Invariant($"dt ({dt:R}) must be finite and >= 0"), nameof(dt));
