@@ -1,5 +1,4 @@
 using System.Collections.Generic;
-using System.Diagnostics;
 using System.IO;
 using System.Linq;
 using System.Reflection;
@@ -54,7 +53,7 @@ namespace GregoryTerrain.Rig.Tests
         [Test]
         public void OnlyTheListedTypesArePublic()
         {
-            BuildUnityApiCheck();
+            UnityApiCheckTests.Build();
             var exported = new SortedSet<string>();
             foreach (string rel in Assemblies)
             {
@@ -98,22 +97,6 @@ namespace GregoryTerrain.Rig.Tests
             if (outer.IsNil) return v == TypeAttributes.Public;
             bool nestedVisible = v == TypeAttributes.NestedPublic || v == TypeAttributes.NestedFamily || v == TypeAttributes.NestedFamORAssem;
             return nestedVisible && IsVisible(md, outer);
-        }
-
-        static void BuildUnityApiCheck()
-        {
-            string project = PackageRoot.Combine("Tools~", "UnityApiCheck", "UnityApiCheck.csproj");
-            var psi = new ProcessStartInfo("dotnet", $"build \"{project}\" -c Release -nologo")
-            {
-                RedirectStandardOutput = true, RedirectStandardError = true, UseShellExecute = false,
-            };
-            psi.Environment["DOTNET_CLI_TELEMETRY_OPTOUT"] = "1";
-            psi.Environment["DOTNET_NOLOGO"] = "1";
-            using var p = Process.Start(psi);
-            string output = p.StandardOutput.ReadToEnd() + p.StandardError.ReadToEnd();
-            p.WaitForExit();
-            Assert.That(p.ExitCode, Is.EqualTo(0), "dotnet build of UnityApiCheck failed:\n" +
-                string.Join("\n", output.Split('\n').Where(l => l.Contains("error")).Distinct().Take(40)));
         }
     }
 }
