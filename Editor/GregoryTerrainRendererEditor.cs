@@ -10,7 +10,7 @@ namespace GregoryTerrain.EditorTools
     /// and the demo's keys while the Scene view has focus: Z control points, X wireframe, C/V factor -/+.
     /// </summary>
     [CustomEditor(typeof(GregoryTerrainRenderer))]
-    public sealed class GregoryTerrainRendererEditor : Editor
+    internal sealed class GregoryTerrainRendererEditor : Editor
     {
         int _selectedPatch = -1, _selectedSlot = -1;
         // The in-view estimate evaluates up to 256 tiles' surface samples on the CPU: at most every

@@ -8,7 +8,7 @@ namespace GregoryTerrain.EditorTools
 {
     /// <summary>Inspector of a patch grid: summary, validation, G1 measure, JSON import/export.</summary>
     [CustomEditor(typeof(PatchGridAsset))]
-    public sealed class PatchGridAssetEditor : Editor
+    internal sealed class PatchGridAssetEditor : Editor
     {
         static readonly GUIContent MeasureLabel = new GUIContent("Measure G1", "Largest position gap and normal angle across shared patch edges (Core's ContinuityMeasure).");
         static readonly GUIContent ImportLabel = new GUIContent("Import JSON...", "Replace the grid with one read from a JSON file. A file that fails to parse changes nothing.");

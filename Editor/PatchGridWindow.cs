@@ -12,7 +12,7 @@ namespace GregoryTerrain.EditorTools
     /// 16-bit little-endian RAW file) with a cancellable progress bar, and enforces G1 with Core's
     /// G1Builder. Every change to the asset is one undo step.
     /// </summary>
-    public sealed class PatchGridWindow : EditorWindow
+    internal sealed class PatchGridWindow : EditorWindow
     {
         static readonly GUIContent AssetLabel = new GUIContent("Patch grid", "The asset the buttons below change.");
         static readonly GUIContent ColumnsLabel = new GUIContent("Columns (n)", "Patches along x.");

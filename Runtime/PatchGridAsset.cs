@@ -74,7 +74,7 @@ namespace GregoryTerrain
         }
 
         /// <summary>The grid as Core's <see cref="PatchGrid"/>. Throws ArgumentException when invalid.</summary>
-        public PatchGrid ToPatchGrid()
+        internal PatchGrid ToPatchGrid()
         {
             string error = CheckSerializedData();
             if (error != null) throw new ArgumentException(error);
@@ -94,7 +94,7 @@ namespace GregoryTerrain
         /// Replaces the data with <paramref name="grid"/> (already validated by PatchGrid). Nothing
         /// changes if the copy fails. Record an undo step before calling it from the editor.
         /// </summary>
-        public void SetGrid(PatchGrid grid)
+        internal void SetGrid(PatchGrid grid)
         {
             if (grid == null) throw new ArgumentNullException(nameof(grid));
             int n = grid.Columns, m = grid.Rows;

@@ -24,7 +24,7 @@ namespace GregoryTerrain.Tests
             return a;
         }
 
-        public static HeightmapFit Fit5x5() => HeightmapFitter.Fit(Samples(129, 129), 129, 129, 5, 5);
+        internal static HeightmapFit Fit5x5() => HeightmapFitter.Fit(Samples(129, 129), 129, 129, 5, 5);
 
         // Stated tolerances: the terrain's heights span about 0.25 and its gaussians are about one
         // patch wide; a 5 x 5 grid must reproduce the samples to 1% of that range at worst (2.5e-3)

@@ -8,7 +8,7 @@ namespace GregoryTerrain
     /// i.e. steps of 1/64), and each side's patch is evaluated on its own boundary (u = 1 | u = 0 for
     /// a vertical edge, v = 1 | v = 0 for a horizontal one) at the same edge parameter.
     /// </summary>
-    public static class ContinuityMeasure
+    internal static class ContinuityMeasure
     {
         public const int DefaultSamplesPerEdge = 65;
 

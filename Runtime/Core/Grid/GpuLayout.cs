@@ -15,7 +15,7 @@ namespace GregoryTerrain
     /// </list>
     /// float4, never float3: a float3 StructuredBuffer has a 12-byte stride in D3D and 16 in Vulkan.
     /// </summary>
-    public static class GpuLayout
+    internal static class GpuLayout
     {
         /// <summary>Floats per float4 element.</summary>
         public const int Float4Size = 4;

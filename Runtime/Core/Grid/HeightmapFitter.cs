@@ -5,7 +5,7 @@ using System.Threading;
 namespace GregoryTerrain
 {
     /// <summary>What <see cref="HeightmapFitter.Fit"/> returns: the G1 grid and how well it reproduces the samples.</summary>
-    public sealed class HeightmapFit
+    internal sealed class HeightmapFit
     {
         public PatchGrid Grid { get; }
         /// <summary>Largest |surface height - sample| over all samples, in terrain units.</summary>
@@ -37,7 +37,7 @@ namespace GregoryTerrain
     /// it finds k = -width ratio, h = 0, constant k, and keeps these cubic slopes).</item>
     /// </list>
     /// </summary>
-    public static class HeightmapFitter
+    internal static class HeightmapFitter
     {
         /// <summary>
         /// Fits the grid; reports progress in [0, 1] and honours cancellation (throws

@@ -9,7 +9,7 @@ namespace GregoryTerrain
     /// extended linearly (<c>s[-1] = 2 s[0] - s[1]</c>), so the slope at the border is the one-sided
     /// difference instead of being forced to 0. Inputs are checked by <see cref="HeightmapFitter"/>.
     /// </summary>
-    public sealed class HeightmapInterpolant
+    internal sealed class HeightmapInterpolant
     {
         readonly double[] heights;
         readonly int width, height;

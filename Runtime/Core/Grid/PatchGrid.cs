@@ -10,7 +10,7 @@ namespace GregoryTerrain
     /// nulls); <see cref="Validate"/> checks the contents (PatchGridValidation.cs). Mirrors
     /// <c>Shaders/Grid/PatchGrid.hlsl</c> for <see cref="FindPatch"/> and <see cref="FindInterval(ReadOnlySpan{float}, float)"/>.
     /// </summary>
-    public sealed partial class PatchGrid
+    internal sealed partial class PatchGrid
     {
         /// <summary>n: patches along x.</summary>
         public int Columns { get; }

@@ -15,7 +15,7 @@ namespace GregoryTerrain
     /// (malformed or truncated JSON, wrong format or version, wrong counts, missing fields, non-finite
     /// numbers, a grid that fails <see cref="PatchGrid.Validate"/>).
     /// </summary>
-    public static class PatchGridJson
+    internal static class PatchGridJson
     {
         public const string FormatName = "gregory-terrain-grid";
         public const int Version = 1;

@@ -3,7 +3,7 @@ using System.Globalization;
 
 namespace GregoryTerrain
 {
-    public sealed partial class PatchGrid
+    internal sealed partial class PatchGrid
     {
         /// <summary>
         /// Throws ArgumentException unless the grid is well formed: grid lines finite, strictly

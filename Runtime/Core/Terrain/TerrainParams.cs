@@ -7,7 +7,7 @@ namespace GregoryTerrain
     /// one fixed order. The rig uploads <see cref="Pack"/> as one block; Unity sets each float4 by name.
     /// Only <see cref="range"/> changes per frame.
     /// </summary>
-    public struct TerrainParams
+    internal struct TerrainParams
     {
         public const int Float4Count = 10;
         public const int Floats = Float4Count * 4;

@@ -10,8 +10,10 @@ namespace GregoryTerrain
     [Serializable]
     public struct TerrainRange : IEquatable<TerrainRange>
     {
+        /// <summary>The range <c>[c, g] x [d, h]</c>: left, bottom, right and top edges in the terrain unit square.</summary>
         public double c, d, g, h;
 
+        /// <summary>The range <c>[c, g] x [d, h]</c>; call <see cref="Validate"/> to check it.</summary>
         public TerrainRange(double c, double d, double g, double h) { this.c = c; this.d = d; this.g = g; this.h = h; }
 
         /// <summary>The whole terrain, <c>[0, 1] x [0, 1]</c>.</summary>
@@ -22,9 +24,9 @@ namespace GregoryTerrain
         /// <summary><c>h - d</c>, in terrain units.</summary>
         public double Height => h - d;
 
-        public Double2 Min => new Double2(c, d);
-        public Double2 Max => new Double2(g, h);
-        public Double2 Center => new Double2(0.5 * (c + g), 0.5 * (d + h));
+        internal Double2 Min => new Double2(c, d);
+        internal Double2 Max => new Double2(g, h);
+        internal Double2 Center => new Double2(0.5 * (c + g), 0.5 * (d + h));
 
         /// <summary>
         /// Throws <see cref="ArgumentException"/> unless every field is finite, <c>c &lt; g</c>,
@@ -53,9 +55,13 @@ namespace GregoryTerrain
                     $"{field} ({value:R}) must lie in [0, 1]"), field);
         }
 
+        /// <inheritdoc/>
         public bool Equals(TerrainRange o) => c.Equals(o.c) && d.Equals(o.d) && g.Equals(o.g) && h.Equals(o.h);
+        /// <inheritdoc/>
         public override bool Equals(object obj) => obj is TerrainRange o && Equals(o);
+        /// <inheritdoc/>
         public override int GetHashCode() => HashCode.Combine(c, d, g, h);
+        /// <inheritdoc/>
         public override string ToString() => FormattableString.Invariant($"[{c:R}, {g:R}] x [{d:R}, {h:R}]");
     }
 }

@@ -3,7 +3,7 @@ using System;
 namespace GregoryTerrain
 {
     /// <summary>Which vertex arithmetic <see cref="ZoomJitter"/> measures.</summary>
-    public enum VertexPath
+    internal enum VertexPath
     {
         /// <summary>The paper's: origin 0, float <c>q = c + o (g - c)</c>, absolute float S(q) as the object position.</summary>
         Plain,
@@ -24,7 +24,7 @@ namespace GregoryTerrain
     /// the tiling and every panned frame. The origin is the one <see cref="RangeOrigin.For"/> picks
     /// for frame 0 and is kept for all frames (a renderer re-snaps only when the view has moved far).
     /// </summary>
-    public static class ZoomJitter
+    internal static class ZoomJitter
     {
         /// <summary>Frames measured after frame 0; frame k pans by (k, k/2) * panPixels.</summary>
         public const int Frames = 8;
