@@ -27,8 +27,16 @@ namespace GregoryTerrain
         public Double2 Center => new Double2(0.5 * (c + g), 0.5 * (d + h));
 
         /// <summary>
+        /// The narrowest range drawn: 1e-9 of the terrain. Local offsets keep ~1e-13 in float
+        /// (precision.md), so 1e-9 across 800 pixels still resolves each pixel about 10 times; the
+        /// controllers stop at 1e-7 (RangeFit.MinWidth). Narrower ranges overflow the view scale.
+        /// </summary>
+        public const double MinSize = 1e-9;
+
+        /// <summary>
         /// Throws <see cref="ArgumentException"/> unless every field is finite, <c>c &lt; g</c>,
-        /// <c>d &lt; h</c> and the range lies inside <c>[0, 1]</c> (touching an edge is allowed).
+        /// <c>d &lt; h</c>, width and height are at least <see cref="MinSize"/> and the range lies
+        /// inside <c>[0, 1]</c> (touching an edge is allowed).
         /// </summary>
         public void Validate(string name = "range")
         {
@@ -42,6 +50,15 @@ namespace GregoryTerrain
             if (!(h > d))
                 throw new ArgumentException(FormattableString.Invariant(
                     $"{name}.h ({h:R}) must be greater than {name}.d ({d:R})"), name);
+            CheckSize(name + " width (g - c)", g - c);
+            CheckSize(name + " height (h - d)", h - d);
+        }
+
+        static void CheckSize(string field, double size)
+        {
+            if (!(size >= MinSize))
+                throw new ArgumentException(FormattableString.Invariant(
+                    $"{field} = {size:R} is narrower than the smallest range drawn, {MinSize:R} (float keeps ~1e-13 of a local offset)"), field);
         }
 
         static void CheckUnit(string field, double value)
