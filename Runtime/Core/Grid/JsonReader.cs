@@ -84,7 +84,6 @@ namespace GregoryTerrain
         {
             SkipSpace();
             int n = PeekChar();
-            if (n < 0) throw Error($"unexpected end of input, expected '{c}' (the file is truncated)");
             if (n != c) throw Error($"unexpected {Describe(n)}, expected '{c}'");
             NextChar();
         }
@@ -96,7 +95,6 @@ namespace GregoryTerrain
             int n = PeekChar();
             if (n == ',') { NextChar(); return true; }
             if (n == close) { NextChar(); return false; }
-            if (n < 0) throw Error($"unexpected end of input, expected ',' or '{close}' (the file is truncated)");
             throw Error($"unexpected {Describe(n)}, expected ',' or '{close}'");
         }
 
@@ -186,16 +184,19 @@ namespace GregoryTerrain
             if (PeekChar() == '.')
             {
                 Take();
-                if (!IsDigit(PeekChar())) throw Error("bad number: expected a digit after '.'");
+                if (!IsDigit(PeekChar())) throw Error($"bad number: unexpected {Describe(PeekChar())} after '.', expected a digit");
                 TakeDigits();
             }
             if (PeekChar() == 'e' || PeekChar() == 'E')
             {
                 Take();
                 if (PeekChar() == '+' || PeekChar() == '-') Take();
-                if (!IsDigit(PeekChar())) throw Error("bad number: expected a digit in the exponent");
+                if (!IsDigit(PeekChar())) throw Error($"bad number: unexpected {Describe(PeekChar())} in the exponent, expected a digit");
                 TakeDigits();
             }
+            int next = PeekChar();
+            if (!(next < 0 || next == ',' || next == ']' || next == '}' || next == ' ' || next == '\t' || next == '\r' || next == '\n'))
+                throw Error($"bad number: unexpected {Describe(next)} after {_token}");
             text = _token.ToString();
             // The grammar is checked; only a magnitude beyond double's range fails to parse (on
             // runtimes that throw rather than return an infinity).
@@ -223,7 +224,7 @@ namespace GregoryTerrain
                 else NextChar();
         }
 
-        static string Describe(int c) => c < 0 ? "end of input" : c < ' ' ? string.Format(CultureInfo.InvariantCulture, "character U+{0:X4}", c) : $"'{(char)c}'";
+        static string Describe(int c) => c < 0 ? "end of input (the file is truncated)" : c < ' ' ? string.Format(CultureInfo.InvariantCulture, "character U+{0:X4}", c) : $"'{(char)c}'";
 
         public FormatException Error(string what) =>
             new FormatException(string.Format(CultureInfo.InvariantCulture, "JSON: {0} (line {1}, column {2}).", what, _line, _column));

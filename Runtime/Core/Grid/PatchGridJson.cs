@@ -171,11 +171,18 @@ namespace GregoryTerrain
             catch (ArgumentException ex) { throw Fail(r, "columns * rows", ex.Message); }
         }
 
+        /// <summary>A number, with a syntax error inside it blamed on <paramref name="path"/>.</summary>
+        static double Number(JsonReader r, string path, out string text)
+        {
+            try { return r.ReadNumber(out text); }
+            catch (FormatException e) { throw new FormatException($"PatchGridJson: {path}: {e.Message}", e); }
+        }
+
         static void Kind(JsonReader r, string path, JsonKind kind)
         {
             JsonKind k = r.Peek();
             if (k == JsonKind.End) throw Fail(r, path, "is missing its value (the file is truncated)");
-            if (k == JsonKind.Invalid) throw r.Error($"{path}: expected a value (JSON has no NaN or Infinity)");
+            if (k == JsonKind.Invalid) throw Fail(r, path, "is not a JSON value (JSON has no NaN or Infinity)");
             if (k != kind) throw Fail(r, path, $"is a {Name(k)}, expected a {Name(kind)}");
         }
 
@@ -193,7 +200,7 @@ namespace GregoryTerrain
         {
             Kind(r, path, JsonKind.Number);
             long line = r.Line, column = r.Column;
-            double d = r.ReadNumber(out text);
+            double d = Number(r, path, out text);
             if (d != Math.Floor(d) || d < int.MinValue || d > int.MaxValue)
                 throw Fail(line, column, path, $"is {InputLimits.Quote(text)}, expected an integer in [{int.MinValue}, {int.MaxValue}]");
             return (int)d;
@@ -203,7 +210,7 @@ namespace GregoryTerrain
         {
             Kind(r, path, JsonKind.Number);
             long line = r.Line, column = r.Column;
-            double d = r.ReadNumber(out string text);
+            double d = Number(r, path, out string text);
             if (!GMath.isfinite(d)) throw Fail(line, column, path, $"is {InputLimits.Quote(text)}, which is not a finite double");
             return d;
         }

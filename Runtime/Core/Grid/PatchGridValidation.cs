@@ -42,6 +42,39 @@ namespace GregoryTerrain
                 }
         }
 
+        /// <summary>
+        /// Why flat serialized data (a PatchGridAsset's fields: 60 doubles per patch, x y z of the 20
+        /// slots) is not a valid grid, or null: the rules of <see cref="Validate"/>, with the GPU's
+        /// patch limit checked before anything is allocated. The message names the field and value.
+        /// </summary>
+        public static string SerializedDataError(int columns, int rows, double[] xLines, double[] yLines, double[] controlPoints)
+        {
+            try
+            {
+                GpuLayout.CheckSize(columns, rows);
+                long expected = (long)columns * rows * 3 * GregoryPatch.SlotCount;
+                if (controlPoints == null || controlPoints.Length != expected)
+                    return F("controlPoints.Length = {0}, expected {1} (= 60 x {2} x {3})", controlPoints?.Length ?? 0, expected, columns, rows);
+                var patches = new GregoryPatch[columns * rows];
+                for (int p = 0; p < patches.Length; p++)
+                {
+                    var patch = new GregoryPatch();
+                    for (int k = 0; k < GregoryPatch.SlotCount; k++)
+                    {
+                        long o = ((long)p * GregoryPatch.SlotCount + k) * 3;
+                        patch[k] = new Double3(controlPoints[o], controlPoints[o + 1], controlPoints[o + 2]);
+                    }
+                    patches[p] = patch;
+                }
+                new PatchGrid(columns, rows, xLines, yLines, patches).Validate();
+                return null;
+            }
+            catch (ArgumentException e)
+            {
+                return e.Message;
+            }
+        }
+
         static string Name(int i, int j) => string.Format(CultureInfo.InvariantCulture, "patch ({0}, {1})", i, j);
 
         static void ValidateLines(double[] lines, string field)

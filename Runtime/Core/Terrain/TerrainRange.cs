@@ -27,11 +27,11 @@ namespace GregoryTerrain
         public Double2 Center => new Double2(0.5 * (c + g), 0.5 * (d + h));
 
         /// <summary>
-        /// The narrowest range drawn: 1e-9 of the terrain. Local offsets keep ~1e-13 in float
-        /// (precision.md), so 1e-9 across 800 pixels still resolves each pixel about 10 times; the
-        /// controllers stop at 1e-7 (RangeFit.MinWidth). Narrower ranges overflow the view scale.
+        /// The narrowest range drawn: 1e-10 of the terrain. Local offsets keep ~1e-13 in float
+        /// (precision.md), about one pixel of an 800-pixel view at this width; narrower views repeat
+        /// vertices and then overflow the view scale. The controllers stop at 1e-7 (RangeFit.MinWidth).
         /// </summary>
-        public const double MinSize = 1e-9;
+        public const double MinSize = 1e-10;
 
         /// <summary>
         /// Throws <see cref="ArgumentException"/> unless every field is finite, <c>c &lt; g</c>,

@@ -48,7 +48,8 @@ namespace GregoryTerrain.Rig
 
         public string String(string name, string fallback = null)
         {
-            if (_values.TryGetValue(name, out var v)) return v;
+            if (_values.TryGetValue(name, out var v))
+                return v.Length > 0 ? v : throw new UsageException($"--{name} needs a value");
             if (fallback != null) return fallback;
             throw new UsageException($"--{name} is required");
         }

@@ -30,10 +30,14 @@ namespace GregoryTerrain.Rig
             Register();
             if (argv.Length == 0 || !Commands.TryGetValue(argv[0], out var cmd))
             {
-                if (argv.Length > 0) Console.Error.WriteLine($"gt-cli: unknown command '{InputLimits.Quote(argv[0])}'");
+                if (argv.Length > 0)
+                {
+                    Console.Error.WriteLine($"gt-cli: unknown command '{InputLimits.Quote(argv[0])}' (commands: {string.Join(", ", Commands.Keys)}; gt-cli alone lists them)");
+                    return ExitUsage;
+                }
                 Console.Error.WriteLine("usage: gt-cli COMMAND [options]");
                 foreach (var kv in Commands) Console.Error.WriteLine($"  {kv.Key,-12} {kv.Value.Help}");
-                return argv.Length == 0 ? 0 : ExitUsage;
+                return 0;
             }
             try
             {
