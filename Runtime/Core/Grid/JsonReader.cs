@@ -25,6 +25,8 @@ namespace GregoryTerrain
         readonly TextReader _reader;
         readonly char[] _buffer = new char[1 << 16];
         readonly StringBuilder _token = new StringBuilder();
+        readonly char[] _number = new char[MaxNumberLength];
+        int _numberLength;
         int _length, _index;
         long _line = 1, _column = 1;
 
@@ -169,14 +171,14 @@ namespace GregoryTerrain
         static int Hex(char c) => c >= '0' && c <= '9' ? c - '0' : c >= 'a' && c <= 'f' ? c - 'a' + 10 : c >= 'A' && c <= 'F' ? c - 'A' + 10 : -1;
 
         /// <summary>
-        /// A number, checked against JSON's grammar, as a double; <paramref name="text"/> is its
+        /// A number, checked against JSON's grammar, as a double; <see cref="NumberText"/> is its
         /// literal (at most <see cref="MaxNumberLength"/> characters). A literal beyond double's
-        /// range gives an infinity: the caller names it.
+        /// range gives an infinity: the caller names it. Parsed from a fixed buffer: no allocation.
         /// </summary>
-        public double ReadNumber(out string text)
+        public double ReadNumber()
         {
             SkipSpace();
-            _token.Clear();
+            _numberLength = 0;
             if (PeekChar() == '-') Take();
             if (PeekChar() == '0') Take();
             else if (IsDigit(PeekChar())) TakeDigits();
@@ -196,21 +198,23 @@ namespace GregoryTerrain
             }
             int next = PeekChar();
             if (!(next < 0 || next == ',' || next == ']' || next == '}' || next == ' ' || next == '\t' || next == '\r' || next == '\n'))
-                throw Error($"bad number: unexpected {Describe(next)} after {_token}");
-            text = _token.ToString();
+                throw Error($"bad number: unexpected {Describe(next)} after {NumberText}");
             // The grammar is checked; only a magnitude beyond double's range fails to parse (on
             // runtimes that throw rather than return an infinity).
-            if (!double.TryParse(text, NumberStyles.Float, CultureInfo.InvariantCulture, out double d))
-                d = text[0] == '-' ? double.NegativeInfinity : double.PositiveInfinity;
+            if (!double.TryParse(new ReadOnlySpan<char>(_number, 0, _numberLength), NumberStyles.Float, CultureInfo.InvariantCulture, out double d))
+                d = _number[0] == '-' ? double.NegativeInfinity : double.PositiveInfinity;
             return d;
         }
+
+        /// <summary>The literal of the last number read (for messages).</summary>
+        public string NumberText => new string(_number, 0, _numberLength);
 
         void TakeDigits() { while (IsDigit(PeekChar())) Take(); }
 
         void Take()
         {
-            if (_token.Length >= MaxNumberLength) throw Error($"a number longer than {MaxNumberLength} characters");
-            _token.Append(NextChar());
+            if (_numberLength >= MaxNumberLength) throw Error($"a number longer than {MaxNumberLength} characters");
+            _number[_numberLength++] = NextChar();
         }
 
         static bool IsDigit(int c) => c >= '0' && c <= '9';

@@ -172,13 +172,13 @@ namespace GregoryTerrain
         }
 
         /// <summary>A number, with a syntax error inside it blamed on <paramref name="path"/>.</summary>
-        static double Number(JsonReader r, string path, out string text)
+        static double Number(JsonReader r, FieldPath path)
         {
-            try { return r.ReadNumber(out text); }
+            try { return r.ReadNumber(); }
             catch (FormatException e) { throw new FormatException($"PatchGridJson: {path}: {e.Message}", e); }
         }
 
-        static void Kind(JsonReader r, string path, JsonKind kind)
+        static void Kind(JsonReader r, FieldPath path, JsonKind kind)
         {
             JsonKind k = r.Peek();
             if (k == JsonKind.End) throw Fail(r, path, "is missing its value (the file is truncated)");
@@ -200,18 +200,19 @@ namespace GregoryTerrain
         {
             Kind(r, path, JsonKind.Number);
             long line = r.Line, column = r.Column;
-            double d = Number(r, path, out text);
+            double d = Number(r, path);
+            text = r.NumberText;
             if (d != Math.Floor(d) || d < int.MinValue || d > int.MaxValue)
                 throw Fail(line, column, path, $"is {InputLimits.Quote(text)}, expected an integer in [{int.MinValue}, {int.MaxValue}]");
             return (int)d;
         }
 
-        static double ReadDouble(JsonReader r, string path)
+        static double ReadDouble(JsonReader r, FieldPath path)
         {
             Kind(r, path, JsonKind.Number);
             long line = r.Line, column = r.Column;
-            double d = Number(r, path, out string text);
-            if (!GMath.isfinite(d)) throw Fail(line, column, path, $"is {InputLimits.Quote(text)}, which is not a finite double");
+            double d = Number(r, path);
+            if (!GMath.isfinite(d)) throw Fail(line, column, path, $"is {InputLimits.Quote(r.NumberText)}, which is not a finite double");
             return d;
         }
 
@@ -226,7 +227,7 @@ namespace GregoryTerrain
                 {
                     if (values.Count > GpuLayout.MaxPatches)
                         throw Fail(r, path, $"has more than {GpuLayout.MaxPatches + 1} numbers (the GPU's limit of {GpuLayout.MaxPatches} patches + 1)");
-                    values.Add(ReadDouble(r, $"{path}[{values.Count}]"));
+                    values.Add(ReadDouble(r, new FieldPath(path, 0, values.Count)));
                 } while (r.Continues(']'));
             return values.ToArray();
         }
@@ -246,7 +247,7 @@ namespace GregoryTerrain
             do
             {
                 int p = patches.Count;
-                string path = columns > 0 ? $"patches[{p}] (patch ({p % columns}, {p / columns}))" : $"patches[{p}]";
+                var path = new FieldPath("patches", columns, p);
                 if (p >= limit) throw Fail(r, "patches", $"has more than {limit} patches, the most the GPU buffers hold");
                 Kind(r, path, JsonKind.Array);
                 r.Expect('[');
@@ -256,7 +257,7 @@ namespace GregoryTerrain
                     do
                     {
                         if (k >= GregoryPatch.SlotCount) throw Fail(r, path, $"has more than {GregoryPatch.SlotCount} points");
-                        ReadPoint(r, $"{path}[{k}]", c);
+                        ReadPoint(r, path.Child(k), c);
                         patch[k++] = new Double3(c[0], c[1], c[2]);
                     } while (r.Continues(']'));
                 if (k != GregoryPatch.SlotCount) throw Fail(r, path, $"has {k} points, need {GregoryPatch.SlotCount}");
@@ -265,7 +266,7 @@ namespace GregoryTerrain
             return patches;
         }
 
-        static void ReadPoint(JsonReader r, string path, double[] c)
+        static void ReadPoint(JsonReader r, FieldPath path, double[] c)
         {
             Kind(r, path, JsonKind.Array);
             r.Expect('[');
@@ -274,15 +275,46 @@ namespace GregoryTerrain
                 do
                 {
                     if (k >= 3) throw Fail(r, path, "has more than 3 numbers, need x, y, z");
-                    c[k] = ReadDouble(r, $"{path}[{k}]");
+                    c[k] = ReadDouble(r, path.Child(k));
                     k++;
                 } while (r.Continues(']'));
             if (k != 3) throw Fail(r, path, $"has {k} numbers, need 3");
         }
 
-        static FormatException Fail(JsonReader r, string path, string what) => Fail(r.Line, r.Column, path, what);
+        static FormatException Fail(JsonReader r, FieldPath path, string what) => Fail(r.Line, r.Column, path, what);
 
-        static FormatException Fail(long line, long column, string path, string what) =>
+        static FormatException Fail(long line, long column, FieldPath path, string what) =>
             new FormatException(string.Format(CultureInfo.InvariantCulture, "PatchGridJson: {0} {1} (line {2}, column {3}).", path, what, line, column));
+    }
+
+    /// <summary>
+    /// Where a value sits in a grid file, for messages: "xLines[3]" or "patches[7] (patch (1, 2))[5][2]".
+    /// A value type formatted only when a message needs it, so reading costs no string per number.
+    /// </summary>
+    internal readonly struct FieldPath
+    {
+        readonly string _name;
+        readonly int _columns, _index, _point, _coord;
+
+        public FieldPath(string name, int columns, int index, int point = -1, int coord = -1)
+        {
+            _name = name; _columns = columns; _index = index; _point = point; _coord = coord;
+        }
+
+        public static implicit operator FieldPath(string name) => new FieldPath(name, 0, -1);
+
+        /// <summary>The path one level down (the next index).</summary>
+        public FieldPath Child(int k) => _point < 0 ? new FieldPath(_name, _columns, _index, k) : new FieldPath(_name, _columns, _index, _point, k);
+
+        public override string ToString()
+        {
+            var sb = new StringBuilder(_name);
+            if (_index >= 0) sb.Append('[').Append(_index.ToString(CultureInfo.InvariantCulture)).Append(']');
+            if (_index >= 0 && _columns > 0)
+                sb.Append(string.Format(CultureInfo.InvariantCulture, " (patch ({0}, {1}))", _index % _columns, _index / _columns));
+            if (_point >= 0) sb.Append('[').Append(_point.ToString(CultureInfo.InvariantCulture)).Append(']');
+            if (_coord >= 0) sb.Append('[').Append(_coord.ToString(CultureInfo.InvariantCulture)).Append(']');
+            return sb.ToString();
+        }
     }
 }

@@ -11,10 +11,13 @@ namespace GregoryTerrain.Rig
         public static int Run(Args a)
         {
             string path = a.String("grid");
+            var watch = System.Diagnostics.Stopwatch.StartNew();
             PatchGrid grid = PatchGridJson.ReadFile(path);
+            double read = watch.Elapsed.TotalSeconds;
             var warnings = PatchGridGeometry.Warnings(grid);
             foreach (string w in warnings) Console.WriteLine("warning: " + w);
-            Console.WriteLine($"valid grid: {grid.Columns} x {grid.Rows} = {grid.PatchCount} patches, {warnings.Count} warning line(s) -> {InputLimits.Quote(path)}");
+            Console.WriteLine(FormattableString.Invariant(
+                $"valid grid: {grid.Columns} x {grid.Rows} = {grid.PatchCount} patches, {warnings.Count} warning line(s) -> {InputLimits.Quote(path)} (read and validated in {read:F2} s, warnings in {watch.Elapsed.TotalSeconds - read:F2} s)"));
             return 0;
         }
     }
