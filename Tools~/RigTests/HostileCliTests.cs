@@ -140,6 +140,12 @@ namespace GregoryTerrain.Rig.Tests
                 all.Add(Usage($"range '{bad}'", new[] { "pack", "--grid", grid, "--range", bad, "--out", o }, "--range"));
             foreach (string bad in new[] { "0.01,16,2", "0.01,16,2,x", "0.01,inf,2,2" })
                 all.Add(Usage($"noise '{bad}'", new[] { "pack", "--grid", grid, "--noise", bad, "--out", o }, "--noise"));
+            foreach (string s in new[] { "2000000000", "-5", "1" })
+                all.Add(Usage($"demo-grid samples {s}", new[] { "demo-grid", "--samples", s, "--out", Path.Combine(_dir, "demo.json") }, "--samples", s));
+            all.Add(Data("demo-grid 100000 x 100000 patches", new[] { "demo-grid", "--columns", "100000", "--rows", "100000", "--out", Path.Combine(_dir, "demo.json") }, "columns * rows", "10000000000"));
+            all.Add(Usage("jitter width 'x'", new[] { "jitter", "--widths", "1e-2,x" }, "--widths", "'x'"));
+            foreach (string w in new[] { "1e-300", "0", "2" })
+                all.Add(Data($"jitter width {w}", new[] { "jitter", "--widths", w }, "width", w == "1e-300" ? "1E-300" : w));
             foreach (string cmd in new[] { "eval", "pack", "estimate", "jitter", "unity-asset", "error", "bench-plan", "bench-report", "snow-scene", "demo-grid" })
                 all.Add(Usage($"{cmd} with a mistyped option", new[] { cmd, "--no-such-option", "1" }, "unknown option --no-such-option"));
             for (int k = 0; k < all.Count; k++)

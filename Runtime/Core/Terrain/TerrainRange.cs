@@ -54,7 +54,8 @@ namespace GregoryTerrain
             CheckSize(name + " height (h - d)", h - d);
         }
 
-        static void CheckSize(string field, double size)
+        /// <summary>Throws ArgumentException naming <paramref name="field"/> unless <paramref name="size"/> is at least <see cref="MinSize"/>.</summary>
+        public static void CheckSize(string field, double size)
         {
             if (!(size >= MinSize))
                 throw new ArgumentException(FormattableString.Invariant(
