@@ -220,7 +220,7 @@ namespace GregoryTerrain
                     return $"controlPoints[{k}] (patch {k / DoublesPerPatch}, slot {k % DoublesPerPatch / 3}) = " +
                            controlPoints[k].ToString(CultureInfo.InvariantCulture) + ", must be finite";
             }
-            return null;
+            return PatchGrid.SerializedDataError(columns, rows, xLines, yLines, controlPoints);
         }
 
         static string CheckLines(string field, double[] lines, int cells)

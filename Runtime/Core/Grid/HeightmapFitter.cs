@@ -47,7 +47,7 @@ namespace GregoryTerrain
             IProgress<float> progress = null, CancellationToken cancellationToken = default)
         {
             CheckHeights(heights, width, height);
-            PatchGrid.CheckShape(columns, rows);
+            GpuLayout.CheckSize(columns, rows);   // the GPU's patch limit, before anything is allocated
             var interp = new HeightmapInterpolant(heights, width, height);
             double[] xl = PatchGrid.UniformLines(columns), yl = PatchGrid.UniformLines(rows);
             PatchGrid grid = PatchGrid.CreateFlat(columns, rows, xl, yl);

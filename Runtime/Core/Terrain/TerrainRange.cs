@@ -29,8 +29,16 @@ namespace GregoryTerrain
         internal Double2 Center => new Double2(0.5 * (c + g), 0.5 * (d + h));
 
         /// <summary>
+        /// The narrowest range drawn: 1e-10 of the terrain. Local offsets keep ~1e-13 in float
+        /// (precision.md), about one pixel of an 800-pixel view at this width; narrower views repeat
+        /// vertices and then overflow the view scale. The controllers stop at 1e-7 (RangeFit.MinWidth).
+        /// </summary>
+        public const double MinSize = 1e-10;
+
+        /// <summary>
         /// Throws <see cref="ArgumentException"/> unless every field is finite, <c>c &lt; g</c>,
-        /// <c>d &lt; h</c> and the range lies inside <c>[0, 1]</c> (touching an edge is allowed).
+        /// <c>d &lt; h</c>, width and height are at least <see cref="MinSize"/> and the range lies
+        /// inside <c>[0, 1]</c> (touching an edge is allowed).
         /// </summary>
         public void Validate(string name = "range")
         {
@@ -44,6 +52,16 @@ namespace GregoryTerrain
             if (!(h > d))
                 throw new ArgumentException(FormattableString.Invariant(
                     $"{name}.h ({h:R}) must be greater than {name}.d ({d:R})"), name);
+            CheckSize(name + " width (g - c)", g - c);
+            CheckSize(name + " height (h - d)", h - d);
+        }
+
+        /// <summary>Throws ArgumentException naming <paramref name="field"/> unless <paramref name="size"/> is at least <see cref="MinSize"/>.</summary>
+        public static void CheckSize(string field, double size)
+        {
+            if (!(size >= MinSize))
+                throw new ArgumentException(FormattableString.Invariant(
+                    $"{field} = {size:R} is narrower than the smallest range drawn, {MinSize:R} (float keeps ~1e-13 of a local offset)"), field);
         }
 
         static void CheckUnit(string field, double value)

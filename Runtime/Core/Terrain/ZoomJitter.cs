@@ -44,6 +44,7 @@ namespace GregoryTerrain
             if (grid == null) throw new ArgumentNullException(nameof(grid));
             if (!GMath.isfinite(width) || !(width > 0.0) || width > 1.0)
                 throw new ArgumentException(FormattableString.Invariant($"width ({width:R}) must lie in (0, 1]"), nameof(width));
+            TerrainRange.CheckSize(nameof(width), width);
             if (!GMath.isfinite(pixels) || !(pixels >= 1.0))
                 throw new ArgumentException(FormattableString.Invariant($"pixels ({pixels:R}) must be at least 1"), nameof(pixels));
             if (factor < 1 || factor > 64)
