@@ -83,5 +83,23 @@ namespace GregoryTerrain.Tests
             var ex = Assert.Throws<ArgumentException>(() => HeightmapVoids.Fill(a, 2, 2));
             Assert.That(ex.Message, Does.Contain("all 4 samples are voids"));
         }
+
+        [Test]
+        public void UnityTerrainHeightsBecomeTerrainUnitsOfItsWidth()
+        {
+            // A 2 x 2 Unity heightmap [z, x] of fractions, 500 m wide, 600 m high, 400 m deep.
+            var f = new float[,] { { 0f, 0.5f }, { 1f, 0.25f } };
+            double[] z = TerrainHeights.FromUnity(f, 500, 600, 400);
+            Assert.That(z, Is.EqualTo(new[] { 0.0, 0.5 * 600 / 500, 600.0 / 500, 0.25 * 600 / 500 }).Within(1e-15));
+            var ex = Assert.Throws<ArgumentException>(() => TerrainHeights.FromUnity(f, 500, 0, 400));
+            Assert.That(ex.Message, Does.Contain("size.y = 0"));
+            // Round trip through a fit: the fitted grid reproduces a smooth terrain's heights.
+            int n = 65;
+            var g = new float[n, n];
+            for (int r = 0; r < n; r++)
+                for (int c = 0; c < n; c++) g[r, c] = (float)(0.5 + 0.4 * Math.Sin(3.0 * c / (n - 1)) * Math.Cos(2.0 * r / (n - 1)));
+            HeightmapFit fit = HeightmapFitter.Fit(TerrainHeights.FromUnity(g, 1000, 200, 1000), n, n, 8, 8);
+            Assert.That(fit.MaxError * 1000, Is.LessThan(0.01), "metres: a smooth terrain converts to within 1 cm");
+        }
     }
 }
