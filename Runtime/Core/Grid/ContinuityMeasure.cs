@@ -79,7 +79,7 @@ namespace GregoryTerrain
     }
 
     /// <summary>What <see cref="ContinuityMeasure.Measure"/> found: the largest position gap and normal angle (degrees) over the shared edges.</summary>
-    public readonly struct ContinuityResult
+    internal readonly struct ContinuityResult
     {
         public readonly double MaxPositionGap, MaxNormalAngleDegrees;
         public ContinuityResult(double maxPositionGap, double maxNormalAngleDegrees)

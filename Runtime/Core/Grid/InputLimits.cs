@@ -10,7 +10,7 @@ namespace GregoryTerrain
     /// lists the messages). Patch counts live in <see cref="GpuLayout.CheckSize"/>, range sizes in
     /// <see cref="TerrainRange.Validate"/>; this file holds the rest.
     /// </summary>
-    public static class InputLimits
+    internal static class InputLimits
     {
         /// <summary>The largest magnitude a float32 holds (what the GPU buffers carry).</summary>
         public const double MaxFloat = float.MaxValue;

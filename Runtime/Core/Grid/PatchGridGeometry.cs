@@ -10,7 +10,7 @@ namespace GregoryTerrain
     /// patch is mirrored or flipped, so lighting and culling turn it inside out). Warnings, not
     /// errors: the grid loads and draws; the inspector and <c>gt-cli check</c> show them.
     /// </summary>
-    public static class PatchGridGeometry
+    internal static class PatchGridGeometry
     {
         /// <summary>Warnings listed by <see cref="Warnings"/> before the rest are only counted.</summary>
         public const int MaxListed = 20;
