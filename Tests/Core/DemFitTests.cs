@@ -86,7 +86,7 @@ namespace GregoryTerrain.Tests
         }
 
         /// <summary>Max |grid - sample| by evaluating the Gregory patches themselves, and whether any z is NaN.</summary>
-        public static double GridMaxError(PatchGrid g, double[] z, int w, int h)
+        internal static double GridMaxError(PatchGrid g, double[] z, int w, int h)
         {
             double max = 0;
             for (int r = 0; r < h; r++)
@@ -103,7 +103,7 @@ namespace GregoryTerrain.Tests
         }
 
         /// <summary>The grid with z divided by the crop's width in metres, so x, y, z share units for angles.</summary>
-        public static PatchGrid InUnitSquareUnits(PatchGrid g, double widthMetres)
+        internal static PatchGrid InUnitSquareUnits(PatchGrid g, double widthMetres)
         {
             PatchGrid s = g.Clone();
             foreach (GregoryPatch p in s.Patches)

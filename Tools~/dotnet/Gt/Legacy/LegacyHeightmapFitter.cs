@@ -7,7 +7,7 @@ using System.Threading;
 namespace GregoryTerrain.Rig.Legacy
 {
     /// <summary>What <see cref="HeightmapFitter.Fit"/> returns: the G1 grid and how well it reproduces the samples.</summary>
-    public sealed class LegacyHeightmapFit
+    internal sealed class LegacyHeightmapFit
     {
         public PatchGrid Grid { get; }
         /// <summary>Largest |surface height - sample| over all samples, in terrain units.</summary>
@@ -39,7 +39,7 @@ namespace GregoryTerrain.Rig.Legacy
     /// it finds k = -width ratio, h = 0, constant k, and keeps these cubic slopes).</item>
     /// </list>
     /// </summary>
-    public static class LegacyHeightmapFitter
+    internal static class LegacyHeightmapFitter
     {
         /// <summary>
         /// Fits the grid; reports progress in [0, 1] and honours cancellation (throws

@@ -10,7 +10,7 @@ namespace GregoryTerrain.Rig.Legacy
     /// extended linearly (<c>s[-1] = 2 s[0] - s[1]</c>), so the slope at the border is the one-sided
     /// difference instead of being forced to 0. Inputs are checked by <see cref="HeightmapFitter"/>.
     /// </summary>
-    public sealed class LegacyHeightmapInterpolant
+    internal sealed class LegacyHeightmapInterpolant
     {
         readonly double[] heights;
         readonly int width, height;
