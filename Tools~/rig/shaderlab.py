@@ -41,6 +41,7 @@ import subprocess
 import sys
 import tempfile
 import threading
+import time
 
 RIG_DIR = os.path.dirname(os.path.abspath(__file__))
 DEFAULT_PKG = os.path.dirname(os.path.dirname(RIG_DIR))
@@ -213,6 +214,8 @@ def parse_requirements(outer, where):
         return []
     if len(found) > 1:
         raise ValueError(f"{where}: more than one PackageRequirements block")
+    if outer[:found[0].start()].strip():
+        raise ValueError(f"{where}: PackageRequirements must come before all other declarations")
     body = found[0].group(1)
     reqs, pos = [], 0
     item = re.compile(r'\s*"([^"]+)"(?:\s*:\s*"([^"]*)")?\s*,?')
@@ -315,7 +318,11 @@ def shader_target(program, default):
     return default
 
 
-def shader_cases(subs, shader_path, tmp, tag):
+def select(variant_list, which):
+    return variant_list[:1] if which == "base" else variant_list
+
+
+def shader_cases(subs, shader_path, tmp, tag, which="all"):
     """(Case list, list of (subshader, pass) compiled) for the given SubShaders."""
     cases = []
     for s in subs:
@@ -330,24 +337,24 @@ def shader_cases(subs, shader_path, tmp, tag):
                 f.write(f'#line 1 "{shader_path}"\n' + p.program)
             stages = [(PRAGMA_STAGES[a[0]], a[1]) for a in pragmas(p.program) if len(a) >= 2 and a[0] in PRAGMA_STAGES]
             target = shader_target(p.program, 25)
-            for keywords in variants(p.program):
+            for keywords in select(variants(p.program), which):
                 for stage, entry in stages:
                     label = f"{label0} variant {variant_name(keywords)} stage {stage} ({entry})"
                     cases.append(Case(s.pipeline, label, src, stage, entry, keywords, target, (s.pipeline, label0)))
     return cases
 
 
-def compute_cases(pkg):
+def compute_cases(pkg, which="all"):
     cases = []
     for path in sorted(glob.glob(os.path.join(pkg, "Shaders", "**", "*.compute"), recursive=True)):
         program = strip_comments(open(path, encoding="utf-8").read())
         rel = os.path.relpath(path, pkg)
         kernels = [a[1] for a in pragmas(program) if len(a) >= 2 and a[0] == "kernel"]
         target = shader_target(program, COMPUTE_TARGET)
-        for keywords in variants(program):
+        for keywords in select(variants(program), which):
             for k in kernels:
                 label = f"Compute {rel} variant {variant_name(keywords)} kernel {k}"
-                cases.append(Case("Compute", label, path, "comp", k, keywords, target, ("Compute", rel)))
+                cases.append(Case("Compute", label, path, "comp", k, keywords, target, ("Compute", "Compute " + rel)))
     return cases
 
 
@@ -493,6 +500,7 @@ class Rig:
     def __init__(self, pkg, shaderlib, tmp, jobs, counts):
         self.pkg, self.shaderlib, self.tmp, self.jobs, self.counts = pkg, shaderlib, tmp, jobs, counts
         self.cache, self.lock, self.serial = {}, threading.Lock(), 0
+        self.preprocessed = 0
         self.resolved = {}   # Case.key() -> (result, logical paths of the files it included), all libraries visible
 
     def include_root(self, name, packages):
@@ -526,11 +534,15 @@ class Rig:
         return result
 
     def preprocess_and_compile(self, case, includes):
+        with self.lock:
+            self.preprocessed += 1
         cmd = (["glslangValidator", "-D", "-E", "-S", case.stage, "-e", case.entry]
                + [f"-I{d}" for d in includes] + [f"-D{d}" for d in case.defines()] + [case.source])
         p = subprocess.run(cmd, capture_output=True, text=True)
         if p.returncode != 0:
             lines = [l for l in (p.stdout + p.stderr).splitlines() if "ERROR" in l or "error" in l]
+            for d in includes:
+                lines = [l.replace(d + "/", "") for l in lines]
             return ("fail", lines or ["preprocessing failed"], [], None), None
         text = p.stdout
         # Logical paths in #line, so the same code gives the same text whatever the root.
@@ -636,7 +648,7 @@ def print_counts(cases, results):
     for (group, variant), stages in rows.items():
         total = sum(int(c.lstrip("~")) for _, _, c in stages)
         cells = "  ".join(f"{s} {c}" if s != "comp" else f"{e} {c}" for s, e, c in stages)
-        print(f"cost {group[0]} {group[1]} variant {variant}: {cells}  total {total}")
+        print(f"cost {group[1]} variant {variant}: {cells}  total {total}")
 
 
 def main(argv=None):
@@ -647,6 +659,10 @@ def main(argv=None):
     ap.add_argument("--counts", action="store_true", help="print SPIR-V instruction counts per pass, variant and stage")
     ap.add_argument("--jobs", type=int, default=2, help="parallel compiles (default 2)")
     ap.add_argument("--pipeline", default=None, help="comma-separated pipelines to check (URP,HDRP,Builtin,Compute; default all)")
+    ap.add_argument("--variants", choices=["all", "base"], default="all",
+                    help="all: none, each keyword alone, the effects together, the effects with the other sets' first keywords; base: none")
+    ap.add_argument("--selection-only", action="store_true",
+                    help="projects check: print which SubShaders and passes each project kind uses, compile nothing")
     ap.add_argument("--quiet", action="store_true", help="print failures, limits and summaries only")
     args = ap.parse_args(argv)
 
@@ -672,11 +688,11 @@ def main(argv=None):
         print(f"shaderlab: error: {e}", file=sys.stderr)
         return 2
 
-    failed = False
+    failed, started = False, time.time()
     with tempfile.TemporaryDirectory(prefix="gt-shaderlab-") as tmp:
         rig = Rig(pkg, shaderlib, tmp, args.jobs, args.counts)
         if args.check in ("all", "pipelines"):
-            cases = shader_cases(subs, shader, tmp, "all") + compute_cases(pkg)
+            cases = shader_cases(subs, shader, tmp, "all", args.variants) + compute_cases(pkg, args.variants)
             if args.pipeline:
                 cases = [c for c in cases if c.pipeline in args.pipeline.split(",")]
             results = rig.run(cases, rig.include_root("all", LIBRARIES))
@@ -695,18 +711,22 @@ def main(argv=None):
                 for s in subs:
                     why = requirements_met(s.requirements, installed)
                     if why:
-                        skipped.append(f"{s.index} ({why})")
+                        skipped.append(f"{s.index} {s.pipeline} ({why})")
                         continue
                     passes = []
                     for p in s.passes:
                         pwhy = requirements_met(p.requirements, installed)
                         if pwhy:
-                            skipped.append(f"{s.index}/{p.name} ({pwhy})")
+                            skipped.append(f"{s.index} {s.pipeline} pass {p.name} ({pwhy})")
                         else:
                             passes.append(p)
-                    used.append(str(s.index))
+                    used.append(f"{s.index} {s.pipeline}")
                     kept.append(SubShader(s.index, s.pipeline, s.requirements, passes))
-                cases = shader_cases(kept, shader, tmp, kind)
+                if args.selection_only:
+                    print(f"project {kind}: subshaders used {len(used)} ({', '.join(used) or 'none'}), skipped "
+                          f"{', '.join(skipped) or 'none'}; passes {sum(len(s.passes) for s in kept)}")
+                    continue
+                cases = shader_cases(kept, shader, tmp, kind, args.variants)
                 results = rig.run(cases, rig.include_root(kind, installed), set(installed) | {PACKAGE_NAME})
                 errors = [(c, r) for c, r in zip(cases, results) if r[0] == "fail"]
                 limits = sum(1 for r in results if r[0] == "limit")
@@ -723,6 +743,8 @@ def main(argv=None):
                       f"cases {len(cases)}, compile errors {len(errors)} (in {len(failing_passes)} passes"
                       f"{': ' + ', '.join(failing_passes) if failing_passes else ''}), glslang-limit {limits}")
                 failed |= bool(errors)
+        print(f"shaderlab: {rig.preprocessed} cases preprocessed, {len(rig.cache)} distinct programs compiled, "
+              f"{time.time() - started:.0f} s with {args.jobs} jobs")
     return 1 if failed else 0
 
 
