@@ -27,9 +27,15 @@ Checks (--check, default all):
              SubShader or Pass whose PackageRequirements name an absent package (or a version or
              Unity version outside its ranges) is skipped, every other one compiles with only that
              project's packages visible; "project <kind>: subshaders used ..., compile errors N".
---counts prints SPIR-V instruction counts per pass, variant and stage (see count_instructions).
---package DIR checks another copy of the package (default: the one holding this script).
-Exit 1 on any failure (a project's compile errors included).
+             Project runs reuse the pipelines check's result for a case whose included files all lie
+             in the project's packages (same preprocessed text); the rest are compiled again.
+             --selection-only: print the SubShaders each project kind uses, compile nothing.
+--counts     SPIR-V instruction counts per pass, variant and stage ("cost ..." lines; see count_instructions).
+--package DIR  check another copy of the package (default: the one holding this script); the
+             libraries default to DIR/../shared/unity-shaderlib (--shaderlib DIR to override).
+--variants base  only the no-keyword variant (KEYWORD: only the variants with it); --pipeline URP,HDRP,Builtin,Compute  only those.
+Exit 1 on any failure (a project's compile errors included), 2 on bad input (missing libraries, a
+PackageRequirements block Unity would reject).
 """
 import argparse
 import concurrent.futures
@@ -319,7 +325,10 @@ def shader_target(program, default):
 
 
 def select(variant_list, which):
-    return variant_list[:1] if which == "base" else variant_list
+    """which: "all", "base" (no keyword) or a keyword (the variants that have it)."""
+    if which == "all":
+        return variant_list
+    return variant_list[:1] if which == "base" else [v for v in variant_list if which in v]
 
 
 def shader_cases(subs, shader_path, tmp, tag, which="all"):
@@ -659,8 +668,9 @@ def main(argv=None):
     ap.add_argument("--counts", action="store_true", help="print SPIR-V instruction counts per pass, variant and stage")
     ap.add_argument("--jobs", type=int, default=2, help="parallel compiles (default 2)")
     ap.add_argument("--pipeline", default=None, help="comma-separated pipelines to check (URP,HDRP,Builtin,Compute; default all)")
-    ap.add_argument("--variants", choices=["all", "base"], default="all",
-                    help="all: none, each keyword alone, the effects together, the effects with the other sets' first keywords; base: none")
+    ap.add_argument("--variants", default="all", metavar="all|base|KEYWORD",
+                    help="all: none, each keyword alone, the effects together, the effects with the other sets' first keywords; "
+                         "base: no keyword; KEYWORD: those of all that have it")
     ap.add_argument("--selection-only", action="store_true",
                     help="projects check: print which SubShaders and passes each project kind uses, compile nothing")
     ap.add_argument("--quiet", action="store_true", help="print failures, limits and summaries only")
