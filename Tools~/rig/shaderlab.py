@@ -87,6 +87,20 @@ PROJECTS = {
 PLATFORM_DEFINES = {"SHADOWS_SCREEN": ["UNITY_NO_SCREENSPACE_SHADOWS"]}
 
 KEYWORD_PRAGMA = re.compile(r"^(shader_feature|multi_compile)(_local)?(_vertex|_fragment|_hull|_domain)?$")
+PRAGMA_SUFFIX_STAGES = {"_vertex": "vert", "_fragment": "frag", "_hull": "tesc", "_domain": "tese"}
+
+
+def stage_keywords(program):
+    """{keyword: the one stage it is defined in} for multi_compile_fragment and kin: Unity defines
+    such a keyword only when compiling that stage."""
+    out = {}
+    for p in pragmas(program):
+        m = KEYWORD_PRAGMA.match(p[0]) if p else None
+        if m and m.group(3):
+            for k in p[1:]:
+                if not is_placeholder(k):
+                    out[k] = PRAGMA_SUFFIX_STAGES[m.group(3)]
+    return out
 
 
 # ---------------------------------------------------------------------------------------------
@@ -297,7 +311,8 @@ def variant_name(keywords):
 
 class Case:
     """One compile: a program, a stage and entry point, a keyword set."""
-    def __init__(self, pipeline, label, source, stage, entry, keywords, target, group):
+    def __init__(self, pipeline, label, source, stage, entry, keywords, target, group, only_in=None):
+        self.only_in = only_in or {}   # stage_keywords of the program
         self.pipeline, self.label, self.source = pipeline, label, source
         self.stage, self.entry, self.keywords, self.target = stage, entry, keywords, target
         self.group = group     # (pipeline, "sub<k> <pass>" or "<file>") for counts
@@ -308,12 +323,13 @@ class Case:
             return None
         with open(self.source, "rb") as f:
             program = hashlib.sha256(f.read()).hexdigest()
-        return (program, self.stage, self.entry, tuple(self.keywords), self.target)
+        return (program, self.stage, self.entry, tuple(self.defines()), self.target)
 
     def defines(self):
         # =1, not empty: the libraries test them in #if expressions (UnityCG: !(SHADER_API_VULKAN || ...)).
         return (["SHADER_API_VULKAN=1", "SHADER_API_DESKTOP=1", "UNITY_VERSION=202230", f"SHADER_TARGET={self.target}",
-                 STAGE_DEFINES[self.stage] + "=1"] + [k + "=1" for k in self.keywords])
+                 STAGE_DEFINES[self.stage] + "=1"]
+                + [k + "=1" for k in self.keywords if self.only_in.get(k, self.stage) == self.stage])
 
 
 def shader_target(program, default):
@@ -346,10 +362,11 @@ def shader_cases(subs, shader_path, tmp, tag, which="all"):
                 f.write(f'#line 1 "{shader_path}"\n' + p.program)
             stages = [(PRAGMA_STAGES[a[0]], a[1]) for a in pragmas(p.program) if len(a) >= 2 and a[0] in PRAGMA_STAGES]
             target = shader_target(p.program, 25)
+            only_in = stage_keywords(p.program)
             for keywords in select(variants(p.program), which):
                 for stage, entry in stages:
                     label = f"{label0} variant {variant_name(keywords)} stage {stage} ({entry})"
-                    cases.append(Case(s.pipeline, label, src, stage, entry, keywords, target, (s.pipeline, label0)))
+                    cases.append(Case(s.pipeline, label, src, stage, entry, keywords, target, (s.pipeline, label0), only_in))
     return cases
 
 
