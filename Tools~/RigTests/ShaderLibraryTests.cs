@@ -71,8 +71,9 @@ namespace GregoryTerrain.Rig.Tests
         {
             Assert.That(Directory.Exists(ShaderLib), Is.True, "Unity's shader libraries are missing: " + ShaderLib);
             var s = Summary(pipeline);
-            Assert.That(s.compiled, Is.GreaterThan(0), pipeline + ": nothing compiled");
+            TestContext.Out.WriteLine($"{pipeline}: {s.compiled} compiled, {s.failed} failed, {s.limit} glslang-limit, {s.emulated} emulated ({_seconds:F0} s for the whole check)");
             Assert.That(s.failed, Is.EqualTo(0), Failures("FAIL " + pipeline));
+            Assert.That(s.compiled, Is.GreaterThan(0), pipeline + ": nothing compiled");
         }
 
         /// <summary>
@@ -133,6 +134,7 @@ namespace GregoryTerrain.Rig.Tests
             var m = Lines().Select(l => Regex.Match(l, $@"^project {kind}: subshaders used (\d+) .*; passes compiled (\d+), cases (\d+), compile errors (\d+)"))
                 .FirstOrDefault(x => x.Success);
             Assert.That(m, Is.Not.Null, $"no project line for {kind}");
+            TestContext.Out.WriteLine(Lines().First(l => l.StartsWith($"project {kind}: subshaders")));
             Assert.That(int.Parse(m.Groups[1].Value), Is.GreaterThan(0), kind + ": no SubShader used");
             Assert.That(int.Parse(m.Groups[2].Value), Is.GreaterThan(0), kind + ": no pass compiled");
             Assert.That(int.Parse(m.Groups[4].Value), Is.EqualTo(0), m.Value + "\n" + Failures($"project {kind}: FAIL", 40));
