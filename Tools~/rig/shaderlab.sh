@@ -1,5 +1,7 @@
-# gt shaderlab: compiles every pass of Shaders/GregoryTerrain.shader with glslang, each stage its
-# pragmas name, against a labelled MOCK of Unity's shader libraries (Tools~/rig/unity-mock).
+# gt shaderlab: compiles every pass, variant and stage of Shaders/GregoryTerrain.shader (and every
+# Shaders/**/*.compute kernel) with glslang against Unity's real shader libraries
+# (../shared/unity-shaderlib), then as a Built-in-only, URP-only and HDRP-only project would import it.
+# Options: --package DIR, --check pipelines|projects, --pipeline URP,HDRP,Builtin,Compute, --counts, --quiet.
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
-say "shaderlab: compiling the ShaderLab passes (Unity libraries mocked: syntax/type check only)"
+say "shaderlab: compiling the shaders against Unity's real shader libraries (glslang, desktop Vulkan defines)"
 python3 "$RIG_DIR/shaderlab.py" "$@"
