@@ -12,20 +12,26 @@
 // "GregoryTerrainDraw" tag (Tessellated / Fallback) tells GregoryTerrainRenderer which draw the
 // SubShader Unity picked expects (Material.GetTag without fallbacks reads the SubShader in use).
 //
+// Pipelines: each SRP SubShader has a PackageRequirements block, so a project without that package
+// skips it (no missing-include errors); the Built-in SubShaders need no package. URP draws the
+// colour in a forward-only pass (UniversalForwardOnly, drawn by the Forward, Forward+ and Deferred
+// renderers) with DepthNormalsOnly for the normals prepass; HDRP as a forward-only material
+// (DepthForwardOnly writes the normal buffer, ForwardOnly the colour); both have the Scene view's
+// selection and picking passes. Documentation~/index.md, "Pipelines", lists what each one supports.
+//
 // Keywords: the package's are exactly the shipped ones of Tools~/rig/shader_variants.txt
 // (GT_PAPER_MODE, GT_READBACK and GT_FACTOR_READBACK are rig-only and never declared here), all
 // shader_feature_local except GT_SNOW, which SnowSimulator switches at run time, and GT_VERTEX_CACHE,
 // which GregoryTerrainRenderer switches (Vertex evaluation = Compute cache: the domain stage reads the
 // vertices TerrainCache.compute evaluated): both are multi_compile_local, so a player build keeps both
 // variants even when no saved material has them on. GT_VERTEX_CACHE only in the tessellated passes
-// (the fallback has no hull/domain stage to feed). Depth and shadow passes declare only GT_NOISE,
-// GT_SNOW (and GT_VERTEX_CACHE), the ones that change the shape or where it comes from. The pipelines' own
-// keywords are multi_compile, only where a pass reads them: URP's main-light shadow keywords and
-// Built-in's SHADOWS_SCREEN on the forward passes (received shadows), URP's _GBUFFER_NORMALS_OCT on
-// DepthNormals. Each pass defines one GT_PASS_* (and GT_FALLBACK without a tessellator) before its
-// adapter; `frag` writes colour, the packed normal (DepthNormals) or nothing (depth, shadow). Checked off Unity by
-// Tools~/RigTests/ShaderLabTests.cs and compiled pass by pass by `gt shaderlab` (glslang, Unity's
-// libraries mocked).
+// (the fallback has no hull/domain stage to feed). Depth, shadow and editor passes declare only
+// GT_NOISE, GT_SNOW (and GT_VERTEX_CACHE), the ones that change the shape or where it comes from.
+// The pipelines' own keywords are multi_compile, only where a pass reads them (the adapters say what
+// each one changes). Each pass defines one GT_PASS_* (and GT_FALLBACK without a tessellator) before
+// its adapter; `frag` writes what that pass needs (TerrainStages.hlsl). Checked off Unity by
+// Tools~/RigTests/ShaderLabTests.cs and compiled pass by pass against Unity's real shader libraries
+// by `gt shaderlab` (glslang).
 Shader "GregoryTerrain/Terrain"
 {
     Properties
@@ -59,13 +65,18 @@ Shader "GregoryTerrain/Terrain"
     // Universal Render Pipeline, tessellated.
     SubShader
     {
+        // Skipped, not compiled, in a project without this package (no missing-include errors).
+        PackageRequirements
+        {
+            "com.unity.render-pipelines.universal": "14.0"
+        }
         Tags { "RenderPipeline" = "UniversalPipeline" "RenderType" = "Opaque" "Queue" = "Geometry" "GregoryTerrainDraw" = "Tessellated" }
         LOD 300
 
         Pass
         {
             Name "ForwardLit"
-            Tags { "LightMode" = "UniversalForward" }
+            Tags { "LightMode" = "UniversalForwardOnly" }
             ZWrite On
             ZTest LEqual
             Cull Back
@@ -86,9 +97,13 @@ Shader "GregoryTerrain/Terrain"
             #pragma multi_compile_local _ GT_VERTEX_CACHE
             #pragma shader_feature_local GT_HEIGHT_COLOR
             #pragma shader_feature_local _ GT_DEBUG_NORMALS GT_DEBUG_PATCH_ID GT_DEBUG_TESS_FACTOR
-            // Main-light shadows received (URPAdapter.hlsl, GT_MainLightShadow): URP's own keywords.
-            #pragma multi_compile _ _MAIN_LIGHT_SHADOWS _MAIN_LIGHT_SHADOWS_CASCADE
-            #pragma multi_compile_fragment _ _SHADOWS_SOFT
+            // URP's own keywords, where the pass reads them (URPAdapter.hlsl): main-light shadows received
+            // (shadow map, cascades or the screen-space shadows feature), their soft-shadow filter quality,
+            // SSAO and fog (all of URP 14's fog modes, evaluated per pixel).
+            #pragma multi_compile _ _MAIN_LIGHT_SHADOWS _MAIN_LIGHT_SHADOWS_CASCADE _MAIN_LIGHT_SHADOWS_SCREEN
+            #pragma multi_compile_fragment _ _SHADOWS_SOFT _SHADOWS_SOFT_LOW _SHADOWS_SOFT_MEDIUM _SHADOWS_SOFT_HIGH
+            #pragma multi_compile_fragment _ _SCREEN_SPACE_OCCLUSION
+            #pragma multi_compile_fog
             #define GT_PASS_FORWARD 1
             #include "Packages/com.gregoryterrain.tessellation/Shaders/Pipelines/URPAdapter.hlsl"
             #include "Packages/com.gregoryterrain.tessellation/Shaders/Pipelines/TerrainStages.hlsl"
@@ -117,6 +132,9 @@ Shader "GregoryTerrain/Terrain"
             #pragma multi_compile_local _ GT_SNOW
             // Vertex evaluation (renderer setting): the compute pre-pass's cached vertices, switched at run time.
             #pragma multi_compile_local _ GT_VERTEX_CACHE
+            // Spot and point lights: the bias direction per vertex from _LightPosition (URP's keyword).
+            // The hull and domain stages transform the vertices too: not multi_compile_vertex as URP's Lit.
+            #pragma multi_compile _ _CASTING_PUNCTUAL_LIGHT_SHADOW
             #define GT_PASS_SHADOWCASTER 1
             #include "Packages/com.gregoryterrain.tessellation/Shaders/Pipelines/URPAdapter.hlsl"
             #include "Packages/com.gregoryterrain.tessellation/Shaders/Pipelines/TerrainStages.hlsl"
@@ -129,7 +147,7 @@ Shader "GregoryTerrain/Terrain"
             Tags { "LightMode" = "DepthOnly" }
             ZWrite On
             ZTest LEqual
-            ColorMask 0
+            ColorMask R
             Cull Back
 
             HLSLPROGRAM
@@ -153,8 +171,8 @@ Shader "GregoryTerrain/Terrain"
 
         Pass
         {
-            Name "DepthNormals"
-            Tags { "LightMode" = "DepthNormals" }
+            Name "DepthNormalsOnly"
+            Tags { "LightMode" = "DepthNormalsOnly" }
             ZWrite On
             ZTest LEqual
             Cull Back
@@ -175,6 +193,64 @@ Shader "GregoryTerrain/Terrain"
             // URP's normal packing for the deferred renderer's accurate G-buffer normals.
             #pragma multi_compile_fragment _ _GBUFFER_NORMALS_OCT
             #define GT_PASS_DEPTH_NORMALS 1
+            #include "Packages/com.gregoryterrain.tessellation/Shaders/Pipelines/URPAdapter.hlsl"
+            #include "Packages/com.gregoryterrain.tessellation/Shaders/Pipelines/TerrainStages.hlsl"
+            ENDHLSL
+        }
+
+        Pass
+        {
+            Name "SceneSelectionPass"
+            Tags { "LightMode" = "SceneSelectionPass" }
+            ZWrite On
+            ZTest LEqual
+            Cull Off
+
+            HLSLPROGRAM
+            // Hull and domain stages: tessellation hardware required. A device without it skips
+            // this SubShader and takes the next one (vert_fallback, no hull/domain).
+            #pragma target 4.6
+            #pragma require tessellation tessHW
+            #pragma vertex vert
+            #pragma hull hull_shader
+            #pragma domain domain_shader
+            #pragma fragment frag
+            #pragma shader_feature_local GT_NOISE
+            #pragma multi_compile_local _ GT_SNOW
+            // Vertex evaluation (renderer setting): the compute pre-pass's cached vertices, switched at run time.
+            #pragma multi_compile_local _ GT_VERTEX_CACHE
+            // Editor only: compiled when the Scene view first needs it, not ahead (as Unity's own passes).
+            #pragma editor_sync_compilation
+            #define GT_PASS_SCENE_SELECTION 1
+            #include "Packages/com.gregoryterrain.tessellation/Shaders/Pipelines/URPAdapter.hlsl"
+            #include "Packages/com.gregoryterrain.tessellation/Shaders/Pipelines/TerrainStages.hlsl"
+            ENDHLSL
+        }
+
+        Pass
+        {
+            Name "ScenePickingPass"
+            Tags { "LightMode" = "Picking" }
+            ZWrite On
+            ZTest LEqual
+            Cull Back
+
+            HLSLPROGRAM
+            // Hull and domain stages: tessellation hardware required. A device without it skips
+            // this SubShader and takes the next one (vert_fallback, no hull/domain).
+            #pragma target 4.6
+            #pragma require tessellation tessHW
+            #pragma vertex vert
+            #pragma hull hull_shader
+            #pragma domain domain_shader
+            #pragma fragment frag
+            #pragma shader_feature_local GT_NOISE
+            #pragma multi_compile_local _ GT_SNOW
+            // Vertex evaluation (renderer setting): the compute pre-pass's cached vertices, switched at run time.
+            #pragma multi_compile_local _ GT_VERTEX_CACHE
+            // Editor only: compiled when the Scene view first needs it, not ahead (as Unity's own passes).
+            #pragma editor_sync_compilation
+            #define GT_PASS_SCENE_PICKING 1
             #include "Packages/com.gregoryterrain.tessellation/Shaders/Pipelines/URPAdapter.hlsl"
             #include "Packages/com.gregoryterrain.tessellation/Shaders/Pipelines/TerrainStages.hlsl"
             ENDHLSL
@@ -184,13 +260,18 @@ Shader "GregoryTerrain/Terrain"
     // Universal Render Pipeline, no tessellator.
     SubShader
     {
+        // Skipped, not compiled, in a project without this package (no missing-include errors).
+        PackageRequirements
+        {
+            "com.unity.render-pipelines.universal": "14.0"
+        }
         Tags { "RenderPipeline" = "UniversalPipeline" "RenderType" = "Opaque" "Queue" = "Geometry" "GregoryTerrainDraw" = "Fallback" }
         LOD 200
 
         Pass
         {
             Name "ForwardLit"
-            Tags { "LightMode" = "UniversalForward" }
+            Tags { "LightMode" = "UniversalForwardOnly" }
             ZWrite On
             ZTest LEqual
             Cull Back
@@ -205,9 +286,13 @@ Shader "GregoryTerrain/Terrain"
             #pragma multi_compile_local _ GT_SNOW
             #pragma shader_feature_local GT_HEIGHT_COLOR
             #pragma shader_feature_local _ GT_DEBUG_NORMALS GT_DEBUG_PATCH_ID GT_DEBUG_TESS_FACTOR
-            // Main-light shadows received (URPAdapter.hlsl, GT_MainLightShadow): URP's own keywords.
-            #pragma multi_compile _ _MAIN_LIGHT_SHADOWS _MAIN_LIGHT_SHADOWS_CASCADE
-            #pragma multi_compile_fragment _ _SHADOWS_SOFT
+            // URP's own keywords, where the pass reads them (URPAdapter.hlsl): main-light shadows received
+            // (shadow map, cascades or the screen-space shadows feature), their soft-shadow filter quality,
+            // SSAO and fog (all of URP 14's fog modes, evaluated per pixel).
+            #pragma multi_compile _ _MAIN_LIGHT_SHADOWS _MAIN_LIGHT_SHADOWS_CASCADE _MAIN_LIGHT_SHADOWS_SCREEN
+            #pragma multi_compile_fragment _ _SHADOWS_SOFT _SHADOWS_SOFT_LOW _SHADOWS_SOFT_MEDIUM _SHADOWS_SOFT_HIGH
+            #pragma multi_compile_fragment _ _SCREEN_SPACE_OCCLUSION
+            #pragma multi_compile_fog
             #define GT_PASS_FORWARD 1
             #define GT_FALLBACK 1
             #include "Packages/com.gregoryterrain.tessellation/Shaders/Pipelines/URPAdapter.hlsl"
@@ -231,6 +316,8 @@ Shader "GregoryTerrain/Terrain"
             #pragma fragment frag
             #pragma shader_feature_local GT_NOISE
             #pragma multi_compile_local _ GT_SNOW
+            // Spot and point lights: the bias direction per vertex from _LightPosition (URP's keyword).
+            #pragma multi_compile_vertex _ _CASTING_PUNCTUAL_LIGHT_SHADOW
             #define GT_PASS_SHADOWCASTER 1
             #define GT_FALLBACK 1
             #include "Packages/com.gregoryterrain.tessellation/Shaders/Pipelines/URPAdapter.hlsl"
@@ -244,7 +331,7 @@ Shader "GregoryTerrain/Terrain"
             Tags { "LightMode" = "DepthOnly" }
             ZWrite On
             ZTest LEqual
-            ColorMask 0
+            ColorMask R
             Cull Back
 
             HLSLPROGRAM
@@ -263,8 +350,8 @@ Shader "GregoryTerrain/Terrain"
 
         Pass
         {
-            Name "DepthNormals"
-            Tags { "LightMode" = "DepthNormals" }
+            Name "DepthNormalsOnly"
+            Tags { "LightMode" = "DepthNormalsOnly" }
             ZWrite On
             ZTest LEqual
             Cull Back
@@ -279,6 +366,54 @@ Shader "GregoryTerrain/Terrain"
             // URP's normal packing for the deferred renderer's accurate G-buffer normals.
             #pragma multi_compile_fragment _ _GBUFFER_NORMALS_OCT
             #define GT_PASS_DEPTH_NORMALS 1
+            #define GT_FALLBACK 1
+            #include "Packages/com.gregoryterrain.tessellation/Shaders/Pipelines/URPAdapter.hlsl"
+            #include "Packages/com.gregoryterrain.tessellation/Shaders/Pipelines/TerrainStages.hlsl"
+            ENDHLSL
+        }
+
+        Pass
+        {
+            Name "SceneSelectionPass"
+            Tags { "LightMode" = "SceneSelectionPass" }
+            ZWrite On
+            ZTest LEqual
+            Cull Off
+
+            HLSLPROGRAM
+            // No tessellator: each tile is an instanced (F+1)^2 UV grid evaluated in the vertex stage.
+            #pragma target 4.5
+            #pragma vertex vert_fallback
+            #pragma fragment frag
+            #pragma shader_feature_local GT_NOISE
+            #pragma multi_compile_local _ GT_SNOW
+            // Editor only: compiled when the Scene view first needs it, not ahead (as Unity's own passes).
+            #pragma editor_sync_compilation
+            #define GT_PASS_SCENE_SELECTION 1
+            #define GT_FALLBACK 1
+            #include "Packages/com.gregoryterrain.tessellation/Shaders/Pipelines/URPAdapter.hlsl"
+            #include "Packages/com.gregoryterrain.tessellation/Shaders/Pipelines/TerrainStages.hlsl"
+            ENDHLSL
+        }
+
+        Pass
+        {
+            Name "ScenePickingPass"
+            Tags { "LightMode" = "Picking" }
+            ZWrite On
+            ZTest LEqual
+            Cull Back
+
+            HLSLPROGRAM
+            // No tessellator: each tile is an instanced (F+1)^2 UV grid evaluated in the vertex stage.
+            #pragma target 4.5
+            #pragma vertex vert_fallback
+            #pragma fragment frag
+            #pragma shader_feature_local GT_NOISE
+            #pragma multi_compile_local _ GT_SNOW
+            // Editor only: compiled when the Scene view first needs it, not ahead (as Unity's own passes).
+            #pragma editor_sync_compilation
+            #define GT_PASS_SCENE_PICKING 1
             #define GT_FALLBACK 1
             #include "Packages/com.gregoryterrain.tessellation/Shaders/Pipelines/URPAdapter.hlsl"
             #include "Packages/com.gregoryterrain.tessellation/Shaders/Pipelines/TerrainStages.hlsl"
@@ -289,13 +424,123 @@ Shader "GregoryTerrain/Terrain"
     // High Definition Render Pipeline (forward-only material), tessellated.
     SubShader
     {
+        // Skipped, not compiled, in a project without this package (no missing-include errors).
+        PackageRequirements
+        {
+            "com.unity.render-pipelines.high-definition": "14.0"
+        }
         Tags { "RenderPipeline" = "HDRenderPipeline" "RenderType" = "Opaque" "Queue" = "Geometry" "GregoryTerrainDraw" = "Tessellated" }
         LOD 300
 
         Pass
         {
+            Name "SceneSelectionPass"
+            Tags { "LightMode" = "SceneSelectionPass" }
+            ZWrite On
+            ZTest LEqual
+            Cull Off
+
+            HLSLPROGRAM
+            // Hull and domain stages: tessellation hardware required. A device without it skips
+            // this SubShader and takes the next one (vert_fallback, no hull/domain).
+            #pragma target 4.6
+            #pragma require tessellation tessHW
+            #pragma vertex vert
+            #pragma hull hull_shader
+            #pragma domain domain_shader
+            #pragma fragment frag
+            #pragma shader_feature_local GT_NOISE
+            #pragma multi_compile_local _ GT_SNOW
+            // Vertex evaluation (renderer setting): the compute pre-pass's cached vertices, switched at run time.
+            #pragma multi_compile_local _ GT_VERTEX_CACHE
+            // Editor only: compiled when the Scene view first needs it, not ahead (as Unity's own passes).
+            #pragma editor_sync_compilation
+            #define GT_PASS_SCENE_SELECTION 1
+            #include "Packages/com.gregoryterrain.tessellation/Shaders/Pipelines/HDRPAdapter.hlsl"
+            #include "Packages/com.gregoryterrain.tessellation/Shaders/Pipelines/TerrainStages.hlsl"
+            ENDHLSL
+        }
+
+        Pass
+        {
+            Name "ScenePickingPass"
+            Tags { "LightMode" = "Picking" }
+            ZWrite On
+            ZTest LEqual
+            Cull Back
+
+            HLSLPROGRAM
+            // Hull and domain stages: tessellation hardware required. A device without it skips
+            // this SubShader and takes the next one (vert_fallback, no hull/domain).
+            #pragma target 4.6
+            #pragma require tessellation tessHW
+            #pragma vertex vert
+            #pragma hull hull_shader
+            #pragma domain domain_shader
+            #pragma fragment frag
+            #pragma shader_feature_local GT_NOISE
+            #pragma multi_compile_local _ GT_SNOW
+            // Vertex evaluation (renderer setting): the compute pre-pass's cached vertices, switched at run time.
+            #pragma multi_compile_local _ GT_VERTEX_CACHE
+            // Editor only: compiled when the Scene view first needs it, not ahead (as Unity's own passes).
+            #pragma editor_sync_compilation
+            #define GT_PASS_SCENE_PICKING 1
+            #include "Packages/com.gregoryterrain.tessellation/Shaders/Pipelines/HDRPAdapter.hlsl"
+            #include "Packages/com.gregoryterrain.tessellation/Shaders/Pipelines/TerrainStages.hlsl"
+            ENDHLSL
+        }
+
+        Pass
+        {
+            Name "DepthForwardOnly"
+            Tags { "LightMode" = "DepthForwardOnly" }
+            // HDRP's stencil for an unlit-like forward-only material (its Unlit's values): IsUnlit (1) set,
+            // TraceReflectionRay (8) cleared, so SSR and GI skip the terrain.
+            Stencil
+            {
+                WriteMask 9
+                Ref 1
+                Comp Always
+                Pass Replace
+            }
+            ZWrite On
+            ZTest LEqual
+            Cull Back
+
+            HLSLPROGRAM
+            // Hull and domain stages: tessellation hardware required. A device without it skips
+            // this SubShader and takes the next one (vert_fallback, no hull/domain).
+            #pragma target 4.6
+            #pragma require tessellation tessHW
+            #pragma vertex vert
+            #pragma hull hull_shader
+            #pragma domain domain_shader
+            #pragma fragment frag
+            #pragma shader_feature_local GT_NOISE
+            #pragma multi_compile_local _ GT_SNOW
+            // Vertex evaluation (renderer setting): the compute pre-pass's cached vertices, switched at run time.
+            #pragma multi_compile_local _ GT_VERTEX_CACHE
+            // MSAA: HDRP also binds the depth as a colour target (its keyword).
+            #pragma multi_compile _ WRITE_MSAA_DEPTH
+            // Writes HDRP's normal buffer too (SSAO, SSR and contact shadows read it).
+            #define GT_PASS_DEPTH_NORMALS 1
+            #include "Packages/com.gregoryterrain.tessellation/Shaders/Pipelines/HDRPAdapter.hlsl"
+            #include "Packages/com.gregoryterrain.tessellation/Shaders/Pipelines/TerrainStages.hlsl"
+            ENDHLSL
+        }
+
+        Pass
+        {
             Name "ForwardOnly"
             Tags { "LightMode" = "ForwardOnly" }
+            // HDRP's forward stencil: clears RequiresDeferredLighting (2) and SubsurfaceScattering (4).
+            Stencil
+            {
+                WriteMask 6
+                Ref 0
+                Comp Always
+                Pass Replace
+            }
             ZWrite On
             ZTest LEqual
             Cull Back
@@ -316,35 +561,9 @@ Shader "GregoryTerrain/Terrain"
             #pragma multi_compile_local _ GT_VERTEX_CACHE
             #pragma shader_feature_local GT_HEIGHT_COLOR
             #pragma shader_feature_local _ GT_DEBUG_NORMALS GT_DEBUG_PATCH_ID GT_DEBUG_TESS_FACTOR
+            // HDRP's shadow filtering quality (the HDRP asset's), as its Lit forward pass.
+            #pragma multi_compile_fragment SHADOW_LOW SHADOW_MEDIUM SHADOW_HIGH
             #define GT_PASS_FORWARD 1
-            #include "Packages/com.gregoryterrain.tessellation/Shaders/Pipelines/HDRPAdapter.hlsl"
-            #include "Packages/com.gregoryterrain.tessellation/Shaders/Pipelines/TerrainStages.hlsl"
-            ENDHLSL
-        }
-
-        Pass
-        {
-            Name "DepthForwardOnly"
-            Tags { "LightMode" = "DepthForwardOnly" }
-            ZWrite On
-            ZTest LEqual
-            ColorMask 0
-            Cull Back
-
-            HLSLPROGRAM
-            // Hull and domain stages: tessellation hardware required. A device without it skips
-            // this SubShader and takes the next one (vert_fallback, no hull/domain).
-            #pragma target 4.6
-            #pragma require tessellation tessHW
-            #pragma vertex vert
-            #pragma hull hull_shader
-            #pragma domain domain_shader
-            #pragma fragment frag
-            #pragma shader_feature_local GT_NOISE
-            #pragma multi_compile_local _ GT_SNOW
-            // Vertex evaluation (renderer setting): the compute pre-pass's cached vertices, switched at run time.
-            #pragma multi_compile_local _ GT_VERTEX_CACHE
-            #define GT_PASS_DEPTH 1
             #include "Packages/com.gregoryterrain.tessellation/Shaders/Pipelines/HDRPAdapter.hlsl"
             #include "Packages/com.gregoryterrain.tessellation/Shaders/Pipelines/TerrainStages.hlsl"
             ENDHLSL
@@ -382,13 +601,108 @@ Shader "GregoryTerrain/Terrain"
     // High Definition Render Pipeline, no tessellator.
     SubShader
     {
+        // Skipped, not compiled, in a project without this package (no missing-include errors).
+        PackageRequirements
+        {
+            "com.unity.render-pipelines.high-definition": "14.0"
+        }
         Tags { "RenderPipeline" = "HDRenderPipeline" "RenderType" = "Opaque" "Queue" = "Geometry" "GregoryTerrainDraw" = "Fallback" }
         LOD 200
 
         Pass
         {
+            Name "SceneSelectionPass"
+            Tags { "LightMode" = "SceneSelectionPass" }
+            ZWrite On
+            ZTest LEqual
+            Cull Off
+
+            HLSLPROGRAM
+            // No tessellator: each tile is an instanced (F+1)^2 UV grid evaluated in the vertex stage.
+            #pragma target 4.5
+            #pragma vertex vert_fallback
+            #pragma fragment frag
+            #pragma shader_feature_local GT_NOISE
+            #pragma multi_compile_local _ GT_SNOW
+            // Editor only: compiled when the Scene view first needs it, not ahead (as Unity's own passes).
+            #pragma editor_sync_compilation
+            #define GT_PASS_SCENE_SELECTION 1
+            #define GT_FALLBACK 1
+            #include "Packages/com.gregoryterrain.tessellation/Shaders/Pipelines/HDRPAdapter.hlsl"
+            #include "Packages/com.gregoryterrain.tessellation/Shaders/Pipelines/TerrainStages.hlsl"
+            ENDHLSL
+        }
+
+        Pass
+        {
+            Name "ScenePickingPass"
+            Tags { "LightMode" = "Picking" }
+            ZWrite On
+            ZTest LEqual
+            Cull Back
+
+            HLSLPROGRAM
+            // No tessellator: each tile is an instanced (F+1)^2 UV grid evaluated in the vertex stage.
+            #pragma target 4.5
+            #pragma vertex vert_fallback
+            #pragma fragment frag
+            #pragma shader_feature_local GT_NOISE
+            #pragma multi_compile_local _ GT_SNOW
+            // Editor only: compiled when the Scene view first needs it, not ahead (as Unity's own passes).
+            #pragma editor_sync_compilation
+            #define GT_PASS_SCENE_PICKING 1
+            #define GT_FALLBACK 1
+            #include "Packages/com.gregoryterrain.tessellation/Shaders/Pipelines/HDRPAdapter.hlsl"
+            #include "Packages/com.gregoryterrain.tessellation/Shaders/Pipelines/TerrainStages.hlsl"
+            ENDHLSL
+        }
+
+        Pass
+        {
+            Name "DepthForwardOnly"
+            Tags { "LightMode" = "DepthForwardOnly" }
+            // HDRP's stencil for an unlit-like forward-only material (its Unlit's values): IsUnlit (1) set,
+            // TraceReflectionRay (8) cleared, so SSR and GI skip the terrain.
+            Stencil
+            {
+                WriteMask 9
+                Ref 1
+                Comp Always
+                Pass Replace
+            }
+            ZWrite On
+            ZTest LEqual
+            Cull Back
+
+            HLSLPROGRAM
+            // No tessellator: each tile is an instanced (F+1)^2 UV grid evaluated in the vertex stage.
+            #pragma target 4.5
+            #pragma vertex vert_fallback
+            #pragma fragment frag
+            #pragma shader_feature_local GT_NOISE
+            #pragma multi_compile_local _ GT_SNOW
+            // MSAA: HDRP also binds the depth as a colour target (its keyword).
+            #pragma multi_compile _ WRITE_MSAA_DEPTH
+            // Writes HDRP's normal buffer too (SSAO, SSR and contact shadows read it).
+            #define GT_PASS_DEPTH_NORMALS 1
+            #define GT_FALLBACK 1
+            #include "Packages/com.gregoryterrain.tessellation/Shaders/Pipelines/HDRPAdapter.hlsl"
+            #include "Packages/com.gregoryterrain.tessellation/Shaders/Pipelines/TerrainStages.hlsl"
+            ENDHLSL
+        }
+
+        Pass
+        {
             Name "ForwardOnly"
             Tags { "LightMode" = "ForwardOnly" }
+            // HDRP's forward stencil: clears RequiresDeferredLighting (2) and SubsurfaceScattering (4).
+            Stencil
+            {
+                WriteMask 6
+                Ref 0
+                Comp Always
+                Pass Replace
+            }
             ZWrite On
             ZTest LEqual
             Cull Back
@@ -403,30 +717,9 @@ Shader "GregoryTerrain/Terrain"
             #pragma multi_compile_local _ GT_SNOW
             #pragma shader_feature_local GT_HEIGHT_COLOR
             #pragma shader_feature_local _ GT_DEBUG_NORMALS GT_DEBUG_PATCH_ID GT_DEBUG_TESS_FACTOR
+            // HDRP's shadow filtering quality (the HDRP asset's), as its Lit forward pass.
+            #pragma multi_compile_fragment SHADOW_LOW SHADOW_MEDIUM SHADOW_HIGH
             #define GT_PASS_FORWARD 1
-            #define GT_FALLBACK 1
-            #include "Packages/com.gregoryterrain.tessellation/Shaders/Pipelines/HDRPAdapter.hlsl"
-            #include "Packages/com.gregoryterrain.tessellation/Shaders/Pipelines/TerrainStages.hlsl"
-            ENDHLSL
-        }
-
-        Pass
-        {
-            Name "DepthForwardOnly"
-            Tags { "LightMode" = "DepthForwardOnly" }
-            ZWrite On
-            ZTest LEqual
-            ColorMask 0
-            Cull Back
-
-            HLSLPROGRAM
-            // No tessellator: each tile is an instanced (F+1)^2 UV grid evaluated in the vertex stage.
-            #pragma target 4.5
-            #pragma vertex vert_fallback
-            #pragma fragment frag
-            #pragma shader_feature_local GT_NOISE
-            #pragma multi_compile_local _ GT_SNOW
-            #define GT_PASS_DEPTH 1
             #define GT_FALLBACK 1
             #include "Packages/com.gregoryterrain.tessellation/Shaders/Pipelines/HDRPAdapter.hlsl"
             #include "Packages/com.gregoryterrain.tessellation/Shaders/Pipelines/TerrainStages.hlsl"

@@ -4,8 +4,7 @@
 // _WorldSpaceLightPos0, unity_WorldToShadow), UnityLightingCommon.cginc (_LightColor0) and
 // AutoLight.cginc (unitySampleShadow, the SHADOWS_SCREEN keyword). Use it in a pass with
 // Tags { "LightMode" = "ForwardBase" } so Unity fills the main directional light.
-// Not compiled against Unity's .cginc files off Unity: Tools~/rig/shaderlab.py compiles it against
-// a labelled mock of these names (Tools~/rig/unity-mock) to catch syntax and type errors only.
+// Compiled against the real 2022.3 CGIncludes off Unity by the rig (Tools~/rig/shaderlab.py).
 //
 // Object matrix: Graphics.RenderPrimitives gives the shader no object matrix (unity_ObjectToWorld
 // is not the renderer's Transform, so UnityObjectToClipPos and UnityObjectToWorldNormal cannot be
@@ -27,6 +26,7 @@
 // lightmap and vertex-light variants the terrain does not use).
 #if defined(GT_PASS_FORWARD) && defined(SHADOWS_SCREEN)
     #define GT_RECEIVE_SHADOWS 1
+    #define GT_VARYINGS_POSITION_WS 1   // the mobile path reads the shadow map at the world position
 #endif
 #define GT_CBUFFER_START(name) CBUFFER_START(UnityPerMaterial)
 #define GT_CBUFFER_END CBUFFER_END
@@ -68,7 +68,7 @@ void GT_MainLight(out float3 directionWS, out float3 color)
 // fragment's SV_Position over the screen size; single-pass stereo not handled). Without screen-space
 // shadows (UNITY_NO_SCREENSPACE_SHADOWS, mobile): the shadow map through unity_WorldToShadow[0]
 // (one cascade there).
-float GT_MainLightShadow(float3 positionWS, float4 positionSS)
+float GT_MainLightShadow(float3 positionWS, float4 positionSS, float3 normalWS)
 {
 #if defined(GT_RECEIVE_SHADOWS)
     #if defined(UNITY_NO_SCREENSPACE_SHADOWS)
@@ -81,8 +81,5 @@ float GT_MainLightShadow(float3 positionWS, float4 positionSS)
     return 1.0;
 #endif
 }
-
-// The Built-in pipeline has no DepthNormals pass for this shader; defined for the interface, unused.
-float4 GT_EncodeDepthNormal(float3 normalWS) { return float4(normalize(normalWS), 0.0); }
 
 #endif // GT_BUILTIN_ADAPTER_INCLUDED

@@ -1,10 +1,11 @@
 // High Definition Render Pipeline adapter (interface: see StandaloneAdapter.hlsl).
-// Unity API names used: Common.hlsl (CBUFFER_START/CBUFFER_END), ShaderVariables.hlsl
-// (TransformWorldToHClip, GetCameraRelativePositionWS, _WorldSpaceCameraPos, _ScreenSize),
-// LightDefinition.cs.hlsl and ShaderVariablesLightLoop.hlsl (_DirectionalLightCount,
-// _DirectionalLightDatas, DirectionalLightData.forward/.color).
-// Not compiled against HDRP off Unity: Tools~/rig/shaderlab.py compiles it against a labelled mock
-// of these names (Tools~/rig/unity-mock) to catch syntax and type errors only.
+// Unity API names used: Common.hlsl (CBUFFER_START/CBUFFER_END), ShaderVariables.hlsl, which also
+// brings the light loop's globals (TransformWorldToHClip, GetCameraRelativePositionWS,
+// _WorldSpaceCameraPos, _ScreenSize, GetCurrentExposureMultiplier, _DirectionalLightCount,
+// _DirectionalShadowIndex, _DirectionalLightDatas, DirectionalLightData, unity_SelectionID),
+// LightLoop/HDShadow.hlsl (HDShadowContext, InitShadowContext, GetDirectionalShadowAttenuation) and
+// Material/NormalBuffer.hlsl (NormalData, EncodeIntoNormalBuffer).
+// Compiled against HDRP 14's real includes off Unity by the rig (Tools~/rig/shaderlab.py).
 //
 // HDRP renders camera-relative: its "world space" has the camera at the origin, and so does ours
 // here (GT_CameraPositionWS is the camera in that space, i.e. 0 when camera-relative is on).
@@ -17,11 +18,50 @@
 #define GT_HDRP_ADAPTER_INCLUDED
 
 #include "Packages/com.unity.render-pipelines.core/ShaderLibrary/Common.hlsl"
+// HDRP's includes read the pass kind (SHADERPASS), as in every HDRP shader: which camera position
+// and projection test to use (the shadow pass's camera is the light's).
+#include "Packages/com.unity.render-pipelines.high-definition/Runtime/RenderPipeline/ShaderPass/ShaderPass.cs.hlsl"
+#if defined(GT_PASS_SHADOWCASTER)
+    #define SHADERPASS SHADERPASS_SHADOWS
+#elif defined(GT_PASS_FORWARD)
+    #define SHADERPASS SHADERPASS_FORWARD
+#else
+    #define SHADERPASS SHADERPASS_DEPTH_ONLY   // depth prepass, and the editor's passes as HDRP's own
+#endif
+// ShaderVariables.hlsl includes LightLoop/ShaderVariablesLightLoop.hlsl itself (that file has no
+// include guard: including it again declares every light-loop global twice).
 #include "Packages/com.unity.render-pipelines.high-definition/Runtime/ShaderLibrary/ShaderVariables.hlsl"
-#include "Packages/com.unity.render-pipelines.high-definition/Runtime/Lighting/LightDefinition.cs.hlsl"
-#include "Packages/com.unity.render-pipelines.high-definition/Runtime/Lighting/LightLoop/ShaderVariablesLightLoop.hlsl"
+#if defined(GT_PASS_FORWARD) && defined(SHADER_STAGE_FRAGMENT)
+    // The filter quality is one of the pass's SHADOW_* keywords; HDRP's shadow code has no default
+    // for the fragment stage, so a compile without one (never one of Unity's variants) gets HDRP's
+    // default for the other stages, medium.
+    #if !defined(SHADOW_LOW) && !defined(SHADOW_MEDIUM) && !defined(SHADOW_HIGH)
+        #define SHADOW_MEDIUM
+    #endif
+    #if !defined(AREA_SHADOW_LOW) && !defined(AREA_SHADOW_MEDIUM) && !defined(AREA_SHADOW_HIGH)
+        #define AREA_SHADOW_MEDIUM   // unused here: HDShadowAlgorithms.hlsl wants one
+    #endif
+    #include "Packages/com.unity.render-pipelines.high-definition/Runtime/Lighting/LightLoop/HDShadow.hlsl"
+#endif
+#if defined(GT_PASS_DEPTH_NORMALS)
+    #include "Packages/com.unity.render-pipelines.high-definition/Runtime/Material/NormalBuffer.hlsl"
+#endif
 
 #define GT_ADAPTER_HDRP 1
+
+// The forward pass receives the main directional light's shadow, through HDRP's own shadow code
+// (the cascades, filtering and fade of the HDRP asset), and pre-exposes its lit colour as every
+// HDRP lit material does. Fog on opaque surfaces is HDRP's own full-screen pass, not the material's.
+#if defined(GT_PASS_FORWARD)
+    #define GT_RECEIVE_SHADOWS 1
+    #define GT_VARYINGS_POSITION_WS 1
+    #define GT_PRE_EXPOSE 1
+#endif
+// The depth prepass also writes the normal buffer (SSAO, SSR, contact shadows read it); with MSAA
+// HDRP binds the depth as a colour target first (WRITE_MSAA_DEPTH, HDRP's keyword).
+#if defined(GT_PASS_DEPTH_NORMALS) && defined(WRITE_MSAA_DEPTH)
+    #define GT_WRITE_DEPTH_COLOR 1
+#endif
 #define GT_CBUFFER_START(name) CBUFFER_START(UnityPerMaterial)
 #define GT_CBUFFER_END CBUFFER_END
 #define GT_REGISTER(r)
@@ -29,6 +69,15 @@
 // Set by GregoryTerrainRenderer (MaterialPropertyBlock), only when its Transform changes.
 float4x4 _GtObjectToWorld;
 float4x4 _GtWorldToObject;
+
+#if defined(GT_PASS_SCENE_SELECTION)
+// Set by the editor for the Scene view's selection outline.
+int _ObjectId;
+int _PassValue;
+#endif
+#if defined(GT_PASS_SCENE_PICKING)
+float4 _SelectionID;   // read as unity_SelectionID (ShaderVariables.hlsl)
+#endif
 
 float3 GT_ObjectToWorld(float3 positionOS)
 {
@@ -41,28 +90,83 @@ float4 GT_ObjectToClip(float3 positionOS) { return TransformWorldToHClip(GT_Obje
 float3 GT_CameraPositionWS() { return GetCameraRelativePositionWS(_WorldSpaceCameraPos); }
 float2 GT_ScreenSize() { return _ScreenSize.xy; }
 
-// The first directional light (HDRP puts the sun first). forward is the direction the light
-// travels, so the direction towards the light is its negation. No directional light: none.
+// HDRP has no "main light"; the sun is the directional light that casts the cascaded shadows
+// (_DirectionalShadowIndex, -1 when none does). Without one: the first directional light that
+// lights diffuse surfaces (diffuseDimmer > 0). None: -1.
+int MainDirectionalLightIndex()
+{
+    if (_DirectionalShadowIndex >= 0)
+        return _DirectionalShadowIndex;
+    for (uint k = 0; k < _DirectionalLightCount; k++)
+    {
+        if (_DirectionalLightDatas[k].diffuseDimmer > 0.0)
+            return (int)k;
+    }
+    return -1;
+}
+
+// forward is the direction the light travels, so the direction towards the light is its negation;
+// the colour is what reaches diffuse surfaces (HDRP scales it by the light's diffuse dimmer).
 void GT_MainLight(out float3 directionWS, out float3 color)
 {
     directionWS = float3(0.0, 1.0, 0.0);
     color = float3(0.0, 0.0, 0.0);
-    if (_DirectionalLightCount > 0)
+    int index = MainDirectionalLightIndex();
+    if (index >= 0)
     {
-        DirectionalLightData light = _DirectionalLightDatas[0];
-        directionWS = -light.forward.xyz;
-        color = light.color;
+        DirectionalLightData light = _DirectionalLightDatas[index];
+        directionWS = -light.forward;
+        color = light.color * light.diffuseDimmer;
     }
 }
 
-// Not received in HDRP: its directional shadows are read through the light loop's HDShadowContext
-// (the shadow atlas, cascade data and filtering of the HDRP version), which a forward-only custom
-// pass would have to include and set up as HDRP's Lit does. GT_RECEIVE_SHADOWS is not defined, so
-// the shading never calls this; the terrain still casts shadows (ShadowCaster pass).
-float GT_MainLightShadow(float3 positionWS, float4 positionSS) { return 1.0; }
+#if defined(GT_PASS_FORWARD)
+// HDRP's cascaded directional shadow at this pixel, as its light loop reads it
+// (GetDirectionalShadowAttenuation: cascade choice, the asset's filtering, normal bias), faded by
+// the light's shadow dimmer. positionWS is camera-relative; the normal biases the lookup and
+// flips towards the light, so the geometric normal of the pixel is enough. Only the light that
+// casts the cascades has a shadow here.
+float GT_MainLightShadow(float3 positionWS, float4 positionSS, float3 normalWS)
+{
+    #if !defined(SHADER_STAGE_FRAGMENT)
+    return 1.0;   // only the fragment stage reads shadows (HDShadow.hlsl is included there only)
+    #else
+    int index = MainDirectionalLightIndex();
+    if (index < 0 || index != _DirectionalShadowIndex)
+        return 1.0;
+    DirectionalLightData light = _DirectionalLightDatas[index];
+    if (light.shadowIndex < 0 || light.shadowDimmer <= 0.0)
+        return 1.0;
+    HDShadowContext context = InitShadowContext();
+    float shadow = GetDirectionalShadowAttenuation(context, positionSS.xy, positionWS, normalWS, light.shadowIndex, -light.forward);
+    return lerp(1.0, shadow, light.shadowDimmer);
+    #endif
+}
+#endif
 
-// HDRP has no DepthNormals pass for this material (its normal buffer is written by the
-// DepthForwardOnly pass of its Lit shaders only); defined for the interface, unused.
-float4 GT_EncodeDepthNormal(float3 normalWS) { return float4(normalize(normalWS), 0.0); }
+// The pre-exposure of HDRP's lit colours (its exposure texture), so the terrain matches an
+// exposed scene: light intensities are physical (lux), the exposure brings them to display range.
+float GT_ExposureMultiplier() { return GetCurrentExposureMultiplier(); }
+
+#if defined(GT_PASS_DEPTH_NORMALS)
+// HDRP's normal buffer (EncodeIntoNormalBuffer: octahedral normal, perceptual roughness). The
+// terrain is diffuse only: roughness 1, so SSR never traces it (its stencil bit is clear too).
+float4 GT_EncodeDepthNormal(float3 normalWS)
+{
+    NormalData normalData;
+    normalData.normalWS = normalize(normalWS);
+    normalData.perceptualRoughness = 1.0;
+    float4 encoded;
+    EncodeIntoNormalBuffer(normalData, encoded);
+    return encoded;
+}
+#endif
+
+// The Scene view's selection outline and picking (HDRP's ShaderPassDepthOnly).
+#if defined(GT_PASS_SCENE_SELECTION)
+float4 GT_EditorSelectionColor() { return float4(_ObjectId, _PassValue, 1.0, 1.0); }
+#elif defined(GT_PASS_SCENE_PICKING)
+float4 GT_EditorSelectionColor() { return unity_SelectionID; }
+#endif
 
 #endif // GT_HDRP_ADAPTER_INCLUDED

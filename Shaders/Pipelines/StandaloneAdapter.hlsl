@@ -14,14 +14,23 @@
 //   void   GT_MainLight(out float3 directionWS, out float3 color)
 //                                                       directionWS: unit, from the surface TOWARDS
 //                                                       the light (the convention of URP's Light)
-//   float  GT_MainLightShadow(float3 positionWS, float4 positionSS)
+//   float  GT_MainLightShadow(float3 positionWS, float4 positionSS, float3 normalWS)
 //                                                       main light's shadow, 1 = lit, 0 = shadowed;
-//                                                       positionSS: the fragment's SV_Position. The
-//                                                       shading calls it only when the adapter
-//                                                       defines GT_RECEIVE_SHADOWS (then the
-//                                                       varyings carry positionWS)
-//   float4 GT_EncodeDepthNormal(float3 normalWS)        the depth-normals pass's output for a world
-//                                                       normal (packing of the pipeline)
+//                                                       positionSS: the fragment's SV_Position,
+//                                                       normalWS: its unit normal (a lookup bias).
+//                                                       The shading calls it only when the adapter
+//                                                       defines GT_RECEIVE_SHADOWS
+//
+// Optional, each only where the adapter defines its switch (never in the rig):
+//   GT_VARYINGS_POSITION_WS   the varyings carry positionWS (GT_ObjectToWorld of the vertex): for
+//                             received shadows and fog
+//   float3 GT_ApplyFog(float3 color, float3 positionWS)             with GT_FOG
+//   float2 GT_AmbientOcclusion(float4 positionSS)  (indirect, direct) occlusion, with GT_AMBIENT_OCCLUSION
+//   float  GT_ExposureMultiplier()                 the lit colour's scale, with GT_PRE_EXPOSE
+//   float4 GT_EncodeDepthNormal(float3 normalWS)   the depth-normals output of a world normal
+//                                                  (the pipeline's packing), in GT_PASS_DEPTH_NORMALS
+//   GT_WRITE_DEPTH_COLOR      the depth-normals pass writes the depth as colour first (HDRP MSAA)
+//   float4 GT_EditorSelectionColor()               GT_PASS_SCENE_SELECTION / GT_PASS_SCENE_PICKING
 //
 // Here the camera comes from the cbuffer RigCamera at b1 (internals.md, "Descriptor bindings").
 #ifndef GT_STANDALONE_ADAPTER_INCLUDED
@@ -102,8 +111,6 @@ void GT_MainLight(out float3 directionWS, out float3 color)
 }
 
 // No shadow maps in the rig: always lit (GT_RECEIVE_SHADOWS is not defined here).
-float GT_MainLightShadow(float3 positionWS, float4 positionSS) { return 1.0; }
-
-float4 GT_EncodeDepthNormal(float3 normalWS) { return float4(normalize(normalWS), 0.0); }
+float GT_MainLightShadow(float3 positionWS, float4 positionSS, float3 normalWS) { return 1.0; }
 
 #endif // GT_STANDALONE_ADAPTER_INCLUDED

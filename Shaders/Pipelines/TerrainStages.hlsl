@@ -11,7 +11,8 @@
 //   vert_fallback  no tessellator: a (F+1)^2 UV grid per instance (= tile), same TerrainVertex
 //   vert_static    rig only (GT_STATIC_MESH): the terrain's vertices baked once, the fallback's index grid
 //   frag           TerrainShading.hlsl: colour (forward), packed normal (GT_PASS_DEPTH_NORMALS),
-//                  nothing (GT_PASS_SHADOWCASTER, GT_PASS_DEPTH)
+//                  depth (GT_PASS_DEPTH), nothing (GT_PASS_SHADOWCASTER), the editor's selection
+//                  colours (GT_PASS_SCENE_SELECTION, GT_PASS_SCENE_PICKING)
 //
 // Keywords (Tools~/rig/shader_variants.txt lists the combinations that are compiled):
 //   GT_NOISE, GT_HEIGHT_COLOR, GT_SNOW                effects; off means not compiled at all
@@ -209,17 +210,42 @@ TerrainVaryings vert_static(uint vertexID : SV_VertexID, uint instanceID : SV_In
 #endif
 
 // One fragment entry for every pass; the pass's GT_PASS_* define (set by GregoryTerrain.shader)
-// picks the output. Depth and shadow passes write no colour (ColorMask 0), so they evaluate nothing
-// here: no albedo, no lighting, no shadow lookup. No GT_PASS_* (the off-Unity rig) = the colour.
+// picks the output. Depth, shadow and editor passes evaluate no albedo, lighting or shadow lookup.
+// No GT_PASS_* (the off-Unity rig) = the colour.
+#if defined(GT_PASS_SHADOWCASTER)
 float4 frag(TerrainVaryings i) : SV_Target
 {
-#if defined(GT_PASS_SHADOWCASTER) || defined(GT_PASS_DEPTH)
-    return 0.0;
-#elif defined(GT_PASS_DEPTH_NORMALS)
-    return TerrainDepthNormal(i);
-#else
-    return TerrainFragmentColor(i);
-#endif
+    return 0.0;   // ColorMask 0: depth only
 }
+#elif defined(GT_PASS_DEPTH)
+// URP's DepthOnly convention: the depth also as colour (ColorMask R), for a colour depth target.
+float4 frag(TerrainVaryings i) : SV_Target
+{
+    return i.positionCS.zzzz;
+}
+#elif defined(GT_PASS_DEPTH_NORMALS) && defined(GT_WRITE_DEPTH_COLOR)
+// HDRP with MSAA: the depth as colour in target 0, then the normal buffer.
+void frag(TerrainVaryings i, out float4 depthColor : SV_Target0, out float4 normal : SV_Target1)
+{
+    depthColor = float4(i.positionCS.zzz, 1.0);
+    normal = TerrainDepthNormal(i);
+}
+#elif defined(GT_PASS_DEPTH_NORMALS)
+float4 frag(TerrainVaryings i) : SV_Target
+{
+    return TerrainDepthNormal(i);
+}
+#elif defined(GT_PASS_SCENE_SELECTION) || defined(GT_PASS_SCENE_PICKING)
+// The Scene view's selection outline or picking ID (adapter).
+float4 frag(TerrainVaryings i) : SV_Target
+{
+    return GT_EditorSelectionColor();
+}
+#else
+float4 frag(TerrainVaryings i) : SV_Target
+{
+    return TerrainFragmentColor(i);
+}
+#endif
 
 #endif // GT_TERRAIN_STAGES_INCLUDED

@@ -1,11 +1,11 @@
 // Universal Render Pipeline adapter (interface: see StandaloneAdapter.hlsl).
 // Unity API names used: Core.hlsl (TransformWorldToHClip, GetCameraPositionWS, _ScreenParams,
-// CBUFFER_START/CBUFFER_END, UNITY_REVERSED_Z, UNITY_NEAR_CLIP_VALUE, NormalizeNormalPerPixel and,
-// from SRP Core's Packing.hlsl, PackNormalOctQuadEncode / PackFloat2To888), Lighting.hlsl
-// (GetMainLight, Light.direction/.color/.shadowAttenuation) and Shadows.hlsl, which Lighting.hlsl
-// includes (_ShadowBias, TransformWorldToShadowCoord, the _MAIN_LIGHT_SHADOWS* keywords).
-// Not compiled against URP off Unity: Tools~/rig/shaderlab.py compiles it against a labelled mock
-// of these names (Tools~/rig/unity-mock) to catch syntax and type errors only.
+// CBUFFER_START/CBUFFER_END, UNITY_REVERSED_Z, UNITY_NEAR_CLIP_VALUE, NormalizeNormalPerPixel,
+// GetNormalizedScreenSpaceUV, InitializeInputDataFog, MixFog and, from SRP Core's Packing.hlsl,
+// PackNormalOctQuadEncode / PackFloat2To888), Lighting.hlsl (GetMainLight, Light.direction/.color/
+// .shadowAttenuation, GetScreenSpaceAmbientOcclusion) and Shadows.hlsl, which Lighting.hlsl includes
+// (_ShadowBias, TransformWorldToShadowCoord, the _MAIN_LIGHT_SHADOWS* and _SHADOWS_SOFT* keywords).
+// Compiled against URP 14's real ShaderLibrary off Unity by the rig (Tools~/rig/shaderlab.py).
 //
 // Object matrix: Graphics.RenderPrimitives gives the shader no object matrix (UNITY_MATRIX_M /
 // unity_ObjectToWorld are not the renderer's Transform), so GregoryTerrainRenderer sets
@@ -19,12 +19,22 @@
 
 #define GT_ADAPTER_URP 1
 
-// Receive the main light's shadows in the forward pass when URP draws them: the forward pass
-// declares `multi_compile _ _MAIN_LIGHT_SHADOWS _MAIN_LIGHT_SHADOWS_CASCADE` (and
-// `multi_compile_fragment _ _SHADOWS_SOFT`). _MAIN_LIGHT_SHADOWS_SCREEN (the screen-space shadows
-// renderer feature) is not declared, so with that feature the terrain is drawn unshadowed.
-#if defined(GT_PASS_FORWARD) && (defined(_MAIN_LIGHT_SHADOWS) || defined(_MAIN_LIGHT_SHADOWS_CASCADE))
-    #define GT_RECEIVE_SHADOWS 1
+// The forward pass's effects that URP switches with its own keywords (declared by the pass):
+// received main-light shadows (shadow map or the screen-space shadows feature), fog (URP 14 always
+// evaluates it per pixel from the world position, _FOG_FRAGMENT) and screen-space ambient occlusion.
+#if defined(GT_PASS_FORWARD)
+    #if defined(_MAIN_LIGHT_SHADOWS) || defined(_MAIN_LIGHT_SHADOWS_CASCADE) || defined(_MAIN_LIGHT_SHADOWS_SCREEN)
+        #define GT_RECEIVE_SHADOWS 1
+    #endif
+    #if defined(FOG_LINEAR) || defined(FOG_EXP) || defined(FOG_EXP2)
+        #define GT_FOG 1
+    #endif
+    #if defined(_SCREEN_SPACE_OCCLUSION)
+        #define GT_AMBIENT_OCCLUSION 1
+    #endif
+#endif
+#if defined(GT_RECEIVE_SHADOWS) || defined(GT_FOG)
+    #define GT_VARYINGS_POSITION_WS 1
 #endif
 // All material constants in UnityPerMaterial, so the SRP Batcher layout stays the same for every
 // material of this shader.
@@ -37,8 +47,19 @@ float4x4 _GtObjectToWorld;
 float4x4 _GtWorldToObject;
 
 #if defined(GT_PASS_SHADOWCASTER)
-// Set by URP for the light whose shadow map is being drawn (directional: towards the light).
+// Set by URP for the light whose shadow map is being drawn (ShadowUtils.SetupShadowCasterConstantBuffer):
+// a directional light's direction towards the light, a spot or point light's position
+// (_CASTING_PUNCTUAL_LIGHT_SHADOW, URP's keyword for those).
 float3 _LightDirection;
+float3 _LightPosition;
+#endif
+#if defined(GT_PASS_SCENE_SELECTION)
+// Set by the editor for the Scene view's selection outline.
+int _ObjectId;
+int _PassValue;
+#endif
+#if defined(GT_PASS_SCENE_PICKING)
+float4 _SelectionID;   // read as unity_SelectionID (URP's UniversalDOTSInstancing.hlsl)
 #endif
 
 float3 GT_ObjectToWorld(float3 positionOS) { return mul(_GtObjectToWorld, float4(positionOS, 1.0)).xyz; }
@@ -49,20 +70,32 @@ float3 GT_ObjectToWorldNormal(float3 normalOS) { return normalize(mul(normalOS, 
 
 float4 GT_WorldToClip(float3 positionWS) { return TransformWorldToHClip(positionWS); }
 
+#if defined(GT_PASS_SHADOWCASTER)
+// Towards the light whose shadow map is drawn: per vertex for a spot or point light.
+float3 ShadowCasterLightDirection(float3 positionWS)
+{
+    #if defined(_CASTING_PUNCTUAL_LIGHT_SHADOW)
+    return normalize(_LightPosition - positionWS);
+    #else
+    return _LightDirection;
+    #endif
+}
+#endif
+
 float4 GT_ObjectToClip(float3 positionOS)
 {
     float3 positionWS = GT_ObjectToWorld(positionOS);
 #if defined(GT_PASS_SHADOWCASTER)
-    // URP's depth bias along the light (the x of _ShadowBias). The normal bias (y) needs the
-    // surface normal, which a clip-space transform does not get; the tile corners used for the
-    // tessellation factors have none either. Then keep the caster in front of the near plane, as
-    // URP's ShadowCasterPass does, so geometry behind it still casts.
-    positionWS += _LightDirection * _ShadowBias.x;
+    // URP's depth bias along the light (the x of _ShadowBias, as its ApplyShadowBias). The normal
+    // bias (y) needs the surface normal, which a clip-space transform does not get; the tile corners
+    // used for the tessellation factors have none either. Then clamp to the near plane as URP's
+    // ShadowCasterPass does, so geometry behind it still casts.
+    positionWS += ShadowCasterLightDirection(positionWS) * _ShadowBias.x;
     float4 positionCS = TransformWorldToHClip(positionWS);
     #if UNITY_REVERSED_Z
-    positionCS.z = min(positionCS.z, positionCS.w * UNITY_NEAR_CLIP_VALUE);
+    positionCS.z = min(positionCS.z, UNITY_NEAR_CLIP_VALUE);
     #else
-    positionCS.z = max(positionCS.z, positionCS.w * UNITY_NEAR_CLIP_VALUE);
+    positionCS.z = max(positionCS.z, UNITY_NEAR_CLIP_VALUE);
     #endif
     return positionCS;
 #else
@@ -82,17 +115,39 @@ void GT_MainLight(out float3 directionWS, out float3 color)
 
 // The shadow coordinate is computed per pixel from the world position (TransformWorldToShadowCoord
 // picks the cascade there), not interpolated from the vertices: a tessellated triangle can span
-// two cascades. GetMainLight(shadowCoord, positionWS, shadowMask) also fades the shadow out towards
-// the shadow distance; no baked shadow mask (1).
-float GT_MainLightShadow(float3 positionWS, float4 positionSS)
+// two cascades. With the screen-space shadows feature it is the pixel's screen position.
+// GetMainLight(shadowCoord, positionWS, shadowMask) also fades the shadow out towards the shadow
+// distance; no baked shadow mask (1).
+float GT_MainLightShadow(float3 positionWS, float4 positionSS, float3 normalWS)
 {
 #if defined(GT_RECEIVE_SHADOWS)
+    #if defined(_MAIN_LIGHT_SHADOWS_SCREEN)
+    float4 shadowCoord = float4(GetNormalizedScreenSpaceUV(positionSS), 0.0, 1.0);
+    #else
     float4 shadowCoord = TransformWorldToShadowCoord(positionWS);
+    #endif
     return GetMainLight(shadowCoord, positionWS, half4(1.0, 1.0, 1.0, 1.0)).shadowAttenuation;
 #else
     return 1.0;
 #endif
 }
+
+#if defined(GT_FOG)
+// URP's per-pixel fog (InitializeInputDataFog: the view depth of the world position).
+float3 GT_ApplyFog(float3 color, float3 positionWS)
+{
+    return MixFog(color, InitializeInputDataFog(float4(positionWS, 1.0), 0.0));
+}
+#endif
+
+#if defined(GT_AMBIENT_OCCLUSION)
+// URP's SSAO texture at this pixel: (indirect, direct) occlusion, 1 = none.
+float2 GT_AmbientOcclusion(float4 positionSS)
+{
+    AmbientOcclusionFactor occlusion = GetScreenSpaceAmbientOcclusion(GetNormalizedScreenSpaceUV(positionSS));
+    return float2(occlusion.indirectAmbientOcclusion, occlusion.directAmbientOcclusion);
+}
+#endif
 
 // URP's DepthNormals convention (its own DepthNormalsPass): the world-space normal, normalized per
 // pixel, in rgb; with _GBUFFER_NORMALS_OCT (deferred renderer, accurate G-buffer normals) the
@@ -108,5 +163,12 @@ float4 GT_EncodeDepthNormal(float3 normalWS)
     return float4(NormalizeNormalPerPixel(normalWS), 0.0);
 #endif
 }
+
+// The Scene view's selection outline and picking (URP's SelectionPickingPass).
+#if defined(GT_PASS_SCENE_SELECTION)
+float4 GT_EditorSelectionColor() { return float4(_ObjectId, _PassValue, 1.0, 1.0); }
+#elif defined(GT_PASS_SCENE_PICKING)
+float4 GT_EditorSelectionColor() { return unity_SelectionID; }
+#endif
 
 #endif // GT_URP_ADAPTER_INCLUDED

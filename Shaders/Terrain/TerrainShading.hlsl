@@ -1,6 +1,8 @@
 // Fragment colour of the terrain: Lambert lighting from the adapter's main light, the height
-// colour of eq. 14-15 (GT_HEIGHT_COLOR), snow blended by depth (GT_SNOW) and the debug views (each
-// replaces the lit colour):
+// colour of eq. 14-15 (GT_HEIGHT_COLOR), snow blended by depth (GT_SNOW), what the pipeline adds
+// when its adapter says so (received shadows GT_RECEIVE_SHADOWS, screen-space occlusion
+// GT_AMBIENT_OCCLUSION, fog GT_FOG, pre-exposure GT_PRE_EXPOSE; none of them in the off-Unity rig)
+// and the debug views (each replaces the lit colour):
 //   GT_DEBUG_NORMALS      world normal as RGB (n * 0.5 + 0.5)
 //   GT_DEBUG_PATCH_ID     one flat colour per Gregory patch
 //   GT_DEBUG_TESS_FACTOR  tessellation factor, blue (1) to red (maxFactor)
@@ -65,19 +67,36 @@ float4 TerrainFragmentColor(TerrainVaryings i)
     float3 lightDirectionWS, lightColor;
     GT_MainLight(lightDirectionWS, lightColor);
     float lambert = saturate(dot(normalWS, lightDirectionWS));
+    float ambient = GT_AMBIENT;
     #if defined(GT_RECEIVE_SHADOWS)
     // 1 = lit, 0 = in the main light's shadow; the ambient term stays.
-    lambert *= GT_MainLightShadow(i.positionWS, i.positionCS);
+    lambert *= GT_MainLightShadow(i.positionWS, i.positionCS, normalWS);
     #endif
-    return float4(TerrainAlbedo(i) * (GT_AMBIENT + lightColor * lambert), 1.0);
+    #if defined(GT_AMBIENT_OCCLUSION)
+    // The pipeline's screen-space occlusion: (indirect, direct), 1 = none.
+    float2 occlusion = GT_AmbientOcclusion(i.positionCS);
+    ambient *= occlusion.x;
+    lambert *= occlusion.y;
+    #endif
+    float3 color = TerrainAlbedo(i) * (ambient + lightColor * lambert);
+    #if defined(GT_FOG)
+    color = GT_ApplyFog(color, i.positionWS);
+    #endif
+    #if defined(GT_PRE_EXPOSE)
+    // Lit colour in the pipeline's exposed range (the debug views above are shown as they are).
+    color *= GT_ExposureMultiplier();
+    #endif
+    return float4(color, 1.0);
 #endif
 }
 
-// The depth-normals output (URP's DepthNormals pass): the world normal as the pipeline packs it
-// (GT_EncodeDepthNormal, adapter). No lighting, no albedo.
+// The depth-normals output (URP's DepthNormals pass, HDRP's normal buffer): the world normal as
+// the pipeline packs it (GT_EncodeDepthNormal, adapter). No lighting, no albedo.
+#if defined(GT_PASS_DEPTH_NORMALS)
 float4 TerrainDepthNormal(TerrainVaryings i)
 {
     return GT_EncodeDepthNormal(VaryingsNormalWS(i));
 }
+#endif
 
 #endif // GT_TERRAIN_SHADING_INCLUDED

@@ -38,8 +38,8 @@ struct TerrainVaryings
     // number, made the tessellated draw measurably slower (performance.md, "Choices in the shaders,
     // measured"; internals.md, "Varyings").
     float3 normalAndHeightWeight : TEXCOORD0;
-#if defined(GT_RECEIVE_SHADOWS)
-    float3 positionWS : TEXCOORD6;   // main-light shadow lookup (adapter's GT_MainLightShadow)
+#if defined(GT_VARYINGS_POSITION_WS)
+    float3 positionWS : TEXCOORD6;   // per-pixel shadow lookup and fog (adapter: GT_VARYINGS_POSITION_WS)
 #endif
 #if defined(GT_DEBUG_PATCH_ID)
     nointerpolation uint patch : TEXCOORD2;   // Gregory patch index
@@ -280,7 +280,7 @@ TerrainVaryings TerrainVaryingsOf(float3 positionOS, float3 normalAndHeightWeigh
     TerrainVaryings o;
     o.positionCS = GT_ObjectToClip(positionOS);
     o.normalAndHeightWeight = normalAndHeightWeight;
-#if defined(GT_RECEIVE_SHADOWS)
+#if defined(GT_VARYINGS_POSITION_WS)
     o.positionWS = GT_ObjectToWorld(positionOS);
 #endif
 #if defined(GT_DEBUG_PATCH_ID)

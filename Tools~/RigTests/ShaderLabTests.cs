@@ -22,7 +22,7 @@ namespace GregoryTerrain.Rig.Tests
         /// <summary>The renderer's Vertex evaluation switch: declared by the tessellated passes only.</summary>
         const string VertexCacheKeyword = "GT_VERTEX_CACHE";
         static readonly string[] RigOnlyKeywords = { "GT_PAPER_MODE", "GT_READBACK", "GT_FACTOR_READBACK" };
-        static readonly string[] ForwardModes = { "UniversalForward", "ForwardOnly", "ForwardBase" };
+        static readonly string[] ForwardModes = { "UniversalForwardOnly", "ForwardOnly", "ForwardBase" };
 
         sealed class PassInfo
         {
@@ -112,7 +112,7 @@ namespace GregoryTerrain.Rig.Tests
                         Assert.That(p.Pragmas.Any(a => a.Contains("tessellation")), Is.False, where + ": a fallback must not require tessellation");
                         Assert.That(Regex.IsMatch(p.Program, @"#define\s+GT_FALLBACK\b"), Is.True, where + ": GT_FALLBACK");
                     }
-                    Assert.That(Regex.Matches(p.Program, @"#define\s+GT_PASS_(FORWARD|SHADOWCASTER|DEPTH|DEPTH_NORMALS)\b").Count, Is.EqualTo(1),
+                    Assert.That(Regex.Matches(p.Program, @"#define\s+GT_PASS_(FORWARD|SHADOWCASTER|DEPTH|DEPTH_NORMALS|SCENE_SELECTION|SCENE_PICKING)\b").Count, Is.EqualTo(1),
                         where + ": exactly one GT_PASS_* define");
                 }
         }
@@ -169,10 +169,13 @@ namespace GregoryTerrain.Rig.Tests
         }
 
         /// <summary>
-        /// Unity's keywords are compiled only where a pass reads them: received shadows on the forward
-        /// passes (URP, Built-in), the normal packing on URP's DepthNormals; none on depth and shadow
-        /// passes (each would double their variants for nothing). _SHADOWS_SOFT only changes the
-        /// fragment stage, so it is multi_compile_fragment.
+        /// Unity's keywords are compiled only where a pass reads them (each would double the pass's
+        /// variants for nothing elsewhere): URP's received shadows (shadow map, cascades, the
+        /// screen-space shadows feature), soft-shadow qualities, SSAO and fog on its forward pass, the
+        /// punctual-light caster keyword on its ShadowCaster, the normal packing on DepthNormalsOnly;
+        /// HDRP's shadow filter quality on ForwardOnly and MSAA depth on DepthForwardOnly; Built-in's
+        /// screen shadows on ForwardBase. Keywords that change only the fragment stage are
+        /// multi_compile_fragment; one that the hull or domain stage reads must not be _vertex.
         /// </summary>
         [Test]
         public void PipelineKeywordsAreDeclaredOnlyWhereAPassReadsThem()
@@ -181,18 +184,93 @@ namespace GregoryTerrain.Rig.Tests
                 foreach (PassInfo p in s.Passes)
                 {
                     string[] expected =
-                        s.Pipeline == "URP" && p.LightMode == "UniversalForward" ? new[] { "_MAIN_LIGHT_SHADOWS", "_MAIN_LIGHT_SHADOWS_CASCADE", "_SHADOWS_SOFT" } :
-                        s.Pipeline == "URP" && p.LightMode == "DepthNormals" ? new[] { "_GBUFFER_NORMALS_OCT" } :
+                        s.Pipeline == "URP" && p.LightMode == "UniversalForwardOnly" ? new[] { "_MAIN_LIGHT_SHADOWS", "_MAIN_LIGHT_SHADOWS_CASCADE", "_MAIN_LIGHT_SHADOWS_SCREEN",
+                            "_SHADOWS_SOFT", "_SHADOWS_SOFT_LOW", "_SHADOWS_SOFT_MEDIUM", "_SHADOWS_SOFT_HIGH", "_SCREEN_SPACE_OCCLUSION" } :
+                        s.Pipeline == "URP" && p.LightMode == "ShadowCaster" ? new[] { "_CASTING_PUNCTUAL_LIGHT_SHADOW" } :
+                        s.Pipeline == "URP" && p.LightMode == "DepthNormalsOnly" ? new[] { "_GBUFFER_NORMALS_OCT" } :
+                        s.Pipeline == "HDRP" && p.LightMode == "ForwardOnly" ? new[] { "SHADOW_LOW", "SHADOW_MEDIUM", "SHADOW_HIGH" } :
+                        s.Pipeline == "HDRP" && p.LightMode == "DepthForwardOnly" ? new[] { "WRITE_MSAA_DEPTH" } :
                         s.Pipeline == "Builtin" && p.LightMode == "ForwardBase" ? new[] { "SHADOWS_SCREEN" } :
                         Array.Empty<string>();
-                    Assert.That(p.PipelineKeywords, Is.EquivalentTo(expected), $"{s} pass {p.Name}");
+                    string where = $"{s} pass {p.Name}";
+                    Assert.That(p.PipelineKeywords, Is.EquivalentTo(expected), where);
+                    bool fog = p.Pragmas.Any(a => a.SequenceEqual(new[] { "multi_compile_fog" }));
+                    Assert.That(fog, Is.EqualTo(s.Pipeline == "URP" && p.LightMode == "UniversalForwardOnly"), where + ": multi_compile_fog (URP forward only; HDRP fogs opaques itself)");
+                    // The hull and domain stages run GT_ObjectToClip too: a keyword it reads must reach them.
+                    if (s.Tessellated)
+                        Assert.That(p.Pragmas.Where(a => a[0] == "multi_compile_vertex"), Is.Empty, where + ": multi_compile_vertex in a tessellated pass");
                 }
-            foreach (PassInfo p in _subShaders.Where(s => s.Pipeline == "URP").SelectMany(s => s.Passes).Where(p => p.LightMode == "UniversalForward"))
+            foreach (PassInfo p in _subShaders.Where(s => s.Pipeline == "URP").SelectMany(s => s.Passes).Where(p => p.LightMode == "UniversalForwardOnly"))
             {
-                Assert.That(p.Pragmas.Any(a => a.SequenceEqual(new[] { "multi_compile", "_", "_MAIN_LIGHT_SHADOWS", "_MAIN_LIGHT_SHADOWS_CASCADE" })), Is.True,
-                    "URP forward: the main-light shadow keywords as one set");
-                Assert.That(p.Pragmas.Any(a => a.SequenceEqual(new[] { "multi_compile_fragment", "_", "_SHADOWS_SOFT" })), Is.True,
-                    "URP forward: _SHADOWS_SOFT in the fragment stage only");
+                Assert.That(p.Pragmas.Any(a => a.SequenceEqual(new[] { "multi_compile", "_", "_MAIN_LIGHT_SHADOWS", "_MAIN_LIGHT_SHADOWS_CASCADE", "_MAIN_LIGHT_SHADOWS_SCREEN" })), Is.True,
+                    "URP forward: the main-light shadow keywords as one set, in every stage (they add the positionWS varying)");
+                Assert.That(p.Pragmas.Any(a => a.SequenceEqual(new[] { "multi_compile_fragment", "_", "_SHADOWS_SOFT", "_SHADOWS_SOFT_LOW", "_SHADOWS_SOFT_MEDIUM", "_SHADOWS_SOFT_HIGH" })), Is.True,
+                    "URP forward: the soft-shadow qualities as one set, fragment stage only");
+            }
+            foreach (PassInfo p in _subShaders.Where(s => s.Pipeline == "HDRP").SelectMany(s => s.Passes).Where(p => p.LightMode == "ForwardOnly"))
+                Assert.That(p.Pragmas.Any(a => a.SequenceEqual(new[] { "multi_compile_fragment", "SHADOW_LOW", "SHADOW_MEDIUM", "SHADOW_HIGH" })), Is.True,
+                    "HDRP forward: one shadow quality always set, fragment stage only, as HDRP's Lit");
+        }
+
+        /// <summary>
+        /// A project without URP or HDRP must not see their SubShaders (their includes do not exist
+        /// there): each SRP SubShader opens with a PackageRequirements block naming its package (Unity
+        /// wants the block before every other declaration); the Built-in ones need none.
+        /// </summary>
+        [Test]
+        public void EverySrpSubShaderRequiresItsPackage()
+        {
+            foreach (SubShaderInfo s in _subShaders)
+            {
+                string outer = OuterPart(s.Body);
+                var block = Regex.Match(outer, @"^\s*PackageRequirements\s*\{([^}]*)\}");
+                string package = s.Pipeline == "URP" ? "com.unity.render-pipelines.universal" : s.Pipeline == "HDRP" ? "com.unity.render-pipelines.high-definition" : null;
+                if (package == null)
+                {
+                    Assert.That(outer, Does.Not.Contain("PackageRequirements"), s.ToString());
+                    continue;
+                }
+                Assert.That(block.Success, Is.True, s + ": PackageRequirements as the SubShader's first declaration");
+                Assert.That(Regex.Matches(block.Groups[1].Value, "\"([^\"]+)\"\\s*:\\s*\"([^\"]+)\"").Select(m => m.Groups[1].Value + " " + m.Groups[2].Value),
+                    Is.EqualTo(new[] { package + " 14.0" }), s + ": the package, from the version the rig checks (14)");
+                foreach (PassInfo p in s.Passes)
+                    Assert.That(p.Program, Does.Not.Contain(s.Pipeline == "URP" ? "high-definition" : "render-pipelines.universal"), $"{s} pass {p.Name}: the other pipeline's include");
+            }
+        }
+
+        /// <summary>
+        /// HDRP reads the stencil its materials write: the values of its Unlit (a forward-only material
+        /// with its own lighting): depth prepass Ref IsUnlit (1), WriteMask IsUnlit | TraceReflectionRay
+        /// (9), so SSR and GI skip the terrain; forward Ref 0, WriteMask RequiresDeferredLighting |
+        /// SubsurfaceScattering (6). The depth prepass writes the normal buffer (no ColorMask 0).
+        /// </summary>
+        [Test]
+        public void HdrpPassesWriteTheStencilAndNormalBufferAsHdrpUnlit()
+        {
+            foreach (SubShaderInfo s in _subShaders.Where(s => s.Pipeline == "HDRP"))
+            {
+                PassInfo depth = s.Passes.Single(p => p.LightMode == "DepthForwardOnly");
+                PassInfo forward = s.Passes.Single(p => p.LightMode == "ForwardOnly");
+                Assert.That(StencilOf(s.Body, depth.Name), Is.EqualTo("WriteMask 9 Ref 1 Comp Always Pass Replace"), s + " depth");
+                Assert.That(StencilOf(s.Body, forward.Name), Is.EqualTo("WriteMask 6 Ref 0 Comp Always Pass Replace"), s + " forward");
+                Assert.That(Regex.IsMatch(depth.Program, @"#define\s+GT_PASS_DEPTH_NORMALS\b"), Is.True, s + ": DepthForwardOnly writes the normal buffer");
+                Assert.That(PassBody(s.Body, depth.Name), Does.Not.Contain("ColorMask 0"), s + ": the normal buffer is a colour target");
+            }
+        }
+
+        /// <summary>The Scene view's passes, as Unity's own shaders have them: outline without culling, both compiled on demand.</summary>
+        [Test]
+        public void SrpSubShadersHaveTheSceneViewSelectionAndPickingPasses()
+        {
+            foreach (SubShaderInfo s in _subShaders.Where(s => s.Pipeline != "Builtin"))
+            {
+                PassInfo selection = s.Passes.Single(p => p.LightMode == "SceneSelectionPass");
+                PassInfo picking = s.Passes.Single(p => p.LightMode == "Picking");
+                Assert.That(Regex.IsMatch(selection.Program, @"#define\s+GT_PASS_SCENE_SELECTION\b"), Is.True, s.ToString());
+                Assert.That(Regex.IsMatch(picking.Program, @"#define\s+GT_PASS_SCENE_PICKING\b"), Is.True, s.ToString());
+                Assert.That(PassBody(s.Body, selection.Name), Does.Contain("Cull Off"), s + ": the outline covers back faces too");
+                foreach (PassInfo p in new[] { selection, picking })
+                    Assert.That(p.Pragmas.Any(a => a.SequenceEqual(new[] { "editor_sync_compilation" })), Is.True, $"{s} pass {p.Name}");
             }
         }
 
@@ -265,8 +343,8 @@ namespace GregoryTerrain.Rig.Tests
             Assert.That(count, Is.GreaterThan(0));
         }
 
-        [TestCase("URP", new[] { "UniversalForward", "ShadowCaster", "DepthOnly", "DepthNormals" })]
-        [TestCase("HDRP", new[] { "ForwardOnly", "DepthForwardOnly", "ShadowCaster" })]
+        [TestCase("URP", new[] { "UniversalForwardOnly", "ShadowCaster", "DepthOnly", "DepthNormalsOnly", "SceneSelectionPass", "Picking" })]
+        [TestCase("HDRP", new[] { "SceneSelectionPass", "Picking", "DepthForwardOnly", "ForwardOnly", "ShadowCaster" })]
         [TestCase("Builtin", new[] { "ForwardBase", "ShadowCaster" })]
         public void LightModesPerPipelineAreTheRequiredSet(string pipeline, string[] required)
         {
@@ -274,11 +352,21 @@ namespace GregoryTerrain.Rig.Tests
             Assert.That(subs.Count, Is.EqualTo(2), pipeline);
             foreach (SubShaderInfo s in subs)
             {
-                var modes = s.Passes.Select(p => p.LightMode).ToList();
-                if (pipeline == "HDRP" && !modes.Contains("DepthForwardOnly") && modes.Contains("DepthOnly"))
-                    modes[modes.IndexOf("DepthOnly")] = "DepthForwardOnly";   // either depth pass is accepted
-                Assert.That(modes, Is.EquivalentTo(required), s.ToString());
+                // URP: forward-only colour (its Deferred renderer skips UniversalForward for opaques) with
+                // DepthNormalsOnly (drawn by the Forward renderers' and the Deferred renderer's normals prepass).
+                Assert.That(s.Passes.Select(p => p.LightMode), Is.EquivalentTo(required), s.ToString());
             }
+        }
+
+        /// <summary>A pass's text (state and program) by its Name, comments stripped.</summary>
+        static string PassBody(string sub, string name) =>
+            Blocks(sub, "Pass").Single(b => Regex.IsMatch(b, "\\bName\\s+\"" + Regex.Escape(name) + "\""));
+
+        /// <summary>The pass's Stencil block, whitespace collapsed ("" if none).</summary>
+        static string StencilOf(string sub, string name)
+        {
+            var m = Regex.Match(PassBody(sub, name), @"\bStencil\s*\{([^}]*)\}");
+            return m.Success ? Regex.Replace(m.Groups[1].Value.Trim(), @"\s+", " ") : "";
         }
 
         static bool HasPragma(PassInfo p, string name) => p.Pragmas.Any(a => a.Length > 0 && a[0] == name);
