@@ -18,7 +18,7 @@ namespace GregoryTerrain.Rig.Tests
     [TestFixture]
     public class ShaderLibraryTests
     {
-        static readonly string[] Emulations = { "half-twins", "texture-types", "hdrp-matrix-swizzle" };
+        static readonly string[] Emulations = { "half-twins", "texture-types", "hdrp-matrix-swizzle", "hdrp-shadow-context-buffer" };
         const string ScreenShadowLimit = "builtin-shadows-screen-tex2Dproj";
 
         int _exitCode;

@@ -17,6 +17,10 @@ are emulated after preprocessing (see the shaderlib README), each reported per c
   texture-types      Texture2D_half / Texture2D_float (HLSLcc types) and their kin -> plain types;
   hdrp-matrix-swizzle  "m._m03_m13_m23 -= v;" and "+= v;" (HDRP ShaderVariables.hlsl lines 345, 375: glslang
                      rejects compound assignment to a matrix swizzle) -> "m.s = m.s - (v);".
+  hdrp-shadow-context-buffer  HDRP HDShadowContext.hlsl keeps StructuredBuffer<HDShadowData> as a
+                     struct member, always set from the global _HDShadowDatas; glslang cannot hold a
+                     buffer in a struct, so the member is dropped and "<ctx>.shadowDatas" reads the
+                     global it was set from.
 A case that fails only for a known glslang limit is printed "glslang-limit: <case>: <limit>", never
 skipped; any other failure in it still fails.
 
@@ -284,18 +288,30 @@ def is_placeholder(k):
     return re.fullmatch(r"_+", k) is not None
 
 
+FOG_KEYWORDS = ["FOG_LINEAR", "FOG_EXP", "FOG_EXP2"]   # what Unity's multi_compile_fog declares
+
+
 def variants(program):
     """Keyword sets to compile: none, each keyword alone (plus the platform defines that change
     its path), all effects together, and the effects with the first keyword of every other set."""
-    keywords, firsts = [], []
+    keywords, firsts, required_sets = [], [], []
     for p in pragmas(program):
+        if p and p[0] == "multi_compile_fog":
+            p = ["multi_compile", "_"] + FOG_KEYWORDS
         if p and KEYWORD_PRAGMA.match(p[0]):
             declared = [k for k in p[1:] if not is_placeholder(k)]
+            if not any(is_placeholder(k) for k in p[1:]) and len(declared) > 1:
+                required_sets.append(declared)
             keywords += declared
             # Debug views replace the lighting, so they would hide the other sets' code paths.
             if declared and not set(declared) & set(EFFECTS) and not declared[0].startswith("GT_DEBUG"):
                 firsts.append(declared[0])
     out = [[]] + [[k] for k in keywords]
+    # A set without "_" always has one of its keywords on: Unity never compiles the set's absence,
+    # so every variant gets the set's first keyword unless it already names one of them.
+    for required in required_sets:
+        out = [v if set(v) & set(required) else v + [required[0]] for v in out]
+    out = [v for i, v in enumerate(out) if v not in out[:i]]
     out += [[k] + PLATFORM_DEFINES[k] for k in keywords if k in PLATFORM_DEFINES]
     effects = [k for k in EFFECTS if k in keywords]
     if len(effects) > 1:
@@ -500,7 +516,25 @@ def emulate(text):
         text, n = MATRIX_SWIZZLE_OP.subn(r"\1.\2 = \1.\2 \3 (\4);", text)
     if n:
         applied.append("hdrp-matrix-swizzle")
+    text, n = emulate_shadow_context_buffer(text)
+    if n:
+        applied.append("hdrp-shadow-context-buffer")
     return text, applied
+
+
+SHADOW_CONTEXT_MEMBER = re.compile(r"^\s*StructuredBuffer\s*<\s*HDShadowData\s*>\s*shadowDatas\s*;\s*$", re.M)
+SHADOW_CONTEXT_SET = re.compile(r"^\s*\w+\s*\.\s*shadowDatas\s*=\s*_HDShadowDatas\s*;\s*$", re.M)
+SHADOW_CONTEXT_READ = re.compile(r"\b\w+\s*\.\s*shadowDatas\b")
+
+
+def emulate_shadow_context_buffer(text):
+    """HDRP's shadow context holds the shadow data buffer as a struct member; only ever the global."""
+    if not SHADOW_CONTEXT_MEMBER.search(text):
+        return text, 0
+    text, members = SHADOW_CONTEXT_MEMBER.subn("", text)
+    text, sets = SHADOW_CONTEXT_SET.subn("", text)
+    text, reads = SHADOW_CONTEXT_READ.subn("_HDShadowDatas", text)
+    return text, members + sets + reads
 
 
 # ---------------------------------------------------------------------------------------------
