@@ -65,7 +65,7 @@ namespace UnityEngine
         public void LookAt(Vector3 worldPosition) { }                                 // SR:Transform.LookAt
     }
 
-    public class Camera : Behaviour                                                   // SR:Camera
+    public sealed class Camera : Behaviour                                            // SR:Camera (sealed partial in 2022.3)
     {
         public static Camera main => null;                                            // SR:Camera-main
         public float fieldOfView { get; set; }                                        // SR:Camera-fieldOfView
@@ -82,7 +82,7 @@ namespace UnityEngine
         public static Matrix4x4 GetGPUProjectionMatrix(Matrix4x4 proj, bool renderIntoTexture) => proj; // SR:GL.GetGPUProjectionMatrix
     }
 
-    public static class Debug                                                         // SR:Debug
+    public class Debug                                                                // SR:Debug (a plain class in 2022.3, not static)
     {
         public static void Log(object message, Object context) { }                    // SR:Debug.Log
         public static void LogWarning(object message, Object context) { }             // SR:Debug.LogWarning
@@ -90,10 +90,10 @@ namespace UnityEngine
         public static void LogError(object message) { }                               // SR:Debug.LogError
     }
 
-    public static class Application { public static bool isPlaying => false; }       // SR:Application-isPlaying
-    public static class Time { public static float deltaTime => 0f; public static float time => 0f; } // SR:Time-deltaTime, SR:Time-time
+    public class Application { public static bool isPlaying => false; }              // SR:Application-isPlaying (plain class)
+    public class Time { public static float deltaTime => 0f; public static float time => 0f; } // SR:Time-deltaTime, SR:Time-time (plain class)
 
-    public static class Mathf                                                         // SR:Mathf
+    public struct Mathf                                                               // SR:Mathf (a struct in 2022.3)
     {
         public const float Deg2Rad = 0.017453292f;                                    // SR:Mathf.Deg2Rad
         public const float PI = 3.14159274f;                                          // SR:Mathf.PI
@@ -199,7 +199,7 @@ namespace UnityEngine
         public Color[] GetPixels() => null;                                           // SR:Texture2D.GetPixels
     }
 
-    public class Shader : Object                                                      // SR:Shader
+    public sealed class Shader : Object                                               // SR:Shader
     {
         public static int PropertyToID(string name) => 0;                             // SR:Shader.PropertyToID
         public static Shader Find(string name) => null;                               // SR:Shader.Find
@@ -281,7 +281,7 @@ namespace UnityEngine
         public Camera camera { get => null; set { } }
     }
 
-    public static class Graphics                                                      // SR:Graphics
+    public class Graphics                                                             // SR:Graphics (plain class)
     {
         // SR:Graphics.RenderPrimitives. The page prints `ref RenderParams`; Unity's shipped assembly
         // (2022.2 and later, as decompiled listings show) declares `in`, which is why callers pass the
@@ -291,7 +291,7 @@ namespace UnityEngine
         public static void RenderPrimitivesIndexed(in RenderParams rparams, MeshTopology topology, GraphicsBuffer indexBuffer, int indexCount, int startIndex = 0, int instanceCount = 1) { }
     }
 
-    public static class SystemInfo                                                    // SR:SystemInfo
+    public sealed class SystemInfo                                                    // SR:SystemInfo
     {
         public static bool supportsTessellationShaders => false;                      // SR:SystemInfo-supportsTessellationShaders
         public static bool supportsComputeShaders => false;                           // SR:SystemInfo-supportsComputeShaders
@@ -299,14 +299,14 @@ namespace UnityEngine
         public static bool supportsInstancing => false;                               // SR:SystemInfo-supportsInstancing
     }
 
-    public static class Gizmos                                                        // SR:Gizmos
+    public sealed class Gizmos                                                        // SR:Gizmos
     {
         public static Color color { get; set; }                                       // SR:Gizmos-color
         public static Matrix4x4 matrix { get; set; }                                  // SR:Gizmos-matrix
     }
 
 #if ENABLE_LEGACY_INPUT_MANAGER
-    public static class Input                                                         // SR:Input (legacy Input Manager)
+    public class Input                                                                // SR:Input (legacy Input Manager; plain class)
     {
         public static Vector2 mouseScrollDelta => default;                            // SR:Input-mouseScrollDelta
         public static float GetAxis(string axisName) => 0f;                           // SR:Input.GetAxis
@@ -314,25 +314,25 @@ namespace UnityEngine
 #endif
 
     // ---- attributes ----------------------------------------------------------------------------
-    [AttributeUsage(AttributeTargets.Class)] public sealed class ExecuteAlways : Attribute { }                         // SR:ExecuteAlways
-    [AttributeUsage(AttributeTargets.Class)] public sealed class DisallowMultipleComponent : Attribute { }             // SR:DisallowMultipleComponent
-    [AttributeUsage(AttributeTargets.Class)] public sealed class AddComponentMenu : Attribute { public AddComponentMenu(string menuName) { } } // SR:AddComponentMenu
-    [AttributeUsage(AttributeTargets.Class)] public sealed class DefaultExecutionOrder : Attribute { public DefaultExecutionOrder(int order) { } } // SR:DefaultExecutionOrder
-    [AttributeUsage(AttributeTargets.Class)] public sealed class RequireComponent : Attribute { public RequireComponent(Type requiredComponent) { } } // SR:RequireComponent
-    [AttributeUsage(AttributeTargets.Class)]
+    public sealed class ExecuteAlways : Attribute { }                                                                  // SR:ExecuteAlways (no AttributeUsage in 2022.3: any target)
+    [AttributeUsage(AttributeTargets.Class, Inherited = false)] public sealed class DisallowMultipleComponent : Attribute { } // SR:DisallowMultipleComponent
+    public sealed class AddComponentMenu : Attribute { public AddComponentMenu(string menuName) { } }                 // SR:AddComponentMenu (no AttributeUsage in 2022.3)
+    [AttributeUsage(AttributeTargets.Class)] public class DefaultExecutionOrder : Attribute { public DefaultExecutionOrder(int order) { } } // SR:DefaultExecutionOrder (not sealed)
+    [AttributeUsage(AttributeTargets.Class, AllowMultiple = true)] public sealed class RequireComponent : Attribute { public RequireComponent(Type requiredComponent) { } } // SR:RequireComponent
+    [AttributeUsage(AttributeTargets.Class, AllowMultiple = false, Inherited = false)]
     public sealed class CreateAssetMenuAttribute : Attribute                                                           // SR:CreateAssetMenuAttribute
     {
         public string menuName { get; set; }
         public string fileName { get; set; }
         public int order { get; set; }
     }
-    [AttributeUsage(AttributeTargets.Field)] public sealed class SerializeField : Attribute { }                       // SR:SerializeField
-    [AttributeUsage(AttributeTargets.Field)] public class PropertyAttribute : Attribute { }                          // SR:PropertyAttribute
-    [AttributeUsage(AttributeTargets.Field)] public sealed class TooltipAttribute : PropertyAttribute { public TooltipAttribute(string tooltip) { } } // SR:TooltipAttribute
-    [AttributeUsage(AttributeTargets.Field)] public sealed class RangeAttribute : PropertyAttribute { public RangeAttribute(float min, float max) { } } // SR:RangeAttribute
-    [AttributeUsage(AttributeTargets.Field)] public sealed class MinAttribute : PropertyAttribute { public MinAttribute(float min) { } } // SR:MinAttribute
-    [AttributeUsage(AttributeTargets.Field, AllowMultiple = true)] public class HeaderAttribute : PropertyAttribute { public HeaderAttribute(string header) { } } // SR:HeaderAttribute
-    [AttributeUsage(AttributeTargets.Field)] public sealed class HideInInspector : Attribute { }                     // SR:HideInInspector
+    public sealed class SerializeField : Attribute { }                                                                 // SR:SerializeField (no AttributeUsage in 2022.3)
+    [AttributeUsage(AttributeTargets.Field, Inherited = true, AllowMultiple = false)] public abstract class PropertyAttribute : Attribute { } // SR:PropertyAttribute
+    [AttributeUsage(AttributeTargets.All, Inherited = true, AllowMultiple = false)] public class TooltipAttribute : PropertyAttribute { public TooltipAttribute(string tooltip) { } } // SR:TooltipAttribute
+    [AttributeUsage(AttributeTargets.Field, Inherited = true, AllowMultiple = false)] public sealed class RangeAttribute : PropertyAttribute { public RangeAttribute(float min, float max) { } } // SR:RangeAttribute
+    [AttributeUsage(AttributeTargets.Field, Inherited = true, AllowMultiple = false)] public sealed class MinAttribute : PropertyAttribute { public MinAttribute(float min) { } } // SR:MinAttribute
+    [AttributeUsage(AttributeTargets.Field, Inherited = true, AllowMultiple = true)] public class HeaderAttribute : PropertyAttribute { public HeaderAttribute(string header) { } } // SR:HeaderAttribute
+    public sealed class HideInInspector : Attribute { }                                                                // SR:HideInInspector (no AttributeUsage in 2022.3)
 }
 
 namespace UnityEngine.Rendering
@@ -348,18 +348,16 @@ namespace UnityEngine
         public GUIContent(string text) { }                                            // SR:GUIContent-ctor
         public GUIContent(string text, string tooltip) { }                            // SR:GUIContent-ctor
     }
-    public class GUILayoutOption { }                                                  // SR:GUILayoutOption
+    public sealed class GUILayoutOption { }                                           // SR:GUILayoutOption
     public class GUILayout                                                            // SR:GUILayout
     {
         public static bool Button(GUIContent content, params GUILayoutOption[] options) => false; // SR:GUILayout.Button
     }
     public enum EventType { MouseDown = 0, MouseUp = 1, MouseDrag = 3, KeyDown = 4, KeyUp = 5, Repaint = 7, Layout = 8 } // SR:EventType
-    public enum KeyCode { C = 99, V = 118, X = 120, Z = 122 }                         // SR:KeyCode (values: ASCII, as listed)
+    public enum KeyCode { G = 103, I = 105, U = 117 }                                 // SR:KeyCode (values: ASCII, as listed)
     public sealed class Event                                                         // SR:Event
     {
         public static Event current { get => null; set { } }                          // SR:Event-current
         public EventType type { get; set; }                                           // SR:Event-type
-        public KeyCode keyCode { get; set; }                                          // SR:Event-keyCode
-        public void Use() { }                                                         // SR:Event.Use
     }
 }
