@@ -11,12 +11,12 @@ namespace UnityEditor
     [Flags]
     public enum SelectionMode { Unfiltered = 0, TopLevel = 1, Deep = 2, ExcludePrefab = 4, Editable = 8, Assets = 16, DeepAssets = 32 } // SR:SelectionMode
 
-    public sealed partial class Selection
+    public sealed partial class Selection                                                 // SR:Selection
     {
         public static T[] GetFiltered<T>(SelectionMode mode) => null;                        // SR:Selection.GetFiltered
     }
 
-    public partial class Undo
+    public partial class Undo                                                             // SR:Undo
     {
         public static void RecordObjects(Object[] objectsToUndo, string name) { }            // SR:Undo.RecordObjects
     }

@@ -15,17 +15,17 @@ namespace UnityEditor.ShortcutManagement
     {
         public string displayName { get; set; }                                             // SR:ShortcutManagement.ShortcutAttribute-displayName
         public ShortcutAttribute(string id, Type context = null) { }                         // SR:ShortcutManagement.ShortcutAttribute-ctor
-        public ShortcutAttribute(string id, Type context, KeyCode defaultKeyCode, ShortcutModifiers defaultShortcutModifiers = ShortcutModifiers.None) { }
-        public ShortcutAttribute(string id, Type context, string tag, KeyCode defaultKeyCode, ShortcutModifiers defaultShortcutModifiers = ShortcutModifiers.None) { }
-        public ShortcutAttribute(string id, KeyCode defaultKeyCode, ShortcutModifiers defaultShortcutModifiers = ShortcutModifiers.None) { }
+        public ShortcutAttribute(string id, Type context, KeyCode defaultKeyCode, ShortcutModifiers defaultShortcutModifiers = ShortcutModifiers.None) { } // SR:ShortcutManagement.ShortcutAttribute-ctor
+        public ShortcutAttribute(string id, Type context, string tag, KeyCode defaultKeyCode, ShortcutModifiers defaultShortcutModifiers = ShortcutModifiers.None) { } // SR:ShortcutManagement.ShortcutAttribute-ctor
+        public ShortcutAttribute(string id, KeyCode defaultKeyCode, ShortcutModifiers defaultShortcutModifiers = ShortcutModifiers.None) { } // SR:ShortcutManagement.ShortcutAttribute-ctor
     }
 
     [AttributeUsage(AttributeTargets.Method, AllowMultiple = true)]
     public class ClutchShortcutAttribute : ShortcutAttribute                                 // SR:ShortcutManagement.ClutchShortcutAttribute
     {
-        public ClutchShortcutAttribute(string id, Type context = null) : base(id, context) { }
-        public ClutchShortcutAttribute(string id, Type context, KeyCode defaultKeyCode, ShortcutModifiers defaultShortcutModifiers = ShortcutModifiers.None) : base(id, context, defaultKeyCode, defaultShortcutModifiers) { }
-        public ClutchShortcutAttribute(string id, KeyCode defaultKeyCode, ShortcutModifiers defaultShortcutModifiers = ShortcutModifiers.None) : base(id, defaultKeyCode, defaultShortcutModifiers) { }
+        public ClutchShortcutAttribute(string id, Type context = null) : base(id, context) { } // SR:ShortcutManagement.ClutchShortcutAttribute-ctor
+        public ClutchShortcutAttribute(string id, Type context, KeyCode defaultKeyCode, ShortcutModifiers defaultShortcutModifiers = ShortcutModifiers.None) : base(id, context, defaultKeyCode, defaultShortcutModifiers) { } // SR:ShortcutManagement.ClutchShortcutAttribute-ctor
+        public ClutchShortcutAttribute(string id, KeyCode defaultKeyCode, ShortcutModifiers defaultShortcutModifiers = ShortcutModifiers.None) : base(id, defaultKeyCode, defaultShortcutModifiers) { } // SR:ShortcutManagement.ClutchShortcutAttribute-ctor
     }
 
     [Flags]

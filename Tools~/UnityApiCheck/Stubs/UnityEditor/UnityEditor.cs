@@ -24,8 +24,8 @@ namespace UnityEditor
     [AttributeUsage(AttributeTargets.Method, AllowMultiple = true)]
     public sealed class MenuItem : Attribute                                                 // SR:MenuItem-ctor
     {
-        public MenuItem(string itemName) { }
-        public MenuItem(string itemName, bool isValidateFunction, int priority) { }
+        public MenuItem(string itemName) { }                                              // SR:MenuItem-ctor
+        public MenuItem(string itemName, bool isValidateFunction, int priority) { }       // SR:MenuItem-ctor
     }
 
 
@@ -48,8 +48,8 @@ namespace UnityEditor
     {
         public struct DisabledScope : IDisposable                                            // SR:EditorGUI.DisabledScope
         {
-            public DisabledScope(bool disabled) { }
-            public void Dispose() { }
+            public DisabledScope(bool disabled) { }                                       // SR:EditorGUI.DisabledScope-ctor
+            public void Dispose() { }                                                     // SR:EditorGUI.DisabledScope.Dispose
         }
         public static void BeginChangeCheck() { }                                            // SR:EditorGUI.BeginChangeCheck
         public static bool EndChangeCheck() => false;                                        // SR:EditorGUI.EndChangeCheck

@@ -113,8 +113,8 @@ namespace UnityEngine
 
     public struct Vector2                                                             // SR:Vector2
     {
-        public float x, y;
-        public Vector2(float x, float y) { this.x = x; this.y = y; }
+        public float x, y;                                                                // SR:Vector2-x, SR:Vector2-y
+        public Vector2(float x, float y) { this.x = x; this.y = y; }                      // SR:Vector2-ctor
         public static Vector2 zero => default;                                        // SR:Vector2-zero
         public float sqrMagnitude => 0f;                                              // SR:Vector2-sqrMagnitude
         public void Normalize() { }                                                   // SR:Vector2.Normalize
@@ -127,15 +127,15 @@ namespace UnityEngine
 
     public struct Vector2Int                                                          // SR:Vector2Int
     {
-        public int x { get; set; }
-        public int y { get; set; }
-        public Vector2Int(int x, int y) { this.x = x; this.y = y; }
+        public int x { get; set; }                                                        // SR:Vector2Int-x
+        public int y { get; set; }                                                        // SR:Vector2Int-y
+        public Vector2Int(int x, int y) { this.x = x; this.y = y; }                       // SR:Vector2Int-ctor
     }
 
     public struct Vector3                                                             // SR:Vector3
     {
-        public float x, y, z;
-        public Vector3(float x, float y, float z) { this.x = x; this.y = y; this.z = z; }
+        public float x, y, z;                                                             // SR:Vector3-x, SR:Vector3-y, SR:Vector3-z
+        public Vector3(float x, float y, float z) { this.x = x; this.y = y; this.z = z; } // SR:Vector3-ctor
         public static Vector3 zero => default;                                        // SR:Vector3-zero
         public static Vector3 one => default;                                         // SR:Vector3-one
         public static Vector3 forward => default;                                     // SR:Vector3-forward
@@ -152,8 +152,8 @@ namespace UnityEngine
 
     public struct Vector4                                                             // SR:Vector4
     {
-        public float x, y, z, w;
-        public Vector4(float x, float y, float z, float w) { this.x = x; this.y = y; this.z = z; this.w = w; }
+        public float x, y, z, w;                                                          // SR:Vector4-x (y, z, w)
+        public Vector4(float x, float y, float z, float w) { this.x = x; this.y = y; this.z = z; this.w = w; } // SR:Vector4-ctor
     }
 
     public struct Quaternion                                                          // SR:Quaternion
@@ -165,7 +165,7 @@ namespace UnityEngine
 
     public struct Matrix4x4                                                           // SR:Matrix4x4
     {
-        public float m00, m01, m02, m03, m10, m11, m12, m13, m20, m21, m22, m23, m30, m31, m32, m33;
+        public float m00, m01, m02, m03, m10, m11, m12, m13, m20, m21, m22, m23, m30, m31, m32, m33; // SR:Matrix4x4-m00 (and m01..m33)
         public Vector3 MultiplyPoint3x4(Vector3 point) => point;                      // SR:Matrix4x4.MultiplyPoint3x4
         public static Matrix4x4 identity => default;                                  // SR:Matrix4x4-identity
         public static Matrix4x4 operator *(Matrix4x4 lhs, Matrix4x4 rhs) => lhs;      // SR:Matrix4x4-operator_multiply
@@ -173,9 +173,9 @@ namespace UnityEngine
 
     public struct Color                                                               // SR:Color
     {
-        public float r, g, b, a;
-        public Color(float r, float g, float b) { this.r = r; this.g = g; this.b = b; a = 1f; }
-        public Color(float r, float g, float b, float a) { this.r = r; this.g = g; this.b = b; this.a = a; }
+        public float r, g, b, a;                                                          // SR:Color-r, SR:Color-g, SR:Color-b, SR:Color-a
+        public Color(float r, float g, float b) { this.r = r; this.g = g; this.b = b; a = 1f; } // SR:Color-ctor
+        public Color(float r, float g, float b, float a) { this.r = r; this.g = g; this.b = b; this.a = a; } // SR:Color-ctor
         public Color linear => this;                                                  // SR:Color-linear
         public float grayscale => 0f;                                                 // SR:Color-grayscale
         public static Color white => default;                                         // SR:Color-white
@@ -271,14 +271,14 @@ namespace UnityEngine
     // (verified in the 2022.3 page's property list): no shadows cast, none received.
     public struct RenderParams
     {
-        public RenderParams(Material mat) { }
-        public Material material { get => null; set { } }
-        public Bounds worldBounds { get => default; set { } }
-        public MaterialPropertyBlock matProps { get => null; set { } }
-        public Rendering.ShadowCastingMode shadowCastingMode { get => default; set { } }
-        public bool receiveShadows { get => false; set { } }
-        public int layer { get => 0; set { } }
-        public Camera camera { get => null; set { } }
+        public RenderParams(Material mat) { }                                             // SR:RenderParams-ctor
+        public Material material { get => null; set { } }                                 // SR:RenderParams-material
+        public Bounds worldBounds { get => default; set { } }                             // SR:RenderParams-worldBounds
+        public MaterialPropertyBlock matProps { get => null; set { } }                    // SR:RenderParams-matProps
+        public Rendering.ShadowCastingMode shadowCastingMode { get => default; set { } }  // SR:RenderParams-shadowCastingMode
+        public bool receiveShadows { get => false; set { } }                              // SR:RenderParams-receiveShadows
+        public int layer { get => 0; set { } }                                            // SR:RenderParams-layer
+        public Camera camera { get => null; set { } }                                     // SR:RenderParams-camera
     }
 
     public class Graphics                                                             // SR:Graphics (plain class)
@@ -322,9 +322,9 @@ namespace UnityEngine
     [AttributeUsage(AttributeTargets.Class, AllowMultiple = false, Inherited = false)]
     public sealed class CreateAssetMenuAttribute : Attribute                                                           // SR:CreateAssetMenuAttribute
     {
-        public string menuName { get; set; }
-        public string fileName { get; set; }
-        public int order { get; set; }
+        public string menuName { get; set; }                                              // SR:CreateAssetMenuAttribute-menuName
+        public string fileName { get; set; }                                              // SR:CreateAssetMenuAttribute-fileName
+        public int order { get; set; }                                                    // SR:CreateAssetMenuAttribute-order
     }
     public sealed class SerializeField : Attribute { }                                                                 // SR:SerializeField (no AttributeUsage in 2022.3)
     [AttributeUsage(AttributeTargets.Field, Inherited = true, AllowMultiple = false)] public abstract class PropertyAttribute : Attribute { } // SR:PropertyAttribute
