@@ -10,7 +10,7 @@ using System.Collections.Generic;
 namespace UnityEngine
 {
     // SR:Object
-    public class Object
+    public partial class Object
     {
         public string name { get => null; set { } }                                  // SR:Object-name
         public static implicit operator bool(Object o) => !ReferenceEquals(o, null);  // SR:Object-operator_Object
@@ -34,12 +34,12 @@ namespace UnityEngine
         public bool isActiveAndEnabled => false;                                      // SR:Behaviour-isActiveAndEnabled
     }
     public class MonoBehaviour : Behaviour { }                                        // SR:MonoBehaviour
-    public class ScriptableObject : Object                                            // SR:ScriptableObject
+    public partial class ScriptableObject : Object                                    // SR:ScriptableObject
     {
         public static T CreateInstance<T>() where T : ScriptableObject => null;       // SR:ScriptableObject.CreateInstance
     }
 
-    public sealed class GameObject : Object                                           // SR:GameObject
+    public sealed partial class GameObject : Object                                   // SR:GameObject
     {
         public GameObject(string name) { }                                            // SR:GameObject-ctor
         public Transform transform => null;                                           // SR:GameObject-transform
@@ -199,7 +199,7 @@ namespace UnityEngine
         public Color[] GetPixels() => null;                                           // SR:Texture2D.GetPixels
     }
 
-    public sealed class Shader : Object                                               // SR:Shader
+    public sealed partial class Shader : Object                                       // SR:Shader
     {
         public static int PropertyToID(string name) => 0;                             // SR:Shader.PropertyToID
         public static Shader Find(string name) => null;                               // SR:Shader.Find

@@ -1,0 +1,44 @@
+// STUB members of UnityEngine used by the samples' lighting script (Samples~/TerrainFlyover/SampleSun.cs),
+// issue 23, editor side; kept apart from UnityEngine.cs so that changes there merge cleanly. Written from
+// the Scripting Reference (SR:<Page> as in UnityEngine.cs) and checked against UnityCsReference 2022.3
+// (Runtime/Export/Graphics/GraphicsComponents.bindings.cs, Shaders/Shader.bindings.cs,
+// Scripting/UnityEngineObject.bindings.cs, GameObject.bindings.cs, ScriptableObject.bindings.cs).
+#pragma warning disable CS1591
+using System;
+
+namespace UnityEngine
+{
+    [Flags]
+    public enum HideFlags                                                            // SR:HideFlags
+    {
+        None = 0, HideInHierarchy = 1, HideInInspector = 2, DontSaveInEditor = 4, NotEditable = 8,
+        DontSaveInBuild = 16, DontUnloadUnusedAsset = 32, DontSave = 52, HideAndDontSave = 61,
+    }
+
+    public partial class Object
+    {
+        public HideFlags hideFlags { get; set; }                                     // SR:Object-hideFlags
+        public static void Destroy(Object obj) { }                                   // SR:Object.Destroy
+    }
+
+    public partial class ScriptableObject
+    {
+        public static ScriptableObject CreateInstance(Type type) => null;            // SR:ScriptableObject.CreateInstance
+    }
+
+    public sealed partial class GameObject
+    {
+        public Component AddComponent(Type componentType) => null;                   // SR:GameObject.AddComponent
+        public Component GetComponent(string type) => null;                          // SR:GameObject.GetComponent
+    }
+
+    public sealed partial class Shader
+    {
+        public static string globalRenderPipeline { get => null; set { } }           // SR:Shader-globalRenderPipeline
+    }
+
+    public sealed class Light : Behaviour                                            // SR:Light (sealed partial in 2022.3)
+    {
+        public float intensity { get; set; }                                         // SR:Light-intensity
+    }
+}
