@@ -15,24 +15,24 @@ namespace UnityEngine
         DontSaveInBuild = 16, DontUnloadUnusedAsset = 32, DontSave = 52, HideAndDontSave = 61,
     }
 
-    public partial class Object
+    public partial class Object                                                      // SR:Object
     {
         public HideFlags hideFlags { get; set; }                                     // SR:Object-hideFlags
         public static void Destroy(Object obj) { }                                   // SR:Object.Destroy
     }
 
-    public partial class ScriptableObject
+    public partial class ScriptableObject                                            // SR:ScriptableObject
     {
         public static ScriptableObject CreateInstance(Type type) => null;            // SR:ScriptableObject.CreateInstance
     }
 
-    public sealed partial class GameObject
+    public sealed partial class GameObject                                           // SR:GameObject
     {
         public Component AddComponent(Type componentType) => null;                   // SR:GameObject.AddComponent
         public Component GetComponent(string type) => null;                          // SR:GameObject.GetComponent
     }
 
-    public sealed partial class Shader
+    public sealed partial class Shader                                               // SR:Shader
     {
         public static string globalRenderPipeline { get => null; set { } }           // SR:Shader-globalRenderPipeline
     }
