@@ -125,9 +125,7 @@ namespace GregoryTerrain.EditorTools
             Vector3 moved = Handles.PositionHandle(current, Quaternion.identity);
             if (EditorGUI.EndChangeCheck())
             {
-                Undo.RecordObject(grid, "Move control point");
-                grid.SetControlPoint(_selectedPatch, _selectedSlot, ToTerrain(moved));
-                EditorUtility.SetDirty(grid);
+                PatchGridAssetUndo.MoveControlPoint(grid, _selectedPatch, _selectedSlot, ToTerrain(moved));
             }
         }
     }

@@ -21,3 +21,17 @@ namespace UnityEditor
         public static void RecordObjects(Object[] objectsToUndo, string name) { }            // SR:Undo.RecordObjects
     }
 }
+
+namespace UnityEditor
+{
+    public partial class Undo                                                            // SR:Undo
+    {
+        public static void DestroyObjectImmediate(Object objectToUndo) { }                   // SR:Undo.DestroyObjectImmediate
+    }
+
+    public sealed partial class AssetDatabase                                            // SR:AssetDatabase
+    {
+        public static bool Contains(Object obj) => false;                                    // SR:AssetDatabase.Contains
+        public static void AddObjectToAsset(Object objectToAdd, Object assetObject) { }      // SR:AssetDatabase.AddObjectToAsset
+    }
+}

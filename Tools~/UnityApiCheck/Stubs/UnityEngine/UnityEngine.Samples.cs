@@ -42,3 +42,10 @@ namespace UnityEngine
         public float intensity { get; set; }                                         // SR:Light-intensity
     }
 }
+
+namespace UnityEngine
+{
+    // Used by PatchGridAsset (issue 23: grids saved in binary). UnityCsReference 2022.3:
+    // Runtime/Export/Serialization/Serialization.cs:35.
+    [AttributeUsage(AttributeTargets.Class)] public sealed class PreferBinarySerialization : Attribute { } // SR:PreferBinarySerialization
+}
