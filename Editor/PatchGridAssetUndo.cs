@@ -13,8 +13,19 @@ namespace GregoryTerrain.EditorTools
     /// change (fit, flat, G1, import) records the asset and all its blocks, and creates or destroys
     /// block sub-assets with Undo when the patch count changes.
     /// </summary>
+    [InitializeOnLoad]
     public static class PatchGridAssetUndo
     {
+        // Undo and redo restore grid data behind the assets' backs: stamp every loaded grid with a new
+        // version so renderers upload what the undo restored (PatchGridBlock.OnValidate does it too,
+        // where Unity calls it after an undo).
+        static PatchGridAssetUndo() => Undo.undoRedoPerformed += MarkLoadedGridsChanged;
+
+        static void MarkLoadedGridsChanged()
+        {
+            foreach (PatchGridAsset grid in Resources.FindObjectsOfTypeAll<PatchGridAsset>()) grid.MarkChanged();
+        }
+
         /// <summary>
         /// Moves a grid still in the older single-array layout into block sub-assets (bit for bit), as
         /// part of the current undo step. Does nothing when it already has blocks.

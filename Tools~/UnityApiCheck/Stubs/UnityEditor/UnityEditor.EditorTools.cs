@@ -35,3 +35,14 @@ namespace UnityEditor
         public static void AddObjectToAsset(Object objectToAdd, Object assetObject) { }      // SR:AssetDatabase.AddObjectToAsset
     }
 }
+
+namespace UnityEditor
+{
+    [AttributeUsage(AttributeTargets.Class)] public class InitializeOnLoadAttribute : Attribute { } // SR:InitializeOnLoadAttribute
+
+    public partial class Undo
+    {
+        public delegate void UndoRedoCallback();                                             // SR:Undo.UndoRedoCallback
+        public static UndoRedoCallback undoRedoPerformed;                                    // SR:Undo-undoRedoPerformed (a field in 2022.3)
+    }
+}

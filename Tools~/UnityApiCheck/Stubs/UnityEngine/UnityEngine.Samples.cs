@@ -1,5 +1,5 @@
-// STUB members of UnityEngine used by the samples' lighting script (Samples~/TerrainFlyover/SampleSun.cs),
-// issue 23, editor side; kept apart from UnityEngine.cs so that changes there merge cleanly. Written from
+// STUB members of UnityEngine used by issue 23's editor side: the samples' lighting script (Samples~/TerrainFlyover/SampleSun.cs),
+// the binary grid asset and its undo hook (PreferBinarySerialization, Resources); kept apart from UnityEngine.cs so that changes there merge cleanly. Written from
 // the Scripting Reference (SR:<Page> as in UnityEngine.cs) and checked against UnityCsReference 2022.3
 // (Runtime/Export/Graphics/GraphicsComponents.bindings.cs, Shaders/Shader.bindings.cs,
 // Scripting/UnityEngineObject.bindings.cs, GameObject.bindings.cs, ScriptableObject.bindings.cs).
@@ -48,4 +48,12 @@ namespace UnityEngine
     // Used by PatchGridAsset (issue 23: grids saved in binary). UnityCsReference 2022.3:
     // Runtime/Export/Serialization/Serialization.cs:35.
     [AttributeUsage(AttributeTargets.Class)] public sealed class PreferBinarySerialization : Attribute { } // SR:PreferBinarySerialization
+}
+
+namespace UnityEngine
+{
+    public sealed class Resources                                                    // SR:Resources
+    {
+        public static T[] FindObjectsOfTypeAll<T>() where T : Object => null;        // SR:Resources.FindObjectsOfTypeAll
+    }
 }
