@@ -40,7 +40,7 @@ namespace UnityEditor
 {
     [AttributeUsage(AttributeTargets.Class)] public class InitializeOnLoadAttribute : Attribute { } // SR:InitializeOnLoadAttribute
 
-    public partial class Undo
+    public partial class Undo                                                            // SR:Undo
     {
         public delegate void UndoRedoCallback();                                             // SR:Undo.UndoRedoCallback
         public static UndoRedoCallback undoRedoPerformed;                                    // SR:Undo-undoRedoPerformed (a field in 2022.3)
