@@ -5,7 +5,10 @@ namespace GregoryTerrain
     /// <summary>
     /// World view: the range follows a camera flying over the terrain, a square of
     /// <see cref="viewDistance"/> around the point below the camera (pushed ahead along its view).
-    /// Each frame it sets the range only (one float4); the camera is Unity's own.
+    /// Each frame it sets the range only (one float4); the camera is Unity's own and never moved.
+    /// In Edit Mode it previews: the renderer draws the followed range, but its saved range is not
+    /// written (<see cref="GregoryTerrainRenderer.SetDrawnRange"/>), so nothing enters Undo or
+    /// marks the scene changed.
     /// </summary>
     [ExecuteAlways]
     [AddComponentMenu("Gregory Terrain/Camera Range Controller")]
@@ -36,7 +39,9 @@ namespace GregoryTerrain
             if (ahead.sqrMagnitude > 1e-12f) ahead.Normalize();
             double cx = camOS.x + ahead.x * lookAhead * viewDistance;
             double cy = camOS.z + ahead.y * lookAhead * viewDistance;
-            target.Range = RangeFit.Around(cx, cy, viewDistance, viewDistance);
+            TerrainRange r = RangeFit.Around(cx, cy, viewDistance, viewDistance);
+            if (Application.isPlaying) target.Range = r;
+            else target.SetDrawnRange(r);
         }
     }
 }

@@ -43,9 +43,9 @@ namespace GregoryTerrain
             _gridLines.SetData(lines);
 
             _props ??= new MaterialPropertyBlock();
-            _props.SetBuffer(Ids.ControlPoints, _controlPoints);
-            _props.SetBuffer(Ids.Regions, _regions);
-            _props.SetBuffer(Ids.GridLines, _gridLines);
+            SetBuffer(Ids.ControlPoints, _controlPoints);
+            SetBuffer(Ids.Regions, _regions);
+            SetBuffer(Ids.GridLines, _gridLines);
             // _GridSize is part of TerrainParams: PushSettings sets it (settings are dirty below).
             grid.GetHeightRange(out _gridMinZ, out _gridMaxZ);
 
@@ -53,6 +53,7 @@ namespace GregoryTerrain
             _uploadedPatchGrid = g;
             _uploadedVersion = grid.Version;
             _gridStamp++;
+            UploadCount++;
             _settingsDirty = true;
             _originDirty = true;
             _origin.Reset();
@@ -103,6 +104,10 @@ namespace GregoryTerrain
             _uploadedVersion = 0;
             _drawModeMaterial = null;   // read the SubShader's tag again (it may change with the shader)
             _props?.Clear();
+            _boundSnowDepth = null;   // the block no longer holds the snow map
         }
+
+        /// <summary>Grid uploads since this renderer was created (once per asset version; the Unity-side tests check it).</summary>
+        internal int UploadCount { get; private set; }
     }
 }

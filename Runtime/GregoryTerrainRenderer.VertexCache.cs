@@ -3,7 +3,8 @@ using UnityEngine;
 
 namespace GregoryTerrain
 {
-    // Vertex evaluation = Compute cache: when the cache runs, its size check, and the material keyword.
+    // Vertex evaluation = Compute cache: when the cache runs and its size check. Its keyword,
+    // GT_VERTEX_CACHE, is the draw material's (.DrawMaterial.cs), never the asset's.
     // The pass itself (buffers, dispatch, what changed) is VertexCachePass.
     public sealed partial class GregoryTerrainRenderer
     {
@@ -11,7 +12,6 @@ namespace GregoryTerrain
         string _cacheError;                              // the size check's message (not drawn until fixed)
         (int tiles, int limit, bool snow, long deviceLimit) _cacheCheckedFor;   // what _cacheError is the verdict on
         string _cacheFallbackReason;                     // why Compute cache is not used now, logged once per reason
-        Material _cacheKeywordMaterial;                  // the material this renderer turned GT_VERTEX_CACHE on
         bool _usesCache;
 
         /// <summary>
@@ -35,7 +35,7 @@ namespace GregoryTerrain
             }
             bool snow = SnowOn();
             Camera cam = EffectiveLodCamera;
-            SnowSimulator snowSource = snow ? SnowSource() : null;
+            SnowSimulator snowSource = snow ? _snow : null;
             string reason = CacheUnavailableReason(fallback, cam, snow, snowSource);
             if (reason != null)
             {
@@ -71,8 +71,7 @@ namespace GregoryTerrain
                 if (_cache.Update(cacheShader, inputs)) _cache.BindTo(_props);
             }
             if (!_cache.HasContent) return false;   // nothing evaluated yet (a camera without pixels)
-            SetCacheKeyword(true);
-            _usesCache = true;
+            _usesCache = true;   // the draw material gets GT_VERTEX_CACHE
             return true;
         }
 
@@ -122,19 +121,13 @@ namespace GregoryTerrain
             if (!SystemInfo.supportsComputeShaders)
                 return "this device has no compute shaders (SystemInfo.supportsComputeShaders = false)";
             if (cacheShader == null)
-                return "no compute shader is assigned to Cache Shader (Shaders/TerrainCache.compute)";
+                return "no compute shader is assigned to Cache Shader (Shaders/Cache/TerrainCache.compute)";
             if (!_cache.FindKernels(cacheShader, out string missing))
                 return $"the Cache Shader '{cacheShader.name}' has no kernel '{missing}'";
             if (cam == null)
                 return "there is no LOD camera (LOD Camera is empty and no camera is tagged MainCamera)";
-            if (snow && (snowSource == null || snowSource.DepthBuffer == null))
-                return "the material has GT_SNOW and no enabled Snow Simulator is assigned to Snow Simulator or on this GameObject (the cache samples its depth map)";
             return null;
         }
-
-        SnowSimulator SnowSource() => snowSimulator != null ? snowSimulator : GetComponent<SnowSimulator>();
-
-        bool SnowOn() => material != null && material.IsKeywordEnabled(VertexCachePass.SnowKeyword);
 
         VertexCachePass.Effects Effects(bool snow)
         {
@@ -145,29 +138,10 @@ namespace GregoryTerrain
             return e;
         }
 
-        /// <summary>The domain stage draws: keyword off and the cache's memory given back.</summary>
+        /// <summary>The domain stage draws: the cache's memory given back (the draw material drops GT_VERTEX_CACHE).</summary>
         void StopCache()
         {
-            SetCacheKeyword(false);
             if (_cache.IsAllocated) _cache.Release();
-        }
-
-        /// <summary>
-        /// Switches GT_VERTEX_CACHE on the material (a material property, shared by every renderer
-        /// using the material), and off on a material this renderer turned it on for and no longer uses.
-        /// </summary>
-        void SetCacheKeyword(bool on)
-        {
-            if (_cacheKeywordMaterial != null && (!on || _cacheKeywordMaterial != material))
-            {
-                _cacheKeywordMaterial.DisableKeyword(VertexCachePass.Keyword);
-                _cacheKeywordMaterial = null;
-            }
-            if (material == null) return;
-            bool enabled = material.IsKeywordEnabled(VertexCachePass.Keyword);
-            if (on && !enabled) material.EnableKeyword(VertexCachePass.Keyword);
-            else if (!on && enabled) material.DisableKeyword(VertexCachePass.Keyword);
-            if (on) _cacheKeywordMaterial = material;
         }
     }
 }

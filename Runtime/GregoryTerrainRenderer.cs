@@ -17,23 +17,29 @@ namespace GregoryTerrain
     /// matrices when the Transform moves; the range origin when it re-snaps; and every frame
     /// <c>_Range</c> alone.
     /// <para>With <see cref="GregoryTerrain.VertexEvaluation.ComputeCache"/> a compute pre-pass
-    /// (<see cref="VertexCachePass"/>, Shaders/TerrainCache.compute) evaluates the vertices into a
+    /// (<see cref="VertexCachePass"/>, Shaders/Cache/TerrainCache.compute) evaluates the vertices into a
     /// buffer the domain stage reads (keyword <c>GT_VERTEX_CACHE</c>), in frames where the LOD
     /// camera, the range, the origin or a setting changed; other frames dispatch nothing.</para>
-    /// <para>Files: this one (settings, public API, the draw and its constants),
-    /// <c>.Buffers.cs</c> (GPU buffers), <c>.VertexCache.cs</c> (the compute cache's part),
-    /// <c>.Estimate.cs</c> (the triangles a camera's view draws).</para>
+    /// <para>It draws once per camera, from the camera's own rendering callback
+    /// (<c>RenderPipelineManager.beginCameraRendering</c> under URP/HDRP, <c>Camera.onPreCull</c>
+    /// under the Built-in pipeline), so the Scene view in Edit Mode, the Game view and every other
+    /// camera draw it without any Update running; in the editor only cameras of its own stage
+    /// (Prefab Mode) draw it. Keywords the renderer chooses (<c>GT_VERTEX_CACHE</c>, <c>GT_SNOW</c>)
+    /// go on a runtime copy of the material, never on the asset.</para>
+    /// <para>Files: this one (settings, public API, the per-frame constants),
+    /// <c>.Cameras.cs</c> (which cameras draw, and the draw), <c>.DrawMaterial.cs</c> (the
+    /// per-renderer shader state), <c>.Buffers.cs</c> (GPU buffers), <c>.VertexCache.cs</c> (the
+    /// compute cache's part), <c>.Estimate.cs</c> (the triangles a camera's view draws).</para>
     /// </summary>
     [ExecuteAlways]
     [DisallowMultipleComponent]
     [AddComponentMenu("Gregory Terrain/Gregory Terrain Renderer")]
-    // After the range controllers (default order 0), so this frame's range is drawn this frame.
-    [DefaultExecutionOrder(100)]
     public sealed partial class GregoryTerrainRenderer : MonoBehaviour
     {
         /// <summary>
-        /// Bytes this script sets per frame in the steady state: one float4, <c>_Range</c> (one
-        /// MaterialPropertyBlock.SetVector in PushRange, then one Graphics.RenderPrimitives call).
+        /// Bytes this script sets per camera in the steady state: one float4, <c>_Range</c> (one
+        /// MaterialPropertyBlock.SetVector in PushRange, then one Graphics.RenderPrimitives call for
+        /// that camera).
         /// Anything else is set only on change: <c>_RangeOrigin</c> (16 bytes, on re-snap),
         /// <c>_GtObjectToWorld/_GtWorldToObject</c> (128 bytes, when the Transform changes),
         /// <c>_TileLattice</c> (16 bytes, when anchored tiles are anchored again: a zoom, a re-snap), the
@@ -111,12 +117,10 @@ namespace GregoryTerrain
         [Header("Vertex evaluation")]
         [Tooltip("Domain stage: every pass of every camera evaluates its vertices in the domain shader (fractional factors, each camera its own). Compute cache: a compute pre-pass evaluates each vertex once into a GPU buffer when the LOD camera, the range or a setting changes, and the domain stage only reads it (integer factors from the LOD camera for every camera; a little popping when a factor changes; GPU memory shown below). Falls back to Domain stage, with one warning, where compute shaders are missing.")]
         [SerializeField] VertexEvaluation vertexEvaluation = VertexEvaluation.DomainStage;
-        [Tooltip("Compute cache only: Shaders/TerrainCache.compute (kernels CacheTileFactors and CacheTileVertices).")]
+        [Tooltip("Compute cache only: Shaders/Cache/TerrainCache.compute (kernels CacheTileFactors and CacheTileVertices).")]
         [SerializeField] ComputeShader cacheShader;
         [Tooltip("Compute cache only: the camera whose view picks the tessellation factors and culls tiles, for every camera and shadow pass. Empty = Camera.main.")]
         [SerializeField] Camera lodCamera;
-        [Tooltip("Compute cache with snow (material keyword GT_SNOW) only: the Snow Simulator whose depth map the cache samples. Empty = one on this GameObject.")]
-        [SerializeField] SnowSimulator snowSimulator;
 
         [Header("Range (terrain unit square)")]
         [Tooltip("Part of the terrain drawn: [c, g] x [d, h] inside [0, 1]^2. Range controllers set it every frame.")]
@@ -189,6 +193,8 @@ namespace GregoryTerrain
         Matrix4x4 _objectToWorld = Matrix4x4.identity;   // what PushMatrices sent (deep-zoom offset included)
         Matrix4x4 _worldToObject = Matrix4x4.identity;   // its inverse, as sent (the cache's world normals)
         int _gridStamp;                                  // bumped on every upload: the cache sees new grid buffers
+        readonly System.Collections.Generic.List<int> _setLastPrepare = new System.Collections.Generic.List<int>(16);
+        SnowSimulator _snow;                             // the enabled simulator attached to this renderer
 
         /// <summary>
         /// SubShader tag of GregoryTerrain.shader: "Tessellated" or "Fallback", the draw the SubShader
@@ -224,6 +230,20 @@ namespace GregoryTerrain
                 range = new Vector4((float)value.c, (float)value.d, (float)value.g, (float)value.h);
             }
         }
+
+        /// <summary>
+        /// Sets the drawn range for now without writing the serialized range: range controllers use
+        /// it in Edit Mode, so following a camera there neither marks the scene changed nor records an
+        /// Undo step (the saved range stays what the user set). Throws like <see cref="Range"/>.
+        /// </summary>
+        public void SetDrawnRange(TerrainRange value)
+        {
+            value.Validate("Range");
+            _range = value;
+        }
+
+        /// <summary>The saved range (the serialized field), which <see cref="SetDrawnRange"/> leaves alone.</summary>
+        internal Vector4 SavedRange => range;
 
         /// <summary>True when this device has no tessellation shaders (Unity then skips the tessellated SubShaders).</summary>
         public static bool UsesFallback => !SystemInfo.supportsTessellationShaders;
@@ -264,7 +284,7 @@ namespace GregoryTerrain
             }
         }
 
-        /// <summary>Shaders/TerrainCache.compute, for <see cref="VertexEvaluation.ComputeCache"/>.</summary>
+        /// <summary>Shaders/Cache/TerrainCache.compute, for <see cref="VertexEvaluation.ComputeCache"/>.</summary>
         public ComputeShader CacheShader { get => cacheShader; set { cacheShader = value; _cache.Invalidate(); } }
 
         /// <summary>The camera whose view sets the cached tessellation (null: Camera.main).</summary>
@@ -273,8 +293,11 @@ namespace GregoryTerrain
         /// <summary>The camera the cache's tessellation follows now: <see cref="LodCamera"/>, else Camera.main (may be null).</summary>
         public Camera EffectiveLodCamera => lodCamera != null ? lodCamera : Camera.main;
 
-        /// <summary>The Snow Simulator the cache samples when the material has GT_SNOW (null: one on this GameObject).</summary>
-        public SnowSimulator SnowSimulator { get => snowSimulator; set => snowSimulator = value; }
+        /// <summary>
+        /// The enabled Snow Simulator whose Terrain is this renderer, or null. It attaches itself;
+        /// while attached the draw has GT_SNOW and samples its depth map (see <see cref="SnowOn"/>).
+        /// </summary>
+        public SnowSimulator SnowSimulator => _snow;
 
         /// <summary>True when the last frame drew from the vertex cache (GT_VERTEX_CACHE on).</summary>
         public bool UsesVertexCache => _usesCache;
@@ -289,7 +312,7 @@ namespace GregoryTerrain
         /// GPU memory the vertex cache needs for the current settings, in bytes (Core's
         /// <see cref="VertexCacheBudget.TotalBytes"/>: 992 T^2 + 16 T^2 ((L+1)^2 + 4 (L+1)) R, T = M, or
         /// M + 1 with anchored tiles (<see cref="CacheTilesAcross"/>), L the
-        /// uniform factor, else the max factor, rounded up; R = 2 with the material's GT_SNOW, else 1),
+        /// uniform factor, else the max factor, rounded up; R = 2 while a Snow Simulator is attached, else 1),
         /// whichever evaluation is chosen.
         /// </summary>
         public long VertexCacheBytes
@@ -323,23 +346,24 @@ namespace GregoryTerrain
             _settingsDirty = true;
             _originDirty = true;
             SyncRangeFromSerialized();
+            RegisterCameraCallbacks();
 #if UNITY_EDITOR
-            // Buffers are native memory: free them before scripts reload, or they leak (Unity warns).
-            AssemblyReloadEvents.beforeAssemblyReload += ReleaseGpuResources;
+            // Buffers and the runtime material are native objects: free them before scripts reload,
+            // or they leak (Unity warns); OnDisable does not run on a reload.
+            AssemblyReloadEvents.beforeAssemblyReload += ReleaseAll;
 #endif
         }
 
         void OnDisable()
         {
 #if UNITY_EDITOR
-            AssemblyReloadEvents.beforeAssemblyReload -= ReleaseGpuResources;
+            AssemblyReloadEvents.beforeAssemblyReload -= ReleaseAll;
 #endif
-            ReleaseGpuResources();
-            SetCacheKeyword(false);   // a saved material must not keep the renderer's run-time switch
-            _usesCache = false;
+            UnregisterCameraCallbacks();
+            ReleaseAll();
         }
 
-        void OnDestroy() => ReleaseGpuResources();
+        void OnDestroy() => ReleaseAll();
 
         void OnValidate()
         {
@@ -347,22 +371,31 @@ namespace GregoryTerrain
             SyncRangeFromSerialized();
         }
 
-        void LateUpdate() => Draw();
+        /// <summary>GPU buffers, the runtime material copy and the per-draw state: what OnDisable and a domain reload free.</summary>
+        internal void ReleaseAll()
+        {
+            ReleaseGpuResources();
+            ReleaseDrawMaterial();
+            _usesCache = false;
+        }
 
         // ---- drawing --------------------------------------------------------------------------------
 
         /// <summary>
-        /// Issues this frame's single draw. In the steady state (no setting, Transform, origin or grid
-        /// change) the only value set is <c>_Range</c>: see <see cref="PerFrameTrafficBytes"/>.
-        /// No allocation once the buffers exist.
+        /// Brings the draw's state up to date before a camera draws: uploads (once per asset
+        /// version), constants on change, this camera's <c>_Range</c>, the vertex cache, the draw
+        /// material. In the steady state (no setting, Transform, origin or grid change) the only
+        /// value set is <c>_Range</c>: see <see cref="PerFrameTrafficBytes"/>. No allocation once
+        /// the buffers exist. False when nothing can be drawn.
         /// </summary>
-        void Draw()
+        bool Prepare()
         {
-            if (material == null || grid == null || !grid.IsValid) return;
-            if (!EnsureUploaded()) return;
+            _setLastPrepare.Clear();
+            if (material == null || grid == null || !grid.IsValid) return false;
+            if (!EnsureUploaded()) return false;
 
             bool fallback = ReadDrawMode();
-            if (fallback && !EnsureFallbackIndices()) return;
+            if (fallback && !EnsureFallbackIndices()) return false;
 
             if (_origin.Update(_range)) _originDirty = true;
             // The lattice before the output offset: with noise the offset's octave count follows
@@ -381,25 +414,10 @@ namespace GregoryTerrain
                 if (_settingsError == null) UpdateTileLattice(fallback);
                 if (UpdateOutputOffset() || transform.hasChanged) PushMatrices();
             }
-            if (_settingsError != null) return;   // logged once; drawn again after the next valid change
-            if (!UpdateVertexCache(fallback)) return;
-
-            var rp = new RenderParams(material)
-            {
-                worldBounds = WorldBounds(),
-                matProps = _props,
-                shadowCastingMode = shadowCasting,
-                receiveShadows = receiveShadows,
-                layer = gameObject.layer,
-            };
-            int across = TileLattice.TilesAcross(_params), tileCount = across * across;
-            if (fallback)
-                Graphics.RenderPrimitivesIndexed(rp, MeshTopology.Triangles, _fallbackIndices,
-                    _fallbackIndices.count, 0, tileCount);
-            else
-                // One 4-control-point patch per tile; the vertex stage derives tile and corner from
-                // SV_VertexID, so there is no vertex buffer.
-                Graphics.RenderPrimitives(rp, MeshTopology.Quads, 4 * tileCount, 1);
+            if (_settingsError != null) return false;   // logged once; drawn again after the next valid change
+            if (!UpdateVertexCache(fallback)) return false;
+            UpdateSnowBinding();
+            return UpdateDrawMaterial(_usesCache, SnowOn()) != null;
         }
 
         /// <summary>
@@ -409,12 +427,12 @@ namespace GregoryTerrain
         void PushRange()
         {
             RangeMapping.EncodeRange(_range, _origin.Origin, out Float4 r, out Float4 o);
-            _props.SetVector(Ids.Params[Ids.RangeIndex], ToVector(r));
+            SetVector(Ids.Params[Ids.RangeIndex], ToVector(r));
             _params.range = r;
             _params.rangeOrigin = o;
             if (_originDirty)
             {
-                _props.SetVector(Ids.Params[Ids.RangeOriginIndex], ToVector(o));
+                SetVector(Ids.Params[Ids.RangeOriginIndex], ToVector(o));
                 _params.tileLattice = default;   // in the old origin's coordinates: anchor again
                 _originDirty = false;
             }
@@ -431,7 +449,7 @@ namespace GregoryTerrain
             Float4 lattice = AnchorsTiles(fallback) ? TileLattice.Follow(_params.tileLattice, _params.range, tiles) : default;
             if (lattice.Equals(_params.tileLattice)) return;   // PushSettings sent 0 with the block
             _params = _params.WithTileLattice(lattice);
-            _props.SetVector(Ids.Params[Ids.TileLatticeIndex], ToVector(lattice));
+            SetVector(Ids.Params[Ids.TileLatticeIndex], ToVector(lattice));
         }
 
         /// <summary>
@@ -461,11 +479,27 @@ namespace GregoryTerrain
             _settingsError = null;
             _params = p;
             for (int k = 0; k < TerrainParams.Float4Count; k++)
-                _props.SetVector(Ids.Params[k], ToVector(p[k]));
+                SetVector(Ids.Params[k], ToVector(p[k]));
             _originDirty = false;   // and _TileLattice = 0: UpdateTileLattice anchors at the range if it should
         }
 
         static Vector4 ToVector(Float4 v) => new Vector4(v.x, v.y, v.z, v.w);
+
+        // Every value the renderer puts on its property block goes through these, so the steady
+        // state (only _Range) can be checked: PropertiesSetLastPrepare.
+        void SetVector(int id, Vector4 v) { _props.SetVector(id, v); _setLastPrepare.Add(id); }
+        void SetMatrix(int id, Matrix4x4 m) { _props.SetMatrix(id, m); _setLastPrepare.Add(id); }
+        void SetBuffer(int id, GraphicsBuffer b) { _props.SetBuffer(id, b); _setLastPrepare.Add(id); }
+
+        /// <summary>
+        /// The property IDs the last draw's preparation set on the property block, in order
+        /// (<c>_Range</c> alone in the steady state; the Unity-side tests check it). Buffers bound by
+        /// the vertex cache pass are not listed.
+        /// </summary>
+        internal System.Collections.Generic.IReadOnlyList<int> PropertiesSetLastPrepare => _setLastPrepare;
+
+        /// <summary>The property ID of <c>_Range</c> (for the Unity-side tests).</summary>
+        internal static int RangePropertyId => Ids.Params[Ids.RangeIndex];
 
         /// <summary>
         /// The draw the material's SubShader in use expects (see <see cref="DrawsFallback"/>). Read
@@ -530,8 +564,8 @@ namespace GregoryTerrain
                 w.m13 = (float)(w.m13 - ty);
                 w.m23 = (float)(w.m23 - tz);
             }
-            _props.SetMatrix(Ids.ObjectToWorld, m);
-            _props.SetMatrix(Ids.WorldToObject, w);
+            SetMatrix(Ids.ObjectToWorld, m);
+            SetMatrix(Ids.WorldToObject, w);
             _objectToWorld = m;   // the vertex cache's LOD matrix uses the same object matrix
             _worldToObject = w;
             transform.hasChanged = false;

@@ -5,26 +5,31 @@ namespace GregoryTerrain
 {
     /// <summary>
     /// Wind-driven snow on the terrain (Moriya and Takahashi, eq. 1), simulated on the GPU with
-    /// Shaders/SnowSimulation.compute. Add it only to scenes that want snow: while it is disabled or
-    /// absent there is no snow buffer, no dispatch and the terrain material's <c>GT_SNOW</c> keyword is
-    /// off, so the terrain shader compiles the snow code out.
+    /// Shaders/Snow/SnowSimulation.compute. Add it only to scenes that want snow, and point its
+    /// <see cref="Terrain"/> at a <see cref="GregoryTerrainRenderer"/>: while it is disabled or absent
+    /// there is no snow buffer and no dispatch, and the renderer draws without <c>GT_SNOW</c>, so the
+    /// terrain shader runs without the snow code. It simulates in Play Mode (like a particle system
+    /// without a preview: nothing runs in Edit Mode).
     /// <para>
     /// While enabled it owns three buffers over the R x R snow map (<c>_SnowField</c> float4,
     /// <c>_SnowExposure</c> float, <c>_SnowDepth</c> float), runs the exposure kernel only when the wind,
     /// the march settings or the terrain field changed (<see cref="SnowSettings.ExposureEquals"/>,
-    /// the field version), and one accumulation step per frame. The depth map is bound to the terrain
-    /// material as <c>_SnowDepth</c> with <c>_SnowMapSize = (R, 1/R, depthCap, 0)</c>.
+    /// the field version), and one accumulation step per frame. While it is enabled the renderer draws
+    /// with <c>GT_SNOW</c> on its own runtime copy of the material (never the asset) and binds the depth
+    /// map on its property block as <c>_SnowDepth</c> with <c>_SnowMapSize = (R, 1/R, depthCap, 0)</c>.
     /// </para>
     /// <para>
-    /// The field (detail normal and height per cell) normally comes from the terrain itself:
-    /// <see cref="SetTerrain"/> hands over the renderer's buffers and constants, and
-    /// Shaders/SnowField.compute (<c>SnowFieldKernel</c>, the terrain's own vertex path at the cell
-    /// centres) fills it on the GPU, once per terrain change (<see cref="MarkTerrainChanged"/>); the
-    /// exposure follows, since it is recomputed whenever the field changed. Alternatives for tests and
-    /// custom terrains: a CPU <see cref="Field"/> or a ready GPU buffer (<see cref="SetFieldBuffer"/>).
+    /// The field (detail normal and height per cell) comes from the terrain itself: each step reads
+    /// the renderer's grid buffers, constants and GT_NOISE, and Shaders/Snow/SnowField.compute
+    /// (<c>SnowFieldKernel</c>, the terrain's own vertex path at the cell centres) fills it on the GPU
+    /// whenever one of them changed (a new grid, a setting; not the range); the exposure follows,
+    /// since it is recomputed whenever the field changed. Alternatives for tests and custom terrains,
+    /// used instead of the renderer's while set: a CPU <see cref="Field"/> or a ready GPU buffer
+    /// (<see cref="SetFieldBuffer"/>).
     /// </para>
     /// </summary>
     [DisallowMultipleComponent]
+    [AddComponentMenu("Gregory Terrain/Snow Simulator")]
     public sealed class SnowSimulator : MonoBehaviour
     {
         public const string Keyword = "GT_SNOW";
@@ -48,19 +53,19 @@ namespace GregoryTerrain
 
         const string NoiseKeyword = "GT_NOISE";
 
-        [Tooltip("Shaders/SnowSimulation.compute")]
+        [Tooltip("Shaders/Snow/SnowSimulation.compute")]
         [SerializeField] ComputeShader simulation;
-        [Tooltip("Shaders/SnowField.compute: evaluates the terrain field from the terrain (SetTerrain)")]
+        [Tooltip("Shaders/Snow/SnowField.compute: evaluates the snow field (slope and height per cell) from the terrain.")]
         [SerializeField] ComputeShader fieldShader;
-        [Tooltip("The terrain material (the renderer's): gets GT_SNOW and the depth map while snow is on.")]
-        [SerializeField] Material terrainMaterial;
+        [Tooltip("The Gregory Terrain Renderer that snow falls on: its grid shapes the snow, and it draws the snow while this component is enabled.")]
+        [SerializeField] GregoryTerrainRenderer terrain;
         [SerializeField] SnowSettings settings = SnowSettings.Default;
         [Tooltip("Simulated seconds per real second.")]
         [SerializeField, Min(0f)] float timeScale = 1f;
         [Tooltip("Longest simulated step (s): a long frame is not one huge step.")]
         [SerializeField, Min(0.001f)] float maxStep = 0.1f;
 
-        ComputeBuffer _field, _exposure, _depth;
+        GraphicsBuffer _field, _exposure, _depth;
         bool _ownsField;
         int _exposureKernel = -1, _accumulateKernel = -1;
         bool _exposureValid;
@@ -68,12 +73,15 @@ namespace GregoryTerrain
         int _exposureFieldVersion;
         SnowField _cpuField;
         int _uploadedCpuVersion = -1;
-        ComputeBuffer _externalField;
+        GraphicsBuffer _externalField;
         int _externalVersion;
         int _fieldKernel = -1;
-        ComputeBuffer _terrainControlPoints, _terrainRegions, _terrainGridLines;
-        TerrainParams _terrainParams;
-        bool _terrainNoise;
+        GregoryTerrainRenderer _attached;      // the renderer this simulator is attached to now
+        // What the field was last evaluated from: the renderer's upload, its constants for the field
+        // (SnowFieldTerrain.ParamsFor: range-independent) and its noise keyword.
+        int _fieldGridStamp = -1;
+        TerrainParams _fieldParams;
+        bool _fieldNoise;
         int _terrainVersion, _fieldTerrainVersion = -1;
 
         public SnowSettings Settings
@@ -90,15 +98,22 @@ namespace GregoryTerrain
                 }
                 else
                 {
-                    settings = value;
-                    Bind();  // the cap in _SnowMapSize may have changed
+                    settings = value;   // the renderer reads the new cap from MapSize
                 }
             }
         }
 
-        public Material TerrainMaterial { get => terrainMaterial; set { DisableKeyword(); terrainMaterial = value; if (isActiveAndEnabled) Bind(); } }
+        /// <summary>
+        /// The renderer snow falls on. While this component is enabled it is attached to it: the
+        /// renderer draws GT_SNOW with this depth map, and the field is evaluated from its grid.
+        /// </summary>
+        public GregoryTerrainRenderer Terrain
+        {
+            get => terrain;
+            set { terrain = value; if (isActiveAndEnabled) Attach(); }
+        }
         public ComputeShader Simulation { get => simulation; set => simulation = value; }
-        /// <summary>Shaders/SnowField.compute; set it before enabling (its kernel is looked up in OnEnable).</summary>
+        /// <summary>Shaders/Snow/SnowField.compute; set it before enabling (its kernel is looked up in OnEnable).</summary>
         public ComputeShader FieldShader { get => fieldShader; set => fieldShader = value; }
 
         /// <summary>The terrain field on the CPU; uploaded whenever its <see cref="SnowField.Version"/> changes.</summary>
@@ -117,7 +132,7 @@ namespace GregoryTerrain
         /// Uses a GPU buffer of R*R float4 (detail normal.xyz, height) as the field; bump
         /// <paramref name="version"/> whenever its contents change so the exposure is recomputed.
         /// </summary>
-        public void SetFieldBuffer(ComputeBuffer buffer, int version)
+        public void SetFieldBuffer(GraphicsBuffer buffer, int version)
         {
             int cells = settings.resolution * settings.resolution;
             if (buffer == null || buffer.count != cells || buffer.stride != 16)
@@ -126,31 +141,16 @@ namespace GregoryTerrain
         }
 
         /// <summary>
-        /// The terrain the field is evaluated from on the GPU: the renderer's three buffers
-        /// (<c>_ControlPoints</c>, <c>_Regions</c>, <c>_GridLines</c>, as GpuLayout packs them), its
-        /// constants (any range: <see cref="SnowFieldTerrain.ParamsFor"/> replaces it) and whether it has
-        /// noise (GT_NOISE). Marks the terrain changed. Pass null buffers to stop using a terrain.
+        /// Evaluates the field from the terrain again at the next step. Changes of the renderer's grid,
+        /// settings or noise are seen without it; call it after changing something the renderer
+        /// does not know of.
         /// </summary>
-        public void SetTerrain(ComputeBuffer controlPoints, ComputeBuffer regions, ComputeBuffer gridLines, TerrainParams parameters, bool noise)
-        {
-            bool none = controlPoints == null && regions == null && gridLines == null;
-            if (!none && (controlPoints == null || regions == null || gridLines == null))
-                throw new ArgumentException("controlPoints, regions and gridLines must all be given, or all be null", nameof(controlPoints));
-            if (!none && (controlPoints.stride != 16 || regions.stride != 16 || gridLines.stride != 4))
-                throw new ArgumentException($"buffer strides ({controlPoints.stride}, {regions.stride}, {gridLines.stride}) must be (16, 16, 4)", nameof(controlPoints));
-            _terrainControlPoints = controlPoints; _terrainRegions = regions; _terrainGridLines = gridLines;
-            _terrainParams = parameters; _terrainNoise = noise;
-            if (!none) { _externalField = null; _cpuField = null; }
-            MarkTerrainChanged();
-        }
-
-        /// <summary>The terrain's shape or noise changed: the field (and so the exposure) is recomputed at the next step.</summary>
         public void MarkTerrainChanged() => _terrainVersion++;
 
-        bool HasTerrain => _terrainControlPoints != null;
+        bool UsesTerrainField => _externalField == null && _cpuField == null && terrain != null;
 
         /// <summary>The depth map (R*R floats) while enabled, else null.</summary>
-        public ComputeBuffer DepthBuffer => _depth;
+        public GraphicsBuffer DepthBuffer => _depth;
 
         /// <summary>
         /// Changes whenever the depth map's contents may have changed (a step, a clear, a new map):
@@ -165,7 +165,7 @@ namespace GregoryTerrain
         public bool NeedsExposureUpdate => !_exposureValid || !settings.ExposureEquals(_exposureSettings) || FieldVersion != _exposureFieldVersion;
 
         int FieldVersion => _externalField != null ? _externalVersion
-            : HasTerrain ? _fieldTerrainVersion : (_cpuField != null ? _cpuField.Version : 0);
+            : _cpuField != null ? _cpuField.Version : _fieldTerrainVersion;
 
         void OnEnable()
         {
@@ -180,18 +180,24 @@ namespace GregoryTerrain
             _exposureKernel = simulation.FindKernel("SnowExposureKernel");
             _accumulateKernel = simulation.FindKernel("SnowAccumulateKernel");
             _fieldKernel = fieldShader != null ? fieldShader.FindKernel("SnowFieldKernel") : -1;
+            if (terrain == null)
+                Debug.LogWarning("SnowSimulator: Terrain is empty; assign the Gregory Terrain Renderer the snow falls on (or give it a Field from code).", this);
+            else if (fieldShader == null)
+                Debug.LogWarning("SnowSimulator: Field Shader is empty (Shaders/Snow/SnowField.compute); the terrain's snow field cannot be evaluated, so no snow falls.", this);
             Allocate();
+            Attach();
         }
 
         void OnDisable()
         {
-            DisableKeyword();
+            Detach();
             Release();
         }
 
         void Update()
         {
             if (_depth == null) return;
+            if (terrain != _attached) Attach();   // retargeted in the inspector
             float dt = Mathf.Min(Time.deltaTime * timeScale, maxStep);
             if (dt > 0f) StepSimulation(dt);
         }
@@ -200,7 +206,7 @@ namespace GregoryTerrain
         public void StepSimulation(float dt)
         {
             if (_depth == null) throw new InvalidOperationException("SnowSimulator is not enabled");
-            ComputeBuffer field = CurrentField();
+            GraphicsBuffer field = CurrentField();
             if (field == null) return;  // no terrain field yet: nothing to snow on
             float[] p = settings.PackParams(dt);
             SetParams(p);
@@ -228,13 +234,22 @@ namespace GregoryTerrain
             DepthVersion++;
         }
 
-        ComputeBuffer CurrentField()
+        GraphicsBuffer CurrentField()
         {
             if (_externalField != null) return _externalField;
-            if (HasTerrain)
+            if (UsesTerrainField)
             {
                 if (_fieldKernel < 0) return null;   // no SnowField.compute assigned
-                if (_fieldTerrainVersion != _terrainVersion) EvaluateField();
+                if (!terrain.TryGetSnowTerrain(out GraphicsBuffer cps, out GraphicsBuffer regions, out GraphicsBuffer lines,
+                        out TerrainParams parameters, out bool noise, out int gridStamp))
+                    return null;   // nothing uploaded yet, or settings the renderer cannot draw
+                TerrainParams p = SnowFieldTerrain.ParamsFor(parameters, settings.resolution);
+                if (gridStamp != _fieldGridStamp || noise != _fieldNoise || !SameParams(p, _fieldParams))
+                {
+                    _fieldGridStamp = gridStamp; _fieldNoise = noise; _fieldParams = p;
+                    _terrainVersion++;
+                }
+                if (_fieldTerrainVersion != _terrainVersion) EvaluateField(cps, regions, lines);
                 return _field;
             }
             if (_cpuField == null) return null;
@@ -248,22 +263,29 @@ namespace GregoryTerrain
         }
 
         /// <summary>SnowFieldKernel over the R x R cells: the terrain's vertex path at every cell centre.</summary>
-        void EvaluateField()
+        void EvaluateField(GraphicsBuffer controlPoints, GraphicsBuffer regions, GraphicsBuffer gridLines)
         {
-            TerrainParams p = SnowFieldTerrain.ParamsFor(_terrainParams, settings.resolution);
+            TerrainParams p = _fieldParams;
             for (int i = 0; i < TerrainParams.Float4Count; i++)
             {
                 Float4 v = p[i];
                 fieldShader.SetVector(Ids.TerrainParams[i], new Vector4(v.x, v.y, v.z, v.w));
             }
-            if (_terrainNoise) fieldShader.EnableKeyword(NoiseKeyword); else fieldShader.DisableKeyword(NoiseKeyword);
-            fieldShader.SetBuffer(_fieldKernel, Ids.ControlPoints, _terrainControlPoints);
-            fieldShader.SetBuffer(_fieldKernel, Ids.Regions, _terrainRegions);
-            fieldShader.SetBuffer(_fieldKernel, Ids.GridLines, _terrainGridLines);
+            if (_fieldNoise) fieldShader.EnableKeyword(NoiseKeyword); else fieldShader.DisableKeyword(NoiseKeyword);
+            fieldShader.SetBuffer(_fieldKernel, Ids.ControlPoints, controlPoints);
+            fieldShader.SetBuffer(_fieldKernel, Ids.Regions, regions);
+            fieldShader.SetBuffer(_fieldKernel, Ids.GridLines, gridLines);
             fieldShader.SetBuffer(_fieldKernel, Ids.Field, _field);
             int groups = settings.resolution / 8;
             fieldShader.Dispatch(_fieldKernel, groups, groups, 1);
             _fieldTerrainVersion = _terrainVersion;   // the field's version: the exposure sees the change
+        }
+
+        static bool SameParams(TerrainParams a, TerrainParams b)
+        {
+            for (int i = 0; i < TerrainParams.Float4Count; i++)
+                if (!a[i].Equals(b[i])) return false;
+            return true;
         }
 
         void SetParams(float[] p)
@@ -278,29 +300,32 @@ namespace GregoryTerrain
         void Allocate()
         {
             int cells = settings.resolution * settings.resolution;
-            _field = new ComputeBuffer(cells, 16);
+            _field = new GraphicsBuffer(GraphicsBuffer.Target.Structured, cells, 16);
             _ownsField = true;
-            _exposure = new ComputeBuffer(cells, 4);
-            _depth = new ComputeBuffer(cells, 4);
+            _exposure = new GraphicsBuffer(GraphicsBuffer.Target.Structured, cells, 4);
+            _depth = new GraphicsBuffer(GraphicsBuffer.Target.Structured, cells, 4);
             _depth.SetData(new float[cells]);
             DepthVersion++;
             _exposureValid = false;
             _uploadedCpuVersion = -1;
             _fieldTerrainVersion = -1;   // a new field buffer: evaluate the terrain again
-            Bind();
         }
 
-        void Bind()
+        /// <summary>Attaches to <see cref="Terrain"/> (detaching from a previous renderer): it draws GT_SNOW from now on.</summary>
+        void Attach()
         {
-            if (terrainMaterial == null || _depth == null) return;
-            terrainMaterial.SetBuffer(Ids.Depth, _depth);
-            terrainMaterial.SetVector(Ids.MapSize, MapSize);
-            terrainMaterial.EnableKeyword(Keyword);
+            if (_attached == terrain) return;
+            Detach();
+            if (terrain == null) return;
+            terrain.AttachSnow(this);
+            _attached = terrain;
+            _fieldGridStamp = -1;   // a new terrain: evaluate its field
         }
 
-        void DisableKeyword()
+        void Detach()
         {
-            if (terrainMaterial != null) terrainMaterial.DisableKeyword(Keyword);
+            if (_attached != null) _attached.DetachSnow(this);
+            _attached = null;
         }
 
         void Release()

@@ -7,7 +7,7 @@ namespace GregoryTerrain
     /// The compute pre-pass of <see cref="VertexEvaluation.ComputeCache"/>: owns <c>_TileFactors</c>
     /// (62 T^2 float4) and <c>_VertexCache</c> (T^2 S(L) R uint4, T = M, or M + 1 with anchored tiles; sizes from Core's
     /// <see cref="VertexCacheBudget"/>) and dispatches <c>CacheTileFactors</c> then
-    /// <c>CacheTileVertices</c> of <c>Shaders/TerrainCache.compute</c> only when something the
+    /// <c>CacheTileVertices</c> of <c>Shaders/Cache/TerrainCache.compute</c> only when something the
     /// kernels read differs from the last dispatch: the TerrainParams block (range and origin
     /// included), the LOD camera's object-to-clip matrix and pixel size, the effect keywords, the
     /// grid's buffers, or the snow map's version. A frame where none changed dispatches nothing.
@@ -66,7 +66,7 @@ namespace GregoryTerrain
             public int gridStamp;
             public Effects effects;
             /// <summary>With <see cref="Effects.Snow"/>: the simulator's depth map, its (R, 1/R, cap, 0) and version.</summary>
-            public ComputeBuffer snowDepth;
+            public GraphicsBuffer snowDepth;
             public Vector4 snowMapSize;
             public int snowVersion;
         }

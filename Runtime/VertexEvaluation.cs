@@ -14,7 +14,7 @@ namespace GregoryTerrain
         DomainStage = 0,
 
         /// <summary>
-        /// A compute pre-pass (<c>Shaders/TerrainCache.compute</c>) evaluates each vertex once into a
+        /// A compute pre-pass (<c>Shaders/Cache/TerrainCache.compute</c>) evaluates each vertex once into a
         /// buffer, in frames where the LOD camera, the range or a setting changed; the domain stage
         /// only reads it (material keyword <c>GT_VERTEX_CACHE</c>). Integer factors, from the LOD
         /// camera for every camera and pass. Needs compute shaders; the renderer falls back to

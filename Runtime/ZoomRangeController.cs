@@ -7,6 +7,10 @@ namespace GregoryTerrain
     /// change only the range (one float4 per frame); the camera is placed over the range so it fills
     /// the view, and camera data is what Unity sends anyway. Drive it with <see cref="Zoom"/> and
     /// <see cref="Pan"/>, or with the mouse wheel and arrow keys when the legacy Input Manager is on.
+    /// <para>In Edit Mode it previews the range from its settings without writing any saved state
+    /// (the renderer's range is set with <see cref="GregoryTerrainRenderer.SetDrawnRange"/>), and it
+    /// leaves the camera where the user put it unless <c>Place Camera In Edit Mode</c> is on; then
+    /// each placement is one Undo step on the camera.</para>
     /// </summary>
     [ExecuteAlways]
     [AddComponentMenu("Gregory Terrain/Zoom Range Controller")]
@@ -32,6 +36,9 @@ namespace GregoryTerrain
 
         [Tooltip("Camera pitch in degrees (90 = looking straight down).")]
         [SerializeField, Range(10f, 90f)] float cameraPitch = 50f;
+
+        [Tooltip("Also move the View Camera over the range in Edit Mode (each move can be undone). Off: in Edit Mode the camera stays where you place it; in Play Mode it always follows.")]
+        [SerializeField] bool placeCameraInEditMode;
 
         // Centre kept in double: a float centre cannot address a 1e-6 range precisely.
         double _cx = 0.5, _cy = 0.5;
@@ -76,7 +83,19 @@ namespace GregoryTerrain
             Apply();
         }
 
-        /// <summary>Sends the range to the terrain and places the camera over it.</summary>
+        /// <summary>The terrain whose range this controller sets.</summary>
+        public GregoryTerrainRenderer Target { get => target; set => target = value; }
+
+        /// <summary>The camera placed over the range (optional).</summary>
+        public Camera ViewCamera { get => viewCamera; set => viewCamera = value; }
+
+        /// <summary>Whether the View Camera is also moved in Edit Mode (off by default; in Play Mode it always is).</summary>
+        public bool PlaceCameraInEditMode { get => placeCameraInEditMode; set => placeCameraInEditMode = value; }
+
+        /// <summary>
+        /// Sends the range to the terrain and places the camera over it. In Edit Mode only the drawn
+        /// range changes (nothing saved), and the camera moves only with <see cref="PlaceCameraInEditMode"/>.
+        /// </summary>
         public void Apply()
         {
             if (target == null) return;
@@ -84,12 +103,17 @@ namespace GregoryTerrain
             TerrainRange r = RangeFit.Around(_cx, _cy, w, w);
             _cx = 0.5 * (r.c + r.g);          // stay where the clamped range is
             _cy = 0.5 * (r.d + r.h);
-            center = new Vector2((float)_cx, (float)_cy);
-            target.Range = r;
-            if (viewCamera != null) PlaceCamera(r);
+            bool playing = Application.isPlaying;
+            if (playing)
+            {
+                center = new Vector2((float)_cx, (float)_cy);
+                target.Range = r;
+            }
+            else target.SetDrawnRange(r);
+            if (viewCamera != null && (playing || placeCameraInEditMode)) PlaceCamera(r, recordUndo: !playing);
         }
 
-        void PlaceCamera(TerrainRange r)
+        void PlaceCamera(TerrainRange r, bool recordUndo)
         {
             Transform t = target.transform;
             // Object space is (x, height, y); the range's centre at mid height.
@@ -99,9 +123,22 @@ namespace GregoryTerrain
             float halfFov = 0.5f * viewCamera.fieldOfView * Mathf.Deg2Rad;
             float distance = 0.5f * worldWidth / Mathf.Tan(halfFov) * 1.1f;
             Quaternion rot = Quaternion.Euler(cameraPitch, 0f, 0f);
-            viewCamera.transform.SetPositionAndRotation(centreWS - rot * Vector3.forward * distance, rot);
-            viewCamera.nearClipPlane = Mathf.Max(1e-4f, 0.01f * distance);
-            viewCamera.farClipPlane = Mathf.Max(viewCamera.nearClipPlane * 10f, 10f * distance);
+            Vector3 position = centreWS - rot * Vector3.forward * distance;
+            float near = Mathf.Max(1e-4f, 0.01f * distance), far = Mathf.Max(near * 10f, 10f * distance);
+            Transform ct = viewCamera.transform;
+            if (position == ct.position && viewCamera.nearClipPlane == near && viewCamera.farClipPlane == far) return;
+#if UNITY_EDITOR
+            // Edit Mode: the move is the user's scene change (asked for by Place Camera In Edit Mode):
+            // one Undo step, and the scene is marked changed so it is saved.
+            if (recordUndo)
+            {
+                UnityEditor.Undo.RecordObject(ct, "Place camera over range");
+                UnityEditor.Undo.RecordObject(viewCamera, "Place camera over range");
+            }
+#endif
+            ct.SetPositionAndRotation(position, rot);
+            viewCamera.nearClipPlane = near;
+            viewCamera.farClipPlane = far;
         }
     }
 }

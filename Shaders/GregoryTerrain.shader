@@ -90,8 +90,8 @@ Shader "GregoryTerrain/Terrain"
             #pragma multi_compile _ _MAIN_LIGHT_SHADOWS _MAIN_LIGHT_SHADOWS_CASCADE
             #pragma multi_compile_fragment _ _SHADOWS_SOFT
             #define GT_PASS_FORWARD 1
-            #include "Packages/com.gregoryterrain.tessellation/Shaders/Adapters/URPAdapter.hlsl"
-            #include "Packages/com.gregoryterrain.tessellation/Shaders/TerrainStages.hlsl"
+            #include "Packages/com.gregoryterrain.tessellation/Shaders/Pipelines/URPAdapter.hlsl"
+            #include "Packages/com.gregoryterrain.tessellation/Shaders/Pipelines/TerrainStages.hlsl"
             ENDHLSL
         }
 
@@ -118,8 +118,8 @@ Shader "GregoryTerrain/Terrain"
             // Vertex evaluation (renderer setting): the compute pre-pass's cached vertices, switched at run time.
             #pragma multi_compile_local _ GT_VERTEX_CACHE
             #define GT_PASS_SHADOWCASTER 1
-            #include "Packages/com.gregoryterrain.tessellation/Shaders/Adapters/URPAdapter.hlsl"
-            #include "Packages/com.gregoryterrain.tessellation/Shaders/TerrainStages.hlsl"
+            #include "Packages/com.gregoryterrain.tessellation/Shaders/Pipelines/URPAdapter.hlsl"
+            #include "Packages/com.gregoryterrain.tessellation/Shaders/Pipelines/TerrainStages.hlsl"
             ENDHLSL
         }
 
@@ -146,8 +146,8 @@ Shader "GregoryTerrain/Terrain"
             // Vertex evaluation (renderer setting): the compute pre-pass's cached vertices, switched at run time.
             #pragma multi_compile_local _ GT_VERTEX_CACHE
             #define GT_PASS_DEPTH 1
-            #include "Packages/com.gregoryterrain.tessellation/Shaders/Adapters/URPAdapter.hlsl"
-            #include "Packages/com.gregoryterrain.tessellation/Shaders/TerrainStages.hlsl"
+            #include "Packages/com.gregoryterrain.tessellation/Shaders/Pipelines/URPAdapter.hlsl"
+            #include "Packages/com.gregoryterrain.tessellation/Shaders/Pipelines/TerrainStages.hlsl"
             ENDHLSL
         }
 
@@ -175,8 +175,8 @@ Shader "GregoryTerrain/Terrain"
             // URP's normal packing for the deferred renderer's accurate G-buffer normals.
             #pragma multi_compile_fragment _ _GBUFFER_NORMALS_OCT
             #define GT_PASS_DEPTH_NORMALS 1
-            #include "Packages/com.gregoryterrain.tessellation/Shaders/Adapters/URPAdapter.hlsl"
-            #include "Packages/com.gregoryterrain.tessellation/Shaders/TerrainStages.hlsl"
+            #include "Packages/com.gregoryterrain.tessellation/Shaders/Pipelines/URPAdapter.hlsl"
+            #include "Packages/com.gregoryterrain.tessellation/Shaders/Pipelines/TerrainStages.hlsl"
             ENDHLSL
         }
     }
@@ -210,8 +210,8 @@ Shader "GregoryTerrain/Terrain"
             #pragma multi_compile_fragment _ _SHADOWS_SOFT
             #define GT_PASS_FORWARD 1
             #define GT_FALLBACK 1
-            #include "Packages/com.gregoryterrain.tessellation/Shaders/Adapters/URPAdapter.hlsl"
-            #include "Packages/com.gregoryterrain.tessellation/Shaders/TerrainStages.hlsl"
+            #include "Packages/com.gregoryterrain.tessellation/Shaders/Pipelines/URPAdapter.hlsl"
+            #include "Packages/com.gregoryterrain.tessellation/Shaders/Pipelines/TerrainStages.hlsl"
             ENDHLSL
         }
 
@@ -233,8 +233,8 @@ Shader "GregoryTerrain/Terrain"
             #pragma multi_compile_local _ GT_SNOW
             #define GT_PASS_SHADOWCASTER 1
             #define GT_FALLBACK 1
-            #include "Packages/com.gregoryterrain.tessellation/Shaders/Adapters/URPAdapter.hlsl"
-            #include "Packages/com.gregoryterrain.tessellation/Shaders/TerrainStages.hlsl"
+            #include "Packages/com.gregoryterrain.tessellation/Shaders/Pipelines/URPAdapter.hlsl"
+            #include "Packages/com.gregoryterrain.tessellation/Shaders/Pipelines/TerrainStages.hlsl"
             ENDHLSL
         }
 
@@ -256,8 +256,8 @@ Shader "GregoryTerrain/Terrain"
             #pragma multi_compile_local _ GT_SNOW
             #define GT_PASS_DEPTH 1
             #define GT_FALLBACK 1
-            #include "Packages/com.gregoryterrain.tessellation/Shaders/Adapters/URPAdapter.hlsl"
-            #include "Packages/com.gregoryterrain.tessellation/Shaders/TerrainStages.hlsl"
+            #include "Packages/com.gregoryterrain.tessellation/Shaders/Pipelines/URPAdapter.hlsl"
+            #include "Packages/com.gregoryterrain.tessellation/Shaders/Pipelines/TerrainStages.hlsl"
             ENDHLSL
         }
 
@@ -280,8 +280,8 @@ Shader "GregoryTerrain/Terrain"
             #pragma multi_compile_fragment _ _GBUFFER_NORMALS_OCT
             #define GT_PASS_DEPTH_NORMALS 1
             #define GT_FALLBACK 1
-            #include "Packages/com.gregoryterrain.tessellation/Shaders/Adapters/URPAdapter.hlsl"
-            #include "Packages/com.gregoryterrain.tessellation/Shaders/TerrainStages.hlsl"
+            #include "Packages/com.gregoryterrain.tessellation/Shaders/Pipelines/URPAdapter.hlsl"
+            #include "Packages/com.gregoryterrain.tessellation/Shaders/Pipelines/TerrainStages.hlsl"
             ENDHLSL
         }
     }
@@ -317,8 +317,8 @@ Shader "GregoryTerrain/Terrain"
             #pragma shader_feature_local GT_HEIGHT_COLOR
             #pragma shader_feature_local _ GT_DEBUG_NORMALS GT_DEBUG_PATCH_ID GT_DEBUG_TESS_FACTOR
             #define GT_PASS_FORWARD 1
-            #include "Packages/com.gregoryterrain.tessellation/Shaders/Adapters/HDRPAdapter.hlsl"
-            #include "Packages/com.gregoryterrain.tessellation/Shaders/TerrainStages.hlsl"
+            #include "Packages/com.gregoryterrain.tessellation/Shaders/Pipelines/HDRPAdapter.hlsl"
+            #include "Packages/com.gregoryterrain.tessellation/Shaders/Pipelines/TerrainStages.hlsl"
             ENDHLSL
         }
 
@@ -345,8 +345,8 @@ Shader "GregoryTerrain/Terrain"
             // Vertex evaluation (renderer setting): the compute pre-pass's cached vertices, switched at run time.
             #pragma multi_compile_local _ GT_VERTEX_CACHE
             #define GT_PASS_DEPTH 1
-            #include "Packages/com.gregoryterrain.tessellation/Shaders/Adapters/HDRPAdapter.hlsl"
-            #include "Packages/com.gregoryterrain.tessellation/Shaders/TerrainStages.hlsl"
+            #include "Packages/com.gregoryterrain.tessellation/Shaders/Pipelines/HDRPAdapter.hlsl"
+            #include "Packages/com.gregoryterrain.tessellation/Shaders/Pipelines/TerrainStages.hlsl"
             ENDHLSL
         }
 
@@ -373,8 +373,8 @@ Shader "GregoryTerrain/Terrain"
             // Vertex evaluation (renderer setting): the compute pre-pass's cached vertices, switched at run time.
             #pragma multi_compile_local _ GT_VERTEX_CACHE
             #define GT_PASS_SHADOWCASTER 1
-            #include "Packages/com.gregoryterrain.tessellation/Shaders/Adapters/HDRPAdapter.hlsl"
-            #include "Packages/com.gregoryterrain.tessellation/Shaders/TerrainStages.hlsl"
+            #include "Packages/com.gregoryterrain.tessellation/Shaders/Pipelines/HDRPAdapter.hlsl"
+            #include "Packages/com.gregoryterrain.tessellation/Shaders/Pipelines/TerrainStages.hlsl"
             ENDHLSL
         }
     }
@@ -405,8 +405,8 @@ Shader "GregoryTerrain/Terrain"
             #pragma shader_feature_local _ GT_DEBUG_NORMALS GT_DEBUG_PATCH_ID GT_DEBUG_TESS_FACTOR
             #define GT_PASS_FORWARD 1
             #define GT_FALLBACK 1
-            #include "Packages/com.gregoryterrain.tessellation/Shaders/Adapters/HDRPAdapter.hlsl"
-            #include "Packages/com.gregoryterrain.tessellation/Shaders/TerrainStages.hlsl"
+            #include "Packages/com.gregoryterrain.tessellation/Shaders/Pipelines/HDRPAdapter.hlsl"
+            #include "Packages/com.gregoryterrain.tessellation/Shaders/Pipelines/TerrainStages.hlsl"
             ENDHLSL
         }
 
@@ -428,8 +428,8 @@ Shader "GregoryTerrain/Terrain"
             #pragma multi_compile_local _ GT_SNOW
             #define GT_PASS_DEPTH 1
             #define GT_FALLBACK 1
-            #include "Packages/com.gregoryterrain.tessellation/Shaders/Adapters/HDRPAdapter.hlsl"
-            #include "Packages/com.gregoryterrain.tessellation/Shaders/TerrainStages.hlsl"
+            #include "Packages/com.gregoryterrain.tessellation/Shaders/Pipelines/HDRPAdapter.hlsl"
+            #include "Packages/com.gregoryterrain.tessellation/Shaders/Pipelines/TerrainStages.hlsl"
             ENDHLSL
         }
 
@@ -451,8 +451,8 @@ Shader "GregoryTerrain/Terrain"
             #pragma multi_compile_local _ GT_SNOW
             #define GT_PASS_SHADOWCASTER 1
             #define GT_FALLBACK 1
-            #include "Packages/com.gregoryterrain.tessellation/Shaders/Adapters/HDRPAdapter.hlsl"
-            #include "Packages/com.gregoryterrain.tessellation/Shaders/TerrainStages.hlsl"
+            #include "Packages/com.gregoryterrain.tessellation/Shaders/Pipelines/HDRPAdapter.hlsl"
+            #include "Packages/com.gregoryterrain.tessellation/Shaders/Pipelines/TerrainStages.hlsl"
             ENDHLSL
         }
     }
@@ -490,8 +490,8 @@ Shader "GregoryTerrain/Terrain"
             // Main directional light's shadow received (BuiltinAdapter.hlsl, GT_MainLightShadow).
             #pragma multi_compile _ SHADOWS_SCREEN
             #define GT_PASS_FORWARD 1
-            #include "Packages/com.gregoryterrain.tessellation/Shaders/Adapters/BuiltinAdapter.hlsl"
-            #include "Packages/com.gregoryterrain.tessellation/Shaders/TerrainStages.hlsl"
+            #include "Packages/com.gregoryterrain.tessellation/Shaders/Pipelines/BuiltinAdapter.hlsl"
+            #include "Packages/com.gregoryterrain.tessellation/Shaders/Pipelines/TerrainStages.hlsl"
             ENDHLSL
         }
 
@@ -518,8 +518,8 @@ Shader "GregoryTerrain/Terrain"
             // Vertex evaluation (renderer setting): the compute pre-pass's cached vertices, switched at run time.
             #pragma multi_compile_local _ GT_VERTEX_CACHE
             #define GT_PASS_SHADOWCASTER 1
-            #include "Packages/com.gregoryterrain.tessellation/Shaders/Adapters/BuiltinAdapter.hlsl"
-            #include "Packages/com.gregoryterrain.tessellation/Shaders/TerrainStages.hlsl"
+            #include "Packages/com.gregoryterrain.tessellation/Shaders/Pipelines/BuiltinAdapter.hlsl"
+            #include "Packages/com.gregoryterrain.tessellation/Shaders/Pipelines/TerrainStages.hlsl"
             ENDHLSL
         }
     }
@@ -552,8 +552,8 @@ Shader "GregoryTerrain/Terrain"
             #pragma multi_compile _ SHADOWS_SCREEN
             #define GT_PASS_FORWARD 1
             #define GT_FALLBACK 1
-            #include "Packages/com.gregoryterrain.tessellation/Shaders/Adapters/BuiltinAdapter.hlsl"
-            #include "Packages/com.gregoryterrain.tessellation/Shaders/TerrainStages.hlsl"
+            #include "Packages/com.gregoryterrain.tessellation/Shaders/Pipelines/BuiltinAdapter.hlsl"
+            #include "Packages/com.gregoryterrain.tessellation/Shaders/Pipelines/TerrainStages.hlsl"
             ENDHLSL
         }
 
@@ -575,8 +575,8 @@ Shader "GregoryTerrain/Terrain"
             #pragma multi_compile_local _ GT_SNOW
             #define GT_PASS_SHADOWCASTER 1
             #define GT_FALLBACK 1
-            #include "Packages/com.gregoryterrain.tessellation/Shaders/Adapters/BuiltinAdapter.hlsl"
-            #include "Packages/com.gregoryterrain.tessellation/Shaders/TerrainStages.hlsl"
+            #include "Packages/com.gregoryterrain.tessellation/Shaders/Pipelines/BuiltinAdapter.hlsl"
+            #include "Packages/com.gregoryterrain.tessellation/Shaders/Pipelines/TerrainStages.hlsl"
             ENDHLSL
         }
     }

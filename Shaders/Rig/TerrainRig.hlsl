@@ -2,9 +2,9 @@
 // pipeline-agnostic stages. Entry points: vert, hull_shader, domain_shader, frag, vert_fallback.
 #ifndef GT_TERRAIN_RIG_INCLUDED
 #define GT_TERRAIN_RIG_INCLUDED
-#include "../Adapters/StandaloneAdapter.hlsl"
-#include "../TerrainStages.hlsl"
+#include "../Pipelines/StandaloneAdapter.hlsl"
+#include "../Pipelines/TerrainStages.hlsl"
 #if defined(GT_VERTEX_CACHE)
-    #include "../VertexCacheKernels.hlsl"   // entry points CacheTileFactors, CacheTileVertices
+    #include "../Cache/VertexCacheKernels.hlsl"   // entry points CacheTileFactors, CacheTileVertices
 #endif
 #endif

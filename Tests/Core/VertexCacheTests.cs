@@ -5,7 +5,7 @@ using NUnit.Framework;
 
 namespace GregoryTerrain.Tests
 {
-    /// <summary>The vertex cache's layout (VertexCache.cs, mirrored by Shaders/VertexCache.hlsl).</summary>
+    /// <summary>The vertex cache's layout (VertexCache.cs, mirrored by Shaders/Cache/VertexCache.hlsl).</summary>
     [TestFixture]
     public class VertexCacheTests
     {

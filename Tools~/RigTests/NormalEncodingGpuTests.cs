@@ -8,7 +8,7 @@ using static GregoryTerrain.Rig.Tests.ComputeRunner;
 namespace GregoryTerrain.Rig.Tests
 {
     /// <summary>
-    /// Shaders/NormalEncoding.hlsl (the normal in the varyings) on lavapipe against Core's mirror
+    /// Shaders/Library/NormalEncoding.hlsl (the normal in the varyings) on lavapipe against Core's mirror
     /// NormalEncoding, through the probe kernel NormalEncodingProbe.hlsl run by gt-compute.
     /// </summary>
     [TestFixture]

@@ -1,6 +1,6 @@
-// Test kernel (NormalEncodingGpuTests): Shaders/NormalEncoding.hlsl on the GPU, for Core's mirror.
+// Test kernel (NormalEncodingGpuTests): Shaders/Library/NormalEncoding.hlsl on the GPU, for Core's mirror.
 // Binding 0: the normals (float4, w unused); binding 1: per normal (encoded, 0, 0), (decoded, 0).
-#include "../../Shaders/NormalEncoding.hlsl"
+#include "../../Shaders/Library/NormalEncoding.hlsl"
 
 StructuredBuffer<float4> _Normals : register(t0);
 RWStructuredBuffer<float4> _Encoded : register(u1);

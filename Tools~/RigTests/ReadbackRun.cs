@@ -1,5 +1,5 @@
 // One readback draw through gt-harness on lavapipe and its comparison with Core's float mirror of the
-// shaders (Runtime/Core/TerrainVertex.cs): the helpers every GPU-vs-Core test shares (TerrainGpuTests,
+// shaders (Runtime/Core/Terrain/TerrainVertex.cs): the helpers every GPU-vs-Core test shares (TerrainGpuTests,
 // HardCaseGpuTests). They fail (never skip) when the harness, lavapipe, glslang or gt-cli is
 // missing: `gt setup` provides them.
 using System;

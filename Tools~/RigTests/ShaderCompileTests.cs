@@ -162,7 +162,7 @@ namespace GregoryTerrain.Rig.Tests
         [Test]
         public void UnityCacheComputeFileCompilesForEveryKeywordCombination()
         {
-            string src = Path.Combine(packageRoot, "Shaders", "TerrainCache.compute");
+            string src = Path.Combine(packageRoot, "Shaders", "Cache", "TerrainCache.compute");
             string[] effects = { "GT_NOISE", "GT_HEIGHT_COLOR", "GT_SNOW" };
             for (int mask = 0; mask < 8; mask++)
                 foreach (var kernel in new[] { "CacheTileFactors", "CacheTileVertices" })

@@ -252,8 +252,8 @@ namespace GregoryTerrain.Rig.Tests
                     string adapter = s.Pipeline == "Builtin" ? "BuiltinAdapter" : s.Pipeline + "Adapter";
                     Assert.That(includes, Is.EqualTo(new[]
                     {
-                        $"Packages/{PackageName}/Shaders/Adapters/{adapter}.hlsl",
-                        $"Packages/{PackageName}/Shaders/TerrainStages.hlsl",
+                        $"Packages/{PackageName}/Shaders/Pipelines/{adapter}.hlsl",
+                        $"Packages/{PackageName}/Shaders/Pipelines/TerrainStages.hlsl",
                     }), $"{s} pass {p.Name}: the adapter, then the stages");
                     foreach (string inc in includes)
                     {

@@ -10,7 +10,7 @@ using static GregoryTerrain.Rig.Tests.ComputeRunner;
 namespace GregoryTerrain.Rig.Tests
 {
     /// <summary>
-    /// Shaders/SnowSimulation.compute against the Core reference (SnowSimulation): compiled with
+    /// Shaders/Snow/SnowSimulation.compute against the Core reference (SnowSimulation): compiled with
     /// glslang's HLSL front end, validated, cross-compiled, then run by gt-compute on lavapipe.
     /// Missing tools, runner or lavapipe make these tests fail (run <c>Tools~/gt setup</c>).
     /// </summary>
@@ -33,7 +33,7 @@ namespace GregoryTerrain.Rig.Tests
         {
             _dir = Path.Combine(Path.GetTempPath(), "gt-snow-" + Guid.NewGuid().ToString("N"));
             Directory.CreateDirectory(_dir);
-            string src = PackageRoot.Combine("Shaders", "SnowSimulation.compute");
+            string src = PackageRoot.Combine("Shaders", "Snow", "SnowSimulation.compute");
             foreach (string k in Kernels)
             {
                 string spv = Spv(k);

@@ -313,7 +313,7 @@ namespace GregoryTerrain.Rig.Tests
             var args = new List<string> { "-D", "-V", "-S", "comp", "-e", entry };
             if (file == "SnowField.compute") args.AddRange(Shifts);
             args.AddRange(extra);
-            args.AddRange(new[] { "-o", spv, Path.Combine(_root, "Shaders", file) });
+            args.AddRange(new[] { "-o", spv, Path.Combine(_root, "Shaders", "Snow", file) });
             Exec("glslangValidator", args.ToArray(), null);
             Exec("spirv-val", new[] { spv }, null);
             return spv;

@@ -90,16 +90,26 @@ namespace GregoryTerrain.Rig.Tests
 
         /// <summary>
         /// Every stub type and member keeps its Scripting Reference page: "SR:Page" on its own line or
-        /// in the comment lines directly above it.
+        /// in the comment lines directly above it (attribute lines between them allowed). A further
+        /// part of a partial type needs none when another part names the page.
         /// </summary>
         [Test]
         public void EveryStubDeclarationNamesItsScriptingReferencePage()
         {
             var missing = new List<string>();
             int declarations = 0;
-            foreach (string file in Directory.GetFiles(PackageRoot.Combine("Tools~", "UnityApiCheck", "Stubs"), "*.cs", SearchOption.AllDirectories))
+            var files = Directory.GetFiles(PackageRoot.Combine("Tools~", "UnityApiCheck", "Stubs"), "*.cs", SearchOption.AllDirectories)
+                .Where(f => !f.Contains(Path.DirectorySeparatorChar + "obj" + Path.DirectorySeparatorChar)).ToList();
+            var partialType = new Regex(@"^public\s+(?:sealed\s+|abstract\s+|static\s+)*partial\s+(?:class|struct)\s+(\w+)");
+            var namedTypes = new HashSet<string>();
+            foreach (string file in files)
+                foreach (string l in File.ReadAllLines(file))
+                {
+                    var t = Regex.Match(l.Trim(), @"^public\s+(?:sealed\s+|abstract\s+|static\s+)*(?:partial\s+)?(?:class|struct)\s+(\w+)");
+                    if (t.Success && l.Contains("SR:")) namedTypes.Add(t.Groups[1].Value);
+                }
+            foreach (string file in files)
             {
-                if (file.Contains(Path.DirectorySeparatorChar + "obj" + Path.DirectorySeparatorChar)) continue;
                 string[] lines = File.ReadAllLines(file);
                 for (int i = 0; i < lines.Length; i++)
                 {
@@ -107,8 +117,10 @@ namespace GregoryTerrain.Rig.Tests
                     if (!Regex.IsMatch(l, @"^(\[[^\]]*\]\s*)*public\s+(?!override)")) continue;
                     declarations++;
                     bool named = l.Contains("SR:");
-                    for (int k = i - 1; !named && k >= 0 && lines[k].TrimStart().StartsWith("//", StringComparison.Ordinal); k--)
+                    for (int k = i - 1; !named && k >= 0 && (lines[k].TrimStart().StartsWith("//", StringComparison.Ordinal) || lines[k].TrimStart().StartsWith("[", StringComparison.Ordinal)); k--)
                         named = lines[k].Contains("SR:");
+                    var partial = partialType.Match(l);
+                    if (!named && partial.Success) named = namedTypes.Contains(partial.Groups[1].Value);
                     if (!named) missing.Add($"{Path.GetFileName(file)}:{i + 1}: {l}");
                 }
             }

@@ -1,5 +1,5 @@
 // The package's shaders on the GPU (lavapipe, through gt-harness) against Core's float mirror of the
-// same evaluation path (Runtime/Core/TerrainVertex.cs): readback of every vertex at several ranges,
+// same evaluation path (Runtime/Core/Terrain/TerrainVertex.cs): readback of every vertex at several ranges,
 // noise on and off; shared tile edges; vertex counts per range; rendered images. They fail (never
 // skip) when the harness, lavapipe, glslang or gt-cli is missing: `gt setup` provides them.
 using System;

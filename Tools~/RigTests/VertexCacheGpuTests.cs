@@ -268,7 +268,7 @@ namespace GregoryTerrain.Rig.Tests
         }
 
         /// <summary>
-        /// The layout the kernels and the domain stage address (Shaders/VertexCache.hlsl, the sample
+        /// The layout the kernels and the domain stage address (Shaders/Cache/VertexCache.hlsl, the sample
         /// count of TileFactors.hlsl) is Core's, run on lavapipe through VertexCacheLayoutProbe.hlsl:
         /// slots, groups and points a tile for every factor limit 1-64, the factor samples, the
         /// factor-record and evaluated-range indices, the group's lanes and passes.

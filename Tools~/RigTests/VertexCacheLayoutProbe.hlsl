@@ -1,5 +1,5 @@
-// Test kernel (VertexCacheGpuTests): the vertex cache's layout functions (Shaders/VertexCache.hlsl)
-// and the factor sample count (Shaders/TileFactors.hlsl) on the GPU, for Core's mirrors
+// Test kernel (VertexCacheGpuTests): the vertex cache's layout functions (Shaders/Cache/VertexCache.hlsl)
+// and the factor sample count (Shaders/Terrain/TileFactors.hlsl) on the GPU, for Core's mirrors
 // VertexCache and VertexCacheBudget. Lane i writes, for the factor limit L = i + 1 and tile i of
 // 7 x 7 tiles: (slots a tile, groups a tile, most points a tile, factor samples a tile), then
 // (factor record index, evaluated-range index, lanes a factors group, passes a vertex group), then
@@ -8,8 +8,8 @@
 // rig's register shifts (u4 -> binding 9); only pure functions are called, so the terrain's own
 // buffers and constants are declared but never read.
 #define GT_VERTEX_CACHE
-#include "../../Shaders/Adapters/StandaloneAdapter.hlsl"
-#include "../../Shaders/VertexCache.hlsl"
+#include "../../Shaders/Pipelines/StandaloneAdapter.hlsl"
+#include "../../Shaders/Cache/VertexCache.hlsl"
 
 RWStructuredBuffer<uint4> _Layout : register(u4);
 

@@ -4,6 +4,7 @@
 #                                          bash DIR/bench_run.sh DIR DIR/gt-harness DIR/spirv OUT [--device NAME]
 #   gt bench [--quick] --report RAW [--plan DIR]  tables of a run's raw output (results.txt, readback.tar)
 #   gt bench --docs RAW                     the tables and the plot of Documentation~/performance.md from RAW
+#                                          (the headline run: Tools~/bench/runs/h200)
 # --quick: small sizes for lavapipe (CI, about 2 minutes). Without --device the first device is used
 # (lavapipe here: set VK_DRIVER_FILES to choose).
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
@@ -60,11 +61,14 @@ report_of() {  # report_of RAW PLAN
 
 if [ -n "$docs" ]; then
   [ -n "$plan" ] || { plan="$bench/plan-docs"; make_plan "$plan"; }
+  # The table's data (.tsv) stays beside the raw run (Tools~/bench/runs/...); the manual gets only
+  # the table (.md) and the plot.
   out="$PKG_DIR/Documentation~/performance"
   mkdir -p "$out"
-  "${cli[@]}" bench-report --plan "$plan" --raw "$docs" --grid "$grid" --tsv "$out/bench_table.tsv" > /dev/null
+  "${cli[@]}" bench-report --plan "$plan" --raw "$docs" --grid "$grid" --tsv "$docs/bench_table.tsv" > /dev/null
+  cp "$docs/bench_table.md" "$out/bench_table.md"; rm -f "$docs/bench_table.md"
   py=python3; [ -x /usr/bin/python3 ] && /usr/bin/python3 -c "import matplotlib" 2>/dev/null && py=/usr/bin/python3   # the distribution's matplotlib
-  "$py" "$RIG_DIR/bench_plot.py" "$out/bench_table.tsv" "$out/accuracy_vs_time.png"
+  "$py" "$RIG_DIR/bench_plot.py" "$docs/bench_table.tsv" "$out/accuracy_vs_time.png"
   cat "$out/bench_table.md"
   exit 0
 fi

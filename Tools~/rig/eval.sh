@@ -1,5 +1,5 @@
 # gt eval: position and normal of the terrain at global points, from Core's float path (what the
-# shaders compute, Runtime/Core/TerrainVertex.cs), Core's double reference, and with --gpu the GPU
+# shaders compute, Runtime/Core/Terrain/TerrainVertex.cs), Core's double reference, and with --gpu the GPU
 # itself (one harness draw per point: a 1 x 1 tile at factor 1 whose corner is exactly the point,
 # read back through GT_READBACK), side by side with the differences.
 #   gt eval [--grid FILE] (--points "x,y;x,y;..." | --points-file FILE) [--gpu [--device SUBSTR]]

@@ -32,9 +32,9 @@ for v in snow:noise+height_color+snow bare:noise+height_color; do
 done
 # The kernels: the field with the terrain stages' register shifts and noise, the simulation without.
 glslangValidator -D -V -S comp -e SnowFieldKernel --hlsl-iomap --stb 2 --suavb 5 -DGT_NOISE \
-  -o "$dest/spv/SnowFieldKernel.spv" "$PKG_DIR/Shaders/SnowField.compute" >/dev/null || die "glslang failed on SnowFieldKernel"
+  -o "$dest/spv/SnowFieldKernel.spv" "$PKG_DIR/Shaders/Snow/SnowField.compute" >/dev/null || die "glslang failed on SnowFieldKernel"
 for k in SnowExposureKernel SnowAccumulateKernel; do
-  glslangValidator -D -V -S comp -e "$k" -o "$dest/spv/$k.spv" "$PKG_DIR/Shaders/SnowSimulation.compute" >/dev/null \
+  glslangValidator -D -V -S comp -e "$k" -o "$dest/spv/$k.spv" "$PKG_DIR/Shaders/Snow/SnowSimulation.compute" >/dev/null \
     || die "glslang failed on $k"
 done
 for f in "$dest"/spv/*.spv "$dest"/spv/*/*.spv; do spirv-val "$f"; done

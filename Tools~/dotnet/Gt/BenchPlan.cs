@@ -170,7 +170,7 @@ namespace GregoryTerrain.Rig
             ? new[] { (8, 8, 7) }
             // Per static size: 64 and 32 tiles, and fewer, larger tiles, down to about the count whose
             // cells still hold the triangles below the max factor (larger factors cost less per
-            // triangle; performance/raw-h200-tile-count/ swept 10-16 tiles at 0.6M, 16-24 at 2M).
+            // triangle; performance.md's tile-count sweep: 10-16 tiles at 0.6M, 16-24 at 2M).
             : new[] { (64, 32, 17), (32, 32, 17), (16, 32, 17), (10, 32, 17),
                       (64, 32, 31), (32, 32, 31), (20, 32, 31),
                       (64, 32, 63), (32, 32, 63) };

@@ -8,18 +8,7 @@ using System;
 
 namespace UnityEngine
 {
-    [Flags]
-    public enum HideFlags                                                            // SR:HideFlags
-    {
-        None = 0, HideInHierarchy = 1, HideInInspector = 2, DontSaveInEditor = 4, NotEditable = 8,
-        DontSaveInBuild = 16, DontUnloadUnusedAsset = 32, DontSave = 52, HideAndDontSave = 61,
-    }
-
-    public partial class Object                                                      // SR:Object
-    {
-        public HideFlags hideFlags { get; set; }                                     // SR:Object-hideFlags
-        public static void Destroy(Object obj) { }                                   // SR:Object.Destroy
-    }
+    // HideFlags, Object.hideFlags and Object.Destroy: declared with the runtime side's stubs (UnityEngine.Rendering.cs).
 
     public partial class ScriptableObject                                            // SR:ScriptableObject
     {

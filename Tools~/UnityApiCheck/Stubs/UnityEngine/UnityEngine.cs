@@ -10,7 +10,7 @@ using System.Collections.Generic;
 namespace UnityEngine
 {
     // SR:Object
-    public partial class Object
+    public partial class Object                                                       // SR:Object
     {
         public string name { get => null; set { } }                                  // SR:Object-name
         public static implicit operator bool(Object o) => !ReferenceEquals(o, null);  // SR:Object-operator_Object
@@ -65,7 +65,7 @@ namespace UnityEngine
         public void LookAt(Vector3 worldPosition) { }                                 // SR:Transform.LookAt
     }
 
-    public sealed class Camera : Behaviour                                            // SR:Camera (sealed partial in 2022.3)
+    public sealed partial class Camera : Behaviour                                    // SR:Camera (sealed partial in 2022.3)
     {
         public static Camera main => null;                                            // SR:Camera-main
         public float fieldOfView { get; set; }                                        // SR:Camera-fieldOfView
@@ -205,7 +205,7 @@ namespace UnityEngine
         public static Shader Find(string name) => null;                               // SR:Shader.Find
     }
 
-    public class Material : Object                                                    // SR:Material
+    public partial class Material : Object                                            // SR:Material
     {
         public Material(Shader shader) { }                                            // SR:Material-ctor
         public Shader shader { get; set; }                                            // SR:Material-shader
@@ -243,7 +243,7 @@ namespace UnityEngine
         public void Dispatch(int kernelIndex, int threadGroupsX, int threadGroupsY, int threadGroupsZ) { } // SR:ComputeShader.Dispatch
     }
 
-    public sealed class MaterialPropertyBlock                                         // SR:MaterialPropertyBlock
+    public sealed partial class MaterialPropertyBlock                                 // SR:MaterialPropertyBlock
     {
         public void SetVector(int nameID, Vector4 value) { }                          // SR:MaterialPropertyBlock.SetVector
         public void SetMatrix(int nameID, Matrix4x4 value) { }                        // SR:MaterialPropertyBlock.SetMatrix

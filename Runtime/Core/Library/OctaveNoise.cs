@@ -1,0 +1,184 @@
+using System;
+
+namespace GregoryTerrain
+{
+    /// <summary>
+    /// Height detail <c>p = amplitude * sum_k beta^-k * K(f_k q + offset_k)</c> over octaves
+    /// k = 0 .. count-1 (eq. 12-13 with N octaves), K = <see cref="GradientNoise"/>, the last octave
+    /// weighted by the fractional part of the count. Mirrored by Shaders/Library/OctaveNoise.hlsl
+    /// (<c>OctaveNoise.Evaluate</c> is HLSL <c>OctaveNoise</c>).
+    /// Octave frequencies are defined as the float sequence <c>f_0 = frequency, f_{k+1} = f_k * alpha</c>
+    /// (the same on CPU and GPU); the double reference uses exactly those values, because at
+    /// q ~ 0.7 and f ~ 1e4 a relative frequency difference of 1e-7 already moves the lattice by 1e-3 cells.
+    /// </summary>
+    public static class OctaveNoise
+    {
+        /// <summary>
+        /// Float evaluation at a <see cref="TerrainPoint"/> (deep-zoom safe, see <see cref="GradientNoise.AtPoint"/>).
+        /// <paramref name="gradient"/> is d p / d q (terrain units), for the normal.
+        /// <paramref name="octaveCount"/> is clamped to [0, settings.octaves].
+        /// </summary>
+        public static float Evaluate(TerrainPoint p, NoiseSettings settings, float octaveCount, out Float2 gradient)
+        {
+            float count = ClampedCount(settings, octaveCount);
+            var sum = new OctaveSum(settings);
+            for (int k = 0; k < settings.octaves; k++)
+            {
+                float fade = GMath.saturate(count - k);   // 1 for whole octaves, the fraction for the last
+                if (fade <= 0f) break;
+                float nk = GradientNoise.AtPoint(p, sum.frequency, GradientNoise.StreamOffset((uint)k), out Float2 gk);
+                sum.Add(fade, nk, gk, settings.alpha);
+            }
+            return sum.Result(settings.amplitude, out gradient);
+        }
+
+        /// <summary>
+        /// The running sum over octaves of the float paths (HLSL <c>OctaveSum</c>): octave k weighted
+        /// by <c>beta^-k</c> times its fade, its lattice gradient scaled by its frequency (chain rule:
+        /// d/dq = f d/d(lattice)), frequencies the float sequence <c>f_{k+1} = f_k alpha</c>.
+        /// </summary>
+        struct OctaveSum
+        {
+            public float frequency;
+            float _weight, _invBeta, _height;
+            Float2 _gradient;
+
+            public OctaveSum(NoiseSettings settings)
+            {
+                frequency = settings.frequency;
+                _weight = 1f;
+                _invBeta = 1f / settings.beta;
+                _height = 0f;
+                _gradient = new Float2(0f, 0f);
+            }
+
+            /// <summary>Adds octave value <paramref name="nk"/> (gradient <paramref name="gk"/>, lattice units) at the current frequency, then steps to the next octave.</summary>
+            public void Add(float fade, float nk, Float2 gk, float alpha)
+            {
+                float wk = _weight * fade;
+                _height += wk * nk;
+                _gradient += gk * (wk * frequency);
+                frequency *= alpha;
+                _weight *= _invBeta;
+            }
+
+            public float Result(float amplitude, out Float2 gradient)
+            {
+                gradient = _gradient * amplitude;
+                return amplitude * _height;
+            }
+        }
+
+        /// <summary>The octave count clamped to [0, settings.octaves], after checking the inputs.</summary>
+        static float ClampedCount(NoiseSettings settings, float octaveCount)
+        {
+            settings.Validate(nameof(settings));
+            if (float.IsNaN(octaveCount)) throw new ArgumentException("octaveCount (NaN) must be a number", nameof(octaveCount));
+            return GMath.clamp(octaveCount, 0f, settings.octaves);
+        }
+
+        /// <summary>
+        /// The deep-zoom noise height <c>p(q) - p(O)</c> (precision.md), O the range origin, from the
+        /// precise difference <paramref name="qMinusOrigin"/> = q - O (<c>RelativeSurface.Difference</c>),
+        /// never as the difference of two absolute floats (those resolve only ~6e-8 of the amplitude,
+        /// 0.4 px at a range width of 1e-6). Per octave, O's lattice point is split into cell c0 and
+        /// fraction f0 (<see cref="GradientNoise.SplitLattice"/>, the same for every vertex of a frame)
+        /// and the lattice step is <c>delta = f_k (q - O)</c>:
+        /// <list type="bullet">
+        /// <item>q in O's cell: one <see cref="GradientNoise.CellDifference"/> from f0 by delta.</item>
+        /// <item>q in a neighbouring cell c0 + m (|m| &lt;= 1 per axis): through r1, O clamped into q's
+        /// cell: <c>[K_c(q) - K_c(r1)] + [K_c0(r1) - K_c0(O)]</c>; the two steps add up to delta, and the
+        /// noise is C2 across cell lines, so where exactly r1 sits on the line does not matter.</item>
+        /// <item>farther: the two absolute values (this octave's cells are then smaller than the range,
+        /// and with beta = alpha its weight makes the rounding as small in pixels as the cells are).</item>
+        /// </list>
+        /// Depends on q and per-frame constants only (shared tile edges stay bit-identical).
+        /// <paramref name="gradient"/> is d p / d q at q, as from <see cref="Evaluate(TerrainPoint, NoiseSettings, float, out Float2)"/>.
+        /// Mirrors HLSL <c>OctaveNoiseRelative</c>; the renderer adds p(O) (double) back.
+        /// </summary>
+        public static float Relative(TerrainPoint q, TerrainPoint origin, Float2 qMinusOrigin, NoiseSettings settings, float octaveCount, out Float2 gradient)
+        {
+            float count = ClampedCount(settings, octaveCount);
+            var sum = new OctaveSum(settings);
+            for (int k = 0; k < settings.octaves; k++)
+            {
+                float fade = GMath.saturate(count - k);
+                if (fade <= 0f) break;
+                float nk = OctaveDifference(q, origin, qMinusOrigin, sum.frequency, GradientNoise.StreamOffset((uint)k), out Float2 gk);
+                sum.Add(fade, nk, gk, settings.alpha);
+            }
+            return sum.Result(settings.amplitude, out gradient);
+        }
+
+        /// <summary>One octave of <see cref="Relative"/>: <c>K(f q + offset) - K(f O + offset)</c>, gradient at q (lattice units).</summary>
+        public static float OctaveDifference(TerrainPoint q, TerrainPoint origin, Float2 qMinusOrigin, float frequency, Float2 offset, out Float2 gradient)
+        {
+            GradientNoise.SplitLattice(origin.originHi.x, origin.local.x, frequency, offset.x, out int cx, out float fx);
+            GradientNoise.SplitLattice(origin.originHi.y, origin.local.y, frequency, offset.y, out int cy, out float fy);
+            float sx = qMinusOrigin.x * frequency, sy = qMinusOrigin.y * frequency;   // the lattice step
+            int mx = (int)GMath.floor(fx + sx), my = (int)GMath.floor(fy + sy);      // q's cell relative to O's
+            if (mx == 0 && my == 0)
+                return GradientNoise.CellDifference(cx, cy, fx, fy, sx, sy, out gradient, out _);
+            if (Math.Abs(mx) <= 1 && Math.Abs(my) <= 1)
+            {
+                // r1 = O clamped into q's cell, in O's cell frame: f0, or the line at 1 or 0.
+                float rx = mx == 0 ? fx : (mx > 0 ? 1f : 0f), ry = my == 0 ? fy : (my > 0 ? 1f : 0f);
+                float tx = rx - fx, ty = ry - fy;                                    // O -> r1
+                float toR1 = GradientNoise.CellDifference(cx, cy, fx, fy, tx, ty, out _, out _);
+                float fromR1 = GradientNoise.CellDifference(cx + mx, cy + my, rx - mx, ry - my, sx - tx, sy - ty, out gradient, out _);
+                return fromR1 + toR1;
+            }
+            float atQ = GradientNoise.AtPoint(q, frequency, offset, out gradient);
+            return atQ - GradientNoise.EvaluateCell(cx, cy, fx, fy, out _);
+        }
+
+        /// <summary>The double reference at <c>(x, y)</c>, same octaves, frequencies and offsets.</summary>
+        public static double Evaluate(double x, double y, NoiseSettings settings, double octaveCount, out Double2 gradient)
+        {
+            settings.Validate(nameof(settings));
+            if (!GMath.isfinite(x) || !GMath.isfinite(y))
+                throw new ArgumentException(FormattableString.Invariant($"point ({x:R}, {y:R}) must be finite"), nameof(x));
+            if (double.IsNaN(octaveCount)) throw new ArgumentException("octaveCount (NaN) must be a number", nameof(octaveCount));
+            double count = GMath.clamp(octaveCount, 0.0, settings.octaves);
+            float f = settings.frequency;
+            double w = 1.0, invBeta = 1.0 / settings.beta;
+            double n = 0.0;
+            var g = new Double2(0.0, 0.0);
+            for (int k = 0; k < settings.octaves; k++)
+            {
+                double fade = GMath.saturate(count - k);
+                if (fade <= 0.0) break;
+                Double2 off = GradientNoise.StreamOffset((uint)k);
+                double nk = GradientNoise.Evaluate(f * x + off.x, f * y + off.y, out Double2 gk);
+                double wk = w * fade;
+                n += wk * nk;
+                g += gk * (wk * f);
+                f *= settings.alpha;
+                w *= invBeta;
+            }
+            gradient = g * settings.amplitude;
+            return settings.amplitude * n;
+        }
+
+        /// <summary>
+        /// How many octaves are worth evaluating: octave k counts when its wavelength
+        /// <c>1 / (frequency * alpha^k)</c> is at least two vertex spacings, <c>2 * rangeWidth / verticesAcross</c>
+        /// (finer detail falls between vertices and only aliases). So the count is
+        /// <c>1 + log_alpha(verticesAcross / (2 * rangeWidth * frequency))</c>, clamped to [0, octaves]; its
+        /// fraction fades octave <c>floor(count)</c> in: its weight rises from 0 to 1 while its wavelength
+        /// grows from <c>2 / alpha</c> to 2 vertex spacings as the range narrows. Fine octaves thus
+        /// appear only as the range narrows (the paper's intent for beta). It depends only on
+        /// per-frame values, so every vertex of a frame uses the same count.
+        /// </summary>
+        public static double OctaveCount(double rangeWidth, double verticesAcross, NoiseSettings settings)
+        {
+            settings.Validate(nameof(settings));
+            if (!GMath.isfinite(rangeWidth) || !(rangeWidth > 0.0))
+                throw new ArgumentException(FormattableString.Invariant($"rangeWidth ({rangeWidth:R}) must be finite and greater than 0"), nameof(rangeWidth));
+            if (!GMath.isfinite(verticesAcross) || !(verticesAcross > 0.0))
+                throw new ArgumentException(FormattableString.Invariant($"verticesAcross ({verticesAcross:R}) must be finite and greater than 0"), nameof(verticesAcross));
+            double k = 1.0 + Math.Log(verticesAcross / (2.0 * rangeWidth * settings.frequency)) / Math.Log(settings.alpha);
+            return GMath.clamp(k, 0.0, settings.octaves);
+        }
+    }
+}

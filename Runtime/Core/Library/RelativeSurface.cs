@@ -1,0 +1,147 @@
+using System;
+
+namespace GregoryTerrain
+{
+    /// <summary>
+    /// The deep-zoom vertex position (precision.md): the surface point relative to the surface at
+    /// the range origin, <c>S(q) - S(O)</c>, computed from precise local differences instead of two
+    /// absolute floats. The shaders output it as the object position whenever <c>_RangeOrigin</c> is
+    /// not zero; the renderer adds <see cref="ReferencePoint"/> (double, on the CPU) in the
+    /// object-to-world transform, where it cancels against the camera's own large translation.
+    /// Mirrors Shaders/Library/RelativeSurface.hlsl (float path); <see cref="FromOrigin(PatchGrid, Double2, Double2)"/>
+    /// is the double reference.
+    ///
+    /// <para>Why: at a range width w = 1e-6 a plain float q ~ 0.5 resolves 6e-8 (0.06 w) and a
+    /// float height ~0.1 resolves 7e-9 (0.007 w, ~6 pixels of an 800-pixel view). Differences from O
+    /// are ~w in size, so float keeps ~1e-13 of them.</para>
+    ///
+    /// <para>How: q lies in patch p. <c>r1</c> = O clamped into p's region (O itself when O is in p);
+    /// <c>S(q) - S(O) = [S_p(q) - S_p(r1)] + [S_p0(r1) - S_p0(O)]</c>, p0 = O's patch, each bracket a
+    /// <see cref="GregoryDifference"/> within one patch (the second is 0 when r1 = O). r1 lies on the
+    /// boundary shared by p and p0 (an edge or a corner) as long as p and p0 are neighbours, i.e. the
+    /// range is narrower than the narrowest patch; there the two patches agree (shared boundary
+    /// control points are bit-identical). Everything depends only on q and per-frame constants, so
+    /// shared tile edges stay bit-identical.</para>
+    /// </summary>
+    public static class RelativeSurface
+    {
+        /// <summary>
+        /// <c>p - r</c> per axis for two hi/lo points, precise to float's relative precision of the
+        /// result: the large parts' difference is taken exactly (TwoSum), the small parts added to it.
+        /// </summary>
+        public static Float2 Difference(TerrainPoint p, TerrainPoint r)
+        {
+            float sx = RangeMapping.TwoSum(p.originHi.x, -r.originHi.x, out float ex);
+            float sy = RangeMapping.TwoSum(p.originHi.y, -r.originHi.y, out float ey);
+            return new Float2(sx + (ex + (p.local.x - r.local.x)), sy + (ey + (p.local.y - r.local.y)));
+        }
+
+        /// <summary>The range origin as a <see cref="TerrainPoint"/>: (hi, lo) of <c>_RangeOrigin</c>.</summary>
+        public static TerrainPoint OriginPoint(Float4 rangeOriginF) =>
+            new TerrainPoint(new Float2(rangeOriginF.x, rangeOriginF.y), new Float2(rangeOriginF.z, rangeOriginF.w));
+
+        /// <summary>True when the shaders use the relative output: <c>_RangeOrigin</c> is not all zero.</summary>
+        public static bool IsActive(Float4 rangeOriginF) =>
+            rangeOriginF.x != 0f || rangeOriginF.y != 0f || rangeOriginF.z != 0f || rangeOriginF.w != 0f;
+
+        /// <summary>
+        /// The patch that holds the hi/lo point <paramref name="q"/> by the FindPatch rule, decided on the
+        /// precise point: FindPatch on the rounded <c>hi + local</c> can be one patch off within a float
+        /// step (~6e-8) of a grid line, where u or v would then be slightly outside [0, 1] and get
+        /// clamped, a flat strip 0.05 range widths wide at w = 1e-6. One step to the neighbour fixes it.
+        /// </summary>
+        public static int FindPatchPrecise(TerrainInputs grid, TerrainPoint q)
+        {
+            if (grid == null) throw new ArgumentNullException(nameof(grid));
+            int patch = grid.FindPatch(RangeMapping.Approximate(q));
+            int i = patch % grid.GridColumns(), j = patch / grid.GridColumns();
+            Float4 region = grid.PatchRegion(patch);
+            Float2 lo = Difference(q, new TerrainPoint(new Float2(region.x, region.y), default));
+            Float2 hi = Difference(q, new TerrainPoint(new Float2(region.z, region.w), default));
+            if (lo.x < 0f && i > 0) i--;
+            else if (hi.x >= 0f && i < grid.GridColumns() - 1) i++;
+            if (lo.y < 0f && j > 0) j--;
+            else if (hi.y >= 0f && j < grid.GridRows() - 1) j++;
+            return j * grid.GridColumns() + i;
+        }
+
+        /// <summary>
+        /// <paramref name="p"/> clamped into region (a, b, e, f) per axis (a region bound is the point
+        /// (bound, 0)). Returns p itself, bit for bit, when it is inside.
+        /// </summary>
+        public static TerrainPoint ClampToRegion(TerrainPoint p, Float4 region)
+        {
+            Float2 lo = Difference(p, new TerrainPoint(new Float2(region.x, region.y), default));
+            Float2 hi = Difference(p, new TerrainPoint(new Float2(region.z, region.w), default));
+            TerrainPoint r = p;
+            if (lo.x < 0f) { r.originHi.x = region.x; r.local.x = 0f; }
+            else if (hi.x > 0f) { r.originHi.x = region.z; r.local.x = 0f; }
+            if (lo.y < 0f) { r.originHi.y = region.y; r.local.y = 0f; }
+            else if (hi.y > 0f) { r.originHi.y = region.w; r.local.y = 0f; }
+            return r;
+        }
+
+        /// <summary>
+        /// <c>S_p(x) - S_p(r)</c> in one patch: u0 = local coordinate of r, (du, dv) = (x - r) / region size,
+        /// u0 clamped to [0, 1].
+        /// </summary>
+        public static Float3 PatchDifference(ReadOnlySpan<Float3> cp, Float4 region, TerrainPoint x, TerrainPoint r)
+        {
+            Float2 uv0 = RangeMapping.PatchLocalUV(r, region);
+            float u0 = GMath.saturate(uv0.x), v0 = GMath.saturate(uv0.y);
+            Float2 d = Difference(x, r);
+            float du = d.x / (region.z - region.x), dv = d.y / (region.w - region.y);
+            // Not clamped to u0 + du in [0, 1]: u0 itself is rounded (~6e-8 near 1), and clamping
+            // against it would freeze vertices within that of a patch edge (whole pixels at deep zoom).
+            // q is in the patch to the precision of the point (FindPatchPrecise), so u0 + du leaves
+            // [0, 1] only by rounding; the pair guard keeps that finite (the weight there is ~1e-15).
+            du = GMath.clamp(du, -1f, 1f);
+            dv = GMath.clamp(dv, -1f, 1f);
+            return GregoryDifference.Evaluate(cp, u0, v0, du, dv);
+        }
+
+        /// <summary>
+        /// <c>S(q) - S(O)</c> in float, as the shaders compute it (HLSL <c>RelativeSurfaceFromOrigin</c>).
+        /// <paramref name="q"/>: the vertex's global point (RangeMapping.ToTerrainPoint).
+        /// </summary>
+        public static Float3 FromOrigin(TerrainInputs grid, TerrainPoint q, Float4 rangeOriginF)
+        {
+            if (grid == null) throw new ArgumentNullException(nameof(grid));
+            Span<Float3> cp = stackalloc Float3[GregoryPatch.SlotCount];
+            TerrainPoint origin = OriginPoint(rangeOriginF);
+            int patch = FindPatchPrecise(grid, q);
+            Float4 region = grid.PatchRegion(patch);
+            TerrainPoint r1 = ClampToRegion(origin, region);
+            grid.LoadGregoryPatch(patch, cp);
+            Float3 d = PatchDifference(cp, region, q, r1);
+            if (!r1.Equals(origin))
+            {
+                int patch0 = FindPatchPrecise(grid, origin);
+                Float4 region0 = grid.PatchRegion(patch0);
+                grid.LoadGregoryPatch(patch0, cp);
+                d += PatchDifference(cp, region0, ClampToRegion(r1, region0), origin);
+            }
+            return d;
+        }
+
+        /// <summary>The double reference: <c>S(q) - S(O)</c> from two double evaluations (error ~1e-17).</summary>
+        public static Double3 FromOrigin(PatchGrid grid, Double2 q, Double2 origin) =>
+            SurfaceAt(grid, q) - SurfaceAt(grid, origin);
+
+        /// <summary>
+        /// <c>S(O)</c> in double for the origin the GPU holds: what the renderer adds back in the
+        /// object-to-world transform while the relative output is active.
+        /// </summary>
+        public static Double3 ReferencePoint(PatchGrid grid, RangeOrigin origin) => SurfaceAt(grid, origin.Value);
+
+        /// <summary>The surface point S(q) in double: the patch holding q, the corrected eq. 10, evaluation.</summary>
+        public static Double3 SurfaceAt(PatchGrid grid, Double2 q)
+        {
+            if (grid == null) throw new ArgumentNullException(nameof(grid));
+            if (!q.IsFinite) throw new ArgumentException(FormattableString.Invariant($"q {q} must be finite"), nameof(q));
+            int p = grid.FindPatch(q.x, q.y);
+            Double2 uv = RangeMapping.LocalCoordinate(q, grid.RegionOf(p));
+            return GregoryEval.Position(grid.Patches[p].Points, uv.x, uv.y);
+        }
+    }
+}

@@ -1,0 +1,203 @@
+using System;
+using System.Globalization;
+
+namespace GregoryTerrain
+{
+    /// <summary>
+    /// The terrain's GPU inputs as Core holds them: the three buffers <see cref="GpuLayout"/> packs
+    /// (<c>_ControlPoints</c>, <c>_Regions</c>, <c>_GridLines</c>) and the <see cref="TerrainParams"/>
+    /// constants. Mirrors <c>Shaders/Terrain/TerrainInputs.hlsl</c> (the accessors, same names) and the buffer
+    /// reads of <c>Shaders/Grid/PatchGrid.hlsl</c> (<see cref="FindPatch"/>, <see cref="PatchRegion"/>,
+    /// <see cref="LoadGregoryPatch"/>), so <see cref="TerrainVertex"/> can do what the shaders do,
+    /// step for step, on exactly the floats they read.
+    /// <para>Immutable apart from <see cref="Params"/>, which <see cref="WithParams"/> replaces (the
+    /// buffers are shared, as on the GPU where only the constants change per frame).</para>
+    /// </summary>
+    public sealed class TerrainInputs
+    {
+        /// <summary>_ControlPoints: 20 float4 per patch, patch p at float index <c>80 p</c>, (x, y, z, 1).</summary>
+        public float[] ControlPoints { get; }
+        /// <summary>_Regions: (a, b, e, f) per patch.</summary>
+        public float[] Regions { get; }
+        /// <summary>_GridLines: xLines[0..n] then yLines[0..m].</summary>
+        public float[] GridLines { get; }
+        /// <summary>The ten float4 constants (binding 0).</summary>
+        public TerrainParams Params { get; }
+
+        /// <summary>
+        /// Takes packed buffers as they are (no copy). Checks that their sizes agree with
+        /// <c>Params.gridSize</c> (n, m) and that the grid lines are finite and strictly increasing.
+        /// </summary>
+        public TerrainInputs(float[] controlPoints, float[] regions, float[] gridLines, TerrainParams parameters)
+        {
+            if (controlPoints == null) throw new ArgumentNullException(nameof(controlPoints));
+            if (regions == null) throw new ArgumentNullException(nameof(regions));
+            if (gridLines == null) throw new ArgumentNullException(nameof(gridLines));
+            float n = parameters.gridSize.x, m = parameters.gridSize.y;
+            if (!(n >= 1f && m >= 1f) || n != GMath.floor(n) || m != GMath.floor(m) || (double)n * m > GpuLayout.MaxPatches)
+                throw new ArgumentException(Invariant($"parameters.gridSize ({n:R}, {m:R}) must be whole numbers >= 1 with n * m <= 2^24"), "parameters.gridSize");
+            long patches = (long)n * (long)m;
+            if (controlPoints.LongLength != patches * GpuLayout.ControlPointFloatsPerPatch)
+                throw new ArgumentException(Invariant($"controlPoints.Length ({controlPoints.LongLength}) must be {patches * GpuLayout.ControlPointFloatsPerPatch} for {n} x {m} patches"), nameof(controlPoints));
+            if (regions.LongLength != patches * GpuLayout.RegionFloatsPerPatch)
+                throw new ArgumentException(Invariant($"regions.Length ({regions.LongLength}) must be {patches * GpuLayout.RegionFloatsPerPatch} for {n} x {m} patches"), nameof(regions));
+            if (gridLines.LongLength != (long)n + 1 + (long)m + 1)
+                throw new ArgumentException(Invariant($"gridLines.Length ({gridLines.LongLength}) must be {(long)n + 1 + (long)m + 1} for {n} x {m} patches"), nameof(gridLines));
+            for (int k = 0; k < gridLines.Length; k++)
+            {
+                bool first = k == 0 || k == (int)n + 1;
+                if (!GMath.isfinite(gridLines[k]) || (!first && !(gridLines[k] > gridLines[k - 1])))
+                    throw new ArgumentException(Invariant($"gridLines[{k}] ({gridLines[k]:R}) must be finite and greater than the line before it"), nameof(gridLines));
+            }
+            ControlPoints = controlPoints;
+            Regions = regions;
+            GridLines = gridLines;
+            Params = parameters;
+        }
+
+        /// <summary>Packs <paramref name="grid"/> with <see cref="GpuLayout"/> (which validates it).</summary>
+        public static TerrainInputs Create(PatchGrid grid, TerrainParams parameters)
+        {
+            if (grid == null) throw new ArgumentNullException(nameof(grid));
+            if (parameters.gridSize.x != grid.Columns || parameters.gridSize.y != grid.Rows)
+                throw new ArgumentException(Invariant($"parameters.gridSize ({parameters.gridSize.x:R}, {parameters.gridSize.y:R}) must be the grid's ({grid.Columns}, {grid.Rows})"), "parameters.gridSize");
+            return new TerrainInputs(GpuLayout.PackControlPoints(grid), GpuLayout.PackRegions(grid), GpuLayout.PackGridLines(grid), parameters);
+        }
+
+        /// <summary>
+        /// The grid's buffers with constants that hold only its size: enough for the buffer reads
+        /// (<see cref="FindPatch"/>, <see cref="PatchRegion"/>, <see cref="LoadGregoryPatch"/>).
+        /// </summary>
+        public static TerrainInputs ForGrid(PatchGrid grid)
+        {
+            if (grid == null) throw new ArgumentNullException(nameof(grid));
+            return Create(grid, new TerrainParams { gridSize = new Float4(grid.Columns, grid.Rows, 0f, 0f) });
+        }
+
+
+        /// <summary>The same buffers with other constants (a new range, other settings); the snow map stays.</summary>
+        public TerrainInputs WithParams(TerrainParams parameters) => new TerrainInputs(ControlPoints, Regions, GridLines, parameters) { Snow = Snow };
+
+        /// <summary>
+        /// The snow variant's extra inputs (<c>GT_SNOW</c>: <c>_SnowDepth</c> and <c>_SnowMapSize</c>),
+        /// null when there is no snow. Only <see cref="TerrainKeywords.Snow"/> reads it.
+        /// </summary>
+        public SnowMap Snow { get; private set; }
+
+        /// <summary>The same inputs with a snow map (null: none).</summary>
+        public TerrainInputs WithSnow(SnowMap snow) => new TerrainInputs(ControlPoints, Regions, GridLines, Params) { Snow = snow };
+
+        // --- Patch grid (TerrainInputs.hlsl) -----------------------------------------------------
+
+        public int GridColumns() => (int)Params.gridSize.x;
+        public int GridRows() => (int)Params.gridSize.y;
+        public int PatchCount() => GridColumns() * GridRows();
+
+        // --- Range ---------------------------------------------------------------------------------
+
+        /// <summary>Width <c>g - c</c> of the drawn range, in float, as the shaders form it.</summary>
+        public float RangeWidth() => Params.range.z - Params.range.x;
+
+        // --- Tessellation --------------------------------------------------------------------------
+
+        /// <summary>M: tiles across the range (the lattice's cells per its width when anchored).</summary>
+        public float TileCount() => Params.tess.x;
+        public int TileCountInt() => (int)Params.tess.x;
+        /// <summary>Tiles (draw patches, cache tiles) per axis: M, or M + 1 when anchored (<see cref="TileLattice"/>).</summary>
+        public int TilesAcross() => TileLattice.TilesAcross(Params);
+        public float MaxTessFactor() => Params.tess.y;
+        public float TargetPixelsPerSegment() => Params.tess.z;
+        public float UniformTessFactor() => Params.tess.w;
+        public bool UsesUniformTessFactor() => Params.tess.w > 0f;
+
+        // --- Noise ---------------------------------------------------------------------------------
+
+        /// <summary><c>_Noise = (amplitude, frequency, alpha, beta)</c>.</summary>
+        public Float4 NoiseSettings() => Params.noise;
+        public float MaxNoiseOctaves() => Params.noiseOctaves.x;
+
+        /// <summary>The override when set, else M tiles of maxFactor segments (per-frame values only).</summary>
+        public float NoiseVerticesAcross() => Params.noiseOctaves.y > 0f ? Params.noiseOctaves.y : TileCount() * MaxTessFactor();
+
+        /// <summary>
+        /// The frame's octave count as the vertex stage forms it (HLSL <c>OctaveCount(TileLayoutWidth(),
+        /// NoiseVerticesAcross(), NoiseSettings(), MaxNoiseOctaves())</c>), in float:
+        /// <c>clamp(1 + log2(across / (2 width frequency)) / log2(alpha), 0, N)</c>.
+        /// The GPU's log2 is an approximation of its own, so the two may differ in the last bits; only
+        /// the faded last octave's weight feels it.
+        /// </summary>
+        public float NoiseOctaveCount() => NoiseOctaveCount(Params);
+
+        /// <summary><see cref="NoiseOctaveCount()"/> of a constant block alone (no buffers needed).</summary>
+        public static float NoiseOctaveCount(TerrainParams p)
+        {
+            Float4 noise = p.noise;
+            float across = p.noiseOctaves.y > 0f ? p.noiseOctaves.y : p.tess.x * p.tess.y;
+            float ratio = across / (2f * TileLattice.LayoutWidth(p) * noise.y);
+            float k = 1f + Log2(ratio) / Log2(noise.z);
+            return GMath.clamp(k, 0f, p.noiseOctaves.x);
+        }
+
+        /// <summary>The noise settings as <see cref="GregoryTerrain.NoiseSettings"/> (for the Core noise functions).</summary>
+        public GregoryTerrain.NoiseSettings NoiseSettingsStruct() =>
+            new GregoryTerrain.NoiseSettings(Params.noise.x, Params.noise.y, Params.noise.z, Params.noise.w, (int)Params.noiseOctaves.x);
+
+        // --- Height colour -------------------------------------------------------------------------
+
+        public GregoryTerrain.HeightColorSettings HeightColorSettings() =>
+            new GregoryTerrain.HeightColorSettings(Params.heightColor.x, Params.heightColor.y, Params.heightColor.z);
+
+        // --- Snow (GT_SNOW only) -------------------------------------------------------------------
+
+        /// <summary><c>_SnowMapSize = (R, 1/R, depthCap, 0)</c>; throws when there is no snow map.</summary>
+        public Float4 SnowMapSize() => RequireSnow().MapSize;
+        /// <summary>Largest snow depth: what the tile bounds grow by.</summary>
+        public float SnowDepthCap() => RequireSnow().DepthCap;
+
+        SnowMap RequireSnow() => Snow ?? throw new ArgumentException("Snow: the GT_SNOW inputs need a snow map (use WithSnow)", "Snow");
+
+        // --- Buffer reads (PatchGrid.hlsl) ----------------------------------------------------------
+
+        /// <summary>
+        /// Index <c>j n + i</c> of the patch holding <paramref name="q"/>, by binary search on the float
+        /// lines of <see cref="GridLines"/>: HLSL <c>FindPatch</c>, the same rule as
+        /// <see cref="PatchGrid.FindPatch"/> (a point on a shared line goes to the higher index).
+        /// </summary>
+        public int FindPatch(Float2 q)
+        {
+            int n = GridColumns(), m = GridRows();
+            int i = PatchGrid.FindInterval(new ReadOnlySpan<float>(GridLines, 0, n + 1), q.x);
+            int j = PatchGrid.FindInterval(new ReadOnlySpan<float>(GridLines, n + 1, m + 1), q.y);
+            return j * n + i;
+        }
+
+        /// <summary>Region (a, b, e, f) of a patch as the GPU holds it.</summary>
+        public Float4 PatchRegion(int patch)
+        {
+            CheckPatch(patch);
+            int o = GpuLayout.RegionFloatsPerPatch * patch;
+            return new Float4(Regions[o], Regions[o + 1], Regions[o + 2], Regions[o + 3]);
+        }
+
+        /// <summary>The 20 control points of a patch (slot order) into <paramref name="cp"/>.</summary>
+        public void LoadGregoryPatch(int patch, Span<Float3> cp)
+        {
+            CheckPatch(patch);
+            if (cp.Length != GregoryPatch.SlotCount)
+                throw new ArgumentException(Invariant($"cp.Length ({cp.Length}) must be {GregoryPatch.SlotCount}"), nameof(cp));
+            long o = GpuLayout.ControlPointOffset(patch, 0);
+            for (int k = 0; k < GregoryPatch.SlotCount; k++, o += GpuLayout.Float4Size)
+                cp[k] = new Float3(ControlPoints[o], ControlPoints[o + 1], ControlPoints[o + 2]);
+        }
+
+        void CheckPatch(int patch)
+        {
+            if ((uint)patch >= (uint)PatchCount())
+                throw new ArgumentException(Invariant($"patch ({patch}) must lie in [0, {PatchCount() - 1}]"), nameof(patch));
+        }
+
+        static float Log2(float x) => (float)(Math.Log(x) / Math.Log(2.0));
+
+        static string Invariant(FormattableString s) => s.ToString(CultureInfo.InvariantCulture);
+    }
+}

@@ -1,0 +1,305 @@
+using System;
+
+namespace GregoryTerrain
+{
+    /// <summary>The shader keywords that change what <see cref="TerrainVertex"/> computes.</summary>
+    [Flags]
+    public enum TerrainKeywords
+    {
+        None = 0,
+        /// <summary>GT_NOISE: octave noise on the height, its gradient in the normal.</summary>
+        Noise = 1,
+        /// <summary>GT_HEIGHT_COLOR: the colour noise l of eq. 14 is evaluated.</summary>
+        HeightColor = 2,
+        /// <summary>GT_PAPER_MODE: the draw patch is a Gregory patch tessellated over the whole range.</summary>
+        PaperMode = 4,
+        /// <summary>GT_SNOW: the surface is raised by the snow depth (<see cref="TerrainInputs.Snow"/>).</summary>
+        Snow = 8,
+    }
+
+    /// <summary>A point of the Gregory surface (no noise yet), terrain space. HLSL <c>TerrainSurfacePoint</c>.</summary>
+    public struct TerrainSurfacePoint
+    {
+        /// <summary>The global point, hi/lo.</summary>
+        public TerrainPoint q;
+        /// <summary>The Gregory patch that was evaluated.</summary>
+        public int patch;
+        /// <summary>Its region (a, b, e, f) as the GPU holds it.</summary>
+        public Float4 region;
+        /// <summary>The patch-local coordinate that was evaluated.</summary>
+        public Float2 uv;
+        public Float3 position, dPdu, dPdv;
+    }
+
+    /// <summary>
+    /// What the vertex stage produces for one vertex: HLSL <c>TerrainVaryings</c> before the camera
+    /// (object space, Unity's Y-up (x, z, y)), plus the terrain-space values and what the rig reads back.
+    /// </summary>
+    public struct TerrainVertexOutput
+    {
+        /// <summary>The surface point it started from (q, patch, region, uv, Gregory position and derivatives).</summary>
+        public TerrainSurfacePoint surface;
+        /// <summary>Terrain space (x, y, z = height), noise included.</summary>
+        public Float3 position;
+        /// <summary>Terrain space unit normal, noise gradient included; zero on a degenerate patch.</summary>
+        public Float3 normal;
+        /// <summary>l of eq. 14 (0 without <see cref="TerrainKeywords.HeightColor"/>).</summary>
+        public float colorNoise;
+        /// <summary>
+        /// S'z of eq. 14: Gregory height plus the absolute noise height, without snow, absolute even at
+        /// deep zoom (where <see cref="position"/> is relative). HLSL <c>TerrainVertexAttributes.absoluteHeight</c>.
+        /// </summary>
+        public float absoluteHeight;
+        /// <summary>Snow depth added to the height (0 without <see cref="TerrainKeywords.Snow"/>); the fragment stage's coverage input.</summary>
+        public float snowDepth;
+
+        /// <summary>Object space position (x, z, y): what the readback's first float4 holds.</summary>
+        public Float3 PositionOS => TerrainVertex.TerrainToObject(position);
+        /// <summary>Object space normal: the readback's second float4.</summary>
+        public Float3 NormalOS => TerrainVertex.TerrainToObject(normal);
+    }
+
+    /// <summary>
+    /// The one evaluation path from (draw patch, tess coordinate) to a terrain vertex, in float, step
+    /// for step as <c>Shaders/Terrain/TerrainVertex.hlsl</c> does it (C# <see cref="EvaluateSurface"/> is HLSL
+    /// <c>EvaluateSurface</c>, <see cref="Evaluate"/> is HLSL <c>TerrainVertex</c>):
+    /// <code>
+    ///   tess --RangeToTerrainPoint--> q --FindPatch (float lines)--> patch --PatchLocalUV--> (u, v)
+    ///     --GregoryEval (float)--> S, dS/du, dS/dv  [+ OctaveNoise(q), its gradient by the chain rule]
+    ///     --NormalFromDerivatives--> normal
+    /// </code>
+    /// The rig compares this with the GPU's readback; <see cref="Reference"/> is the same surface in
+    /// double at the exact global point, for error measures.
+    /// </summary>
+    public static class TerrainVertex
+    {
+        /// <summary>Terrain space (x, y, z = height) to Unity object space (x, z, y); orthogonal, so normals too.</summary>
+        public static Float3 TerrainToObject(Float3 v) => new Float3(v.x, v.z, v.y);
+
+        /// <summary>Double version of <see cref="TerrainToObject(Float3)"/>.</summary>
+        public static Double3 TerrainToObject(Double3 v) => new Double3(v.x, v.z, v.y);
+
+        /// <summary>
+        /// HLSL <c>EvaluateSurface(drawPatch, tess)</c>. <paramref name="drawPatch"/>: the tile
+        /// (<c>tj M + ti</c>), or with <see cref="TerrainKeywords.PaperMode"/> a Gregory patch;
+        /// <paramref name="tess"/> in [0, 1]^2.
+        /// </summary>
+        public static TerrainSurfacePoint EvaluateSurface(TerrainInputs inputs, int drawPatch, Float2 tess, TerrainKeywords keywords = TerrainKeywords.None)
+        {
+            if (inputs == null) throw new ArgumentNullException(nameof(inputs));
+            TerrainParams p = inputs.Params;
+            if ((keywords & TerrainKeywords.PaperMode) != 0)
+            {
+                if ((uint)drawPatch >= (uint)inputs.PatchCount())
+                    throw new ArgumentException(FormattableString.Invariant($"drawPatch ({drawPatch}) must lie in [0, {inputs.PatchCount() - 1}] in paper mode"), nameof(drawPatch));
+                // Every Gregory patch over the whole range, u and v clamped.
+                TerrainPoint q = RangeMapping.ToTerrainPoint(p.range, p.rangeOrigin, 1, 0, 0, tess.x, tess.y);
+                Float4 region = inputs.PatchRegion(drawPatch);
+                Float2 uv = RangeMapping.PatchLocalUV(q, region);
+                return EvaluatePatch(inputs, q, drawPatch, region, new Float2(GMath.saturate(uv.x), GMath.saturate(uv.y)));
+            }
+            int tiles = inputs.TilesAcross();
+            if (tiles < 1 || (uint)drawPatch >= (uint)(tiles * tiles))
+                throw new ArgumentException(FormattableString.Invariant($"drawPatch ({drawPatch}) must lie in [0, {tiles * tiles - 1}] for {tiles} x {tiles} tiles"), nameof(drawPatch));
+            // Integer tile index first; the lattice point forms k + s before dividing (watertight).
+            TerrainPoint point = TileLattice.TileToTerrainPoint(p, drawPatch, tess.x, tess.y);
+            return EvaluateSurfaceAt(inputs, point);
+        }
+
+        /// <summary>
+        /// HLSL <c>EvaluateCellSurface(slot, tess)</c>: the surface at tess in the whole cell slot
+        /// <paramref name="slot"/> holds (<see cref="TileLattice.CellToTerrainPoint"/>), where the
+        /// adaptive factors sample it. Tile mode only.
+        /// </summary>
+        public static TerrainSurfacePoint EvaluateCellSurface(TerrainInputs inputs, int slot, Float2 tess)
+        {
+            if (inputs == null) throw new ArgumentNullException(nameof(inputs));
+            int tiles = inputs.TilesAcross();
+            if (tiles < 1 || (uint)slot >= (uint)(tiles * tiles))
+                throw new ArgumentException(FormattableString.Invariant($"slot ({slot}) must lie in [0, {tiles * tiles - 1}] for {tiles} x {tiles} tiles"), nameof(slot));
+            return EvaluateSurfaceAt(inputs, TileLattice.CellToTerrainPoint(inputs.Params, slot, tess.x, tess.y));
+        }
+
+        /// <summary>
+        /// The tile path of <see cref="EvaluateSurface"/> after the global point is formed: FindPatch on
+        /// the float lines, PatchLocalUV, GregoryEval. Use it with the q a GPU read back to compare
+        /// the rest of the path at exactly the point the GPU used.
+        /// </summary>
+        public static TerrainSurfacePoint EvaluateSurfaceAt(TerrainInputs inputs, TerrainPoint q)
+        {
+            if (inputs == null) throw new ArgumentNullException(nameof(inputs));
+            if (!q.originHi.IsFinite || !q.local.IsFinite)
+                throw new ArgumentException($"q {q} must be finite", nameof(q));
+            int patch = inputs.FindPatch(RangeMapping.Approximate(q));
+            Float4 region = inputs.PatchRegion(patch);
+            return EvaluatePatch(inputs, q, patch, region, RangeMapping.PatchLocalUV(q, region));
+        }
+
+        static TerrainSurfacePoint EvaluatePatch(TerrainInputs inputs, TerrainPoint q, int patch, Float4 region, Float2 uv)
+        {
+            Span<Float3> cp = stackalloc Float3[GregoryPatch.SlotCount];
+            inputs.LoadGregoryPatch(patch, cp);
+            GregoryEval.Evaluate(cp, uv.x, uv.y, out Float3 position, out Float3 dPdu, out Float3 dPdv);
+            return new TerrainSurfacePoint { q = q, patch = patch, region = region, uv = uv, position = position, dPdu = dPdu, dPdv = dPdv };
+        }
+
+        /// <summary>HLSL <c>TerrainVertex(drawPatch, tess, ...)</c> without the camera.</summary>
+        public static TerrainVertexOutput Evaluate(TerrainInputs inputs, int drawPatch, Float2 tess, TerrainKeywords keywords = TerrainKeywords.None) =>
+            FinishTerrainVertex(inputs, EvaluateSurface(inputs, drawPatch, tess, keywords), keywords);
+
+        /// <summary><see cref="Evaluate"/> in tile mode from a given global point (see <see cref="EvaluateSurfaceAt"/>).</summary>
+        public static TerrainVertexOutput EvaluateAt(TerrainInputs inputs, TerrainPoint q, TerrainKeywords keywords = TerrainKeywords.None)
+        {
+            if ((keywords & TerrainKeywords.PaperMode) != 0)
+                throw new ArgumentException("keywords: EvaluateAt is the tile path; paper mode needs the draw patch (use Evaluate)", nameof(keywords));
+            return FinishTerrainVertex(inputs, EvaluateSurfaceAt(inputs, q), keywords);
+        }
+
+        /// <summary>
+        /// The surface position a vertex outputs before noise: S(q), or, while a range origin is set
+        /// (deep zoom), S(q) - S(O) from precise differences (<see cref="RelativeSurface"/>); the
+        /// renderer adds S(O) (and p(O) with noise, see <see cref="OutputOffset(PatchGrid, TerrainParams, TerrainKeywords)"/>) in the object-to-world transform. Paper mode always outputs S(q).
+        /// Mirrors HLSL <c>OutputSurfacePosition</c>.
+        /// </summary>
+        public static Float3 OutputSurfacePosition(TerrainInputs inputs, TerrainSurfacePoint s, TerrainKeywords keywords)
+        {
+            if ((keywords & TerrainKeywords.PaperMode) != 0) return s.position;
+            Float4 origin = inputs.Params.rangeOrigin;
+            return RelativeSurface.IsActive(origin) ? RelativeSurface.FromOrigin(inputs, s.q, origin) : s.position;
+        }
+
+        /// <summary>
+        /// What the renderer adds back to a vertex's output position in the object-to-world transform,
+        /// in double (terrain space): while a range origin is set (tile mode), S(O) and, with
+        /// <see cref="TerrainKeywords.Noise"/>, the noise height p(O) at the frame's octave count
+        /// (<see cref="TerrainInputs.NoiseOctaveCount()"/>; it changes with the range width, so a
+        /// renderer with noise recomputes it when the range changes); else zero. Reference positions
+        /// minus this are comparable with a vertex's output.
+        /// </summary>
+        public static Double3 OutputOffset(TerrainInputs inputs, PatchGrid grid, TerrainKeywords keywords)
+        {
+            if (inputs == null) throw new ArgumentNullException(nameof(inputs));
+            return OutputOffset(grid, inputs.Params, keywords);
+        }
+
+        /// <summary>
+        /// <see cref="OutputOffset(TerrainInputs, PatchGrid, TerrainKeywords)"/> from the constant block
+        /// alone (what a renderer holds): <paramref name="p"/>'s <c>_RangeOrigin</c>, noise and octave count.
+        /// </summary>
+        public static Double3 OutputOffset(PatchGrid grid, TerrainParams p, TerrainKeywords keywords)
+        {
+            if (grid == null) throw new ArgumentNullException(nameof(grid));
+            Float4 rangeOriginF = p.rangeOrigin;
+            if ((keywords & TerrainKeywords.PaperMode) != 0 || !RelativeSurface.IsActive(rangeOriginF)) return Double3.zero;
+            var origin = new RangeOrigin { hi = new Float2(rangeOriginF.x, rangeOriginF.y), lo = new Float2(rangeOriginF.z, rangeOriginF.w) };
+            Double3 s = RelativeSurface.ReferencePoint(grid, origin);
+            if ((keywords & TerrainKeywords.Noise) != 0)
+            {
+                Double2 o = origin.Value;
+                var noise = new NoiseSettings(p.noise.x, p.noise.y, p.noise.z, p.noise.w, (int)p.noiseOctaves.x);
+                s.z += OctaveNoise.Evaluate(o.x, o.y, noise, TerrainInputs.NoiseOctaveCount(p), out _);
+            }
+            return s;
+        }
+
+        // HLSL FinishTerrainVertex: everything TerrainVertex computes from the surface point on, before the camera.
+        static TerrainVertexOutput FinishTerrainVertex(TerrainInputs inputs, TerrainSurfacePoint s, TerrainKeywords keywords)
+        {
+            Float3 position = OutputSurfacePosition(inputs, s, keywords), dPdu = s.dPdu, dPdv = s.dPdv;
+            float noiseHeight = 0f;   // the absolute p(q)
+            if ((keywords & TerrainKeywords.Noise) != 0)
+            {
+                // Noise lives on the global point; in paper mode a clamped vertex takes the noise of
+                // the boundary point it collapsed onto.
+                TerrainPoint noisePoint = s.q;
+                if ((keywords & TerrainKeywords.PaperMode) != 0 && !s.uv.Equals(RangeMapping.PatchLocalUV(s.q, s.region)))
+                    noisePoint = new TerrainPoint(default, new Float2(GMath.lerp(s.region.x, s.region.z, s.uv.x), GMath.lerp(s.region.y, s.region.w, s.uv.y)));
+                float octaves = inputs.NoiseOctaveCount();
+                Float4 originF = inputs.Params.rangeOrigin;
+                Float2 gradient;
+                if ((keywords & TerrainKeywords.PaperMode) == 0 && RelativeSurface.IsActive(originF))
+                {
+                    // Deep zoom: p(q) - p(O) from precise differences, like the surface (precision.md).
+                    TerrainPoint origin = RelativeSurface.OriginPoint(originF);
+                    position.z += OctaveNoise.Relative(s.q, origin, RelativeSurface.Difference(s.q, origin),
+                                                       inputs.NoiseSettingsStruct(), octaves, out gradient);
+                    // The height colour needs the absolute p(q); HLSL evaluates it only with GT_HEIGHT_COLOR.
+                    if ((keywords & TerrainKeywords.HeightColor) != 0)
+                        noiseHeight = OctaveNoise.Evaluate(noisePoint, inputs.NoiseSettingsStruct(), octaves, out _);
+                }
+                else
+                {
+                    noiseHeight = OctaveNoise.Evaluate(noisePoint, inputs.NoiseSettingsStruct(), octaves, out gradient);
+                    position.z += noiseHeight;
+                }
+                // q = (a + u (e - a), b + v (f - b)): the chain rule scales the gradient by the region size.
+                float sizeX = s.region.z - s.region.x, sizeY = s.region.w - s.region.y;
+                dPdu.z += gradient.x * sizeX;
+                dPdv.z += gradient.y * sizeY;
+            }
+            float snowDepth = 0f;
+            if ((keywords & TerrainKeywords.Snow) != 0)
+            {
+                // After the noise: snow lies on the detailed surface. The normal stays the terrain's
+                // (the map's bilinear slope, up to cap / cell size, is no surface normal).
+                snowDepth = SnowMap.Sample(inputs.Snow?.Depth ?? throw new ArgumentException("keywords: Snow needs inputs.Snow (TerrainInputs.WithSnow)", nameof(keywords)),
+                                           inputs.SnowMapSize(), SnowPoint(s, keywords));
+                position.z += snowDepth;
+            }
+            var o = new TerrainVertexOutput
+            {
+                surface = s,
+                snowDepth = snowDepth,
+                absoluteHeight = s.position.z + noiseHeight,
+                position = position,
+                normal = GregoryEval.NormalFromDerivatives(dPdu, dPdv),
+            };
+            if ((keywords & TerrainKeywords.HeightColor) != 0)
+                o.colorNoise = HeightColor.ColorNoise(s.q, inputs.HeightColorSettings());
+            return o;
+        }
+
+        /// <summary>
+        /// HLSL <c>TerrainHeightWeight</c>: s = saturate(l + z / gamma) of eq. 14 for the vertex's
+        /// absolute height z and colour noise l, 0 without <see cref="TerrainKeywords.HeightColor"/>.
+        /// </summary>
+        public static float HeightWeight(TerrainVertexOutput v, TerrainInputs inputs, TerrainKeywords keywords) =>
+            (keywords & TerrainKeywords.HeightColor) != 0 ? HeightColor.Weight(v.colorNoise, v.absoluteHeight, inputs.HeightColorSettings().gamma) : 0f;
+
+        /// <summary>
+        /// Where the snow map is read (HLSL <c>TerrainSnowPoint</c>): the global point; in paper mode the
+        /// point of the patch that was evaluated (a clamped vertex sits on the patch boundary).
+        /// </summary>
+        static Float2 SnowPoint(TerrainSurfacePoint s, TerrainKeywords keywords) =>
+            (keywords & TerrainKeywords.PaperMode) != 0
+                ? new Float2(GMath.lerp(s.region.x, s.region.z, s.uv.x), GMath.lerp(s.region.y, s.region.w, s.uv.y))
+                : RangeMapping.Approximate(s.q);
+
+        // ---------------------------------------------------------------- double reference
+
+        /// <summary>
+        /// The same surface in double at the exact global point <paramref name="q"/> (terrain space):
+        /// Gregory patch of the grid (double control points, double lines), plus, when
+        /// <paramref name="noise"/> is given, its octave noise with <paramref name="octaveCount"/>
+        /// octaves (pass the float path's <see cref="TerrainInputs.NoiseOctaveCount()"/> so the two
+        /// differ only in arithmetic). Position (x, y, z) and unit normal.
+        /// </summary>
+        public static void Reference(PatchGrid grid, Double2 q, NoiseSettings? noise, double octaveCount,
+                                     out Double3 position, out Double3 normal)
+        {
+            if (grid == null) throw new ArgumentNullException(nameof(grid));
+            if (!q.IsFinite) throw new ArgumentException($"q {q} must be finite", nameof(q));
+            int patch = grid.FindPatch(q.x, q.y);
+            Region region = grid.RegionOf(patch);
+            Double2 uv = RangeMapping.LocalCoordinate(q, region);
+            GregoryEval.Evaluate(grid.Patches[patch].Points, uv.x, uv.y, out position, out Double3 dPdu, out Double3 dPdv);
+            if (noise.HasValue)
+            {
+                position.z += OctaveNoise.Evaluate(q.x, q.y, noise.Value, octaveCount, out Double2 gradient);
+                dPdu.z += gradient.x * (region.e - region.a);
+                dPdv.z += gradient.y * (region.f - region.b);
+            }
+            normal = GregoryEval.NormalFromDerivatives(dPdu, dPdv);
+        }
+    }
+}

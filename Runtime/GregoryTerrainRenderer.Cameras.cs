@@ -1,0 +1,89 @@
+using UnityEngine;
+using UnityEngine.Rendering;
+#if UNITY_EDITOR
+using UnityEditor.SceneManagement;
+#endif
+
+namespace GregoryTerrain
+{
+    // Drawing per camera: the callbacks each pipeline calls for every camera it renders (Game,
+    // Scene view in Edit Mode, reflection probes, several cameras), which cameras draw, and the draw.
+    public sealed partial class GregoryTerrainRenderer
+    {
+        /// <summary>
+        /// Both callbacks are registered: a pipeline calls only its own. URP and HDRP call
+        /// <c>beginCameraRendering</c> before they cull a camera; the Built-in pipeline calls
+        /// <c>Camera.onPreCull</c>. A draw submitted there for that camera is part of its frame.
+        /// </summary>
+        void RegisterCameraCallbacks()
+        {
+            RenderPipelineManager.beginCameraRendering += OnBeginCameraRendering;
+            Camera.onPreCull += OnCameraPreCull;
+        }
+
+        void UnregisterCameraCallbacks()
+        {
+            RenderPipelineManager.beginCameraRendering -= OnBeginCameraRendering;
+            Camera.onPreCull -= OnCameraPreCull;
+        }
+
+        void OnBeginCameraRendering(ScriptableRenderContext context, Camera cam) => DrawFor(cam);
+
+        void OnCameraPreCull(Camera cam) => DrawFor(cam);
+
+        /// <summary>
+        /// One draw for one camera: <c>_Range</c> and, on change only, the rest (<see cref="Prepare"/>),
+        /// then one Graphics.RenderPrimitives call that only <paramref name="cam"/> renders.
+        /// </summary>
+        internal void DrawFor(Camera cam)
+        {
+            if (cam == null || !DrawsIn(cam)) return;
+            if (!Prepare()) return;
+
+            var rp = new RenderParams(_drawMaterial != null ? _drawMaterial : material)
+            {
+                camera = cam,
+                worldBounds = WorldBounds(),
+                matProps = _props,
+                shadowCastingMode = shadowCasting,
+                receiveShadows = receiveShadows,
+                layer = gameObject.layer,
+            };
+            int across = TileLattice.TilesAcross(_params), tileCount = across * across;
+            if (_drawFallback)
+                Graphics.RenderPrimitivesIndexed(rp, MeshTopology.Triangles, _fallbackIndices,
+                    _fallbackIndices.count, 0, tileCount);
+            else
+                // One 4-control-point patch per tile; the vertex stage derives tile and corner from
+                // SV_VertexID, so there is no vertex buffer.
+                Graphics.RenderPrimitives(rp, MeshTopology.Quads, 4 * tileCount, 1);
+        }
+
+        /// <summary>
+        /// Whether <paramref name="cam"/> draws this terrain. Preview cameras (inspector previews,
+        /// thumbnails) never do. In the editor a camera draws it only when its scene culling mask
+        /// shares a bit with this GameObject's (<see cref="CameraSceneFilter"/>): what Unity does
+        /// for its own renderers, so an instance in a Prefab stage draws only in that stage's
+        /// cameras and a main-scene instance stays out of the stage.
+        /// </summary>
+        bool DrawsIn(Camera cam)
+        {
+            if (cam.cameraType == CameraType.Preview) return false;
+#if UNITY_EDITOR
+            return CameraSceneFilter.Draws(gameObject.sceneCullingMask, SceneCullingMaskOf(cam));
+#else
+            return true;
+#endif
+        }
+
+#if UNITY_EDITOR
+        static ulong SceneCullingMaskOf(Camera cam)
+        {
+            bool hasScene = cam.scene.IsValid();
+            return CameraSceneFilter.CameraMask(cam.overrideSceneCullingMask, hasScene,
+                hasScene ? EditorSceneManager.GetSceneCullingMask(cam.scene) : 0UL,
+                cam.cameraType == CameraType.SceneView);
+        }
+#endif
+    }
+}

@@ -1,0 +1,152 @@
+using UnityEngine;
+
+namespace GregoryTerrain
+{
+    // Per-renderer shader state. The user's material is never written: keywords this renderer
+    // chooses (GT_VERTEX_CACHE from Vertex evaluation, GT_SNOW from an attached Snow Simulator) go on
+    // a runtime copy of it, and buffers and constants on the renderer's MaterialPropertyBlock.
+    //
+    // Why a copy for keywords and a property block for the rest: a MaterialPropertyBlock (or
+    // RenderParams.matProps) carries values and buffers per draw but no keywords, and a keyword set on
+    // the material is shared by every renderer using it and is saved with the .mat. So each renderer
+    // that needs a keyword state other than the asset's draws its own copy (HideAndDontSave: never
+    // saved, never shown), synced from the asset whenever the asset's content changes (its CRC), and
+    // destroyed on disable and before a domain reload. A renderer whose keywords equal the asset's
+    // draws the asset itself and holds no copy.
+    public sealed partial class GregoryTerrainRenderer
+    {
+        Material _drawMaterial;        // the runtime copy, or null while the asset itself is drawn
+        Material _drawMaterialSource;  // the asset _drawMaterial was copied from
+        int _drawMaterialCrc;          // the asset's Material.ComputeCRC() at the last sync
+        int _drawMaterialKeywords;     // the asset's package keywords (AssetKeywordBits) at the last sync
+        GraphicsBuffer _boundSnowDepth;
+        Vector4 _boundSnowMapSize;
+
+        /// <summary>
+        /// The package's own material keywords. Their state on the asset is compared bit by bit as
+        /// well as the CRC, so a keyword toggled on the asset reaches the copy whether or not
+        /// Unity's CRC covers keywords; reading them allocates nothing (shaderKeywords would).
+        /// </summary>
+        static readonly string[] AssetKeywords =
+        {
+            VertexCachePass.NoiseKeyword, VertexCachePass.HeightColorKeyword,
+            "GT_DEBUG_NORMALS", "GT_DEBUG_PATCH_ID", "GT_DEBUG_TESS_FACTOR",
+        };
+
+        int AssetKeywordBits()
+        {
+            int bits = 0;
+            for (int k = 0; k < AssetKeywords.Length; k++)
+                if (material.IsKeywordEnabled(AssetKeywords[k])) bits |= 1 << k;
+            return bits;
+        }
+
+        static class KeywordIds
+        {
+            public static readonly int SnowDepth = Shader.PropertyToID("_SnowDepth");
+            public static readonly int SnowMapSize = Shader.PropertyToID("_SnowMapSize");
+        }
+
+        /// <summary>
+        /// The material this renderer draws with now: the asset, or its runtime copy when the
+        /// renderer's keywords differ from the asset's. Null before the first draw.
+        /// </summary>
+        internal Material DrawMaterial => _drawMaterial != null ? _drawMaterial : material;
+
+        /// <summary>
+        /// Picks the asset or the copy for the wanted <c>GT_VERTEX_CACHE</c> and <c>GT_SNOW</c>
+        /// states. The copy is made once and synced (properties, keywords, shader) only when the
+        /// asset changed, so a steady frame costs one CRC of the asset and sets nothing.
+        /// </summary>
+        internal Material UpdateDrawMaterial(bool cache, bool snow)
+        {
+            if (material == null) { ReleaseDrawMaterial(); return null; }
+            if (material.IsKeywordEnabled(VertexCachePass.Keyword) == cache && material.IsKeywordEnabled(VertexCachePass.SnowKeyword) == snow)
+            {
+                ReleaseDrawMaterial();
+                return material;
+            }
+            int crc = material.ComputeCRC(), keywords = AssetKeywordBits();
+            if (_drawMaterial == null)
+            {
+                _drawMaterial = new Material(material) { name = material.name + " (Gregory Terrain runtime copy)", hideFlags = HideFlags.HideAndDontSave };
+            }
+            else if (_drawMaterialSource != material || _drawMaterialCrc != crc || _drawMaterialKeywords != keywords)
+            {
+                _drawMaterial.shader = material.shader;
+                _drawMaterial.CopyPropertiesFromMaterial(material);
+                _drawMaterial.shaderKeywords = material.shaderKeywords;   // the asset's keywords, whatever the copy above took
+            }
+            else if (_drawMaterial.IsKeywordEnabled(VertexCachePass.Keyword) == cache && _drawMaterial.IsKeywordEnabled(VertexCachePass.SnowKeyword) == snow)
+                return _drawMaterial;   // steady state: nothing set
+            _drawMaterialSource = material;
+            _drawMaterialCrc = crc;
+            _drawMaterialKeywords = keywords;
+            SetKeyword(_drawMaterial, VertexCachePass.Keyword, cache);
+            SetKeyword(_drawMaterial, VertexCachePass.SnowKeyword, snow);
+            return _drawMaterial;
+        }
+
+        static void SetKeyword(Material copy, string keyword, bool on)
+        {
+            if (on) copy.EnableKeyword(keyword); else copy.DisableKeyword(keyword);
+        }
+
+        void ReleaseDrawMaterial()
+        {
+            if (_drawMaterial == null) return;
+            if (Application.isPlaying) Destroy(_drawMaterial); else DestroyImmediate(_drawMaterial);
+            _drawMaterial = null;
+            _drawMaterialSource = null;
+        }
+
+        // ---- snow -----------------------------------------------------------------------------------
+
+        /// <summary>True while an enabled Snow Simulator is attached and holds a depth map: the draw has GT_SNOW.</summary>
+        bool SnowOn() => _snow != null && _snow.DepthBuffer != null;
+
+        /// <summary>Called by a Snow Simulator whose Terrain is this renderer, when it is enabled.</summary>
+        internal void AttachSnow(SnowSimulator simulator)
+        {
+            if (_snow != null && _snow != simulator)
+                Debug.LogWarning($"{name}: Snow Simulator '{simulator.name}' replaces '{_snow.name}'; one simulator per terrain.", this);
+            _snow = simulator;
+            _settingsDirty = true;   // the cache's size and effects change with snow
+        }
+
+        /// <summary>Called by the attached Snow Simulator when it is disabled or retargeted.</summary>
+        internal void DetachSnow(SnowSimulator simulator)
+        {
+            if (_snow != simulator) return;
+            _snow = null;
+            _settingsDirty = true;
+        }
+
+        /// <summary>
+        /// What a Snow Simulator evaluates its field from: the uploaded grid's buffers (as GpuLayout
+        /// packs them), the constants last sent (any range: the simulator replaces it) and whether the
+        /// material has GT_NOISE. False until a grid is uploaded with valid settings.
+        /// </summary>
+        internal bool TryGetSnowTerrain(out GraphicsBuffer controlPoints, out GraphicsBuffer regions, out GraphicsBuffer gridLines,
+            out TerrainParams parameters, out bool noise, out int gridStamp)
+        {
+            controlPoints = _controlPoints; regions = _regions; gridLines = _gridLines;
+            parameters = _params; gridStamp = _gridStamp;
+            noise = material != null && material.IsKeywordEnabled(VertexCachePass.NoiseKeyword);
+            return _controlPoints != null && _settingsError == null && _uploadedPatchGrid != null;
+        }
+
+        /// <summary>The snow map on the property block: set when the simulator's buffer or size changes, not per frame.</summary>
+        void UpdateSnowBinding()
+        {
+            if (!SnowOn()) return;   // GT_SNOW off: whatever the block holds is not read
+            GraphicsBuffer depth = _snow.DepthBuffer;
+            Vector4 size = _snow.MapSize;
+            if (depth == _boundSnowDepth && size.x == _boundSnowMapSize.x && size.y == _boundSnowMapSize.y && size.z == _boundSnowMapSize.z) return;
+            SetBuffer(KeywordIds.SnowDepth, depth);
+            SetVector(KeywordIds.SnowMapSize, size);
+            _boundSnowDepth = depth;
+            _boundSnowMapSize = size;
+        }
+    }
+}

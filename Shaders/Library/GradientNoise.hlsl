@@ -1,0 +1,166 @@
+#ifndef GT_GRADIENT_NOISE_INCLUDED
+#define GT_GRADIENT_NOISE_INCLUDED
+
+// 2D gradient (Perlin) noise on the integer lattice. Mirrors Runtime/Core/Library/GradientNoise.cs
+// (C# GradientNoise.Evaluate == HLSL GradientNoise; other members GradientNoise<Name>).
+// Integer hash instead of a permutation table: 32-bit uint arithmetic wraps modulo 2^32 here as in
+// C# unchecked code, so both pick the same gradient bit for bit. 8 unit gradients, quintic fade,
+// value scaled by sqrt(2) to span [-1, 1], exactly 0 on lattice points.
+
+#include "RangeMapping.hlsl"
+
+#define GT_NOISE_SCALE 1.41421356
+#define GT_NOISE_DIAG 0.707106781
+
+static const float2 kGradientNoiseDirections[8] =
+{
+    float2(1.0, 0.0), float2(GT_NOISE_DIAG, GT_NOISE_DIAG), float2(0.0, 1.0), float2(-GT_NOISE_DIAG, GT_NOISE_DIAG),
+    float2(-1.0, 0.0), float2(-GT_NOISE_DIAG, -GT_NOISE_DIAG), float2(0.0, -1.0), float2(GT_NOISE_DIAG, -GT_NOISE_DIAG)
+};
+
+// PCG output permutation of one LCG step: a 32-bit mix with good avalanche.
+uint GradientNoiseHash(uint v)
+{
+    uint state = v * 747796405u + 2891336453u;
+    uint word = ((state >> ((state >> 28u) + 4u)) ^ state) * 277803737u;
+    return (word >> 22u) ^ word;
+}
+
+// Lattice point hash Hash(x + Hash(y)); negative ints enter as their bits.
+uint GradientNoiseHash2(int2 cell)
+{
+    return GradientNoiseHash(asuint(cell.x) + GradientNoiseHash(asuint(cell.y)));
+}
+
+float2 GradientNoiseGradient(uint h)
+{
+    return kGradientNoiseDirections[h & 7u];
+}
+
+// Offset of noise stream `stream` (octave k = stream k): integer part in [0, 256) + 16-bit fraction,
+// exact in float.
+float2 GradientNoiseStreamOffset(uint stream)
+{
+    uint hx = GradientNoiseHash(stream ^ 0x9E3779B9u);
+    uint hy = GradientNoiseHash(hx);
+    return float2(float(hx & 255u) + float((hx >> 8u) & 0xFFFFu) / 65536.0,
+                  float(hy & 255u) + float((hy >> 8u) & 0xFFFFu) / 65536.0);
+}
+
+float GradientNoiseFade(float t) { return t * t * t * (t * (t * 6.0 - 15.0) + 10.0); }
+float GradientNoiseFadeDerivative(float t) { float k = t * (t - 1.0); return 30.0 * k * k; }
+
+// GradientNoiseCell once the cell's four corner gradients are known.
+float GradientNoiseCorners(float2 g00, float2 g10, float2 g01, float2 g11, float2 f, out float2 gradient)
+{
+    float2 h = f - 1.0;
+    float n00 = g00.x * f.x + g00.y * f.y;
+    float n10 = g10.x * h.x + g10.y * f.y;
+    float n01 = g01.x * f.x + g01.y * h.y;
+    float n11 = g11.x * h.x + g11.y * h.y;
+    float u = GradientNoiseFade(f.x), v = GradientNoiseFade(f.y);
+    float du = GradientNoiseFadeDerivative(f.x), dv = GradientNoiseFadeDerivative(f.y);
+    float k1 = n10 - n00, k2 = n01 - n00, k3 = (n00 - n10) - (n01 - n11);
+    float n = n00 + u * k1 + v * k2 + u * v * k3;
+    float2 d = g00 + u * (g10 - g00) + v * (g01 - g00) + u * v * ((g00 - g10) - (g01 - g11))
+             + float2(du * (k1 + v * k3), dv * (k2 + u * k3));
+    gradient = GT_NOISE_SCALE * d;
+    return GT_NOISE_SCALE * n;
+}
+
+// Noise in lattice cell `cell` at fraction f (normally in [0, 1]); gradient w.r.t. the lattice coordinate.
+float GradientNoiseCell(int2 cell, float2 f, out float2 gradient)
+{
+    float2 g00 = GradientNoiseGradient(GradientNoiseHash2(cell));
+    float2 g10 = GradientNoiseGradient(GradientNoiseHash2(cell + int2(1, 0)));
+    float2 g01 = GradientNoiseGradient(GradientNoiseHash2(cell + int2(0, 1)));
+    float2 g11 = GradientNoiseGradient(GradientNoiseHash2(cell + int2(1, 1)));
+    return GradientNoiseCorners(g00, g10, g01, g11, f, gradient);
+}
+
+// Fade(t + s) - Fade(t) as the quintic's exact Taylor polynomial in the step s: every term carries
+// a factor s, so a tiny step keeps float's relative precision (see the C#).
+float GradientNoiseFadeStep(float t, float s)
+{
+    float f1 = GradientNoiseFadeDerivative(t);        // 30 t^2 (t - 1)^2
+    float f2 = 30.0 * t * ((2.0 * t - 1.0) * (t - 1.0));
+    float f3 = (60.0 * t - 60.0) * t + 10.0;
+    float f4 = 30.0 * t - 15.0;
+    return s * (f1 + s * (f2 + s * (f3 + s * (f4 + s * 6.0))));
+}
+
+// K(cell, f + step) - K(cell, f) within one cell's polynomial from the precise step (lattice units):
+// linear ramps differ by g . step, products by dA B1 + A0 dB, fades by GradientNoiseFadeStep.
+// gradient: at f + step (lattice units); baseValue: K at f (plain float).
+float GradientNoiseCellDifference(int2 cell, float2 f, float2 step, out float2 gradient, out float baseValue)
+{
+    float2 g00 = GradientNoiseGradient(GradientNoiseHash2(cell));
+    float2 g10 = GradientNoiseGradient(GradientNoiseHash2(cell + int2(1, 0)));
+    float2 g01 = GradientNoiseGradient(GradientNoiseHash2(cell + int2(0, 1)));
+    float2 g11 = GradientNoiseGradient(GradientNoiseHash2(cell + int2(1, 1)));
+    float2 h = f - 1.0;
+    float n00 = g00.x * f.x + g00.y * f.y;
+    float n10 = g10.x * h.x + g10.y * f.y;
+    float n01 = g01.x * f.x + g01.y * h.y;
+    float n11 = g11.x * h.x + g11.y * h.y;
+    float d00 = g00.x * step.x + g00.y * step.y, d10 = g10.x * step.x + g10.y * step.y;
+    float d01 = g01.x * step.x + g01.y * step.y, d11 = g11.x * step.x + g11.y * step.y;
+    float k1 = n10 - n00, k2 = n01 - n00, k3 = (n00 - n10) - (n01 - n11);
+    float e1 = d10 - d00, e2 = d01 - d00, e3 = (d00 - d10) - (d01 - d11);
+    float u0 = GradientNoiseFade(f.x), v0 = GradientNoiseFade(f.y);
+    float du = GradientNoiseFadeStep(f.x, step.x), dv = GradientNoiseFadeStep(f.y, step.y);
+    float v1 = v0 + dv, k31 = k3 + e3;
+    float dn = d00 + (du * (k1 + e1) + u0 * e1) + (dv * (k2 + e2) + v0 * e2)
+             + (du * v1 * k31 + u0 * (dv * k31 + v0 * e3));
+    baseValue = GT_NOISE_SCALE * (n00 + u0 * k1 + v0 * k2 + u0 * v0 * k3);
+    GradientNoiseCorners(g00, g10, g01, g11, f + step, gradient);
+    return GT_NOISE_SCALE * dn;
+}
+
+// Noise at x (|x| < 2^31; at |x| ~ 1e6 a float's fraction has only 4 bits: use GradientNoiseAtPoint).
+float GradientNoise(float2 x, out float2 gradient)
+{
+    float2 c = floor(x);
+    return GradientNoiseCell(int2(c), x - c, gradient);
+}
+
+// Dekker's TwoProduct without FMA: a * b == p + err exactly (Veltkamp split into 12-bit halves).
+// `precise` keeps the compiler from fusing or reassociating, which would break exactness.
+float GradientNoiseTwoProduct(float a, float b, out float err)
+{
+    precise float p = a * b;
+    precise float ca = 4097.0 * a;
+    precise float ah = ca - (ca - a);
+    precise float al = a - ah;
+    precise float cb = 4097.0 * b;
+    precise float bh = cb - (cb - b);
+    precise float bl = b - bh;
+    precise float e = ((ah * bh - p) + ah * bl + al * bh) + al * bl;
+    err = e;
+    return p;
+}
+
+// One axis of frequency * (hi + local) + offset = cell + fraction, with hi * frequency exact (see C#).
+void GradientNoiseSplitLattice(float hi, float local, float frequency, float offset, out int cell, out float fraction)
+{
+    float pe;
+    float ph = GradientNoiseTwoProduct(hi, frequency, pe);
+    float ch = floor(ph), co = floor(offset);
+    precise float fr = (ph - ch) + ((pe + local * frequency) + (offset - co));
+    float cf = floor(fr);
+    cell = int(ch) + int(co) + int(cf);
+    fraction = fr - cf;
+}
+
+// Noise at the lattice coordinate frequency * q + offset of a TerrainPoint (deep-zoom safe);
+// gradient w.r.t. the lattice coordinate (multiply by frequency for d/dq).
+float GradientNoiseAtPoint(TerrainPoint p, float frequency, float2 offset, out float2 gradient)
+{
+    int2 cell;
+    float2 f;
+    GradientNoiseSplitLattice(p.originHi.x, p.local.x, frequency, offset.x, cell.x, f.x);
+    GradientNoiseSplitLattice(p.originHi.y, p.local.y, frequency, offset.y, cell.y, f.y);
+    return GradientNoiseCell(cell, f, gradient);
+}
+
+#endif // GT_GRADIENT_NOISE_INCLUDED

@@ -1,0 +1,93 @@
+#ifndef GT_RELATIVE_SURFACE_INCLUDED
+#define GT_RELATIVE_SURFACE_INCLUDED
+
+// The deep-zoom vertex position S(q) - S(O), O the range origin, from precise local differences;
+// mirrors RelativeSurface.cs (float path), see there and Documentation~/precision.md. Active when
+// _RangeOrigin is not zero (the renderer sets an origin only for narrow ranges and then adds S(O),
+// computed in double, in the object-to-world transform). Depends only on q and per-frame
+// constants, so shared tile edges stay bit-identical.
+// Include TerrainInputs.hlsl (the buffers) before this file.
+
+#include "RangeMapping.hlsl"
+#include "../Grid/PatchGrid.hlsl"
+#include "GregoryDifference.hlsl"
+
+// p - r per axis, precise to float's relative precision of the result (TwoSum of the large parts).
+float2 TerrainPointDifference(TerrainPoint p, TerrainPoint r)
+{
+    float ex, ey;
+    float sx = TwoSum(p.originHi.x, -r.originHi.x, ex);
+    float sy = TwoSum(p.originHi.y, -r.originHi.y, ey);
+    precise float2 d = float2(sx + (ex + (p.local.x - r.local.x)), sy + (ey + (p.local.y - r.local.y)));
+    return d;
+}
+
+TerrainPoint MakeTerrainPoint(float2 hi, float2 lo)
+{
+    TerrainPoint p;
+    p.originHi = hi;
+    p.local = lo;
+    return p;
+}
+
+bool RelativeSurfaceIsActive(float4 rangeOrigin) { return any(rangeOrigin != 0.0); }
+
+// FindPatch decided on the precise point: the rounded hi + local can be one patch off within a float
+// step of a grid line, where u or v would be clamped (a flat strip at deep zoom).
+uint FindPatchPrecise(TerrainPoint q)
+{
+    uint n = GridColumns();
+    uint patch = FindPatch(TerrainPointApprox(q));
+    uint i = patch % n;
+    uint j = patch / n;
+    float4 region = PatchRegion(patch);
+    float2 lo = TerrainPointDifference(q, MakeTerrainPoint(region.xy, float2(0.0, 0.0)));
+    float2 hi = TerrainPointDifference(q, MakeTerrainPoint(region.zw, float2(0.0, 0.0)));
+    if (lo.x < 0.0 && i > 0u) i--;
+    else if (hi.x >= 0.0 && i < n - 1u) i++;
+    if (lo.y < 0.0 && j > 0u) j--;
+    else if (hi.y >= 0.0 && j < GridRows() - 1u) j++;
+    return j * n + i;
+}
+
+// p clamped into region (a, b, e, f) per axis; p itself, bit for bit, when inside.
+TerrainPoint ClampToRegion(TerrainPoint p, float4 region)
+{
+    float2 lo = TerrainPointDifference(p, MakeTerrainPoint(region.xy, float2(0.0, 0.0)));
+    float2 hi = TerrainPointDifference(p, MakeTerrainPoint(region.zw, float2(0.0, 0.0)));
+    TerrainPoint r = p;
+    if (lo.x < 0.0) { r.originHi.x = region.x; r.local.x = 0.0; }
+    else if (hi.x > 0.0) { r.originHi.x = region.z; r.local.x = 0.0; }
+    if (lo.y < 0.0) { r.originHi.y = region.y; r.local.y = 0.0; }
+    else if (hi.y > 0.0) { r.originHi.y = region.w; r.local.y = 0.0; }
+    return r;
+}
+
+// S_p(x) - S_p(r) in one patch; u0 clamped to [0, 1], the step not (see the C#).
+float3 PatchDifference(uint patch, float4 region, TerrainPoint x, TerrainPoint r)
+{
+    float3 cp[20];
+    LoadGregoryPatch(patch, cp);
+    float2 uv0 = saturate(PatchLocalUV(r, region));
+    float2 duv = clamp(TerrainPointDifference(x, r) / (region.zw - region.xy), -1.0, 1.0);
+    return GregoryDifferenceEvaluate(cp, uv0, duv);
+}
+
+// S(q) - S(O) = [S_p(q) - S_p(r1)] + [S_p0(r1) - S_p0(O)], r1 = O clamped into q's patch p.
+float3 RelativeSurfaceFromOrigin(TerrainPoint q, float4 rangeOrigin)
+{
+    TerrainPoint origin = MakeTerrainPoint(rangeOrigin.xy, rangeOrigin.zw);
+    uint patch = FindPatchPrecise(q);
+    float4 region = PatchRegion(patch);
+    TerrainPoint r1 = ClampToRegion(origin, region);
+    float3 d = PatchDifference(patch, region, q, r1);
+    if (any(r1.originHi != origin.originHi) || any(r1.local != origin.local))
+    {
+        uint patch0 = FindPatchPrecise(origin);
+        float4 region0 = PatchRegion(patch0);
+        d += PatchDifference(patch0, region0, ClampToRegion(r1, region0), origin);
+    }
+    return d;
+}
+
+#endif // GT_RELATIVE_SURFACE_INCLUDED

@@ -1,0 +1,225 @@
+// The terrain's shader stages, in the vertex / hull / domain / fragment style of Unity Graphics
+// Programming vol. 4, chapter 6. Include a pipeline adapter (Shaders/Pipelines) first.
+//
+//   vert           tile mode: one 4-control-point patch per tile, no vertex buffer:
+//                  tile = SV_VertexID / 4, corner = SV_VertexID % 4 (internals.md, "Draw modes")
+//   hull_const     edge factors from each tile edge's chord error in pixels, frustum culling
+//                  (TileFactors.hlsl); GT_VERTEX_CACHE: the factors the compute pass decided
+//   hull_shader    passes the 4 corners through
+//   domain_shader  tess coordinate -> TerrainVertex (TerrainVertex.hlsl); GT_VERTEX_CACHE: the
+//                  vertex the compute pass stored (VertexCacheKernels.hlsl), transformed
+//   vert_fallback  no tessellator: a (F+1)^2 UV grid per instance (= tile), same TerrainVertex
+//   vert_static    rig only (GT_STATIC_MESH): the terrain's vertices baked once, the fallback's index grid
+//   frag           TerrainShading.hlsl: colour (forward), packed normal (GT_PASS_DEPTH_NORMALS),
+//                  nothing (GT_PASS_SHADOWCASTER, GT_PASS_DEPTH)
+//
+// Keywords (Tools~/rig/shader_variants.txt lists the combinations that are compiled):
+//   GT_NOISE, GT_HEIGHT_COLOR, GT_SNOW                effects; off means not compiled at all
+//   GT_VERTEX_CACHE                                   vertices evaluated by a compute pre-pass
+//   GT_DEBUG_NORMALS, GT_DEBUG_PATCH_ID, GT_DEBUG_TESS_FACTOR   debug views
+//   GT_PAPER_MODE, GT_READBACK, GT_FACTOR_READBACK    off-Unity rig only
+#ifndef GT_TERRAIN_STAGES_INCLUDED
+#define GT_TERRAIN_STAGES_INCLUDED
+
+#include "../Terrain/TerrainVertex.hlsl"
+#include "../Terrain/TerrainShading.hlsl"
+#include "../Terrain/TileFactors.hlsl"
+#if defined(GT_VERTEX_CACHE)
+    #include "../Cache/ClippedCell.hlsl"
+    #if defined(GT_PAPER_MODE) || defined(GT_READBACK) || defined(GT_FACTOR_READBACK)
+        #error "GT_VERTEX_CACHE draws tiles from the cache: no paper mode, and the cache itself is the readback"
+    #endif
+#endif
+
+// The readback indexes vertices as an (F+1) x (F+1) grid, and the vertex cache (VertexCache.hlsl)
+// stores vertices at k / F: only integer partitioning makes those. Otherwise fractional_odd:
+// factors change continuously with the view, so no popping.
+#if defined(GT_READBACK) || defined(GT_VERTEX_CACHE)
+    #define GT_PARTITIONING "integer"
+#else
+    #define GT_PARTITIONING "fractional_odd"
+#endif
+
+#if defined(GT_FACTOR_READBACK)
+// Rig only (internals.md, "Rig-only readback"): hull_const writes each drawn patch's factors,
+// 2 float4 per patch: (edge[0..3]), (inside[0..1], culled 1/0, 0). Partitioning stays
+// fractional_odd: these are the factors the shipped shader uses.
+    #if !defined(GT_READBACK)
+RWStructuredBuffer<float4> _Readback GT_REGISTER(u0);
+    #endif
+#endif
+
+// vert -> hull -> domain: one corner of a tile (or, in paper mode, of a Gregory patch's range).
+struct TileCorner
+{
+    // Surface point at the corner without noise, object space: input of the edge factors and of
+    // the tile's bounding box.
+    float3 positionOS : INTERNALTESSPOS;
+    uint drawPatch : TEXCOORD0;   // tile index, or the Gregory patch in paper mode
+};
+
+// Quad domain: edge[0] is u = 0, edge[1] v = 0, edge[2] u = 1, edge[3] v = 1;
+// inside[0] subdivides along u, inside[1] along v.
+struct TileFactors
+{
+    float edge[4] : SV_TessFactor;
+    float inside[2] : SV_InsideTessFactor;
+#if defined(GT_VERTEX_CACHE)
+    // The part of its cell the tile keeps (TileKeptCellSpan): the domain stage reads the cell's records.
+    float4 keptCellSpan : TEXCOORD1;
+#endif
+};
+
+TileCorner vert(uint vertexID : SV_VertexID)
+{
+    TileCorner o;
+    o.drawPatch = vertexID / 4u;
+#if defined(GT_VERTEX_CACHE)
+    o.positionOS = float3(0.0, 0.0, 0.0);   // the factors come from the cache
+#else
+    o.positionOS = CellCornerObjectPosition(o.drawPatch, vertexID % 4u);
+#endif
+    return o;
+}
+
+TileFactors ToTileFactors(TileFactorSet set)
+{
+    TileFactors f;
+    f.edge[0] = set.edge.x;
+    f.edge[1] = set.edge.y;
+    f.edge[2] = set.edge.z;
+    f.edge[3] = set.edge.w;
+    f.inside[0] = set.inside.x;
+    f.inside[1] = set.inside.y;
+    return f;
+}
+
+#if defined(GT_VERTEX_CACHE)
+// The cell's factors, decided by CacheTileFactors, already integers (culled: all 0): what its
+// slots hold. hull_const clips them to the part of the cell the tile keeps; the domain stage reads
+// them again for a clipped tile's records.
+TileFactorSet CachedCellFactors(uint patch)
+{
+    TileFactorSet set;
+    set.edge = _TileFactors[VertexCacheFactorIndex(patch)];
+    set.inside = _TileFactors[VertexCacheFactorIndex(patch) + 1u].xy;
+    return set;
+}
+#endif
+
+TileFactorSet TileFactorsOf(InputPatch<TileCorner, 4> corners)
+{
+    uint patch = corners[0].drawPatch;
+    TileFactorSet set;
+#if defined(GT_VERTEX_CACHE)
+    set = CachedCellFactors(patch);
+#else
+    float3 cornerOS[4];
+    [unroll] for (uint c = 0; c < 4; c++)
+        cornerOS[c] = corners[c].positionOS;
+    set = ComputeTileFactors(patch, cornerOS);
+#endif
+    return set;
+}
+
+TileFactors hull_const(InputPatch<TileCorner, 4> corners)
+{
+#if defined(GT_VERTEX_CACHE)
+    // Anchored, the cache holds the tile's whole cell: draw the part of it the tile keeps
+    // (ClippedCell.hlsl), and tell the domain stage which part that is.
+    float4 kept = TileKeptCellSpan(corners[0].drawPatch);
+    TileFactors f = ToTileFactors(ClippedTileFactors(TileFactorsOf(corners), kept));
+    f.keptCellSpan = kept;
+#else
+    TileFactors f = ToTileFactors(TileFactorsOf(corners));
+#endif
+#if defined(GT_FACTOR_READBACK)
+    uint p = corners[0].drawPatch;
+    _Readback[2 * p + 0] = float4(f.edge[0], f.edge[1], f.edge[2], f.edge[3]);
+    _Readback[2 * p + 1] = float4(f.inside[0], f.inside[1], f.edge[0] == 0.0 ? 1.0 : 0.0, 0.0);
+#endif
+    return f;
+}
+
+[domain("quad")]
+[partitioning(GT_PARTITIONING)]
+[outputtopology("triangle_cw")]
+[patchconstantfunc("hull_const")]
+[outputcontrolpoints(4)]
+TileCorner hull_shader(InputPatch<TileCorner, 4> corners, uint id : SV_OutputControlPointID)
+{
+    return corners[id];
+}
+
+// The patch index comes from the control points (SV_VertexID / 4), not from SV_PrimitiveID: in
+// paper mode too, because SV_PrimitiveID restarts at 0 in every draw when the rig splits a draw
+// (lavapipe's vertex limit) while SV_VertexID keeps counting from firstVertex.
+[domain("quad")]
+TerrainVaryings domain_shader(TileFactors factors, const OutputPatch<TileCorner, 4> corners,
+                              float2 tess : SV_DomainLocation)
+{
+    float tessFactor = max(factors.inside[0], factors.inside[1]);
+#if defined(GT_VERTEX_CACHE)
+    // The compute pass evaluated this vertex into its slot: only the camera transform is left.
+    float4 edge = float4(factors.edge[0], factors.edge[1], factors.edge[2], factors.edge[3]);
+    float2 inside = float2(factors.inside[0], factors.inside[1]);
+    uint limit = VertexCacheFactorLimit();
+    uint base = corners[0].drawPatch * VertexCacheSlotsPerTile(limit);
+    if (!CellKeptWhole(factors.keptCellSpan))
+    {
+        TileFactorSet tile;
+        tile.edge = edge;
+        tile.inside = inside;
+        TileFactorSet cell = CachedCellFactors(corners[0].drawPatch);
+        return CachedCellPointVaryings(base, CellPoint(tess, tile, cell, factors.keptCellSpan, limit), tessFactor);
+    }
+    return CachedTerrainVaryings(base + VertexCacheSlot(tess, edge, inside, limit), tessFactor);
+#else
+    return TerrainVertex(corners[0].drawPatch, tess, tessFactor);
+#endif
+}
+
+// No tessellator: draw an index buffer over a (F+1) x (F+1) vertex grid, F = the uniform factor
+// (_Tess.w, an integer >= 1), one instance per tile. Vertex i + j (F+1) sits at tess (i, j) / F.
+TerrainVaryings vert_fallback(uint vertexID : SV_VertexID, uint instanceID : SV_InstanceID)
+{
+    uint f = max((uint)UniformTessFactor(), 1u);
+    uint2 grid = uint2(vertexID % (f + 1u), vertexID / (f + 1u));
+    return TerrainVertex(instanceID, (float2)grid / (float)f, (float)f);
+}
+
+#if defined(GT_STATIC_MESH)
+// Rig only (gt bench, "the fair static mesh"): the terrain baked into the static mesh a user could
+// draw instead, drawn with the same frag. Per vertex 2 float4, (object position, 1), (object normal, 0)
+// (Tools~/rig/bench_static_mesh.py packs them from the GT_READBACK vertices of M x M tiles at the
+// uniform factor F = _Tess.w), read from the _ControlPoints binding through the fallback grid's
+// index buffer: vertex = instance (F+1)^2 + SV_VertexID. Nothing is evaluated.
+TerrainVaryings vert_static(uint vertexID : SV_VertexID, uint instanceID : SV_InstanceID)
+{
+    uint f = max((uint)UniformTessFactor(), 1u);
+    uint v = instanceID * (f + 1u) * (f + 1u) + vertexID;
+    TerrainVaryings o = (TerrainVaryings)0;
+    o.positionCS = GT_ObjectToClip(_ControlPoints[2u * v].xyz);
+    // The baked height (object y; the benchmark draws no range origin) and no colour noise: the frag
+    // does the same work, the vertex stage less than the terrain's.
+    float heightWeight = TerrainHeightWeight(_ControlPoints[2u * v].y, 0.0);
+    o.normalAndHeightWeight = PackNormalAndHeightWeight(GT_ObjectToWorldNormal(_ControlPoints[2u * v + 1u].xyz), heightWeight);
+    return o;
+}
+#endif
+
+// One fragment entry for every pass; the pass's GT_PASS_* define (set by GregoryTerrain.shader)
+// picks the output. Depth and shadow passes write no colour (ColorMask 0), so they evaluate nothing
+// here: no albedo, no lighting, no shadow lookup. No GT_PASS_* (the off-Unity rig) = the colour.
+float4 frag(TerrainVaryings i) : SV_Target
+{
+#if defined(GT_PASS_SHADOWCASTER) || defined(GT_PASS_DEPTH)
+    return 0.0;
+#elif defined(GT_PASS_DEPTH_NORMALS)
+    return TerrainDepthNormal(i);
+#else
+    return TerrainFragmentColor(i);
+#endif
+}
+
+#endif // GT_TERRAIN_STAGES_INCLUDED

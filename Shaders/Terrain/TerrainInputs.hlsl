@@ -1,0 +1,125 @@
+// The terrain's GPU inputs: three buffers sent once and the TerrainParams constants
+// (Documentation~/internals.md, "GPU layout" and "Descriptor bindings"; GpuLayout in Core packs them).
+//
+// The pipeline adapter, included before this file, defines:
+//   GT_CBUFFER_START(name) / GT_CBUFFER_END  how a block of material constants is declared
+//                                            (Unity: UnityPerMaterial, for the SRP Batcher; the
+//                                            rig: cbuffer name : register(b0));
+//   GT_REGISTER(r)                           ": register(r)" where the registers are fixed (the rig),
+//                                            nothing where Unity binds by name.
+// Every stage reads its inputs through the accessors below, never through the raw float4s, so the
+// packing lives in one place.
+#ifndef GT_TERRAIN_INPUTS_INCLUDED
+#define GT_TERRAIN_INPUTS_INCLUDED
+
+#if !defined(GT_CBUFFER_START) || !defined(GT_CBUFFER_END) || !defined(GT_REGISTER)
+#error "Include a pipeline adapter (Shaders/Pipelines/*Adapter.hlsl) before TerrainInputs.hlsl"
+#endif
+
+// 20 float4 per patch, patch p at [20 p .. 20 p + 19], slot order of GregoryPatch, w = 1.
+StructuredBuffer<float4> _ControlPoints GT_REGISTER(t0);
+// (a, b, e, f) per patch: the patch covers [a, e] x [b, f] of the unit square.
+StructuredBuffer<float4> _Regions GT_REGISTER(t1);
+// xLines[0..n] then yLines[0..m], each strictly increasing from 0 to 1.
+StructuredBuffer<float> _GridLines GT_REGISTER(t2);
+
+// 10 float4, 160 bytes, in exactly this order (the rig uploads it as one block).
+GT_CBUFFER_START(TerrainParams)
+    float4 _Range;         // (c, d, g, h) relative to the range origin        per frame
+    float4 _RangeOrigin;   // (O.x hi, O.y hi, O.x lo, O.y lo)                  on re-snap
+    float4 _GridSize;      // (n columns, m rows, 0, 0)                         once
+    float4 _Tess;          // (tiles M, maxFactor, targetPixelError, uniform)   on change
+    float4 _Noise;         // (amplitude, frequency, alpha, beta)               on change
+    float4 _NoiseOctaves;  // (octaves N, verticesAcross override or 0, 0, 0)   on change
+    float4 _HeightColor;   // (gamma, colorNoiseAmplitude, colorNoiseFrequency, 0)
+    float4 _ColorLow;      // C of eq. 15, linear RGB
+    float4 _ColorHigh;     // B of eq. 15, linear RGB
+    float4 _TileLattice;   // 0, or the range the tiles were anchored at (TileLattice.hlsl)  on anchoring
+#if defined(GT_SNOW)
+    float4 _SnowMapSize;   // (R, 1/R, depthCap, 0): snow variant only, always last   on change
+#endif
+GT_CBUFFER_END
+
+#if defined(GT_SNOW)
+// The snow depth map (internals.md, "Snow"): R x R floats over the unit square, written by the snow
+// simulation. Declared only in the snow variant, so without GT_SNOW nothing needs binding. t4, not
+// t3: the rig's texture shift (+2) would put t3 on binding 5, the readback's.
+StructuredBuffer<float> _SnowDepth GT_REGISTER(t4);
+
+float4 SnowMapSize() { return _SnowMapSize; }
+// Largest snow depth: the tile bounds grow by it.
+float SnowDepthCap() { return _SnowMapSize.z; }
+#endif
+
+#if defined(GT_VERTEX_CACHE)
+// The vertex cache (internals.md, "Vertex cache"), written this frame by the compute pass
+// (VertexCacheKernels.hlsl: _TileFactorsRW, _VertexCacheRW, the same buffers): 2 float4 per tile
+// (the integer edge factors; inside factors, culled, evaluated) then one (the range the tile's slots
+// hold; VertexCache.hlsl), and GT_VERTEX_CACHE_RECORD_UINT4S uint4 per slot.
+StructuredBuffer<float4> _TileFactors GT_REGISTER(t5);
+StructuredBuffer<uint4> _VertexCache GT_REGISTER(t6);
+#endif
+
+// --- Patch grid -----------------------------------------------------------------------------------
+
+uint GridColumns() { return (uint)_GridSize.x; }
+uint GridRows() { return (uint)_GridSize.y; }
+uint PatchCount() { return GridColumns() * GridRows(); }
+
+// --- Range ----------------------------------------------------------------------------------------
+
+// Width g - c of the drawn range in terrain units (the origin cancels out of a difference).
+float RangeWidth() { return _Range.z - _Range.x; }
+
+// --- Tessellation ---------------------------------------------------------------------------------
+
+// M: the range is covered by M x M tiles (anchored: the lattice's width by M cells). A float,
+// because RangeCoordinate divides by it.
+float TileCount() { return _Tess.x; }
+uint TileCountInt() { return (uint)_Tess.x; }
+// Whether the tiles are anchored to the terrain (TileLattice.hlsl): a nonzero lattice.
+bool TilesAnchored() { return _TileLattice.z != _TileLattice.x; }
+// Tiles (draw patches, cache tiles) per axis: M, or M + 1 anchored.
+uint TilesAcrossInt() { return TileCountInt() + (TilesAnchored() ? 1u : 0u); }
+// The width whose M tiles set the vertex spacing: the lattice's when anchored (a pan keeps it, so
+// the octave count and the cached vertices stay put), else the range's.
+float TileLayoutWidth() { return TilesAnchored() ? _TileLattice.z - _TileLattice.x : RangeWidth(); }
+// Largest edge factor the adaptive policy may choose (at most 64, the hardware limit).
+float MaxTessFactor() { return _Tess.y; }
+// The adaptive knob: target screen-space error, in pixels, of the drawn triangles against the
+// surface (TessellationPolicy.ErrorTessFactor).
+float TargetPixelError() { return _Tess.z; }
+// Factor used for every edge and inside when > 0 (tests, benchmarks, the fallback grid); 0 = adaptive.
+float UniformTessFactor() { return _Tess.w; }
+bool UsesUniformTessFactor() { return _Tess.w > 0; }
+
+// --- Noise ----------------------------------------------------------------------------------------
+
+float4 NoiseSettings() { return _Noise; }
+float NoiseAmplitude() { return _Noise.x; }
+float MaxNoiseOctaves() { return _NoiseOctaves.x; }
+// Vertices across the range that the octave count is budgeted for: the override when set, else the
+// most the tessellator can make (M tiles of maxFactor segments). Per-frame values only, so every
+// vertex of a frame uses the same octave count (watertight).
+float NoiseVerticesAcross()
+{
+    return _NoiseOctaves.y > 0 ? _NoiseOctaves.y : TileCount() * MaxTessFactor();
+}
+// Bound on |OctaveNoise|: amplitude * sum_k beta^-k over the octaves (GradientNoise is in about
+// [-1, 1]). Used as the height margin of the frustum test.
+float NoiseHeightBound()
+{
+    float beta = max(_Noise.w, 1.0);
+    float n = MaxNoiseOctaves();
+    // Geometric series; beta == 1 degenerates to n terms of 1.
+    float sum = beta > 1.0 ? (1.0 - pow(beta, -n)) / (1.0 - 1.0 / beta) : n;
+    return abs(_Noise.x) * sum;
+}
+
+// --- Height colour --------------------------------------------------------------------------------
+
+float4 HeightColorSettings() { return _HeightColor; }
+float3 HeightColorLow() { return _ColorLow.rgb; }
+float3 HeightColorHigh() { return _ColorHigh.rgb; }
+
+#endif // GT_TERRAIN_INPUTS_INCLUDED

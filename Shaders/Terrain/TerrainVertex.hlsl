@@ -1,0 +1,311 @@
+// The one evaluation path from (draw patch, tess coordinate) to a shaded terrain vertex. The domain
+// stage (tessellated tiles) and vert_fallback (the instanced UV grid) both call TerrainVertex, so the
+// two draw paths cannot drift apart (DESIGN section 2).
+//
+//   tess coordinate --RangeToTerrainPoint--> global point q (hi/lo, bit-identical on shared edges)
+//     --FindPatch--> Gregory patch --PatchLocalUV--> (u, v) --GregoryEvaluate--> S, dS/du, dS/dv
+//     [GT_NOISE]        + OctaveNoise(q) on the height, its gradient in the normal
+//     [GT_HEIGHT_COLOR] height and ColorNoise(q) for eq. 14-15 in the fragment stage
+//     [GT_SNOW]         + SnowMapSample(q) on the height, the depth to the fragment stage
+//     -> object space (x, z, y), Unity is Y-up -> clip space through the adapter.
+#ifndef GT_TERRAIN_VERTEX_INCLUDED
+#define GT_TERRAIN_VERTEX_INCLUDED
+
+#include "TerrainInputs.hlsl"
+#include "../Library/RangeMapping.hlsl"
+#include "TileLattice.hlsl"
+#include "../Grid/PatchGrid.hlsl"
+#include "../Library/GregoryEval.hlsl"
+#include "../Library/RelativeSurface.hlsl"
+#if defined(GT_NOISE)
+    #include "../Library/OctaveNoise.hlsl"
+#endif
+#if defined(GT_HEIGHT_COLOR)
+    #include "../Library/HeightColor.hlsl"
+#endif
+#include "../Library/NormalEncoding.hlsl"
+#if defined(GT_SNOW)
+    #include "../Snow/SnowMap.hlsl"
+#endif
+
+// Domain/fallback output, fragment input.
+struct TerrainVaryings
+{
+    float4 positionCS : SV_Position;
+    // xy: the world normal, Lambert-encoded (NormalEncoding.hlsl); z: the height colour's weight s
+    // of eq. 14 (GT_HEIGHT_COLOR, else 0), computed per vertex. Read them with VaryingsNormalWS and
+    // VaryingsHeightWeight. One interpolant of three numbers: on the H200 two interpolants made the
+    // tessellated draw 1.2x slower at 8M triangles, and four numbers instead of three 1.07x slower
+    // at 0.6M (internals.md, "Varyings").
+    float3 normalAndHeightWeight : TEXCOORD0;
+#if defined(GT_RECEIVE_SHADOWS)
+    float3 positionWS : TEXCOORD6;   // main-light shadow lookup (adapter's GT_MainLightShadow)
+#endif
+#if defined(GT_DEBUG_PATCH_ID)
+    nointerpolation uint patch : TEXCOORD2;   // Gregory patch index
+#endif
+#if defined(GT_DEBUG_TESS_FACTOR)
+    float tessFactor : TEXCOORD3;
+#endif
+#if defined(GT_SNOW)
+    float snowDepth : TEXCOORD4;              // snow depth on this vertex (SnowMapCoverage)
+#endif
+};
+
+// A point of the Gregory surface (no noise yet), in terrain space (x, y, z).
+struct TerrainSurfacePoint
+{
+    TerrainPoint q;      // global point, hi/lo
+    uint patch;          // Gregory patch that was evaluated
+    float4 region;       // its (a, b, e, f)
+    float2 uv;           // patch-local coordinate that was evaluated
+    float3 position;
+    float3 dPdu;
+    float3 dPdv;
+};
+
+// Terrain space (x, y, z = height) to Unity object space (x, z, y). The swap is orthogonal, so it
+// maps normals too.
+float3 TerrainToObject(float3 v) { return v.xzy; }
+
+// The tile path after the global point q is formed: FindPatch on the float lines, PatchLocalUV,
+// GregoryEval (Core's TerrainVertex.EvaluateSurfaceAt).
+TerrainSurfacePoint EvaluateSurfaceAt(TerrainPoint q)
+{
+    TerrainSurfacePoint s;
+    s.q = q;
+    s.patch = FindPatch(TerrainPointApprox(q));
+    s.region = PatchRegion(s.patch);
+    s.uv = PatchLocalUV(q, s.region);
+    float3 cp[20];
+    LoadGregoryPatch(s.patch, cp);
+    GregoryEvaluate(cp, s.uv, s.position, s.dPdu, s.dPdv);
+    return s;
+}
+
+// drawPatch: the index of the patch being drawn: a tile (tile mode, tile = tj * M + ti) or, with
+// GT_PAPER_MODE, a Gregory patch. tess: the coordinate inside it, in [0, 1]^2.
+TerrainSurfacePoint EvaluateSurface(uint drawPatch, float2 tess)
+{
+#if defined(GT_PAPER_MODE)
+    // The paper's method: every Gregory patch is tessellated over the whole range (one "tile"),
+    // with the corrected eq. 10 and u, v clamped, so the part outside the patch collapses onto its
+    // boundary.
+    TerrainSurfacePoint s;
+    s.q = RangeToTerrainPoint(_Range, _RangeOrigin, 1.0, uint2(0, 0), tess);
+    s.patch = drawPatch;
+    s.region = PatchRegion(s.patch);
+    s.uv = saturate(PatchLocalUV(s.q, s.region));
+    float3 cp[20];
+    LoadGregoryPatch(s.patch, cp);
+    GregoryEvaluate(cp, s.uv, s.position, s.dPdu, s.dPdv);
+    return s;
+#else
+    // Integer tile index first: RangeCoordinate (LatticePoint) forms ti + s before dividing, so the
+    // vertices of a shared tile edge get bit-identical q (watertight).
+    return EvaluateSurfaceAt(TileToTerrainPoint(drawPatch, tess));
+#endif
+}
+
+// The surface at tess in the whole cell slot `slot` holds (CellToTerrainPoint): where the adaptive
+// factors sample it (TileFactors.hlsl). Paper mode has no cells: its draw patch's own point.
+TerrainSurfacePoint EvaluateCellSurface(uint slot, float2 tess)
+{
+#if defined(GT_PAPER_MODE)
+    return EvaluateSurface(slot, tess);
+#else
+    return EvaluateSurfaceAt(CellToTerrainPoint(slot, tess));
+#endif
+}
+
+// The surface position a vertex outputs (before noise): S(q) itself, or, while a range origin is
+// set (deep zoom), S(q) - S(O) from precise differences (RelativeSurface.hlsl, precision.md); the
+// renderer then adds S(O) in the object-to-world transform. Paper mode always outputs S(q).
+float3 OutputSurfacePosition(TerrainSurfacePoint s)
+{
+#if defined(GT_PAPER_MODE)
+    return s.position;
+#else
+    [branch] if (RelativeSurfaceIsActive(_RangeOrigin))
+        return RelativeSurfaceFromOrigin(s.q, _RangeOrigin);
+    return s.position;
+#endif
+}
+
+#if defined(GT_READBACK)
+// Rig only (internals.md, "Rig-only readback"): 3 float4 per vertex at the index of an integer
+// uniform factor F. The domain stage may run more than once per vertex; it writes the same values.
+RWStructuredBuffer<float4> _Readback GT_REGISTER(u0);
+
+void WriteReadback(uint drawPatch, float2 tess, float3 positionOS, float3 normalOS, float2 q, float2 uv)
+{
+    uint f = (uint)UniformTessFactor();
+    uint2 grid = (uint2)round(tess * (float)f);
+    uint vertex = drawPatch * (f + 1) * (f + 1) + grid.y * (f + 1) + grid.x;
+    _Readback[3 * vertex + 0] = float4(positionOS, 1.0);
+    _Readback[3 * vertex + 1] = float4(normalOS, 0.0);
+    _Readback[3 * vertex + 2] = float4(q, uv);
+}
+#endif
+
+// A terrain vertex before the camera: what the domain stage computes per vertex, and what the
+// vertex cache (VertexCache.hlsl) stores. Object space is Unity's Y-up (x, z, y).
+struct TerrainVertexAttributes
+{
+    float3 positionOS;       // noise and snow included; relative to S(O) + p(O) at deep zoom
+    float3 normalOS;         // unit
+    float absoluteHeight;    // S'z of eq. 14: Gregory + noise, absolute even at deep zoom, no snow
+    float colorNoise;        // l of eq. 14 (GT_HEIGHT_COLOR), else 0
+    float snowDepth;         // GT_SNOW, else 0
+    uint patch;              // the Gregory patch that was evaluated
+};
+
+// Everything TerrainVertex computes before the camera, from the surface point s.
+TerrainVertexAttributes FinishTerrainVertex(TerrainSurfacePoint s)
+{
+    float3 position = OutputSurfacePosition(s);
+    float3 dPdu = s.dPdu;
+    float3 dPdv = s.dPdv;
+    float noiseHeight = 0.0;   // the absolute p(q): the height of the plain path, and the height colour
+
+#if defined(GT_NOISE)
+    // Noise lives on the global point, so it is continuous across patches and tiles. In paper mode
+    // a clamped vertex sits on the patch boundary, so it takes the noise of that boundary point.
+    TerrainPoint noisePoint = s.q;
+    #if defined(GT_PAPER_MODE)
+    if (any(s.uv != PatchLocalUV(s.q, s.region)))
+    {
+        noisePoint.originHi = float2(0.0, 0.0);
+        noisePoint.local = lerp(s.region.xy, s.region.zw, s.uv);
+    }
+    #endif
+    float octaves = OctaveCount(TileLayoutWidth(), NoiseVerticesAcross(), NoiseSettings(), MaxNoiseOctaves());
+    float2 gradient;   // d(noise)/dq
+    #if !defined(GT_PAPER_MODE)
+    // Deep zoom: p(q) - p(O) from precise differences, like the surface; the renderer adds p(O).
+    [branch] if (RelativeSurfaceIsActive(_RangeOrigin))
+    {
+        TerrainPoint origin = MakeTerrainPoint(_RangeOrigin.xy, _RangeOrigin.zw);
+        position.z += OctaveNoiseRelative(s.q, origin, TerrainPointDifference(s.q, origin), NoiseSettings(), octaves, gradient);
+        #if defined(GT_HEIGHT_COLOR)
+        float2 colourGradient;
+        noiseHeight = OctaveNoise(noisePoint, NoiseSettings(), octaves, colourGradient);
+        #endif
+    }
+    else
+    #endif
+    {
+        noiseHeight = OctaveNoise(noisePoint, NoiseSettings(), octaves, gradient);
+        position.z += noiseHeight;
+    }
+    // q = (a + u (e - a), b + v (f - b)), so the chain rule scales the gradient by the region size.
+    float2 regionSize = s.region.zw - s.region.xy;
+    dPdu.z += gradient.x * regionSize.x;
+    dPdv.z += gradient.y * regionSize.y;
+#endif
+
+    TerrainVertexAttributes a;
+    a.snowDepth = 0.0;
+#if defined(GT_SNOW)
+    // After the noise: snow lies on the detailed surface. The normal stays the terrain's: the map's
+    // bilinear slope (up to cap / cell size) is no surface normal. In paper mode a clamped vertex
+    // reads the map at the patch point it collapsed onto.
+    #if defined(GT_PAPER_MODE)
+    float2 snowPoint = lerp(s.region.xy, s.region.zw, s.uv);
+    #else
+    float2 snowPoint = TerrainPointApprox(s.q);
+    #endif
+    a.snowDepth = SnowMapSample(_SnowDepth, SnowMapSize(), snowPoint);
+    position.z += a.snowDepth;
+#endif
+
+    // The derivatives already carry the noise term, so the normal is taken from them directly.
+    a.positionOS = TerrainToObject(position);
+    a.normalOS = TerrainToObject(GregoryNormalFromDerivatives(dPdu, dPdv));
+    // The absolute height S'z (position.z is relative to S(O) at deep zoom).
+    a.absoluteHeight = s.position.z + noiseHeight;
+    a.colorNoise = 0.0;
+#if defined(GT_HEIGHT_COLOR)
+    a.colorNoise = HeightColorNoise(s.q, HeightColorSettings());
+#endif
+    a.patch = s.patch;
+    return a;
+}
+
+// Everything TerrainVertex computes before the camera.
+TerrainVertexAttributes EvaluateTerrainVertex(uint drawPatch, float2 tess)
+{
+    TerrainSurfacePoint s = EvaluateSurface(drawPatch, tess);
+    TerrainVertexAttributes a = FinishTerrainVertex(s);
+#if defined(GT_READBACK)
+    WriteReadback(drawPatch, tess, a.positionOS, a.normalOS, TerrainPointApprox(s.q), s.uv);
+#endif
+    return a;
+}
+
+// The same at tess of the whole cell slot `slot` holds (CellToTerrainPoint): what the vertex cache
+// stores (ClippedCell.hlsl). The tile's own vertex wherever the tile is the whole cell, bit for bit.
+TerrainVertexAttributes EvaluateCellTerrainVertex(uint slot, float2 tess)
+{
+    return FinishTerrainVertex(EvaluateCellSurface(slot, tess));
+}
+
+// s = saturate(l + z / gamma) of eq. 14 for the absolute height z and colour noise l, 0 without
+// GT_HEIGHT_COLOR. Per vertex: s interpolated differs from s per fragment only inside a triangle
+// that crosses s = 0 or s = 1 (the clamp), by less than that triangle's change of s.
+float TerrainHeightWeight(float absoluteHeight, float colorNoise)
+{
+#if defined(GT_HEIGHT_COLOR)
+    return HeightColorWeight(colorNoise, absoluteHeight, HeightColorSettings().x);
+#else
+    return 0.0;
+#endif
+}
+
+// TerrainVaryings.normalAndHeightWeight of a unit world normal and a height weight, and back.
+float3 PackNormalAndHeightWeight(float3 normalWS, float heightWeight)
+{
+    return float3(LambertEncodeNormal(normalWS), heightWeight);
+}
+
+float3 VaryingsNormalWS(TerrainVaryings i) { return LambertDecodeNormal(i.normalAndHeightWeight.xy); }
+
+float VaryingsHeightWeight(TerrainVaryings i) { return i.normalAndHeightWeight.z; }
+
+// The camera part: object space -> the varyings, from the fragment's three numbers (the vertex
+// cache stores them packed; TerrainVertex computes them). tessFactor is only carried to the
+// GT_DEBUG_TESS_FACTOR view, patch to GT_DEBUG_PATCH_ID's.
+TerrainVaryings TerrainVaryingsOf(float3 positionOS, float3 normalAndHeightWeight, float snowDepth, uint patch, float tessFactor)
+{
+    TerrainVaryings o;
+    o.positionCS = GT_ObjectToClip(positionOS);
+    o.normalAndHeightWeight = normalAndHeightWeight;
+#if defined(GT_RECEIVE_SHADOWS)
+    o.positionWS = GT_ObjectToWorld(positionOS);
+#endif
+#if defined(GT_DEBUG_PATCH_ID)
+    o.patch = patch;
+#endif
+#if defined(GT_DEBUG_TESS_FACTOR)
+    o.tessFactor = tessFactor;
+#endif
+#if defined(GT_SNOW)
+    o.snowDepth = snowDepth;
+#endif
+    return o;
+}
+
+// The fragment's three numbers of a vertex whose normal is already in world space.
+float3 TerrainNormalAndHeightWeight(TerrainVertexAttributes a, float3 normalWS)
+{
+    return PackNormalAndHeightWeight(normalWS, TerrainHeightWeight(a.absoluteHeight, a.colorNoise));
+}
+
+TerrainVaryings TerrainVertex(uint drawPatch, float2 tess, float tessFactor)
+{
+    TerrainVertexAttributes a = EvaluateTerrainVertex(drawPatch, tess);
+    float3 shading = TerrainNormalAndHeightWeight(a, GT_ObjectToWorldNormal(a.normalOS));
+    return TerrainVaryingsOf(a.positionOS, shading, a.snowDepth, a.patch, tessFactor);
+}
+
+#endif // GT_TERRAIN_VERTEX_INCLUDED

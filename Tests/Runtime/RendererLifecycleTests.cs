@@ -1,0 +1,79 @@
+using NUnit.Framework;
+using UnityEngine;
+
+namespace GregoryTerrain.Tests
+{
+    /// <summary>
+    /// The renderer's contract with the GPU, run in Unity (Edit Mode and Play Mode): the grid goes up
+    /// once, a steady frame sets only <c>_Range</c> per camera, and disabling or a domain reload frees
+    /// every native object it made. <c>DrawFor</c> is what each camera's rendering callback calls.
+    /// </summary>
+    public class RendererLifecycleTests
+    {
+        TestTerrain _t;
+
+        [SetUp] public void SetUp() => _t = new TestTerrain();
+        [TearDown] public void TearDown() => _t.Dispose();
+
+        [Test]
+        public void UploadsOnceForEveryCameraAndFrame()
+        {
+            var r = _t.Renderer("terrain");
+            Camera a = _t.Camera("a"), b = _t.Camera("b");
+            for (int frame = 0; frame < 3; frame++) { r.DrawFor(a); r.DrawFor(b); }
+            Assert.That(r.HasGpuResources, Is.True, "buffers held after drawing");
+            Assert.That(r.UploadCount, Is.EqualTo(1), "uploads for 6 draws of one grid version");
+
+            _t.Grid.MarkChanged();   // a new asset version uploads once more
+            r.DrawFor(a); r.DrawFor(b);
+            Assert.That(r.UploadCount, Is.EqualTo(2));
+        }
+
+        [Test]
+        public void SteadyStateSetsOnlyRangePerCamera()
+        {
+            var r = _t.Renderer("terrain");
+            Camera a = _t.Camera("a"), b = _t.Camera("b");
+            r.DrawFor(a);
+            Assert.That(r.PropertiesSetLastPrepare.Count, Is.GreaterThan(1), "the first draw sends the whole block");
+            foreach (Camera cam in new[] { b, a, b })
+            {
+                r.DrawFor(cam);
+                Assert.That(r.PropertiesSetLastPrepare, Is.EqualTo(new[] { GregoryTerrainRenderer.RangePropertyId }),
+                    $"properties set for camera {cam.name} in the steady state");
+            }
+            r.Range = new TerrainRange(0.25, 0.25, 0.5, 0.5);   // a pan and zoom: still _Range (+ lattice on a zoom), no upload
+            r.DrawFor(a);
+            Assert.That(r.PropertiesSetLastPrepare, Does.Contain(GregoryTerrainRenderer.RangePropertyId));
+            Assert.That(r.UploadCount, Is.EqualTo(1));
+        }
+
+        [Test]
+        public void DisableReleasesBuffersAndTheRuntimeMaterial()
+        {
+            var r = _t.Renderer("terrain");
+            r.DrawFor(_t.Camera("a"));
+            Material copy = r.UpdateDrawMaterial(cache: true, snow: false);
+            Assert.That(copy, Is.Not.SameAs(_t.Asset), "a keyword the asset lacks is drawn from a copy");
+            r.enabled = false;
+            Assert.That(r.HasGpuResources, Is.False, "GPU buffers after OnDisable");
+            Assert.That(r.DrawMaterial, Is.SameAs(_t.Asset), "the renderer holds no copy after OnDisable");
+            // Play Mode destroys with Object.Destroy, which Unity carries out at the end of the frame.
+            if (!Application.isPlaying) Assert.That(copy == null, Is.True, "the runtime material copy is destroyed on disable");
+        }
+
+        [Test]
+        public void DomainReloadHandlerReleasesEverything()
+        {
+            // ReleaseAll is what the renderer registers with AssemblyReloadEvents.beforeAssemblyReload
+            // (OnDisable does not run before a reload); the rig checks that registration statically.
+            var r = _t.Renderer("terrain");
+            r.DrawFor(_t.Camera("a"));
+            Material copy = r.UpdateDrawMaterial(cache: false, snow: true);
+            r.ReleaseAll();
+            Assert.That(r.HasGpuResources, Is.False);
+            Assert.That(r.DrawMaterial, Is.SameAs(_t.Asset));
+            if (!Application.isPlaying) Assert.That(copy == null, Is.True, "the runtime material copy is destroyed");
+        }
+    }
+}
