@@ -5,7 +5,7 @@ using UnityEngine;
 namespace GregoryTerrain.EditorTools
 {
     /// <summary>Menu items: a terrain GameObject ready to draw; the patch grid asset itself comes from CreateAssetMenu.</summary>
-    public static class GregoryTerrainMenu
+    internal static class GregoryTerrainMenu
     {
         public const string ShaderName = "GregoryTerrain/Terrain";
 

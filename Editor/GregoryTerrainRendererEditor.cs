@@ -10,7 +10,7 @@ namespace GregoryTerrain.EditorTools
     /// The Scene-view keys are shortcuts of the Shortcut Manager (GregoryTerrainShortcuts).
     /// </summary>
     [CustomEditor(typeof(GregoryTerrainRenderer))]
-    public sealed class GregoryTerrainRendererEditor : Editor
+    internal sealed class GregoryTerrainRendererEditor : Editor
     {
         int _selectedPatch = -1, _selectedSlot = -1;
         // The in-view estimate evaluates up to 256 tiles' surface samples on the CPU: at most every

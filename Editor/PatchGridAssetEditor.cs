@@ -1,5 +1,7 @@
 using System;
+using System.Collections.Generic;
 using System.IO;
+using System.Threading;
 using GregoryTerrain;
 using UnityEditor;
 using UnityEngine;
@@ -8,13 +10,15 @@ namespace GregoryTerrain.EditorTools
 {
     /// <summary>Inspector of a patch grid: summary, validation, G1 measure, JSON import/export.</summary>
     [CustomEditor(typeof(PatchGridAsset))]
-    public sealed class PatchGridAssetEditor : Editor
+    internal sealed class PatchGridAssetEditor : Editor
     {
         static readonly GUIContent MeasureLabel = new GUIContent("Measure G1", "Largest position gap and normal angle across shared patch edges (Core's ContinuityMeasure).");
         static readonly GUIContent ImportLabel = new GUIContent("Import JSON...", "Replace the grid with one read from a JSON file. A file that fails to parse changes nothing.");
         static readonly GUIContent ExportLabel = new GUIContent("Export JSON...", "Write the grid to a JSON file (Core's PatchGridJson format).");
         static readonly GUIContent UpgradeLabel = new GUIContent("Move to blocks", "Move the control points into block sub-assets now, bit for bit (one undo step). Edits do it by themselves.");
         string _measure;
+        List<string> _warnings;
+        int _warningsVersion;
 
         public override void OnInspectorGUI()
         {
@@ -24,6 +28,13 @@ namespace GregoryTerrain.EditorTools
                 EditorGUILayout.HelpBox(asset.ValidationError, MessageType.Error);
             else
                 EditorGUILayout.HelpBox("Valid grid. Edit it with Window > Gregory Terrain > Patch Grid, or move control points in the Scene view.", MessageType.Info);
+            if (asset.IsValid && _warningsVersion != asset.Version)
+            {
+                _warnings = PatchGridGeometry.Warnings(asset.ToPatchGrid());
+                _warningsVersion = asset.Version;
+            }
+            if (asset.IsValid && _warnings.Count > 0)
+                EditorGUILayout.HelpBox("Geometry that will not draw sensibly:\n" + string.Join("\n", _warnings), MessageType.Warning);
 
             if (asset.HasLegacyLayout && asset.IsValid)
             {
@@ -34,11 +45,7 @@ namespace GregoryTerrain.EditorTools
             {
                 if (GUILayout.Button(MeasureLabel))
                 {
-                    PatchGrid grid = asset.ToPatchGrid();
-                    double gap = ContinuityMeasure.MaxPositionGap(grid);
-                    double angle = ContinuityMeasure.MaxNormalAngleDegrees(grid);
-                    _measure = $"max position gap {gap:G3}, max normal angle {angle:G3} degrees " +
-                               $"({ContinuityMeasure.DefaultSamplesPerEdge} samples per shared edge)";
+                    _measure = Measure(asset.ToPatchGrid());
                 }
                 if (_measure != null) EditorGUILayout.HelpBox(_measure, MessageType.None);
                 if (GUILayout.Button(ExportLabel)) Export(asset);
@@ -47,6 +54,22 @@ namespace GregoryTerrain.EditorTools
 
             EditorGUILayout.Space();
             DrawDefaultInspector();
+        }
+
+        static string Measure(PatchGrid grid)
+        {
+            var cancel = new CancellationTokenSource();
+            try
+            {
+                ContinuityResult r = ContinuityMeasure.Measure(grid, ContinuityMeasure.DefaultSamplesPerEdge, f =>
+                {
+                    if (EditorUtility.DisplayCancelableProgressBar("Measure G1", "Sampling shared patch edges...", f)) cancel.Cancel();
+                }, cancel.Token);
+                return $"max position gap {r.MaxPositionGap:G3}, max normal angle {r.MaxNormalAngleDegrees:G3} degrees " +
+                       $"({ContinuityMeasure.DefaultSamplesPerEdge} samples per shared edge)";
+            }
+            catch (OperationCanceledException) { return "G1 measure cancelled."; }
+            finally { EditorUtility.ClearProgressBar(); cancel.Dispose(); }
         }
 
         static void Export(PatchGridAsset asset)
@@ -62,11 +85,10 @@ namespace GregoryTerrain.EditorTools
             if (string.IsNullOrEmpty(path)) return;
             try
             {
-                string json = File.ReadAllText(path);
-                PatchGrid grid = PatchGridJson.Read(json);     // parse first: nothing recorded on failure
+                PatchGrid grid = PatchGridJson.ReadFile(path);     // parse first: nothing recorded on failure
                 PatchGridAssetUndo.SetGrid(asset, grid, "Import patch grid");
             }
-            catch (Exception e) when (e is FormatException || e is ArgumentException || e is IOException)
+            catch (Exception e) when (e is FormatException || e is ArgumentException || e is IOException || e is UnauthorizedAccessException)
             {
                 EditorUtility.DisplayDialog("Import failed", $"{Path.GetFileName(path)}: {e.Message}\nThe grid was not changed.", "OK");
             }

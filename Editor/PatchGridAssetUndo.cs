@@ -14,7 +14,7 @@ namespace GregoryTerrain.EditorTools
     /// block sub-assets with Undo when the patch count changes.
     /// </summary>
     [InitializeOnLoad]
-    public static class PatchGridAssetUndo
+    internal static class PatchGridAssetUndo
     {
         // Undo and redo restore grid data behind the assets' backs: stamp every loaded grid with a new
         // version so renderers upload what the undo restored (PatchGridBlock.OnValidate does it too,

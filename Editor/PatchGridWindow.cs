@@ -8,33 +8,64 @@ using UnityEngine;
 namespace GregoryTerrain.EditorTools
 {
     /// <summary>
-    /// Authoring window: makes an n x m grid, fits it to a heightmap (a readable Texture2D or a
-    /// 16-bit little-endian RAW file) with a cancellable progress bar, and enforces G1 with Core's
-    /// G1Builder. Every change to the asset is one undo step.
+    /// Authoring window: makes an n x m grid, fits it by least squares to a heightmap (a readable
+    /// Texture2D, at full precision for 16-bit and float formats, or a RAW file in either byte order
+    /// or float) with a cancellable progress bar, optionally choosing the patch count from a target
+    /// error, shows where the error is as a heat map, and enforces G1 with Core's G1Builder. Every
+    /// change to the asset is one undo step.
     /// </summary>
-    public sealed class PatchGridWindow : EditorWindow
+    internal sealed class PatchGridWindow : EditorWindow
     {
+        /// <summary>Patches a side the window offers; GpuLayout.CheckSize holds the GPU's own limit (documented in the manual).</summary>
+        const int MaxSide = 1024;
+
         static readonly GUIContent AssetLabel = new GUIContent("Patch grid", "The asset the buttons below change.");
-        static readonly GUIContent ColumnsLabel = new GUIContent("Columns (n)", "Patches along x.");
-        static readonly GUIContent RowsLabel = new GUIContent("Rows (m)", "Patches along y.");
-        static readonly GUIContent TextureLabel = new GUIContent("Heightmap texture", "Grey value = height; the texture must have Read/Write enabled.");
-        static readonly GUIContent RawSizeLabel = new GUIContent("RAW width x height", "Samples per row and rows of the 16-bit little-endian RAW file.");
-        static readonly GUIContent HeightScaleLabel = new GUIContent("Height scale", "Terrain units of height for a full-scale sample (1.0 grey or 65535).");
+        static readonly GUIContent ColumnsLabel = new GUIContent("Columns (n)", "Patches along x (1 to 1024).");
+        static readonly GUIContent RowsLabel = new GUIContent("Rows (m)", "Patches along y (1 to 1024).");
+        static readonly GUIContent TextureLabel = new GUIContent("Heightmap texture", "Read/Write must be on. R16, RGBA64 (16-bit PNG), RHalf, RFloat, RGBAHalf, RGBAFloat (EXR) are read at full precision; other formats through 8-bit grey.");
+        static readonly GUIContent RawFormatLabel = new GUIContent("RAW sample format", "How the RAW file stores a sample: Unity's RAW export is 16-bit unsigned (Windows = little-endian, Mac = big-endian); SRTM .hgt is signed 16-bit big-endian.");
+        static readonly GUIContent RawSizeLabel = new GUIContent("RAW width x height", "Samples per row and rows. 0 x 0 reads a square file's size from its length; with one given, the other follows.");
+        static readonly GUIContent RawVoidLabel = new GUIContent("-32768 is no data", "Treat -32768 as a void (SRTM) and fill it from its neighbours before fitting.");
+        static readonly GUIContent HeightScaleLabel = new GUIContent("Height scale", "Terrain units of height for a full-scale sample (white, 65535), or per stored unit for signed 16-bit and float samples.");
+        static readonly GUIContent WidthMetresLabel = new GUIContent("Terrain width (m)", "Metres the terrain's x side spans in the scene (the renderer's scale); used to report errors in metres.");
+        static readonly GUIContent TargetLabel = new GUIContent("Choose patches from a target error", "Fit with the fewest patches (rows follow the heightmap's aspect) whose error is at most the target.");
+        static readonly GUIContent TargetErrorLabel = new GUIContent("Target error (m)", "The largest acceptable error, in metres.");
+        static readonly GUIContent TargetKindLabel = new GUIContent("Error measured as", "Max: the worst sample. Rms: the root mean square over all samples.");
 
         [SerializeField] PatchGridAsset asset;
         [SerializeField] int columns = 5, rows = 5;
         [SerializeField] Texture2D heightmap;
-        [SerializeField] int rawWidth = 513, rawHeight = 513;
+        [SerializeField] RawSampleFormat rawFormat = RawSampleFormat.UInt16LittleEndian;
+        [SerializeField] int rawWidth, rawHeight;
+        [SerializeField] bool rawVoids;
         [SerializeField] float heightScale = 0.1f;
+        [SerializeField] float widthMetres = 1000f;
+        [SerializeField] bool useTarget;
+        [SerializeField] float targetMetres = 1f;
+        [SerializeField] FitErrorKind targetKind = FitErrorKind.Max;
         string _message;
         MessageType _messageType;
+        Texture2D _errorTexture;
+        string _errorLegend;
+
+        void OnDisable()
+        {
+            if (_errorTexture != null) DestroyImmediate(_errorTexture);
+        }
 
         void OnGUI()
         {
             asset = (PatchGridAsset)EditorGUILayout.ObjectField(AssetLabel, asset, typeof(PatchGridAsset), false);
-            columns = Mathf.Clamp(EditorGUILayout.IntField(ColumnsLabel, columns), 1, 256);
-            rows = Mathf.Clamp(EditorGUILayout.IntField(RowsLabel, rows), 1, 256);
+            columns = Mathf.Clamp(EditorGUILayout.IntField(ColumnsLabel, columns), 1, MaxSide);
+            rows = Mathf.Clamp(EditorGUILayout.IntField(RowsLabel, rows), 1, MaxSide);
             heightScale = EditorGUILayout.FloatField(HeightScaleLabel, heightScale);
+            widthMetres = Mathf.Max(1e-3f, EditorGUILayout.FloatField(WidthMetresLabel, widthMetres));
+            useTarget = EditorGUILayout.Toggle(TargetLabel, useTarget);
+            if (useTarget)
+            {
+                targetMetres = Mathf.Max(1e-6f, EditorGUILayout.FloatField(TargetErrorLabel, targetMetres));
+                targetKind = (FitErrorKind)EditorGUILayout.EnumPopup(TargetKindLabel, targetKind);
+            }
 
             if (asset == null)
             {
@@ -48,18 +79,25 @@ namespace GregoryTerrain.EditorTools
             EditorGUILayout.Space();
             heightmap = (Texture2D)EditorGUILayout.ObjectField(TextureLabel, heightmap, typeof(Texture2D), false);
             using (new EditorGUI.DisabledScope(heightmap == null))
-                if (GUILayout.Button(new GUIContent("Fit to texture", "Least-squares fit of the n x m grid to the texture's grey values (Core's HeightmapFitter)."))) FitTexture();
+                if (GUILayout.Button(new GUIContent("Fit to texture", "Least-squares fit of a G1 grid to every texel (Core's HeightmapFitter)."))) FitTexture();
 
             EditorGUILayout.Space();
-            rawWidth = Mathf.Max(2, EditorGUILayout.IntField(RawSizeLabel, rawWidth));
-            rawHeight = Mathf.Max(2, EditorGUILayout.IntField(" ", rawHeight));
-            if (GUILayout.Button(new GUIContent("Fit to RAW file...", "Fit to a 16-bit little-endian RAW heightmap of the size above."))) FitRaw();
+            rawFormat = (RawSampleFormat)EditorGUILayout.EnumPopup(RawFormatLabel, rawFormat);
+            rawWidth = Mathf.Max(0, EditorGUILayout.IntField(RawSizeLabel, rawWidth));
+            rawHeight = Mathf.Max(0, EditorGUILayout.IntField(" ", rawHeight));
+            rawVoids = EditorGUILayout.Toggle(RawVoidLabel, rawVoids);
+            if (GUILayout.Button(new GUIContent("Fit to RAW file...", "Least-squares fit to a headerless RAW heightmap in the format above."))) FitRaw();
 
             EditorGUILayout.Space();
             using (new EditorGUI.DisabledScope(!asset.IsValid))
                 if (GUILayout.Button(new GUIContent("Enforce G1", "Set the interior control points so neighbouring patches join with a continuous tangent plane (eq. 7-9)."))) EnforceG1();
 
             if (_message != null) EditorGUILayout.HelpBox(_message, _messageType);
+            if (_errorTexture != null)
+            {
+                EditorGUILayout.HelpBox(_errorLegend, MessageType.None);
+                EditorGUI.DrawPreviewTexture(GUILayoutUtility.GetRect(64, 512, 64, 512), _errorTexture);
+            }
         }
 
         void MakeFlat()
@@ -74,45 +112,99 @@ namespace GregoryTerrain.EditorTools
                 Report($"'{heightmap.name}' is not readable: enable Read/Write in its import settings.", MessageType.Error);
                 return;
             }
-            Color[] pixels = heightmap.GetPixels();
-            var heights = new double[pixels.Length];
-            for (int k = 0; k < pixels.Length; k++) heights[k] = pixels[k].grayscale * heightScale;
-            Fit(heights, heightmap.width, heightmap.height, heightmap.name);
+            double[] heights;
+            string precision;
+            if (TryTexelFormat(heightmap.format, out HeightTexelFormat texel))
+            {
+                try { heights = TextureHeights.Decode(heightmap.name, heightmap.GetRawTextureData(), heightmap.width, heightmap.height, texel); }
+                catch (ArgumentException e) { Report(e.Message, MessageType.Error); return; }
+                precision = $"{heightmap.format}, full precision";
+            }
+            else
+            {
+                Color[] pixels = heightmap.GetPixels();
+                heights = new double[pixels.Length];
+                for (int k = 0; k < pixels.Length; k++) heights[k] = pixels[k].grayscale;
+                precision = $"{heightmap.format} read as grey: 8 bits at most; import 16-bit PNGs as R16 and EXRs as RFloat or RHalf to keep their precision";
+            }
+            for (int k = 0; k < heights.Length; k++) heights[k] *= heightScale;
+            Fit(heights, heightmap.width, heightmap.height, $"'{heightmap.name}' ({precision})");
+        }
+
+        static bool TryTexelFormat(TextureFormat format, out HeightTexelFormat texel)
+        {
+            switch (format)
+            {
+                case TextureFormat.R16: texel = HeightTexelFormat.R16; return true;
+                case TextureFormat.RGBA64: texel = HeightTexelFormat.RGBA64; return true;
+                case TextureFormat.RHalf: texel = HeightTexelFormat.RHalf; return true;
+                case TextureFormat.RGBAHalf: texel = HeightTexelFormat.RGBAHalf; return true;
+                case TextureFormat.RFloat: texel = HeightTexelFormat.RFloat; return true;
+                case TextureFormat.RGBAFloat: texel = HeightTexelFormat.RGBAFloat; return true;
+                default: texel = default; return false;
+            }
         }
 
         void FitRaw()
         {
-            string path = EditorUtility.OpenFilePanel("16-bit RAW heightmap", "", "raw");
+            string path = EditorUtility.OpenFilePanel("RAW heightmap", "", "");
             if (string.IsNullOrEmpty(path)) return;
-            byte[] bytes = File.ReadAllBytes(path);
-            long expected = 2L * rawWidth * rawHeight;
-            if (bytes.Length != expected)
+            string name = Path.GetFileName(path);
+            double[] heights;
+            int w = rawWidth, h = rawHeight;
+            try
             {
-                Report($"{Path.GetFileName(path)} has {bytes.Length} bytes; {rawWidth} x {rawHeight} 16-bit samples need {expected}. Check the size.", MessageType.Error);
-                return;
+                byte[] bytes = File.ReadAllBytes(path);
+                RawHeightmap.InferSize(name, bytes.Length, rawFormat, ref w, ref h);
+                heights = RawHeightmap.Decode(name, bytes, w, h, rawFormat, rawVoids ? RawHeightmap.SrtmVoid : (int?)null);
             }
-            var heights = new double[rawWidth * rawHeight];
-            for (int k = 0; k < heights.Length; k++)
-                heights[k] = (bytes[2 * k] | (bytes[2 * k + 1] << 8)) / 65535.0 * heightScale;   // little-endian
-            Fit(heights, rawWidth, rawHeight, Path.GetFileName(path));
+            catch (IOException e) { Report($"{name}: {e.Message}", MessageType.Error); return; }
+            catch (ArgumentException e) { Report(e.Message, MessageType.Error); return; }
+            bool unsigned16 = rawFormat == RawSampleFormat.UInt16LittleEndian || rawFormat == RawSampleFormat.UInt16BigEndian;
+            double scale = unsigned16 ? heightScale / 65535.0 : heightScale;
+            for (int k = 0; k < heights.Length; k++) heights[k] *= scale;
+            Fit(heights, w, h, $"{name} ({w} x {h}, {rawFormat})");
         }
 
-        /// <summary>Runs the fitter with a cancellable progress bar; a cancel leaves the asset as it was.</summary>
+        /// <summary>Fills voids, runs the fitter with a cancellable progress bar; a cancel or error leaves the asset as it was.</summary>
         void Fit(double[] heights, int width, int height, string source)
         {
+            int voids;
+            try { voids = HeightmapVoids.Fill(heights, width, height); }
+            catch (ArgumentException e) { Report($"{source}: {e.Message}", MessageType.Error); return; }
             using var cancel = new CancellationTokenSource();
-            var progress = new ProgressBar($"Fitting {columns} x {rows} patches to {source}", cancel);
+            string what = useTarget ? $"Fitting to {targetKind} error {targetMetres:G3} m" : $"Fitting {columns} x {rows} patches";
+            var progress = new ProgressBar($"{what}: {source}", cancel);
             try
             {
                 // Texture rows run bottom-up and RAW rows as stored: sample (c, r) lands at
                 // (c / (W-1), r / (H-1)) of the unit square either way (HeightmapFitter's convention).
-                HeightmapFit fit = HeightmapFitter.Fit(heights, width, height, columns, rows, progress, cancel.Token);
+                HeightmapFit fit = useTarget
+                    ? HeightmapFitter.FitToTarget(heights, width, height, targetMetres / widthMetres, targetKind, MaxSide, progress, cancel.Token)
+                    : HeightmapFitter.Fit(heights, width, height, columns, rows, progress, cancel.Token);
                 Apply($"Fit patch grid to {source}", fit.Grid);
-                Report($"Fitted {columns} x {rows} patches to {source}: max error {fit.MaxError:G3}, RMS {fit.RmsError:G3} (terrain units).", MessageType.Info);
+                ShowErrorMap(fit);
+                string filled = voids > 0 ? $" {voids} void samples were filled from their neighbours first." : "";
+                Report($"Fitted {fit.Grid.Columns} x {fit.Grid.Rows} patches to {source}: max error {fit.MaxError * widthMetres:G3} m, RMS {fit.RmsError * widthMetres:G3} m ({fit.MaxError:G3} and {fit.RmsError:G3} terrain units).{filled}"
+                    + (useTarget && (targetKind == FitErrorKind.Max ? fit.MaxError : fit.RmsError) * widthMetres > targetMetres ? $" The target was not reached at {MaxSide} columns." : ""),
+                    MessageType.Info);
             }
             catch (OperationCanceledException) { Report("Fit cancelled; the grid was not changed.", MessageType.Warning); }
-            catch (ArgumentException e) { Report(e.Message, MessageType.Error); }
+            catch (ArgumentException e) { Report($"{source}: {e.Message}", MessageType.Error); }
             finally { EditorUtility.ClearProgressBar(); }
+        }
+
+        /// <summary>The fit's error map as a texture under the message, red at the fit's max error.</summary>
+        void ShowErrorMap(HeightmapFit fit)
+        {
+            if (_errorTexture != null) DestroyImmediate(_errorTexture);
+            _errorTexture = null;
+            if (!(fit.MaxError > 0)) return;
+            FitErrorMap map = fit.ErrorMap;
+            _errorTexture = new Texture2D(map.Width, map.Height, TextureFormat.RGBA32, false);
+            _errorTexture.LoadRawTextureData(map.ToRgba32(fit.MaxError));
+            _errorTexture.Apply();
+            _errorLegend = $"Error map ({map.Width} x {map.Height} cells, each the worst sample in it): black 0, blue, yellow, red {fit.MaxError * widthMetres:G3} m.";
         }
 
         void EnforceG1()

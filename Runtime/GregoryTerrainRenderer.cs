@@ -158,9 +158,11 @@ namespace GregoryTerrain
         [Tooltip("Whether the terrain receives shadows.")]
         [SerializeField] bool receiveShadows = true;
 
+        /// <summary>Draws the patches' control points in the Scene view (editor only).</summary>
         [Header("Debug (Scene view: Z control points, X wireframe, C/V factor -/+)")]
         [Tooltip("Draw the control points in the Scene view (key Z with the Scene view focused).")]
         public bool debugShowControlPoints;
+        /// <summary>Draws the patch boundaries in the Scene view (editor only).</summary>
         [Tooltip("Draw the patch boundaries in the Scene view (key X).")]
         public bool debugShowPatchWireframe;
 

@@ -13,7 +13,7 @@ namespace GregoryTerrain
     /// project's serialization mode (<see cref="PreferBinarySerialization"/>, as Unity does for
     /// TerrainData): 8 bytes a double instead of about 20 characters of YAML. Grids saved with the
     /// older single <c>controlPoints</c> array still load; the first edit moves them into blocks
-    /// (the editor's PatchGridAssetUndo), bit for bit. Every change goes through <see cref="SetGrid"/>,
+    /// (the editor's PatchGridAssetUndo), bit for bit. Every change goes through <see cref="SetGrid(PatchGrid)"/>,
     /// <see cref="ImportJson"/> or <see cref="SetControlPoint"/>, which check the new data completely
     /// before touching the old, and stamps a new <see cref="Version"/> so renderers upload again only
     /// when the grid changed.
@@ -70,10 +70,10 @@ namespace GregoryTerrain
         public bool IsValid => _error == null;
 
         /// <summary>True while the control points are still in the older single array (not yet in blocks).</summary>
-        public bool HasLegacyLayout => (blocks == null || blocks.Length == 0) && controlPoints != null && controlPoints.Length > 0;
+        internal bool HasLegacyLayout => (blocks == null || blocks.Length == 0) && controlPoints != null && controlPoints.Length > 0;
 
         /// <summary>The control point blocks (empty while <see cref="HasLegacyLayout"/>). A copy of the array.</summary>
-        public PatchGridBlock[] Blocks => blocks == null ? Array.Empty<PatchGridBlock>() : (PatchGridBlock[])blocks.Clone();
+        internal PatchGridBlock[] Blocks => blocks == null ? Array.Empty<PatchGridBlock>() : (PatchGridBlock[])blocks.Clone();
 
         void OnEnable() => MarkChanged();
 
@@ -93,7 +93,7 @@ namespace GregoryTerrain
         }
 
         /// <summary>The grid as Core's <see cref="PatchGrid"/>. Throws ArgumentException when invalid.</summary>
-        public PatchGrid ToPatchGrid()
+        internal PatchGrid ToPatchGrid()
         {
             string error = CheckSerializedData();
             if (error != null) throw new ArgumentException(error);
@@ -106,7 +106,7 @@ namespace GregoryTerrain
         /// the editor adds them to the asset) and <paramref name="dropped"/> blocks no longer used (the
         /// editor destroys them with Undo). Record the asset and its blocks before calling it.
         /// </summary>
-        public void SetGrid(PatchGrid grid, out PatchGridBlock[] created, out PatchGridBlock[] dropped)
+        internal void SetGrid(PatchGrid grid, out PatchGridBlock[] created, out PatchGridBlock[] dropped)
         {
             if (grid == null) throw new ArgumentNullException(nameof(grid));
             int n = grid.Columns, m = grid.Rows;
@@ -136,7 +136,7 @@ namespace GregoryTerrain
         /// Replaces the data with <paramref name="grid"/>, destroying blocks no longer used. For code
         /// outside the editor; the editor goes through PatchGridAssetUndo.SetGrid.
         /// </summary>
-        public void SetGrid(PatchGrid grid)
+        internal void SetGrid(PatchGrid grid)
         {
             SetGrid(grid, out _, out PatchGridBlock[] dropped);
             foreach (PatchGridBlock b in dropped)
@@ -147,7 +147,7 @@ namespace GregoryTerrain
         /// Moves the older single array into new blocks, bit for bit (returned; not yet sub-assets: the
         /// editor adds them to the asset). Does nothing and returns none when the grid has blocks.
         /// </summary>
-        public PatchGridBlock[] MoveLegacyDataToBlocks()
+        internal PatchGridBlock[] MoveLegacyDataToBlocks()
         {
             if (!HasLegacyLayout) return Array.Empty<PatchGridBlock>();
             string error = CheckSerializedData();
@@ -187,7 +187,7 @@ namespace GregoryTerrain
         /// boundary point, its neighbours'): record these for Undo before the move. Empty while the grid
         /// still has the older layout (move its data to blocks first).
         /// </summary>
-        public PatchGridBlock[] BlocksTouchedByMove(int patch, int slot)
+        internal PatchGridBlock[] BlocksTouchedByMove(int patch, int slot)
         {
             CheckIndex(patch, slot);
             if (HasLegacyLayout) return Array.Empty<PatchGridBlock>();
@@ -268,18 +268,18 @@ namespace GregoryTerrain
                 e = PatchGridBlocks.CheckShape(Data(), PatchCount);
                 if (e != null) return e;
             }
-            double[][] data = Data();
-            for (int b = 0; b < data.Length; b++)
-                for (int k = 0; k < data[b].Length; k++)
-                {
-                    if (!double.IsFinite(data[b][k]))
-                    {
-                        int p = b * PatchGridBlocks.PatchesPerBlock + k / DoublesPerPatch;
-                        return $"control point {k % DoublesPerPatch / 3} of patch {p} has coordinate {k % 3} = " +
-                               data[b][k].ToString(CultureInfo.InvariantCulture) + ", must be finite";
-                    }
-                }
-            return null;
+            if (HasLegacyLayout) return PatchGrid.SerializedDataError(columns, rows, xLines, yLines, controlPoints);
+            // The same rules as the flat layout (Core's PatchGrid.Validate), on the blocks' patches.
+            try
+            {
+                GpuLayout.CheckSize(columns, rows);
+                new PatchGrid(columns, rows, xLines, yLines, PatchGridBlocks.ToPatches(Data(), PatchCount)).Validate();
+                return null;
+            }
+            catch (ArgumentException ex)
+            {
+                return ex.Message;
+            }
         }
 
         static string CheckLines(string field, double[] lines, int cells)

@@ -7,7 +7,7 @@ namespace GregoryTerrain
     /// up to 64 patches, 60 doubles each), saved as a hidden sub-asset of the grid. The grid is cut into
     /// blocks so that an edit records for Undo only the blocks it changes, not the whole grid.
     /// </summary>
-    public sealed class PatchGridBlock : ScriptableObject
+    internal sealed class PatchGridBlock : ScriptableObject
     {
         [Tooltip("The grid this block belongs to.")]
         [SerializeField] PatchGridAsset owner;

@@ -7,7 +7,7 @@ namespace GregoryTerrain
     /// </summary>
     public static class RangeFit
     {
-        /// <summary>Smallest range width the controllers produce (the deep-zoom goal of DESIGN 2).</summary>
+        /// <summary>Smallest range width the controllers produce (precision.md says what holds that deep).</summary>
         public const double MinWidth = 1e-7;
 
         /// <summary>A range of <paramref name="width"/> x <paramref name="height"/> centred on (cx, cy), inside [0,1]^2.</summary>

@@ -6,7 +6,7 @@ namespace GregoryTerrain
     /// normally sends <c>_Range</c> alone. The origin itself comes from Core's
     /// <see cref="RangeOrigin.For"/>; this type only decides when to ask for a new one.
     /// </summary>
-    public sealed class RangeOriginTracker
+    internal sealed class RangeOriginTracker
     {
         /// <summary>
         /// Re-snap once the range centre is farther from the origin than this many range widths: the

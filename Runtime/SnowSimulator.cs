@@ -32,6 +32,7 @@ namespace GregoryTerrain
     [AddComponentMenu("Gregory Terrain/Snow Simulator")]
     public sealed class SnowSimulator : MonoBehaviour
     {
+        /// <summary>The terrain material keyword this component turns on while it runs.</summary>
         public const string Keyword = "GT_SNOW";
 
         static class Ids
@@ -84,6 +85,7 @@ namespace GregoryTerrain
         bool _fieldNoise;
         int _terrainVersion, _fieldTerrainVersion = -1;
 
+        /// <summary>The simulation settings. Setting them validates them (ArgumentException naming the field and value); a new resolution starts a new, empty snow map.</summary>
         public SnowSettings Settings
         {
             get => settings;
@@ -112,6 +114,7 @@ namespace GregoryTerrain
             get => terrain;
             set { terrain = value; if (isActiveAndEnabled) Attach(); }
         }
+        /// <summary>Shaders/Snow/SnowSimulation.compute; set it before enabling.</summary>
         public ComputeShader Simulation { get => simulation; set => simulation = value; }
         /// <summary>Shaders/Snow/SnowField.compute; set it before enabling (its kernel is looked up in OnEnable).</summary>
         public ComputeShader FieldShader { get => fieldShader; set => fieldShader = value; }

@@ -10,7 +10,7 @@ namespace GregoryTerrain
     /// <c>(p % PatchesPerBlock) * DoublesPerPatch</c>: 20 control points (x, y, z) in GregoryPatch slot
     /// order, as in the flat layout (internals.md). The last block holds the remaining patches only.
     /// </summary>
-    public static class PatchGridBlocks
+    internal static class PatchGridBlocks
     {
         /// <summary>Patches per block: 64 x 60 doubles = 30,720 bytes of control points.</summary>
         public const int PatchesPerBlock = 64;

@@ -46,7 +46,7 @@ uint VertexCacheMaxTilePoints(uint limit) { return (limit + 1u) * (limit + 1u) +
 
 // Groups that share one tile's points (dispatch z). Why not one group a tile: the pass then lasts
 // as long as its largest tile, 4,229 points at L = 64 = 67 passes of one group while most units
-// idle (adaptive factors, 32 x 32 tiles, 0.6M triangles: 0.12 ms against 0.04 for uniform ones).
+// idle (performance.md, "Choices in the shaders, measured").
 uint VertexCacheGroupsPerTile(uint limit)
 {
     uint perGroup = GT_VERTEX_CACHE_VERTEX_GROUP * GT_VERTEX_CACHE_PASSES;
@@ -158,9 +158,9 @@ float3 UnpackCachedVaryings(uint bits)
 // (snowDepth bits, 0, 0, 0)]. The kernel computes what the fragment needs (the world normal through
 // the adapter's GT_ObjectToWorldNormal, encoded; the height weight), so the domain stage only
 // projects the position. uint4, not float4: the packed word is any bit pattern, NaNs included, and
-// integer loads and stores keep every bit. Why 16 bytes: the cached draw read 32 bytes a vertex
-// before, and halving that made it 1.0-1.7% faster at 2M-8M triangles on the H200 (two A/B runs,
-// performance.md); reading half of a 32-byte record changed nothing. The patch index is not kept
+// integer loads and stores keep every bit. Why 16 bytes: the cached draw's cost is its reads, and
+// a 16-byte record drew faster than a 32-byte one, while reading half of a 32-byte record did not
+// (performance.md, "Choices in the shaders, measured"). The patch index is not kept
 // (GT_DEBUG_PATCH_ID reads 0).
 uint4 VertexCacheRecordPart(TerrainVertexAttributes a, uint part)
 {

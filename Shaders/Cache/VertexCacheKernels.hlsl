@@ -143,10 +143,9 @@ float4 CachedTileFactorSample(uint tile, uint s, bool cellMoved)
 //     lane; then lane 0 assembles, keeps the cell's factors and writes them rounded. Anchored, the
 //     slots hold the whole cell and the hull clips it (ClippedCell.hlsl).
 // Why so wide: the factors are a chain of surface evaluations, and the chain's length is the pass's.
-// One lane a tile: ~50 evaluations (0.6M triangles, 32 x 32 tiles, H200: 0.1 ms of pre-pass against
-// 0.04 for uniform factors); one lane a piece: ~11 (0.061 ms); one sample a lane: 1 (0.045 ms, and
-// 0.051 -> 0.038 ms at 16 x 16 tiles, one run). Why the held way: that one evaluation is still most
-// of a pan's pre-pass (Documentation~/performance.md, "Anchored tiles").
+// One lane a tile: a chain of ~50 evaluations; one lane a piece: ~11; one sample a lane: 1, the
+// shortest pass (performance.md, "Choices in the shaders, measured"). Why the held way: that one
+// evaluation is still most of a pan's pre-pass (performance.md, "Anchored tiles").
 [numthreads(64, 1, 1)]
 void CacheTileFactors(uint3 group : SV_GroupID, uint lane : SV_GroupIndex)
 {

@@ -1,6 +1,6 @@
 // The one evaluation path from (draw patch, tess coordinate) to a shaded terrain vertex. The domain
 // stage (tessellated tiles) and vert_fallback (the instanced UV grid) both call TerrainVertex, so the
-// two draw paths cannot drift apart (DESIGN section 2).
+// two draw paths cannot drift apart.
 //
 //   tess coordinate --RangeToTerrainPoint--> global point q (hi/lo, bit-identical on shared edges)
 //     --FindPatch--> Gregory patch --PatchLocalUV--> (u, v) --GregoryEvaluate--> S, dS/du, dS/dv
@@ -34,9 +34,9 @@ struct TerrainVaryings
     float4 positionCS : SV_Position;
     // xy: the world normal, Lambert-encoded (NormalEncoding.hlsl); z: the height colour's weight s
     // of eq. 14 (GT_HEIGHT_COLOR, else 0), computed per vertex. Read them with VaryingsNormalWS and
-    // VaryingsHeightWeight. One interpolant of three numbers: on the H200 two interpolants made the
-    // tessellated draw 1.2x slower at 8M triangles, and four numbers instead of three 1.07x slower
-    // at 0.6M (internals.md, "Varyings").
+    // VaryingsHeightWeight. One interpolant of three numbers: a second interpolant, or a fourth
+    // number, made the tessellated draw measurably slower (performance.md, "Choices in the shaders,
+    // measured"; internals.md, "Varyings").
     float3 normalAndHeightWeight : TEXCOORD0;
 #if defined(GT_RECEIVE_SHADOWS)
     float3 positionWS : TEXCOORD6;   // main-light shadow lookup (adapter's GT_MainLightShadow)

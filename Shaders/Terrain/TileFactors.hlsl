@@ -231,8 +231,9 @@ float CentreErrorTessFactor(float3 cornerOS[4], float4 centre)
 }
 
 // One piece, its samples evaluated in turn: the hull stage's path (the kernel spreads the same
-// samples over its lanes). Not through TileFactorSamplePosition, whose branches on the sample number cost
-// the hull stage ~12% at 64 x 64 tiles (H200); the samples are the same functions.
+// samples over its lanes). Not through TileFactorSamplePosition, whose branches on the sample number
+// slow the hull stage down (performance.md, "Choices in the shaders, measured"); the samples are the
+// same functions.
 float TileFactorPiece(uint patch, uint piece, float3 cornerOS[4])
 {
     if (piece == 6u) return CentreErrorTessFactor(cornerOS, TileCentreSample(patch));

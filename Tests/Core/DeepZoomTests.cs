@@ -4,7 +4,7 @@ using NUnit.Framework;
 namespace GregoryTerrain.Tests
 {
     /// <summary>
-    /// Deep zoom (DESIGN section 2 "Precision", precision.md): the difference evaluation against the
+    /// Deep zoom (precision.md): the difference evaluation against the
     /// double reference, and the vertex jitter table, plain float vs the shipped path.
     /// </summary>
     [TestFixture]

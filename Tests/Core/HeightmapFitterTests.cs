@@ -24,7 +24,7 @@ namespace GregoryTerrain.Tests
             return a;
         }
 
-        public static HeightmapFit Fit5x5() => HeightmapFitter.Fit(Samples(129, 129), 129, 129, 5, 5);
+        internal static HeightmapFit Fit5x5() => HeightmapFitter.Fit(Samples(129, 129), 129, 129, 5, 5);
 
         // Stated tolerances: the terrain's heights span about 0.25 and its gaussians are about one
         // patch wide; a 5 x 5 grid must reproduce the samples to 1% of that range at worst (2.5e-3)
@@ -50,7 +50,7 @@ namespace GregoryTerrain.Tests
             double[] a = Samples(129, 129);
             HeightmapFit coarse = HeightmapFitter.Fit(a, 129, 129, 4, 4), fine = HeightmapFitter.Fit(a, 129, 129, 8, 8);
             TestContext.Out.WriteLine($"max error 4x4: {coarse.MaxError:E3}, 8x8: {fine.MaxError:E3} (ratio {coarse.MaxError / fine.MaxError:F1}); RMS {coarse.RmsError:E3}, {fine.RmsError:E3}");
-            // Cubic edges with cubic cross slopes: at least third order, so halving h divides the error by > 6.
+            // Least squares in C1 bicubics: fourth order on smooth data, so halving h divides the error by > 6.
             Assert.That(fine.MaxError, Is.LessThan(coarse.MaxError / 6));
             Assert.That(ContinuityMeasure.MaxNormalAngleDegrees(fine.Grid), Is.LessThan(0.1));
         }
@@ -77,9 +77,64 @@ namespace GregoryTerrain.Tests
         }
 
         [Test]
+        public void IsTheLeastSquaresOptimumOfItsSpace()
+        {
+            // Moving any one spline coefficient either way raises the sum of squared errors (measured
+            // on the Gregory grid itself): the fit is the optimum, up to the tiny smoothing term.
+            int w = 65, h = 49;
+            double[] a = Samples(w, h);
+            HeightmapFit fit = HeightmapFitter.Fit(a, w, h, 4, 3);
+            double best = SquaredError(fit.Grid, a, w, h);
+            Assert.That(Math.Sqrt(best / (w * h)), Is.EqualTo(fit.RmsError).Within(1e-12));
+            double[] c = fit.Surface.Coefficients;
+            var rng = new Random(27);
+            for (int trial = 0; trial < 12; trial++)
+            {
+                int k = rng.Next(c.Length);
+                foreach (double step in new[] { -1e-3, 1e-3 })
+                {
+                    var moved = (double[])c.Clone();
+                    moved[k] += step;
+                    double e = SquaredError(new SplineSurface(fit.Surface.X, fit.Surface.Y, moved).ToPatchGrid(), a, w, h);
+                    Assert.That(e, Is.GreaterThan(best), $"coefficient {k} moved by {step}");
+                }
+            }
+        }
+
+        static double SquaredError(PatchGrid g, double[] a, int w, int h)
+        {
+            double s = 0;
+            for (int r = 0; r < h; r++)
+                for (int c = 0; c < w; c++)
+                {
+                    double x = (double)c / (w - 1), y = (double)r / (h - 1);
+                    int p = g.FindPatch(x, y);
+                    Region reg = g.RegionOf(p);
+                    double e = GregoryEval.Position(g.Patches[p].Points, (x - reg.a) / reg.Width, (y - reg.b) / reg.Height).z - a[r * w + c];
+                    s += e * e;
+                }
+            return s;
+        }
+
+        [Test]
+        public void FitToTargetPicksTheFewestPatchesThatMeetIt()
+        {
+            double[] a = Samples(129, 129);
+            double target = HeightmapFitter.Fit(a, 129, 129, 6, 6).MaxError * 1.0001;
+            HeightmapFit f = HeightmapFitter.FitToTarget(a, 129, 129, target, FitErrorKind.Max, 64);
+            Assert.That(f.MaxError, Is.LessThanOrEqualTo(target));
+            Assert.That(f.Grid.Columns, Is.LessThanOrEqualTo(6));
+            Assert.That(HeightmapFitter.Fit(a, 129, 129, f.Grid.Columns - 1, f.Grid.Columns - 1).MaxError, Is.GreaterThan(target));
+            // Out of reach: the largest grid comes back, its error above the target.
+            HeightmapFit capped = HeightmapFitter.FitToTarget(a, 129, 129, 1e-12, FitErrorKind.Rms, 4);
+            Assert.That(capped.Grid.Columns, Is.EqualTo(4));
+            Assert.That(capped.RmsError, Is.GreaterThan(1e-12));
+        }
+
+        [Test]
         public void ReproducesAPlaneExactly()
         {
-            // A plane is reproduced by every step (interpolant, Hermite curves, cubic slopes).
+            // A plane lies in the spline space and the smoothing term vanishes on it.
             int w = 17, h = 9;
             var a = new double[w * h];
             for (int r = 0; r < h; r++)

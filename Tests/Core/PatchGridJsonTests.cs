@@ -11,7 +11,7 @@ namespace GregoryTerrain.Tests
             // Awkward doubles on purpose: thirds, tiny and huge magnitudes, -0, subnormals.
             var g = HeightmapFitter.Fit(HeightmapFitterTests.Samples(17, 13), 17, 13, 3, 2).Grid;
             g.Patch(0, 0)[GregoryPatch.P111] = new Double3(-0.0, 4.9e-324, 1.0 / 3.0);
-            g.Patch(2, 1)[GregoryPatch.P220] = new Double3(1e300, -2.2250738585072014e-308, 0.1);
+            g.Patch(2, 1)[GregoryPatch.P220] = new Double3(3.4e38, -2.2250738585072014e-308, 0.1);
             return g;
         }
 
@@ -75,7 +75,7 @@ namespace GregoryTerrain.Tests
         [Test]
         public void RejectsWrongCounts()
         {
-            Rejects(Good.Replace("\"columns\":2", "\"columns\":3"), "xLines", "has 3 numbers, need 4");
+            Rejects(Good.Replace("\"columns\":2", "\"columns\":3"), "xLines", "has 3 numbers, need columns + 1 = 4");
             Rejects(Good.Replace("\"xLines\":[0,0.5,1]", "\"xLines\":[0,1]"), "xLines", "has 2");
         }
 

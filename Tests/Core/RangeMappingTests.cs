@@ -50,7 +50,7 @@ namespace GregoryTerrain.Tests
         [Test]
         public void PrintedEq10IsWrongWhenCDiffersFromA()
         {
-            // The DESIGN example: c = 0, g = 1, patch [a, e] = [0.25, 0.5].
+            // A worked example: c = 0, g = 1, patch [a, e] = [0.25, 0.5].
             double c = 0.0, g = 1.0, a = 0.25, e = 0.5;
             double printed0 = RangeMapping.PrintedEq10(c, g, a, e, 0.0);
             double printed1 = RangeMapping.PrintedEq10(c, g, a, e, 1.0);

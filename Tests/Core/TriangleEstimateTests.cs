@@ -122,10 +122,12 @@ namespace GregoryTerrain.Tests
             Assert.That(Estimate(new TessellationSettings(8, 64f, 2f, 0f), Low), Is.Not.EqualTo(fine), "the camera decides the factors");
         }
 
-        [TestCase(TessellationPartitioning.Integer)]
-        [TestCase(TessellationPartitioning.FractionalOdd)]
-        public void TilesHeldAtTheMaxFactorAreCounted(TessellationPartitioning p)
+        // A bool, not the enum: NUnit runs only public test methods, and TessellationPartitioning is internal.
+        [TestCase(true)]
+        [TestCase(false)]
+        public void TilesHeldAtTheMaxFactorAreCounted(bool integer)
         {
+            var p = integer ? TessellationPartitioning.Integer : TessellationPartitioning.FractionalOdd;
             TriangleEstimate At(TessellationSettings tess) =>
                 TerrainTriangleEstimate.InView(Inputs(tess), Oblique, Screen, TerrainKeywords.Noise, p, 4096);
             var coarse = At(new TessellationSettings(8, 64f, 32f, 0f));

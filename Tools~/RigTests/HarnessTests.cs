@@ -269,7 +269,7 @@ namespace GregoryTerrain.Rig.Tests
         [Test]
         public void Tiles6x6Factor63_WithoutSplit_LavapipeDropsTriangles()
         {
-            // Documents why the split exists (DESIGN section 5): one draw of 147,456 vertices.
+            // Documents why the split exists (lavapipe drops vertices past 65,536 in one draw): 147,456 here.
             // If a future Mesa fixes the bug, this test fails and the default limit can go.
             float[] range = { 0.25f, 0.25f, 0.75f, 0.75f };
             string dir = MakeInputs("in_6x6_f63", 6, 63, range);

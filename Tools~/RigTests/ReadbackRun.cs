@@ -36,7 +36,7 @@ namespace GregoryTerrain.Rig.Tests
     /// vertex read back (internals.md, "Rig-only readback"), and the Core float path at the GPU's own
     /// tess coordinates to compare it with.
     /// </summary>
-    public sealed class ReadbackRun
+    internal sealed class ReadbackRun
     {
         public PatchGrid Grid;
         public TerrainInputs Inputs;

@@ -14,7 +14,10 @@ namespace GregoryTerrain.Rig.Tests
     public class UnityApiCheckTests
     {
         [Test]
-        public void UnitySideCodeCompilesAgainstTheDocumentedApi()
+        public void UnitySideCodeCompilesAgainstTheDocumentedApi() => Build();
+
+        /// <summary>Builds every UnityApiCheck project (Release); fails the calling test with the build's errors.</summary>
+        internal static void Build()
         {
             string project = PackageRoot.Combine("Tools~", "UnityApiCheck", "UnityApiCheck.csproj");
             var psi = new ProcessStartInfo("dotnet", $"build \"{project}\" -c Release -nologo")

@@ -4,7 +4,7 @@
 # the same view (the paper's zoom view). Prints vertices and triangles per range (pipeline
 # statistics: tessellation evaluation invocations and clipping invocations, the triangles entering the clipper).
 #   gt demo [--docs] [--no-setup] [--device SUBSTR] [--tiles M] [--factor F] [--width W] [--height H]
-# Writes .build/demo/demo_g<g>.png; with --docs also Documentation~/images/demo_g<g>.png (small RGB).
+# Writes .build/demo/demo_g<g>.png; with --docs also Documentation~/images/demo_g<g>.png (small indexed PNGs, png_palette.py).
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 docs=0 setup=1 device="" tiles=16 factor=15 width=640 height=480
 while [ $# -gt 0 ]; do
@@ -54,7 +54,7 @@ for g in 1.0 0.5 0.2 0.1 0.02; do
   printf '%-6s %-24s %12s %12s %14s\n' "$g" "0,0,$g,$g" "$verts" "$tris" "$nonsky"
   if [ "$docs" = 1 ]; then
     mkdir -p "$PKG_DIR/Documentation~/images"
-    python3 "$RIG_DIR/png_small.py" "$out/demo_g$g.png" "$PKG_DIR/Documentation~/images/demo_g$g.png"
+    python3 "$RIG_DIR/png_palette.py" "$out/demo_g$g.png" "$PKG_DIR/Documentation~/images/demo_g$g.png"
   fi
 done
 say "images: $out/demo_g*.png$([ "$docs" = 1 ] && echo " and Documentation~/images/demo_g*.png")"

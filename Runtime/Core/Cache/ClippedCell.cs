@@ -7,7 +7,7 @@ namespace GregoryTerrain
     /// first axis at t.x) and c, d (the same, one step along the second axis), then of the two at
     /// t.y. t = 0 reads a alone; t.y = 0 reads a and b. HLSL <c>CellPointBlend</c>.
     /// </summary>
-    public struct CellPointBlend : IEquatable<CellPointBlend>
+    internal struct CellPointBlend : IEquatable<CellPointBlend>
     {
         public int a, b, c, d;
         public Float2 t;
@@ -27,7 +27,7 @@ namespace GregoryTerrain
     /// side. So a pan that keeps the cells changes nothing in the cache, and no vertex but those on the
     /// range's edge moves (no swimming in the clipped tiles either).
     /// </summary>
-    public static class ClippedCell
+    internal static class ClippedCell
     {
         /// <summary>Exactly (0, 1, 0, 1): the tile is its whole cell. HLSL <c>CellKeptWhole</c>.</summary>
         public static bool CellKeptWhole(Float4 kept) => kept.x == 0f && kept.y == 1f && kept.z == 0f && kept.w == 1f;

@@ -4,7 +4,7 @@ using System.Collections.Generic;
 namespace GregoryTerrain
 {
     /// <summary>A tile's six tessellation factors. HLSL <c>TileFactorSet</c> (TileFactors.hlsl).</summary>
-    public struct TileFactorSet : IEquatable<TileFactorSet>
+    internal struct TileFactorSet : IEquatable<TileFactorSet>
     {
         /// <summary>Quad domain: x is the edge u = 0, y v = 0, z u = 1, w v = 1.</summary>
         public Float4 edge;
@@ -29,7 +29,7 @@ namespace GregoryTerrain
     /// With "integer" partitioning a factor-F edge's vertices sit at exactly k / F and the inside grid
     /// at (i / Iu, j / Iv), which is what makes the slots known in advance.
     /// </summary>
-    public static class VertexCache
+    internal static class VertexCache
     {
         /// <summary>The hardware's largest tessellation factor.</summary>
         public const float MaxFactor = TessellationSettings.HardwareMaxFactor;

@@ -18,7 +18,7 @@ namespace GregoryTerrain
     /// <c>M^2 S(L) R</c> uint4 (16 bytes each).</item>
     /// </list>
     /// </summary>
-    public static class VertexCacheBudget
+    internal static class VertexCacheBudget
     {
         /// <summary>float4 per tile in <c>_TileFactors</c>' first part: (edges 0-3), (inside 0-1, culled, evaluated).</summary>
         public const int TileFactorFloat4s = 2;

@@ -4,7 +4,7 @@ using System.Globalization;
 namespace GregoryTerrain
 {
     /// <summary>
-    /// Chiyokura-Kimura G1 joins (DESIGN section 1, eq. 7-9). Along a shared edge with edge vectors
+    /// Chiyokura-Kimura G1 joins (the paper's eq. 7-9; internals.md, "The Gregory patch"). Along a shared edge with edge vectors
     /// C0, C1, C2 (differences of consecutive boundary points, in the edge's parameter direction), the
     /// neighbour's cross-boundary vectors A0..A3 and this side's B0..B3 (each the difference from an
     /// edge point to the next point inwards), the two patches share a tangent plane all along the
@@ -23,7 +23,7 @@ namespace GregoryTerrain
     /// the neighbour's own A1, A2 (a fitter's data) and eq. 8-9 still give an exact G1 join; otherwise
     /// it rewrites the neighbour's interior points to the linear A.</para>
     /// </summary>
-    public static partial class G1Builder
+    internal static partial class G1Builder
     {
         /// <summary>Relative difference of k0 and k1 below which k is treated as constant.</summary>
         public const double ConstantKTolerance = 1e-9;

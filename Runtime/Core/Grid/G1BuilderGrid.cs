@@ -3,7 +3,7 @@ using System.Globalization;
 
 namespace GregoryTerrain
 {
-    public static partial class G1Builder
+    internal static partial class G1Builder
     {
         /// <summary>
         /// Makes every shared edge of <paramref name="grid"/> G1 by setting the interior points on both

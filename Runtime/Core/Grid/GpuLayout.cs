@@ -15,7 +15,7 @@ namespace GregoryTerrain
     /// </list>
     /// float4, never float3: a float3 StructuredBuffer has a 12-byte stride in D3D and 16 in Vulkan.
     /// </summary>
-    public static class GpuLayout
+    internal static class GpuLayout
     {
         /// <summary>Floats per float4 element.</summary>
         public const int Float4Size = 4;
@@ -50,23 +50,13 @@ namespace GregoryTerrain
         public static long ControlPointBytes(long patches) => patches * ControlPointsPerPatch * Float4Stride;
 
         /// <summary>
-        /// Throws ArgumentException unless the grid is valid and fits the buffers: at most
-        /// <see cref="MaxPatches"/> patches, _ControlPoints within <see cref="MaxBufferBytes"/>,
-        /// every control point finite in float, and grid lines still strictly increasing in float
-        /// (otherwise a patch would be empty on the GPU and FindPatch would disagree with the CPU).
+        /// Throws ArgumentException unless the grid can be packed: <see cref="PatchGrid.Validate"/>
+        /// holds every rule the buffers need (patch count, float range, float grid lines).
         /// </summary>
         public static void CheckPackable(PatchGrid grid)
         {
             if (grid == null) throw new ArgumentNullException(nameof(grid));
-            CheckSize(grid.Columns, grid.Rows);
             grid.Validate();
-            CheckFloatLines(grid.XLines, "xLines");
-            CheckFloatLines(grid.YLines, "yLines");
-            for (int p = 0; p < grid.PatchCount; p++)
-                for (int k = 0; k < GregoryPatch.SlotCount; k++)
-                    if (!((Float3)grid.Patches[p][k]).IsFinite)
-                        throw new ArgumentException(string.Format(CultureInfo.InvariantCulture,
-                            "patches: patch ({0}, {1}) slot {2} = {3} overflows float.", p % grid.Columns, p / grid.Columns, k, grid.Patches[p][k]), nameof(grid));
         }
 
         /// <summary>Throws ArgumentException if an n x m grid would not fit the GPU buffers.</summary>
@@ -75,18 +65,9 @@ namespace GregoryTerrain
             PatchGrid.CheckShape(columns, rows);
             long patches = (long)columns * rows;
             if (patches > MaxPatches)
-                throw new ArgumentException($"columns * rows = {patches} patches is more than {MaxPatches} (2^24, the most a float index can address).", nameof(columns));
+                throw new ArgumentException($"columns * rows = {columns} * {rows} = {patches} patches is more than {MaxPatches} (2^24, the most a float index can address).", nameof(columns));
             if (ControlPointBytes(patches) > MaxBufferBytes)
-                throw new ArgumentException($"columns * rows = {patches} patches need {ControlPointBytes(patches)} bytes of _ControlPoints, more than {MaxBufferBytes} (2 GiB).", nameof(columns));
-        }
-
-        static void CheckFloatLines(double[] lines, string field)
-        {
-            for (int k = 1; k < lines.Length; k++)
-                if (!((float)lines[k] > (float)lines[k - 1]))
-                    throw new ArgumentException(string.Format(CultureInfo.InvariantCulture,
-                        "{0}[{1}] = {2:R} and {0}[{3}] = {4:R} round to the same float {5:R}: the patch between them would be empty on the GPU.",
-                        field, k, lines[k], k - 1, lines[k - 1], (float)lines[k]), field);
+                throw new ArgumentException($"columns * rows = {columns} * {rows} = {patches} patches need {ControlPointBytes(patches)} bytes of _ControlPoints, more than the GPU buffer limit of {MaxBufferBytes} (2 GiB, {MaxBufferBytes / ControlPointBytes(1)} patches).", nameof(columns));
         }
 
         /// <summary>_ControlPoints: 20 float4 per patch, (x, y, z, 1), patch-major, slot order.</summary>

@@ -1,205 +1,236 @@
 using System;
-using System.Collections.Generic;
+using System.Globalization;
+using System.IO;
 using System.Text;
 
 namespace GregoryTerrain
 {
-    internal enum JsonKind { Object, Array, String, Number, True, False, Null }
-
-    /// <summary>A parsed JSON value with where it started (1-based line and column), for error messages.</summary>
-    internal sealed class JsonValue
-    {
-        public JsonKind Kind;
-        public string Text;                 // string contents, or a number's literal text
-        public List<JsonValue> Items;       // array items
-        public List<KeyValuePair<string, JsonValue>> Members; // object members, in order
-        public int Line, Column;
-
-        public JsonValue Get(string name)
-        {
-            if (Members == null) return null;
-            foreach (var kv in Members) if (kv.Key == name) return kv.Value;
-            return null;
-        }
-    }
+    /// <summary>What the next JSON value is, from its first character.</summary>
+    internal enum JsonKind { Object, Array, String, Number, True, False, Null, End, Invalid }
 
     /// <summary>
-    /// A small strict JSON (RFC 8259) reader for Core's file formats: no comments, no trailing
-    /// commas, no NaN/Infinity literals, nesting limited to 64. Throws FormatException with the line
-    /// and column of the problem.
+    /// A small strict JSON (RFC 8259) pull tokenizer for Core's file formats: no comments, no
+    /// trailing commas, no NaN/Infinity literals. It streams from a TextReader through a fixed
+    /// buffer and builds no tree, so the caller reads numbers straight into its own arrays and
+    /// memory stays bounded by what the caller keeps. Nesting is the caller's (it asks for each
+    /// bracket), so a deeply nested file is refused at its first unexpected bracket, with no
+    /// recursion. Strings and numbers longer than a caller-given limit are refused or quoted short.
+    /// Throws FormatException with the 1-based line and column of the problem.
     /// </summary>
     internal sealed class JsonReader
     {
-        const int MaxDepth = 64;
-        readonly string s;
-        int pos, line = 1, lineStart;
+        /// <summary>Longest number literal accepted (a double never needs more than ~770 digits to round-trip; 1000 leaves room).</summary>
+        public const int MaxNumberLength = 1000;
 
-        public JsonReader(string text) { s = text; }
+        readonly TextReader _reader;
+        readonly char[] _buffer = new char[1 << 16];
+        readonly StringBuilder _token = new StringBuilder();
+        readonly char[] _number = new char[MaxNumberLength];
+        int _numberLength;
+        int _length, _index;
+        long _line = 1, _column = 1;
 
-        public JsonValue ReadDocument()
+        public JsonReader(TextReader reader) { _reader = reader ?? throw new ArgumentNullException(nameof(reader)); }
+
+        /// <summary>Line and column of the next character (after <see cref="Peek"/>, of the next token).</summary>
+        public long Line => _line;
+        public long Column => _column;
+
+        int PeekChar()
         {
-            SkipSpace();
-            JsonValue v = ReadValue(0);
-            SkipSpace();
-            if (pos < s.Length) throw Error($"unexpected '{s[pos]}' after the end of the document");
-            return v;
+            if (_index < _length) return _buffer[_index];
+            _length = _reader.Read(_buffer, 0, _buffer.Length);
+            _index = 0;
+            return _length > 0 ? _buffer[0] : -1;
         }
 
-        JsonValue ReadValue(int depth)
+        char NextChar()
         {
-            if (depth > MaxDepth) throw Error("nesting deeper than " + MaxDepth);
-            if (pos >= s.Length) throw Error("unexpected end of input (the file is truncated)");
-            var v = new JsonValue { Line = line, Column = pos - lineStart + 1 };
-            char c = s[pos];
-            if (c == '{') ReadObject(v, depth);
-            else if (c == '[') ReadArray(v, depth);
-            else if (c == '"') { v.Kind = JsonKind.String; v.Text = ReadString(); }
-            else if (c == '-' || (c >= '0' && c <= '9')) { v.Kind = JsonKind.Number; v.Text = ReadNumber(); }
-            else if (Literal("true")) v.Kind = JsonKind.True;
-            else if (Literal("false")) v.Kind = JsonKind.False;
-            else if (Literal("null")) v.Kind = JsonKind.Null;
-            else throw Error($"unexpected '{Snippet()}', expected a value (JSON has no NaN or Infinity)");
-            return v;
+            int c = PeekChar();
+            if (c < 0) throw Error("unexpected end of input (the file is truncated)");
+            _index++;
+            if (c == '\n') { _line++; _column = 1; } else _column++;
+            return (char)c;
         }
 
-        void ReadObject(JsonValue v, int depth)
+        void SkipSpace()
         {
-            v.Kind = JsonKind.Object;
-            v.Members = new List<KeyValuePair<string, JsonValue>>();
-            pos++;
-            SkipSpace();
-            if (Peek() == '}') { pos++; return; }
             while (true)
             {
-                SkipSpace();
-                if (Peek() != '"') throw Error("expected a member name in quotes");
-                string name = ReadString();
-                SkipSpace();
-                Expect(':');
-                SkipSpace();
-                v.Members.Add(new KeyValuePair<string, JsonValue>(name, ReadValue(depth + 1)));
-                SkipSpace();
-                if (Peek() == ',') { pos++; continue; }
-                Expect('}');
-                return;
+                int c = PeekChar();
+                if (c != ' ' && c != '\t' && c != '\r' && c != '\n') return;
+                NextChar();
             }
         }
 
-        void ReadArray(JsonValue v, int depth)
+        /// <summary>Skips white space and says what the next value is (End at the end of input).</summary>
+        public JsonKind Peek()
         {
-            v.Kind = JsonKind.Array;
-            v.Items = new List<JsonValue>();
-            pos++;
             SkipSpace();
-            if (Peek() == ']') { pos++; return; }
-            while (true)
+            int c = PeekChar();
+            switch (c)
             {
-                SkipSpace();
-                v.Items.Add(ReadValue(depth + 1));
-                SkipSpace();
-                if (Peek() == ',') { pos++; continue; }
-                Expect(']');
-                return;
+                case -1: return JsonKind.End;
+                case '{': return JsonKind.Object;
+                case '[': return JsonKind.Array;
+                case '"': return JsonKind.String;
+                case 't': return JsonKind.True;
+                case 'f': return JsonKind.False;
+                case 'n': return JsonKind.Null;
+                default: return c == '-' || (c >= '0' && c <= '9') ? JsonKind.Number : JsonKind.Invalid;
             }
         }
 
-        string ReadString()
+        /// <summary>Consumes <paramref name="c"/> (after white space) or throws.</summary>
+        public void Expect(char c)
         {
-            pos++; // opening quote
-            var sb = new StringBuilder();
+            SkipSpace();
+            int n = PeekChar();
+            if (n != c) throw Error($"unexpected {Describe(n)}, expected '{c}'");
+            NextChar();
+        }
+
+        /// <summary>After an item of an array or object: true at ',' (another follows), false at <paramref name="close"/>.</summary>
+        public bool Continues(char close)
+        {
+            SkipSpace();
+            int n = PeekChar();
+            if (n == ',') { NextChar(); return true; }
+            if (n == close) { NextChar(); return false; }
+            throw Error($"unexpected {Describe(n)}, expected ',' or '{close}'");
+        }
+
+        /// <summary>True (and consumed) when the next character is <paramref name="close"/>: an empty array or object.</summary>
+        public bool TryClose(char close)
+        {
+            SkipSpace();
+            if (PeekChar() != close) return false;
+            NextChar();
+            return true;
+        }
+
+        /// <summary>Throws unless only white space is left.</summary>
+        public void ExpectEnd()
+        {
+            SkipSpace();
+            int n = PeekChar();
+            if (n >= 0) throw Error($"unexpected {Describe(n)} after the end of the document");
+        }
+
+        /// <summary>
+        /// A string value. At most <paramref name="keep"/> characters are kept (the rest is read and
+        /// checked but dropped), and <paramref name="length"/> is the full length, so a huge value is
+        /// never held nor echoed whole.
+        /// </summary>
+        public string ReadString(int keep, out long length)
+        {
+            SkipSpace();
+            if (PeekChar() != '"') throw Error($"unexpected {Describe(PeekChar())}, expected a string");
+            NextChar();
+            _token.Clear();
+            length = 0;
             while (true)
             {
-                if (pos >= s.Length) throw Error("unexpected end of input inside a string (the file is truncated)");
-                char c = s[pos++];
-                if (c == '"') return sb.ToString();
+                int c = PeekChar();
+                if (c < 0) throw Error("unexpected end of input inside a string (the file is truncated)");
+                NextChar();
+                if (c == '"') return _token.ToString();
                 if (c < ' ') throw Error("control character inside a string");
-                if (c != '\\') { sb.Append(c); continue; }
-                if (pos >= s.Length) throw Error("unexpected end of input inside a string (the file is truncated)");
-                char e = s[pos++];
-                switch (e)
-                {
-                    case '"': sb.Append('"'); break;
-                    case '\\': sb.Append('\\'); break;
-                    case '/': sb.Append('/'); break;
-                    case 'b': sb.Append('\b'); break;
-                    case 'f': sb.Append('\f'); break;
-                    case 'n': sb.Append('\n'); break;
-                    case 'r': sb.Append('\r'); break;
-                    case 't': sb.Append('\t'); break;
-                    case 'u':
-                        if (pos + 4 > s.Length) throw Error("truncated \\u escape");
-                        int code = 0;
-                        for (int k = 0; k < 4; k++)
-                        {
-                            int h = Hex(s[pos++]);
-                            if (h < 0) throw Error("bad hex digit in \\u escape");
-                            code = code * 16 + h;
-                        }
-                        sb.Append((char)code);
-                        break;
-                    default: throw Error($"bad escape '\\{e}'");
-                }
+                char v = (char)c;
+                if (c == '\\') v = Escape();
+                if (length++ < keep) _token.Append(v);
+            }
+        }
+
+        char Escape()
+        {
+            char e = NextChar();
+            switch (e)
+            {
+                case '"': return '"';
+                case '\\': return '\\';
+                case '/': return '/';
+                case 'b': return '\b';
+                case 'f': return '\f';
+                case 'n': return '\n';
+                case 'r': return '\r';
+                case 't': return '\t';
+                case 'u':
+                    int code = 0;
+                    for (int k = 0; k < 4; k++)
+                    {
+                        int h = Hex(NextChar());
+                        if (h < 0) throw Error("bad hex digit in \\u escape");
+                        code = code * 16 + h;
+                    }
+                    return (char)code;
+                default: throw Error($"bad escape '\\{e}'");
             }
         }
 
         static int Hex(char c) => c >= '0' && c <= '9' ? c - '0' : c >= 'a' && c <= 'f' ? c - 'a' + 10 : c >= 'A' && c <= 'F' ? c - 'A' + 10 : -1;
 
-        /// <summary>The literal text of a number, checked against JSON's grammar.</summary>
-        string ReadNumber()
+        /// <summary>
+        /// A number, checked against JSON's grammar, as a double; <see cref="NumberText"/> is its
+        /// literal (at most <see cref="MaxNumberLength"/> characters). A literal beyond double's
+        /// range gives an infinity: the caller names it. Parsed from a fixed buffer: no allocation.
+        /// </summary>
+        public double ReadNumber()
         {
-            int start = pos;
-            if (Peek() == '-') pos++;
-            if (Peek() == '0') pos++;
-            else if (IsDigit(Peek())) while (IsDigit(Peek())) pos++;
-            else throw Error("bad number: expected a digit");
-            if (Peek() == '.')
+            SkipSpace();
+            _numberLength = 0;
+            if (PeekChar() == '-') Take();
+            if (PeekChar() == '0') Take();
+            else if (IsDigit(PeekChar())) TakeDigits();
+            else throw Error($"unexpected {Describe(PeekChar())}, expected a number (JSON has no NaN or Infinity)");
+            if (PeekChar() == '.')
             {
-                pos++;
-                if (!IsDigit(Peek())) throw Error("bad number: expected a digit after '.'");
-                while (IsDigit(Peek())) pos++;
+                Take();
+                if (!IsDigit(PeekChar())) throw Error($"bad number: unexpected {Describe(PeekChar())} after '.', expected a digit");
+                TakeDigits();
             }
-            if (Peek() == 'e' || Peek() == 'E')
+            if (PeekChar() == 'e' || PeekChar() == 'E')
             {
-                pos++;
-                if (Peek() == '+' || Peek() == '-') pos++;
-                if (!IsDigit(Peek())) throw Error("bad number: expected a digit in the exponent");
-                while (IsDigit(Peek())) pos++;
+                Take();
+                if (PeekChar() == '+' || PeekChar() == '-') Take();
+                if (!IsDigit(PeekChar())) throw Error($"bad number: unexpected {Describe(PeekChar())} in the exponent, expected a digit");
+                TakeDigits();
             }
-            return s.Substring(start, pos - start);
+            int next = PeekChar();
+            if (!(next < 0 || next == ',' || next == ']' || next == '}' || next == ' ' || next == '\t' || next == '\r' || next == '\n'))
+                throw Error($"bad number: unexpected {Describe(next)} after {NumberText}");
+            // The grammar is checked; only a magnitude beyond double's range fails to parse (on
+            // runtimes that throw rather than return an infinity).
+            if (!double.TryParse(new ReadOnlySpan<char>(_number, 0, _numberLength), NumberStyles.Float, CultureInfo.InvariantCulture, out double d))
+                d = _number[0] == '-' ? double.NegativeInfinity : double.PositiveInfinity;
+            return d;
         }
 
-        static bool IsDigit(char c) => c >= '0' && c <= '9';
+        /// <summary>The literal of the last number read (for messages).</summary>
+        public string NumberText => new string(_number, 0, _numberLength);
 
-        bool Literal(string word)
+        void TakeDigits() { while (IsDigit(PeekChar())) Take(); }
+
+        void Take()
         {
-            if (string.CompareOrdinal(s, pos, word, 0, word.Length) != 0) return false;
-            pos += word.Length;
-            return true;
+            if (_numberLength >= MaxNumberLength) throw Error($"a number longer than {MaxNumberLength} characters");
+            _number[_numberLength++] = NextChar();
         }
 
-        char Peek() => pos < s.Length ? s[pos] : '\0';
+        static bool IsDigit(int c) => c >= '0' && c <= '9';
 
-        void Expect(char c)
+        /// <summary>Consumes a literal true, false or null.</summary>
+        public void ReadLiteral(string word)
         {
-            if (pos >= s.Length) throw Error($"unexpected end of input, expected '{c}' (the file is truncated)");
-            if (s[pos] != c) throw Error($"unexpected '{s[pos]}', expected '{c}'");
-            pos++;
+            SkipSpace();
+            foreach (char w in word)
+                if (PeekChar() != w) throw Error($"unexpected {Describe(PeekChar())}, expected '{word}'");
+                else NextChar();
         }
 
-        void SkipSpace()
-        {
-            while (pos < s.Length)
-            {
-                char c = s[pos];
-                if (c == '\n') { line++; lineStart = pos + 1; }
-                else if (c != ' ' && c != '\t' && c != '\r') return;
-                pos++;
-            }
-        }
+        static string Describe(int c) => c < 0 ? "end of input (the file is truncated)" : c < ' ' ? string.Format(CultureInfo.InvariantCulture, "character U+{0:X4}", c) : $"'{(char)c}'";
 
-        string Snippet() => s.Substring(pos, Math.Min(12, s.Length - pos));
-
-        FormatException Error(string what) =>
-            new FormatException($"JSON: {what} (line {line}, column {pos - lineStart + 1}).");
+        public FormatException Error(string what) =>
+            new FormatException(string.Format(CultureInfo.InvariantCulture, "JSON: {0} (line {1}, column {2}).", what, _line, _column));
     }
 }

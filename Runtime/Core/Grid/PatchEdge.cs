@@ -3,7 +3,7 @@ using System;
 namespace GregoryTerrain
 {
     /// <summary>The four boundary edges of a patch: u = 0, u = 1 (parameter v), v = 0, v = 1 (parameter u).</summary>
-    public enum PatchSide { U0, U1, V0, V1 }
+    internal enum PatchSide { U0, U1, V0, V1 }
 
     /// <summary>
     /// Which slots lie on an edge and next to it. Along edge <c>side</c>, point k (0..3, in the
@@ -14,7 +14,7 @@ namespace GregoryTerrain
     /// The cross-boundary vector <c>D_k = P[InnerSlot] - P[EdgeSlot]</c> gives
     /// <c>dS/d(inwards) = 3 sum_k B3_k(t) D_k</c> on the edge.
     /// </summary>
-    public static class PatchEdge
+    internal static class PatchEdge
     {
         static readonly int[][] Edge =
         {

@@ -10,7 +10,7 @@ namespace GregoryTerrain
     /// nulls); <see cref="Validate"/> checks the contents (PatchGridValidation.cs). Mirrors
     /// <c>Shaders/Grid/PatchGrid.hlsl</c> for <see cref="FindPatch"/> and <see cref="FindInterval(ReadOnlySpan{float}, float)"/>.
     /// </summary>
-    public sealed partial class PatchGrid
+    internal sealed partial class PatchGrid
     {
         /// <summary>n: patches along x.</summary>
         public int Columns { get; }
@@ -73,8 +73,11 @@ namespace GregoryTerrain
         public static double Third(double a, double b, int k) => k == 0 ? a : k == 3 ? b : a + (b - a) * k / 3.0;
 
         /// <summary>A flat (z = 0) grid on uniform lines whose patches are bilinear in x, y.</summary>
-        public static PatchGrid CreateFlat(int columns, int rows) =>
-            CreateFlat(columns, rows, UniformLines(columns), UniformLines(rows));
+        public static PatchGrid CreateFlat(int columns, int rows)
+        {
+            CheckShape(columns, rows);
+            return CreateFlat(columns, rows, UniformLines(columns), UniformLines(rows));
+        }
 
         /// <summary>A flat (z = 0) grid on the given lines; each patch's x, y are linear in u, v.</summary>
         public static PatchGrid CreateFlat(int columns, int rows, double[] xLines, double[] yLines)

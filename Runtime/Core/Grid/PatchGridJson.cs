@@ -1,6 +1,7 @@
 using System;
 using System.Collections.Generic;
 using System.Globalization;
+using System.IO;
 using System.Text;
 
 namespace GregoryTerrain
@@ -15,7 +16,7 @@ namespace GregoryTerrain
     /// (malformed or truncated JSON, wrong format or version, wrong counts, missing fields, non-finite
     /// numbers, a grid that fails <see cref="PatchGrid.Validate"/>).
     /// </summary>
-    public static class PatchGridJson
+    internal static class PatchGridJson
     {
         public const string FormatName = "gregory-terrain-grid";
         public const int Version = 1;
@@ -74,42 +75,83 @@ namespace GregoryTerrain
         public static PatchGrid Read(string json)
         {
             if (json == null) throw new ArgumentNullException(nameof(json));
-            JsonValue root = new JsonReader(json).ReadDocument();
-            if (root.Kind != JsonKind.Object) throw Fail(root, "the document", "expected an object");
+            using (var reader = new StringReader(json)) return Read(reader);
+        }
 
-            JsonValue format = Field(root, "format", JsonKind.String);
-            if (format.Text != FormatName)
-                throw Fail(format, "format", $"is \"{format.Text}\", expected \"{FormatName}\"");
-            JsonValue version = Field(root, "version", JsonKind.Number);
-            if (ToInt(version, "version") != Version)
-                throw Fail(version, "version", $"is {version.Text}, this reader knows version {Version} only");
-            int n = ToInt(Field(root, "columns", JsonKind.Number), "columns");
-            int m = ToInt(Field(root, "rows", JsonKind.Number), "rows");
-            if (n < 1) throw Fail(root.Get("columns"), "columns", $"is {n}, need at least 1");
-            if (m < 1) throw Fail(root.Get("rows"), "rows", $"is {m}, need at least 1");
-            if ((long)n * m > int.MaxValue) throw Fail(root, "columns * rows", $"{(long)n * m} is too many patches");
+        /// <summary>
+        /// Reads a grid file: refuses a folder, a missing file or one over
+        /// <see cref="InputLimits.MaxJsonBytes"/> before reading, then streams it (<see cref="Read(TextReader)"/>).
+        /// Throws IOException for the file, FormatException for its contents.
+        /// </summary>
+        public static PatchGrid ReadFile(string path)
+        {
+            InputLimits.CheckFileToRead(path, InputLimits.MaxJsonBytes);
+            using (var reader = new StreamReader(path, Encoding.UTF8, true, 1 << 16)) return Read(reader);
+        }
 
-            double[] xl = Numbers(Field(root, "xLines", JsonKind.Array), "xLines", n + 1);
-            double[] yl = Numbers(Field(root, "yLines", JsonKind.Array), "yLines", m + 1);
-            JsonValue pa = Field(root, "patches", JsonKind.Array);
-            if (pa.Items.Count != n * m)
-                throw Fail(pa, "patches", $"has {pa.Items.Count} patches, columns * rows = {n * m}");
-            var patches = new GregoryPatch[n * m];
-            for (int p = 0; p < patches.Length; p++)
-            {
-                string path = $"patches[{p}] (patch ({p % n}, {p / n}))";
-                JsonValue pv = pa.Items[p];
-                if (pv.Kind != JsonKind.Array) throw Fail(pv, path, "expected an array of 20 points");
-                if (pv.Items.Count != GregoryPatch.SlotCount) throw Fail(pv, path, $"has {pv.Items.Count} points, need {GregoryPatch.SlotCount}");
-                var patch = new GregoryPatch();
-                for (int k = 0; k < GregoryPatch.SlotCount; k++)
+        /// <summary>
+        /// Streams a grid from <paramref name="reader"/>: numbers go straight into the control points,
+        /// with no tree in between, so memory is the grid plus a fixed buffer. Members may come in
+        /// any order; each must appear once, and unknown members are refused (a misspelt name is
+        /// named, not ignored). Throws FormatException naming the field, the value (quoted short) and
+        /// the line/column.
+        /// </summary>
+        public static PatchGrid Read(TextReader reader)
+        {
+            if (reader == null) throw new ArgumentNullException(nameof(reader));
+            var r = new JsonReader(reader);
+            if (r.Peek() != JsonKind.Object) throw Fail(r, "the document", "expected an object");
+            r.Expect('{');
+            var seen = new HashSet<string>(StringComparer.Ordinal);
+            int n = 0, m = 0;
+            double[] xl = null, yl = null;
+            List<GregoryPatch> patches = null;
+            long patchesLine = 0, patchesColumn = 0;
+            if (!r.TryClose('}'))
+                do
                 {
-                    double[] c = Numbers(pv.Items[k], $"{path}[{k}]", 3);
-                    patch[k] = new Double3(c[0], c[1], c[2]);
-                }
-                patches[p] = patch;
-            }
-            var grid = new PatchGrid(n, m, xl, yl, patches);
+                    r.Peek();
+                    long line = r.Line, column = r.Column;
+                    string name = r.ReadString(InputLimits.QuotedLength + 1, out long nameLength);
+                    if (Array.IndexOf(Members, name) < 0 || nameLength != name.Length)
+                        throw Fail(line, column, $"member \"{InputLimits.Quote(name, nameLength)}\"", $"is not part of the format (expected {string.Join(", ", Members)})");
+                    if (!seen.Add(name)) throw Fail(line, column, name, "appears twice (each member must appear once)");
+                    r.Expect(':');
+                    switch (name)
+                    {
+                        case "format":
+                            Kind(r, name, JsonKind.String);
+                            long fl = r.Line, fc = r.Column;
+                            string format = r.ReadString(InputLimits.QuotedLength + 1, out long formatLength);
+                            if (format != FormatName || formatLength != format.Length)
+                                throw Fail(fl, fc, "format", $"is \"{InputLimits.Quote(format, formatLength)}\", expected \"{FormatName}\"");
+                            break;
+                        case "version":
+                            long vl = r.Line, vc = r.Column;
+                            int version = ReadInt(r, name, out string vt);
+                            if (version != Version) throw Fail(vl, vc, "version", $"is {vt}, this reader knows version {Version} only");
+                            break;
+                        case "columns": n = ReadCount(r, name); break;
+                        case "rows": m = ReadCount(r, name); break;
+                        case "xLines": xl = ReadLines(r, name); break;
+                        case "yLines": yl = ReadLines(r, name); break;
+                        case "patches":
+                            r.Peek();
+                            patchesLine = r.Line; patchesColumn = r.Column;
+                            patches = ReadPatches(r, n);
+                            break;
+                    }
+                } while (r.Continues('}'));
+            r.ExpectEnd();
+
+            foreach (string name in Members)
+                if (!seen.Contains(name)) throw Fail(r, name, "is missing");
+            CheckGridSize(r, n, m);
+            if (xl.Length != n + 1) throw Fail(r, "xLines", $"has {xl.Length} numbers, need columns + 1 = {n + 1}");
+            if (yl.Length != m + 1) throw Fail(r, "yLines", $"has {yl.Length} numbers, need rows + 1 = {m + 1}");
+            if (patches.Count != n * m)
+                throw Fail(patchesLine, patchesColumn, "patches", $"has {patches.Count} patches, columns * rows = {n * m}");
+            var grid = new PatchGrid(n, m, xl, yl, patches.ToArray());
             try
             {
                 grid.Validate();
@@ -121,39 +163,158 @@ namespace GregoryTerrain
             return grid;
         }
 
-        static JsonValue Field(JsonValue obj, string name, JsonKind kind)
+        static readonly string[] Members = { "format", "version", "columns", "rows", "xLines", "yLines", "patches" };
+
+        static void CheckGridSize(JsonReader r, int n, int m)
         {
-            JsonValue v = obj.Get(name);
-            if (v == null) throw Fail(obj, name, "is missing");
-            if (v.Kind != kind) throw Fail(v, name, $"is a {v.Kind.ToString().ToLowerInvariant()}, expected a {kind.ToString().ToLowerInvariant()}");
+            try { GpuLayout.CheckSize(n, m); }
+            catch (ArgumentException ex) { throw Fail(r, "columns * rows", ex.Message); }
+        }
+
+        /// <summary>A number, with a syntax error inside it blamed on <paramref name="path"/>.</summary>
+        static double Number(JsonReader r, FieldPath path)
+        {
+            try { return r.ReadNumber(); }
+            catch (FormatException e) { throw new FormatException($"PatchGridJson: {path}: {e.Message}", e); }
+        }
+
+        static void Kind(JsonReader r, FieldPath path, JsonKind kind)
+        {
+            JsonKind k = r.Peek();
+            if (k == JsonKind.End) throw Fail(r, path, "is missing its value (the file is truncated)");
+            if (k == JsonKind.Invalid) throw Fail(r, path, "is not a JSON value (JSON has no NaN or Infinity)");
+            if (k != kind) throw Fail(r, path, $"is a {Name(k)}, expected a {Name(kind)}");
+        }
+
+        static string Name(JsonKind k) => k == JsonKind.True || k == JsonKind.False ? "boolean" : k.ToString().ToLowerInvariant();
+
+        static int ReadCount(JsonReader r, string path)
+        {
+            long line = r.Line, column = r.Column;
+            int v = ReadInt(r, path, out string text);
+            if (v < 1) throw Fail(line, column, path, $"is {text}, need at least 1");
             return v;
         }
 
-        static int ToInt(JsonValue v, string path)
+        static int ReadInt(JsonReader r, string path, out string text)
         {
-            double d = ToDouble(v, path);
-            if (d != Math.Floor(d) || d < int.MinValue || d > int.MaxValue) throw Fail(v, path, $"is {v.Text}, expected an integer");
+            Kind(r, path, JsonKind.Number);
+            long line = r.Line, column = r.Column;
+            double d = Number(r, path);
+            text = r.NumberText;
+            if (d != Math.Floor(d) || d < int.MinValue || d > int.MaxValue)
+                throw Fail(line, column, path, $"is {InputLimits.Quote(text)}, expected an integer in [{int.MinValue}, {int.MaxValue}]");
             return (int)d;
         }
 
-        static double ToDouble(JsonValue v, string path)
+        static double ReadDouble(JsonReader r, FieldPath path)
         {
-            if (v.Kind != JsonKind.Number) throw Fail(v, path, $"is a {v.Kind.ToString().ToLowerInvariant()}, expected a number");
-            double d = double.Parse(v.Text, NumberStyles.Float, CultureInfo.InvariantCulture);
-            if (!GMath.isfinite(d)) throw Fail(v, path, $"is {v.Text}, which is not a finite double");
+            Kind(r, path, JsonKind.Number);
+            long line = r.Line, column = r.Column;
+            double d = Number(r, path);
+            if (!GMath.isfinite(d)) throw Fail(line, column, path, $"is {InputLimits.Quote(r.NumberText)}, which is not a finite double");
             return d;
         }
 
-        static double[] Numbers(JsonValue v, string path, int count)
+        /// <summary>Grid lines: at most the GPU's patch limit + 1 of them, refused as soon as the array passes it.</summary>
+        static double[] ReadLines(JsonReader r, string path)
         {
-            if (v.Kind != JsonKind.Array) throw Fail(v, path, "expected an array");
-            if (v.Items.Count != count) throw Fail(v, path, $"has {v.Items.Count} numbers, need {count}");
-            var r = new double[count];
-            for (int k = 0; k < count; k++) r[k] = ToDouble(v.Items[k], $"{path}[{k}]");
-            return r;
+            Kind(r, path, JsonKind.Array);
+            r.Expect('[');
+            var values = new List<double>();
+            if (!r.TryClose(']'))
+                do
+                {
+                    if (values.Count > GpuLayout.MaxPatches)
+                        throw Fail(r, path, $"has more than {GpuLayout.MaxPatches + 1} numbers (the GPU's limit of {GpuLayout.MaxPatches} patches + 1)");
+                    values.Add(ReadDouble(r, new FieldPath(path, 0, values.Count)));
+                } while (r.Continues(']'));
+            return values.ToArray();
         }
 
-        internal static FormatException Fail(JsonValue at, string path, string what) =>
-            new FormatException($"PatchGridJson: {path} {what} (line {at.Line}, column {at.Column}).");
+        /// <summary>
+        /// The patches, each built as it is read. The list grows with the file, never with a count the
+        /// file claims, and stops at the GPU's limit, so a small file cannot make it allocate much.
+        /// </summary>
+        static List<GregoryPatch> ReadPatches(JsonReader r, int columns)
+        {
+            Kind(r, "patches", JsonKind.Array);
+            r.Expect('[');
+            var patches = new List<GregoryPatch>();
+            long limit = GpuLayout.MaxBufferBytes / GpuLayout.ControlPointBytes(1);
+            if (r.TryClose(']')) return patches;
+            var c = new double[3];
+            do
+            {
+                int p = patches.Count;
+                var path = new FieldPath("patches", columns, p);
+                if (p >= limit) throw Fail(r, "patches", $"has more than {limit} patches, the most the GPU buffers hold");
+                Kind(r, path, JsonKind.Array);
+                r.Expect('[');
+                var patch = new GregoryPatch();
+                int k = 0;
+                if (!r.TryClose(']'))
+                    do
+                    {
+                        if (k >= GregoryPatch.SlotCount) throw Fail(r, path, $"has more than {GregoryPatch.SlotCount} points");
+                        ReadPoint(r, path.Child(k), c);
+                        patch[k++] = new Double3(c[0], c[1], c[2]);
+                    } while (r.Continues(']'));
+                if (k != GregoryPatch.SlotCount) throw Fail(r, path, $"has {k} points, need {GregoryPatch.SlotCount}");
+                patches.Add(patch);
+            } while (r.Continues(']'));
+            return patches;
+        }
+
+        static void ReadPoint(JsonReader r, FieldPath path, double[] c)
+        {
+            Kind(r, path, JsonKind.Array);
+            r.Expect('[');
+            int k = 0;
+            if (!r.TryClose(']'))
+                do
+                {
+                    if (k >= 3) throw Fail(r, path, "has more than 3 numbers, need x, y, z");
+                    c[k] = ReadDouble(r, path.Child(k));
+                    k++;
+                } while (r.Continues(']'));
+            if (k != 3) throw Fail(r, path, $"has {k} numbers, need 3");
+        }
+
+        static FormatException Fail(JsonReader r, FieldPath path, string what) => Fail(r.Line, r.Column, path, what);
+
+        static FormatException Fail(long line, long column, FieldPath path, string what) =>
+            new FormatException(string.Format(CultureInfo.InvariantCulture, "PatchGridJson: {0} {1} (line {2}, column {3}).", path, what, line, column));
+    }
+
+    /// <summary>
+    /// Where a value sits in a grid file, for messages: "xLines[3]" or "patches[7] (patch (1, 2))[5][2]".
+    /// A value type formatted only when a message needs it, so reading costs no string per number.
+    /// </summary>
+    internal readonly struct FieldPath
+    {
+        readonly string _name;
+        readonly int _columns, _index, _point, _coord;
+
+        public FieldPath(string name, int columns, int index, int point = -1, int coord = -1)
+        {
+            _name = name; _columns = columns; _index = index; _point = point; _coord = coord;
+        }
+
+        public static implicit operator FieldPath(string name) => new FieldPath(name, 0, -1);
+
+        /// <summary>The path one level down (the next index).</summary>
+        public FieldPath Child(int k) => _point < 0 ? new FieldPath(_name, _columns, _index, k) : new FieldPath(_name, _columns, _index, _point, k);
+
+        public override string ToString()
+        {
+            var sb = new StringBuilder(_name);
+            if (_index >= 0) sb.Append('[').Append(_index.ToString(CultureInfo.InvariantCulture)).Append(']');
+            if (_index >= 0 && _columns > 0)
+                sb.Append(string.Format(CultureInfo.InvariantCulture, " (patch ({0}, {1}))", _index % _columns, _index / _columns));
+            if (_point >= 0) sb.Append('[').Append(_point.ToString(CultureInfo.InvariantCulture)).Append(']');
+            if (_coord >= 0) sb.Append('[').Append(_coord.ToString(CultureInfo.InvariantCulture)).Append(']');
+            return sb.ToString();
+        }
     }
 }

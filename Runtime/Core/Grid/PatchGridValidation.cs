@@ -3,22 +3,31 @@ using System.Globalization;
 
 namespace GregoryTerrain
 {
-    public sealed partial class PatchGrid
+    internal sealed partial class PatchGrid
     {
         /// <summary>
-        /// Throws ArgumentException unless the grid is well formed: grid lines finite, strictly
+        /// Throws ArgumentException unless the grid is well formed and drawable: no more patches
+        /// than the GPU buffers hold (<see cref="GpuLayout.CheckSize"/>); grid lines finite, strictly
         /// increasing, from exactly 0 to exactly 1 (so the regions tile the unit square with no gap
-        /// or overlap); every control point finite; and each pair of neighbours uses identical
-        /// (bit for bit) control points on their shared edge (so the surface is watertight whatever
-        /// the arithmetic). The message names the field, the patch (i, j), the slot and the value.
+        /// or overlap) and still strictly increasing once rounded to float (else a patch is empty
+        /// on the GPU); every control point finite and within float32's range; and each pair of
+        /// neighbours uses identical (bit for bit) control points on their shared edge (so the
+        /// surface is watertight whatever the arithmetic). The message names the field, the patch
+        /// (i, j), the slot, the value and the limit.
         /// </summary>
         public void Validate()
         {
+            GpuLayout.CheckSize(Columns, Rows);
             ValidateLines(XLines, "xLines");
             ValidateLines(YLines, "yLines");
             for (int j = 0; j < Rows; j++)
                 for (int i = 0; i < Columns; i++)
-                    Patch(i, j).Validate(Name(i, j));
+                {
+                    GregoryPatch p = Patch(i, j);
+                    p.Validate(Name(i, j));
+                    for (int k = 0; k < GregoryPatch.SlotCount; k++)
+                        CheckFloatRange(p[k], i, j, k);
+                }
             for (int j = 0; j < Rows; j++)
                 for (int i = 0; i < Columns; i++)
                 {
@@ -31,6 +40,39 @@ namespace GregoryTerrain
                         for (int k = 0; k < 4; k++)
                             CheckShared(i, j, GregoryPatch.Slot(k, 3), i, j + 1, GregoryPatch.Slot(k, 0), "y", YLines[j + 1]);
                 }
+        }
+
+        /// <summary>
+        /// Why flat serialized data (a PatchGridAsset's fields: 60 doubles per patch, x y z of the 20
+        /// slots) is not a valid grid, or null: the rules of <see cref="Validate"/>, with the GPU's
+        /// patch limit checked before anything is allocated. The message names the field and value.
+        /// </summary>
+        public static string SerializedDataError(int columns, int rows, double[] xLines, double[] yLines, double[] controlPoints)
+        {
+            try
+            {
+                GpuLayout.CheckSize(columns, rows);
+                long expected = (long)columns * rows * 3 * GregoryPatch.SlotCount;
+                if (controlPoints == null || controlPoints.Length != expected)
+                    return F("controlPoints.Length = {0}, expected {1} (= 60 x {2} x {3})", controlPoints?.Length ?? 0, expected, columns, rows);
+                var patches = new GregoryPatch[columns * rows];
+                for (int p = 0; p < patches.Length; p++)
+                {
+                    var patch = new GregoryPatch();
+                    for (int k = 0; k < GregoryPatch.SlotCount; k++)
+                    {
+                        long o = ((long)p * GregoryPatch.SlotCount + k) * 3;
+                        patch[k] = new Double3(controlPoints[o], controlPoints[o + 1], controlPoints[o + 2]);
+                    }
+                    patches[p] = patch;
+                }
+                new PatchGrid(columns, rows, xLines, yLines, patches).Validate();
+                return null;
+            }
+            catch (ArgumentException e)
+            {
+                return e.Message;
+            }
         }
 
         static string Name(int i, int j) => string.Format(CultureInfo.InvariantCulture, "patch ({0}, {1})", i, j);
@@ -49,6 +91,17 @@ namespace GregoryTerrain
                 if (!(lines[k] > lines[k - 1]))
                     throw new ArgumentException(F("{0}[{1}] = {2} is not greater than {0}[{3}] = {4}: grid lines must increase strictly (patches would overlap or be empty).",
                         field, k, lines[k], k - 1, lines[k - 1]), field);
+            for (int k = 1; k <= last; k++)
+                if (!((float)lines[k] > (float)lines[k - 1]))
+                    throw new ArgumentException(F("{0}[{1}] = {2:R} and {0}[{3}] = {4:R} round to the same float {5:R}: the patch between them would be empty on the GPU.",
+                        field, k, lines[k], k - 1, lines[k - 1], (float)lines[k]), field);
+        }
+
+        static void CheckFloatRange(Double3 c, int i, int j, int slot)
+        {
+            if (!InputLimits.FitsFloat(c.x) || !InputLimits.FitsFloat(c.y) || !InputLimits.FitsFloat(c.z))
+                throw new ArgumentException(F("patches: {0} slot {1} = {2} is outside float32's range (|x|, |y|, |z| <= {3:R}); the GPU cannot hold it.",
+                    Name(i, j), slot, c, InputLimits.MaxFloat), "patches");
         }
 
         void CheckShared(int i0, int j0, int slot0, int i1, int j1, int slot1, string axis, double line)

@@ -7,7 +7,7 @@ namespace GregoryTerrain
     /// (the paper's region info, sent to the GPU once as the float4 <c>(a, b, e, f)</c>).
     /// </summary>
     [Serializable]
-    public struct Region : IEquatable<Region>
+    internal struct Region : IEquatable<Region>
     {
         public double a, b, e, f;
 

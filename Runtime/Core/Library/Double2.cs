@@ -4,7 +4,7 @@ namespace GregoryTerrain
 {
     /// <summary>Two doubles: the reference arithmetic for ranges and global points.</summary>
     [Serializable]
-    public struct Double2 : IEquatable<Double2>
+    internal struct Double2 : IEquatable<Double2>
     {
         public double x, y;
 

@@ -4,7 +4,7 @@ namespace GregoryTerrain
 {
     /// <summary>Three doubles: control points are stored in double; the double evaluator is the reference.</summary>
     [Serializable]
-    public struct Double3 : IEquatable<Double3>
+    internal struct Double3 : IEquatable<Double3>
     {
         public double x, y, z;
 
@@ -19,6 +19,8 @@ namespace GregoryTerrain
         public static Double3 operator *(double s, Double3 a) => new Double3(a.x * s, a.y * s, a.z * s);
         public static Double3 operator /(Double3 a, double s) => new Double3(a.x / s, a.y / s, a.z / s);
 
+        /// <summary>Rounds a double vector to float per component, as an upload to the GPU does.</summary>
+        public static explicit operator Float3(Double3 d) => new Float3((float)d.x, (float)d.y, (float)d.z);
         public static implicit operator Double3(Float3 f) => new Double3(f.x, f.y, f.z);
 
         public bool IsFinite => GMath.isfinite(x) && GMath.isfinite(y) && GMath.isfinite(z);

@@ -4,7 +4,7 @@ namespace GregoryTerrain
 {
     /// <summary>Four floats, the GPU's float4: what a shader constant such as <c>_Range</c> holds.</summary>
     [Serializable]
-    public struct Float4 : IEquatable<Float4>
+    internal struct Float4 : IEquatable<Float4>
     {
         public float x, y, z, w;
 

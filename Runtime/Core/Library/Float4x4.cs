@@ -7,7 +7,7 @@ namespace GregoryTerrain
     /// convention of Unity's <c>Matrix4x4</c> and of HLSL's <c>mul(M, v)</c> in Unity shaders.
     /// </summary>
     [Serializable]
-    public struct Float4x4 : IEquatable<Float4x4>
+    internal struct Float4x4 : IEquatable<Float4x4>
     {
         public Float4 c0, c1, c2, c3;
 

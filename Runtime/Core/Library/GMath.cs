@@ -7,7 +7,7 @@ namespace GregoryTerrain
     /// (<c>using static GregoryTerrain.GMath;</c>). Float overloads round every step to float,
     /// as the GPU does; double overloads are the reference.
     /// </summary>
-    public static class GMath
+    internal static class GMath
     {
         public static bool isfinite(float a) => !float.IsNaN(a) && !float.IsInfinity(a);
         public static bool isfinite(double a) => !double.IsNaN(a) && !double.IsInfinity(a);

@@ -16,7 +16,7 @@ namespace GregoryTerrain
     /// <item>Exactly 0 on lattice points (fraction 0: every term is 0 or multiplied by fade(0) = 0).</item>
     /// </list>
     /// </summary>
-    public static class GradientNoise
+    internal static class GradientNoise
     {
         /// <summary>sqrt(2) as float: maps the natural range [-sqrt(2)/2, sqrt(2)/2] onto [-1, 1].</summary>
         public const float Scale = 1.41421356f;

@@ -30,7 +30,7 @@ namespace GregoryTerrain
     /// square (e.g. u + v = 0), and callers that compute u from a global point may land a rounding
     /// error outside.</para>
     /// </summary>
-    public static class GregoryBasis
+    internal static class GregoryBasis
     {
         public const int WeightCount = GregoryPatch.SlotCount;
 

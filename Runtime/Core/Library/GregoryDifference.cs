@@ -19,7 +19,7 @@ namespace GregoryTerrain
     /// is 0 (a pair's own corner, where that end's Bernstein weight is 0) or underflows, the plain
     /// <c>t - t0</c> of the guarded ratios is used: the weight it multiplies is then 0 or tiny.</para>
     /// </summary>
-    public static class GregoryDifference
+    internal static class GregoryDifference
     {
         /// <summary>
         /// <c>S(u0 + du, v0 + dv) - S(u0, v0)</c> in float, the shaders' arithmetic. (u0, v0) and

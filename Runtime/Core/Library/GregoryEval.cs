@@ -13,7 +13,7 @@ namespace GregoryTerrain
     /// polynomials are exact there and the pair guard gives 0 * 0.5), so the position equals the
     /// corner control point exactly in both precisions.</para>
     /// </summary>
-    public static class GregoryEval
+    internal static class GregoryEval
     {
         /// <summary>Evaluates the patch with control points <paramref name="cp"/> (20, slot order) in float.</summary>
         public static void Evaluate(ReadOnlySpan<Float3> cp, float u, float v,

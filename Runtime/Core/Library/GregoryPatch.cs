@@ -11,7 +11,7 @@ namespace GregoryTerrain
     /// patch is exactly the bicubic Bezier patch of slots 0..15.
     /// </summary>
     [Serializable]
-    public sealed class GregoryPatch
+    internal sealed class GregoryPatch
     {
         public const int SlotCount = 20;
 

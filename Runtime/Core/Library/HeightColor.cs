@@ -7,7 +7,7 @@ namespace GregoryTerrain
     /// (B and C of the paper, linear RGB), with l the colour noise from <see cref="ColorNoise(TerrainPoint, HeightColorSettings)"/>.
     /// Mirrored by Shaders/Library/HeightColor.hlsl (<c>HeightColor.Weight</c> is HLSL <c>HeightColorWeight</c>, etc.).
     /// </summary>
-    public static class HeightColor
+    internal static class HeightColor
     {
         /// <summary>The noise stream of the colour noise: distinct from every octave's (0 .. 15).</summary>
         public const uint ColorStream = 0x436F6C72u;

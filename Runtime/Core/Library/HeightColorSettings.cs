@@ -10,10 +10,14 @@ namespace GregoryTerrain
     [Serializable]
     public struct HeightColorSettings : IEquatable<HeightColorSettings>
     {
+        /// <summary>Height over which the colour goes from the low to the high colour (terrain units, not 0).</summary>
         public float gamma;
+        /// <summary>Strength of the noise that breaks up the colour boundary (0 turns it off).</summary>
         public float noiseAmplitude;
+        /// <summary>Lattice cells of that colour noise across the whole terrain (&gt; 0).</summary>
         public float noiseFrequency;
 
+        /// <summary>Settings with the given values; call <see cref="Validate"/> to check them.</summary>
         public HeightColorSettings(float gamma, float noiseAmplitude, float noiseFrequency)
         {
             this.gamma = gamma; this.noiseAmplitude = noiseAmplitude; this.noiseFrequency = noiseFrequency;
@@ -33,11 +37,15 @@ namespace GregoryTerrain
         }
 
         /// <summary><c>_HeightColor = (gamma, noiseAmplitude, noiseFrequency, 0)</c>.</summary>
-        public Float4 ToFloat4() => new Float4(gamma, noiseAmplitude, noiseFrequency, 0f);
+        internal Float4 ToFloat4() => new Float4(gamma, noiseAmplitude, noiseFrequency, 0f);
 
+        /// <inheritdoc/>
         public bool Equals(HeightColorSettings o) => gamma.Equals(o.gamma) && noiseAmplitude.Equals(o.noiseAmplitude) && noiseFrequency.Equals(o.noiseFrequency);
+        /// <inheritdoc/>
         public override bool Equals(object obj) => obj is HeightColorSettings o && Equals(o);
+        /// <inheritdoc/>
         public override int GetHashCode() => HashCode.Combine(gamma, noiseAmplitude, noiseFrequency);
+        /// <inheritdoc/>
         public override string ToString() => FormattableString.Invariant($"gamma {gamma:R}, noise amplitude {noiseAmplitude:R}, frequency {noiseFrequency:R}");
     }
 }

@@ -14,12 +14,18 @@ namespace GregoryTerrain
         /// <summary>The most octaves a shader loop runs.</summary>
         public const int MaxOctaves = 16;
 
+        /// <summary>Height of the first octave, terrain units.</summary>
         public float amplitude;
+        /// <summary>Lattice cells of the first octave across the whole terrain (&gt; 0).</summary>
         public float frequency;
+        /// <summary>Frequency ratio between one octave and the next (&gt; 1).</summary>
         public float alpha;
+        /// <summary>Amplitude divisor between one octave and the next (&gt; 0).</summary>
         public float beta;
+        /// <summary>Most octaves evaluated (0 to <see cref="MaxOctaves"/>); fewer are used where the vertices are too sparse to show them.</summary>
         public int octaves;
 
+        /// <summary>Settings with the given values; call <see cref="Validate"/> to check them.</summary>
         public NoiseSettings(float amplitude, float frequency, float alpha, float beta, int octaves)
         {
             this.amplitude = amplitude; this.frequency = frequency; this.alpha = alpha; this.beta = beta; this.octaves = octaves;
@@ -52,12 +58,16 @@ namespace GregoryTerrain
             new ArgumentException(FormattableString.Invariant($"{field} ({value:R}) {what}"), field);
 
         /// <summary><c>_Noise = (amplitude, frequency, alpha, beta)</c>.</summary>
-        public Float4 ToFloat4() => new Float4(amplitude, frequency, alpha, beta);
+        internal Float4 ToFloat4() => new Float4(amplitude, frequency, alpha, beta);
 
+        /// <inheritdoc/>
         public bool Equals(NoiseSettings o) => amplitude.Equals(o.amplitude) && frequency.Equals(o.frequency)
             && alpha.Equals(o.alpha) && beta.Equals(o.beta) && octaves == o.octaves;
+        /// <inheritdoc/>
         public override bool Equals(object obj) => obj is NoiseSettings o && Equals(o);
+        /// <inheritdoc/>
         public override int GetHashCode() => HashCode.Combine(amplitude, frequency, alpha, beta, octaves);
+        /// <inheritdoc/>
         public override string ToString() => FormattableString.Invariant(
             $"amplitude {amplitude:R}, frequency {frequency:R}, alpha {alpha:R}, beta {beta:R}, octaves {octaves}");
     }

@@ -8,7 +8,7 @@ namespace GregoryTerrain
     /// n = -y, so interpolating the two numbers behaves like interpolating the normal on slopes and
     /// cliffs alike. Mirrors Shaders/Library/NormalEncoding.hlsl name for name.
     /// </summary>
-    public static class NormalEncoding
+    internal static class NormalEncoding
     {
         /// <summary>
         /// HLSL <c>LambertEncodeNormal</c>: <c>n.xz * k</c>, k = <c>sqrt(2 / (1 + n.y))</c> in the upper

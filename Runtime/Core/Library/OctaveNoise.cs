@@ -11,7 +11,7 @@ namespace GregoryTerrain
     /// (the same on CPU and GPU); the double reference uses exactly those values, because at
     /// q ~ 0.7 and f ~ 1e4 a relative frequency difference of 1e-7 already moves the lattice by 1e-3 cells.
     /// </summary>
-    public static class OctaveNoise
+    internal static class OctaveNoise
     {
         /// <summary>
         /// Float evaluation at a <see cref="TerrainPoint"/> (deep-zoom safe, see <see cref="GradientNoise.AtPoint"/>).

@@ -4,10 +4,10 @@ namespace GregoryTerrain
 {
     /// <summary>
     /// From tile and tess coordinate to the global point q and on to a patch's local (u, v)
-    /// (DESIGN sections 1-2, internals.md "The tile layout"). Float methods do what
+    /// (internals.md, "The Gregory patch" and "The tile layout"). Float methods do what
     /// Shaders/Library/RangeMapping.hlsl does, step for step; double methods are the reference.
     /// </summary>
-    public static class RangeMapping
+    internal static class RangeMapping
     {
         // ---------------------------------------------------------------- local coordinate (eq. 10)
 

@@ -23,7 +23,7 @@ namespace GregoryTerrain
     /// control points are bit-identical). Everything depends only on q and per-frame constants, so
     /// shared tile edges stay bit-identical.</para>
     /// </summary>
-    public static class RelativeSurface
+    internal static class RelativeSurface
     {
         /// <summary>
         /// <c>p - r</c> per axis for two hi/lo points, precise to float's relative precision of the

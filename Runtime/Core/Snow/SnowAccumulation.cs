@@ -24,7 +24,7 @@ namespace GregoryTerrain
     /// Concave cells (c &lt; 0) get E = 0.
     /// </para>
     /// </summary>
-    public static class SnowAccumulation
+    internal static class SnowAccumulation
     {
         /// <summary><c>saturate(dot(N, Gn))</c>: 1 facing up, 0 vertical or overhanging.</summary>
         public static float Catch(Float3 normal, Float3 up) => saturate(dot(normal, up));

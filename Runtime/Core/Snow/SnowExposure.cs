@@ -22,7 +22,7 @@ namespace GregoryTerrain
     /// Samples that leave the unit square end the march: beyond the terrain is open ground.
     /// </para>
     /// </summary>
-    public static class SnowExposure
+    internal static class SnowExposure
     {
         /// <summary>sin(H - F) of one march sample: &gt; 0 when it stands above the fall line. Needs t &gt; 0.</summary>
         public static float Occlusion(float dz, float t, float cosF, float sinF) =>

@@ -13,12 +13,14 @@ namespace GregoryTerrain
     /// </summary>
     public sealed class SnowField
     {
+        /// <summary>Cells per side, R (a power of two from 64 to 4096).</summary>
         public int Resolution { get; }
         /// <summary>4 floats per cell: nx, ny, nz, height. Call <see cref="MarkChanged"/> after writing it directly.</summary>
         public float[] Data { get; }
         /// <summary>Changes whenever the contents may have changed.</summary>
         public int Version { get; private set; }
 
+        /// <summary>A level field of R x R cells (normal straight up, height 0). Throws ArgumentException unless R is a power of two from 64 to 4096.</summary>
         public SnowField(int resolution)
         {
             if (resolution < SnowSettings.MinResolution || resolution > SnowSettings.MaxResolution || (resolution & (resolution - 1)) != 0)
@@ -36,7 +38,9 @@ namespace GregoryTerrain
             return new Float2((i + 0.5f) * inv, (j + 0.5f) * inv);
         }
 
+        /// <summary>Height of cell (i, j).</summary>
         public float Height(int i, int j) => Data[4 * (j * Resolution + i) + 3];
+        /// <summary>Detail normal of cell (i, j).</summary>
         public Float3 Normal(int i, int j) { int k = 4 * (j * Resolution + i); return new Float3(Data[k], Data[k + 1], Data[k + 2]); }
 
         /// <summary>Sets one cell. The normal must be finite (it is used as given: pass a unit vector).</summary>

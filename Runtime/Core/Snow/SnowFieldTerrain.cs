@@ -20,7 +20,7 @@ namespace GregoryTerrain
     /// vertex spacings; the snow map could not resolve them anyway.
     /// </para>
     /// </summary>
-    public static class SnowFieldTerrain
+    internal static class SnowFieldTerrain
     {
         /// <summary>The tess coordinate of a cell centre inside its one-cell tile.</summary>
         public static readonly Float2 CellCentreTess = new Float2(0.5f, 0.5f);

@@ -18,7 +18,7 @@ namespace GregoryTerrain
     /// Holds the array it is given (no copy): the simulation writes <c>Depth</c>, the terrain reads it.
     /// </para>
     /// </summary>
-    public sealed class SnowMap
+    internal sealed class SnowMap
     {
         /// <summary>
         /// Depth, as a fraction of the cap, at which the surface is fully white. A thin layer only

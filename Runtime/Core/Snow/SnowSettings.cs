@@ -24,6 +24,7 @@ namespace GregoryTerrain
     [Serializable]
     public struct SnowSettings : IEquatable<SnowSettings>
     {
+        /// <summary>Limits <see cref="Validate"/> enforces: the snow map resolution R (64 to 4096) and the exposure march samples (at most 256).</summary>
         public const int MinResolution = 64, MaxResolution = 4096, MaxRaySteps = 256;
 
         /// <summary>Snow map cells per side, R (power of two, 64..4096). The map covers the whole unit square.</summary>
@@ -69,7 +70,7 @@ namespace GregoryTerrain
         /// The march as the shaders get it: <c>(upwind.x, upwind.y, cos F, sin F)</c>, upwind the unit
         /// horizontal direction the snow comes from. With no horizontal motion: <c>(0, 0, 0, 1)</c>.
         /// </summary>
-        public Float4 FallLine
+        internal Float4 FallLine
         {
             get
             {
@@ -114,7 +115,7 @@ namespace GregoryTerrain
             new ArgumentException(FormattableString.Invariant($"{name}.{field} ({value}) {rule}"), name + "." + field);
 
         /// <summary>Number of float4 in the <c>SnowParams</c> cbuffer.</summary>
-        public const int ParamsFloat4Count = 5;
+        internal const int ParamsFloat4Count = 5;
 
         /// <summary>
         /// The <c>SnowParams</c> cbuffer (internals.md, "Snow"), 5 float4, this order:
@@ -122,7 +123,7 @@ namespace GregoryTerrain
         /// <c>_SnowCatch = (Gn.xyz, scale)</c>, <c>_SnowEdge = (edgeStrength, edgeWidth, exposureSoftness, 0)</c>,
         /// <c>_SnowStep = (dt, depthCap, meltRate, 0)</c>.
         /// </summary>
-        public float[] PackParams(float dt)
+        internal float[] PackParams(float dt)
         {
             Validate();
             if (!GMath.isfinite(dt) || dt < 0f) throw new ArgumentException(FormattableString.Invariant($"dt ({dt:R}) must be finite and >= 0"), nameof(dt));
@@ -138,10 +139,14 @@ namespace GregoryTerrain
             };
         }
 
+        /// <inheritdoc/>
         public bool Equals(SnowSettings o) => ExposureEquals(o) && scale.Equals(o.scale) && edgeStrength.Equals(o.edgeStrength) &&
             edgeWidth.Equals(o.edgeWidth) && depthCap.Equals(o.depthCap) && meltRate.Equals(o.meltRate);
+        /// <inheritdoc/>
         public override bool Equals(object obj) => obj is SnowSettings o && Equals(o);
+        /// <inheritdoc/>
         public override int GetHashCode() => HashCode.Combine(resolution, wind, fallSpeed, gravity, scale, depthCap, rayLength, raySteps);
+        /// <inheritdoc/>
         public override string ToString() => FormattableString.Invariant(
             $"snow R {resolution}, s {scale:R}, wind {wind}, fall {fallSpeed:R}, cap {depthCap:R}, melt {meltRate:R}");
     }

@@ -7,7 +7,7 @@ namespace GregoryTerrain
     /// checked against it): an R x R depth map over the terrain's unit square, the cached exposure,
     /// and the rule for when the exposure is stale.
     /// </summary>
-    public sealed class SnowSimulation
+    internal sealed class SnowSimulation
     {
         SnowSettings _settings;
         bool _exposureValid;

@@ -9,7 +9,7 @@ namespace GregoryTerrain
     /// The bits and the camera's choice of mask follow Unity 2022.3 (UnityEditor.SceneManagement.SceneCullingMasks,
     /// Camera.overrideSceneCullingMask, Camera.scene); a player has no stages and draws in every camera.
     /// </summary>
-    public static class CameraSceneFilter
+    internal static class CameraSceneFilter
     {
         /// <summary>Objects the Game view draws (SceneCullingMasks.GameViewObjects).</summary>
         public const ulong GameViewObjects = 1UL << 63;

@@ -8,7 +8,7 @@ namespace GregoryTerrain
     /// <c>_RangeOrigin = (hi.x, hi.y, lo.x, lo.y)</c>. <see cref="zero"/> gives the paper's plain range.
     /// </summary>
     [Serializable]
-    public struct RangeOrigin : IEquatable<RangeOrigin>
+    internal struct RangeOrigin : IEquatable<RangeOrigin>
     {
         public Float2 hi;
         public Float2 lo;

@@ -13,7 +13,7 @@ namespace GregoryTerrain
     /// <para>Immutable apart from <see cref="Params"/>, which <see cref="WithParams"/> replaces (the
     /// buffers are shared, as on the GPU where only the constants change per frame).</para>
     /// </summary>
-    public sealed class TerrainInputs
+    internal sealed class TerrainInputs
     {
         /// <summary>_ControlPoints: 20 float4 per patch, patch p at float index <c>80 p</c>, (x, y, z, 1).</summary>
         public float[] ControlPoints { get; }

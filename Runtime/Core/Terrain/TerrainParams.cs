@@ -7,7 +7,7 @@ namespace GregoryTerrain
     /// one fixed order. The rig uploads <see cref="Pack"/> as one block; Unity sets each float4 by name.
     /// Only <see cref="range"/> changes per frame.
     /// </summary>
-    public struct TerrainParams
+    internal struct TerrainParams
     {
         public const int Float4Count = 10;
         public const int Floats = Float4Count * 4;
@@ -30,12 +30,14 @@ namespace GregoryTerrain
         /// </summary>
         public Float4 tileLattice;
 
-        /// <summary>Validates every input (naming the field and value) and encodes the range against its origin.</summary>
-        public static TerrainParams Create(PatchGrid grid, TerrainRange range, RangeOrigin origin,
-            TessellationSettings tessellation, NoiseSettings noise, HeightColorSettings heightColor,
-            Float3 colorLow, Float3 colorHigh, float noiseVerticesAcross = 0f)
+        /// <summary>
+        /// The renderer settings' one validation: throws ArgumentException naming the field, the value
+        /// and the limit unless every setting can be drawn. The renderer and the controllers call it
+        /// where a setting enters (OnValidate, setters); <see cref="Create"/> calls it too.
+        /// </summary>
+        public static void CheckSettings(TerrainRange range, TessellationSettings tessellation, NoiseSettings noise,
+            HeightColorSettings heightColor, Float3 colorLow, Float3 colorHigh, float noiseVerticesAcross = 0f)
         {
-            if (grid == null) throw new ArgumentNullException(nameof(grid));
             range.Validate();
             tessellation.Validate();
             noise.Validate();
@@ -44,6 +46,15 @@ namespace GregoryTerrain
             if (!colorHigh.IsFinite) throw new ArgumentException($"colorHigh {colorHigh} must be finite", nameof(colorHigh));
             if (!(noiseVerticesAcross >= 0f) || !GMath.isfinite(noiseVerticesAcross))
                 throw new ArgumentException(FormattableString.Invariant($"noiseVerticesAcross ({noiseVerticesAcross:R}) must be finite and >= 0"), nameof(noiseVerticesAcross));
+        }
+
+        /// <summary>Validates every input (naming the field and value) and encodes the range against its origin.</summary>
+        public static TerrainParams Create(PatchGrid grid, TerrainRange range, RangeOrigin origin,
+            TessellationSettings tessellation, NoiseSettings noise, HeightColorSettings heightColor,
+            Float3 colorLow, Float3 colorHigh, float noiseVerticesAcross = 0f)
+        {
+            if (grid == null) throw new ArgumentNullException(nameof(grid));
+            CheckSettings(range, tessellation, noise, heightColor, colorLow, colorHigh, noiseVerticesAcross);
 
             RangeMapping.EncodeRange(range, origin, out Float4 rangeF, out Float4 originF);
             float[] size = GpuLayout.GridSize(grid);

@@ -10,7 +10,7 @@ namespace GregoryTerrain
     /// Mirrors <c>struct TerrainPoint</c> in Shaders/Library/RangeMapping.hlsl.
     /// </summary>
     [Serializable]
-    public struct TerrainPoint : IEquatable<TerrainPoint>
+    internal struct TerrainPoint : IEquatable<TerrainPoint>
     {
         public Float2 originHi;
         public Float2 local;

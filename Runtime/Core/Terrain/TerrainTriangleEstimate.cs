@@ -3,7 +3,7 @@ using System;
 namespace GregoryTerrain
 {
     /// <summary>How the tessellator spaces a factor's segments (the hull stage's <c>partitioning</c>).</summary>
-    public enum TessellationPartitioning
+    internal enum TessellationPartitioning
     {
         /// <summary><c>fractional_odd</c> (the domain-stage draw): the next odd count, 1 to 63.</summary>
         FractionalOdd,
@@ -27,6 +27,7 @@ namespace GregoryTerrain
         /// </summary>
         public int tilesSampledAtMaxFactor;
 
+        /// <inheritdoc/>
         public override string ToString() => FormattableString.Invariant(
             $"{triangles:N0} triangles ({tilesSampledDrawn} of {tilesSampled} sampled tiles drawn, {tilesSampledAtMaxFactor} at the max factor, {tileCount} tiles)");
     }
@@ -39,7 +40,7 @@ namespace GregoryTerrain
     /// it against the GPU's clipping invocations (Tools~/RigTests/VertexCacheGpuTests.cs,
     /// <c>TriangleEstimateIsWhatTheGpuDraws</c>; and every adaptive job of <c>gt bench</c>).
     /// </summary>
-    public static class TerrainTriangleEstimate
+    internal static class TerrainTriangleEstimate
     {
         /// <summary>
         /// The segments the tessellator makes of one factor: for <see cref="TessellationPartitioning.Integer"/>

@@ -4,7 +4,7 @@ namespace GregoryTerrain
 {
     /// <summary>The shader keywords that change what <see cref="TerrainVertex"/> computes.</summary>
     [Flags]
-    public enum TerrainKeywords
+    internal enum TerrainKeywords
     {
         None = 0,
         /// <summary>GT_NOISE: octave noise on the height, its gradient in the normal.</summary>
@@ -18,7 +18,7 @@ namespace GregoryTerrain
     }
 
     /// <summary>A point of the Gregory surface (no noise yet), terrain space. HLSL <c>TerrainSurfacePoint</c>.</summary>
-    public struct TerrainSurfacePoint
+    internal struct TerrainSurfacePoint
     {
         /// <summary>The global point, hi/lo.</summary>
         public TerrainPoint q;
@@ -35,7 +35,7 @@ namespace GregoryTerrain
     /// What the vertex stage produces for one vertex: HLSL <c>TerrainVaryings</c> before the camera
     /// (object space, Unity's Y-up (x, z, y)), plus the terrain-space values and what the rig reads back.
     /// </summary>
-    public struct TerrainVertexOutput
+    internal struct TerrainVertexOutput
     {
         /// <summary>The surface point it started from (q, patch, region, uv, Gregory position and derivatives).</summary>
         public TerrainSurfacePoint surface;
@@ -71,7 +71,7 @@ namespace GregoryTerrain
     /// The rig compares this with the GPU's readback; <see cref="Reference"/> is the same surface in
     /// double at the exact global point, for error measures.
     /// </summary>
-    public static class TerrainVertex
+    internal static class TerrainVertex
     {
         /// <summary>Terrain space (x, y, z = height) to Unity object space (x, z, y); orthogonal, so normals too.</summary>
         public static Float3 TerrainToObject(Float3 v) => new Float3(v.x, v.z, v.y);

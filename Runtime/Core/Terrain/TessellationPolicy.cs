@@ -3,7 +3,7 @@ using System;
 namespace GregoryTerrain
 {
     /// <summary>
-    /// The hull constant function's decisions (DESIGN section 2), mirrored by
+    /// The hull constant function's decisions (internals.md, "The tile layout"), mirrored by
     /// Shaders/Terrain/TessellationFactors.hlsl: edge factors from the screen-space length of each tile edge,
     /// the inside factor, and frustum culling of a tile's bounding box.
     /// <para>Crack-freedom: an edge's factor is computed only from that edge's two endpoints (their
@@ -12,7 +12,7 @@ namespace GregoryTerrain
     /// bit-identical). The functions are also symmetric bit for bit in the two endpoints, because the
     /// neighbour walks the shared edge the other way round.</para>
     /// </summary>
-    public static class TessellationPolicy
+    internal static class TessellationPolicy
     {
         /// <summary>
         /// Factor for an edge <paramref name="edgeLengthPixels"/> long on screen, aiming at
@@ -219,8 +219,9 @@ namespace GregoryTerrain
         /// <summary>
         /// Segments per tile edge the adaptive estimate samples (HLSL <c>GT_EDGE_SEGMENTS</c>): the
         /// surface is evaluated at the <c>EdgeSegments - 1</c> inner points of the edge (the corners are
-        /// known). Four missed bumps inside far tiles (max 2.3 px at a 1 px target on the H200 path);
-        /// eight see detail twice as fine for 4 more evaluations per edge, once per tile per frame.
+        /// known). With four, bumps inside far tiles slipped between the samples (performance.md,
+        /// "Choices in the shaders, measured"); eight see detail twice as fine for 4 more evaluations
+        /// per edge, once per tile per frame.
         /// </summary>
         public const int EdgeSegments = 8;
 

@@ -15,7 +15,7 @@ namespace GregoryTerrain
     /// scaled to the part it keeps (<see cref="TileFactorsOfCell"/>), so a pan, which only moves the
     /// clipped tiles, changes no sample.</para>
     /// </summary>
-    public static class TileFactors
+    internal static class TileFactors
     {
         /// <summary>Pieces: the edges u = 0, v = 0, u = 1, v = 1, the midlines along u and along v, the centre.</summary>
         public const int Pieces = 7;

@@ -15,7 +15,7 @@ namespace GregoryTerrain
     /// <para>Slots: the tile of cell k sits in slot k mod (M + 1) (per axis), so a cell keeps its
     /// slot while the pan moves the first cell k0 past it.</para>
     /// </summary>
-    public static class TileLattice
+    internal static class TileLattice
     {
         /// <summary>
         /// How much wider than the lattice (relative) the range may be: a pan rounds the range's float

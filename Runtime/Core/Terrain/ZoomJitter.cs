@@ -3,7 +3,7 @@ using System;
 namespace GregoryTerrain
 {
     /// <summary>Which vertex arithmetic <see cref="ZoomJitter"/> measures.</summary>
-    public enum VertexPath
+    internal enum VertexPath
     {
         /// <summary>The paper's: origin 0, float <c>q = c + o (g - c)</c>, absolute float S(q) as the object position.</summary>
         Plain,
@@ -24,7 +24,7 @@ namespace GregoryTerrain
     /// the tiling and every panned frame. The origin is the one <see cref="RangeOrigin.For"/> picks
     /// for frame 0 and is kept for all frames (a renderer re-snaps only when the view has moved far).
     /// </summary>
-    public static class ZoomJitter
+    internal static class ZoomJitter
     {
         /// <summary>Frames measured after frame 0; frame k pans by (k, k/2) * panPixels.</summary>
         public const int Frames = 8;
@@ -44,6 +44,7 @@ namespace GregoryTerrain
             if (grid == null) throw new ArgumentNullException(nameof(grid));
             if (!GMath.isfinite(width) || !(width > 0.0) || width > 1.0)
                 throw new ArgumentException(FormattableString.Invariant($"width ({width:R}) must lie in (0, 1]"), nameof(width));
+            TerrainRange.CheckSize(nameof(width), width);
             if (!GMath.isfinite(pixels) || !(pixels >= 1.0))
                 throw new ArgumentException(FormattableString.Invariant($"pixels ({pixels:R}) must be at least 1"), nameof(pixels));
             if (factor < 1 || factor > 64)

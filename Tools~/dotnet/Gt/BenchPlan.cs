@@ -286,7 +286,7 @@ namespace GregoryTerrain.Rig
         }
 
         /// <summary>
-        /// The fair comparison's look (issue 5: "with noise detail and height colour on"): the terrain,
+        /// The fair comparison's look (noise detail and height colour on): the terrain,
         /// the fallback and the static mesh's frag all use it. The static mesh's vertex stage
         /// (vert_static with GT_HEIGHT_COLOR) hands the frag its baked height and a colour noise of 0:
         /// the same fragment work, one interpolant less computed per vertex.

@@ -9,10 +9,14 @@ namespace GregoryTerrain.Rig
     /// </summary>
     static class DemoGridCommand
     {
+        const int MaxSamples = 16384;
+
         public static int Run(Args a)
         {
             string output = a.String("out");
             int columns = a.Int("columns", 5), rows = a.Int("rows", 5), samples = a.Int("samples", 257);
+            if (samples < 2 || samples > MaxSamples)
+                throw new UsageException($"--samples {samples} must lie in [2, {MaxSamples}] (a {MaxSamples} x {MaxSamples} heightmap is 2 GiB of doubles)");
             double[] heights = Heightmap(samples);
             var fit = HeightmapFitter.Fit(heights, samples, samples, columns, rows);
             fit.Grid.Validate();

@@ -132,12 +132,19 @@ namespace GregoryTerrain.Rig
 
         static Double3 ToD(Float3 v) => new Double3(v.x, v.y, v.z);
 
+        const long MaxPointsFileBytes = 16L << 20;
+
         /// <summary>--points "x,y;x,y;..." or --points-file FILE (one "x y" or "x,y" per line, # comments).</summary>
         static List<Double2> ReadPoints(Args a)
         {
             string text;
             string file = a.String("points-file", "");
-            if (file.Length > 0) text = File.ReadAllText(file).Replace('\n', ';');
+            string option = file.Length > 0 ? "--points-file" : "--points";
+            if (file.Length > 0)
+            {
+                InputLimits.CheckFileToRead(file, MaxPointsFileBytes);
+                text = File.ReadAllText(file).Replace('\n', ';');
+            }
             else text = a.String("points");
             var r = new List<Double2>();
             foreach (string raw in text.Split(';'))
@@ -147,9 +154,9 @@ namespace GregoryTerrain.Rig
                 string[] xy = item.Split(new[] { ',', ' ', '\t' }, StringSplitOptions.RemoveEmptyEntries);
                 if (xy.Length != 2 || !double.TryParse(xy[0], NumberStyles.Float, CultureInfo.InvariantCulture, out double x)
                     || !double.TryParse(xy[1], NumberStyles.Float, CultureInfo.InvariantCulture, out double y))
-                    throw new FormatException($"point '{item}' is not 'x,y'");
+                    throw new UsageException($"{option}: point '{InputLimits.Quote(item)}' is not 'x,y' (two numbers)");
                 if (!(x >= 0 && x <= 1 && y >= 0 && y <= 1))
-                    throw new ArgumentException($"point '{item}' must lie in the unit square [0,1]^2");
+                    throw new ArgumentException($"{option}: point '{InputLimits.Quote(item)}' must lie in the unit square [0,1]^2");
                 r.Add(new Double2(x, y));
             }
             if (r.Count == 0) throw new ArgumentException("no points given (--points \"x,y;x,y\" or --points-file FILE)");

@@ -20,7 +20,8 @@ namespace GregoryTerrain.Rig
                 ? RigScene.ReadGrid(a)
                 : HeightmapFitter.Fit(DemoGridCommand.Heightmap(129), 129, 129, 5, 5).Grid;
             var c = a.Doubles("center", 2, "0.5137,0.6262");
-            string[] widths = a.String("widths", "1e-2,1e-4,1e-6").Split(',');
+            string widthList = a.String("widths", "1e-2,1e-4,1e-6");
+            double[] widths = Array.ConvertAll(widthList.Split(','), ws => Args.Number("widths", widthList, ws));
             double pixels = a.Double("pixels", 800), pan = a.Double("pan", 0.25);
             int tiles = a.Int("tiles", 8), factor = a.Int("factor", 16);
             NoiseSettings? noise = null;
@@ -32,9 +33,8 @@ namespace GregoryTerrain.Rig
             Console.WriteLine(FormattableString.Invariant(
                 $"jitter (px) of a {pixels:R}-pixel zoom view, {tiles}x{tiles} tiles at factor {factor}, pan {pan:R} px, centre ({c[0]:R}, {c[1]:R}), noise {(noise.HasValue ? noise.Value.ToString() : "off")}"));
             Console.WriteLine("width     plain      origin-only  shipped    (shipped largest error px)");
-            foreach (string ws in widths)
+            foreach (double w in widths)
             {
-                double w = double.Parse(ws, System.Globalization.CultureInfo.InvariantCulture);
                 var center = new Double2(c[0], c[1]);
                 double plain = ZoomJitter.Measure(grid, VertexPath.Plain, center, w, pixels, tiles, factor, pan, out _, noise);
                 double origin = ZoomJitter.Measure(grid, VertexPath.OriginOnly, center, w, pixels, tiles, factor, pan, out _, noise);

@@ -23,7 +23,7 @@ namespace GregoryTerrain.Rig
         public static RigScene FromArgs(Args a) => FromGrid(ReadGrid(a), a);
 
         /// <summary>The patch grid JSON named by --grid (every command that takes one reads it so).</summary>
-        public static PatchGrid ReadGrid(Args a) => PatchGridJson.Read(File.ReadAllText(a.String("grid")));
+        public static PatchGrid ReadGrid(Args a) => PatchGridJson.ReadFile(a.String("grid"));
 
         /// <summary>The scene of the options in <paramref name="a"/> over an already loaded grid.</summary>
         public static RigScene FromGrid(PatchGrid grid, Args a)

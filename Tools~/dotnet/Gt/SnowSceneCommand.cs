@@ -31,7 +31,7 @@ namespace GregoryTerrain.Rig
 
             PatchGrid grid;
             string gridPath = a.Flag("grid") ? a.String("grid") : null;
-            if (gridPath != null) grid = PatchGridJson.Read(File.ReadAllText(gridPath));
+            if (gridPath != null) grid = PatchGridJson.ReadFile(gridPath);
             else
             {
                 const int samples = 129;

@@ -30,7 +30,7 @@ namespace GregoryTerrain.Rig
                 throw new ArgumentException($"--script-guid '{guid}' must be 32 lower-case hex digits (the guid in PatchGridAsset.cs.meta)");
             if (name.Length == 0 || name.IndexOfAny(new[] { '\n', '\r', ':', '#' }) >= 0)
                 throw new ArgumentException($"--name '{name}' must be non-empty without ':', '#' or line breaks");
-            PatchGrid grid = PatchGridJson.Read(File.ReadAllText(gridPath));
+            PatchGrid grid = PatchGridJson.ReadFile(gridPath);
             grid.Validate();
             string yaml = Write(grid, guid, name);
             Directory.CreateDirectory(Path.GetDirectoryName(Path.GetFullPath(output)));

@@ -53,6 +53,7 @@ namespace UnityEditor
         }
         public static void BeginChangeCheck() { }                                            // SR:EditorGUI.BeginChangeCheck
         public static bool EndChangeCheck() => false;                                        // SR:EditorGUI.EndChangeCheck
+        public static void DrawPreviewTexture(Rect position, Texture image) { }              // SR:EditorGUI.DrawPreviewTexture
     }
 
     public sealed class EditorGUILayout                                                      // SR:EditorGUILayout
@@ -65,6 +66,8 @@ namespace UnityEditor
         public static int IntField(GUIContent label, int value, params GUILayoutOption[] options) => value;         // SR:EditorGUILayout.IntField
         public static float FloatField(GUIContent label, float value, params GUILayoutOption[] options) => value;   // SR:EditorGUILayout.FloatField
         public static Object ObjectField(GUIContent label, Object obj, Type objType, bool allowSceneObjects, params GUILayoutOption[] options) => obj; // SR:EditorGUILayout.ObjectField
+        public static Enum EnumPopup(GUIContent label, Enum selected, params GUILayoutOption[] options) => selected; // SR:EditorGUILayout.EnumPopup
+        public static bool Toggle(GUIContent label, bool value, params GUILayoutOption[] options) => value;        // SR:EditorGUILayout.Toggle
     }
 
     public class EditorUtility                                                               // SR:EditorUtility (plain class in 2022.3)

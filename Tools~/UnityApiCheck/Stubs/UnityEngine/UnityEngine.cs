@@ -197,6 +197,28 @@ namespace UnityEngine
     public sealed class Texture2D : Texture                                           // SR:Texture2D
     {
         public Color[] GetPixels() => null;                                           // SR:Texture2D.GetPixels
+        public Texture2D(int width, int height, TextureFormat textureFormat, bool mipChain) { } // SR:Texture2D-ctor
+        public TextureFormat format => default;                                       // SR:Texture2D-format (get only)
+        public byte[] GetRawTextureData() => null;                                    // SR:Texture2D.GetRawTextureData
+        public void LoadRawTextureData(byte[] data) { }                               // SR:Texture2D.LoadRawTextureData
+        public void Apply() { }                                                       // SR:Texture2D.Apply
+    }
+    // SR:TextureFormat (the members the package names; values as in Unity's GraphicsEnums.cs)
+    public enum TextureFormat { Alpha8 = 1, RGBA32 = 4, R16 = 9, RHalf = 15, RGBAHalf = 17, RFloat = 18, RGBAFloat = 20, R8 = 63, RGBA64 = 74 }
+    public sealed class Terrain : Behaviour                                           // SR:Terrain
+    {
+        public TerrainData terrainData { get; set; }                                  // SR:Terrain-terrainData
+    }
+    public sealed class TerrainData : Object                                          // SR:TerrainData
+    {
+        public int heightmapResolution { get; set; }                                  // SR:TerrainData-heightmapResolution
+        public Vector3 size { get; set; }                                             // SR:TerrainData-size
+        public float[,] GetHeights(int xBase, int yBase, int width, int height) => null; // SR:TerrainData.GetHeights
+    }
+    public struct Rect { }                                                            // SR:Rect (passed through only)
+    public class GUILayoutUtility                                                     // SR:GUILayoutUtility
+    {
+        public static Rect GetRect(float minWidth, float maxWidth, float minHeight, float maxHeight) => default; // SR:GUILayoutUtility.GetRect
     }
 
     public sealed partial class Shader : Object                                       // SR:Shader

@@ -1,6 +1,7 @@
+// The interpolant of the pre-issue-27 fitter (git show 5bbbfe0:Runtime/Core/Grid/HeightmapInterpolant.cs), for gt fit-bench only.
 using System;
 
-namespace GregoryTerrain
+namespace GregoryTerrain.Rig.Legacy
 {
     /// <summary>
     /// A C1 bicubic interpolant of a height array: Catmull-Rom (cubic convolution) in x and in y.
@@ -9,14 +10,14 @@ namespace GregoryTerrain
     /// extended linearly (<c>s[-1] = 2 s[0] - s[1]</c>), so the slope at the border is the one-sided
     /// difference instead of being forced to 0. Inputs are checked by <see cref="HeightmapFitter"/>.
     /// </summary>
-    public sealed class HeightmapInterpolant
+    public sealed class LegacyHeightmapInterpolant
     {
         readonly double[] heights;
         readonly int width, height;
 
-        public HeightmapInterpolant(double[] heights, int width, int height)
+        public LegacyHeightmapInterpolant(double[] heights, int width, int height)
         {
-            HeightmapFitter.CheckHeights(heights, width, height);
+            LegacyHeightmapFitter.CheckHeights(heights, width, height);
             this.heights = heights;
             this.width = width;
             this.height = height;

@@ -1,0 +1,105 @@
+#!/usr/bin/env python3
+"""Rewrites an 8-bit RGB or RGBA PNG as an indexed PNG of at most N colours (default 256), to keep
+the manual's pictures small: the palette by median cut over the picture's colours (weighted by how
+often each occurs), each pixel mapped to the nearest palette colour, no dithering (renders and plots
+have smooth shading or flat areas, which dithering only makes noisier), zlib level 9. Transparent
+pixels are composed over white. Standard library only.
+
+Usage: png_palette.py IN.png OUT.png [COLOURS]
+"""
+import struct, sys, zlib
+from collections import Counter
+
+
+def read_rgb(path):
+    data = open(path, "rb").read()
+    assert data[:8] == b"\x89PNG\r\n\x1a\n", f"{path}: not a PNG"
+    i, idat, w, h, colour = 8, b"", 0, 0, 0
+    while i < len(data):
+        n, kind = struct.unpack(">I4s", data[i:i + 8])
+        body = data[i + 8:i + 8 + n]
+        if kind == b"IHDR":
+            w, h, depth, colour, _, _, interlace = struct.unpack(">IIBBBBB", body)
+            assert depth == 8 and colour in (2, 6) and interlace == 0, f"{path}: expected 8-bit RGB or RGBA, not interlaced"
+        elif kind == b"IDAT":
+            idat += body
+        i += 12 + n
+    bpp = 3 if colour == 2 else 4
+    raw, stride = zlib.decompress(idat), 1 + bpp * w
+    prev, pixels = bytearray(bpp * w), []
+    for y in range(h):
+        kind, row = raw[y * stride], bytearray(raw[y * stride + 1:(y + 1) * stride])
+        for k in range(len(row)):
+            a = row[k - bpp] if k >= bpp else 0
+            b, c = prev[k], (prev[k - bpp] if k >= bpp else 0)
+            if kind == 1: row[k] = (row[k] + a) & 255
+            elif kind == 2: row[k] = (row[k] + b) & 255
+            elif kind == 3: row[k] = (row[k] + (a + b) // 2) & 255
+            elif kind == 4:
+                p = a + b - c
+                pa, pb, pc = abs(p - a), abs(p - b), abs(p - c)
+                row[k] = (row[k] + (a if pa <= pb and pa <= pc else (b if pb <= pc else c))) & 255
+            else: assert kind == 0, f"{path}: unknown filter {kind}"
+        prev = row
+        for x in range(w):
+            px = row[bpp * x:bpp * x + bpp]
+            if bpp == 4:  # over white
+                al = px[3]
+                px = bytes((v * al + 255 * (255 - al) + 127) // 255 for v in px[:3])
+            pixels.append(bytes(px[:3]))
+    return w, h, pixels
+
+
+def median_cut(counts, n):
+    boxes = [list(counts.items())]
+    while len(boxes) < n:
+        # split the box with the widest channel range, weighted by its pixel count
+        best, key = None, -1
+        for bi, box in enumerate(boxes):
+            if len(box) < 2: continue
+            spread = max(max(c[ch] for c, _ in box) - min(c[ch] for c, _ in box) for ch in range(3))
+            score = spread * sum(k for _, k in box)
+            if score > key: best, key = bi, score
+        if best is None: break
+        box = boxes.pop(best)
+        ch = max(range(3), key=lambda ch: max(c[ch] for c, _ in box) - min(c[ch] for c, _ in box))
+        box.sort(key=lambda e: e[0][ch])
+        total, acc, cut = sum(k for _, k in box), 0, 1
+        for j, (_, k) in enumerate(box):
+            acc += k
+            if acc >= total / 2: cut = max(1, min(len(box) - 1, j + 1)); break
+        boxes += [box[:cut], box[cut:]]
+    palette = []
+    for box in boxes:
+        t = sum(k for _, k in box)
+        palette.append(bytes(round(sum(c[ch] * k for c, k in box) / t) for ch in range(3)))
+    return palette
+
+
+def write_indexed(path, w, h, pixels, palette):
+    index, cache = bytearray(), {}
+    for px in pixels:
+        j = cache.get(px)
+        if j is None:
+            j = min(range(len(palette)), key=lambda i: (palette[i][0] - px[0]) ** 2 * 3 + (palette[i][1] - px[1]) ** 2 * 4 + (palette[i][2] - px[2]) ** 2 * 2)
+            cache[px] = j
+        index.append(j)
+    raw = bytearray()
+    for y in range(h):
+        raw.append(0)
+        raw += index[y * w:(y + 1) * w]
+    def chunk(kind, body):
+        return struct.pack(">I", len(body)) + kind + body + struct.pack(">I", zlib.crc32(kind + body))
+    png = b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", w, h, 8, 3, 0, 0, 0))
+    png += chunk(b"PLTE", b"".join(palette)) + chunk(b"IDAT", zlib.compress(bytes(raw), 9)) + chunk(b"IEND", b"")
+    open(path, "wb").write(png)
+
+
+if __name__ == "__main__":
+    if len(sys.argv) not in (3, 4):
+        sys.exit(__doc__)
+    colours = int(sys.argv[3]) if len(sys.argv) == 4 else 256
+    if not 2 <= colours <= 256:
+        sys.exit(f"COLOURS ({colours}) must lie in [2, 256]")
+    w, h, pixels = read_rgb(sys.argv[1])
+    write_indexed(sys.argv[2], w, h, pixels, median_cut(Counter(pixels), colours))
