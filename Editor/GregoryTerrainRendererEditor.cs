@@ -6,8 +6,8 @@ namespace GregoryTerrain.EditorTools
 {
     /// <summary>
     /// Renderer inspector (triangles in view and at most, vertex cache memory, fallback status) and Scene-view tools: control points
-    /// and patch wireframe drawn with Handles, control points moved with position handles (undoable),
-    /// and the demo's keys while the Scene view has focus: Z control points, X wireframe, C/V factor -/+.
+    /// and patch wireframe drawn with Handles, control points moved with position handles (undoable).
+    /// The Scene-view keys are shortcuts of the Shortcut Manager (GregoryTerrainShortcuts).
     /// </summary>
     [CustomEditor(typeof(GregoryTerrainRenderer))]
     internal sealed class GregoryTerrainRendererEditor : Editor
@@ -75,29 +75,12 @@ namespace GregoryTerrain.EditorTools
         void OnSceneGUI()
         {
             var r = (GregoryTerrainRenderer)target;
-            HandleKeys(r);
             PatchGridAsset grid = r.Grid;
             if (grid == null || !grid.IsValid) return;
             Handles.matrix = r.transform.localToWorldMatrix;
             if (r.debugShowPatchWireframe) DrawWireframe(grid);
             if (r.debugShowControlPoints) EditControlPoints(grid);
             Handles.matrix = Matrix4x4.identity;
-        }
-
-        static void HandleKeys(GregoryTerrainRenderer r)
-        {
-            Event e = Event.current;
-            if (e.type != EventType.KeyDown) return;
-            switch (e.keyCode)
-            {
-                case KeyCode.Z: Undo.RecordObject(r, "Toggle control points"); r.debugShowControlPoints = !r.debugShowControlPoints; break;
-                case KeyCode.X: Undo.RecordObject(r, "Toggle wireframe"); r.debugShowPatchWireframe = !r.debugShowPatchWireframe; break;
-                case KeyCode.C: Undo.RecordObject(r, "Tessellation factor -"); r.UniformFactor = r.UniformFactor - 1; break;
-                case KeyCode.V: Undo.RecordObject(r, "Tessellation factor +"); r.UniformFactor = r.UniformFactor + 1; break;
-                default: return;
-            }
-            e.Use();
-            SceneView.RepaintAll();
         }
 
         // Terrain point (x, y, z) -> object position (x, z, y): Unity is Y-up.
@@ -142,9 +125,7 @@ namespace GregoryTerrain.EditorTools
             Vector3 moved = Handles.PositionHandle(current, Quaternion.identity);
             if (EditorGUI.EndChangeCheck())
             {
-                Undo.RecordObject(grid, "Move control point");
-                grid.SetControlPoint(_selectedPatch, _selectedSlot, ToTerrain(moved));
-                EditorUtility.SetDirty(grid);
+                PatchGridAssetUndo.MoveControlPoint(grid, _selectedPatch, _selectedSlot, ToTerrain(moved));
             }
         }
     }

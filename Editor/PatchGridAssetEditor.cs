@@ -15,6 +15,7 @@ namespace GregoryTerrain.EditorTools
         static readonly GUIContent MeasureLabel = new GUIContent("Measure G1", "Largest position gap and normal angle across shared patch edges (Core's ContinuityMeasure).");
         static readonly GUIContent ImportLabel = new GUIContent("Import JSON...", "Replace the grid with one read from a JSON file. A file that fails to parse changes nothing.");
         static readonly GUIContent ExportLabel = new GUIContent("Export JSON...", "Write the grid to a JSON file (Core's PatchGridJson format).");
+        static readonly GUIContent UpgradeLabel = new GUIContent("Move to blocks", "Move the control points into block sub-assets now, bit for bit (one undo step). Edits do it by themselves.");
         string _measure;
         List<string> _warnings;
         int _warningsVersion;
@@ -35,6 +36,11 @@ namespace GregoryTerrain.EditorTools
             if (asset.IsValid && _warnings.Count > 0)
                 EditorGUILayout.HelpBox("Geometry that will not draw sensibly:\n" + string.Join("\n", _warnings), MessageType.Warning);
 
+            if (asset.HasLegacyLayout && asset.IsValid)
+            {
+                EditorGUILayout.HelpBox("This grid keeps its control points in the older single array. It loads and draws as is; its first edit moves them into blocks (only the blocks an edit touches are recorded for Undo).", MessageType.Info);
+                if (GUILayout.Button(UpgradeLabel)) PatchGridAssetUndo.MoveLegacyDataToBlocks(asset, "Move patch grid to blocks");
+            }
             using (new EditorGUI.DisabledScope(!asset.IsValid))
             {
                 if (GUILayout.Button(MeasureLabel))
@@ -80,9 +86,7 @@ namespace GregoryTerrain.EditorTools
             try
             {
                 PatchGrid grid = PatchGridJson.ReadFile(path);     // parse first: nothing recorded on failure
-                Undo.RecordObject(asset, "Import patch grid");
-                asset.SetGrid(grid);
-                EditorUtility.SetDirty(asset);
+                PatchGridAssetUndo.SetGrid(asset, grid, "Import patch grid");
             }
             catch (Exception e) when (e is FormatException || e is ArgumentException || e is IOException || e is UnauthorizedAccessException)
             {

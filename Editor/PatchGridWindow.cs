@@ -221,9 +221,7 @@ namespace GregoryTerrain.EditorTools
 
         void Apply(string undoName, PatchGrid grid)
         {
-            Undo.RecordObject(asset, undoName);
-            asset.SetGrid(grid);
-            EditorUtility.SetDirty(asset);
+            PatchGridAssetUndo.SetGrid(asset, grid, undoName);
             Report($"{undoName}: {grid.Columns} x {grid.Rows} patches.", MessageType.Info);
         }
 

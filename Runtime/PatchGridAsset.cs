@@ -7,15 +7,23 @@ namespace GregoryTerrain
     /// <summary>
     /// A patch grid saved as a Unity asset: the serializable form of Core's <see cref="PatchGrid"/>
     /// (internals.md: n columns, m rows, grid lines, 20 control points per patch in GregoryPatch slot
-    /// order, patch <c>p = j * n + i</c>). Every change goes through <see cref="SetGrid"/> or
-    /// <see cref="ImportJson"/>, which check the new data completely before touching the old, and
-    /// stamps a new <see cref="Version"/> so renderers upload again only when the grid changed.
+    /// order, patch <c>p = j * n + i</c>). The control points live in <see cref="PatchGridBlock"/>
+    /// sub-assets of 64 patches (Core's <see cref="PatchGridBlocks"/>), so an edit records for Undo
+    /// only the blocks it changes, and the asset is saved in Unity's binary format whatever the
+    /// project's serialization mode (<see cref="PreferBinarySerialization"/>, as Unity does for
+    /// TerrainData): 8 bytes a double instead of about 20 characters of YAML. Grids saved with the
+    /// older single <c>controlPoints</c> array still load; the first edit moves them into blocks
+    /// (the editor's PatchGridAssetUndo), bit for bit. Every change goes through <see cref="SetGrid(PatchGrid)"/>,
+    /// <see cref="ImportJson"/> or <see cref="SetControlPoint"/>, which check the new data completely
+    /// before touching the old, and stamps a new <see cref="Version"/> so renderers upload again only
+    /// when the grid changed.
     /// </summary>
     [CreateAssetMenu(menuName = "Gregory Terrain/Patch Grid", fileName = "PatchGrid", order = 200)]
+    [PreferBinarySerialization]
     public sealed class PatchGridAsset : ScriptableObject
     {
-        /// <summary>Doubles per patch in <see cref="controlPoints"/>: 20 points of (x, y, z).</summary>
-        public const int DoublesPerPatch = 3 * 20;
+        /// <summary>Doubles per patch: 20 points of (x, y, z).</summary>
+        public const int DoublesPerPatch = PatchGridBlocks.DoublesPerPatch;
 
         [Tooltip("Number of patch columns n (along x, the patch index i).")]
         [SerializeField, Min(1)] int columns = 1;
@@ -29,15 +37,19 @@ namespace GregoryTerrain
         [Tooltip("Horizontal grid lines y[0..m], strictly increasing from 0 to 1: patch (i, j) spans y[j]..y[j+1].")]
         [SerializeField] double[] yLines = { 0.0, 1.0 };
 
-        [Tooltip("20 control points (x, y, z) per patch, GregoryPatch slot order, patch p = j * n + i. " +
-                 "Edit with the Patch Grid window or the Scene-view handles, not by hand.")]
-        [SerializeField] double[] controlPoints = FlatPatch();
+        [Tooltip("The control point blocks (sub-assets of this grid), 64 patches each. Edit with the Patch Grid window or the Scene-view handles.")]
+        [SerializeField] PatchGridBlock[] blocks = Array.Empty<PatchGridBlock>();
+
+        // The layout before blocks: all control points in one array. Read when blocks is empty; emptied
+        // when the editor moves the data into blocks. A new asset starts here with one flat patch.
+        [SerializeField, HideInInspector] double[] controlPoints = FlatPatch();
 
         // Version stamps come from one process-wide counter, so a stamp is never reused: after an undo
         // the asset gets a fresh stamp too, and a renderer never mistakes old data for uploaded data.
         static int s_NextVersion = 1;
         [NonSerialized] int _version;
         [NonSerialized] string _error;
+        [NonSerialized] double[][] _legacyBlocks;   // controlPoints cut into blocks, read-only view
 
         /// <summary>Changes whenever the grid data may have changed (edit, undo, import, load).</summary>
         public int Version => _version;
@@ -57,17 +69,24 @@ namespace GregoryTerrain
         /// <summary>True when the serialized data is a valid grid.</summary>
         public bool IsValid => _error == null;
 
+        /// <summary>True while the control points are still in the older single array (not yet in blocks).</summary>
+        internal bool HasLegacyLayout => (blocks == null || blocks.Length == 0) && controlPoints != null && controlPoints.Length > 0;
+
+        /// <summary>The control point blocks (empty while <see cref="HasLegacyLayout"/>). A copy of the array.</summary>
+        internal PatchGridBlock[] Blocks => blocks == null ? Array.Empty<PatchGridBlock>() : (PatchGridBlock[])blocks.Clone();
+
         void OnEnable() => MarkChanged();
 
         void OnValidate() => MarkChanged();
 
         /// <summary>
         /// Re-validates and stamps a new version. Editor code calls it after changing the serialized
-        /// data directly (handles, undo/redo); <see cref="SetGrid"/> calls it itself.
+        /// data directly (handles, undo/redo); the setters call it themselves.
         /// </summary>
         public void MarkChanged()
         {
             _version = s_NextVersion++;
+            _legacyBlocks = null;
             _error = CheckSerializedData();
             if (_error != null)
                 Debug.LogError($"Patch grid '{name}' is invalid: {_error}", this);
@@ -78,23 +97,16 @@ namespace GregoryTerrain
         {
             string error = CheckSerializedData();
             if (error != null) throw new ArgumentException(error);
-            var patches = new GregoryPatch[columns * rows];
-            for (int p = 0; p < patches.Length; p++)
-            {
-                var patch = new GregoryPatch();
-                int k0 = p * DoublesPerPatch;
-                for (int s = 0; s < GregoryPatch.SlotCount; s++)
-                    patch[s] = new Double3(controlPoints[k0 + 3 * s], controlPoints[k0 + 3 * s + 1], controlPoints[k0 + 3 * s + 2]);
-                patches[p] = patch;
-            }
-            return new PatchGrid(columns, rows, (double[])xLines.Clone(), (double[])yLines.Clone(), patches);
+            return new PatchGrid(columns, rows, (double[])xLines.Clone(), (double[])yLines.Clone(), PatchGridBlocks.ToPatches(Data(), PatchCount));
         }
 
         /// <summary>
-        /// Replaces the data with <paramref name="grid"/> (already validated by PatchGrid). Nothing
-        /// changes if the copy fails. Record an undo step before calling it from the editor.
+        /// Replaces the data with <paramref name="grid"/> (already validated by PatchGrid). Existing
+        /// blocks are written in place; <paramref name="created"/> are new blocks (not yet sub-assets:
+        /// the editor adds them to the asset) and <paramref name="dropped"/> blocks no longer used (the
+        /// editor destroys them with Undo). Record the asset and its blocks before calling it.
         /// </summary>
-        internal void SetGrid(PatchGrid grid)
+        internal void SetGrid(PatchGrid grid, out PatchGridBlock[] created, out PatchGridBlock[] dropped)
         {
             if (grid == null) throw new ArgumentNullException(nameof(grid));
             int n = grid.Columns, m = grid.Rows;
@@ -102,20 +114,51 @@ namespace GregoryTerrain
             var ys = new double[m + 1];
             for (int i = 0; i <= n; i++) xs[i] = grid.XLines[i];
             for (int j = 0; j <= m; j++) ys[j] = grid.YLines[j];
-            var cps = new double[n * m * DoublesPerPatch];
-            for (int p = 0; p < n * m; p++)
-            {
-                GregoryPatch patch = grid.Patches[p];
-                for (int s = 0; s < GregoryPatch.SlotCount; s++)
-                {
-                    Double3 q = patch[s];
-                    int k = p * DoublesPerPatch + 3 * s;
-                    cps[k] = q.x; cps[k + 1] = q.y; cps[k + 2] = q.z;
-                }
-            }
+            double[][] data = PatchGridBlocks.FromGrid(grid);
             // Everything is built; only now replace the old data.
-            columns = n; rows = m; xLines = xs; yLines = ys; controlPoints = cps;
+            PatchGridBlock[] old = blocks ?? Array.Empty<PatchGridBlock>();
+            var next = new PatchGridBlock[data.Length];
+            var made = new System.Collections.Generic.List<PatchGridBlock>();
+            for (int b = 0; b < next.Length; b++)
+            {
+                if (b < old.Length && old[b] != null) { next[b] = old[b]; next[b].Points = data[b]; }
+                else { next[b] = PatchGridBlock.Create(this, b, data[b]); made.Add(next[b]); }
+            }
+            var unused = new System.Collections.Generic.List<PatchGridBlock>();
+            for (int b = next.Length; b < old.Length; b++) if (old[b] != null) unused.Add(old[b]);
+            columns = n; rows = m; xLines = xs; yLines = ys; blocks = next; controlPoints = Array.Empty<double>();
+            created = made.ToArray();
+            dropped = unused.ToArray();
             MarkChanged();
+        }
+
+        /// <summary>
+        /// Replaces the data with <paramref name="grid"/>, destroying blocks no longer used. For code
+        /// outside the editor; the editor goes through PatchGridAssetUndo.SetGrid.
+        /// </summary>
+        internal void SetGrid(PatchGrid grid)
+        {
+            SetGrid(grid, out _, out PatchGridBlock[] dropped);
+            foreach (PatchGridBlock b in dropped)
+                if (Application.isPlaying) Destroy(b); else DestroyImmediate(b);
+        }
+
+        /// <summary>
+        /// Moves the older single array into new blocks, bit for bit (returned; not yet sub-assets: the
+        /// editor adds them to the asset). Does nothing and returns none when the grid has blocks.
+        /// </summary>
+        internal PatchGridBlock[] MoveLegacyDataToBlocks()
+        {
+            if (!HasLegacyLayout) return Array.Empty<PatchGridBlock>();
+            string error = CheckSerializedData();
+            if (error != null) throw new InvalidOperationException($"Patch grid '{name}' cannot be upgraded: {error}");
+            double[][] data = PatchGridBlocks.Split(controlPoints, PatchCount);
+            var made = new PatchGridBlock[data.Length];
+            for (int b = 0; b < data.Length; b++) made[b] = PatchGridBlock.Create(this, b, data[b]);
+            blocks = made;
+            controlPoints = Array.Empty<double>();
+            MarkChanged();
+            return made;
         }
 
         /// <summary>The grid as JSON (Core's PatchGridJson format).</summary>
@@ -134,74 +177,74 @@ namespace GregoryTerrain
         /// <summary>Control point <paramref name="slot"/> of patch <paramref name="patch"/>, terrain space.</summary>
         public Vector3 GetControlPoint(int patch, int slot)
         {
-            int k = Index(patch, slot);
-            return new Vector3((float)controlPoints[k], (float)controlPoints[k + 1], (float)controlPoints[k + 2]);
+            CheckIndex(patch, slot);
+            Double3 q = PatchGridBlocks.Get(Data(), patch, slot);
+            return new Vector3((float)q.x, (float)q.y, (float)q.z);
         }
 
         /// <summary>
-        /// Moves one control point (terrain space). Record an undo step first. A boundary point is
-        /// stored once per patch that shares it, bit for bit (PatchGrid.Validate and the GPU's
-        /// watertight edges rely on it), so every copy in the neighbouring patches moves with it.
-        /// Does not enforce G1: run the Patch Grid window's "Enforce G1" afterwards if the grid must
-        /// stay smooth.
+        /// The blocks <see cref="SetControlPoint"/> may change for this point (its own and, for a shared
+        /// boundary point, its neighbours'): record these for Undo before the move. Empty while the grid
+        /// still has the older layout (move its data to blocks first).
+        /// </summary>
+        internal PatchGridBlock[] BlocksTouchedByMove(int patch, int slot)
+        {
+            CheckIndex(patch, slot);
+            if (HasLegacyLayout) return Array.Empty<PatchGridBlock>();
+            int[] touched = PatchGridBlocks.BlocksTouchedByMove(columns, rows, patch, slot);
+            var result = new PatchGridBlock[touched.Length];
+            for (int k = 0; k < touched.Length; k++) result[k] = blocks[touched[k]];
+            return result;
+        }
+
+        /// <summary>
+        /// Moves one control point (terrain space); every bit-identical copy of a shared boundary point
+        /// in the neighbouring patches moves with it (Core's PatchGridBlocks.MoveControlPoint). Record
+        /// <see cref="BlocksTouchedByMove"/> first. Does not enforce G1: run the Patch Grid window's
+        /// "Enforce G1" afterwards if the grid must stay smooth.
         /// </summary>
         public void SetControlPoint(int patch, int slot, Vector3 terrainPosition)
         {
-            int k = Index(patch, slot);
-            if (!float.IsFinite(terrainPosition.x) || !float.IsFinite(terrainPosition.y) || !float.IsFinite(terrainPosition.z))
-                throw new ArgumentException($"control point ({patch}, {slot}) = {terrainPosition} must be finite", nameof(terrainPosition));
-            double ox = controlPoints[k], oy = controlPoints[k + 1], oz = controlPoints[k + 2];
-            if (IsBoundarySlot(slot))
-            {
-                // The copies of a shared boundary point sit in the 3 x 3 block of patches around it.
-                int pi = patch % columns, pj = patch / columns;
-                for (int j = Math.Max(pj - 1, 0); j <= Math.Min(pj + 1, rows - 1); j++)
-                for (int i = Math.Max(pi - 1, 0); i <= Math.Min(pi + 1, columns - 1); i++)
-                for (int s = 0; s < 16; s++)
-                {
-                    if (!IsBoundarySlot(s)) continue;
-                    int q = (j * columns + i) * DoublesPerPatch + 3 * s;
-                    if (q == k) continue;
-                    if (SameBits(controlPoints[q], ox) && SameBits(controlPoints[q + 1], oy) && SameBits(controlPoints[q + 2], oz))
-                    {
-                        controlPoints[q] = terrainPosition.x;
-                        controlPoints[q + 1] = terrainPosition.y;
-                        controlPoints[q + 2] = terrainPosition.z;
-                    }
-                }
-            }
-            controlPoints[k] = terrainPosition.x;
-            controlPoints[k + 1] = terrainPosition.y;
-            controlPoints[k + 2] = terrainPosition.z;
+            CheckIndex(patch, slot);
+            if (HasLegacyLayout)
+                throw new InvalidOperationException($"Patch grid '{name}' still has the older single-array layout: move its data to blocks first (MoveLegacyDataToBlocks)");
+            string error = CheckSerializedData();
+            if (error != null) throw new InvalidOperationException($"Patch grid '{name}' is invalid: {error}");
+            PatchGridBlocks.MoveControlPoint(Data(), columns, rows, patch, slot,
+                new Double3(terrainPosition.x, terrainPosition.y, terrainPosition.z));
             MarkChanged();
         }
-
-        /// <summary>Slots 0..15 on the border of the 4 x 4 net (i or j is 0 or 3), slot = 4 i + j.</summary>
-        static bool IsBoundarySlot(int slot) => slot < 16 && (slot / 4 == 0 || slot / 4 == 3 || slot % 4 == 0 || slot % 4 == 3);
-
-        static bool SameBits(double a, double b) => BitConverter.DoubleToInt64Bits(a) == BitConverter.DoubleToInt64Bits(b);
 
         /// <summary>Smallest and largest control point height (z); the surface lies between them.</summary>
         public void GetHeightRange(out float minZ, out float maxZ)
         {
             minZ = float.PositiveInfinity; maxZ = float.NegativeInfinity;
-            if (controlPoints == null) { minZ = maxZ = 0f; return; }
-            for (int k = 2; k < controlPoints.Length; k += 3)
-            {
-                float z = (float)controlPoints[k];
-                if (z < minZ) minZ = z;
-                if (z > maxZ) maxZ = z;
-            }
+            if (CheckSerializedData() == null)
+                foreach (double[] a in Data())
+                    for (int k = 2; k < a.Length; k += 3)
+                    {
+                        float z = (float)a[k];
+                        if (z < minZ) minZ = z;
+                        if (z > maxZ) maxZ = z;
+                    }
             if (minZ > maxZ) minZ = maxZ = 0f;
         }
 
-        int Index(int patch, int slot)
+        /// <summary>The control points as Core blocks: the block objects' arrays, or the older array cut into blocks.</summary>
+        double[][] Data()
+        {
+            if (HasLegacyLayout) return _legacyBlocks ??= PatchGridBlocks.Split(controlPoints, PatchCount);
+            var data = new double[blocks.Length][];
+            for (int b = 0; b < blocks.Length; b++) data[b] = blocks[b] != null ? blocks[b].Points : null;
+            return data;
+        }
+
+        void CheckIndex(int patch, int slot)
         {
             if (patch < 0 || patch >= PatchCount)
                 throw new ArgumentOutOfRangeException(nameof(patch), patch, $"patch must lie in [0, {PatchCount})");
             if (slot < 0 || slot >= GregoryPatch.SlotCount)
                 throw new ArgumentOutOfRangeException(nameof(slot), slot, $"slot must lie in [0, {GregoryPatch.SlotCount})");
-            return patch * DoublesPerPatch + 3 * slot;
         }
 
         /// <summary>Checks the serialized layout; returns a message naming field and value, or null.</summary>
@@ -211,16 +254,32 @@ namespace GregoryTerrain
             if (rows < 1) return $"rows = {rows}, must be at least 1";
             string e = CheckLines("xLines", xLines, columns) ?? CheckLines("yLines", yLines, rows);
             if (e != null) return e;
-            int expected = columns * rows * DoublesPerPatch;
-            if (controlPoints == null || controlPoints.Length != expected)
-                return $"controlPoints.Length = {controlPoints?.Length ?? 0}, expected {expected} (= 60 x {columns} x {rows})";
-            for (int k = 0; k < controlPoints.Length; k++)
+            if (HasLegacyLayout)
             {
-                if (!double.IsFinite(controlPoints[k]))
-                    return $"controlPoints[{k}] (patch {k / DoublesPerPatch}, slot {k % DoublesPerPatch / 3}) = " +
-                           controlPoints[k].ToString(CultureInfo.InvariantCulture) + ", must be finite";
+                int expected = columns * rows * DoublesPerPatch;
+                if (controlPoints.Length != expected)
+                    return $"controlPoints.Length = {controlPoints.Length}, expected {expected} (= 60 x {columns} x {rows})";
             }
-            return PatchGrid.SerializedDataError(columns, rows, xLines, yLines, controlPoints);
+            else
+            {
+                if (blocks == null || blocks.Length == 0) return "blocks is empty and there is no controlPoints array";
+                for (int b = 0; b < blocks.Length; b++)
+                    if (blocks[b] == null) return $"blocks[{b}] is missing (a deleted sub-asset?)";
+                e = PatchGridBlocks.CheckShape(Data(), PatchCount);
+                if (e != null) return e;
+            }
+            if (HasLegacyLayout) return PatchGrid.SerializedDataError(columns, rows, xLines, yLines, controlPoints);
+            // The same rules as the flat layout (Core's PatchGrid.Validate), on the blocks' patches.
+            try
+            {
+                GpuLayout.CheckSize(columns, rows);
+                new PatchGrid(columns, rows, xLines, yLines, PatchGridBlocks.ToPatches(Data(), PatchCount)).Validate();
+                return null;
+            }
+            catch (ArgumentException ex)
+            {
+                return ex.Message;
+            }
         }
 
         static string CheckLines(string field, double[] lines, int cells)

@@ -74,7 +74,7 @@ namespace GregoryTerrain.Rig.Tests
             string source = File.ReadAllText(PackageRoot.Combine("Runtime", "PatchGridAsset.cs"));
             var declared = Regex.Matches(source, @"\[SerializeField[^\]]*\]\s*(?:\w+(?:\[\])?)\s+(\w+)\s*=")
                 .Select(m => m.Groups[1].Value).ToList();
-            Assert.That(declared, Is.EqualTo(new[] { "columns", "rows", "xLines", "yLines", "controlPoints" }), "PatchGridAsset's serialized fields");
+            Assert.That(declared, Is.EqualTo(new[] { "columns", "rows", "xLines", "yLines", "blocks", "controlPoints" }), "PatchGridAsset's serialized fields");
             string yaml = File.ReadAllText(AssetPath);
             var written = Regex.Matches(yaml, @"^  (\w+):", RegexOptions.Multiline).Select(m => m.Groups[1].Value)
                 .Where(n => !n.StartsWith("m_")).ToList();

@@ -10,8 +10,9 @@ namespace GregoryTerrain.Rig
     /// ScriptableObject in Runtime/PatchGridAsset.cs, so the sample ships the real fitted grid without
     /// a Unity editor to save it. The layout is the one Unity's text serialization gives that class:
     /// one MonoBehaviour document (class ID 114, file ID 11400000) whose fields, in declaration order,
-    /// are <c>columns</c>, <c>rows</c> (int), <c>xLines</c>, <c>yLines</c>, <c>controlPoints</c>
-    /// (double[] as YAML sequences; controlPoints holds 20 (x, y, z) per patch, GregoryPatch slot
+    /// are <c>columns</c>, <c>rows</c> (int), <c>xLines</c>, <c>yLines</c>, <c>blocks</c> (empty),
+    /// <c>controlPoints</c> (double[] as YAML sequences: the single-array layout PatchGridAsset loads
+    /// and moves into blocks at the first edit; controlPoints holds 20 (x, y, z) per patch, GregoryPatch slot
     /// order, patch <c>j * n + i</c>). Doubles are written round-trip ("R"), so reading them back
     /// gives the same bits.
     /// Usage: unity-asset --grid GRID.json --out FILE.asset --script-guid GUID [--name NAME]
@@ -68,6 +69,9 @@ namespace GregoryTerrain.Rig
                     int o = p * DoublesPerPatch + 3 * k;
                     cps[o] = q.x; cps[o + 1] = q.y; cps[o + 2] = q.z;
                 }
+            // No blocks yet: the grid is in the single-array layout, which PatchGridAsset still loads and
+            // moves into block sub-assets at its first edit (Unity then saves it in binary).
+            s.Append("  blocks: []\n");
             Sequence(s, "controlPoints", cps);
             return s.ToString();
         }

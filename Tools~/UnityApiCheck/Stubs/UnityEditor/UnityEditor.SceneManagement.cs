@@ -13,8 +13,8 @@ namespace UnityEditor.SceneManagement
 
     public static class SceneCullingMasks                                                    // SR:SceneManagement.SceneCullingMasks
     {
-        public const ulong DefaultSceneCullingMask = GameViewObjects | MainStageSceneViewObjects;
-        public const ulong GameViewObjects = 1UL << 63;
-        public const ulong MainStageSceneViewObjects = (1UL << 61) | (1UL << 62);
+        public const ulong DefaultSceneCullingMask = GameViewObjects | MainStageSceneViewObjects; // SR:SceneManagement.SceneCullingMasks.DefaultSceneCullingMask
+        public const ulong GameViewObjects = 1UL << 63;                                     // SR:SceneManagement.SceneCullingMasks.GameViewObjects
+        public const ulong MainStageSceneViewObjects = (1UL << 61) | (1UL << 62);           // SR:SceneManagement.SceneCullingMasks.MainStageSceneViewObjects
     }
 }

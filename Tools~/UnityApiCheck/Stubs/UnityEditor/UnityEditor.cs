@@ -8,20 +8,24 @@ using Object = UnityEngine.Object;
 
 namespace UnityEditor
 {
-    public delegate void AssemblyReloadCallback();                                           // SR:AssemblyReloadEvents.AssemblyReloadCallback
     public static class AssemblyReloadEvents                                                 // SR:AssemblyReloadEvents
     {
+        public delegate void AssemblyReloadCallback();                                       // SR:AssemblyReloadEvents.AssemblyReloadCallback (nested)
         public static event AssemblyReloadCallback beforeAssemblyReload;                     // SR:AssemblyReloadEvents-beforeAssemblyReload
     }
 
-    [AttributeUsage(AttributeTargets.Class, AllowMultiple = true)]
-    public sealed class CustomEditor : Attribute { public CustomEditor(Type inspectedType) { } } // SR:CustomEditor-ctor
+    // No AttributeUsage in 2022.3 (so: any target, not AllowMultiple, inherited); not sealed.
+    public class CustomEditor : Attribute                                                    // SR:CustomEditor
+    {
+        public CustomEditor(Type inspectedType) { }                                          // SR:CustomEditor-ctor
+        public CustomEditor(Type inspectedType, bool editorForChildClasses) { }              // SR:CustomEditor-ctor
+    }
 
     [AttributeUsage(AttributeTargets.Method, AllowMultiple = true)]
     public sealed class MenuItem : Attribute                                                 // SR:MenuItem-ctor
     {
-        public MenuItem(string itemName) { }
-        public MenuItem(string itemName, bool isValidateFunction, int priority) { }
+        public MenuItem(string itemName) { }                                              // SR:MenuItem-ctor
+        public MenuItem(string itemName, bool isValidateFunction, int priority) { }       // SR:MenuItem-ctor
     }
 
 
@@ -44,8 +48,8 @@ namespace UnityEditor
     {
         public struct DisabledScope : IDisposable                                            // SR:EditorGUI.DisabledScope
         {
-            public DisabledScope(bool disabled) { }
-            public void Dispose() { }
+            public DisabledScope(bool disabled) { }                                       // SR:EditorGUI.DisabledScope-ctor
+            public void Dispose() { }                                                     // SR:EditorGUI.DisabledScope.Dispose
         }
         public static void BeginChangeCheck() { }                                            // SR:EditorGUI.BeginChangeCheck
         public static bool EndChangeCheck() => false;                                        // SR:EditorGUI.EndChangeCheck
@@ -66,7 +70,7 @@ namespace UnityEditor
         public static bool Toggle(GUIContent label, bool value, params GUILayoutOption[] options) => value;        // SR:EditorGUILayout.Toggle
     }
 
-    public static class EditorUtility                                                        // SR:EditorUtility
+    public class EditorUtility                                                               // SR:EditorUtility (plain class in 2022.3)
     {
         public static string SaveFilePanel(string title, string directory, string defaultName, string extension) => null; // SR:EditorUtility.SaveFilePanel
         public static string OpenFilePanel(string title, string directory, string extension) => null;                     // SR:EditorUtility.OpenFilePanel
@@ -76,21 +80,22 @@ namespace UnityEditor
         public static void ClearProgressBar() { }                                                                         // SR:EditorUtility.ClearProgressBar
     }
 
-    public static class Undo                                                                 // SR:Undo
+    public partial class Undo                                                                // SR:Undo (plain partial class in 2022.3)
     {
         public static void RecordObject(Object objectToUndo, string name) { }                // SR:Undo.RecordObject
         public static void RegisterCreatedObjectUndo(Object objectToUndo, string name) { }   // SR:Undo.RegisterCreatedObjectUndo
     }
 
-    public static class AssetDatabase                                                        // SR:AssetDatabase
+    public sealed partial class AssetDatabase                                                   // SR:AssetDatabase
     {
         public static void CreateAsset(Object asset, string path) { }                        // SR:AssetDatabase.CreateAsset
         public static string GenerateUniqueAssetPath(string path) => path;                   // SR:AssetDatabase.GenerateUniqueAssetPath
     }
 
-    public sealed class Selection { public static Object activeObject { get; set; } }        // SR:Selection-activeObject
+    public sealed partial class Selection { public static Object activeObject { get; set; } } // SR:Selection-activeObject
 
-    public class SceneView : EditorWindow                                                    // SR:SceneView
+    public class SearchableEditorWindow : EditorWindow { }                                   // SR:SearchableEditorWindow
+    public class SceneView : SearchableEditorWindow                                          // SR:SceneView
     {
         public static void RepaintAll() { }                                                  // SR:SceneView.RepaintAll
         public static SceneView lastActiveSceneView => null;                                 // SR:SceneView-lastActiveSceneView
@@ -110,5 +115,5 @@ namespace UnityEditor
         public static Vector3 PositionHandle(Vector3 position, Quaternion rotation) => position;                                        // SR:Handles.PositionHandle
     }
 
-    public static class HandleUtility { public static float GetHandleSize(Vector3 position) => 1f; } // SR:HandleUtility.GetHandleSize
+    public sealed class HandleUtility { public static float GetHandleSize(Vector3 position) => 1f; } // SR:HandleUtility.GetHandleSize
 }

@@ -75,7 +75,7 @@ namespace UnityEngine.Rendering
     // SR:Rendering.ScriptableRenderContext (a struct; the package only receives it)
     public struct ScriptableRenderContext : IEquatable<ScriptableRenderContext>
     {
-        public bool Equals(ScriptableRenderContext other) => false;
+        public bool Equals(ScriptableRenderContext other) => false;                         // SR:Rendering.ScriptableRenderContext.Equals
     }
 
     public static class RenderPipelineManager                                         // SR:Rendering.RenderPipelineManager

@@ -10,7 +10,7 @@ using System.Collections.Generic;
 namespace UnityEngine
 {
     // SR:Object
-    public partial class Object
+    public partial class Object                                                       // SR:Object
     {
         public string name { get => null; set { } }                                  // SR:Object-name
         public static implicit operator bool(Object o) => !ReferenceEquals(o, null);  // SR:Object-operator_Object
@@ -34,7 +34,7 @@ namespace UnityEngine
         public bool isActiveAndEnabled => false;                                      // SR:Behaviour-isActiveAndEnabled
     }
     public class MonoBehaviour : Behaviour { }                                        // SR:MonoBehaviour
-    public class ScriptableObject : Object                                            // SR:ScriptableObject
+    public partial class ScriptableObject : Object                                    // SR:ScriptableObject
     {
         public static T CreateInstance<T>() where T : ScriptableObject => null;       // SR:ScriptableObject.CreateInstance
     }
@@ -65,7 +65,7 @@ namespace UnityEngine
         public void LookAt(Vector3 worldPosition) { }                                 // SR:Transform.LookAt
     }
 
-    public sealed partial class Camera : Behaviour                                    // SR:Camera
+    public sealed partial class Camera : Behaviour                                    // SR:Camera (sealed partial in 2022.3)
     {
         public static Camera main => null;                                            // SR:Camera-main
         public float fieldOfView { get; set; }                                        // SR:Camera-fieldOfView
@@ -82,7 +82,7 @@ namespace UnityEngine
         public static Matrix4x4 GetGPUProjectionMatrix(Matrix4x4 proj, bool renderIntoTexture) => proj; // SR:GL.GetGPUProjectionMatrix
     }
 
-    public static class Debug                                                         // SR:Debug
+    public class Debug                                                                // SR:Debug (a plain class in 2022.3, not static)
     {
         public static void Log(object message, Object context) { }                    // SR:Debug.Log
         public static void LogWarning(object message, Object context) { }             // SR:Debug.LogWarning
@@ -90,10 +90,10 @@ namespace UnityEngine
         public static void LogError(object message) { }                               // SR:Debug.LogError
     }
 
-    public static class Application { public static bool isPlaying => false; }       // SR:Application-isPlaying
-    public static class Time { public static float deltaTime => 0f; public static float time => 0f; } // SR:Time-deltaTime, SR:Time-time
+    public class Application { public static bool isPlaying => false; }              // SR:Application-isPlaying (plain class)
+    public class Time { public static float deltaTime => 0f; public static float time => 0f; } // SR:Time-deltaTime, SR:Time-time (plain class)
 
-    public static class Mathf                                                         // SR:Mathf
+    public struct Mathf                                                               // SR:Mathf (a struct in 2022.3)
     {
         public const float Deg2Rad = 0.017453292f;                                    // SR:Mathf.Deg2Rad
         public const float PI = 3.14159274f;                                          // SR:Mathf.PI
@@ -113,8 +113,8 @@ namespace UnityEngine
 
     public struct Vector2                                                             // SR:Vector2
     {
-        public float x, y;
-        public Vector2(float x, float y) { this.x = x; this.y = y; }
+        public float x, y;                                                                // SR:Vector2-x, SR:Vector2-y
+        public Vector2(float x, float y) { this.x = x; this.y = y; }                      // SR:Vector2-ctor
         public static Vector2 zero => default;                                        // SR:Vector2-zero
         public float sqrMagnitude => 0f;                                              // SR:Vector2-sqrMagnitude
         public void Normalize() { }                                                   // SR:Vector2.Normalize
@@ -127,15 +127,15 @@ namespace UnityEngine
 
     public struct Vector2Int                                                          // SR:Vector2Int
     {
-        public int x { get; set; }
-        public int y { get; set; }
-        public Vector2Int(int x, int y) { this.x = x; this.y = y; }
+        public int x { get; set; }                                                        // SR:Vector2Int-x
+        public int y { get; set; }                                                        // SR:Vector2Int-y
+        public Vector2Int(int x, int y) { this.x = x; this.y = y; }                       // SR:Vector2Int-ctor
     }
 
     public struct Vector3                                                             // SR:Vector3
     {
-        public float x, y, z;
-        public Vector3(float x, float y, float z) { this.x = x; this.y = y; this.z = z; }
+        public float x, y, z;                                                             // SR:Vector3-x, SR:Vector3-y, SR:Vector3-z
+        public Vector3(float x, float y, float z) { this.x = x; this.y = y; this.z = z; } // SR:Vector3-ctor
         public static Vector3 zero => default;                                        // SR:Vector3-zero
         public static Vector3 one => default;                                         // SR:Vector3-one
         public static Vector3 forward => default;                                     // SR:Vector3-forward
@@ -152,8 +152,8 @@ namespace UnityEngine
 
     public struct Vector4                                                             // SR:Vector4
     {
-        public float x, y, z, w;
-        public Vector4(float x, float y, float z, float w) { this.x = x; this.y = y; this.z = z; this.w = w; }
+        public float x, y, z, w;                                                          // SR:Vector4-x (y, z, w)
+        public Vector4(float x, float y, float z, float w) { this.x = x; this.y = y; this.z = z; this.w = w; } // SR:Vector4-ctor
     }
 
     public struct Quaternion                                                          // SR:Quaternion
@@ -165,7 +165,7 @@ namespace UnityEngine
 
     public struct Matrix4x4                                                           // SR:Matrix4x4
     {
-        public float m00, m01, m02, m03, m10, m11, m12, m13, m20, m21, m22, m23, m30, m31, m32, m33;
+        public float m00, m01, m02, m03, m10, m11, m12, m13, m20, m21, m22, m23, m30, m31, m32, m33; // SR:Matrix4x4-m00 (and m01..m33)
         public Vector3 MultiplyPoint3x4(Vector3 point) => point;                      // SR:Matrix4x4.MultiplyPoint3x4
         public static Matrix4x4 identity => default;                                  // SR:Matrix4x4-identity
         public static Matrix4x4 operator *(Matrix4x4 lhs, Matrix4x4 rhs) => lhs;      // SR:Matrix4x4-operator_multiply
@@ -173,9 +173,9 @@ namespace UnityEngine
 
     public struct Color                                                               // SR:Color
     {
-        public float r, g, b, a;
-        public Color(float r, float g, float b) { this.r = r; this.g = g; this.b = b; a = 1f; }
-        public Color(float r, float g, float b, float a) { this.r = r; this.g = g; this.b = b; this.a = a; }
+        public float r, g, b, a;                                                          // SR:Color-r, SR:Color-g, SR:Color-b, SR:Color-a
+        public Color(float r, float g, float b) { this.r = r; this.g = g; this.b = b; a = 1f; } // SR:Color-ctor
+        public Color(float r, float g, float b, float a) { this.r = r; this.g = g; this.b = b; this.a = a; } // SR:Color-ctor
         public Color linear => this;                                                  // SR:Color-linear
         public float grayscale => 0f;                                                 // SR:Color-grayscale
         public static Color white => default;                                         // SR:Color-white
@@ -221,7 +221,7 @@ namespace UnityEngine
         public static Rect GetRect(float minWidth, float maxWidth, float minHeight, float maxHeight) => default; // SR:GUILayoutUtility.GetRect
     }
 
-    public class Shader : Object                                                      // SR:Shader
+    public sealed partial class Shader : Object                                       // SR:Shader
     {
         public static int PropertyToID(string name) => 0;                             // SR:Shader.PropertyToID
         public static Shader Find(string name) => null;                               // SR:Shader.Find
@@ -293,17 +293,17 @@ namespace UnityEngine
     // (verified in the 2022.3 page's property list): no shadows cast, none received.
     public struct RenderParams
     {
-        public RenderParams(Material mat) { }
-        public Material material { get => null; set { } }
-        public Bounds worldBounds { get => default; set { } }
-        public MaterialPropertyBlock matProps { get => null; set { } }
-        public Rendering.ShadowCastingMode shadowCastingMode { get => default; set { } }
-        public bool receiveShadows { get => false; set { } }
-        public int layer { get => 0; set { } }
-        public Camera camera { get => null; set { } }
+        public RenderParams(Material mat) { }                                             // SR:RenderParams-ctor
+        public Material material { get => null; set { } }                                 // SR:RenderParams-material
+        public Bounds worldBounds { get => default; set { } }                             // SR:RenderParams-worldBounds
+        public MaterialPropertyBlock matProps { get => null; set { } }                    // SR:RenderParams-matProps
+        public Rendering.ShadowCastingMode shadowCastingMode { get => default; set { } }  // SR:RenderParams-shadowCastingMode
+        public bool receiveShadows { get => false; set { } }                              // SR:RenderParams-receiveShadows
+        public int layer { get => 0; set { } }                                            // SR:RenderParams-layer
+        public Camera camera { get => null; set { } }                                     // SR:RenderParams-camera
     }
 
-    public static class Graphics                                                      // SR:Graphics
+    public class Graphics                                                             // SR:Graphics (plain class)
     {
         // SR:Graphics.RenderPrimitives. The page prints `ref RenderParams`; Unity's shipped assembly
         // (2022.2 and later, as decompiled listings show) declares `in`, which is why callers pass the
@@ -313,7 +313,7 @@ namespace UnityEngine
         public static void RenderPrimitivesIndexed(in RenderParams rparams, MeshTopology topology, GraphicsBuffer indexBuffer, int indexCount, int startIndex = 0, int instanceCount = 1) { }
     }
 
-    public static class SystemInfo                                                    // SR:SystemInfo
+    public sealed class SystemInfo                                                    // SR:SystemInfo
     {
         public static bool supportsTessellationShaders => false;                      // SR:SystemInfo-supportsTessellationShaders
         public static bool supportsComputeShaders => false;                           // SR:SystemInfo-supportsComputeShaders
@@ -321,14 +321,14 @@ namespace UnityEngine
         public static bool supportsInstancing => false;                               // SR:SystemInfo-supportsInstancing
     }
 
-    public static class Gizmos                                                        // SR:Gizmos
+    public sealed class Gizmos                                                        // SR:Gizmos
     {
         public static Color color { get; set; }                                       // SR:Gizmos-color
         public static Matrix4x4 matrix { get; set; }                                  // SR:Gizmos-matrix
     }
 
 #if ENABLE_LEGACY_INPUT_MANAGER
-    public static class Input                                                         // SR:Input (legacy Input Manager)
+    public class Input                                                                // SR:Input (legacy Input Manager; plain class)
     {
         public static Vector2 mouseScrollDelta => default;                            // SR:Input-mouseScrollDelta
         public static float GetAxis(string axisName) => 0f;                           // SR:Input.GetAxis
@@ -336,25 +336,25 @@ namespace UnityEngine
 #endif
 
     // ---- attributes ----------------------------------------------------------------------------
-    [AttributeUsage(AttributeTargets.Class)] public sealed class ExecuteAlways : Attribute { }                         // SR:ExecuteAlways
-    [AttributeUsage(AttributeTargets.Class)] public sealed class DisallowMultipleComponent : Attribute { }             // SR:DisallowMultipleComponent
-    [AttributeUsage(AttributeTargets.Class)] public sealed class AddComponentMenu : Attribute { public AddComponentMenu(string menuName) { } } // SR:AddComponentMenu
-    [AttributeUsage(AttributeTargets.Class)] public sealed class DefaultExecutionOrder : Attribute { public DefaultExecutionOrder(int order) { } } // SR:DefaultExecutionOrder
-    [AttributeUsage(AttributeTargets.Class)] public sealed class RequireComponent : Attribute { public RequireComponent(Type requiredComponent) { } } // SR:RequireComponent
-    [AttributeUsage(AttributeTargets.Class)]
+    public sealed class ExecuteAlways : Attribute { }                                                                  // SR:ExecuteAlways (no AttributeUsage in 2022.3: any target)
+    [AttributeUsage(AttributeTargets.Class, Inherited = false)] public sealed class DisallowMultipleComponent : Attribute { } // SR:DisallowMultipleComponent
+    public sealed class AddComponentMenu : Attribute { public AddComponentMenu(string menuName) { } }                 // SR:AddComponentMenu (no AttributeUsage in 2022.3)
+    [AttributeUsage(AttributeTargets.Class)] public class DefaultExecutionOrder : Attribute { public DefaultExecutionOrder(int order) { } } // SR:DefaultExecutionOrder (not sealed)
+    [AttributeUsage(AttributeTargets.Class, AllowMultiple = true)] public sealed class RequireComponent : Attribute { public RequireComponent(Type requiredComponent) { } } // SR:RequireComponent
+    [AttributeUsage(AttributeTargets.Class, AllowMultiple = false, Inherited = false)]
     public sealed class CreateAssetMenuAttribute : Attribute                                                           // SR:CreateAssetMenuAttribute
     {
-        public string menuName { get; set; }
-        public string fileName { get; set; }
-        public int order { get; set; }
+        public string menuName { get; set; }                                              // SR:CreateAssetMenuAttribute-menuName
+        public string fileName { get; set; }                                              // SR:CreateAssetMenuAttribute-fileName
+        public int order { get; set; }                                                    // SR:CreateAssetMenuAttribute-order
     }
-    [AttributeUsage(AttributeTargets.Field)] public sealed class SerializeField : Attribute { }                       // SR:SerializeField
-    [AttributeUsage(AttributeTargets.Field)] public class PropertyAttribute : Attribute { }                          // SR:PropertyAttribute
-    [AttributeUsage(AttributeTargets.Field)] public sealed class TooltipAttribute : PropertyAttribute { public TooltipAttribute(string tooltip) { } } // SR:TooltipAttribute
-    [AttributeUsage(AttributeTargets.Field)] public sealed class RangeAttribute : PropertyAttribute { public RangeAttribute(float min, float max) { } } // SR:RangeAttribute
-    [AttributeUsage(AttributeTargets.Field)] public sealed class MinAttribute : PropertyAttribute { public MinAttribute(float min) { } } // SR:MinAttribute
-    [AttributeUsage(AttributeTargets.Field, AllowMultiple = true)] public class HeaderAttribute : PropertyAttribute { public HeaderAttribute(string header) { } } // SR:HeaderAttribute
-    [AttributeUsage(AttributeTargets.Field)] public sealed class HideInInspector : Attribute { }                     // SR:HideInInspector
+    public sealed class SerializeField : Attribute { }                                                                 // SR:SerializeField (no AttributeUsage in 2022.3)
+    [AttributeUsage(AttributeTargets.Field, Inherited = true, AllowMultiple = false)] public abstract class PropertyAttribute : Attribute { } // SR:PropertyAttribute
+    [AttributeUsage(AttributeTargets.All, Inherited = true, AllowMultiple = false)] public class TooltipAttribute : PropertyAttribute { public TooltipAttribute(string tooltip) { } } // SR:TooltipAttribute
+    [AttributeUsage(AttributeTargets.Field, Inherited = true, AllowMultiple = false)] public sealed class RangeAttribute : PropertyAttribute { public RangeAttribute(float min, float max) { } } // SR:RangeAttribute
+    [AttributeUsage(AttributeTargets.Field, Inherited = true, AllowMultiple = false)] public sealed class MinAttribute : PropertyAttribute { public MinAttribute(float min) { } } // SR:MinAttribute
+    [AttributeUsage(AttributeTargets.Field, Inherited = true, AllowMultiple = true)] public class HeaderAttribute : PropertyAttribute { public HeaderAttribute(string header) { } } // SR:HeaderAttribute
+    public sealed class HideInInspector : Attribute { }                                                                // SR:HideInInspector (no AttributeUsage in 2022.3)
 }
 
 namespace UnityEngine.Rendering
@@ -370,18 +370,16 @@ namespace UnityEngine
         public GUIContent(string text) { }                                            // SR:GUIContent-ctor
         public GUIContent(string text, string tooltip) { }                            // SR:GUIContent-ctor
     }
-    public class GUILayoutOption { }                                                  // SR:GUILayoutOption
+    public sealed class GUILayoutOption { }                                           // SR:GUILayoutOption
     public class GUILayout                                                            // SR:GUILayout
     {
         public static bool Button(GUIContent content, params GUILayoutOption[] options) => false; // SR:GUILayout.Button
     }
     public enum EventType { MouseDown = 0, MouseUp = 1, MouseDrag = 3, KeyDown = 4, KeyUp = 5, Repaint = 7, Layout = 8 } // SR:EventType
-    public enum KeyCode { C = 99, V = 118, X = 120, Z = 122 }                         // SR:KeyCode (values: ASCII, as listed)
+    public enum KeyCode { G = 103, I = 105, U = 117 }                                 // SR:KeyCode (values: ASCII, as listed)
     public sealed class Event                                                         // SR:Event
     {
         public static Event current { get => null; set { } }                          // SR:Event-current
         public EventType type { get; set; }                                           // SR:Event-type
-        public KeyCode keyCode { get; set; }                                          // SR:Event-keyCode
-        public void Use() { }                                                         // SR:Event.Use
     }
 }

@@ -1,0 +1,41 @@
+using System;
+using GregoryTerrain;
+using UnityEditor;
+using UnityEditor.ShortcutManagement;
+using UnityEngine;
+
+namespace GregoryTerrain.EditorTools
+{
+    /// <summary>
+    /// The Scene view's Gregory Terrain keys, through Unity's Shortcut Manager (Edit > Shortcuts,
+    /// category "Gregory Terrain"), so users can rebind them. Active while a Scene view has focus; they
+    /// act on the selected terrains and do nothing when none is selected. The default keys clash with
+    /// no Unity 2022.3 default in the Scene view or global contexts (ShortcutClashTests checks it).
+    /// </summary>
+    static class GregoryTerrainShortcuts
+    {
+        [Shortcut("Gregory Terrain/Toggle Control Points", typeof(SceneView), KeyCode.G)]
+        static void ToggleControlPoints() =>
+            ChangeSelected("Toggle control points", r => r.debugShowControlPoints = !r.debugShowControlPoints);
+
+        [Shortcut("Gregory Terrain/Toggle Patch Wireframe", typeof(SceneView), KeyCode.G, ShortcutModifiers.Shift)]
+        static void ToggleWireframe() =>
+            ChangeSelected("Toggle patch wireframe", r => r.debugShowPatchWireframe = !r.debugShowPatchWireframe);
+
+        [Shortcut("Gregory Terrain/Uniform Factor Down", typeof(SceneView), KeyCode.U)]
+        static void FactorDown() => ChangeSelected("Uniform factor -", r => r.UniformFactor = r.UniformFactor - 1);
+
+        [Shortcut("Gregory Terrain/Uniform Factor Up", typeof(SceneView), KeyCode.I)]
+        static void FactorUp() => ChangeSelected("Uniform factor +", r => r.UniformFactor = r.UniformFactor + 1);
+
+        /// <summary>One undo step over every selected, editable terrain; nothing when none is selected.</summary>
+        static void ChangeSelected(string undoName, Action<GregoryTerrainRenderer> change)
+        {
+            GregoryTerrainRenderer[] selected = Selection.GetFiltered<GregoryTerrainRenderer>(SelectionMode.Editable);
+            if (selected.Length == 0) return;
+            Undo.RecordObjects(selected, undoName);
+            foreach (GregoryTerrainRenderer r in selected) change(r);
+            SceneView.RepaintAll();
+        }
+    }
+}

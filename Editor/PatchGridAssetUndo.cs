@@ -1,0 +1,77 @@
+using System;
+using GregoryTerrain;
+using UnityEditor;
+using UnityEngine;
+using Object = UnityEngine.Object;
+
+namespace GregoryTerrain.EditorTools
+{
+    /// <summary>
+    /// Every editor change to a <see cref="PatchGridAsset"/> goes through here: one undo step each,
+    /// recording only what the change touches. A control point move records the blocks (64 patches,
+    /// 30,720 bytes of doubles each) holding the point and its shared copies, not the grid; a whole-grid
+    /// change (fit, flat, G1, import) records the asset and all its blocks, and creates or destroys
+    /// block sub-assets with Undo when the patch count changes.
+    /// </summary>
+    [InitializeOnLoad]
+    internal static class PatchGridAssetUndo
+    {
+        // Undo and redo restore grid data behind the assets' backs: stamp every loaded grid with a new
+        // version so renderers upload what the undo restored (PatchGridBlock.OnValidate does it too,
+        // where Unity calls it after an undo).
+        static PatchGridAssetUndo() => Undo.undoRedoPerformed += MarkLoadedGridsChanged;
+
+        static void MarkLoadedGridsChanged()
+        {
+            foreach (PatchGridAsset grid in Resources.FindObjectsOfTypeAll<PatchGridAsset>()) grid.MarkChanged();
+        }
+
+        /// <summary>
+        /// Moves a grid still in the older single-array layout into block sub-assets (bit for bit), as
+        /// part of the current undo step. Does nothing when it already has blocks.
+        /// </summary>
+        public static void MoveLegacyDataToBlocks(PatchGridAsset asset, string undoName)
+        {
+            if (!asset.HasLegacyLayout) return;
+            Undo.RecordObject(asset, undoName);
+            PatchGridBlock[] created = asset.MoveLegacyDataToBlocks();
+            Persist(asset, created, undoName);
+            EditorUtility.SetDirty(asset);
+        }
+
+        /// <summary>Replaces the whole grid: one undo step named <paramref name="undoName"/>.</summary>
+        public static void SetGrid(PatchGridAsset asset, PatchGrid grid, string undoName)
+        {
+            Undo.RecordObject(asset, undoName);
+            PatchGridBlock[] existing = asset.Blocks;
+            if (existing.Length > 0) Undo.RecordObjects(existing, undoName);
+            asset.SetGrid(grid, out PatchGridBlock[] created, out PatchGridBlock[] dropped);
+            Persist(asset, created, undoName);
+            foreach (PatchGridBlock b in dropped) Undo.DestroyObjectImmediate(b);
+            foreach (PatchGridBlock b in asset.Blocks) EditorUtility.SetDirty(b);
+            EditorUtility.SetDirty(asset);
+        }
+
+        /// <summary>Moves one control point (terrain space): the undo step records only the blocks it touches.</summary>
+        public static void MoveControlPoint(PatchGridAsset asset, int patch, int slot, Vector3 terrainPosition)
+        {
+            const string undoName = "Move control point";
+            MoveLegacyDataToBlocks(asset, undoName);
+            PatchGridBlock[] touched = asset.BlocksTouchedByMove(patch, slot);
+            Undo.RecordObjects(touched, undoName);
+            asset.SetControlPoint(patch, slot, terrainPosition);
+            foreach (PatchGridBlock b in touched) EditorUtility.SetDirty(b);
+        }
+
+        /// <summary>New blocks become hidden sub-assets of the grid's file (when it has one), undoably.</summary>
+        static void Persist(PatchGridAsset asset, PatchGridBlock[] created, string undoName)
+        {
+            bool inFile = AssetDatabase.Contains(asset);
+            foreach (PatchGridBlock b in created)
+            {
+                if (inFile) AssetDatabase.AddObjectToAsset(b, asset);
+                Undo.RegisterCreatedObjectUndo(b, undoName);
+            }
+        }
+    }
+}
