@@ -10,7 +10,7 @@ namespace GregoryTerrain.EditorTools
     /// GameObject > Gregory Terrain > Convert Selected Terrain: a new Gregory terrain with the selected
     /// Unity Terrain's size, position and heights (fitted by least squares); the Terrain is only read.
     /// </summary>
-    public static class TerrainConversion
+    internal static class TerrainConversion
     {
         const string MenuPath = "GameObject/Gregory Terrain/Convert Selected Terrain";
         /// <summary>RMS target as a fraction of the terrain's height range, and the most patches a side tried.</summary>
