@@ -58,6 +58,9 @@ namespace GregoryTerrain.Rig.Tests
             Assert.That(_output, Does.Contain("range-only / nothing changes"));
             Assert.That(_output, Does.Contain("/ static mesh"));
             Assert.That(_output, Does.Contain("same vertices, same frag"), "the fair static mesh section");
+            Assert.That(_output, Does.Contain("## Headline ratios"), "the headline table the manual quotes");
+            Assert.That(_output, Does.Contain("## The fair baseline and the floor"), "the fair baseline section");
+            Assert.That(_output, Does.Contain("## Motion users make"), "the motion section");
             Assert.That(_output, Does.Not.Contain("| (incomplete) |"), "every fair static size ran");
         }
 
@@ -127,6 +130,24 @@ namespace GregoryTerrain.Rig.Tests
             Assert.That(uni.Length, Is.GreaterThanOrEqualTo(2));
             for (int i = 1; i < uni.Length; i++)
                 Assert.That(D(uni[i][9]), Is.LessThan(D(uni[i - 1][9])));
+        }
+
+        [Test]
+        public void FairBaselineFloorAndMotionRowsRan()
+        {
+            // The fair static mesh in Forsyth's order, row by row and in strips, each with its
+            // vertex-stage runs per vertex; the floor; the motion path with its dispatches.
+            var baseline = Rows("8 | 7 |");
+            Assert.That(baseline.Length, Is.GreaterThanOrEqualTo(1), "the fair baseline row of 8 tiles at F 7");
+            var b = baseline[0];
+            foreach (int k in new[] { 3, 4, 5, 6, 7, 8, 9, 10, 11 })
+                Assert.That(D(b[k]), Is.GreaterThan(0), $"fair baseline column {k}");
+            var motion = Rows("pan-cell");
+            Assert.That(motion.Length, Is.EqualTo(1), "the pan-cell motion row");
+            Assert.That(D(motion[0][2]), Is.GreaterThan(0), "domain stage triangles under the pan");
+            Assert.That(D(motion[0][6]), Is.GreaterThan(0), "compute cache triangles under the pan");
+            Assert.That(motion[0][7], Is.EqualTo("4"), "the camera follows the range: the kernels run in all 4 frames");
+            Assert.That(_output, Does.Not.Contain("| compute cache, panning (anchored tiles) | - |"), "the headline's first row ran");
         }
     }
 }

@@ -308,6 +308,93 @@ namespace GregoryTerrain.Rig.Tests
             Assert.That(r.Long("stat", "input_assembly_primitives"), Is.EqualTo(16 * 2 * 8 * 8));
         }
 
+        /// <summary>The fallback grid's triangles (F = 8) row by row, reversed in order: a --grid-indices file.</summary>
+        string WriteGridOrder(string name, Func<uint[], uint[]> change)
+        {
+            const uint f = 8, row = f + 1;
+            var tris = new List<uint[]>();
+            for (uint j = 0; j < f; j++)
+                for (uint i = 0; i < f; i++)
+                {
+                    uint a = j * row + i, b = a + 1, c = a + row, d = c + 1;
+                    tris.Add(new[] { a, b, d });
+                    tris.Add(new[] { a, d, c });
+                }
+            tris.Reverse();
+            uint[] idx = change(tris.SelectMany(t => t).ToArray());
+            string path = Path.Combine(_work, name + ".u32");
+            File.WriteAllBytes(path, idx.SelectMany(BitConverter.GetBytes).ToArray());
+            return path;
+        }
+
+        string[] FallbackArgs(string dir) => new[] { "--vert", Path.Combine(_spv, "fallback_readback.vert.spv"),
+            "--frag", Path.Combine(_spv, "tiles.frag.spv"), "--buffers", dir, "--grid-factor", "8", "--instances", "16",
+            "--width", Size.ToString(), "--height", Size.ToString(), "--stats" };
+
+        [Test]
+        public void GridIndices_TheSameTrianglesInAnotherOrder_DrawTheSamePicture()
+        {
+            string dir = MakeInputs("in_fallback", 4, 8, new[] { 0f, 0, 1, 1 });
+            HarnessRun rows = HarnessRun.Harness(FallbackArgs(dir));
+            HarnessRun reordered = HarnessRun.Harness(FallbackArgs(dir).Concat(new[] { "--grid-indices", WriteGridOrder("reversed", x => x) }).ToArray());
+            rows.AssertSucceeded();
+            reordered.AssertSucceeded();
+            Assert.That(reordered.Value("fallback", "grid_vertices"), Does.Contain("file"));
+            Assert.That(reordered.Long("image", "nonsky_pixels"), Is.EqualTo(rows.Long("image", "nonsky_pixels")));
+            Assert.That(reordered.Long("stat", "clipping_invocations"), Is.EqualTo(rows.Long("stat", "clipping_invocations")));
+        }
+
+        [TestCase("flipped", "does not hold the 128 triangles")]
+        [TestCase("repeated", "does not hold the 128 triangles")]
+        [TestCase("short", "expected 1536")]
+        public void GridIndices_OtherTriangles_Exit1NamingTheFile(string broken, string expected)
+        {
+            string dir = MakeInputs("in_fallback", 4, 8, new[] { 0f, 0, 1, 1 });
+            string path = WriteGridOrder("broken_" + broken, x => broken switch
+            {
+                "flipped" => x.Select((v, k) => k == 0 ? x[1] : k == 1 ? x[0] : v).ToArray(),   // one triangle's winding
+                "repeated" => x.Select((v, k) => k >= 3 && k < 6 ? x[k - 3] : v).ToArray(),     // one twice, one missing
+                _ => x.Take(x.Length - 3).ToArray(),
+            });
+            HarnessRun r = HarnessRun.Harness(FallbackArgs(dir).Concat(new[] { "--grid-indices", path }).ToArray());
+            Assert.That(r.ExitCode, Is.EqualTo(1), r.Stdout + r.Stderr);
+            Assert.That(r.Stderr, Does.Contain(path).And.Contain(expected));
+        }
+
+        [TestCase(0.5f, "dispatch flag 0.5")]
+        [TestCase(-1f, "multiple of 176")]
+        public void ParamsPath_BadRecords_Exit1NamingTheFile(float flag, string expected)
+        {
+            string dir = MakeInputs("in_4x4_f8", 4, 8, new[] { 0f, 0, 1, 1 });
+            byte[] parameters = File.ReadAllBytes(Path.Combine(dir, "params.f32"));
+            byte[] record = flag < 0 ? parameters : parameters.Concat(BitConverter.GetBytes(flag)).Concat(new byte[12]).ToArray();
+            string path = Path.Combine(_work, "params_path_bad.f32");
+            File.WriteAllBytes(path, record);
+            HarnessRun r = HarnessRun.Harness(TessArgs(dir, 4, 8, null).Concat(new[] { "--params-path", path }).ToArray());
+            Assert.That(r.ExitCode, Is.EqualTo(1), r.Stdout + r.Stderr);
+            Assert.That(r.Stderr, Does.Contain(path).And.Contain(expected));
+        }
+
+        [Test]
+        public void ParamsPath_DrawsEachFramesRecord_LastFrameTheLast()
+        {
+            // Two records: the whole range, then its left half. Frame f draws record f mod 2; with 2
+            // frames the last draws the half, so fewer pixels than a plain run of the whole range.
+            string dir = MakeInputs("in_4x4_f8", 4, 8, new[] { 0f, 0, 1, 1 });
+            byte[] p = File.ReadAllBytes(Path.Combine(dir, "params.f32"));
+            byte[] half = (byte[])p.Clone();
+            BitConverter.GetBytes(0.5f).CopyTo(half, 8);   // _Range.z = 0.5
+            byte[] flag = new byte[16];
+            string path = Path.Combine(_work, "params_path_2.f32");
+            File.WriteAllBytes(path, p.Concat(flag).Concat(half).Concat(flag).ToArray());
+            HarnessRun whole = HarnessRun.Harness(TessArgs(dir, 4, 8, null).Concat(new[] { "--frames", "2" }).ToArray());
+            HarnessRun r = HarnessRun.Harness(TessArgs(dir, 4, 8, null).Concat(new[] { "--frames", "2", "--params-path", path }).ToArray());
+            whole.AssertSucceeded();
+            r.AssertSucceeded();
+            Assert.That(r.Long("inputs", "params_path"), Is.EqualTo(2));
+            Assert.That(r.Long("image", "nonsky_pixels"), Is.Not.EqualTo(whole.Long("image", "nonsky_pixels")));
+        }
+
         [Test]
         public void StaticMesh_DrawsAndTimesFrames()
         {

@@ -49,6 +49,9 @@ make_plan() {  # make_plan DIR
   # (noise+height_color's, so GT_HEIGHT_COLOR: it hands the frag the baked height).
   glslangValidator -D -V -S vert -e vert_static --hlsl-iomap --shift-cbuffer-binding 0 --shift-texture-binding 2 \
     --shift-UAV-binding 5 -DGT_STATIC_MESH -DGT_HEIGHT_COLOR -o "$dir/spirv/static.spv" "$PKG_DIR/Shaders/Rig/TerrainRig.hlsl" >/dev/null
+  # The tessellator's floor (rig only): the fair variant's tiles with a domain stage that evaluates nothing.
+  glslangValidator -D -V -S tese -e domain_floor --hlsl-iomap --shift-cbuffer-binding 0 --shift-texture-binding 2 \
+    --shift-UAV-binding 5 -DGT_NOISE -DGT_HEIGHT_COLOR -o "$dir/spirv/floor.spv" "$RIG_DIR/bench_floor.hlsl" >/dev/null
   bash "$TOOLS_DIR/harness/test/compile.sh" "$dir/mesh-spv" >/dev/null
   cp "$dir/mesh-spv/mesh.vert.spv" "$dir/mesh-spv/mesh.frag.spv" "$dir/spirv/"; rm -rf "$dir/mesh-spv"
   cp "$RIG_DIR/bench_run.sh" "$RIG_DIR/bench_static_mesh.py" "$TOOLS_DIR/harness/test/make_grid_mesh.py" "$dir/"

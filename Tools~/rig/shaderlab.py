@@ -527,11 +527,21 @@ SHADOW_CONTEXT_SET = re.compile(r"^\s*\w+\s*\.\s*shadowDatas\s*=\s*_HDShadowData
 SHADOW_CONTEXT_READ = re.compile(r"\b\w+\s*\.\s*shadowDatas\b")
 
 
+SHADOW_DATAS_GLOBAL = re.compile(r"^\s*StructuredBuffer\s*<\s*HDShadowData\s*>\s*_HDShadowDatas\s*;\s*$", re.M)
+SHADOW_CONTEXT_STRUCT = re.compile(r"^\s*struct\s+HDShadowContext\b", re.M)
+
+
 def emulate_shadow_context_buffer(text):
-    """HDRP's shadow context holds the shadow data buffer as a struct member; only ever the global."""
-    if not SHADOW_CONTEXT_MEMBER.search(text):
+    """HDRP's shadow context holds the shadow data buffer as a struct member; only ever the global.
+    The global is declared after the shadow algorithms that read the member, so its declaration
+    moves up to where the struct is declared."""
+    struct = SHADOW_CONTEXT_STRUCT.search(text)
+    if not SHADOW_CONTEXT_MEMBER.search(text) or struct is None or not SHADOW_DATAS_GLOBAL.search(text):
         return text, 0
     text, members = SHADOW_CONTEXT_MEMBER.subn("", text)
+    text = SHADOW_DATAS_GLOBAL.sub("", text)
+    struct = SHADOW_CONTEXT_STRUCT.search(text)
+    text = text[:struct.start()] + "\nStructuredBuffer<HDShadowData> _HDShadowDatas;\n" + text[struct.start():]
     text, sets = SHADOW_CONTEXT_SET.subn("", text)
     text, reads = SHADOW_CONTEXT_READ.subn("_HDShadowDatas", text)
     return text, members + sets + reads

@@ -46,7 +46,7 @@ namespace GregoryTerrain.Rig
     /// @OUT@/static/REF for vert_static); ARGS may hold @SPV@, @JOB@, @OUT@ and @MESH@, filled in by
     /// Tools~/rig/bench_run.sh.
     /// </summary>
-    static class BenchPlan
+    static partial class BenchPlan
     {
         /// <summary>The fixed camera path: the paper's zoom view at three ranges, whole terrain to close up.</summary>
         public static readonly (string name, double[] range)[] CameraPath =
@@ -102,7 +102,9 @@ namespace GregoryTerrain.Rig
             string timing = Inv($"--stats --timestamps --frames {frames} --warmup {warmup}");
 
             Table1(grid, dir, plan, meta, quick, width, height);   // first: the figures that matter most if a run is cut short
-            FairStatic(grid, dir, plan, meta, quick, width, height);
+            var targets = new Dictionary<string, double>();
+            FairStatic(grid, dir, plan, meta, quick, width, height, targets);
+            Motion(grid, dir, plan, meta, quick, width, height, targets);
             var path = quick ? new[] { CameraPath[0], CameraPath[2] } : CameraPath;
             foreach (var cfg in Sweep(quick))
                 foreach (var (cam, range) in path)
@@ -188,8 +190,10 @@ namespace GregoryTerrain.Rig
         /// the static size (vc_*), and both with nothing changing ("still": the kernels dispatch in the
         /// first, warm-up frame only, harness --compute-once; the later frames draw from the cache).
         /// </summary>
-        static void FairStatic(PatchGrid grid, string dir, StringBuilder plan, StringBuilder meta, bool quick, int width, int height)
+        static void FairStatic(PatchGrid grid, string dir, StringBuilder plan, StringBuilder meta, bool quick, int width, int height,
+                               Dictionary<string, double> targets)
         {
+            foreach (var (_, f) in FairSizes(quick)) WriteStaticOrders(dir, f);
             string view = Inv($"--width {width} --height {height}");
             int frames = quick ? 3 : 100;
             // 50 warm-up frames: the jobs before (the bake's packing runs on the CPU) leave the GPU idle
@@ -208,10 +212,17 @@ namespace GregoryTerrain.Rig
                 plan.Append($"{id}:terrain\trun\t-\t{Stages(FairVariant, false)} --patches {patches} {buffers} {view} {t} --update-range-per-frame\n");
                 plan.Append($"{id}:fallback\trun\t-\t{Stages(FairVariant, true)} --grid-factor {f} --instances {patches} {buffers} {view} {t} --update-range-per-frame\n");
                 plan.Append($"{id}:bake\tstatic-bake\t{id}\t{Stages("readback+noise", true)} --grid-factor {f} --instances {patches} {buffers} {view} --readback @OUT@/capture/{id}.f32 --readback-floats {12 * vertices}\n");
-                string staticRun = $"--vert @SPV@/static.spv --frag @SPV@/{FairVariant}/frag.spv --grid-factor {f} --instances {patches} --buffers @OUT@/static/{id} {view} {t}";
+                string staticRows = $"--vert @SPV@/static.spv --frag @SPV@/{FairVariant}/frag.spv --grid-factor {f} --instances {patches} --buffers @OUT@/static/{id} {view} {t}";
+                string staticRun = $"{staticRows} {StaticOrder(f)}";
+                // The fair static mesh: its triangles in Forsyth's order (GridIndexOrder); the same
+                // mesh row by row and in 2-column strips beside it, labelled.
                 plan.Append($"{id}:static\trun\t-\t{staticRun}\n");
+                plan.Append($"{id}:static-rows\trun\t-\t{staticRows}\n");
+                plan.Append($"{id}:static-strips\trun\t-\t{staticRows} --grid-indices @JOB@/{OrdersDir}/{GridIndexOrder.FileName("strips2", f)}\n");
                 plan.Append($"{id}:static-if2\trun\t-\t{staticRun} {InFlight}\n");
                 plan.Append($"{id}:static-orbit\trun\t-\t{staticRun} {Orbit(id)}\n");
+                // The tessellator's floor: the terrain's tiles, factors and frag with a domain stage that evaluates nothing.
+                plan.Append($"{id}:tess-floor\trun\t-\t{FloorStages} --patches {patches} {buffers} {view} {t} --update-range-per-frame\n");
                 plan.Append($"{id}:floor\tstatic-match\t{id}:terrain\t--static-mesh --mesh @MESH@ --vert @SPV@/mesh.vert.spv --frag @SPV@/mesh.frag.spv {buffers} {view} {t}\n");
                 string cache = $"{Stages(CachedNoiseVariant, false)} --patches {patches} {CacheArgs(CachedNoiseVariant, scene.Tessellation)} {buffers} {view} {t}";
                 plan.Append($"{id}:cached\trun\t-\t{cache} --update-range-per-frame\n");
@@ -229,6 +240,8 @@ namespace GregoryTerrain.Rig
                 plan.Append($"{id}:terrain\trun\t-\t{direct} --update-range-per-frame\n");
                 // Goal "only _Range changes within 1.02x of nothing changing", with noise and colour on.
                 plan.Append($"{id}:still\trun\t-\t{direct}\n");
+                plan.Append($"{id}:tess-floor\trun\t-\t{FloorStages} --patches {m * m} --buffers @JOB@/{id} {view} {t} --update-range-per-frame\n");
+                targets[id] = target;
                 meta.Append(Inv($"{id}\tadaptive-vs\t{m}\t0\t{target:G6}\t64\t4\tfar\t{m * m}\n"));
 
                 // The same through the vertex cache: its own target (integer factors draw more per factor).
@@ -247,6 +260,7 @@ namespace GregoryTerrain.Rig
                 plan.Append($"{cid}:still-if2\trun\t-\t{cache} --compute-once {InFlight}\n");
                 // lavapipe (the quick run) has one queue family: nothing to run the kernels alongside.
                 if (!quick) plan.Append($"{cid}:terrain-async\trun\t-\t{cache} --update-range-per-frame {InFlight} --async-compute\n");
+                targets[cid] = ctarget;
                 meta.Append(Inv($"{cid}\tcached-adaptive-vs\t{m}\t0\t{ctarget:G6}\t64\t4\tfar\t{m * m}\n"));
 
                 // Anchored tiles (TileLattice): the lattice is the plan's range, as the renderer anchors
@@ -376,6 +390,32 @@ namespace GregoryTerrain.Rig
             double sum = 0;
             foreach (var p in factors) sum += TessellationCells.IntegerTriangles(p.CacheIntegers());
             return sum;
+        }
+
+        /// <summary>The floor (Tools~/rig/bench_floor.hlsl, entry domain_floor): the fair variant's stages with a domain stage that evaluates nothing.</summary>
+        static string FloorStages =>
+            $"--vert @SPV@/{FairVariant}/vert.spv --tesc @SPV@/{FairVariant}/tesc.spv --tese @SPV@/floor.spv --frag @SPV@/{FairVariant}/frag.spv";
+
+        /// <summary>Folder of the plan's jobs/ holding the static meshes' index orders (GridIndexOrder files).</summary>
+        public const string OrdersDir = "orders";
+
+        /// <summary>The fair static mesh's index order for factor F (harness --grid-indices): Forsyth's.</summary>
+        static string StaticOrder(int f) => $"--grid-indices @JOB@/{OrdersDir}/{GridIndexOrder.FileName("forsyth", f)}";
+
+        /// <summary>Writes jobs/orders/{forsyth,strips2}_fF.u32 for an (F+1)^2 grid (once per F).</summary>
+        static void WriteStaticOrders(string dir, int f)
+        {
+            string orders = Path.Combine(dir, "jobs", OrdersDir);
+            Directory.CreateDirectory(orders);
+            foreach (var method in new[] { "forsyth", "strips2" })
+            {
+                string file = Path.Combine(orders, GridIndexOrder.FileName(method, f));
+                if (File.Exists(file)) continue;
+                uint[] order = method == "forsyth" ? GridIndexOrder.Forsyth(GridIndexOrder.RowMajor(f), (f + 1) * (f + 1)) : GridIndexOrder.Strips(f, 2);
+                var bytes = new byte[order.Length * 4];
+                Buffer.BlockCopy(order, 0, bytes, 0, bytes.Length);
+                File.WriteAllBytes(file, bytes);
+            }
         }
 
         static string Stages(string variant, bool fallback) => fallback

@@ -22,7 +22,7 @@ namespace GregoryTerrain.Rig
         sealed class Job
         {
             public Dictionary<string, string> Stat = new Dictionary<string, string>();
-            public double GpuMs = double.NaN, CpuMs = double.NaN, CpuMeanMs = double.NaN, ComputeMs = double.NaN;
+            public double GpuMs = double.NaN, GpuMeanMs = double.NaN, CpuMs = double.NaN, CpuMeanMs = double.NaN, ComputeMs = double.NaN;
             public int Exit = -1;
             public string Skipped;   // bench_run.sh's reason when the job did not run
             public long Get(string k) => Stat.TryGetValue(k, out var v) ? long.Parse(v, CultureInfo.InvariantCulture) : -1;
@@ -135,10 +135,13 @@ namespace GregoryTerrain.Rig
             string jobsTsv = Path.Combine(planDir, "jobs.tsv");
             if (File.Exists(jobsTsv))
                 foreach (var l in File.ReadLines(jobsTsv).Skip(1)) { var c = l.Split('\t'); if (c.Length > 4) planned[c[0]] = c[4]; }
+            Headline(o, jobs, quick);
+            Baseline(o, jobs, quick);
             Fair(o, jobs, quick, planned);
             CameraMoving(o, jobs, quick, rbDir);
             AnchoredPan(o, jobs, quick, rbDir);
             TileCount(o, jobs, quick, planned, grid, width, height);
+            MotionTable(o, jobs, quick, planDir);
             RangeOnlyWithEffects(o, jobs, quick);
             Goals(o, tsv.ToString());
             Console.Write(o.ToString());
@@ -458,6 +461,7 @@ namespace GregoryTerrain.Rig
                 if (w[0] == "stat" && w.Length >= 3) cur.Stat[w[1]] = w[2];
                 else if (w[0] == "device" && w.Length >= 3 && w[1] == "name") cur.Stat["name"] = string.Join(" ", w.Skip(2));
                 else if (w[0] == "time" && w.Length >= 3 && w[1] == "frame_ms_median") cur.GpuMs = D(w[2]);
+                else if (w[0] == "time" && w.Length >= 3 && w[1] == "frame_ms_mean") cur.GpuMeanMs = D(w[2]);
                 else if (w[0] == "time" && w.Length >= 3 && w[1] == "cpu_frame_ms_median") cur.CpuMs = D(w[2]);
                 else if (w[0] == "time" && w.Length >= 3 && w[1] == "cpu_frame_ms_mean") cur.CpuMeanMs = D(w[2]);
                 else if (w[0] == "time" && w.Length >= 3 && w[1] == "compute_ms_median") cur.ComputeMs = D(w[2]);

@@ -57,7 +57,7 @@ namespace GregoryTerrain.Rig
         /// scaled uniformly (heights too, so zooming in is a camera coming closer), looked at from
         /// above at an angle. The height at the range's centre is the box's centre height.
         /// </summary>
-        static RigCamera ZoomViewCamera(RigScene s, int width, int height, double yawDegrees = 0)
+        internal static RigCamera ZoomViewCamera(RigScene s, int width, int height, double yawDegrees = 0)
         {
             double w = Math.Max(s.Range.Width, s.Range.Height), scale = 1.0 / w;
             double cx = 0.5 * (s.Range.c + s.Range.g), cy = 0.5 * (s.Range.d + s.Range.h);

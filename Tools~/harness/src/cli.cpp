@@ -177,6 +177,8 @@ const char* usageText() {
   --patches N                    patches drawn (tessellated mode)
   --control-points K             control points per patch (default 4)
   --grid-factor F --instances N  fallback mode: (F+1)^2-vertex grid, N instances
+  --grid-indices I.u32           fallback mode: the grid's 2 F^2 triangles in this order instead of
+                                 row by row (checked to be the same triangles, same winding)
   --static-mesh --mesh P.f32 I.u32   draw a static float3/uint32 mesh with --vert/--frag
   --width W --height H           render target size (default 256x256)
   --png FILE                     write the colour image as PNG
@@ -198,6 +200,9 @@ const char* usageText() {
                                  frame: the inputs' own range)
   --camera-path FILE             a moving camera: FILE holds N RigCamera blocks (176 bytes each, the
                                  layout of camera.f32); frame f draws with block f mod N
+  --params-path FILE             frame f writes record f mod N of FILE into TerrainParams: the
+                                 params.f32 block, then a float4 whose x = 1 runs the --compute
+                                 passes that frame (0 reuses what they wrote; frame 0 always runs them)
   --compute-once                 run the --compute passes in the first frame only (later frames reuse their output)
   --no-compute-timestamp         with --timestamps, time only the whole frame (no timestamp between
                                  the --compute passes and the draw, so no "time compute_ms" lines)
@@ -246,6 +251,8 @@ Options parseOptions(int argc, char** argv) {
         else if (a == "--control-points") o.controlPoints = u32(32);
         else if (a == "--grid-factor") o.gridFactor = u32(4096);
         else if (a == "--instances") o.instances = u32();
+        else if (a == "--grid-indices") o.gridIndicesPath = value();
+        else if (a == "--params-path") o.paramsPath = value();
         else if (a == "--static-mesh") staticMesh = true;
         else if (a == "--mesh") { o.meshPositions = value(); o.meshIndices = value(); }
         else if (a == "--width") o.width = u32(16384);
@@ -294,6 +301,8 @@ Options parseOptions(int argc, char** argv) {
     if (!o.readbackPath.empty() && o.readbackFloats == 0) fail("--readback needs --readback-floats K (K > 0)");
     if (o.readbackPath.empty() && o.readbackFloats != 0) fail("--readback-floats needs --readback FILE");
     if (o.computeOnce && o.computes.empty()) fail("--compute-once needs at least one --compute SPV:GX,GY,GZ");
+    if (!o.paramsPath.empty() && o.updateRangePerFrame) fail("--params-path writes the whole TerrainParams every frame: drop --update-range-per-frame");
+    if (!o.paramsPath.empty() && o.computeOnce) fail("--params-path decides per frame whether the --compute passes run: drop --compute-once");
     if (o.rangePan > 0.0f && !o.updateRangePerFrame) fail("--range-pan needs --update-range-per-frame");
     if (!o.computeTimestamp && o.inFlight > 1) fail("--no-compute-timestamp is for one frame in flight (--in-flight " + std::to_string(o.inFlight) + " given)");
     checkDumps(o);
@@ -303,6 +312,7 @@ Options parseOptions(int argc, char** argv) {
         if (o.resendBytes) fail("--in-flight " + std::to_string(o.inFlight) + " cannot be combined with --resend-bytes");
         if (!o.readbackPath.empty()) fail("--in-flight " + std::to_string(o.inFlight) + " cannot be combined with --readback");
         if (!o.cameraPath.empty()) fail("--in-flight " + std::to_string(o.inFlight) + " cannot be combined with --camera-path");
+        if (!o.paramsPath.empty()) fail("--in-flight " + std::to_string(o.inFlight) + " cannot be combined with --params-path");
     }
     if (o.asyncCompute && o.computes.empty()) fail("--async-compute needs at least one --compute SPV:GX,GY,GZ");
     if (o.asyncCompute && o.inFlight < 2)
@@ -321,6 +331,8 @@ Options parseOptions(int argc, char** argv) {
         if (o.patches == 0) fail("tessellated mode needs --patches N (N >= 1)");
         if (o.controlPoints == 0) fail("--control-points: must be at least 1");
     }
+    if (!o.gridIndicesPath.empty() && o.mode != Mode::Fallback)
+        fail("--grid-indices reorders the fallback grid (--grid-factor F without --tesc/--tese)");
     return o;
 }
 

@@ -50,6 +50,7 @@ struct Options {
     uint32_t controlPoints = 4;
     uint32_t gridFactor = 0;  // fallback
     uint32_t instances = 1;   // fallback
+    std::string gridIndicesPath;  // --grid-indices: the fallback grid's triangles in another order
     std::string meshPositions, meshIndices;
 
     uint32_t width = 256, height = 256;
@@ -70,6 +71,7 @@ struct Options {
     bool updateRangePerFrame = false;
     float rangePan = 0.0f;      // --range-pan FRACTION (with --update-range-per-frame)
     std::string cameraPath;      // --camera-path FILE: N RigCamera blocks, frame f draws with block f mod N
+    std::string paramsPath;      // --params-path FILE: N (TerrainParams, dispatch flag) records, frame f draws record f mod N
     bool computeOnce = false;
     bool computeTimestamp = true;  // --no-compute-timestamp: frame timestamps only
     uint64_t resendBytes = 0;

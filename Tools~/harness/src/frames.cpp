@@ -47,7 +47,9 @@ FrameResults runFrames(const Gpu& gpu, const RenderTarget& target, const Pipelin
     if (s.stats) stats = createStatsQuery(gpu);
     // With a pre-pass, a middle timestamp after its last dispatch: query 0 top, 1 compute end, 2 frame end.
     // (--compute-once: no middle timestamp, the frames measured have no pre-pass.)
-    const bool timeCompute = s.timestamps && s.computeTimestamp && !compute.empty() && !s.computeOnce;
+    // --params-path picks per frame between the two command buffers, like --compute-once after frame 0.
+    const bool someFramesReuse = s.computeOnce || !s.paramsPath.empty();
+    const bool timeCompute = s.timestamps && s.computeTimestamp && !compute.empty() && !someFramesReuse;
     if (s.timestamps) times = createTimestampQuery(gpu, timeCompute ? 3 : 2);
     const uint32_t frameEndQuery = timeCompute ? 2 : 1;
 
@@ -100,7 +102,7 @@ FrameResults runFrames(const Gpu& gpu, const RenderTarget& target, const Pipelin
     return cmd;
     };
     VkCommandBuffer cmd = recordFrame(true);
-    VkCommandBuffer reuseCmd = s.computeOnce ? recordFrame(false) : VK_NULL_HANDLE;
+    VkCommandBuffer reuseCmd = someFramesReuse ? recordFrame(false) : VK_NULL_HANDLE;
 
     VkFence fence = VK_NULL_HANDLE;
     VkFenceCreateInfo fi{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
@@ -113,10 +115,13 @@ FrameResults runFrames(const Gpu& gpu, const RenderTarget& target, const Pipelin
         const auto t0 = std::chrono::steady_clock::now();
         if (s.updateRange) writeRange(inputs, frameRange(baseRange, f, total, s.rangePan));
         if (!s.cameraPath.empty()) writeCamera(inputs, s.cameraPath, f);
+        bool dispatch = !s.computeOnce || f == 0;
+        if (!s.paramsPath.empty()) dispatch = writeParams(inputs, s.paramsPath, f) || f == 0;
+        if (dispatch && f >= s.warmup) ++results.dispatchedFrames;
         if (s.resendBytes) std::memset(staging.mapped, static_cast<int>(f & 0xff), s.resendBytes);
         VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};
         submit.commandBufferCount = 1;
-        submit.pCommandBuffers = (s.computeOnce && f > 0) ? &reuseCmd : &cmd;
+        submit.pCommandBuffers = dispatch ? &cmd : &reuseCmd;
         GT_VK(vkQueueSubmit(gpu.queue, 1, &submit, fence));
         waitFrameFence(gpu, fence, f);
         GT_VK(vkResetFences(gpu.device, 1, &fence));

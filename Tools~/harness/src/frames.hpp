@@ -32,6 +32,7 @@ struct FrameSettings {
     uint32_t frames = 1, warmup = 0;
     bool timestamps = false, stats = false, updateRange = false;
     float rangePan = 0.0f;  // --range-pan: amplitude of the range's pan, a fraction of its size (0: the tiny shifts)
+    std::vector<uint8_t> paramsPath;  // --params-path: (TerrainParams, dispatch flag) records, frame f draws record f mod N
     std::vector<uint8_t> cameraPath;  // --camera-path: RigCamera blocks, frame f draws with block f mod N
     // --compute-once: the pre-pass runs in the first frame only; later frames reuse what it wrote
     // (the vertex cache of a frame where nothing changed).
@@ -47,6 +48,7 @@ struct FrameResults {
     std::vector<double> computeMs;  // the compute pre-pass alone, measured frames (timestamps + --compute)
     std::vector<double> cpuMs;  // submit to fence, measured frames only
     std::vector<std::pair<std::string, uint64_t>> stats;  // of the last frame
+    uint32_t dispatchedFrames = 0;  // measured frames whose command buffer ran the --compute passes
 };
 
 // The frame's draw calls (inside the render pass, pipeline and set bound).

@@ -116,4 +116,27 @@ void writeRange(Inputs& inputs, const std::array<float, 4>& range) {
     std::memcpy(inputs.bindings[kBindingParams].mapped, range.data(), 16);
 }
 
+std::vector<uint8_t> loadParamsPath(Inputs& inputs, const std::string& path) {
+    std::vector<uint8_t> records = readSized(path, 0, kParamsRecordBytes);
+    for (size_t r = 0; r < records.size() / kParamsRecordBytes; ++r) {
+        float flag;
+        std::memcpy(&flag, records.data() + r * kParamsRecordBytes + kParamsBytes, 4);
+        if (flag != 0.0f && flag != 1.0f)
+            fail("--params-path '" + path + "': record " + std::to_string(r) + " has dispatch flag " +
+                 std::to_string(flag) + " (expected 0 or 1)");
+    }
+    writeParams(inputs, records, 0);
+    return records;
+}
+
+bool writeParams(Inputs& inputs, const std::vector<uint8_t>& path, uint32_t frame) {
+    const size_t record = frame % (path.size() / kParamsRecordBytes);
+    const uint8_t* p = path.data() + record * kParamsRecordBytes;
+    std::memcpy(inputs.params.data(), p, kParamsBytes);
+    std::memcpy(inputs.bindings[kBindingParams].mapped, p, kParamsBytes);
+    float flag;
+    std::memcpy(&flag, p + kParamsBytes, 4);
+    return flag != 0.0f;
+}
+
 }  // namespace gt

@@ -4,6 +4,7 @@
 #include <array>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "buffers.hpp"
 
@@ -64,5 +65,17 @@ std::vector<uint8_t> loadCameraPath(const Gpu& gpu, Inputs& inputs, const std::s
 
 // Copies block (frame mod N) of a camera path into binding 1.
 void writeCamera(Inputs& inputs, const std::vector<uint8_t>& path, uint32_t frame);
+
+// --params-path: records of a whole TerrainParams block (params.f32's bytes) and a float4 whose x
+// says whether that frame runs the --compute passes (1) or reuses their output (0).
+constexpr size_t kParamsRecordBytes = kParamsBytes + 16;
+inline size_t paramsRecordBytes(const Inputs&) { return kParamsRecordBytes; }
+
+// Reads a --params-path file (a non-zero multiple of kParamsRecordBytes; every flag 0 or 1) and
+// writes its first record, so the first frame draws it.
+std::vector<uint8_t> loadParamsPath(Inputs& inputs, const std::string& path);
+
+// Copies record (frame mod N)'s TerrainParams into binding 0 (and the CPU copy); returns its flag.
+bool writeParams(Inputs& inputs, const std::vector<uint8_t>& path, uint32_t frame);
 
 }  // namespace gt

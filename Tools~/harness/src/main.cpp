@@ -1,6 +1,8 @@
 // gt-harness entry point: parse the command line, set the device up, draw, report.
 // Output is line-oriented and machine-readable ("KEY [SUBKEY] VALUE"), see ../README.md.
 #include <algorithm>
+#include <array>
+#include <cstring>
 #include <cstdio>
 #include <numeric>
 #include <utility>
@@ -25,7 +27,7 @@ namespace gt {
 namespace {
 
 // Indices of the two triangles of each cell of a (F+1) x (F+1) vertex grid, row-major vertices.
-std::vector<uint8_t> gridIndices(uint32_t f, uint32_t* count) {
+std::vector<uint32_t> rowMajorGrid(uint32_t f) {
     std::vector<uint32_t> idx;
     idx.reserve(static_cast<size_t>(f) * f * 6);
     const uint32_t row = f + 1;
@@ -34,9 +36,42 @@ std::vector<uint8_t> gridIndices(uint32_t f, uint32_t* count) {
             const uint32_t a = j * row + i, b = a + 1, c = a + row, d = c + 1;
             idx.insert(idx.end(), {a, b, d, a, d, c});
         }
+    return idx;
+}
+
+// A grid's triangles as a sorted list, each rotated to start at its smallest index (the winding
+// is kept), so two index orders of the same triangles compare equal.
+std::vector<std::array<uint32_t, 3>> canonicalTriangles(const std::vector<uint32_t>& idx) {
+    std::vector<std::array<uint32_t, 3>> t(idx.size() / 3);
+    for (size_t i = 0; i < t.size(); ++i) {
+        const uint32_t a = idx[3 * i], b = idx[3 * i + 1], c = idx[3 * i + 2];
+        t[i] = a <= b && a <= c ? std::array<uint32_t, 3>{a, b, c}
+             : b <= c           ? std::array<uint32_t, 3>{b, c, a}
+                                : std::array<uint32_t, 3>{c, a, b};
+    }
+    std::sort(t.begin(), t.end());
+    return t;
+}
+
+// The fallback grid's index buffer: row by row, or --grid-indices' order of the same triangles
+// (a cache-optimised order: gt bench's fair static mesh). A file holding other triangles fails.
+std::vector<uint8_t> gridIndices(uint32_t f, const std::string& orderPath, uint32_t* count) {
+    std::vector<uint32_t> idx = rowMajorGrid(f);
+    if (!orderPath.empty()) {
+        const std::vector<uint8_t> bytes = readFile(orderPath);
+        if (bytes.size() != idx.size() * 4)
+            fail("--grid-indices '" + orderPath + "' has " + std::to_string(bytes.size()) + " bytes; expected " +
+                 std::to_string(idx.size() * 4) + " (6 F^2 uint32 for --grid-factor " + std::to_string(f) + ")");
+        std::vector<uint32_t> order(idx.size());
+        std::memcpy(order.data(), bytes.data(), bytes.size());
+        if (canonicalTriangles(order) != canonicalTriangles(idx))
+            fail("--grid-indices '" + orderPath + "' does not hold the " + std::to_string(2ull * f * f) +
+                 " triangles of the --grid-factor " + std::to_string(f) + " grid (each once, same winding)");
+        idx = std::move(order);
+    }
     *count = static_cast<uint32_t>(idx.size());
     std::vector<uint8_t> bytes(idx.size() * 4);
-    std::copy_n(reinterpret_cast<const uint8_t*>(idx.data()), bytes.size(), bytes.data());
+    std::memcpy(bytes.data(), idx.data(), bytes.size());
     return bytes;
 }
 
@@ -57,10 +92,10 @@ DrawWork prepareWork(const Options& o, const Gpu& gpu) {
         for (size_t i = 0; i < w.draws.size(); ++i)
             std::printf("draw %zu first_patch %u patches %u\n", i, w.draws[i].firstPatch, w.draws[i].patchCount);
     } else if (o.mode == Mode::Fallback) {
-        w.indices = createDeviceBuffer(gpu, gridIndices(o.gridFactor, &w.indexCount), VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
+        w.indices = createDeviceBuffer(gpu, gridIndices(o.gridFactor, o.gridIndicesPath, &w.indexCount), VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
         std::printf("draws 1\n");
-        std::printf("fallback grid_vertices %u indices %u instances %u\n", (o.gridFactor + 1) * (o.gridFactor + 1),
-                    w.indexCount, o.instances);
+        std::printf("fallback grid_vertices %u indices %u instances %u order %s\n", (o.gridFactor + 1) * (o.gridFactor + 1),
+                    w.indexCount, o.instances, o.gridIndicesPath.empty() ? "rows" : "file");
     } else {
         std::vector<uint8_t> pos = readFile(o.meshPositions), idx = readFile(o.meshIndices);
         if (pos.empty() || pos.size() % 12 != 0)
@@ -125,6 +160,11 @@ int run(const Options& o) {
         cameraPath = loadCameraPath(gpu, inputs, o.cameraPath);
         std::printf("inputs camera_path %zu\n", cameraPath.size() / kCameraBytes);
     }
+    std::vector<uint8_t> paramsPath;
+    if (!o.paramsPath.empty()) {
+        paramsPath = loadParamsPath(inputs, o.paramsPath);
+        std::printf("inputs params_path %zu\n", paramsPath.size() / paramsRecordBytes(inputs));
+    }
     std::printf("inputs gregory_patches %u\n", inputs.gregoryPatches);
     if (inputs.snow) std::printf("inputs snow_resolution %u\n", inputs.snowResolution);
     std::printf("inputs range %.9g %.9g %.9g %.9g\n", inputs.params[0], inputs.params[1], inputs.params[2], inputs.params[3]);
@@ -155,6 +195,7 @@ int run(const Options& o) {
     fs.stats = o.stats;
     fs.updateRange = o.updateRangePerFrame;
     fs.cameraPath = std::move(cameraPath);
+    fs.paramsPath = std::move(paramsPath);
     fs.computeOnce = o.computeOnce;
     fs.computeTimestamp = o.computeTimestamp;
     fs.rangePan = o.rangePan;
@@ -172,6 +213,7 @@ int run(const Options& o) {
         for (size_t i = 0; i < results.computeMs.size(); ++i)
             std::printf("time compute_ms %zu %.6f\n", i, results.computeMs[i]);
         printTimes("compute_ms", results.computeMs);
+        if (!compute.empty() && o.inFlight == 1) std::printf("time dispatched_frames %u\n", results.dispatchedFrames);
         printTimes("cpu_frame_ms", results.cpuMs);
         if (gpu.isLavapipe) std::printf("note lavapipe timings are functional figures, not performance\n");
     }
