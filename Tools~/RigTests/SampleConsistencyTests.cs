@@ -163,6 +163,13 @@ namespace GregoryTerrain.Rig.Tests
                     if (r.Groups[2].Success)
                     {
                         Assert.That(_guidToFile.TryGetValue(r.Groups[2].Value, out string file), Is.True, where);
+                        if (type == "ComputeShader")
+                        {
+                            // An imported compute shader is the .compute file's main object (fileID 7200000).
+                            Assert.That(Path.GetExtension(file), Is.EqualTo(".compute"), where);
+                            Assert.That(r.Groups[1].Value, Is.EqualTo("7200000"), where);
+                            continue;
+                        }
                         target = ParseYaml(file).SingleOrDefault(t => t.Anchor == r.Groups[1].Value);
                     }
                     else

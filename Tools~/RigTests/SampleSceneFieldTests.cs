@@ -82,16 +82,58 @@ namespace GregoryTerrain.Rig.Tests
         {
             string meta = Directory.GetFiles(PackageRoot.Path, "*.cs.meta", SearchOption.AllDirectories)
                 .Single(m => File.ReadAllText(m).Contains("guid: " + guid));
-            string text = Regex.Replace(File.ReadAllText(meta.Substring(0, meta.Length - ".meta".Length)), @"//[^\n]*", "");
-            var field = new Regex(@"^\s*(?<attrs>(\[[^\]\n]*\]\s*)*)(?<mods>((public|private|protected|internal)\s+)*)(?<type>[\w\.]+(<[\w\.,\s]+>)?(\[\])?)\s+(?<name>\w+)\s*(=(?!>)[^;]*)?;", RegexOptions.Multiline);
-            var names = new List<string>();
-            foreach (Match m in field.Matches(text))
+            return SerializedPaths(File.ReadAllText(meta.Substring(0, meta.Length - ".meta".Length)), "");
+        }
+
+        static readonly Regex Field = new Regex(@"^\s*(?<attrs>(\[[^\]\n]*\]\s*)*)(?<mods>((public|private|protected|internal)\s+)*)(?<type>[\w\.]+(<[\w\.,\s]+>)?(\[\])?)\s+(?<name>\w+(\s*,\s*\w+)*)\s*(=(?!>)[^;]*)?;", RegexOptions.Multiline);
+
+        /// <summary>
+        /// The key paths Unity writes for the serialized fields declared in <paramref name="source"/>:
+        /// a field of a package type marked [Serializable] is written as a block, its own fields
+        /// nested under its name.
+        /// </summary>
+        static List<string> SerializedPaths(string source, string prefix)
+        {
+            string text = Regex.Replace(source, @"//[^\n]*", "");
+            var paths = new List<string>();
+            foreach (Match m in Field.Matches(text))
             {
                 string type = m.Groups["type"].Value, attrs = m.Groups["attrs"].Value, mods = m.Groups["mods"].Value;
                 if (type is "return" or "using" or "static" or "const" or "readonly" or "var" or "new" or "throw") continue;
-                if ((attrs.Contains("SerializeField") || mods.Contains("public")) && !attrs.Contains("NonSerialized")) names.Add(m.Groups["name"].Value);
+                if (!(attrs.Contains("SerializeField") || mods.Contains("public")) || attrs.Contains("NonSerialized")) continue;
+                foreach (string name in m.Groups["name"].Value.Split(',').Select(n => n.Trim()))
+                {
+                    string path = prefix + name;
+                    paths.Add(path);
+                    string nested = SerializableTypeBody(type);
+                    if (nested != null) paths.AddRange(SerializedPaths(nested, path + "."));
+                }
             }
-            return names;
+            return paths;
+        }
+
+        /// <summary>The body of a [Serializable] struct or class of the package's Runtime, or null.</summary>
+        static string SerializableTypeBody(string type)
+        {
+            var declaration = new Regex(@"\[Serializable\][^{;]*?\b(struct|class)\s+" + Regex.Escape(type) + @"\b[^{]*\{");
+            foreach (string file in Directory.GetFiles(PackageRoot.Combine("Runtime"), "*.cs", SearchOption.AllDirectories))
+            {
+                string text = File.ReadAllText(file);
+                Match d = declaration.Match(text);
+                if (!d.Success) continue;
+                int depth = 1, i = d.Index + d.Length;
+                var body = new System.Text.StringBuilder();
+                for (; i < text.Length && depth > 0; i++)
+                {
+                    if (text[i] == '{') depth++;
+                    else if (text[i] == '}') depth--;
+                    // Only the type's own members: nested blocks (methods, properties) are skipped.
+                    if (depth == 1 && text[i] != '}') body.Append(text[i]);
+                    else if (depth == 1) body.Append(';');
+                }
+                return body.ToString();
+            }
+            return null;
         }
 
         static List<string> Problems(string sceneText)
