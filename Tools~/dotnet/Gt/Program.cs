@@ -43,6 +43,7 @@ namespace GregoryTerrain.Rig
             Commands["snow-scene"] = ("write a snow run's inputs: ridge grid, harness buffers, field/snow params per R (--out DIR [--cpu])", SnowSceneCommand.Run);
             Commands["pack"] = ("write the harness's buffer files for one scene (--grid FILE --out DIR ...)", PackCommand.Run);
             Commands["estimate"] = ("CPU time of the inspector's triangle estimate, and its sample against every tile (--grid FILE [--tiles 16,32,64] [--target PX] [--repeat N])", EstimateCommand.Run);
+            Commands["query-bench"] = ("CPU height/normal/ray queries per second (1 and N threads) and the collider patch's cost and deviation (--grid FILE [--size M] [--threads N])", QueryBenchCommand.Run);
             Commands["jitter"] = ("deep-zoom vertex jitter table, plain vs shipped float path (--widths 1e-2,1e-4,1e-6 ...)", JitterCommand.Run);
         }
     }
