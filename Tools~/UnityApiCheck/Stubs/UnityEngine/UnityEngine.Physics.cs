@@ -8,10 +8,9 @@ using System;
 
 namespace UnityEngine
 {
-    // SR:Ray (the constructor normalizes the direction)
+    // SR:Ray
     public partial struct Ray
     {
-        public Ray(Vector3 origin, Vector3 direction) { this.origin = origin; this.direction = direction; } // SR:Ray-ctor
         public Vector3 origin { get; set; }                                           // SR:Ray-origin
         public Vector3 direction { get; set; }                                        // SR:Ray-direction
     }
@@ -27,10 +26,7 @@ namespace UnityEngine
     }
 
     // SR:Collider
-    public partial class Collider : Component
-    {
-        public bool enabled { get; set; }                                             // SR:Collider-enabled
-    }
+    public partial class Collider : Component { }
 
     // SR:MeshCollider
     public partial class MeshCollider : Collider
@@ -55,6 +51,5 @@ namespace UnityEngine
     {
         // [ThreadSafe] in the reference source: callable from any thread (SR:Physics.BakeMesh says so too).
         public static void BakeMesh(int meshID, bool convex, MeshColliderCookingOptions cookingOptions) { } // SR:Physics.BakeMesh
-        public static void BakeMesh(int meshID, bool convex) { }                      // SR:Physics.BakeMesh
     }
 }
