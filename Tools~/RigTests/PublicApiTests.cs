@@ -29,6 +29,7 @@ namespace GregoryTerrain.Rig.Tests
             "GregoryTerrain.ZoomRangeController",
             "GregoryTerrain.RangeFit",
             "GregoryTerrain.SnowSimulator",
+            "GregoryTerrain.GregoryTerrainCollider",
             "GregoryTerrain.VertexEvaluation",
             // Core: the values those take and return.
             "GregoryTerrain.TerrainRange",

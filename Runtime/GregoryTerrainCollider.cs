@@ -1,0 +1,228 @@
+using System;
+using System.Threading.Tasks;
+using UnityEngine;
+
+namespace GregoryTerrain
+{
+    /// <summary>
+    /// Keeps a physics surface of the terrain around a target (a player, a vehicle): a MeshCollider
+    /// patch of N x N height samples of the full-detail surface (the renderer's CPU queries), re-centred
+    /// when the target leaves the patch's middle. A MeshCollider rather than a TerrainCollider: a
+    /// TerrainCollider needs TerrainData (a heightmap of its own, a power of two plus one, resampled on
+    /// the main thread with SetHeights), whereas a mesh patch is built from samples anywhere in a
+    /// 1,000 km terrain, follows its Transform (rotation included), and Unity cooks it off the main thread
+    /// (Physics.BakeMesh is thread-safe).
+    /// <para>Per rebuild: the heights and vertices are computed on a worker thread
+    /// (Task.Run, Core's thread-safe <see cref="TerrainSurfaceQuery"/>); the main thread copies them into
+    /// a spare Mesh (SetVertices of N^2 vertices, RecalculateBounds); a worker cooks it
+    /// (Physics.BakeMesh); the main thread then swaps the collider's sharedMesh (the cooked data is
+    /// reused) and moves this GameObject to the patch. The collider in use is never touched while the
+    /// next one is built, so physics sees one whole patch or the next.</para>
+    /// <para>Put it on an empty GameObject of its own (it moves its Transform to the patch; keep the
+    /// scale 1). The samples lie on a lattice fixed in the terrain, so the surface under the target does
+    /// not change when the patch moves (<see cref="ColliderPatch"/>).</para>
+    /// </summary>
+    [DisallowMultipleComponent]
+    [RequireComponent(typeof(MeshCollider))]
+    [AddComponentMenu("Gregory Terrain/Gregory Terrain Collider")]
+    public sealed class GregoryTerrainCollider : MonoBehaviour
+    {
+        [Tooltip("The terrain whose surface (with its noise, all octaves) the collider follows.")]
+        [SerializeField] GregoryTerrainRenderer terrain;
+
+        [Tooltip("What stands on the terrain: the patch is kept around it.")]
+        [SerializeField] Transform target;
+
+        [Tooltip("Height samples per side of the patch (N x N vertices, 2 (N - 1)^2 triangles). 65 at 1 m spacing covers 64 m.")]
+        [SerializeField, Range(2, 255)] int samples = 65;
+
+        [Tooltip("Distance between samples along the terrain, in world units (metres). Smaller follows fine noise more closely; the deviation from the drawn surface is listed in the manual.")]
+        [SerializeField, Min(0.01f)] float spacing = 1f;
+
+        [Tooltip("Re-centre the patch when the target is farther than this fraction of the half patch from its centre (0.5: a quarter of the patch).")]
+        [SerializeField, Range(0.05f, 1f)] float recentreThreshold = 0.5f;
+
+        enum Stage { Idle, Sampling, Baking }
+
+        MeshCollider _collider;
+        readonly Mesh[] _meshes = new Mesh[2];
+        readonly int[] _meshSamples = new int[2];   // N each mesh was built for
+        int _spare;                      // the mesh being built (the other is in use)
+        Stage _stage;
+        Task _task;
+        ColliderPatch _current, _pending;
+        bool _hasCurrent;
+        TerrainSurfaceQuery _builtFrom;  // the query the current patch was sampled from
+        float[] _heights;
+        Vector3[] _vertices;
+        int[] _triangles;
+        int _builtSamples;
+        Vector3 _pendingPosition;
+        Quaternion _pendingRotation;
+
+        /// <summary>The terrain followed.</summary>
+        public GregoryTerrainRenderer Terrain { get => terrain; set => terrain = value; }
+        /// <summary>The transform the patch is kept around.</summary>
+        public Transform Target { get => target; set => target = value; }
+        /// <summary>Samples per side (2 .. 255).</summary>
+        public int Samples
+        {
+            get => samples;
+            set
+            {
+                if (value < 2 || value > 255) throw new ArgumentException($"Samples ({value}) must lie in [2, 255]", nameof(value));
+                samples = value;
+            }
+        }
+        /// <summary>Distance between samples, world units.</summary>
+        public float Spacing
+        {
+            get => spacing;
+            set
+            {
+                if (!(value >= 0.01f) || float.IsInfinity(value)) throw new ArgumentException($"Spacing ({value}) must be finite and at least 0.01", nameof(value));
+                spacing = value;
+            }
+        }
+        /// <summary>Rebuilds finished since enabled (for tests and statistics).</summary>
+        public int RebuildCount { get; private set; }
+        /// <summary>True while a rebuild is under way (sampling or cooking off the main thread).</summary>
+        public bool Rebuilding => _stage != Stage.Idle;
+
+        void OnEnable()
+        {
+            _collider = GetComponent<MeshCollider>();
+            _stage = Stage.Idle;
+            _hasCurrent = false;
+            RebuildCount = 0;
+        }
+
+        void OnDisable()
+        {
+            // A cook reads the spare mesh natively: let it finish before the mesh can be destroyed.
+            try { _task?.Wait(); } catch (AggregateException) { }
+            _task = null;
+            _stage = Stage.Idle;
+        }
+
+        void OnDestroy()
+        {
+            for (int k = 0; k < _meshes.Length; k++)
+                if (_meshes[k] != null) { Destroy(_meshes[k]); _meshes[k] = null; }
+        }
+
+        void Update()
+        {
+            if (terrain == null || target == null || _collider == null) return;
+            switch (_stage)
+            {
+                case Stage.Idle: StartIfNeeded(); break;
+                case Stage.Sampling: if (_task.IsCompleted) ApplySamples(); break;
+                case Stage.Baking: if (_task.IsCompleted) Swap(); break;
+            }
+        }
+
+        /// <summary>Terrain-space point (the unit square) under a world position.</summary>
+        Double2 TerrainPoint(Vector3 world)
+        {
+            Vector3 o = terrain.transform.InverseTransformPoint(world);
+            return new Double2(o.x, o.z);
+        }
+
+        void StartIfNeeded()
+        {
+            TerrainSurfaceQuery query = terrain.SurfaceQuery;
+            if (query == null) return;
+            Vector3 scale = terrain.transform.lossyScale;
+            double spacingTerrain = spacing / Math.Max(Math.Abs((double)scale.x), 1e-30);
+            Double2 at = TerrainPoint(target.position);
+            bool stale = !_hasCurrent || query != _builtFrom || _builtSamples != samples || _current.spacing != spacingTerrain;
+            if (!stale && !_current.NeedsRebuild(at, recentreThreshold)) return;
+            ColliderPatch patch;
+            try { patch = ColliderPatch.Around(at, spacingTerrain, samples); }
+            catch (ArgumentException e) { Debug.LogError($"{name}: {e.Message}", this); enabled = false; return; }
+
+            int n = samples;
+            if (_heights == null || _heights.Length != n * n)
+            {
+                _heights = new float[n * n];
+                _vertices = new Vector3[n * n];
+                _triangles = ColliderPatch.Triangles(n);
+            }
+            // The patch's pose: its centre on the surface, the terrain's rotation, unit scale; vertices
+            // relative to it in world units (small numbers, so float keeps millimetres at any distance).
+            Double2 c = patch.Center;
+            double centreHeight = query.SampleHeight(GMath.clamp(c.x, 0.0, 1.0), GMath.clamp(c.y, 0.0, 1.0));
+            if (double.IsNaN(centreHeight)) centreHeight = 0.0;
+            // In double: the object point rounded to float first would place the patch 6 mm off on a 100 km terrain.
+            Matrix4x4 m = terrain.transform.localToWorldMatrix;
+            double ox = c.x, oy = centreHeight, oz = c.y;
+            _pendingPosition = new Vector3((float)(m.m00 * ox + m.m01 * oy + m.m02 * oz + m.m03),
+                                           (float)(m.m10 * ox + m.m11 * oy + m.m12 * oz + m.m13),
+                                           (float)(m.m20 * ox + m.m21 * oy + m.m22 * oz + m.m23));
+            _pendingRotation = terrain.transform.rotation;
+            double sx = scale.x, sy = scale.y, sz = scale.z;
+            float[] heights = _heights;
+            Vector3[] vertices = _vertices;
+            _pending = patch;
+            _builtFrom = query;
+            _task = Task.Run(() =>
+            {
+                patch.SampleHeights(query, heights);
+                for (int j = 0; j < n; j++)
+                    for (int i = 0; i < n; i++)
+                    {
+                        Double2 p = patch.Point(i, j);
+                        int v = j * n + i;
+                        vertices[v] = new Vector3((float)(sx * (p.x - c.x)), (float)(sy * (heights[v] - centreHeight)), (float)(sz * (p.y - c.y)));
+                    }
+            });
+            _stage = Stage.Sampling;
+        }
+
+        /// <summary>Main thread: the samples into the spare mesh (its vertex count is fixed per N), then the cook off the main thread.</summary>
+        void ApplySamples()
+        {
+            if (_task.IsFaulted)
+            {
+                Debug.LogError($"{name}: sampling the terrain failed: {_task.Exception?.GetBaseException().Message}", this);
+                _stage = Stage.Idle;
+                enabled = false;
+                return;
+            }
+            Mesh mesh = _meshes[_spare];
+            int n = samples;
+            if (mesh != null && _meshSamples[_spare] != n) { Destroy(mesh); mesh = null; }   // another vertex count
+            bool fresh = mesh == null;
+            if (fresh)
+            {
+                mesh = _meshes[_spare] = new Mesh { name = "Gregory Terrain Collider", hideFlags = HideFlags.HideAndDontSave };
+                mesh.MarkDynamic();
+                _meshSamples[_spare] = n;
+            }
+            mesh.SetVertices(_vertices);
+            if (fresh) mesh.SetTriangles(_triangles, 0);   // the same for every patch of N x N
+            mesh.RecalculateBounds();
+            int id = mesh.GetInstanceID();
+            MeshColliderCookingOptions options = _collider.cookingOptions;
+            _task = Task.Run(() => Physics.BakeMesh(id, false, options));
+            _stage = Stage.Baking;
+        }
+
+        /// <summary>Main thread: the cooked mesh becomes the collider's, at the patch's pose.</summary>
+        void Swap()
+        {
+            if (_task.IsFaulted)
+                Debug.LogWarning($"{name}: cooking the collider off the main thread failed ({_task.Exception?.GetBaseException().Message}); Unity cooks it on assignment.", this);
+            transform.SetPositionAndRotation(_pendingPosition, _pendingRotation);
+            _collider.sharedMesh = _meshes[_spare];
+            _spare = 1 - _spare;
+            _current = _pending;
+            _hasCurrent = true;
+            _builtSamples = samples;
+            _stage = Stage.Idle;
+            _task = null;
+            RebuildCount++;
+        }
+    }
+}
