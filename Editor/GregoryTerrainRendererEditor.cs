@@ -83,8 +83,12 @@ namespace GregoryTerrain.EditorTools
                 if (mayCache) Fields("cacheShader", "lodCamera");
             });
             Section("Noise and colour", false, () =>
-                Fields("noiseAmplitude", "noiseFrequency", "noiseAlpha", "noiseBeta", "noiseOctaves", "noiseVerticesAcross",
-                       "colorGamma", "colorNoiseAmplitude", "colorNoiseFrequency", "colorLow", "colorHigh"));
+            {
+                KeywordOffNote(VertexCachePass.NoiseKeyword, "Noise detail");
+                Fields("noiseAmplitude", "noiseFrequency", "noiseAlpha", "noiseBeta", "noiseOctaves", "noiseVerticesAcross");
+                KeywordOffNote(VertexCachePass.HeightColorKeyword, "Height colour");
+                Fields("colorGamma", "colorNoiseAmplitude", "colorNoiseFrequency", "colorLow", "colorHigh");
+            });
             Section("Lighting", false, () => Fields("shadowCasting", "receiveShadows"));
             Section("Debug", false, () => Fields("debugShowControlPoints", "debugShowPatchWireframe"));
         }
@@ -93,6 +97,18 @@ namespace GregoryTerrain.EditorTools
         {
             foreach (string name in names)
                 EditorGUILayout.PropertyField(serializedObject.FindProperty(name));
+        }
+
+        /// <summary>
+        /// The noise and colour fields act only where the material's toggle is on; they stay editable
+        /// (settings kept for when it is turned on), with a note when it is off.
+        /// </summary>
+        void KeywordOffNote(string keyword, string toggle)
+        {
+            if (serializedObject.isEditingMultipleObjects) return;
+            Material m = ((GregoryTerrainRenderer)target).Material;
+            if (m != null && !m.IsKeywordEnabled(keyword))
+                EditorGUILayout.HelpBox($"The material's {toggle} toggle is off: these settings have no effect.", MessageType.Info);
         }
 
         /// <summary>A foldout header whose open state is kept per user across sessions, like Unity's own inspectors.</summary>
