@@ -68,7 +68,7 @@ namespace GregoryTerrain.EditorTools
             // With several renderers selected and differing values, show what any of them may use.
             bool mayAdapt = uniformFactor.hasMultipleDifferentValues || uniformFactor.intValue == 0;
             bool mayCache = vertexEvaluation.hasMultipleDifferentValues ||
-                            vertexEvaluation.enumValueIndex == (int)VertexEvaluation.ComputeCache;
+                            vertexEvaluation.intValue == (int)VertexEvaluation.ComputeCache;
 
             Section("Content", true, () => Fields("grid", "material", "range"));
             Section("Tessellation", true, () =>

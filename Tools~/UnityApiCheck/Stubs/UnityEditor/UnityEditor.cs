@@ -54,7 +54,6 @@ namespace UnityEditor
     {
         public bool hasMultipleDifferentValues => false;                                     // SR:SerializedProperty-hasMultipleDifferentValues (get only)
         public int intValue { get => 0; set { } }                                            // SR:SerializedProperty-intValue
-        public int enumValueIndex { get => 0; set { } }                                      // SR:SerializedProperty-enumValueIndex
         public void Dispose() { }                                                            // SR:SerializedProperty.Dispose
     }
 
