@@ -34,7 +34,6 @@ namespace UnityEditor
         public Object target { get => null; set { } }                                       // SR:Editor-target
         public virtual void OnInspectorGUI() { }                                             // SR:Editor.OnInspectorGUI
         public bool DrawDefaultInspector() => false;                                         // SR:Editor.DrawDefaultInspector
-        public Object[] targets => null;                                                     // SR:Editor-targets (get only)
         public SerializedObject serializedObject => null;                                    // SR:Editor-serializedObject (get only)
     }
 
