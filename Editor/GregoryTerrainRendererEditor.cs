@@ -5,11 +5,13 @@ using UnityEngine;
 namespace GregoryTerrain.EditorTools
 {
     /// <summary>
-    /// Renderer inspector (triangles in view and at most, vertex cache memory, fallback status) and Scene-view tools: control points
-    /// and patch wireframe drawn with Handles, control points moved with position handles (undoable).
+    /// Renderer inspector: readouts (triangles in view and at most, vertex cache memory), help boxes for
+    /// invalid settings and fallbacks, then the settings in foldouts (open state kept per user in
+    /// EditorPrefs), each field shown only where it has an effect. Scene-view tools: control points and
+    /// patch wireframe drawn with Handles, control points moved with position handles (undoable).
     /// The Scene-view keys are shortcuts of the Shortcut Manager (GregoryTerrainShortcuts).
     /// </summary>
-    [CustomEditor(typeof(GregoryTerrainRenderer))]
+    [CustomEditor(typeof(GregoryTerrainRenderer)), CanEditMultipleObjects]
     internal sealed class GregoryTerrainRendererEditor : Editor
     {
         int _selectedPatch = -1, _selectedSlot = -1;
@@ -20,17 +22,30 @@ namespace GregoryTerrain.EditorTools
         string _estimateText = "";
         string _estimateCapped;   // why tiles held at the max factor matter, when the last estimate found some
 
+        const string FoldoutKeyPrefix = "GregoryTerrain.RendererEditor.";
+
         public override void OnInspectorGUI()
         {
-            var r = (GregoryTerrainRenderer)target;
-            EditorGUILayout.LabelField(new GUIContent("Triangles in view", "What the draw makes for the LOD camera (else the main camera, else the Scene view's) at the current settings and range: each tile's factors from Core's mirror of the hull stage, counted as the tessellator triangulates. Lower the target pixel error and watch it rise. Up to 256 tiles are evaluated, an even sample of them beyond that."),
+            serializedObject.UpdateIfRequiredOrScript();
+            if (serializedObject.isEditingMultipleObjects)
+                EditorGUILayout.HelpBox("Select one renderer to see its triangle counts and warnings.", MessageType.Info);
+            else
+                DrawReadouts((GregoryTerrainRenderer)target);
+            DrawSettings();
+            serializedObject.ApplyModifiedProperties();
+        }
+
+        void DrawReadouts(GregoryTerrainRenderer r)
+        {
+            EditorGUILayout.LabelField(new GUIContent("Triangles in view", "Triangles drawn for the LOD camera (else the main or Scene view camera) at the current settings. Up to 256 tiles are evaluated."),
                 new GUIContent(InViewText(r)));
             if (_estimateCapped != null) EditorGUILayout.HelpBox(_estimateCapped, MessageType.Info);
-            EditorGUILayout.LabelField(new GUIContent("Most triangles", "Most triangles the current settings can produce: 2 F^2 per tile, F the uniform factor, else the max factor (Core's TessellationPolicy)."),
+            EditorGUILayout.LabelField(new GUIContent("Most triangles", "The most triangles these settings can draw, whatever the view."),
                 new GUIContent(r.EstimatedTriangleCount.ToString("N0")));
             bool cache = r.VertexEvaluation == VertexEvaluation.ComputeCache;
-            EditorGUILayout.LabelField(new GUIContent("Vertex cache memory", "GPU memory of the Compute cache's two buffers for the current settings (Core's VertexCacheBudget): _TileFactors 992 T^2 bytes + _VertexCache 16 T^2 ((L+1)^2 + 4 (L+1)) R bytes, T = M, or M + 1 with Anchor Tiles (adaptive factors), L = the uniform factor, else the max factor, rounded up; R = 2 with the material's snow (GT_SNOW), else 1."),
-                new GUIContent(FormatBytes(r.VertexCacheBytes) + (cache ? "" : " (only with Compute cache)")));
+            if (cache)
+                EditorGUILayout.LabelField(new GUIContent("Vertex cache memory", "GPU memory the Compute cache's buffers take at these settings."),
+                    new GUIContent(FormatBytes(r.VertexCacheBytes)));
             if (cache && !SystemInfo.supportsComputeShaders)
                 EditorGUILayout.HelpBox("Vertex evaluation is Compute cache, but this GPU has no compute shaders (SystemInfo.supportsComputeShaders is false): the domain stage evaluates the vertices instead.", MessageType.Warning);
             else if (cache && r.VertexCacheFallbackReason != null)
@@ -43,7 +58,73 @@ namespace GregoryTerrain.EditorTools
                 EditorGUILayout.HelpBox("Settings: " + r.SettingsError, MessageType.Error);
             if (r.Material == null)
                 EditorGUILayout.HelpBox("Assign a material that uses GregoryTerrain/Terrain.", MessageType.Warning);
-            DrawDefaultInspector();
+        }
+
+        // The serialized field names are the scenes' data: never rename them here or in the renderer.
+        void DrawSettings()
+        {
+            SerializedProperty uniformFactor = serializedObject.FindProperty("uniformFactor");
+            SerializedProperty vertexEvaluation = serializedObject.FindProperty("vertexEvaluation");
+            // With several renderers selected and differing values, show what any of them may use.
+            bool mayAdapt = uniformFactor.hasMultipleDifferentValues || uniformFactor.intValue == 0;
+            bool mayCache = vertexEvaluation.hasMultipleDifferentValues ||
+                            vertexEvaluation.intValue == (int)VertexEvaluation.ComputeCache;
+
+            Section("Content", true, () => Fields("grid", "material", "range"));
+            Section("Tessellation", true, () =>
+            {
+                Fields("tiles", "uniformFactor");
+                if (mayAdapt) Fields("maxFactor", "targetPixelError", "anchorTiles");
+                Fields("fallbackGridFactor");
+            });
+            Section("Vertex evaluation", true, () =>
+            {
+                Fields("vertexEvaluation");
+                if (mayCache) Fields("cacheShader", "lodCamera");
+            });
+            Section("Noise and colour", false, () =>
+            {
+                KeywordOffNote(VertexCachePass.NoiseKeyword, "Noise detail");
+                Fields("noiseAmplitude", "noiseFrequency", "noiseAlpha", "noiseBeta", "noiseOctaves", "noiseVerticesAcross");
+                KeywordOffNote(VertexCachePass.HeightColorKeyword, "Height colour");
+                Fields("colorGamma", "colorNoiseAmplitude", "colorNoiseFrequency", "colorLow", "colorHigh");
+            });
+            Section("Lighting", false, () => Fields("shadowCasting", "receiveShadows"));
+            Section("Debug", false, () => Fields("debugShowControlPoints", "debugShowPatchWireframe"));
+        }
+
+        void Fields(params string[] names)
+        {
+            foreach (string name in names)
+                EditorGUILayout.PropertyField(serializedObject.FindProperty(name));
+        }
+
+        /// <summary>
+        /// The noise and colour fields act only where the material's toggle is on; they stay editable
+        /// (settings kept for when it is turned on), with a note when it is off.
+        /// </summary>
+        void KeywordOffNote(string keyword, string toggle)
+        {
+            if (serializedObject.isEditingMultipleObjects) return;
+            Material m = ((GregoryTerrainRenderer)target).Material;
+            if (m != null && !m.IsKeywordEnabled(keyword))
+                EditorGUILayout.HelpBox($"The material's {toggle} toggle is off: these settings have no effect.", MessageType.Info);
+        }
+
+        /// <summary>A foldout header whose open state is kept per user across sessions, like Unity's own inspectors.</summary>
+        static void Section(string title, bool openByDefault, System.Action drawFields)
+        {
+            string key = FoldoutKeyPrefix + title;
+            bool open = EditorPrefs.GetBool(key, openByDefault);
+            bool now = EditorGUILayout.BeginFoldoutHeaderGroup(open, title);
+            if (now != open) EditorPrefs.SetBool(key, now);
+            if (now)
+            {
+                EditorGUI.indentLevel++;
+                drawFields();
+                EditorGUI.indentLevel--;
+            }
+            EditorGUILayout.EndFoldoutHeaderGroup();
         }
 
         string InViewText(GregoryTerrainRenderer r)

@@ -33,10 +33,10 @@ namespace GregoryTerrain
         [Tooltip("What stands on the terrain: the patch is kept around it.")]
         [SerializeField] Transform target;
 
-        [Tooltip("Height samples per side of the patch (N x N vertices, 2 (N - 1)^2 triangles). 65 at 1 m spacing covers 64 m.")]
+        [Tooltip("Height samples per side of the collider's patch. 65 samples 1 m apart cover 64 m.")]
         [SerializeField, Range(2, 255)] int samples = 65;
 
-        [Tooltip("Distance between samples along the terrain, in world units (metres). Smaller follows fine noise more closely; the deviation from the drawn surface is listed in the manual.")]
+        [Tooltip("Distance between samples along the terrain, in metres. Smaller follows fine noise more closely (the manual lists how closely).")]
         [SerializeField, Min(0.01f)] float spacing = 1f;
 
         [Tooltip("Re-centre the patch when the target is farther than this fraction of the half patch from its centre (0.5: a quarter of the patch).")]

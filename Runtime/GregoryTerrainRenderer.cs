@@ -88,82 +88,74 @@ namespace GregoryTerrain
             }
         }
 
-        [Header("Content")]
-        [Tooltip("The patch grid to draw. Swapping it releases the old GPU buffers and uploads the new grid once.")]
+        [Tooltip("The patch grid to draw. Changing it frees the old GPU buffers and uploads the new grid once.")]
         [SerializeField] PatchGridAsset grid;
 
-        [Tooltip("A material using the GregoryTerrain/Terrain shader. Effects (noise, height colour, debug views) are its keyword toggles.")]
+        [Tooltip("A material using the GregoryTerrain/Terrain shader. Noise, height colour and debug views are toggles on the material.")]
         [SerializeField] Material material;
 
-        [Header("Tessellation")]
-        [Tooltip("M: the drawn range is covered by M x M tile patches. The vertex budget is constant at any zoom: about 2 x (M x maxFactor)^2 triangles at most. At a given triangle count fewer, larger tiles draw faster, as long as that budget still holds the triangles.")]
+        [Tooltip("Tiles per side of the drawn area. More tiles draw more detail at the same max factor; fewer, larger tiles draw the same triangles faster.")]
         [SerializeField, Range(1, 64)] int tiles = 16;
 
-        [Tooltip("Largest tessellation factor a tile edge may get (hardware limit 64). Caps the triangle count.")]
+        [Tooltip("Most subdivisions of a tile edge (at most 64). Caps the triangle count.")]
         [SerializeField, Range(1f, 64f)] float maxFactor = 64f;
 
-        [Tooltip("Target screen-space error in pixels: the largest distance the drawn triangles may lie from the surface (like Unity Terrain's Pixel Error). Halving it about doubles the triangles. See Documentation~/performance.md.")]
+        [Tooltip("How far, in pixels, the drawn triangles may stray from the surface (like Unity Terrain's Pixel Error). Halving it about doubles the triangles.")]
         [SerializeField, Range(1f, 64f)] float targetPixelError = 8f;
 
-        [Tooltip("0 = adaptive (screen-space) factors. A value > 0 uses that factor for every edge: for debugging and measurements.")]
+        [Tooltip("0: subdivide each tile edge by its size on screen. Above 0: subdivide every edge this many times (for testing and measuring).")]
         [SerializeField, Range(0, 64)] int uniformFactor;
 
-        [Tooltip("Anchor the tiles to the terrain: while the range pans, the vertices stay where they are on the terrain (no swimming), and the Compute cache, which holds whole cells that the draw clips, evaluates only the cells a pan brings in, not every tile. Draws (M + 1) x (M + 1) tiles, the outer ones clipped to the range; a zoom anchors them again. Adaptive factors only: with a uniform factor or the fallback grid the tiles lie on the range. Off: the tiles always lie on the range (the paper's layout).")]
+        [Tooltip("Keep the tiles fixed on the terrain while the view pans, so vertices don't swim and the Compute cache updates only the tiles a pan brings in.")]
         [SerializeField] bool anchorTiles = true;
 
-        [Tooltip("Fallback only (GPUs without a tessellator): each tile is a fixed (F+1) x (F+1) vertex grid.")]
+        [Tooltip("Only on GPUs without tessellation: each tile is drawn as a fixed grid with this many cells per side.")]
         [SerializeField, Range(1, 64)] int fallbackGridFactor = 16;
 
-        [Header("Vertex evaluation")]
-        [Tooltip("Domain stage: every pass of every camera evaluates its vertices in the domain shader (fractional factors, each camera its own). Compute cache: a compute pre-pass evaluates each vertex once into a GPU buffer when the LOD camera, the range or a setting changes, and the domain stage only reads it (integer factors from the LOD camera for every camera; a little popping when a factor changes; GPU memory shown below). Falls back to Domain stage, with one warning, where compute shaders are missing.")]
+        [Tooltip("Domain stage: every camera evaluates its own vertices. Compute cache: vertices are evaluated once per change into GPU memory, from the LOD camera's view.")]
         [SerializeField] VertexEvaluation vertexEvaluation = VertexEvaluation.DomainStage;
-        [Tooltip("Compute cache only: Shaders/Cache/TerrainCache.compute (kernels CacheTileFactors and CacheTileVertices).")]
+        [Tooltip("The compute shader of the Compute cache: Shaders/Cache/TerrainCache.compute.")]
         [SerializeField] ComputeShader cacheShader;
-        [Tooltip("Compute cache only: the camera whose view picks the tessellation factors and culls tiles, for every camera and shadow pass. Empty = Camera.main.")]
+        [Tooltip("The camera whose view sets the detail and culls tiles for all cameras and shadows. Empty: the main camera.")]
         [SerializeField] Camera lodCamera;
 
-        [Header("Range (terrain unit square)")]
-        [Tooltip("Part of the terrain drawn: [c, g] x [d, h] inside [0, 1]^2. Range controllers set it every frame.")]
+        [Tooltip("The part of the terrain drawn, as min x, min y, max x, max y inside 0..1. Range controllers set it every frame.")]
         [SerializeField] Vector4 range = new Vector4(0f, 0f, 1f, 1f);
 
-        [Header("Noise detail (material keyword GT_NOISE)")]
-        [Tooltip("Height of the first octave, terrain units.")]
+        [Tooltip("Height of the largest noise layer, in terrain units.")]
         [SerializeField, Range(0f, 0.5f)] float noiseAmplitude = 0.02f;
-        [Tooltip("Lattice cells of the first octave across the whole terrain.")]
+        [Tooltip("Noise cells across the whole terrain in the largest noise layer.")]
         [SerializeField, Range(0.5f, 4096f)] float noiseFrequency = 16f;
-        [Tooltip("alpha (eq. 12): frequency ratio between octaves.")]
+        [Tooltip("How much finer each noise layer is than the one before it (2: twice as fine).")]
         [SerializeField, Range(1.1f, 8f)] float noiseAlpha = 2f;
-        [Tooltip("beta (eq. 12): amplitude divisor between octaves.")]
+        [Tooltip("How much weaker each noise layer is than the one before it (2: half the height).")]
         [SerializeField, Range(1.1f, 8f)] float noiseBeta = 2f;
-        [Tooltip("Most octaves evaluated; fewer are used where their wavelength is below two vertex spacings.")]
+        [Tooltip("Most noise layers added. Layers finer than the mesh can show are left out.")]
         [SerializeField, Range(0, 16)] int noiseOctaves = 6;
-        [Tooltip("0 = vertices across the range follow the tessellation; > 0 overrides it for the octave count.")]
+        [Tooltip("0: the mesh detail decides how many noise layers show. Above 0: assume this many vertices across the drawn area instead.")]
         [SerializeField, Min(0f)] float noiseVerticesAcross = 0f;
 
-        [Header("Height colour (material keyword GT_HEIGHT_COLOR)")]
-        [Tooltip("gamma (eq. 14): height over which the colour goes from low to high.")]
+        [Tooltip("Height over which the colour blends from the low colour to the high colour, in terrain units.")]
         [SerializeField, Range(0.001f, 4f)] float colorGamma = 0.5f;
-        [Tooltip("Amplitude of the colour noise l (eq. 14).")]
+        [Tooltip("How strongly noise breaks up the boundary between the low and high colours.")]
         [SerializeField, Range(0f, 1f)] float colorNoiseAmplitude = 0.1f;
-        [Tooltip("Frequency of the colour noise across the terrain.")]
+        [Tooltip("Noise cells across the whole terrain for the colour noise.")]
         [SerializeField, Range(0.5f, 4096f)] float colorNoiseFrequency = 64f;
-        [Tooltip("C (eq. 15): colour at low heights.")]
+        [Tooltip("Colour of the low ground.")]
         [SerializeField] Color colorLow = new Color(0.22f, 0.33f, 0.14f);
-        [Tooltip("B (eq. 15): colour at high heights.")]
+        [Tooltip("Colour of the high ground.")]
         [SerializeField] Color colorHigh = new Color(0.9f, 0.9f, 0.92f);
 
-        [Header("Lighting")]
-        [Tooltip("Whether the terrain casts shadows (the ShadowCaster pass tessellates the same surface).")]
+        [Tooltip("Whether the terrain casts shadows.")]
         [SerializeField] ShadowCastingMode shadowCasting = ShadowCastingMode.On;
         [Tooltip("Whether the terrain receives shadows.")]
         [SerializeField] bool receiveShadows = true;
 
         /// <summary>Draws the patches' control points in the Scene view (editor only).</summary>
-        [Header("Debug (Scene view: Z control points, X wireframe, C/V factor -/+)")]
-        [Tooltip("Draw the control points in the Scene view (key Z with the Scene view focused).")]
+        [Tooltip("Draw the control points in the Scene view, to move them with handles (shortcut G in the Scene view by default).")]
         public bool debugShowControlPoints;
         /// <summary>Draws the patch boundaries in the Scene view (editor only).</summary>
-        [Tooltip("Draw the patch boundaries in the Scene view (key X).")]
+        [Tooltip("Draw the patch boundaries in the Scene view (shortcut Shift+G in the Scene view by default).")]
         public bool debugShowPatchWireframe;
 
         // ---- state ----------------------------------------------------------------------------------

@@ -31,10 +31,10 @@ namespace GregoryTerrain
         [Tooltip("Number of patch rows m (along y, the patch index j).")]
         [SerializeField, Min(1)] int rows = 1;
 
-        [Tooltip("Vertical grid lines x[0..n], strictly increasing from 0 to 1: patch (i, j) spans x[i]..x[i+1].")]
+        [Tooltip("Positions of the vertical grid lines, strictly increasing from 0 to 1. Each patch column lies between two neighbouring lines.")]
         [SerializeField] double[] xLines = { 0.0, 1.0 };
 
-        [Tooltip("Horizontal grid lines y[0..m], strictly increasing from 0 to 1: patch (i, j) spans y[j]..y[j+1].")]
+        [Tooltip("Positions of the horizontal grid lines, strictly increasing from 0 to 1. Each patch row lies between two neighbouring lines.")]
         [SerializeField] double[] yLines = { 0.0, 1.0 };
 
         [Tooltip("The control point blocks (sub-assets of this grid), 64 patches each. Edit with the Patch Grid window or the Scene-view handles.")]

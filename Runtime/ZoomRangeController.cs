@@ -25,7 +25,7 @@ namespace GregoryTerrain
         [Tooltip("Range centre in the terrain's unit square.")]
         [SerializeField] Vector2 center = new Vector2(0.5f, 0.5f);
 
-        [Tooltip("log2 of the zoom: range width = 2^-zoomLevel. 0 shows the whole terrain; about 20 reaches widths of 1e-6.")]
+        [Tooltip("Zoom steps: each step halves the drawn width. 0 shows the whole terrain; about 20 reaches a millionth of it.")]
         [SerializeField, Range(0f, 23f)] float zoomLevel;
 
         [Tooltip("Zoom levels per mouse-wheel notch.")]
@@ -37,7 +37,7 @@ namespace GregoryTerrain
         [Tooltip("Camera pitch in degrees (90 = looking straight down).")]
         [SerializeField, Range(10f, 90f)] float cameraPitch = 50f;
 
-        [Tooltip("Also move the View Camera over the range in Edit Mode (each move can be undone). Off: in Edit Mode the camera stays where you place it; in Play Mode it always follows.")]
+        [Tooltip("Also move the View Camera over the range in Edit Mode (undoable). Off: it stays where you place it until Play Mode.")]
         [SerializeField] bool placeCameraInEditMode;
 
         // Centre kept in double: a float centre cannot address a 1e-6 range precisely.

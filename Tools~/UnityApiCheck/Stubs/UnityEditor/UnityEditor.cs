@@ -34,6 +34,32 @@ namespace UnityEditor
         public Object target { get => null; set { } }                                       // SR:Editor-target
         public virtual void OnInspectorGUI() { }                                             // SR:Editor.OnInspectorGUI
         public bool DrawDefaultInspector() => false;                                         // SR:Editor.DrawDefaultInspector
+        public SerializedObject serializedObject => null;                                    // SR:Editor-serializedObject (get only)
+    }
+
+    // No AttributeUsage in 2022.3 (so: any target, not AllowMultiple, inherited).
+    public sealed class CanEditMultipleObjects : Attribute { }                                // SR:CanEditMultipleObjects
+
+    public class SerializedObject : IDisposable                                              // SR:SerializedObject
+    {
+        public SerializedProperty FindProperty(string propertyPath) => null;                 // SR:SerializedObject.FindProperty
+        public bool UpdateIfRequiredOrScript() => false;                                     // SR:SerializedObject.UpdateIfRequiredOrScript
+        public bool ApplyModifiedProperties() => false;                                      // SR:SerializedObject.ApplyModifiedProperties
+        public bool isEditingMultipleObjects => false;                                       // SR:SerializedObject-isEditingMultipleObjects (get only)
+        public void Dispose() { }                                                            // SR:SerializedObject.Dispose
+    }
+
+    public class SerializedProperty : IDisposable                                            // SR:SerializedProperty
+    {
+        public bool hasMultipleDifferentValues => false;                                     // SR:SerializedProperty-hasMultipleDifferentValues (get only)
+        public int intValue { get => 0; set { } }                                            // SR:SerializedProperty-intValue
+        public void Dispose() { }                                                            // SR:SerializedProperty.Dispose
+    }
+
+    public sealed class EditorPrefs                                                          // SR:EditorPrefs
+    {
+        public static bool GetBool(string key, bool defaultValue) => defaultValue;           // SR:EditorPrefs.GetBool
+        public static void SetBool(string key, bool value) { }                               // SR:EditorPrefs.SetBool
     }
 
     public class EditorWindow : UnityEngine.ScriptableObject                                 // SR:EditorWindow
@@ -54,6 +80,7 @@ namespace UnityEditor
         public static void BeginChangeCheck() { }                                            // SR:EditorGUI.BeginChangeCheck
         public static bool EndChangeCheck() => false;                                        // SR:EditorGUI.EndChangeCheck
         public static void DrawPreviewTexture(Rect position, Texture image) { }              // SR:EditorGUI.DrawPreviewTexture
+        public static int indentLevel { get => 0; set { } }                                  // SR:EditorGUI-indentLevel
     }
 
     public sealed class EditorGUILayout                                                      // SR:EditorGUILayout
@@ -68,6 +95,9 @@ namespace UnityEditor
         public static Object ObjectField(GUIContent label, Object obj, Type objType, bool allowSceneObjects, params GUILayoutOption[] options) => obj; // SR:EditorGUILayout.ObjectField
         public static Enum EnumPopup(GUIContent label, Enum selected, params GUILayoutOption[] options) => selected; // SR:EditorGUILayout.EnumPopup
         public static bool Toggle(GUIContent label, bool value, params GUILayoutOption[] options) => value;        // SR:EditorGUILayout.Toggle
+        public static bool PropertyField(SerializedProperty property, params GUILayoutOption[] options) => false;  // SR:EditorGUILayout.PropertyField
+        public static bool BeginFoldoutHeaderGroup(bool foldout, string content, GUIStyle style = null, Action<Rect> menuAction = null, GUIStyle menuIcon = null) => foldout; // SR:EditorGUILayout.BeginFoldoutHeaderGroup
+        public static void EndFoldoutHeaderGroup() { }                                                              // SR:EditorGUILayout.EndFoldoutHeaderGroup
     }
 
     public class EditorUtility                                                               // SR:EditorUtility (plain class in 2022.3)

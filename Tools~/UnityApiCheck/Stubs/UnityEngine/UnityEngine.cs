@@ -371,6 +371,7 @@ namespace UnityEngine
         public GUIContent(string text, string tooltip) { }                            // SR:GUIContent-ctor
     }
     public sealed class GUILayoutOption { }                                           // SR:GUILayoutOption
+    public sealed class GUIStyle { }                                                  // SR:GUIStyle (passed through only)
     public class GUILayout                                                            // SR:GUILayout
     {
         public static bool Button(GUIContent content, params GUILayoutOption[] options) => false; // SR:GUILayout.Button
