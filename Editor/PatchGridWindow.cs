@@ -90,7 +90,7 @@ namespace GregoryTerrain.EditorTools
 
             EditorGUILayout.Space();
             using (new EditorGUI.DisabledScope(!asset.IsValid))
-                if (GUILayout.Button(new GUIContent("Enforce G1", "Set the interior control points so neighbouring patches join with a continuous tangent plane (eq. 7-9)."))) EnforceG1();
+                if (GUILayout.Button(new GUIContent("Enforce G1", "Set the interior control points so neighbouring patches join with a continuous tangent plane."))) EnforceG1();
 
             if (_message != null) EditorGUILayout.HelpBox(_message, _messageType);
             if (_errorTexture != null)

@@ -37,8 +37,8 @@ Shader "GregoryTerrain/Terrain"
     Properties
     {
         [Header(Effects)]
-        [Toggle(GT_NOISE)] _GtNoise ("Noise detail (eq. 12-13)", Float) = 1
-        [Toggle(GT_HEIGHT_COLOR)] _GtHeightColor ("Height colour (eq. 14-15)", Float) = 1
+        [Toggle(GT_NOISE)] _GtNoise ("Noise detail", Float) = 1
+        [Toggle(GT_HEIGHT_COLOR)] _GtHeightColor ("Height colour", Float) = 1
 
         // One popup for the debug views, as they replace each other: KeywordEnum enables
         // GT_DEBUG_<ENTRY> (the property name, '_', the entry upper-cased), which matches the one
@@ -52,8 +52,8 @@ Shader "GregoryTerrain/Terrain"
         _Noise ("Noise: amplitude, frequency, alpha (> 1), beta (> 1)", Vector) = (0.02, 16, 2, 2)
         _NoiseOctaves ("Noise octaves: N (0-16), vertices-across override (0 = auto), unused, unused", Vector) = (6, 0, 0, 0)
         _HeightColor ("Height colour: gamma (> 0), colour-noise amplitude, colour-noise frequency, unused", Vector) = (0.5, 0.1, 64, 0)
-        _ColorLow ("Low colour C (eq. 15)", Color) = (0.22, 0.33, 0.14, 1)
-        _ColorHigh ("High colour B (eq. 15)", Color) = (0.9, 0.9, 0.92, 1)
+        _ColorLow ("Low colour", Color) = (0.22, 0.33, 0.14, 1)
+        _ColorHigh ("High colour", Color) = (0.9, 0.9, 0.92, 1)
 
         // Written by the renderer only.
         [HideInInspector] _Range ("Range (c, d, g, h) relative to the origin", Vector) = (0, 0, 1, 1)
