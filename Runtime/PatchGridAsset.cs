@@ -178,7 +178,10 @@ namespace GregoryTerrain
         public Vector3 GetControlPoint(int patch, int slot)
         {
             CheckIndex(patch, slot);
-            Double3 q = PatchGridBlocks.Get(Data(), patch, slot);
+            // One block, not Data(): that allocates the list of all blocks, and the Scene view's handles
+            // and wireframe read every control point of the grid on each repaint.
+            int b = PatchGridBlocks.BlockOf(patch);
+            Double3 q = PatchGridBlocks.Get(HasLegacyLayout ? Data()[b] : blocks[b].Points, patch, slot);
             return new Vector3((float)q.x, (float)q.y, (float)q.z);
         }
 
