@@ -194,6 +194,7 @@ namespace GregoryTerrain
         static bool s_FallbackLogged;
         Matrix4x4 _objectToWorld = Matrix4x4.identity;   // what PushMatrices sent (deep-zoom offset included)
         Matrix4x4 _worldToObject = Matrix4x4.identity;   // its inverse, as sent (the cache's world normals)
+        Matrix4x4 _pushedLocalToWorld;                   // the Transform's matrix when PushMatrices ran (offset not added)
         int _gridStamp;                                  // bumped on every upload: the cache sees new grid buffers
         readonly System.Collections.Generic.List<int> _setLastPrepare = new System.Collections.Generic.List<int>(16);
         SnowSimulator _snow;                             // the enabled simulator attached to this renderer
@@ -414,7 +415,7 @@ namespace GregoryTerrain
             {
                 PushRange();
                 if (_settingsError == null) UpdateTileLattice(fallback);
-                if (UpdateOutputOffset() || transform.hasChanged) PushMatrices();
+                if (UpdateOutputOffset() || TransformMoved()) PushMatrices();
             }
             if (_settingsError != null) return false;   // logged once; drawn again after the next valid change
             if (!UpdateVertexCache(fallback)) return false;
@@ -554,6 +555,7 @@ namespace GregoryTerrain
         void PushMatrices()
         {
             Matrix4x4 m = transform.localToWorldMatrix, w = transform.worldToLocalMatrix;
+            _pushedLocalToWorld = m;
             double tx = _outputOffset.x, ty = _outputOffset.z, tz = _outputOffset.y;   // terrain -> object (x, z, y)
             if (tx != 0.0 || ty != 0.0 || tz != 0.0)
             {
@@ -570,7 +572,19 @@ namespace GregoryTerrain
             SetMatrix(Ids.WorldToObject, w);
             _objectToWorld = m;   // the vertex cache's LOD matrix uses the same object matrix
             _worldToObject = w;
-            transform.hasChanged = false;
+        }
+
+        /// <summary>
+        /// Whether the Transform moved since <see cref="PushMatrices"/>. Compared, not read from
+        /// Transform.hasChanged: that flag is shared with every other script on the object, and one
+        /// that clears it would hide a move (the terrain would draw where it was).
+        /// </summary>
+        bool TransformMoved()
+        {
+            Matrix4x4 a = transform.localToWorldMatrix, b = _pushedLocalToWorld;
+            return a.m00 != b.m00 || a.m01 != b.m01 || a.m02 != b.m02 || a.m03 != b.m03
+                || a.m10 != b.m10 || a.m11 != b.m11 || a.m12 != b.m12 || a.m13 != b.m13
+                || a.m20 != b.m20 || a.m21 != b.m21 || a.m22 != b.m22 || a.m23 != b.m23;
         }
 
         /// <summary>
