@@ -230,8 +230,9 @@ namespace GregoryTerrain
             CheckIndex(patch, slot);
             if (HasLegacyLayout)
                 throw new InvalidOperationException($"Patch grid '{name}' still has the older single-array layout: move its data to blocks first (MoveLegacyDataToBlocks)");
-            string error = CheckSerializedData();
-            if (error != null) throw new InvalidOperationException($"Patch grid '{name}' is invalid: {error}");
+            // The verdict kept since the last change, not a second whole-grid check: a handle drag calls
+            // this every mouse move, and MarkChanged below checks the grid once more anyway.
+            if (!IsValid) throw new InvalidOperationException($"Patch grid '{name}' is invalid: {ValidationError}");
             PatchGridBlocks.MoveControlPoint(Data(), columns, rows, patch, slot,
                 new Double3(terrainPosition.x, terrainPosition.y, terrainPosition.z));
             MarkChanged();
