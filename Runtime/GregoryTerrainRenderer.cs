@@ -579,13 +579,7 @@ namespace GregoryTerrain
         /// Transform.hasChanged: that flag is shared with every other script on the object, and one
         /// that clears it would hide a move (the terrain would draw where it was).
         /// </summary>
-        bool TransformMoved()
-        {
-            Matrix4x4 a = transform.localToWorldMatrix, b = _pushedLocalToWorld;
-            return a.m00 != b.m00 || a.m01 != b.m01 || a.m02 != b.m02 || a.m03 != b.m03
-                || a.m10 != b.m10 || a.m11 != b.m11 || a.m12 != b.m12 || a.m13 != b.m13
-                || a.m20 != b.m20 || a.m21 != b.m21 || a.m22 != b.m22 || a.m23 != b.m23;
-        }
+        bool TransformMoved() => !VertexCachePass.SameMatrix(transform.localToWorldMatrix, _pushedLocalToWorld);
 
         /// <summary>
         /// World bounds of the drawn range: object x in [c, g], z in [d, h] (the shaders output
