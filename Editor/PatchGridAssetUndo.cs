@@ -18,12 +18,13 @@ namespace GregoryTerrain.EditorTools
     {
         // Undo and redo restore grid data behind the assets' backs: stamp every loaded grid with a new
         // version so renderers upload what the undo restored (PatchGridBlock.OnValidate does it too,
-        // where Unity calls it after an undo).
+        // where Unity calls it after an undo). On the next read: any undo lands here, and a grid nothing
+        // reads is not checked whole for it.
         static PatchGridAssetUndo() => Undo.undoRedoPerformed += MarkLoadedGridsChanged;
 
         static void MarkLoadedGridsChanged()
         {
-            foreach (PatchGridAsset grid in Resources.FindObjectsOfTypeAll<PatchGridAsset>()) grid.MarkChanged();
+            foreach (PatchGridAsset grid in Resources.FindObjectsOfTypeAll<PatchGridAsset>()) grid.MarkChangedOnNextRead();
         }
 
         /// <summary>

@@ -57,6 +57,7 @@ namespace GregoryTerrain
         Vector3[] _vertices;
         int[] _triangles;
         int _builtSamples;
+        int _pendingSamples;             // N of the rebuild under way (samples may change meanwhile)
         Vector3 _pendingPosition;
         Quaternion _pendingRotation;
 
@@ -165,6 +166,7 @@ namespace GregoryTerrain
             float[] heights = _heights;
             Vector3[] vertices = _vertices;
             _pending = patch;
+            _pendingSamples = n;
             _builtFrom = query;
             _task = Task.Run(() =>
             {
@@ -191,7 +193,7 @@ namespace GregoryTerrain
                 return;
             }
             Mesh mesh = _meshes[_spare];
-            int n = samples;
+            int n = _pendingSamples;   // what _vertices and _triangles were sized for, not a newer setting
             if (mesh != null && _meshSamples[_spare] != n) { Destroy(mesh); mesh = null; }   // another vertex count
             bool fresh = mesh == null;
             if (fresh)
@@ -219,7 +221,7 @@ namespace GregoryTerrain
             _spare = 1 - _spare;
             _current = _pending;
             _hasCurrent = true;
-            _builtSamples = samples;
+            _builtSamples = _pendingSamples;   // a newer setting makes the next Update rebuild
             _stage = Stage.Idle;
             _task = null;
             RebuildCount++;

@@ -6,17 +6,23 @@ namespace GregoryTerrain
     // The renderer's GPU buffers: the grid uploaded once per asset version, the fallback's index grid.
     public sealed partial class GregoryTerrainRenderer
     {
+        // The grid version that failed to convert or pack: not tried again (nor logged) every camera
+        // of every frame. ReleaseGpuResources clears _uploadedGrid, so it cannot hold this.
+        PatchGridAsset _failedGrid;
+        int _failedVersion;
+
         /// <summary>Uploads the grid when it is new or changed; false when it cannot be drawn.</summary>
         bool EnsureUploaded()
         {
             if (_uploadedGrid == grid && _uploadedVersion == grid.Version && _controlPoints != null) return true;
+            if (_failedGrid == grid && _failedVersion == grid.Version) return false;   // logged once; retried on the next version
             ReleaseGpuResources();
             PatchGrid g;
             try { g = grid.ToPatchGrid(); }
             catch (ArgumentException e)
             {
                 Debug.LogError($"{name}: patch grid '{grid.name}' cannot be drawn: {e.Message}", this);
-                _uploadedGrid = grid; _uploadedVersion = grid.Version;   // do not retry every frame
+                _failedGrid = grid; _failedVersion = grid.Version;   // do not retry every frame
                 return false;
             }
             float[] cps, regions, lines;
@@ -30,7 +36,7 @@ namespace GregoryTerrain
             catch (ArgumentException e)
             {
                 Debug.LogError($"{name}: patch grid '{grid.name}' cannot be drawn: {e.Message}", this);
-                _uploadedGrid = grid; _uploadedVersion = grid.Version;   // do not retry every frame
+                _failedGrid = grid; _failedVersion = grid.Version;   // do not retry every frame
                 return false;
             }
 
@@ -50,6 +56,7 @@ namespace GregoryTerrain
             grid.GetHeightRange(out _gridMinZ, out _gridMaxZ);
 
             _uploadedGrid = grid;
+            _failedGrid = null;
             _uploadedPatchGrid = g;
             _uploadedVersion = grid.Version;
             _gridStamp++;

@@ -29,7 +29,7 @@ namespace GregoryTerrain
                 NoiseSettings? noise = material != null && material.IsKeywordEnabled("GT_NOISE")
                     ? new NoiseSettings(noiseAmplitude, noiseFrequency, noiseAlpha, noiseBeta, noiseOctaves)
                     : (NoiseSettings?)null;
-                if (_query != null && _queryAsset == grid && _queryVersion == grid.Version && Nullable.Equals(_queryNoise, noise))
+                if (_queryAsset == grid && _queryVersion == grid.Version && Nullable.Equals(_queryNoise, noise))
                     return _query;
                 try { _query = new TerrainSurfaceQuery(grid.ToPatchGrid(), noise); }
                 catch (ArgumentException e)
@@ -37,6 +37,8 @@ namespace GregoryTerrain
                     Debug.LogError($"{name}: cannot answer height queries: {e.Message}", this);
                     _query = null;
                 }
+                // Kept on failure too (null query): the collider asks every frame, and a grid or noise
+                // that cannot be queried is logged once per version, not rebuilt and logged each time.
                 _queryAsset = grid;
                 _queryVersion = grid.Version;
                 _queryNoise = noise;

@@ -186,6 +186,7 @@ namespace GregoryTerrain
         static bool s_FallbackLogged;
         Matrix4x4 _objectToWorld = Matrix4x4.identity;   // what PushMatrices sent (deep-zoom offset included)
         Matrix4x4 _worldToObject = Matrix4x4.identity;   // its inverse, as sent (the cache's world normals)
+        Matrix4x4 _pushedLocalToWorld;                   // the Transform's matrix when PushMatrices ran (offset not added)
         int _gridStamp;                                  // bumped on every upload: the cache sees new grid buffers
         readonly System.Collections.Generic.List<int> _setLastPrepare = new System.Collections.Generic.List<int>(16);
         SnowSimulator _snow;                             // the enabled simulator attached to this renderer
@@ -406,7 +407,7 @@ namespace GregoryTerrain
             {
                 PushRange();
                 if (_settingsError == null) UpdateTileLattice(fallback);
-                if (UpdateOutputOffset() || transform.hasChanged) PushMatrices();
+                if (UpdateOutputOffset() || TransformMoved()) PushMatrices();
             }
             if (_settingsError != null) return false;   // logged once; drawn again after the next valid change
             if (!UpdateVertexCache(fallback)) return false;
@@ -546,6 +547,7 @@ namespace GregoryTerrain
         void PushMatrices()
         {
             Matrix4x4 m = transform.localToWorldMatrix, w = transform.worldToLocalMatrix;
+            _pushedLocalToWorld = m;
             double tx = _outputOffset.x, ty = _outputOffset.z, tz = _outputOffset.y;   // terrain -> object (x, z, y)
             if (tx != 0.0 || ty != 0.0 || tz != 0.0)
             {
@@ -562,8 +564,14 @@ namespace GregoryTerrain
             SetMatrix(Ids.WorldToObject, w);
             _objectToWorld = m;   // the vertex cache's LOD matrix uses the same object matrix
             _worldToObject = w;
-            transform.hasChanged = false;
         }
+
+        /// <summary>
+        /// Whether the Transform moved since <see cref="PushMatrices"/>. Compared, not read from
+        /// Transform.hasChanged: that flag is shared with every other script on the object, and one
+        /// that clears it would hide a move (the terrain would draw where it was).
+        /// </summary>
+        bool TransformMoved() => !VertexCachePass.SameMatrix(transform.localToWorldMatrix, _pushedLocalToWorld);
 
         /// <summary>
         /// World bounds of the drawn range: object x in [c, g], z in [d, h] (the shaders output

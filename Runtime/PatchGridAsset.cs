@@ -50,9 +50,10 @@ namespace GregoryTerrain
         [NonSerialized] int _version;
         [NonSerialized] string _error;
         [NonSerialized] double[][] _legacyBlocks;   // controlPoints cut into blocks, read-only view
+        [NonSerialized] bool _changedSinceCheck;    // MarkChangedOnNextRead was called: check on the next read
 
         /// <summary>Changes whenever the grid data may have changed (edit, undo, import, load).</summary>
-        public int Version => _version;
+        public int Version { get { CheckIfChanged(); return _version; } }
 
         /// <summary>Patch columns n.</summary>
         public int Columns => columns;
@@ -64,10 +65,10 @@ namespace GregoryTerrain
         public int PatchCount => columns * rows;
 
         /// <summary>Why the serialized data is not a valid grid (names the field and value), or null.</summary>
-        public string ValidationError => _error;
+        public string ValidationError { get { CheckIfChanged(); return _error; } }
 
         /// <summary>True when the serialized data is a valid grid.</summary>
-        public bool IsValid => _error == null;
+        public bool IsValid { get { CheckIfChanged(); return _error == null; } }
 
         /// <summary>True while the control points are still in the older single array (not yet in blocks).</summary>
         internal bool HasLegacyLayout => (blocks == null || blocks.Length == 0) && controlPoints != null && controlPoints.Length > 0;
@@ -77,7 +78,7 @@ namespace GregoryTerrain
 
         void OnEnable() => MarkChanged();
 
-        void OnValidate() => MarkChanged();
+        void OnValidate() => MarkChangedOnNextRead();
 
         /// <summary>
         /// Re-validates and stamps a new version. Editor code calls it after changing the serialized
@@ -85,11 +86,29 @@ namespace GregoryTerrain
         /// </summary>
         public void MarkChanged()
         {
+            _changedSinceCheck = false;
             _version = s_NextVersion++;
             _legacyBlocks = null;
             _error = CheckSerializedData();
             if (_error != null)
                 Debug.LogError($"Patch grid '{name}' is invalid: {_error}", this);
+        }
+
+        /// <summary>
+        /// Like <see cref="MarkChanged"/>, but the check (the whole grid: a quarter of a second on a
+        /// 256 x 256 grid) runs once, at the next read of <see cref="Version"/>, <see cref="IsValid"/>
+        /// or <see cref="ValidationError"/>. For Unity's OnValidate calls, which come once per block
+        /// when the grid loads (1,024 of them on a 256 x 256 grid) and once per restored block on undo.
+        /// </summary>
+        internal void MarkChangedOnNextRead()
+        {
+            _changedSinceCheck = true;
+            _legacyBlocks = null;   // Data() may be read before the check: never from the old array
+        }
+
+        void CheckIfChanged()
+        {
+            if (_changedSinceCheck) MarkChanged();
         }
 
         /// <summary>The grid as Core's <see cref="PatchGrid"/>. Throws ArgumentException when invalid.</summary>
@@ -178,7 +197,10 @@ namespace GregoryTerrain
         public Vector3 GetControlPoint(int patch, int slot)
         {
             CheckIndex(patch, slot);
-            Double3 q = PatchGridBlocks.Get(Data(), patch, slot);
+            // One block, not Data(): that allocates the list of all blocks, and the Scene view's handles
+            // and wireframe read every control point of the grid on each repaint.
+            int b = PatchGridBlocks.BlockOf(patch);
+            Double3 q = PatchGridBlocks.Get(HasLegacyLayout ? Data()[b] : blocks[b].Points, patch, slot);
             return new Vector3((float)q.x, (float)q.y, (float)q.z);
         }
 
@@ -208,8 +230,9 @@ namespace GregoryTerrain
             CheckIndex(patch, slot);
             if (HasLegacyLayout)
                 throw new InvalidOperationException($"Patch grid '{name}' still has the older single-array layout: move its data to blocks first (MoveLegacyDataToBlocks)");
-            string error = CheckSerializedData();
-            if (error != null) throw new InvalidOperationException($"Patch grid '{name}' is invalid: {error}");
+            // The verdict kept since the last change, not a second whole-grid check: a handle drag calls
+            // this every mouse move, and MarkChanged below checks the grid once more anyway.
+            if (!IsValid) throw new InvalidOperationException($"Patch grid '{name}' is invalid: {ValidationError}");
             PatchGridBlocks.MoveControlPoint(Data(), columns, rows, patch, slot,
                 new Double3(terrainPosition.x, terrainPosition.y, terrainPosition.z));
             MarkChanged();

@@ -32,10 +32,11 @@ namespace GregoryTerrain
         }
 
         // Undo and redo restore a block's doubles: the grid must re-validate and stamp a new version
-        // so renderers upload it again.
+        // so renderers upload it again. Unity calls this for every block as the grid loads too, so the
+        // grid checks itself once, on its next read, not once per block.
         void OnValidate()
         {
-            if (owner != null) owner.MarkChanged();
+            if (owner != null) owner.MarkChangedOnNextRead();
         }
     }
 }

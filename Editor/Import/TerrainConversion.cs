@@ -41,8 +41,11 @@ namespace GregoryTerrain.EditorTools
                 HeightmapFit fit = HeightmapFitter.FitToTarget(z, res, res, RmsTargetOfHeight * size.y / size.x, FitErrorKind.Rms, MaxColumns, progress, cancel.Token);
 
                 var grid = ScriptableObject.CreateInstance<PatchGridAsset>();
-                grid.SetGrid(fit.Grid);
+                grid.SetGrid(fit.Grid, out PatchGridBlock[] blocks, out _);
                 AssetDatabase.CreateAsset(grid, AssetDatabase.GenerateUniqueAssetPath($"Assets/{terrain.name} Patch Grid.asset"));
+                // The control points live in block objects: sub-assets of the grid's file, or the saved
+                // grid refers to objects that are gone after a reload ("blocks[0] is missing").
+                foreach (PatchGridBlock b in blocks) AssetDatabase.AddObjectToAsset(b, grid);
                 var go = new GameObject($"{terrain.name} (Gregory)");
                 go.transform.position = terrain.transform.position;
                 go.transform.localScale = new Vector3(size.x, size.x, size.z);

@@ -30,6 +30,21 @@ namespace GregoryTerrain.Tests
         static long Bits(double v) => BitConverter.DoubleToInt64Bits(v);
 
         [Test]
+        public void ReadingOneBlockGivesEveryPointOfTheGrid()
+        {
+            PatchGrid g = FittedGrid(9, 8);   // 72 patches: the second block is partial
+            double[][] blocks = PatchGridBlocks.FromGrid(g);
+            for (int p = 0; p < g.PatchCount; p++)
+                for (int s = 0; s < GregoryPatch.SlotCount; s++)
+                {
+                    Double3 q = PatchGridBlocks.Get(blocks[PatchGridBlocks.BlockOf(p)], p, s);
+                    Double3 want = g.Patches[p][s];
+                    Assert.That(new[] { Bits(q.x), Bits(q.y), Bits(q.z) }, Is.EqualTo(new[] { Bits(want.x), Bits(want.y), Bits(want.z) }),
+                        $"patch {p} slot {s}");
+                }
+        }
+
+        [Test]
         public void OldSingleArrayAndGridGiveTheSameBlocksBitForBit()
         {
             PatchGrid g = FittedGrid(9, 8);   // 72 patches: one full block and one of 8

@@ -61,11 +61,20 @@ namespace GregoryTerrain
         }
 
         /// <summary>Control point <paramref name="slot"/> of <paramref name="patch"/>.</summary>
-        public static Double3 Get(double[][] blocks, int patch, int slot)
+        public static Double3 Get(double[][] blocks, int patch, int slot) => Get(blocks[BlockOf(patch)], patch, slot);
+
+        /// <summary>The block holding <paramref name="patch"/>.</summary>
+        public static int BlockOf(int patch) => patch / PatchesPerBlock;
+
+        /// <summary>
+        /// Control point <paramref name="slot"/> of <paramref name="patch"/>, read from the one block that
+        /// holds it (<c>blocks[BlockOf(patch)]</c>): for callers that would otherwise build the block
+        /// list for every point (the Scene view reads every point of the grid each repaint).
+        /// </summary>
+        public static Double3 Get(double[] block, int patch, int slot)
         {
-            double[] a = blocks[patch / PatchesPerBlock];
             int k = Offset(patch, slot);
-            return new Double3(a[k], a[k + 1], a[k + 2]);
+            return new Double3(block[k], block[k + 1], block[k + 2]);
         }
 
         /// <summary>The patches of a grid as Core patches (for <see cref="PatchGrid"/>).</summary>
