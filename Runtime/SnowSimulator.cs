@@ -66,6 +66,8 @@ namespace GregoryTerrain
         [Tooltip("Longest simulated step (s): a long frame is not one huge step.")]
         [SerializeField, Min(0.001f)] float maxStep = 0.1f;
 
+        readonly float[] _params = new float[SnowSettings.ParamsFloat4Count * 4];   // packed each step, no allocation
+
         GraphicsBuffer _field, _exposure, _depth;
         bool _ownsField;
         int _exposureKernel = -1, _accumulateKernel = -1;
@@ -211,8 +213,8 @@ namespace GregoryTerrain
             if (_depth == null) throw new InvalidOperationException("SnowSimulator is not enabled");
             GraphicsBuffer field = CurrentField();
             if (field == null) return;  // no terrain field yet: nothing to snow on
-            float[] p = settings.PackParams(dt);
-            SetParams(p);
+            settings.PackParams(dt, _params);
+            SetParams(_params);
             int groups = settings.resolution / 8;  // R is a power of two >= 64
             if (NeedsExposureUpdate)
             {

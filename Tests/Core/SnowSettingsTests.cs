@@ -82,5 +82,21 @@ namespace GregoryTerrain.Tests
             Assert.That(Assert.Throws<ArgumentException>(() => s.Validate()).Message, Does.Contain("snow.scale"));
             Assert.Throws<ArgumentException>(() => SnowSettings.Default.PackParams(-1f));
         }
-    }
+
+        [Test]
+        public void PackingIntoAnArrayGivesTheSameParamsAndAllocatesNothing()
+        {
+            var s = SnowSettings.Default;
+            s.wind = new Float2(0.3f, -1.2f);
+            float[] expected = s.PackParams(0.25f);
+            var into = new float[SnowSettings.ParamsFloat4Count * 4];
+            s.PackParams(0.25f, into);   // warm up (JIT)
+            long before = System.GC.GetAllocatedBytesForCurrentThread();
+            s.PackParams(0.25f, into);
+            long allocated = System.GC.GetAllocatedBytesForCurrentThread() - before;
+            Assert.That(into, Is.EqualTo(expected));
+            Assert.That(allocated, Is.EqualTo(0), "bytes allocated by one step's packing");
+            Assert.Throws<System.ArgumentException>(() => s.PackParams(0.25f, new float[19]));
+        }
+}
 }

@@ -125,18 +125,27 @@ namespace GregoryTerrain
         /// </summary>
         internal float[] PackParams(float dt)
         {
+            var p = new float[ParamsFloat4Count * 4];
+            PackParams(dt, p);
+            return p;
+        }
+
+        /// <summary>
+        /// <see cref="PackParams(float)"/> into <paramref name="p"/> (at least 20 floats), allocating
+        /// nothing: the simulator packs every step.
+        /// </summary>
+        internal void PackParams(float dt, float[] p)
+        {
             Validate();
             if (!GMath.isfinite(dt) || dt < 0f) throw new ArgumentException(FormattableString.Invariant($"dt ({dt:R}) must be finite and >= 0"), nameof(dt));
+            if (p == null || p.Length < ParamsFloat4Count * 4) throw new ArgumentException($"p must hold {ParamsFloat4Count * 4} floats", nameof(p));
             Float4 fall = FallLine;
             Float3 up = Up;
-            return new[]
-            {
-                resolution, 1f / resolution, rayLength, raySteps,
-                fall.x, fall.y, fall.z, fall.w,
-                up.x, up.y, up.z, scale,
-                edgeStrength, edgeWidth, exposureSoftness, 0f,
-                dt, depthCap, meltRate, 0f,
-            };
+            p[0] = resolution; p[1] = 1f / resolution; p[2] = rayLength; p[3] = raySteps;
+            p[4] = fall.x; p[5] = fall.y; p[6] = fall.z; p[7] = fall.w;
+            p[8] = up.x; p[9] = up.y; p[10] = up.z; p[11] = scale;
+            p[12] = edgeStrength; p[13] = edgeWidth; p[14] = exposureSoftness; p[15] = 0f;
+            p[16] = dt; p[17] = depthCap; p[18] = meltRate; p[19] = 0f;
         }
 
         /// <inheritdoc/>
