@@ -157,9 +157,24 @@ namespace GregoryTerrain
         /// </summary>
         internal void SetGrid(PatchGrid grid)
         {
-            SetGrid(grid, out _, out PatchGridBlock[] dropped);
+            SetGrid(grid, out PatchGridBlock[] created, out PatchGridBlock[] dropped);
+            bool inFile = false;
+#if UNITY_EDITOR
+            // A grid saved in a file keeps its blocks as sub-assets: new ones must join the file, or
+            // they are lost on the next reload, and old ones must leave it.
+            inFile = UnityEditor.AssetDatabase.Contains(this);
+            if (inFile)
+            {
+                foreach (PatchGridBlock b in created) UnityEditor.AssetDatabase.AddObjectToAsset(b, this);
+                UnityEditor.EditorUtility.SetDirty(this);
+            }
+#endif
             foreach (PatchGridBlock b in dropped)
-                if (Application.isPlaying) Destroy(b); else DestroyImmediate(b);
+            {
+                if (inFile) DestroyImmediate(b, true);   // a sub-asset: destroying it removes it from the file
+                else if (Application.isPlaying) Destroy(b);
+                else DestroyImmediate(b);
+            }
         }
 
         /// <summary>

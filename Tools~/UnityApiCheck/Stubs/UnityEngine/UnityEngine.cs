@@ -19,6 +19,7 @@ namespace UnityEngine
         public override bool Equals(object other) => ReferenceEquals(this, other);
         public override int GetHashCode() => 0;
         public static void DestroyImmediate(Object obj) { }                           // SR:Object.DestroyImmediate
+        public static void DestroyImmediate(Object obj, bool allowDestroyingAssets) { } // SR:Object.DestroyImmediate
         public static T Instantiate<T>(T original) where T : Object => original;     // SR:Object.Instantiate
     }
 
