@@ -61,10 +61,8 @@ namespace GregoryTerrain.EditorTools
             var cancel = new CancellationTokenSource();
             try
             {
-                ContinuityResult r = ContinuityMeasure.Measure(grid, ContinuityMeasure.DefaultSamplesPerEdge, f =>
-                {
-                    if (EditorUtility.DisplayCancelableProgressBar("Measure G1", "Sampling shared patch edges...", f)) cancel.Cancel();
-                }, cancel.Token);
+                var bar = new CancelableProgressBar("Measure G1", cancel, "Sampling shared patch edges...");
+                ContinuityResult r = ContinuityMeasure.Measure(grid, ContinuityMeasure.DefaultSamplesPerEdge, bar.Report, cancel.Token);
                 return $"max position gap {r.MaxPositionGap:G3}, max normal angle {r.MaxNormalAngleDegrees:G3} degrees " +
                        $"({ContinuityMeasure.DefaultSamplesPerEdge} samples per shared edge)";
             }

@@ -174,7 +174,7 @@ namespace GregoryTerrain.EditorTools
             catch (ArgumentException e) { Report($"{source}: {e.Message}", MessageType.Error); return; }
             using var cancel = new CancellationTokenSource();
             string what = useTarget ? $"Fitting to {targetKind} error {targetMetres:G3} m" : $"Fitting {columns} x {rows} patches";
-            var progress = new ProgressBar($"{what}: {source}", cancel);
+            var progress = new CancelableProgressBar($"{what}: {source}", cancel);
             try
             {
                 // Texture rows run bottom-up and RAW rows as stored: sample (c, r) lands at
@@ -226,20 +226,5 @@ namespace GregoryTerrain.EditorTools
         }
 
         void Report(string message, MessageType type) { _message = message; _messageType = type; Repaint(); }
-
-        /// <summary>
-        /// The fitter's progress reports go to the editor's progress bar; its Cancel button cancels
-        /// the token. The fitter reports from the calling (main) thread, which the bar requires.
-        /// </summary>
-        sealed class ProgressBar : IProgress<float>
-        {
-            readonly string _title;
-            readonly CancellationTokenSource _cancel;
-            public ProgressBar(string title, CancellationTokenSource cancel) { _title = title; _cancel = cancel; }
-            public void Report(float value)
-            {
-                if (EditorUtility.DisplayCancelableProgressBar(_title, $"{value:P0}", value)) _cancel.Cancel();
-            }
-        }
     }
 }

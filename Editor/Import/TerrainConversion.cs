@@ -37,7 +37,7 @@ namespace GregoryTerrain.EditorTools
             try
             {
                 double[] z = TerrainHeights.FromUnity(data.GetHeights(0, 0, res, res), size.x, size.y, size.z);
-                var progress = new Progress($"Converting '{terrain.name}' ({res} x {res} heights)", cancel);
+                var progress = new CancelableProgressBar($"Converting '{terrain.name}' ({res} x {res} heights)", cancel);
                 HeightmapFit fit = HeightmapFitter.FitToTarget(z, res, res, RmsTargetOfHeight * size.y / size.x, FitErrorKind.Rms, MaxColumns, progress, cancel.Token);
 
                 var grid = ScriptableObject.CreateInstance<PatchGridAsset>();
@@ -69,16 +69,5 @@ namespace GregoryTerrain.EditorTools
         }
 
         static Terrain Selected() => Selection.activeObject is GameObject g ? g.GetComponent<Terrain>() : null;
-
-        sealed class Progress : IProgress<float>
-        {
-            readonly string _title;
-            readonly CancellationTokenSource _cancel;
-            public Progress(string title, CancellationTokenSource cancel) { _title = title; _cancel = cancel; }
-            public void Report(float value)
-            {
-                if (EditorUtility.DisplayCancelableProgressBar(_title, $"{value:P0}", value)) _cancel.Cancel();
-            }
-        }
     }
 }
