@@ -94,6 +94,7 @@ namespace GregoryTerrain
             set
             {
                 value.Validate();
+                if (value.resolution != settings.resolution) DropFieldsOfOtherResolution(value.resolution);
                 if (_depth != null && value.resolution != settings.resolution)
                 {
                     settings = value;
@@ -144,6 +145,17 @@ namespace GregoryTerrain
                 throw new ArgumentException($"buffer must hold {cells} float4 (R = {settings.resolution})", nameof(buffer));
             _externalField = buffer; _externalVersion = version; _cpuField = null;
         }
+
+        // A field set for the old resolution would be read past its end by the new map's kernels: a
+        // new resolution forgets it and falls back to the terrain's own field until one is set again.
+        void DropFieldsOfOtherResolution(int resolution)
+        {
+            if (_externalField != null && _externalField.count != resolution * resolution) _externalField = null;
+            if (_cpuField != null && _cpuField.Resolution != resolution) { _cpuField = null; _uploadedCpuVersion = -1; }
+        }
+
+        /// <summary>Whether a buffer set by <see cref="SetFieldBuffer"/> is in use (tests).</summary>
+        internal bool UsesFieldBuffer => _externalField != null;
 
         /// <summary>
         /// Evaluates the field from the terrain again at the next step. Changes of the renderer's grid,

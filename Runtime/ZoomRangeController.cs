@@ -53,20 +53,39 @@ namespace GregoryTerrain
         /// <summary>Zooms by <paramref name="levels"/> (positive = in) keeping the point at <paramref name="pivot01"/> of the view fixed.</summary>
         public void Zoom(float levels, Vector2 pivot01)
         {
+            RecordEditModeChange("Zoom range");
             double before = Width;
             zoomLevel = Mathf.Clamp(zoomLevel + levels, 0f, 23f);
             double after = Width;
             // The pivot's terrain point stays where it is on screen.
             _cx += (pivot01.x - 0.5) * (before - after);
             _cy += (pivot01.y - 0.5) * (before - after);
+            KeepEditModeCenter();
         }
 
         /// <summary>Moves the range by <paramref name="deltaInWidths"/> range widths.</summary>
         public void Pan(Vector2 deltaInWidths)
         {
+            RecordEditModeChange("Pan range");
             double w = Width;
             _cx += deltaInWidths.x * w;
             _cy += deltaInWidths.y * w;
+            KeepEditModeCenter();
+        }
+
+        // Zoom and Pan called by a tool or script in Edit Mode change the saved settings: one Undo
+        // step each, as an inspector edit would be (in Play Mode they are runtime state).
+        void RecordEditModeChange(string name)
+        {
+#if UNITY_EDITOR
+            if (!Application.isPlaying) UnityEditor.Undo.RecordObject(this, name);
+#endif
+        }
+
+        // In Edit Mode the serialized centre is the truth (OnValidate reads it back), so a pan is kept there.
+        void KeepEditModeCenter()
+        {
+            if (!Application.isPlaying) center = new Vector2((float)_cx, (float)_cy);
         }
 
         void Update()
@@ -99,11 +118,12 @@ namespace GregoryTerrain
         public void Apply()
         {
             if (target == null) return;
+            bool playing = Application.isPlaying;
+            if (!playing) { _cx = center.x; _cy = center.y; }   // after an Undo too
             double w = Width;
             TerrainRange r = RangeFit.Around(_cx, _cy, w, w);
             _cx = 0.5 * (r.c + r.g);          // stay where the clamped range is
             _cy = 0.5 * (r.d + r.h);
-            bool playing = Application.isPlaying;
             if (playing)
             {
                 center = new Vector2((float)_cx, (float)_cy);
@@ -126,7 +146,7 @@ namespace GregoryTerrain
             Vector3 position = centreWS - rot * Vector3.forward * distance;
             float near = Mathf.Max(1e-4f, 0.01f * distance), far = Mathf.Max(near * 10f, 10f * distance);
             Transform ct = viewCamera.transform;
-            if (position == ct.position && viewCamera.nearClipPlane == near && viewCamera.farClipPlane == far) return;
+            if (position == ct.position && rot == ct.rotation && viewCamera.nearClipPlane == near && viewCamera.farClipPlane == far) return;
 #if UNITY_EDITOR
             // Edit Mode: the move is the user's scene change (asked for by Place Camera In Edit Mode):
             // one Undo step, and the scene is marked changed so it is saved.

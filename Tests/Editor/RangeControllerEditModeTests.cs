@@ -39,5 +39,44 @@ namespace GregoryTerrain.Tests
             zoom.Apply();
             Assert.That(cam.transform.position, Is.Not.EqualTo(placed));
         }
+
+        [Test]
+        public void ZoomAndPanFromCodeInEditModeAreUndoable()
+        {
+            Assume.That(Application.isPlaying, Is.False, "an Edit Mode test");
+            GregoryTerrainRenderer r = _t.Renderer("terrain");
+            var zoom = _t.Camera("view").gameObject.AddComponent<ZoomRangeController>();
+            zoom.Target = r;
+            double before = zoom.Width;
+            UnityEditor.Undo.IncrementCurrentGroup();   // each call its own step, as separate user actions are
+            zoom.Zoom(2f, new Vector2(0.5f, 0.5f));
+            Assert.That(zoom.Width, Is.EqualTo(before / 4.0).Within(1e-12));
+            UnityEditor.Undo.PerformUndo();
+            Assert.That(zoom.Width, Is.EqualTo(before).Within(1e-12), "Undo restores the zoom level");
+
+            UnityEditor.Undo.IncrementCurrentGroup();
+            zoom.Pan(new Vector2(0.25f, 0f));
+            zoom.Apply();
+            double panned = r.Range.Center.x;   // the drawn range moved
+            UnityEditor.Undo.PerformUndo();
+            zoom.Apply();
+            Assert.That(r.Range.Center.x, Is.Not.EqualTo(panned), "Undo moves the range back");
+        }
+
+        [Test]
+        public void PlacedCameraFollowsAPitchChange()
+        {
+            GregoryTerrainRenderer r = _t.Renderer("terrain");
+            Camera cam = _t.Camera("view");
+            var zoom = cam.gameObject.AddComponent<ZoomRangeController>();
+            zoom.Target = r;
+            zoom.ViewCamera = cam;
+            zoom.PlaceCameraInEditMode = true;
+            zoom.Apply();
+            Quaternion placed = cam.transform.rotation;
+            cam.transform.rotation = Quaternion.identity;   // only the rotation differs from the placement
+            zoom.Apply();
+            Assert.That(cam.transform.rotation, Is.EqualTo(placed), "the camera is placed again when only its rotation changed");
+        }
     }
 }

@@ -162,6 +162,10 @@ namespace UnityEngine
         public static Quaternion identity => default;                                 // SR:Quaternion-identity
         public static Quaternion Euler(float x, float y, float z) => default;         // SR:Quaternion.Euler
         public static Vector3 operator *(Quaternion rotation, Vector3 point) => point; // SR:Quaternion-operator_multiply
+        public static bool operator ==(Quaternion lhs, Quaternion rhs) => true;       // SR:Quaternion-operator_eq
+        public static bool operator !=(Quaternion lhs, Quaternion rhs) => false;      // SR:Quaternion-operator_ne
+        public override bool Equals(object other) => false;
+        public override int GetHashCode() => 0;
     }
 
     public struct Matrix4x4                                                           // SR:Matrix4x4
