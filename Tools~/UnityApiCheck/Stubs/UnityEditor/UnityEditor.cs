@@ -147,5 +147,10 @@ namespace UnityEditor
         public static Vector3 PositionHandle(Vector3 position, Quaternion rotation) => position;                                        // SR:Handles.PositionHandle
     }
 
-    public sealed class HandleUtility { public static float GetHandleSize(Vector3 position) => 1f; } // SR:HandleUtility.GetHandleSize
+    public sealed partial class HandleUtility                                                // SR:HandleUtility (sealed partial in 2022.3)
+    {
+        public static float GetHandleSize(Vector3 position) => 1f;                           // SR:HandleUtility.GetHandleSize
+        public delegate GameObject PickGameObjectCallback(Camera cam, int layers, Vector2 position, GameObject[] ignore, GameObject[] filter, out int materialIndex); // SR:HandleUtility.PickGameObjectCallback (nested)
+        public static event PickGameObjectCallback pickGameObjectCustomPasses;               // SR:HandleUtility-pickGameObjectCustomPasses
+    }
 }

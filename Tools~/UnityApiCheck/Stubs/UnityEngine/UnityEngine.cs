@@ -21,7 +21,10 @@ namespace UnityEngine
         public static void DestroyImmediate(Object obj) { }                           // SR:Object.DestroyImmediate
         public static void DestroyImmediate(Object obj, bool allowDestroyingAssets) { } // SR:Object.DestroyImmediate
         public static T Instantiate<T>(T original) where T : Object => original;     // SR:Object.Instantiate
+        public static T[] FindObjectsByType<T>(FindObjectsSortMode sortMode) where T : Object => null; // SR:Object.FindObjectsByType
     }
+
+    public enum FindObjectsSortMode { None = 0, InstanceID = 1 }                       // SR:FindObjectsSortMode
 
     public class Component : Object                                                   // SR:Component
     {
@@ -69,6 +72,7 @@ namespace UnityEngine
     public sealed partial class Camera : Behaviour                                    // SR:Camera (sealed partial in 2022.3)
     {
         public static Camera main => null;                                            // SR:Camera-main
+        public Ray ScreenPointToRay(Vector3 pos) => default;                          // SR:Camera.ScreenPointToRay
         public float fieldOfView { get; set; }                                        // SR:Camera-fieldOfView
         public float nearClipPlane { get; set; }                                      // SR:Camera-nearClipPlane
         public float farClipPlane { get; set; }                                       // SR:Camera-farClipPlane
