@@ -50,6 +50,7 @@ namespace GregoryTerrain
         int _spare;                      // the mesh being built (the other is in use)
         Stage _stage;
         Task _task;
+        Task _bakeInFlight;              // a cook of the spare mesh that OnDisable did not wait for
         ColliderPatch _current, _pending;
         bool _hasCurrent;
         TerrainSurfaceQuery _builtFrom;  // the query the current patch was sampled from
@@ -100,14 +101,25 @@ namespace GregoryTerrain
 
         void OnDisable()
         {
-            // A cook reads the spare mesh natively: let it finish before the mesh can be destroyed.
-            try { _task?.Wait(); } catch (AggregateException) { }
+            // Never wait here (a sampling pass is ~10 ms of worker time). A sampling task is left to
+            // finish into arrays no one reads again; a cook still reads the spare mesh natively, so it
+            // is remembered and waited for only before that mesh is written or destroyed.
+            if (_stage == Stage.Sampling) _heights = null;   // the next rebuild samples into new arrays
+            if (_stage == Stage.Baking) _bakeInFlight = _task;
             _task = null;
             _stage = Stage.Idle;
         }
 
+        // A cook abandoned by OnDisable: usually long finished when the spare mesh is next touched.
+        void FinishAbandonedBake()
+        {
+            try { _bakeInFlight?.Wait(); } catch (AggregateException) { }
+            _bakeInFlight = null;
+        }
+
         void OnDestroy()
         {
+            FinishAbandonedBake();
             for (int k = 0; k < _meshes.Length; k++)
                 if (_meshes[k] != null) { Destroy(_meshes[k]); _meshes[k] = null; }
         }
@@ -192,6 +204,7 @@ namespace GregoryTerrain
                 enabled = false;
                 return;
             }
+            FinishAbandonedBake();
             Mesh mesh = _meshes[_spare];
             int n = _pendingSamples;   // what _vertices and _triangles were sized for, not a newer setting
             if (mesh != null && _meshSamples[_spare] != n) { Destroy(mesh); mesh = null; }   // another vertex count
