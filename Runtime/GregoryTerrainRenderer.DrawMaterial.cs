@@ -29,8 +29,8 @@ namespace GregoryTerrain
         /// </summary>
         static readonly string[] AssetKeywords =
         {
-            VertexCachePass.NoiseKeyword, VertexCachePass.HeightColorKeyword,
-            "GT_DEBUG_NORMALS", "GT_DEBUG_PATCH_ID", "GT_DEBUG_TESS_FACTOR",
+            ShaderIds.NoiseKeyword, ShaderIds.HeightColorKeyword,
+            ShaderIds.DebugNormalsKeyword, ShaderIds.DebugPatchIdKeyword, ShaderIds.DebugTessFactorKeyword,
         };
 
         int AssetKeywordBits()
@@ -39,12 +39,6 @@ namespace GregoryTerrain
             for (int k = 0; k < AssetKeywords.Length; k++)
                 if (material.IsKeywordEnabled(AssetKeywords[k])) bits |= 1 << k;
             return bits;
-        }
-
-        static class KeywordIds
-        {
-            public static readonly int SnowDepth = Shader.PropertyToID("_SnowDepth");
-            public static readonly int SnowMapSize = Shader.PropertyToID("_SnowMapSize");
         }
 
         /// <summary>
@@ -61,7 +55,7 @@ namespace GregoryTerrain
         internal Material UpdateDrawMaterial(bool cache, bool snow)
         {
             if (material == null) { ReleaseDrawMaterial(); return null; }
-            if (material.IsKeywordEnabled(VertexCachePass.Keyword) == cache && material.IsKeywordEnabled(VertexCachePass.SnowKeyword) == snow)
+            if (material.IsKeywordEnabled(ShaderIds.VertexCacheKeyword) == cache && material.IsKeywordEnabled(ShaderIds.SnowKeyword) == snow)
             {
                 ReleaseDrawMaterial();
                 return material;
@@ -77,13 +71,13 @@ namespace GregoryTerrain
                 _drawMaterial.CopyPropertiesFromMaterial(material);
                 _drawMaterial.shaderKeywords = material.shaderKeywords;   // the asset's keywords, whatever the copy above took
             }
-            else if (_drawMaterial.IsKeywordEnabled(VertexCachePass.Keyword) == cache && _drawMaterial.IsKeywordEnabled(VertexCachePass.SnowKeyword) == snow)
+            else if (_drawMaterial.IsKeywordEnabled(ShaderIds.VertexCacheKeyword) == cache && _drawMaterial.IsKeywordEnabled(ShaderIds.SnowKeyword) == snow)
                 return _drawMaterial;   // steady state: nothing set
             _drawMaterialSource = material;
             _drawMaterialCrc = crc;
             _drawMaterialKeywords = keywords;
-            SetKeyword(_drawMaterial, VertexCachePass.Keyword, cache);
-            SetKeyword(_drawMaterial, VertexCachePass.SnowKeyword, snow);
+            SetKeyword(_drawMaterial, ShaderIds.VertexCacheKeyword, cache);
+            SetKeyword(_drawMaterial, ShaderIds.SnowKeyword, snow);
             return _drawMaterial;
         }
 
@@ -132,7 +126,7 @@ namespace GregoryTerrain
         {
             controlPoints = _controlPoints; regions = _regions; gridLines = _gridLines;
             parameters = _params; gridStamp = _gridStamp;
-            noise = material != null && material.IsKeywordEnabled(VertexCachePass.NoiseKeyword);
+            noise = material != null && material.IsKeywordEnabled(ShaderIds.NoiseKeyword);
             return _controlPoints != null && _settingsError == null && _uploadedPatchGrid != null;
         }
 
@@ -143,8 +137,8 @@ namespace GregoryTerrain
             GraphicsBuffer depth = _snow.DepthBuffer;
             Vector4 size = _snow.MapSize;
             if (depth == _boundSnowDepth && size.x == _boundSnowMapSize.x && size.y == _boundSnowMapSize.y && size.z == _boundSnowMapSize.z) return;
-            SetBuffer(KeywordIds.SnowDepth, depth);
-            SetVector(KeywordIds.SnowMapSize, size);
+            SetBuffer(ShaderIds.SnowDepth, depth);
+            SetVector(ShaderIds.SnowMapSize, size);
             _boundSnowDepth = depth;
             _boundSnowMapSize = size;
         }
