@@ -6,8 +6,8 @@
 # differences against the highest R. Assembles $BUILD_DIR/snow-run with `gt snow-carry` and runs
 # Tools~/rig/snow-device.sh on it; see that script for the output lines. --docs renders 480 x 360
 # frames (the manual ships them: small indexed PNGs, png_palette.py) and writes the highest R's frame
-# and the bare one to Documentation~/images/snow_ridge.png and snow_ridge_bare.png; its timings are
-# then not the manual's (640 x 480).
+# to Documentation~/images/snow_ridge.png (the bare frame stays in $BUILD_DIR/snow-run/out); its
+# timings are then not the manual's (640 x 480).
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 quick=0; docs=0; device=()
 while [ $# -gt 0 ]; do
@@ -28,6 +28,5 @@ EXPOSURE_REPEAT=$([ $quick = 1 ] && echo 2 || echo 5) OUT="$run/out" bash "$run/
 if [ $docs = 1 ]; then
   top=$(sed -n 's/^resolutions //p' "$run/snow/run.txt" | tr ' ' '\n' | sort -n | tail -1)
   python3 "$RIG_DIR/png_palette.py" "$run/out/snow_$top.png" "$PKG_DIR/Documentation~/images/snow_ridge.png"
-  python3 "$RIG_DIR/png_palette.py" "$run/out/bare.png" "$PKG_DIR/Documentation~/images/snow_ridge_bare.png"
-  say "wrote Documentation~/images/snow_ridge.png (R $top) and snow_ridge_bare.png"
+  say "wrote Documentation~/images/snow_ridge.png (R $top)"
 fi
