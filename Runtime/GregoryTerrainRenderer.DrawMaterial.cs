@@ -19,6 +19,7 @@ namespace GregoryTerrain
         Material _drawMaterialSource;  // the asset _drawMaterial was copied from
         int _drawMaterialCrc;          // the asset's Material.ComputeCRC() at the last sync
         int _drawMaterialKeywords;     // the asset's package keywords (AssetKeywordBits) at the last sync
+        int _drawMaterialCheckedFrame = -1;   // Time.frameCount when the asset was last compared (CRC, keywords)
         GraphicsBuffer _boundSnowDepth;
         Vector4 _boundSnowMapSize;
 
@@ -50,7 +51,8 @@ namespace GregoryTerrain
         /// <summary>
         /// Picks the asset or the copy for the wanted <c>GT_VERTEX_CACHE</c> and <c>GT_SNOW</c>
         /// states. The copy is made once and synced (properties, keywords, shader) only when the
-        /// asset changed, so a steady frame costs one CRC of the asset and sets nothing.
+        /// asset changed, so a steady frame costs one CRC of the asset (for its first camera; the
+        /// others reuse that frame's comparison) and sets nothing.
         /// </summary>
         internal Material UpdateDrawMaterial(bool cache, bool snow)
         {
@@ -60,6 +62,15 @@ namespace GregoryTerrain
                 ReleaseDrawMaterial();
                 return material;
             }
+            // In play mode the asset is compared (its CRC walks every property) once a frame, not once
+            // a camera: the copy synced for this frame's first camera serves the others. In edit mode
+            // every call compares, since an inspector edit must show at once and Time.frameCount
+            // does not advance between the editor's repaints as it does between player frames.
+            int frame = Application.isPlaying ? Time.frameCount : -1;
+            if (frame >= 0 && _drawMaterial != null && _drawMaterialSource == material && _drawMaterialCheckedFrame == frame
+                && _drawMaterial.IsKeywordEnabled(ShaderIds.VertexCacheKeyword) == cache && _drawMaterial.IsKeywordEnabled(ShaderIds.SnowKeyword) == snow)
+                return _drawMaterial;
+            _drawMaterialCheckedFrame = frame;
             int crc = material.ComputeCRC(), keywords = AssetKeywordBits();
             if (_drawMaterial == null)
             {
