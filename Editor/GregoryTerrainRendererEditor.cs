@@ -84,9 +84,9 @@ namespace GregoryTerrain.EditorTools
             });
             Section("Noise and colour", false, () =>
             {
-                KeywordOffNote(VertexCachePass.NoiseKeyword, "Noise detail");
+                KeywordOffNote(ShaderIds.NoiseKeyword, "Noise detail");
                 Fields("noiseAmplitude", "noiseFrequency", "noiseAlpha", "noiseBeta", "noiseOctaves", "noiseVerticesAcross");
-                KeywordOffNote(VertexCachePass.HeightColorKeyword, "Height colour");
+                KeywordOffNote(ShaderIds.HeightColorKeyword, "Height colour");
                 Fields("colorGamma", "colorNoiseAmplitude", "colorNoiseFrequency", "colorLow", "colorHigh");
             });
             Section("Lighting", false, () => Fields("shadowCasting", "receiveShadows"));

@@ -49,9 +49,9 @@ namespace GregoryTerrain
             _gridLines.SetData(lines);
 
             _props ??= new MaterialPropertyBlock();
-            SetBuffer(Ids.ControlPoints, _controlPoints);
-            SetBuffer(Ids.Regions, _regions);
-            SetBuffer(Ids.GridLines, _gridLines);
+            SetBuffer(ShaderIds.ControlPoints, _controlPoints);
+            SetBuffer(ShaderIds.Regions, _regions);
+            SetBuffer(ShaderIds.GridLines, _gridLines);
             // _GridSize is part of TerrainParams: PushSettings sets it (settings are dirty below).
             grid.GetHeightRange(out _gridMinZ, out _gridMaxZ);
 

@@ -19,6 +19,7 @@ namespace GregoryTerrain
         Material _drawMaterialSource;  // the asset _drawMaterial was copied from
         int _drawMaterialCrc;          // the asset's Material.ComputeCRC() at the last sync
         int _drawMaterialKeywords;     // the asset's package keywords (AssetKeywordBits) at the last sync
+        int _drawMaterialCheckedFrame = -1;   // Time.frameCount when the asset was last compared (CRC, keywords)
         GraphicsBuffer _boundSnowDepth;
         Vector4 _boundSnowMapSize;
 
@@ -29,8 +30,8 @@ namespace GregoryTerrain
         /// </summary>
         static readonly string[] AssetKeywords =
         {
-            VertexCachePass.NoiseKeyword, VertexCachePass.HeightColorKeyword,
-            "GT_DEBUG_NORMALS", "GT_DEBUG_PATCH_ID", "GT_DEBUG_TESS_FACTOR",
+            ShaderIds.NoiseKeyword, ShaderIds.HeightColorKeyword,
+            ShaderIds.DebugNormalsKeyword, ShaderIds.DebugPatchIdKeyword, ShaderIds.DebugTessFactorKeyword,
         };
 
         int AssetKeywordBits()
@@ -39,12 +40,6 @@ namespace GregoryTerrain
             for (int k = 0; k < AssetKeywords.Length; k++)
                 if (material.IsKeywordEnabled(AssetKeywords[k])) bits |= 1 << k;
             return bits;
-        }
-
-        static class KeywordIds
-        {
-            public static readonly int SnowDepth = Shader.PropertyToID("_SnowDepth");
-            public static readonly int SnowMapSize = Shader.PropertyToID("_SnowMapSize");
         }
 
         /// <summary>
@@ -56,16 +51,26 @@ namespace GregoryTerrain
         /// <summary>
         /// Picks the asset or the copy for the wanted <c>GT_VERTEX_CACHE</c> and <c>GT_SNOW</c>
         /// states. The copy is made once and synced (properties, keywords, shader) only when the
-        /// asset changed, so a steady frame costs one CRC of the asset and sets nothing.
+        /// asset changed, so a steady frame costs one CRC of the asset (for its first camera; the
+        /// others reuse that frame's comparison) and sets nothing.
         /// </summary>
         internal Material UpdateDrawMaterial(bool cache, bool snow)
         {
             if (material == null) { ReleaseDrawMaterial(); return null; }
-            if (material.IsKeywordEnabled(VertexCachePass.Keyword) == cache && material.IsKeywordEnabled(VertexCachePass.SnowKeyword) == snow)
+            if (material.IsKeywordEnabled(ShaderIds.VertexCacheKeyword) == cache && material.IsKeywordEnabled(ShaderIds.SnowKeyword) == snow)
             {
                 ReleaseDrawMaterial();
                 return material;
             }
+            // In play mode the asset is compared (its CRC walks every property) once a frame, not once
+            // a camera: the copy synced for this frame's first camera serves the others. In edit mode
+            // every call compares, since an inspector edit must show at once and Time.frameCount
+            // does not advance between the editor's repaints as it does between player frames.
+            int frame = Application.isPlaying ? Time.frameCount : -1;
+            if (frame >= 0 && _drawMaterial != null && _drawMaterialSource == material && _drawMaterialCheckedFrame == frame
+                && _drawMaterial.IsKeywordEnabled(ShaderIds.VertexCacheKeyword) == cache && _drawMaterial.IsKeywordEnabled(ShaderIds.SnowKeyword) == snow)
+                return _drawMaterial;
+            _drawMaterialCheckedFrame = frame;
             int crc = material.ComputeCRC(), keywords = AssetKeywordBits();
             if (_drawMaterial == null)
             {
@@ -77,13 +82,13 @@ namespace GregoryTerrain
                 _drawMaterial.CopyPropertiesFromMaterial(material);
                 _drawMaterial.shaderKeywords = material.shaderKeywords;   // the asset's keywords, whatever the copy above took
             }
-            else if (_drawMaterial.IsKeywordEnabled(VertexCachePass.Keyword) == cache && _drawMaterial.IsKeywordEnabled(VertexCachePass.SnowKeyword) == snow)
+            else if (_drawMaterial.IsKeywordEnabled(ShaderIds.VertexCacheKeyword) == cache && _drawMaterial.IsKeywordEnabled(ShaderIds.SnowKeyword) == snow)
                 return _drawMaterial;   // steady state: nothing set
             _drawMaterialSource = material;
             _drawMaterialCrc = crc;
             _drawMaterialKeywords = keywords;
-            SetKeyword(_drawMaterial, VertexCachePass.Keyword, cache);
-            SetKeyword(_drawMaterial, VertexCachePass.SnowKeyword, snow);
+            SetKeyword(_drawMaterial, ShaderIds.VertexCacheKeyword, cache);
+            SetKeyword(_drawMaterial, ShaderIds.SnowKeyword, snow);
             return _drawMaterial;
         }
 
@@ -132,7 +137,7 @@ namespace GregoryTerrain
         {
             controlPoints = _controlPoints; regions = _regions; gridLines = _gridLines;
             parameters = _params; gridStamp = _gridStamp;
-            noise = material != null && material.IsKeywordEnabled(VertexCachePass.NoiseKeyword);
+            noise = material != null && material.IsKeywordEnabled(ShaderIds.NoiseKeyword);
             return _controlPoints != null && _settingsError == null && _uploadedPatchGrid != null;
         }
 
@@ -143,8 +148,8 @@ namespace GregoryTerrain
             GraphicsBuffer depth = _snow.DepthBuffer;
             Vector4 size = _snow.MapSize;
             if (depth == _boundSnowDepth && size.x == _boundSnowMapSize.x && size.y == _boundSnowMapSize.y && size.z == _boundSnowMapSize.z) return;
-            SetBuffer(KeywordIds.SnowDepth, depth);
-            SetVector(KeywordIds.SnowMapSize, size);
+            SetBuffer(ShaderIds.SnowDepth, depth);
+            SetVector(ShaderIds.SnowMapSize, size);
             _boundSnowDepth = depth;
             _boundSnowMapSize = size;
         }

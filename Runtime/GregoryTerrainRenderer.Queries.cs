@@ -26,7 +26,7 @@ namespace GregoryTerrain
             get
             {
                 if (grid == null || !grid.IsValid) return null;
-                NoiseSettings? noise = material != null && material.IsKeywordEnabled("GT_NOISE")
+                NoiseSettings? noise = material != null && material.IsKeywordEnabled(ShaderIds.NoiseKeyword)
                     ? new NoiseSettings(noiseAmplitude, noiseFrequency, noiseAlpha, noiseBeta, noiseOctaves)
                     : (NoiseSettings?)null;
                 if (_queryAsset == grid && _queryVersion == grid.Version && Nullable.Equals(_queryNoise, noise))

@@ -132,8 +132,8 @@ namespace GregoryTerrain
         VertexCachePass.Effects Effects(bool snow)
         {
             var e = VertexCachePass.Effects.None;
-            if (material.IsKeywordEnabled(VertexCachePass.NoiseKeyword)) e |= VertexCachePass.Effects.Noise;
-            if (material.IsKeywordEnabled(VertexCachePass.HeightColorKeyword)) e |= VertexCachePass.Effects.HeightColor;
+            if (material.IsKeywordEnabled(ShaderIds.NoiseKeyword)) e |= VertexCachePass.Effects.Noise;
+            if (material.IsKeywordEnabled(ShaderIds.HeightColorKeyword)) e |= VertexCachePass.Effects.HeightColor;
             if (snow) e |= VertexCachePass.Effects.Snow;
             return e;
         }

@@ -52,42 +52,6 @@ namespace GregoryTerrain
         /// </summary>
         public const int PerFrameTrafficBytes = 16;
 
-        /// <summary>Property IDs, looked up once (Shader.PropertyToID), never a string per frame.</summary>
-        static class Ids
-        {
-            public static readonly int ControlPoints = Shader.PropertyToID("_ControlPoints");
-            public static readonly int Regions = Shader.PropertyToID("_Regions");
-            public static readonly int GridLines = Shader.PropertyToID("_GridLines");
-            public static readonly int ObjectToWorld = Shader.PropertyToID("_GtObjectToWorld");
-            public static readonly int WorldToObject = Shader.PropertyToID("_GtWorldToObject");
-
-            /// <summary>
-            /// The nine float4 of the TerrainParams cbuffer, in the order of Core's
-            /// <see cref="TerrainParams.PropertyNames"/> (the one place that order is written), so
-            /// <c>Params[k]</c> is the ID of <c>TerrainParams[k]</c>.
-            /// </summary>
-            public static readonly int[] Params = ParamIds();
-
-            /// <summary>Positions in <see cref="Params"/> of the constants set on their own (range, origin, tile lattice).</summary>
-            public static readonly int RangeIndex = ParamIndex("_Range");
-            public static readonly int RangeOriginIndex = ParamIndex("_RangeOrigin");
-            public static readonly int TileLatticeIndex = ParamIndex("_TileLattice");
-
-            static int[] ParamIds()
-            {
-                var ids = new int[TerrainParams.Float4Count];
-                for (int k = 0; k < ids.Length; k++) ids[k] = Shader.PropertyToID(TerrainParams.PropertyNames[k]);
-                return ids;
-            }
-
-            static int ParamIndex(string property)
-            {
-                int k = Array.IndexOf(TerrainParams.PropertyNames, property);
-                if (k < 0) throw new InvalidOperationException($"TerrainParams.PropertyNames has no '{property}'");
-                return k;
-            }
-        }
-
         [Tooltip("The patch grid to draw. Changing it frees the old GPU buffers and uploads the new grid once.")]
         [SerializeField] PatchGridAsset grid;
 
@@ -422,12 +386,12 @@ namespace GregoryTerrain
         void PushRange()
         {
             RangeMapping.EncodeRange(_range, _origin.Origin, out Float4 r, out Float4 o);
-            SetVector(Ids.Params[Ids.RangeIndex], ToVector(r));
+            SetVector(ShaderIds.Range, ToVector(r));
             _params.range = r;
             _params.rangeOrigin = o;
             if (_originDirty)
             {
-                SetVector(Ids.Params[Ids.RangeOriginIndex], ToVector(o));
+                SetVector(ShaderIds.RangeOrigin, ToVector(o));
                 _params.tileLattice = default;   // in the old origin's coordinates: anchor again
                 _originDirty = false;
             }
@@ -444,7 +408,7 @@ namespace GregoryTerrain
             Float4 lattice = AnchorsTiles(fallback) ? TileLattice.Follow(_params.tileLattice, _params.range, tiles) : default;
             if (lattice.Equals(_params.tileLattice)) return;   // PushSettings sent 0 with the block
             _params = _params.WithTileLattice(lattice);
-            SetVector(Ids.Params[Ids.TileLatticeIndex], ToVector(lattice));
+            SetVector(ShaderIds.TileLattice, ToVector(lattice));
         }
 
         /// <summary>
@@ -474,7 +438,7 @@ namespace GregoryTerrain
             _settingsError = null;
             _params = p;
             for (int k = 0; k < TerrainParams.Float4Count; k++)
-                SetVector(Ids.Params[k], ToVector(p[k]));
+                SetVector(ShaderIds.Params[k], ToVector(p[k]));
             _originDirty = false;   // and _TileLattice = 0: UpdateTileLattice anchors at the range if it should
         }
 
@@ -494,7 +458,7 @@ namespace GregoryTerrain
         internal System.Collections.Generic.IReadOnlyList<int> PropertiesSetLastPrepare => _setLastPrepare;
 
         /// <summary>The property ID of <c>_Range</c> (for the Unity-side tests).</summary>
-        internal static int RangePropertyId => Ids.Params[Ids.RangeIndex];
+        internal static int RangePropertyId => ShaderIds.Range;
 
         /// <summary>
         /// The draw the material's SubShader in use expects (see <see cref="DrawsFallback"/>). Read
@@ -522,7 +486,7 @@ namespace GregoryTerrain
         /// </summary>
         bool UpdateOutputOffset()
         {
-            var keywords = material != null && material.IsKeywordEnabled("GT_NOISE") ? TerrainKeywords.Noise : TerrainKeywords.None;
+            var keywords = material != null && material.IsKeywordEnabled(ShaderIds.NoiseKeyword) ? TerrainKeywords.Noise : TerrainKeywords.None;
             float octaves = TerrainInputs.NoiseOctaveCount(_params);
             if (_offsetGrid == _uploadedPatchGrid && _offsetKeywords == keywords && _offsetOrigin.Equals(_params.rangeOrigin)
                 && _offsetNoise.Equals(_params.noise) && _offsetOctaves.Equals(octaves)) return false;
@@ -560,8 +524,8 @@ namespace GregoryTerrain
                 w.m13 = (float)(w.m13 - ty);
                 w.m23 = (float)(w.m23 - tz);
             }
-            SetMatrix(Ids.ObjectToWorld, m);
-            SetMatrix(Ids.WorldToObject, w);
+            SetMatrix(ShaderIds.ObjectToWorld, m);
+            SetMatrix(ShaderIds.WorldToObject, w);
             _objectToWorld = m;   // the vertex cache's LOD matrix uses the same object matrix
             _worldToObject = w;
         }

@@ -33,26 +33,7 @@ namespace GregoryTerrain
     public sealed class SnowSimulator : MonoBehaviour
     {
         /// <summary>The terrain material keyword this component turns on while it runs.</summary>
-        public const string Keyword = "GT_SNOW";
-
-        static class Ids
-        {
-            public static readonly int Grid = Shader.PropertyToID("_SnowGrid");
-            public static readonly int Fall = Shader.PropertyToID("_SnowFall");
-            public static readonly int Catch = Shader.PropertyToID("_SnowCatch");
-            public static readonly int Edge = Shader.PropertyToID("_SnowEdge");
-            public static readonly int Step = Shader.PropertyToID("_SnowStep");
-            public static readonly int Field = Shader.PropertyToID("_SnowField");
-            public static readonly int Exposure = Shader.PropertyToID("_SnowExposure");
-            public static readonly int Depth = Shader.PropertyToID("_SnowDepth");
-            public static readonly int MapSize = Shader.PropertyToID("_SnowMapSize");
-            public static readonly int ControlPoints = Shader.PropertyToID("_ControlPoints");
-            public static readonly int Regions = Shader.PropertyToID("_Regions");
-            public static readonly int GridLines = Shader.PropertyToID("_GridLines");
-            public static readonly int[] TerrainParams = Array.ConvertAll(GregoryTerrain.TerrainParams.PropertyNames, Shader.PropertyToID);
-        }
-
-        const string NoiseKeyword = "GT_NOISE";
+        public const string Keyword = ShaderIds.SnowKeyword;
 
         [Tooltip("Shaders/Snow/SnowSimulation.compute")]
         [SerializeField] ComputeShader simulation;
@@ -194,9 +175,9 @@ namespace GregoryTerrain
             }
             try { settings.Validate(); }
             catch (ArgumentException e) { Debug.LogError("SnowSimulator: " + e.Message, this); enabled = false; return; }
-            _exposureKernel = simulation.FindKernel("SnowExposureKernel");
-            _accumulateKernel = simulation.FindKernel("SnowAccumulateKernel");
-            _fieldKernel = fieldShader != null ? fieldShader.FindKernel("SnowFieldKernel") : -1;
+            _exposureKernel = simulation.FindKernel(ShaderIds.SnowExposureKernel);
+            _accumulateKernel = simulation.FindKernel(ShaderIds.SnowAccumulateKernel);
+            _fieldKernel = fieldShader != null ? fieldShader.FindKernel(ShaderIds.SnowFieldKernel) : -1;
             if (terrain == null)
                 Debug.LogWarning("SnowSimulator: Terrain is empty; assign the Gregory Terrain Renderer the snow falls on (or give it a Field from code).", this);
             else if (fieldShader == null)
@@ -230,16 +211,16 @@ namespace GregoryTerrain
             int groups = settings.resolution / 8;  // R is a power of two >= 64
             if (NeedsExposureUpdate)
             {
-                simulation.SetBuffer(_exposureKernel, Ids.Field, field);
-                simulation.SetBuffer(_exposureKernel, Ids.Exposure, _exposure);
+                simulation.SetBuffer(_exposureKernel, ShaderIds.SnowField, field);
+                simulation.SetBuffer(_exposureKernel, ShaderIds.SnowExposure, _exposure);
                 simulation.Dispatch(_exposureKernel, groups, groups, 1);
                 _exposureValid = true;
                 _exposureSettings = settings;
                 _exposureFieldVersion = FieldVersion;
             }
-            simulation.SetBuffer(_accumulateKernel, Ids.Field, field);
-            simulation.SetBuffer(_accumulateKernel, Ids.Exposure, _exposure);
-            simulation.SetBuffer(_accumulateKernel, Ids.Depth, _depth);
+            simulation.SetBuffer(_accumulateKernel, ShaderIds.SnowField, field);
+            simulation.SetBuffer(_accumulateKernel, ShaderIds.SnowExposure, _exposure);
+            simulation.SetBuffer(_accumulateKernel, ShaderIds.SnowDepth, _depth);
             simulation.Dispatch(_accumulateKernel, groups, groups, 1);
             DepthVersion++;
         }
@@ -283,16 +264,12 @@ namespace GregoryTerrain
         void EvaluateField(GraphicsBuffer controlPoints, GraphicsBuffer regions, GraphicsBuffer gridLines)
         {
             TerrainParams p = _fieldParams;
-            for (int i = 0; i < TerrainParams.Float4Count; i++)
-            {
-                Float4 v = p[i];
-                fieldShader.SetVector(Ids.TerrainParams[i], new Vector4(v.x, v.y, v.z, v.w));
-            }
-            if (_fieldNoise) fieldShader.EnableKeyword(NoiseKeyword); else fieldShader.DisableKeyword(NoiseKeyword);
-            fieldShader.SetBuffer(_fieldKernel, Ids.ControlPoints, controlPoints);
-            fieldShader.SetBuffer(_fieldKernel, Ids.Regions, regions);
-            fieldShader.SetBuffer(_fieldKernel, Ids.GridLines, gridLines);
-            fieldShader.SetBuffer(_fieldKernel, Ids.Field, _field);
+            ShaderIds.SetParams(fieldShader, p);
+            if (_fieldNoise) fieldShader.EnableKeyword(ShaderIds.NoiseKeyword); else fieldShader.DisableKeyword(ShaderIds.NoiseKeyword);
+            fieldShader.SetBuffer(_fieldKernel, ShaderIds.ControlPoints, controlPoints);
+            fieldShader.SetBuffer(_fieldKernel, ShaderIds.Regions, regions);
+            fieldShader.SetBuffer(_fieldKernel, ShaderIds.GridLines, gridLines);
+            fieldShader.SetBuffer(_fieldKernel, ShaderIds.SnowField, _field);
             int groups = settings.resolution / 8;
             fieldShader.Dispatch(_fieldKernel, groups, groups, 1);
             _fieldTerrainVersion = _terrainVersion;   // the field's version: the exposure sees the change
@@ -307,11 +284,11 @@ namespace GregoryTerrain
 
         void SetParams(float[] p)
         {
-            simulation.SetVector(Ids.Grid, new Vector4(p[0], p[1], p[2], p[3]));
-            simulation.SetVector(Ids.Fall, new Vector4(p[4], p[5], p[6], p[7]));
-            simulation.SetVector(Ids.Catch, new Vector4(p[8], p[9], p[10], p[11]));
-            simulation.SetVector(Ids.Edge, new Vector4(p[12], p[13], p[14], p[15]));
-            simulation.SetVector(Ids.Step, new Vector4(p[16], p[17], p[18], p[19]));
+            simulation.SetVector(ShaderIds.SnowGrid, new Vector4(p[0], p[1], p[2], p[3]));
+            simulation.SetVector(ShaderIds.SnowFall, new Vector4(p[4], p[5], p[6], p[7]));
+            simulation.SetVector(ShaderIds.SnowCatch, new Vector4(p[8], p[9], p[10], p[11]));
+            simulation.SetVector(ShaderIds.SnowEdge, new Vector4(p[12], p[13], p[14], p[15]));
+            simulation.SetVector(ShaderIds.SnowStep, new Vector4(p[16], p[17], p[18], p[19]));
         }
 
         void Allocate()

@@ -24,32 +24,9 @@ namespace GregoryTerrain
     /// </summary>
     sealed class VertexCachePass
     {
-        /// <summary>The material keyword of the cache variants (multi_compile_local in GregoryTerrain.shader).</summary>
-        public const string Keyword = "GT_VERTEX_CACHE";
-        public const string FactorsKernelName = "CacheTileFactors";
-        public const string VerticesKernelName = "CacheTileVertices";
-
         /// <summary>Effect keywords the kernels evaluate, mirrored from the material onto the compute shader.</summary>
         [Flags]
         public enum Effects { None = 0, Noise = 1, HeightColor = 2, Snow = 4 }
-        public const string NoiseKeyword = "GT_NOISE", HeightColorKeyword = "GT_HEIGHT_COLOR", SnowKeyword = "GT_SNOW";
-
-        static class Ids
-        {
-            public static readonly int TileFactors = Shader.PropertyToID("_TileFactors");
-            public static readonly int VertexCache = Shader.PropertyToID("_VertexCache");
-            public static readonly int TileFactorsRW = Shader.PropertyToID("_TileFactorsRW");
-            public static readonly int VertexCacheRW = Shader.PropertyToID("_VertexCacheRW");
-            public static readonly int LodObjectToClip = Shader.PropertyToID("_GT_LodObjectToClip");
-            public static readonly int LodScreenSize = Shader.PropertyToID("_GT_LodScreenSize");
-            public static readonly int WorldToObject = Shader.PropertyToID("_GtWorldToObject");
-            public static readonly int ControlPoints = Shader.PropertyToID("_ControlPoints");
-            public static readonly int Regions = Shader.PropertyToID("_Regions");
-            public static readonly int GridLines = Shader.PropertyToID("_GridLines");
-            public static readonly int SnowDepth = Shader.PropertyToID("_SnowDepth");
-            public static readonly int SnowMapSize = Shader.PropertyToID("_SnowMapSize");
-            public static readonly int[] Params = Array.ConvertAll(TerrainParams.PropertyNames, Shader.PropertyToID);
-        }
 
         /// <summary>Everything one dispatch reads besides the buffers this pass owns.</summary>
         public struct Inputs
@@ -99,10 +76,10 @@ namespace GregoryTerrain
             missing = null;
             if (shader == _kernelShader && _factorsKernel >= 0 && _verticesKernel >= 0) return true;
             _kernelShader = null; _factorsKernel = _verticesKernel = -1;
-            if (!shader.HasKernel(FactorsKernelName)) { missing = FactorsKernelName; return false; }
-            if (!shader.HasKernel(VerticesKernelName)) { missing = VerticesKernelName; return false; }
-            _factorsKernel = shader.FindKernel(FactorsKernelName);
-            _verticesKernel = shader.FindKernel(VerticesKernelName);
+            if (!shader.HasKernel(ShaderIds.CacheFactorsKernel)) { missing = ShaderIds.CacheFactorsKernel; return false; }
+            if (!shader.HasKernel(ShaderIds.CacheVerticesKernel)) { missing = ShaderIds.CacheVerticesKernel; return false; }
+            _factorsKernel = shader.FindKernel(ShaderIds.CacheFactorsKernel);
+            _verticesKernel = shader.FindKernel(ShaderIds.CacheVerticesKernel);
             _kernelShader = shader;
             _valid = false;   // another shader: its results are not ours
             return true;
@@ -142,27 +119,23 @@ namespace GregoryTerrain
             if (recordsHold && SameFactorInputs(inputs)) return false;
             if (!recordsHold) ForgetEvaluatedTiles();
 
-            for (int k = 0; k < TerrainParams.Float4Count; k++)
-            {
-                Float4 v = inputs.parameters[k];
-                shader.SetVector(Ids.Params[k], new Vector4(v.x, v.y, v.z, v.w));
-            }
-            shader.SetMatrix(Ids.LodObjectToClip, inputs.objectToClip);
-            shader.SetMatrix(Ids.WorldToObject, inputs.worldToObject);
-            shader.SetVector(Ids.LodScreenSize, inputs.screenSize);
-            SetKeyword(shader, NoiseKeyword, (inputs.effects & Effects.Noise) != 0);
-            SetKeyword(shader, HeightColorKeyword, (inputs.effects & Effects.HeightColor) != 0);
+            ShaderIds.SetParams(shader, inputs.parameters);
+            shader.SetMatrix(ShaderIds.LodObjectToClip, inputs.objectToClip);
+            shader.SetMatrix(ShaderIds.WorldToObject, inputs.worldToObject);
+            shader.SetVector(ShaderIds.LodScreenSize, inputs.screenSize);
+            SetKeyword(shader, ShaderIds.NoiseKeyword, (inputs.effects & Effects.Noise) != 0);
+            SetKeyword(shader, ShaderIds.HeightColorKeyword, (inputs.effects & Effects.HeightColor) != 0);
             bool snow = (inputs.effects & Effects.Snow) != 0;
-            SetKeyword(shader, SnowKeyword, snow);
-            if (snow) shader.SetVector(Ids.SnowMapSize, inputs.snowMapSize);
+            SetKeyword(shader, ShaderIds.SnowKeyword, snow);
+            if (snow) shader.SetVector(ShaderIds.SnowMapSize, inputs.snowMapSize);
 
             // Kernel 1 writes the factors (u2, _TileFactorsRW); kernel 2 reads them there and
             // writes the records (u3, _VertexCacheRW). Both sample the surface: the patch buffers.
             BindPatchBuffers(shader, _factorsKernel, inputs, snow);
-            shader.SetBuffer(_factorsKernel, Ids.TileFactorsRW, _factors);
+            shader.SetBuffer(_factorsKernel, ShaderIds.TileFactorsRW, _factors);
             BindPatchBuffers(shader, _verticesKernel, inputs, snow);
-            shader.SetBuffer(_verticesKernel, Ids.TileFactorsRW, _factors);
-            shader.SetBuffer(_verticesKernel, Ids.VertexCacheRW, _vertices);
+            shader.SetBuffer(_verticesKernel, ShaderIds.TileFactorsRW, _factors);
+            shader.SetBuffer(_verticesKernel, ShaderIds.VertexCacheRW, _vertices);
 
             // A group a tile for the factors; groups (x, y, 0 .. G - 1) share tile y T + x for the vertices.
             shader.Dispatch(_factorsKernel, _tiles, _tiles, 1);
@@ -186,8 +159,8 @@ namespace GregoryTerrain
         /// <summary>Binds the buffers on the draw's property block under the graphics stages' names.</summary>
         public void BindTo(MaterialPropertyBlock props)
         {
-            props.SetBuffer(Ids.TileFactors, _factors);
-            props.SetBuffer(Ids.VertexCache, _vertices);
+            props.SetBuffer(ShaderIds.TileFactors, _factors);
+            props.SetBuffer(ShaderIds.VertexCache, _vertices);
         }
 
         /// <summary>Releases both buffers. Safe to call twice.</summary>
@@ -200,10 +173,10 @@ namespace GregoryTerrain
 
         static void BindPatchBuffers(ComputeShader shader, int kernel, in Inputs inputs, bool snow)
         {
-            shader.SetBuffer(kernel, Ids.ControlPoints, inputs.controlPoints);
-            shader.SetBuffer(kernel, Ids.Regions, inputs.regions);
-            shader.SetBuffer(kernel, Ids.GridLines, inputs.gridLines);
-            if (snow) shader.SetBuffer(kernel, Ids.SnowDepth, inputs.snowDepth);
+            shader.SetBuffer(kernel, ShaderIds.ControlPoints, inputs.controlPoints);
+            shader.SetBuffer(kernel, ShaderIds.Regions, inputs.regions);
+            shader.SetBuffer(kernel, ShaderIds.GridLines, inputs.gridLines);
+            if (snow) shader.SetBuffer(kernel, ShaderIds.SnowDepth, inputs.snowDepth);
         }
 
         static void SetKeyword(ComputeShader shader, string keyword, bool on)

@@ -28,17 +28,10 @@
     #define GT_RECEIVE_SHADOWS 1
     #define GT_VARYINGS_POSITION_WS 1   // the mobile path reads the shadow map at the world position
 #endif
-#define GT_CBUFFER_START(name) CBUFFER_START(UnityPerMaterial)
-#define GT_CBUFFER_END CBUFFER_END
-#define GT_REGISTER(r)
-
-// Set by GregoryTerrainRenderer (MaterialPropertyBlock), only when its Transform changes.
-float4x4 _GtObjectToWorld;
-float4x4 _GtWorldToObject;
+// Material constants, the object matrices, normals, the editor's selection passes.
+#include "UnityAdapterCommon.hlsl"
 
 float3 GT_ObjectToWorld(float3 positionOS) { return mul(_GtObjectToWorld, float4(positionOS, 1.0)).xyz; }
-// Inverse transpose: n^T * WorldToObject.
-float3 GT_ObjectToWorldNormal(float3 normalOS) { return normalize(mul(normalOS, (float3x3)_GtWorldToObject)); }
 float4 GT_WorldToClip(float3 positionWS) { return UnityWorldToClipPos(positionWS); }
 
 float4 GT_ObjectToClip(float3 positionOS)

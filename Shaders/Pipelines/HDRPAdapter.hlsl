@@ -62,29 +62,13 @@
 #if defined(GT_PASS_DEPTH_NORMALS) && defined(WRITE_MSAA_DEPTH)
     #define GT_WRITE_DEPTH_COLOR 1
 #endif
-#define GT_CBUFFER_START(name) CBUFFER_START(UnityPerMaterial)
-#define GT_CBUFFER_END CBUFFER_END
-#define GT_REGISTER(r)
-
-// Set by GregoryTerrainRenderer (MaterialPropertyBlock), only when its Transform changes.
-float4x4 _GtObjectToWorld;
-float4x4 _GtWorldToObject;
-
-#if defined(GT_PASS_SCENE_SELECTION)
-// Set by the editor for the Scene view's selection outline.
-int _ObjectId;
-int _PassValue;
-#endif
-#if defined(GT_PASS_SCENE_PICKING)
-float4 _SelectionID;   // read as unity_SelectionID (ShaderVariables.hlsl)
-#endif
+// Material constants, the object matrices, normals, the editor's selection passes.
+#include "UnityAdapterCommon.hlsl"
 
 float3 GT_ObjectToWorld(float3 positionOS)
 {
     return GetCameraRelativePositionWS(mul(_GtObjectToWorld, float4(positionOS, 1.0)).xyz);
 }
-// Inverse transpose (a direction: no camera-relative shift).
-float3 GT_ObjectToWorldNormal(float3 normalOS) { return normalize(mul(normalOS, (float3x3)_GtWorldToObject)); }
 float4 GT_WorldToClip(float3 positionWS) { return TransformWorldToHClip(positionWS); }
 float4 GT_ObjectToClip(float3 positionOS) { return TransformWorldToHClip(GT_ObjectToWorld(positionOS)); }
 float3 GT_CameraPositionWS() { return GetCameraRelativePositionWS(_WorldSpaceCameraPos); }
@@ -160,13 +144,6 @@ float4 GT_EncodeDepthNormal(float3 normalWS)
     EncodeIntoNormalBuffer(normalData, encoded);
     return encoded;
 }
-#endif
-
-// The Scene view's selection outline and picking (HDRP's ShaderPassDepthOnly).
-#if defined(GT_PASS_SCENE_SELECTION)
-float4 GT_EditorSelectionColor() { return float4(_ObjectId, _PassValue, 1.0, 1.0); }
-#elif defined(GT_PASS_SCENE_PICKING)
-float4 GT_EditorSelectionColor() { return unity_SelectionID; }
 #endif
 
 #endif // GT_HDRP_ADAPTER_INCLUDED

@@ -36,15 +36,8 @@
 #if defined(GT_RECEIVE_SHADOWS) || defined(GT_FOG)
     #define GT_VARYINGS_POSITION_WS 1
 #endif
-// All material constants in UnityPerMaterial, so the SRP Batcher layout stays the same for every
-// material of this shader.
-#define GT_CBUFFER_START(name) CBUFFER_START(UnityPerMaterial)
-#define GT_CBUFFER_END CBUFFER_END
-#define GT_REGISTER(r)
-
-// Set by GregoryTerrainRenderer (MaterialPropertyBlock), only when its Transform changes.
-float4x4 _GtObjectToWorld;
-float4x4 _GtWorldToObject;
+// Material constants, the object matrices, normals, the editor's selection passes.
+#include "UnityAdapterCommon.hlsl"
 
 #if defined(GT_PASS_SHADOWCASTER)
 // Set by URP for the light whose shadow map is being drawn (ShadowUtils.SetupShadowCasterConstantBuffer):
@@ -53,21 +46,8 @@ float4x4 _GtWorldToObject;
 float3 _LightDirection;
 float3 _LightPosition;
 #endif
-#if defined(GT_PASS_SCENE_SELECTION)
-// Set by the editor for the Scene view's selection outline.
-int _ObjectId;
-int _PassValue;
-#endif
-#if defined(GT_PASS_SCENE_PICKING)
-float4 _SelectionID;   // read as unity_SelectionID (URP's UniversalDOTSInstancing.hlsl)
-#endif
 
 float3 GT_ObjectToWorld(float3 positionOS) { return mul(_GtObjectToWorld, float4(positionOS, 1.0)).xyz; }
-
-// Normals go through the inverse transpose: n^T * WorldToObject (as URP's own
-// TransformObjectToWorldNormal does with UNITY_MATRIX_I_M).
-float3 GT_ObjectToWorldNormal(float3 normalOS) { return normalize(mul(normalOS, (float3x3)_GtWorldToObject)); }
-
 float4 GT_WorldToClip(float3 positionWS) { return TransformWorldToHClip(positionWS); }
 
 #if defined(GT_PASS_SHADOWCASTER)
@@ -163,12 +143,5 @@ float4 GT_EncodeDepthNormal(float3 normalWS)
     return float4(NormalizeNormalPerPixel(normalWS), 0.0);
 #endif
 }
-
-// The Scene view's selection outline and picking (URP's SelectionPickingPass).
-#if defined(GT_PASS_SCENE_SELECTION)
-float4 GT_EditorSelectionColor() { return float4(_ObjectId, _PassValue, 1.0, 1.0); }
-#elif defined(GT_PASS_SCENE_PICKING)
-float4 GT_EditorSelectionColor() { return unity_SelectionID; }
-#endif
 
 #endif // GT_URP_ADAPTER_INCLUDED

@@ -23,7 +23,9 @@ StructuredBuffer<float4> _Regions GT_REGISTER(t1);
 // xLines[0..n] then yLines[0..m], each strictly increasing from 0 to 1.
 StructuredBuffer<float> _GridLines GT_REGISTER(t2);
 
-// 10 float4, 160 bytes, in exactly this order (the rig uploads it as one block).
+// 10 float4, 160 bytes, in exactly this order: the mirror of Core's blittable TerrainParams struct
+// (same order, field rangeOrigin = _RangeOrigin; ShaderContractTests compares the compiled offsets).
+// Named float4s, not one struct member: Unity sets them by name (internals.md, "One contract to the GPU").
 GT_CBUFFER_START(TerrainParams)
     float4 _Range;         // (c, d, g, h) relative to the range origin        per frame
     float4 _RangeOrigin;   // (O.x hi, O.y hi, O.x lo, O.y lo)                  on re-snap

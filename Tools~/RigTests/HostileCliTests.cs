@@ -1,7 +1,7 @@
 // The hostile-input suite's gt-cli part (issue 25): each case runs the built gt-cli (gt setup) with a
 // bad command line or a bad file and asserts a clear refusal (exit 2 for bad usage, 1 for bad data;
 // stderr names the option or field and the value, short, with no stack trace) or a documented
-// acceptance (exit 0). Core's cases are in Tests/Core/HostileInputTests.cs; the outcome kinds are
+// acceptance (exit 0). Core's cases are in HostileInputTests.cs; the outcome kinds are
 // HostileCase's.
 using System;
 using System.Collections.Generic;

@@ -6,7 +6,8 @@
 #   gt demo [--docs] [--no-setup] [--device SUBSTR] [--tiles M] [--factor F] [--width W] [--height H]
 # Writes .build/demo/demo_g<g>.png; with --docs also Documentation~/images/demo_g<g>.png (small indexed PNGs, png_palette.py).
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
-docs=0 setup=1 device="" tiles=16 factor=15 width=640 height=480
+# 400 x 300: the manual ships these pictures, so they stay small (about 30 KB each).
+docs=0 setup=1 device="" tiles=16 factor=15 width=400 height=300
 while [ $# -gt 0 ]; do
   case "$1" in
     --docs) docs=1 ;;

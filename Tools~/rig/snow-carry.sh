@@ -1,17 +1,18 @@
-# gt snow-carry DEST [--resolutions R1,R2,...] [--steps N] [--dt S]: assembles the self-contained
+# gt snow-carry DEST [--resolutions R1,R2,...] [--steps N] [--dt S] [--size WxH]: assembles the self-contained
 # folder that Tools~/rig/snow-device.sh runs (on lavapipe here, or carried to a GPU machine): the
 # prebuilt gt-harness and gt-compute, the SPIR-V of the snow kernels and of the terrain with and
 # without GT_SNOW, and the ridge scene of `gt-cli snow-scene` (default R 256,512,1024,2048, 200
-# steps of 0.05 s). A Vulkan loader .deb found in $PKG_DIR/.gl is copied to DEST/.gl.
+# steps of 0.05 s, frames of 640 x 480). A Vulkan loader .deb found in $PKG_DIR/.gl is copied to DEST/.gl.
 # Then: bash DEST/snow-device.sh DEST [--device NVIDIA]
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 dest="${1:?usage: gt snow-carry DEST [--resolutions R,...] [--steps N] [--dt S]}"; shift
-resolutions="256,512,1024,2048"; steps=200; dt=0.05
+resolutions="256,512,1024,2048"; steps=200; dt=0.05; size=640x480
 while [ $# -gt 0 ]; do
   case "$1" in
     --resolutions) resolutions="${2:?}"; shift ;;
     --steps) steps="${2:?}"; shift ;;
     --dt) dt="${2:?}"; shift ;;
+    --size) size="${2:?}"; shift ;;
     *) die "snow-carry: unknown argument '$1'" ;;
   esac
   shift
@@ -38,6 +39,7 @@ for k in SnowExposureKernel SnowAccumulateKernel; do
     || die "glslang failed on $k"
 done
 for f in "$dest"/spv/*.spv "$dest"/spv/*/*.spv; do spirv-val "$f"; done
-"$BUILD_DIR/gt-cli/gt-cli" snow-scene --out "$dest/snow" --resolutions "$resolutions" --steps "$steps" --dt "$dt" >&2
+"$BUILD_DIR/gt-cli/gt-cli" snow-scene --out "$dest/snow" --resolutions "$resolutions" --steps "$steps" --dt "$dt" \
+  --width "${size%x*}" --height "${size#*x}" >&2
 if ls "$PKG_DIR"/.gl/*.deb >/dev/null 2>&1; then mkdir -p "$dest/.gl"; cp "$PKG_DIR"/.gl/*.deb "$dest/.gl/"; fi
 say "assembled $(du -sh "$dest" | cut -f1) in $dest; run: bash $dest/snow-device.sh $dest [--device NVIDIA]"

@@ -1,24 +1,33 @@
 using System;
+using System.Runtime.InteropServices;
 
 namespace GregoryTerrain
 {
     /// <summary>
-    /// The <c>TerrainParams</c> constants every stage reads (internals.md, binding 0): ten float4 in
-    /// one fixed order. The rig uploads <see cref="Pack"/> as one block; Unity sets each float4 by name.
-    /// Only <see cref="range"/> changes per frame.
+    /// The <c>TerrainParams</c> constants every stage reads (internals.md, "One contract to the
+    /// GPU"): ten float4, 160 bytes, blittable, its fields in the order of the HLSL cbuffer
+    /// (Shaders/Terrain/TerrainInputs.hlsl), field k named <see cref="PropertyNames"/>[k] there
+    /// (<c>rangeOrigin</c> is <c>_RangeOrigin</c>). The rig uploads <see cref="Pack"/> as one block;
+    /// Unity sets each float4 by name (the SRP Batcher wants named material constants). Only
+    /// <see cref="range"/> changes per frame. Tools~/RigTests/ShaderContractTests compares this
+    /// layout with the cbuffer the shader compiler lays out.
     /// </summary>
+    [StructLayout(LayoutKind.Sequential)]
     internal struct TerrainParams
     {
         public const int Float4Count = 10;
         public const int Floats = Float4Count * 4;
+        /// <summary>Size of the block: the cbuffer's size without the snow variant's <c>_SnowMapSize</c>.</summary>
+        public const int Bytes = Floats * sizeof(float);
 
-        /// <summary>Names in cbuffer order; <see cref="Pack"/> and the shaders agree on it.</summary>
+        /// <summary>The shader names of the fields, in field (and cbuffer) order; <see cref="Pack"/> and the shaders agree on it.</summary>
         public static readonly string[] PropertyNames =
         {
             "_Range", "_RangeOrigin", "_GridSize", "_Tess", "_Noise", "_NoiseOctaves", "_HeightColor", "_ColorLow", "_ColorHigh",
             "_TileLattice",
         };
 
+        // Instance fields only below, in cbuffer order: the layout is the declaration order.
         public Float4 range, rangeOrigin, gridSize, tess, noise, noiseOctaves, heightColor, colorLow, colorHigh;
 
         /// <summary>
@@ -97,16 +106,11 @@ namespace GregoryTerrain
             return p;
         }
 
-        /// <summary>The 40 floats of the cbuffer, in order.</summary>
+        /// <summary>The 40 floats of the cbuffer, in order: the struct's own bytes, so Pack cannot disagree with the layout.</summary>
         public float[] Pack()
         {
-            var r = new float[Floats];
-            for (int i = 0; i < Float4Count; i++)
-            {
-                Float4 v = this[i];
-                r[4 * i] = v.x; r[4 * i + 1] = v.y; r[4 * i + 2] = v.z; r[4 * i + 3] = v.w;
-            }
-            return r;
+            TerrainParams copy = this;
+            return MemoryMarshal.Cast<TerrainParams, float>(MemoryMarshal.CreateReadOnlySpan(ref copy, 1)).ToArray();
         }
     }
 }

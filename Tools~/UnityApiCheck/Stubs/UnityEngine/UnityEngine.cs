@@ -96,7 +96,7 @@ namespace UnityEngine
     }
 
     public class Application { public static bool isPlaying => false; }              // SR:Application-isPlaying (plain class)
-    public class Time { public static float deltaTime => 0f; public static float time => 0f; } // SR:Time-deltaTime, SR:Time-time (plain class)
+    public class Time { public static float deltaTime => 0f; public static float time => 0f; public static int frameCount => 0; } // SR:Time-deltaTime, SR:Time-time, SR:Time-frameCount (plain class)
 
     public struct Mathf                                                               // SR:Mathf (a struct in 2022.3)
     {

@@ -12,7 +12,8 @@ namespace GregoryTerrain.Tests
     /// validation, Core's public calls, the fitter's entry and the renderer-settings validation.
     /// Each generated case must end with a clear refusal (the field and the value named, the message
     /// short, nothing changed) or a documented acceptance, within a per-case watchdog. The CLI's
-    /// cases are in Tools~/RigTests/HostileCliTests.cs. The tally is printed at the end.
+    /// cases are in HostileCliTests.cs. The tally is printed at the end. A generated audit with a
+    /// watchdog thread a case is the rig's, not a package test: it lives here, not in Tests/.
     /// </summary>
     [TestFixture]
     public class HostileInputTests

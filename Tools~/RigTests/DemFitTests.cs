@@ -1,12 +1,11 @@
 using System;
 using System.IO;
-using System.Runtime.CompilerServices;
 using NUnit.Framework;
 
-namespace GregoryTerrain.Tests
+namespace GregoryTerrain.Rig.Tests
 {
     /// <summary>
-    /// The fitter on real elevation data: two adjacent SRTM3 crops (Data/README.md), 241 x 241
+    /// The fitter on real elevation data: two adjacent SRTM3 crops (Tools~/RigTests/Data/dem/README.md), 241 x 241
     /// samples each, sharing their seam column: no NaN, G1 after enforcement, voids filled rather
     /// than fitted into spikes, the two tiles fitted one after the other join G1, and the error
     /// against the bilinear baseline. Issue 27's goal (RMS at most half the baseline's, max no worse)
@@ -27,7 +26,8 @@ namespace GregoryTerrain.Tests
         /// <summary>Measured worst ratios to the baseline over both crops at 8, 16, 32 patches: RMS 1.10, max 1.40.</summary>
         const double RmsRatioBound = 1.15, MaxRatioBound = 1.5;
 
-        static string DataPath(string name, [CallerFilePath] string here = "") => Path.Combine(Path.GetDirectoryName(here), "Data", name);
+        // The crops live with the rig, not in Tests/ (232 KB the package would ship for one test class).
+        static string DataPath(string name) => PackageRoot.Combine("Tools~", "RigTests", "Data", "dem", name);
 
         /// <summary>A crop's heights in metres, voids as NaN (not yet filled).</summary>
         public static double[] LoadRaw(string name)

@@ -1,0 +1,90 @@
+using System;
+using UnityEngine;
+
+namespace GregoryTerrain
+{
+    /// <summary>
+    /// Every name the package's C# shares with its shaders, written once: material and compute
+    /// properties (looked up once with Shader.PropertyToID, never a string per frame), buffers,
+    /// keywords and kernels. The TerrainParams constants are named by Core's
+    /// <see cref="TerrainParams.PropertyNames"/>, the mirror of the HLSL cbuffer; everything else is
+    /// named here. The HLSL declares each name once (Shaders/Terrain/TerrainInputs.hlsl, the compute
+    /// files, the adapters' object matrices). Tools~/RigTests/ShaderContractTests checks both ways
+    /// that this list and the shaders' declarations are the same names, and that no other Runtime or
+    /// Editor file spells a shader name.
+    /// </summary>
+    internal static class ShaderIds
+    {
+        // ---- the terrain (TerrainInputs.hlsl): buffers sent once per grid, then TerrainParams -------
+
+        public static readonly int ControlPoints = Shader.PropertyToID("_ControlPoints");
+        public static readonly int Regions = Shader.PropertyToID("_Regions");
+        public static readonly int GridLines = Shader.PropertyToID("_GridLines");
+
+        /// <summary><c>Params[k]</c> is the ID of TerrainParams float4 k (cbuffer order).</summary>
+        public static readonly int[] Params = Array.ConvertAll(TerrainParams.PropertyNames, Shader.PropertyToID);
+
+        /// <summary>The constants set on their own: the range (per frame), its origin (on re-snap), the tile lattice.</summary>
+        public static readonly int Range = ParamId("_Range");
+        public static readonly int RangeOrigin = ParamId("_RangeOrigin");
+        public static readonly int TileLattice = ParamId("_TileLattice");
+
+        /// <summary>The renderer's object matrices (the Unity adapters; deep-zoom offset included).</summary>
+        public static readonly int ObjectToWorld = Shader.PropertyToID("_GtObjectToWorld");
+        public static readonly int WorldToObject = Shader.PropertyToID("_GtWorldToObject");
+
+        // ---- vertex cache (VertexCacheKernels.hlsl, LodCameraComputeAdapter.hlsl) --------------------
+
+        public static readonly int TileFactors = Shader.PropertyToID("_TileFactors");
+        public static readonly int VertexCache = Shader.PropertyToID("_VertexCache");
+        public static readonly int TileFactorsRW = Shader.PropertyToID("_TileFactorsRW");
+        public static readonly int VertexCacheRW = Shader.PropertyToID("_VertexCacheRW");
+        public static readonly int LodObjectToClip = Shader.PropertyToID("_GT_LodObjectToClip");
+        public static readonly int LodScreenSize = Shader.PropertyToID("_GT_LodScreenSize");
+        public const string CacheFactorsKernel = "CacheTileFactors";
+        public const string CacheVerticesKernel = "CacheTileVertices";
+
+        // ---- snow (SnowSimulation.compute, SnowField.compute, TerrainInputs.hlsl's GT_SNOW part) -----
+
+        public static readonly int SnowGrid = Shader.PropertyToID("_SnowGrid");
+        public static readonly int SnowFall = Shader.PropertyToID("_SnowFall");
+        public static readonly int SnowCatch = Shader.PropertyToID("_SnowCatch");
+        public static readonly int SnowEdge = Shader.PropertyToID("_SnowEdge");
+        public static readonly int SnowStep = Shader.PropertyToID("_SnowStep");
+        public static readonly int SnowField = Shader.PropertyToID("_SnowField");
+        public static readonly int SnowExposure = Shader.PropertyToID("_SnowExposure");
+        public static readonly int SnowDepth = Shader.PropertyToID("_SnowDepth");
+        public static readonly int SnowMapSize = Shader.PropertyToID("_SnowMapSize");
+        public const string SnowExposureKernel = "SnowExposureKernel";
+        public const string SnowAccumulateKernel = "SnowAccumulateKernel";
+        public const string SnowFieldKernel = "SnowFieldKernel";
+
+        // ---- keywords (GregoryTerrain.shader, TerrainCache.compute, SnowField.compute) ---------------
+
+        /// <summary>Material toggles the user sets on the asset (Properties block), mirrored onto the compute kernels.</summary>
+        public const string NoiseKeyword = "GT_NOISE", HeightColorKeyword = "GT_HEIGHT_COLOR";
+        /// <summary>Keywords the renderer sets on its runtime copy of the material (multi_compile_local).</summary>
+        public const string VertexCacheKeyword = "GT_VERTEX_CACHE", SnowKeyword = "GT_SNOW";
+        /// <summary>The material's debug view (KeywordEnum GT_DEBUG; None has no keyword of its own).</summary>
+        public const string DebugNormalsKeyword = "GT_DEBUG_NORMALS", DebugPatchIdKeyword = "GT_DEBUG_PATCH_ID",
+            DebugTessFactorKeyword = "GT_DEBUG_TESS_FACTOR";
+
+        // A name of the TerrainParams block, checked against Core's list when this class loads.
+        static int ParamId(string name)
+        {
+            if (Array.IndexOf(TerrainParams.PropertyNames, name) < 0)
+                throw new InvalidOperationException($"TerrainParams.PropertyNames has no '{name}'");
+            return Shader.PropertyToID(name);
+        }
+
+        /// <summary>Sets the whole TerrainParams block on a compute shader, each float4 by its name.</summary>
+        public static void SetParams(ComputeShader shader, in TerrainParams p)
+        {
+            for (int k = 0; k < TerrainParams.Float4Count; k++)
+            {
+                Float4 v = p[k];
+                shader.SetVector(Params[k], new Vector4(v.x, v.y, v.z, v.w));
+            }
+        }
+    }
+}
