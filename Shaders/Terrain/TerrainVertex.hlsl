@@ -261,7 +261,12 @@ float VaryingsHeightWeight(TerrainVaryings i) { return i.normalAndHeightWeight.z
 TerrainVaryings TerrainVaryingsOf(float3 positionOS, float3 normalAndHeightWeight, float snowDepth, uint patch, float tessFactor)
 {
     TerrainVaryings o;
+#if defined(GT_SHADOW_CASTER_NORMAL_BIAS)
+    // The adapter's shadow caster also offsets along the normal (URP's normal bias).
+    o.positionCS = GT_ObjectToShadowClip(positionOS, LambertDecodeNormal(normalAndHeightWeight.xy));
+#else
     o.positionCS = GT_ObjectToClip(positionOS);
+#endif
     o.normalAndHeightWeight = normalAndHeightWeight;
 #if defined(GT_VARYINGS_POSITION_WS)
     o.positionWS = GT_ObjectToWorld(positionOS);
