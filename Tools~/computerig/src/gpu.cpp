@@ -168,18 +168,10 @@ RunResult Gpu::Run(const std::vector<uint32_t>& spirv, const std::string& entry,
     dsai.pSetLayouts = &setLayout;
     VkDescriptorSet set;
     GT_VK(vkAllocateDescriptorSets(device_, &dsai, &set));
-    std::vector<VkDescriptorBufferInfo> infos(buffers_.size());
-    std::vector<VkWriteDescriptorSet> writes(buffers_.size());
-    for (size_t i = 0; i < buffers_.size(); ++i) {
-        infos[i] = {buffers_[i].device.buffer, 0, VK_WHOLE_SIZE};
-        writes[i] = {VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
-        writes[i].dstSet = set;
-        writes[i].dstBinding = buffers_[i].binding;
-        writes[i].descriptorCount = 1;
-        writes[i].descriptorType = layoutBindings[i].descriptorType;
-        writes[i].pBufferInfo = &infos[i];
-    }
-    vkUpdateDescriptorSets(device_, static_cast<uint32_t>(writes.size()), writes.data(), 0, nullptr);
+    std::vector<gt::DescriptorEntry> entries;
+    for (size_t i = 0; i < buffers_.size(); ++i)
+        entries.push_back({buffers_[i].binding, layoutBindings[i].descriptorType, buffers_[i].device.buffer});
+    gt::writeBufferDescriptors(device_, set, entries);
 
     VkQueryPool queries = VK_NULL_HANDLE;
     if (timestamps) {

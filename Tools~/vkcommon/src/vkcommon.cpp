@@ -126,6 +126,21 @@ void destroyBuffer(VkDevice device, Buffer& b) {
     b = Buffer{};
 }
 
+void writeBufferDescriptors(VkDevice device, VkDescriptorSet set, const std::vector<DescriptorEntry>& entries) {
+    std::vector<VkDescriptorBufferInfo> infos(entries.size());
+    std::vector<VkWriteDescriptorSet> writes(entries.size());
+    for (size_t i = 0; i < entries.size(); ++i) {
+        infos[i] = {entries[i].buffer, 0, VK_WHOLE_SIZE};
+        writes[i] = {VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+        writes[i].dstSet = set;
+        writes[i].dstBinding = entries[i].binding;
+        writes[i].descriptorCount = 1;
+        writes[i].descriptorType = entries[i].type;
+        writes[i].pBufferInfo = &infos[i];
+    }
+    vkUpdateDescriptorSets(device, static_cast<uint32_t>(writes.size()), writes.data(), 0, nullptr);
+}
+
 VkShaderModule createShaderModule(VkDevice device, const std::vector<uint32_t>& words) {
     VkShaderModuleCreateInfo info{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
     info.codeSize = words.size() * sizeof(uint32_t);

@@ -58,6 +58,16 @@ Buffer createBuffer(const BufferHeap& heap, VkDeviceSize size, VkBufferUsageFlag
 
 void destroyBuffer(VkDevice device, Buffer& buffer);
 
+// One buffer descriptor of a set: the whole buffer at `binding`.
+struct DescriptorEntry {
+    uint32_t binding;
+    VkDescriptorType type;
+    VkBuffer buffer;
+};
+
+// Points each entry's binding of `set` at its buffer (one descriptor each, VK_WHOLE_SIZE).
+void writeBufferDescriptors(VkDevice device, VkDescriptorSet set, const std::vector<DescriptorEntry>& entries);
+
 // The module of SPIR-V words (checked by the caller).
 VkShaderModule createShaderModule(VkDevice device, const std::vector<uint32_t>& words);
 
