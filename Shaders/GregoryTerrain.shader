@@ -20,7 +20,7 @@
 // selection and picking passes. Documentation~/index.md, "Pipelines", lists what each one supports.
 //
 // Keywords: the package's are exactly the shipped ones of Tools~/rig/shader_variants.txt
-// (GT_PAPER_MODE, GT_READBACK and GT_FACTOR_READBACK are rig-only and never declared here), all
+// (the rig-only ones belong to Tools~/rig/TerrainRig.hlsl and are never declared here), all
 // shader_feature_local except GT_SNOW, which SnowSimulator switches at run time, and GT_VERTEX_CACHE,
 // which GregoryTerrainRenderer switches (Vertex evaluation = Compute cache: the domain stage reads the
 // vertices TerrainCache.compute evaluated): both are multi_compile_local, so a player build keeps both

@@ -1,5 +1,5 @@
 // The vertex cache's two compute kernels (GT_VERTEX_CACHE; Documentation~/internals.md, "Vertex
-// cache"). Include a pipeline adapter first (with GT_ObjectToClipMatrix) (the rig: StandaloneAdapter through TerrainRig.hlsl;
+// cache"). Include a pipeline adapter first (with GT_ObjectToClipMatrix) (the rig: StandaloneAdapter through Tools~/rig/TerrainRig.hlsl;
 // Unity: TerrainCache.compute with LodCameraComputeAdapter.hlsl): the factors need GT_ObjectToClip
 // and GT_ScreenSize of the camera that decides the tessellation.
 //

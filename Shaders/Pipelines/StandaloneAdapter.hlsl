@@ -31,6 +31,9 @@
 //                                                  (the pipeline's packing), in GT_PASS_DEPTH_NORMALS
 //   GT_WRITE_DEPTH_COLOR      the depth-normals pass writes the depth as colour first (HDRP MSAA)
 //   float4 GT_EditorSelectionColor()               GT_PASS_SCENE_SELECTION / GT_PASS_SCENE_PICKING
+//   float4 GT_ObjectToShadowClip(float3 positionOS, float3 normalWS)
+//                             with GT_SHADOW_CASTER_NORMAL_BIAS: the shadow caster's vertex
+//                             position with the pipeline's normal bias (URP)
 //
 // Here the camera comes from the cbuffer RigCamera at b1 (internals.md, "Descriptor bindings").
 #ifndef GT_STANDALONE_ADAPTER_INCLUDED

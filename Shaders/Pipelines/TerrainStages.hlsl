@@ -9,7 +9,6 @@
 //   domain_shader  tess coordinate -> TerrainVertex (TerrainVertex.hlsl); GT_VERTEX_CACHE: the
 //                  vertex the compute pass stored (VertexCacheKernels.hlsl), transformed
 //   vert_fallback  no tessellator: a (F+1)^2 UV grid per instance (= tile), same TerrainVertex
-//   vert_static    rig only (GT_STATIC_MESH): the terrain's vertices baked once, the fallback's index grid
 //   frag           TerrainShading.hlsl: colour (forward), packed normal (GT_PASS_DEPTH_NORMALS),
 //                  depth (GT_PASS_DEPTH), nothing (GT_PASS_SHADOWCASTER), the editor's selection
 //                  colours (GT_PASS_SCENE_SELECTION, GT_PASS_SCENE_PICKING)
@@ -18,7 +17,12 @@
 //   GT_NOISE, GT_HEIGHT_COLOR, GT_SNOW                effects; off means not compiled at all
 //   GT_VERTEX_CACHE                                   vertices evaluated by a compute pre-pass
 //   GT_DEBUG_NORMALS, GT_DEBUG_PATCH_ID, GT_DEBUG_TESS_FACTOR   debug views
-//   GT_PAPER_MODE, GT_READBACK, GT_FACTOR_READBACK    off-Unity rig only
+//
+// Extension points for an entry file outside the package (the off-Unity rig,
+// Tools~/rig/TerrainRig.hlsl; internals.md, "Extension points"); no Unity build defines them:
+//   GT_EXTEND_DRAW_PATCHES, GT_EXTEND_VERTEX    TerrainVertex.hlsl
+//   GT_EXTEND_TILE_FACTORS    hull_const hands each patch's factors to ExtensionTileFactors
+//   GT_PARTITIONING           defined before this file: the hull stage's partitioning
 #ifndef GT_TERRAIN_STAGES_INCLUDED
 #define GT_TERRAIN_STAGES_INCLUDED
 
@@ -27,36 +31,28 @@
 #include "../Terrain/TileFactors.hlsl"
 #if defined(GT_VERTEX_CACHE)
     #include "../Cache/ClippedCell.hlsl"
-    #if defined(GT_PAPER_MODE) || defined(GT_READBACK) || defined(GT_FACTOR_READBACK)
-        #error "GT_VERTEX_CACHE draws tiles from the cache: no paper mode, and the cache itself is the readback"
+    #if defined(GT_EXTEND_DRAW_PATCHES) || defined(GT_EXTEND_VERTEX) || defined(GT_EXTEND_TILE_FACTORS)
+        #error "GT_VERTEX_CACHE draws tiles from the cache: no other draw patches, and the cache holds the vertices and factors"
     #endif
 #endif
 
-// The readback indexes vertices as an (F+1) x (F+1) grid, and the vertex cache (VertexCache.hlsl)
-// stores vertices at k / F: only integer partitioning makes those. Otherwise fractional_odd:
-// factors change continuously with the view, so no popping.
-#if defined(GT_READBACK) || defined(GT_VERTEX_CACHE)
-    #define GT_PARTITIONING "integer"
-#else
-    #define GT_PARTITIONING "fractional_odd"
-#endif
-
-#if defined(GT_FACTOR_READBACK)
-// Rig only (internals.md, "Rig-only readback"): hull_const writes each drawn patch's factors,
-// 2 float4 per patch: (edge[0..3]), (inside[0..1], culled 1/0, 0). Partitioning stays
-// fractional_odd: these are the factors the shipped shader uses.
-    #if !defined(GT_READBACK)
-RWStructuredBuffer<float4> _Readback GT_REGISTER(u0);
+// The vertex cache (VertexCache.hlsl) stores vertices at k / F: only integer partitioning makes
+// those. Otherwise fractional_odd: factors change continuously with the view, so no popping.
+#if !defined(GT_PARTITIONING)
+    #if defined(GT_VERTEX_CACHE)
+        #define GT_PARTITIONING "integer"
+    #else
+        #define GT_PARTITIONING "fractional_odd"
     #endif
 #endif
 
-// vert -> hull -> domain: one corner of a tile (or, in paper mode, of a Gregory patch's range).
+// vert -> hull -> domain: one corner of a tile (or of an extension's draw patch).
 struct TileCorner
 {
     // Surface point at the corner without noise, object space: input of the edge factors and of
     // the tile's bounding box.
     float3 positionOS : INTERNALTESSPOS;
-    uint drawPatch : TEXCOORD0;   // tile index, or the Gregory patch in paper mode
+    uint drawPatch : TEXCOORD0;   // tile index, or the extension's draw patch
 };
 
 // Quad domain: edge[0] is u = 0, edge[1] v = 0, edge[2] u = 1, edge[3] v = 1;
@@ -82,6 +78,12 @@ TileCorner vert(uint vertexID : SV_VertexID)
 #endif
     return o;
 }
+
+#if defined(GT_EXTEND_TILE_FACTORS)
+// Extension point: the entry file sees the factors hull_const returns for each drawn patch; it
+// defines this after including the stages.
+void ExtensionTileFactors(uint drawPatch, TileFactors f);
+#endif
 
 TileFactors ToTileFactors(TileFactorSet set)
 {
@@ -134,10 +136,8 @@ TileFactors hull_const(InputPatch<TileCorner, 4> corners)
 #else
     TileFactors f = ToTileFactors(TileFactorsOf(corners));
 #endif
-#if defined(GT_FACTOR_READBACK)
-    uint p = corners[0].drawPatch;
-    _Readback[2 * p + 0] = float4(f.edge[0], f.edge[1], f.edge[2], f.edge[3]);
-    _Readback[2 * p + 1] = float4(f.inside[0], f.inside[1], f.edge[0] == 0.0 ? 1.0 : 0.0, 0.0);
+#if defined(GT_EXTEND_TILE_FACTORS)
+    ExtensionTileFactors(corners[0].drawPatch, f);
 #endif
     return f;
 }
@@ -152,8 +152,8 @@ TileCorner hull_shader(InputPatch<TileCorner, 4> corners, uint id : SV_OutputCon
     return corners[id];
 }
 
-// The patch index comes from the control points (SV_VertexID / 4), not from SV_PrimitiveID: in
-// paper mode too, because SV_PrimitiveID restarts at 0 in every draw when the rig splits a draw
+// The patch index comes from the control points (SV_VertexID / 4), not from SV_PrimitiveID:
+// SV_PrimitiveID restarts at 0 in every draw when the rig splits a draw
 // (lavapipe's vertex limit) while SV_VertexID keeps counting from firstVertex.
 [domain("quad")]
 TerrainVaryings domain_shader(TileFactors factors, const OutputPatch<TileCorner, 4> corners,
@@ -188,26 +188,6 @@ TerrainVaryings vert_fallback(uint vertexID : SV_VertexID, uint instanceID : SV_
     uint2 grid = uint2(vertexID % (f + 1u), vertexID / (f + 1u));
     return TerrainVertex(instanceID, (float2)grid / (float)f, (float)f);
 }
-
-#if defined(GT_STATIC_MESH)
-// Rig only (gt bench, "the fair static mesh"): the terrain baked into the static mesh a user could
-// draw instead, drawn with the same frag. Per vertex 2 float4, (object position, 1), (object normal, 0)
-// (Tools~/rig/bench_static_mesh.py packs them from the GT_READBACK vertices of M x M tiles at the
-// uniform factor F = _Tess.w), read from the _ControlPoints binding through the fallback grid's
-// index buffer: vertex = instance (F+1)^2 + SV_VertexID. Nothing is evaluated.
-TerrainVaryings vert_static(uint vertexID : SV_VertexID, uint instanceID : SV_InstanceID)
-{
-    uint f = max((uint)UniformTessFactor(), 1u);
-    uint v = instanceID * (f + 1u) * (f + 1u) + vertexID;
-    TerrainVaryings o = (TerrainVaryings)0;
-    o.positionCS = GT_ObjectToClip(_ControlPoints[2u * v].xyz);
-    // The baked height (object y; the benchmark draws no range origin) and no colour noise: the frag
-    // does the same work, the vertex stage less than the terrain's.
-    float heightWeight = TerrainHeightWeight(_ControlPoints[2u * v].y, 0.0);
-    o.normalAndHeightWeight = PackNormalAndHeightWeight(GT_ObjectToWorldNormal(_ControlPoints[2u * v + 1u].xyz), heightWeight);
-    return o;
-}
-#endif
 
 // One fragment entry for every pass; the pass's GT_PASS_* define (set by GregoryTerrain.shader)
 // picks the output. Depth, shadow and editor passes evaluate no albedo, lighting or shadow lookup.

@@ -4,7 +4,7 @@
 // GetNormalizedScreenSpaceUV, InitializeInputDataFog, MixFog and, from SRP Core's Packing.hlsl,
 // PackNormalOctQuadEncode / PackFloat2To888), Lighting.hlsl (GetMainLight, Light.direction/.color/
 // .shadowAttenuation, GetScreenSpaceAmbientOcclusion) and Shadows.hlsl, which Lighting.hlsl includes
-// (_ShadowBias, TransformWorldToShadowCoord, the _MAIN_LIGHT_SHADOWS* and _SHADOWS_SOFT* keywords).
+// (_ShadowBias, ApplyShadowBias, TransformWorldToShadowCoord, the _MAIN_LIGHT_SHADOWS* and _SHADOWS_SOFT* keywords).
 // Compiled against URP 14's real ShaderLibrary off Unity by the rig (Tools~/rig/shaderlab.py).
 //
 // Object matrix: Graphics.RenderPrimitives gives the shader no object matrix (UNITY_MATRIX_M /
@@ -60,17 +60,10 @@ float3 ShadowCasterLightDirection(float3 positionWS)
     return _LightDirection;
     #endif
 }
-#endif
 
-float4 GT_ObjectToClip(float3 positionOS)
+// Clamped to the near plane as URP's ShadowCasterPass does, so geometry behind it still casts.
+float4 ShadowCasterWorldToClip(float3 positionWS)
 {
-    float3 positionWS = GT_ObjectToWorld(positionOS);
-#if defined(GT_PASS_SHADOWCASTER)
-    // URP's depth bias along the light (the x of _ShadowBias, as its ApplyShadowBias). The normal
-    // bias (y) needs the surface normal, which a clip-space transform does not get; the tile corners
-    // used for the tessellation factors have none either. Then clamp to the near plane as URP's
-    // ShadowCasterPass does, so geometry behind it still casts.
-    positionWS += ShadowCasterLightDirection(positionWS) * _ShadowBias.x;
     float4 positionCS = TransformWorldToHClip(positionWS);
     #if UNITY_REVERSED_Z
     positionCS.z = min(positionCS.z, UNITY_NEAR_CLIP_VALUE);
@@ -78,6 +71,28 @@ float4 GT_ObjectToClip(float3 positionOS)
     positionCS.z = max(positionCS.z, UNITY_NEAR_CLIP_VALUE);
     #endif
     return positionCS;
+}
+
+// The terrain's vertices in the shadow map: URP's ApplyShadowBias, as its ShadowCasterPass does
+// (depth bias _ShadowBias.x along the light, normal bias _ShadowBias.y along the normal, scaled by
+// 1 - N.L so surfaces facing the light move least). TerrainVaryingsOf calls this instead of
+// GT_ObjectToClip when the adapter defines GT_SHADOW_CASTER_NORMAL_BIAS.
+#define GT_SHADOW_CASTER_NORMAL_BIAS 1
+float4 GT_ObjectToShadowClip(float3 positionOS, float3 normalWS)
+{
+    float3 positionWS = GT_ObjectToWorld(positionOS);
+    return ShadowCasterWorldToClip(ApplyShadowBias(positionWS, normalWS, ShadowCasterLightDirection(positionWS)));
+}
+#endif
+
+float4 GT_ObjectToClip(float3 positionOS)
+{
+    float3 positionWS = GT_ObjectToWorld(positionOS);
+#if defined(GT_PASS_SHADOWCASTER)
+    // What the shadow pass's tessellation factors and culling see (tile corners and bounding boxes,
+    // which have no normal): the depth bias only. The vertices get the normal bias too
+    // (GT_ObjectToShadowClip); it moves them by a few shadow-map texels, well inside a tile.
+    return ShadowCasterWorldToClip(positionWS + ShadowCasterLightDirection(positionWS) * _ShadowBias.x);
 #else
     return TransformWorldToHClip(positionWS);
 #endif

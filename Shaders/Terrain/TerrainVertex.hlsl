@@ -83,23 +83,21 @@ TerrainSurfacePoint EvaluateSurfaceAt(TerrainPoint q)
     return s;
 }
 
-// drawPatch: the index of the patch being drawn: a tile (tile mode, tile = tj * M + ti) or, with
-// GT_PAPER_MODE, a Gregory patch. tess: the coordinate inside it, in [0, 1]^2.
+#if defined(GT_EXTEND_DRAW_PATCHES)
+// Extension point: the entry file's draw patches are not tiles (internals.md, "Extension points").
+// It defines these three after including the stages; EvaluateSurface and EvaluateCellSurface
+// return ExtensionSurface's point, and its positions are output absolute (no range origin).
+TerrainSurfacePoint ExtensionSurface(uint drawPatch, float2 tess);
+TerrainPoint ExtensionNoisePoint(TerrainSurfacePoint s);   // where the noise is read
+float2 ExtensionSnowPoint(TerrainSurfacePoint s);          // where the snow map is read
+#endif
+
+// drawPatch: the index of the patch being drawn: a tile, tile = tj * M + ti. tess: the coordinate
+// inside it, in [0, 1]^2.
 TerrainSurfacePoint EvaluateSurface(uint drawPatch, float2 tess)
 {
-#if defined(GT_PAPER_MODE)
-    // The paper's method: every Gregory patch is tessellated over the whole range (one "tile"),
-    // with the corrected eq. 10 and u, v clamped, so the part outside the patch collapses onto its
-    // boundary.
-    TerrainSurfacePoint s;
-    s.q = RangeToTerrainPoint(_Range, _RangeOrigin, 1.0, uint2(0, 0), tess);
-    s.patch = drawPatch;
-    s.region = PatchRegion(s.patch);
-    s.uv = saturate(PatchLocalUV(s.q, s.region));
-    float3 cp[20];
-    LoadGregoryPatch(s.patch, cp);
-    GregoryEvaluate(cp, s.uv, s.position, s.dPdu, s.dPdv);
-    return s;
+#if defined(GT_EXTEND_DRAW_PATCHES)
+    return ExtensionSurface(drawPatch, tess);
 #else
     // Integer tile index first: RangeCoordinate (LatticePoint) forms ti + s before dividing, so the
     // vertices of a shared tile edge get bit-identical q (watertight).
@@ -108,10 +106,10 @@ TerrainSurfacePoint EvaluateSurface(uint drawPatch, float2 tess)
 }
 
 // The surface at tess in the whole cell slot `slot` holds (CellToTerrainPoint): where the adaptive
-// factors sample it (TileFactors.hlsl). Paper mode has no cells: its draw patch's own point.
+// factors sample it (TileFactors.hlsl). Draw patches that are not tiles have no cells: their own point.
 TerrainSurfacePoint EvaluateCellSurface(uint slot, float2 tess)
 {
-#if defined(GT_PAPER_MODE)
+#if defined(GT_EXTEND_DRAW_PATCHES)
     return EvaluateSurface(slot, tess);
 #else
     return EvaluateSurfaceAt(CellToTerrainPoint(slot, tess));
@@ -120,10 +118,10 @@ TerrainSurfacePoint EvaluateCellSurface(uint slot, float2 tess)
 
 // The surface position a vertex outputs (before noise): S(q) itself, or, while a range origin is
 // set (deep zoom), S(q) - S(O) from precise differences (RelativeSurface.hlsl, precision.md); the
-// renderer then adds S(O) in the object-to-world transform. Paper mode always outputs S(q).
+// renderer then adds S(O) in the object-to-world transform.
 float3 OutputSurfacePosition(TerrainSurfacePoint s)
 {
-#if defined(GT_PAPER_MODE)
+#if defined(GT_EXTEND_DRAW_PATCHES)
     return s.position;
 #else
     [branch] if (RelativeSurfaceIsActive(_RangeOrigin))
@@ -131,22 +129,6 @@ float3 OutputSurfacePosition(TerrainSurfacePoint s)
     return s.position;
 #endif
 }
-
-#if defined(GT_READBACK)
-// Rig only (internals.md, "Rig-only readback"): 3 float4 per vertex at the index of an integer
-// uniform factor F. The domain stage may run more than once per vertex; it writes the same values.
-RWStructuredBuffer<float4> _Readback GT_REGISTER(u0);
-
-void WriteReadback(uint drawPatch, float2 tess, float3 positionOS, float3 normalOS, float2 q, float2 uv)
-{
-    uint f = (uint)UniformTessFactor();
-    uint2 grid = (uint2)round(tess * (float)f);
-    uint vertex = drawPatch * (f + 1) * (f + 1) + grid.y * (f + 1) + grid.x;
-    _Readback[3 * vertex + 0] = float4(positionOS, 1.0);
-    _Readback[3 * vertex + 1] = float4(normalOS, 0.0);
-    _Readback[3 * vertex + 2] = float4(q, uv);
-}
-#endif
 
 // A terrain vertex before the camera: what the domain stage computes per vertex, and what the
 // vertex cache (VertexCache.hlsl) stores. Object space is Unity's Y-up (x, z, y).
@@ -169,19 +151,15 @@ TerrainVertexAttributes FinishTerrainVertex(TerrainSurfacePoint s)
     float noiseHeight = 0.0;   // the absolute p(q): the height of the plain path, and the height colour
 
 #if defined(GT_NOISE)
-    // Noise lives on the global point, so it is continuous across patches and tiles. In paper mode
-    // a clamped vertex sits on the patch boundary, so it takes the noise of that boundary point.
+    // Noise lives on the global point, so it is continuous across patches and tiles.
+    #if defined(GT_EXTEND_DRAW_PATCHES)
+    TerrainPoint noisePoint = ExtensionNoisePoint(s);
+    #else
     TerrainPoint noisePoint = s.q;
-    #if defined(GT_PAPER_MODE)
-    if (any(s.uv != PatchLocalUV(s.q, s.region)))
-    {
-        noisePoint.originHi = float2(0.0, 0.0);
-        noisePoint.local = lerp(s.region.xy, s.region.zw, s.uv);
-    }
     #endif
     float octaves = OctaveCount(TileLayoutWidth(), NoiseVerticesAcross(), NoiseSettings(), MaxNoiseOctaves());
     float2 gradient;   // d(noise)/dq
-    #if !defined(GT_PAPER_MODE)
+    #if !defined(GT_EXTEND_DRAW_PATCHES)
     // Deep zoom: p(q) - p(O) from precise differences, like the surface; the renderer adds p(O).
     [branch] if (RelativeSurfaceIsActive(_RangeOrigin))
     {
@@ -208,10 +186,9 @@ TerrainVertexAttributes FinishTerrainVertex(TerrainSurfacePoint s)
     a.snowDepth = 0.0;
 #if defined(GT_SNOW)
     // After the noise: snow lies on the detailed surface. The normal stays the terrain's: the map's
-    // bilinear slope (up to cap / cell size) is no surface normal. In paper mode a clamped vertex
-    // reads the map at the patch point it collapsed onto.
-    #if defined(GT_PAPER_MODE)
-    float2 snowPoint = lerp(s.region.xy, s.region.zw, s.uv);
+    // bilinear slope (up to cap / cell size) is no surface normal.
+    #if defined(GT_EXTEND_DRAW_PATCHES)
+    float2 snowPoint = ExtensionSnowPoint(s);
     #else
     float2 snowPoint = TerrainPointApprox(s.q);
     #endif
@@ -232,13 +209,19 @@ TerrainVertexAttributes FinishTerrainVertex(TerrainSurfacePoint s)
     return a;
 }
 
+#if defined(GT_EXTEND_VERTEX)
+// Extension point (internals.md, "Extension points"): the entry file sees every vertex
+// EvaluateTerrainVertex computes; it defines this after including the stages.
+void ExtensionVertex(uint drawPatch, float2 tess, TerrainSurfacePoint s, TerrainVertexAttributes a);
+#endif
+
 // Everything TerrainVertex computes before the camera.
 TerrainVertexAttributes EvaluateTerrainVertex(uint drawPatch, float2 tess)
 {
     TerrainSurfacePoint s = EvaluateSurface(drawPatch, tess);
     TerrainVertexAttributes a = FinishTerrainVertex(s);
-#if defined(GT_READBACK)
-    WriteReadback(drawPatch, tess, a.positionOS, a.normalOS, TerrainPointApprox(s.q), s.uv);
+#if defined(GT_EXTEND_VERTEX)
+    ExtensionVertex(drawPatch, tess, s, a);
 #endif
     return a;
 }
@@ -278,7 +261,12 @@ float VaryingsHeightWeight(TerrainVaryings i) { return i.normalAndHeightWeight.z
 TerrainVaryings TerrainVaryingsOf(float3 positionOS, float3 normalAndHeightWeight, float snowDepth, uint patch, float tessFactor)
 {
     TerrainVaryings o;
+#if defined(GT_SHADOW_CASTER_NORMAL_BIAS)
+    // The adapter's shadow caster also offsets along the normal (URP's normal bias).
+    o.positionCS = GT_ObjectToShadowClip(positionOS, LambertDecodeNormal(normalAndHeightWeight.xy));
+#else
     o.positionCS = GT_ObjectToClip(positionOS);
+#endif
     o.normalAndHeightWeight = normalAndHeightWeight;
 #if defined(GT_VARYINGS_POSITION_WS)
     o.positionWS = GT_ObjectToWorld(positionOS);

@@ -240,9 +240,5 @@ namespace GregoryTerrain.Tests
         public void ColourNotFinite() =>
             Expect<ArgumentException>(() => TerrainParams.Create(Grid(), TerrainRange.full, RangeOrigin.zero, TessellationSettings.Default,
                 NoiseSettings.Default, new HeightColorSettings(0.25f, 0.1f, 4f), new Float3(float.NaN, 0, 0), new Float3(1, 1, 1), 0f), "colorLow", "NaN");
-
-        [Test]
-        public void JitterMeasureWithBadWidth() =>
-            Expect<ArgumentException>(() => ZoomJitter.Measure(Grid(), VertexPath.Shipped, new Double2(0.5, 0.5), 2.0, 800, 4, 8, 0.25, out _), "width", "2");
     }
 }

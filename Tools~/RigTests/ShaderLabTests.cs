@@ -21,7 +21,6 @@ namespace GregoryTerrain.Rig.Tests
         static readonly string[] RuntimeToggledKeywords = { "GT_SNOW", "GT_VERTEX_CACHE" };
         /// <summary>The renderer's Vertex evaluation switch: declared by the tessellated passes only.</summary>
         const string VertexCacheKeyword = "GT_VERTEX_CACHE";
-        static readonly string[] RigOnlyKeywords = { "GT_PAPER_MODE", "GT_READBACK", "GT_FACTOR_READBACK" };
         static readonly string[] ForwardModes = { "UniversalForwardOnly", "ForwardOnly", "ForwardBase" };
 
         sealed class PassInfo
@@ -126,7 +125,7 @@ namespace GregoryTerrain.Rig.Tests
             // GT_SNOW (SnowSimulator's keyword) is declared by the .shader; the snow rendering branch
             // lists it in shader_variants.txt too, so after that merge the union changes nothing.
             // GT_VERTEX_CACHE (the renderer's) likewise, once the rig's cache variants are listed.
-            var shipped = new HashSet<string>(listed.Except(RigOnlyKeywords)) { "GT_SNOW", VertexCacheKeyword };
+            var shipped = new HashSet<string>(listed.Except(RigKeywords.RigOnly)) { "GT_SNOW", VertexCacheKeyword };
             Assert.That(listed, Does.Contain("GT_PAPER_MODE").And.Contain("GT_READBACK"), "rig-only keywords are in the list");
             Assert.That(shipped, Is.EquivalentTo(new[] { "GT_NOISE", "GT_HEIGHT_COLOR", "GT_SNOW", VertexCacheKeyword, "GT_DEBUG_NORMALS", "GT_DEBUG_PATCH_ID", "GT_DEBUG_TESS_FACTOR" }));
 
@@ -159,7 +158,7 @@ namespace GregoryTerrain.Rig.Tests
                         Assert.That(p.Keywords, Is.EquivalentTo(s.Tessellated ? new[] { "GT_NOISE", "GT_SNOW", VertexCacheKeyword } : new[] { "GT_NOISE", "GT_SNOW" }), where);
                     Assert.That(p.Pragmas.Count(a => a.SequenceEqual(new[] { "multi_compile_local", "_", VertexCacheKeyword })), Is.EqualTo(s.Tessellated ? 1 : 0),
                         where + ": GT_VERTEX_CACHE as its own multi_compile_local set, in tessellated passes only");
-                    foreach (string rigOnly in RigOnlyKeywords)
+                    foreach (string rigOnly in RigKeywords.RigOnly)
                         Assert.That(Regex.IsMatch(p.Program, @"\b" + rigOnly + @"\b"), Is.False, where + ": mentions " + rigOnly);
                 }
             // The debug views replace each other: one keyword set, so at most one is on.

@@ -48,7 +48,7 @@ make_plan() {  # make_plan DIR
   # The fair static mesh's vertex stage (rig only, GT_STATIC_MESH): reads baked vertices, same frag
   # (noise+height_color's, so GT_HEIGHT_COLOR: it hands the frag the baked height).
   glslangValidator -D -V -S vert -e vert_static --hlsl-iomap --shift-cbuffer-binding 0 --shift-texture-binding 2 \
-    --shift-UAV-binding 5 -DGT_STATIC_MESH -DGT_HEIGHT_COLOR -o "$dir/spirv/static.spv" "$PKG_DIR/Shaders/Rig/TerrainRig.hlsl" >/dev/null
+    --shift-UAV-binding 5 -DGT_STATIC_MESH -DGT_HEIGHT_COLOR -o "$dir/spirv/static.spv" "$RIG_DIR/TerrainRig.hlsl" >/dev/null
   # The tessellator's floor (rig only): the fair variant's tiles with a domain stage that evaluates nothing.
   glslangValidator -D -V -S tese -e domain_floor --hlsl-iomap --shift-cbuffer-binding 0 --shift-texture-binding 2 \
     --shift-UAV-binding 5 -DGT_NOISE -DGT_HEIGHT_COLOR -o "$dir/spirv/floor.spv" "$RIG_DIR/bench_floor.hlsl" >/dev/null

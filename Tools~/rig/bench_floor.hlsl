@@ -4,7 +4,7 @@
 // has, corner c at tess (c & 1, c >> 1)), normal up, height weight from that blend. What the
 // tessellator, the rasteriser and the frag cost alone; every path is reported as a ratio to it.
 // Compiled by Tools~/rig/bench.sh with the variant's keywords, entry point domain_floor.
-#include "../../Shaders/Rig/TerrainRig.hlsl"
+#include "TerrainRig.hlsl"
 
 [domain("quad")]
 TerrainVaryings domain_floor(TileFactors factors, const OutputPatch<TileCorner, 4> corners,

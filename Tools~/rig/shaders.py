@@ -19,7 +19,7 @@ from concurrent.futures import ThreadPoolExecutor
 
 RIG_DIR = os.path.dirname(os.path.abspath(__file__))
 PKG_DIR = os.path.dirname(os.path.dirname(RIG_DIR))
-ENTRY_FILE = os.path.join(PKG_DIR, "Shaders", "Rig", "TerrainRig.hlsl")
+ENTRY_FILE = os.path.join(RIG_DIR, "TerrainRig.hlsl")
 VARIANTS_FILE = os.path.join(RIG_DIR, "shader_variants.txt")
 
 # (name, glslang stage, HLSL entry point). "fallback" is the no-tessellator vertex stage.

@@ -6,45 +6,13 @@
 
 namespace {
 
-void Check(VkResult r, const char* what)
-{
-    if (r != VK_SUCCESS) throw std::runtime_error(std::string(what) + " failed (VkResult " + std::to_string(r) + ")");
-}
-
-VkInstance CreateInstance()
-{
-    VkApplicationInfo app{VK_STRUCTURE_TYPE_APPLICATION_INFO};
-    app.pApplicationName = "gt-compute";
-    app.apiVersion = VK_API_VERSION_1_1;
-    VkInstanceCreateInfo ci{VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO};
-    ci.pApplicationInfo = &app;
-    VkInstance instance = VK_NULL_HANDLE;
-    Check(vkCreateInstance(&ci, nullptr, &instance), "vkCreateInstance");
-    return instance;
-}
-
-std::vector<VkPhysicalDevice> PhysicalDevices(VkInstance instance)
-{
-    uint32_t n = 0;
-    Check(vkEnumeratePhysicalDevices(instance, &n, nullptr), "vkEnumeratePhysicalDevices");
-    std::vector<VkPhysicalDevice> devices(n);
-    Check(vkEnumeratePhysicalDevices(instance, &n, devices.data()), "vkEnumeratePhysicalDevices");
-    return devices;
-}
-
 // The first queue family with compute; UINT32_MAX if none.
 uint32_t ComputeFamily(VkPhysicalDevice pd, uint32_t* timestampBits)
 {
-    uint32_t n = 0;
-    vkGetPhysicalDeviceQueueFamilyProperties(pd, &n, nullptr);
-    std::vector<VkQueueFamilyProperties> families(n);
-    vkGetPhysicalDeviceQueueFamilyProperties(pd, &n, families.data());
-    for (uint32_t i = 0; i < n; ++i)
-        if (families[i].queueFlags & VK_QUEUE_COMPUTE_BIT) {
-            *timestampBits = families[i].timestampValidBits;
-            return i;
-        }
-    return UINT32_MAX;
+    int family = gt::queueFamilyWith(pd, VK_QUEUE_COMPUTE_BIT);
+    if (family < 0) return UINT32_MAX;
+    *timestampBits = gt::queueFamilies(pd)[family].timestampValidBits;
+    return static_cast<uint32_t>(family);
 }
 
 VkMemoryBarrier FullBarrier()
@@ -60,8 +28,8 @@ VkMemoryBarrier FullBarrier()
 
 void Gpu::ListDevices()
 {
-    VkInstance instance = CreateInstance();
-    for (VkPhysicalDevice pd : PhysicalDevices(instance)) {
+    VkInstance instance = gt::createInstance("gt-compute");
+    for (VkPhysicalDevice pd : gt::physicalDevices(instance)) {
         VkPhysicalDeviceProperties p;
         vkGetPhysicalDeviceProperties(pd, &p);
         std::printf("device %s\n", p.deviceName);
@@ -71,9 +39,9 @@ void Gpu::ListDevices()
 
 Gpu::Gpu(const std::string& nameSubstring)
 {
-    instance_ = CreateInstance();
+    instance_ = gt::createInstance("gt-compute");
     std::string seen;
-    for (VkPhysicalDevice pd : PhysicalDevices(instance_)) {
+    for (VkPhysicalDevice pd : gt::physicalDevices(instance_)) {
         VkPhysicalDeviceProperties p;
         vkGetPhysicalDeviceProperties(pd, &p);
         seen += std::string(seen.empty() ? "" : ", ") + p.deviceName;
@@ -91,7 +59,7 @@ Gpu::Gpu(const std::string& nameSubstring)
     if (physical_ == VK_NULL_HANDLE)
         throw std::runtime_error("no Vulkan device with a compute queue matches '" + nameSubstring + "' (devices: " +
                                  (seen.empty() ? "none" : seen) + ")");
-    vkGetPhysicalDeviceMemoryProperties(physical_, &memoryProps_);
+    vkGetPhysicalDeviceMemoryProperties(physical_, &heap_.memory);
 
     float priority = 1.0f;
     VkDeviceQueueCreateInfo qci{VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};
@@ -101,8 +69,9 @@ Gpu::Gpu(const std::string& nameSubstring)
     VkDeviceCreateInfo dci{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO};
     dci.queueCreateInfoCount = 1;
     dci.pQueueCreateInfos = &qci;
-    Check(vkCreateDevice(physical_, &dci, nullptr, &device_), "vkCreateDevice");
+    GT_VK(vkCreateDevice(physical_, &dci, nullptr, &device_));
     vkGetDeviceQueue(device_, queueFamily_, 0, &queue_);
+    heap_.device = device_;
 }
 
 Gpu::~Gpu()
@@ -110,45 +79,15 @@ Gpu::~Gpu()
     if (device_ != VK_NULL_HANDLE) {
         vkDeviceWaitIdle(device_);
         for (GpuBuffer& b : buffers_) {
-            vkDestroyBuffer(device_, b.buffer, nullptr);
-            vkFreeMemory(device_, b.memory, nullptr);
-            vkDestroyBuffer(device_, b.staging, nullptr);
-            vkFreeMemory(device_, b.stagingMemory, nullptr);
+            gt::destroyBuffer(device_, b.device);
+            gt::destroyBuffer(device_, b.staging);
         }
         vkDestroyDevice(device_, nullptr);
     }
     if (instance_ != VK_NULL_HANDLE) vkDestroyInstance(instance_, nullptr);
 }
 
-uint32_t Gpu::MemoryType(uint32_t typeBits, VkMemoryPropertyFlags want) const
-{
-    for (uint32_t i = 0; i < memoryProps_.memoryTypeCount; ++i)
-        if ((typeBits & (1u << i)) && (memoryProps_.memoryTypes[i].propertyFlags & want) == want) return i;
-    return UINT32_MAX;
-}
-
-void Gpu::CreateBuffer(VkDeviceSize size, VkBufferUsageFlags usage, VkMemoryPropertyFlags props, VkBuffer* buffer,
-                       VkDeviceMemory* memory, bool* coherent)
-{
-    VkBufferCreateInfo bci{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO};
-    bci.size = size;
-    bci.usage = usage;
-    bci.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
-    Check(vkCreateBuffer(device_, &bci, nullptr, buffer), "vkCreateBuffer");
-    VkMemoryRequirements req;
-    vkGetBufferMemoryRequirements(device_, *buffer, &req);
-    uint32_t type = MemoryType(req.memoryTypeBits, props | (coherent ? VK_MEMORY_PROPERTY_HOST_COHERENT_BIT : 0));
-    if (coherent) *coherent = type != UINT32_MAX;
-    if (type == UINT32_MAX) type = MemoryType(req.memoryTypeBits, props);
-    if (type == UINT32_MAX) throw std::runtime_error("no memory type for a buffer of " + std::to_string(size) + " bytes");
-    VkMemoryAllocateInfo mai{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
-    mai.allocationSize = req.size;
-    mai.memoryTypeIndex = type;
-    Check(vkAllocateMemory(device_, &mai, nullptr, memory), "vkAllocateMemory");
-    Check(vkBindBufferMemory(device_, *buffer, *memory, 0), "vkBindBufferMemory");
-}
-
-void Gpu::AddBuffer(const BufferArg& arg, const std::vector<char>& contents)
+void Gpu::AddBuffer(const BufferArg& arg, const std::vector<uint8_t>& contents)
 {
     GpuBuffer b;
     b.binding = arg.binding;
@@ -157,18 +96,19 @@ void Gpu::AddBuffer(const BufferArg& arg, const std::vector<char>& contents)
     if (b.size == 0) throw std::runtime_error("binding " + std::to_string(arg.binding) + ": empty buffer");
     VkBufferUsageFlags usage = VK_BUFFER_USAGE_TRANSFER_DST_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT |
                                (arg.uniform ? VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT : VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
-    CreateBuffer(b.size, usage, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, &b.buffer, &b.memory);
-    bool coherent = true;
-    CreateBuffer(b.size, VK_BUFFER_USAGE_TRANSFER_SRC_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-                 VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT, &b.staging, &b.stagingMemory, &coherent);
+    b.device = gt::createBuffer(heap_, b.size, usage, {VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT});
+    // Coherent staging when there is some; otherwise flushed here and invalidated after the run.
+    b.staging = gt::createBuffer(heap_, b.size, VK_BUFFER_USAGE_TRANSFER_SRC_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                                 {VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT,
+                                  VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT});
+    const bool coherent = (b.staging.memoryFlags & VK_MEMORY_PROPERTY_HOST_COHERENT_BIT) != 0;
     stagingCoherent_ = stagingCoherent_ && coherent;
-    Check(vkMapMemory(device_, b.stagingMemory, 0, VK_WHOLE_SIZE, 0, &b.mapped), "vkMapMemory");
-    std::memcpy(b.mapped, contents.data(), contents.size());
+    std::memcpy(b.staging.mapped, contents.data(), contents.size());
     if (!coherent) {
         VkMappedMemoryRange range{VK_STRUCTURE_TYPE_MAPPED_MEMORY_RANGE};
-        range.memory = b.stagingMemory;
+        range.memory = b.staging.memory;
         range.size = VK_WHOLE_SIZE;
-        Check(vkFlushMappedMemoryRanges(device_, 1, &range), "vkFlushMappedMemoryRanges");
+        GT_VK(vkFlushMappedMemoryRanges(device_, 1, &range));
     }
     buffers_.push_back(b);
 }
@@ -194,19 +134,15 @@ RunResult Gpu::Run(const std::vector<uint32_t>& spirv, const std::string& entry,
     dlci.bindingCount = static_cast<uint32_t>(layoutBindings.size());
     dlci.pBindings = layoutBindings.data();
     VkDescriptorSetLayout setLayout;
-    Check(vkCreateDescriptorSetLayout(device_, &dlci, nullptr, &setLayout), "vkCreateDescriptorSetLayout");
+    GT_VK(vkCreateDescriptorSetLayout(device_, &dlci, nullptr, &setLayout));
 
     VkPipelineLayoutCreateInfo plci{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
     plci.setLayoutCount = 1;
     plci.pSetLayouts = &setLayout;
     VkPipelineLayout pipelineLayout;
-    Check(vkCreatePipelineLayout(device_, &plci, nullptr, &pipelineLayout), "vkCreatePipelineLayout");
+    GT_VK(vkCreatePipelineLayout(device_, &plci, nullptr, &pipelineLayout));
 
-    VkShaderModuleCreateInfo smci{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
-    smci.codeSize = spirv.size() * sizeof(uint32_t);
-    smci.pCode = spirv.data();
-    VkShaderModule module;
-    Check(vkCreateShaderModule(device_, &smci, nullptr, &module), "vkCreateShaderModule");
+    VkShaderModule module = gt::createShaderModule(device_, spirv);
 
     VkComputePipelineCreateInfo cpci{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
     cpci.stage.sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO;
@@ -215,7 +151,7 @@ RunResult Gpu::Run(const std::vector<uint32_t>& spirv, const std::string& entry,
     cpci.stage.pName = entry.c_str();
     cpci.layout = pipelineLayout;
     VkPipeline pipeline;
-    Check(vkCreateComputePipelines(device_, VK_NULL_HANDLE, 1, &cpci, nullptr, &pipeline), "vkCreateComputePipelines");
+    GT_VK(vkCreateComputePipelines(device_, VK_NULL_HANDLE, 1, &cpci, nullptr, &pipeline));
 
     std::vector<VkDescriptorPoolSize> sizes;
     if (uniforms) sizes.push_back({VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, uniforms});
@@ -225,52 +161,36 @@ RunResult Gpu::Run(const std::vector<uint32_t>& spirv, const std::string& entry,
     dpci.poolSizeCount = static_cast<uint32_t>(sizes.size());
     dpci.pPoolSizes = sizes.data();
     VkDescriptorPool pool;
-    Check(vkCreateDescriptorPool(device_, &dpci, nullptr, &pool), "vkCreateDescriptorPool");
+    GT_VK(vkCreateDescriptorPool(device_, &dpci, nullptr, &pool));
     VkDescriptorSetAllocateInfo dsai{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
     dsai.descriptorPool = pool;
     dsai.descriptorSetCount = 1;
     dsai.pSetLayouts = &setLayout;
     VkDescriptorSet set;
-    Check(vkAllocateDescriptorSets(device_, &dsai, &set), "vkAllocateDescriptorSets");
-    std::vector<VkDescriptorBufferInfo> infos(buffers_.size());
-    std::vector<VkWriteDescriptorSet> writes(buffers_.size());
-    for (size_t i = 0; i < buffers_.size(); ++i) {
-        infos[i] = {buffers_[i].buffer, 0, VK_WHOLE_SIZE};
-        writes[i] = {VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
-        writes[i].dstSet = set;
-        writes[i].dstBinding = buffers_[i].binding;
-        writes[i].descriptorCount = 1;
-        writes[i].descriptorType = layoutBindings[i].descriptorType;
-        writes[i].pBufferInfo = &infos[i];
-    }
-    vkUpdateDescriptorSets(device_, static_cast<uint32_t>(writes.size()), writes.data(), 0, nullptr);
+    GT_VK(vkAllocateDescriptorSets(device_, &dsai, &set));
+    std::vector<gt::DescriptorEntry> entries;
+    for (size_t i = 0; i < buffers_.size(); ++i)
+        entries.push_back({buffers_[i].binding, layoutBindings[i].descriptorType, buffers_[i].device.buffer});
+    gt::writeBufferDescriptors(device_, set, entries);
 
     VkQueryPool queries = VK_NULL_HANDLE;
     if (timestamps) {
         VkQueryPoolCreateInfo qpci{VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};
         qpci.queryType = VK_QUERY_TYPE_TIMESTAMP;
         qpci.queryCount = 2 * repeat;
-        Check(vkCreateQueryPool(device_, &qpci, nullptr, &queries), "vkCreateQueryPool");
+        GT_VK(vkCreateQueryPool(device_, &qpci, nullptr, &queries));
     }
 
-    VkCommandPoolCreateInfo cpoolci{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
-    cpoolci.queueFamilyIndex = queueFamily_;
-    VkCommandPool cmdPool;
-    Check(vkCreateCommandPool(device_, &cpoolci, nullptr, &cmdPool), "vkCreateCommandPool");
-    VkCommandBufferAllocateInfo cbai{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
-    cbai.commandPool = cmdPool;
-    cbai.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
-    cbai.commandBufferCount = 1;
-    VkCommandBuffer cmd;
-    Check(vkAllocateCommandBuffers(device_, &cbai, &cmd), "vkAllocateCommandBuffers");
+    VkCommandPool cmdPool = gt::createCommandPool(device_, queueFamily_, 0);
+    VkCommandBuffer cmd = gt::allocateCommandBuffer(device_, cmdPool);
 
     VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
     begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
-    Check(vkBeginCommandBuffer(cmd, &begin), "vkBeginCommandBuffer");
+    GT_VK(vkBeginCommandBuffer(cmd, &begin));
     if (timestamps) vkCmdResetQueryPool(cmd, queries, 0, 2 * repeat);
     for (const GpuBuffer& b : buffers_) {
         VkBufferCopy region{0, 0, b.size};
-        vkCmdCopyBuffer(cmd, b.staging, b.buffer, 1, &region);
+        vkCmdCopyBuffer(cmd, b.staging.buffer, b.device.buffer, 1, &region);
     }
     VkMemoryBarrier barrier = FullBarrier();
     vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, 0, 1, &barrier, 0,
@@ -289,27 +209,26 @@ RunResult Gpu::Run(const std::vector<uint32_t>& spirv, const std::string& entry,
     for (const GpuBuffer& b : buffers_) {
         if (b.uniform) continue;
         VkBufferCopy region{0, 0, b.size};
-        vkCmdCopyBuffer(cmd, b.buffer, b.staging, 1, &region);
+        vkCmdCopyBuffer(cmd, b.device.buffer, b.staging.buffer, 1, &region);
     }
     vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 1, &barrier, 0, nullptr, 0,
                          nullptr);
-    Check(vkEndCommandBuffer(cmd), "vkEndCommandBuffer");
+    GT_VK(vkEndCommandBuffer(cmd));
 
     VkFenceCreateInfo fci{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
     VkFence fence;
-    Check(vkCreateFence(device_, &fci, nullptr, &fence), "vkCreateFence");
+    GT_VK(vkCreateFence(device_, &fci, nullptr, &fence));
     VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};
     submit.commandBufferCount = 1;
     submit.pCommandBuffers = &cmd;
-    Check(vkQueueSubmit(queue_, 1, &submit, fence), "vkQueueSubmit");
-    Check(vkWaitForFences(device_, 1, &fence, VK_TRUE, UINT64_MAX), "vkWaitForFences");
+    GT_VK(vkQueueSubmit(queue_, 1, &submit, fence));
+    GT_VK(vkWaitForFences(device_, 1, &fence, VK_TRUE, UINT64_MAX));
 
     RunResult result;
     if (timestamps) {
         std::vector<uint64_t> ticks(2 * repeat);
-        Check(vkGetQueryPoolResults(device_, queries, 0, 2 * repeat, ticks.size() * sizeof(uint64_t), ticks.data(),
-                                    sizeof(uint64_t), VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT),
-              "vkGetQueryPoolResults");
+        GT_VK(vkGetQueryPoolResults(device_, queries, 0, 2 * repeat, ticks.size() * sizeof(uint64_t), ticks.data(),
+                                    sizeof(uint64_t), VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT));
         uint64_t mask = timestampBits_ >= 64 ? ~0ull : ((1ull << timestampBits_) - 1);
         for (uint32_t k = 0; k < repeat; ++k) {
             uint64_t d = (ticks[2 * k + 1] - ticks[2 * k]) & mask;  // wraps correctly within the valid bits
@@ -319,9 +238,9 @@ RunResult Gpu::Run(const std::vector<uint32_t>& spirv, const std::string& entry,
     if (!stagingCoherent_) {
         for (const GpuBuffer& b : buffers_) {
             VkMappedMemoryRange range{VK_STRUCTURE_TYPE_MAPPED_MEMORY_RANGE};
-            range.memory = b.stagingMemory;
+            range.memory = b.staging.memory;
             range.size = VK_WHOLE_SIZE;
-            Check(vkInvalidateMappedMemoryRanges(device_, 1, &range), "vkInvalidateMappedMemoryRanges");
+            GT_VK(vkInvalidateMappedMemoryRanges(device_, 1, &range));
         }
     }
 
@@ -336,12 +255,12 @@ RunResult Gpu::Run(const std::vector<uint32_t>& spirv, const std::string& entry,
     return result;
 }
 
-std::vector<char> Gpu::Read(uint32_t binding) const
+std::vector<uint8_t> Gpu::Read(uint32_t binding) const
 {
     for (const GpuBuffer& b : buffers_)
         if (b.binding == binding) {
-            const char* p = static_cast<const char*>(b.mapped);
-            return std::vector<char>(p, p + b.size);
+            const uint8_t* p = static_cast<const uint8_t*>(b.staging.mapped);
+            return std::vector<uint8_t>(p, p + b.size);
         }
     throw std::runtime_error("no buffer at binding " + std::to_string(binding));
 }

@@ -7,16 +7,14 @@
 #include <vector>
 
 #include "cli.h"
+#include "vkcommon.hpp"
 
 struct GpuBuffer {
     uint32_t binding = 0;
     bool uniform = false;
-    VkDeviceSize size = 0;
-    VkBuffer buffer = VK_NULL_HANDLE;        // device-local, what the kernel sees
-    VkDeviceMemory memory = VK_NULL_HANDLE;
-    VkBuffer staging = VK_NULL_HANDLE;       // host-visible, for upload and readback
-    VkDeviceMemory stagingMemory = VK_NULL_HANDLE;
-    void* mapped = nullptr;
+    VkDeviceSize size = 0;      // the argument's bytes (the buffers may be larger: at least 16)
+    gt::Buffer device;          // device-local, what the kernel sees
+    gt::Buffer staging;         // host-visible, kept mapped, for upload and readback
 };
 
 struct RunResult {
@@ -38,20 +36,16 @@ public:
     const std::string& DeviceName() const { return deviceName_; }
 
     // Creates the buffer of one --uniform/--buffer/--zeros argument and fills its staging copy.
-    void AddBuffer(const BufferArg& arg, const std::vector<char>& contents);
+    void AddBuffer(const BufferArg& arg, const std::vector<uint8_t>& contents);
 
     // Builds the pipeline, records upload, `repeat` dispatches (barrier between), readback; waits.
     RunResult Run(const std::vector<uint32_t>& spirv, const std::string& entry, const uint32_t groups[3],
                   uint32_t repeat, bool timestamps);
 
     // The bytes of storage buffer `binding` after Run.
-    std::vector<char> Read(uint32_t binding) const;
+    std::vector<uint8_t> Read(uint32_t binding) const;
 
 private:
-    uint32_t MemoryType(uint32_t typeBits, VkMemoryPropertyFlags want) const;
-    void CreateBuffer(VkDeviceSize size, VkBufferUsageFlags usage, VkMemoryPropertyFlags props,
-                      VkBuffer* buffer, VkDeviceMemory* memory, bool* coherent = nullptr);
-
     VkInstance instance_ = VK_NULL_HANDLE;
     VkPhysicalDevice physical_ = VK_NULL_HANDLE;
     VkDevice device_ = VK_NULL_HANDLE;
@@ -60,7 +54,7 @@ private:
     uint32_t timestampBits_ = 0;
     float timestampPeriodNs_ = 1.0f;
     std::string deviceName_;
-    VkPhysicalDeviceMemoryProperties memoryProps_{};
+    gt::BufferHeap heap_;  // device_ and its memory types
     std::vector<GpuBuffer> buffers_;
     bool stagingCoherent_ = true;
 };

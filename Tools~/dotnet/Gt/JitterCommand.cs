@@ -5,7 +5,7 @@ namespace GregoryTerrain.Rig
 {
     /// <summary>
     /// gt-cli jitter: the deep-zoom table of precision.md. For each range width, the vertex jitter
-    /// (pixels; Core.ZoomJitter defines it) of the plain float path, the origin-only path and the
+    /// (pixels; ZoomJitter.cs here defines it) of the plain float path, the origin-only path and the
     /// shipped path, on the CPU with the float arithmetic the shaders use.
     /// Options: --grid FILE (default: the demo grid fitted here), --center x,y, --widths w1,w2,...,
     /// --pixels W (800), --tiles M (8), --factor F (16), --pan P (0.25 pixel),

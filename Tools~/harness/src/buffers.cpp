@@ -1,53 +1,20 @@
 #include "buffers.hpp"
 
-#include <cstdio>
 #include <cstring>
-#include <fstream>
-
-#include "check.hpp"
 
 namespace gt {
 
 namespace {
 
-int findMemoryType(const Gpu& gpu, uint32_t typeBits, VkMemoryPropertyFlags required) {
-    for (uint32_t i = 0; i < gpu.memory.memoryTypeCount; ++i)
-        if ((typeBits & (1u << i)) && (gpu.memory.memoryTypes[i].propertyFlags & required) == required)
-            return static_cast<int>(i);
-    return -1;
-}
-
 Buffer allocate(const Gpu& gpu, VkDeviceSize size, VkBufferUsageFlags usage,
                 std::initializer_list<VkMemoryPropertyFlags> preferences) {
-    Buffer b;
-    b.size = size < 16 ? 16 : size;  // never a zero-sized buffer
-    VkBufferCreateInfo info{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO};
-    info.size = b.size;
-    info.usage = usage;
+    BufferHeap heap;
+    heap.device = gpu.device;
+    heap.memory = gpu.memory;
     // Async compute: the compute family writes what the graphics family reads; concurrent
     // sharing makes that legal without a release/acquire pair on every frame.
-    const uint32_t families[2] = {gpu.queueFamily, gpu.computeFamily};
-    info.sharingMode = gpu.asyncCompute ? VK_SHARING_MODE_CONCURRENT : VK_SHARING_MODE_EXCLUSIVE;
-    info.queueFamilyIndexCount = gpu.asyncCompute ? 2 : 0;
-    info.pQueueFamilyIndices = gpu.asyncCompute ? families : nullptr;
-    GT_VK(vkCreateBuffer(gpu.device, &info, nullptr, &b.buffer));
-    VkMemoryRequirements req{};
-    vkGetBufferMemoryRequirements(gpu.device, b.buffer, &req);
-    int type = -1;
-    VkMemoryPropertyFlags chosen = 0;
-    for (VkMemoryPropertyFlags flags : preferences) {
-        type = findMemoryType(gpu, req.memoryTypeBits, flags);
-        if (type >= 0) { chosen = flags; break; }
-    }
-    if (type < 0) fail("no memory type for a buffer of " + std::to_string(size) + " bytes");
-    VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
-    alloc.allocationSize = req.size;
-    alloc.memoryTypeIndex = static_cast<uint32_t>(type);
-    VkResult r = vkAllocateMemory(gpu.device, &alloc, nullptr, &b.memory);
-    if (r != VK_SUCCESS) fail("cannot allocate " + std::to_string(req.size) + " bytes of buffer memory: " + resultName(r));
-    GT_VK(vkBindBufferMemory(gpu.device, b.buffer, b.memory, 0));
-    if (chosen & VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT) GT_VK(vkMapMemory(gpu.device, b.memory, 0, VK_WHOLE_SIZE, 0, &b.mapped));
-    return b;
+    if (gpu.asyncCompute) heap.sharedFamilies = {gpu.queueFamily, gpu.computeFamily};
+    return createBuffer(heap, size, usage, preferences);
 }
 
 constexpr VkMemoryPropertyFlags kHost = VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
@@ -76,22 +43,9 @@ Buffer createDeviceBuffer(const Gpu& gpu, const std::vector<uint8_t>& bytes, VkB
     return b;
 }
 
-void destroyBuffer(const Gpu& gpu, Buffer& b) {
-    if (b.mapped) vkUnmapMemory(gpu.device, b.memory);
-    if (b.buffer) vkDestroyBuffer(gpu.device, b.buffer, nullptr);
-    if (b.memory) vkFreeMemory(gpu.device, b.memory, nullptr);
-    b = Buffer{};
-}
+void destroyBuffer(const Gpu& gpu, Buffer& b) { destroyBuffer(gpu.device, b); }
 
-VkCommandBuffer allocateCommandBuffer(const Gpu& gpu, VkCommandPool pool) {
-    VkCommandBufferAllocateInfo alloc{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
-    alloc.commandPool = pool;
-    alloc.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
-    alloc.commandBufferCount = 1;
-    VkCommandBuffer cmd = VK_NULL_HANDLE;
-    GT_VK(vkAllocateCommandBuffers(gpu.device, &alloc, &cmd));
-    return cmd;
-}
+VkCommandBuffer allocateCommandBuffer(const Gpu& gpu, VkCommandPool pool) { return allocateCommandBuffer(gpu.device, pool); }
 
 void submitOnce(const Gpu& gpu, const std::function<void(VkCommandBuffer)>& record) {
     VkCommandBuffer cmd = allocateCommandBuffer(gpu, gpu.commandPool);
@@ -106,23 +60,6 @@ void submitOnce(const Gpu& gpu, const std::function<void(VkCommandBuffer)>& reco
     GT_VK(vkQueueSubmit(gpu.queue, 1, &submit, VK_NULL_HANDLE));
     GT_VK(vkQueueWaitIdle(gpu.queue));
     vkFreeCommandBuffers(gpu.device, gpu.commandPool, 1, &cmd);
-}
-
-std::vector<uint8_t> readFile(const std::string& path) {
-    std::ifstream in(path, std::ios::binary | std::ios::ate);
-    if (!in) fail("cannot open '" + path + "'");
-    std::streamsize n = in.tellg();
-    in.seekg(0);
-    std::vector<uint8_t> bytes(static_cast<size_t>(n));
-    if (n > 0 && !in.read(reinterpret_cast<char*>(bytes.data()), n)) fail("cannot read '" + path + "'");
-    return bytes;
-}
-
-void writeFile(const std::string& path, const void* data, size_t size) {
-    std::ofstream out(path, std::ios::binary | std::ios::trunc);
-    if (!out) fail("cannot create '" + path + "'");
-    out.write(static_cast<const char*>(data), static_cast<std::streamsize>(size));
-    if (!out) fail("cannot write '" + path + "'");
 }
 
 }  // namespace gt

@@ -7,15 +7,11 @@
 #include <vector>
 
 #include "device.hpp"
+#include "vkcommon.hpp"
 
 namespace gt {
 
-struct Buffer {
-    VkBuffer buffer = VK_NULL_HANDLE;
-    VkDeviceMemory memory = VK_NULL_HANDLE;
-    VkDeviceSize size = 0;
-    void* mapped = nullptr;  // non-null for host-visible buffers (kept mapped, coherent)
-};
+// gt::Buffer (vkcommon.hpp): the harness's host-visible buffers are always coherent, kept mapped.
 
 // Host-visible + coherent; prefers memory that is also device-local (resizable BAR) when
 // preferDeviceLocal is set, so a per-frame uniform buffer is not read across the bus.
@@ -34,10 +30,5 @@ VkCommandBuffer allocateCommandBuffer(const Gpu& gpu, VkCommandPool pool);
 
 // Records into a fresh command buffer, submits, waits.
 void submitOnce(const Gpu& gpu, const std::function<void(VkCommandBuffer)>& record);
-
-// The whole file; throws gt::Error naming it when it cannot be read.
-std::vector<uint8_t> readFile(const std::string& path);
-
-void writeFile(const std::string& path, const void* data, size_t size);
 
 }  // namespace gt

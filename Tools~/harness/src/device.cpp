@@ -6,7 +6,7 @@
 #include <cstring>
 #include <vector>
 
-#include "check.hpp"
+#include "vkcommon.hpp"
 
 namespace gt {
 
@@ -17,11 +17,6 @@ std::string lower(std::string s) {
     return s;
 }
 
-std::string versionText(uint32_t v) {
-    return std::to_string(VK_API_VERSION_MAJOR(v)) + "." + std::to_string(VK_API_VERSION_MINOR(v)) + "." +
-           std::to_string(VK_API_VERSION_PATCH(v));
-}
-
 const char* typeText(VkPhysicalDeviceType t) {
     switch (t) {
         case VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU: return "integrated";
@@ -30,37 +25,6 @@ const char* typeText(VkPhysicalDeviceType t) {
         case VK_PHYSICAL_DEVICE_TYPE_CPU: return "cpu";
         default: return "other";
     }
-}
-
-VkInstance createInstance() {
-    // Vulkan 1.2 when the loader has it (driver properties are core there), else 1.1.
-    uint32_t loaderVersion = VK_API_VERSION_1_0;
-    auto enumerateVersion = reinterpret_cast<PFN_vkEnumerateInstanceVersion>(
-        vkGetInstanceProcAddr(VK_NULL_HANDLE, "vkEnumerateInstanceVersion"));
-    if (enumerateVersion) enumerateVersion(&loaderVersion);
-    if (loaderVersion < VK_API_VERSION_1_1) fail("the Vulkan loader supports only " + versionText(loaderVersion) + "; need 1.1");
-
-    VkApplicationInfo app{VK_STRUCTURE_TYPE_APPLICATION_INFO};
-    app.pApplicationName = "gt-harness";
-    app.apiVersion = loaderVersion >= VK_API_VERSION_1_2 ? VK_API_VERSION_1_2 : VK_API_VERSION_1_1;
-    VkInstanceCreateInfo info{VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO};
-    info.pApplicationInfo = &app;  // no extensions: nothing here may depend on a display
-    VkInstance instance = VK_NULL_HANDLE;
-    VkResult r = vkCreateInstance(&info, nullptr, &instance);
-    if (r == VK_ERROR_INCOMPATIBLE_DRIVER)
-        fail("no Vulkan driver found (VK_ERROR_INCOMPATIBLE_DRIVER); for lavapipe set "
-             "VK_ICD_FILENAMES=/usr/share/vulkan/icd.d/lvp_icd.x86_64.json");
-    GT_VK(r);
-    return instance;
-}
-
-std::vector<VkPhysicalDevice> physicalDevices(VkInstance instance) {
-    uint32_t n = 0;
-    GT_VK(vkEnumeratePhysicalDevices(instance, &n, nullptr));
-    std::vector<VkPhysicalDevice> list(n);
-    GT_VK(vkEnumeratePhysicalDevices(instance, &n, list.data()));
-    list.resize(n);
-    return list;
 }
 
 bool hasDeviceExtension(VkPhysicalDevice pd, const char* name) {
@@ -99,15 +63,6 @@ bool isLavapipe(const VkPhysicalDeviceProperties& p, const DriverText& d) {
            n.find("lavapipe") != std::string::npos;
 }
 
-std::vector<VkQueueFamilyProperties> queueFamilies(VkPhysicalDevice pd) {
-    uint32_t n = 0;
-    vkGetPhysicalDeviceQueueFamilyProperties(pd, &n, nullptr);
-    std::vector<VkQueueFamilyProperties> q(n);
-    vkGetPhysicalDeviceQueueFamilyProperties(pd, &n, q.data());
-    q.resize(n);
-    return q;
-}
-
 // The first family with graphics (and compute, when asked: the pre-pass is recorded in the same
 // command buffer as the draw, so one queue must do both).
 int graphicsQueueFamily(VkPhysicalDevice pd, bool compute, uint32_t* timestampBits) {
@@ -138,19 +93,10 @@ bool supportsTimelineSemaphores(VkPhysicalDevice pd) {
     return timeline.timelineSemaphore == VK_TRUE;
 }
 
-VkCommandPool createCommandPool(VkDevice device, uint32_t family) {
-    VkCommandPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
-    poolInfo.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
-    poolInfo.queueFamilyIndex = family;
-    VkCommandPool pool = VK_NULL_HANDLE;
-    GT_VK(vkCreateCommandPool(device, &poolInfo, nullptr, &pool));
-    return pool;
-}
-
 }  // namespace
 
 void listDevices() {
-    VkInstance instance = createInstance();
+    VkInstance instance = createInstance("gt-harness");
     auto list = physicalDevices(instance);
     for (size_t i = 0; i < list.size(); ++i) {
         VkPhysicalDeviceProperties p{};
@@ -165,7 +111,7 @@ void listDevices() {
 
 Gpu createGpu(const std::string& nameSubstring, const FeatureRequest& request) {
     Gpu gpu;
-    gpu.instance = createInstance();
+    gpu.instance = createInstance("gt-harness");
     auto list = physicalDevices(gpu.instance);
     if (list.empty()) fail("no Vulkan physical device found (is a driver installed? VK_ICD_FILENAMES?)");
 
@@ -245,10 +191,10 @@ Gpu createGpu(const std::string& nameSubstring, const FeatureRequest& request) {
     info.pEnabledFeatures = &gpu.enabled;
     GT_VK(vkCreateDevice(gpu.physical, &info, nullptr, &gpu.device));
     vkGetDeviceQueue(gpu.device, gpu.queueFamily, 0, &gpu.queue);
-    gpu.commandPool = createCommandPool(gpu.device, gpu.queueFamily);
+    gpu.commandPool = createCommandPool(gpu.device, gpu.queueFamily, VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT);
     if (gpu.asyncCompute) {
         vkGetDeviceQueue(gpu.device, gpu.computeFamily, 0, &gpu.computeQueue);
-        gpu.computePool = createCommandPool(gpu.device, gpu.computeFamily);
+        gpu.computePool = createCommandPool(gpu.device, gpu.computeFamily, VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT);
     }
     return gpu;
 }

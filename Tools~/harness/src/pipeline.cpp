@@ -4,16 +4,11 @@
 #include <vector>
 
 #include "check.hpp"
+#include "vkcommon.hpp"
 
 namespace gt {
 
 namespace {
-
-struct DescriptorEntry {
-    uint32_t binding;
-    VkDescriptorType type;
-    VkBuffer buffer;
-};
 
 // The rig's bindings (uniform buffers 0 and 1, storage buffers above) then the --storage ones.
 std::vector<DescriptorEntry> descriptorEntries(const Inputs& inputs, const std::vector<StorageBuffer>& storage) {
@@ -30,21 +25,6 @@ uint32_t countOf(const std::vector<DescriptorEntry>& entries, VkDescriptorType t
     uint32_t n = 0;
     for (const DescriptorEntry& e : entries) n += e.type == type ? 1 : 0;
     return n;
-}
-
-void writeSet(const Gpu& gpu, VkDescriptorSet set, const std::vector<DescriptorEntry>& entries) {
-    std::vector<VkDescriptorBufferInfo> infos(entries.size());
-    std::vector<VkWriteDescriptorSet> writes(entries.size());
-    for (size_t i = 0; i < entries.size(); ++i) {
-        infos[i] = {entries[i].buffer, 0, VK_WHOLE_SIZE};
-        writes[i] = {VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
-        writes[i].dstSet = set;
-        writes[i].dstBinding = entries[i].binding;
-        writes[i].descriptorCount = 1;
-        writes[i].descriptorType = entries[i].type;
-        writes[i].pBufferInfo = &infos[i];
-    }
-    vkUpdateDescriptorSets(gpu.device, static_cast<uint32_t>(writes.size()), writes.data(), 0, nullptr);
 }
 
 VkDescriptorSet allocateSet(const Gpu& gpu, const Pipeline& p) {
@@ -93,7 +73,7 @@ void createDescriptors(const Gpu& gpu, Pipeline& p, uint32_t sets, const Inputs&
     pi.pPoolSizes = sizes;
     GT_VK(vkCreateDescriptorPool(gpu.device, &pi, nullptr, &p.pool));
     p.set = allocateSet(gpu, p);
-    writeSet(gpu, p.set, entries);
+    writeBufferDescriptors(gpu.device, p.set, entries);
 }
 
 VkPipelineShaderStageCreateInfo stage(VkShaderStageFlagBits s, const ShaderModule& m) {
@@ -217,7 +197,7 @@ VkDescriptorSet addFrameSet(const Gpu& gpu, const Pipeline& pipeline, const Inpu
     std::sort(bindings.begin(), bindings.end());
     if (bindings != pipeline.bindings) fail("addFrameSet: the frame's buffers do not match set 0's bindings");
     VkDescriptorSet set = allocateSet(gpu, pipeline);
-    writeSet(gpu, set, entries);
+    writeBufferDescriptors(gpu.device, set, entries);
     return set;
 }
 

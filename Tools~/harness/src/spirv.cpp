@@ -4,13 +4,11 @@
 #include <map>
 #include <set>
 
-#include "buffers.hpp"
-#include "check.hpp"
+#include "vkcommon.hpp"
 
 namespace gt {
 
 namespace {
-constexpr uint32_t kMagic = 0x07230203;
 constexpr uint32_t kOpEntryPoint = 15;
 constexpr uint32_t kOpDecorate = 71;
 constexpr uint32_t kOpFunction = 54;
@@ -57,12 +55,7 @@ std::vector<std::string> entryPoints(const std::vector<uint32_t>& words, uint32_
 
 ShaderModule loadShader(const Gpu& gpu, const std::string& path, uint32_t executionModel, const std::string& requested,
                         const std::string& fallbackName) {
-    std::vector<uint8_t> bytes = readFile(path);
-    if (bytes.size() < 20 || bytes.size() % 4 != 0)
-        fail("'" + path + "' is not SPIR-V (" + std::to_string(bytes.size()) + " bytes, not a multiple of 4 >= 20)");
-    std::vector<uint32_t> words(bytes.size() / 4);
-    std::memcpy(words.data(), bytes.data(), bytes.size());
-    if (words[0] != kMagic) fail("'" + path + "' is not SPIR-V (bad magic number)");
+    std::vector<uint32_t> words = readSpirv(path);
 
     std::vector<std::string> names = entryPoints(words, executionModel);
     static const char* stageNames[] = {"vertex", "tessellation control", "tessellation evaluation", "geometry", "fragment",
@@ -86,10 +79,7 @@ ShaderModule loadShader(const Gpu& gpu, const std::string& path, uint32_t execut
         if (!has(s.entry)) fail("'" + path + "' has several entry points and none named '" + fallbackName + "'");
     }
     s.descriptors = usedDescriptors(words);
-    VkShaderModuleCreateInfo info{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
-    info.codeSize = bytes.size();
-    info.pCode = words.data();
-    GT_VK(vkCreateShaderModule(gpu.device, &info, nullptr, &s.module));
+    s.module = createShaderModule(gpu.device, words);
     return s;
 }
 

@@ -6,7 +6,7 @@
 
 namespace gt {
 
-// Thrown for anything the harness cannot go on with; main() prints it and exits 1.
+// Thrown for anything a rig tool cannot go on with; its main() prints it and exits 1.
 struct Error : std::runtime_error {
     using std::runtime_error::runtime_error;
 };
