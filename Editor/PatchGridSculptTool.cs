@@ -117,6 +117,7 @@ namespace GregoryTerrain.EditorTools
             bool hit = renderer.Raycast(ray, float.PositiveInfinity, out Vector3 point, out Vector3 normal, out _);
             if (hit && e.type == EventType.Repaint && Mode != SculptMode.SelectPatches)
             {
+                Handles.matrix = Matrix4x4.identity;   // the disc is in world space
                 Handles.color = Mode == SculptMode.Smooth ? Color.cyan : Mode == SculptMode.Flatten ? Color.yellow : (Mode == SculptMode.Lower) != e.shift ? Color.red : Color.green;
                 Handles.DrawWireDisc(point, normal, RadiusMetres);
                 Handles.DrawWireDisc(point, normal, 0.5f * RadiusMetres);
