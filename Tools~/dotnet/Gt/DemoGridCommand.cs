@@ -20,7 +20,7 @@ namespace GregoryTerrain.Rig
             int columns = a.Int("columns", 5), rows = a.Int("rows", 5), samples = a.Int("samples", 257);
             if (samples < 2 || samples > MaxSamples)
                 throw new UsageException($"--samples {samples} must lie in [2, {MaxSamples}] (a {MaxSamples} x {MaxSamples} heightmap is 2 GiB of doubles)");
-            string dem = a.String("dem", null);
+            string dem = a.Flag("dem") ? a.String("dem") : null;
             double[] heights;
             int width = samples, height = samples;
             if (dem != null)
