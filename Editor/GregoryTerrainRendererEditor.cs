@@ -1,3 +1,4 @@
+using System;
 using GregoryTerrain;
 using UnityEditor;
 using UnityEngine;
@@ -15,6 +16,7 @@ namespace GregoryTerrain.EditorTools
     internal sealed class GregoryTerrainRendererEditor : Editor
     {
         int _selectedPatch = -1, _selectedSlot = -1;
+        int _nearPatch = -1;   // the patch whose neighbourhood shows control-point buttons
         // The in-view estimate evaluates up to 256 tiles' surface samples on the CPU: at most every
         // EstimateSeconds, on Layout events, not on each of the inspector's many GUI events.
         const double EstimateSeconds = 0.25;
@@ -33,6 +35,7 @@ namespace GregoryTerrain.EditorTools
                 DrawReadouts((GregoryTerrainRenderer)target);
             DrawSettings();
             serializedObject.ApplyModifiedProperties();
+            if (!serializedObject.isEditingMultipleObjects) PatchGridSculptTool.DrawSettings();
         }
 
         void DrawReadouts(GregoryTerrainRenderer r)
@@ -160,7 +163,7 @@ namespace GregoryTerrain.EditorTools
             if (grid == null || !grid.IsValid) return;
             Handles.matrix = r.transform.localToWorldMatrix;
             if (r.debugShowPatchWireframe) DrawWireframe(grid);
-            if (r.debugShowControlPoints) EditControlPoints(grid);
+            if (r.debugShowControlPoints) EditControlPoints(r, grid);
             Handles.matrix = Matrix4x4.identity;
         }
 
@@ -187,18 +190,38 @@ namespace GregoryTerrain.EditorTools
         static void Line(PatchGridAsset grid, int p, int a, int b) =>
             Handles.DrawLine(ToObject(grid.GetControlPoint(p, a)), ToObject(grid.GetControlPoint(p, b)));
 
-        void EditControlPoints(PatchGridAsset grid)
+        /// <summary>
+        /// Buttons for the control points of the chosen patch and its eight neighbours only (180 at
+        /// most, not 20 for every patch of the grid): a click on the terrain chooses the patch under
+        /// the mouse, a click on a button picks that point for the move handle.
+        /// </summary>
+        void EditControlPoints(GregoryTerrainRenderer r, PatchGridAsset grid)
         {
-            for (int p = 0; p < grid.PatchCount; p++)
-            for (int s = 0; s < GregoryPatch.SlotCount; s++)
+            if (_nearPatch >= grid.PatchCount) _nearPatch = -1;
+            if (_nearPatch >= 0)
             {
-                Vector3 pos = ToObject(grid.GetControlPoint(p, s));
-                float size = 0.06f * HandleUtility.GetHandleSize(pos);
-                Handles.color = s >= 16 ? Color.yellow : Color.white;
-                if (Handles.Button(pos, Quaternion.identity, size, size, Handles.DotHandleCap))
+                int ci = _nearPatch % grid.Columns, cj = _nearPatch / grid.Columns;
+                for (int j = Math.Max(0, cj - 1); j <= Math.Min(grid.Rows - 1, cj + 1); j++)
+                for (int i = Math.Max(0, ci - 1); i <= Math.Min(grid.Columns - 1, ci + 1); i++)
+                for (int s = 0; s < GregoryPatch.SlotCount; s++)
                 {
-                    _selectedPatch = p; _selectedSlot = s;
+                    int p = j * grid.Columns + i;
+                    Vector3 pos = ToObject(grid.GetControlPoint(p, s));
+                    float size = 0.06f * HandleUtility.GetHandleSize(pos);
+                    Handles.color = s >= 16 ? Color.yellow : Color.white;
+                    if (Handles.Button(pos, Quaternion.identity, size, size, Handles.DotHandleCap))
+                    {
+                        _selectedPatch = p; _selectedSlot = s;
+                    }
                 }
+            }
+            Event e = Event.current;
+            if (e.type == EventType.MouseDown && e.button == 0 && !e.alt &&
+                r.Raycast(HandleUtility.GUIPointToWorldRay(e.mousePosition), float.PositiveInfinity, out Vector3 hit, out _, out _))
+            {
+                Vector3 local = r.transform.InverseTransformPoint(hit);   // object (x, height, y)
+                _nearPatch = grid.FindPatch(local.x, local.z);
+                e.Use();
             }
             if (_selectedPatch < 0 || _selectedPatch >= grid.PatchCount) return;
             Vector3 current = ToObject(grid.GetControlPoint(_selectedPatch, _selectedSlot));

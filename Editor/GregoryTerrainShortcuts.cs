@@ -28,6 +28,15 @@ namespace GregoryTerrain.EditorTools
         [Shortcut("Gregory Terrain/Uniform Factor Up", typeof(SceneView), KeyCode.I)]
         static void FactorUp() => ChangeSelected("Uniform factor +", r => r.UniformFactor = r.UniformFactor + 1);
 
+        [Shortcut("Gregory Terrain/Sculpt Tool", typeof(SceneView), KeyCode.B)]
+        static void SculptTool() => UnityEditor.EditorTools.ToolManager.SetActiveTool<PatchGridSculptTool>();
+
+        [Shortcut("Gregory Terrain/Shrink Sculpt Brush", typeof(SceneView), KeyCode.LeftBracket, ShortcutModifiers.Shift)]
+        static void ShrinkBrush() => PatchGridSculptTool.ScaleBrush(1f / 1.2f);
+
+        [Shortcut("Gregory Terrain/Grow Sculpt Brush", typeof(SceneView), KeyCode.RightBracket, ShortcutModifiers.Shift)]
+        static void GrowBrush() => PatchGridSculptTool.ScaleBrush(1.2f);
+
         /// <summary>One undo step over every selected, editable terrain; nothing when none is selected.</summary>
         static void ChangeSelected(string undoName, Action<GregoryTerrainRenderer> change)
         {

@@ -16,10 +16,10 @@ namespace GregoryTerrain.EditorTools
     [InitializeOnLoad]
     internal static class PatchGridAssetUndo
     {
-        // Undo and redo restore grid data behind the assets' backs: stamp every loaded grid with a new
-        // version so renderers upload what the undo restored (PatchGridBlock.OnValidate does it too,
-        // where Unity calls it after an undo). On the next read: any undo lands here, and a grid nothing
-        // reads is not checked whole for it.
+        // Undo and redo restore grid data behind the assets' backs: mark every loaded grid so its next
+        // read compares a fingerprint of its data with the last one checked (PatchGridBlock.OnValidate
+        // does it too, where Unity calls it after an undo). Only a grid whose data differs gets a new
+        // version (and is uploaded again): an undo of something else costs one hash per grid.
         static PatchGridAssetUndo() => Undo.undoRedoPerformed += MarkLoadedGridsChanged;
 
         static void MarkLoadedGridsChanged()
@@ -61,6 +61,20 @@ namespace GregoryTerrain.EditorTools
             PatchGridBlock[] touched = asset.BlocksTouchedByMove(patch, slot);
             Undo.RecordObjects(touched, undoName);
             asset.SetControlPoint(patch, slot, terrainPosition);
+            foreach (PatchGridBlock b in touched) EditorUtility.SetDirty(b);
+        }
+
+        /// <summary>
+        /// Applies a Core edit (brush dab, region refit) to the asset, recording only the blocks it
+        /// touches: within an undo group (a stroke) each dab adds its blocks.
+        /// </summary>
+        public static void ApplyEdit(PatchGridAsset asset, PatchEdit edit, string undoName)
+        {
+            if (edit.IsEmpty) return;
+            MoveLegacyDataToBlocks(asset, undoName);
+            PatchGridBlock[] touched = asset.BlocksOf(edit);
+            Undo.RecordObjects(touched, undoName);
+            asset.ApplyEdit(edit);
             foreach (PatchGridBlock b in touched) EditorUtility.SetDirty(b);
         }
 

@@ -32,6 +32,10 @@ namespace GregoryTerrain.EditorTools
         static readonly GUIContent TargetErrorLabel = new GUIContent("Target error (m)", "The largest acceptable error, in metres.");
         static readonly GUIContent TargetKindLabel = new GUIContent("Error measured as", "Max: the worst sample. Rms: the root mean square over all samples.");
 
+        static readonly GUIContent SelectionLabel = new GUIContent("Selected patches", "The patches picked in the Scene view with the Sculpt tool's Select Patches mode.");
+        static readonly GUIContent RefitTextureLabel = new GUIContent("Refit selection to texture", "Fit only the selected patches to the heightmap texture above (it covers the whole terrain). The border with other patches stays.");
+        static readonly GUIContent RefitRawLabel = new GUIContent("Refit selection to RAW file...", "Fit only the selected patches to a RAW heightmap of the whole terrain, in the format above. The border with other patches stays.");
+
         [SerializeField] PatchGridAsset asset;
         [SerializeField] int columns = 5, rows = 5;
         [SerializeField] Texture2D heightmap;
@@ -89,6 +93,16 @@ namespace GregoryTerrain.EditorTools
             if (GUILayout.Button(new GUIContent("Fit to RAW file...", "Least-squares fit to a headerless RAW heightmap in the format above."))) FitRaw();
 
             EditorGUILayout.Space();
+            PatchRect? selection = PatchGridSculptTool.SelectionOf(asset);
+            EditorGUILayout.LabelField(SelectionLabel, new GUIContent(selection is PatchRect sel ? $"columns {sel.I0} to {sel.I1}, rows {sel.J0} to {sel.J1}" : "none (Sculpt tool, Select Patches)"));
+            using (new EditorGUI.DisabledScope(!asset.IsValid || selection == null))
+            {
+                using (new EditorGUI.DisabledScope(heightmap == null))
+                    if (GUILayout.Button(RefitTextureLabel)) RefitTexture();
+                if (GUILayout.Button(RefitRawLabel)) RefitRaw();
+            }
+
+            EditorGUILayout.Space();
             using (new EditorGUI.DisabledScope(!asset.IsValid))
                 if (GUILayout.Button(new GUIContent("Enforce G1", "Set the interior control points so neighbouring patches join with a continuous tangent plane."))) EnforceG1();
 
@@ -107,17 +121,29 @@ namespace GregoryTerrain.EditorTools
 
         void FitTexture()
         {
+            if (ReadTexture(out double[] heights, out string source)) Fit(heights, heightmap.width, heightmap.height, source);
+        }
+
+        void RefitTexture()
+        {
+            if (ReadTexture(out double[] heights, out string source)) Refit(heights, heightmap.width, heightmap.height, source);
+        }
+
+        /// <summary>The texture's heights (scaled) and a name for messages; false, with the reason reported, when it cannot be read.</summary>
+        bool ReadTexture(out double[] heights, out string source)
+        {
+            heights = null;
+            source = null;
             if (!heightmap.isReadable)
             {
                 Report($"'{heightmap.name}' is not readable: enable Read/Write in its import settings.", MessageType.Error);
-                return;
+                return false;
             }
-            double[] heights;
             string precision;
             if (TryTexelFormat(heightmap.format, out HeightTexelFormat texel))
             {
                 try { heights = TextureHeights.Decode(heightmap.name, heightmap.GetRawTextureData(), heightmap.width, heightmap.height, texel); }
-                catch (ArgumentException e) { Report(e.Message, MessageType.Error); return; }
+                catch (ArgumentException e) { Report(e.Message, MessageType.Error); return false; }
                 precision = $"{heightmap.format}, full precision";
             }
             else
@@ -128,7 +154,8 @@ namespace GregoryTerrain.EditorTools
                 precision = $"{heightmap.format} read as grey: 8 bits at most; import 16-bit PNGs as R16 and EXRs as RFloat or RHalf to keep their precision";
             }
             for (int k = 0; k < heights.Length; k++) heights[k] *= heightScale;
-            Fit(heights, heightmap.width, heightmap.height, $"'{heightmap.name}' ({precision})");
+            source = $"'{heightmap.name}' ({precision})";
+            return true;
         }
 
         static bool TryTexelFormat(TextureFormat format, out HeightTexelFormat texel)
@@ -147,23 +174,65 @@ namespace GregoryTerrain.EditorTools
 
         void FitRaw()
         {
+            if (ReadRaw(out double[] heights, out int w, out int h, out string source)) Fit(heights, w, h, source);
+        }
+
+        void RefitRaw()
+        {
+            if (ReadRaw(out double[] heights, out int w, out int h, out string source)) Refit(heights, w, h, source);
+        }
+
+        /// <summary>A RAW file's heights (scaled), its size and a name for messages; false when cancelled or unreadable (reported).</summary>
+        bool ReadRaw(out double[] heights, out int w, out int h, out string source)
+        {
+            heights = null;
+            source = null;
+            w = rawWidth; h = rawHeight;
             string path = EditorUtility.OpenFilePanel("RAW heightmap", "", "");
-            if (string.IsNullOrEmpty(path)) return;
+            if (string.IsNullOrEmpty(path)) return false;
             string name = Path.GetFileName(path);
-            double[] heights;
-            int w = rawWidth, h = rawHeight;
             try
             {
                 byte[] bytes = File.ReadAllBytes(path);
                 RawHeightmap.InferSize(name, bytes.Length, rawFormat, ref w, ref h);
                 heights = RawHeightmap.Decode(name, bytes, w, h, rawFormat, rawVoids ? RawHeightmap.SrtmVoid : (int?)null);
             }
-            catch (IOException e) { Report($"{name}: {e.Message}", MessageType.Error); return; }
-            catch (ArgumentException e) { Report(e.Message, MessageType.Error); return; }
+            catch (IOException e) { Report($"{name}: {e.Message}", MessageType.Error); return false; }
+            catch (ArgumentException e) { Report(e.Message, MessageType.Error); return false; }
             bool unsigned16 = rawFormat == RawSampleFormat.UInt16LittleEndian || rawFormat == RawSampleFormat.UInt16BigEndian;
             double scale = unsigned16 ? heightScale / 65535.0 : heightScale;
             for (int k = 0; k < heights.Length; k++) heights[k] *= scale;
-            Fit(heights, w, h, $"{name} ({w} x {h}, {rawFormat})");
+            source = $"{name} ({w} x {h}, {rawFormat})";
+            return true;
+        }
+
+        /// <summary>
+        /// Refits the Scene view's patch selection to a heightmap covering the whole terrain, with a
+        /// cancellable progress bar; a cancel or an error leaves the asset as it was. One undo step
+        /// that records only the blocks of the patches it changed.
+        /// </summary>
+        void Refit(double[] heights, int width, int height, string source)
+        {
+            if (!(PatchGridSculptTool.SelectionOf(asset) is PatchRect selection))
+            {
+                Report("Select patches first: Sculpt tool in the Scene view, mode Select Patches, drag over the terrain.", MessageType.Warning);
+                return;
+            }
+            int voids;
+            try { voids = HeightmapVoids.Fill(heights, width, height); }
+            catch (ArgumentException e) { Report($"{source}: {e.Message}", MessageType.Error); return; }
+            using var cancel = new CancellationTokenSource();
+            var progress = new CancelableProgressBar($"Refitting {selection} to {source}", cancel);
+            try
+            {
+                RegionFitResult fit = PatchRegionFit.Fit(asset.ToPatchGrid(), selection, heights, width, height, progress, cancel.Token);
+                PatchGridAssetUndo.ApplyEdit(asset, fit.Edit, $"Refit selection to {source}");
+                string filled = voids > 0 ? $" {voids} void samples were filled from their neighbours first." : "";
+                Report($"Refitted {selection} ({fit.Edit.Patches.Length} patches changed) to {source}: max error {fit.MaxError * widthMetres:G3} m, RMS {fit.RmsError * widthMetres:G3} m over the selection. The border with the other patches was kept.{filled}", MessageType.Info);
+            }
+            catch (OperationCanceledException) { Report("Refit cancelled; the grid was not changed.", MessageType.Warning); }
+            catch (ArgumentException e) { Report($"{source}: {e.Message} The grid was not changed.", MessageType.Error); }
+            finally { EditorUtility.ClearProgressBar(); }
         }
 
         /// <summary>Fills voids, runs the fitter with a cancellable progress bar; a cancel or error leaves the asset as it was.</summary>

@@ -51,6 +51,7 @@ namespace GregoryTerrain
         [NonSerialized] string _error;
         [NonSerialized] double[][] _legacyBlocks;   // controlPoints cut into blocks, read-only view
         [NonSerialized] bool _changedSinceCheck;    // MarkChangedOnNextRead was called: check on the next read
+        [NonSerialized] ulong _fingerprint;         // of the data last checked (MarkChanged): an undo that restores nothing of ours keeps the version
 
         /// <summary>Changes whenever the grid data may have changed (edit, undo, import, load).</summary>
         public int Version { get { CheckIfChanged(); return _version; } }
@@ -89,6 +90,7 @@ namespace GregoryTerrain
             _changedSinceCheck = false;
             _version = s_NextVersion++;
             _legacyBlocks = null;
+            _fingerprint = Fingerprint();
             _error = CheckSerializedData();
             if (_error != null)
                 Debug.LogError($"Patch grid '{name}' is invalid: {_error}", this);
@@ -108,7 +110,28 @@ namespace GregoryTerrain
 
         void CheckIfChanged()
         {
-            if (_changedSinceCheck) MarkChanged();
+            if (!_changedSinceCheck) return;
+            // Any undo in the editor marks every loaded grid (Unity does not say which objects an undo
+            // restored): when the data is bit for bit what was last checked, keep the verdict and the
+            // version, so renderers do not upload it again. Hashing reads the data once, without the
+            // whole-grid validation.
+            if (_version != 0 && Fingerprint() == _fingerprint) { _changedSinceCheck = false; return; }
+            MarkChanged();
+        }
+
+        /// <summary>Fingerprint of everything the grid is made of: shape, lines and control points.</summary>
+        ulong Fingerprint()
+        {
+            ulong h = PatchGridBlocks.Mix((ulong)(uint)columns, (ulong)(uint)rows);
+            if (xLines != null) foreach (double v in xLines) h = PatchGridBlocks.Mix(h, (ulong)BitConverter.DoubleToInt64Bits(v));
+            h = PatchGridBlocks.Mix(h, 0x5E9UL);
+            if (yLines != null) foreach (double v in yLines) h = PatchGridBlocks.Mix(h, (ulong)BitConverter.DoubleToInt64Bits(v));
+            h = PatchGridBlocks.Mix(h, HasLegacyLayout ? 1UL : 2UL);
+            if (HasLegacyLayout) return PatchGridBlocks.Fingerprint(new[] { controlPoints }, h);
+            if (blocks == null) return h;
+            var data = new double[blocks.Length][];
+            for (int b = 0; b < blocks.Length; b++) data[b] = blocks[b] != null ? blocks[b].Points : null;
+            return PatchGridBlocks.Fingerprint(data, h);
         }
 
         /// <summary>The grid as Core's <see cref="PatchGrid"/>. Throws ArgumentException when invalid.</summary>
@@ -251,6 +274,48 @@ namespace GregoryTerrain
             PatchGridBlocks.MoveControlPoint(Data(), columns, rows, patch, slot,
                 new Double3(terrainPosition.x, terrainPosition.y, terrainPosition.z));
             MarkChanged();
+        }
+
+        /// <summary>Index of the patch holding terrain point (x, y) (Core's PatchGrid.FindPatch on this grid's lines; outside points go to the border patches).</summary>
+        internal int FindPatch(double x, double y)
+        {
+            if (double.IsNaN(x) || double.IsNaN(y)) throw new ArgumentException($"({x}, {y}) is not a point: cannot locate a patch.");
+            return PatchGrid.FindInterval(yLines, y) * columns + PatchGrid.FindInterval(xLines, x);
+        }
+
+        /// <summary>The blocks holding the patches an edit changes (record these for Undo before <see cref="ApplyEdit"/>). Empty while the grid has the older layout.</summary>
+        internal PatchGridBlock[] BlocksOf(PatchEdit edit)
+        {
+            if (edit == null) throw new ArgumentNullException(nameof(edit));
+            if (HasLegacyLayout) return Array.Empty<PatchGridBlock>();
+            var touched = new System.Collections.Generic.SortedSet<int>();
+            foreach (int p in edit.Patches) touched.Add(PatchGridBlocks.BlockOf(p));
+            var result = new PatchGridBlock[touched.Count];
+            int k = 0;
+            foreach (int b in touched) result[k++] = blocks[b];
+            return result;
+        }
+
+        /// <summary>
+        /// Writes an edit's patches (a brush dab or a region refit, Core's PatchEdit) into the blocks.
+        /// Core built and checked the edit against this grid (finite, float range, shared edges
+        /// written in every copy, G1 rejoined), so a valid grid stays valid: the version changes
+        /// without a whole-grid check, which a brush stroke would pay on every dab. Throws, changing
+        /// nothing, when the grid is invalid, still in the older layout, or of another shape.
+        /// </summary>
+        internal void ApplyEdit(PatchEdit edit)
+        {
+            if (edit == null) throw new ArgumentNullException(nameof(edit));
+            if (HasLegacyLayout)
+                throw new InvalidOperationException($"Patch grid '{name}' still has the older single-array layout: move its data to blocks first (MoveLegacyDataToBlocks)");
+            if (!IsValid) throw new InvalidOperationException($"Patch grid '{name}' is invalid: {ValidationError}");
+            if (edit.Columns != columns || edit.Rows != rows)
+                throw new ArgumentException($"edit is for {edit.Columns} x {edit.Rows} patches, the grid has {columns} x {rows}", nameof(edit));
+            double[][] data = Data();
+            for (int k = 0; k < edit.Patches.Length; k++) PatchGridBlocks.SetPatch(data, edit.Patches[k], edit.Values[k]);
+            _changedSinceCheck = false;
+            _version = s_NextVersion++;
+            _fingerprint = Fingerprint();
         }
 
         /// <summary>Smallest and largest control point height (z); the surface lies between them.</summary>

@@ -124,5 +124,18 @@ namespace GregoryTerrain.Tests
             Assert.Throws<ArgumentOutOfRangeException>(() => PatchGridBlocks.BlocksTouchedByMove(2, 2, 0, 20));
             Assert.That(blocks[0].Select(Bits), Is.EqualTo(before[0].Select(Bits)));
         }
+
+        [Test]
+        public void TheFingerprintTellsEditsApart()
+        {
+            double[][] blocks = PatchGridBlocks.FromGrid(PatchGrid.CreateFlat(9, 9));
+            ulong h = PatchGridBlocks.Fingerprint(blocks, 1);
+            Assert.That(PatchGridBlocks.Fingerprint(blocks.Select(a => (double[])a.Clone()).ToArray(), 1), Is.EqualTo(h), "equal data, equal fingerprint");
+            blocks[1][100] = BitConverter.Int64BitsToDouble(BitConverter.DoubleToInt64Bits(blocks[1][100]) ^ 1);   // one bit
+            Assert.That(PatchGridBlocks.Fingerprint(blocks, 1), Is.Not.EqualTo(h));
+            var p = TestPatches.Random(3);
+            PatchGridBlocks.SetPatch(blocks, 70, p);
+            for (int s = 0; s < GregoryPatch.SlotCount; s++) Assert.That(PatchGridBlocks.Get(blocks, 70, s), Is.EqualTo(p[s]));
+        }
     }
 }

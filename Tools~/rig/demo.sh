@@ -3,14 +3,18 @@
 # harness at the paper's ranges g = h = 1.0, 0.5, 0.2, 0.1, 0.02 (c = d = 0), each range filling
 # the same view (the paper's zoom view). Prints vertices and triangles per range (pipeline
 # statistics: tessellation evaluation invocations and clipping invocations, the triangles entering the clipper).
-#   gt demo [--docs] [--no-setup] [--device SUBSTR] [--tiles M] [--factor F] [--width W] [--height H]
+#   gt demo [--docs] [--dem] [--no-setup] [--device SUBSTR] [--tiles M] [--factor F] [--width W] [--height H]
 # Writes .build/demo/demo_g<g>.png; with --docs also Documentation~/images/demo_g<g>.png (small indexed PNGs, png_palette.py).
+# --dem: instead, the real-data crop of the tests (Tools~/RigTests/Data/dem/N48E009_east.hgt, SRTM3, 241 x 241
+# samples, 14.7 km across) fitted with 32 x 32 patches, heights x 3, rendered whole at g = h = 1 without
+# noise: .build/demo/demo_dem.png (with --docs also Documentation~/images/demo_dem.png).
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 # 400 x 300: the manual ships these pictures, so they stay small (about 30 KB each).
-docs=0 setup=1 device="" tiles=16 factor=15 width=400 height=300
+docs=0 dem=0 setup=1 device="" tiles=16 factor=15 width=400 height=300
 while [ $# -gt 0 ]; do
   case "$1" in
     --docs) docs=1 ;;
+    --dem) dem=1 ;;
     --no-setup) setup=0 ;;
     --device) device="$2"; shift ;;
     --tiles) tiles="$2"; shift ;;
@@ -29,7 +33,11 @@ harness="$BUILD_DIR/harness/gt-harness"
 out="$BUILD_DIR/demo"
 mkdir -p "$out"
 
-"$cli" demo-grid --out "$out/grid.json" >&2
+if [ "$dem" = 1 ]; then
+  "$cli" demo-grid --dem "$PKG_DIR/Tools~/RigTests/Data/dem/N48E009_east.hgt" --columns 32 --rows 32 --exaggerate 3 --out "$out/dem_grid.json" >&2
+else
+  "$cli" demo-grid --out "$out/grid.json" >&2
+fi
 variant="noise+height_color"
 # Its own build folder: gt shaders empties the spirv folder it writes.
 GT_BUILD_DIR="$out/shaders" bash "$RIG_DIR/shaders.sh" --only "$variant" >"$out/shaders.log" 2>&1 \
@@ -40,6 +48,21 @@ dev=(); [ -n "$device" ] && dev=(--device "$device")
 # The factor is odd: shipped shaders partition fractional_odd, which rounds an even factor up.
 # Noise: 8 octaves, so that the narrow ranges show detail the wide ones cannot (the octave count
 # follows the range width); a gentle light from the side-front.
+if [ "$dem" = 1 ]; then
+  dir="$out/buffers_dem"
+  "$cli" pack --grid "$out/dem_grid.json" --range "0,0,1,1" --tiles "$tiles" --factor "$factor" \
+    --noise 0,16,2,2 --octaves 1 --width "$width" --height "$height" --out "$dir" >/dev/null
+  log="$out/harness_dem.log"
+  "$harness" --vert "$spv/vert.spv" --tesc "$spv/tesc.spv" --tese "$spv/tese.spv" --frag "$spv/frag.spv" \
+    --buffers "$dir" --patches $((tiles * tiles)) --width "$width" --height "$height" \
+    --png "$out/demo_dem.png" --stats "${dev[@]}" >"$log" 2>&1 || { cat "$log" >&2; die "harness failed on the DEM grid"; }
+  say "DEM crop: $(awk '$1=="stat" && $2=="clipping_invocations" {print $3}' "$log") triangles; image $out/demo_dem.png"
+  if [ "$docs" = 1 ]; then
+    mkdir -p "$PKG_DIR/Documentation~/images"
+    python3 "$RIG_DIR/png_palette.py" "$out/demo_dem.png" "$PKG_DIR/Documentation~/images/demo_dem.png"
+  fi
+  exit 0
+fi
 printf '%-6s %-24s %12s %12s %14s\n' "g=h" "range" "vertices" "triangles" "nonsky pixels"
 for g in 1.0 0.5 0.2 0.1 0.02; do
   dir="$out/buffers_g$g"

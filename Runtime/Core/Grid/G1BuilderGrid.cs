@@ -27,10 +27,10 @@ namespace GregoryTerrain
             int count = 0;
             for (int j = 0; j < m; j++)
                 for (int i = 0; i + 1 < n; i++)
-                    jobs[count++] = Prepare(grid.Patch(i, j), PatchSide.U1, grid.Patch(i + 1, j), PatchSide.U0, Where(i, j, i + 1, j), relativeTolerance);
+                    jobs[count++] = Prepare(grid.Patch(i, j), PatchSide.U1, grid.Patch(i + 1, j), PatchSide.U0, Where(i, j, i + 1, j), relativeTolerance, false);
             for (int j = 0; j + 1 < m; j++)
                 for (int i = 0; i < n; i++)
-                    jobs[count++] = Prepare(grid.Patch(i, j), PatchSide.V1, grid.Patch(i, j + 1), PatchSide.V0, Where(i, j, i, j + 1), relativeTolerance);
+                    jobs[count++] = Prepare(grid.Patch(i, j), PatchSide.V1, grid.Patch(i, j + 1), PatchSide.V0, Where(i, j, i, j + 1), relativeTolerance, false);
             for (int e = 0; e < count; e++) jobs[e].Apply();
         }
 
@@ -56,7 +56,14 @@ namespace GregoryTerrain
 
         static Double3 Cross(GregoryPatch p, PatchSide side, int k) => p[PatchEdge.InnerSlot(side, k)] - p[PatchEdge.EdgeSlot(side, k)];
 
-        static EdgeJob Prepare(GregoryPatch a, PatchSide sideA, GregoryPatch b, PatchSide sideB, string where, double tol)
+        /// <summary>
+        /// One shared edge's new interior points. The A side's inner vectors are kept when k is
+        /// constant and B's derived from them; with <paramref name="symmetric"/> both sides move
+        /// instead, each by the least change that meets <c>B_k = k A_k + r_k</c> (k = 1, 2): with
+        /// e the residual, <c>A_k += k e / (1 + k^2)</c>, <c>B_k -= e / (1 + k^2)</c>. A brush uses it so
+        /// a stroke on either side of an edge shapes it alike. A non-constant k falls back to eq. 7-9.
+        /// </summary>
+        static EdgeJob Prepare(GregoryPatch a, PatchSide sideA, GregoryPatch b, PatchSide sideB, string where, double tol, bool symmetric)
         {
             Double3 e0 = a[PatchEdge.EdgeSlot(sideA, 0)], e1 = a[PatchEdge.EdgeSlot(sideA, 1)];
             Double3 e2 = a[PatchEdge.EdgeSlot(sideA, 2)], e3 = a[PatchEdge.EdgeSlot(sideA, 3)];
@@ -88,6 +95,16 @@ namespace GregoryTerrain
                 LinearCrossBoundary(a0, a3, out a1, out a2);
             }
             CrossBoundary(a0, a1, a2, a3, c0, c1, c2, k0, k1, h0, h1, out _, out Double3 nb1, out Double3 nb2, out _);
+            if (symmetric && Math.Abs(k1 - k0) <= ConstantKTolerance * Math.Max(Math.Abs(k0), Math.Abs(k1)))
+            {
+                Double3 r1 = Cross(b, sideB, 1) - nb1, r2 = Cross(b, sideB, 2) - nb2;
+                double s1 = 1.0 / (1.0 + k0 * k0), s2 = 1.0 / (1.0 + k1 * k1);
+                a1 = a1 + (k0 * s1) * r1;
+                a2 = a2 + (k1 * s2) * r2;
+                // Recomputed from the moved A rather than B + e s: the same formula MakeG1 applies, so
+                // the join is exact to the last bit of eq. 8-9 and not to a rounding of the projection.
+                CrossBoundary(a0, a1, a2, a3, c0, c1, c2, k0, k1, h0, h1, out _, out nb1, out nb2, out _);
+            }
             return new EdgeJob { PatchA = a, PatchB = b, SideA = sideA, SideB = sideB, A1 = a1, A2 = a2, B1 = nb1, B2 = nb2 };
         }
 

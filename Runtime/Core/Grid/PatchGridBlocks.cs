@@ -155,6 +155,38 @@ namespace GregoryTerrain
             return result;
         }
 
+        /// <summary>Writes all 20 control points of <paramref name="patch"/> (an edit's new patch: PatchEdit).</summary>
+        public static void SetPatch(double[][] blocks, int patch, GregoryPatch value)
+        {
+            if (value == null) throw new ArgumentNullException(nameof(value));
+            for (int s = 0; s < GregoryPatch.SlotCount; s++) Write(blocks, patch, s, value[s]);
+        }
+
+        /// <summary>
+        /// A 64-bit fingerprint of the blocks' doubles (their bits, in order): equal data, equal
+        /// fingerprint. Lets a grid tell after an undo whether its data really changed (a different
+        /// fingerprint) without validating it whole, so unrelated undos do not re-upload it.
+        /// </summary>
+        public static ulong Fingerprint(double[][] blocks, ulong seed)
+        {
+            ulong h = seed ^ 0x9E3779B97F4A7C15UL;
+            foreach (double[] b in blocks)
+            {
+                if (b == null) { h = Mix(h, 0xFFFFFFFFFFFFFFFFUL); continue; }
+                h = Mix(h, (ulong)b.Length);
+                for (int k = 0; k < b.Length; k++) h = Mix(h, (ulong)BitConverter.DoubleToInt64Bits(b[k]));
+            }
+            return h;
+        }
+
+        /// <summary>One step of a multiply-xorshift hash (not cryptographic: it tells edits apart, it does not resist forgery).</summary>
+        public static ulong Mix(ulong h, ulong v)
+        {
+            h ^= v + 0x9E3779B97F4A7C15UL + (h << 6) + (h >> 2);
+            h *= 0xBF58476D1CE4E5B9UL;
+            return h ^ (h >> 31);
+        }
+
         /// <summary>Slots 0..15 on the border of the 4 x 4 net (i or j is 0 or 3), slot = 4 i + j.</summary>
         public static bool IsBoundarySlot(int slot) => slot < 16 && (slot / 4 == 0 || slot / 4 == 3 || slot % 4 == 0 || slot % 4 == 3);
 

@@ -83,7 +83,7 @@ namespace UnityEditor
         public static int indentLevel { get => 0; set { } }                                  // SR:EditorGUI-indentLevel
     }
 
-    public sealed class EditorGUILayout                                                      // SR:EditorGUILayout
+    public sealed partial class EditorGUILayout                                              // SR:EditorGUILayout (sealed partial in 2022.3)
     {
         public static void LabelField(string label, string label2, params GUILayoutOption[] options) { }           // SR:EditorGUILayout.LabelField
         public static void LabelField(GUIContent label, GUIContent label2, params GUILayoutOption[] options) { }   // SR:EditorGUILayout.LabelField
@@ -136,7 +136,7 @@ namespace UnityEditor
 
     public sealed class EditorApplication { public static double timeSinceStartup => 0.0; } // SR:EditorApplication-timeSinceStartup
 
-    public sealed class Handles                                                              // SR:Handles
+    public sealed partial class Handles                                                      // SR:Handles (sealed partial in 2022.3)
     {
         public delegate void CapFunction(int controlID, Vector3 position, Quaternion rotation, float size, EventType eventType); // SR:Handles.CapFunction
         public static Color color { get; set; }                                              // SR:Handles-color

@@ -190,6 +190,8 @@ namespace UnityEngine
         public static Color white => default;                                         // SR:Color-white
         public static Color yellow => default;                                        // SR:Color-yellow
         public static Color cyan => default;                                          // SR:Color-cyan
+        public static Color red => default;                                           // SR:Color-red
+        public static Color green => default;                                         // SR:Color-green
     }
 
     public struct Bounds                                                              // SR:Bounds
@@ -385,9 +387,9 @@ namespace UnityEngine
     {
         public static bool Button(GUIContent content, params GUILayoutOption[] options) => false; // SR:GUILayout.Button
     }
-    public enum EventType { MouseDown = 0, MouseUp = 1, MouseDrag = 3, KeyDown = 4, KeyUp = 5, Repaint = 7, Layout = 8 } // SR:EventType
-    public enum KeyCode { G = 103, I = 105, U = 117 }                                 // SR:KeyCode (values: ASCII, as listed)
-    public sealed class Event                                                         // SR:Event
+    public enum EventType { MouseDown = 0, MouseUp = 1, MouseMove = 2, MouseDrag = 3, KeyDown = 4, KeyUp = 5, Repaint = 7, Layout = 8 } // SR:EventType
+    public enum KeyCode { LeftBracket = 91, RightBracket = 93, B = 98, G = 103, I = 105, U = 117 }                                 // SR:KeyCode (values: ASCII, as listed)
+    public sealed partial class Event                                                 // SR:Event (sealed partial in 2022.3)
     {
         public static Event current { get => null; set { } }                          // SR:Event-current
         public EventType type { get; set; }                                           // SR:Event-type

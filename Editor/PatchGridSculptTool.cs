@@ -1,0 +1,244 @@
+using System;
+using GregoryTerrain;
+using UnityEditor;
+using UnityEditor.EditorTools;
+using UnityEngine;
+
+namespace GregoryTerrain.EditorTools
+{
+    /// <summary>What the sculpt tool's left mouse button does.</summary>
+    internal enum SculptMode
+    {
+        /// <summary>Raise the ground under the brush (hold Shift to lower it).</summary>
+        Raise,
+        /// <summary>Lower the ground under the brush (hold Shift to raise it).</summary>
+        Lower,
+        /// <summary>Even out bumps under the brush.</summary>
+        Smooth,
+        /// <summary>Pull the ground toward the height where the stroke started.</summary>
+        Flatten,
+        /// <summary>Drag over the terrain to select a rectangle of patches.</summary>
+        SelectPatches,
+    }
+
+    /// <summary>
+    /// The Scene-view sculpt tool of a Gregory terrain (the Tools overlay shows it when a terrain is
+    /// selected), as Unity's Terrain tools work: the brush disc follows the surface under the mouse
+    /// (the renderer's Raycast), a left drag paints a stroke of dabs (Core's PatchBrush: heights of
+    /// the control points under the brush, G1 kept), and each stroke is one undo step that records
+    /// only the blocks it changed. SelectPatches drags a patch rectangle, drawn on the surface, which
+    /// confines the brush and is what the Patch Grid window's "Refit selection" refits. Settings
+    /// live in the renderer's inspector while the tool is active.
+    /// </summary>
+    [EditorTool("Sculpt Gregory Terrain", typeof(GregoryTerrainRenderer))]
+    internal sealed class PatchGridSculptTool : EditorTool
+    {
+        internal static SculptMode Mode = SculptMode.Raise;
+        /// <summary>Brush radius in metres (world units along the terrain's x).</summary>
+        internal static float RadiusMetres = 50f;
+        /// <summary>Raise/lower: metres added at the brush centre per dab.</summary>
+        internal static float HeightMetres = 1f;
+        /// <summary>Smooth/flatten: fraction of the way per dab at the centre.</summary>
+        internal static float Amount = 0.5f;
+        /// <summary>Whether the selection confines the brush.</summary>
+        internal static bool BrushInsideSelection = true;
+
+        /// <summary>The selected patches and the grid they belong to (cleared when the grid changes shape).</summary>
+        internal static PatchGridAsset SelectionGrid;
+        internal static PatchRect Selection;
+
+        static readonly GUIContent Icon = new GUIContent("Sculpt", "Sculpt the Gregory terrain: raise, lower, smooth or flatten with a brush, or select patches.");
+
+        const string StrokeName = "Sculpt Gregory terrain";
+        int _undoGroup = -1;
+        PatchGrid _strokeGrid;          // the grid as Core sees it during a stroke: dabs apply to it and to the asset
+        Vector3 _lastDab;
+        double _flattenTarget;
+        int _selectFrom = -1;
+
+        public override GUIContent toolbarIcon => Icon;
+
+        static readonly GUIContent ModeLabel = new GUIContent("Sculpt mode", "What a left drag on the terrain does. Shift swaps raise and lower.");
+        static readonly GUIContent RadiusLabel = new GUIContent("Brush radius (m)", "Size of the brush in metres. Keys Shift+[ and Shift+] shrink and grow it.");
+        static readonly GUIContent HeightLabel = new GUIContent("Height per dab (m)", "How far one dab raises or lowers the ground at the brush centre, in metres.");
+        static readonly GUIContent AmountLabel = new GUIContent("Strength", "How far one dab moves the ground toward smooth or flat at the brush centre: 0 nothing, 1 all the way.");
+        static readonly GUIContent InsideLabel = new GUIContent("Only inside selection", "Keep the brush inside the selected patches; points just outside may still move so the surface stays smooth.");
+        static readonly GUIContent ClearLabel = new GUIContent("Clear selection", "Forget the selected patches.");
+
+        /// <summary>The tool's settings, shown in the renderer's inspector.</summary>
+        internal static void DrawSettings()
+        {
+            EditorGUILayout.Space();
+            EditorGUILayout.HelpBox("Sculpt: pick the Sculpt tool in the Scene view's Tools overlay (key B), then drag on the terrain. Each stroke is one undo step.", MessageType.None);
+            Mode = (SculptMode)EditorGUILayout.EnumPopup(ModeLabel, Mode);
+            RadiusMetres = Mathf.Max(1e-3f, EditorGUILayout.FloatField(RadiusLabel, RadiusMetres));
+            if (Mode == SculptMode.Raise || Mode == SculptMode.Lower)
+                HeightMetres = Mathf.Max(0f, EditorGUILayout.FloatField(HeightLabel, HeightMetres));
+            else if (Mode != SculptMode.SelectPatches)
+                Amount = EditorGUILayout.Slider(AmountLabel, Amount, 0f, 1f);
+            BrushInsideSelection = EditorGUILayout.Toggle(InsideLabel, BrushInsideSelection);
+            if (SelectionGrid != null)
+            {
+                EditorGUILayout.LabelField("Selection", $"columns {Selection.I0} to {Selection.I1}, rows {Selection.J0} to {Selection.J1} of '{SelectionGrid.name}'");
+                if (GUILayout.Button(ClearLabel)) { SelectionGrid = null; SceneView.RepaintAll(); }
+            }
+        }
+
+        /// <summary>Grows or shrinks the brush by a fifth (the shortcuts).</summary>
+        internal static void ScaleBrush(float factor)
+        {
+            RadiusMetres = Mathf.Max(1e-3f, RadiusMetres * factor);
+            SceneView.RepaintAll();
+        }
+
+        /// <summary>The selection when it belongs to <paramref name="grid"/> and fits its shape.</summary>
+        internal static PatchRect? SelectionOf(PatchGridAsset grid)
+        {
+            if (grid == null || SelectionGrid != grid) return null;
+            if (Selection.I1 >= grid.Columns || Selection.J1 >= grid.Rows) return null;
+            return Selection;
+        }
+
+        public override void OnWillBeDeactivated() => EndStroke();
+
+        public override void OnToolGUI(EditorWindow window)
+        {
+            if (!(window is SceneView)) return;
+            var renderer = target as GregoryTerrainRenderer;
+            if (renderer == null) return;
+            PatchGridAsset grid = renderer.Grid;
+            if (grid == null || !grid.IsValid) return;
+            Event e = Event.current;
+            int id = GUIUtility.GetControlID(FocusType.Passive);
+            if (e.type == EventType.Layout) HandleUtility.AddDefaultControl(id);   // clicks paint instead of selecting other objects
+
+            DrawSelection(renderer, grid);
+            Ray ray = HandleUtility.GUIPointToWorldRay(e.mousePosition);
+            bool hit = renderer.Raycast(ray, float.PositiveInfinity, out Vector3 point, out Vector3 normal, out _);
+            if (hit && e.type == EventType.Repaint && Mode != SculptMode.SelectPatches)
+            {
+                Handles.matrix = Matrix4x4.identity;   // the disc is in world space
+                Handles.color = Mode == SculptMode.Smooth ? Color.cyan : Mode == SculptMode.Flatten ? Color.yellow : (Mode == SculptMode.Lower) != e.shift ? Color.red : Color.green;
+                Handles.DrawWireDisc(point, normal, RadiusMetres);
+                Handles.DrawWireDisc(point, normal, 0.5f * RadiusMetres);
+            }
+
+            switch (e.type)
+            {
+                case EventType.MouseMove:
+                    HandleUtility.Repaint();
+                    break;
+                case EventType.MouseDown when e.button == 0 && !e.alt && hit:
+                    if (Mode == SculptMode.SelectPatches) _selectFrom = PatchUnder(renderer, grid, point);
+                    else BeginStroke(renderer, grid, point);
+                    Select(renderer, grid, point);
+                    e.Use();
+                    break;
+                case EventType.MouseDrag when e.button == 0 && (_strokeGrid != null || _selectFrom >= 0):
+                    if (hit)
+                    {
+                        if (_strokeGrid != null && Distance(point, _lastDab) >= 0.25f * RadiusMetres) Dab(renderer, grid, point, e.shift);
+                        Select(renderer, grid, point);
+                    }
+                    e.Use();
+                    break;
+                case EventType.MouseUp when e.button == 0 && (_strokeGrid != null || _selectFrom >= 0):
+                    EndStroke();
+                    _selectFrom = -1;
+                    e.Use();
+                    break;
+            }
+        }
+
+        void BeginStroke(GregoryTerrainRenderer renderer, PatchGridAsset grid, Vector3 point)
+        {
+            Undo.IncrementCurrentGroup();
+            Undo.SetCurrentGroupName(StrokeName);
+            _undoGroup = Undo.GetCurrentGroup();
+            PatchGridAssetUndo.MoveLegacyDataToBlocks(grid, StrokeName);
+            _strokeGrid = grid.ToPatchGrid();
+            _flattenTarget = renderer.transform.InverseTransformPoint(point).y;   // object y is terrain height z
+            Dab(renderer, grid, point, Event.current.shift);
+        }
+
+        void Dab(GregoryTerrainRenderer renderer, PatchGridAsset grid, Vector3 point, bool invert)
+        {
+            _lastDab = point;
+            Vector3 local = renderer.transform.InverseTransformPoint(point);
+            Vector3 scale = renderer.transform.lossyScale;
+            float sx = Mathf.Max(Mathf.Abs(scale.x), 1e-12f), sy = Mathf.Max(Mathf.Abs(scale.y), 1e-12f);
+            bool lower = (Mode == SculptMode.Lower) != invert;
+            BrushDab dab = Mode switch
+            {
+                SculptMode.Smooth => new BrushDab(BrushMode.Smooth, local.x, local.z, RadiusMetres / sx, Amount),
+                SculptMode.Flatten => new BrushDab(BrushMode.Flatten, local.x, local.z, RadiusMetres / sx, Amount, _flattenTarget),
+                _ => new BrushDab(BrushMode.Raise, local.x, local.z, RadiusMetres / sx, (lower ? -HeightMetres : HeightMetres) / sy),
+            };
+            try
+            {
+                PatchEdit edit = PatchBrush.Apply(_strokeGrid, dab, BrushInsideSelection ? SelectionOf(grid) : null);
+                PatchGridAssetUndo.ApplyEdit(grid, edit, StrokeName);
+                edit.ApplyTo(_strokeGrid);
+            }
+            catch (ArgumentException ex)
+            {
+                Debug.LogWarning($"Sculpt: {ex.Message} The grid was not changed by this dab.", grid);
+                EndStroke();
+            }
+        }
+
+        void EndStroke()
+        {
+            if (_undoGroup >= 0) Undo.CollapseUndoOperations(_undoGroup);
+            _undoGroup = -1;
+            _strokeGrid = null;
+        }
+
+        void Select(GregoryTerrainRenderer renderer, PatchGridAsset grid, Vector3 point)
+        {
+            if (Mode != SculptMode.SelectPatches || _selectFrom < 0) return;
+            int to = PatchUnder(renderer, grid, point);
+            SelectionGrid = grid;
+            Selection = PatchRect.Spanning(_selectFrom % grid.Columns, _selectFrom / grid.Columns, to % grid.Columns, to / grid.Columns);
+        }
+
+        static int PatchUnder(GregoryTerrainRenderer renderer, PatchGridAsset grid, Vector3 point)
+        {
+            Vector3 local = renderer.transform.InverseTransformPoint(point);   // object (x, height, y)
+            return grid.FindPatch(local.x, local.z);
+        }
+
+        static float Distance(Vector3 a, Vector3 b)
+        {
+            float dx = a.x - b.x, dy = a.y - b.y, dz = a.z - b.z;
+            return (float)Math.Sqrt(dx * dx + dy * dy + dz * dz);
+        }
+
+        /// <summary>The selection's outline along the boundary control points of its border patches (they lie on the surface's border curves' polygons).</summary>
+        static void DrawSelection(GregoryTerrainRenderer renderer, PatchGridAsset grid)
+        {
+            if (Event.current.type != EventType.Repaint || !(SelectionOf(grid) is PatchRect s)) return;
+            Handles.matrix = renderer.transform.localToWorldMatrix;
+            Handles.color = Color.yellow;
+            for (int i = s.I0; i <= s.I1; i++)
+            {
+                Edge(grid, s.J0 * grid.Columns + i, 0, 4);
+                Edge(grid, s.J1 * grid.Columns + i, 3, 4);
+            }
+            for (int j = s.J0; j <= s.J1; j++)
+            {
+                Edge(grid, j * grid.Columns + s.I0, 0, 1);
+                Edge(grid, j * grid.Columns + s.I1, 12, 1);
+            }
+            Handles.matrix = Matrix4x4.identity;
+        }
+
+        static void Edge(PatchGridAsset grid, int patch, int first, int step)
+        {
+            for (int k = 0; k < 3; k++)
+                Handles.DrawLine(ToObject(grid.GetControlPoint(patch, first + k * step)), ToObject(grid.GetControlPoint(patch, first + (k + 1) * step)));
+        }
+
+        static Vector3 ToObject(Vector3 terrain) => new Vector3(terrain.x, terrain.z, terrain.y);
+    }
+}
