@@ -115,7 +115,6 @@ namespace UnityEditor
         public static void RecordObject(Object objectToUndo, string name) { }                // SR:Undo.RecordObject
         public static void RegisterCreatedObjectUndo(Object objectToUndo, string name) { }   // SR:Undo.RegisterCreatedObjectUndo
         public static void PerformUndo() { }                                                 // SR:Undo.PerformUndo
-        public static void IncrementCurrentGroup() { }                                       // SR:Undo.IncrementCurrentGroup
     }
 
     public sealed partial class AssetDatabase                                                   // SR:AssetDatabase
