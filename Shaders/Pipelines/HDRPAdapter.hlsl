@@ -79,9 +79,14 @@ int _PassValue;
 float4 _SelectionID;   // read as unity_SelectionID (ShaderVariables.hlsl)
 #endif
 
+// The translation is made camera-relative before the object position is added: both it and the
+// camera may be kilometres from the world origin, and mul(M, p) would round the sum there (4 mm at
+// 50 km) before the subtraction could cancel it. (M t - C) is the difference of two large floats,
+// then the small rotated position joins it.
 float3 GT_ObjectToWorld(float3 positionOS)
 {
-    return GetCameraRelativePositionWS(mul(_GtObjectToWorld, float4(positionOS, 1.0)).xyz);
+    float3 translation = GetCameraRelativePositionWS(_GtObjectToWorld._m03_m13_m23);
+    return mul((float3x3)_GtObjectToWorld, positionOS) + translation;
 }
 // Inverse transpose (a direction: no camera-relative shift).
 float3 GT_ObjectToWorldNormal(float3 normalOS) { return normalize(mul(normalOS, (float3x3)_GtWorldToObject)); }
