@@ -85,7 +85,8 @@ float4 _SelectionID;   // read as unity_SelectionID (ShaderVariables.hlsl)
 // then the small rotated position joins it.
 float3 GT_ObjectToWorld(float3 positionOS)
 {
-    float3 translation = GetCameraRelativePositionWS(_GtObjectToWorld._m03_m13_m23);
+    // Rows' w: the translation column (a matrix swizzle such as _m03_m13_m23 miscompiles in glslang).
+    float3 translation = GetCameraRelativePositionWS(float3(_GtObjectToWorld[0].w, _GtObjectToWorld[1].w, _GtObjectToWorld[2].w));
     return mul((float3x3)_GtObjectToWorld, positionOS) + translation;
 }
 // Inverse transpose (a direction: no camera-relative shift).
