@@ -73,7 +73,7 @@ namespace GregoryTerrain.EditorTools
             bool mayCache = vertexEvaluation.hasMultipleDifferentValues ||
                             vertexEvaluation.intValue == (int)VertexEvaluation.ComputeCache;
 
-            Section("Content", true, () => Fields("grid", "material", "range"));
+            Section("Content", true, () => Fields("grid", "material", "terrainSize", "heightScale", "range"));
             Section("Tessellation", true, () =>
             {
                 Fields("tiles", "uniformFactor");

@@ -135,10 +135,10 @@ namespace GregoryTerrain
             }
         }
 
-        /// <summary>Terrain-space point (the unit square) under a world position.</summary>
-        Double2 TerrainPoint(Vector3 world)
+        /// <summary>Terrain-space point (the unit square) under a world position, through the renderer's world frame.</summary>
+        static Double2 TerrainPoint(in TerrainWorldFrame frame, Vector3 world)
         {
-            Vector3 o = terrain.transform.InverseTransformPoint(world);
+            Double3 o = frame.WorldToObject(new Double3(world.x, world.y, world.z));
             return new Double2(o.x, o.z);
         }
 
@@ -146,9 +146,11 @@ namespace GregoryTerrain
         {
             TerrainSurfaceQuery query = terrain.SurfaceQuery;
             if (query == null) return;
-            Vector3 scale = terrain.transform.lossyScale;
-            double spacingTerrain = spacing / Math.Max(Math.Abs((double)scale.x), 1e-30);
-            Double2 at = TerrainPoint(target.position);
+            // The renderer's frame (terrain size, height scale, floating-origin offset): the same as the draw's.
+            TerrainWorldFrame frame = terrain.WorldFrame;
+            Double3 scale = frame.ObjectScale;
+            double spacingTerrain = spacing / Math.Max(scale.x, 1e-30);
+            Double2 at = TerrainPoint(frame, target.position);
             bool stale = !_hasCurrent || query != _builtFrom || _builtSamples != samples || _current.spacing != spacingTerrain;
             if (!stale && !_current.NeedsRebuild(at, recentreThreshold)) return;
             ColliderPatch patch;
@@ -168,11 +170,8 @@ namespace GregoryTerrain
             double centreHeight = query.SampleHeight(GMath.clamp(c.x, 0.0, 1.0), GMath.clamp(c.y, 0.0, 1.0));
             if (double.IsNaN(centreHeight)) centreHeight = 0.0;
             // In double: the object point rounded to float first would place the patch 6 mm off on a 100 km terrain.
-            Matrix4x4 m = terrain.transform.localToWorldMatrix;
-            double ox = c.x, oy = centreHeight, oz = c.y;
-            _pendingPosition = new Vector3((float)(m.m00 * ox + m.m01 * oy + m.m02 * oz + m.m03),
-                                           (float)(m.m10 * ox + m.m11 * oy + m.m12 * oz + m.m13),
-                                           (float)(m.m20 * ox + m.m21 * oy + m.m22 * oz + m.m23));
+            Double3 centre = frame.ObjectToWorld(new Double3(c.x, centreHeight, c.y));
+            _pendingPosition = new Vector3((float)centre.x, (float)centre.y, (float)centre.z);
             _pendingRotation = terrain.transform.rotation;
             double sx = scale.x, sy = scale.y, sz = scale.z;
             float[] heights = _heights;

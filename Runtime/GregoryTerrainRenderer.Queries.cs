@@ -68,7 +68,7 @@ namespace GregoryTerrain
             surfacePoint = surfaceNormal = Vector3.zero;
             TerrainSurfaceQuery q = SurfaceQuery;
             if (q == null) return false;
-            var frame = new QueryFrame(transform);
+            var frame = new QueryFrame(WorldFrame);
             Double3 o = frame.ToObject(worldPosition);
             double h = q.Sample(o.x, o.z, out Double3 n);   // object (x, height, y)
             if (double.IsNaN(h)) return false;
@@ -86,7 +86,7 @@ namespace GregoryTerrain
             if (heights.Length < worldPositions.Length)
                 throw new ArgumentException($"heights.Length ({heights.Length}) must be at least worldPositions.Length ({worldPositions.Length})", nameof(heights));
             TerrainSurfaceQuery q = SurfaceQuery;
-            var frame = new QueryFrame(transform);
+            var frame = new QueryFrame(WorldFrame);
             for (int i = 0; i < worldPositions.Length; i++)
             {
                 if (q == null) { heights[i] = float.NaN; continue; }
@@ -108,7 +108,7 @@ namespace GregoryTerrain
             distance = 0f;
             TerrainSurfaceQuery q = SurfaceQuery;
             if (q == null || !(maxDistance >= 0f)) return false;
-            var frame = new QueryFrame(transform);
+            var frame = new QueryFrame(WorldFrame);
             Double3 o = frame.ToObject(ray.origin);
             Double3 d = frame.DirectionToObject(ray.direction);
             double worldLength = GMath.length(new Double3(ray.direction.x, ray.direction.y, ray.direction.z));
@@ -126,46 +126,32 @@ namespace GregoryTerrain
         }
 
         /// <summary>
-        /// The Transform's matrices in double, read once per call: world to object (x, height, y) and
-        /// back, for points, directions and normals. Double so a far terrain's object coordinates keep
-        /// what the float matrix entries hold.
+        /// The renderer's <see cref="WorldFrame"/> (Transform, terrain size, height scale, floating-origin
+        /// offset; double), read once per call: world to object (x, height, y) and back, for points,
+        /// directions and normals, the same frame the draw matrices come from.
         /// </summary>
         readonly struct QueryFrame
         {
-            readonly Matrix4x4 _toWorld, _toObject;
+            readonly TerrainWorldFrame _frame;
 
-            public QueryFrame(Transform t)
-            {
-                _toWorld = t.localToWorldMatrix;
-                _toObject = t.worldToLocalMatrix;
-            }
+            public QueryFrame(TerrainWorldFrame frame) { _frame = frame; }
 
             /// <summary>World units per object unit along the terrain's up axis.</summary>
-            public double VerticalScale => Math.Sqrt((double)_toWorld.m01 * _toWorld.m01 + (double)_toWorld.m11 * _toWorld.m11 + (double)_toWorld.m21 * _toWorld.m21);
+            public double VerticalScale => _frame.ObjectScale.y;
 
-            public Double3 ToObject(Vector3 w) => new Double3(
-                (double)_toObject.m00 * w.x + (double)_toObject.m01 * w.y + (double)_toObject.m02 * w.z + _toObject.m03,
-                (double)_toObject.m10 * w.x + (double)_toObject.m11 * w.y + (double)_toObject.m12 * w.z + _toObject.m13,
-                (double)_toObject.m20 * w.x + (double)_toObject.m21 * w.y + (double)_toObject.m22 * w.z + _toObject.m23);
+            public Double3 ToObject(Vector3 w) => _frame.WorldToObject(new Double3(w.x, w.y, w.z));
 
-            public Double3 DirectionToObject(Vector3 w) => new Double3(
-                (double)_toObject.m00 * w.x + (double)_toObject.m01 * w.y + (double)_toObject.m02 * w.z,
-                (double)_toObject.m10 * w.x + (double)_toObject.m11 * w.y + (double)_toObject.m12 * w.z,
-                (double)_toObject.m20 * w.x + (double)_toObject.m21 * w.y + (double)_toObject.m22 * w.z);
+            public Double3 DirectionToObject(Vector3 w) => _frame.DirectionToObject(new Double3(w.x, w.y, w.z));
 
-            public Vector3 ToWorld(Double3 o) => new Vector3(
-                (float)(_toWorld.m00 * o.x + _toWorld.m01 * o.y + _toWorld.m02 * o.z + _toWorld.m03),
-                (float)(_toWorld.m10 * o.x + _toWorld.m11 * o.y + _toWorld.m12 * o.z + _toWorld.m13),
-                (float)(_toWorld.m20 * o.x + _toWorld.m21 * o.y + _toWorld.m22 * o.z + _toWorld.m23));
+            public Vector3 ToWorld(Double3 o)
+            {
+                Double3 w = _frame.ObjectToWorld(o);
+                return new Vector3((float)w.x, (float)w.y, (float)w.z);
+            }
 
-            /// <summary>Normals go through the inverse transpose: n_world = (worldToLocal)^T n_object, then normalized.</summary>
             public Vector3 NormalToWorld(Double3 n)
             {
-                var w = new Double3(
-                    _toObject.m00 * n.x + _toObject.m10 * n.y + _toObject.m20 * n.z,
-                    _toObject.m01 * n.x + _toObject.m11 * n.y + _toObject.m21 * n.z,
-                    _toObject.m02 * n.x + _toObject.m12 * n.y + _toObject.m22 * n.z);
-                w = GMath.normalize(w);
+                Double3 w = _frame.NormalToWorld(n);
                 return new Vector3((float)w.x, (float)w.y, (float)w.z);
             }
         }

@@ -83,6 +83,11 @@ namespace GregoryTerrain
         [Tooltip("The camera whose view sets the detail and culls tiles for all cameras and shadows. Empty: the main camera.")]
         [SerializeField] Camera lodCamera;
 
+        [Tooltip("Metres across the terrain's x and y (the whole grid). The Transform then needs only position and rotation.")]
+        [SerializeField] Vector2 terrainSize = new Vector2(1f, 1f);
+        [Tooltip("Metres per terrain height unit (a grid height of 0.01 on a terrainSize of 1000 m with heightScale 1000 is 10 m).")]
+        [SerializeField] float heightScale = 1f;
+
         [Tooltip("The part of the terrain drawn, as min x, min y, max x, max y inside 0..1. Range controllers set it every frame.")]
         [SerializeField] Vector4 range = new Vector4(0f, 0f, 1f, 1f);
 
@@ -151,6 +156,8 @@ namespace GregoryTerrain
         Matrix4x4 _objectToWorld = Matrix4x4.identity;   // what PushMatrices sent (deep-zoom offset included)
         Matrix4x4 _worldToObject = Matrix4x4.identity;   // its inverse, as sent (the cache's world normals)
         Matrix4x4 _pushedLocalToWorld;                   // the Transform's matrix when PushMatrices ran (offset not added)
+        Double3 _worldOffset;                            // ShiftOrigin's sum, in double (floating origin)
+        bool _frameDirty = true;                         // terrainSize, heightScale or the world offset changed
         int _gridStamp;                                  // bumped on every upload: the cache sees new grid buffers
         readonly System.Collections.Generic.List<int> _setLastPrepare = new System.Collections.Generic.List<int>(16);
         SnowSimulator _snow;                             // the enabled simulator attached to this renderer
@@ -168,6 +175,72 @@ namespace GregoryTerrain
 
         /// <summary>The material (GregoryTerrain/Terrain shader).</summary>
         public Material Material { get => material; set => material = value; }
+
+        /// <summary>
+        /// Metres across the terrain's x and y (Unity's x and z): the object-to-world matrix carries it,
+        /// so the Transform holds position and rotation only. Throws ArgumentException (naming the
+        /// field and value) unless both are finite and positive.
+        /// </summary>
+        public Vector2 TerrainSize
+        {
+            get => terrainSize;
+            set
+            {
+                TerrainWorldFrame.CheckScale(new Double2(value.x, value.y), heightScale);
+                terrainSize = value;
+                _frameDirty = true;
+            }
+        }
+
+        /// <summary>Metres per terrain height unit (Unity's y). Throws ArgumentException unless finite and positive.</summary>
+        public float HeightScale
+        {
+            get => heightScale;
+            set
+            {
+                TerrainWorldFrame.CheckScale(new Double2(terrainSize.x, terrainSize.y), value);
+                heightScale = value;
+                _frameDirty = true;
+            }
+        }
+
+        /// <summary>
+        /// For floating-origin applications: the application has moved the world by
+        /// <paramref name="delta"/> (every object's position gained it) and the terrain moves with it,
+        /// kept as a double offset by the renderer rather than in the float Transform (which rounds at
+        /// 4 mm at 50 km). Do not move this object's Transform as well. Nothing moves on screen when the
+        /// camera was shifted by the same delta; the CPU queries and the collider use the same offset.
+        /// Throws ArgumentException unless <paramref name="delta"/> is finite.
+        /// </summary>
+        public void ShiftOrigin(Vector3 delta)
+        {
+            if (!(float.IsFinite(delta.x) && float.IsFinite(delta.y) && float.IsFinite(delta.z)))
+                throw new ArgumentException($"delta {delta} must be finite", nameof(delta));
+            _worldOffset += new Double3(delta.x, delta.y, delta.z);
+            _frameDirty = true;
+        }
+
+        /// <summary>The sum of every <see cref="ShiftOrigin"/> so far, rounded to float (the renderer keeps it in double).</summary>
+        public Vector3 WorldOriginOffset => new Vector3((float)_worldOffset.x, (float)_worldOffset.y, (float)_worldOffset.z);
+
+        /// <summary>
+        /// The terrain's world frame now: the Transform, <see cref="TerrainSize"/>, <see cref="HeightScale"/>
+        /// and the floating-origin offset, in double. Draw matrices, queries and the collider use it.
+        /// </summary>
+        internal TerrainWorldFrame WorldFrame
+        {
+            get
+            {
+                Transform t = transform;
+                return new TerrainWorldFrame(ToFloat4x4(t.localToWorldMatrix), ValidSize(), ValidHeightScale(), _worldOffset);
+            }
+        }
+
+        // The serialized values can be anything the Inspector or a scene file holds: a bad one draws
+        // at 1 (logged by OnValidate) rather than throwing from every frame.
+        Double2 ValidSize() => terrainSize.x > 0f && terrainSize.y > 0f && float.IsFinite(terrainSize.x) && float.IsFinite(terrainSize.y)
+            ? new Double2(terrainSize.x, terrainSize.y) : new Double2(1.0, 1.0);
+        double ValidHeightScale() => heightScale > 0f && float.IsFinite(heightScale) ? heightScale : 1.0;
 
         /// <summary>Tiles per side M.</summary>
         public int Tiles { get => tiles; set { tiles = Mathf.Clamp(value, 1, 64); _settingsDirty = true; } }
@@ -327,7 +400,10 @@ namespace GregoryTerrain
         void OnValidate()
         {
             _settingsDirty = true;
+            _frameDirty = true;
             SyncRangeFromSerialized();
+            try { TerrainWorldFrame.CheckScale(new Double2(terrainSize.x, terrainSize.y), heightScale); }
+            catch (ArgumentException e) { Debug.LogError($"{name}: {e.Message}; drawing at 1 until fixed", this); }
         }
 
         /// <summary>GPU buffers, the runtime material copy and the per-draw state: what OnDisable and a domain reload free.</summary>
@@ -371,7 +447,7 @@ namespace GregoryTerrain
             {
                 PushRange();
                 if (_settingsError == null) UpdateTileLattice(fallback);
-                if (UpdateOutputOffset() || TransformMoved()) PushMatrices();
+                if (UpdateOutputOffset() || TransformMoved() || _frameDirty) PushMatrices();
             }
             if (_settingsError != null) return false;   // logged once; drawn again after the next valid change
             if (!UpdateVertexCache(fallback)) return false;
@@ -503,27 +579,18 @@ namespace GregoryTerrain
 
         /// <summary>
         /// RenderPrimitives has no object matrix (the shader gets none from Unity), so the adapters
-        /// read ours: the Transform's, with the deep-zoom output offset added in object space first
-        /// (object = terrain (x, z, y)): <c>localToWorld * Translate(t)</c> and
-        /// <c>Translate(-t) * worldToLocal</c>, written into the translation entries. Sent when the
-        /// Transform or the offset changes only.
+        /// read ours, from <see cref="WorldFrame"/>: <c>T(worldOffset) localToWorld S T(t)</c>, S the
+        /// terrain size and height scale, t the deep-zoom output offset in object space (object =
+        /// terrain (x, z, y)), and its inverse, every entry formed in double and rounded once
+        /// (<see cref="TerrainWorldFrame.DrawMatrices"/>). Sent when the Transform, the size, the world
+        /// offset or the output offset changes only.
         /// </summary>
         void PushMatrices()
         {
-            Matrix4x4 m = transform.localToWorldMatrix, w = transform.worldToLocalMatrix;
-            _pushedLocalToWorld = m;
-            double tx = _outputOffset.x, ty = _outputOffset.z, tz = _outputOffset.y;   // terrain -> object (x, z, y)
-            if (tx != 0.0 || ty != 0.0 || tz != 0.0)
-            {
-                // M T(t): the translation column gains M's 3x3 times t (summed in double).
-                m.m03 = (float)(m.m03 + m.m00 * tx + m.m01 * ty + m.m02 * tz);
-                m.m13 = (float)(m.m13 + m.m10 * tx + m.m11 * ty + m.m12 * tz);
-                m.m23 = (float)(m.m23 + m.m20 * tx + m.m21 * ty + m.m22 * tz);
-                // T(-t) W for an affine W (last row 0 0 0 1): the translation entries lose t.
-                w.m03 = (float)(w.m03 - tx);
-                w.m13 = (float)(w.m13 - ty);
-                w.m23 = (float)(w.m23 - tz);
-            }
+            _pushedLocalToWorld = transform.localToWorldMatrix;
+            _frameDirty = false;
+            WorldFrame.DrawMatrices(TerrainVertex.TerrainToObject(_outputOffset), out Float4x4 fm, out Float4x4 fw);
+            Matrix4x4 m = ToMatrix4x4(fm), w = ToMatrix4x4(fw);
             SetMatrix(ShaderIds.ObjectToWorld, m);
             SetMatrix(ShaderIds.WorldToObject, w);
             _objectToWorld = m;   // the vertex cache's LOD matrix uses the same object matrix
@@ -547,7 +614,10 @@ namespace GregoryTerrain
             float noise = NoiseMargin();
             Vector3 min = new Vector3((float)_range.c, _gridMinZ - noise, (float)_range.d);
             Vector3 max = new Vector3((float)_range.g, _gridMaxZ + noise, (float)_range.h);
-            Matrix4x4 m = transform.localToWorldMatrix;
+            Matrix4x4 m = _objectToWorld;   // size, height scale and offset included (t is added to the object points below)
+            Double3 t = TerrainVertex.TerrainToObject(_outputOffset);
+            min -= new Vector3((float)t.x, (float)t.y, (float)t.z);
+            max -= new Vector3((float)t.x, (float)t.y, (float)t.z);
             Vector3 c = m.MultiplyPoint3x4(0.5f * (min + max));
             Vector3 e = 0.5f * (max - min);
             // Extents of a transformed box: |M| applied to the half sizes.
@@ -557,6 +627,14 @@ namespace GregoryTerrain
                 Mathf.Abs(m.m20) * e.x + Mathf.Abs(m.m21) * e.y + Mathf.Abs(m.m22) * e.z);
             return new Bounds(c, 2f * we);
         }
+
+        static Matrix4x4 ToMatrix4x4(Float4x4 f) => new Matrix4x4
+        {
+            m00 = f.c0.x, m10 = f.c0.y, m20 = f.c0.z, m30 = f.c0.w,
+            m01 = f.c1.x, m11 = f.c1.y, m21 = f.c1.z, m31 = f.c1.w,
+            m02 = f.c2.x, m12 = f.c2.y, m22 = f.c2.z, m32 = f.c2.w,
+            m03 = f.c3.x, m13 = f.c3.y, m23 = f.c3.z, m33 = f.c3.w,
+        };
 
         /// <summary>sum_k amplitude / beta^k over the octaves: the most noise can move a point.</summary>
         float NoiseMargin()

@@ -4,9 +4,10 @@
 // The patch grid on the GPU; mirrors PatchGrid.cs (FindPatch, FindInterval, RegionOf) and the
 // layout of GpuLayout.cs. Declares no resource: include TerrainInputs.hlsl (which declares
 // _ControlPoints, _Regions, _GridLines and _GridSize) before this file.
-//   _ControlPoints  StructuredBuffer<float4>  20 per patch, patch p at [20 p .. 20 p + 19], w = 1
-//   _Regions        StructuredBuffer<float4>  (a, b, e, f) per patch
-//   _GridLines      StructuredBuffer<float>   xLines[0..n] then yLines[0..m]
+//   _ControlPoints  StructuredBuffer<float4>  20 per patch, patch p at [20 p .. 20 p + 19]:
+//                                             xyz = P - R_p, w of slots 0..2 = R_p (the reference point)
+//   _Regions        StructuredBuffer<float4>  (a, b, e, f) per patch (the lines' hi parts)
+//   _GridLines      StructuredBuffer<float>   hi parts xLines[0..n], yLines[0..m], then the lo parts
 //   _GridSize       float4                    (n, m, 0, 0)
 
 #include "../Library/GregoryPatch.hlsl"
@@ -39,13 +40,31 @@ uint FindPatch(float2 q)
     return j * n + i;
 }
 
-// Region (a, b, e, f) of a patch: it covers [a, e] x [b, f].
+// Region (a, b, e, f) of a patch: it covers [a, e] x [b, f] (the hi parts of its grid lines).
 float4 PatchRegion(uint patch)
 {
     return _Regions[patch];
 }
 
-// The 20 control points of a patch, slot order of GregoryPatch.hlsl.
+// The lo parts (a, b, e, f) of a patch's grid lines: PatchRegion + PatchRegionLo is the region to ~1e-16.
+float4 PatchRegionLo(uint patch)
+{
+    uint n = (uint)_GridSize.x;
+    uint i = patch % n;
+    uint j = patch / n;
+    uint lo = n + 1u + (uint)_GridSize.y + 1u;
+    return float4(_GridLines[lo + i], _GridLines[lo + n + 1u + j], _GridLines[lo + i + 1u], _GridLines[lo + n + 1u + j + 1u]);
+}
+
+// The patch's reference point R_p (w of slots 0..2): the surface is R_p + the evaluation of the
+// points LoadGregoryPatch gives (exact, the weights sum to 1).
+float3 PatchReference(uint patch)
+{
+    uint base = GREGORY_SLOT_COUNT * patch;
+    return float3(_ControlPoints[base].w, _ControlPoints[base + 1u].w, _ControlPoints[base + 2u].w);
+}
+
+// The 20 control points of a patch relative to its reference point, slot order of GregoryPatch.hlsl.
 void LoadGregoryPatch(uint patch, out float3 cp[20])
 {
     uint base = GREGORY_SLOT_COUNT * patch;

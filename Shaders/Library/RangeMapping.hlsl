@@ -71,4 +71,24 @@ float2 PatchLocalUV(TerrainPoint p, float4 region)
     return float2(nu / (region.z - region.x), nv / (region.w - region.y));
 }
 
+// The width and height (e - a, f - b) of a region given as hi/lo pairs (the grid lines of
+// _GridLines): (e.hi - a.hi) + (e.lo - a.lo). A one-float e - a of a patch 1e-6 wide is off by up to 6%.
+float2 RegionSize(float4 region, float4 regionLo)
+{
+    precise float2 size = (region.zw - region.xy) + (regionLo.zw - regionLo.xy);
+    return size;
+}
+
+// PatchLocalUV for a hi/lo region: q - a = (originHi - a.hi) + (local - a.lo), over RegionSize.
+// A line like 0.13 is off by 4.8e-9 as one float (9% of a range 1e-7 wide), by ~1e-16 as the pair.
+float2 PatchLocalUV(TerrainPoint p, float4 region, float4 regionLo)
+{
+    float eu, ev;
+    float du = TwoSum(p.originHi.x, -region.x, eu);
+    float dv = TwoSum(p.originHi.y, -region.y, ev);
+    precise float nu = du + (eu + (p.local.x - regionLo.x));
+    precise float nv = dv + (ev + (p.local.y - regionLo.y));
+    return float2(nu, nv) / RegionSize(region, regionLo);
+}
+
 #endif // GT_RANGE_MAPPING_INCLUDED

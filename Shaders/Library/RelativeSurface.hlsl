@@ -33,7 +33,8 @@ TerrainPoint MakeTerrainPoint(float2 hi, float2 lo)
 bool RelativeSurfaceIsActive(float4 rangeOrigin) { return any(rangeOrigin != 0.0); }
 
 // FindPatch decided on the precise point: the rounded hi + local can be one patch off within a float
-// step of a grid line, where u or v would be clamped (a flat strip at deep zoom).
+// step of a grid line, where u or v would be clamped (a flat strip at deep zoom). The lines are the
+// hi/lo pairs of _GridLines (right to ~1e-16). The tile path uses it too (TerrainVertex.hlsl).
 uint FindPatchPrecise(TerrainPoint q)
 {
     uint n = GridColumns();
@@ -41,8 +42,9 @@ uint FindPatchPrecise(TerrainPoint q)
     uint i = patch % n;
     uint j = patch / n;
     float4 region = PatchRegion(patch);
-    float2 lo = TerrainPointDifference(q, MakeTerrainPoint(region.xy, float2(0.0, 0.0)));
-    float2 hi = TerrainPointDifference(q, MakeTerrainPoint(region.zw, float2(0.0, 0.0)));
+    float4 regionLo = PatchRegionLo(patch);
+    float2 lo = TerrainPointDifference(q, MakeTerrainPoint(region.xy, regionLo.xy));
+    float2 hi = TerrainPointDifference(q, MakeTerrainPoint(region.zw, regionLo.zw));
     if (lo.x < 0.0 && i > 0u) i--;
     else if (hi.x >= 0.0 && i < n - 1u) i++;
     if (lo.y < 0.0 && j > 0u) j--;
@@ -50,26 +52,27 @@ uint FindPatchPrecise(TerrainPoint q)
     return j * n + i;
 }
 
-// p clamped into region (a, b, e, f) per axis; p itself, bit for bit, when inside.
-TerrainPoint ClampToRegion(TerrainPoint p, float4 region)
+// p clamped into the hi/lo region (a, b, e, f) per axis; p itself, bit for bit, when inside.
+TerrainPoint ClampToRegion(TerrainPoint p, float4 region, float4 regionLo)
 {
-    float2 lo = TerrainPointDifference(p, MakeTerrainPoint(region.xy, float2(0.0, 0.0)));
-    float2 hi = TerrainPointDifference(p, MakeTerrainPoint(region.zw, float2(0.0, 0.0)));
+    float2 lo = TerrainPointDifference(p, MakeTerrainPoint(region.xy, regionLo.xy));
+    float2 hi = TerrainPointDifference(p, MakeTerrainPoint(region.zw, regionLo.zw));
     TerrainPoint r = p;
-    if (lo.x < 0.0) { r.originHi.x = region.x; r.local.x = 0.0; }
-    else if (hi.x > 0.0) { r.originHi.x = region.z; r.local.x = 0.0; }
-    if (lo.y < 0.0) { r.originHi.y = region.y; r.local.y = 0.0; }
-    else if (hi.y > 0.0) { r.originHi.y = region.w; r.local.y = 0.0; }
+    if (lo.x < 0.0) { r.originHi.x = region.x; r.local.x = regionLo.x; }
+    else if (hi.x > 0.0) { r.originHi.x = region.z; r.local.x = regionLo.z; }
+    if (lo.y < 0.0) { r.originHi.y = region.y; r.local.y = regionLo.y; }
+    else if (hi.y > 0.0) { r.originHi.y = region.w; r.local.y = regionLo.w; }
     return r;
 }
 
-// S_p(x) - S_p(r) in one patch; u0 clamped to [0, 1], the step not (see the C#).
-float3 PatchDifference(uint patch, float4 region, TerrainPoint x, TerrainPoint r)
+// S_p(x) - S_p(r) in one patch; u0 clamped to [0, 1], the step not (see the C#). The control
+// points are relative to the patch's reference point, which a difference does not see.
+float3 PatchDifference(uint patch, float4 region, float4 regionLo, TerrainPoint x, TerrainPoint r)
 {
     float3 cp[20];
     LoadGregoryPatch(patch, cp);
-    float2 uv0 = saturate(PatchLocalUV(r, region));
-    float2 duv = clamp(TerrainPointDifference(x, r) / (region.zw - region.xy), -1.0, 1.0);
+    float2 uv0 = saturate(PatchLocalUV(r, region, regionLo));
+    float2 duv = clamp(TerrainPointDifference(x, r) / RegionSize(region, regionLo), -1.0, 1.0);
     return GregoryDifferenceEvaluate(cp, uv0, duv);
 }
 
@@ -79,13 +82,15 @@ float3 RelativeSurfaceFromOrigin(TerrainPoint q, float4 rangeOrigin)
     TerrainPoint origin = MakeTerrainPoint(rangeOrigin.xy, rangeOrigin.zw);
     uint patch = FindPatchPrecise(q);
     float4 region = PatchRegion(patch);
-    TerrainPoint r1 = ClampToRegion(origin, region);
-    float3 d = PatchDifference(patch, region, q, r1);
+    float4 regionLo = PatchRegionLo(patch);
+    TerrainPoint r1 = ClampToRegion(origin, region, regionLo);
+    float3 d = PatchDifference(patch, region, regionLo, q, r1);
     if (any(r1.originHi != origin.originHi) || any(r1.local != origin.local))
     {
         uint patch0 = FindPatchPrecise(origin);
         float4 region0 = PatchRegion(patch0);
-        d += PatchDifference(patch0, region0, ClampToRegion(r1, region0), origin);
+        float4 regionLo0 = PatchRegionLo(patch0);
+        d += PatchDifference(patch0, region0, regionLo0, ClampToRegion(r1, region0, regionLo0), origin);
     }
     return d;
 }

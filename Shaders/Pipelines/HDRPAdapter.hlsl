@@ -65,9 +65,15 @@
 // Material constants, the object matrices, normals, the editor's selection passes.
 #include "UnityAdapterCommon.hlsl"
 
+// The translation is made camera-relative before the object position is added: both it and the
+// camera may be kilometres from the world origin, and mul(M, p) would round the sum there (4 mm at
+// 50 km) before the subtraction could cancel it. (M t - C) is the difference of two large floats,
+// then the small rotated position joins it.
 float3 GT_ObjectToWorld(float3 positionOS)
 {
-    return GetCameraRelativePositionWS(mul(_GtObjectToWorld, float4(positionOS, 1.0)).xyz);
+    // Rows' w: the translation column (a matrix swizzle such as _m03_m13_m23 miscompiles in glslang).
+    float3 translation = GetCameraRelativePositionWS(float3(_GtObjectToWorld[0].w, _GtObjectToWorld[1].w, _GtObjectToWorld[2].w));
+    return mul((float3x3)_GtObjectToWorld, positionOS) + translation;
 }
 float4 GT_WorldToClip(float3 positionWS) { return TransformWorldToHClip(positionWS); }
 float4 GT_ObjectToClip(float3 positionOS) { return TransformWorldToHClip(GT_ObjectToWorld(positionOS)); }

@@ -57,7 +57,8 @@ struct TerrainSurfacePoint
 {
     TerrainPoint q;      // global point, hi/lo
     uint patch;          // Gregory patch that was evaluated
-    float4 region;       // its (a, b, e, f)
+    float4 region;       // its (a, b, e, f), the hi parts of its grid lines
+    float4 regionLo;     // their lo parts (PatchRegionLo)
     float2 uv;           // patch-local coordinate that was evaluated
     float3 position;
     float3 dPdu;
@@ -68,18 +69,23 @@ struct TerrainSurfacePoint
 // maps normals too.
 float3 TerrainToObject(float3 v) { return v.xzy; }
 
-// The tile path after the global point q is formed: FindPatch on the float lines, PatchLocalUV,
-// GregoryEval (Core's TerrainVertex.EvaluateSurfaceAt).
+// The tile path after the global point q is formed: FindPatchPrecise on the hi/lo lines,
+// PatchLocalUV, GregoryEval of the relative points plus the reference point (Core's
+// TerrainVertex.EvaluateSurfaceAt). The precise patch matters at deep zoom, where the normal of a
+// vertex beside a line otherwise came from the neighbour.
 TerrainSurfacePoint EvaluateSurfaceAt(TerrainPoint q)
 {
     TerrainSurfacePoint s;
     s.q = q;
-    s.patch = FindPatch(TerrainPointApprox(q));
+    s.patch = FindPatchPrecise(q);
     s.region = PatchRegion(s.patch);
-    s.uv = PatchLocalUV(q, s.region);
+    s.regionLo = PatchRegionLo(s.patch);
+    s.uv = PatchLocalUV(q, s.region, s.regionLo);
     float3 cp[20];
     LoadGregoryPatch(s.patch, cp);
-    GregoryEvaluate(cp, s.uv, s.position, s.dPdu, s.dPdv);
+    float3 relative;
+    GregoryEvaluate(cp, s.uv, relative, s.dPdu, s.dPdv);
+    s.position = PatchReference(s.patch) + relative;
     return s;
 }
 
@@ -177,7 +183,7 @@ TerrainVertexAttributes FinishTerrainVertex(TerrainSurfacePoint s)
         position.z += noiseHeight;
     }
     // q = (a + u (e - a), b + v (f - b)), so the chain rule scales the gradient by the region size.
-    float2 regionSize = s.region.zw - s.region.xy;
+    float2 regionSize = RegionSize(s.region, s.regionLo);
     dPdu.z += gradient.x * regionSize.x;
     dPdv.z += gradient.y * regionSize.y;
 #endif

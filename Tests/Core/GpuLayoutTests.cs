@@ -15,19 +15,62 @@ namespace GregoryTerrain.Tests
             // Patch (2, 1) = index 1 * 4 + 2 = 6; slot P211 = 18: float4 number 6 * 20 + 18.
             int f4 = 6 * 20 + 18;
             Double3 expect = g.Patch(2, 1)[GregoryPatch.P211];
-            Assert.That(cp[4 * f4 + 0], Is.EqualTo((float)expect.x));
-            Assert.That(cp[4 * f4 + 1], Is.EqualTo((float)expect.y));
-            Assert.That(cp[4 * f4 + 2], Is.EqualTo((float)expect.z));
-            Assert.That(cp[4 * f4 + 3], Is.EqualTo(1f));
+            Float3 r = (Float3)g.Patch(2, 1)[0];
+            Assert.That(cp[4 * f4 + 0], Is.EqualTo((float)(expect.x - r.x)));
+            Assert.That(cp[4 * f4 + 1], Is.EqualTo((float)(expect.y - r.y)));
+            Assert.That(cp[4 * f4 + 2], Is.EqualTo((float)(expect.z - r.z)));
+            Assert.That(cp[4 * f4 + 3], Is.EqualTo(0f));
             Assert.That(GpuLayout.ControlPointOffset(6, 18), Is.EqualTo(4 * f4));
-            // Every element: w = 1, xyz = the rounded point.
+            // Every element: xyz = the point minus the reference (slot 0 as float), to float's precision
+            // of the difference; w of slots 0..2 = the reference, 0 elsewhere.
             for (int p = 0; p < g.PatchCount; p++)
+            {
+                Float3 reference = (Float3)g.Patches[p][0];
+                int o0 = p * 20 * 4;
+                Assert.That(new Float3(cp[o0 + 3], cp[o0 + 7], cp[o0 + 11]), Is.EqualTo(reference), "patch " + p);
                 for (int s = 0; s < 20; s++)
                 {
                     int o = (p * 20 + s) * 4;
-                    Assert.That(new Float3(cp[o], cp[o + 1], cp[o + 2]), Is.EqualTo((Float3)g.Patches[p][s]));
-                    Assert.That(cp[o + 3], Is.EqualTo(1f));
+                    Double3 d = g.Patches[p][s] - new Double3(reference.x, reference.y, reference.z);
+                    Assert.That(new Float3(cp[o], cp[o + 1], cp[o + 2]), Is.EqualTo((Float3)d));
+                    if (s > 2) Assert.That(cp[o + 3], Is.EqualTo(0f));
                 }
+            }
+            // Core reads it back as the GPU does: R_p + relative points = the rounded absolute point to float's precision.
+            TerrainInputs inputs = TerrainInputs.ForGrid(g);
+            Span<Float3> pts = stackalloc Float3[20];
+            inputs.LoadGregoryPatch(6, pts);
+            Float3 back = inputs.PatchReference(6) + pts[18];
+            Assert.That(back.x, Is.EqualTo(expect.x).Within(1e-7));
+            Assert.That(back.z, Is.EqualTo(expect.z).Within(1e-7));
+        }
+
+        [Test]
+        public void GridLinesAreHiLoPairsExactTo1e16()
+        {
+            // 0.13 as one float is off by 4.8e-9 (9% of a range 1e-7 wide); the pair keeps it to ~1e-16.
+            var g = PatchGrid.CreateFlat(2, 2, new[] { 0.0, 0.13, 1.0 }, new[] { 0.0, 0.7000000001, 1.0 });
+            float[] lines = GpuLayout.PackGridLines(g);
+            Assert.That(lines.Length, Is.EqualTo(12));
+            int lo = GpuLayout.GridLinesLoOffset(2, 2);
+            Assert.That(lo, Is.EqualTo(6));
+            Assert.That(Math.Abs((double)lines[1] - 0.13), Is.GreaterThan(4e-9));
+            Assert.That(Math.Abs((double)lines[1] + lines[lo + 1] - 0.13), Is.LessThan(1e-15));
+            Assert.That(Math.Abs((double)lines[4] + lines[lo + 4] - 0.7000000001), Is.LessThan(1e-15));
+            TerrainInputs inputs = TerrainInputs.ForGrid(g);
+            // Patch (0, 1) = index 2: [0, 0.13] x [0.7000000001, 1].
+            Float4 region = inputs.PatchRegion(2), regionLo = inputs.PatchRegionLo(2);
+            Assert.That((double)region.z + regionLo.z, Is.EqualTo(0.13).Within(1e-15));
+            Assert.That((double)region.y + regionLo.y, Is.EqualTo(0.7000000001).Within(1e-15));
+            Assert.That(regionLo.x, Is.EqualTo(0f));
+            Assert.That(regionLo.w, Is.EqualTo(0f));
+            // A point 1e-12 left of the true line 0.13 (but right of its float, 0.129999995) is in patch (0, 1) = 2 with u ~ 1.
+            Assert.That((double)0.13f, Is.LessThan(0.13 - 1e-12));   // 0.129999995
+            var q = new TerrainPoint(new Float2(0.13f, 0.75f), new Float2((float)(0.13 - 1e-12 - 0.13f), 0f));
+            Assert.That(inputs.FindPatch(RangeMapping.Approximate(q)), Is.EqualTo(3), "the float point alone lands right of the line");
+            Assert.That(RelativeSurface.FindPatchPrecise(inputs, q), Is.EqualTo(2));
+            Float2 uv = RangeMapping.PatchLocalUV(q, inputs.PatchRegion(2), inputs.PatchRegionLo(2));
+            Assert.That((double)uv.x, Is.EqualTo(1 - 1e-12 / 0.13).Within(1e-7));
         }
 
         [Test]
@@ -38,7 +81,8 @@ namespace GregoryTerrain.Tests
             // Patch (1, 1) = index 4: [0.1, 0.7] x [0.3, 1].
             Assert.That(new[] { reg[16], reg[17], reg[18], reg[19] }, Is.EqualTo(new[] { 0.1f, 0.3f, 0.7f, 1f }));
             float[] lines = GpuLayout.PackGridLines(g);
-            Assert.That(lines, Is.EqualTo(new[] { 0f, 0.1f, 0.7f, 1f, 0f, 0.3f, 1f }));
+            Assert.That(lines.AsSpan(0, 7).ToArray(), Is.EqualTo(new[] { 0f, 0.1f, 0.7f, 1f, 0f, 0.3f, 1f }));
+            Assert.That(lines.AsSpan(7, 7).ToArray(), Is.EqualTo(new[] { 0f, (float)(0.1 - 0.1f), (float)(0.7 - 0.7f), 0f, 0f, (float)(0.3 - 0.3f), 0f }));
             Assert.That(GpuLayout.YLinesOffset(3), Is.EqualTo(4));
             Assert.That(GpuLayout.GridSize(g), Is.EqualTo(new[] { 3f, 2f, 0f, 0f }));
             // The float lines give the same FindPatch as the double grid (GPU mirror) at lines and between.

@@ -38,13 +38,7 @@ namespace GregoryTerrain.Tests
         /// <summary>The float evaluation path of the shaders at a global point (no noise): patch, u v, GregoryEval float.</summary>
         public static Float3 FloatSurface(TerrainInputs grid, TerrainPoint q)
         {
-            int patch = grid.FindPatch(RangeMapping.Approximate(q));
-            Float4 region = grid.PatchRegion(patch);
-            Float2 uv = RangeMapping.PatchLocalUV(q, region);
-            Span<Float3> cp = stackalloc Float3[GregoryPatch.SlotCount];
-            grid.LoadGregoryPatch(patch, cp);
-            GregoryEval.Evaluate(cp, uv.x, uv.y, out Float3 p, out Float3 du, out Float3 dv);
-            return p;
+            return TerrainVertex.EvaluateSurfaceAt(grid, q).position;
         }
 
         public static bool Finite(Float3 a) => a.IsFinite;

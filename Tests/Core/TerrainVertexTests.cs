@@ -123,6 +123,14 @@ namespace GregoryTerrain.Tests
             lines[2] = lines[1];
             e = Assert.Throws<ArgumentException>(() => new TerrainInputs(inputs.ControlPoints, inputs.Regions, lines, inputs.Params));
             Assert.That(e.Message, Does.Contain("gridLines[2]"));
+            // A lo part larger than the hi part's rounding is no hi/lo pair.
+            lines = (float[])inputs.GridLines.Clone();
+            int lo = lines.Length / 2;
+            lines[lo + 1] = 0.01f;
+            e = Assert.Throws<ArgumentException>(() => new TerrainInputs(inputs.ControlPoints, inputs.Regions, lines, inputs.Params));
+            Assert.That(e.Message, Does.Contain($"gridLines[{lo + 1}]").And.Contain("lo part"));
+            e = Assert.Throws<ArgumentException>(() => new TerrainInputs(inputs.ControlPoints, inputs.Regions, inputs.GridLines.AsSpan(0, lo).ToArray(), inputs.Params));
+            Assert.That(e.Message, Does.Contain("gridLines.Length").And.Contain("hi and lo"));
             e = Assert.Throws<ArgumentException>(() => TerrainVertex.EvaluateAt(inputs, TerrainPoint.FromFloat(new Float2(float.NaN, 0)), TerrainKeywords.None));
             Assert.That(e.Message, Does.Contain("q"));
             Assert.Throws<ArgumentException>(() => TerrainVertex.Reference(_grid, new Double2(double.NaN, 0), null, 0, out _, out _));

@@ -86,13 +86,14 @@ namespace GregoryTerrain.Rig.Tests
                 {
                     int o = 12 * run.Index(0, 0, row, col);
                     var corner = new Float3((float)p[slot].x, (float)p[slot].y, (float)p[slot].z);
-                    // the patch that owns the corner point may be the neighbour (FindPatch rule): its
-                    // boundary control point is bit-identical, so the value is the same
+                    // the patch that owns the corner point may be the neighbour (FindPatch rule); the
+                    // GPU forms the point as R_p + (P - R_p) (GpuLayout's relative points), two roundings
+                    // of numbers below 1: within 6e-8 of the control point
                     worst = Math.Max(worst, ReadbackRun.Distance(new Float3(run.Readback[o], run.Readback[o + 2], run.Readback[o + 1]), corner));
                 }
             }
             TestContext.Out.WriteLine($"gpu corners: largest |gpu - corner control point| {worst:G3}");
-            Assert.That(worst, Is.EqualTo(0.0), "corner vertices are the control points bit for bit");
+            Assert.That(worst, Is.LessThanOrEqualTo(6e-8), "corner vertices are the control points to float's rounding");
         }
 
         [Test]

@@ -288,7 +288,7 @@ namespace GregoryTerrain.Rig.Tests
         /// q and u, through Core's float TileToTerrainPoint (the range's tiles or anchored ones) and
         /// PatchLocalUV, are the GPU's bit for bit. NaN when none is.
         /// </summary>
-        public float GpuTessCoordinate(bool xAxis, int slot, int index, float gpuQ, float gpuLocal, Float4 region)
+        public float GpuTessCoordinate(bool xAxis, int slot, int index, float gpuQ, float gpuLocal)
         {
             double nominal = (double)index / Factor;
             int centre = (int)Math.Round(nominal * 65536);
@@ -302,7 +302,8 @@ namespace GregoryTerrain.Rig.Tests
                         ? TileLattice.TileToTerrainPoint(Inputs.Params, slot, s, 0f)
                         : TileLattice.TileToTerrainPoint(Inputs.Params, slot, 0f, s);
                     Float2 approx = RangeMapping.Approximate(q);
-                    Float2 uv = RangeMapping.PatchLocalUV(q, region);
+                    int patch = RelativeSurface.FindPatchPrecise(Inputs, q);
+                    Float2 uv = RangeMapping.PatchLocalUV(q, Inputs.PatchRegion(patch), Inputs.PatchRegionLo(patch));
                     if (xAxis ? approx.x == gpuQ && uv.x == gpuLocal : approx.y == gpuQ && uv.y == gpuLocal) return s;
                 }
             return float.NaN;
@@ -325,11 +326,9 @@ namespace GregoryTerrain.Rig.Tests
                 int tile = k / VerticesPerTile, row = k % VerticesPerTile / (Factor + 1), col = k % (Factor + 1);
                 int ti = tile % Tiles, tj = tile / Tiles;
                 var gpuQ = new Float2(v[o + 8], v[o + 9]);
-                int patch = Inputs.FindPatch(gpuQ);
-                Float4 region = Inputs.PatchRegion(patch);
                 // A column's x (a row's y) is the same in every tile of it: cached per column and row.
-                float s = Cached(sCache, (true, ti, col, gpuQ.x, v[o + 10]), () => GpuTessCoordinate(true, tile, col, gpuQ.x, v[o + 10], region));
-                float t = Cached(sCache, (false, tj, row, gpuQ.y, v[o + 11]), () => GpuTessCoordinate(false, tile, row, gpuQ.y, v[o + 11], region));
+                float s = Cached(sCache, (true, ti, col, gpuQ.x, v[o + 10]), () => GpuTessCoordinate(true, tile, col, gpuQ.x, v[o + 10]));
+                float t = Cached(sCache, (false, tj, row, gpuQ.y, v[o + 11]), () => GpuTessCoordinate(false, tile, row, gpuQ.y, v[o + 11]));
                 if (float.IsNaN(s) || float.IsNaN(t))
                 {
                     c.Unmatched++;

@@ -26,7 +26,9 @@ namespace GregoryTerrain.Rig.Tests
                 TestContext.Out.WriteLine($"jitter width {width:G3} centre {c}: plain {plain:G3} px, shipped {shipped:G3} px (largest error {err:G3} px)");
                 Assert.That(shipped, Is.LessThan(0.5));
                 Assert.That(err, Is.LessThan(0.5));
-                if (width <= 1e-4) Assert.That(plain, Is.GreaterThan(1.0), "plain float should break down here");
+                // Since the control points are stored relative to their patch (GpuLayout), the plain
+                // path holds ~1 px at 1e-4; the float q (6e-8) still breaks it at 1e-6.
+                if (width <= 1e-6) Assert.That(plain, Is.GreaterThan(1.0), "plain float should break down here");
             }
         }
 
@@ -45,7 +47,9 @@ namespace GregoryTerrain.Rig.Tests
                 TestContext.Out.WriteLine($"jitter with noise width {width:G3} centre {c}: plain {plain:G3} px, shipped {shipped:G3} px (largest error {err:G3} px)");
                 Assert.That(shipped, Is.LessThan(0.5));
                 Assert.That(err, Is.LessThan(0.5));
-                if (width <= 1e-4) Assert.That(plain, Is.GreaterThan(1.0), "plain float should break down here");
+                // Since the control points are stored relative to their patch (GpuLayout), the plain
+                // path holds ~1 px at 1e-4; the float q (6e-8) still breaks it at 1e-6.
+                if (width <= 1e-6) Assert.That(plain, Is.GreaterThan(1.0), "plain float should break down here");
             }
         }
 

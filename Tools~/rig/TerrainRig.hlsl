@@ -50,10 +50,13 @@ TerrainSurfacePoint ExtensionSurface(uint drawPatch, float2 tess)
     s.q = RangeToTerrainPoint(_Range, _RangeOrigin, 1.0, uint2(0, 0), tess);
     s.patch = drawPatch;
     s.region = PatchRegion(s.patch);
-    s.uv = saturate(PatchLocalUV(s.q, s.region));
+    s.regionLo = PatchRegionLo(s.patch);
+    s.uv = saturate(PatchLocalUV(s.q, s.region, s.regionLo));
     float3 cp[20];
     LoadGregoryPatch(s.patch, cp);
-    GregoryEvaluate(cp, s.uv, s.position, s.dPdu, s.dPdv);
+    float3 relative;
+    GregoryEvaluate(cp, s.uv, relative, s.dPdu, s.dPdv);
+    s.position = PatchReference(s.patch) + relative;
     return s;
 }
 
@@ -61,7 +64,7 @@ TerrainSurfacePoint ExtensionSurface(uint drawPatch, float2 tess)
 TerrainPoint ExtensionNoisePoint(TerrainSurfacePoint s)
 {
     TerrainPoint noisePoint = s.q;
-    if (any(s.uv != PatchLocalUV(s.q, s.region)))
+    if (any(s.uv != PatchLocalUV(s.q, s.region, s.regionLo)))
     {
         noisePoint.originHi = float2(0.0, 0.0);
         noisePoint.local = lerp(s.region.xy, s.region.zw, s.uv);

@@ -8,12 +8,20 @@ namespace GregoryTerrain
     /// shaders' side is <c>Shaders/Grid/PatchGrid.hlsl</c>. Pure arrays: the caller uploads or writes them.
     /// <list type="table">
     /// <item><c>_ControlPoints</c>: StructuredBuffer&lt;float4&gt;, 20 per patch, patch p at float4
-    /// index <c>20 p + slot</c>, (x, y, z, 1).</item>
-    /// <item><c>_Regions</c>: StructuredBuffer&lt;float4&gt;, (a, b, e, f) of patch p at float4 index p.</item>
-    /// <item><c>_GridLines</c>: StructuredBuffer&lt;float&gt;, xLines[0..n] then yLines[0..m].</item>
+    /// index <c>20 p + slot</c>: xyz = <c>P - R_p</c>, the point relative to the patch's reference
+    /// point <c>R_p</c>; w of slots 0, 1, 2 = <c>R_p</c>.x, .y, .z, w of the other slots 0.</item>
+    /// <item><c>_Regions</c>: StructuredBuffer&lt;float4&gt;, (a, b, e, f) of patch p at float4 index p (hi parts).</item>
+    /// <item><c>_GridLines</c>: StructuredBuffer&lt;float&gt;, hi parts xLines[0..n], yLines[0..m], then
+    /// the lo parts in the same order (line = hi + lo to ~1e-16).</item>
     /// <item><c>_GridSize</c>: float4 (n, m, 0, 0).</item>
     /// </list>
     /// float4, never float3: a float3 StructuredBuffer has a 12-byte stride in D3D and 16 in Vulkan.
+    /// <para>Why relative points (internals.md, "Precision plan"): an absolute float point near 0.5
+    /// resolves 6e-8, 6% of a patch 1e-6 wide. <c>R_p</c> is slot 0 rounded to float, so it is exact on
+    /// the GPU, and <c>S = R_p + sum_k w_k (P_k - R_p)</c> exactly because the Gregory weights sum to 1;
+    /// the differences <c>P_k - R_p</c> are formed in double and keep float's precision of the patch's
+    /// own size. The reference rides in the w components, which the evaluation loads anyway: no byte
+    /// more per patch.</para>
     /// </summary>
     internal static class GpuLayout
     {
@@ -30,6 +38,8 @@ namespace GregoryTerrain
         public const int ControlPointFloatsPerPatch = ControlPointsPerPatch * Float4Size;
         /// <summary>Floats of _Regions per patch (one float4).</summary>
         public const int RegionFloatsPerPatch = Float4Size;
+        /// <summary>The slot whose point, rounded to float, is the patch's reference point R_p (the w of slots 0..2 hold it).</summary>
+        public const int ReferenceSlot = 0;
         /// <summary>Stride of _GridLines in bytes (StructuredBuffer&lt;float&gt;).</summary>
         public const int GridLineStride = 4;
         /// <summary>The largest buffer allowed, in bytes (2 GiB: the limit of one buffer in most APIs and of a .NET array of float).</summary>
@@ -45,6 +55,16 @@ namespace GregoryTerrain
 
         /// <summary>Float index of yLines[0] in <see cref="PackGridLines"/>'s array (xLines come first).</summary>
         public static int YLinesOffset(int columns) => columns + 1;
+
+        /// <summary>Float index of xLines[0]'s lo part in <see cref="PackGridLines"/>'s array (after all hi parts).</summary>
+        public static int GridLinesLoOffset(int columns, int rows) => columns + 1 + rows + 1;
+
+        /// <summary>The reference point R_p of a patch: its slot-0 point rounded to float (exact on the GPU).</summary>
+        public static Float3 PatchReference(GregoryPatch patch)
+        {
+            if (patch == null) throw new ArgumentNullException(nameof(patch));
+            return (Float3)patch[ReferenceSlot];
+        }
 
         /// <summary>Bytes of _ControlPoints for a grid of <paramref name="patches"/> patches.</summary>
         public static long ControlPointBytes(long patches) => patches * ControlPointsPerPatch * Float4Stride;
@@ -70,21 +90,27 @@ namespace GregoryTerrain
                 throw new ArgumentException($"columns * rows = {columns} * {rows} = {patches} patches need {ControlPointBytes(patches)} bytes of _ControlPoints, more than the GPU buffer limit of {MaxBufferBytes} (2 GiB, {MaxBufferBytes / ControlPointBytes(1)} patches).", nameof(columns));
         }
 
-        /// <summary>_ControlPoints: 20 float4 per patch, (x, y, z, 1), patch-major, slot order.</summary>
+        /// <summary>
+        /// _ControlPoints: 20 float4 per patch, patch-major, slot order; xyz = <c>P_k - R_p</c> (formed in
+        /// double, then rounded), w = R_p.x, R_p.y, R_p.z in slots 0, 1, 2 and 0 elsewhere.
+        /// </summary>
         public static float[] PackControlPoints(PatchGrid grid)
         {
             CheckPackable(grid);
             var data = new float[ControlPointBytes(grid.PatchCount) / sizeof(float)];
             for (int p = 0; p < grid.PatchCount; p++)
+            {
+                Float3 r = PatchReference(grid.Patches[p]);
                 for (int k = 0; k < GregoryPatch.SlotCount; k++)
                 {
                     long o = ControlPointOffset(p, k);
                     Double3 c = grid.Patches[p][k];
-                    data[o] = (float)c.x;
-                    data[o + 1] = (float)c.y;
-                    data[o + 2] = (float)c.z;
-                    data[o + 3] = 1f;
+                    data[o] = (float)(c.x - r.x);
+                    data[o + 1] = (float)(c.y - r.y);
+                    data[o + 2] = (float)(c.z - r.z);
+                    data[o + 3] = k == 0 ? r.x : k == 1 ? r.y : k == 2 ? r.z : 0f;
                 }
+            }
             return data;
         }
 
@@ -105,14 +131,26 @@ namespace GregoryTerrain
             return data;
         }
 
-        /// <summary>_GridLines: xLines[0..n] then yLines[0..m], as floats.</summary>
+        /// <summary>
+        /// _GridLines: the hi parts xLines[0..n], yLines[0..m] (the float lines FindPatch searches), then
+        /// the lo parts in the same order, <c>lo = (float)(line - hi)</c>: a line such as 0.13 is off by
+        /// 4.8e-9 as one float (9% of a range 1e-7 wide) and by ~1e-16 as the pair.
+        /// </summary>
         public static float[] PackGridLines(PatchGrid grid)
         {
             CheckPackable(grid);
-            var data = new float[grid.Columns + 1 + grid.Rows + 1];
-            for (int k = 0; k <= grid.Columns; k++) data[k] = (float)grid.XLines[k];
-            for (int k = 0; k <= grid.Rows; k++) data[YLinesOffset(grid.Columns) + k] = (float)grid.YLines[k];
+            int lo = GridLinesLoOffset(grid.Columns, grid.Rows);
+            var data = new float[2 * lo];
+            for (int k = 0; k <= grid.Columns; k++) SplitLine(grid.XLines[k], out data[k], out data[lo + k]);
+            for (int k = 0; k <= grid.Rows; k++)
+                SplitLine(grid.YLines[k], out data[YLinesOffset(grid.Columns) + k], out data[lo + YLinesOffset(grid.Columns) + k]);
             return data;
+        }
+
+        static void SplitLine(double line, out float hi, out float lo)
+        {
+            hi = (float)line;
+            lo = (float)(line - hi);
         }
 
         /// <summary>_GridSize: (n, m, 0, 0).</summary>

@@ -122,7 +122,7 @@ namespace GregoryTerrain
         /// <summary>
         /// <c>q</c> rounded to float, <c>originHi + local</c>: good enough to find the patch that holds q
         /// (a point within ~6e-8 of a grid line may pick either neighbour, and both agree there because
-        /// the surface is continuous), not for the local coordinate: use <see cref="PatchLocalUV"/>.
+        /// the surface is continuous), not for the local coordinate: use <see cref="PatchLocalUV(TerrainPoint, Float4, Float4)"/>.
         /// </summary>
         public static Float2 Approximate(TerrainPoint p) => p.originHi + p.local;
 
@@ -142,6 +142,31 @@ namespace GregoryTerrain
             return new Float2((du + (eu + p.local.x)) / (region.z - region.x),
                               (dv + (ev + p.local.y)) / (region.w - region.y));
         }
+
+        /// <summary>
+        /// <see cref="PatchLocalUV(TerrainPoint, Float4)"/> for a region given as hi/lo pairs (the grid
+        /// lines as <c>_GridLines</c> holds them): <c>u = (q - a) / (e - a)</c> with <c>q - a</c> formed as
+        /// <c>(originHi - a.hi) + (local - a.lo)</c> and the width by <see cref="RegionSize"/>. With the
+        /// one-float region, a line like 0.13 is off by 4.8e-9 and so is u's origin (9% of a range 1e-7
+        /// wide); with the pair, by ~1e-16.
+        /// </summary>
+        public static Float2 PatchLocalUV(TerrainPoint p, Float4 region, Float4 regionLo)
+        {
+            float du = TwoSum(p.originHi.x, -region.x, out float eu);
+            float dv = TwoSum(p.originHi.y, -region.y, out float ev);
+            Float2 size = RegionSize(region, regionLo);
+            return new Float2((du + (eu + (p.local.x - regionLo.x))) / size.x,
+                              (dv + (ev + (p.local.y - regionLo.y))) / size.y);
+        }
+
+        /// <summary>
+        /// The width and height <c>(e - a, f - b)</c> of a hi/lo region: <c>(e.hi - a.hi) + (e.lo - a.lo)</c>.
+        /// The hi difference is exact for neighbouring lines (Sterbenz) and otherwise rounds at float's
+        /// relative precision of the width itself; the one-float <c>e - a</c> of a patch 1e-6 wide is off
+        /// by up to 6e-8 / 1e-6 = 6% (the scale of every local coordinate and of the normal's slope).
+        /// </summary>
+        public static Float2 RegionSize(Float4 region, Float4 regionLo) =>
+            new Float2((region.z - region.x) + (regionLo.z - regionLo.x), (region.w - region.y) + (regionLo.w - regionLo.y));
 
         /// <summary>
         /// Knuth's TwoSum: <c>s = fl(a + b)</c> and the exact rounding error, <c>a + b = s + err</c>,

@@ -49,15 +49,18 @@ namespace GregoryTerrain
         /// precise point: FindPatch on the rounded <c>hi + local</c> can be one patch off within a float
         /// step (~6e-8) of a grid line, where u or v would then be slightly outside [0, 1] and get
         /// clamped, a flat strip 0.05 range widths wide at w = 1e-6. One step to the neighbour fixes it.
+        /// The lines are the hi/lo pairs of <c>_GridLines</c>, so the decision is right to ~1e-16 (with
+        /// one float per line, 0.13 is off by 4.8e-9 and the normal came from the neighbour there).
+        /// The tile path uses it too (<see cref="TerrainVertex.EvaluateSurfaceAt"/>).
         /// </summary>
         public static int FindPatchPrecise(TerrainInputs grid, TerrainPoint q)
         {
             if (grid == null) throw new ArgumentNullException(nameof(grid));
             int patch = grid.FindPatch(RangeMapping.Approximate(q));
             int i = patch % grid.GridColumns(), j = patch / grid.GridColumns();
-            Float4 region = grid.PatchRegion(patch);
-            Float2 lo = Difference(q, new TerrainPoint(new Float2(region.x, region.y), default));
-            Float2 hi = Difference(q, new TerrainPoint(new Float2(region.z, region.w), default));
+            Float4 region = grid.PatchRegion(patch), regionLo = grid.PatchRegionLo(patch);
+            Float2 lo = Difference(q, new TerrainPoint(region.xy, regionLo.xy));
+            Float2 hi = Difference(q, new TerrainPoint(new Float2(region.z, region.w), new Float2(regionLo.z, regionLo.w)));
             if (lo.x < 0f && i > 0) i--;
             else if (hi.x >= 0f && i < grid.GridColumns() - 1) i++;
             if (lo.y < 0f && j > 0) j--;
@@ -66,31 +69,33 @@ namespace GregoryTerrain
         }
 
         /// <summary>
-        /// <paramref name="p"/> clamped into region (a, b, e, f) per axis (a region bound is the point
-        /// (bound, 0)). Returns p itself, bit for bit, when it is inside.
+        /// <paramref name="p"/> clamped into the hi/lo region (a, b, e, f) per axis (a region bound is
+        /// the point (hi, lo)). Returns p itself, bit for bit, when it is inside.
         /// </summary>
-        public static TerrainPoint ClampToRegion(TerrainPoint p, Float4 region)
+        public static TerrainPoint ClampToRegion(TerrainPoint p, Float4 region, Float4 regionLo)
         {
-            Float2 lo = Difference(p, new TerrainPoint(new Float2(region.x, region.y), default));
-            Float2 hi = Difference(p, new TerrainPoint(new Float2(region.z, region.w), default));
+            Float2 lo = Difference(p, new TerrainPoint(region.xy, regionLo.xy));
+            Float2 hi = Difference(p, new TerrainPoint(new Float2(region.z, region.w), new Float2(regionLo.z, regionLo.w)));
             TerrainPoint r = p;
-            if (lo.x < 0f) { r.originHi.x = region.x; r.local.x = 0f; }
-            else if (hi.x > 0f) { r.originHi.x = region.z; r.local.x = 0f; }
-            if (lo.y < 0f) { r.originHi.y = region.y; r.local.y = 0f; }
-            else if (hi.y > 0f) { r.originHi.y = region.w; r.local.y = 0f; }
+            if (lo.x < 0f) { r.originHi.x = region.x; r.local.x = regionLo.x; }
+            else if (hi.x > 0f) { r.originHi.x = region.z; r.local.x = regionLo.z; }
+            if (lo.y < 0f) { r.originHi.y = region.y; r.local.y = regionLo.y; }
+            else if (hi.y > 0f) { r.originHi.y = region.w; r.local.y = regionLo.w; }
             return r;
         }
 
         /// <summary>
         /// <c>S_p(x) - S_p(r)</c> in one patch: u0 = local coordinate of r, (du, dv) = (x - r) / region size,
-        /// u0 clamped to [0, 1].
+        /// u0 clamped to [0, 1]; the region as hi/lo pairs. <paramref name="cp"/> may be relative to any
+        /// point (a difference does not see it).
         /// </summary>
-        public static Float3 PatchDifference(ReadOnlySpan<Float3> cp, Float4 region, TerrainPoint x, TerrainPoint r)
+        public static Float3 PatchDifference(ReadOnlySpan<Float3> cp, Float4 region, Float4 regionLo, TerrainPoint x, TerrainPoint r)
         {
-            Float2 uv0 = RangeMapping.PatchLocalUV(r, region);
+            Float2 uv0 = RangeMapping.PatchLocalUV(r, region, regionLo);
             float u0 = GMath.saturate(uv0.x), v0 = GMath.saturate(uv0.y);
             Float2 d = Difference(x, r);
-            float du = d.x / (region.z - region.x), dv = d.y / (region.w - region.y);
+            Float2 size = RangeMapping.RegionSize(region, regionLo);
+            float du = d.x / size.x, dv = d.y / size.y;
             // Not clamped to u0 + du in [0, 1]: u0 itself is rounded (~6e-8 near 1), and clamping
             // against it would freeze vertices within that of a patch edge (whole pixels at deep zoom).
             // q is in the patch to the precision of the point (FindPatchPrecise), so u0 + du leaves
@@ -110,16 +115,16 @@ namespace GregoryTerrain
             Span<Float3> cp = stackalloc Float3[GregoryPatch.SlotCount];
             TerrainPoint origin = OriginPoint(rangeOriginF);
             int patch = FindPatchPrecise(grid, q);
-            Float4 region = grid.PatchRegion(patch);
-            TerrainPoint r1 = ClampToRegion(origin, region);
+            Float4 region = grid.PatchRegion(patch), regionLo = grid.PatchRegionLo(patch);
+            TerrainPoint r1 = ClampToRegion(origin, region, regionLo);
             grid.LoadGregoryPatch(patch, cp);
-            Float3 d = PatchDifference(cp, region, q, r1);
+            Float3 d = PatchDifference(cp, region, regionLo, q, r1);
             if (!r1.Equals(origin))
             {
                 int patch0 = FindPatchPrecise(grid, origin);
-                Float4 region0 = grid.PatchRegion(patch0);
+                Float4 region0 = grid.PatchRegion(patch0), regionLo0 = grid.PatchRegionLo(patch0);
                 grid.LoadGregoryPatch(patch0, cp);
-                d += PatchDifference(cp, region0, ClampToRegion(r1, region0), origin);
+                d += PatchDifference(cp, region0, regionLo0, ClampToRegion(r1, region0, regionLo0), origin);
             }
             return d;
         }

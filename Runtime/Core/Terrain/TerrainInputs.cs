@@ -15,18 +15,19 @@ namespace GregoryTerrain
     /// </summary>
     internal sealed class TerrainInputs
     {
-        /// <summary>_ControlPoints: 20 float4 per patch, patch p at float index <c>80 p</c>, (x, y, z, 1).</summary>
+        /// <summary>_ControlPoints: 20 float4 per patch, patch p at float index <c>80 p</c>: (P - R_p, w), w of slots 0..2 = R_p (<see cref="GpuLayout"/>).</summary>
         public float[] ControlPoints { get; }
         /// <summary>_Regions: (a, b, e, f) per patch.</summary>
         public float[] Regions { get; }
-        /// <summary>_GridLines: xLines[0..n] then yLines[0..m].</summary>
+        /// <summary>_GridLines: hi parts xLines[0..n], yLines[0..m], then the lo parts in the same order.</summary>
         public float[] GridLines { get; }
         /// <summary>The ten float4 constants (binding 0).</summary>
         public TerrainParams Params { get; }
 
         /// <summary>
         /// Takes packed buffers as they are (no copy). Checks that their sizes agree with
-        /// <c>Params.gridSize</c> (n, m) and that the grid lines are finite and strictly increasing.
+        /// <c>Params.gridSize</c> (n, m), that the grid lines' hi parts are finite and strictly increasing
+        /// and that their lo parts are finite.
         /// </summary>
         public TerrainInputs(float[] controlPoints, float[] regions, float[] gridLines, TerrainParams parameters)
         {
@@ -41,13 +42,17 @@ namespace GregoryTerrain
                 throw new ArgumentException(Invariant($"controlPoints.Length ({controlPoints.LongLength}) must be {patches * GpuLayout.ControlPointFloatsPerPatch} for {n} x {m} patches"), nameof(controlPoints));
             if (regions.LongLength != patches * GpuLayout.RegionFloatsPerPatch)
                 throw new ArgumentException(Invariant($"regions.Length ({regions.LongLength}) must be {patches * GpuLayout.RegionFloatsPerPatch} for {n} x {m} patches"), nameof(regions));
-            if (gridLines.LongLength != (long)n + 1 + (long)m + 1)
-                throw new ArgumentException(Invariant($"gridLines.Length ({gridLines.LongLength}) must be {(long)n + 1 + (long)m + 1} for {n} x {m} patches"), nameof(gridLines));
-            for (int k = 0; k < gridLines.Length; k++)
+            long lines = (long)n + 1 + (long)m + 1;
+            if (gridLines.LongLength != 2 * lines)
+                throw new ArgumentException(Invariant($"gridLines.Length ({gridLines.LongLength}) must be {2 * lines} (hi and lo parts of {lines} lines) for {n} x {m} patches"), nameof(gridLines));
+            for (int k = 0; k < lines; k++)
             {
                 bool first = k == 0 || k == (int)n + 1;
                 if (!GMath.isfinite(gridLines[k]) || (!first && !(gridLines[k] > gridLines[k - 1])))
                     throw new ArgumentException(Invariant($"gridLines[{k}] ({gridLines[k]:R}) must be finite and greater than the line before it"), nameof(gridLines));
+                float lo = gridLines[lines + k];
+                if (!GMath.isfinite(lo) || Math.Abs(lo) > Math.Abs(gridLines[k]) * 1e-6f)
+                    throw new ArgumentException(Invariant($"gridLines[{lines + k}] ({lo:R}), the lo part of line {k} ({gridLines[k]:R}), must be finite and below the hi part's rounding"), nameof(gridLines));
             }
             ControlPoints = controlPoints;
             Regions = regions;
@@ -171,7 +176,7 @@ namespace GregoryTerrain
             return j * n + i;
         }
 
-        /// <summary>Region (a, b, e, f) of a patch as the GPU holds it.</summary>
+        /// <summary>Region (a, b, e, f) of a patch as the GPU holds it (the hi parts of its grid lines).</summary>
         public Float4 PatchRegion(int patch)
         {
             CheckPatch(patch);
@@ -179,7 +184,27 @@ namespace GregoryTerrain
             return new Float4(Regions[o], Regions[o + 1], Regions[o + 2], Regions[o + 3]);
         }
 
-        /// <summary>The 20 control points of a patch (slot order) into <paramref name="cp"/>.</summary>
+        /// <summary>
+        /// The lo parts (a, b, e, f) of a patch's grid lines: <c>PatchRegion + PatchRegionLo</c> is the
+        /// region to ~1e-16 (HLSL <c>PatchRegionLo</c>).
+        /// </summary>
+        public Float4 PatchRegionLo(int patch)
+        {
+            CheckPatch(patch);
+            int n = GridColumns(), i = patch % n, j = patch / n;
+            int lo = GpuLayout.GridLinesLoOffset(n, GridRows()), y = GpuLayout.YLinesOffset(n);
+            return new Float4(GridLines[lo + i], GridLines[lo + y + j], GridLines[lo + i + 1], GridLines[lo + y + j + 1]);
+        }
+
+        /// <summary>The patch's reference point R_p (w of slots 0..2): the surface is R_p + the evaluation of <see cref="LoadGregoryPatch"/>'s points.</summary>
+        public Float3 PatchReference(int patch)
+        {
+            CheckPatch(patch);
+            long o = GpuLayout.ControlPointOffset(patch, 0) + 3;
+            return new Float3(ControlPoints[o], ControlPoints[o + GpuLayout.Float4Size], ControlPoints[o + 2 * GpuLayout.Float4Size]);
+        }
+
+        /// <summary>The 20 control points of a patch relative to its reference point (slot order) into <paramref name="cp"/>.</summary>
         public void LoadGregoryPatch(int patch, Span<Float3> cp)
         {
             CheckPatch(patch);

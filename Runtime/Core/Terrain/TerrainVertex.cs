@@ -24,8 +24,10 @@ namespace GregoryTerrain
         public TerrainPoint q;
         /// <summary>The Gregory patch that was evaluated.</summary>
         public int patch;
-        /// <summary>Its region (a, b, e, f) as the GPU holds it.</summary>
+        /// <summary>Its region (a, b, e, f) as the GPU holds it (the hi parts of its grid lines).</summary>
         public Float4 region;
+        /// <summary>The lo parts of its grid lines (<see cref="TerrainInputs.PatchRegionLo"/>).</summary>
+        public Float4 regionLo;
         /// <summary>The patch-local coordinate that was evaluated.</summary>
         public Float2 uv;
         public Float3 position, dPdu, dPdv;
@@ -94,9 +96,9 @@ namespace GregoryTerrain
                     throw new ArgumentException(FormattableString.Invariant($"drawPatch ({drawPatch}) must lie in [0, {inputs.PatchCount() - 1}] in paper mode"), nameof(drawPatch));
                 // Every Gregory patch over the whole range, u and v clamped.
                 TerrainPoint q = RangeMapping.ToTerrainPoint(p.range, p.rangeOrigin, 1, 0, 0, tess.x, tess.y);
-                Float4 region = inputs.PatchRegion(drawPatch);
-                Float2 uv = RangeMapping.PatchLocalUV(q, region);
-                return EvaluatePatch(inputs, q, drawPatch, region, new Float2(GMath.saturate(uv.x), GMath.saturate(uv.y)));
+                Float4 region = inputs.PatchRegion(drawPatch), regionLo = inputs.PatchRegionLo(drawPatch);
+                Float2 uv = RangeMapping.PatchLocalUV(q, region, regionLo);
+                return EvaluatePatch(inputs, q, drawPatch, region, regionLo, new Float2(GMath.saturate(uv.x), GMath.saturate(uv.y)));
             }
             int tiles = inputs.TilesAcross();
             if (tiles < 1 || (uint)drawPatch >= (uint)(tiles * tiles))
@@ -121,26 +123,29 @@ namespace GregoryTerrain
         }
 
         /// <summary>
-        /// The tile path of <see cref="EvaluateSurface"/> after the global point is formed: FindPatch on
-        /// the float lines, PatchLocalUV, GregoryEval. Use it with the q a GPU read back to compare
-        /// the rest of the path at exactly the point the GPU used.
+        /// The tile path of <see cref="EvaluateSurface"/> after the global point is formed:
+        /// <see cref="RelativeSurface.FindPatchPrecise"/> on the hi/lo lines (at deep zoom the normal of a
+        /// vertex beside a line otherwise came from the neighbour), PatchLocalUV, GregoryEval of the
+        /// relative points plus the patch's reference point. Use it with the q a GPU read back to
+        /// compare the rest of the path at exactly the point the GPU used.
         /// </summary>
         public static TerrainSurfacePoint EvaluateSurfaceAt(TerrainInputs inputs, TerrainPoint q)
         {
             if (inputs == null) throw new ArgumentNullException(nameof(inputs));
             if (!q.originHi.IsFinite || !q.local.IsFinite)
                 throw new ArgumentException($"q {q} must be finite", nameof(q));
-            int patch = inputs.FindPatch(RangeMapping.Approximate(q));
-            Float4 region = inputs.PatchRegion(patch);
-            return EvaluatePatch(inputs, q, patch, region, RangeMapping.PatchLocalUV(q, region));
+            int patch = RelativeSurface.FindPatchPrecise(inputs, q);
+            Float4 region = inputs.PatchRegion(patch), regionLo = inputs.PatchRegionLo(patch);
+            return EvaluatePatch(inputs, q, patch, region, regionLo, RangeMapping.PatchLocalUV(q, region, regionLo));
         }
 
-        static TerrainSurfacePoint EvaluatePatch(TerrainInputs inputs, TerrainPoint q, int patch, Float4 region, Float2 uv)
+        static TerrainSurfacePoint EvaluatePatch(TerrainInputs inputs, TerrainPoint q, int patch, Float4 region, Float4 regionLo, Float2 uv)
         {
             Span<Float3> cp = stackalloc Float3[GregoryPatch.SlotCount];
             inputs.LoadGregoryPatch(patch, cp);
-            GregoryEval.Evaluate(cp, uv.x, uv.y, out Float3 position, out Float3 dPdu, out Float3 dPdv);
-            return new TerrainSurfacePoint { q = q, patch = patch, region = region, uv = uv, position = position, dPdu = dPdu, dPdv = dPdv };
+            GregoryEval.Evaluate(cp, uv.x, uv.y, out Float3 relative, out Float3 dPdu, out Float3 dPdv);
+            Float3 position = inputs.PatchReference(patch) + relative;
+            return new TerrainSurfacePoint { q = q, patch = patch, region = region, regionLo = regionLo, uv = uv, position = position, dPdu = dPdu, dPdv = dPdv };
         }
 
         /// <summary>HLSL <c>TerrainVertex(drawPatch, tess, ...)</c> without the camera.</summary>
@@ -212,7 +217,7 @@ namespace GregoryTerrain
                 // Noise lives on the global point; in paper mode a clamped vertex takes the noise of
                 // the boundary point it collapsed onto.
                 TerrainPoint noisePoint = s.q;
-                if ((keywords & TerrainKeywords.PaperMode) != 0 && !s.uv.Equals(RangeMapping.PatchLocalUV(s.q, s.region)))
+                if ((keywords & TerrainKeywords.PaperMode) != 0 && !s.uv.Equals(RangeMapping.PatchLocalUV(s.q, s.region, s.regionLo)))
                     noisePoint = new TerrainPoint(default, new Float2(GMath.lerp(s.region.x, s.region.z, s.uv.x), GMath.lerp(s.region.y, s.region.w, s.uv.y)));
                 float octaves = inputs.NoiseOctaveCount();
                 Float4 originF = inputs.Params.rangeOrigin;
@@ -233,9 +238,9 @@ namespace GregoryTerrain
                     position.z += noiseHeight;
                 }
                 // q = (a + u (e - a), b + v (f - b)): the chain rule scales the gradient by the region size.
-                float sizeX = s.region.z - s.region.x, sizeY = s.region.w - s.region.y;
-                dPdu.z += gradient.x * sizeX;
-                dPdv.z += gradient.y * sizeY;
+                Float2 size = RangeMapping.RegionSize(s.region, s.regionLo);
+                dPdu.z += gradient.x * size.x;
+                dPdv.z += gradient.y * size.y;
             }
             float snowDepth = 0f;
             if ((keywords & TerrainKeywords.Snow) != 0)

@@ -109,12 +109,7 @@ namespace GregoryTerrain
                 }
                 return reference + new Double3(d.x, d.y, d.z);
             }
-            int patch = grid.FindPatch(RangeMapping.Approximate(q));
-            Float4 region = grid.PatchRegion(patch);
-            Float2 uv = RangeMapping.PatchLocalUV(q, region);
-            Span<Float3> cp = stackalloc Float3[GregoryPatch.SlotCount];
-            grid.LoadGregoryPatch(patch, cp);
-            GregoryEval.Evaluate(cp, uv.x, uv.y, out Float3 position, out _, out _);
+            Float3 position = TerrainVertex.EvaluateSurfaceAt(grid, q).position;
             if (noise.HasValue) position.z += OctaveNoise.Evaluate(q, noise.Value, octaves, out _);
             return new Double3(position.x, position.y, position.z);
         }
