@@ -20,6 +20,12 @@
 //   PART_NO_NORMAL    the normal (and every derivative only it needs) -> up
 //   PART_NO_COLOUR    the height colour's noise
 //   PART_PLAIN        no noise, no colour: the plain domain stage
+//   PART_HOIST        a candidate: the hull stage finds the tile's patch once (its two opposite
+//                     corners in the same patch interval: the search is monotonic in q, so every
+//                     vertex of the tile is in it) and the domain stage searches only where they
+//                     differ; compile the tesc too (entry hull_part)
+//   PART_LINEAR_LOOKUP a candidate: FindPatch's intervals counted over the lines (independent loads)
+//                     instead of the binary search's dependent ones
 //   PART_MINIMAL      a minimal Gregory evaluator drawing the same triangles: the patch of a uniform
 //                     grid by multiply, q and (u, v) in plain float, the Gregory position and normal,
 //                     the package's varyings (what the plain stage is measured against)
@@ -99,8 +105,57 @@ void PartGregory(float3 cp[20], float2 uv, out float3 position, out float3 dPdu,
 #endif
 }
 
+#if defined(PART_HOIST)
+struct PartFactors
+{
+    float edge[4] : SV_TessFactor;
+    float inside[2] : SV_InsideTessFactor;
+    uint patchHint : TEXCOORD5;   // the tile's one patch, or 0xFFFFFFFF where it spans several
+};
+
+PartFactors hull_const_part(InputPatch<TileCorner, 4> corners)
+{
+    TileFactors f = hull_const(corners);
+    PartFactors o;
+    [unroll] for (uint e = 0u; e < 4u; e++) o.edge[e] = f.edge[e];
+    o.inside[0] = f.inside[0];
+    o.inside[1] = f.inside[1];
+    uint slot = corners[0].drawPatch;
+    float2 q0 = TerrainPointApprox(TileToTerrainPoint(slot, float2(0.0, 0.0)));
+    float2 q1 = TerrainPointApprox(TileToTerrainPoint(slot, float2(1.0, 1.0)));
+    uint n = GridColumns(), m = GridRows();
+    uint i0 = PatchGridFindInterval(0u, n, q0.x), i1 = PatchGridFindInterval(0u, n, q1.x);
+    uint j0 = PatchGridFindInterval(n + 1u, m, q0.y), j1 = PatchGridFindInterval(n + 1u, m, q1.y);
+    o.patchHint = (i0 == i1 && j0 == j1) ? j0 * n + i0 : 0xFFFFFFFFu;
+    return o;
+}
+
 [domain("quad")]
-TerrainVaryings domain_part(TileFactors factors, const OutputPatch<TileCorner, 4> corners,
+[partitioning(GT_PARTITIONING)]
+[outputtopology("triangle_cw")]
+[patchconstantfunc("hull_const_part")]
+[outputcontrolpoints(4)]
+TileCorner hull_part(InputPatch<TileCorner, 4> corners, uint id : SV_OutputControlPointID)
+{
+    return corners[id];
+}
+    #define PART_FACTORS PartFactors
+#else
+    #define PART_FACTORS TileFactors
+#endif
+
+#if defined(PART_LINEAR_LOOKUP)
+uint PartCountInterval(uint first, uint count, float x)
+{
+    uint i = 0u;
+    [loop] for (uint k = 1u; k < count; k++)
+        i += _GridLines[first + k] <= x ? 1u : 0u;
+    return i;
+}
+#endif
+
+[domain("quad")]
+TerrainVaryings domain_part(PART_FACTORS factors, const OutputPatch<TileCorner, 4> corners,
                             float2 tess : SV_DomainLocation)
 {
     uint drawPatch = corners[0].drawPatch;
@@ -122,6 +177,11 @@ TerrainVaryings domain_part(TileFactors factors, const OutputPatch<TileCorner, 4
     float2 qa = saturate(TerrainPointApprox(q));
     uint2 ij = min(uint2(qa * _GridSize.xy), uint2(GridColumns() - 1u, GridRows() - 1u));
     patch = ij.y * GridColumns() + ij.x;
+#elif defined(PART_HOIST)
+    patch = factors.patchHint != 0xFFFFFFFFu ? factors.patchHint : FindPatch(TerrainPointApprox(q));
+#elif defined(PART_LINEAR_LOOKUP)
+    float2 qa = TerrainPointApprox(q);
+    patch = PartCountInterval(GridColumns() + 1u, GridRows(), qa.y) * GridColumns() + PartCountInterval(0u, GridColumns(), qa.x);
 #else
     patch = FindPatch(TerrainPointApprox(q));
 #endif
