@@ -151,7 +151,7 @@ struct TerrainVertexAttributes
 // Everything TerrainVertex computes before the camera, from the surface point s.
 TerrainVertexAttributes FinishTerrainVertex(TerrainSurfacePoint s)
 {
-    float3 position = OutputSurfacePosition(s);
+    float3 position;
     float3 dPdu = s.dPdu;
     float3 dPdv = s.dPdv;
     float noiseHeight = 0.0;   // the absolute p(q): the height of the plain path, and the height colour
@@ -165,23 +165,34 @@ TerrainVertexAttributes FinishTerrainVertex(TerrainSurfacePoint s)
     #endif
     float octaves = OctaveCount(TileLayoutWidth(), NoiseVerticesAcross(), NoiseSettings(), MaxNoiseOctaves());
     float2 gradient;   // d(noise)/dq
-    #if !defined(GT_EXTEND_DRAW_PATCHES)
-    // Deep zoom: p(q) - p(O) from precise differences, like the surface; the renderer adds p(O).
+#endif
+#if !defined(GT_EXTEND_DRAW_PATCHES)
+    // Deep zoom (a range origin set): S(q) - S(O) and p(q) - p(O) from precise differences, which
+    // the renderer adds back (OutputSurfacePosition's rule). One branch for the surface and the
+    // noise: with two, the untaken deep-zoom code cost the plain path measurably more
+    // (performance.md, "Where the domain stage's time goes").
     [branch] if (RelativeSurfaceIsActive(_RangeOrigin))
     {
+        position = RelativeSurfaceFromOrigin(s.q, _RangeOrigin);
+    #if defined(GT_NOISE)
         TerrainPoint origin = MakeTerrainPoint(_RangeOrigin.xy, _RangeOrigin.zw);
         position.z += OctaveNoiseRelative(s.q, origin, TerrainPointDifference(s.q, origin), NoiseSettings(), octaves, gradient);
         #if defined(GT_HEIGHT_COLOR)
         float2 colourGradient;
         noiseHeight = OctaveNoise(noisePoint, NoiseSettings(), octaves, colourGradient);
         #endif
+    #endif
     }
     else
-    #endif
+#endif
     {
+        position = s.position;   // absolute: no origin, or the extension's draw patches
+#if defined(GT_NOISE)
         noiseHeight = OctaveNoise(noisePoint, NoiseSettings(), octaves, gradient);
         position.z += noiseHeight;
+#endif
     }
+#if defined(GT_NOISE)
     // q = (a + u (e - a), b + v (f - b)), so the chain rule scales the gradient by the region size.
     float2 regionSize = RegionSize(s.region, s.regionLo);
     dPdu.z += gradient.x * regionSize.x;

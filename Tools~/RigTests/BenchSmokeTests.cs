@@ -65,6 +65,25 @@ namespace GregoryTerrain.Rig.Tests
         }
 
         [Test]
+        public void DomainStageBreakdownTimesEveryPart()
+        {
+            // Tools~/rig/bench_domain_parts.hlsl: one job a part (BenchPlan.DomainParts), each a GPU time.
+            int at = _output.IndexOf("## Where the domain stage's time goes", StringComparison.Ordinal);
+            Assert.That(at, Is.GreaterThanOrEqualTo(0), "the breakdown section");
+            string section = _output.Substring(at);
+            int end = section.IndexOf("\n## ", 5, StringComparison.Ordinal);
+            if (end > 0) section = section.Substring(0, end);
+            var rows = section.Split('\n').Where(l => l.StartsWith("| ", StringComparison.Ordinal) && !l.StartsWith("| job", StringComparison.Ordinal) && !l.StartsWith("| ---", StringComparison.Ordinal))
+                .Select(l => l.Trim().Trim('|').Split('|').Select(c => c.Trim()).ToArray()).ToArray();
+            foreach (var name in new[] { "terrain", "full", "no_lookup", "no_deriv", "no_octaves", "no_normal", "plain", "minimal", "tess-floor" })
+                Assert.That(rows.Any(r => r[0] == name), Is.True, $"breakdown row {name}");
+            Assert.That(rows.Length, Is.GreaterThanOrEqualTo(15), "terrain, 13 parts, floor");
+            foreach (var r in rows)
+                Assert.That(double.TryParse(r[2], NumberStyles.Float, CultureInfo.InvariantCulture, out double ms) && ms > 0, Is.True, $"{r[0]}: GPU ms '{r[2]}' (the part's job did not run)");
+            Assert.That(section, Does.Match(@"against the minimal Gregory evaluator: [\d.]+ vs [\d.]+ ms"), "the plain stage against the minimal evaluator");
+        }
+
+        [Test]
         public void VertexCacheRowsRunTheComputePrePassAndMatchTheirFactors()
         {
             var rows = Rows("cached adaptive").Concat(Rows("cached uniform")).ToArray();

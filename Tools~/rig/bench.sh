@@ -52,6 +52,13 @@ make_plan() {  # make_plan DIR
   # The tessellator's floor (rig only): the fair variant's tiles with a domain stage that evaluates nothing.
   glslangValidator -D -V -S tese -e domain_floor --hlsl-iomap --shift-cbuffer-binding 0 --shift-texture-binding 2 \
     --shift-UAV-binding 5 -DGT_NOISE -DGT_HEIGHT_COLOR -o "$dir/spirv/floor.spv" "$RIG_DIR/bench_floor.hlsl" >/dev/null
+  # The domain-stage breakdown (rig only): one domain stage per part the plan names, -DPART_<NAME>.
+  mkdir -p "$dir/spirv/parts"
+  for part in $(grep -o '@SPV@/parts/[a-z_]*\.spv' "$dir/plan.tsv" | sed 's|.*/||; s|\.spv$||' | sort -u); do
+    glslangValidator -D -V -S tese -e domain_part --hlsl-iomap --shift-cbuffer-binding 0 --shift-texture-binding 2 \
+      --shift-UAV-binding 5 -DGT_NOISE -DGT_HEIGHT_COLOR "-DPART_${part^^}" -o "$dir/spirv/parts/$part.spv" \
+      "$RIG_DIR/bench_domain_parts.hlsl" >/dev/null || die "glslang failed on bench_domain_parts.hlsl, part $part"
+  done
   bash "$TOOLS_DIR/harness/test/compile.sh" "$dir/mesh-spv" >/dev/null
   cp "$dir/mesh-spv/mesh.vert.spv" "$dir/mesh-spv/mesh.frag.spv" "$dir/spirv/"; rm -rf "$dir/mesh-spv"
   cp "$RIG_DIR/bench_run.sh" "$RIG_DIR/bench_static_mesh.py" "$TOOLS_DIR/harness/test/make_grid_mesh.py" "$dir/"

@@ -6,37 +6,82 @@ namespace GregoryTerrain
     /// <summary>
     /// Position and true first derivatives of a Gregory patch at (u, v):
     /// <c>S = sum_k w_k P_k</c>, <c>dS/du = sum_k dw_k/du P_k</c>, <c>dS/dv = sum_k dw_k/dv P_k</c>
-    /// with the weights of <see cref="GregoryBasis"/>. Float overload = the shaders' arithmetic
-    /// (mirrors <c>GregoryEvaluate</c> in <c>Shaders/Library/GregoryEval.hlsl</c>); double = the reference.
+    /// with the weights of <see cref="GregoryBasis"/>. Float overload = the shaders' arithmetic, the
+    /// same sum in tensor form (mirrors <c>GregoryEvaluate</c> in <c>Shaders/Library/GregoryEval.hlsl</c>);
+    /// double = the reference, the 20 weights summed.
     ///
     /// <para>At the four corners exactly one weight is 1 and all others are exactly 0 (the Bernstein
     /// polynomials are exact there and the pair guard gives 0 * 0.5), so the position equals the
-    /// corner control point exactly in both precisions.</para>
+    /// corner control point exactly in both precisions (in tensor form: each row sum and the sum of
+    /// the rows is 1 * one value + 0 * the others).</para>
     /// </summary>
     internal static class GregoryEval
     {
-        /// <summary>Evaluates the patch with control points <paramref name="cp"/> (20, slot order) in float.</summary>
+        /// <summary>
+        /// Evaluates the patch with control points <paramref name="cp"/> (20, slot order) in float, as the
+        /// shaders do: each interior pair blended into one point, then the bicubic tensor product row by
+        /// row (mirrors HLSL <c>GregoryEvaluate</c> step for step). The same surface as the 20 weights of
+        /// <see cref="GregoryBasis"/>, which the double overload sums (the reference).
+        /// </summary>
         public static void Evaluate(ReadOnlySpan<Float3> cp, float u, float v,
             out Float3 position, out Float3 dPdu, out Float3 dPdv)
         {
             CheckCount(cp.Length);
-            Span<float> w = stackalloc float[GregoryBasis.WeightCount];
-            Span<float> wu = stackalloc float[GregoryBasis.WeightCount];
-            Span<float> wv = stackalloc float[GregoryBasis.WeightCount];
-            GregoryBasis.Weights(u, v, w, wu, wv);
-            // Start from slot 0's term rather than from zero so a corner value is returned untouched.
-            position = w[0] * cp[0];
-            // The derivative weights sum to 0: sum the control-point differences from slot 0, not the
+            u = saturate(u);
+            v = saturate(v);
+            Span<float> bu = stackalloc float[4], du = stackalloc float[4], bv = stackalloc float[4], dv = stackalloc float[4];
+            GregoryBasis.Bernstein(u, bu, du);
+            GregoryBasis.Bernstein(v, bv, dv);
+            float su = 1f - u;
+            float sv = 1f - v;
+            // Derivatives from the differences to cp[0] (the derivative weights sum to 0), not from the
             // points, or a tiny patch far from the origin cancels away (see GregoryEval.hlsl).
-            dPdu = Float3.zero;
-            dPdv = Float3.zero;
-            for (int k = 1; k < GregoryBasis.WeightCount; k++)
+            Span<Float3> q = stackalloc Float3[16];
+            Span<Float3> d = stackalloc Float3[16];
+            for (int k = 0; k < 16; k++)
             {
-                Float3 d = cp[k] - cp[0];
-                position += w[k] * cp[k];
-                dPdu += wu[k] * d;
-                dPdv += wv[k] * d;
+                q[k] = cp[k];
+                d[k] = cp[k] - cp[0];
             }
+            Float3 extraU = Float3.zero, extraV = Float3.zero;
+            EvaluatePair(cp[5], cp[16], cp[5] - cp[0], cp[16] - cp[0], u, v, su * su, sv * sv, 1f, 1f, out q[5], out d[5], ref extraU, ref extraV);
+            EvaluatePair(cp[6], cp[17], cp[6] - cp[0], cp[17] - cp[0], u, sv, su * su, v * v, 1f, -1f, out q[6], out d[6], ref extraU, ref extraV);
+            EvaluatePair(cp[9], cp[18], cp[9] - cp[0], cp[18] - cp[0], su, v, u * u, sv * sv, -1f, 1f, out q[9], out d[9], ref extraU, ref extraV);
+            EvaluatePair(cp[10], cp[19], cp[10] - cp[0], cp[19] - cp[0], su, sv, u * u, v * v, -1f, -1f, out q[10], out d[10], ref extraU, ref extraV);
+            position = Float3.zero;
+            dPdu = extraU;
+            dPdv = extraV;
+            for (int j = 0; j < 4; j++)
+            {
+                Float3 row = bu[0] * q[j] + bu[1] * q[4 + j] + bu[2] * q[8 + j] + bu[3] * q[12 + j];
+                Float3 rowD = bu[0] * d[j] + bu[1] * d[4 + j] + bu[2] * d[8 + j] + bu[3] * d[12 + j];
+                Float3 rowU = du[0] * d[j] + du[1] * d[4 + j] + du[2] * d[8 + j] + du[3] * d[12 + j];
+                position += bv[j] * row;
+                dPdu += bv[j] * rowU;
+                dPdv += dv[j] * rowD;
+            }
+        }
+
+        /// <summary>
+        /// Interior pair of the tensor form (HLSL <c>GregoryEvaluatePair</c>): the blended point
+        /// <c>t P0 + s P1</c> (<c>t = a / (a + b)</c>, 0.5 at the pair's corner), the same from cp[0], and
+        /// the pair's share <c>(W dt/du, W dt/dv) (P0 - P1)</c> of the derivatives, with
+        /// <see cref="GregoryBasis"/>'s cancellation-free <c>W dt/du = sigmaU K (a s) s</c>.
+        /// </summary>
+        static void EvaluatePair(Float3 p0, Float3 p1, Float3 d0, Float3 d1, float a, float b, float ru, float rv,
+            float sigmaU, float sigmaV, out Float3 q, out Float3 qd, ref Float3 extraU, ref Float3 extraV)
+        {
+            float den = a + b;
+            float t = den > 0f ? a / den : 0.5f;
+            float s = den > 0f ? b / den : 0.5f;
+            float K = 9f * ru * rv;
+            float gu = sigmaU * K * (a * s) * s;
+            float gv = -sigmaV * K * (b * t) * t;
+            q = t * p0 + s * p1;
+            qd = t * d0 + s * d1;
+            Float3 e = d0 - d1;
+            extraU += gu * e;
+            extraV += gv * e;
         }
 
         /// <summary>Evaluates the patch with control points <paramref name="cp"/> (20, slot order) in double.</summary>

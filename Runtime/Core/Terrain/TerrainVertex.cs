@@ -208,6 +208,8 @@ namespace GregoryTerrain
         }
 
         // HLSL FinishTerrainVertex: everything TerrainVertex computes from the surface point on, before the camera.
+        // The HLSL takes the deep-zoom surface and noise in one branch (the untaken code of two branches
+        // cost the plain path measurably); the values are these, step for step.
         static TerrainVertexOutput FinishTerrainVertex(TerrainInputs inputs, TerrainSurfacePoint s, TerrainKeywords keywords)
         {
             Float3 position = OutputSurfacePosition(inputs, s, keywords), dPdu = s.dPdu, dPdv = s.dPdv;

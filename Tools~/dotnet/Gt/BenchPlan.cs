@@ -223,6 +223,15 @@ namespace GregoryTerrain.Rig
                 plan.Append($"{id}:static-orbit\trun\t-\t{staticRun} {Orbit(id)}\n");
                 // The tessellator's floor: the terrain's tiles, factors and frag with a domain stage that evaluates nothing.
                 plan.Append($"{id}:tess-floor\trun\t-\t{FloorStages} --patches {patches} {buffers} {view} {t} --update-range-per-frame\n");
+                // Where the domain stage's time goes (Tools~/rig/bench_domain_parts.hlsl): the same draw with one piece taken out a job.
+                if (Array.IndexOf(DomainPartSizes(quick), (m, f)) >= 0)
+                {
+                    // The package's own plain domain stage (variant base: no noise, no colour) with the fair variant's other stages.
+                    string plainStages = $"--vert @SPV@/{FairVariant}/vert.spv --tesc @SPV@/{FairVariant}/tesc.spv --tese @SPV@/base/tese.spv --frag @SPV@/{FairVariant}/frag.spv";
+                    plan.Append($"{id}:plain\trun\t-\t{plainStages} --patches {patches} {buffers} {view} {t} --update-range-per-frame\n");
+                    foreach (var (part, _) in DomainParts)
+                        plan.Append($"{id}:part-{part}\trun\t-\t{PartStages(part)} --patches {patches} {buffers} {view} {t} --update-range-per-frame\n");
+                }
                 plan.Append($"{id}:floor\tstatic-match\t{id}:terrain\t--static-mesh --mesh @MESH@ --vert @SPV@/mesh.vert.spv --frag @SPV@/mesh.frag.spv {buffers} {view} {t}\n");
                 string cache = $"{Stages(CachedNoiseVariant, false)} --patches {patches} {CacheArgs(CachedNoiseVariant, scene.Tessellation)} {buffers} {view} {t}";
                 plan.Append($"{id}:cached\trun\t-\t{cache} --update-range-per-frame\n");
@@ -395,6 +404,37 @@ namespace GregoryTerrain.Rig
         /// <summary>The floor (Tools~/rig/bench_floor.hlsl, entry domain_floor): the fair variant's stages with a domain stage that evaluates nothing.</summary>
         static string FloorStages =>
             $"--vert @SPV@/{FairVariant}/vert.spv --tesc @SPV@/{FairVariant}/tesc.spv --tese @SPV@/floor.spv --frag @SPV@/{FairVariant}/frag.spv";
+
+        /// <summary>
+        /// The domain-stage breakdown (Tools~/rig/bench_domain_parts.hlsl, rig only): each part's name
+        /// (SPIR-V spirv/parts/NAME.spv, compiled by Tools~/rig/bench.sh with -DPART_NAME in upper case)
+        /// and what it takes out of the fair variant's domain stage. "full" takes nothing out.
+        /// </summary>
+        public static readonly (string name, string what)[] DomainParts =
+        {
+            ("full", "the deep-zoom branch (compiled in, not taken)"),
+            ("no_lookup", "patch lookup: FindPatch's binary searches -> a multiply"),
+            ("no_range", "range and origin arithmetic: tile -> q -> (u, v) in plain float"),
+            ("no_deriv", "Gregory derivatives (position only)"),
+            ("no_gregory", "Gregory evaluation (the bilinear patch of the corners)"),
+            ("no_octaves", "the octave loop (noise height; colour kept)"),
+            ("one_octave", "all octaves but the first"),
+            ("cheap_hash", "PCG hash -> one multiply and shift"),
+            ("plain_split", "lattice split (TwoProduct) -> plain floor"),
+            ("no_normal", "normal and what only it needs (derivatives, noise gradient)"),
+            ("no_colour", "the height colour's noise"),
+            ("plain", "no noise, no colour: the plain domain stage"),
+            ("minimal", "a minimal Gregory evaluator drawing the same triangles: patch by multiply, q and (u, v) in plain float, position and normal"),
+        };
+
+        /// <summary>The fair sizes (tiles, F) whose domain stage is broken down into DomainParts.</summary>
+        public static (int tiles, int factor)[] DomainPartSizes(bool quick) => quick
+            ? new[] { (8, 7) }
+            : new[] { (32, 31), (32, 63) };
+
+        /// <summary>The fair variant's stages with the domain stage of breakdown part `part`.</summary>
+        static string PartStages(string part) =>
+            $"--vert @SPV@/{FairVariant}/vert.spv --tesc @SPV@/{FairVariant}/tesc.spv --tese @SPV@/parts/{part}.spv --frag @SPV@/{FairVariant}/frag.spv";
 
         /// <summary>Folder of the plan's jobs/ holding the static meshes' index orders (GridIndexOrder files).</summary>
         public const string OrdersDir = "orders";

@@ -83,6 +83,54 @@ namespace GregoryTerrain.Rig
         }
 
         /// <summary>
+        /// Where the domain stage's time goes (issue 26): per size of BenchPlan.DomainPartSizes, the
+        /// terrain's domain stage (noise + colour), the same draw with one piece taken out a job
+        /// (Tools~/rig/bench_domain_parts.hlsl, BenchPlan.DomainParts), the floor, and the plain stage
+        /// against a minimal Gregory evaluator drawing the same triangles. A piece costs (full - part);
+        /// ns a vertex = ms * 1e6 / domain invocations.
+        /// </summary>
+        static void DomainParts(StringBuilder o, Dictionary<string, Job> jobs, bool quick)
+        {
+            o.AppendLine("## Where the domain stage's time goes");
+            o.AppendLine();
+            o.AppendLine("The fair variant's domain stage (noise + height colour, uniform F, range moving) rewritten from the same library functions without its deep-zoom branch (`full`), then with one piece taken out a job (`Tools~/rig/bench_domain_parts.hlsl`, rig only; the pictures of those jobs are wrong on purpose). A piece costs full - that job; the deep-zoom branch costs terrain - full though it is never taken. ns a vertex: per domain invocation.");
+            o.AppendLine();
+            foreach (var (m, f) in BenchPlan.DomainPartSizes(quick))
+            {
+                string id = Inv($"fs_m{m}_f{f}");
+                Job terrain = Ran(jobs, id + ":terrain run"), full = Ran(jobs, id + ":part-full run"), fl = Ran(jobs, id + ":tess-floor run");
+                if (terrain == null || full == null || fl == null) continue;
+                long ds = terrain.Get("tessellation_evaluation_shader_invocations");
+                if (ds <= 0) continue;
+                double Ns(double ms) => ms * 1e6 / ds;
+                o.AppendLine(Inv($"{id}: {2L * m * m * f * f} triangles, {ds} domain invocations; terrain {terrain.GpuMs:G4} ms, floor {fl.GpuMs:G4} ms ({Ns(terrain.GpuMs - fl.GpuMs):F3} ns a vertex above it)."));
+                o.AppendLine();
+                o.AppendLine("| job | what it takes out | GPU ms | piece ms | piece ns a vertex | share of terrain - floor |");
+                o.AppendLine("| --- | --- | ---: | ---: | ---: | ---: |");
+                double above = terrain.GpuMs - fl.GpuMs;
+                o.AppendLine(Inv($"| terrain | nothing (the package's domain stage) | {terrain.GpuMs:G4} | | | |"));
+                foreach (var (part, what) in BenchPlan.DomainParts)
+                {
+                    Job j = Ran(jobs, id + ":part-" + part + " run");
+                    if (j == null) { o.AppendLine($"| {part} | {what} | - | | | |"); continue; }
+                    double piece = part == "full" ? terrain.GpuMs - j.GpuMs : full.GpuMs - j.GpuMs;
+                    string cost = part == "plain" || part == "minimal" ? "| | | |" : Inv($"| {piece:F3} | {Ns(piece):F3} | {piece / above * 100:F0}% |");
+                    o.AppendLine(Inv($"| {part} | {what} | {j.GpuMs:G4} {cost}"));
+                }
+                o.AppendLine(Inv($"| tess-floor | everything (the tessellator's floor) | {fl.GpuMs:G4} | | | |"));
+                o.AppendLine();
+                Job plain = Ran(jobs, id + ":plain run"), minimal = Ran(jobs, id + ":part-minimal run");
+                if (plain != null && minimal != null)
+                {
+                    // Per vertex above the floor only where the minimal evaluator costs anything above it.
+                    string perVertex = minimal.GpuMs > fl.GpuMs ? Inv($"**{(plain.GpuMs - fl.GpuMs) / (minimal.GpuMs - fl.GpuMs):F2}x** per vertex, ") : "";
+                    o.AppendLine(Inv($"Plain domain stage (the package's, variant `base`) against the minimal Gregory evaluator: {plain.GpuMs:F4} vs {minimal.GpuMs:F4} ms, {Ns(plain.GpuMs - fl.GpuMs):F3} vs {Ns(minimal.GpuMs - fl.GpuMs):F3} ns a vertex above the floor: {perVertex}{plain.GpuMs / minimal.GpuMs:F3}x a frame."));
+                }
+                o.AppendLine();
+            }
+        }
+
+        /// <summary>
         /// Motion users make (BenchPlan.Motion): per size and path, the domain stage and the compute
         /// cache (anchored tiles, kernels dispatched when the renderer would: jobs.tsv's count) against
         /// the fair static mesh on the same camera path, and the cache's still frame and floor.

@@ -137,6 +137,7 @@ namespace GregoryTerrain.Rig
                 foreach (var l in File.ReadLines(jobsTsv).Skip(1)) { var c = l.Split('\t'); if (c.Length > 4) planned[c[0]] = c[4]; }
             Headline(o, jobs, quick);
             Baseline(o, jobs, quick);
+            DomainParts(o, jobs, quick);
             Fair(o, jobs, quick, planned);
             CameraMoving(o, jobs, quick, rbDir);
             AnchoredPan(o, jobs, quick, rbDir);

@@ -1,0 +1,223 @@
+// gt bench's domain-stage breakdown (rig only, never shipped): the package's domain stage
+// (noise + height colour, TerrainVertex.hlsl's tile path with the range origin at 0, without
+// its deep-zoom branch) rewritten from
+// the same library functions, with one piece taken out per PART_* define, so that the breakdown
+// table of performance.md ("Where the domain stage's time goes") reads the cost of each piece as
+// (full - part) in one run. Compiled by Tools~/rig/bench.sh with the fair variant's keywords
+// (GT_NOISE GT_HEIGHT_COLOR), entry point domain_part, one SPIR-V per part (bench_parts.txt).
+// A knocked-out piece is replaced by the cheapest stand-in that keeps the rest of the work alive
+// (what the driver cannot prove dead); the pictures are wrong on purpose: these are timings only.
+//   PART_FULL         nothing removed but the deep-zoom branch (not taken at origin 0, but compiled
+//                     in: the terrain job minus this one is what that branch costs)
+//   PART_NO_LOOKUP    FindPatch's two binary searches -> the patch of a uniform grid, by multiply
+//   PART_NO_RANGE     tile -> q and q -> (u, v) by plain float (no TwoSum, no tile lattice reads)
+//   PART_NO_DERIV     the Gregory derivatives (position only; dP/du, dP/dv of the corners' bilinear patch)
+//   PART_NO_GREGORY   the Gregory evaluation itself (the bilinear patch of the four corner points)
+//   PART_NO_OCTAVES   the noise height (colour kept)
+//   PART_ONE_OCTAVE   one octave instead of the frame's count: (full - one) / (count - 1) an octave
+//   PART_CHEAP_HASH   each PCG hash -> one multiply and shift
+//   PART_PLAIN_SPLIT  the lattice split (Dekker TwoProduct) -> floor(f q + offset) in plain float
+//   PART_NO_NORMAL    the normal (and every derivative only it needs) -> up
+//   PART_NO_COLOUR    the height colour's noise
+//   PART_PLAIN        no noise, no colour: the plain domain stage
+//   PART_HOIST        a candidate: the hull stage finds the tile's patch once (its two opposite
+//                     corners in the same patch interval: the search is monotonic in q, so every
+//                     vertex of the tile is in it) and the domain stage searches only where they
+//                     differ; compile the tesc too (entry hull_part)
+//   PART_LINEAR_LOOKUP a candidate: FindPatch's intervals counted over the lines (independent loads)
+//                     instead of the binary search's dependent ones
+//   PART_MINIMAL      a minimal Gregory evaluator drawing the same triangles: the patch of a uniform
+//                     grid by multiply, q and (u, v) in plain float, the Gregory position and normal,
+//                     the package's varyings (what the plain stage is measured against)
+#include "../../Shaders/Rig/TerrainRig.hlsl"
+
+#if defined(PART_PLAIN) || defined(PART_MINIMAL)
+    #define PART_NO_OCTAVES
+    #define PART_NO_COLOUR
+#endif
+#if defined(PART_MINIMAL)
+    #define PART_NO_LOOKUP
+    #define PART_NO_RANGE
+#endif
+
+uint PartHash(uint v)
+{
+#if defined(PART_CHEAP_HASH)
+    return v * 2654435769u >> 13;
+#else
+    return GradientNoiseHash(v);
+#endif
+}
+
+float PartNoiseAtPoint(TerrainPoint p, float frequency, float2 offset, out float2 gradient)
+{
+    int2 cell;
+    float2 f;
+#if defined(PART_PLAIN_SPLIT)
+    float2 x = TerrainPointApprox(p) * frequency + offset;
+    float2 c = floor(x);
+    cell = int2(c);
+    f = x - c;
+#else
+    GradientNoiseSplitLattice(p.originHi.x, p.local.x, frequency, offset.x, cell.x, f.x);
+    GradientNoiseSplitLattice(p.originHi.y, p.local.y, frequency, offset.y, cell.y, f.y);
+#endif
+    uint h0 = PartHash(asuint(cell.y)), h1 = PartHash(asuint(cell.y + 1));
+    float2 g00 = GradientNoiseGradient(PartHash(asuint(cell.x) + h0));
+    float2 g10 = GradientNoiseGradient(PartHash(asuint(cell.x + 1) + h0));
+    float2 g01 = GradientNoiseGradient(PartHash(asuint(cell.x) + h1));
+    float2 g11 = GradientNoiseGradient(PartHash(asuint(cell.x + 1) + h1));
+    return GradientNoiseCorners(g00, g10, g01, g11, f, gradient);
+}
+
+float PartOctaveNoise(TerrainPoint p, float4 noise, float octaveCount, out float2 gradient)
+{
+#if defined(PART_ONE_OCTAVE)
+    octaveCount = min(octaveCount, 1.0);
+#endif
+    OctaveSum sum = OctaveSumStart(noise);
+    [unroll] for (uint k = 0u; k < GT_MAX_OCTAVES; ++k)
+    {
+        float fade = saturate(octaveCount - float(k));
+        if (fade <= 0.0) break;
+        float2 gk;
+        float nk = PartNoiseAtPoint(p, sum.frequency, GradientNoiseStreamOffset(k), gk);
+        OctaveSumAdd(sum, fade, nk, gk, noise);
+    }
+    return OctaveSumResult(sum, noise, gradient);
+}
+
+
+
+void PartGregory(float3 cp[20], float2 uv, out float3 position, out float3 dPdu, out float3 dPdv)
+{
+#if defined(PART_NO_GREGORY)
+    float3 low = lerp(cp[0], cp[3], uv.x), high = lerp(cp[12], cp[15], uv.x);
+    position = lerp(low, high, uv.y);
+#else
+    GregoryEvaluate(cp, uv, position, dPdu, dPdv);
+#endif
+#if defined(PART_NO_GREGORY) || defined(PART_NO_DERIV)
+    // The derivatives of the corners' bilinear patch: what is left of the Gregory sums is dead code.
+    float3 lowD = lerp(cp[0], cp[3], uv.x), highD = lerp(cp[12], cp[15], uv.x);
+    dPdu = lerp(cp[3] - cp[0], cp[15] - cp[12], uv.y);
+    dPdv = highD - lowD;
+#endif
+}
+
+#if defined(PART_HOIST)
+struct PartFactors
+{
+    float edge[4] : SV_TessFactor;
+    float inside[2] : SV_InsideTessFactor;
+    uint patchHint : TEXCOORD5;   // the tile's one patch, or 0xFFFFFFFF where it spans several
+};
+
+PartFactors hull_const_part(InputPatch<TileCorner, 4> corners)
+{
+    TileFactors f = hull_const(corners);
+    PartFactors o;
+    [unroll] for (uint e = 0u; e < 4u; e++) o.edge[e] = f.edge[e];
+    o.inside[0] = f.inside[0];
+    o.inside[1] = f.inside[1];
+    uint slot = corners[0].drawPatch;
+    float2 q0 = TerrainPointApprox(TileToTerrainPoint(slot, float2(0.0, 0.0)));
+    float2 q1 = TerrainPointApprox(TileToTerrainPoint(slot, float2(1.0, 1.0)));
+    uint n = GridColumns(), m = GridRows();
+    uint i0 = PatchGridFindInterval(0u, n, q0.x), i1 = PatchGridFindInterval(0u, n, q1.x);
+    uint j0 = PatchGridFindInterval(n + 1u, m, q0.y), j1 = PatchGridFindInterval(n + 1u, m, q1.y);
+    o.patchHint = (i0 == i1 && j0 == j1) ? j0 * n + i0 : 0xFFFFFFFFu;
+    return o;
+}
+
+[domain("quad")]
+[partitioning(GT_PARTITIONING)]
+[outputtopology("triangle_cw")]
+[patchconstantfunc("hull_const_part")]
+[outputcontrolpoints(4)]
+TileCorner hull_part(InputPatch<TileCorner, 4> corners, uint id : SV_OutputControlPointID)
+{
+    return corners[id];
+}
+    #define PART_FACTORS PartFactors
+#else
+    #define PART_FACTORS TileFactors
+#endif
+
+#if defined(PART_LINEAR_LOOKUP)
+uint PartCountInterval(uint first, uint count, float x)
+{
+    uint i = 0u;
+    [loop] for (uint k = 1u; k < count; k++)
+        i += _GridLines[first + k] <= x ? 1u : 0u;
+    return i;
+}
+#endif
+
+[domain("quad")]
+TerrainVaryings domain_part(PART_FACTORS factors, const OutputPatch<TileCorner, 4> corners,
+                            float2 tess : SV_DomainLocation)
+{
+    uint drawPatch = corners[0].drawPatch;
+    float tessFactor = max(factors.inside[0], factors.inside[1]);
+    TerrainPoint q;
+    uint patch;
+    float4 region;
+    float2 uv;
+#if defined(PART_NO_RANGE)
+    float m = TileCount();
+    uint across = TileCountInt();
+    float2 o = (float2(uint2(drawPatch % across, drawPatch / across)) + tess) / m;
+    q.originHi = float2(0.0, 0.0);
+    q.local = _Range.xy + o * (_Range.zw - _Range.xy);
+#else
+    q = TileToTerrainPoint(drawPatch, tess);
+#endif
+#if defined(PART_NO_LOOKUP)
+    float2 qa = saturate(TerrainPointApprox(q));
+    uint2 ij = min(uint2(qa * _GridSize.xy), uint2(GridColumns() - 1u, GridRows() - 1u));
+    patch = ij.y * GridColumns() + ij.x;
+#elif defined(PART_HOIST)
+    patch = factors.patchHint != 0xFFFFFFFFu ? factors.patchHint : FindPatch(TerrainPointApprox(q));
+#elif defined(PART_LINEAR_LOOKUP)
+    float2 qa = TerrainPointApprox(q);
+    patch = PartCountInterval(GridColumns() + 1u, GridRows(), qa.y) * GridColumns() + PartCountInterval(0u, GridColumns(), qa.x);
+#else
+    patch = FindPatch(TerrainPointApprox(q));
+#endif
+    region = PatchRegion(patch);
+#if defined(PART_NO_RANGE)
+    uv = (q.local - region.xy) / (region.zw - region.xy);
+#else
+    uv = PatchLocalUV(q, region);
+#endif
+    float3 cp[20];
+    LoadGregoryPatch(patch, cp);
+    float3 position, dPdu, dPdv;
+    PartGregory(cp, uv, position, dPdu, dPdv);
+    float absoluteHeight = position.z;
+#if !defined(PART_NO_OCTAVES)
+    float octaves = OctaveCount(TileLayoutWidth(), NoiseVerticesAcross(), NoiseSettings(), MaxNoiseOctaves());
+    float2 gradient;
+    float noiseHeight = PartOctaveNoise(q, NoiseSettings(), octaves, gradient);
+    position.z += noiseHeight;
+    absoluteHeight += noiseHeight;
+    float2 regionSize = region.zw - region.xy;
+    dPdu.z += gradient.x * regionSize.x;
+    dPdv.z += gradient.y * regionSize.y;
+#endif
+#if defined(PART_NO_NORMAL)
+    float3 normalOS = float3(0.0, 1.0, 0.0);
+#else
+    float3 normalOS = TerrainToObject(GregoryNormalFromDerivatives(dPdu, dPdv));
+#endif
+    float colorNoise = 0.0;
+#if !defined(PART_NO_COLOUR) && defined(GT_HEIGHT_COLOR)
+    float4 hc = HeightColorSettings();
+    float2 unusedGradient;
+    colorNoise = hc.y * PartNoiseAtPoint(q, hc.z, GradientNoiseStreamOffset(GT_COLOR_NOISE_STREAM), unusedGradient);
+#endif
+    float3 positionOS = TerrainToObject(position);
+    float3 shading = PackNormalAndHeightWeight(GT_ObjectToWorldNormal(normalOS), TerrainHeightWeight(absoluteHeight, colorNoise));
+    return TerrainVaryingsOf(positionOS, shading, 0.0, patch, tessFactor);
+}
