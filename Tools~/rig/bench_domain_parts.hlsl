@@ -183,18 +183,20 @@ TerrainVaryings domain_part(PART_FACTORS factors, const OutputPatch<TileCorner, 
     float2 qa = TerrainPointApprox(q);
     patch = PartCountInterval(GridColumns() + 1u, GridRows(), qa.y) * GridColumns() + PartCountInterval(0u, GridColumns(), qa.x);
 #else
-    patch = FindPatch(TerrainPointApprox(q));
+    patch = FindPatchPrecise(q);   // the shipped lookup: hi/lo grid lines
 #endif
     region = PatchRegion(patch);
+    float4 regionLo = PatchRegionLo(patch);
 #if defined(PART_NO_RANGE)
     uv = (q.local - region.xy) / (region.zw - region.xy);
 #else
-    uv = PatchLocalUV(q, region);
+    uv = PatchLocalUV(q, region, regionLo);
 #endif
     float3 cp[20];
-    LoadGregoryPatch(patch, cp);
+    LoadGregoryPatch(patch, cp);   // relative to the patch's reference point
     float3 position, dPdu, dPdv;
     PartGregory(cp, uv, position, dPdu, dPdv);
+    position += PatchReference(patch);
     float absoluteHeight = position.z;
 #if !defined(PART_NO_OCTAVES)
     float octaves = OctaveCount(TileLayoutWidth(), NoiseVerticesAcross(), NoiseSettings(), MaxNoiseOctaves());
@@ -202,7 +204,7 @@ TerrainVaryings domain_part(PART_FACTORS factors, const OutputPatch<TileCorner, 
     float noiseHeight = PartOctaveNoise(q, NoiseSettings(), octaves, gradient);
     position.z += noiseHeight;
     absoluteHeight += noiseHeight;
-    float2 regionSize = region.zw - region.xy;
+    float2 regionSize = RegionSize(region, regionLo);
     dPdu.z += gradient.x * regionSize.x;
     dPdv.z += gradient.y * regionSize.y;
 #endif
