@@ -143,6 +143,30 @@ namespace GregoryTerrain.Tests
                 Assert.That(fit.Surface.Coefficients[k], Is.EqualTo(direct.Coefficients[k]).Within(1e-12 * scale), $"coefficient {k}");
         }
 
+        [Test]
+        public void SplineToNetMapsAgree()
+        {
+            // x = T c two ways (the coefficient formulas, and differences of the spline's Bezier net),
+            // and T^T (SplineRightHandSide) the transpose of T: r . (T c) = (T^T r) . c.
+            var net = new GregoryNet(4, 3);
+            var bx = new C1SplineBasis(4);
+            var by = new C1SplineBasis(3);
+            var rng = new Random(5);
+            var c = new double[bx.Count * by.Count];
+            for (int k = 0; k < c.Length; k++) c[k] = rng.NextDouble() - 0.5;
+            var r = new double[net.Count];
+            for (int k = 0; k < r.Length; k++) r[k] = rng.NextDouble() - 0.5;
+            var x = new double[net.Count];
+            net.FromSpline(c, x);
+            double[] viaNet = net.FromBezierNet(new SplineSurface(bx, by, c).BezierNet());
+            for (int k = 0; k < x.Length; k++) Assert.That(x[k], Is.EqualTo(viaNet[k]).Within(1e-14), $"unknown {k}");
+            double[] tr = net.SplineRightHandSide(r);
+            double lhs = 0, rhs = 0;
+            for (int k = 0; k < x.Length; k++) lhs += r[k] * x[k];
+            for (int k = 0; k < c.Length; k++) rhs += tr[k] * c[k];
+            Assert.That(lhs, Is.EqualTo(rhs).Within(1e-12));
+        }
+
         static double SquaredError(PatchGrid g, double[] a, int w, int h)
         {
             double s = 0;

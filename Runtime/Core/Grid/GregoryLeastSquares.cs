@@ -38,8 +38,8 @@ namespace GregoryTerrain
         /// <summary>Weight tables are cached up to this many doubles (64 MiB); beyond, recomputed per patch.</summary>
         const long TableCacheDoubles = 8L << 20;
 
-        // Tables and Gram matrices keep each sample's (or column's) 20 weights in Stride doubles, a
-        // multiple of the SIMD width, so the hot loops run on Vector<double> (4 at a time on AVX2).
+        // The hot loops run on Vector<double> (4 doubles at a time on AVX2): Gram rows are Stride
+        // doubles (20 rounded up to the SIMD width), table rows a patch's samples rounded up likewise.
         static readonly int Lanes = Vector<double>.Count;
         static readonly int Stride = (GregoryNet.LocalCount + Lanes - 1) / Lanes * Lanes;
 
@@ -102,7 +102,7 @@ namespace GregoryTerrain
             grams = new double[pairs][];
             long tableDoubles = 0;
             foreach (double[] u in xAxis.Offsets)
-                foreach (double[] v in yAxis.Offsets) tableDoubles += (long)u.Length * v.Length * Stride;
+                foreach (double[] v in yAxis.Offsets) tableDoubles += ((long)u.Length * v.Length + Lanes) * GregoryNet.LocalCount;
             cacheTables = tableDoubles <= TableCacheDoubles;
             unknownsOf = new int[net.Columns * net.Rows * GregoryNet.LocalCount];
             for (int j = 0; j < net.Rows; j++)
@@ -112,45 +112,69 @@ namespace GregoryTerrain
 
         int Pair(int i, int j) => yAxis.Class[j] * xAxis.Offsets.Count + xAxis.Class[i];
 
-        /// <summary>The local weights of every sample of patch (i, j), row by row: (b count_u + a) Stride + k.</summary>
+        /// <summary>Samples of patch (i, j) rounded up to a multiple of the SIMD width (the tables' row length).</summary>
+        int PaddedSamples(int i, int j) => (xAxis.Count[i] * yAxis.Count[j] + Lanes - 1) / Lanes * Lanes;
+
+        /// <summary>
+        /// The local weights of every sample of patch (i, j), one row per local unknown: weight k of
+        /// sample (a, b) at <c>k S + b count_u + a</c> (S = <see cref="PaddedSamples"/>, padding 0), so
+        /// the passes over the samples run along memory 4 samples at a time.
+        /// </summary>
         double[] Table(int i, int j)
         {
+            const int L = GregoryNet.LocalCount;
             int pair = Pair(i, j);
             if (tables[pair] != null) return tables[pair];
             double[] us = xAxis.Offsets[xAxis.Class[i]], vs = yAxis.Offsets[yAxis.Class[j]];
-            int n = us.Length * vs.Length * Stride;
+            int S = PaddedSamples(i, j), n = L * S;
             double[] t;
             if (cacheTables) t = new double[n];
             else
             {
                 if (scratch == null || scratch.Length < n) scratch = new double[n];
                 t = scratch;
+                Array.Clear(t, 0, n);
             }
+            Span<double> w = stackalloc double[L];
             for (int b = 0; b < vs.Length; b++)
                 for (int a = 0; a < us.Length; a++)
-                    GregoryNet.LocalWeights(us[a], vs[b], new Span<double>(t, (b * us.Length + a) * Stride, Stride));
+                {
+                    GregoryNet.LocalWeights(us[a], vs[b], w);
+                    int smp = b * us.Length + a;
+                    for (int k = 0; k < L; k++) t[k * S + smp] = w[k];
+                }
             if (grams[pair] == null)
             {
-                // Column k of the Gram matrix at k Stride (it is symmetric, so also row k).
-                const int L = GregoryNet.LocalCount;
+                // Row k of the (symmetric) Gram matrix at k Stride.
                 var g = new double[L * Stride];
-                int samples = us.Length * vs.Length;
-                for (int smp = 0; smp < samples; smp++)
-                {
-                    int o = smp * Stride;
-                    for (int k = 0; k < L; k++)
+                for (int k = 0; k < L; k++)
+                    for (int q = k; q < L; q++)
                     {
-                        double wk = t[o + k];
-                        if (wk == 0) continue;
-                        var f = new Vector<double>(wk);
-                        for (int v = 0; v < Stride; v += Lanes)
-                            (f * new Vector<double>(t, o + v) + new Vector<double>(g, k * Stride + v)).CopyTo(g, k * Stride + v);
+                        Vector<double> d = Vector<double>.Zero;
+                        for (int v = 0; v < S; v += Lanes) d += new Vector<double>(t, k * S + v) * new Vector<double>(t, q * S + v);
+                        g[k * Stride + q] = g[q * Stride + k] = Vector.Dot(d, Vector<double>.One);
                     }
-                }
                 grams[pair] = g;
             }
             if (cacheTables) tables[pair] = t;
             return t;
+        }
+
+        /// <summary>The most padded samples any patch has (the gather buffers' length).</summary>
+        int MostSamples()
+        {
+            int cu = 0, cv = 0;
+            foreach (int c in xAxis.Count) cu = Math.Max(cu, c);
+            foreach (int c in yAxis.Count) cv = Math.Max(cv, c);
+            return (cu * cv + Lanes - 1) / Lanes * Lanes;
+        }
+
+        /// <summary>Copies patch (i, j)'s samples into z, row after row, the padding 0.</summary>
+        void Gather(double[] heights, int i, int j, double[] z)
+        {
+            int c0 = xAxis.First[i], cn = xAxis.Count[i], r0 = yAxis.First[j], rn = yAxis.Count[j];
+            for (int b = 0; b < rn; b++) Array.Copy(heights, (long)(r0 + b) * width + c0, z, b * cn, cn);
+            Array.Clear(z, rn * cn, PaddedSamples(i, j) - rn * cn);
         }
 
         /// <summary>
@@ -161,30 +185,22 @@ namespace GregoryTerrain
         {
             const int L = GregoryNet.LocalCount;
             var rhs = new double[net.Count];
-            Span<double> acc = stackalloc double[Stride];
-            Span<Vector<double>> accV = MemoryMarshal.Cast<double, Vector<double>>(acc);
+            var z = new double[MostSamples()];
             for (int j = 0; j < net.Rows; j++)
             {
                 ct.ThrowIfCancellationRequested();
                 progress?.Report(p0 + (p1 - p0) * j / net.Rows);
-                int r0 = yAxis.First[j], rn = yAxis.Count[j];
                 for (int i = 0; i < net.Columns; i++)
                 {
                     double[] t = Table(i, j);
-                    int c0 = xAxis.First[i], cn = xAxis.Count[i];
-                    acc.Clear();
-                    for (int b = 0; b < rn; b++)
+                    Gather(heights, i, j, z);
+                    int S = PaddedSamples(i, j), u = (j * net.Columns + i) * L;
+                    for (int k = 0; k < L; k++)
                     {
-                        int row = (r0 + b) * width + c0, tr = b * cn * Stride;
-                        for (int a = 0; a < cn; a++)
-                        {
-                            var z = new Vector<double>(heights[row + a]);
-                            int o = tr + a * Stride;
-                            for (int v = 0; v < accV.Length; v++) accV[v] += new Vector<double>(t, o + v * Lanes) * z;
-                        }
+                        Vector<double> acc = Vector<double>.Zero;
+                        for (int v = 0; v < S; v += Lanes) acc += new Vector<double>(t, k * S + v) * new Vector<double>(z, v);
+                        rhs[unknownsOf[u + k]] += Vector.Dot(acc, Vector<double>.One);
                     }
-                    int u = (j * net.Columns + i) * L;
-                    for (int k = 0; k < L; k++) rhs[unknownsOf[u + k]] += acc[k];
                 }
             }
             return rhs;
@@ -197,22 +213,43 @@ namespace GregoryTerrain
             Array.Clear(y, 0, y.Length);
             Span<double> acc = stackalloc double[Stride];
             Span<Vector<double>> accV = MemoryMarshal.Cast<double, Vector<double>>(acc);
+            int nu = xAxis.Offsets.Count;
             for (int j = 0; j < net.Rows; j++)
+            {
+                int rowPair = yAxis.Class[j] * nu;
                 for (int i = 0; i < net.Columns; i++)
                 {
-                    double[] g = grams[Pair(i, j)];
+                    double[] g = grams[rowPair + xAxis.Class[i]];
                     int o = (j * net.Columns + i) * L;
-                    acc.Clear();
-                    for (int k = 0; k < L; k++)
+                    if (Stride == 5 * Lanes)
                     {
-                        double pk = p[unknownsOf[o + k]];
-                        if (pk == 0) continue;
-                        var f = new Vector<double>(pk);
-                        int c = k * Stride;
-                        for (int v = 0; v < accV.Length; v++) accV[v] += new Vector<double>(g, c + v * Lanes) * f;
+                        // The common case (4 or 2 lanes): five accumulators the JIT keeps in registers.
+                        Vector<double> a0 = Vector<double>.Zero, a1 = a0, a2 = a0, a3 = a0, a4 = a0;
+                        for (int k = 0; k < L; k++)
+                        {
+                            var f = new Vector<double>(p[unknownsOf[o + k]]);
+                            int c = k * Stride;
+                            a0 += new Vector<double>(g, c) * f;
+                            a1 += new Vector<double>(g, c + Lanes) * f;
+                            a2 += new Vector<double>(g, c + 2 * Lanes) * f;
+                            a3 += new Vector<double>(g, c + 3 * Lanes) * f;
+                            a4 += new Vector<double>(g, c + 4 * Lanes) * f;
+                        }
+                        accV[0] = a0; accV[1] = a1; accV[2] = a2; accV[3] = a3; accV[4] = a4;
+                    }
+                    else
+                    {
+                        acc.Clear();
+                        for (int k = 0; k < L; k++)
+                        {
+                            var f = new Vector<double>(p[unknownsOf[o + k]]);
+                            int c = k * Stride;
+                            for (int v = 0; v < accV.Length; v++) accV[v] += new Vector<double>(g, c + v * Lanes) * f;
+                        }
                     }
                     for (int q = 0; q < L; q++) y[unknownsOf[o + q]] += acc[q];
                 }
+            }
         }
 
         // The preconditioner's blocks: a vertex's 3 unknowns and an edge's 2 are strongly coupled (a
@@ -284,8 +321,20 @@ namespace GregoryTerrain
             for (int k = 0; k < 9; k++) a[k] = t[k] / d;
         }
 
-        /// <summary>z = B^-1 r, block by block.</summary>
-        void Precondition(double[] blocks, double[] r, double[] z)
+        /// <summary>z = B^-1 r block by block; 0 on fixed unknowns.</summary>
+        /// <remarks>
+        /// A second level through the C1 splines (z += T (G_y kron G_x)^-1 T^T r, separable and exact
+        /// in the spline subspace) was tried: it saved 5 to 15% of the iterations and cost as much as
+        /// a product with A each, so it is not used. What CG spends its iterations on is local.
+        /// </remarks>
+        void Precondition(double[] blocks, double[] r, double[] z, bool[] fixedMask)
+        {
+            PreconditionBlocks(blocks, r, z);
+            if (fixedMask != null)
+                for (int k = 0; k < z.Length; k++) if (fixedMask[k]) z[k] = 0;
+        }
+
+        void PreconditionBlocks(double[] blocks, double[] r, double[] z)
         {
             int vb = net.VerticalBase;
             for (int k = 0; k < vb; k += 3)
@@ -334,7 +383,7 @@ namespace GregoryTerrain
             var z = new double[n];
             var p = new double[n];
             double rz = 0, r0 = 0;
-            Precondition(blocks, r, z);
+            Precondition(blocks, r, z, fixedMask);
             for (int k = 0; k < n; k++)
             {
                 p[k] = z[k];
@@ -369,7 +418,7 @@ namespace GregoryTerrain
                     r[k] -= alpha * q[k];
                     rr += r[k] * r[k];
                 }
-                Precondition(blocks, r, z);
+                Precondition(blocks, r, z, fixedMask);
                 for (int k = 0; k < n; k++) rzNew += r[k] * z[k];
                 double beta = rzNew / rz;
                 rz = rzNew;
@@ -387,15 +436,16 @@ namespace GregoryTerrain
             IProgress<float> progress, float p0, float p1, CancellationToken ct)
         {
             const int L = GregoryNet.LocalCount;
-            Span<double> local = stackalloc double[Stride];
-            Span<Vector<double>> localV = MemoryMarshal.Cast<double, Vector<double>>(local);
+            Span<Vector<double>> local = stackalloc Vector<double>[L];
             // The map's cell of (c, r) is rowCell[r] + colCell[c]: no divisions per sample.
             var colCell = new int[width];
             var rowCell = new int[height];
             for (int c = 0; c < width; c++) colCell[c] = map.CellOf(c, 0);
             for (int r = 0; r < height; r++) rowCell[r] = map.CellOf(0, r);
-            max = 0;
-            double sum2 = 0;
+            int most = MostSamples();
+            var z = new double[most];
+            var e = new double[most];
+            Vector<double> vmax = Vector<double>.Zero, vsum = Vector<double>.Zero;
             for (int j = 0; j < net.Rows; j++)
             {
                 ct.ThrowIfCancellationRequested();
@@ -404,27 +454,33 @@ namespace GregoryTerrain
                 for (int i = 0; i < net.Columns; i++)
                 {
                     double[] t = Table(i, j);
-                    int u = (j * net.Columns + i) * L;
-                    local.Clear();
-                    for (int k = 0; k < L; k++) local[k] = x[unknownsOf[u + k]];
+                    Gather(heights, i, j, z);
+                    int S = PaddedSamples(i, j), u = (j * net.Columns + i) * L;
+                    for (int k = 0; k < L; k++) local[k] = new Vector<double>(x[unknownsOf[u + k]]);
+                    // Padding: weights 0 and samples 0 give error 0, which changes neither max nor sum.
+                    for (int v = 0; v < S; v += Lanes)
+                    {
+                        Vector<double> f = Vector<double>.Zero;
+                        for (int k = 0; k < L; k++) f += local[k] * new Vector<double>(t, k * S + v);
+                        Vector<double> d = Vector.Abs(f - new Vector<double>(z, v));
+                        vmax = Vector.Max(vmax, d);
+                        vsum += d * d;
+                        d.CopyTo(e, v);
+                    }
                     int c0 = xAxis.First[i], cn = xAxis.Count[i];
-                    double patchSum = 0;
                     for (int b = 0; b < rn; b++)
                     {
-                        int r = r0 + b, row = r * width, tr = b * cn * Stride, cellRow = rowCell[r];
-                        for (int a = 0; a < cn; a++)
-                        {
-                            int o = tr + a * Stride;
-                            Vector<double> f = Vector<double>.Zero;
-                            for (int v = 0; v < localV.Length; v++) f += new Vector<double>(t, o + v * Lanes) * localV[v];
-                            double e = Math.Abs(Vector.Dot(f, Vector<double>.One) - heights[row + c0 + a]);
-                            if (e > max) max = e;
-                            patchSum += e * e;
-                            map.Add(cellRow + colCell[c0 + a], e);
-                        }
+                        int cellRow = rowCell[r0 + b], o = b * cn;
+                        for (int a = 0; a < cn; a++) map.Add(cellRow + colCell[c0 + a], e[o + a]);
                     }
-                    sum2 += patchSum;
                 }
+            }
+            max = 0;
+            double sum2 = 0;
+            for (int k = 0; k < Lanes; k++)
+            {
+                max = Math.Max(max, vmax[k]);
+                sum2 += vsum[k];
             }
             rms = Math.Sqrt(sum2 / ((double)width * height));
             progress?.Report(p1);

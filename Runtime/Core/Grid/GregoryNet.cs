@@ -178,6 +178,40 @@ namespace GregoryTerrain
         }
 
         /// <summary>
+        /// x = T c: the net of a C1 spline with coefficients c (layout of
+        /// <see cref="SplineSurface.Coefficients"/>): vertices' z, dx, dy as they are, an edge's
+        /// offsets the slope across it plus the twist at its start and minus the one at its end.
+        /// The transpose of <see cref="SplineRightHandSide"/>.
+        /// </summary>
+        public void FromSpline(double[] c, double[] x)
+        {
+            int P = Columns, Q = Rows, nx = 2 * (P + 1);
+            double C(int ky, int kx) => c[ky * nx + kx];
+            for (int j = 0; j <= Q; j++)
+                for (int i = 0; i <= P; i++)
+                {
+                    int o = Vertex(i, j);
+                    x[o] = C(2 * j, 2 * i);
+                    x[o + 1] = C(2 * j, 2 * i + 1);
+                    x[o + 2] = C(2 * j + 1, 2 * i);
+                }
+            for (int j = 0; j < Q; j++)
+                for (int i = 0; i <= P; i++)
+                {
+                    int o = VerticalEdge(i, j);
+                    x[o] = C(2 * j, 2 * i + 1) + C(2 * j + 1, 2 * i + 1);
+                    x[o + 1] = C(2 * j + 2, 2 * i + 1) - C(2 * j + 3, 2 * i + 1);
+                }
+            for (int j = 0; j <= Q; j++)
+                for (int i = 0; i < P; i++)
+                {
+                    int o = HorizontalEdge(i, j);
+                    x[o] = C(2 * j + 1, 2 * i) + C(2 * j + 1, 2 * i + 1);
+                    x[o + 1] = C(2 * j + 1, 2 * i + 2) - C(2 * j + 1, 2 * i + 3);
+                }
+        }
+
+        /// <summary>
         /// The unknowns of a C1 Bezier net ((3P + 1) x (3Q + 1) heights, row-major along y): each
         /// offset is a difference of the net's points next to the vertex or edge (taken inwards, or
         /// from the last patch at the grid's far borders). Exact for a C1 net.

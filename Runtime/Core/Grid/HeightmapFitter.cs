@@ -163,8 +163,11 @@ namespace GregoryTerrain
 
             // 2. The C1 spline from the same pass (its right-hand side is T^T S^T z): the starting
             // net and the ridge's prior.
-            SplineSurface surface = SplineSurface.Solve(new C1SplineBasis(columns), new C1SplineBasis(rows), net.SplineRightHandSide(rhs), width, height);
-            double[] x0 = net.FromBezierNet(surface.BezierNet());
+            C1SplineBasis bx = new C1SplineBasis(columns), by = new C1SplineBasis(rows);
+            BandedCholesky gy = by.NormalMatrix(height), gx = bx.NormalMatrix(width);
+            SplineSurface surface = SplineSurface.Solve(bx, by, net.SplineRightHandSide(rhs), gy, gx);
+            var x0 = new double[net.Count];
+            net.FromSpline(surface.Coefficients, x0);
             bool[] fixedMask = west == null ? null : HoldWestEdge(west, net, x0, width);
 
             // 3. CG from x0 on the normal equations.

@@ -83,13 +83,21 @@ namespace GregoryTerrain
         /// overwritten): <c>C = G_y^-1 V G_x^-1</c>, the y solve on whole rows, then the x solve row
         /// by row. <see cref="GregoryNet.SplineRightHandSide"/> gets V from the Gregory fit's own pass.
         /// </summary>
-        public static SplineSurface Solve(C1SplineBasis bx, C1SplineBasis by, double[] v, int width, int height)
+        public static SplineSurface Solve(C1SplineBasis bx, C1SplineBasis by, double[] v, int width, int height) =>
+            Solve(bx, by, v, by.NormalMatrix(height), bx.NormalMatrix(width));
+
+        /// <summary><see cref="Solve(C1SplineBasis, C1SplineBasis, double[], int, int)"/> with the two normal matrices given (factored on first use, so they can be reused).</summary>
+        public static SplineSurface Solve(C1SplineBasis bx, C1SplineBasis by, double[] v, BandedCholesky gy, BandedCholesky gx)
         {
-            int nx = bx.Count, ny = by.Count;
-            by.NormalMatrix(height).SolveRows(v, nx);
-            BandedCholesky gx = bx.NormalMatrix(width);
-            for (int ky = 0; ky < ny; ky++) gx.Solve(new Span<double>(v, ky * nx, nx));
+            SolveInPlace(bx.Count, by.Count, v, gy, gx);
             return new SplineSurface(bx, by, v);
+        }
+
+        /// <summary>V to G_y^-1 V G_x^-1 in place (Ny x Nx, row-major).</summary>
+        public static void SolveInPlace(int nx, int ny, double[] v, BandedCholesky gy, BandedCholesky gx)
+        {
+            gy.SolveRows(v, nx);
+            for (int ky = 0; ky < ny; ky++) gx.Solve(new Span<double>(v, ky * nx, nx));
         }
 
         /// <summary>

@@ -52,6 +52,7 @@ namespace GregoryTerrain.Rig
             var sw = Stopwatch.StartNew();
             PatchGrid grid;
             double max, rms;
+            int iterations = 0;
             if (legacy)
             {
                 LegacyHeightmapFit f = LegacyHeightmapFitter.Fit(z, w, h, patches, patches);
@@ -65,7 +66,7 @@ namespace GregoryTerrain.Rig
             else
             {
                 HeightmapFit f = HeightmapFitter.Fit(z, w, h, patches, patches);
-                grid = f.Grid; max = f.MaxError; rms = f.RmsError;
+                grid = f.Grid; max = f.MaxError; rms = f.RmsError; iterations = f.Iterations;
             }
             double seconds = sw.Elapsed.TotalSeconds;
             double cpuSeconds = (Process.GetCurrentProcess().TotalProcessorTime - cpu0).TotalSeconds;
@@ -82,9 +83,9 @@ namespace GregoryTerrain.Rig
                 angle = ContinuityMeasure.MaxNormalAngleDegrees(s, 9);
             }
             Console.WriteLine(string.Format(CultureInfo.InvariantCulture,
-                "{0}\t{1}x{2}\t{3}\t{4:F2}\t{5:F3}\t{6:F2}\t{7:F3}\t{8:E1}\t{9:F2}\t{10:F2}\t{11:F0}\t{12:F1}",
+                "{0}\t{1}x{2}\t{3}\t{4:F2}\t{5:F3}\t{6:F2}\t{7:F3}\t{8:E1}\t{9:F2}\t{10:F2}\t{11:F0}\t{12:F1}\t{13}",
                 legacy ? "legacy" : c1 ? "c1-spline" : "gregory-net", w, h, patches, max, rms, 100 * max / (hi - lo), 100 * rms / (hi - lo),
-                angle, seconds, cpuSeconds, extra / 1048576.0, (double)extra / ((double)w * h)));
+                angle, seconds, cpuSeconds, extra / 1048576.0, (double)extra / ((double)w * h), iterations));
             return 0;
         }
 
