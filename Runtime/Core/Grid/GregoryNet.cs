@@ -40,38 +40,41 @@ namespace GregoryTerrain
             Rows = rows;
         }
 
+        /// <summary>Index of vertex (i, j)'s z; dx, dy follow.</summary>
         public int Vertex(int i, int j) => 3 * (j * (Columns + 1) + i);
+        /// <summary>Index of e1 of the edge on x line i between y lines j and j + 1; e2 follows.</summary>
         public int VerticalEdge(int i, int j) => VerticalBase + 2 * (j * (Columns + 1) + i);
+        /// <summary>Index of e1 of the edge on y line j between x lines i and i + 1; e2 follows.</summary>
         public int HorizontalEdge(int i, int j) => HorizontalBase + 2 * (j * Columns + i);
 
         // Local unknowns of patch (i, j): 0..11 the vertices (i, j), (i+1, j), (i, j+1), (i+1, j+1),
         // each (z, dx, dy); 12, 13 the bottom edge's e1, e2; 14, 15 the top's; 16, 17 the left's; 18, 19 the right's.
-        // Each of the 20 slots is a sum of up to 3 local unknowns with signs +-1 (class comment).
+        // Each of the 20 slots is a sum of up to 3 local unknowns with signs +-1 (class comment);
+        // each entry is +-(local + 1): the local unknown and its sign.
         static readonly sbyte[][] SlotTerms =
         {
             // slot 0..15 = grid position (a, b), a along u; then the second points 16..19.
-            new sbyte[] { +1 },                    // 0  (0,0): z00
-            new sbyte[] { +1, +3 },             // 1  (0,1): z00 + dy00
-            new sbyte[] { +7, -9 },             // 2  (0,2): z01 - dy01
-            new sbyte[] { +7 },                    // 3  (0,3): z01
-            new sbyte[] { +1, +2 },             // 4  (1,0): z00 + dx00
-            new sbyte[] { +1, +2, +13 },     // 5  first (1,1): z00 + dx00 + eb1
-            new sbyte[] { +7, +8, -15 },     // 6  first (1,2): z01 + dx01 - et1
-            new sbyte[] { +7, +8 },             // 7  (1,3): z01 + dx01
-            new sbyte[] { +4, -5 },             // 8  (2,0): z10 - dx10
-            new sbyte[] { +4, -5, +14 },     // 9  first (2,1): z10 - dx10 + eb2
-            new sbyte[] { +10, -11, -16 },   // 10 first (2,2): z11 - dx11 - et2
-            new sbyte[] { +10, -11 },           // 11 (2,3): z11 - dx11
-            new sbyte[] { +4 },                    // 12 (3,0): z10
-            new sbyte[] { +4, +6 },             // 13 (3,1): z10 + dy10
-            new sbyte[] { +10, -12 },           // 14 (3,2): z11 - dy11
-            new sbyte[] { +10 },                   // 15 (3,3): z11
-            new sbyte[] { +1, +3, +17 },     // 16 second (1,1): z00 + dy00 + el1
-            new sbyte[] { +7, -9, +18 },     // 17 second (1,2): z01 - dy01 + el2
-            new sbyte[] { +4, +6, -19 },     // 18 second (2,1): z10 + dy10 - er1
-            new sbyte[] { +10, -12, -20 },   // 19 second (2,2): z11 - dy11 - er2
+            new sbyte[] { +1 },               // 0  (0,0): z00
+            new sbyte[] { +1, +3 },           // 1  (0,1): z00 + dy00
+            new sbyte[] { +7, -9 },           // 2  (0,2): z01 - dy01
+            new sbyte[] { +7 },               // 3  (0,3): z01
+            new sbyte[] { +1, +2 },           // 4  (1,0): z00 + dx00
+            new sbyte[] { +1, +2, +13 },      // 5  first (1,1): z00 + dx00 + eb1
+            new sbyte[] { +7, +8, -15 },      // 6  first (1,2): z01 + dx01 - et1
+            new sbyte[] { +7, +8 },           // 7  (1,3): z01 + dx01
+            new sbyte[] { +4, -5 },           // 8  (2,0): z10 - dx10
+            new sbyte[] { +4, -5, +14 },      // 9  first (2,1): z10 - dx10 + eb2
+            new sbyte[] { +10, -11, -16 },    // 10 first (2,2): z11 - dx11 - et2
+            new sbyte[] { +10, -11 },         // 11 (2,3): z11 - dx11
+            new sbyte[] { +4 },               // 12 (3,0): z10
+            new sbyte[] { +4, +6 },           // 13 (3,1): z10 + dy10
+            new sbyte[] { +10, -12 },         // 14 (3,2): z11 - dy11
+            new sbyte[] { +10 },              // 15 (3,3): z11
+            new sbyte[] { +1, +3, +17 },      // 16 second (1,1): z00 + dy00 + el1
+            new sbyte[] { +7, -9, +18 },      // 17 second (1,2): z01 - dy01 + el2
+            new sbyte[] { +4, +6, -19 },      // 18 second (2,1): z10 + dy10 - er1
+            new sbyte[] { +10, -12, -20 },    // 19 second (2,2): z11 - dy11 - er2
         };
-        // Each entry is +-(local + 1): the local unknown and its sign.
 
         /// <summary>The global indices of patch (i, j)'s 20 local unknowns.</summary>
         public void LocalUnknowns(int i, int j, Span<int> index)

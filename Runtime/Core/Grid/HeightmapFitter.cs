@@ -18,6 +18,7 @@ namespace GregoryTerrain
         public SplineSurface Surface { get; }
         /// <summary>The fitted G1 net's layout and unknowns (what a neighbouring tile continues).</summary>
         public GregoryNet Net { get; }
+        /// <summary>The fitted net's unknowns, in <see cref="Net"/>'s layout.</summary>
         public double[] Unknowns { get; }
         /// <summary>Conjugate-gradient iterations the solve took.</summary>
         public int Iterations { get; }
