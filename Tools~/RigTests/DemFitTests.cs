@@ -9,10 +9,10 @@ namespace GregoryTerrain.Rig.Tests
     /// samples each, sharing their seam column: no NaN, G1 after enforcement, voids filled rather
     /// than fitted into spikes, the two tiles fitted one after the other join G1, and the error
     /// against the bilinear baseline. Issue 27's goal (RMS at most half the baseline's, max no worse)
-    /// is NOT met at coarse grids and these bounds do not claim it: the C1 bicubic space has
-    /// 4 (P+1)^2 unknowns against the baseline's (3P+1)^2, and even with as many unknowns as the
-    /// baseline (1.5 P patches) its RMS is 0.65 to 0.8 of the baseline's at P = 8..32 (manual, Fitting).
-    /// The bounds below are the measured ratios with a margin, so a worse fit fails.
+    /// is NOT met and these bounds do not claim it: the G1 Gregory nets have about 7 unknowns a patch
+    /// against the baseline lattice's 9, and on this rough terrain the fit's RMS is 0.93 to 0.97 of
+    /// the baseline's, its max 0.85 to 1.25 (manual, Fitting). The bounds below are what the fit
+    /// achieves (RMS below the baseline's and below the previous C1 spline's) so a worse fit fails.
     /// </summary>
     [TestFixture]
     public class DemFitTests
@@ -23,8 +23,8 @@ namespace GregoryTerrain.Rig.Tests
         const double CropWidthMetres = 240 * 61.2;
         /// <summary>Normals across shared edges may differ by rounding only: the spline is C1.</summary>
         const double G1BoundDegrees = 1e-6;
-        /// <summary>Measured worst ratios to the baseline over both crops at 8, 16, 32 patches: RMS 1.10, max 1.40.</summary>
-        const double RmsRatioBound = 1.15, MaxRatioBound = 1.5;
+        /// <summary>Measured worst ratios to the baseline over both crops at 8, 16, 32 patches: RMS 0.97, max 1.25.</summary>
+        const double RmsRatioBound = 1.0, MaxRatioBound = 1.3;
 
         // The crops live with the rig, not in Tests/ (232 KB the package would ship for one test class).
         static string DataPath(string name) => PackageRoot.Combine("Tools~", "RigTests", "Data", "dem", name);
@@ -102,6 +102,23 @@ namespace GregoryTerrain.Rig.Tests
             return max;
         }
 
+        /// <summary>RMS of a C1 spline over the samples, evaluated on its own Bezier grid.</summary>
+        internal static double SplineRms(SplineSurface s, double[] z, int w, int h)
+        {
+            PatchGrid g = s.ToPatchGrid();
+            double s2 = 0;
+            for (int r = 0; r < h; r++)
+                for (int c = 0; c < w; c++)
+                {
+                    double x = (double)c / (w - 1), y = (double)r / (h - 1);
+                    int p = g.FindPatch(x, y);
+                    Region reg = g.RegionOf(p);
+                    double e = GregoryEval.Position(g.Patches[p].Points, (x - reg.a) / reg.Width, (y - reg.b) / reg.Height).z - z[r * w + c];
+                    s2 += e * e;
+                }
+            return Math.Sqrt(s2 / ((double)w * h));
+        }
+
         /// <summary>The grid with z divided by the crop's width in metres, so x, y, z share units for angles.</summary>
         internal static PatchGrid InUnitSquareUnits(PatchGrid g, double widthMetres)
         {
@@ -117,7 +134,7 @@ namespace GregoryTerrain.Rig.Tests
         [TestCase("N48E010_west.hgt", 8)]
         [TestCase("N48E010_west.hgt", 16)]
         [TestCase("N48E010_west.hgt", 32)]
-        public void NearTheBilinearBaselineAndG1(string tile, int patches)
+        public void BelowTheBilinearBaselineRmsAndG1(string tile, int patches)
         {
             double[] z = Load(tile);
             HeightmapFit fit = HeightmapFitter.Fit(z, Side, Side, patches, patches);
@@ -132,8 +149,11 @@ namespace GregoryTerrain.Rig.Tests
             for (int p = 0; p < enforced.PatchCount; p++)
                 for (int k = 0; k < GregoryPatch.SlotCount; k++)
                     moved = Math.Max(moved, Math.Abs(enforced.Patches[p][k].z * CropWidthMetres - fit.Grid.Patches[p][k].z));
-            TestContext.Out.WriteLine($"{tile} {patches}x{patches}: fit max {fit.MaxError:F2} m RMS {fit.RmsError:F3} m; bilinear baseline max {bMax:F2} m RMS {bRms:F3} m (ratios {fit.MaxError / bMax:F2}, {fit.RmsError / bRms:F2}); Gregory evaluation max {gridMax:F2} m; G1 angle {before:E2} deg, after MakeG1 {angle:E2} deg, which moved points by {moved:E1} m");
+            // The previous fitter's surface: the C1 spline the fit starts from.
+            double splineRms = SplineRms(fit.Surface, z, Side, Side);
+            TestContext.Out.WriteLine($"{tile} {patches}x{patches}: fit max {fit.MaxError:F2} m RMS {fit.RmsError:F3} m; bilinear baseline max {bMax:F2} m RMS {bRms:F3} m (ratios {fit.MaxError / bMax:F2}, {fit.RmsError / bRms:F2}); C1 spline RMS {splineRms:F3} m; Gregory evaluation max {gridMax:F2} m; G1 angle {before:E2} deg, after MakeG1 {angle:E2} deg, which moved points by {moved:E1} m; {fit.Iterations} CG iterations");
             Assert.That(fit.RmsError, Is.LessThanOrEqualTo(RmsRatioBound * bRms), "RMS against the bilinear baseline's");
+            Assert.That(fit.RmsError, Is.LessThan(0.99 * splineRms), "RMS against the C1 spline's (the previous fit)");
             Assert.That(fit.MaxError, Is.LessThanOrEqualTo(MaxRatioBound * bMax), "max against the bilinear baseline's");
             Assert.That(before, Is.LessThan(G1BoundDegrees), "the fitted grid itself is G1");
             Assert.That(moved, Is.LessThan(1e-6), "MakeG1 should find the fitted grid G1 already");

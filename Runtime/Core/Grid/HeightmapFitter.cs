@@ -14,14 +14,24 @@ namespace GregoryTerrain
         public double RmsError { get; }
         /// <summary>Where the error is: the largest |error| per cell of a coarse picture of the heightmap.</summary>
         public FitErrorMap ErrorMap { get; }
-        /// <summary>The fitted C1 spline surface the grid was built from (what a neighbouring tile continues).</summary>
+        /// <summary>The least-squares C1 spline the fit started from (and fell back to where the samples say nothing).</summary>
         public SplineSurface Surface { get; }
+        /// <summary>The fitted G1 net's layout and unknowns (what a neighbouring tile continues).</summary>
+        public GregoryNet Net { get; }
+        /// <summary>The fitted net's unknowns, in <see cref="Net"/>'s layout.</summary>
+        public double[] Unknowns { get; }
+        /// <summary>Conjugate-gradient iterations the solve took.</summary>
+        public int Iterations { get; }
         /// <summary>Samples per row and rows of the fitted heightmap.</summary>
         public int SampleWidth { get; }
         public int SampleHeight { get; }
 
-        public HeightmapFit(PatchGrid grid, double maxError, double rmsError, FitErrorMap errorMap, SplineSurface surface, int sampleWidth, int sampleHeight)
+        public HeightmapFit(PatchGrid grid, double maxError, double rmsError, FitErrorMap errorMap, SplineSurface surface,
+            GregoryNet net, double[] unknowns, int iterations, int sampleWidth, int sampleHeight)
         {
+            Net = net;
+            Unknowns = unknowns;
+            Iterations = iterations;
             Grid = grid ?? throw new ArgumentNullException(nameof(grid));
             MaxError = maxError;
             RmsError = rmsError;
@@ -44,25 +54,21 @@ namespace GregoryTerrain
     /// <summary>
     /// Fits an n x m G1 grid of Gregory patches to a height array (W x H doubles, row-major, sample
     /// (c, r) at <c>(c/(W-1), r/(H-1))</c> of the unit square) by linear least squares over every
-    /// sample:
+    /// sample, in the space of G1 Gregory nets on the grid's lines (<see cref="GregoryNet"/>: per
+    /// vertex a height and two slopes, per edge two cross-boundary slopes, about 7 unknowns a patch):
     /// <list type="number">
-    /// <item>the surface is a C1 bicubic spline on the grid's lines (tensor product of two
-    /// <see cref="C1SplineBasis"/>: a height and a slope per grid vertex and axis, 4 (n+1)(m+1)
-    /// unknowns), so the fitted patches are Bezier patches joined C1, which is G1;</item>
-    /// <item>least squares over all W H samples. Gridded samples and a tensor-product basis make the
-    /// normal equations separable, <c>G_y C G_x = S_y^T Z S_x</c>: one pass over the samples builds
-    /// the right-hand side (4 multiply-adds a sample), then two band solves (bandwidth 3) per axis.
-    /// Time O(W H + n m), memory O(n m) beyond the samples;</item>
-    /// <item>the Bezier net of that spline is the grid's control net, interior pairs coincident;
-    /// <see cref="G1Builder.MakeG1"/> then re-derives every shared edge's interior points (it finds
-    /// k = -1, h = 0 and keeps them), so the grid is G1 by the same construction as any other;</item>
-    /// <item>a second pass measures the error at every sample and bins it into
-    /// <see cref="FitErrorMap"/>.</item>
+    /// <item>the least-squares C1 spline (<see cref="SplineSurface.Fit"/>, separable, one pass) gives
+    /// the starting net x0, a C1 net being a Gregory net whose pairs coincide;</item>
+    /// <item>one pass over the samples builds <c>S^T z</c> and the patch Gram matrices
+    /// (<see cref="GregoryLeastSquares"/>), then Jacobi-preconditioned conjugate gradients from x0
+    /// solve the normal equations, with a tiny ridge toward x0 for what the samples leave open;</item>
+    /// <item>the net's 20 points per patch are the grid: G1 by construction (equal cross-boundary
+    /// derivatives on both sides of every edge, one tangent plane at every vertex);</item>
+    /// <item>a last pass measures the error at every sample and bins it into <see cref="FitErrorMap"/>.</item>
     /// </list>
-    /// Why this and not free Gregory interiors: the C1 spline space is linear, so the least-squares
-    /// fit is one exact solve with no iteration and no G1 repair that moves points away from the
-    /// optimum. A Gregory grid has more freedom (independent cross-boundary slopes per edge), but a
-    /// least-squares fit over it is neither separable nor linear once k, h vary.
+    /// Why Gregory nets and not the C1 splines alone: the pairs free each edge's cross-boundary slope
+    /// from the twists at its ends, 7 unknowns a patch against 4, in a space that contains the C1
+    /// splines, so the fit can only get closer to the samples.
     /// </summary>
     internal static class HeightmapFitter
     {
@@ -81,15 +87,15 @@ namespace GregoryTerrain
         /// <summary>
         /// Fits a heightmap that continues <paramref name="west"/> eastwards: its first column of
         /// samples is the west fit's last one, rows are the same rows, and samples are as far apart.
-        /// The east grid's first grid line takes the west grid's last heights and slopes exactly, so
-        /// the two grids joined side by side (<see cref="PatchGridJoin.WestEast"/>) are G1 across
-        /// the seam. Its rows must equal west's.
+        /// The east net's first grid line (its vertices' heights and slopes, its edges' cross
+        /// slopes) is held at the west net's last one, so the two grids joined side by side
+        /// (<see cref="PatchGridJoin.WestEast"/>) are G1 across the seam. Its rows must equal west's.
         /// </summary>
         public static HeightmapFit FitEastOf(HeightmapFit west, double[] heights, int width, int height, int columns,
             IProgress<float> progress = null, CancellationToken cancellationToken = default)
         {
             if (west == null) throw new ArgumentNullException(nameof(west));
-            if (west.Surface == null) throw new ArgumentException("west has no spline surface to continue.", nameof(west));
+            if (west.Unknowns == null) throw new ArgumentException("west has no net to continue.", nameof(west));
             int rows = west.Grid.Rows;
             CheckInputs(heights, width, height, columns, rows);
             if (height != west.SampleHeight)
@@ -151,143 +157,63 @@ namespace GregoryTerrain
         static HeightmapFit FitChecked(double[] heights, int width, int height, int columns, int rows, HeightmapFit west,
             IProgress<float> progress, CancellationToken ct)
         {
-            var bx = new C1SplineBasis(columns);
-            var by = new C1SplineBasis(rows);
-            int nx = bx.Count, ny = by.Count;
+            // 1. One pass over the samples: S^T z and the patch Gram matrices.
+            var net = new GregoryNet(columns, rows);
+            var ls = new GregoryLeastSquares(net, width, height);
+            double[] rhs = ls.RightHandSide(heights, progress, 0f, 0.4f, ct);
 
-            // Per-column spans and weights, shared by both passes.
-            var xSpan = new int[width];
-            var xw = new double[4 * width];
-            for (int c = 0; c < width; c++) xSpan[c] = bx.Weights(c, width, new Span<double>(xw, 4 * c, 4));
+            // 2. The C1 spline from the same pass (its right-hand side is T^T S^T z): the starting
+            // net and the ridge's prior.
+            C1SplineBasis bx = new C1SplineBasis(columns), by = new C1SplineBasis(rows);
+            BandedCholesky gy = by.NormalMatrix(height), gx = bx.NormalMatrix(width);
+            SplineSurface surface = SplineSurface.Solve(bx, by, net.SplineRightHandSide(rhs), gy, gx);
+            var x0 = new double[net.Count];
+            net.FromSpline(surface.Coefficients, x0);
+            bool[] fixedMask = west == null ? null : HoldWestEdge(west, net, x0, width);
 
-            // 1. Right-hand side V = S_y^T Z S_x (ny x nx), one row of samples at a time.
-            var v = new double[ny * nx];
-            var u = new double[nx];
-            Span<double> wy = stackalloc double[4];
-            for (int r = 0; r < height; r++)
-            {
-                if ((r & 63) == 0)
-                {
-                    ct.ThrowIfCancellationRequested();
-                    progress?.Report(0.45f * r / height);
-                }
-                Array.Clear(u, 0, nx);
-                int row = r * width;
-                for (int c = 0; c < width; c++)
-                {
-                    double z = heights[row + c];
-                    int o = 2 * xSpan[c], w = 4 * c;
-                    u[o] += xw[w] * z;
-                    u[o + 1] += xw[w + 1] * z;
-                    u[o + 2] += xw[w + 2] * z;
-                    u[o + 3] += xw[w + 3] * z;
-                }
-                int sy = by.Weights(r, height, wy);
-                for (int p = 0; p < 4; p++)
-                {
-                    double f = wy[p];
-                    int dst = (2 * sy + p) * nx;
-                    for (int k = 0; k < nx; k++) v[dst + k] += f * u[k];
-                }
-            }
+            // 3. CG from x0 on the normal equations.
+            double[] x = ls.Solve(rhs, x0, fixedMask, progress, 0.4f, 0.6f, ct);
+            // 4. The grid: the net's points, G1 by construction.
             ct.ThrowIfCancellationRequested();
+            PatchGrid grid = net.ToPatchGrid(x);
+            progress?.Report(0.65f);
 
-            // 2. C = G_y^-1 V G_x^-1: the y solve on whole rows, then the x solve row by row.
-            by.NormalMatrix(height).SolveRows(v, nx);
-            BandedCholesky gx = bx.NormalMatrix(width);
-            if (west == null)
-            {
-                for (int ky = 0; ky < ny; ky++) gx.Solve(new Span<double>(v, ky * nx, nx));
-            }
-            else
-            {
-                SolveWithFixedStart(gx, v, ny, nx, WestEdge(west, width, columns));
-            }
-            var surface = new SplineSurface(bx, by, v);
-            progress?.Report(0.5f);
-
-            // 3. The grid: the spline's Bezier patches, C1 and so G1 by construction (see the class
-            // comment for why G1Builder.MakeG1 is not run here).
-            ct.ThrowIfCancellationRequested();
-            PatchGrid grid = surface.ToPatchGrid();
-            progress?.Report(0.55f);
-
-            // 4. Error at every sample, from the spline (the grid's patches are its Bezier patches).
+            // 5. Error at every sample, from the same weights the grid's patches evaluate.
             var map = new FitErrorMap(width, height);
-            var q = new double[nx];
-            double max = 0, sum2 = 0;
-            for (int r = 0; r < height; r++)
-            {
-                if ((r & 63) == 0)
-                {
-                    ct.ThrowIfCancellationRequested();
-                    progress?.Report(0.55f + 0.45f * r / height);
-                }
-                int sy = by.Weights(r, height, wy);
-                for (int k = 0; k < nx; k++)
-                    q[k] = wy[0] * v[(2 * sy) * nx + k] + wy[1] * v[(2 * sy + 1) * nx + k]
-                         + wy[2] * v[(2 * sy + 2) * nx + k] + wy[3] * v[(2 * sy + 3) * nx + k];
-                double rowSum = 0;
-                int row = r * width;
-                for (int c = 0; c < width; c++)
-                {
-                    int o = 2 * xSpan[c], w = 4 * c;
-                    double f = xw[w] * q[o] + xw[w + 1] * q[o + 1] + xw[w + 2] * q[o + 2] + xw[w + 3] * q[o + 3];
-                    double e = Math.Abs(f - heights[row + c]);
-                    if (e > max) max = e;
-                    rowSum += e * e;
-                    map.Add(map.CellOf(c, r), e);
-                }
-                sum2 += rowSum;
-            }
+            ls.Errors(heights, x, map, out double max, out double rms, progress, 0.65f, 1f, ct);
             progress?.Report(1f);
-            return new HeightmapFit(grid, max, Math.Sqrt(sum2 / ((double)width * height)), map, surface, width, height);
+            return new HeightmapFit(grid, max, rms, map, surface, net, x, ls.Iterations, width, height);
         }
 
         /// <summary>
-        /// The west fit's last knot column (z, d per y coefficient), d rescaled to this fit's span:
-        /// d = (span / 3) slope, and spans differ when the tiles' samples per patch differ.
+        /// Copies the west net's last grid line into this net's first (x0) and marks it fixed:
+        /// heights and slopes along the line as they are, slopes across it (dx, edge offsets)
+        /// rescaled from west's patch width to this one's (an offset is width / 3 times a slope).
         /// </summary>
-        static double[] WestEdge(HeightmapFit west, int width, int columns)
+        static bool[] HoldWestEdge(HeightmapFit west, GregoryNet net, double[] x0, int width)
         {
-            SplineSurface s = west.Surface;
-            int wnx = s.X.Count, ny = s.Y.Count;
-            double ratio = ((double)(width - 1) / columns) / ((double)(west.SampleWidth - 1) / s.X.Spans);
-            var edge = new double[2 * ny];
-            for (int ky = 0; ky < ny; ky++)
+            GregoryNet w = west.Net;
+            double[] wx = west.Unknowns;
+            double ratio = ((double)(width - 1) / net.Columns) / ((double)(west.SampleWidth - 1) / w.Columns);
+            var mask = new bool[net.Count];
+            for (int j = 0; j <= net.Rows; j++)
             {
-                edge[2 * ky] = s.Coefficients[ky * wnx + wnx - 2];
-                edge[2 * ky + 1] = s.Coefficients[ky * wnx + wnx - 1] * ratio;
+                int src = w.Vertex(w.Columns, j), dst = net.Vertex(0, j);
+                x0[dst] = wx[src];
+                x0[dst + 1] = wx[src + 1] * ratio;
+                x0[dst + 2] = wx[src + 2];
+                mask[dst] = mask[dst + 1] = mask[dst + 2] = true;
             }
-            return edge;
-        }
-
-        /// <summary>
-        /// Row by row, solves <c>G_x c = rhs</c> with c[0], c[1] held at the given values: the free
-        /// part solves <c>G_x[2.., 2..] c_free = rhs[2..] - G_x[2.., 0..1] c_fixed</c>, which is the
-        /// least-squares optimum over the free coefficients (the y solve before it is unchanged).
-        /// </summary>
-        static void SolveWithFixedStart(BandedCholesky gx, double[] v, int ny, int nx, double[] fixedStart)
-        {
-            int n = nx - 2;
-            var reduced = new BandedCholesky(n, C1SplineBasis.Bandwidth);
-            for (int i = 0; i < n; i++)
-                for (int k = 0; k <= C1SplineBasis.Bandwidth && i + k < n; k++)
-                    reduced.Add(i, i + k, gx.Get(i + 2, i + k + 2));
-            var coupling = new double[2 * 2];   // G_x(2 + i, f) for i = 0, 1 (rows 4.. are outside the band)
-            for (int i = 0; i < 2; i++)
-                for (int f = 0; f < 2; f++) coupling[2 * i + f] = gx.Get(2 + i, f);
-            var rhs = new double[n];
-            for (int ky = 0; ky < ny; ky++)
+            for (int j = 0; j < net.Rows; j++)
             {
-                double z0 = fixedStart[2 * ky], d0 = fixedStart[2 * ky + 1];
-                for (int i = 0; i < n; i++) rhs[i] = v[ky * nx + 2 + i];
-                for (int i = 0; i < 2 && i < n; i++) rhs[i] -= coupling[2 * i] * z0 + coupling[2 * i + 1] * d0;
-                reduced.Solve(rhs);
-                v[ky * nx] = z0;
-                v[ky * nx + 1] = d0;
-                for (int i = 0; i < n; i++) v[ky * nx + 2 + i] = rhs[i];
+                int src = w.VerticalEdge(w.Columns, j), dst = net.VerticalEdge(0, j);
+                for (int k = 0; k < 2; k++)
+                {
+                    x0[dst + k] = wx[src + k] * ratio;
+                    mask[dst + k] = true;
+                }
             }
+            return mask;
         }
 
         /// <summary>Throws unless heights is W x H (W, H >= 2) and every sample is finite.</summary>

@@ -1,4 +1,5 @@
 using System;
+using System.Threading;
 
 namespace GregoryTerrain
 {
@@ -23,6 +24,80 @@ namespace GregoryTerrain
             X = x;
             Y = y;
             Coefficients = coefficients;
+        }
+
+        /// <summary>
+        /// The least-squares C1 spline through a W x H heightmap (sample (c, r) at
+        /// <c>(c/(W-1), r/(H-1))</c>), inputs already checked. Gridded samples and a tensor-product
+        /// basis make the normal equations separable, <c>G_y C G_x = S_y^T Z S_x</c>: one pass over the
+        /// samples (4 multiply-adds each) builds the right-hand side, then two band solves (bandwidth
+        /// 3) per axis. Time O(W H + P Q), memory O(P Q). <see cref="HeightmapFitter"/> starts its
+        /// Gregory-net fit from it.
+        /// </summary>
+        public static SplineSurface Fit(double[] heights, int width, int height, int columns, int rows,
+            IProgress<float> progress, CancellationToken ct, float progressEnd = 1f)
+        {
+            var bx = new C1SplineBasis(columns);
+            var by = new C1SplineBasis(rows);
+            int nx = bx.Count, ny = by.Count;
+            var xSpan = new int[width];
+            var xw = new double[4 * width];
+            for (int c = 0; c < width; c++) xSpan[c] = bx.Weights(c, width, new Span<double>(xw, 4 * c, 4));
+            // Right-hand side V = S_y^T Z S_x (ny x nx), one row of samples at a time.
+            var v = new double[ny * nx];
+            var u = new double[nx];
+            Span<double> wy = stackalloc double[4];
+            for (int r = 0; r < height; r++)
+            {
+                if ((r & 63) == 0)
+                {
+                    ct.ThrowIfCancellationRequested();
+                    progress?.Report(progressEnd * r / height);
+                }
+                Array.Clear(u, 0, nx);
+                int row = r * width;
+                for (int c = 0; c < width; c++)
+                {
+                    double z = heights[row + c];
+                    int o = 2 * xSpan[c], w = 4 * c;
+                    u[o] += xw[w] * z;
+                    u[o + 1] += xw[w + 1] * z;
+                    u[o + 2] += xw[w + 2] * z;
+                    u[o + 3] += xw[w + 3] * z;
+                }
+                int sy = by.Weights(r, height, wy);
+                for (int p = 0; p < 4; p++)
+                {
+                    double f = wy[p];
+                    int dst = (2 * sy + p) * nx;
+                    for (int k = 0; k < nx; k++) v[dst + k] += f * u[k];
+                }
+            }
+            ct.ThrowIfCancellationRequested();
+            progress?.Report(progressEnd);
+            return Solve(bx, by, v, width, height);
+        }
+
+        /// <summary>
+        /// The least-squares spline from its right-hand side <c>V = S_y^T Z S_x</c> (Ny x Nx,
+        /// overwritten): <c>C = G_y^-1 V G_x^-1</c>, the y solve on whole rows, then the x solve row
+        /// by row. <see cref="GregoryNet.SplineRightHandSide"/> gets V from the Gregory fit's own pass.
+        /// </summary>
+        public static SplineSurface Solve(C1SplineBasis bx, C1SplineBasis by, double[] v, int width, int height) =>
+            Solve(bx, by, v, by.NormalMatrix(height), bx.NormalMatrix(width));
+
+        /// <summary><see cref="Solve(C1SplineBasis, C1SplineBasis, double[], int, int)"/> with the two normal matrices given (factored on first use, so they can be reused).</summary>
+        public static SplineSurface Solve(C1SplineBasis bx, C1SplineBasis by, double[] v, BandedCholesky gy, BandedCholesky gx)
+        {
+            SolveInPlace(bx.Count, by.Count, v, gy, gx);
+            return new SplineSurface(bx, by, v);
+        }
+
+        /// <summary>V to G_y^-1 V G_x^-1 in place (Ny x Nx, row-major).</summary>
+        public static void SolveInPlace(int nx, int ny, double[] v, BandedCholesky gy, BandedCholesky gx)
+        {
+            gy.SolveRows(v, nx);
+            for (int ky = 0; ky < ny; ky++) gx.Solve(new Span<double>(v, ky * nx, nx));
         }
 
         /// <summary>

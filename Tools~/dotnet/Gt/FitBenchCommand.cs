@@ -8,8 +8,10 @@ namespace GregoryTerrain.Rig
 {
     /// <summary>
     /// gt fit-bench's measurements, one fit per process so each peak memory is its own:
-    ///   fit-bench --dem FILE.hgt --patches P [--legacy]   error (m, % of relief), G1 angle, time, memory
-    ///   fit-bench --size N --patches P [--legacy]         time and memory on an N x N synthetic heightmap
+    ///   fit-bench --dem FILE.hgt --patches P [--c1 | --legacy]   error (m, % of relief), G1 angle, time, memory
+    ///   fit-bench --size N --patches P [--c1 | --legacy]         time and memory on an N x N synthetic heightmap
+    /// Fitters: the shipped Gregory-net least squares (default), the previous C1-spline least squares
+    /// (--c1, Legacy/C1HeightmapFitter.cs), the interpolating fitter before it (--legacy).
     /// Prints one tab-separated line (wall and CPU seconds: CPU time is what to compare on a shared machine); Tools~/rig/fit-bench.sh runs the grid of cases and tabulates.
     /// Peak memory is the process's high-water mark (VmHWM) after the fit minus the one before it,
     /// with the heights already allocated and touched: what the fit itself adds.
@@ -19,7 +21,7 @@ namespace GregoryTerrain.Rig
         public static int Run(Args a)
         {
             int patches = a.Int("patches");
-            bool legacy = a.Flag("legacy");
+            bool legacy = a.Flag("legacy"), c1 = a.Flag("c1");
             string dem = a.String("dem", "");
             double[] z;
             int w, h;
@@ -44,20 +46,27 @@ namespace GregoryTerrain.Rig
             var warm = new double[33 * 33];
             HeightmapFitter.Fit(warm, 33, 33, 4, 4);
             LegacyHeightmapFitter.Fit(warm, 33, 33, 4, 4);
+            C1HeightmapFitter.Fit(warm, 33, 33, 4, 4);
             long before = PeakBytes();
             TimeSpan cpu0 = Process.GetCurrentProcess().TotalProcessorTime;
             var sw = Stopwatch.StartNew();
             PatchGrid grid;
             double max, rms;
+            int iterations = 0;
             if (legacy)
             {
                 LegacyHeightmapFit f = LegacyHeightmapFitter.Fit(z, w, h, patches, patches);
                 grid = f.Grid; max = f.MaxError; rms = f.RmsError;
             }
+            else if (c1)
+            {
+                C1HeightmapFit f = C1HeightmapFitter.Fit(z, w, h, patches, patches);
+                grid = f.Grid; max = f.MaxError; rms = f.RmsError;
+            }
             else
             {
                 HeightmapFit f = HeightmapFitter.Fit(z, w, h, patches, patches);
-                grid = f.Grid; max = f.MaxError; rms = f.RmsError;
+                grid = f.Grid; max = f.MaxError; rms = f.RmsError; iterations = f.Iterations;
             }
             double seconds = sw.Elapsed.TotalSeconds;
             double cpuSeconds = (Process.GetCurrentProcess().TotalProcessorTime - cpu0).TotalSeconds;
@@ -74,9 +83,9 @@ namespace GregoryTerrain.Rig
                 angle = ContinuityMeasure.MaxNormalAngleDegrees(s, 9);
             }
             Console.WriteLine(string.Format(CultureInfo.InvariantCulture,
-                "{0}\t{1}x{2}\t{3}\t{4:F2}\t{5:F3}\t{6:F2}\t{7:F3}\t{8:E1}\t{9:F2}\t{10:F2}\t{11:F0}\t{12:F1}",
-                legacy ? "legacy" : "least-squares", w, h, patches, max, rms, 100 * max / (hi - lo), 100 * rms / (hi - lo),
-                angle, seconds, cpuSeconds, extra / 1048576.0, (double)extra / ((double)w * h)));
+                "{0}\t{1}x{2}\t{3}\t{4:F2}\t{5:F3}\t{6:F2}\t{7:F3}\t{8:E1}\t{9:F2}\t{10:F2}\t{11:F0}\t{12:F1}\t{13}",
+                legacy ? "legacy" : c1 ? "c1-spline" : "gregory-net", w, h, patches, max, rms, 100 * max / (hi - lo), 100 * rms / (hi - lo),
+                angle, seconds, cpuSeconds, extra / 1048576.0, (double)extra / ((double)w * h), iterations));
             return 0;
         }
 
