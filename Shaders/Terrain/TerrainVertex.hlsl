@@ -19,6 +19,7 @@
 #include "../Library/RelativeSurface.hlsl"
 #if defined(GT_NOISE)
     #include "../Library/OctaveNoise.hlsl"
+    #include "TessellationFactors.hlsl"   // PixelsPerUnit, for the continuous octave rule
 #endif
 #if defined(GT_HEIGHT_COLOR)
     #include "../Library/HeightColor.hlsl"
@@ -85,14 +86,14 @@ TerrainSurfacePoint EvaluateSurfaceAt(TerrainPoint q)
 
 // drawPatch: the index of the patch being drawn: a tile (tile mode, tile = tj * M + ti) or, with
 // GT_PAPER_MODE, a Gregory patch. tess: the coordinate inside it, in [0, 1]^2.
-TerrainSurfacePoint EvaluateSurface(uint drawPatch, float2 tess)
+TerrainSurfacePoint EvaluateSurface(TileLayout l, uint drawPatch, float2 tess)
 {
 #if defined(GT_PAPER_MODE)
     // The paper's method: every Gregory patch is tessellated over the whole range (one "tile"),
     // with the corrected eq. 10 and u, v clamped, so the part outside the patch collapses onto its
     // boundary.
     TerrainSurfacePoint s;
-    s.q = RangeToTerrainPoint(_Range, _RangeOrigin, 1.0, uint2(0, 0), tess);
+    s.q = RangeToTerrainPoint(l.range, l.origin, 1.0, uint2(0, 0), tess);
     s.patch = drawPatch;
     s.region = PatchRegion(s.patch);
     s.uv = saturate(PatchLocalUV(s.q, s.region));
@@ -103,31 +104,31 @@ TerrainSurfacePoint EvaluateSurface(uint drawPatch, float2 tess)
 #else
     // Integer tile index first: RangeCoordinate (LatticePoint) forms ti + s before dividing, so the
     // vertices of a shared tile edge get bit-identical q (watertight).
-    return EvaluateSurfaceAt(TileToTerrainPoint(drawPatch, tess));
+    return EvaluateSurfaceAt(TileToTerrainPoint(l, drawPatch, tess));
 #endif
 }
 
 // The surface at tess in the whole cell slot `slot` holds (CellToTerrainPoint): where the adaptive
 // factors sample it (TileFactors.hlsl). Paper mode has no cells: its draw patch's own point.
-TerrainSurfacePoint EvaluateCellSurface(uint slot, float2 tess)
+TerrainSurfacePoint EvaluateCellSurface(TileLayout l, uint slot, float2 tess)
 {
 #if defined(GT_PAPER_MODE)
-    return EvaluateSurface(slot, tess);
+    return EvaluateSurface(l, slot, tess);
 #else
-    return EvaluateSurfaceAt(CellToTerrainPoint(slot, tess));
+    return EvaluateSurfaceAt(CellToTerrainPoint(l, slot, tess));
 #endif
 }
 
 // The surface position a vertex outputs (before noise): S(q) itself, or, while a range origin is
 // set (deep zoom), S(q) - S(O) from precise differences (RelativeSurface.hlsl, precision.md); the
 // renderer then adds S(O) in the object-to-world transform. Paper mode always outputs S(q).
-float3 OutputSurfacePosition(TerrainSurfacePoint s)
+float3 OutputSurfacePosition(TileLayout l, TerrainSurfacePoint s)
 {
 #if defined(GT_PAPER_MODE)
     return s.position;
 #else
-    [branch] if (RelativeSurfaceIsActive(_RangeOrigin))
-        return RelativeSurfaceFromOrigin(s.q, _RangeOrigin);
+    [branch] if (RelativeSurfaceIsActive(l.origin))
+        return RelativeSurfaceFromOrigin(s.q, l.origin);
     return s.position;
 #endif
 }
@@ -160,10 +161,32 @@ struct TerrainVertexAttributes
     uint patch;              // the Gregory patch that was evaluated
 };
 
-// Everything TerrainVertex computes before the camera, from the surface point s.
-TerrainVertexAttributes FinishTerrainVertex(TerrainSurfacePoint s)
+#if defined(GT_NOISE)
+// The octaves a vertex draws, from its surface position before noise (OutputSurfacePosition). The
+// single-range rule (one count a frame, from the layout's width) unless NoiseSegmentPixels() > 0
+// (the levels of detail): then the continuous rule at the vertex's pixel scale, a function of q and
+// the camera only, so both sides of a level seam, which form the same q, agree. Paper mode keeps the
+// single-range rule. Mirrors Core TerrainVertex.VertexOctaveCount.
+float VertexOctaveCount(TileLayout l, float3 surfacePosition)
 {
-    float3 position = OutputSurfacePosition(s);
+#if !defined(GT_PAPER_MODE)
+    [branch] if (NoiseSegmentPixels() > 0.0)
+    {
+        float3 p = TerrainToObject(surfacePosition);
+        float k = PixelsPerUnit(GT_ObjectToClip(p), GT_ObjectToClip(p + float3(1.0, 0.0, 0.0)),
+                                GT_ObjectToClip(p + float3(0.0, 1.0, 0.0)), GT_ObjectToClip(p + float3(0.0, 0.0, 1.0)),
+                                GT_ScreenSize());
+        return OctaveCountAtPixelScale(k, NoiseSegmentPixels(), NoiseSettings(), MaxNoiseOctaves());
+    }
+#endif
+    return OctaveCount(LayoutWidth(l), NoiseVerticesAcross(), NoiseSettings(), MaxNoiseOctaves());
+}
+#endif
+
+// Everything TerrainVertex computes before the camera, from the surface point s.
+TerrainVertexAttributes FinishTerrainVertex(TileLayout l, TerrainSurfacePoint s)
+{
+    float3 position = OutputSurfacePosition(l, s);
     float3 dPdu = s.dPdu;
     float3 dPdv = s.dPdv;
     float noiseHeight = 0.0;   // the absolute p(q): the height of the plain path, and the height colour
@@ -179,13 +202,13 @@ TerrainVertexAttributes FinishTerrainVertex(TerrainSurfacePoint s)
         noisePoint.local = lerp(s.region.xy, s.region.zw, s.uv);
     }
     #endif
-    float octaves = OctaveCount(TileLayoutWidth(), NoiseVerticesAcross(), NoiseSettings(), MaxNoiseOctaves());
+    float octaves = VertexOctaveCount(l, position);
     float2 gradient;   // d(noise)/dq
     #if !defined(GT_PAPER_MODE)
     // Deep zoom: p(q) - p(O) from precise differences, like the surface; the renderer adds p(O).
-    [branch] if (RelativeSurfaceIsActive(_RangeOrigin))
+    [branch] if (RelativeSurfaceIsActive(l.origin))
     {
-        TerrainPoint origin = MakeTerrainPoint(_RangeOrigin.xy, _RangeOrigin.zw);
+        TerrainPoint origin = MakeTerrainPoint(l.origin.xy, l.origin.zw);
         position.z += OctaveNoiseRelative(s.q, origin, TerrainPointDifference(s.q, origin), NoiseSettings(), octaves, gradient);
         #if defined(GT_HEIGHT_COLOR)
         float2 colourGradient;
@@ -233,10 +256,10 @@ TerrainVertexAttributes FinishTerrainVertex(TerrainSurfacePoint s)
 }
 
 // Everything TerrainVertex computes before the camera.
-TerrainVertexAttributes EvaluateTerrainVertex(uint drawPatch, float2 tess)
+TerrainVertexAttributes EvaluateTerrainVertex(TileLayout l, uint drawPatch, float2 tess)
 {
-    TerrainSurfacePoint s = EvaluateSurface(drawPatch, tess);
-    TerrainVertexAttributes a = FinishTerrainVertex(s);
+    TerrainSurfacePoint s = EvaluateSurface(l, drawPatch, tess);
+    TerrainVertexAttributes a = FinishTerrainVertex(l, s);
 #if defined(GT_READBACK)
     WriteReadback(drawPatch, tess, a.positionOS, a.normalOS, TerrainPointApprox(s.q), s.uv);
 #endif
@@ -245,9 +268,9 @@ TerrainVertexAttributes EvaluateTerrainVertex(uint drawPatch, float2 tess)
 
 // The same at tess of the whole cell slot `slot` holds (CellToTerrainPoint): what the vertex cache
 // stores (ClippedCell.hlsl). The tile's own vertex wherever the tile is the whole cell, bit for bit.
-TerrainVertexAttributes EvaluateCellTerrainVertex(uint slot, float2 tess)
+TerrainVertexAttributes EvaluateCellTerrainVertex(TileLayout l, uint slot, float2 tess)
 {
-    return FinishTerrainVertex(EvaluateCellSurface(slot, tess));
+    return FinishTerrainVertex(l, EvaluateCellSurface(l, slot, tess));
 }
 
 // s = saturate(l + z / gamma) of eq. 14 for the absolute height z and colour noise l, 0 without
@@ -301,9 +324,22 @@ float3 TerrainNormalAndHeightWeight(TerrainVertexAttributes a, float3 normalWS)
     return PackNormalAndHeightWeight(normalWS, TerrainHeightWeight(a.absoluteHeight, a.colorNoise));
 }
 
-TerrainVaryings TerrainVertex(uint drawPatch, float2 tess, float tessFactor)
+// TerrainVertex at a global point the caller formed (the levels' seam vertices, LodTiles.hlsl):
+// drawPatch and tess only place the readback.
+TerrainVaryings TerrainVertexAtPoint(TileLayout l, uint drawPatch, float2 tess, TerrainPoint q, float tessFactor)
 {
-    TerrainVertexAttributes a = EvaluateTerrainVertex(drawPatch, tess);
+    TerrainSurfacePoint s = EvaluateSurfaceAt(q);
+    TerrainVertexAttributes a = FinishTerrainVertex(l, s);
+#if defined(GT_READBACK)
+    WriteReadback(drawPatch, tess, a.positionOS, a.normalOS, TerrainPointApprox(s.q), s.uv);
+#endif
+    float3 shading = TerrainNormalAndHeightWeight(a, GT_ObjectToWorldNormal(a.normalOS));
+    return TerrainVaryingsOf(a.positionOS, shading, a.snowDepth, a.patch, tessFactor);
+}
+
+TerrainVaryings TerrainVertex(TileLayout l, uint drawPatch, float2 tess, float tessFactor)
+{
+    TerrainVertexAttributes a = EvaluateTerrainVertex(l, drawPatch, tess);
     float3 shading = TerrainNormalAndHeightWeight(a, GT_ObjectToWorldNormal(a.normalOS));
     return TerrainVaryingsOf(a.positionOS, shading, a.snowDepth, a.patch, tessFactor);
 }
