@@ -41,6 +41,9 @@ namespace GregoryTerrain
             return bits;
         }
 
+        /// <summary>The levels of detail's keyword (Horizon Levels), on the runtime copy only.</summary>
+        internal const string LevelsKeyword = "GT_LOD";
+
         static class KeywordIds
         {
             public static readonly int SnowDepth = Shader.PropertyToID("_SnowDepth");
@@ -58,10 +61,11 @@ namespace GregoryTerrain
         /// states. The copy is made once and synced (properties, keywords, shader) only when the
         /// asset changed, so a steady frame costs one CRC of the asset and sets nothing.
         /// </summary>
-        internal Material UpdateDrawMaterial(bool cache, bool snow)
+        internal Material UpdateDrawMaterial(bool cache, bool snow, bool levels = false)
         {
             if (material == null) { ReleaseDrawMaterial(); return null; }
-            if (material.IsKeywordEnabled(VertexCachePass.Keyword) == cache && material.IsKeywordEnabled(VertexCachePass.SnowKeyword) == snow)
+            if (material.IsKeywordEnabled(VertexCachePass.Keyword) == cache && material.IsKeywordEnabled(VertexCachePass.SnowKeyword) == snow
+                && material.IsKeywordEnabled(LevelsKeyword) == levels)
             {
                 ReleaseDrawMaterial();
                 return material;
@@ -77,13 +81,15 @@ namespace GregoryTerrain
                 _drawMaterial.CopyPropertiesFromMaterial(material);
                 _drawMaterial.shaderKeywords = material.shaderKeywords;   // the asset's keywords, whatever the copy above took
             }
-            else if (_drawMaterial.IsKeywordEnabled(VertexCachePass.Keyword) == cache && _drawMaterial.IsKeywordEnabled(VertexCachePass.SnowKeyword) == snow)
+            else if (_drawMaterial.IsKeywordEnabled(VertexCachePass.Keyword) == cache && _drawMaterial.IsKeywordEnabled(VertexCachePass.SnowKeyword) == snow
+                     && _drawMaterial.IsKeywordEnabled(LevelsKeyword) == levels)
                 return _drawMaterial;   // steady state: nothing set
             _drawMaterialSource = material;
             _drawMaterialCrc = crc;
             _drawMaterialKeywords = keywords;
             SetKeyword(_drawMaterial, VertexCachePass.Keyword, cache);
             SetKeyword(_drawMaterial, VertexCachePass.SnowKeyword, snow);
+            SetKeyword(_drawMaterial, LevelsKeyword, levels);
             return _drawMaterial;
         }
 
