@@ -26,7 +26,7 @@ namespace GregoryTerrain.Rig.Tests
         public void CompileShaders()
         {
             _work = ReadbackRun.PrepareWork("rigtests-lod");
-            _spirv = ReadbackRun.CompileVariants(_work, "readback+lod+noise");
+            _spirv = ReadbackRun.CompileVariants(_work, "readback+lod+noise", "factor_readback+lod+noise");
             _grid = HardCaseGrids.Fitted();
         }
 
@@ -126,6 +126,58 @@ namespace GregoryTerrain.Rig.Tests
             Assert.That(culled, Is.EqualTo((s.LevelCount - 1) * Tiles * Tiles / 4), "each level but the finest culls the finer level's quarter");
             Assert.That(seamVertices, Is.GreaterThan(0));
             Assert.That(gaps, Is.EqualTo(0), "every seam vertex pair bit-identical");
+        }
+
+        /// <summary>
+        /// Adaptive factors (the shipped path, 1 px target), read back per patch (GT_FACTOR_READBACK):
+        /// every drawn fine seam edge draws g and its coarse partner 2g, both integers, so the coarse
+        /// edge's vertices are exactly the two fine halves' (the fine hull recomputes the coarse
+        /// edge's factor from the coarse tile, CoarseSeamEdgeFactor).
+        /// </summary>
+        [Test]
+        public void AdaptiveSeamFactorsNest()
+        {
+            Tiles = 8;
+            LodScene s = new LodScene { Tiles = Tiles, Factor = 0, Width = 1920, Height = 1080 }.Build(_grid);
+            string dir = Path.Combine(_work, (_runs++).ToString("D2") + "-factors");
+            s.Write(dir);
+            string rb = Path.Combine(dir, "factors.f32");
+            var args = new List<string>(ReadbackRun.Stages(_spirv, "factor_readback+lod+noise"));
+            args.AddRange(s.HarnessArgs(dir));
+            args.AddRange(new[] { "--width", "192", "--height", "108", "--device", "llvmpipe", "--readback", rb, "--readback-floats", (8 * s.Patches).ToString() });
+            HarnessRun.Harness(args.ToArray()).AssertSucceeded();
+            float[] v = ReadbackRun.ReadFloats(rb);
+            var f = s.Tail;
+            Float4 Range(int k) => new Float4(f[4 + 4 * k], f[5 + 4 * k], f[6 + 4 * k], f[7 + 4 * k]);
+            float Edge(int level, int ti, int tj, int edgeBit)
+            {
+                int p = level * Tiles * Tiles + tj * Tiles + ti, e = edgeBit == 1 ? 0 : edgeBit == 2 ? 1 : edgeBit == 4 ? 2 : 3;
+                return v[8 * p + e];
+            }
+            int pairs = 0, bad = 0, culledInside = 0;
+            for (int k = 0; k + 1 < s.LevelCount; k++)
+            {
+                LodTiles.FinerOffsetCells(Range(k + 1), Range(k), Tiles, out int a, out int b);
+                for (int tj = 0; tj < Tiles; tj++)
+                    for (int ti = 0; ti < Tiles; ti++)
+                    {
+                        if (LodTiles.TileInsideFiner(ti, tj, a, b, Tiles) && Edge(k + 1, ti, tj, 1) == 0f) culledInside++;
+                        int mask = LodTiles.FineSeamEdges(ti, tj, a, b, Tiles);
+                        foreach (int edge in new[] { LodTiles.EdgeU0, LodTiles.EdgeV0, LodTiles.EdgeU1, LodTiles.EdgeV1 })
+                        {
+                            if ((mask & edge) == 0) continue;
+                            LodTiles.FineSeamCoarseTile(edge, ti, tj, a, b, out int cti, out int ctj, out int coarseEdge, out _);
+                            float fine = Edge(k, ti, tj, edge), coarse = Edge(k + 1, cti, ctj, coarseEdge);
+                            if (fine == 0f || coarse == 0f) continue;   // a side outside the view draws nothing
+                            pairs++;
+                            if (coarse != 2f * fine || fine != (float)Math.Floor(fine)) bad++;
+                        }
+                    }
+            }
+            TestContext.Out.WriteLine($"lod adaptive seams: {pairs} drawn seam edge pairs, {bad} not 2g against g, {culledInside} tiles under finer levels culled");
+            Assert.That(pairs, Is.GreaterThan(10));
+            Assert.That(culledInside, Is.EqualTo((s.LevelCount - 1) * Tiles * Tiles / 4));
+            Assert.That(bad, Is.EqualTo(0));
         }
 
         [Test]
