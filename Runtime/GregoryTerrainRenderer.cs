@@ -109,7 +109,7 @@ namespace GregoryTerrain
         [Tooltip("Keep the tiles fixed on the terrain while the view pans, so vertices don't swim and the Compute cache updates only the tiles a pan brings in.")]
         [SerializeField] bool anchorTiles = true;
 
-        [Tooltip("Off: draw one range (Range, or a range controller's). On: draw levels from each camera's feet to the horizon (Tiles even and at least 8; Domain stage evaluation).")]
+        [Tooltip("Off: draw one range (Range, or a range controller's). On: draw levels from each camera's feet to the horizon (even Tiles, at least 8).")]
         [SerializeField] bool horizonLevels;
 
         [Tooltip("Only on GPUs without tessellation: each tile is drawn as a fixed grid with this many cells per side.")]
