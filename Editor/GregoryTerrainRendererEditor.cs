@@ -76,7 +76,7 @@ namespace GregoryTerrain.EditorTools
             Section("Content", true, () => Fields("grid", "material", "terrainSize", "heightScale", "range"));
             Section("Tessellation", true, () =>
             {
-                Fields("tiles", "uniformFactor");
+                Fields("tiles", "uniformFactor", "horizonLevels");
                 if (mayAdapt) Fields("maxFactor", "targetPixelError", "anchorTiles");
                 Fields("fallbackGridFactor");
             });

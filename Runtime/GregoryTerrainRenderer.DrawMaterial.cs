@@ -54,10 +54,11 @@ namespace GregoryTerrain
         /// asset changed, so a steady frame costs one CRC of the asset (for its first camera; the
         /// others reuse that frame's comparison) and sets nothing.
         /// </summary>
-        internal Material UpdateDrawMaterial(bool cache, bool snow)
+        internal Material UpdateDrawMaterial(bool cache, bool snow, bool levels = false)
         {
             if (material == null) { ReleaseDrawMaterial(); return null; }
-            if (material.IsKeywordEnabled(ShaderIds.VertexCacheKeyword) == cache && material.IsKeywordEnabled(ShaderIds.SnowKeyword) == snow)
+            if (material.IsKeywordEnabled(ShaderIds.VertexCacheKeyword) == cache && material.IsKeywordEnabled(ShaderIds.SnowKeyword) == snow
+                && material.IsKeywordEnabled(ShaderIds.LevelsKeyword) == levels)
             {
                 ReleaseDrawMaterial();
                 return material;
@@ -82,13 +83,15 @@ namespace GregoryTerrain
                 _drawMaterial.CopyPropertiesFromMaterial(material);
                 _drawMaterial.shaderKeywords = material.shaderKeywords;   // the asset's keywords, whatever the copy above took
             }
-            else if (_drawMaterial.IsKeywordEnabled(ShaderIds.VertexCacheKeyword) == cache && _drawMaterial.IsKeywordEnabled(ShaderIds.SnowKeyword) == snow)
+            else if (_drawMaterial.IsKeywordEnabled(ShaderIds.VertexCacheKeyword) == cache && _drawMaterial.IsKeywordEnabled(ShaderIds.SnowKeyword) == snow
+                     && _drawMaterial.IsKeywordEnabled(ShaderIds.LevelsKeyword) == levels)
                 return _drawMaterial;   // steady state: nothing set
             _drawMaterialSource = material;
             _drawMaterialCrc = crc;
             _drawMaterialKeywords = keywords;
             SetKeyword(_drawMaterial, ShaderIds.VertexCacheKeyword, cache);
             SetKeyword(_drawMaterial, ShaderIds.SnowKeyword, snow);
+            SetKeyword(_drawMaterial, ShaderIds.LevelsKeyword, levels);
             return _drawMaterial;
         }
 

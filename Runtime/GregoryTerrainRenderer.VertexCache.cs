@@ -26,7 +26,8 @@ namespace GregoryTerrain
         bool UpdateVertexCache(bool fallback)
         {
             _usesCache = false;
-            if (vertexEvaluation != VertexEvaluation.ComputeCache)
+            // The levels draw through the domain stage (the cache holds one range's tiles).
+            if (vertexEvaluation != VertexEvaluation.ComputeCache || LevelsOn(fallback))
             {
                 _cacheFallbackReason = null;
                 ClearCacheCheck();

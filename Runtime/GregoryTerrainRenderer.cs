@@ -73,6 +73,9 @@ namespace GregoryTerrain
         [Tooltip("Keep the tiles fixed on the terrain while the view pans, so vertices don't swim and the Compute cache updates only the tiles a pan brings in.")]
         [SerializeField] bool anchorTiles = true;
 
+        [Tooltip("Off: draw one range (Range, or a range controller's). On: draw levels from each camera's feet to the horizon (even Tiles, at least 8).")]
+        [SerializeField] bool horizonLevels;
+
         [Tooltip("Only on GPUs without tessellation: each tile is drawn as a fixed grid with this many cells per side.")]
         [SerializeField, Range(1, 64)] int fallbackGridFactor = 16;
 
@@ -245,6 +248,13 @@ namespace GregoryTerrain
         /// <summary>Tiles per side M.</summary>
         public int Tiles { get => tiles; set { tiles = Mathf.Clamp(value, 1, 64); _settingsDirty = true; } }
 
+        /// <summary>
+        /// The view: false draws one range (<c>Range</c> or a range controller's, the paper's view);
+        /// true draws levels of detail from each camera's feet to the horizon (internals.md, "Levels of
+        /// detail"), which needs an even <see cref="Tiles"/> of at least 8 and the tessellator.
+        /// </summary>
+        public bool HorizonLevels { get => horizonLevels; set { horizonLevels = value; _settingsDirty = true; } }
+
         /// <summary>Uniform factor (0 = adaptive); the Scene view's C/V keys change it.</summary>
         public int UniformFactor { get => uniformFactor; set { uniformFactor = Mathf.Clamp(value, 0, 64); _settingsDirty = true; } }
 
@@ -357,7 +367,7 @@ namespace GregoryTerrain
         }
 
         /// <summary>Whether the tiles are anchored to the terrain: the setting, with adaptive factors and a tessellator.</summary>
-        bool AnchorsTiles(bool fallback) => anchorTiles && !fallback && uniformFactor == 0;
+        bool AnchorsTiles(bool fallback) => anchorTiles && !fallback && uniformFactor == 0 && !LevelsOn(fallback);
 
         /// <summary>Tiles per axis the draw makes: M + 1 anchored (<see cref="AnchorsTiles"/>), else M.</summary>
         int TilesAcross(bool fallback) => tiles + (AnchorsTiles(fallback) ? 1 : 0);
@@ -452,7 +462,7 @@ namespace GregoryTerrain
             if (_settingsError != null) return false;   // logged once; drawn again after the next valid change
             if (!UpdateVertexCache(fallback)) return false;
             UpdateSnowBinding();
-            return UpdateDrawMaterial(_usesCache, SnowOn()) != null;
+            return UpdateDrawMaterial(_usesCache, SnowOn(), LevelsOn(fallback)) != null;
         }
 
         /// <summary>
@@ -503,6 +513,13 @@ namespace GregoryTerrain
             {
                 p = TerrainParams.Create(_uploadedPatchGrid, _range, _origin.Origin, tess, noise, heightColor,
                     new Float3(low.r, low.g, low.b), new Float3(high.r, high.g, high.b), noiseVerticesAcross);
+                if (LevelsOn(fallback))
+                {
+                    string levels = LevelsSettingsError();
+                    if (levels != null) throw new ArgumentException(levels, nameof(tiles));
+                    // The continuous octave rule: both sides of a level seam draw the same noise.
+                    p.noiseOctaves = new Float4(p.noiseOctaves.x, p.noiseOctaves.y, LevelSegmentPixels, 0f);
+                }
             }
             catch (ArgumentException e)
             {
@@ -612,8 +629,9 @@ namespace GregoryTerrain
         Bounds WorldBounds()
         {
             float noise = NoiseMargin();
-            Vector3 min = new Vector3((float)_range.c, _gridMinZ - noise, (float)_range.d);
-            Vector3 max = new Vector3((float)_range.g, _gridMaxZ + noise, (float)_range.h);
+            TerrainRange drawn = LevelsOn(_drawFallback) ? TerrainRange.full : _range;   // the levels end with the whole terrain
+            Vector3 min = new Vector3((float)drawn.c, _gridMinZ - noise, (float)drawn.d);
+            Vector3 max = new Vector3((float)drawn.g, _gridMaxZ + noise, (float)drawn.h);
             Matrix4x4 m = _objectToWorld;   // size, height scale and offset included (t is added to the object points below)
             Double3 t = TerrainVertex.TerrainToObject(_outputOffset);
             min -= new Vector3((float)t.x, (float)t.y, (float)t.z);

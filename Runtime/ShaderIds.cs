@@ -55,6 +55,9 @@ namespace GregoryTerrain
         public static readonly int SnowExposure = Shader.PropertyToID("_SnowExposure");
         public static readonly int SnowDepth = Shader.PropertyToID("_SnowDepth");
         public static readonly int SnowMapSize = Shader.PropertyToID("_SnowMapSize");
+        /// <summary>Horizon levels (GT_LOD): <c>(L, 0, 0, 0)</c>, and level k's range, sent per camera.</summary>
+        public static readonly int LodLevels = Shader.PropertyToID("_LodLevels");
+        public static readonly int Ranges = Shader.PropertyToID("_Ranges");
         public const string SnowExposureKernel = "SnowExposureKernel";
         public const string SnowAccumulateKernel = "SnowAccumulateKernel";
         public const string SnowFieldKernel = "SnowFieldKernel";
@@ -64,7 +67,7 @@ namespace GregoryTerrain
         /// <summary>Material toggles the user sets on the asset (Properties block), mirrored onto the compute kernels.</summary>
         public const string NoiseKeyword = "GT_NOISE", HeightColorKeyword = "GT_HEIGHT_COLOR";
         /// <summary>Keywords the renderer sets on its runtime copy of the material (multi_compile_local).</summary>
-        public const string VertexCacheKeyword = "GT_VERTEX_CACHE", SnowKeyword = "GT_SNOW";
+        public const string VertexCacheKeyword = "GT_VERTEX_CACHE", SnowKeyword = "GT_SNOW", LevelsKeyword = "GT_LOD";
         /// <summary>The material's debug view (KeywordEnum GT_DEBUG; None has no keyword of its own).</summary>
         public const string DebugNormalsKeyword = "GT_DEBUG_NORMALS", DebugPatchIdKeyword = "GT_DEBUG_PATCH_ID",
             DebugTessFactorKeyword = "GT_DEBUG_TESS_FACTOR";

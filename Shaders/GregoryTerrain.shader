@@ -93,6 +93,7 @@ Shader "GregoryTerrain/Terrain"
             // Effects: off = not compiled into the build at all (shader_feature: unused variants are stripped).
             #pragma shader_feature_local GT_NOISE
             #pragma multi_compile_local _ GT_SNOW
+            #pragma multi_compile_local _ GT_LOD
             // Vertex evaluation (renderer setting): the compute pre-pass's cached vertices, switched at run time.
             #pragma multi_compile_local _ GT_VERTEX_CACHE
             #pragma shader_feature_local GT_HEIGHT_COLOR
@@ -130,6 +131,7 @@ Shader "GregoryTerrain/Terrain"
             #pragma fragment frag
             #pragma shader_feature_local GT_NOISE
             #pragma multi_compile_local _ GT_SNOW
+            #pragma multi_compile_local _ GT_LOD
             // Vertex evaluation (renderer setting): the compute pre-pass's cached vertices, switched at run time.
             #pragma multi_compile_local _ GT_VERTEX_CACHE
             // Spot and point lights: the bias direction per vertex from _LightPosition (URP's keyword).
@@ -161,6 +163,7 @@ Shader "GregoryTerrain/Terrain"
             #pragma fragment frag
             #pragma shader_feature_local GT_NOISE
             #pragma multi_compile_local _ GT_SNOW
+            #pragma multi_compile_local _ GT_LOD
             // Vertex evaluation (renderer setting): the compute pre-pass's cached vertices, switched at run time.
             #pragma multi_compile_local _ GT_VERTEX_CACHE
             #define GT_PASS_DEPTH 1
@@ -188,6 +191,7 @@ Shader "GregoryTerrain/Terrain"
             #pragma fragment frag
             #pragma shader_feature_local GT_NOISE
             #pragma multi_compile_local _ GT_SNOW
+            #pragma multi_compile_local _ GT_LOD
             // Vertex evaluation (renderer setting): the compute pre-pass's cached vertices, switched at run time.
             #pragma multi_compile_local _ GT_VERTEX_CACHE
             // URP's normal packing for the deferred renderer's accurate G-buffer normals.
@@ -217,6 +221,7 @@ Shader "GregoryTerrain/Terrain"
             #pragma fragment frag
             #pragma shader_feature_local GT_NOISE
             #pragma multi_compile_local _ GT_SNOW
+            #pragma multi_compile_local _ GT_LOD
             // Vertex evaluation (renderer setting): the compute pre-pass's cached vertices, switched at run time.
             #pragma multi_compile_local _ GT_VERTEX_CACHE
             // Editor only: compiled when the Scene view first needs it, not ahead (as Unity's own passes).
@@ -246,6 +251,7 @@ Shader "GregoryTerrain/Terrain"
             #pragma fragment frag
             #pragma shader_feature_local GT_NOISE
             #pragma multi_compile_local _ GT_SNOW
+            #pragma multi_compile_local _ GT_LOD
             // Vertex evaluation (renderer setting): the compute pre-pass's cached vertices, switched at run time.
             #pragma multi_compile_local _ GT_VERTEX_CACHE
             // Editor only: compiled when the Scene view first needs it, not ahead (as Unity's own passes).
@@ -451,6 +457,7 @@ Shader "GregoryTerrain/Terrain"
             #pragma fragment frag
             #pragma shader_feature_local GT_NOISE
             #pragma multi_compile_local _ GT_SNOW
+            #pragma multi_compile_local _ GT_LOD
             // Vertex evaluation (renderer setting): the compute pre-pass's cached vertices, switched at run time.
             #pragma multi_compile_local _ GT_VERTEX_CACHE
             // Editor only: compiled when the Scene view first needs it, not ahead (as Unity's own passes).
@@ -480,6 +487,7 @@ Shader "GregoryTerrain/Terrain"
             #pragma fragment frag
             #pragma shader_feature_local GT_NOISE
             #pragma multi_compile_local _ GT_SNOW
+            #pragma multi_compile_local _ GT_LOD
             // Vertex evaluation (renderer setting): the compute pre-pass's cached vertices, switched at run time.
             #pragma multi_compile_local _ GT_VERTEX_CACHE
             // Editor only: compiled when the Scene view first needs it, not ahead (as Unity's own passes).
@@ -518,6 +526,7 @@ Shader "GregoryTerrain/Terrain"
             #pragma fragment frag
             #pragma shader_feature_local GT_NOISE
             #pragma multi_compile_local _ GT_SNOW
+            #pragma multi_compile_local _ GT_LOD
             // Vertex evaluation (renderer setting): the compute pre-pass's cached vertices, switched at run time.
             #pragma multi_compile_local _ GT_VERTEX_CACHE
             // MSAA: HDRP also binds the depth as a colour target (its keyword).
@@ -557,6 +566,7 @@ Shader "GregoryTerrain/Terrain"
             // Effects: off = not compiled into the build at all (shader_feature: unused variants are stripped).
             #pragma shader_feature_local GT_NOISE
             #pragma multi_compile_local _ GT_SNOW
+            #pragma multi_compile_local _ GT_LOD
             // Vertex evaluation (renderer setting): the compute pre-pass's cached vertices, switched at run time.
             #pragma multi_compile_local _ GT_VERTEX_CACHE
             #pragma shader_feature_local GT_HEIGHT_COLOR
@@ -589,6 +599,7 @@ Shader "GregoryTerrain/Terrain"
             #pragma fragment frag
             #pragma shader_feature_local GT_NOISE
             #pragma multi_compile_local _ GT_SNOW
+            #pragma multi_compile_local _ GT_LOD
             // Vertex evaluation (renderer setting): the compute pre-pass's cached vertices, switched at run time.
             #pragma multi_compile_local _ GT_VERTEX_CACHE
             #define GT_PASS_SHADOWCASTER 1
@@ -776,6 +787,7 @@ Shader "GregoryTerrain/Terrain"
             // Effects: off = not compiled into the build at all (shader_feature: unused variants are stripped).
             #pragma shader_feature_local GT_NOISE
             #pragma multi_compile_local _ GT_SNOW
+            #pragma multi_compile_local _ GT_LOD
             // Vertex evaluation (renderer setting): the compute pre-pass's cached vertices, switched at run time.
             #pragma multi_compile_local _ GT_VERTEX_CACHE
             #pragma shader_feature_local GT_HEIGHT_COLOR
@@ -808,6 +820,7 @@ Shader "GregoryTerrain/Terrain"
             #pragma fragment frag
             #pragma shader_feature_local GT_NOISE
             #pragma multi_compile_local _ GT_SNOW
+            #pragma multi_compile_local _ GT_LOD
             // Vertex evaluation (renderer setting): the compute pre-pass's cached vertices, switched at run time.
             #pragma multi_compile_local _ GT_VERTEX_CACHE
             #define GT_PASS_SHADOWCASTER 1

@@ -33,7 +33,7 @@ groupshared float gtTileFactorPieces[GT_TILE_FACTOR_PIECES];
 // pan that keeps the cell changes nothing in them). Two records keep it: the slots' (written when
 // the slots are, WriteTileFactors) and the samples' (written with the cell's factors, which a
 // uniform-factor pass leaves alone).
-float4 CellRecordKey(uint tile) { return TilesAnchored() ? CellSpan(tile) : _Range; }
+float4 CellRecordKey(uint tile) { return TilesAnchored() ? CellSpan(FrameTileLayout(), tile) : _Range; }
 
 // Whether a key moved since the tile's last pass: a zero record was never written (the renderer
 // zeroes the keys to force a pass), so it always reads as moved, even for a key that happens to be
@@ -129,7 +129,7 @@ float4 CachedTileFactorSample(uint tile, uint s, bool cellMoved)
     float3 p = kept.xyz;
     if (cellMoved || kept.w != 1.0)
     {
-        p = TileFactorSamplePosition(tile, s);
+        p = TileFactorSamplePosition(FrameTileLayout(), tile, s);
         _TileFactorsRW[k] = float4(p, 1.0);
     }
     return TileFactorSampleAt(s, p);
@@ -190,7 +190,7 @@ void CacheTileFactors(uint3 group : SV_GroupID, uint lane : SV_GroupIndex)
                 p[i] = v.xyz;
                 k[i] = v.w;
             }
-            gtTileFactorPieces[lane] = LineErrorTessFactor(tile, lane, p, k);
+            gtTileFactorPieces[lane] = LineErrorTessFactor(FrameTileLayout(), tile, lane, p, k);
         }
     }
     GroupMemoryBarrierWithGroupSync();
@@ -264,7 +264,7 @@ void CacheTileVertices(uint3 group : SV_GroupID, uint lane : SV_GroupIndex)
         float2 tess;
         uint slot;
         VertexCachePoint(k, edge, inside.xy, limit, tess, slot);
-        WriteVertexCacheRecord(base + slot, EvaluateCellTerrainVertex(tile, tess));
+        WriteVertexCacheRecord(base + slot, EvaluateCellTerrainVertex(FrameTileLayout(), tile, tess));
     }
 }
 

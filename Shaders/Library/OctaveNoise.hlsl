@@ -123,4 +123,18 @@ float OctaveCount(float rangeWidth, float verticesAcross, float4 noise, float ma
     return clamp(k, 0.0, maxOctaves);
 }
 
+// The continuous rule of the levels of detail (internals.md, "The continuous octave rule"): a
+// function of the vertex and the camera, not of a range's width. Where one object unit covers
+// pixelsPerUnit pixels (PixelsPerUnit at the surface point, no noise) and a segment may be
+// segmentPixels long on screen, the vertex spacing is segmentPixels / pixelsPerUnit: OctaveCount of
+// that spacing and one vertex. All octaves at an infinite scale (at or behind the eye plane), none
+// at 0; tested before dividing, so no inf or NaN reaches log2. Mirrors Core
+// TerrainInputs.NoiseOctaveCountAt (float) and OctaveNoise.OctaveCountAtPixelScale (double).
+float OctaveCountAtPixelScale(float pixelsPerUnit, float segmentPixels, float4 noise, float maxOctaves)
+{
+    if (!(pixelsPerUnit < asfloat(0x7F800000u))) return maxOctaves;
+    if (!(pixelsPerUnit > 0.0)) return 0.0;
+    return OctaveCount(segmentPixels / pixelsPerUnit, 1.0, noise, maxOctaves);
+}
+
 #endif // GT_OCTAVE_NOISE_INCLUDED

@@ -23,6 +23,7 @@
 //   GT_EXTEND_DRAW_PATCHES, GT_EXTEND_VERTEX    TerrainVertex.hlsl
 //   GT_EXTEND_TILE_FACTORS    hull_const hands each patch's factors to ExtensionTileFactors
 //   GT_PARTITIONING           defined before this file: the hull stage's partitioning
+//   GT_LOD                    levels of detail: L levels in one draw (LodTiles.hlsl)
 #ifndef GT_TERRAIN_STAGES_INCLUDED
 #define GT_TERRAIN_STAGES_INCLUDED
 
@@ -38,8 +39,9 @@
 
 // The vertex cache (VertexCache.hlsl) stores vertices at k / F: only integer partitioning makes
 // those. Otherwise fractional_odd: factors change continuously with the view, so no popping.
+// The levels' seam rule (LodTiles.hlsl) needs integer factors too: 2g coarse segments meet g + g fine.
 #if !defined(GT_PARTITIONING)
-    #if defined(GT_VERTEX_CACHE)
+    #if defined(GT_VERTEX_CACHE) || defined(GT_LOD)
         #define GT_PARTITIONING "integer"
     #else
         #define GT_PARTITIONING "fractional_odd"
@@ -67,6 +69,19 @@ struct TileFactors
 #endif
 };
 
+// The layout draw patch `drawPatch` is drawn with and its tile (slot) there: the frame's layout, or
+// with GT_LOD its level's (draw patch p is tile p mod M^2 of level p / M^2, LodTiles.hlsl).
+TileLayout StageTileLayout(uint drawPatch, out uint slot)
+{
+#if defined(GT_LOD)
+    slot = LodSlotOfPatch(drawPatch, TileCountInt());
+    return LodLevelLayout(LodLevelOfPatch(drawPatch, TileCountInt()));
+#else
+    slot = drawPatch;
+    return FrameTileLayout();
+#endif
+}
+
 TileCorner vert(uint vertexID : SV_VertexID)
 {
     TileCorner o;
@@ -74,7 +89,9 @@ TileCorner vert(uint vertexID : SV_VertexID)
 #if defined(GT_VERTEX_CACHE)
     o.positionOS = float3(0.0, 0.0, 0.0);   // the factors come from the cache
 #else
-    o.positionOS = CellCornerObjectPosition(o.drawPatch, vertexID % 4u);
+    uint slot;
+    TileLayout l = StageTileLayout(o.drawPatch, slot);
+    o.positionOS = CellCornerObjectPosition(l, slot, vertexID % 4u);
 #endif
     return o;
 }
@@ -83,6 +100,97 @@ TileCorner vert(uint vertexID : SV_VertexID)
 // Extension point: the entry file sees the factors hull_const returns for each drawn patch; it
 // defines this after including the stages.
 void ExtensionTileFactors(uint drawPatch, TileFactors f);
+#endif
+
+#if defined(GT_LOD)
+// The seams of draw patch p's tile (LodTiles.hlsl): coarseMask, its edges on the rim of the finer
+// level (none on level 0), fineMask, its edges on its own level's boundary where a coarser level
+// lies beyond (none on the last level); inside: wholly inside the finer level (culled). ab: the
+// finer level's offset in this level's cells, abUp this level's in the coarser one's.
+void LodTileSeams(uint drawPatch, out uint coarseMask, out uint fineMask, out bool inside, out int2 ab, out int2 abUp)
+{
+    uint m = TileCountInt();
+    uint level = LodLevelOfPatch(drawPatch, m), slot = LodSlotOfPatch(drawPatch, m);
+    int2 tile = int2(slot % m, slot / m);
+    coarseMask = 0u;
+    fineMask = 0u;
+    inside = false;
+    ab = int2(0, 0);
+    abUp = int2(0, 0);
+    if (level > 0u)
+    {
+        ab = FinerOffsetCells(LodRange(level), LodRange(level - 1u), TileCount());
+        inside = TileInsideFiner(tile, ab, (int)m);
+        coarseMask = CoarseSeamEdges(tile, ab, (int)m);
+    }
+    if (level + 1u < LodLevelCount())
+    {
+        abUp = FinerOffsetCells(LodRange(level + 1u), LodRange(level), TileCount());
+        fineMask = FineSeamEdges(tile, abUp, (int)m);
+    }
+}
+
+// The factor of edge `edge` (0..3) of the coarse tile across a fine seam edge: what that coarse
+// tile's hull computes for it (the same function of the same inputs), uniform or adaptive.
+float CoarseSeamEdgeFactor(uint drawPatch, uint edgeBit, int2 abUp)
+{
+    if (UsesUniformTessFactor()) return UniformTessFactor();
+    uint m = TileCountInt();
+    uint level = LodLevelOfPatch(drawPatch, m), slot = LodSlotOfPatch(drawPatch, m);
+    uint coarseEdge;
+    int half;
+    int2 coarseTile = FineSeamCoarseTile(edgeBit, int2(slot % m, slot / m), abUp, coarseEdge, half);
+    uint coarseSlot = (uint)coarseTile.y * m + (uint)coarseTile.x;
+    TileLayout coarse = LodLevelLayout(level + 1u);
+    float3 cornerOS[4];
+    [unroll] for (uint c = 0; c < 4; c++)
+        cornerOS[c] = CellCornerObjectPosition(coarse, coarseSlot, c);
+    uint piece = coarseEdge == GT_EDGE_U0 ? 0u : (coarseEdge == GT_EDGE_V0 ? 1u : (coarseEdge == GT_EDGE_U1 ? 2u : 3u));
+    return max(TileFactorPiece(coarse, coarseSlot, piece, cornerOS), 1.0);
+}
+
+// The seam rule on a tile's factors: tiles inside the finer level culled; a coarse seam edge of
+// factor f draws 2g, each fine one g, g = SeamHalfFactor of the coarse edge's factor.
+TileFactorSet LodTileFactors(uint drawPatch, TileFactorSet set)
+{
+    uint coarseMask, fineMask;
+    bool inside;
+    int2 ab, abUp;
+    LodTileSeams(drawPatch, coarseMask, fineMask, inside, ab, abUp);
+    if (inside || TileFactorsCulled(set)) return inside ? CulledTileFactors() : set;
+    float edge[4] = { set.edge.x, set.edge.y, set.edge.z, set.edge.w };
+    [unroll] for (uint i = 0u; i < 4u; i++)
+    {
+        uint bit = 1u << i;
+        if ((coarseMask & bit) != 0u) edge[i] = 2.0 * SeamHalfFactor(edge[i], MaxTessFactor());
+        else if ((fineMask & bit) != 0u) edge[i] = SeamHalfFactor(CoarseSeamEdgeFactor(drawPatch, bit, abUp), MaxTessFactor());
+    }
+    set.edge = float4(edge[0], edge[1], edge[2], edge[3]);
+    return set;
+}
+
+// The domain stage's vertex: a seam vertex's q is the coarse tile's point (SeamCoarsePoint), formed
+// alike on both sides; any other vertex its tile's own point.
+TerrainVaryings LodDomainVertex(uint drawPatch, float2 tess, float4 edgeFactors, float tessFactor)
+{
+    uint slot;
+    TileLayout l = StageTileLayout(drawPatch, slot);
+    uint m = TileCountInt();
+    uint level = LodLevelOfPatch(drawPatch, m);
+    int2 tile = int2(slot % m, slot / m);
+    uint coarseMask, fineMask;
+    bool inside;
+    int2 ab, abUp;
+    LodTileSeams(drawPatch, coarseMask, fineMask, inside, ab, abUp);
+    TerrainPoint q = TileToTerrainPoint(l, slot, tess);
+    uint coarseEdge = SeamEdgeAt(coarseMask, tess), fineEdge = SeamEdgeAt(fineMask, tess);
+    float factors[4] = { edgeFactors.x, edgeFactors.y, edgeFactors.z, edgeFactors.w };
+    if (coarseEdge != 0u)
+        q = SeamCoarsePoint(false, coarseEdge, tess, 0.5 * factors[firstbitlow(coarseEdge)], tile, l.range, l.range, ab, l.origin, TileCount());
+    else if (fineEdge != 0u)
+        q = SeamCoarsePoint(true, fineEdge, tess, factors[firstbitlow(fineEdge)], tile, l.range, LodRange(level + 1u), abUp, l.origin, TileCount());
+    return TerrainVertexAtPoint(l, drawPatch, tess, q, tessFactor);
+}
 #endif
 
 TileFactors ToTileFactors(TileFactorSet set)
@@ -120,7 +228,12 @@ TileFactorSet TileFactorsOf(InputPatch<TileCorner, 4> corners)
     float3 cornerOS[4];
     [unroll] for (uint c = 0; c < 4; c++)
         cornerOS[c] = corners[c].positionOS;
-    set = ComputeTileFactors(patch, cornerOS);
+    uint slot;
+    TileLayout l = StageTileLayout(patch, slot);
+    set = ComputeTileFactors(l, slot, cornerOS);
+    #if defined(GT_LOD)
+    set = LodTileFactors(patch, set);
+    #endif
 #endif
     return set;
 }
@@ -130,7 +243,7 @@ TileFactors hull_const(InputPatch<TileCorner, 4> corners)
 #if defined(GT_VERTEX_CACHE)
     // Anchored, the cache holds the tile's whole cell: draw the part of it the tile keeps
     // (ClippedCell.hlsl), and tell the domain stage which part that is.
-    float4 kept = TileKeptCellSpan(corners[0].drawPatch);
+    float4 kept = TileKeptCellSpan(FrameTileLayout(), corners[0].drawPatch);
     TileFactors f = ToTileFactors(ClippedTileFactors(TileFactorsOf(corners), kept));
     f.keptCellSpan = kept;
 #else
@@ -175,8 +288,10 @@ TerrainVaryings domain_shader(TileFactors factors, const OutputPatch<TileCorner,
         return CachedCellPointVaryings(base, CellPoint(tess, tile, cell, factors.keptCellSpan, limit), tessFactor);
     }
     return CachedTerrainVaryings(base + VertexCacheSlot(tess, edge, inside, limit), tessFactor);
+#elif defined(GT_LOD)
+    return LodDomainVertex(corners[0].drawPatch, tess, float4(factors.edge[0], factors.edge[1], factors.edge[2], factors.edge[3]), tessFactor);
 #else
-    return TerrainVertex(corners[0].drawPatch, tess, tessFactor);
+    return TerrainVertex(FrameTileLayout(), corners[0].drawPatch, tess, tessFactor);
 #endif
 }
 
@@ -186,7 +301,11 @@ TerrainVaryings vert_fallback(uint vertexID : SV_VertexID, uint instanceID : SV_
 {
     uint f = max((uint)UniformTessFactor(), 1u);
     uint2 grid = uint2(vertexID % (f + 1u), vertexID / (f + 1u));
-    return TerrainVertex(instanceID, (float2)grid / (float)f, (float)f);
+    // GT_LOD: each instance is a tile of its level; a uniform grid cannot follow the seam rule
+    // (2g against g + g), so the fallback's level seams keep T-junctions.
+    uint slot;
+    TileLayout l = StageTileLayout(instanceID, slot);
+    return TerrainVertex(l, slot, (float2)grid / (float)f, (float)f);
 }
 
 // One fragment entry for every pass; the pass's GT_PASS_* define (set by GregoryTerrain.shader)

@@ -16,6 +16,16 @@
 #error "Include a pipeline adapter (Shaders/Pipelines/*Adapter.hlsl) before TerrainInputs.hlsl"
 #endif
 
+#include "TileLattice.hlsl"
+#if defined(GT_LOD)
+    #include "LodTiles.hlsl"
+    // The renderer never turns GT_LOD on with GT_VERTEX_CACHE (the cache path then wins: one range)
+    // and the harness not with GT_SNOW, but Unity compiles every multi_compile combination.
+    #if defined(GT_PAPER_MODE)
+        #error "GT_LOD (levels of detail) draws tiles, not the paper's per-patch mode"
+    #endif
+#endif
+
 // 20 float4 per patch, patch p at [20 p .. 20 p + 19], slot order of GregoryPatch, w = 1.
 StructuredBuffer<float4> _ControlPoints GT_REGISTER(t0);
 // (a, b, e, f) per patch: the patch covers [a, e] x [b, f] of the unit square.
@@ -32,13 +42,19 @@ GT_CBUFFER_START(TerrainParams)
     float4 _GridSize;      // (n columns, m rows, 0, 0)                         once
     float4 _Tess;          // (tiles M, maxFactor, targetPixelError, uniform)   on change
     float4 _Noise;         // (amplitude, frequency, alpha, beta)               on change
-    float4 _NoiseOctaves;  // (octaves N, verticesAcross override or 0, 0, 0)   on change
+    float4 _NoiseOctaves;  // (octaves N, verticesAcross override or 0, LOD segment pixels or 0, 0)
     float4 _HeightColor;   // (gamma, colorNoiseAmplitude, colorNoiseFrequency, 0)
     float4 _ColorLow;      // C of eq. 15, linear RGB
     float4 _ColorHigh;     // B of eq. 15, linear RGB
     float4 _TileLattice;   // 0, or the range the tiles were anchored at (TileLattice.hlsl)  on anchoring
 #if defined(GT_SNOW)
     float4 _SnowMapSize;   // (R, 1/R, depthCap, 0): snow variant only, always last   on change
+#endif
+#if defined(GT_LOD)
+    // Levels of detail only (internals.md, "Levels of detail"), always last: the level count, then
+    // one range per level relative to the origin, finest first (LodLevels.Layout).
+    float4 _LodLevels;                       // (levels L, 0, 0, 0)                   on change
+    float4 _Ranges[GT_MAX_LOD_LEVELS];       // level k's (c, d, g, h)                per frame
 #endif
 GT_CBUFFER_END
 
@@ -79,13 +95,23 @@ float RangeWidth() { return _Range.z - _Range.x; }
 // because RangeCoordinate divides by it.
 float TileCount() { return _Tess.x; }
 uint TileCountInt() { return (uint)_Tess.x; }
-// Whether the tiles are anchored to the terrain (TileLattice.hlsl): a nonzero lattice.
-bool TilesAnchored() { return _TileLattice.z != _TileLattice.x; }
-// Tiles (draw patches, cache tiles) per axis: M, or M + 1 anchored.
-uint TilesAcrossInt() { return TileCountInt() + (TilesAnchored() ? 1u : 0u); }
-// The width whose M tiles set the vertex spacing: the lattice's when anchored (a pan keeps it, so
-// the octave count and the cached vertices stay put), else the range's.
-float TileLayoutWidth() { return TilesAnchored() ? _TileLattice.z - _TileLattice.x : RangeWidth(); }
+// The frame's tile layout (TileLattice.hlsl): _Range, _TileLattice, _RangeOrigin and M. Stage entry
+// points read it and pass it down; the library functions take a layout, so a level of detail can
+// pass its own.
+TileLayout FrameTileLayout() { return MakeTileLayout(_Range, _TileLattice, _RangeOrigin, TileCount()); }
+#if defined(GT_LOD)
+uint LodLevelCount() { return (uint)_LodLevels.x; }
+// Level k's range relative to the origin (k clamped into the array: an out-of-range read would be
+// undefined on some APIs).
+float4 LodRange(uint level) { return _Ranges[min(level, (uint)GT_MAX_LOD_LEVELS - 1u)]; }
+// Level k's tiles: M x M laid on its range (no anchoring: the range itself is snapped to the
+// coarser level's cells), the frame's origin.
+TileLayout LodLevelLayout(uint level) { return MakeTileLayout(LodRange(level), float4(0.0, 0.0, 0.0, 0.0), _RangeOrigin, TileCount()); }
+#endif
+// Whether the frame's tiles are anchored to the terrain (TileLattice.hlsl): a nonzero lattice.
+bool TilesAnchored() { return IsAnchored(_TileLattice); }
+// Tiles (draw patches, cache tiles) per axis of the frame's layout: M, or M + 1 anchored.
+uint TilesAcrossInt() { return TilesAcross(FrameTileLayout()); }
 // Largest edge factor the adaptive policy may choose (at most 64, the hardware limit).
 float MaxTessFactor() { return _Tess.y; }
 // The adaptive knob: target screen-space error, in pixels, of the drawn triangles against the
@@ -98,6 +124,9 @@ bool UsesUniformTessFactor() { return _Tess.w > 0; }
 // --- Noise ----------------------------------------------------------------------------------------
 
 float4 NoiseSettings() { return _Noise; }
+// _NoiseOctaves.z: the on-screen length (pixels) a segment may have under the continuous octave rule
+// of the levels of detail (OctaveCountAtPixelScale); 0 keeps the single-range rule bit for bit.
+float NoiseSegmentPixels() { return _NoiseOctaves.z; }
 float NoiseAmplitude() { return _Noise.x; }
 float MaxNoiseOctaves() { return _NoiseOctaves.x; }
 // Vertices across the range that the octave count is budgeted for: the override when set, else the

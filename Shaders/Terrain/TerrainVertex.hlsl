@@ -19,6 +19,7 @@
 #include "../Library/RelativeSurface.hlsl"
 #if defined(GT_NOISE)
     #include "../Library/OctaveNoise.hlsl"
+    #include "TessellationFactors.hlsl"   // PixelsPerUnit, for the continuous octave rule
 #endif
 #if defined(GT_HEIGHT_COLOR)
     #include "../Library/HeightColor.hlsl"
@@ -100,38 +101,38 @@ float2 ExtensionSnowPoint(TerrainSurfacePoint s);          // where the snow map
 
 // drawPatch: the index of the patch being drawn: a tile, tile = tj * M + ti. tess: the coordinate
 // inside it, in [0, 1]^2.
-TerrainSurfacePoint EvaluateSurface(uint drawPatch, float2 tess)
+TerrainSurfacePoint EvaluateSurface(TileLayout l, uint drawPatch, float2 tess)
 {
 #if defined(GT_EXTEND_DRAW_PATCHES)
     return ExtensionSurface(drawPatch, tess);
 #else
     // Integer tile index first: RangeCoordinate (LatticePoint) forms ti + s before dividing, so the
     // vertices of a shared tile edge get bit-identical q (watertight).
-    return EvaluateSurfaceAt(TileToTerrainPoint(drawPatch, tess));
+    return EvaluateSurfaceAt(TileToTerrainPoint(l, drawPatch, tess));
 #endif
 }
 
 // The surface at tess in the whole cell slot `slot` holds (CellToTerrainPoint): where the adaptive
 // factors sample it (TileFactors.hlsl). Draw patches that are not tiles have no cells: their own point.
-TerrainSurfacePoint EvaluateCellSurface(uint slot, float2 tess)
+TerrainSurfacePoint EvaluateCellSurface(TileLayout l, uint slot, float2 tess)
 {
 #if defined(GT_EXTEND_DRAW_PATCHES)
-    return EvaluateSurface(slot, tess);
+    return EvaluateSurface(l, slot, tess);
 #else
-    return EvaluateSurfaceAt(CellToTerrainPoint(slot, tess));
+    return EvaluateSurfaceAt(CellToTerrainPoint(l, slot, tess));
 #endif
 }
 
 // The surface position a vertex outputs (before noise): S(q) itself, or, while a range origin is
 // set (deep zoom), S(q) - S(O) from precise differences (RelativeSurface.hlsl, precision.md); the
 // renderer then adds S(O) in the object-to-world transform.
-float3 OutputSurfacePosition(TerrainSurfacePoint s)
+float3 OutputSurfacePosition(TileLayout l, TerrainSurfacePoint s)
 {
 #if defined(GT_EXTEND_DRAW_PATCHES)
     return s.position;
 #else
-    [branch] if (RelativeSurfaceIsActive(_RangeOrigin))
-        return RelativeSurfaceFromOrigin(s.q, _RangeOrigin);
+    [branch] if (RelativeSurfaceIsActive(l.origin))
+        return RelativeSurfaceFromOrigin(s.q, l.origin);
     return s.position;
 #endif
 }
@@ -148,8 +149,30 @@ struct TerrainVertexAttributes
     uint patch;              // the Gregory patch that was evaluated
 };
 
+#if defined(GT_NOISE)
+// The octaves a vertex draws, from its surface position before noise (OutputSurfacePosition). The
+// single-range rule (one count a frame, from the layout's width) unless NoiseSegmentPixels() > 0
+// (the levels of detail): then the continuous rule at the vertex's pixel scale, a function of q and
+// the camera only, so both sides of a level seam, which form the same q, agree. Paper mode keeps the
+// single-range rule. Mirrors Core TerrainVertex.VertexOctaveCount.
+float VertexOctaveCount(TileLayout l, TerrainSurfacePoint s)
+{
+#if !defined(GT_EXTEND_DRAW_PATCHES)
+    [branch] if (NoiseSegmentPixels() > 0.0)
+    {
+        float3 p = TerrainToObject(OutputSurfacePosition(l, s));   // what the vertex outputs before noise
+        float k = PixelsPerUnit(GT_ObjectToClip(p), GT_ObjectToClip(p + float3(1.0, 0.0, 0.0)),
+                                GT_ObjectToClip(p + float3(0.0, 1.0, 0.0)), GT_ObjectToClip(p + float3(0.0, 0.0, 1.0)),
+                                GT_ScreenSize());
+        return OctaveCountAtPixelScale(k, NoiseSegmentPixels(), NoiseSettings(), MaxNoiseOctaves());
+    }
+#endif
+    return OctaveCount(LayoutWidth(l), NoiseVerticesAcross(), NoiseSettings(), MaxNoiseOctaves());
+}
+#endif
+
 // Everything TerrainVertex computes before the camera, from the surface point s.
-TerrainVertexAttributes FinishTerrainVertex(TerrainSurfacePoint s)
+TerrainVertexAttributes FinishTerrainVertex(TileLayout l, TerrainSurfacePoint s)
 {
     float3 position;
     float3 dPdu = s.dPdu;
@@ -163,7 +186,7 @@ TerrainVertexAttributes FinishTerrainVertex(TerrainSurfacePoint s)
     #else
     TerrainPoint noisePoint = s.q;
     #endif
-    float octaves = OctaveCount(TileLayoutWidth(), NoiseVerticesAcross(), NoiseSettings(), MaxNoiseOctaves());
+    float octaves = VertexOctaveCount(l, s);
     float2 gradient;   // d(noise)/dq
 #endif
 #if !defined(GT_EXTEND_DRAW_PATCHES)
@@ -171,11 +194,11 @@ TerrainVertexAttributes FinishTerrainVertex(TerrainSurfacePoint s)
     // the renderer adds back (OutputSurfacePosition's rule). One branch for the surface and the
     // noise: with two, the untaken deep-zoom code cost the plain path measurably more
     // (performance.md, "Where the domain stage's time goes").
-    [branch] if (RelativeSurfaceIsActive(_RangeOrigin))
+    [branch] if (RelativeSurfaceIsActive(l.origin))
     {
-        position = RelativeSurfaceFromOrigin(s.q, _RangeOrigin);
+        position = RelativeSurfaceFromOrigin(s.q, l.origin);
     #if defined(GT_NOISE)
-        TerrainPoint origin = MakeTerrainPoint(_RangeOrigin.xy, _RangeOrigin.zw);
+        TerrainPoint origin = MakeTerrainPoint(l.origin.xy, l.origin.zw);
         position.z += OctaveNoiseRelative(s.q, origin, TerrainPointDifference(s.q, origin), NoiseSettings(), octaves, gradient);
         #if defined(GT_HEIGHT_COLOR)
         float2 colourGradient;
@@ -233,10 +256,10 @@ void ExtensionVertex(uint drawPatch, float2 tess, TerrainSurfacePoint s, Terrain
 #endif
 
 // Everything TerrainVertex computes before the camera.
-TerrainVertexAttributes EvaluateTerrainVertex(uint drawPatch, float2 tess)
+TerrainVertexAttributes EvaluateTerrainVertex(TileLayout l, uint drawPatch, float2 tess)
 {
-    TerrainSurfacePoint s = EvaluateSurface(drawPatch, tess);
-    TerrainVertexAttributes a = FinishTerrainVertex(s);
+    TerrainSurfacePoint s = EvaluateSurface(l, drawPatch, tess);
+    TerrainVertexAttributes a = FinishTerrainVertex(l, s);
 #if defined(GT_EXTEND_VERTEX)
     ExtensionVertex(drawPatch, tess, s, a);
 #endif
@@ -245,9 +268,9 @@ TerrainVertexAttributes EvaluateTerrainVertex(uint drawPatch, float2 tess)
 
 // The same at tess of the whole cell slot `slot` holds (CellToTerrainPoint): what the vertex cache
 // stores (ClippedCell.hlsl). The tile's own vertex wherever the tile is the whole cell, bit for bit.
-TerrainVertexAttributes EvaluateCellTerrainVertex(uint slot, float2 tess)
+TerrainVertexAttributes EvaluateCellTerrainVertex(TileLayout l, uint slot, float2 tess)
 {
-    return FinishTerrainVertex(EvaluateCellSurface(slot, tess));
+    return FinishTerrainVertex(l, EvaluateCellSurface(l, slot, tess));
 }
 
 // s = saturate(l + z / gamma) of eq. 14 for the absolute height z and colour noise l, 0 without
@@ -306,9 +329,22 @@ float3 TerrainNormalAndHeightWeight(TerrainVertexAttributes a, float3 normalWS)
     return PackNormalAndHeightWeight(normalWS, TerrainHeightWeight(a.absoluteHeight, a.colorNoise));
 }
 
-TerrainVaryings TerrainVertex(uint drawPatch, float2 tess, float tessFactor)
+// TerrainVertex at a global point the caller formed (the levels' seam vertices, LodTiles.hlsl):
+// drawPatch and tess only place the readback.
+TerrainVaryings TerrainVertexAtPoint(TileLayout l, uint drawPatch, float2 tess, TerrainPoint q, float tessFactor)
 {
-    TerrainVertexAttributes a = EvaluateTerrainVertex(drawPatch, tess);
+    TerrainSurfacePoint s = EvaluateSurfaceAt(q);
+    TerrainVertexAttributes a = FinishTerrainVertex(l, s);
+#if defined(GT_EXTEND_VERTEX)
+    ExtensionVertex(drawPatch, tess, s, a);
+#endif
+    float3 shading = TerrainNormalAndHeightWeight(a, GT_ObjectToWorldNormal(a.normalOS));
+    return TerrainVaryingsOf(a.positionOS, shading, a.snowDepth, a.patch, tessFactor);
+}
+
+TerrainVaryings TerrainVertex(TileLayout l, uint drawPatch, float2 tess, float tessFactor)
+{
+    TerrainVertexAttributes a = EvaluateTerrainVertex(l, drawPatch, tess);
     float3 shading = TerrainNormalAndHeightWeight(a, GT_ObjectToWorldNormal(a.normalOS));
     return TerrainVaryingsOf(a.positionOS, shading, a.snowDepth, a.patch, tessFactor);
 }

@@ -29,9 +29,9 @@ float2 CornerTessCoordinate(uint corner) { return float2(corner & 1u, corner >> 
 // Object position of corner c of the tile's cell (no noise): the input of the culling and the edge
 // factors. Corners are lattice points, so a corner shared by neighbouring cells is evaluated from
 // identical inputs: identical positions, identical edge factors.
-float3 CellCornerObjectPosition(uint drawPatch, uint corner)
+float3 CellCornerObjectPosition(TileLayout l, uint drawPatch, uint corner)
 {
-    return TerrainToObject(OutputSurfacePosition(EvaluateCellSurface(drawPatch, CornerTessCoordinate(corner))));
+    return TerrainToObject(OutputSurfacePosition(l, EvaluateCellSurface(l, drawPatch, CornerTessCoordinate(corner))));
 }
 
 // True when the cell's box lies outside the view (so does the tile's part of it). The box is the corners' bounds, grown in height
@@ -74,9 +74,9 @@ float ObjectPixelsPerUnit(float3 p)
 }
 
 // Object position of the Gregory surface (no noise) at a tess coordinate of the tile's cell.
-float3 CellSurfaceObjectPosition(uint drawPatch, float2 tess)
+float3 CellSurfaceObjectPosition(TileLayout l, uint drawPatch, float2 tess)
 {
-    return TerrainToObject(EvaluateCellSurface(drawPatch, tess).position);
+    return TerrainToObject(EvaluateCellSurface(l, drawPatch, tess).position);
 }
 
 // Uniform factors (_Tess.w > 0; tests and benchmarks): every tile, every edge _Tess.w, nothing
@@ -134,30 +134,30 @@ void TileFactorLine(uint piece, out float2 a, out float2 b, out uint2 corners, o
 // Inner point i (1 .. GT_EDGE_SEGMENTS - 1) of the tile's line from a to b, and the centre: their
 // positions, and each with its pixels per object unit. Both the kernel's numbered samples and the
 // hull's loop evaluate these.
-float3 TileLineInnerPosition(uint patch, float2 a, float2 b, uint i)
+float3 TileLineInnerPosition(TileLayout l, uint patch, float2 a, float2 b, uint i)
 {
-    return CellSurfaceObjectPosition(patch, lerp(a, b, (float)i / (float)GT_EDGE_SEGMENTS));
+    return CellSurfaceObjectPosition(l, patch, lerp(a, b, (float)i / (float)GT_EDGE_SEGMENTS));
 }
 
-float3 TileCentrePosition(uint patch) { return CellSurfaceObjectPosition(patch, float2(0.5, 0.5)); }
+float3 TileCentrePosition(TileLayout l, uint patch) { return CellSurfaceObjectPosition(l, patch, float2(0.5, 0.5)); }
 
-float4 TileLineInnerSample(uint patch, float2 a, float2 b, uint i)
+float4 TileLineInnerSample(TileLayout l, uint patch, float2 a, float2 b, uint i)
 {
-    float3 p = TileLineInnerPosition(patch, a, b, i);
+    float3 p = TileLineInnerPosition(l, patch, a, b, i);
     return float4(p, ObjectPixelsPerUnit(p));
 }
 
-float4 TileCentreSample(uint patch)
+float4 TileCentreSample(TileLayout l, uint patch)
 {
-    float3 centre = TileCentrePosition(patch);
+    float3 centre = TileCentrePosition(l, patch);
     return float4(centre, ObjectPixelsPerUnit(centre));
 }
 
 // Sample s's object position: what depends on the surface and the range, not on the camera (the
 // vertex cache keeps it while the range holds).
-float3 TileFactorSamplePosition(uint patch, uint s)
+float3 TileFactorSamplePosition(TileLayout l, uint patch, uint s)
 {
-    if (s < 4u) return CellCornerObjectPosition(patch, s);
+    if (s < 4u) return CellCornerObjectPosition(l, patch, s);
     float2 a, b;
     uint2 corners;
     uint axis;
@@ -165,15 +165,15 @@ float3 TileFactorSamplePosition(uint patch, uint s)
     {
         uint inner = s - 4u;
         TileFactorLine(inner / GT_TILE_INNER_POINTS, a, b, corners, axis);
-        return TileLineInnerPosition(patch, a, b, inner % GT_TILE_INNER_POINTS + 1u);
+        return TileLineInnerPosition(l, patch, a, b, inner % GT_TILE_INNER_POINTS + 1u);
     }
     if (s < GT_TILE_CENTRE_SAMPLE)
     {
         uint end = s - GT_TILE_MIDLINE_END_SAMPLE;
         TileFactorLine(4u + end / 2u, a, b, corners, axis);
-        return CellSurfaceObjectPosition(patch, (end & 1u) ? b : a);
+        return CellSurfaceObjectPosition(l, patch, (end & 1u) ? b : a);
     }
-    return TileCentrePosition(patch);
+    return TileCentrePosition(l, patch);
 }
 
 // Sample s at its position p: the camera's part, pixels per object unit, where a factor reads it
@@ -196,6 +196,17 @@ uint TileLineSample(uint piece, uint i)
     return GT_TILE_MIDLINE_END_SAMPLE + 2u * (piece - 4u) + (i == 0u ? 0u : 1u);
 }
 
+#if defined(GT_NOISE)
+// The octaves the noise bound of a line counts: the frame's one count, or under the continuous rule
+// (NoiseSegmentPixels() > 0, the levels of detail) the count at the line's largest pixel scale (its
+// nearest sample draws the most octaves). Mirrors Core TileFactors.LineOctaveCount.
+float LineOctaveCount(TileLayout l, float maxPixelsPerUnit)
+{
+    if (NoiseSegmentPixels() > 0.0) return OctaveCountAtPixelScale(maxPixelsPerUnit, NoiseSegmentPixels(), NoiseSettings(), MaxNoiseOctaves());
+    return OctaveCount(LayoutWidth(l), NoiseVerticesAcross(), NoiseSettings(), MaxNoiseOctaves());
+}
+#endif
+
 // The knob is the target screen-space error in pixels (_Tess.z): each line gets the segment count
 // whose chord error is that many pixels (TessellationPolicy.ErrorTessFactor), from its points p
 // and their pixel scales k (TileLineSample): the chord error of the surface (no noise) plus the
@@ -204,7 +215,7 @@ uint TileLineSample(uint piece, uint i)
 // it, from the same global points bit for bit (RangeCoordinate adds the integer tile index first)
 // and the same edge length (its row's or column's):
 // their factors agree (no cracks).
-float LineErrorTessFactor(uint patch, uint piece, float3 p[GT_EDGE_SEGMENTS + 1], float k[GT_EDGE_SEGMENTS + 1])
+float LineErrorTessFactor(TileLayout l, uint patch, uint piece, float3 p[GT_EDGE_SEGMENTS + 1], float k[GT_EDGE_SEGMENTS + 1])
 {
     float kMax = 0.0;
     [unroll] for (uint i = 1u; i < GT_EDGE_SEGMENTS; i++)
@@ -213,11 +224,11 @@ float LineErrorTessFactor(uint patch, uint piece, float3 p[GT_EDGE_SEGMENTS + 1]
     uint2 corners;
     uint axis;
     TileFactorLine(piece, a, b, corners, axis);
-    float2 edgeLength = CellEdgeLengths(patch);   // along u (x) and along v (y), terrain units
+    float2 edgeLength = CellEdgeLengths(l, patch);   // along u (x) and along v (y), terrain units
     float noiseCurvature = 0.0;
 #if defined(GT_NOISE)
     // The octaves this frame draws (the count TerrainVertex uses): the knob counts the noise it shows.
-    noiseCurvature = NoiseCurvatureBound(NoiseSettings(), OctaveCount(TileLayoutWidth(), NoiseVerticesAcross(), NoiseSettings(), MaxNoiseOctaves()));
+    noiseCurvature = NoiseCurvatureBound(NoiseSettings(), LineOctaveCount(l, kMax));
 #endif
     float sagitta = SampledEdgeSagittaPixels(p, k) + NoiseSagittaPixels(noiseCurvature, edgeLength[axis], kMax);
     return ErrorTessFactor(sagitta, TargetPixelError(), MaxTessFactor());
@@ -234,25 +245,25 @@ float CentreErrorTessFactor(float3 cornerOS[4], float4 centre)
 // samples over its lanes). Not through TileFactorSamplePosition, whose branches on the sample number
 // slow the hull stage down (performance.md, "Choices in the shaders, measured"); the samples are the
 // same functions.
-float TileFactorPiece(uint patch, uint piece, float3 cornerOS[4])
+float TileFactorPiece(TileLayout l, uint patch, uint piece, float3 cornerOS[4])
 {
-    if (piece == 6u) return CentreErrorTessFactor(cornerOS, TileCentreSample(patch));
+    if (piece == 6u) return CentreErrorTessFactor(cornerOS, TileCentreSample(l, patch));
     float2 a, b;
     uint2 corners;
     uint axis;
     TileFactorLine(piece, a, b, corners, axis);
     float3 p[GT_EDGE_SEGMENTS + 1];
     float k[GT_EDGE_SEGMENTS + 1];
-    p[0] = piece < 4u ? cornerOS[corners.x] : CellSurfaceObjectPosition(patch, a);
-    p[GT_EDGE_SEGMENTS] = piece < 4u ? cornerOS[corners.y] : CellSurfaceObjectPosition(patch, b);
+    p[0] = piece < 4u ? cornerOS[corners.x] : CellSurfaceObjectPosition(l, patch, a);
+    p[GT_EDGE_SEGMENTS] = piece < 4u ? cornerOS[corners.y] : CellSurfaceObjectPosition(l, patch, b);
     k[0] = k[GT_EDGE_SEGMENTS] = 0.0;
     [unroll] for (uint i = 1u; i < GT_EDGE_SEGMENTS; i++)
     {
-        float4 v = TileLineInnerSample(patch, a, b, i);
+        float4 v = TileLineInnerSample(l, patch, a, b, i);
         p[i] = v.xyz;
         k[i] = v.w;
     }
-    return LineErrorTessFactor(patch, piece, p, k);
+    return LineErrorTessFactor(l, patch, piece, p, k);
 }
 
 // Inside factors follow the edges they run along: inside[0] subdivides along u, like the v = 0 and
@@ -282,16 +293,16 @@ TileFactorSet TileFactorsOfCell(TileFactorSet cell, float2 kept)
 }
 
 // The hull stage's path; cornerOS: the cell's corners (CellCornerObjectPosition).
-TileFactorSet ComputeTileFactors(uint patch, float3 cornerOS[4])
+TileFactorSet ComputeTileFactors(TileLayout l, uint patch, float3 cornerOS[4])
 {
     TileFactorSet f;
-    if (TileEmpty(patch)) return CulledTileFactors();
+    if (TileEmpty(l, patch)) return CulledTileFactors();
     if (UniformTileFactors(f)) return f;
     if (TileCulled(cornerOS)) return CulledTileFactors();
     float piece[GT_TILE_FACTOR_PIECES];
     [unroll] for (uint i = 0u; i < GT_TILE_FACTOR_PIECES; i++)
-        piece[i] = TileFactorPiece(patch, i, cornerOS);
-    return TileFactorsOfCell(TileFactorsOfPieces(piece), TileKeptFraction(patch));
+        piece[i] = TileFactorPiece(l, patch, i, cornerOS);
+    return TileFactorsOfCell(TileFactorsOfPieces(piece), TileKeptFraction(l, patch));
 }
 
 #endif // GT_TILE_FACTORS_INCLUDED

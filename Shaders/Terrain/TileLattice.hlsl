@@ -9,11 +9,41 @@
 // A clipped tile's factors come from its whole cell's (TileFactors.hlsl, TileFactorsOfCell; with
 // the vertex cache ClippedCell.hlsl, which also draws it from the whole cell's cached vertices), so
 // a pan with the camera held samples nothing, and one that keeps the first cells dispatches nothing.
+//
+// Every function takes the layout it works on (TileLayout) as a parameter and reads no global: the
+// stage entry points pass the frame's (FrameTileLayout, TerrainInputs.hlsl), and a level of detail
+// passes its own range and lattice (internals.md, "Levels of detail"). Core passes TerrainParams.
 #ifndef GT_TILE_LATTICE_INCLUDED
 #define GT_TILE_LATTICE_INCLUDED
 
-#include "TerrainInputs.hlsl"
 #include "../Library/RangeMapping.hlsl"
+
+// The tiles of one draw: what Core's TileLattice reads of TerrainParams.
+struct TileLayout
+{
+    float4 range;    // (c, d, g, h) relative to the origin (_Range, or one level's range)
+    float4 lattice;  // 0 (tiles on the range), or the range the tiles were anchored at (_TileLattice)
+    float4 origin;   // (O.x hi, O.y hi, O.x lo, O.y lo) (_RangeOrigin)
+    float tiles;     // M (a float: RangeCoordinate divides by it)
+};
+
+TileLayout MakeTileLayout(float4 range, float4 lattice, float4 origin, float tiles)
+{
+    TileLayout l;
+    l.range = range;
+    l.lattice = lattice;
+    l.origin = origin;
+    l.tiles = tiles;
+    return l;
+}
+
+// Whether the tiles are anchored to the terrain: a nonzero lattice. Core TileLattice.IsAnchored.
+bool IsAnchored(float4 lattice) { return lattice.z != lattice.x; }
+// Tiles (draw patches, cache tiles) per axis: M, or M + 1 anchored. Core TileLattice.TilesAcross.
+uint TilesAcross(TileLayout l) { return (uint)l.tiles + (IsAnchored(l.lattice) ? 1u : 0u); }
+// The width whose M tiles set the vertex spacing: the lattice's when anchored (a pan keeps it, so
+// the octave count and the cached vertices stay put), else the range's. Core TileLattice.LayoutWidth.
+float LayoutWidth(TileLayout l) { return IsAnchored(l.lattice) ? l.lattice.z - l.lattice.x : l.range.z - l.range.x; }
 
 // --- One axis (parameters in) ---------------------------------------------------------------------
 
@@ -66,92 +96,96 @@ int TileOfSlot(int slot, int k0, int across)
     return r < 0 ? r + across : r;
 }
 
-// --- Both axes, from the frame's inputs ---------------------------------------------------------------
+// --- Both axes, from a layout ---------------------------------------------------------------
 
 // The anchored tile of slot `slot`: its span (l.x, l.y, h.x, h.y), its cell on each axis and
 // whether each axis holds the whole cell.
-float4 AnchoredTileSpan(uint slot, out int2 cell, out bool2 whole)
+float4 AnchoredTileSpan(TileLayout l, uint slot, out int2 cell, out bool2 whole)
 {
-    int across = (int)TilesAcrossInt();
-    float m = TileCount();
-    int2 k0 = int2(FirstCell(_Range.x, _TileLattice.x, _TileLattice.z, m), FirstCell(_Range.y, _TileLattice.y, _TileLattice.w, m));
+    int across = (int)TilesAcross(l);
+    float m = l.tiles;
+    float4 r = l.range, lat = l.lattice;
+    int2 k0 = int2(FirstCell(r.x, lat.x, lat.z, m), FirstCell(r.y, lat.y, lat.w, m));
     int2 ij = int2(TileOfSlot((int)slot % across, k0.x, across), TileOfSlot((int)slot / across, k0.y, across));
     bool wholeX, wholeY;
-    float2 x = AxisSpan(_Range.x, _Range.z, _TileLattice.x, _TileLattice.z, m, k0.x, ij.x, wholeX);
-    float2 y = AxisSpan(_Range.y, _Range.w, _TileLattice.y, _TileLattice.w, m, k0.y, ij.y, wholeY);
+    float2 x = AxisSpan(r.x, r.z, lat.x, lat.z, m, k0.x, ij.x, wholeX);
+    float2 y = AxisSpan(r.y, r.w, lat.y, lat.w, m, k0.y, ij.y, wholeY);
     cell = k0 + ij;
     whole = bool2(wholeX, wholeY);
     return float4(x.x, y.x, x.y, y.y);
 }
 
 // The global point of tess coordinate `tess` in the tile of draw patch (slot) `slot`.
-TerrainPoint TileToTerrainPoint(uint slot, float2 tess)
+TerrainPoint TileToTerrainPoint(TileLayout l, uint slot, float2 tess)
 {
-    uint across = TilesAcrossInt();
-    if (!TilesAnchored())
-        return RangeToTerrainPoint(_Range, _RangeOrigin, TileCount(), uint2(slot % across, slot / across), tess);
+    uint across = TilesAcross(l);
+    if (!IsAnchored(l.lattice))
+        return RangeToTerrainPoint(l.range, l.origin, l.tiles, uint2(slot % across, slot / across), tess);
     int2 cell;
     bool2 whole;
-    float4 span = AnchoredTileSpan(slot, cell, whole);
-    float m = TileCount();
+    float4 span = AnchoredTileSpan(l, slot, cell, whole);
+    float m = l.tiles;
+    float4 lat = l.lattice;
     TerrainPoint p;
-    p.originHi = _RangeOrigin.xy;
-    p.local = _RangeOrigin.zw + float2(AxisPoint(span.xz, whole.x, _TileLattice.x, _TileLattice.z, m, cell.x, tess.x),
-                                       AxisPoint(span.yw, whole.y, _TileLattice.y, _TileLattice.w, m, cell.y, tess.y));
+    p.originHi = l.origin.xy;
+    p.local = l.origin.zw + float2(AxisPoint(span.xz, whole.x, lat.x, lat.z, m, cell.x, tess.x),
+                                   AxisPoint(span.yw, whole.y, lat.y, lat.w, m, cell.y, tess.y));
     return p;
 }
 
 // The terrain part (relative to the origin) slot `slot` draws, (l.x, l.y, h.x, h.y): anchored only.
-float4 TileSpan(uint slot)
+float4 TileSpan(TileLayout l, uint slot)
 {
     int2 cell;
     bool2 whole;
-    return AnchoredTileSpan(slot, cell, whole);
+    return AnchoredTileSpan(l, slot, cell, whole);
 }
 
 // An anchored tile without area (a cell past g, or the last one when the range ends on a lattice
 // line): culled, so its degenerate triangles cost nothing.
-bool TileEmpty(uint slot)
+bool TileEmpty(TileLayout l, uint slot)
 {
-    if (!TilesAnchored()) return false;
-    float4 span = TileSpan(slot);
+    if (!IsAnchored(l.lattice)) return false;
+    float4 span = TileSpan(l, slot);
     return span.x == span.z || span.y == span.w;
 }
 
 // --- The cells the adaptive factors are decided on -------------------------------------------------
 
 // Lattice cell (cell.x, cell.y), relative to the origin: (l.x, l.y, h.x, h.y).
-float4 LatticeCell(int2 cell)
+float4 LatticeCell(TileLayout l, int2 cell)
 {
-    float m = TileCount();
-    return float4(LatticeLine(_TileLattice.x, _TileLattice.z, m, cell.x), LatticeLine(_TileLattice.y, _TileLattice.w, m, cell.y),
-                  LatticeLine(_TileLattice.x, _TileLattice.z, m, cell.x + 1), LatticeLine(_TileLattice.y, _TileLattice.w, m, cell.y + 1));
+    float m = l.tiles;
+    float4 lat = l.lattice;
+    return float4(LatticeLine(lat.x, lat.z, m, cell.x), LatticeLine(lat.y, lat.w, m, cell.y),
+                  LatticeLine(lat.x, lat.z, m, cell.x + 1), LatticeLine(lat.y, lat.w, m, cell.y + 1));
 }
 
 // The whole cell slot `slot` holds (anchored only): its tile before clipping.
-float4 CellSpan(uint slot)
+float4 CellSpan(TileLayout l, uint slot)
 {
     int2 cell;
     bool2 whole;
-    AnchoredTileSpan(slot, cell, whole);
-    return LatticeCell(cell);
+    AnchoredTileSpan(l, slot, cell, whole);
+    return LatticeCell(l, cell);
 }
 
 // The global point of tess coordinate `tess` in the whole cell slot `slot` holds: the tile's own
 // point where the tile is the whole cell (the lattice formula, bit for bit), else also beyond its
 // clipped side. Laid over the range, the tile's point. The adaptive factors sample the cell, not
 // the clipped tile (TileFactors.hlsl), so a pan changes no cell's samples.
-TerrainPoint CellToTerrainPoint(uint slot, float2 tess)
+TerrainPoint CellToTerrainPoint(TileLayout l, uint slot, float2 tess)
 {
-    if (!TilesAnchored()) return TileToTerrainPoint(slot, tess);
+    if (!IsAnchored(l.lattice)) return TileToTerrainPoint(l, slot, tess);
     int2 cell;
     bool2 whole;
-    AnchoredTileSpan(slot, cell, whole);
-    float m = TileCount();
+    AnchoredTileSpan(l, slot, cell, whole);
+    float m = l.tiles;
+    float4 lat = l.lattice;
     TerrainPoint p;
-    p.originHi = _RangeOrigin.xy;
-    p.local = _RangeOrigin.zw + float2(LatticePoint(_TileLattice.x, _TileLattice.z, m, cell.x, tess.x),
-                                       LatticePoint(_TileLattice.y, _TileLattice.w, m, cell.y, tess.y));
+    p.originHi = l.origin.xy;
+    p.local = l.origin.zw + float2(LatticePoint(lat.x, lat.z, m, cell.x, tess.x),
+                                   LatticePoint(lat.y, lat.w, m, cell.y, tess.y));
     return p;
 }
 
@@ -161,13 +195,13 @@ float CellParameter(float x, float lo, float hi) { return x == lo ? 0.0 : (x == 
 // The part of its cell the tile keeps, in the cell's own parameters: (s0.x, s1.x, s0.y, s1.y),
 // exactly (0, 1, 0, 1) on whole axes (and laid over the range). Tiles of one column share x, of one
 // row y: tiles sharing an edge agree on its part (ClippedCell.hlsl draws it from the whole cell).
-float4 TileKeptCellSpan(uint slot)
+float4 TileKeptCellSpan(TileLayout l, uint slot)
 {
-    if (!TilesAnchored()) return float4(0.0, 1.0, 0.0, 1.0);
+    if (!IsAnchored(l.lattice)) return float4(0.0, 1.0, 0.0, 1.0);
     int2 cell;
     bool2 whole;
-    float4 span = AnchoredTileSpan(slot, cell, whole);
-    float4 c = LatticeCell(cell);
+    float4 span = AnchoredTileSpan(l, slot, cell, whole);
+    float4 c = LatticeCell(l, cell);
     return float4(CellParameter(span.x, c.x, c.z), CellParameter(span.z, c.x, c.z),
                   CellParameter(span.y, c.y, c.w), CellParameter(span.w, c.y, c.w));
 }
@@ -175,19 +209,19 @@ float4 TileKeptCellSpan(uint slot)
 // How much of its cell the tile keeps along x and y: the width of its TileKeptCellSpan, exactly 1
 // on a whole axis (and laid over the range), never above 1. Tiles sharing an edge share the row or
 // column that decides it. The domain-stage path scales the cell's factors by it (TileFactorsOfCell).
-float2 TileKeptFraction(uint slot)
+float2 TileKeptFraction(TileLayout l, uint slot)
 {
-    float4 kept = TileKeptCellSpan(slot);
+    float4 kept = TileKeptCellSpan(l, slot);
     return kept.yw - kept.xz;
 }
 
 // Edge lengths of the slot's cell along x and y in terrain units (the factors' noise term): from
 // the lattice lines, so a shared edge's length is its row's or column's and both tiles see the
 // same. Laid over the range: (range width) / M.
-float2 CellEdgeLengths(uint slot)
+float2 CellEdgeLengths(TileLayout l, uint slot)
 {
-    if (!TilesAnchored()) return (_Range.zw - _Range.xy) / TileCount();
-    float4 c = CellSpan(slot);
+    if (!IsAnchored(l.lattice)) return (l.range.zw - l.range.xy) / l.tiles;
+    float4 c = CellSpan(l, slot);
     return c.zw - c.xy;
 }
 

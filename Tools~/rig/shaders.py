@@ -53,6 +53,7 @@ EXPECTED_BINDINGS = {
 }
 TERRAIN_PARAMS_BYTES = 160   # 10 float4
 SNOW_PARAMS_BYTES = 16       # GT_SNOW appends _SnowMapSize to TerrainParams
+LOD_PARAMS_BYTES = 16 + 20 * 16   # GT_LOD appends _LodLevels and _Ranges[GT_MAX_LOD_LEVELS = 20]
 RIG_CAMERA_BYTES = 176       # 2 float4x4 + 3 float4
 
 # Diagnostics that are known and harmless. Each entry: (regex over one output line, why).
@@ -101,7 +102,7 @@ def run(cmd, log):
 
 def check_bindings(spv, log, keywords=()):
     """Every resource must sit in set 0 at the binding of internals.md."""
-    params_bytes = TERRAIN_PARAMS_BYTES + (SNOW_PARAMS_BYTES if "GT_SNOW" in keywords else 0)
+    params_bytes = TERRAIN_PARAMS_BYTES + (SNOW_PARAMS_BYTES if "GT_SNOW" in keywords else 0) + (LOD_PARAMS_BYTES if "GT_LOD" in keywords else 0)
     p = subprocess.run(["spirv-cross", spv, "--reflect"], stdout=subprocess.PIPE,
                        stderr=subprocess.PIPE, text=True)
     if p.returncode != 0:

@@ -180,5 +180,28 @@ namespace GregoryTerrain
             double k = 1.0 + Math.Log(verticesAcross / (2.0 * rangeWidth * settings.frequency)) / Math.Log(settings.alpha);
             return GMath.clamp(k, 0.0, settings.octaves);
         }
+
+        /// <summary>
+        /// The continuous octave rule of the levels of detail (internals.md, "The continuous octave
+        /// rule"): the count as a function of a vertex's position and the camera, not of a range's
+        /// width, so both sides of a level seam agree and a camera step changes it continuously. A
+        /// segment may be <paramref name="segmentPixels"/> pixels long on screen; where one object
+        /// (terrain) unit covers <paramref name="pixelsPerUnit"/> pixels (TessellationPolicy.PixelsPerUnit
+        /// at the surface point, no noise), the vertex spacing is <c>segmentPixels / pixelsPerUnit</c>,
+        /// and the count is <see cref="OctaveCount"/> of that spacing and one vertex:
+        /// <c>1 + log_alpha(pixelsPerUnit / (2 * segmentPixels * frequency))</c>, clamped to [0, octaves].
+        /// An infinite scale (at or behind the eye plane) gives all octaves, zero gives none.
+        /// </summary>
+        public static double OctaveCountAtPixelScale(double pixelsPerUnit, double segmentPixels, NoiseSettings settings)
+        {
+            settings.Validate(nameof(settings));
+            if (double.IsNaN(pixelsPerUnit) || pixelsPerUnit < 0.0)
+                throw new ArgumentException(FormattableString.Invariant($"pixelsPerUnit ({pixelsPerUnit:R}) must be >= 0 (infinity allowed)"), nameof(pixelsPerUnit));
+            if (!GMath.isfinite(segmentPixels) || !(segmentPixels > 0.0))
+                throw new ArgumentException(FormattableString.Invariant($"segmentPixels ({segmentPixels:R}) must be finite and greater than 0"), nameof(segmentPixels));
+            if (double.IsPositiveInfinity(pixelsPerUnit)) return settings.octaves;
+            if (pixelsPerUnit == 0.0) return 0.0;
+            return OctaveCount(segmentPixels / pixelsPerUnit, 1.0, settings);
+        }
     }
 }

@@ -143,6 +143,30 @@ namespace GregoryTerrain
             return GMath.clamp(k, 0f, p.noiseOctaves.x);
         }
 
+        /// <summary>
+        /// <c>_NoiseOctaves.z</c>: the on-screen length, in pixels, a segment may have under the
+        /// continuous octave rule of the levels of detail (<see cref="NoiseOctaveCountAt"/>); 0 keeps
+        /// the single-range rule (<see cref="NoiseOctaveCount()"/>) bit for bit.
+        /// </summary>
+        public float NoiseSegmentPixels() => Params.noiseOctaves.z;
+
+        /// <summary>
+        /// The continuous rule as the vertex stage forms it in float (HLSL <c>OctaveCountAtPixelScale</c>,
+        /// Core double <see cref="OctaveNoise.OctaveCountAtPixelScale"/>): the frame's rule with the
+        /// vertex spacing <c>segmentPixels / pixelsPerUnit</c> and one vertex across; all octaves at an
+        /// infinite scale (at or behind the eye plane), none at 0.
+        /// </summary>
+        public static float NoiseOctaveCountAt(TerrainParams p, float pixelsPerUnit)
+        {
+            float n = p.noiseOctaves.x;
+            if (!(pixelsPerUnit < float.PositiveInfinity)) return n;
+            if (!(pixelsPerUnit > 0f)) return 0f;
+            float spacing = p.noiseOctaves.z / pixelsPerUnit;
+            float ratio = 1f / (2f * spacing * p.noise.y);
+            float k = 1f + Log2(ratio) / Log2(p.noise.z);
+            return GMath.clamp(k, 0f, n);
+        }
+
         /// <summary>The noise settings as <see cref="GregoryTerrain.NoiseSettings"/> (for the Core noise functions).</summary>
         public GregoryTerrain.NoiseSettings NoiseSettingsStruct() =>
             new GregoryTerrain.NoiseSettings(Params.noise.x, Params.noise.y, Params.noise.z, Params.noise.w, (int)Params.noiseOctaves.x);

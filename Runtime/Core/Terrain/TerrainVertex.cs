@@ -150,14 +150,53 @@ namespace GregoryTerrain
 
         /// <summary>HLSL <c>TerrainVertex(drawPatch, tess, ...)</c> without the camera.</summary>
         public static TerrainVertexOutput Evaluate(TerrainInputs inputs, int drawPatch, Float2 tess, TerrainKeywords keywords = TerrainKeywords.None) =>
-            FinishTerrainVertex(inputs, EvaluateSurface(inputs, drawPatch, tess, keywords), keywords);
+            FinishTerrainVertex(inputs, EvaluateSurface(inputs, drawPatch, tess, keywords), keywords, null);
+
+        /// <summary>
+        /// <see cref="Evaluate"/> seen by a camera: under the
+        /// continuous octave rule (<see cref="TerrainInputs.NoiseSegmentPixels"/> &gt; 0) the octave
+        /// count comes from the pixel scale at the vertex (<see cref="VertexOctaveCount"/>), which needs
+        /// the camera's object-to-clip matrix and the screen size in pixels.
+        /// </summary>
+        public static TerrainVertexOutput EvaluateWithCamera(TerrainInputs inputs, int drawPatch, Float2 tess, TerrainKeywords keywords,
+                                                             Float4x4 objectToClip, Float2 screenSize) =>
+            FinishTerrainVertex(inputs, EvaluateSurface(inputs, drawPatch, tess, keywords), keywords, (objectToClip, screenSize));
+
+        /// <summary><see cref="EvaluateWithCamera"/> in tile mode from a given global point (see <see cref="EvaluateSurfaceAt"/>).</summary>
+        public static TerrainVertexOutput EvaluateAtWithCamera(TerrainInputs inputs, TerrainPoint q, TerrainKeywords keywords,
+                                                               Float4x4 objectToClip, Float2 screenSize)
+        {
+            if ((keywords & TerrainKeywords.PaperMode) != 0)
+                throw new ArgumentException("keywords: EvaluateAtWithCamera is the tile path; paper mode needs the draw patch", nameof(keywords));
+            return FinishTerrainVertex(inputs, EvaluateSurfaceAt(inputs, q), keywords, (objectToClip, screenSize));
+        }
+
+        /// <summary>
+        /// HLSL <c>VertexOctaveCount</c>: the octaves a vertex whose surface (no noise) outputs
+        /// <paramref name="surfacePosition"/> draws. The single-range rule (<see cref="TerrainInputs.NoiseOctaveCount()"/>,
+        /// one count a frame) unless <see cref="TerrainInputs.NoiseSegmentPixels"/> &gt; 0 (the levels
+        /// of detail, tile mode): then the continuous rule at the vertex's pixel scale
+        /// (<see cref="TerrainInputs.NoiseOctaveCountAt"/>), so both sides of a level seam, which form
+        /// the same q, agree. Throws when that rule is on and no camera is given.
+        /// </summary>
+        public static float VertexOctaveCount(TerrainInputs inputs, Float3 surfacePosition, TerrainKeywords keywords,
+                                              (Float4x4 objectToClip, Float2 screenSize)? camera)
+        {
+            if (inputs == null) throw new ArgumentNullException(nameof(inputs));
+            if ((keywords & TerrainKeywords.PaperMode) != 0 || !(inputs.NoiseSegmentPixels() > 0f)) return inputs.NoiseOctaveCount();
+            if (camera == null)
+                throw new ArgumentException(FormattableString.Invariant(
+                    $"camera: noiseOctaves.z ({inputs.NoiseSegmentPixels():R} segment pixels) turns the continuous octave rule on, which needs the camera"), nameof(camera));
+            float k = TessellationPolicy.PixelsPerUnit(camera.Value.objectToClip, TerrainToObject(surfacePosition), camera.Value.screenSize);
+            return TerrainInputs.NoiseOctaveCountAt(inputs.Params, k);
+        }
 
         /// <summary><see cref="Evaluate"/> in tile mode from a given global point (see <see cref="EvaluateSurfaceAt"/>).</summary>
         public static TerrainVertexOutput EvaluateAt(TerrainInputs inputs, TerrainPoint q, TerrainKeywords keywords = TerrainKeywords.None)
         {
             if ((keywords & TerrainKeywords.PaperMode) != 0)
                 throw new ArgumentException("keywords: EvaluateAt is the tile path; paper mode needs the draw patch (use Evaluate)", nameof(keywords));
-            return FinishTerrainVertex(inputs, EvaluateSurfaceAt(inputs, q), keywords);
+            return FinishTerrainVertex(inputs, EvaluateSurfaceAt(inputs, q), keywords, null);
         }
 
         /// <summary>
@@ -210,7 +249,8 @@ namespace GregoryTerrain
         // HLSL FinishTerrainVertex: everything TerrainVertex computes from the surface point on, before the camera.
         // The HLSL takes the deep-zoom surface and noise in one branch (the untaken code of two branches
         // cost the plain path measurably); the values are these, step for step.
-        static TerrainVertexOutput FinishTerrainVertex(TerrainInputs inputs, TerrainSurfacePoint s, TerrainKeywords keywords)
+                static TerrainVertexOutput FinishTerrainVertex(TerrainInputs inputs, TerrainSurfacePoint s, TerrainKeywords keywords,
+                                                       (Float4x4 objectToClip, Float2 screenSize)? camera)
         {
             Float3 position = OutputSurfacePosition(inputs, s, keywords), dPdu = s.dPdu, dPdv = s.dPdv;
             float noiseHeight = 0f;   // the absolute p(q)
@@ -221,7 +261,7 @@ namespace GregoryTerrain
                 TerrainPoint noisePoint = s.q;
                 if ((keywords & TerrainKeywords.PaperMode) != 0 && !s.uv.Equals(RangeMapping.PatchLocalUV(s.q, s.region, s.regionLo)))
                     noisePoint = new TerrainPoint(default, new Float2(GMath.lerp(s.region.x, s.region.z, s.uv.x), GMath.lerp(s.region.y, s.region.w, s.uv.y)));
-                float octaves = inputs.NoiseOctaveCount();
+                float octaves = VertexOctaveCount(inputs, position, keywords, camera);
                 Float4 originF = inputs.Params.rangeOrigin;
                 Float2 gradient;
                 if ((keywords & TerrainKeywords.PaperMode) == 0 && RelativeSurface.IsActive(originF))

@@ -117,10 +117,18 @@ namespace GregoryTerrain
             float edgeLength = axis == 0 ? edgeLengths.x : edgeLengths.y;
             float noiseCurvature = 0f;
             if ((keywords & TerrainKeywords.Noise) != 0)
-                noiseCurvature = TessellationPolicy.NoiseCurvatureBound(inputs.NoiseSettingsStruct(), inputs.NoiseOctaveCount());
+                noiseCurvature = TessellationPolicy.NoiseCurvatureBound(inputs.NoiseSettingsStruct(), LineOctaveCount(inputs, kMax));
             float sagitta = TessellationPolicy.EdgeSagittaPixels(p, k) + TessellationPolicy.NoiseSagittaPixels(noiseCurvature, edgeLength, kMax);
             return TessellationPolicy.ErrorTessFactor(sagitta, inputs.TargetPixelsPerSegment(), inputs.MaxTessFactor());
         }
+
+        /// <summary>
+        /// HLSL <c>LineOctaveCount</c>: the octaves the noise bound of a line counts. The frame's one
+        /// count, or under the continuous rule (<see cref="TerrainInputs.NoiseSegmentPixels"/> &gt; 0)
+        /// the count at the line's largest pixel scale: its nearest sample draws the most octaves.
+        /// </summary>
+        public static float LineOctaveCount(TerrainInputs inputs, float maxPixelsPerUnit) =>
+            inputs.NoiseSegmentPixels() > 0f ? TerrainInputs.NoiseOctaveCountAt(inputs.Params, maxPixelsPerUnit) : inputs.NoiseOctaveCount();
 
         /// <summary>HLSL <c>CentreErrorTessFactor</c>: piece 6, the centre's deviation from the diagonals (centre.w: its pixel scale).</summary>
         public static float CentreErrorTessFactor(TerrainInputs inputs, Float3[] cornersOS, Float4 centre) =>

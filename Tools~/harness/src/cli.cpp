@@ -174,6 +174,8 @@ const char* usageText() {
   --range c,d,g,h                overrides _Range (first float4 of params.f32)
   --snow-depth F --snow-params F GT_SNOW: R*R float depth map at binding 6, and _SnowMapSize
                                  (16 bytes) appended to TerrainParams at binding 0
+  --params-tail F                GT_LOD: F's bytes (a multiple of 16, at most 1024) appended to
+                                 TerrainParams at binding 0 (_LodLevels, _Ranges[])
   --patches N                    patches drawn (tessellated mode)
   --control-points K             control points per patch (default 4)
   --grid-factor F --instances N  fallback mode: (F+1)^2-vertex grid, N instances
@@ -247,6 +249,7 @@ Options parseOptions(int argc, char** argv) {
         else if (a == "--range") o.range = parseRange(value());
         else if (a == "--snow-depth") o.snowDepthPath = value();
         else if (a == "--snow-params") o.snowParamsPath = value();
+        else if (a == "--params-tail") o.paramsTailPath = value();
         else if (a == "--patches") o.patches = u32();
         else if (a == "--control-points") o.controlPoints = u32(32);
         else if (a == "--grid-factor") o.gridFactor = u32(4096);
@@ -295,6 +298,7 @@ Options parseOptions(int argc, char** argv) {
     if (o.buffersDir.empty()) fail("--buffers DIR is required (see --help)");
     if (o.frames == 0) fail("--frames: must be at least 1");
     if (o.width == 0 || o.height == 0) fail("--width/--height: must be at least 1");
+    if (!o.paramsTailPath.empty() && !o.snowParamsPath.empty()) fail("--params-tail (GT_LOD) and --snow-params (GT_SNOW) do not combine");
     if (o.snowDepthPath.empty() != o.snowParamsPath.empty())
         fail("--snow-depth and --snow-params go together: give both or neither");
     if (o.tescPath.empty() != o.tesePath.empty()) fail("--tesc and --tese go together: give both or neither");

@@ -44,6 +44,7 @@ struct Options {
     std::string buffersDir;
     std::optional<std::array<float, 4>> range;  // --range c,d,g,h patches params.f32's first float4
     std::string snowDepthPath, snowParamsPath;  // --snow-depth / --snow-params (GT_SNOW): binding 6, params + 16 bytes
+    std::string paramsTailPath;                 // --params-tail (GT_LOD): bytes appended to TerrainParams
 
     Mode mode = Mode::Tessellated;
     uint32_t patches = 0;

@@ -24,7 +24,8 @@ std::vector<uint8_t> readSized(const std::string& path, size_t exact, size_t mul
 }  // namespace
 
 Inputs loadInputs(const Gpu& gpu, const std::string& dir, const std::optional<std::array<float, 4>>& range,
-                  uint64_t readbackFloats, bool fillNan, const std::string& snowDepth, const std::string& snowParams) {
+                  uint64_t readbackFloats, bool fillNan, const std::string& snowDepth, const std::string& snowParams,
+                  const std::string& paramsTail) {
     const std::string d = dir + "/";
     std::vector<uint8_t> params = readSized(d + "params.f32", kParamsBytes, 0);
     std::vector<uint8_t> camera = readSized(d + "camera.f32", kCameraBytes, 0);
@@ -52,13 +53,22 @@ Inputs loadInputs(const Gpu& gpu, const std::string& dir, const std::optional<st
         in.snowResolution = static_cast<uint32_t>(r);
         depth = readSized(snowDepth, size_t(in.snowResolution) * in.snowResolution * 4, 0);
     }
-    const size_t paramsBytes = kParamsBytes + (in.snow ? kSnowParamsBytes : 0);
+    // GT_LOD: _LodLevels and _Ranges[] follow TerrainParams' ten float4 in the same cbuffer.
+    std::vector<uint8_t> tail;
+    if (!paramsTail.empty()) {
+        tail = readSized(paramsTail, 0, 16);
+        if (tail.empty() || tail.size() > 1024)
+            fail("'" + paramsTail + "': --params-tail holds " + std::to_string(tail.size()) + " bytes; it must hold 16 to 1024");
+    }
+    const size_t paramsBytes = kParamsBytes + (in.snow ? kSnowParamsBytes : 0) + tail.size();
 
     const VkBufferUsageFlags storage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
     in.bindings[kBindingParams] = createHostBuffer(gpu, paramsBytes, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, true);
     std::memcpy(in.bindings[kBindingParams].mapped, in.params.data(), kParamsBytes);
     if (in.snow)
         std::memcpy(static_cast<uint8_t*>(in.bindings[kBindingParams].mapped) + kParamsBytes, snowSize.data(), kSnowParamsBytes);
+    if (!tail.empty())
+        std::memcpy(static_cast<uint8_t*>(in.bindings[kBindingParams].mapped) + kParamsBytes, tail.data(), tail.size());
     in.bindings[kBindingCamera] = createDeviceBuffer(gpu, camera, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
     in.bindings[kBindingControlPoints] = createDeviceBuffer(gpu, points, storage);
     in.bindings[kBindingRegions] = createDeviceBuffer(gpu, regions, storage);

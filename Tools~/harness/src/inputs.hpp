@@ -42,7 +42,7 @@ struct Inputs {
 // goes to binding 6.
 Inputs loadInputs(const Gpu& gpu, const std::string& dir, const std::optional<std::array<float, 4>>& range,
                   uint64_t readbackFloats, bool fillNan, const std::string& snowDepth = "",
-                  const std::string& snowParams = "");
+                  const std::string& snowParams = "", const std::string& paramsTail = "");
 
 void destroyInputs(const Gpu& gpu, Inputs& inputs);
 

@@ -153,7 +153,7 @@ int run(const Options& o) {
     }
 
     Inputs inputs = loadInputs(gpu, o.buffersDir, o.range, o.readbackFloats, o.readbackFillNan, o.snowDepthPath,
-                               o.snowParamsPath);
+                               o.snowParamsPath, o.paramsTailPath);
     // Before the pipeline: its descriptor set points at the camera buffer this replaces.
     std::vector<uint8_t> cameraPath;
     if (!o.cameraPath.empty()) {

@@ -279,6 +279,7 @@ namespace UnityEngine
     public sealed partial class MaterialPropertyBlock                                 // SR:MaterialPropertyBlock
     {
         public void SetVector(int nameID, Vector4 value) { }                          // SR:MaterialPropertyBlock.SetVector
+        public void SetVectorArray(int nameID, Vector4[] values) { }                  // SR:MaterialPropertyBlock.SetVectorArray
         public void SetMatrix(int nameID, Matrix4x4 value) { }                        // SR:MaterialPropertyBlock.SetMatrix
         public void SetBuffer(int nameID, GraphicsBuffer value) { }                   // SR:MaterialPropertyBlock.SetBuffer
         public void Clear() { }                                                       // SR:MaterialPropertyBlock.Clear

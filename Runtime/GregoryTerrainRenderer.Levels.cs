@@ -1,0 +1,62 @@
+using UnityEngine;
+
+namespace GregoryTerrain
+{
+    // Horizon levels (internals.md, "Levels of detail: from the feet to the horizon"): instead of one
+    // range, L nested levels of M x M tiles around each camera's ground point, drawn in one call with
+    // GT_LOD. Per camera and frame the only values sent are the levels' ranges, one float4 each, in
+    // one preallocated array (_Ranges); _LodLevels only when the level count changes.
+    public sealed partial class GregoryTerrainRenderer
+    {
+        /// <summary>Narrowest level, in metres: the level at the feet is the first power-of-two part of the terrain at least this wide.</summary>
+        internal const double FinestLevelMeters = 16.0;
+
+        /// <summary>On-screen length (pixels) of a segment under the levels' continuous octave rule (_NoiseOctaves.z).</summary>
+        internal const float LevelSegmentPixels = 2f;
+
+        readonly TerrainRange[] _levelRanges = new TerrainRange[LodTiles.MaxLevels];
+        readonly Vector4[] _levelVectors = new Vector4[LodTiles.MaxLevels];
+        int _levelCount;      // levels drawn by the last camera (0: none yet)
+        int _sentLevelCount;  // _LodLevels.x last set
+
+        /// <summary>Whether the draw uses the levels: the setting, with the tessellator (the fallback grid draws one range).</summary>
+        bool LevelsOn(bool fallback) => horizonLevels && !fallback;
+
+        /// <summary>The levels' settings check: M even and at least LodLevels.MinTiles. Null when drawable.</summary>
+        string LevelsSettingsError()
+        {
+            if (tiles % 2 != 0 || tiles < LodLevels.MinTiles)
+                return $"tiles ({tiles}) must be even and at least {LodLevels.MinTiles} with Horizon Levels (a finer level covers M / 2 tiles of the coarser one)";
+            return null;
+        }
+
+        /// <summary>
+        /// Lays the levels out around <paramref name="cam"/>'s ground point (its position in terrain
+        /// space, the Transform's scale giving the metres) and sends their ranges relative to the
+        /// origin: one float4 per level. Returns how many tiles the draw holds (L x M^2).
+        /// </summary>
+        int PushLevels(Camera cam)
+        {
+            Vector3 local = transform.InverseTransformPoint(cam.transform.position);   // object space: (x, height, y)
+            double metres = Mathf.Abs(transform.lossyScale.x);
+            if (!(metres > 0.0)) metres = 1.0;
+            int n = LodLevels.FinestExponent(metres, FinestLevelMeters);
+            n = System.Math.Min(n, LodTiles.MaxLevels - 1);
+            int count = LodLevels.Layout(new Double2(local.x, local.z), n, tiles, _levelRanges);
+            for (int k = 0; k < count; k++)
+            {
+                RangeMapping.EncodeRange(_levelRanges[k], _origin.Origin, out Float4 r, out _);
+                _levelVectors[k] = ToVector(r);
+            }
+            _props.SetVectorArray(ShaderIds.Ranges, _levelVectors);
+            _setLastPrepare.Add(ShaderIds.Ranges);
+            if (count != _sentLevelCount)
+            {
+                SetVector(ShaderIds.LodLevels, new Vector4(count, 0f, 0f, 0f));
+                _sentLevelCount = count;
+            }
+            _levelCount = count;
+            return count * tiles * tiles;
+        }
+    }
+}

@@ -1,0 +1,44 @@
+using System;
+using System.IO;
+
+namespace GregoryTerrain.Rig
+{
+    /// <summary>
+    /// gt-cli lod-scene: the harness inputs of a ground-level view drawn with the levels of detail
+    /// (<see cref="LodScene"/>): a terrain --terrain-m metres wide (default 100 km), the camera --eye-m
+    /// above the surface (default 2 m), M = --tiles, adaptive factors at --target-pixels (or a uniform
+    /// --factor), the continuous octave rule at --segment-pixels, the camera's screen --width x --height,
+    /// over --grid FILE or the demo grid (gt demo's terrain, fitted to 129 x 129 samples).
+    /// Writes the --buffers folder and lod_tail.f32 (--params-tail) into --out, and prints
+    /// "levels L", "patches N" and "ranges ..." for Tools~/rig/lod-bench.sh.
+    /// </summary>
+    static class LodSceneCommand
+    {
+        public static int Run(Args a)
+        {
+            string dir = a.String("out");
+            PatchGrid grid = a.Flag("grid") ? PatchGridJson.ReadFile(a.String("grid"))
+                : HeightmapFitter.Fit(DemoGridCommand.Heightmap(129), 129, 129, 5, 5).Grid;   // the demo's terrain
+            var s = new LodScene
+            {
+                TerrainMeters = a.Double("terrain-m", 100000),
+                EyeMeters = a.Double("eye-m", 2),
+                FinestMeters = a.Double("finest-m", 16),
+                Tiles = a.Int("tiles", 16),
+                Factor = a.Int("factor", 0),
+                TargetPixels = (float)a.Double("target-pixels", 1),
+                SegmentPixels = (float)a.Double("segment-pixels", 2),
+                Width = a.Int("width", 1920),
+                Height = a.Int("height", 1080),
+            };
+            double[] ground = a.Doubles("ground", 2, "0.37,0.52");
+            s.Ground = new Double2(ground[0], ground[1]);
+            s.Build(grid).Write(dir);
+            Console.WriteLine($"levels {s.LevelCount}");
+            Console.WriteLine($"patches {s.Patches}");
+            Console.WriteLine($"level0_m {s.TerrainMeters * s.Levels[0].Width:G6}");
+            Console.WriteLine($"tail {Path.Combine(dir, "lod_tail.f32")}");
+            return 0;
+        }
+    }
+}

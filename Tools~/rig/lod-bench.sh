@@ -1,0 +1,49 @@
+# gt lod-bench [--device SUBSTR] [--frames N] [--png FILE] [gt-cli lod-scene options...]: the levels of
+# detail (GT_LOD, internals.md "Levels of detail") at ground level. Defaults: a 100 km terrain (the
+# demo grid), the camera 2 m above the surface looking ahead, M = 16 tiles a level, adaptive factors
+# at a 1 px target, the continuous octave rule at 2 px segments, 1920 x 1080. Compiles the lod+noise
+# variant, writes the scene with `gt-cli lod-scene` into $BUILD_DIR/lod-run, draws it with the harness
+# and prints, one per line: "lod levels L", "lod patches N" (L x M^2 tiles in one draw), "lod triangles
+# T" (clipping invocations: triangles the tessellator made that reached the clipper), "lod
+# triangles_drawn T" (clipping primitives: those left after clipping), "lod tess_evaluations E", and
+# with --frames the harness's "time ..." lines (GPU frame times; lavapipe's are functional only).
+# Measures only: no bound is asserted here (LodGpuTests asserts the seams and the camera step).
+source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
+device=(); frames=1; png=(); scene=()
+while [ $# -gt 0 ]; do
+  case "$1" in
+    --device) device=(--device "${2:?--device needs a name substring}"); shift ;;
+    --frames) frames="${2:?--frames needs a count}"; shift ;;
+    --png) png=(--png "${2:?--png needs a file}"); shift ;;
+    --*) scene+=("$1" "${2:?$1 needs a value}"); shift ;;
+    *) die "lod-bench: unknown argument '$1'" ;;
+  esac
+  shift
+done
+harness="$BUILD_DIR/harness/gt-harness"
+cli="$BUILD_DIR/gt-cli/gt-cli"
+[ -x "$harness" ] && [ -x "$cli" ] || die "harness or gt-cli not built (run: gt setup)"
+bash "$RIG_DIR/shaders.sh" --only lod+noise >/dev/null || die "the lod+noise variant does not compile (gt shaders --only lod+noise)"
+spv="$BUILD_DIR/spirv/lod+noise"
+run="$BUILD_DIR/lod-run"
+rm -rf "$run"; mkdir -p "$run"
+"$cli" lod-scene --out "$run" "${scene[@]}" > "$run/scene.txt"
+levels=$(awk '$1 == "levels" { print $2 }' "$run/scene.txt")
+patches=$(awk '$1 == "patches" { print $2 }' "$run/scene.txt")
+width=1920; height=1080
+for ((i = 0; i < ${#scene[@]}; i += 2)); do
+  [ "${scene[i]}" = --width ] && width="${scene[i+1]}"
+  [ "${scene[i]}" = --height ] && height="${scene[i+1]}"
+done
+timing=(); [ "$frames" -gt 1 ] && timing=(--frames "$frames" --warmup 2 --timestamps)
+"$harness" --vert "$spv/vert.spv" --tesc "$spv/tesc.spv" --tese "$spv/tese.spv" --frag "$spv/frag.spv" \
+  --buffers "$run" --params-tail "$run/lod_tail.f32" --patches "$patches" --width "$width" --height "$height" \
+  --stats "${timing[@]}" "${png[@]}" "${device[@]}" > "$run/harness.txt"
+stat() { awk -v k="$1" '$1 == "stat" && $2 == k { print $3 }' "$run/harness.txt"; }
+echo "lod levels $levels"
+echo "lod patches $patches"
+echo "lod level0_m $(awk '$1 == "level0_m" { print $2 }' "$run/scene.txt")"
+echo "lod triangles $(stat clipping_invocations)"
+echo "lod triangles_drawn $(stat clipping_primitives)"
+echo "lod tess_evaluations $(stat tessellation_evaluation_shader_invocations)"
+grep '^time ' "$run/harness.txt" || true
