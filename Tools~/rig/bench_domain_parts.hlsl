@@ -29,7 +29,7 @@
 //   PART_MINIMAL      a minimal Gregory evaluator drawing the same triangles: the patch of a uniform
 //                     grid by multiply, q and (u, v) in plain float, the Gregory position and normal,
 //                     the package's varyings (what the plain stage is measured against)
-#include "../../Shaders/Rig/TerrainRig.hlsl"
+#include "TerrainRig.hlsl"
 
 #if defined(PART_PLAIN) || defined(PART_MINIMAL)
     #define PART_NO_OCTAVES
@@ -121,8 +121,8 @@ PartFactors hull_const_part(InputPatch<TileCorner, 4> corners)
     o.inside[0] = f.inside[0];
     o.inside[1] = f.inside[1];
     uint slot = corners[0].drawPatch;
-    float2 q0 = TerrainPointApprox(TileToTerrainPoint(slot, float2(0.0, 0.0)));
-    float2 q1 = TerrainPointApprox(TileToTerrainPoint(slot, float2(1.0, 1.0)));
+    float2 q0 = TerrainPointApprox(TileToTerrainPoint(FrameTileLayout(), slot, float2(0.0, 0.0)));
+    float2 q1 = TerrainPointApprox(TileToTerrainPoint(FrameTileLayout(), slot, float2(1.0, 1.0)));
     uint n = GridColumns(), m = GridRows();
     uint i0 = PatchGridFindInterval(0u, n, q0.x), i1 = PatchGridFindInterval(0u, n, q1.x);
     uint j0 = PatchGridFindInterval(n + 1u, m, q0.y), j1 = PatchGridFindInterval(n + 1u, m, q1.y);
@@ -171,7 +171,7 @@ TerrainVaryings domain_part(PART_FACTORS factors, const OutputPatch<TileCorner, 
     q.originHi = float2(0.0, 0.0);
     q.local = _Range.xy + o * (_Range.zw - _Range.xy);
 #else
-    q = TileToTerrainPoint(drawPatch, tess);
+    q = TileToTerrainPoint(FrameTileLayout(), drawPatch, tess);
 #endif
 #if defined(PART_NO_LOOKUP)
     float2 qa = saturate(TerrainPointApprox(q));
@@ -199,7 +199,7 @@ TerrainVaryings domain_part(PART_FACTORS factors, const OutputPatch<TileCorner, 
     position += PatchReference(patch);
     float absoluteHeight = position.z;
 #if !defined(PART_NO_OCTAVES)
-    float octaves = OctaveCount(TileLayoutWidth(), NoiseVerticesAcross(), NoiseSettings(), MaxNoiseOctaves());
+    float octaves = OctaveCount(LayoutWidth(FrameTileLayout()), NoiseVerticesAcross(), NoiseSettings(), MaxNoiseOctaves());
     float2 gradient;
     float noiseHeight = PartOctaveNoise(q, NoiseSettings(), octaves, gradient);
     position.z += noiseHeight;
