@@ -21,8 +21,8 @@
     #include "LodTiles.hlsl"
     // The renderer never turns GT_LOD on with GT_VERTEX_CACHE (the cache path then wins: one range)
     // and the harness not with GT_SNOW, but Unity compiles every multi_compile combination.
-    #if defined(GT_PAPER_MODE)
-        #error "GT_LOD (levels of detail) draws tiles, not the paper's per-patch mode"
+    #if defined(GT_EXTEND_DRAW_PATCHES)
+        #error "GT_LOD (levels of detail) draws tiles, not an extension's own draw patches"
     #endif
 #endif
 

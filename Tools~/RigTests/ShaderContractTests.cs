@@ -293,7 +293,7 @@ namespace GregoryTerrain.Rig.Tests
                     if (inBlock && Regex.IsMatch(line, @"^\s*(\}|GT_CBUFFER_END)")) { inBlock = false; continue; }
                     Match m = Regex.Match(line, @"^\s*(RW)?StructuredBuffer\s*<[^>]+>\s+(_\w+)");
                     if (m.Success) { names.Add(m.Groups[2].Value); continue; }
-                    m = Regex.Match(line, inBlock ? @"^\s*(?:float|uint|int|bool)\w*\s+(_\w+)\s*;" : @"^(?:float|uint|int|bool)\w*\s+(_\w+)\s*;");
+                    m = Regex.Match(line, inBlock ? @"^\s*(?:float|uint|int|bool)\w*\s+(_\w+)\s*(?:\[[^\]]*\])?\s*;" : @"^(?:float|uint|int|bool)\w*\s+(_\w+)\s*(?:\[[^\]]*\])?\s*;");
                     if (m.Success) names.Add(m.Groups[1].Value);
                 }
             }
