@@ -219,7 +219,7 @@ namespace GregoryTerrain.EditorTools
             if (e.type == EventType.MouseDown && e.button == 0 && !e.alt &&
                 r.Raycast(HandleUtility.GUIPointToWorldRay(e.mousePosition), float.PositiveInfinity, out Vector3 hit, out _, out _))
             {
-                Vector3 local = r.transform.InverseTransformPoint(hit);   // object (x, height, y)
+                Double3 local = r.WorldToTerrainObject(hit);   // object (x, height, y)
                 _nearPatch = grid.FindPatch(local.x, local.z);
                 e.Use();
             }

@@ -157,16 +157,17 @@ namespace GregoryTerrain.EditorTools
             _undoGroup = Undo.GetCurrentGroup();
             PatchGridAssetUndo.MoveLegacyDataToBlocks(grid, StrokeName);
             _strokeGrid = grid.ToPatchGrid();
-            _flattenTarget = renderer.transform.InverseTransformPoint(point).y;   // object y is terrain height z
+            _flattenTarget = (float)renderer.WorldToTerrainObject(point).y;   // object y is terrain height z
             Dab(renderer, grid, point, Event.current.shift);
         }
 
         void Dab(GregoryTerrainRenderer renderer, PatchGridAsset grid, Vector3 point, bool invert)
         {
             _lastDab = point;
-            Vector3 local = renderer.transform.InverseTransformPoint(point);
-            Vector3 scale = renderer.transform.lossyScale;
-            float sx = Mathf.Max(Mathf.Abs(scale.x), 1e-12f), sy = Mathf.Max(Mathf.Abs(scale.y), 1e-12f);
+            Double3 o = renderer.WorldToTerrainObject(point);
+            Vector3 local = new Vector3((float)o.x, (float)o.y, (float)o.z);
+            Double3 scale = renderer.WorldUnitsPerObjectUnit;   // Terrain Size, Height Scale and the Transform
+            float sx = Mathf.Max((float)scale.x, 1e-12f), sy = Mathf.Max((float)scale.y, 1e-12f);
             bool lower = (Mode == SculptMode.Lower) != invert;
             BrushDab dab = Mode switch
             {
@@ -204,7 +205,7 @@ namespace GregoryTerrain.EditorTools
 
         static int PatchUnder(GregoryTerrainRenderer renderer, PatchGridAsset grid, Vector3 point)
         {
-            Vector3 local = renderer.transform.InverseTransformPoint(point);   // object (x, height, y)
+            Double3 local = renderer.WorldToTerrainObject(point);   // object (x, height, y)
             return grid.FindPatch(local.x, local.z);
         }
 

@@ -31,11 +31,11 @@ namespace GregoryTerrain
             if (target == null) return;
             Camera cam = followCamera != null ? followCamera : Camera.main;
             if (cam == null) return;
-            Transform t = target.transform;
-            // Terrain object space is (x, height, y): q = (object x, object z).
-            Vector3 camOS = t.InverseTransformPoint(cam.transform.position);
-            Vector3 fwdOS = t.InverseTransformDirection(cam.transform.forward);
-            Vector2 ahead = new Vector2(fwdOS.x, fwdOS.z);
+            // Terrain object space is (x, height, y): q = (object x, object z), through the renderer's
+            // world frame (Terrain Size and the floating-origin offset included).
+            Double3 camOS = target.WorldToTerrainObject(cam.transform.position);
+            Double3 fwdOS = target.WorldToTerrainObject(cam.transform.position + cam.transform.forward) - camOS;
+            Vector2 ahead = new Vector2((float)fwdOS.x, (float)fwdOS.z);
             if (ahead.sqrMagnitude > 1e-12f) ahead.Normalize();
             double cx = camOS.x + ahead.x * lookAhead * viewDistance;
             double cy = camOS.z + ahead.y * lookAhead * viewDistance;

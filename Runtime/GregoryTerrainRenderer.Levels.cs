@@ -31,14 +31,16 @@ namespace GregoryTerrain
         }
 
         /// <summary>
-        /// Lays the levels out around <paramref name="cam"/>'s ground point (its position in terrain
-        /// space, the Transform's scale giving the metres) and sends their ranges relative to the
-        /// origin: one float4 per level. Returns how many tiles the draw holds (L x M^2).
+        /// Lays the levels out around <paramref name="cam"/>'s ground point and sends their ranges
+        /// relative to the origin: one float4 per level. The ground point and the terrain's width in
+        /// metres come from <see cref="WorldFrame"/> (Transform, Terrain Size, floating-origin offset),
+        /// as the draw matrices, the queries and the collider do. Returns how many tiles the draw holds
+        /// (L x M^2).
         /// </summary>
         int PushLevels(Camera cam)
         {
-            Vector3 local = transform.InverseTransformPoint(cam.transform.position);   // object space: (x, height, y)
-            double metres = Mathf.Abs(transform.lossyScale.x);
+            Double3 local = WorldToTerrainObject(cam.transform.position);   // object space: (x, height, y)
+            double metres = WorldUnitsPerObjectUnit.x;                      // world units across the terrain's x
             if (!(metres > 0.0)) metres = 1.0;
             int n = LodLevels.FinestExponent(metres, FinestLevelMeters);
             n = System.Math.Min(n, LodTiles.MaxLevels - 1);

@@ -239,6 +239,19 @@ namespace GregoryTerrain
             }
         }
 
+        /// <summary>A world point in the terrain's object space (x, height, y; the unit square across), through <see cref="WorldFrame"/>.</summary>
+        internal Double3 WorldToTerrainObject(Vector3 world) => WorldFrame.WorldToObject(new Double3(world.x, world.y, world.z));
+
+        /// <summary>An object point (x, height, y) in the world, through <see cref="WorldFrame"/>.</summary>
+        internal Vector3 TerrainObjectToWorld(Double3 o)
+        {
+            Double3 w = WorldFrame.ObjectToWorld(o);
+            return new Vector3((float)w.x, (float)w.y, (float)w.z);
+        }
+
+        /// <summary>World units per object unit along object x, height and y (Terrain Size, Height Scale and the Transform's scale).</summary>
+        internal Double3 WorldUnitsPerObjectUnit => WorldFrame.ObjectScale;
+
         // The serialized values can be anything the Inspector or a scene file holds: a bad one draws
         // at 1 (logged by OnValidate) rather than throwing from every frame.
         Double2 ValidSize() => terrainSize.x > 0f && terrainSize.y > 0f && float.IsFinite(terrainSize.x) && float.IsFinite(terrainSize.y)

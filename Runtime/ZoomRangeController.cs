@@ -135,11 +135,10 @@ namespace GregoryTerrain
 
         void PlaceCamera(TerrainRange r, bool recordUndo)
         {
-            Transform t = target.transform;
-            // Object space is (x, height, y); the range's centre at mid height.
-            Vector3 centreOS = new Vector3((float)(0.5 * (r.c + r.g)), 0f, (float)(0.5 * (r.d + r.h)));
-            Vector3 centreWS = t.TransformPoint(centreOS);
-            float worldWidth = (float)r.Width * t.lossyScale.x;
+            // Object space is (x, height, y); the range's centre at mid height, through the renderer's
+            // world frame (Terrain Size and the floating-origin offset included).
+            Vector3 centreWS = target.TerrainObjectToWorld(new Double3(0.5 * (r.c + r.g), 0.0, 0.5 * (r.d + r.h)));
+            float worldWidth = (float)(r.Width * target.WorldUnitsPerObjectUnit.x);
             float halfFov = 0.5f * viewCamera.fieldOfView * Mathf.Deg2Rad;
             float distance = 0.5f * worldWidth / Mathf.Tan(halfFov) * 1.1f;
             Quaternion rot = Quaternion.Euler(cameraPitch, 0f, 0f);
