@@ -35,7 +35,7 @@ uint VertexCacheSlotsPerTile(uint limit) { return (limit + 1u) * (limit + 1u) + 
 // Lanes of a CacheTileFactors group (a group a tile, a lane for each of its GT_TILE_FACTOR_SAMPLES);
 // lanes of a CacheTileVertices group, and the most passes it makes over its tile's points. Why
 // 128 x 4: fewer groups than 64 x 4 for the same lanes, which costs less where most find nothing to
-// do (a camera move, many tiles) and no more elsewhere (performance.md, "Vertex groups of 128 lanes").
+// do (a camera move, many tiles) and no more elsewhere (performance.md, "Choices in the shaders, measured").
 #define GT_VERTEX_CACHE_GROUP 64u
 #define GT_VERTEX_CACHE_VERTEX_GROUP 128u
 #define GT_VERTEX_CACHE_PASSES 4u

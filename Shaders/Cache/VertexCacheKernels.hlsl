@@ -145,7 +145,7 @@ float4 CachedTileFactorSample(uint tile, uint s, bool cellMoved)
 // Why so wide: the factors are a chain of surface evaluations, and the chain's length is the pass's.
 // One lane a tile: a chain of ~50 evaluations; one lane a piece: ~11; one sample a lane: 1, the
 // shortest pass (performance.md, "Choices in the shaders, measured"). Why the held way: that one
-// evaluation is still most of a pan's pre-pass (performance.md, "Anchored tiles").
+// evaluation is still most of a pan's pre-pass (performance.md, "Choices in the shaders, measured").
 [numthreads(64, 1, 1)]
 void CacheTileFactors(uint3 group : SV_GroupID, uint lane : SV_GroupIndex)
 {

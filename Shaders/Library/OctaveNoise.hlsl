@@ -57,7 +57,7 @@ float OctaveNoise(TerrainPoint p, float4 noise, float octaveCount, out float2 gr
     // [unroll], not [loop]: unrolled, each octave's stream offset is a constant (two hashes of k
     // per octave folded away) and the early-out is a uniform branch. Same arithmetic in the same
     // order, so the C# mirror is unchanged. It made the noise measurably cheaper (performance.md,
-    // "What was tried on the domain stage's cost").
+    // "Choices in the shaders, measured").
     [unroll] for (uint k = 0u; k < GT_MAX_OCTAVES; ++k)
     {
         float fade = saturate(octaveCount - float(k));

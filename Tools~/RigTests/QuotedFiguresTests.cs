@@ -1,6 +1,7 @@
 // The performance figures the README and the manual quote are the latest full run's: every ratio
-// they quote must be a cell of the committed headline table (Documentation~/performance/bench_table.md,
-// "## Headline ratios", written by `gt bench --docs Tools~/bench/runs/h200` from the raw run), so a
+// they quote must be a cell of the committed headline table (Tools~/bench/runs/h200/bench_table.md,
+// "## Headline ratios", written by `gt bench --docs Tools~/bench/runs/h200` from the raw run, beside
+// it), and the manual's summary tables must be what that command writes into performance.md, so a
 // figure left from an older run fails here instead of reading as current.
 using System;
 using System.Collections.Generic;
@@ -17,6 +18,9 @@ namespace GregoryTerrain.Rig.Tests
         const string Headline = "## Headline ratios";
 
         static string Read(params string[] parts) => File.ReadAllText(PackageRoot.Combine(parts));
+
+        /// <summary>The headline run's full tables: with the bench tool, outside what the package ships.</summary>
+        static readonly string[] BenchTable = { "Tools~", "bench", "runs", "h200", "bench_table.md" };
 
         /// <summary>The headline table's rows: path name -> ratio cells ("0.996x", ...).</summary>
         internal static Dictionary<string, string[]> HeadlineRows(string benchTable)
@@ -54,7 +58,7 @@ namespace GregoryTerrain.Rig.Tests
         Dictionary<string, string[]> _headline;
 
         [OneTimeSetUp]
-        public void ReadHeadline() => _headline = HeadlineRows(Read("Documentation~", "performance", "bench_table.md"));
+        public void ReadHeadline() => _headline = HeadlineRows(Read(BenchTable));
 
         [Test]
         public void ReadmePerformanceSentenceQuotesTheLatestRun()
@@ -87,6 +91,27 @@ namespace GregoryTerrain.Rig.Tests
                 Assert.That(_headline.ContainsKey(name), $"performance.md's In short row \"{name}\" is not a row of the headline table");
                 Assert.That(cells, Is.EqualTo(_headline[name]), $"performance.md's In short row \"{name}\" differs from the headline table (stale?)");
             }
+        }
+
+        [Test]
+        public void PerformancePageSummaryTablesAreWhatGtBenchDocsWrites()
+        {
+            string page = Read("Documentation~", "performance.md");
+            Assert.That(BenchDocs.Rewrite(page, Read(BenchTable)), Is.EqualTo(page),
+                "performance.md's summary tables (<!-- bench:NAME --> blocks) differ from the committed run's bench_table.md: run Tools~/gt bench --docs Tools~/bench/runs/h200");
+        }
+
+        [Test]
+        public void AStaleSummaryTableIsFound()
+        {
+            string page = Read("Documentation~", "performance.md"), table = Read(BenchTable);
+            const string row = "| cached adaptive | 16 | - | 1 | 64 | 0 | ";   // its triangle count follows
+            int at = table.IndexOf(row, StringComparison.Ordinal);
+            Assert.That(at, Is.GreaterThanOrEqualTo(0), "the committed run has no cached adaptive 1 px row at 16 tiles");
+            string edited = table.Substring(0, at + row.Length) + "1" + table.Substring(at + row.Length);
+            Assert.That(BenchDocs.Rewrite(page, edited), Is.Not.EqualTo(page), "a changed cell of the first table reaches the page's accuracy table");
+            var e = Assert.Throws<ArgumentException>(() => BenchDocs.Rewrite("<!-- bench:headline -->\n| a |\n", table));
+            Assert.That(e.Message, Does.Contain("/bench:headline"));
         }
 
         [Test]

@@ -3,7 +3,8 @@
 #   gt bench [--quick] --prepare DIR       plan + harness + SPIR-V + scripts into DIR, to run elsewhere:
 #                                          bash DIR/bench_run.sh DIR DIR/gt-harness DIR/spirv OUT [--device NAME]
 #   gt bench [--quick] --report RAW [--plan DIR]  tables of a run's raw output (results.txt, readback.tar)
-#   gt bench --docs RAW                     the tables and the plot of Documentation~/performance.md from RAW
+#   gt bench --docs RAW [--plan DIR]        RAW/bench_table.md (the full tables, kept with the run), and the
+#                                          summary tables and the plot of Documentation~/performance.md
 #                                          (the headline run: Tools~/bench/runs/h200)
 # --quick: small sizes for lavapipe (CI, about 2 minutes). Without --device the first device is used
 # (lavapipe here: set VK_DRIVER_FILES to choose).
@@ -71,16 +72,16 @@ report_of() {  # report_of RAW PLAN
 
 if [ -n "$docs" ]; then
   [ -n "$plan" ] || { plan="$bench/plan-docs"; make_plan "$plan"; }
-  # The table's data (.tsv) stays beside the raw run (Tools~/bench/runs/...); the manual gets only
-  # the table (.md) and the plot.
-  out="$PKG_DIR/Documentation~/performance"
-  mkdir -p "$out"
+  # The full table (.md) and its data (.tsv) stay beside the raw run (Tools~/bench/runs/...), outside
+  # what the package ships; the manual gets its summary tables (the marked blocks of performance.md,
+  # gt-cli bench-docs) and the plot.
   "${cli[@]}" bench-report --plan "$plan" --raw "$docs" --grid "$grid" --tsv "$docs/bench_table.tsv" > /dev/null
-  cp "$docs/bench_table.md" "$out/bench_table.md"; rm -f "$docs/bench_table.md"
+  "${cli[@]}" bench-docs --table "$docs/bench_table.md" --page "$PKG_DIR/Documentation~/performance.md"
+  img="$PKG_DIR/Documentation~/images/accuracy_vs_time.png"
   py=python3; [ -x /usr/bin/python3 ] && /usr/bin/python3 -c "import matplotlib" 2>/dev/null && py=/usr/bin/python3   # the distribution's matplotlib
-  "$py" "$RIG_DIR/bench_plot.py" "$docs/bench_table.tsv" "$out/accuracy_vs_time.png"
-  "$py" "$RIG_DIR/png_palette.py" "$out/accuracy_vs_time.png" "$out/accuracy_vs_time.png"   # the manual's pictures stay small
-  cat "$out/bench_table.md"
+  "$py" "$RIG_DIR/bench_plot.py" "$docs/bench_table.tsv" "$img"
+  "$py" "$RIG_DIR/png_palette.py" "$img" "$img"   # the manual's pictures stay small
+  cat "$docs/bench_table.md"
   exit 0
 fi
 if [ -n "$report" ]; then

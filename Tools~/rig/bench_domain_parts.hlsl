@@ -2,7 +2,7 @@
 // (noise + height colour, TerrainVertex.hlsl's tile path with the range origin at 0, without
 // its deep-zoom branch) rewritten from
 // the same library functions, with one piece taken out per PART_* define, so that the breakdown
-// table of performance.md ("Where the domain stage's time goes") reads the cost of each piece as
+// table of the run's bench_table.md ("Where the domain stage's time goes") reads the cost of each piece as
 // (full - part) in one run. Compiled by Tools~/rig/bench.sh with the fair variant's keywords
 // (GT_NOISE GT_HEIGHT_COLOR), entry point domain_part, one SPIR-V per part (bench_parts.txt).
 // A knocked-out piece is replaced by the cheapest stand-in that keeps the rest of the work alive

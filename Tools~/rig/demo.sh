@@ -4,12 +4,13 @@
 # the same view (the paper's zoom view). Prints vertices and triangles per range (pipeline
 # statistics: tessellation evaluation invocations and clipping invocations, the triangles entering the clipper).
 #   gt demo [--docs] [--dem] [--no-setup] [--device SUBSTR] [--tiles M] [--factor F] [--width W] [--height H]
-# Writes .build/demo/demo_g<g>.png; with --docs also Documentation~/images/demo_g<g>.png (small indexed PNGs, png_palette.py).
+# Writes .build/demo/demo_g<g>.png; with --docs also Documentation~/images/demo_g<g>.png (small indexed PNGs, png_palette.py;
+# g < 1 at half size, the thumbnails of the README's row of five).
 # --dem: instead, the real-data crop of the tests (Tools~/RigTests/Data/dem/N48E009_east.hgt, SRTM3, 241 x 241
 # samples, 14.7 km across) fitted with 32 x 32 patches, heights x 3, rendered whole at g = h = 1 without
 # noise: .build/demo/demo_dem.png (with --docs also Documentation~/images/demo_dem.png).
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
-# 400 x 300: the manual ships these pictures, so they stay small (about 30 KB each).
+# 400 x 300: the manual ships these pictures, so they stay small (about 30 KB; the half-size ones 10 KB).
 docs=0 dem=0 setup=1 device="" tiles=16 factor=15 width=400 height=300
 while [ $# -gt 0 ]; do
   case "$1" in
@@ -78,7 +79,9 @@ for g in 1.0 0.5 0.2 0.1 0.02; do
   printf '%-6s %-24s %12s %12s %14s\n' "$g" "0,0,$g,$g" "$verts" "$tris" "$nonsky"
   if [ "$docs" = 1 ]; then
     mkdir -p "$PKG_DIR/Documentation~/images"
-    python3 "$RIG_DIR/png_palette.py" "$out/demo_g$g.png" "$PKG_DIR/Documentation~/images/demo_g$g.png"
+    # g < 1 only appears in the README's row of five, where half size is what shows: 200 x 150.
+    half=(); [ "$g" = 1.0 ] || half=(--half)
+    python3 "$RIG_DIR/png_palette.py" "$out/demo_g$g.png" "$PKG_DIR/Documentation~/images/demo_g$g.png" "${half[@]}"
   fi
 done
 say "images: $out/demo_g*.png$([ "$docs" = 1 ] && echo " and Documentation~/images/demo_g*.png")"

@@ -1,11 +1,15 @@
 #!/usr/bin/env python3
-"""Rewrites an 8-bit RGB or RGBA PNG as an indexed PNG of at most N colours (default 256), to keep
-the manual's pictures small: the palette by median cut over the picture's colours (weighted by how
-often each occurs), each pixel mapped to the nearest palette colour, no dithering (renders and plots
-have smooth shading or flat areas, which dithering only makes noisier), zlib level 9. Transparent
-pixels are composed over white. Standard library only.
+"""Rewrites an 8-bit RGB, RGBA or indexed PNG as an indexed PNG of at most N colours (default 256),
+to keep the manual's pictures small: the palette by median cut over the picture's colours (weighted
+by how often each occurs), each pixel mapped to the nearest palette colour, no dithering (renders and
+plots have smooth shading or flat areas, which dithering only makes noisier), zlib level 9. An
+indexed picture of at most N colours comes back with the same pixels (re-encoding it is lossless).
+Transparent pixels are composed over white. --half first averages each 2 x 2 block (a thumbnail at
+half the width and height). The palette in median-cut order or by brightness (neighbouring pixels of a
+smooth shade then have neighbouring indices), the rows with no filter or with each row's best
+filter: whichever of the four compresses smallest. Standard library only.
 
-Usage: png_palette.py IN.png OUT.png [COLOURS]
+Usage: png_palette.py IN.png OUT.png [COLOURS] [--half]
 """
 import struct, sys, zlib
 from collections import Counter
@@ -14,17 +18,19 @@ from collections import Counter
 def read_rgb(path):
     data = open(path, "rb").read()
     assert data[:8] == b"\x89PNG\r\n\x1a\n", f"{path}: not a PNG"
-    i, idat, w, h, colour = 8, b"", 0, 0, 0
+    i, idat, w, h, colour, plte = 8, b"", 0, 0, 0, b""
     while i < len(data):
         n, kind = struct.unpack(">I4s", data[i:i + 8])
         body = data[i + 8:i + 8 + n]
         if kind == b"IHDR":
             w, h, depth, colour, _, _, interlace = struct.unpack(">IIBBBBB", body)
-            assert depth == 8 and colour in (2, 6) and interlace == 0, f"{path}: expected 8-bit RGB or RGBA, not interlaced"
+            assert depth == 8 and colour in (2, 3, 6) and interlace == 0, f"{path}: expected 8-bit RGB, RGBA or indexed, not interlaced"
+        elif kind == b"PLTE":
+            plte = body
         elif kind == b"IDAT":
             idat += body
         i += 12 + n
-    bpp = 3 if colour == 2 else 4
+    bpp = {2: 3, 3: 1, 6: 4}[colour]
     raw, stride = zlib.decompress(idat), 1 + bpp * w
     prev, pixels = bytearray(bpp * w), []
     for y in range(h):
@@ -43,11 +49,23 @@ def read_rgb(path):
         prev = row
         for x in range(w):
             px = row[bpp * x:bpp * x + bpp]
-            if bpp == 4:  # over white
+            if bpp == 1:
+                px = plte[3 * px[0]:3 * px[0] + 3]
+            elif bpp == 4:  # over white
                 al = px[3]
                 px = bytes((v * al + 255 * (255 - al) + 127) // 255 for v in px[:3])
             pixels.append(bytes(px[:3]))
     return w, h, pixels
+
+
+def half(w, h, pixels):
+    """Each 2 x 2 block averaged (rounded); an odd last row or column is dropped."""
+    w2, h2, out = w // 2, h // 2, []
+    for y in range(h2):
+        for x in range(w2):
+            q = (pixels[2 * y * w + 2 * x], pixels[2 * y * w + 2 * x + 1], pixels[(2 * y + 1) * w + 2 * x], pixels[(2 * y + 1) * w + 2 * x + 1])
+            out.append(bytes((sum(p[ch] for p in q) + 2) // 4 for ch in range(3)))
+    return w2, h2, out
 
 
 def median_cut(counts, n):
@@ -77,6 +95,13 @@ def median_cut(counts, n):
 
 
 def write_indexed(path, w, h, pixels, palette):
+    """The smallest of: the palette in median-cut order or by brightness, each with no filter or each row's best."""
+    by_brightness = sorted(palette, key=lambda c: (c[0] * 3 + c[1] * 4 + c[2] * 2, c))
+    png = min((encode_indexed(w, h, pixels, p) for p in (palette, by_brightness)), key=len)
+    open(path, "wb").write(png)
+
+
+def encode_indexed(w, h, pixels, palette):
     index, cache = bytearray(), {}
     for px in pixels:
         j = cache.get(px)
@@ -84,22 +109,43 @@ def write_indexed(path, w, h, pixels, palette):
             j = min(range(len(palette)), key=lambda i: (palette[i][0] - px[0]) ** 2 * 3 + (palette[i][1] - px[1]) ** 2 * 4 + (palette[i][2] - px[2]) ** 2 * 2)
             cache[px] = j
         index.append(j)
-    raw = bytearray()
+    def filtered(row, prev, kind):  # PNG filter types 0-4 for one byte a pixel
+        out = bytearray(w)
+        for k in range(w):
+            a, b, c = (row[k - 1] if k else 0), prev[k], (prev[k - 1] if k else 0)
+            if kind == 0: p = 0
+            elif kind == 1: p = a
+            elif kind == 2: p = b
+            elif kind == 3: p = (a + b) // 2
+            else:
+                e = a + b - c
+                p = a if abs(e - a) <= abs(e - b) and abs(e - a) <= abs(e - c) else (b if abs(e - b) <= abs(e - c) else c)
+            out[k] = (row[k] - p) & 255
+        return out
+    plain, adaptive, prev = bytearray(), bytearray(), bytearray(w)
     for y in range(h):
-        raw.append(0)
-        raw += index[y * w:(y + 1) * w]
+        row = index[y * w:(y + 1) * w]
+        plain += b"\0" + row
+        # each row's filter by the usual heuristic: the smallest sum of the bytes read as signed
+        kind, best = min(((k, filtered(row, prev, k)) for k in range(5)), key=lambda kb: sum(min(v, 256 - v) for v in kb[1]))
+        adaptive += bytes([kind]) + best
+        prev = row
+    idat = min((zlib.compress(bytes(plain), 9), zlib.compress(bytes(adaptive), 9)), key=len)
     def chunk(kind, body):
         return struct.pack(">I", len(body)) + kind + body + struct.pack(">I", zlib.crc32(kind + body))
     png = b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", w, h, 8, 3, 0, 0, 0))
-    png += chunk(b"PLTE", b"".join(palette)) + chunk(b"IDAT", zlib.compress(bytes(raw), 9)) + chunk(b"IEND", b"")
-    open(path, "wb").write(png)
+    png += chunk(b"PLTE", b"".join(palette)) + chunk(b"IDAT", idat) + chunk(b"IEND", b"")
+    return png
 
 
 if __name__ == "__main__":
-    if len(sys.argv) not in (3, 4):
+    args = [a for a in sys.argv[1:] if a != "--half"]
+    if len(args) not in (2, 3):
         sys.exit(__doc__)
-    colours = int(sys.argv[3]) if len(sys.argv) == 4 else 256
+    colours = int(args[2]) if len(args) == 3 else 256
     if not 2 <= colours <= 256:
         sys.exit(f"COLOURS ({colours}) must lie in [2, 256]")
-    w, h, pixels = read_rgb(sys.argv[1])
-    write_indexed(sys.argv[2], w, h, pixels, median_cut(Counter(pixels), colours))
+    w, h, pixels = read_rgb(args[0])
+    if "--half" in sys.argv[1:]:
+        w, h, pixels = half(w, h, pixels)
+    write_indexed(args[1], w, h, pixels, median_cut(Counter(pixels), colours))

@@ -172,13 +172,13 @@ namespace GregoryTerrain.Rig
             ? new[] { (8, 8, 7) }
             // Per static size: 64 and 32 tiles, and fewer, larger tiles, down to about the count whose
             // cells still hold the triangles below the max factor (larger factors cost less per
-            // triangle; performance.md's tile-count sweep: 10-16 tiles at 0.6M, 16-24 at 2M).
+            // triangle; the tile-count sweep of Tools~/bench/records.md: 10-16 tiles at 0.6M, 16-24 at 2M).
             : new[] { (64, 32, 17), (32, 32, 17), (16, 32, 17), (10, 32, 17),
                       (64, 32, 31), (32, 32, 31), (20, 32, 31),
                       (64, 32, 63), (32, 32, 63) };
 
         /// <summary>
-        /// The fair static mesh (Documentation~/performance.md): for M x M tiles at the uniform factor F,
+        /// The fair static mesh (Documentation~/performance.md, "In short"): for M x M tiles at the uniform factor F,
         /// the package's terrain (tessellated, GT_NOISE, _Range changing every frame), the fallback grid
         /// (same vertices evaluated without a tessellator), the terrain's vertices baked once
         /// (GT_READBACK capture on the device, packed by bench_static_mesh.py) and drawn by vert_static

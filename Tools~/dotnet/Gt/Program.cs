@@ -84,6 +84,7 @@ namespace GregoryTerrain.Rig
                 SceneOptions + " factors max-cells paper print-factors tile-factors vertex-cache with-noise write-tile-factors");
             Add("bench-plan", "write the buffers and the job list of gt bench (--grid FILE --out DIR [--quick])", BenchPlan.Run, "grid frames height out quick warmup width");
             Add("bench-report", "tables of a gt bench run (--plan DIR --raw DIR --grid FILE)", BenchReport.Run, "grid plan raw tsv");
+            Add("bench-docs", "rewrite the summary tables of a performance page from a run's full table (--table bench_table.md --page performance.md)", a => BenchDocs.Run(a.String("table"), a.String("page")), "page table");
             Add("lod-scene", "write a ground-level levels-of-detail view for the harness: buffers and --params-tail (--out DIR)", LodSceneCommand.Run,
                 "out grid terrain-m eye-m finest-m tiles factor target-pixels segment-pixels width height ground");
             Add("snow-scene", "write a snow run's inputs: ridge grid, harness buffers, field/snow params per R (--out DIR [--cpu])", SnowSceneCommand.Run,
