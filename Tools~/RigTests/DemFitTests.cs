@@ -8,11 +8,12 @@ namespace GregoryTerrain.Rig.Tests
     /// The fitter on real elevation data: two adjacent SRTM3 crops (Tools~/RigTests/Data/dem/README.md), 241 x 241
     /// samples each, sharing their seam column: no NaN, G1 after enforcement, voids filled rather
     /// than fitted into spikes, the two tiles fitted one after the other join G1, and the error
-    /// against the bilinear baseline. Issue 27's goal (RMS at most half the baseline's, max no worse)
-    /// is NOT met and these bounds do not claim it: the G1 Gregory nets have about 7 unknowns a patch
-    /// against the baseline lattice's 9, and on this rough terrain the fit's RMS is 0.93 to 0.97 of
-    /// the baseline's, its max 0.85 to 1.25 (manual, Fitting). The bounds below are what the fit
-    /// achieves (RMS below the baseline's and below the previous C1 spline's) so a worse fit fails.
+    /// against the bilinear baseline. Half of issue 27's goal is met and asserted: the max error is at
+    /// most the baseline's at every patch count (the fit's reweighting rounds, FitObjective.BoundedMax)
+    /// with the RMS at most the baseline's. The other half (RMS at most half the baseline's) is NOT
+    /// met and not claimed: the G1 Gregory nets have about 7 unknowns a patch against the baseline
+    /// lattice's 9, and on this rough terrain the fit's RMS is 0.93 to 0.97 of the baseline's
+    /// (manual, Fitting). The RMS must also stay below the previous C1 spline's.
     /// </summary>
     [TestFixture]
     public class DemFitTests
@@ -23,8 +24,8 @@ namespace GregoryTerrain.Rig.Tests
         const double CropWidthMetres = 240 * 61.2;
         /// <summary>Normals across shared edges may differ by rounding only: the spline is C1.</summary>
         const double G1BoundDegrees = 1e-6;
-        /// <summary>Measured worst ratios to the baseline over both crops at 8, 16, 32 patches: RMS 0.97, max 1.25.</summary>
-        const double RmsRatioBound = 1.0, MaxRatioBound = 1.3;
+        /// <summary>Issue 27's max goal (no worse than the baseline) and the RMS the reweighting keeps (at most the baseline's).</summary>
+        const double RmsRatioBound = 1.0, MaxRatioBound = 1.0;
 
         // The crops live with the rig, not in Tests/ (232 KB the package would ship for one test class).
         static string DataPath(string name) => PackageRoot.Combine("Tools~", "RigTests", "Data", "dem", name);
@@ -151,10 +152,12 @@ namespace GregoryTerrain.Rig.Tests
                     moved = Math.Max(moved, Math.Abs(enforced.Patches[p][k].z * CropWidthMetres - fit.Grid.Patches[p][k].z));
             // The previous fitter's surface: the C1 spline the fit starts from.
             double splineRms = SplineRms(fit.Surface, z, Side, Side);
-            TestContext.Out.WriteLine($"{tile} {patches}x{patches}: fit max {fit.MaxError:F2} m RMS {fit.RmsError:F3} m; bilinear baseline max {bMax:F2} m RMS {bRms:F3} m (ratios {fit.MaxError / bMax:F2}, {fit.RmsError / bRms:F2}); C1 spline RMS {splineRms:F3} m; Gregory evaluation max {gridMax:F2} m; G1 angle {before:E2} deg, after MakeG1 {angle:E2} deg, which moved points by {moved:E1} m; {fit.Iterations} CG iterations");
+            TestContext.Out.WriteLine($"{tile} {patches}x{patches}: fit max {fit.MaxError:F2} m RMS {fit.RmsError:F3} m; bilinear baseline max {bMax:F2} m RMS {bRms:F3} m (ratios {fit.MaxError / bMax:F2}, {fit.RmsError / bRms:F2}); C1 spline RMS {splineRms:F3} m; least squares alone max {fit.LeastSquaresMax:F2} m RMS {fit.LeastSquaresRms:F3} m, {fit.ReweightRounds} reweighting rounds; Gregory evaluation max {gridMax:F2} m; G1 angle {before:E2} deg, after MakeG1 {angle:E2} deg, which moved points by {moved:E1} m; {fit.Iterations} CG iterations");
             Assert.That(fit.RmsError, Is.LessThanOrEqualTo(RmsRatioBound * bRms), "RMS against the bilinear baseline's");
             Assert.That(fit.RmsError, Is.LessThan(0.99 * splineRms), "RMS against the C1 spline's (the previous fit)");
             Assert.That(fit.MaxError, Is.LessThanOrEqualTo(MaxRatioBound * bMax), "max against the bilinear baseline's");
+            Assert.That(fit.BaselineMax, Is.EqualTo(bMax), "the fitter's own baseline (what it holds the max to) is this one");
+            Assert.That(fit.BaselineRms, Is.EqualTo(bRms).Within(1e-12 * bRms));
             Assert.That(before, Is.LessThan(G1BoundDegrees), "the fitted grid itself is G1");
             Assert.That(moved, Is.LessThan(1e-6), "MakeG1 should find the fitted grid G1 already");
             Assert.That(gridMax, Is.EqualTo(fit.MaxError).Within(1e-6 * fit.MaxError + 1e-9), "the grid's patches disagree with the reported error");

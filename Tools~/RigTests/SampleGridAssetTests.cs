@@ -96,6 +96,27 @@ namespace GregoryTerrain.Rig.Tests
                 "regenerate with: gt-cli demo-grid --out g.json; gt-cli unity-asset --grid g.json --out Samples~/TerrainFlyover/PatchGrid.asset --script-guid " + guid);
         }
 
+        /// <summary>
+        /// The fit's sums do not depend on the SIMD width (GregoryLeastSquares: fixed order, lanes
+        /// only as independent entries), so a machine with 2-wide vectors (Mono's, SSE) or none
+        /// writes the same grid as this one's, to the bit. Run with AVX off (2 doubles a vector) and
+        /// with hardware intrinsics off. (Before the fixed-order sums, AVX and SSE grids differed.)
+        /// </summary>
+        [TestCase("DOTNET_EnableAVX")]
+        [TestCase("DOTNET_EnableHWIntrinsic")]
+        public void DemoGridIsTheSameAtAnySimdWidth(string switchOff)
+        {
+            string path = Path.Combine(_tmp, switchOff + ".json");
+            var (code, output) = TryGtCliWith(new[] { (switchOff, "0") }, "demo-grid", "--out", path);
+            Assert.That(code, Is.EqualTo(0), output);
+            PatchGrid other = PatchGridJson.Read(File.ReadAllText(path));
+            int differing = 0;
+            for (int p = 0; p < other.PatchCount; p++)
+                for (int k = 0; k < GregoryPatch.SlotCount; k++)
+                    if (BitConverter.DoubleToInt64Bits(other.Patches[p][k].z) != BitConverter.DoubleToInt64Bits(_demo.Patches[p][k].z)) differing++;
+            Assert.That(differing, Is.EqualTo(0), $"control points that differ with {switchOff}=0");
+        }
+
         [Test]
         public void UnityAssetCommandRejectsABadGuid()
         {
@@ -146,7 +167,9 @@ namespace GregoryTerrain.Rig.Tests
         }
 
         /// <summary>gt-cli as `gt setup` builds it (into $GT_BUILD_DIR/gt-cli), else through dotnet run.</summary>
-        static (int, string) TryGtCli(params string[] args)
+        static (int, string) TryGtCli(params string[] args) => TryGtCliWith(null, args);
+
+        static (int, string) TryGtCliWith((string name, string value)[] env, params string[] args)
         {
             string buildDir = Environment.GetEnvironmentVariable("GT_BUILD_DIR") ?? PackageRoot.Combine(".build");
             string dll = Path.Combine(buildDir, "gt-cli", "gt-cli.dll");
@@ -157,6 +180,7 @@ namespace GregoryTerrain.Rig.Tests
             psi.RedirectStandardOutput = true;
             psi.RedirectStandardError = true;
             psi.UseShellExecute = false;
+            if (env != null) foreach (var (name, value) in env) psi.Environment[name] = value;
             using var p = Process.Start(psi);
             string output = p.StandardOutput.ReadToEnd() + p.StandardError.ReadToEnd();
             p.WaitForExit();

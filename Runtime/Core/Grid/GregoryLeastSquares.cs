@@ -1,7 +1,6 @@
 using System;
 using System.Collections.Generic;
 using System.Numerics;
-using System.Runtime.InteropServices;
 using System.Threading;
 
 namespace GregoryTerrain
@@ -9,61 +8,83 @@ namespace GregoryTerrain
     /// <summary>
     /// Least squares over every sample of a W x H heightmap (sample (c, r) at
     /// <c>(c/(W-1), r/(H-1))</c>) in the space of <see cref="GregoryNet"/>: minimises
-    /// <c>|S x - z|^2 + mu |x - x0|^2</c> by conjugate gradients on the normal equations.
+    /// <c>sum_s w_s (S x - z)_s^2 + mu |x - x0|^2</c> by conjugate gradients on the normal equations
+    /// (all weights w_s 1 unless <see cref="Reweight"/> raised some).
     /// <para><b>Normal matrix without storing it.</b> A patch's heights depend on its 20 local
     /// unknowns, so <c>A = sum over patches of E_p^T G_p E_p</c> with a 20 x 20 patch Gram matrix
     /// G_p. G_p depends only on where the samples fall inside the patch, and on a uniform grid that
     /// repeats: a column of patches is identified by its first sample's offset and its sample count,
     /// and when P divides W - 1 (8193 into 256) every patch has the same offsets. So the fitter keeps
-    /// one Gram matrix and one weight table per distinct (column class, row class), at most
+    /// one Gram matrix per distinct (column class, row class), at most
     /// <c>(P / gcd(P, W-1)) (Q / gcd(Q, H-1))</c> of them, and A p costs 400 multiply-adds a patch.
-    /// (Worst case, every patch its own class: 3.2 KB a patch of Gram matrices.)</para>
+    /// A patch with reweighted samples gets its own Gram matrix (its class's plus the extra weights).</para>
+    /// <para><b>Passes over the samples, separable.</b> A Gregory patch's height is the bicubic
+    /// tensor product of its 16 grid slots (the interior slots holding the second point of each pair)
+    /// plus, per pair, <c>B_a(u) B_b(v) t(u, v) (first - second)</c>. So S^T z and the error need 4
+    /// Bernstein weights per column (a table per column class), per row 16 multiply-adds, and per
+    /// sample 4 tensor and 4 rational weights: 8 multiply-adds a sample instead of 20, and a table of
+    /// 4 doubles a sample (the rational weights) per class instead of 20.</para>
+    /// <para><b>Portable sums.</b> Every sum runs in a fixed order that does not depend on the
+    /// machine's SIMD width: the passes over the samples are scalar, in sample order, with a fixed
+    /// set of accumulators; the Gram matrices and A p use <c>Vector&lt;double&gt;</c> only lane by
+    /// lane (each lane one matrix entry, summed in sample or unknown order), never across lanes. So
+    /// the fit is the same to the bit on 2-, 4- or 8-wide SIMD (given IEEE double arithmetic without
+    /// fused multiply-adds, which neither .NET's JIT nor Mono's contracts on its own).</para>
     /// <para><b>The ridge.</b> mu (<see cref="RidgeWeight"/> of the mean diagonal) pulls toward x0,
     /// the C1 spline fit, only where the samples leave unknowns open (patches with fewer samples than
     /// unknowns, interior offsets whose weight is 0 at every sample): there the fit keeps the spline's
     /// values, which its own smoothing term chose. Elsewhere it moves the optimum by about mu.</para>
     /// <para><b>Preconditioner and stop.</b> Block Jacobi: the inverse of each vertex's 3 x 3 and each
     /// edge's 2 x 2 diagonal block (a height and the offsets next to it are strongly coupled). From x0
-    /// (already the best C1 net) CG reaches a residual of <see cref="Tolerance"/> of the initial one
-    /// in 40 to 70 iterations on the tests' data and the bench, 16 to 256 patches a side, where
-    /// the reported max and RMS no longer change in their fourth digit (they are the same from 1e-3).
-    /// With very few samples a patch (2 to 4 a side) the data barely tell some unknowns apart and CG
-    /// would need hundreds of iterations; it stops at <see cref="MaxIterations"/>, and since every CG
-    /// step lowers the objective the result still fits at least as well as the spline it started from.</para>
+    /// (already the best C1 net) CG runs until the residual is <see cref="Tolerance"/> of the initial
+    /// one. With very few samples a patch (2 to 4 a side) the data barely tell some unknowns apart
+    /// and CG would need hundreds of iterations; it stops at <see cref="MaxIterations"/>, and since
+    /// every CG step lowers the objective the result still fits at least as well as its start.</para>
     /// </summary>
     internal sealed class GregoryLeastSquares
     {
         /// <summary>mu as a fraction of the mean diagonal of the data's normal matrix.</summary>
         public const double RidgeWeight = 1e-6;
         /// <summary>CG stops when the residual's norm is this fraction of the initial one (or at <see cref="MaxIterations"/>).</summary>
-        public const double Tolerance = 1e-5;
+        public const double Tolerance = 1e-4;
         /// <summary>The most CG iterations: bounds the time where the data barely determine the net (see the class comment).</summary>
         public const int MaxIterations = 200;
-        /// <summary>Weight tables are cached up to this many doubles (64 MiB); beyond, recomputed per patch.</summary>
-        const long TableCacheDoubles = 8L << 20;
+        /// <summary>Rational-weight tables are cached up to this many doubles (32 MiB); beyond, recomputed per patch.</summary>
+        const long TableCacheDoubles = 4L << 20;
 
-        // The hot loops run on Vector<double> (4 doubles at a time on AVX2): Gram rows are Stride
-        // doubles (20 rounded up to the SIMD width), table rows a patch's samples rounded up likewise.
+        const int L = GregoryNet.LocalCount;
+        // Gram rows are Stride doubles (20 rounded up to the SIMD width) so A p runs lane by lane.
         static readonly int Lanes = Vector<double>.Count;
-        static readonly int Stride = (GregoryNet.LocalCount + Lanes - 1) / Lanes * Lanes;
+        static readonly int Stride = (L + Lanes - 1) / Lanes * Lanes;
+        // The pairs' slots: first point (grid slot 4 a + b) and second point (16 + ...), pair p = 0..3.
+        static readonly int[] FirstSlot = { 5, 6, 9, 10 };
+        static readonly int[] SecondSlot = { 16, 17, 18, 19 };
 
         readonly GregoryNet net;
         readonly int width, height;
         readonly Axis xAxis, yAxis;
-        readonly double[][] tables, grams;
+        readonly double[][] rational, grams;
         readonly bool cacheTables;
-        readonly int[] unknownsOf;   // patch (i, j)'s 20 global unknowns at (j P + i) 20
         double[] scratch;
+        // Reweighted patches: ownOf[patch] indexes ownGrams and extra (-1: the class's Gram).
+        int[] ownOf;
+        readonly List<double[]> ownGrams = new List<double[]>();
+        readonly List<List<(int sample, double weight)>> extra = new List<List<(int, double)>>();
+        readonly List<int> ownPatch = new List<int>();
 
         public GregoryNet Net => net;
         /// <summary>Iterations the last <see cref="Solve"/> took.</summary>
         public int Iterations { get; private set; }
+        /// <summary>Samples whose weight <see cref="Reweight"/> has raised above 1.</summary>
+        public int ReweightedSamples { get; private set; }
 
-        /// <summary>Where one axis's samples fall: per patch its first sample and class; per class the offsets.</summary>
+        /// <summary>Where one axis's samples fall: per patch its first sample and class; per class the offsets and Bernstein weights.</summary>
         sealed class Axis
         {
             public int[] First, Count, Class;
             public List<double[]> Offsets = new List<double[]>();
+            /// <summary>Per class, B_0..B_3 at each offset: [4 a + k].</summary>
+            public List<double[]> Bernstein = new List<double[]>();
 
             public Axis(int samples, int spans)
             {
@@ -72,6 +93,7 @@ namespace GregoryTerrain
                 Class = new int[spans];
                 long n = samples - 1;
                 var key = new Dictionary<long, int>();
+                Span<double> b = stackalloc double[4], d = stackalloc double[4];
                 for (int i = 0; i < spans; i++)
                 {
                     // First sample c with c P >= i (W - 1); integer arithmetic so knots land exactly.
@@ -86,8 +108,15 @@ namespace GregoryTerrain
                         cls = Offsets.Count;
                         key.Add(k, cls);
                         var t = new double[Count[i]];
-                        for (int a = 0; a < t.Length; a++) t[a] = (double)(num0 + (long)a * spans) / n;
+                        var bt = new double[4 * Count[i]];
+                        for (int a = 0; a < t.Length; a++)
+                        {
+                            t[a] = (double)(num0 + (long)a * spans) / n;
+                            GregoryBasis.Bernstein(GMath.saturate(t[a]), b, d);
+                            for (int q = 0; q < 4; q++) bt[4 * a + q] = b[q];
+                        }
                         Offsets.Add(t);
+                        Bernstein.Add(bt);
                     }
                     Class[i] = cls;
                 }
@@ -102,109 +131,138 @@ namespace GregoryTerrain
             xAxis = new Axis(width, net.Columns);
             yAxis = new Axis(height, net.Rows);
             int pairs = xAxis.Offsets.Count * yAxis.Offsets.Count;
-            tables = new double[pairs][];
+            rational = new double[pairs][];
             grams = new double[pairs][];
             long tableDoubles = 0;
             foreach (double[] u in xAxis.Offsets)
-                foreach (double[] v in yAxis.Offsets) tableDoubles += ((long)u.Length * v.Length + Lanes) * GregoryNet.LocalCount;
+                foreach (double[] v in yAxis.Offsets) tableDoubles += 4L * u.Length * v.Length;
             cacheTables = tableDoubles <= TableCacheDoubles;
-            unknownsOf = new int[net.Columns * net.Rows * GregoryNet.LocalCount];
-            for (int j = 0; j < net.Rows; j++)
-                for (int i = 0; i < net.Columns; i++)
-                    net.LocalUnknowns(i, j, new Span<int>(unknownsOf, (j * net.Columns + i) * GregoryNet.LocalCount, GregoryNet.LocalCount));
         }
 
         int Pair(int i, int j) => yAxis.Class[j] * xAxis.Offsets.Count + xAxis.Class[i];
 
-        /// <summary>Samples of patch (i, j) rounded up to a multiple of the SIMD width (the tables' row length).</summary>
-        int PaddedSamples(int i, int j) => (xAxis.Count[i] * yAxis.Count[j] + Lanes - 1) / Lanes * Lanes;
+        /// <summary>Patch (i, j)'s Gram matrix: its own when reweighted, else its class's.</summary>
+        double[] GramOf(int i, int j)
+        {
+            if (ownOf != null)
+            {
+                int o = ownOf[j * net.Columns + i];
+                if (o >= 0) return ownGrams[o];
+            }
+            return grams[Pair(i, j)] ?? throw new InvalidOperationException("RightHandSide builds the Gram matrices first.");
+        }
 
         /// <summary>
-        /// The local weights of every sample of patch (i, j), one row per local unknown: weight k of
-        /// sample (a, b) at <c>k S + b count_u + a</c> (S = <see cref="PaddedSamples"/>, padding 0), so
-        /// the passes over the samples run along memory 4 samples at a time.
+        /// The rational weights <c>B_a(u) B_b(v) t(u, v)</c> of the 4 pairs' first points at every
+        /// sample of patch (i, j), [4 s + p] with s = b count_u + a; and, the first time a class is
+        /// seen, its Gram matrix (from the full 20 local weights, summed in sample order).
         /// </summary>
-        double[] Table(int i, int j)
+        double[] Rational(int i, int j)
         {
-            const int L = GregoryNet.LocalCount;
             int pair = Pair(i, j);
-            if (tables[pair] != null) return tables[pair];
+            if (rational[pair] != null) return rational[pair];
             double[] us = xAxis.Offsets[xAxis.Class[i]], vs = yAxis.Offsets[yAxis.Class[j]];
-            int S = PaddedSamples(i, j), n = L * S;
+            int n = 4 * us.Length * vs.Length;
             double[] t;
             if (cacheTables) t = new double[n];
             else
             {
                 if (scratch == null || scratch.Length < n) scratch = new double[n];
                 t = scratch;
-                Array.Clear(t, 0, n);
             }
-            Span<double> w = stackalloc double[L];
+            Span<double> w = stackalloc double[GregoryBasis.WeightCount];
+            Span<double> wu = stackalloc double[GregoryBasis.WeightCount];
+            Span<double> wv = stackalloc double[GregoryBasis.WeightCount];
             for (int b = 0; b < vs.Length; b++)
                 for (int a = 0; a < us.Length; a++)
                 {
-                    GregoryNet.LocalWeights(us[a], vs[b], w);
-                    int smp = b * us.Length + a;
-                    for (int k = 0; k < L; k++) t[k * S + smp] = w[k];
+                    GregoryBasis.Weights(us[a], vs[b], w, wu, wv);
+                    int s = 4 * (b * us.Length + a);
+                    for (int p = 0; p < 4; p++) t[s + p] = w[FirstSlot[p]];
                 }
-            if (grams[pair] == null)
-            {
-                // Row k of the (symmetric) Gram matrix at k Stride.
-                var g = new double[L * Stride];
-                for (int k = 0; k < L; k++)
-                    for (int q = k; q < L; q++)
-                    {
-                        Vector<double> d = Vector<double>.Zero;
-                        for (int v = 0; v < S; v += Lanes) d += new Vector<double>(t, k * S + v) * new Vector<double>(t, q * S + v);
-                        g[k * Stride + q] = g[q * Stride + k] = Vector.Dot(d, Vector<double>.One);
-                    }
-                grams[pair] = g;
-            }
-            if (cacheTables) tables[pair] = t;
+            if (grams[pair] == null) grams[pair] = BuildGram(us, vs);
+            if (cacheTables) rational[pair] = t;
             return t;
         }
 
-        /// <summary>The most padded samples any patch has (the gather buffers' length).</summary>
-        int MostSamples()
+        /// <summary>
+        /// The Gram matrix of one class, row k at k Stride: each entry summed over the samples in
+        /// row-major order, lane by lane (an entry per lane), so the SIMD width does not change it.
+        /// </summary>
+        static double[] BuildGram(double[] us, double[] vs)
         {
-            int cu = 0, cv = 0;
-            foreach (int c in xAxis.Count) cu = Math.Max(cu, c);
-            foreach (int c in yAxis.Count) cv = Math.Max(cv, c);
-            return (cu * cv + Lanes - 1) / Lanes * Lanes;
-        }
-
-        /// <summary>Copies patch (i, j)'s samples into z, row after row, the padding 0.</summary>
-        void Gather(double[] heights, int i, int j, double[] z)
-        {
-            int c0 = xAxis.First[i], cn = xAxis.Count[i], r0 = yAxis.First[j], rn = yAxis.Count[j];
-            for (int b = 0; b < rn; b++) Array.Copy(heights, (long)(r0 + b) * width + c0, z, b * cn, cn);
-            Array.Clear(z, rn * cn, PaddedSamples(i, j) - rn * cn);
+            var g = new double[L * Stride];
+            var w = new double[Stride];
+            for (int b = 0; b < vs.Length; b++)
+                for (int a = 0; a < us.Length; a++)
+                {
+                    GregoryNet.LocalWeights(us[a], vs[b], new Span<double>(w, 0, L));
+                    for (int k = 0; k < L; k++)
+                    {
+                        var f = new Vector<double>(w[k]);
+                        int c = k * Stride;
+                        for (int v = 0; v < Stride; v += Lanes) (new Vector<double>(g, c + v) + f * new Vector<double>(w, v)).CopyTo(g, c + v);
+                    }
+                }
+            return g;
         }
 
         /// <summary>
-        /// <c>S^T z</c> (one pass over the samples, 20 multiply-adds each), building the Gram matrices
-        /// on the way. Progress runs from <paramref name="p0"/> to <paramref name="p1"/>.
+        /// <c>S^T z</c> in one pass over the samples (8 multiply-adds each, fixed order), building the
+        /// Gram matrices on the way. Progress runs from <paramref name="p0"/> to <paramref name="p1"/>.
         /// </summary>
         public double[] RightHandSide(double[] heights, IProgress<float> progress, float p0, float p1, CancellationToken ct)
         {
-            const int L = GregoryNet.LocalCount;
             var rhs = new double[net.Count];
-            var z = new double[MostSamples()];
+            Span<int> index = stackalloc int[L];
+            Span<double> m = stackalloc double[16];
+            Span<double> slot = stackalloc double[GregoryPatch.SlotCount];
+            Span<double> local = stackalloc double[L];
             for (int j = 0; j < net.Rows; j++)
             {
                 ct.ThrowIfCancellationRequested();
                 progress?.Report(p0 + (p1 - p0) * j / net.Rows);
+                int r0 = yAxis.First[j], rn = yAxis.Count[j];
+                double[] bv = yAxis.Bernstein[yAxis.Class[j]];
                 for (int i = 0; i < net.Columns; i++)
                 {
-                    double[] t = Table(i, j);
-                    Gather(heights, i, j, z);
-                    int S = PaddedSamples(i, j), u = (j * net.Columns + i) * L;
-                    for (int k = 0; k < L; k++)
+                    double[] t = Rational(i, j);
+                    double[] bu = xAxis.Bernstein[xAxis.Class[i]];
+                    int c0 = xAxis.First[i], cn = xAxis.Count[i];
+                    m.Clear();
+                    double n0 = 0, n1 = 0, n2 = 0, n3 = 0;
+                    for (int b = 0; b < rn; b++)
                     {
-                        Vector<double> acc = Vector<double>.Zero;
-                        for (int v = 0; v < S; v += Lanes) acc += new Vector<double>(t, k * S + v) * new Vector<double>(z, v);
-                        rhs[unknownsOf[u + k]] += Vector.Dot(acc, Vector<double>.One);
+                        long row = (long)(r0 + b) * width + c0;
+                        int ts = 4 * b * cn;
+                        double s0 = 0, s1 = 0, s2 = 0, s3 = 0;
+                        for (int a = 0; a < cn; a++)
+                        {
+                            double z = heights[row + a];
+                            int o = 4 * a, q = ts + o;
+                            s0 += bu[o] * z; s1 += bu[o + 1] * z; s2 += bu[o + 2] * z; s3 += bu[o + 3] * z;
+                            n0 += t[q] * z; n1 += t[q + 1] * z; n2 += t[q + 2] * z; n3 += t[q + 3] * z;
+                        }
+                        // Moment of grid slot (ka, kb) at 4 ka + kb: sum of B_ka(u) B_kb(v) z.
+                        int vb = 4 * b;
+                        for (int kb = 0; kb < 4; kb++)
+                        {
+                            double f = bv[vb + kb];
+                            m[kb] += s0 * f; m[4 + kb] += s1 * f; m[8 + kb] += s2 * f; m[12 + kb] += s3 * f;
+                        }
                     }
+                    for (int k = 0; k < 16; k++) slot[k] = m[k];
+                    // A pair's first point takes B B t, its second B B (1 - t) = B B - B B t.
+                    ReadOnlySpan<double> nf = stackalloc double[] { n0, n1, n2, n3 };
+                    for (int p = 0; p < 4; p++)
+                    {
+                        slot[FirstSlot[p]] = nf[p];
+                        slot[SecondSlot[p]] = m[FirstSlot[p]] - nf[p];
+                    }
+                    local.Clear();
+                    GregoryNet.SlotsToLocal(slot, local);
+                    net.LocalUnknowns(i, j, index);
+                    for (int k = 0; k < L; k++) rhs[index[k]] += local[k];
                 }
             }
             return rhs;
@@ -213,25 +271,22 @@ namespace GregoryTerrain
         /// <summary>y = A p (the data's normal matrix only): per patch, gather 20, multiply by its Gram, scatter.</summary>
         void Multiply(double[] p, double[] y)
         {
-            const int L = GregoryNet.LocalCount;
             Array.Clear(y, 0, y.Length);
+            Span<int> index = stackalloc int[L];
             Span<double> acc = stackalloc double[Stride];
-            Span<Vector<double>> accV = MemoryMarshal.Cast<double, Vector<double>>(acc);
-            int nu = xAxis.Offsets.Count;
             for (int j = 0; j < net.Rows; j++)
-            {
-                int rowPair = yAxis.Class[j] * nu;
                 for (int i = 0; i < net.Columns; i++)
                 {
-                    double[] g = grams[rowPair + xAxis.Class[i]];
-                    int o = (j * net.Columns + i) * L;
+                    double[] g = GramOf(i, j);
+                    net.LocalUnknowns(i, j, index);
                     if (Stride == 5 * Lanes)
                     {
                         // The common case (4 or 2 lanes): five accumulators the JIT keeps in registers.
+                        // Lane q of the accumulators is entry q of G p, summed over k in order.
                         Vector<double> a0 = Vector<double>.Zero, a1 = a0, a2 = a0, a3 = a0, a4 = a0;
                         for (int k = 0; k < L; k++)
                         {
-                            var f = new Vector<double>(p[unknownsOf[o + k]]);
+                            var f = new Vector<double>(p[index[k]]);
                             int c = k * Stride;
                             a0 += new Vector<double>(g, c) * f;
                             a1 += new Vector<double>(g, c + Lanes) * f;
@@ -239,21 +294,24 @@ namespace GregoryTerrain
                             a3 += new Vector<double>(g, c + 3 * Lanes) * f;
                             a4 += new Vector<double>(g, c + 4 * Lanes) * f;
                         }
-                        accV[0] = a0; accV[1] = a1; accV[2] = a2; accV[3] = a3; accV[4] = a4;
+                        for (int q = 0; q < Lanes; q++)
+                        {
+                            acc[q] = a0[q]; acc[Lanes + q] = a1[q]; acc[2 * Lanes + q] = a2[q];
+                            acc[3 * Lanes + q] = a3[q]; acc[4 * Lanes + q] = a4[q];
+                        }
                     }
                     else
                     {
-                        acc.Clear();
-                        for (int k = 0; k < L; k++)
+                        // Any other width: the same sums, entry by entry, in the same order.
+                        for (int q = 0; q < L; q++)
                         {
-                            var f = new Vector<double>(p[unknownsOf[o + k]]);
-                            int c = k * Stride;
-                            for (int v = 0; v < accV.Length; v++) accV[v] += new Vector<double>(g, c + v * Lanes) * f;
+                            double s = 0;
+                            for (int k = 0; k < L; k++) s += g[k * Stride + q] * p[index[k]];
+                            acc[q] = s;
                         }
                     }
-                    for (int q = 0; q < L; q++) y[unknownsOf[o + q]] += acc[q];
+                    for (int q = 0; q < L; q++) y[index[q]] += acc[q];
                 }
-            }
         }
 
         // The preconditioner's blocks: a vertex's 3 unknowns and an edge's 2 are strongly coupled (a
@@ -274,18 +332,18 @@ namespace GregoryTerrain
 
         double[] BlockInverses(double mu)
         {
-            const int L = GregoryNet.LocalCount;
             int vb = net.VerticalBase;
             var blocks = new double[3 * vb + 2 * (net.Count - vb)];
+            Span<int> index = stackalloc int[L];
             for (int j = 0; j < net.Rows; j++)
                 for (int i = 0; i < net.Columns; i++)
                 {
-                    double[] g = grams[Pair(i, j)] ?? throw new InvalidOperationException("RightHandSide builds the Gram matrices first.");
-                    int o = (j * net.Columns + i) * L;
+                    double[] g = GramOf(i, j);
+                    net.LocalUnknowns(i, j, index);
                     for (int bl = 0; bl < BlockStart.Length; bl++)
                     {
                         int l0 = BlockStart[bl], m = BlockSize[bl];
-                        int at = BlockOf(unknownsOf[o + l0], out _, out _);
+                        int at = BlockOf(index[l0], out _, out _);
                         for (int a = 0; a < m; a++)
                             for (int b = 0; b < m; b++) blocks[at + a * m + b] += g[(l0 + a) * Stride + l0 + b];
                     }
@@ -358,32 +416,38 @@ namespace GregoryTerrain
             }
         }
 
+        double mu = -1;
+
         /// <summary>
-        /// Solves <c>(A + mu I) x = rhs + mu x0</c> by Jacobi-preconditioned CG from x0. Unknowns with
-        /// <paramref name="fixedMask"/> set keep their x0 values (a neighbour's seam). Returns x.
+        /// Solves <c>(A + mu I) x = rhs + mu prior</c> by block-Jacobi-preconditioned CG, starting from
+        /// <paramref name="x"/> (overwritten with the solution and returned). Unknowns with
+        /// <paramref name="fixedMask"/> set keep their start values (a neighbour's seam). prior may be
+        /// x itself (the first solve: start at the prior).
         /// </summary>
-        public double[] Solve(double[] rhs, double[] x0, bool[] fixedMask, IProgress<float> progress, float p0, float p1, CancellationToken ct)
+        public double[] Solve(double[] rhs, double[] x, double[] prior, bool[] fixedMask, IProgress<float> progress, float p0, float p1, CancellationToken ct)
         {
-            const int L = GregoryNet.LocalCount;
             int n = net.Count;
-            // Mean diagonal of A (every global unknown appears at most once in a patch's local list) sets mu.
-            double trace = 0;
-            for (int j = 0; j < net.Rows; j++)
-                for (int i = 0; i < net.Columns; i++)
-                {
-                    double[] g = grams[Pair(i, j)] ?? throw new InvalidOperationException("RightHandSide builds the Gram matrices first.");
-                    for (int k = 0; k < L; k++) trace += g[k * Stride + k];
-                }
-            double mean = trace / n;
-            double mu = RidgeWeight * (mean > 0 ? mean : 1);
+            if (mu < 0)
+            {
+                // Mean diagonal of the unweighted A (every global unknown appears at most once in a
+                // patch's local list) sets mu, once: reweighting does not move the ridge.
+                double trace = 0;
+                for (int j = 0; j < net.Rows; j++)
+                    for (int i = 0; i < net.Columns; i++)
+                    {
+                        double[] g = grams[Pair(i, j)] ?? throw new InvalidOperationException("RightHandSide builds the Gram matrices first.");
+                        for (int k = 0; k < L; k++) trace += g[k * Stride + k];
+                    }
+                double mean = trace / n;
+                mu = RidgeWeight * (mean > 0 ? mean : 1);
+            }
             double[] blocks = BlockInverses(mu);
 
-            var x = (double[])x0.Clone();
             var r = new double[n];
             var q = new double[n];
             Multiply(x, q);
-            // r = rhs + mu x0 - (A + mu) x = rhs - A x0 at the start.
-            for (int k = 0; k < n; k++) r[k] = fixedMask != null && fixedMask[k] ? 0 : rhs[k] - q[k];
+            // r = rhs + mu prior - (A + mu) x.
+            for (int k = 0; k < n; k++) r[k] = fixedMask != null && fixedMask[k] ? 0 : rhs[k] - q[k] + mu * (prior[k] - x[k]);
             var z = new double[n];
             var p = new double[n];
             double rz = 0, r0 = 0;
@@ -435,59 +499,134 @@ namespace GregoryTerrain
             return x;
         }
 
-        /// <summary>The error of the net x at every sample: max, RMS, and the binned picture.</summary>
+        /// <summary>
+        /// The error of the net x at every sample: max, RMS, and the binned picture; samples whose
+        /// |error| exceeds <paramref name="collectAbove"/> are added to <paramref name="collected"/>
+        /// (patch, sample within the patch row-major, |error|). 10 multiply-adds a sample, fixed order.
+        /// </summary>
         public void Errors(double[] heights, double[] x, FitErrorMap map, out double max, out double rms,
+            double collectAbove, List<(int patch, int sample, double error)> collected,
             IProgress<float> progress, float p0, float p1, CancellationToken ct)
         {
-            const int L = GregoryNet.LocalCount;
-            Span<Vector<double>> local = stackalloc Vector<double>[L];
             // The map's cell of (c, r) is rowCell[r] + colCell[c]: no divisions per sample.
             var colCell = new int[width];
             var rowCell = new int[height];
             for (int c = 0; c < width; c++) colCell[c] = map.CellOf(c, 0);
             for (int r = 0; r < height; r++) rowCell[r] = map.CellOf(0, r);
-            int most = MostSamples();
-            var z = new double[most];
-            var e = new double[most];
-            Vector<double> vmax = Vector<double>.Zero, vsum = Vector<double>.Zero;
+            Span<int> index = stackalloc int[L];
+            Span<double> local = stackalloc double[L];
+            Span<double> slot = stackalloc double[GregoryPatch.SlotCount];
+            Span<double> d = stackalloc double[4];
+            max = 0;
+            double sum2 = 0;
             for (int j = 0; j < net.Rows; j++)
             {
                 ct.ThrowIfCancellationRequested();
                 progress?.Report(p0 + (p1 - p0) * j / net.Rows);
                 int r0 = yAxis.First[j], rn = yAxis.Count[j];
+                double[] bv = yAxis.Bernstein[yAxis.Class[j]];
                 for (int i = 0; i < net.Columns; i++)
                 {
-                    double[] t = Table(i, j);
-                    Gather(heights, i, j, z);
-                    int S = PaddedSamples(i, j), u = (j * net.Columns + i) * L;
-                    for (int k = 0; k < L; k++) local[k] = new Vector<double>(x[unknownsOf[u + k]]);
-                    // Padding: weights 0 and samples 0 give error 0, which changes neither max nor sum.
-                    for (int v = 0; v < S; v += Lanes)
-                    {
-                        Vector<double> f = Vector<double>.Zero;
-                        for (int k = 0; k < L; k++) f += local[k] * new Vector<double>(t, k * S + v);
-                        Vector<double> d = Vector.Abs(f - new Vector<double>(z, v));
-                        vmax = Vector.Max(vmax, d);
-                        vsum += d * d;
-                        d.CopyTo(e, v);
-                    }
+                    double[] t = Rational(i, j);
+                    double[] bu = xAxis.Bernstein[xAxis.Class[i]];
                     int c0 = xAxis.First[i], cn = xAxis.Count[i];
+                    net.LocalUnknowns(i, j, index);
+                    for (int k = 0; k < L; k++) local[k] = x[index[k]];
+                    GregoryNet.SlotHeights(local, slot);
+                    // The tensor product takes the second points in the interior slots; each pair
+                    // adds B B t (first - second).
+                    for (int p = 0; p < 4; p++)
+                    {
+                        d[p] = slot[FirstSlot[p]] - slot[SecondSlot[p]];
+                        slot[FirstSlot[p]] = slot[SecondSlot[p]];
+                    }
+                    double d0 = d[0], d1 = d[1], d2 = d[2], d3 = d[3], patchSum = 0, patchMax = max;
+                    int patch = j * net.Columns + i;
                     for (int b = 0; b < rn; b++)
                     {
-                        int cellRow = rowCell[r0 + b], o = b * cn;
-                        for (int a = 0; a < cn; a++) map.Add(cellRow + colCell[c0 + a], e[o + a]);
+                        int vb = 4 * b;
+                        double q0 = slot[0] * bv[vb] + slot[1] * bv[vb + 1] + slot[2] * bv[vb + 2] + slot[3] * bv[vb + 3];
+                        double q1 = slot[4] * bv[vb] + slot[5] * bv[vb + 1] + slot[6] * bv[vb + 2] + slot[7] * bv[vb + 3];
+                        double q2 = slot[8] * bv[vb] + slot[9] * bv[vb + 1] + slot[10] * bv[vb + 2] + slot[11] * bv[vb + 3];
+                        double q3 = slot[12] * bv[vb] + slot[13] * bv[vb + 1] + slot[14] * bv[vb + 2] + slot[15] * bv[vb + 3];
+                        long row = (long)(r0 + b) * width + c0;
+                        int ts = 4 * b * cn, cellRow = rowCell[r0 + b];
+                        for (int a = 0; a < cn; a++)
+                        {
+                            int o = 4 * a, q = ts + o;
+                            double f = bu[o] * q0 + bu[o + 1] * q1 + bu[o + 2] * q2 + bu[o + 3] * q3
+                                     + t[q] * d0 + t[q + 1] * d1 + t[q + 2] * d2 + t[q + 3] * d3;
+                            double e = Math.Abs(f - heights[row + a]);
+                            if (e > patchMax) patchMax = e;
+                            patchSum += e * e;
+                            map.Add(cellRow + colCell[c0 + a], e);
+                            if (e > collectAbove) collected.Add((patch, b * cn + a, e));
+                        }
                     }
+                    max = patchMax;
+                    sum2 += patchSum;
                 }
-            }
-            max = 0;
-            double sum2 = 0;
-            for (int k = 0; k < Lanes; k++)
-            {
-                max = Math.Max(max, vmax[k]);
-                sum2 += vsum[k];
             }
             rms = Math.Sqrt(sum2 / ((double)width * height));
             progress?.Report(p1);
+        }
+
+        /// <summary>
+        /// Raises the weights of the given samples (multiplied by <c>(error / tau)^2</c>, Lawson's
+        /// rule toward the min-max fit, squared to get there in fewer rounds) and returns the weighted
+        /// right-hand side (<paramref name="rhs"/>, the unweighted one, plus the extra weights' terms).
+        /// Each patch with a raised weight gets its own Gram matrix: its class's plus
+        /// <c>sum (w - 1) l l^T</c> over its raised samples' local weights l.
+        /// </summary>
+        public double[] Reweight(double[] heights, double[] rhs, List<(int patch, int sample, double error)> samples, double tau)
+        {
+            if (ownOf == null)
+            {
+                ownOf = new int[net.Columns * net.Rows];
+                for (int k = 0; k < ownOf.Length; k++) ownOf[k] = -1;
+            }
+            foreach ((int patch, int sample, double error) in samples)
+            {
+                int o = ownOf[patch];
+                if (o < 0)
+                {
+                    o = ownOf[patch] = ownGrams.Count;
+                    ownGrams.Add(null);
+                    extra.Add(new List<(int, double)>());
+                    ownPatch.Add(patch);
+                }
+                List<(int sample, double weight)> list = extra[o];
+                double g = error / tau;
+                int at = list.FindIndex(e => e.sample == sample);
+                if (at < 0) list.Add((sample, g * g));
+                else list[at] = (sample, list[at].weight * g * g);
+            }
+            var weighted = (double[])rhs.Clone();
+            Span<int> index = stackalloc int[L];
+            var w = new double[L];
+            int count = 0;
+            for (int o = 0; o < ownGrams.Count; o++)
+            {
+                int patch = ownPatch[o], i = patch % net.Columns, j = patch / net.Columns;
+                double[] us = xAxis.Offsets[xAxis.Class[i]], vs = yAxis.Offsets[yAxis.Class[j]];
+                var g = (double[])grams[Pair(i, j)].Clone();
+                net.LocalUnknowns(i, j, index);
+                foreach ((int sample, double weight) in extra[o])
+                {
+                    int a = sample % us.Length, b = sample / us.Length;
+                    GregoryNet.LocalWeights(us[a], vs[b], w);
+                    double z = heights[(long)(yAxis.First[j] + b) * width + xAxis.First[i] + a], e = weight - 1;
+                    for (int k = 0; k < L; k++)
+                    {
+                        weighted[index[k]] += e * w[k] * z;
+                        for (int q = 0; q < L; q++) g[k * Stride + q] += e * w[k] * w[q];
+                    }
+                    count++;
+                }
+                ownGrams[o] = g;
+            }
+            ReweightedSamples = count;
+            return weighted;
         }
     }
 }

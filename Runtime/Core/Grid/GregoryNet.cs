@@ -117,6 +117,30 @@ namespace GregoryTerrain
             }
         }
 
+        /// <summary>
+        /// The transpose of <see cref="SlotHeights"/>: adds to local[k] the signed sum of the slot
+        /// values that unknown k takes part in (a right-hand side from per-slot moments), in slot order.
+        /// </summary>
+        public static void SlotsToLocal(ReadOnlySpan<double> slotValues, Span<double> local)
+        {
+            for (int s = 0; s < GregoryPatch.SlotCount; s++)
+            {
+                sbyte[] t = SlotTerms[s];
+                for (int k = 0; k < t.Length; k++)
+                {
+                    int e = t[k];
+                    if (e > 0) local[e - 1] += slotValues[s];
+                    else local[-e - 1] -= slotValues[s];
+                }
+            }
+        }
+
+        /// <summary>The 20 slots' heights from the patch's 20 local unknown values.</summary>
+        public static void SlotHeights(ReadOnlySpan<double> local, Span<double> slots)
+        {
+            for (int s = 0; s < GregoryPatch.SlotCount; s++) slots[s] = SlotHeight(s, local);
+        }
+
         /// <summary>Slot s's height from the patch's 20 local unknown values.</summary>
         static double SlotHeight(int s, ReadOnlySpan<double> local)
         {

@@ -1,4 +1,5 @@
 using System;
+using System.Collections.Generic;
 using System.Globalization;
 using System.Threading;
 
@@ -25,6 +26,14 @@ namespace GregoryTerrain
         /// <summary>Samples per row and rows of the fitted heightmap.</summary>
         public int SampleWidth { get; }
         public int SampleHeight { get; }
+        /// <summary>Max and RMS error of the bilinear baseline (<see cref="BilinearBaseline"/>); NaN when not measured or none exists.</summary>
+        public double BaselineMax { get; internal set; } = double.NaN;
+        public double BaselineRms { get; internal set; } = double.NaN;
+        /// <summary>Reweighting rounds that lowered the max (0: the plain least-squares fit).</summary>
+        public int ReweightRounds { get; internal set; }
+        /// <summary>Max and RMS error of the plain least-squares fit, before reweighting.</summary>
+        public double LeastSquaresMax { get; internal set; }
+        public double LeastSquaresRms { get; internal set; }
 
         public HeightmapFit(PatchGrid grid, double maxError, double rmsError, FitErrorMap errorMap, SplineSurface surface,
             GregoryNet net, double[] unknowns, int iterations, int sampleWidth, int sampleHeight)
@@ -40,6 +49,19 @@ namespace GregoryTerrain
             SampleWidth = sampleWidth;
             SampleHeight = sampleHeight;
         }
+    }
+
+    /// <summary>What <see cref="HeightmapFitter.Fit"/> minimises.</summary>
+    internal enum FitObjective
+    {
+        /// <summary>
+        /// Least squares, then, where its max error is above the bilinear baseline's
+        /// (<see cref="BilinearBaseline"/>), reweighted rounds that lower the max until it is at or
+        /// below the baseline's, as long as the RMS stays at or below the baseline's too.
+        /// </summary>
+        BoundedMax,
+        /// <summary>The least-squares optimum alone.</summary>
+        LeastSquares,
     }
 
     /// <summary>Which error <see cref="HeightmapFitter.FitToTarget"/> holds below its target.</summary>
@@ -78,10 +100,10 @@ namespace GregoryTerrain
         /// checks its inputs first (<see cref="CheckInputs"/>).
         /// </summary>
         public static HeightmapFit Fit(double[] heights, int width, int height, int columns, int rows,
-            IProgress<float> progress = null, CancellationToken cancellationToken = default)
+            IProgress<float> progress = null, CancellationToken cancellationToken = default, FitObjective objective = FitObjective.BoundedMax)
         {
             CheckInputs(heights, width, height, columns, rows);
-            return FitChecked(heights, width, height, columns, rows, null, progress, cancellationToken);
+            return FitChecked(heights, width, height, columns, rows, null, progress, cancellationToken, objective);
         }
 
         /// <summary>
@@ -92,7 +114,7 @@ namespace GregoryTerrain
         /// (<see cref="PatchGridJoin.WestEast"/>) are G1 across the seam. Its rows must equal west's.
         /// </summary>
         public static HeightmapFit FitEastOf(HeightmapFit west, double[] heights, int width, int height, int columns,
-            IProgress<float> progress = null, CancellationToken cancellationToken = default)
+            IProgress<float> progress = null, CancellationToken cancellationToken = default, FitObjective objective = FitObjective.BoundedMax)
         {
             if (west == null) throw new ArgumentNullException(nameof(west));
             if (west.Unknowns == null) throw new ArgumentException("west has no net to continue.", nameof(west));
@@ -100,7 +122,7 @@ namespace GregoryTerrain
             CheckInputs(heights, width, height, columns, rows);
             if (height != west.SampleHeight)
                 throw new ArgumentException($"height = {height} rows of samples, the west fit has {west.SampleHeight}: the tiles must share their rows.", nameof(height));
-            return FitChecked(heights, width, height, columns, rows, west, progress, cancellationToken);
+            return FitChecked(heights, width, height, columns, rows, west, progress, cancellationToken, objective);
         }
 
         /// <summary>
@@ -115,7 +137,7 @@ namespace GregoryTerrain
             if (!(target > 0) || double.IsInfinity(target))
                 throw new ArgumentException(string.Format(CultureInfo.InvariantCulture, "target = {0}, need a positive finite error.", target), nameof(target));
             CheckInputs(heights, width, height, maxColumns, RowsFor(maxColumns, width, height));
-            Func<int, HeightmapFit> fit = n => FitChecked(heights, width, height, n, RowsFor(n, width, height), null, null, cancellationToken);
+            Func<int, HeightmapFit> fit = n => FitChecked(heights, width, height, n, RowsFor(n, width, height), null, null, cancellationToken, FitObjective.BoundedMax);
             Func<HeightmapFit, bool> meets = f => (kind == FitErrorKind.Max ? f.MaxError : f.RmsError) <= target;
             int lo = 0, hi = 1;   // lo fails (0: none tried), hi is the next to try
             HeightmapFit best = null;
@@ -154,35 +176,87 @@ namespace GregoryTerrain
             GpuLayout.CheckSize(columns, rows);   // the GPU's patch limit, before anything is allocated
         }
 
+        /// <summary>Reweighting rounds at most (each a warm-started CG solve and an error pass).</summary>
+        public const int MaxReweightRounds = 40;
+        /// <summary>Samples above this fraction of the baseline's max get their weights raised.</summary>
+        public const double ReweightThreshold = 0.9;
+        /// <summary>Where the least-squares RMS is already above the baseline's, how much reweighting may raise it.</summary>
+        public const double RmsAllowance = 0.02;
+        /// <summary>Samples reweighted in one round at most (bounds the memory of the lists).</summary>
+        const int MaxCollected = 1 << 16;
+
         static HeightmapFit FitChecked(double[] heights, int width, int height, int columns, int rows, HeightmapFit west,
-            IProgress<float> progress, CancellationToken ct)
+            IProgress<float> progress, CancellationToken ct, FitObjective objective)
         {
             // 1. One pass over the samples: S^T z and the patch Gram matrices.
             var net = new GregoryNet(columns, rows);
             var ls = new GregoryLeastSquares(net, width, height);
-            double[] rhs = ls.RightHandSide(heights, progress, 0f, 0.4f, ct);
+            double[] rhs = ls.RightHandSide(heights, progress, 0f, 0.3f, ct);
 
             // 2. The C1 spline from the same pass (its right-hand side is T^T S^T z): the starting
             // net and the ridge's prior.
             C1SplineBasis bx = new C1SplineBasis(columns), by = new C1SplineBasis(rows);
             BandedCholesky gy = by.NormalMatrix(height), gx = bx.NormalMatrix(width);
             SplineSurface surface = SplineSurface.Solve(bx, by, net.SplineRightHandSide(rhs), gy, gx);
-            var x0 = new double[net.Count];
-            net.FromSpline(surface.Coefficients, x0);
-            bool[] fixedMask = west == null ? null : HoldWestEdge(west, net, x0, width);
+            var x = new double[net.Count];
+            net.FromSpline(surface.Coefficients, x);
+            bool[] fixedMask = west == null ? null : HoldWestEdge(west, net, x, width);
 
-            // 3. CG from x0 on the normal equations.
-            double[] x = ls.Solve(rhs, x0, fixedMask, progress, 0.4f, 0.6f, ct);
-            // 4. The grid: the net's points, G1 by construction.
+            // 3. CG from the spline on the normal equations (x is the start and the ridge's prior).
+            ls.Solve(rhs, x, x, fixedMask, progress, 0.3f, 0.5f, ct);
+            int iterations = ls.Iterations;
+
+            // 4. Error at every sample, from the same weights the grid's patches evaluate; with the
+            // bounded max, the baseline to hold it to and the samples above ReweightThreshold of it.
+            double bMax = double.NaN, bRms = double.NaN;
+            bool bounded = objective == FitObjective.BoundedMax && BilinearBaseline.Measure(heights, width, height, columns, rows, out bMax, out bRms);
+            double tau = bounded ? ReweightThreshold * bMax : double.PositiveInfinity;
+            var collected = new List<(int patch, int sample, double error)>();
+            var map = new FitErrorMap(width, height);
+            ls.Errors(heights, x, map, out double max, out double rms, tau, collected, progress, 0.5f, 0.7f, ct);
+            double lsMax = max, lsRms = rms;
+            if (collected.Count > MaxCollected) collected.RemoveRange(MaxCollected, collected.Count - MaxCollected);
+
+            // 5. Lawson-style reweighting toward the min-max fit, while the max is above the
+            // baseline's and the RMS stays at or below the baseline's (or, where least squares
+            // itself is above it, within RmsAllowance of least squares): each round raises the
+            // weights of the samples above tau and re-solves from the last net.
+            int rounds = 0;
+            double rmsCap = rms <= bRms ? bRms : rms * (1 + RmsAllowance);
+            if (bounded && max > bMax)
+            {
+                double[] prior = new double[net.Count];
+                net.FromSpline(surface.Coefficients, prior);
+                if (fixedMask != null) HoldWestEdge(west, net, prior, width);
+                for (int round = 1; round <= MaxReweightRounds && max > bMax && collected.Count > 0; round++)
+                {
+                    ct.ThrowIfCancellationRequested();
+                    progress?.Report(0.7f + 0.25f * round / MaxReweightRounds);
+                    double[] weighted = ls.Reweight(heights, rhs, collected, tau);
+                    var next = (double[])x.Clone();
+                    ls.Solve(weighted, next, prior, fixedMask, null, 0f, 0f, ct);
+                    iterations += ls.Iterations;
+                    var nextCollected = new List<(int patch, int sample, double error)>();
+                    var nextMap = new FitErrorMap(width, height);
+                    ls.Errors(heights, next, nextMap, out double nextMax, out double nextRms, tau, nextCollected, null, 0f, 0f, ct);
+                    if (nextRms > rmsCap) break;   // the RMS would pass the baseline's: keep the last net
+                    if (nextCollected.Count > MaxCollected) nextCollected.RemoveRange(MaxCollected, nextCollected.Count - MaxCollected);
+                    collected = nextCollected;
+                    if (nextMax < max)
+                    {
+                        x = next; map = nextMap; max = nextMax; rms = nextRms; rounds = round;
+                    }
+                }
+            }
+
+            // 6. The grid: the net's points, G1 by construction.
             ct.ThrowIfCancellationRequested();
             PatchGrid grid = net.ToPatchGrid(x);
-            progress?.Report(0.65f);
-
-            // 5. Error at every sample, from the same weights the grid's patches evaluate.
-            var map = new FitErrorMap(width, height);
-            ls.Errors(heights, x, map, out double max, out double rms, progress, 0.65f, 1f, ct);
             progress?.Report(1f);
-            return new HeightmapFit(grid, max, rms, map, surface, net, x, ls.Iterations, width, height);
+            return new HeightmapFit(grid, max, rms, map, surface, net, x, iterations, width, height)
+            {
+                BaselineMax = bMax, BaselineRms = bRms, ReweightRounds = rounds, LeastSquaresMax = lsMax, LeastSquaresRms = lsRms,
+            };
         }
 
         /// <summary>

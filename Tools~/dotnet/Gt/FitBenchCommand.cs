@@ -10,6 +10,8 @@ namespace GregoryTerrain.Rig
     /// gt fit-bench's measurements, one fit per process so each peak memory is its own:
     ///   fit-bench --dem FILE.hgt --patches P [--c1 | --legacy]   error (m, % of relief), G1 angle, time, memory
     ///   fit-bench --size N --patches P [--c1 | --legacy]         time and memory on an N x N synthetic heightmap
+    /// --ls: the shipped fitter's least-squares optimum alone (FitObjective.LeastSquares), without the max bound.
+    /// Last columns: the bilinear baseline's max and RMS, the fit's ratios to them, reweighting rounds.
     /// Fitters: the shipped Gregory-net least squares (default), the previous C1-spline least squares
     /// (--c1, Legacy/C1HeightmapFitter.cs), the interpolating fitter before it (--legacy).
     /// Prints one tab-separated line (wall and CPU seconds: CPU time is what to compare on a shared machine); Tools~/rig/fit-bench.sh runs the grid of cases and tabulates.
@@ -21,7 +23,7 @@ namespace GregoryTerrain.Rig
         public static int Run(Args a)
         {
             int patches = a.Int("patches");
-            bool legacy = a.Flag("legacy"), c1 = a.Flag("c1");
+            bool legacy = a.Flag("legacy"), c1 = a.Flag("c1"), lsOnly = a.Flag("ls");
             string dem = a.String("dem", "");
             double[] z;
             int w, h;
@@ -52,7 +54,7 @@ namespace GregoryTerrain.Rig
             var sw = Stopwatch.StartNew();
             PatchGrid grid;
             double max, rms;
-            int iterations = 0;
+            int iterations = 0, rounds = 0;
             if (legacy)
             {
                 LegacyHeightmapFit f = LegacyHeightmapFitter.Fit(z, w, h, patches, patches);
@@ -65,8 +67,8 @@ namespace GregoryTerrain.Rig
             }
             else
             {
-                HeightmapFit f = HeightmapFitter.Fit(z, w, h, patches, patches);
-                grid = f.Grid; max = f.MaxError; rms = f.RmsError; iterations = f.Iterations;
+                HeightmapFit f = HeightmapFitter.Fit(z, w, h, patches, patches, null, default, lsOnly ? FitObjective.LeastSquares : FitObjective.BoundedMax);
+                grid = f.Grid; max = f.MaxError; rms = f.RmsError; iterations = f.Iterations; rounds = f.ReweightRounds;
             }
             double seconds = sw.Elapsed.TotalSeconds;
             double cpuSeconds = (Process.GetCurrentProcess().TotalProcessorTime - cpu0).TotalSeconds;
@@ -82,10 +84,13 @@ namespace GregoryTerrain.Rig
                     for (int k = 0; k < GregoryPatch.SlotCount; k++) p[k] = new Double3(p[k].x, p[k].y, p[k].z / widthMetres);
                 angle = ContinuityMeasure.MaxNormalAngleDegrees(s, 9);
             }
+            // The bilinear baseline on the same lattice (after the timing: not part of any fit's cost).
+            BilinearBaseline.Measure(z, w, h, patches, patches, out double bMax, out double bRms);
             Console.WriteLine(string.Format(CultureInfo.InvariantCulture,
-                "{0}\t{1}x{2}\t{3}\t{4:F2}\t{5:F3}\t{6:F2}\t{7:F3}\t{8:E1}\t{9:F2}\t{10:F2}\t{11:F0}\t{12:F1}\t{13}",
-                legacy ? "legacy" : c1 ? "c1-spline" : "gregory-net", w, h, patches, max, rms, 100 * max / (hi - lo), 100 * rms / (hi - lo),
-                angle, seconds, cpuSeconds, extra / 1048576.0, (double)extra / ((double)w * h), iterations));
+                "{0}\t{1}x{2}\t{3}\t{4:F2}\t{5:F3}\t{6:F2}\t{7:F3}\t{8:E1}\t{9:F2}\t{10:F2}\t{11:F0}\t{12:F1}\t{13}\t{14:F2}\t{15:F3}\t{16:F3}\t{17:F3}\t{18}",
+                legacy ? "legacy" : c1 ? "c1-spline" : lsOnly ? "gregory-ls" : "gregory-net", w, h, patches, max, rms, 100 * max / (hi - lo), 100 * rms / (hi - lo),
+                angle, seconds, cpuSeconds, extra / 1048576.0, (double)extra / ((double)w * h), iterations,
+                bMax, bRms, max / bMax, rms / bRms, rounds));
             return 0;
         }
 

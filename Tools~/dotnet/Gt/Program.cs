@@ -92,8 +92,10 @@ namespace GregoryTerrain.Rig
             Add("pack", "write the harness's buffer files for one scene (--grid FILE --out DIR ...)", PackCommand.Run, SceneOptions + " orbit out");
             Add("estimate", "CPU time of the inspector's triangle estimate, and its sample against every tile (--grid FILE [--tiles 16,32,64] [--target PX] [--repeat N])", EstimateCommand.Run,
                 "grid repeat target tiles");
-            Add("fit-bench", "one heightmap fit's error, G1 angle, time and memory (--dem FILE.hgt | --size N) --patches P [--c1 | --legacy]", FitBenchCommand.Run,
-                "c1 dem legacy patches size");
+            Add("fit-bench", "one heightmap fit's error, G1 angle, time and memory (--dem FILE.hgt | --size N) --patches P [--c1 | --legacy | --ls]", FitBenchCommand.Run,
+                "c1 dem legacy ls patches size");
+            Add("fit-reference", "best smooth approximations with the Gregory net's unknown count against the bilinear baseline (--dem FILE.hgt --patches P)", FitReferenceCommand.Run,
+                "dem patches crop");
             Add("query-bench", "CPU height/normal/ray queries per second (1 and N threads) and the collider patch's cost and deviation (--grid FILE [--size M] [--threads N])", QueryBenchCommand.Run,
                 "collider-samples collider-spacing grid no-noise octaves seconds size threads");
             Add("jitter", "deep-zoom vertex jitter table, plain vs shipped float path (--widths 1e-2,1e-4,1e-6 ...)", JitterCommand.Run,
