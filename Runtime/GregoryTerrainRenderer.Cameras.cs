@@ -38,7 +38,7 @@ namespace GregoryTerrain
         internal void DrawFor(Camera cam)
         {
             if (cam == null || !DrawsIn(cam)) return;
-            if (!Prepare()) return;
+            if (!Prepare(cam)) return;
 
             var rp = new RenderParams(_drawMaterial != null ? _drawMaterial : material)
             {

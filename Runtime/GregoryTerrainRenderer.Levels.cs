@@ -31,20 +31,42 @@ namespace GregoryTerrain
         }
 
         /// <summary>
-        /// Lays the levels out around <paramref name="cam"/>'s ground point and sends their ranges
-        /// relative to the origin: one float4 per level. The ground point and the terrain's width in
-        /// metres come from <see cref="WorldFrame"/> (Transform, Terrain Size, floating-origin offset),
-        /// as the draw matrices, the queries and the collider do. Returns how many tiles the draw holds
-        /// (L x M^2).
+        /// Lays the levels out around <paramref name="cam"/>'s ground point into the preallocated
+        /// ranges and returns how many. The ground point and the terrain's width in metres come from
+        /// <see cref="WorldFrame"/> (Transform, Terrain Size, floating-origin offset), as the draw
+        /// matrices, the queries and the collider do.
         /// </summary>
-        int PushLevels(Camera cam)
+        int LayoutLevels(Camera cam)
         {
             Double3 local = WorldToTerrainObject(cam.transform.position);   // object space: (x, height, y)
             double metres = WorldUnitsPerObjectUnit.x;                      // world units across the terrain's x
             if (!(metres > 0.0)) metres = 1.0;
             int n = LodLevels.FinestExponent(metres, FinestLevelMeters);
             n = System.Math.Min(n, LodTiles.MaxLevels - 1);
-            int count = LodLevels.Layout(new Double2(local.x, local.z), n, tiles, _levelRanges);
+            return LodLevels.Layout(new Double2(local.x, local.z), n, tiles, _levelRanges);
+        }
+
+        /// <summary>
+        /// The range the range origin follows (<see cref="RangeOriginTracker"/>): with the levels, the
+        /// finest level around the camera, so on a large terrain (below RangeOrigin.DeepWidth of it,
+        /// a terrain wider than ~4 km) the vertices output S(q) - S(O) near the feet from precise
+        /// differences (precision.md) and the draw matrices cancel S(O) against the camera in
+        /// double; otherwise the renderer's range.
+        /// </summary>
+        TerrainRange OriginRange(Camera cam, bool fallback)
+        {
+            if (cam == null || !LevelsOn(fallback)) return _range;
+            LayoutLevels(cam);
+            return _levelRanges[0];
+        }
+
+        /// <summary>
+        /// Lays the levels out around <paramref name="cam"/> and sends their ranges relative to the
+        /// origin: one float4 per level. Returns how many tiles the draw holds (L x M^2).
+        /// </summary>
+        int PushLevels(Camera cam)
+        {
+            int count = LayoutLevels(cam);
             for (int k = 0; k < count; k++)
             {
                 RangeMapping.EncodeRange(_levelRanges[k], _origin.Origin, out Float4 r, out _);

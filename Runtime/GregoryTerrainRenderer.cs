@@ -446,7 +446,7 @@ namespace GregoryTerrain
         /// value set is <c>_Range</c>: see <see cref="PerFrameTrafficBytes"/>. No allocation once
         /// the buffers exist. False when nothing can be drawn.
         /// </summary>
-        bool Prepare()
+        bool Prepare(Camera cam = null)
         {
             _setLastPrepare.Clear();
             if (material == null || grid == null || !grid.IsValid) return false;
@@ -455,7 +455,7 @@ namespace GregoryTerrain
             bool fallback = ReadDrawMode();
             if (fallback && !EnsureFallbackIndices()) return false;
 
-            if (_origin.Update(_range)) _originDirty = true;
+            if (_origin.Update(OriginRange(cam, fallback))) _originDirty = true;
             // The lattice before the output offset: with noise the offset's octave count follows
             // the lattice's width (TileLattice.LayoutWidth).
             if (_settingsDirty)

@@ -87,10 +87,26 @@ float3 RelativeSurfaceFromOrigin(TerrainPoint q, float4 rangeOrigin)
     float3 d = PatchDifference(patch, region, regionLo, q, r1);
     if (any(r1.originHi != origin.originHi) || any(r1.local != origin.local))
     {
+        // From r1 to O, one patch (or diagonal) step at a time: each step ends at O clamped into the
+        // next patch, which lies on the line (or corner) it shares with the one before. A neighbour
+        // of O's patch takes one step (the deep-zoom case); the levels' far tiles take more, each
+        // a difference across one patch (float keeps ~6e-8 of a patch there, far from the camera).
         uint patch0 = FindPatchPrecise(origin);
-        float4 region0 = PatchRegion(patch0);
-        float4 regionLo0 = PatchRegionLo(patch0);
-        d += PatchDifference(patch0, region0, regionLo0, ClampToRegion(r1, region0, regionLo0), origin);
+        uint n = GridColumns();
+        int i = (int)(patch % n), j = (int)(patch / n), i0 = (int)(patch0 % n), j0 = (int)(patch0 / n);
+        TerrainPoint at = r1;
+        [loop] for (uint k = 0u; k < n + GridRows(); k++)
+        {
+            i += sign(i0 - i);
+            j += sign(j0 - j);
+            uint p = (uint)j * n + (uint)i;
+            float4 rg = PatchRegion(p);
+            float4 rgLo = PatchRegionLo(p);
+            TerrainPoint next = ClampToRegion(origin, rg, rgLo);
+            d += PatchDifference(p, rg, rgLo, ClampToRegion(at, rg, rgLo), next);
+            if (p == patch0) break;
+            at = next;
+        }
     }
     return d;
 }

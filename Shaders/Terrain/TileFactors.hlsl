@@ -73,10 +73,12 @@ float ObjectPixelsPerUnit(float3 p)
                          GT_ScreenSize());
 }
 
-// Object position of the Gregory surface (no noise) at a tess coordinate of the tile's cell.
+// Object position of the Gregory surface (no noise) at a tess coordinate of the tile's cell, in the
+// frame the vertices output (OutputSurfacePosition: relative to S(O) while a range origin is set),
+// as the corners: a line's sagitta and pixel scales compare its inner points with its corners.
 float3 CellSurfaceObjectPosition(TileLayout l, uint drawPatch, float2 tess)
 {
-    return TerrainToObject(EvaluateCellSurface(l, drawPatch, tess).position);
+    return TerrainToObject(OutputSurfacePosition(l, EvaluateCellSurface(l, drawPatch, tess)));
 }
 
 // Uniform factors (_Tess.w > 0; tests and benchmarks): every tile, every edge _Tess.w, nothing

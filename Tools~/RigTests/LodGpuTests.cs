@@ -18,6 +18,7 @@ namespace GregoryTerrain.Rig.Tests
     {
         // Per run: M x M tiles a level, uniform even factor F (fine seam edges draw F / 2).
         int Factor = 8, Tiles = 8;
+        double TerrainMeters = 100000;
         string _work, _spirv;
         PatchGrid _grid;
         int _runs;
@@ -30,7 +31,7 @@ namespace GregoryTerrain.Rig.Tests
             _grid = HardCaseGrids.Fitted();
         }
 
-        LodScene Scene() => new LodScene { Tiles = Tiles, Factor = Factor, Width = 1920, Height = 1080 }.Build(_grid);
+        LodScene Scene() => new LodScene { Tiles = Tiles, Factor = Factor, Width = 1920, Height = 1080, TerrainMeters = TerrainMeters }.Build(_grid);
 
         int VerticesPerTile => (Factor + 1) * (Factor + 1);
 
@@ -66,12 +67,16 @@ namespace GregoryTerrain.Rig.Tests
 
         // M = 12 and F = 6 are not powers of two: the levels' corners and the tess coordinates k / 3
         // and k / 6 are not exact in float, so only the seam rule's shared formula keeps them equal.
-        [TestCase(8, 8)]
-        [TestCase(12, 6)]
-        public void SeamsHaveNoGapAndInnerTilesAreCulled(int tiles, int factor)
+        // 1,000 km: the levels relative to a range origin at the feet, the far tiles walking patch by
+        // patch to it (RelativeSurface); before that walk, patches two away from the origin's were offset.
+        [TestCase(8, 8, 1e5)]
+        [TestCase(12, 6, 1e5)]
+        [TestCase(8, 8, 1e6)]
+        public void SeamsHaveNoGapAndInnerTilesAreCulled(int tiles, int factor, double terrainMeters)
         {
             Tiles = tiles;
             Factor = factor;
+            TerrainMeters = terrainMeters;
             LodScene s = Scene();
             float[] v = Draw(s, "seams" + tiles + "x" + factor);
             int seamVertices = 0, gaps = 0, culled = 0, drawn = 0, nonFinite = 0;
@@ -180,11 +185,13 @@ namespace GregoryTerrain.Rig.Tests
             Assert.That(bad, Is.EqualTo(0));
         }
 
-        [Test]
-        public void OneMetreCameraStepMovesNoVertexByHalfAPixel()
+        [TestCase(1e5)]
+        [TestCase(1e6)]
+        public void OneMetreCameraStepMovesNoVertexByHalfAPixel(double terrainMeters)
         {
             Tiles = 8;
             Factor = 8;
+            TerrainMeters = terrainMeters;
             LodScene s0 = Scene(), s1 = s0.Stepped(_grid, 1.0);
             float[] v0 = Draw(s0, "step0"), v1 = Draw(s1, "step1");
             // The same q drawn in both frames (a level that re-snapped draws other points): its jump in
@@ -204,9 +211,38 @@ namespace GregoryTerrain.Rig.Tests
                 worst = Math.Max(worst, Math.Sqrt((pa[0] - pb[0]) * (pa[0] - pb[0]) + (pa[1] - pb[1]) * (pa[1] - pb[1])));
                 compared++;
             }
-            TestContext.Out.WriteLine($"lod 1 m camera step: {compared} visible vertices drawn at the same q in both frames, largest jump {worst:G3} px at 1920x1080");
+            TestContext.Out.WriteLine($"lod 1 m camera step ({TerrainMeters / 1000} km): {compared} visible vertices drawn at the same q in both frames, largest jump {worst:G3} px at 1920x1080");
             Assert.That(compared, Is.GreaterThan(1000), "enough vertices compared");
             Assert.That(worst, Is.LessThan(0.5), "largest vertex jump");
+        }
+    
+        /// <summary>
+        /// The screen error (LodError: the drawn triangles at the GPU's own adaptive factors against
+        /// the double full-detail surface) within 1 px, at 100 km and 1,000 km with the range origin,
+        /// at 640 x 360 (the rule is in pixels, so the resolution does not matter; the bench measures
+        /// 1920 x 1080). Dropping octaves where they still span 48 px (segment-pixels 48) must fail it.
+        /// </summary>
+        [TestCase(1e5, 2f, true)]
+        [TestCase(1e6, 2f, true)]
+        [TestCase(1e5, 48f, false)]
+        public void ScreenErrorWithinOnePixel(double terrainMeters, float segmentPixels, bool holds)
+        {
+            var s = new LodScene { Tiles = 16, Factor = 0, Width = 640, Height = 360, TerrainMeters = terrainMeters, SegmentPixels = segmentPixels }.Build(_grid);
+            string dir = Path.Combine(_work, (_runs++).ToString("D2") + "-error");
+            s.Write(dir);
+            string rb = Path.Combine(dir, "factors.f32");
+            var args = new List<string>(ReadbackRun.Stages(_spirv, "factor_readback+lod+noise"));
+            args.AddRange(s.HarnessArgs(dir));
+            args.AddRange(new[] { "--width", "640", "--height", "360", "--device", "llvmpipe", "--readback", rb, "--readback-floats", (8 * s.Patches).ToString() });
+            HarnessRun.Harness(args.ToArray()).AssertSucceeded();
+            string line = LodError.Measure(s, PatchFactors.FromReadback(ReadbackRun.ReadFloats(rb), s.Patches), 1 << 12);
+            TestContext.Out.WriteLine($"{terrainMeters / 1000} km, segment {segmentPixels} px, 640x360: {line}");
+            string[] w = line.Split(' ');
+            double maxPx = double.Parse(w[Array.IndexOf(w, "max_px") + 1], System.Globalization.CultureInfo.InvariantCulture);
+            long samples = long.Parse(w[Array.IndexOf(w, "samples") + 1], System.Globalization.CultureInfo.InvariantCulture);
+            Assert.That(samples, Is.GreaterThan(10000));
+            if (holds) Assert.That(maxPx, Is.LessThanOrEqualTo(1.0), "largest screen error");
+            else Assert.That(maxPx, Is.GreaterThan(1.0), "octaves dropped too early must show (the check can fail)");
         }
     }
 }

@@ -7,14 +7,19 @@
 # T" (clipping invocations: triangles the tessellator made that reached the clipper), "lod
 # triangles_drawn T" (clipping primitives: those left after clipping), "lod tess_evaluations E", and
 # with --frames the harness's "time ..." lines (GPU frame times; lavapipe's are functional only).
-# Measures only: no bound is asserted here (LodGpuTests asserts the seams and the camera step).
+# --error: draws the view once more with GT_FACTOR_READBACK and prints gt-cli's "lod_error ..." line
+# (LodError.cs: largest and RMS screen error against the double full-detail surface).
+# --no-origin: the levels without a range origin (the plain absolute path, for comparison).
+# Measures only: no bound is asserted here (LodGpuTests asserts the seams, the camera step, the error).
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
-device=(); frames=1; png=(); scene=()
+device=(); frames=1; png=(); scene=(); error=0
 while [ $# -gt 0 ]; do
   case "$1" in
     --device) device=(--device "${2:?--device needs a name substring}"); shift ;;
     --frames) frames="${2:?--frames needs a count}"; shift ;;
     --png) png=(--png "${2:?--png needs a file}"); shift ;;
+    --error) error=1; shift; continue ;;
+    --no-origin) scene+=(--no-origin); shift; continue ;;
     --*) scene+=("$1" "${2:?$1 needs a value}"); shift ;;
     *) die "lod-bench: unknown argument '$1'" ;;
   esac
@@ -23,7 +28,8 @@ done
 harness="$BUILD_DIR/harness/gt-harness"
 cli="$BUILD_DIR/gt-cli/gt-cli"
 [ -x "$harness" ] && [ -x "$cli" ] || die "harness or gt-cli not built (run: gt setup)"
-bash "$RIG_DIR/shaders.sh" --only lod+noise >/dev/null || die "the lod+noise variant does not compile (gt shaders --only lod+noise)"
+variants=(--only lod+noise); [ "$error" = 1 ] && variants+=(--only factor_readback+lod+noise)
+bash "$RIG_DIR/shaders.sh" "${variants[@]}" >/dev/null || die "the ${variants[*]} variants do not compile (gt shaders ${variants[*]})"
 spv="$BUILD_DIR/spirv/lod+noise"
 run="$BUILD_DIR/lod-run"
 rm -rf "$run"; mkdir -p "$run"
@@ -31,7 +37,7 @@ rm -rf "$run"; mkdir -p "$run"
 levels=$(awk '$1 == "levels" { print $2 }' "$run/scene.txt")
 patches=$(awk '$1 == "patches" { print $2 }' "$run/scene.txt")
 width=1920; height=1080
-for ((i = 0; i < ${#scene[@]}; i += 2)); do
+for ((i = 0; i < ${#scene[@]}; i++)); do
   [ "${scene[i]}" = --width ] && width="${scene[i+1]}"
   [ "${scene[i]}" = --height ] && height="${scene[i+1]}"
 done
@@ -47,3 +53,11 @@ echo "lod triangles $(stat clipping_invocations)"
 echo "lod triangles_drawn $(stat clipping_primitives)"
 echo "lod tess_evaluations $(stat tessellation_evaluation_shader_invocations)"
 grep '^time ' "$run/harness.txt" || true
+if [ "$error" = 1 ]; then
+  fr="$BUILD_DIR/spirv/factor_readback+lod+noise"
+  "$harness" --vert "$fr/vert.spv" --tesc "$fr/tesc.spv" --tese "$fr/tese.spv" --frag "$fr/frag.spv" \
+    --buffers "$run" --params-tail "$run/lod_tail.f32" --patches "$patches" --width "$width" --height "$height" \
+    --readback "$run/factors.f32" --readback-floats $((8 * patches)) "${device[@]}" > "$run/harness-factors.txt" \
+    || die "factor readback draw failed ($run/harness-factors.txt)"
+  [ -n "${GT_LOD_SKIP_ERROR:-}" ] || "$cli" lod-scene --out "$run/error-scene" "${scene[@]}" --factors "$run/factors.f32" | grep '^lod_error ' | sed 's/^lod_error /lod error /'
+fi

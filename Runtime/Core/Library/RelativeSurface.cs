@@ -20,7 +20,8 @@ namespace GregoryTerrain
     /// <see cref="GregoryDifference"/> within one patch (the second is 0 when r1 = O). r1 lies on the
     /// boundary shared by p and p0 (an edge or a corner) as long as p and p0 are neighbours, i.e. the
     /// range is narrower than the narrowest patch; there the two patches agree (shared boundary
-    /// control points are bit-identical). Everything depends only on q and per-frame constants, so
+    /// control points are bit-identical). A q farther away (the levels of detail reach the whole
+    /// terrain) walks patch by patch from r1 to O, each step a difference within one patch. Everything depends only on q and per-frame constants, so
     /// shared tile edges stay bit-identical.</para>
     /// </summary>
     internal static class RelativeSurface
@@ -121,10 +122,25 @@ namespace GregoryTerrain
             Float3 d = PatchDifference(cp, region, regionLo, q, r1);
             if (!r1.Equals(origin))
             {
+                // From r1 to O, one patch (or diagonal) step at a time: each step ends at O clamped
+                // into the next patch, on the line or corner it shares with the one before. A
+                // neighbour of O's patch takes one step (deep zoom); the levels' far tiles take more.
                 int patch0 = FindPatchPrecise(grid, origin);
-                Float4 region0 = grid.PatchRegion(patch0), regionLo0 = grid.PatchRegionLo(patch0);
-                grid.LoadGregoryPatch(patch0, cp);
-                d += PatchDifference(cp, region0, regionLo0, ClampToRegion(r1, region0, regionLo0), origin);
+                int n = grid.GridColumns();
+                int i = patch % n, j = patch / n, i0 = patch0 % n, j0 = patch0 / n;
+                TerrainPoint at = r1;
+                for (int k = 0; k < n + grid.GridRows(); k++)
+                {
+                    i += Math.Sign(i0 - i);
+                    j += Math.Sign(j0 - j);
+                    int p = j * n + i;
+                    Float4 rg = grid.PatchRegion(p), rgLo = grid.PatchRegionLo(p);
+                    TerrainPoint next = ClampToRegion(origin, rg, rgLo);
+                    grid.LoadGregoryPatch(p, cp);
+                    d += PatchDifference(cp, rg, rgLo, ClampToRegion(at, rg, rgLo), next);
+                    if (p == patch0) break;
+                    at = next;
+                }
             }
             return d;
         }

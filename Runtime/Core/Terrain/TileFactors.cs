@@ -32,9 +32,12 @@ namespace GregoryTerrain
             return TerrainVertex.TerrainToObject(TerrainVertex.OutputSurfacePosition(inputs, s, TerrainKeywords.None));
         }
 
-        /// <summary>Object position of the Gregory surface (no noise) at a tess coordinate of the tile's cell.</summary>
+        /// <summary>
+        /// Object position of the Gregory surface (no noise) at a tess coordinate of the tile's cell, in
+        /// the frame the vertices output (relative to S(O) while a range origin is set), as the corners.
+        /// </summary>
         public static Float3 CellSurfaceObjectPosition(TerrainInputs inputs, int tile, Float2 tess) =>
-            TerrainVertex.TerrainToObject(TerrainVertex.EvaluateCellSurface(inputs, tile, tess).position);
+            TerrainVertex.TerrainToObject(TerrainVertex.OutputSurfacePosition(inputs, TerrainVertex.EvaluateCellSurface(inputs, tile, tess), TerrainKeywords.None));
 
         /// <summary>HLSL <c>ObjectPixelsPerUnit</c>: pixels per object unit at p (TessellationPolicy.PixelsPerUnit).</summary>
         public static float ObjectPixelsPerUnit(Float4x4 objectToClip, Float3 p, Float2 screenSize) =>

@@ -107,6 +107,13 @@ namespace GregoryTerrain.Rig
     sealed class ErrorResult
     {
         public double MaxWorld, RmsWorld, MaxPixels, RmsPixels;
+        /// <summary>
+        /// With a drawn surface apart from the exact one (<see cref="ErrorMeasure.Measure(Func{int, double, double, double[]}, Func{int, double, double, double[]}, PatchFactors[], RigCamera, bool, int)"/>):
+        /// the on-screen distance between where the drawn triangle shows a sample (its vertices
+        /// projected by the float object-to-clip matrix, as the GPU does, the clip coordinates
+        /// interpolated) and where the exact point projects in double. 0 otherwise.
+        /// </summary>
+        public double MaxScreenPixels, RmsScreenPixels;
         public long Samples, Triangles;
         public int CulledPatches;
 
@@ -136,33 +143,61 @@ namespace GregoryTerrain.Rig
         /// maxCellsPerPatch: larger grids are sampled with a stride (row and column) to bound the work.
         /// </summary>
         public static ErrorResult Measure(Func<int, double, double, double[]> surface, PatchFactors[] factors,
-                                          RigCamera camera, bool fractionalOdd = true, int maxCellsPerPatch = 1 << 20)
+                                          RigCamera camera, bool fractionalOdd = true, int maxCellsPerPatch = 1 << 20) =>
+            Measure(surface, surface, factors, camera, fractionalOdd, maxCellsPerPatch);
+
+        /// <summary>
+        /// The same with the vertices where the GPU puts them (<paramref name="drawn"/>: e.g. Core's float
+        /// mirror of the vertex stage, fewer noise octaves far away) and the surface they stand for
+        /// (<paramref name="exact"/>: the double full-detail surface). Then the vertices themselves are
+        /// samples too, and <see cref="ErrorResult.MaxScreenPixels"/> is filled (needs a camera).
+        /// </summary>
+        public static ErrorResult Measure(Func<int, double, double, double[]> drawn, Func<int, double, double, double[]> exact,
+                                          PatchFactors[] factors, RigCamera camera, bool fractionalOdd = true, int maxCellsPerPatch = 1 << 20)
         {
-            if (surface == null) throw new ArgumentNullException(nameof(surface));
+            if (drawn == null) throw new ArgumentNullException(nameof(drawn));
+            if (exact == null) throw new ArgumentNullException(nameof(exact));
             if (factors == null || factors.Length == 0) throw new ArgumentException("factors must name at least one patch", nameof(factors));
             var partial = new ErrorResult[factors.Length];
-            Parallel.For(0, factors.Length, p => partial[p] = MeasurePatch(surface, p, factors[p], camera, fractionalOdd, maxCellsPerPatch));
+            Parallel.For(0, factors.Length, p => partial[p] = MeasurePatch(drawn, exact, p, factors[p], camera, fractionalOdd, maxCellsPerPatch));
             var r = new ErrorResult();
-            double sw = 0, sp = 0;
+            double sw = 0, sp = 0, ss = 0;
             foreach (var q in partial)
             {
                 r.MaxWorld = Math.Max(r.MaxWorld, q.MaxWorld);
                 r.MaxPixels = Math.Max(r.MaxPixels, q.MaxPixels);
-                sw += q.RmsWorld; sp += q.RmsPixels;   // sums of squares here
+                r.MaxScreenPixels = Math.Max(r.MaxScreenPixels, q.MaxScreenPixels);
+                sw += q.RmsWorld; sp += q.RmsPixels; ss += q.RmsScreenPixels;   // sums of squares here
                 r.Samples += q.Samples;
                 r.Triangles += q.Triangles;
                 r.CulledPatches += q.CulledPatches;
             }
             r.RmsWorld = r.Samples > 0 ? Math.Sqrt(sw / r.Samples) : 0;
             r.RmsPixels = r.Samples > 0 ? Math.Sqrt(sp / r.Samples) : 0;
+            r.RmsScreenPixels = r.Samples > 0 ? Math.Sqrt(ss / r.Samples) : 0;
             return r;
         }
 
         // Per patch; RmsWorld/RmsPixels hold sums of squares until Measure divides.
-        static ErrorResult MeasurePatch(Func<int, double, double, double[]> surface, int patch, PatchFactors f,
-                                        RigCamera camera, bool fractionalOdd, int maxCells)
+        static ErrorResult MeasurePatch(Func<int, double, double, double[]> surface, Func<int, double, double, double[]> exact, int patch,
+                                        PatchFactors f, RigCamera camera, bool fractionalOdd, int maxCells)
         {
             var r = new ErrorResult();
+            bool apart = !ReferenceEquals(surface, exact);
+            Float4x4 m = camera != null ? camera.ObjectToClipFloat() : default;
+            // Clip coordinates of a drawn vertex as the GPU forms them: float position, float matrix.
+            double[] ClipF(double[] p)
+            {
+                Float4 c = m * new Float4((float)p[0], (float)p[1], (float)p[2], 1f);
+                return new double[] { c.x, c.y, c.z, c.w };
+            }
+            double ScreenPixels(double[] ca, double[] cb, double[] e)
+            {
+                double cx = 0.5 * (ca[0] + cb[0]), cy = 0.5 * (ca[1] + cb[1]), cw = 0.5 * (ca[3] + cb[3]);
+                double[] pe = camera.ToPixels(e);
+                double px = (cx / cw * 0.5 + 0.5) * camera.Width, py = (0.5 - cy / cw * 0.5) * camera.Height;
+                return Math.Sqrt((px - pe[0]) * (px - pe[0]) + (py - pe[1]) * (py - pe[1]));
+            }
             if (f.culled || f.e0 <= 0 || f.e1 <= 0 || f.e2 <= 0 || f.e3 <= 0) { r.CulledPatches = 1; return r; }
             Func<double, double[]> cut = fractionalOdd ? (Func<double, double[]>)TessellationCells.FractionalOdd : TessellationCells.Integer;
             double[] us = cut(f.i0), vs = cut(f.i1);
@@ -174,7 +209,7 @@ namespace GregoryTerrain.Rig
 
             void Sample(double[] a, double[] b, double[] exactAt)   // a, b: interpolated end points; exactAt: (s, t)
             {
-                double[] e = surface(patch, exactAt[0], exactAt[1]);
+                double[] e = exact(patch, exactAt[0], exactAt[1]);
                 double dx = 0.5 * (a[0] + b[0]) - e[0], dy = 0.5 * (a[1] + b[1]) - e[1], dz = 0.5 * (a[2] + b[2]) - e[2];
                 double d = Math.Sqrt(dx * dx + dy * dy + dz * dz);
                 double px = 0;
@@ -182,6 +217,12 @@ namespace GregoryTerrain.Rig
                 {
                     if (!camera.Visible(e)) return;
                     px = d * camera.PixelsPerUnit(e);
+                    if (apart)
+                    {
+                        double sc = ScreenPixels(ClipF(a), ClipF(b), e);
+                        r.MaxScreenPixels = Math.Max(r.MaxScreenPixels, sc);
+                        r.RmsScreenPixels += sc * sc;
+                    }
                 }
                 r.Samples++;
                 if (Debug && px > r.MaxPixels) Console.Error.WriteLine(FormattableString.Invariant($"patch {patch} at ({exactAt[0]:G4}, {exactAt[1]:G4}) d {d:G4} px {px:G4}"));
@@ -212,6 +253,7 @@ namespace GregoryTerrain.Rig
                     if (i + stride >= nu) Sample(lo[i + 1], hi[i + 1], new[] { us[i + 1], vm });
                     Sample(lo[i], hi[i + 1], new[] { um, vm });
                     Sample(lo[i + 1], hi[i], new[] { um, vm });
+                    if (apart) Sample(lo[i], lo[i], new[] { us[i], vs[j] });   // the vertex itself (octaves left out, rounding)
                 }
             }
             // Border segments at the edge factors.

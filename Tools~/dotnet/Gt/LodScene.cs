@@ -25,8 +25,18 @@ namespace GregoryTerrain.Rig
         /// <summary>How far ahead (metres) the camera looks at the ground: sets the downward tilt.</summary>
         public double LookAheadMeters = 200;
         public NoiseSettings Noise = new NoiseSettings(0.004f, 16f, 2f, 2f, 6);
+        /// <summary>
+        /// Whether the levels go up relative to a range origin near the camera (what the renderer does:
+        /// RangeOrigin.For of the finest level), so the vertices output S(q) - S(O) from precise
+        /// differences and the camera sits near 0 (precision.md). False: the plain absolute path.
+        /// </summary>
+        public bool UseOrigin = true;
+        /// <summary>The origin in use; <see cref="Build"/> picks one when unset, <see cref="Stepped"/> keeps it (as the renderer's tracker does for a small move).</summary>
+        public RangeOrigin? Origin;
 
         public TerrainInputs Inputs;
+        /// <summary>What the renderer adds to a vertex's output (terrain space, double): S(O) + p(O), or 0 without an origin.</summary>
+        public Double3 OutputOffset;
         public RigCamera Camera;
         public TerrainRange[] Levels;
         public float[] Tail;
@@ -46,27 +56,71 @@ namespace GregoryTerrain.Rig
             Array.Resize(ref levels, count);
             Levels = levels;
             var tess = Factor > 0 ? TessellationSettings.Uniform(Tiles, Factor) : new TessellationSettings(Tiles, MaxFactor, TargetPixels, 0f);
-            TerrainParams p = TerrainParams.Create(grid, TerrainRange.full, RangeOrigin.zero, tess, Noise,
+            if (Origin == null) Origin = UseOrigin ? RangeOrigin.For(levels[0]) : RangeOrigin.zero;
+            RangeOrigin origin = Origin.Value;
+            TerrainParams p = TerrainParams.Create(grid, TerrainRange.full, origin, tess, Noise,
                 new HeightColorSettings(0.25f, 0.15f, 24f), new Float3(0.2f, 0.3f, 0.1f), new Float3(0.8f, 0.8f, 0.8f));
             p.noiseOctaves = new Float4(p.noiseOctaves.x, p.noiseOctaves.y, SegmentPixels, 0f);
             Inputs = TerrainInputs.Create(grid, p);
             Tail = new float[4 * (1 + LodTiles.MaxLevels)];
             Tail[0] = count;
-            for (int k = 0; k < count; k++)   // dyadic: exact in float
+            for (int k = 0; k < count; k++)   // relative to the origin, as the renderer sends them
             {
-                Tail[4 + 4 * k] = (float)levels[k].c;
-                Tail[5 + 4 * k] = (float)levels[k].d;
-                Tail[6 + 4 * k] = (float)levels[k].g;
-                Tail[7 + 4 * k] = (float)levels[k].h;
+                RangeMapping.EncodeRange(levels[k], origin, out Float4 r, out _);
+                Tail[4 + 4 * k] = r.x;
+                Tail[5 + 4 * k] = r.y;
+                Tail[6 + 4 * k] = r.z;
+                Tail[7 + 4 * k] = r.w;
             }
-            // The surface under the camera with every octave (the feet draw them all).
-            var full = TerrainInputs.Create(grid, TerrainParams.Create(grid, TerrainRange.full, RangeOrigin.zero, tess, Noise,
-                new HeightColorSettings(0.25f, 0.15f, 24f), new Float3(0.2f, 0.3f, 0.1f), new Float3(0.8f, 0.8f, 0.8f), 1e9f));
-            double ground = TerrainVertex.EvaluateAt(full, TerrainPoint.FromFloat(new Float2((float)Ground.x, (float)Ground.y)), TerrainKeywords.Noise).position.z;
-            double[] eye = { Ground.x, ground + EyeMeters * Meter, Ground.y };
-            double[] target = { Ground.x, ground, Ground.y + LookAheadMeters * Meter };
+            _grid = grid;
+            OutputOffset = TerrainVertex.OutputOffset(grid, p, TerrainKeywords.Noise);
+            // The surface under the camera with every octave (the feet draw them all); the camera in
+            // the vertices' frame (output minus the offset), built in double.
+            double ground = FullDetail(Ground.x, Ground.y).z;
+            double[] eye = { Ground.x - OutputOffset.x, ground + EyeMeters * Meter - OutputOffset.z, Ground.y - OutputOffset.y };
+            double[] target = { Ground.x - OutputOffset.x, ground - OutputOffset.z, Ground.y + LookAheadMeters * Meter - OutputOffset.y };
             Camera = RigCamera.LookAt(eye, target, FovYDegrees, Width, Height, 0.05 * Meter, 2.0, RigCamera.Scale(1, 1, 1));
             return this;
+        }
+
+        PatchGrid _grid;
+
+        /// <summary>The full-detail surface in double (terrain space: x, y, height): Gregory + every noise octave.</summary>
+        public Double3 FullDetail(double x, double y)
+        {
+            Double3 s = RelativeSurface.SurfaceAt(_grid, new Double2(x, y));
+            s.z += OctaveNoise.Evaluate(x, y, Noise, Noise.octaves, out _);
+            return s;
+        }
+
+        /// <summary>Level and tile of draw patch <paramref name="drawPatch"/> and the global point at tess (s, t) in double.</summary>
+        public Double2 GlobalPoint(int drawPatch, double s, double t)
+        {
+            int level = LodTiles.LevelOfPatch(drawPatch, Tiles), slot = LodTiles.SlotOfPatch(drawPatch, Tiles);
+            return RangeMapping.GlobalPoint(Levels[level], Tiles, slot % Tiles, slot / Tiles, s, t);
+        }
+
+        /// <summary>The exact point the drawn vertex at tess (s, t) of draw patch p stands for, in the vertices' object frame (x, height, y) minus the offset.</summary>
+        public double[] ExactObjectPoint(int drawPatch, double s, double t)
+        {
+            Double2 q = GlobalPoint(drawPatch, s, t);
+            Double3 e = FullDetail(q.x, q.y);
+            return new[] { e.x - OutputOffset.x, e.z - OutputOffset.z, e.y - OutputOffset.y };
+        }
+
+        /// <summary>
+        /// The vertex the GPU draws at tess (s, t) of draw patch p: Core's float mirror of the vertex
+        /// stage (range mapping from the float levels and origin, the continuous octave rule at this
+        /// camera), object space. Seam vertices form q through the coarse tile on the GPU; the same
+        /// point to a float rounding.
+        /// </summary>
+        public double[] DrawnObjectPoint(int drawPatch, double s, double t)
+        {
+            int level = LodTiles.LevelOfPatch(drawPatch, Tiles), slot = LodTiles.SlotOfPatch(drawPatch, Tiles);
+            var r = new Float4(Tail[4 + 4 * level], Tail[5 + 4 * level], Tail[6 + 4 * level], Tail[7 + 4 * level]);
+            TerrainPoint q = RangeMapping.ToTerrainPoint(r, Inputs.Params.rangeOrigin, Tiles, slot % Tiles, slot / Tiles, (float)s, (float)t);
+            Float3 v = TerrainVertex.EvaluateAtWithCamera(Inputs, q, TerrainKeywords.Noise, Camera.ObjectToClipFloat(), new Float2(Width, Height)).PositionOS;
+            return new double[] { v.x, v.y, v.z };
         }
 
         /// <summary>The same scene with the camera moved <paramref name="meters"/> along +y (forward) and laid out again.</summary>

@@ -10,7 +10,10 @@ namespace GregoryTerrain.Rig
     /// --factor), the continuous octave rule at --segment-pixels, the camera's screen --width x --height,
     /// over --grid FILE or the demo grid (gt demo's terrain, fitted to 129 x 129 samples).
     /// Writes the --buffers folder and lod_tail.f32 (--params-tail) into --out, and prints
-    /// "levels L", "patches N" and "ranges ..." for Tools~/rig/lod-bench.sh.
+    /// "levels L", "patches N" and "ranges ..." for Tools~/rig/lod-bench.sh. --no-origin: the levels
+    /// absolute (no range origin; the renderer always sets one near the camera). With --factors FILE
+    /// (the GPU's GT_FACTOR_READBACK of that draw) it also prints one "lod_error ..." line: the drawn
+    /// triangles against the double full-detail surface (LodError, internals.md "Levels of detail").
     /// </summary>
     static class LodSceneCommand
     {
@@ -30,6 +33,7 @@ namespace GregoryTerrain.Rig
                 SegmentPixels = (float)a.Double("segment-pixels", 2),
                 Width = a.Int("width", 1920),
                 Height = a.Int("height", 1080),
+                UseOrigin = !a.Flag("no-origin"),
             };
             double[] ground = a.Doubles("ground", 2, "0.37,0.52");
             s.Ground = new Double2(ground[0], ground[1]);
@@ -38,6 +42,12 @@ namespace GregoryTerrain.Rig
             Console.WriteLine($"patches {s.Patches}");
             Console.WriteLine($"level0_m {s.TerrainMeters * s.Levels[0].Width:G6}");
             Console.WriteLine($"tail {Path.Combine(dir, "lod_tail.f32")}");
+            Console.WriteLine(FormattableString.Invariant($"origin {s.Origin.Value.Value.x:R},{s.Origin.Value.Value.y:R}"));
+            if (a.Flag("factors"))
+            {
+                PatchFactors[] f = PatchFactors.FromReadback(BufferFiles.Read(a.String("factors")), s.Patches);
+                Console.WriteLine(LodError.Measure(s, f, a.Int("max-cells", 1 << 20)));
+            }
             return 0;
         }
     }

@@ -1,0 +1,27 @@
+using System;
+
+namespace GregoryTerrain.Rig
+{
+    /// <summary>
+    /// The screen error of a levels-of-detail view (internals.md, "Levels of detail: screen error"):
+    /// every drawn tile cut into the cells of the integer factors the GPU gave it (GT_FACTOR_READBACK),
+    /// its vertices where the vertex stage puts them (Core's float mirror: float range mapping, the
+    /// continuous octave rule, float positions) and, at the vertices, edge midpoints and cell centres,
+    /// the distance to the full-detail surface (Gregory + every noise octave, double) at the same
+    /// (u, v). Two pixel figures: "bound" is ErrorMeasure's (3D distance times the largest pixels a
+    /// unit covers there: what the tessellation target bounds), "screen" is where the drawn triangle
+    /// shows the sample (vertices projected by the float matrix, as the GPU does) against where the
+    /// exact point projects in double: what the eye sees, float transform included.
+    /// </summary>
+    static class LodError
+    {
+        public static string Measure(LodScene s, PatchFactors[] factors, int maxCells)
+        {
+            if (factors.Length != s.Patches) throw new ArgumentException($"{factors.Length} patch factors given, {s.Patches} patches drawn");
+            ErrorResult r = ErrorMeasure.Measure(s.DrawnObjectPoint, s.ExactObjectPoint, factors, s.Camera, fractionalOdd: false, maxCellsPerPatch: maxCells);
+            double m = s.TerrainMeters;
+            return FormattableString.Invariant(
+                $"lod_error max_px {r.MaxScreenPixels:G4} rms_px {r.RmsScreenPixels:G4} bound_max_px {r.MaxPixels:G4} bound_rms_px {r.RmsPixels:G4} max_m {r.MaxWorld * m:G4} rms_m {r.RmsWorld * m:G4} samples {r.Samples} triangles_model {r.Triangles} culled {r.CulledPatches}");
+        }
+    }
+}
