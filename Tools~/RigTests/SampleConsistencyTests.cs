@@ -190,13 +190,22 @@ namespace GregoryTerrain.Rig.Tests
             Assert.That(checkedRefs, Is.GreaterThanOrEqualTo(3), "grid, material, terrain");
         }
 
-        [Test]
-        public void SceneHasTheTerrainACameraAndALight()
+        /// <summary>The scripts each sample scene must run (besides the renderer): what the sample is about.</summary>
+        static IEnumerable<TestCaseData> SceneScripts()
         {
-            var scene = _objects.Where(o => o.File.EndsWith(".unity")).ToList();
-            var scripts = ScriptedObjects().Where(x => x.obj.File.EndsWith(".unity")).Select(x => x.script.ClassName).ToList();
-            Assert.That(scripts, Does.Contain("GregoryTerrainRenderer").And.Contain("FlyoverCamera"));
-            Assert.That(scene.Count(o => o.ClassName == "Camera"), Is.EqualTo(1));
+            yield return new TestCaseData("Sample.unity", new[] { "FlyoverCamera", "SnowSimulator" });
+            yield return new TestCaseData("GroundWalk.unity", new[] { "GroundWalker", "GregoryTerrainCollider", "RollingSpheres" });
+        }
+
+        [TestCaseSource(nameof(SceneScripts))]
+        public void SceneHasTheTerrainACameraAndALight(string sceneFile, string[] scripts)
+        {
+            var scene = _objects.Where(o => Path.GetFileName(o.File) == sceneFile).ToList();
+            Assert.That(scene, Is.Not.Empty, sceneFile);
+            var used = ScriptedObjects().Where(x => Path.GetFileName(x.obj.File) == sceneFile).Select(x => x.script.ClassName).ToList();
+            Assert.That(used, Does.Contain("GregoryTerrainRenderer"));
+            foreach (string s in scripts) Assert.That(used, Does.Contain(s), sceneFile);
+            Assert.That(scene.Count(o => o.ClassName == "Camera"), Is.EqualTo(1), sceneFile);
             Assert.That(Regex.IsMatch(string.Concat(scene.Where(o => o.ClassName == "GameObject").Select(o => o.Text)), @"m_TagString: MainCamera"),
                 Is.True, "the camera is tagged MainCamera (Camera.main)");
             Assert.That(scene.Count(o => o.ClassName == "Light"), Is.GreaterThanOrEqualTo(1), "a main light");
@@ -208,6 +217,15 @@ namespace GregoryTerrain.Rig.Tests
                     Assert.That(comp, Is.Not.Null, go + ": component " + c.Groups[1].Value);
                     Assert.That(comp.Text, Does.Contain($"m_GameObject: {{fileID: {go.Anchor}}}"), comp + " belongs to " + go);
                 }
+            // A child Transform names its parent, and the parent lists it.
+            foreach (YamlObject t in scene.Where(o => o.ClassName == "Transform"))
+            {
+                string father = Regex.Match(t.Text, @"m_Father: \{fileID: (-?\d+)\}").Groups[1].Value;
+                if (father == "0") continue;
+                YamlObject parent = scene.SingleOrDefault(o => o.Anchor == father && o.ClassName == "Transform");
+                Assert.That(parent, Is.Not.Null, t + ": m_Father");
+                Assert.That(parent.Text, Does.Contain($"- {{fileID: {t.Anchor}}}"), parent + " lists its child " + t);
+            }
         }
 
         /// <summary>

@@ -10,7 +10,7 @@ using NUnit.Framework;
 namespace GregoryTerrain.Rig.Tests
 {
     /// <summary>
-    /// Samples~/TerrainFlyover/PatchGrid.asset must be the real fitted grid: its YAML is read back
+    /// Samples~/TerrainFlyover/PatchGrid.asset (and its copy in Samples~/GroundWalk) must be the real fitted grid: its YAML is read back
     /// (numbers parsed here, not by the tool that wrote them) into a PatchGrid that is valid and equal,
     /// bit for bit, to what <c>gt-cli demo-grid</c> builds; its fields must be PatchGridAsset's
     /// serialized fields in declaration order; and <c>gt-cli unity-asset</c> must reproduce the file.
@@ -18,7 +18,8 @@ namespace GregoryTerrain.Rig.Tests
     [TestFixture]
     public class SampleGridAssetTests
     {
-        static readonly string AssetPath = PackageRoot.Combine("Samples~", "TerrainFlyover", "PatchGrid.asset");
+        /// <summary>The grid of each sample that ships one (a sample is imported on its own, so each has its copy).</summary>
+        static string AssetPath(string sample) => PackageRoot.Combine("Samples~", sample, "PatchGrid.asset");
         string _tmp;
         PatchGrid _demo;
         string _demoJsonPath;
@@ -39,10 +40,11 @@ namespace GregoryTerrain.Rig.Tests
             if (_tmp != null && Directory.Exists(_tmp)) Directory.Delete(_tmp, true);
         }
 
-        [Test]
-        public void AssetParsesIntoAValidGridEqualToTheDemoGrid()
+        [TestCase("TerrainFlyover")]
+        [TestCase("GroundWalk")]
+        public void AssetParsesIntoAValidGridEqualToTheDemoGrid(string sample)
         {
-            PatchGrid asset = ReadAsset(File.ReadAllText(AssetPath));
+            PatchGrid asset = ReadAsset(File.ReadAllText(AssetPath(sample)));
             Assert.DoesNotThrow(asset.Validate);
             Assert.That(asset.Columns, Is.EqualTo(_demo.Columns));
             Assert.That(asset.Rows, Is.EqualTo(_demo.Rows));
@@ -68,14 +70,15 @@ namespace GregoryTerrain.Rig.Tests
             Assert.That(g1, Is.LessThan(1e-6), "the fitted grid is G1");
         }
 
-        [Test]
-        public void AssetFieldsAreThePatchGridAssetSerializedFieldsInOrder()
+        [TestCase("TerrainFlyover")]
+        [TestCase("GroundWalk")]
+        public void AssetFieldsAreThePatchGridAssetSerializedFieldsInOrder(string sample)
         {
             string source = File.ReadAllText(PackageRoot.Combine("Runtime", "PatchGridAsset.cs"));
             var declared = Regex.Matches(source, @"\[SerializeField[^\]]*\]\s*(?:\w+(?:\[\])?)\s+(\w+)\s*=")
                 .Select(m => m.Groups[1].Value).ToList();
             Assert.That(declared, Is.EqualTo(new[] { "columns", "rows", "xLines", "yLines", "blocks", "controlPoints" }), "PatchGridAsset's serialized fields");
-            string yaml = File.ReadAllText(AssetPath);
+            string yaml = File.ReadAllText(AssetPath(sample));
             var written = Regex.Matches(yaml, @"^  (\w+):", RegexOptions.Multiline).Select(m => m.Groups[1].Value)
                 .Where(n => !n.StartsWith("m_")).ToList();
             Assert.That(written, Is.EqualTo(declared));
@@ -85,15 +88,16 @@ namespace GregoryTerrain.Rig.Tests
             Assert.That(yaml, Does.Contain($"m_Script: {{fileID: 11500000, guid: {guid}, type: 3}}"));
         }
 
-        [Test]
-        public void UnityAssetCommandReproducesTheSampleFile()
+        [TestCase("TerrainFlyover")]
+        [TestCase("GroundWalk")]
+        public void UnityAssetCommandReproducesTheSampleFile(string sample)
         {
             string meta = File.ReadAllText(PackageRoot.Combine("Runtime", "PatchGridAsset.cs.meta"));
             string guid = Regex.Match(meta, @"^guid: ([0-9a-f]{32})", RegexOptions.Multiline).Groups[1].Value;
             string output = Path.Combine(_tmp, "PatchGrid.asset");
             RunGtCli("unity-asset", "--grid", _demoJsonPath, "--out", output, "--script-guid", guid, "--name", "PatchGrid");
-            Assert.That(File.ReadAllText(output), Is.EqualTo(File.ReadAllText(AssetPath)),
-                "regenerate with: gt-cli demo-grid --out g.json; gt-cli unity-asset --grid g.json --out Samples~/TerrainFlyover/PatchGrid.asset --script-guid " + guid);
+            Assert.That(File.ReadAllText(output), Is.EqualTo(File.ReadAllText(AssetPath(sample))),
+                "regenerate with: gt-cli demo-grid --out g.json; gt-cli unity-asset --grid g.json --out Samples~/" + sample + "/PatchGrid.asset --script-guid " + guid);
         }
 
         /// <summary>

@@ -17,6 +17,21 @@ namespace GregoryTerrain.Rig.Tests
     public class SampleSceneFieldTests
     {
         static readonly string ScenePath = PackageRoot.Combine("Samples~", "TerrainFlyover", "Sample.unity");
+
+        /// <summary>Every sample's scene: (sample folder, scene file). A new sample's scene is added here.</summary>
+        static readonly string[][] Scenes =
+        {
+            new[] { "TerrainFlyover", "Sample.unity" },
+            new[] { "GroundWalk", "GroundWalk.unity" },
+        };
+
+        [Test]
+        public void EverySampleSceneIsListed()
+        {
+            var onDisk = Directory.GetFiles(PackageRoot.Combine("Samples~"), "*.unity", SearchOption.AllDirectories)
+                .Select(f => Path.GetRelativePath(PackageRoot.Combine("Samples~"), f).Replace('\\', '/')).OrderBy(f => f, StringComparer.Ordinal);
+            Assert.That(onDisk, Is.EqualTo(Scenes.Select(s => s[0] + "/" + s[1]).OrderBy(f => f, StringComparer.Ordinal)));
+        }
         static readonly Regex Header = new Regex(@"^--- !u!(\d+) &(-?\d+)\n", RegexOptions.Multiline);
 
         sealed class SceneObject { public string ClassId, Anchor, ClassName, Text; public List<string> Paths; }
@@ -158,14 +173,14 @@ namespace GregoryTerrain.Rig.Tests
             return problems;
         }
 
-        [Test]
-        public void EveryObjectHasExactlyTheFieldsUnity2022Writes()
+        [TestCaseSource(nameof(Scenes))]
+        public void EveryObjectHasExactlyTheFieldsUnity2022Writes(string sample, string scene)
         {
             var expected = ExpectedFields();
             Assert.That(expected["Camera"].Count(p => !p.Contains('.')), Is.EqualTo(42), "Camera fields listed");
             Assert.That(expected["Light"].Count(p => !p.Contains('.')), Is.EqualTo(33), "Light fields listed");
             Assert.That(expected["RenderSettings"].Count, Is.EqualTo(28), "RenderSettings fields listed");
-            var problems = Problems(File.ReadAllText(ScenePath));
+            var problems = Problems(File.ReadAllText(PackageRoot.Combine("Samples~", sample, scene)));
             Assert.That(problems, Is.Empty, string.Join("\n", problems));
         }
 
@@ -178,12 +193,19 @@ namespace GregoryTerrain.Rig.Tests
             var problems = Problems(broken);
             Assert.That(problems, Does.Contain("&100002 Camera: missing field m_Iso"));
             Assert.That(problems, Does.Contain("&300002 Light: unknown field m_LightUnit"));
+            // And on the physics objects of the walk scene (fields listed from a 2022.3 project's files).
+            string walk = File.ReadAllText(PackageRoot.Combine("Samples~", "GroundWalk", "GroundWalk.unity")).Replace("\r\n", "\n");
+            string brokenWalk = walk.Replace("  m_CookingOptions: 30\n", "").Replace("  m_Constraints: 112\n", "  m_Constraints: 112\n  m_MaxLinearVelocity: 100\n");
+            Assert.That(brokenWalk, Is.Not.EqualTo(walk));
+            var walkProblems = Problems(brokenWalk);
+            Assert.That(walkProblems, Does.Contain("&400002 MeshCollider: missing field m_CookingOptions"));
+            Assert.That(walkProblems, Does.Contain("&100002 Rigidbody: unknown field m_MaxLinearVelocity"));
         }
 
-        [Test]
-        public void SceneHasAListenerASkyAndASunForEveryPipeline()
+        [TestCaseSource(nameof(Scenes))]
+        public void SceneHasAListenerASkyAndASunForEveryPipeline(string sample, string scene)
         {
-            var objects = ReadScene(File.ReadAllText(ScenePath));
+            var objects = ReadScene(File.ReadAllText(PackageRoot.Combine("Samples~", sample, scene)));
             SceneObject listener = objects.Single(o => o.ClassName == "AudioListener");
             SceneObject camera = objects.Single(o => o.ClassName == "Camera");
             Assert.That(listener.Text, Does.Contain(Regex.Match(camera.Text, @"m_GameObject: \{fileID: -?\d+\}").Value), "the listener sits on the camera");
@@ -196,7 +218,7 @@ namespace GregoryTerrain.Rig.Tests
             Assert.That(camera.Text, Does.Contain("m_ClearFlags: 1"), "the camera clears to the skybox");
             // The light's GameObject runs SampleSun, which sets HDRP's lux and exposure; Built-in/URP intensity in the Light.
             string lightGo = Regex.Match(light.Text, @"m_GameObject: \{fileID: (-?\d+)\}").Groups[1].Value;
-            string sunGuid = Regex.Match(File.ReadAllText(PackageRoot.Combine("Samples~", "TerrainFlyover", "SampleSun.cs.meta")), @"guid: ([0-9a-f]{32})").Groups[1].Value;
+            string sunGuid = Regex.Match(File.ReadAllText(PackageRoot.Combine("Samples~", sample, "SampleSun.cs.meta")), @"guid: ([0-9a-f]{32})").Groups[1].Value;
             SceneObject sun = objects.Single(o => o.ClassName == "MonoBehaviour" && o.Text.Contains("guid: " + sunGuid));
             Assert.That(sun.Text, Does.Contain($"m_GameObject: {{fileID: {lightGo}}}"));
             double lux = double.Parse(Regex.Match(sun.Text, @"hdrpLux: ([\d.eE+]+)").Groups[1].Value, System.Globalization.CultureInfo.InvariantCulture);

@@ -114,6 +114,8 @@ namespace UnityEngine
         public static float Cos(float f) => f;                                        // SR:Mathf.Cos
         public static float Lerp(float a, float b, float t) => a;                     // SR:Mathf.Lerp
         public static float Repeat(float t, float length) => t;                       // SR:Mathf.Repeat
+        public const float Rad2Deg = 57.29578f;                                       // SR:Mathf.Rad2Deg
+        public static float Atan2(float y, float x) => y;                             // SR:Mathf.Atan2
     }
 
     public struct Vector2                                                             // SR:Vector2
@@ -344,6 +346,8 @@ namespace UnityEngine
     {
         public static Vector2 mouseScrollDelta => default;                            // SR:Input-mouseScrollDelta
         public static float GetAxis(string axisName) => 0f;                           // SR:Input.GetAxis
+        public static bool GetButtonDown(string buttonName) => false;                 // SR:Input.GetButtonDown
+        public static bool GetMouseButton(int button) => false;                       // SR:Input.GetMouseButton
     }
 #endif
 
