@@ -1,5 +1,6 @@
 #!/usr/bin/env python3
-"""Rewrites an 8-bit RGB, RGBA or indexed PNG as an indexed PNG of at most N colours (default 256),
+"""Rewrites an 8-bit RGB, RGBA or indexed PNG as an indexed PNG of at most N colours (default 64:
+renders and plots show no banding at 64, and the pictures are a quarter smaller than at 256),
 to keep the manual's pictures small: the palette by median cut over the picture's colours (weighted
 by how often each occurs), each pixel mapped to the nearest palette colour, no dithering (renders and
 plots have smooth shading or flat areas, which dithering only makes noisier), zlib level 9. An
@@ -142,7 +143,7 @@ if __name__ == "__main__":
     args = [a for a in sys.argv[1:] if a != "--half"]
     if len(args) not in (2, 3):
         sys.exit(__doc__)
-    colours = int(args[2]) if len(args) == 3 else 256
+    colours = int(args[2]) if len(args) == 3 else 64
     if not 2 <= colours <= 256:
         sys.exit(f"COLOURS ({colours}) must lie in [2, 256]")
     w, h, pixels = read_rgb(args[0])
