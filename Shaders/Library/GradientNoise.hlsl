@@ -34,6 +34,8 @@ uint GradientNoiseHash2(int2 cell)
 
 float2 GradientNoiseGradient(uint h)
 {
+    // A table, not arithmetic: selects computing the same directions made the domain stage
+    // measurably slower (performance.md, "Where the domain stage's time goes").
     return kGradientNoiseDirections[h & 7u];
 }
 
@@ -152,6 +154,25 @@ void GradientNoiseSplitLattice(float hi, float local, float frequency, float off
     fraction = fr - cf;
 }
 
+// GradientNoiseSplitLattice of a point without a hi part (hi = 0, no range origin): the same cell
+// and fraction bit for bit (hi * frequency = 0 and its error 0 add nothing), without TwoProduct.
+void GradientNoiseSplitLocal(float local, float frequency, float offset, out int cell, out float fraction)
+{
+    float co = floor(offset);
+    precise float fr = local * frequency + (offset - co);
+    float cf = floor(fr);
+    cell = int(co) + int(cf);
+    fraction = fr - cf;
+}
+// GradientNoiseAtPoint of a point without a hi part (originHi = 0): the same value, bit for bit.
+float GradientNoiseAtLocal(float2 local, float frequency, float2 offset, out float2 gradient)
+{
+    int2 cell;
+    float2 f;
+    GradientNoiseSplitLocal(local.x, frequency, offset.x, cell.x, f.x);
+    GradientNoiseSplitLocal(local.y, frequency, offset.y, cell.y, f.y);
+    return GradientNoiseCell(cell, f, gradient);
+}
 // Noise at the lattice coordinate frequency * q + offset of a TerrainPoint (deep-zoom safe);
 // gradient w.r.t. the lattice coordinate (multiply by frequency for d/dq).
 float GradientNoiseAtPoint(TerrainPoint p, float frequency, float2 offset, out float2 gradient)

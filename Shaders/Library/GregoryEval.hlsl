@@ -6,13 +6,13 @@
 
 #include "GregoryBasis.hlsl"
 
-// Interior pair (i, j) of the tensor form: the pair's blended point q = t P0 + s P1 (t = a / (a + b),
-// s = b / (a + b), 0.5 each at the pair's corner, where its Bernstein weight is 0), the same from
-// cp[0] (qd, with d0 = P0 - cp[0], d1 = P1 - cp[0]), and the pair's share of the derivatives, which
+// Interior pair (i, j) of the tensor form: the pair's blended point t P0 + s P1 (t = a / (a + b),
+// s = b / (a + b), 0.5 each at the pair's corner, where its Bernstein weight is 0) as a difference to
+// the base corner (d0 = P0 - base, d1 = P1 - base), and the pair's share of the derivatives, which
 // the blend adds to the tensor sums: (W dt/du, W dt/dv) (P0 - P1) with GregoryBasisPair's
 // cancellation-free W dt/du = sigmaU K (a s) s, W dt/dv = -sigmaV K (b t) t, K = 9 ru rv.
-void GregoryEvaluatePair(float3 p0, float3 p1, float3 d0, float3 d1, float a, float b, float ru, float rv,
-                         float sigmaU, float sigmaV, out float3 q, out float3 qd, inout float3 extraU, inout float3 extraV)
+void GregoryEvaluatePair(float3 d0, float3 d1, float a, float b, float ru, float rv,
+                         float sigmaU, float sigmaV, out float3 qd, inout float3 extraU, inout float3 extraV)
 {
     float den = a + b;
     float t = den > 0.0 ? a / den : 0.5;
@@ -20,18 +20,28 @@ void GregoryEvaluatePair(float3 p0, float3 p1, float3 d0, float3 d1, float a, fl
     float K = 9.0 * ru * rv;
     float gu = sigmaU * K * (a * s) * s;
     float gv = -sigmaV * K * (b * t) * t;
-    q = t * p0 + s * p1;
     qd = t * d0 + s * d1;
     float3 e = d0 - d1;
     extraU += gu * e;
     extraV += gv * e;
 }
 
+// The corner of uv's quadrant (slot 0, 3, 12 or 15): GregoryEvaluate's base point.
+float3 GregoryBaseCorner(float3 cp[20], float u, float v)
+{
+    return u < 0.5 ? (v < 0.5 ? cp[0] : cp[3]) : (v < 0.5 ? cp[12] : cp[15]);
+}
+
 // The patch as a bicubic tensor product once each interior pair is blended into one point: per row
-// j (slots 4 i + j, i along u) three sums over i, then one over j. The same surface as the 20
-// weights of GregoryBasisWeights (which stay the reference), with ~40% fewer live values: the 60
-// weights were what made the domain stage slow (performance.md, "Where the domain stage's time
-// goes"). Exact at the four corners: every row sum there is 1 * one point + 0 * the others.
+// j (slots 4 i + j, i along u) sums over i, then one over j. The same surface as the 20 weights of
+// GregoryBasisWeights (which stay the reference). Everything is summed from the differences to one
+// corner point, the base (the derivative weights sum to 0, the position's to 1): on a patch 1e-6
+// wide at coordinates near 0.5 the points' terms are ~1e6 times the derivatives and float kept only
+// ~5% of them (normals off by 0.04); the differences are exact there (Sterbenz). The position is
+// base + its sum, so one set of row sums serves the position and dP/dv: a second set over the points
+// themselves made the domain stage measurably slower (performance.md, "Where the domain stage's
+// time goes"). The base is the corner of uv's quadrant, so the patch passes through
+// each corner exactly: there the sum is 1 * (base - base) = 0 and the other weights exactly 0.
 void GregoryEvaluate(float3 cp[20], float2 uv, out float3 position, out float3 dPdu, out float3 dPdv)
 {
     float u = saturate(uv.x);
@@ -41,33 +51,28 @@ void GregoryEvaluate(float3 cp[20], float2 uv, out float3 position, out float3 d
     GregoryBasisBernstein(v, bv, dv);
     float su = 1.0 - u;
     float sv = 1.0 - v;
-    // Derivatives from the differences to cp[0] (the derivative weights sum to 0): on a patch 1e-6
-    // wide at coordinates near 0.5 the points' terms are ~1e6 times the result and float kept only
-    // ~5% of it (normals off by 0.04); the differences are exact there (Sterbenz).
-    float3 q[16], d[16];
+    float3 corner = GregoryBaseCorner(cp, u, v);
+    float3 d[16];
     [unroll] for (uint k = 0u; k < 16u; k++)
-    {
-        q[k] = cp[k];
-        d[k] = cp[k] - cp[0];
-    }
+        d[k] = cp[k] - corner;
     float3 extraU = float3(0.0, 0.0, 0.0);
     float3 extraV = float3(0.0, 0.0, 0.0);
-    GregoryEvaluatePair(cp[5], cp[16], cp[5] - cp[0], cp[16] - cp[0], u, v, su * su, sv * sv, 1.0, 1.0, q[5], d[5], extraU, extraV);
-    GregoryEvaluatePair(cp[6], cp[17], cp[6] - cp[0], cp[17] - cp[0], u, sv, su * su, v * v, 1.0, -1.0, q[6], d[6], extraU, extraV);
-    GregoryEvaluatePair(cp[9], cp[18], cp[9] - cp[0], cp[18] - cp[0], su, v, u * u, sv * sv, -1.0, 1.0, q[9], d[9], extraU, extraV);
-    GregoryEvaluatePair(cp[10], cp[19], cp[10] - cp[0], cp[19] - cp[0], su, sv, u * u, v * v, -1.0, -1.0, q[10], d[10], extraU, extraV);
+    GregoryEvaluatePair(d[5], cp[16] - corner, u, v, su * su, sv * sv, 1.0, 1.0, d[5], extraU, extraV);
+    GregoryEvaluatePair(d[6], cp[17] - corner, u, sv, su * su, v * v, 1.0, -1.0, d[6], extraU, extraV);
+    GregoryEvaluatePair(d[9], cp[18] - corner, su, v, u * u, sv * sv, -1.0, 1.0, d[9], extraU, extraV);
+    GregoryEvaluatePair(d[10], cp[19] - corner, su, sv, u * u, v * v, -1.0, -1.0, d[10], extraU, extraV);
     position = float3(0.0, 0.0, 0.0);
     dPdu = extraU;
     dPdv = extraV;
     [unroll] for (uint j = 0u; j < 4u; j++)
     {
-        float3 row = bu[0] * q[j] + bu[1] * q[4u + j] + bu[2] * q[8u + j] + bu[3] * q[12u + j];
         float3 rowD = bu[0] * d[j] + bu[1] * d[4u + j] + bu[2] * d[8u + j] + bu[3] * d[12u + j];
         float3 rowU = du[0] * d[j] + du[1] * d[4u + j] + du[2] * d[8u + j] + du[3] * d[12u + j];
-        position += bv[j] * row;
+        position += bv[j] * rowD;
         dPdu += bv[j] * rowU;
         dPdv += dv[j] * rowD;
     }
+    position += corner;
 }
 
 // Unit normal of a surface with these partial derivatives: cross(dPdu, dPdv) / length, zero where

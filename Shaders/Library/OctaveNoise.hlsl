@@ -54,6 +54,21 @@ float OctaveSumResult(OctaveSum s, float4 noise, out float2 gradient)
 float OctaveNoise(TerrainPoint p, float4 noise, float octaveCount, out float2 gradient)
 {
     OctaveSum sum = OctaveSumStart(noise);
+    // Without a hi part (no range origin: uniform over a frame) the lattice split needs no
+    // TwoProduct (GradientNoiseAtLocal): the same values bit for bit, measurably cheaper
+    // (performance.md, "Where the domain stage's time goes"). Core's OctaveNoise.Evaluate mirrors it.
+    [branch] if (all(p.originHi == 0.0))
+    {
+        [unroll] for (uint k = 0u; k < GT_MAX_OCTAVES; ++k)
+        {
+            float fade = saturate(octaveCount - float(k));
+            if (fade <= 0.0) break;
+            float2 gk;
+            float nk = GradientNoiseAtLocal(p.local, sum.frequency, GradientNoiseStreamOffset(k), gk);
+            OctaveSumAdd(sum, fade, nk, gk, noise);
+        }
+        return OctaveSumResult(sum, noise, gradient);
+    }
     // [unroll], not [loop]: unrolled, each octave's stream offset is a constant (two hashes of k
     // per octave folded away) and the early-out is a uniform branch. Same arithmetic in the same
     // order, so the C# mirror is unchanged. It made the noise measurably cheaper (performance.md,

@@ -32,13 +32,12 @@ TerrainPoint MakeTerrainPoint(float2 hi, float2 lo)
 
 bool RelativeSurfaceIsActive(float4 rangeOrigin) { return any(rangeOrigin != 0.0); }
 
-// FindPatch decided on the precise point: the rounded hi + local can be one patch off within a float
-// step of a grid line, where u or v would be clamped (a flat strip at deep zoom). The lines are the
-// hi/lo pairs of _GridLines (right to ~1e-16). The tile path uses it too (TerrainVertex.hlsl).
-uint FindPatchPrecise(TerrainPoint q)
+// FindPatch decided on the precise point, from `patch`, FindPatch's answer on the rounded point: that
+// can be one patch off within a float step of a grid line, where u or v would be clamped (a flat
+// strip at deep zoom). The lines are the hi/lo pairs of _GridLines (right to ~1e-16).
+uint FindPatchCorrect(TerrainPoint q, uint patch)
 {
     uint n = GridColumns();
-    uint patch = FindPatch(TerrainPointApprox(q));
     uint i = patch % n;
     uint j = patch / n;
     float4 region = PatchRegion(patch);
@@ -50,6 +49,25 @@ uint FindPatchPrecise(TerrainPoint q)
     if (lo.y < 0.0 && j > 0u) j--;
     else if (hi.y >= 0.0 && j < GridRows() - 1u) j++;
     return j * n + i;
+}
+
+// The FindPatch rule decided on the precise point (the deep-zoom paths).
+uint FindPatchPrecise(TerrainPoint q)
+{
+    return FindPatchCorrect(q, FindPatch(TerrainPointApprox(q)));
+}
+
+// The tile path's lookup: FindPatchPrecise while q has a hi part (a range origin is set: every
+// point of the frame has the origin's, so the branch is uniform), else FindPatch on the plain float
+// point. Without an origin q is one float: a point within a float step of a line is one rounding
+// from either patch, whose surfaces meet there, so the correction buys nothing visible and cost a
+// fifth of the domain stage (performance.md, "Where the domain stage's time goes").
+uint FindPatchAt(TerrainPoint q)
+{
+    uint patch = FindPatch(TerrainPointApprox(q));
+    [branch] if (any(q.originHi != 0.0))
+        patch = FindPatchCorrect(q, patch);
+    return patch;
 }
 
 // p clamped into the hi/lo region (a, b, e, f) per axis; p itself, bit for bit, when inside.

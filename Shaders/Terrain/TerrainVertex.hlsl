@@ -70,15 +70,15 @@ struct TerrainSurfacePoint
 // maps normals too.
 float3 TerrainToObject(float3 v) { return v.xzy; }
 
-// The tile path after the global point q is formed: FindPatchPrecise on the hi/lo lines,
-// PatchLocalUV, GregoryEval of the relative points plus the reference point (Core's
+// The tile path after the global point q is formed: FindPatchAt (on the hi/lo lines while a range
+// origin is set), PatchLocalUV, GregoryEval of the relative points plus the reference point (Core's
 // TerrainVertex.EvaluateSurfaceAt). The precise patch matters at deep zoom, where the normal of a
 // vertex beside a line otherwise came from the neighbour.
 TerrainSurfacePoint EvaluateSurfaceAt(TerrainPoint q)
 {
     TerrainSurfacePoint s;
     s.q = q;
-    s.patch = FindPatchPrecise(q);
+    s.patch = FindPatchAt(q);
     s.region = PatchRegion(s.patch);
     s.regionLo = PatchRegionLo(s.patch);
     s.uv = PatchLocalUV(q, s.region, s.regionLo);

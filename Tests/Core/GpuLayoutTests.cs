@@ -74,6 +74,60 @@ namespace GregoryTerrain.Tests
         }
 
         [Test]
+        public void TilePathLookupIsPreciseOnlyWhileThePointHasAHiPart()
+        {
+            // A point 1e-12 left of the true line 0.13 (right of its float 0.129999995): with a hi part
+            // (a range origin) the precise rule puts it in patch (0, 1) = 2, FindPatch on the rounded
+            // point in (1, 1) = 3. Without one the point is one float and the tile path takes FindPatch.
+            var g = PatchGrid.CreateFlat(2, 2, new[] { 0.0, 0.13, 1.0 }, new[] { 0.0, 0.7000000001, 1.0 });
+            TerrainInputs inputs = TerrainInputs.ForGrid(g);
+            var split = new TerrainPoint(new Float2(0.13f, 0.75f), new Float2((float)(0.13 - 1e-12 - 0.13f), 0f));
+            Assert.That(inputs.FindPatch(RangeMapping.Approximate(split)), Is.EqualTo(3));
+            Assert.That(RelativeSurface.FindPatchAt(inputs, split), Is.EqualTo(2), "a hi part: the precise rule");
+            Assert.That(TerrainVertex.EvaluateSurfaceAt(inputs, split).patch, Is.EqualTo(2));
+            var rng = new Random(3);
+            for (int k = 0; k < 2000; k++)
+            {
+                var local = new Float2(k < 2 ? 0.13f : (float)rng.NextDouble(), k == 1 ? 0.7f : (float)rng.NextDouble());
+                var plain = new TerrainPoint(new Float2(0f, 0f), local);
+                Assert.That(RelativeSurface.FindPatchAt(inputs, plain), Is.EqualTo(inputs.FindPatch(local)), $"no hi part at {local}");
+                Assert.That(TerrainVertex.EvaluateSurfaceAt(inputs, plain).patch, Is.EqualTo(inputs.FindPatch(local)));
+            }
+        }
+
+        [Test]
+        public void FloatFindIntervalGuessGivesTheBinarySearchsAnswer()
+        {
+            // The uniform guess is only a shortcut: on uniform and uneven lines, on the lines themselves,
+            // between them, outside [0, 1] and at NaN, the answer is the largest i with lines[i] <= x.
+            var rng = new Random(5);
+            float[][] sets =
+            {
+                new[] { 0f, 0.25f, 0.5f, 0.75f, 1f },
+                new[] { 0f, 0.01f, 0.02f, 0.6f, 0.61f, 0.9f, 1f },
+                new[] { 0f, 1f },
+                new[] { 0f, 0.999f, 1f },
+            };
+            foreach (float[] lines in sets)
+            {
+                var xs = new System.Collections.Generic.List<float> { -1f, -0f, 1f, 2f, float.NaN, float.PositiveInfinity, float.NegativeInfinity };
+                foreach (float l in lines) { xs.Add(l); xs.Add(Step(l, -1)); xs.Add(Step(l, 1)); }
+                for (int k = 0; k < 2000; k++) xs.Add((float)rng.NextDouble());
+                foreach (float x in xs)
+                {
+                    int expect = 0;
+                    for (int i = 1; i < lines.Length - 1; i++) if (lines[i] <= x) expect = i;
+                    Assert.That(PatchGrid.FindInterval(new ReadOnlySpan<float>(lines), x), Is.EqualTo(expect),
+                                $"x = {x:R} on lines {string.Join(", ", lines)}");
+                }
+            }
+        }
+
+        // The float next to l >= 0 (dir = 1 up, -1 down).
+        static float Step(float l, int dir) =>
+            l == 0f ? dir * float.Epsilon : BitConverter.Int32BitsToSingle(BitConverter.SingleToInt32Bits(l) + dir);
+
+        [Test]
         public void RegionsLinesAndSize()
         {
             var g = PatchGrid.CreateFlat(3, 2, new[] { 0.0, 0.1, 0.7, 1.0 }, new[] { 0.0, 0.3, 1.0 });

@@ -7,6 +7,25 @@ namespace GregoryTerrain.Tests
     public class GradientNoiseTests
     {
         [Test]
+        public void AtLocalIsAtPointWithoutAHiPartBitForBit()
+        {
+            // The shaders' shortcut for points without a range origin must not change a single bit.
+            var rng = new Random(11);
+            for (int k = 0; k < 20000; k++)
+            {
+                var local = new Float2((float)(rng.NextDouble() * 2 - 0.5), (float)(rng.NextDouble() * 2 - 0.5));
+                if (k % 7 == 0) local = new Float2(k % 14 == 0 ? 0f : -0f, (float)rng.NextDouble());
+                float frequency = (float)Math.Pow(2, rng.NextDouble() * 20 - 2);
+                Float2 offset = GradientNoise.StreamOffset((uint)(k % 17));
+                float a = GradientNoise.AtLocal(local, frequency, offset, out Float2 ga);
+                float b = GradientNoise.AtPoint(new TerrainPoint(k % 3 == 0 ? new Float2(-0f, -0f) : new Float2(0f, 0f), local), frequency, offset, out Float2 gb);
+                Assert.That(BitConverter.SingleToInt32Bits(a), Is.EqualTo(BitConverter.SingleToInt32Bits(b)), $"value at {local} f {frequency:R}");
+                Assert.That(BitConverter.SingleToInt32Bits(ga.x), Is.EqualTo(BitConverter.SingleToInt32Bits(gb.x)), $"d/dx at {local} f {frequency:R}");
+                Assert.That(BitConverter.SingleToInt32Bits(ga.y), Is.EqualTo(BitConverter.SingleToInt32Bits(gb.y)), $"d/dy at {local} f {frequency:R}");
+            }
+        }
+
+        [Test]
         public void ZeroOnLatticePointsFloatAndDouble()
         {
             var rng = new Random(1);

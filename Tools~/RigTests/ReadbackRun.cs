@@ -302,7 +302,7 @@ namespace GregoryTerrain.Rig.Tests
                         ? TileLattice.TileToTerrainPoint(Inputs.Params, slot, s, 0f)
                         : TileLattice.TileToTerrainPoint(Inputs.Params, slot, 0f, s);
                     Float2 approx = RangeMapping.Approximate(q);
-                    int patch = RelativeSurface.FindPatchPrecise(Inputs, q);
+                    int patch = RelativeSurface.FindPatchAt(Inputs, q);
                     Float2 uv = RangeMapping.PatchLocalUV(q, Inputs.PatchRegion(patch), Inputs.PatchRegionLo(patch));
                     if (xAxis ? approx.x == gpuQ && uv.x == gpuLocal : approx.y == gpuQ && uv.y == gpuLocal) return s;
                 }

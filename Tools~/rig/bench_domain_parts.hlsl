@@ -9,14 +9,16 @@
 // (what the driver cannot prove dead); the pictures are wrong on purpose: these are timings only.
 //   PART_FULL         nothing removed but the deep-zoom branch (not taken at origin 0, but compiled
 //                     in: the terrain job minus this one is what that branch costs)
-//   PART_NO_LOOKUP    FindPatch's two binary searches -> the patch of a uniform grid, by multiply
+//   PART_NO_LOOKUP    FindPatchAt (FindPatch's guess, its binary searches as the fallback) -> the
+//                     patch of a uniform grid, by multiply
 //   PART_NO_RANGE     tile -> q and q -> (u, v) by plain float (no TwoSum, no tile lattice reads)
 //   PART_NO_DERIV     the Gregory derivatives (position only; dP/du, dP/dv of the corners' bilinear patch)
 //   PART_NO_GREGORY   the Gregory evaluation itself (the bilinear patch of the four corner points)
 //   PART_NO_OCTAVES   the noise height (colour kept)
 //   PART_ONE_OCTAVE   one octave instead of the frame's count: (full - one) / (count - 1) an octave
 //   PART_CHEAP_HASH   each PCG hash -> one multiply and shift
-//   PART_PLAIN_SPLIT  the lattice split (Dekker TwoProduct) -> floor(f q + offset) in plain float
+//   PART_PLAIN_SPLIT  the lattice split -> floor(f q + offset) in plain float (the octaves' split
+//                     without a hi part has no TwoProduct left; the colour noise's keeps it)
 //   PART_NO_NORMAL    the normal (and every derivative only it needs) -> up
 //   PART_NO_COLOUR    the height colour's noise
 //   PART_PLAIN        no noise, no colour: the plain domain stage
@@ -70,12 +72,46 @@ float PartNoiseAtPoint(TerrainPoint p, float frequency, float2 offset, out float
     return GradientNoiseCorners(g00, g10, g01, g11, f, gradient);
 }
 
+float PartNoiseAtLocal(float2 local, float frequency, float2 offset, out float2 gradient)
+{
+    int2 cell;
+    float2 f;
+#if defined(PART_PLAIN_SPLIT)
+    float2 x = local * frequency + offset;
+    float2 c = floor(x);
+    cell = int2(c);
+    f = x - c;
+#else
+    GradientNoiseSplitLocal(local.x, frequency, offset.x, cell.x, f.x);
+    GradientNoiseSplitLocal(local.y, frequency, offset.y, cell.y, f.y);
+#endif
+    uint h0 = PartHash(asuint(cell.y)), h1 = PartHash(asuint(cell.y + 1));
+    float2 g00 = GradientNoiseGradient(PartHash(asuint(cell.x) + h0));
+    float2 g10 = GradientNoiseGradient(PartHash(asuint(cell.x + 1) + h0));
+    float2 g01 = GradientNoiseGradient(PartHash(asuint(cell.x) + h1));
+    float2 g11 = GradientNoiseGradient(PartHash(asuint(cell.x + 1) + h1));
+    return GradientNoiseCorners(g00, g10, g01, g11, f, gradient);
+}
+
 float PartOctaveNoise(TerrainPoint p, float4 noise, float octaveCount, out float2 gradient)
 {
 #if defined(PART_ONE_OCTAVE)
     octaveCount = min(octaveCount, 1.0);
 #endif
     OctaveSum sum = OctaveSumStart(noise);
+    // OctaveNoise's branch: without a hi part (here, origin 0) the split without TwoProduct.
+    [branch] if (all(p.originHi == 0.0))
+    {
+        [unroll] for (uint k = 0u; k < GT_MAX_OCTAVES; ++k)
+        {
+            float fade = saturate(octaveCount - float(k));
+            if (fade <= 0.0) break;
+            float2 gk;
+            float nk = PartNoiseAtLocal(p.local, sum.frequency, GradientNoiseStreamOffset(k), gk);
+            OctaveSumAdd(sum, fade, nk, gk, noise);
+        }
+        return OctaveSumResult(sum, noise, gradient);
+    }
     [unroll] for (uint k = 0u; k < GT_MAX_OCTAVES; ++k)
     {
         float fade = saturate(octaveCount - float(k));
@@ -183,7 +219,7 @@ TerrainVaryings domain_part(PART_FACTORS factors, const OutputPatch<TileCorner, 
     float2 qa = TerrainPointApprox(q);
     patch = PartCountInterval(GridColumns() + 1u, GridRows(), qa.y) * GridColumns() + PartCountInterval(0u, GridColumns(), qa.x);
 #else
-    patch = FindPatchPrecise(q);   // the shipped lookup: hi/lo grid lines
+    patch = FindPatchAt(q);   // the shipped lookup (hi/lo grid lines only while a range origin is set)
 #endif
     region = PatchRegion(patch);
     float4 regionLo = PatchRegionLo(patch);

@@ -174,6 +174,11 @@ namespace GregoryTerrain
         /// <summary>Float version of <see cref="FindInterval(ReadOnlySpan{double}, double)"/>, on the float lines the GPU holds.</summary>
         public static int FindInterval(ReadOnlySpan<float> lines, float x)
         {
+            // HLSL PatchGridFindInterval: first the interval a uniform grid would give, kept when its
+            // lines bracket x; the same answer as the search (the lines increase).
+            int count = lines.Length - 1;
+            int g = x > 0f ? Math.Min((int)(Math.Min(x, 1f) * count), count - 1) : 0;
+            if (lines[g] <= x && (g == count - 1 || lines[g + 1] > x)) return g;
             int lo = 0, hi = lines.Length - 2;
             while (lo < hi)
             {

@@ -233,6 +233,28 @@ namespace GregoryTerrain
         }
 
         /// <summary>
+        /// HLSL <c>GradientNoiseSplitLocal</c>: <see cref="SplitLattice"/> of a point without a hi part
+        /// (hi = 0, no range origin), the same cell and fraction bit for bit (hi * frequency = 0 and its
+        /// error 0 add nothing), without <see cref="TwoProduct"/>.
+        /// </summary>
+        public static void SplitLocal(float local, float frequency, float offset, out int cell, out float fraction)
+        {
+            float co = GMath.floor(offset);
+            float fr = local * frequency + (offset - co);
+            float cf = GMath.floor(fr);
+            cell = unchecked((int)co + (int)cf);
+            fraction = fr - cf;
+        }
+
+        /// <summary>HLSL <c>GradientNoiseAtLocal</c>: <see cref="AtPoint"/> of a point whose originHi is 0, bit for bit.</summary>
+        public static float AtLocal(Float2 local, float frequency, Float2 offset, out Float2 gradient)
+        {
+            SplitLocal(local.x, frequency, offset.x, out int ix, out float fx);
+            SplitLocal(local.y, frequency, offset.y, out int iy, out float fy);
+            return EvaluateCell(ix, iy, fx, fy, out gradient);
+        }
+
+        /// <summary>
         /// Dekker's TwoProduct without FMA: <c>a * b = p + err</c> exactly (barring under/overflow),
         /// by Veltkamp's split of each factor into 12-bit halves whose products are exact in float.
         /// Needs strict IEEE steps; the HLSL mirror marks them <c>precise</c>.

@@ -34,42 +34,45 @@ namespace GregoryTerrain
             GregoryBasis.Bernstein(v, bv, dv);
             float su = 1f - u;
             float sv = 1f - v;
-            // Derivatives from the differences to cp[0] (the derivative weights sum to 0), not from the
-            // points, or a tiny patch far from the origin cancels away (see GregoryEval.hlsl).
-            Span<Float3> q = stackalloc Float3[16];
+            // Everything from the differences to the base corner (the derivative weights sum to 0, the
+            // position's to 1), not from the points, or a tiny patch far from the origin cancels away;
+            // the position is corner + its sum, exact at each corner (see GregoryEval.hlsl).
+            Float3 corner = BaseCorner(cp, u, v);
             Span<Float3> d = stackalloc Float3[16];
             for (int k = 0; k < 16; k++)
-            {
-                q[k] = cp[k];
-                d[k] = cp[k] - cp[0];
-            }
+                d[k] = cp[k] - corner;
             Float3 extraU = Float3.zero, extraV = Float3.zero;
-            EvaluatePair(cp[5], cp[16], cp[5] - cp[0], cp[16] - cp[0], u, v, su * su, sv * sv, 1f, 1f, out q[5], out d[5], ref extraU, ref extraV);
-            EvaluatePair(cp[6], cp[17], cp[6] - cp[0], cp[17] - cp[0], u, sv, su * su, v * v, 1f, -1f, out q[6], out d[6], ref extraU, ref extraV);
-            EvaluatePair(cp[9], cp[18], cp[9] - cp[0], cp[18] - cp[0], su, v, u * u, sv * sv, -1f, 1f, out q[9], out d[9], ref extraU, ref extraV);
-            EvaluatePair(cp[10], cp[19], cp[10] - cp[0], cp[19] - cp[0], su, sv, u * u, v * v, -1f, -1f, out q[10], out d[10], ref extraU, ref extraV);
+            EvaluatePair(d[5], cp[16] - corner, u, v, su * su, sv * sv, 1f, 1f, out d[5], ref extraU, ref extraV);
+            EvaluatePair(d[6], cp[17] - corner, u, sv, su * su, v * v, 1f, -1f, out d[6], ref extraU, ref extraV);
+            EvaluatePair(d[9], cp[18] - corner, su, v, u * u, sv * sv, -1f, 1f, out d[9], ref extraU, ref extraV);
+            EvaluatePair(d[10], cp[19] - corner, su, sv, u * u, v * v, -1f, -1f, out d[10], ref extraU, ref extraV);
             position = Float3.zero;
             dPdu = extraU;
             dPdv = extraV;
             for (int j = 0; j < 4; j++)
             {
-                Float3 row = bu[0] * q[j] + bu[1] * q[4 + j] + bu[2] * q[8 + j] + bu[3] * q[12 + j];
                 Float3 rowD = bu[0] * d[j] + bu[1] * d[4 + j] + bu[2] * d[8 + j] + bu[3] * d[12 + j];
                 Float3 rowU = du[0] * d[j] + du[1] * d[4 + j] + du[2] * d[8 + j] + du[3] * d[12 + j];
-                position += bv[j] * row;
+                position += bv[j] * rowD;
                 dPdu += bv[j] * rowU;
                 dPdv += dv[j] * rowD;
             }
+            position += corner;
         }
+
+        /// <summary>HLSL <c>GregoryBaseCorner</c>: the corner of (u, v)'s quadrant (slot 0, 3, 12 or 15).</summary>
+        static Float3 BaseCorner(ReadOnlySpan<Float3> cp, float u, float v) =>
+            u < 0.5f ? (v < 0.5f ? cp[0] : cp[3]) : (v < 0.5f ? cp[12] : cp[15]);
 
         /// <summary>
         /// Interior pair of the tensor form (HLSL <c>GregoryEvaluatePair</c>): the blended point
-        /// <c>t P0 + s P1</c> (<c>t = a / (a + b)</c>, 0.5 at the pair's corner), the same from cp[0], and
-        /// the pair's share <c>(W dt/du, W dt/dv) (P0 - P1)</c> of the derivatives, with
-        /// <see cref="GregoryBasis"/>'s cancellation-free <c>W dt/du = sigmaU K (a s) s</c>.
+        /// <c>t P0 + s P1</c> (<c>t = a / (a + b)</c>, 0.5 at the pair's corner) as a difference to the
+        /// base corner (<paramref name="d0"/> = P0 - corner), and the pair's share
+        /// <c>(W dt/du, W dt/dv) (P0 - P1)</c> of the derivatives, with <see cref="GregoryBasis"/>'s
+        /// cancellation-free <c>W dt/du = sigmaU K (a s) s</c>.
         /// </summary>
-        static void EvaluatePair(Float3 p0, Float3 p1, Float3 d0, Float3 d1, float a, float b, float ru, float rv,
-            float sigmaU, float sigmaV, out Float3 q, out Float3 qd, ref Float3 extraU, ref Float3 extraV)
+        static void EvaluatePair(Float3 d0, Float3 d1, float a, float b, float ru, float rv,
+            float sigmaU, float sigmaV, out Float3 qd, ref Float3 extraU, ref Float3 extraV)
         {
             float den = a + b;
             float t = den > 0f ? a / den : 0.5f;
@@ -77,7 +80,6 @@ namespace GregoryTerrain
             float K = 9f * ru * rv;
             float gu = sigmaU * K * (a * s) * s;
             float gv = -sigmaV * K * (b * t) * t;
-            q = t * p0 + s * p1;
             qd = t * d0 + s * d1;
             Float3 e = d0 - d1;
             extraU += gu * e;

@@ -22,11 +22,16 @@ namespace GregoryTerrain
         {
             float count = ClampedCount(settings, octaveCount);
             var sum = new OctaveSum(settings);
+            // Without a hi part (no range origin) the lattice split skips TwoProduct, as the HLSL
+            // does (its branch): the same values bit for bit.
+            bool local = p.originHi.x == 0f && p.originHi.y == 0f;
             for (int k = 0; k < settings.octaves; k++)
             {
                 float fade = GMath.saturate(count - k);   // 1 for whole octaves, the fraction for the last
                 if (fade <= 0f) break;
-                float nk = GradientNoise.AtPoint(p, sum.frequency, GradientNoise.StreamOffset((uint)k), out Float2 gk);
+                Float2 offset = GradientNoise.StreamOffset((uint)k);
+                float nk = local ? GradientNoise.AtLocal(p.local, sum.frequency, offset, out Float2 gk)
+                                 : GradientNoise.AtPoint(p, sum.frequency, offset, out gk);
                 sum.Add(fade, nk, gk, settings.alpha);
             }
             return sum.Result(settings.amplitude, out gradient);

@@ -124,8 +124,8 @@ namespace GregoryTerrain
 
         /// <summary>
         /// The tile path of <see cref="EvaluateSurface"/> after the global point is formed:
-        /// <see cref="RelativeSurface.FindPatchPrecise"/> on the hi/lo lines (at deep zoom the normal of a
-        /// vertex beside a line otherwise came from the neighbour), PatchLocalUV, GregoryEval of the
+        /// <see cref="RelativeSurface.FindPatchAt"/> (on the hi/lo lines while a range origin is set: at
+        /// deep zoom the normal of a vertex beside a line otherwise came from the neighbour), PatchLocalUV, GregoryEval of the
         /// relative points plus the patch's reference point. Use it with the q a GPU read back to
         /// compare the rest of the path at exactly the point the GPU used.
         /// </summary>
@@ -134,7 +134,7 @@ namespace GregoryTerrain
             if (inputs == null) throw new ArgumentNullException(nameof(inputs));
             if (!q.originHi.IsFinite || !q.local.IsFinite)
                 throw new ArgumentException($"q {q} must be finite", nameof(q));
-            int patch = RelativeSurface.FindPatchPrecise(inputs, q);
+            int patch = RelativeSurface.FindPatchAt(inputs, q);
             Float4 region = inputs.PatchRegion(patch), regionLo = inputs.PatchRegionLo(patch);
             return EvaluatePatch(inputs, q, patch, region, regionLo, RangeMapping.PatchLocalUV(q, region, regionLo));
         }
