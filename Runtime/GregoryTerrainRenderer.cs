@@ -593,7 +593,7 @@ namespace GregoryTerrain
         bool UpdateOutputOffset()
         {
             var keywords = material != null && material.IsKeywordEnabled(ShaderIds.NoiseKeyword) ? TerrainKeywords.Noise : TerrainKeywords.None;
-            float octaves = TerrainInputs.NoiseOctaveCount(_params);
+            float octaves = TerrainVertex.OutputOffsetOctaves(_params);
             if (_offsetGrid == _uploadedPatchGrid && _offsetKeywords == keywords && _offsetOrigin.Equals(_params.rangeOrigin)
                 && _offsetNoise.Equals(_params.noise) && _offsetOctaves.Equals(octaves)) return false;
             _offsetGrid = _uploadedPatchGrid;

@@ -51,6 +51,26 @@ namespace GregoryTerrain.Tests
             Assert.That(worstP, Is.GreaterThan(0.0), "a float path identical to double would mean the reference is not independent");
         }
 
+        /// <summary>
+        /// Under the levels' continuous octave rule (_NoiseOctaves.z &gt; 0) the vertices near the feet
+        /// output p(q) - p(O) at every octave, so the offset added back must be O's noise at every
+        /// octave, not at the frame's count from the range width (fewer here: the whole terrain at a
+        /// high frequency); that left the drawn ground metres off under the camera at 1,000 km.
+        /// </summary>
+        [Test]
+        public void OutputOffsetCarriesEveryOctaveUnderTheContinuousRule()
+        {
+            var noise = new NoiseSettings(0.0004f, 160f, 2f, 2f, 6);
+            var origin = RangeOrigin.For(new TerrainRange(0.37, 0.52, 0.37 + 1.0 / 32768, 0.52 + 1.0 / 32768));
+            TerrainParams p = TerrainParams.Create(_grid, TerrainRange.full, origin, new TessellationSettings(16, 64f, 1f, 0f), noise,
+                new HeightColorSettings(0.25f, 0.1f, 8f), new Float3(0, 0, 0), new Float3(1, 1, 1));
+            Assume.That(TerrainInputs.NoiseOctaveCount(p), Is.LessThan(5f), "the frame's count must leave octaves out for this check");
+            p.noiseOctaves = new Float4(p.noiseOctaves.x, p.noiseOctaves.y, 2f, 0f);
+            Double2 o = origin.Value;
+            double expected = RelativeSurface.ReferencePoint(_grid, origin).z + OctaveNoise.Evaluate(o.x, o.y, noise, 6f, out _);
+            Assert.That(TerrainVertex.OutputOffset(_grid, p, TerrainKeywords.Noise).z, Is.EqualTo(expected).Within(1e-12));
+        }
+
         [Test]
         public void SharedTileEdgesAreBitIdentical()
         {

@@ -192,7 +192,7 @@ namespace GregoryTerrain.Rig.Tests
             Tiles = 8;
             Factor = 8;
             TerrainMeters = terrainMeters;
-            LodScene s0 = Scene(), s1 = s0.Stepped(_grid, 1.0);
+            LodScene s0 = Scene(), s1 = s0.Stepped(1.0);
             float[] v0 = Draw(s0, "step0"), v1 = Draw(s1, "step1");
             // The same q drawn in both frames (a level that re-snapped draws other points): its jump in
             // pixels of the second camera, for the vertices in front of it.

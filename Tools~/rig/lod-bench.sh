@@ -43,7 +43,7 @@ for ((i = 0; i < ${#scene[@]}; i++)); do
 done
 timing=(); [ "$frames" -gt 1 ] && timing=(--frames "$frames" --warmup 2 --timestamps)
 "$harness" --vert "$spv/vert.spv" --tesc "$spv/tesc.spv" --tese "$spv/tese.spv" --frag "$spv/frag.spv" \
-  --buffers "$run" --params-tail "$run/lod_tail.f32" --patches "$patches" --width "$width" --height "$height" \
+  --buffers "$run" --params-tail "$run/lod_tail.f32" --patches "$patches" --width "$width" --height "$height" --reversed-z \
   --stats "${timing[@]}" "${png[@]}" "${device[@]}" > "$run/harness.txt"
 stat() { awk -v k="$1" '$1 == "stat" && $2 == k { print $3 }' "$run/harness.txt"; }
 echo "lod levels $levels"
@@ -56,7 +56,7 @@ grep '^time ' "$run/harness.txt" || true
 if [ "$error" = 1 ]; then
   fr="$BUILD_DIR/spirv/factor_readback+lod+noise"
   "$harness" --vert "$fr/vert.spv" --tesc "$fr/tesc.spv" --tese "$fr/tese.spv" --frag "$fr/frag.spv" \
-    --buffers "$run" --params-tail "$run/lod_tail.f32" --patches "$patches" --width "$width" --height "$height" \
+    --buffers "$run" --params-tail "$run/lod_tail.f32" --patches "$patches" --width "$width" --height "$height" --reversed-z \
     --readback "$run/factors.f32" --readback-floats $((8 * patches)) "${device[@]}" > "$run/harness-factors.txt" \
     || die "factor readback draw failed ($run/harness-factors.txt)"
   [ -n "${GT_LOD_SKIP_ERROR:-}" ] || "$cli" lod-scene --out "$run/error-scene" "${scene[@]}" --factors "$run/factors.f32" | grep '^lod_error ' | sed 's/^lod_error /lod error /'

@@ -37,7 +37,7 @@ draw() {  # draw NAME KIND PATCHES LOG
   local v="$run/spv/$2" dir="$run/$1/$2" tail=()
   [ "$2" = lod ] && tail=(--params-tail "$dir/lod_tail.f32")
   "$H" "${dev[@]}" --vert "$v/vert.spv" --tesc "$v/tesc.spv" --tese "$v/tese.spv" --frag "$v/frag.spv" \
-    --buffers "$dir" "${tail[@]}" --patches "$3" --width 1920 --height 1080 --stats \
+    --buffers "$dir" "${tail[@]}" --patches "$3" --width 1920 --height 1080 --reversed-z --stats \
     --frames "$frames" --warmup 3 --timestamps >"$4" || { cat "$4"; exit 1; }
 }
 first=1

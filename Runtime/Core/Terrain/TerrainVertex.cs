@@ -241,10 +241,22 @@ namespace GregoryTerrain
             {
                 Double2 o = origin.Value;
                 var noise = new NoiseSettings(p.noise.x, p.noise.y, p.noise.z, p.noise.w, (int)p.noiseOctaves.x);
-                s.z += OctaveNoise.Evaluate(o.x, o.y, noise, TerrainInputs.NoiseOctaveCount(p), out _);
+                s.z += OctaveNoise.Evaluate(o.x, o.y, noise, OutputOffsetOctaves(p), out _);
             }
             return s;
         }
+
+        /// <summary>
+        /// The octaves of p(O) in <see cref="OutputOffset(PatchGrid, TerrainParams, TerrainKeywords)"/>: a vertex
+        /// outputs <c>p_c(q) - p_c(O)</c> at its own count c, so the offset must be O's noise at the
+        /// count of the vertices the eye sees closest. Single-range rule: the frame's one count. Under
+        /// the continuous rule (<c>_NoiseOctaves.z</c> &gt; 0, the levels) every octave: the feet draw
+        /// them all, and a farther vertex's count misses only octaves its rule calls invisible there.
+        /// (The frame's count, from the width of the whole terrain, left out octaves the feet draw:
+        /// the drawn ground stood metres off under the camera at 1,000 km.)
+        /// </summary>
+        public static float OutputOffsetOctaves(TerrainParams p) =>
+            p.noiseOctaves.z > 0f ? GMath.clamp(p.noiseOctaves.x, 0f, NoiseSettings.MaxOctaves) : TerrainInputs.NoiseOctaveCount(p);
 
         // HLSL FinishTerrainVertex: everything TerrainVertex computes from the surface point on, before the camera.
         // The HLSL takes the deep-zoom surface and noise in one branch (the untaken code of two branches

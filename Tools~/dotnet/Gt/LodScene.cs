@@ -26,6 +26,14 @@ namespace GregoryTerrain.Rig
         public double LookAheadMeters = 200;
         public NoiseSettings Noise = new NoiseSettings(0.004f, 16f, 2f, 2f, 6);
         /// <summary>
+        /// The terrain width (metres) whose relief the scene keeps in metres: the grid's heights and the
+        /// noise amplitude scale by <c>ReliefMeters / TerrainMeters</c> and the noise frequency by the
+        /// inverse, so a 1,000 km terrain has the 100 km one's mountains and noise (same heights and
+        /// wavelengths in metres), as a real terrain would, not ten times taller ones seen from the
+        /// same 2 m. 0: <see cref="TerrainMeters"/> (the grid stretched, heights included).
+        /// </summary>
+        public double ReliefMeters = 100000;
+        /// <summary>
         /// Whether the levels go up relative to a range origin near the camera (what the renderer does:
         /// RangeOrigin.For of the finest level), so the vertices output S(q) - S(O) from precise
         /// differences and the camera sits near 0 (precision.md). False: the plain absolute path.
@@ -34,6 +42,8 @@ namespace GregoryTerrain.Rig
         /// <summary>The origin in use; <see cref="Build"/> picks one when unset, <see cref="Stepped"/> keeps it (as the renderer's tracker does for a small move).</summary>
         public RangeOrigin? Origin;
 
+        /// <summary>The noise drawn: <see cref="Noise"/> with the relief's scale (<see cref="ReliefMeters"/>).</summary>
+        public NoiseSettings DrawnNoise;
         public TerrainInputs Inputs;
         /// <summary>What the renderer adds to a vertex's output (terrain space, double): S(O) + p(O), or 0 without an origin.</summary>
         public Double3 OutputOffset;
@@ -48,6 +58,12 @@ namespace GregoryTerrain.Rig
         /// <summary>Lays the levels and the camera out over <paramref name="grid"/>.</summary>
         public LodScene Build(PatchGrid grid)
         {
+            if (!(ReliefMeters >= 0) || double.IsInfinity(ReliefMeters)) throw new ArgumentException($"relief-m ({ReliefMeters}) must be >= 0 and finite", "relief-m");
+            double relief = ReliefMeters > 0 ? ReliefMeters / TerrainMeters : 1.0;
+            _source = grid;
+            DrawnNoise = relief == 1.0 ? Noise
+                : new NoiseSettings((float)(Noise.amplitude * relief), (float)(Noise.frequency / relief), Noise.alpha, Noise.beta, Noise.octaves);
+            if (relief != 1.0) grid = ScaleHeights(grid, relief);
             if (Tiles % 2 != 0) throw new ArgumentException($"tiles ({Tiles}) must be even: a finer level covers M / 2 coarse tiles", "tiles");
             int n = LodLevels.FinestExponent(TerrainMeters, FinestMeters);
             var levels = new TerrainRange[LodLevels.LevelCount(n)];
@@ -58,7 +74,7 @@ namespace GregoryTerrain.Rig
             var tess = Factor > 0 ? TessellationSettings.Uniform(Tiles, Factor) : new TessellationSettings(Tiles, MaxFactor, TargetPixels, 0f);
             if (Origin == null) Origin = UseOrigin ? RangeOrigin.For(levels[0]) : RangeOrigin.zero;
             RangeOrigin origin = Origin.Value;
-            TerrainParams p = TerrainParams.Create(grid, TerrainRange.full, origin, tess, Noise,
+            TerrainParams p = TerrainParams.Create(grid, TerrainRange.full, origin, tess, DrawnNoise,
                 new HeightColorSettings(0.25f, 0.15f, 24f), new Float3(0.2f, 0.3f, 0.1f), new Float3(0.8f, 0.8f, 0.8f));
             p.noiseOctaves = new Float4(p.noiseOctaves.x, p.noiseOctaves.y, SegmentPixels, 0f);
             Inputs = TerrainInputs.Create(grid, p);
@@ -75,21 +91,40 @@ namespace GregoryTerrain.Rig
             _grid = grid;
             OutputOffset = TerrainVertex.OutputOffset(grid, p, TerrainKeywords.Noise);
             // The surface under the camera with every octave (the feet draw them all); the camera in
-            // the vertices' frame (output minus the offset), built in double.
+            // the vertices' frame (output minus the offset), built in double. Reversed depth, as Unity
+            // draws (the harness needs --reversed-z, HarnessArgs): with 0..1 depth a far ridge's back
+            // faces won the depth test in speckles (RigCamera.LookAt).
             double ground = FullDetail(Ground.x, Ground.y).z;
             double[] eye = { Ground.x - OutputOffset.x, ground + EyeMeters * Meter - OutputOffset.z, Ground.y - OutputOffset.y };
             double[] target = { Ground.x - OutputOffset.x, ground - OutputOffset.z, Ground.y + LookAheadMeters * Meter - OutputOffset.y };
-            Camera = RigCamera.LookAt(eye, target, FovYDegrees, Width, Height, 0.05 * Meter, 2.0, RigCamera.Scale(1, 1, 1));
+            Camera = RigCamera.LookAt(eye, target, FovYDegrees, Width, Height, 0.05 * Meter, 2.0, RigCamera.Scale(1, 1, 1), reversedZ: true);
             return this;
         }
 
-        PatchGrid _grid;
+        PatchGrid _grid, _source;
+
+        /// <summary>The grid with every control point's height times <paramref name="k"/> (Gregory patches are affine invariant: the surface's heights times k).</summary>
+        static PatchGrid ScaleHeights(PatchGrid grid, double k)
+        {
+            var patches = new GregoryPatch[grid.PatchCount];
+            for (int p = 0; p < patches.Length; p++)
+            {
+                var points = new Double3[GregoryPatch.SlotCount];
+                for (int c = 0; c < points.Length; c++)
+                {
+                    Double3 v = grid.Patches[p][c];
+                    points[c] = new Double3(v.x, v.y, v.z * k);
+                }
+                patches[p] = new GregoryPatch(points);
+            }
+            return new PatchGrid(grid.Columns, grid.Rows, grid.XLines, grid.YLines, patches);
+        }
 
         /// <summary>The full-detail surface in double (terrain space: x, y, height): Gregory + every noise octave.</summary>
         public Double3 FullDetail(double x, double y)
         {
             Double3 s = RelativeSurface.SurfaceAt(_grid, new Double2(x, y));
-            s.z += OctaveNoise.Evaluate(x, y, Noise, Noise.octaves, out _);
+            s.z += OctaveNoise.Evaluate(x, y, DrawnNoise, DrawnNoise.octaves, out _);
             return s;
         }
 
@@ -124,11 +159,11 @@ namespace GregoryTerrain.Rig
         }
 
         /// <summary>The same scene with the camera moved <paramref name="meters"/> along +y (forward) and laid out again.</summary>
-        public LodScene Stepped(PatchGrid grid, double meters)
+        public LodScene Stepped(double meters)
         {
             var s = (LodScene)MemberwiseClone();
             s.Ground = new Double2(Ground.x, Ground.y + meters * Meter);
-            return s.Build(grid);
+            return s.Build(_source);
         }
 
         /// <summary>Writes the harness's --buffers folder and the --params-tail file (lod_tail.f32) into <paramref name="dir"/>.</summary>
@@ -146,7 +181,7 @@ namespace GregoryTerrain.Rig
         /// <summary>The harness options that draw the scene from <paramref name="dir"/> (stages and output options are the caller's).</summary>
         public List<string> HarnessArgs(string dir) => new List<string>
         {
-            "--buffers", dir, "--params-tail", Path.Combine(dir, "lod_tail.f32"), "--patches", Patches.ToString(),
+            "--buffers", dir, "--params-tail", Path.Combine(dir, "lod_tail.f32"), "--patches", Patches.ToString(), "--reversed-z",
         };
     }
 }

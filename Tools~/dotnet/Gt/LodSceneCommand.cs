@@ -8,7 +8,8 @@ namespace GregoryTerrain.Rig
     /// (<see cref="LodScene"/>): a terrain --terrain-m metres wide (default 100 km), the camera --eye-m
     /// above the surface (default 2 m), M = --tiles, adaptive factors at --target-pixels (or a uniform
     /// --factor), the continuous octave rule at --segment-pixels, the camera's screen --width x --height,
-    /// over --grid FILE or the demo grid (gt demo's terrain, fitted to 129 x 129 samples).
+    /// over --grid FILE or the demo grid (gt demo's terrain, fitted to 129 x 129 samples), with the
+    /// relief in metres of a --relief-m wide terrain (default 100 km; 0: the grid stretched to --terrain-m).
     /// Writes the --buffers folder and lod_tail.f32 (--params-tail) into --out, and prints
     /// "levels L", "patches N" and "ranges ..." for Tools~/rig/lod-bench.sh. --no-origin: the levels
     /// absolute (no range origin; the renderer always sets one near the camera). With --factors FILE
@@ -33,6 +34,7 @@ namespace GregoryTerrain.Rig
                 SegmentPixels = (float)a.Double("segment-pixels", 2),
                 Width = a.Int("width", 1920),
                 Height = a.Int("height", 1080),
+                ReliefMeters = a.Double("relief-m", 100000),
                 UseOrigin = !a.Flag("no-origin"),
             };
             double[] ground = a.Doubles("ground", 2, "0.37,0.52");

@@ -16,9 +16,15 @@ namespace GregoryTerrain.Rig
         public double[] LightDirection = { -0.4, 0.8, -0.45 };
         public int Width = 1024, Height = 768;
 
-        /// <summary>Perspective camera at <paramref name="eye"/> looking at <paramref name="target"/>, +Y up.</summary>
+        /// <summary>
+        /// Perspective camera at <paramref name="eye"/> looking at <paramref name="target"/>, +Y up.
+        /// <paramref name="reversedZ"/>: depth near 1, far 0, as Unity draws (draw with the harness's
+        /// --reversed-z). Float depth then keeps its relative precision (~6e-8 of the distance) out to
+        /// the horizon; the conventional 0..1 keeps only ~6e-8 z^2 / near, kilometres at 500 km with
+        /// near = 5 cm, so a far ridge's back faces (the harness culls none) show through its front.
+        /// </summary>
         public static RigCamera LookAt(double[] eye, double[] target, double fovYDegrees, int width, int height,
-                                       double near, double far, double[,] objectToWorld)
+                                       double near, double far, double[,] objectToWorld, bool reversedZ = false)
         {
             var f = Normalize(Sub(target, eye));
             var s = Normalize(Cross(f, new[] { 0.0, 1.0, 0.0 }));
@@ -32,12 +38,14 @@ namespace GregoryTerrain.Rig
             };
             double t = 1.0 / Math.Tan(fovYDegrees * Math.PI / 360.0), aspect = (double)width / height;
             // Right-handed view (camera looks down -z) to D3D-style clip: y up (the harness's viewport
-            // has a negative height, as internals.md says), depth near 0 far 1.
+            // has a negative height, as internals.md says), depth near 0 far 1 (reversed: near 1 far 0).
+            double zz = reversedZ ? near / (far - near) : far / (near - far);
+            double zw = reversedZ ? near * far / (far - near) : near * far / (near - far);
             var proj = new double[,]
             {
                 { t / aspect, 0, 0, 0 },
                 { 0, t, 0, 0 },
-                { 0, 0, far / (near - far), near * far / (near - far) },
+                { 0, 0, zz, zw },
                 { 0, 0, -1, 0 },
             };
             return new RigCamera

@@ -185,6 +185,8 @@ const char* usageText() {
   --width W --height H           render target size (default 256x256)
   --png FILE                     write the colour image as PNG
   --wireframe                    polygonMode LINE (needs fillModeNonSolid)
+  --reversed-z                   depth cleared to 0 and GREATER_OR_EQUAL: near 1, far 0, as Unity draws
+                                 (float depth keeps its relative precision to the horizon)
   --storage BINDING:BYTES        zero-filled device-local storage buffer at BINDING (>= 7), repeatable
   --compute SPV:GX[,GY[,GZ]]     each frame, before the render pass, dispatch the module's compute
                                  entry point over GX x GY x GZ groups; repeatable, run in order
@@ -262,6 +264,7 @@ Options parseOptions(int argc, char** argv) {
         else if (a == "--height") o.height = u32(16384);
         else if (a == "--png") o.pngPath = value();
         else if (a == "--wireframe") o.wireframe = true;
+        else if (a == "--reversed-z") o.reversedZ = true;
         else if (a == "--storage") addStorage(o, value());
         else if (a == "--compute") o.computes.push_back(parseCompute(value()));
         else if (a == "--dump-storage") o.dumps.push_back(parseDump(value()));

@@ -174,6 +174,7 @@ int run(const Options& o) {
     desc.mode = o.mode;
     desc.controlPoints = o.controlPoints;
     desc.wireframe = o.wireframe;
+    desc.reversedZ = o.reversedZ;
     desc.descriptorSets = o.inFlight;
     const std::string vertDefault = o.mode == Mode::Fallback ? "vert_fallback" : "vert";
     desc.vert = loadShader(gpu, o.vertPath, 0, o.vertEntry, vertDefault);
@@ -183,7 +184,7 @@ int run(const Options& o) {
     }
     desc.frag = loadShader(gpu, o.fragPath, 4, o.fragEntry, "frag");
 
-    RenderTarget target = createRenderTarget(gpu, o.width, o.height);
+    RenderTarget target = createRenderTarget(gpu, o.width, o.height, o.reversedZ);
     Pipeline pipeline = createPipeline(gpu, desc, target, inputs, storage);
     std::vector<ComputePass> compute = createComputePasses(gpu, o.computes, pipeline);
     DrawWork work = prepareWork(o, gpu);

@@ -59,10 +59,11 @@ void destroyImage(const Gpu& gpu, Image& img) {
 
 }  // namespace
 
-RenderTarget createRenderTarget(const Gpu& gpu, uint32_t width, uint32_t height) {
+RenderTarget createRenderTarget(const Gpu& gpu, uint32_t width, uint32_t height, bool reversedZ) {
     RenderTarget t;
     t.width = width;
     t.height = height;
+    t.depthClear = reversedZ ? 0.0f : 1.0f;
     t.color = createImage(gpu, width, height, kColorFormat,
                           VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT, VK_IMAGE_ASPECT_COLOR_BIT);
     t.depth = createImage(gpu, width, height, kDepthFormat, VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT,
@@ -138,7 +139,7 @@ void destroyRenderTarget(const Gpu& gpu, RenderTarget& t) {
 void beginRenderPass(VkCommandBuffer cmd, const RenderTarget& t) {
     VkClearValue clears[2]{};
     for (int i = 0; i < 4; ++i) clears[0].color.float32[i] = kSky[i];
-    clears[1].depthStencil = {1.0f, 0};
+    clears[1].depthStencil = {t.depthClear, 0};
     VkRenderPassBeginInfo info{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
     info.renderPass = t.renderPass;
     info.framebuffer = t.framebuffer;

@@ -19,14 +19,15 @@ struct Image {
 struct RenderTarget {
     uint32_t width = 0, height = 0;
     Image color, depth;
+    float depthClear = 1.0f;  // 0 with reversed depth (near 1, far 0)
     VkRenderPass renderPass = VK_NULL_HANDLE;
     VkFramebuffer framebuffer = VK_NULL_HANDLE;
 };
 
-RenderTarget createRenderTarget(const Gpu& gpu, uint32_t width, uint32_t height);
+RenderTarget createRenderTarget(const Gpu& gpu, uint32_t width, uint32_t height, bool reversedZ = false);
 void destroyRenderTarget(const Gpu& gpu, RenderTarget& target);
 
-// Begins the render pass with the clears (sky colour, depth 1).
+// Begins the render pass with the clears (sky colour, depth 1, or 0 when reversed).
 void beginRenderPass(VkCommandBuffer cmd, const RenderTarget& target);
 
 }  // namespace gt
