@@ -103,6 +103,23 @@ namespace GregoryTerrain.Rig.Tests
             return max;
         }
 
+        /// <summary>Per sample column, the largest |grid - sample| over its rows, evaluating the Gregory patches themselves.</summary>
+        internal static double[] ColumnMaxErrors(PatchGrid g, double[] z, int w, int h)
+        {
+            var max = new double[w];
+            for (int r = 0; r < h; r++)
+                for (int c = 0; c < w; c++)
+                {
+                    double x = (double)c / (w - 1), y = (double)r / (h - 1);
+                    int p = g.FindPatch(x, y);
+                    Region reg = g.RegionOf(p);
+                    double e = Math.Abs(GregoryEval.Position(g.Patches[p].Points, (x - reg.a) / reg.Width, (y - reg.b) / reg.Height).z - z[r * w + c]);
+                    Assert.That(double.IsNaN(e), Is.False, $"NaN at sample ({c}, {r})");
+                    max[c] = Math.Max(max[c], e);
+                }
+            return max;
+        }
+
         /// <summary>RMS of a C1 spline over the samples, evaluated on its own Bezier grid.</summary>
         internal static double SplineRms(SplineSurface s, double[] z, int w, int h)
         {
@@ -217,6 +234,45 @@ namespace GregoryTerrain.Rig.Tests
             // Holding the seam costs the east tile a little accuracy near it (measured: 7% RMS at 8 x 8).
             Assert.That(east.RmsError, Is.LessThanOrEqualTo(1.1 * alone.RmsError));
             Assert.That(east.RmsError, Is.GreaterThanOrEqualTo(alone.RmsError), "a constrained fit cannot beat the free least-squares one");
+        }
+
+        /// <summary>
+        /// Why the east tile fitted against a held seam is worse than fitted alone: the excess is the
+        /// west fit's edge, fitted from one side. For a height field G1 means the same slope across the
+        /// seam too, so the east fit cannot leave the held line: its error on the seam column is the
+        /// west fit's on its last column, and the excess sits in the first patch column. Fitted as one
+        /// heightmap (the seam seen from both sides), the east samples fit as well as the tile alone.
+        /// </summary>
+        [Test]
+        public void HeldSeamCostIsTheWestEdgesOneSidedFit()
+        {
+            const int patches = 32;
+            double[] zw = Load(West), ze = Load(East);
+            HeightmapFit west = HeightmapFitter.Fit(zw, Side, Side, patches, patches);
+            HeightmapFit east = HeightmapFitter.FitEastOf(west, ze, Side, Side, patches);
+            HeightmapFit alone = HeightmapFitter.Fit(ze, Side, Side, patches, patches);
+            double[] eastColumns = ColumnMaxErrors(east.Grid, ze, Side, Side), westColumns = ColumnMaxErrors(west.Grid, zw, Side, Side);
+            int patchWidth = (Side - 1) / patches;
+            double near = 0, beyond = 0;
+            for (int c = 0; c < Side; c++)
+                if (c <= patchWidth) near = Math.Max(near, eastColumns[c]); else beyond = Math.Max(beyond, eastColumns[c]);
+
+            int joinedWidth = 2 * Side - 1;
+            var zj = new double[joinedWidth * Side];
+            for (int r = 0; r < Side; r++)
+                for (int c = 0; c < joinedWidth; c++) zj[r * joinedWidth + c] = c < Side ? zw[r * Side + c] : ze[r * Side + c - (Side - 1)];
+            HeightmapFit whole = HeightmapFitter.Fit(zj, joinedWidth, Side, 2 * patches, patches);
+            double[] wholeColumns = ColumnMaxErrors(whole.Grid, zj, joinedWidth, Side);
+            double wholeEast = 0;
+            for (int c = Side - 1; c < joinedWidth; c++) wholeEast = Math.Max(wholeEast, wholeColumns[c]);
+
+            TestContext.Out.WriteLine($"{patches}x{patches}: east held max {east.MaxError:F2} m (first patch column {near:F2}, beyond {beyond:F2}; seam column {eastColumns[0]:F2}, " +
+                                      $"west's last column {westColumns[Side - 1]:F2}); alone {alone.MaxError:F2}; fitted as one {2 * patches} x {patches} heightmap, over the east samples {wholeEast:F2}");
+            Assert.That(eastColumns[0], Is.EqualTo(westColumns[Side - 1]).Within(1e-6), "the seam column's error is the west fit's");
+            Assert.That(near, Is.EqualTo(east.MaxError).Within(1e-6), "the max is in the first patch column");
+            Assert.That(beyond, Is.LessThanOrEqualTo(1.01 * alone.MaxError), "beyond the first patch column the held seam costs nothing");
+            Assert.That(wholeEast, Is.LessThanOrEqualTo(1.01 * alone.MaxError), "two-sided, the seam costs nothing");
+            Assert.That(east.MaxError, Is.GreaterThan(1.2 * alone.MaxError), "the held seam's excess, what this test explains");
         }
     }
 }

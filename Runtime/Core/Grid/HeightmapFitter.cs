@@ -103,7 +103,7 @@ namespace GregoryTerrain
             IProgress<float> progress = null, CancellationToken cancellationToken = default, FitObjective objective = FitObjective.BoundedMax)
         {
             CheckInputs(heights, width, height, columns, rows);
-            return FitChecked(heights, width, height, columns, rows, null, progress, cancellationToken, objective);
+            return FitChecked(heights, width, height, columns, rows, null, null, progress, cancellationToken, objective);
         }
 
         /// <summary>
@@ -116,14 +116,101 @@ namespace GregoryTerrain
         public static HeightmapFit FitEastOf(HeightmapFit west, double[] heights, int width, int height, int columns,
             IProgress<float> progress = null, CancellationToken cancellationToken = default, FitObjective objective = FitObjective.BoundedMax)
         {
-            if (west == null) throw new ArgumentNullException(nameof(west));
-            if (west.Unknowns == null) throw new ArgumentException("west has no net to continue.", nameof(west));
+            CheckNeighbour(west, nameof(west));
             int rows = west.Grid.Rows;
             CheckInputs(heights, width, height, columns, rows);
-            if (height != west.SampleHeight)
-                throw new ArgumentException($"height = {height} rows of samples, the west fit has {west.SampleHeight}: the tiles must share their rows.", nameof(height));
-            return FitChecked(heights, width, height, columns, rows, west, progress, cancellationToken, objective);
+            CheckSharedSamples(height, west.SampleHeight, nameof(height), "west", "rows");
+            return FitChecked(heights, width, height, columns, rows, west, null, progress, cancellationToken, objective);
         }
+
+        /// <summary>
+        /// Fits a heightmap that continues <paramref name="south"/> northwards: the mirror of
+        /// <see cref="FitEastOf"/> across the diagonal. Its first row of samples is the south fit's
+        /// last one, columns are the same columns, and samples are as far apart. The north net's first
+        /// grid line (heights and slopes along it as they are, slopes across it rescaled) is held at the
+        /// south net's last one, so the grids joined one above the other
+        /// (<see cref="PatchGridJoin.SouthNorth"/>) are G1 across the seam. Its columns equal south's.
+        /// </summary>
+        public static HeightmapFit FitNorthOf(HeightmapFit south, double[] heights, int width, int height, int rows,
+            IProgress<float> progress = null, CancellationToken cancellationToken = default, FitObjective objective = FitObjective.BoundedMax)
+        {
+            CheckNeighbour(south, nameof(south));
+            int columns = south.Grid.Columns;
+            CheckInputs(heights, width, height, columns, rows);
+            CheckSharedSamples(width, south.SampleWidth, nameof(width), "south", "columns");
+            return FitChecked(heights, width, height, columns, rows, null, south, progress, cancellationToken, objective);
+        }
+
+        /// <summary>
+        /// Fits the north-east tile of a 2 x 2 block fitted tile by tile: its first column is held at
+        /// <paramref name="west"/>'s last (the north-west tile, rows from it) and its first row at
+        /// <paramref name="south"/>'s last (the south-east tile, columns from it). With the south-west
+        /// tile fitted first, south-east by <see cref="FitEastOf"/> and north-west by
+        /// <see cref="FitNorthOf"/>, the four grids joined (two <see cref="PatchGridJoin.WestEast"/>,
+        /// one <see cref="PatchGridJoin.SouthNorth"/>) are G1 across every seam and at the corner
+        /// where the four meet. The corner vertex is held by both neighbours, so they must agree on it
+        /// (its height and both slopes): they do when both continue the same south-west tile, and a
+        /// pair that does not is refused.
+        /// </summary>
+        public static HeightmapFit FitNorthEastOf(HeightmapFit west, HeightmapFit south, double[] heights, int width, int height,
+            IProgress<float> progress = null, CancellationToken cancellationToken = default, FitObjective objective = FitObjective.BoundedMax)
+        {
+            CheckNeighbour(west, nameof(west));
+            CheckNeighbour(south, nameof(south));
+            int columns = south.Grid.Columns, rows = west.Grid.Rows;
+            CheckInputs(heights, width, height, columns, rows);
+            CheckSharedSamples(height, west.SampleHeight, nameof(height), "west", "rows");
+            CheckSharedSamples(width, south.SampleWidth, nameof(width), "south", "columns");
+            CheckCorner(west, south, width, height, columns, rows);
+            return FitChecked(heights, width, height, columns, rows, west, south, progress, cancellationToken, objective);
+        }
+
+        /// <summary>A neighbour fit must carry its net, consistent with its grid (a fit from <see cref="Fit"/> or its kin does).</summary>
+        static void CheckNeighbour(HeightmapFit fit, string name)
+        {
+            if (fit == null) throw new ArgumentNullException(name);
+            if (fit.Unknowns == null) throw new ArgumentException($"{name} has no net to continue ({name}.Unknowns = null).", name);
+            if (fit.Net.Columns != fit.Grid.Columns || fit.Net.Rows != fit.Grid.Rows)
+                throw new ArgumentException($"{name}.Net is {fit.Net.Columns} x {fit.Net.Rows} patches, {name}.Grid is {fit.Grid.Columns} x {fit.Grid.Rows}: not one fit.", name);
+            if (fit.Unknowns.Length != fit.Net.Count)
+                throw new ArgumentException($"{name}.Unknowns.Length = {fit.Unknowns.Length}, its {fit.Net.Columns} x {fit.Net.Rows} net has {fit.Net.Count}: not one fit.", name);
+        }
+
+        static void CheckSharedSamples(int value, int neighbours, string field, string neighbour, string what)
+        {
+            if (value != neighbours)
+                throw new ArgumentException($"{field} = {value} samples, the {neighbour} fit has {neighbours}: the tiles must share their {what}.", field);
+        }
+
+        /// <summary>Relative tolerance on the corner vertex's slopes the two neighbours of a north-east tile both hold.</summary>
+        const double CornerTolerance = 1e-9;
+
+        /// <summary>
+        /// The north-east tile's corner vertex as each neighbour would hold it (z, dx, dy in this
+        /// tile's units) must agree: else no net can be G1 with both. Checked before any work.
+        /// </summary>
+        static void CheckCorner(HeightmapFit west, HeightmapFit south, int width, int height, int columns, int rows)
+        {
+            int wv = west.Net.Vertex(west.Net.Columns, 0), sv = south.Net.Vertex(0, south.Net.Rows);
+            double rx = Ratio(width, columns, west.SampleWidth, west.Net.Columns);
+            double ry = Ratio(height, rows, south.SampleHeight, south.Net.Rows);
+            double[] w = west.Unknowns, s = south.Unknowns;
+            double[] fromWest = { w[wv], w[wv + 1] * rx, w[wv + 2] };
+            double[] fromSouth = { s[sv], s[sv + 1], s[sv + 2] * ry };
+            double scale = 1;
+            for (int k = 0; k < 3; k++) scale = Math.Max(scale, Math.Max(Math.Abs(fromWest[k]), Math.Abs(fromSouth[k])));
+            string[] names = { "height", "x offset", "y offset" };
+            // The height exactly: the joined grids' seams must be bit-identical (PatchGrid.Validate).
+            for (int k = 0; k < 3; k++)
+                if (!(Math.Abs(fromWest[k] - fromSouth[k]) <= (k == 0 ? 0 : CornerTolerance * scale)))
+                    throw new ArgumentException(string.Format(CultureInfo.InvariantCulture,
+                        "south's corner vertex {0} = {1:R}, west's = {2:R}: the neighbours disagree where the four tiles meet (fit both against the same south-west tile: FitEastOf, FitNorthOf).",
+                        names[k], fromSouth[k], fromWest[k]), "south");
+        }
+
+        /// <summary>This tile's patch size over the neighbour's, in samples: an offset is (size / 3) times a slope.</summary>
+        static double Ratio(int samples, int patches, int neighbourSamples, int neighbourPatches) =>
+            ((double)(samples - 1) / patches) / ((double)(neighbourSamples - 1) / neighbourPatches);
 
         /// <summary>
         /// Fits with the fewest patches that bring the chosen error to <paramref name="target"/> or
@@ -137,7 +224,7 @@ namespace GregoryTerrain
             if (!(target > 0) || double.IsInfinity(target))
                 throw new ArgumentException(string.Format(CultureInfo.InvariantCulture, "target = {0}, need a positive finite error.", target), nameof(target));
             CheckInputs(heights, width, height, maxColumns, RowsFor(maxColumns, width, height));
-            Func<int, HeightmapFit> fit = n => FitChecked(heights, width, height, n, RowsFor(n, width, height), null, null, cancellationToken, FitObjective.BoundedMax);
+            Func<int, HeightmapFit> fit = n => FitChecked(heights, width, height, n, RowsFor(n, width, height), null, null, null, cancellationToken, FitObjective.BoundedMax);
             Func<HeightmapFit, bool> meets = f => (kind == FitErrorKind.Max ? f.MaxError : f.RmsError) <= target;
             int lo = 0, hi = 1;   // lo fails (0: none tried), hi is the next to try
             HeightmapFit best = null;
@@ -190,7 +277,7 @@ namespace GregoryTerrain
         const long CollectAboveBytes = 4L << 20;
 
         static HeightmapFit FitChecked(double[] heights, int width, int height, int columns, int rows, HeightmapFit west,
-            IProgress<float> progress, CancellationToken ct, FitObjective objective)
+            HeightmapFit south, IProgress<float> progress, CancellationToken ct, FitObjective objective)
         {
             // 1. One pass over the samples: S^T z and the patch Gram matrices.
             var net = new GregoryNet(columns, rows);
@@ -204,7 +291,7 @@ namespace GregoryTerrain
             SplineSurface surface = SplineSurface.Solve(bx, by, net.SplineRightHandSide(rhs), gy, gx);
             var x = new double[net.Count];
             net.FromSpline(surface.Coefficients, x);
-            bool[] fixedMask = west == null ? null : HoldWestEdge(west, net, x, width);
+            bool[] fixedMask = Hold(west, south, net, x, width, height);
 
             // 3. CG from the spline on the normal equations (x is the start and the ridge's prior).
             ls.Solve(rhs, x, x, fixedMask, progress, 0.3f, 0.5f, ct);
@@ -231,7 +318,7 @@ namespace GregoryTerrain
             {
                 double[] prior = new double[net.Count];
                 net.FromSpline(surface.Coefficients, prior);
-                if (fixedMask != null) HoldWestEdge(west, net, prior, width);
+                Hold(west, south, net, prior, width, height);
                 for (int round = 1; round <= MaxReweightRounds && max > bMax && collected.Count > 0; round++)
                 {
                     ct.ThrowIfCancellationRequested();
@@ -274,31 +361,61 @@ namespace GregoryTerrain
         }
 
         /// <summary>
-        /// Copies the west net's last grid line into this net's first (x0) and marks it fixed:
-        /// heights and slopes along the line as they are, slopes across it (dx, edge offsets)
-        /// rescaled from west's patch width to this one's (an offset is width / 3 times a slope).
+        /// Holds the neighbours' edges in x0 and returns the mask of held unknowns (null: none held).
+        /// West: its last x line becomes this net's first; south: its last y line this net's first.
+        /// Along the line, heights and slopes are copied as they are (the tiles share that axis's
+        /// samples and patch count, so an offset means the same slope); across it, slopes (vertex
+        /// offsets and edge offsets) are rescaled from the neighbour's patch size to this one's. The
+        /// corner both hold (north-east tile) is written by both; CheckCorner has made sure they agree.
         /// </summary>
-        static bool[] HoldWestEdge(HeightmapFit west, GregoryNet net, double[] x0, int width)
+        static bool[] Hold(HeightmapFit west, HeightmapFit south, GregoryNet net, double[] x0, int width, int height)
         {
-            GregoryNet w = west.Net;
-            double[] wx = west.Unknowns;
-            double ratio = ((double)(width - 1) / net.Columns) / ((double)(west.SampleWidth - 1) / w.Columns);
+            if (west == null && south == null) return null;
             var mask = new bool[net.Count];
-            for (int j = 0; j <= net.Rows; j++)
+            if (west != null)
             {
-                int src = w.Vertex(w.Columns, j), dst = net.Vertex(0, j);
-                x0[dst] = wx[src];
-                x0[dst + 1] = wx[src + 1] * ratio;
-                x0[dst + 2] = wx[src + 2];
-                mask[dst] = mask[dst + 1] = mask[dst + 2] = true;
-            }
-            for (int j = 0; j < net.Rows; j++)
-            {
-                int src = w.VerticalEdge(w.Columns, j), dst = net.VerticalEdge(0, j);
-                for (int k = 0; k < 2; k++)
+                GregoryNet w = west.Net;
+                double[] wx = west.Unknowns;
+                double ratio = Ratio(width, net.Columns, west.SampleWidth, w.Columns);
+                for (int j = 0; j <= net.Rows; j++)
                 {
-                    x0[dst + k] = wx[src + k] * ratio;
-                    mask[dst + k] = true;
+                    int src = w.Vertex(w.Columns, j), dst = net.Vertex(0, j);
+                    x0[dst] = wx[src];
+                    x0[dst + 1] = wx[src + 1] * ratio;
+                    x0[dst + 2] = wx[src + 2];
+                    mask[dst] = mask[dst + 1] = mask[dst + 2] = true;
+                }
+                for (int j = 0; j < net.Rows; j++)
+                {
+                    int src = w.VerticalEdge(w.Columns, j), dst = net.VerticalEdge(0, j);
+                    for (int k = 0; k < 2; k++)
+                    {
+                        x0[dst + k] = wx[src + k] * ratio;
+                        mask[dst + k] = true;
+                    }
+                }
+            }
+            if (south != null)
+            {
+                GregoryNet s = south.Net;
+                double[] sx = south.Unknowns;
+                double ratio = Ratio(height, net.Rows, south.SampleHeight, s.Rows);
+                for (int i = 0; i <= net.Columns; i++)
+                {
+                    int src = s.Vertex(i, s.Rows), dst = net.Vertex(i, 0);
+                    x0[dst] = sx[src];
+                    x0[dst + 1] = sx[src + 1];
+                    x0[dst + 2] = sx[src + 2] * ratio;
+                    mask[dst] = mask[dst + 1] = mask[dst + 2] = true;
+                }
+                for (int i = 0; i < net.Columns; i++)
+                {
+                    int src = s.HorizontalEdge(i, s.Rows), dst = net.HorizontalEdge(i, 0);
+                    for (int k = 0; k < 2; k++)
+                    {
+                        x0[dst + k] = sx[src + k] * ratio;
+                        mask[dst + k] = true;
+                    }
                 }
             }
             return mask;

@@ -9,9 +9,9 @@ namespace GregoryTerrain
     /// tiles is two west-east joins then one south-north join of the two strips: the strips must
     /// share their columns, i.e. both west tiles have the same column count and x lines (and so do
     /// both east tiles) and the same westShare is used for both rows. G1 across every seam needs
-    /// each tile fitted against its neighbours' edges (HeightmapFitter.FitEastOf for the west-east
-    /// seams; the north-south seam and the corner where four tiles meet need a fit holding its first
-    /// row, and its first row and column at once, which the fitter does not offer today).
+    /// each tile fitted against its neighbours' edges: HeightmapFitter.FitEastOf for a west-east
+    /// seam, FitNorthOf for a south-north one, FitNorthEastOf for the tile with both (the corner
+    /// where four tiles meet).
     /// </summary>
     internal static class PatchGridJoin
     {
