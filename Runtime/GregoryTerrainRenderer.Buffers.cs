@@ -25,11 +25,12 @@ namespace GregoryTerrain
                 _failedGrid = grid; _failedVersion = grid.Version;   // do not retry every frame
                 return false;
             }
-            float[] cps, regions, lines;
+            GregoryPatchRecord[] records;
+            float[] regions, lines;
             try
             {
                 // GpuLayout validates (bit-identical shared edges, float-representable lines) and packs.
-                cps = GpuLayout.PackControlPoints(g);
+                records = GpuLayout.PackPatchRecords(g);
                 regions = GpuLayout.PackRegions(g);
                 lines = GpuLayout.PackGridLines(g);
             }
@@ -40,9 +41,10 @@ namespace GregoryTerrain
                 return false;
             }
 
-            // Float arrays of float4 elements: count = floats / 4, stride 16 (GpuLayout.Float4Stride).
-            _controlPoints = new GraphicsBuffer(GraphicsBuffer.Target.Structured, cps.Length / GpuLayout.Float4Size, GpuLayout.Float4Stride);
-            _controlPoints.SetData(cps);
+            // One 320-byte record a patch (StructuredBuffer<GregoryPatchRecord>); the regions a float array
+            // of float4 elements: count = floats / 4, stride 16 (GpuLayout.Float4Stride).
+            _controlPoints = new GraphicsBuffer(GraphicsBuffer.Target.Structured, records.Length, GpuLayout.PatchRecordStride);
+            _controlPoints.SetData(records);
             _regions = new GraphicsBuffer(GraphicsBuffer.Target.Structured, regions.Length / GpuLayout.Float4Size, GpuLayout.Float4Stride);
             _regions.SetData(regions);
             _gridLines = new GraphicsBuffer(GraphicsBuffer.Target.Structured, lines.Length, GpuLayout.GridLineStride);

@@ -4,7 +4,7 @@
 // The patch grid on the GPU; mirrors PatchGrid.cs (FindPatch, FindInterval, RegionOf) and the
 // layout of GpuLayout.cs. Declares no resource: include TerrainInputs.hlsl (which declares
 // _ControlPoints, _Regions, _GridLines and _GridSize) before this file.
-//   _ControlPoints  StructuredBuffer<float4>  20 per patch, patch p at [20 p .. 20 p + 19]:
+//   _ControlPoints  StructuredBuffer<GregoryPatchRecord>  one per patch, points[k] = slot k:
 //                                             xyz = P - R_p, w of slots 0..2 = R_p (the reference point)
 //   _Regions        StructuredBuffer<float4>  (a, b, e, f) per patch (the lines' hi parts)
 //   _GridLines      StructuredBuffer<float>   hi parts xLines[0..n], yLines[0..m], then the lo parts
@@ -66,16 +66,14 @@ float4 PatchRegionLo(uint patch)
 // points LoadGregoryPatch gives (exact, the weights sum to 1).
 float3 PatchReference(uint patch)
 {
-    uint base = GREGORY_SLOT_COUNT * patch;
-    return float3(_ControlPoints[base].w, _ControlPoints[base + 1u].w, _ControlPoints[base + 2u].w);
+    return float3(_ControlPoints[patch].points[0].w, _ControlPoints[patch].points[1].w, _ControlPoints[patch].points[2].w);
 }
 
 // The 20 control points of a patch relative to its reference point, slot order of GregoryPatch.hlsl.
 void LoadGregoryPatch(uint patch, out float3 cp[20])
 {
-    uint base = GREGORY_SLOT_COUNT * patch;
     [unroll] for (uint k = 0u; k < 20u; k++)
-        cp[k] = _ControlPoints[base + k].xyz;
+        cp[k] = _ControlPoints[patch].points[k].xyz;
 }
 
 #endif // GT_PATCH_GRID_INCLUDED

@@ -26,8 +26,14 @@
     #endif
 #endif
 
-// 20 float4 per patch, patch p at [20 p .. 20 p + 19], slot order of GregoryPatch, w = 1.
-StructuredBuffer<float4> _ControlPoints GT_REGISTER(t0);
+// One record per patch, 320 bytes: the 20 control points in the slot order of GregoryPatch.hlsl,
+// xyz = P - R_p, w of points 0..2 = R_p (the reference point), w of the others 0. Mirror of Core's
+// blittable GregoryPatchRecord (ShaderContractTests compares the compiled offsets and stride).
+struct GregoryPatchRecord
+{
+    float4 points[20];
+};
+StructuredBuffer<GregoryPatchRecord> _ControlPoints GT_REGISTER(t0);
 // (a, b, e, f) per patch: the patch covers [a, e] x [b, f] of the unit square.
 StructuredBuffer<float4> _Regions GT_REGISTER(t1);
 // xLines[0..n] then yLines[0..m], each strictly increasing from 0 to 1.

@@ -6,6 +6,26 @@ namespace GregoryTerrain.Tests
     [TestFixture]
     public class GpuLayoutTests
     {
+        /// <summary>The records the renderer uploads hold the floats Core and the rig read, point k at float 80 p + 4 k.</summary>
+        [Test]
+        public void PatchRecordsAreTheControlPointFloats()
+        {
+            var g = HeightmapFitter.Fit(HeightmapFitterTests.Samples(33, 33), 33, 33, 4, 3).Grid;
+            GregoryPatchRecord[] records = GpuLayout.PackPatchRecords(g);
+            float[] cp = GpuLayout.PackControlPoints(g);
+            Assert.That(records.Length, Is.EqualTo(g.PatchCount));
+            Assert.That(GpuLayout.ControlPointBytes(g.PatchCount), Is.EqualTo((long)records.Length * GregoryPatchRecord.Stride));
+            for (int p = 0; p < g.PatchCount; p++)
+                for (int k = 0; k < GregoryPatchRecord.PointCount; k++)
+                {
+                    long o = GpuLayout.ControlPointOffset(p, k);
+                    Assert.That(records[p][k], Is.EqualTo(new Float4(cp[o], cp[o + 1], cp[o + 2], cp[o + 3])), $"patch {p} point {k}");
+                }
+            Assert.That(records[6][GregoryPatch.P211].x, Is.Not.EqualTo(0f), "a record holds the point, not zeros");
+            Assert.Throws<ArgumentOutOfRangeException>(() => { var x = records[0][20]; });
+            Assert.Throws<ArgumentOutOfRangeException>(() => records[0][-1] = default);
+        }
+
         [Test]
         public void ControlPointsOffsetsReadBackAChosenPatchAndSlot()
         {

@@ -243,6 +243,113 @@ namespace GregoryTerrain.Rig.Tests
             finally { Directory.Delete(dir, true); }
         }
 
+        /// <summary>
+        /// Core's blittable <see cref="GregoryPatchRecord"/> against the HLSL struct the compiler lays
+        /// out for <c>StructuredBuffer&lt;GregoryPatchRecord&gt; _ControlPoints</c>: the buffer's stride,
+        /// and field <c>point</c>k at the byte of <c>points[k]</c>.
+        /// </summary>
+        [Test]
+        public void PatchRecordMatchesTheCompiledStruct()
+        {
+            CompiledRecord compiled = CompiledPatchRecord(PackageRoot.Combine("Shaders"));
+            Assert.That(compiled.recordStride, Is.EqualTo(320), "the compiled _ControlPoints stride");
+            ComparePatchRecord(compiled);
+            Assert.That(GpuLayout.PatchRecordStride, Is.EqualTo(compiled.recordStride), "GpuLayout.PatchRecordStride (the renderer's buffer stride)");
+        }
+
+        /// <summary>The record comparison on a broken HLSL struct (19 points): it fails naming both sides.</summary>
+        [Test]
+        public void AShortHlslRecordFailsTheRecordComparison()
+        {
+            string copy = Path.Combine(Path.GetTempPath(), "gt-contract-" + Guid.NewGuid().ToString("N"));
+            try
+            {
+                CopyTree(PackageRoot.Combine("Shaders"), copy);
+                string inputs = Path.Combine(copy, "Terrain", "TerrainInputs.hlsl");
+                string text = File.ReadAllText(inputs);
+                Assert.That(text, Does.Contain("float4 points[20];"));
+                File.WriteAllText(inputs, text.Replace("float4 points[20];", "float4 points[19];"));
+                CompiledRecord compiled = CompiledPatchRecord(copy);
+                Assert.That(compiled.recordStride, Is.EqualTo(304));
+                var e = Assert.Throws<AssertionException>(() => ComparePatchRecord(compiled));
+                Assert.That(e.Message, Does.Contain("304").And.Contain("320"));
+            }
+            finally { if (Directory.Exists(copy)) Directory.Delete(copy, true); }
+        }
+
+        struct CompiledRecord
+        {
+            public string structName, member;
+            public int recordStride, memberOffset, length, elementStride;
+        }
+
+        static void ComparePatchRecord(CompiledRecord compiled)
+        {
+            int size = Marshal.SizeOf<GregoryPatchRecord>();
+            Assert.That(compiled.structName, Is.EqualTo(nameof(GregoryPatchRecord)), "_ControlPoints' element type");
+            Assert.That(compiled.recordStride, Is.EqualTo(size),
+                $"GregoryPatchRecord is {size} bytes in C#, the compiled _ControlPoints stride is {compiled.recordStride}");
+            Assert.That(GregoryPatchRecord.Stride, Is.EqualTo(size), "GregoryPatchRecord.Stride vs Marshal.SizeOf");
+            var fields = typeof(GregoryPatchRecord).GetFields(BindingFlags.Instance | BindingFlags.Public | BindingFlags.NonPublic)
+                .OrderBy(f => (int)Marshal.OffsetOf<GregoryPatchRecord>(f.Name)).ToList();
+            Assert.That(fields.Count, Is.EqualTo(compiled.length),
+                $"GregoryPatchRecord has {fields.Count} fields, the HLSL {compiled.member}[{compiled.length}]");
+            Assert.That(GregoryPatchRecord.PointCount, Is.EqualTo(compiled.length), "GregoryPatchRecord.PointCount");
+            for (int k = 0; k < fields.Count; k++)
+            {
+                FieldInfo f = fields[k];
+                int offset = (int)Marshal.OffsetOf<GregoryPatchRecord>(f.Name);
+                int expected = compiled.memberOffset + k * compiled.elementStride;
+                Assert.That(f.Name, Is.EqualTo("point" + k), "GregoryPatchRecord's fields in slot order");
+                Assert.That(f.FieldType, Is.EqualTo(typeof(Float4)), $"GregoryPatchRecord.{f.Name}: the HLSL element is a float4");
+                Assert.That(offset, Is.EqualTo(expected),
+                    $"GregoryPatchRecord.{f.Name} is at byte {offset} in C#, {compiled.member}[{k}] at byte {expected} in the compiled struct");
+            }
+        }
+
+        /// <summary>
+        /// Compiles SnowField.compute of a Shaders tree (it reads _ControlPoints through PatchGrid.hlsl)
+        /// and reads the _ControlPoints buffer's element struct back from the SPIR-V: its stride, its one
+        /// member's name, offset, array length and array stride.
+        /// </summary>
+        static CompiledRecord CompiledPatchRecord(string shaders)
+        {
+            string dir = Path.Combine(Path.GetTempPath(), "gt-contract-" + Guid.NewGuid().ToString("N"));
+            Directory.CreateDirectory(dir);
+            try
+            {
+                string spv = Path.Combine(dir, "field.spv");
+                ComputeRunner.Run("glslangValidator", "-D", "-V", "-S", "comp", "-e", "SnowFieldKernel", "-o", spv,
+                    Path.Combine(shaders, "Snow", "SnowField.compute"));
+                using var doc = JsonDocument.Parse(ComputeRunner.Run("spirv-cross", spv, "--reflect"));
+                JsonElement types = doc.RootElement.GetProperty("types");
+                JsonElement ssbo = doc.RootElement.GetProperty("ssbos").EnumerateArray()
+                    .Single(b => b.GetProperty("name").GetString() == "_ControlPoints");
+                JsonElement data = types.GetProperty(ssbo.GetProperty("type").GetString()).GetProperty("members").EnumerateArray().Single();
+                JsonElement record = types.GetProperty(data.GetProperty("type").GetString());
+                JsonElement member = record.GetProperty("members").EnumerateArray().Single();
+                return new CompiledRecord
+                {
+                    structName = record.GetProperty("name").GetString(),
+                    recordStride = data.GetProperty("array_stride").GetInt32(),
+                    member = member.GetProperty("name").GetString(),
+                    memberOffset = member.GetProperty("offset").GetInt32(),
+                    length = member.GetProperty("array").EnumerateArray().Single().GetInt32(),
+                    elementStride = member.GetProperty("array_stride").GetInt32(),
+                };
+            }
+            finally { Directory.Delete(dir, true); }
+        }
+
+        static void CopyTree(string from, string to)
+        {
+            foreach (string d in Directory.GetDirectories(from, "*", SearchOption.AllDirectories))
+                Directory.CreateDirectory(Path.Combine(to, Path.GetRelativePath(from, d)));
+            Directory.CreateDirectory(to);
+            foreach (string f in Directory.GetFiles(from, "*", SearchOption.AllDirectories))
+                File.Copy(f, Path.Combine(to, Path.GetRelativePath(from, f)));
+        }
+
         // ---- parsing -------------------------------------------------------------------------------
 
         static void CompareProperties(ISet<string> named, ISet<string> declared)

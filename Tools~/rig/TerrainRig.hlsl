@@ -113,11 +113,15 @@ TerrainVaryings vert_static(uint vertexID : SV_VertexID, uint instanceID : SV_In
     uint f = max((uint)UniformTessFactor(), 1u);
     uint v = instanceID * (f + 1u) * (f + 1u) + vertexID;
     TerrainVaryings o = (TerrainVaryings)0;
-    o.positionCS = GT_ObjectToClip(_ControlPoints[2u * v].xyz);
+    // Float4s 2v and 2v + 1 of the records read as one array: both in record v / 10 (20 is even).
+    // Indexed in place, never copied: a local copy indexed by k could spill the whole record.
+    uint r = v / 10u;
+    uint k = 2u * (v % 10u);
+    o.positionCS = GT_ObjectToClip(_ControlPoints[r].points[k].xyz);
     // The baked height (object y; the benchmark draws no range origin) and no colour noise: the frag
     // does the same work, the vertex stage less than the terrain's.
-    float heightWeight = TerrainHeightWeight(_ControlPoints[2u * v].y, 0.0);
-    o.normalAndHeightWeight = PackNormalAndHeightWeight(GT_ObjectToWorldNormal(_ControlPoints[2u * v + 1u].xyz), heightWeight);
+    float heightWeight = TerrainHeightWeight(_ControlPoints[r].points[k].y, 0.0);
+    o.normalAndHeightWeight = PackNormalAndHeightWeight(GT_ObjectToWorldNormal(_ControlPoints[r].points[k + 1u].xyz), heightWeight);
     return o;
 }
 #endif

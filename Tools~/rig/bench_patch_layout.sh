@@ -1,15 +1,21 @@
 #!/usr/bin/env bash
 # Patch-record layout benchmark (prints figures; not a test): the draw's GPU time with the patch
-# layout of REF (absolute control points, one float per grid line, its shaders) against this tree's
-# (relative control points, hi/lo lines: internals.md, "GPU layout"), side by side in one run,
-# interleaved rounds, the same scene at a uniform factor (both layouts draw the same triangles).
-#   bash Tools~/rig/bench_patch_layout.sh [--ref REF] [--variant base] [--rounds 5] [--frames 60]
-#                                         [--factor 16] [--tiles 16] [--width 1920 --height 1080]
-#                                         [--device NAME]
-# REF: a commit before the patch records (default: the merge base with main). Needs gt setup.
-# Prints each round's median frame time per layout, then the medians and new / old.
+# layout and shaders of REF against this tree's, side by side in one run, interleaved rounds, the
+# same scene at a uniform factor (both layouts draw the same triangles).
+#   bash Tools~/rig/bench_patch_layout.sh [--ref REF] [--variant base] [--tiles 16] [--factor 16]
+#        [--width 1920 --height 1080] [--rounds 5] [--frames 60] [--device NAME] [--prepare DIR]
+# REF: a commit (default: the merge base with main). Its layout is read from its shaders:
+#   - before the relative points (no PatchReference in its PatchGrid.hlsl): absolute points, w = 1,
+#     the hi grid lines only; the buffers are converted to that;
+#   - from the relative points on (2d50e65, 20 float4 read by index arithmetic; or the typed
+#     GregoryPatchRecord of this tree): the same bytes, so only the shaders differ.
+# Needs gt setup (the CLI packs the scene here). --prepare DIR writes a self-contained folder instead
+# of running: bin/gt-harness, spv/old, spv/new, buffers old/ and new/, bench.conf and the device
+# script, which needs only bash, python3 and a Vulkan loader (.gl/*.deb when the machine has none):
+#   bash DIR/bench_patch_layout-device.sh DIR [--rounds R] [--frames N] [--device NAME]
+# Without --prepare the same folder is made under .build and the device script runs here.
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
-ref="" variant=base rounds=5 frames=60 factor=16 tiles=16 width=1920 height=1080 device=()
+ref="" variant=base rounds=5 frames=60 factor=16 tiles=16 width=1920 height=1080 device=() prepare=""
 while [ $# -gt 0 ]; do
   case "$1" in
     --ref) ref=$2; shift ;;
@@ -21,6 +27,7 @@ while [ $# -gt 0 ]; do
     --width) width=$2; shift ;;
     --height) height=$2; shift ;;
     --device) device=(--device "$2"); shift ;;
+    --prepare) prepare=$2; shift ;;
     *) die "bench_patch_layout: unknown option $1" ;;
   esac
   shift
@@ -29,23 +36,31 @@ cli=(dotnet "$BUILD_DIR/gt-cli/gt-cli.dll")
 harness="$BUILD_DIR/harness/gt-harness"
 [ -f "$BUILD_DIR/gt-cli/gt-cli.dll" ] && [ -x "$harness" ] || die "gt-cli or the harness is not built (run: gt setup)"
 [ -n "$ref" ] || ref=$(git -C "$PKG_DIR" merge-base HEAD main) || die "no --ref and no merge base with main"
-work="$BUILD_DIR/bench-patch-layout"
-rm -rf "$work"; mkdir -p "$work/old-pkg" "$work/new" "$work/old"
+ref=$(git -C "$PKG_DIR" rev-parse --verify "$ref^{commit}") || die "--ref $ref is no commit"
+work="${prepare:-$BUILD_DIR/bench-patch-layout}"
+scratch="$BUILD_DIR/bench-patch-layout-scratch"
+rm -rf "$work" "$scratch"; mkdir -p "$work/bin" "$work/spv" "$work/new" "$work/old" "$scratch/old-pkg"
+work="$(cd "$work" && pwd)"
 
 # This tree's shaders and buffers.
 bash "$RIG_DIR/shaders.sh" --only "$variant" >/dev/null || die "gt shaders --only $variant failed"
-cp -r "$BUILD_DIR/spirv/$variant" "$work/new-spv"
-"${cli[@]}" demo-grid --out "$work/grid.json" >/dev/null
-"${cli[@]}" pack --grid "$work/grid.json" --out "$work/new" --tiles "$tiles" --factor "$factor" \
+mkdir -p "$work/spv/new" "$work/spv/old"
+cp "$BUILD_DIR/spirv/$variant/"*.spv "$work/spv/new/"
+"${cli[@]}" demo-grid --out "$scratch/grid.json" >/dev/null
+"${cli[@]}" pack --grid "$scratch/grid.json" --out "$work/new" --tiles "$tiles" --factor "$factor" \
   --width "$width" --height "$height" >/dev/null
 
-# REF's shaders (its own compile script) and its layout of the same grid: absolute points (the
-# reference point added back, w = 1), the hi lines only.
-git -C "$PKG_DIR" archive "$ref" Shaders 'Tools~/rig' | tar -x -C "$work/old-pkg"
-python3 "$work/old-pkg/Tools~/rig/shaders.py" "$work/old-spv-all" --only "$variant" >/dev/null || die "compiling $ref's $variant failed"
-cp -r "$work/old-spv-all/$variant" "$work/old-spv"
-cp "$work/new/params.f32" "$work/new/camera.f32" "$work/new/regions.f32" "$work/old/"
-python3 - "$work/new" "$work/old" <<'PY'
+# REF's shaders (its own compile script) and its layout of the same grid.
+git -C "$PKG_DIR" archive "$ref" Shaders 'Tools~/rig' | tar -x -C "$scratch/old-pkg"
+python3 "$scratch/old-pkg/Tools~/rig/shaders.py" "$scratch/old-spv-all" --only "$variant" >/dev/null || die "compiling ${ref:0:12}'s $variant failed"
+cp "$scratch/old-spv-all/$variant/"*.spv "$work/spv/old/"
+if grep -q PatchReference "$scratch/old-pkg/Shaders/Grid/PatchGrid.hlsl" 2>/dev/null; then
+  old_layout="relative points (the same bytes)"
+  cp "$work/new/"*.f32 "$work/old/"
+else
+  old_layout="absolute points, hi lines only"
+  cp "$work/new/params.f32" "$work/new/camera.f32" "$work/new/regions.f32" "$work/old/"
+  python3 - "$work/new" "$work/old" <<'PY'
 import struct, sys
 src, dst = sys.argv[1], sys.argv[2]
 cp = open(f"{src}/control_points.f32", "rb").read()
@@ -59,24 +74,22 @@ open(f"{dst}/control_points.f32", "wb").write(struct.pack(f"<{len(f)}f", *f))
 lines = open(f"{src}/grid_lines.f32", "rb").read()
 open(f"{dst}/grid_lines.f32", "wb").write(lines[: len(lines) // 2])
 PY
-
-run() {  # run LAYOUT: one harness run, prints its median frame ms
-  local l=$1 spv="$work/$1-spv"
-  "$harness" "${device[@]}" --vert "$spv/vert.spv" --tesc "$spv/tesc.spv" --tese "$spv/tese.spv" --frag "$spv/frag.spv" \
-    --buffers "$work/$l" --patches $((tiles * tiles)) --width "$width" --height "$height" \
-    --frames "$frames" --warmup 5 --timestamps 2>&1 | awk '$1 == "time" && $2 == "frame_ms_median" {print $3}'
-}
-old_all=() new_all=()
-for r in $(seq 1 "$rounds"); do
-  o=$(run old); n=$(run new)
-  [ -n "$o" ] && [ -n "$n" ] || die "round $r: the harness printed no frame time (old '$o', new '$n')"
-  echo "round $r: old $o ms, new $n ms"
-  old_all+=("$o"); new_all+=("$n")
-done
-python3 - "${old_all[*]}" "${new_all[*]}" "$ref" "$variant" <<'PY'
-import statistics, sys
-old = [float(x) for x in sys.argv[1].split()]
-new = [float(x) for x in sys.argv[2].split()]
-mo, mn = statistics.median(old), statistics.median(new)
-print(f"patch layout ({sys.argv[4]}): {sys.argv[3][:12]} {mo:.3f} ms, this tree {mn:.3f} ms, new / old {mn / mo:.3f}")
-PY
+fi
+rm -rf "$scratch"
+cp "$harness" "$work/bin/gt-harness"
+cp "$RIG_DIR/bench_patch_layout-device.sh" "$work/"
+cat >"$work/bench.conf" <<CONF
+ref=${ref:0:12}
+tree=$(git -C "$PKG_DIR" rev-parse --short=12 HEAD)$(git -C "$PKG_DIR" diff --quiet HEAD -- Shaders Runtime || echo +dirty)
+variant=$variant
+old_layout="$old_layout"
+patches=$((tiles * tiles))
+width=$width
+height=$height
+CONF
+if [ -n "$prepare" ]; then
+  say "prepared $work ($(du -sh "$work" | cut -f1)): REF ${ref:0:12} ($old_layout) vs this tree; on the device: bash $work/bench_patch_layout-device.sh $work"
+  exit 0
+fi
+dev=(); [ ${#device[@]} -gt 0 ] && dev=(--device "${device[1]}")
+bash "$work/bench_patch_layout-device.sh" "$work" --rounds "$rounds" --frames "$frames" "${dev[@]}"

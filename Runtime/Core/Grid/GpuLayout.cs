@@ -1,5 +1,6 @@
 using System;
 using System.Globalization;
+using System.Runtime.InteropServices;
 
 namespace GregoryTerrain
 {
@@ -7,9 +8,10 @@ namespace GregoryTerrain
     /// The only code that packs the GPU buffers of a patch grid (internals.md, "GPU layout"); the
     /// shaders' side is <c>Shaders/Grid/PatchGrid.hlsl</c>. Pure arrays: the caller uploads or writes them.
     /// <list type="table">
-    /// <item><c>_ControlPoints</c>: StructuredBuffer&lt;float4&gt;, 20 per patch, patch p at float4
-    /// index <c>20 p + slot</c>: xyz = <c>P - R_p</c>, the point relative to the patch's reference
-    /// point <c>R_p</c>; w of slots 0, 1, 2 = <c>R_p</c>.x, .y, .z, w of the other slots 0.</item>
+    /// <item><c>_ControlPoints</c>: StructuredBuffer&lt;GregoryPatchRecord&gt;, one 320-byte record per
+    /// patch, <c>points[slot]</c> (<see cref="GregoryPatchRecord"/>): xyz = <c>P - R_p</c>, the point
+    /// relative to the patch's reference point <c>R_p</c>; w of slots 0, 1, 2 = <c>R_p</c>.x, .y, .z,
+    /// w of the other slots 0. As floats: patch p's slot k at float index <c>80 p + 4 k</c>.</item>
     /// <item><c>_Regions</c>: StructuredBuffer&lt;float4&gt;, (a, b, e, f) of patch p at float4 index p (hi parts).</item>
     /// <item><c>_GridLines</c>: StructuredBuffer&lt;float&gt;, hi parts xLines[0..n], yLines[0..m], then
     /// the lo parts in the same order (line = hi + lo to ~1e-16).</item>
@@ -32,8 +34,10 @@ namespace GregoryTerrain
 
         /// <summary>Stride in bytes of a uint4 element (_VertexCache's records).</summary>
         public const int Uint4Stride = 16;
-        /// <summary>float4 elements of _ControlPoints per patch.</summary>
-        public const int ControlPointsPerPatch = GregoryPatch.SlotCount;
+        /// <summary>float4 points of _ControlPoints per patch (one <see cref="GregoryPatchRecord"/>).</summary>
+        public const int ControlPointsPerPatch = GregoryPatchRecord.PointCount;
+        /// <summary>Bytes per patch record: the stride of _ControlPoints (StructuredBuffer&lt;GregoryPatchRecord&gt;).</summary>
+        public const int PatchRecordStride = GregoryPatchRecord.Stride;
         /// <summary>Floats of _ControlPoints per patch (80).</summary>
         public const int ControlPointFloatsPerPatch = ControlPointsPerPatch * Float4Size;
         /// <summary>Floats of _Regions per patch (one float4).</summary>
@@ -67,7 +71,7 @@ namespace GregoryTerrain
         }
 
         /// <summary>Bytes of _ControlPoints for a grid of <paramref name="patches"/> patches.</summary>
-        public static long ControlPointBytes(long patches) => patches * ControlPointsPerPatch * Float4Stride;
+        public static long ControlPointBytes(long patches) => patches * PatchRecordStride;
 
         /// <summary>
         /// Throws ArgumentException unless the grid can be packed: <see cref="PatchGrid.Validate"/>
@@ -91,28 +95,33 @@ namespace GregoryTerrain
         }
 
         /// <summary>
-        /// _ControlPoints: 20 float4 per patch, patch-major, slot order; xyz = <c>P_k - R_p</c> (formed in
-        /// double, then rounded), w = R_p.x, R_p.y, R_p.z in slots 0, 1, 2 and 0 elsewhere.
+        /// _ControlPoints: one record per patch, patch-major, points in slot order; xyz = <c>P_k - R_p</c>
+        /// (formed in double, then rounded), w = R_p.x, R_p.y, R_p.z in slots 0, 1, 2 and 0 elsewhere.
+        /// What the renderer uploads (stride <see cref="PatchRecordStride"/>).
         /// </summary>
-        public static float[] PackControlPoints(PatchGrid grid)
+        public static GregoryPatchRecord[] PackPatchRecords(PatchGrid grid)
         {
             CheckPackable(grid);
-            var data = new float[ControlPointBytes(grid.PatchCount) / sizeof(float)];
+            var data = new GregoryPatchRecord[grid.PatchCount];
             for (int p = 0; p < grid.PatchCount; p++)
             {
                 Float3 r = PatchReference(grid.Patches[p]);
                 for (int k = 0; k < GregoryPatch.SlotCount; k++)
                 {
-                    long o = ControlPointOffset(p, k);
                     Double3 c = grid.Patches[p][k];
-                    data[o] = (float)(c.x - r.x);
-                    data[o + 1] = (float)(c.y - r.y);
-                    data[o + 2] = (float)(c.z - r.z);
-                    data[o + 3] = k == 0 ? r.x : k == 1 ? r.y : k == 2 ? r.z : 0f;
+                    data[p][k] = new Float4((float)(c.x - r.x), (float)(c.y - r.y), (float)(c.z - r.z),
+                        k == 0 ? r.x : k == 1 ? r.y : k == 2 ? r.z : 0f);
                 }
             }
             return data;
         }
+
+        /// <summary>
+        /// The bytes of <see cref="PackPatchRecords"/> as floats (80 per patch, <see cref="ControlPointOffset"/>):
+        /// what Core's <see cref="TerrainInputs"/> and the rig's buffer files hold.
+        /// </summary>
+        public static float[] PackControlPoints(PatchGrid grid) =>
+            MemoryMarshal.Cast<GregoryPatchRecord, float>(PackPatchRecords(grid)).ToArray();
 
         /// <summary>_Regions: one float4 (a, b, e, f) per patch.</summary>
         public static float[] PackRegions(PatchGrid grid)

@@ -1,5 +1,6 @@
 using System;
 using System.Globalization;
+using System.Runtime.InteropServices;
 
 namespace GregoryTerrain
 {
@@ -15,7 +16,7 @@ namespace GregoryTerrain
     /// </summary>
     internal sealed class TerrainInputs
     {
-        /// <summary>_ControlPoints: 20 float4 per patch, patch p at float index <c>80 p</c>: (P - R_p, w), w of slots 0..2 = R_p (<see cref="GpuLayout"/>).</summary>
+        /// <summary>_ControlPoints: the bytes of one <see cref="GregoryPatchRecord"/> per patch as floats, patch p at float index <c>80 p</c>: (P - R_p, w), w of slots 0..2 = R_p (<see cref="GpuLayout"/>).</summary>
         public float[] ControlPoints { get; }
         /// <summary>_Regions: (a, b, e, f) per patch.</summary>
         public float[] Regions { get; }
@@ -224,8 +225,8 @@ namespace GregoryTerrain
         public Float3 PatchReference(int patch)
         {
             CheckPatch(patch);
-            long o = GpuLayout.ControlPointOffset(patch, 0) + 3;
-            return new Float3(ControlPoints[o], ControlPoints[o + GpuLayout.Float4Size], ControlPoints[o + 2 * GpuLayout.Float4Size]);
+            ref readonly GregoryPatchRecord r = ref Records()[patch];
+            return new Float3(r[0].w, r[1].w, r[2].w);
         }
 
         /// <summary>The 20 control points of a patch relative to its reference point (slot order) into <paramref name="cp"/>.</summary>
@@ -234,10 +235,13 @@ namespace GregoryTerrain
             CheckPatch(patch);
             if (cp.Length != GregoryPatch.SlotCount)
                 throw new ArgumentException(Invariant($"cp.Length ({cp.Length}) must be {GregoryPatch.SlotCount}"), nameof(cp));
-            long o = GpuLayout.ControlPointOffset(patch, 0);
-            for (int k = 0; k < GregoryPatch.SlotCount; k++, o += GpuLayout.Float4Size)
-                cp[k] = new Float3(ControlPoints[o], ControlPoints[o + 1], ControlPoints[o + 2]);
+            ref readonly GregoryPatchRecord r = ref Records()[patch];
+            for (int k = 0; k < GregoryPatch.SlotCount; k++)
+                cp[k] = r[k].xyz;
         }
+
+        /// <summary>_ControlPoints read as the GPU reads it, one record per patch (no copy).</summary>
+        ReadOnlySpan<GregoryPatchRecord> Records() => MemoryMarshal.Cast<float, GregoryPatchRecord>(ControlPoints);
 
         void CheckPatch(int patch)
         {

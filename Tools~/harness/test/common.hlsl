@@ -26,7 +26,14 @@ cbuffer RigCamera : register(b1)
     float4 _RigLightDirection;
 };
 
-StructuredBuffer<float4> _ControlPoints : register(t0);
+// The package's patch record (Shaders/Terrain/TerrainInputs.hlsl): 20 float4, stride 320.
+struct GregoryPatchRecord
+{
+    float4 points[20];
+};
+StructuredBuffer<GregoryPatchRecord> _ControlPoints : register(t0);
+// Float4 i of the control points read as one array (the tests fill it float4 by float4).
+float4 ControlPointFloat4(uint i) { return _ControlPoints[i / 20u].points[i % 20u]; }
 StructuredBuffer<float4> _Regions : register(t1);
 StructuredBuffer<float> _GridLines : register(t2);
 #ifdef GT_READBACK

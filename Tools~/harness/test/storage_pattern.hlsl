@@ -14,5 +14,5 @@ RWStructuredBuffer<uint4> _PatternRW : register(u3);
 void pattern(uint3 id : SV_DispatchThreadID)
 {
     uint i = id.x + 256 * (id.y + 2 * id.z);
-    _PatternRW[i] = uint4(i, i * 2654435761u, asuint(_Tess.x), asuint(_ControlPoints[i % 1280].x));
+    _PatternRW[i] = uint4(i, i * 2654435761u, asuint(_Tess.x), asuint(ControlPointFloat4(i % 1280).x));
 }

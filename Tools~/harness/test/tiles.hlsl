@@ -85,7 +85,7 @@ Fragment domain_shader(TileFactors factors, float2 st : SV_DomainLocation, const
     float2 tileIJ = float2(tile % m, tile / m);
     float2 o = (tileIJ + st * TileScale(tile)) / tiles;        // range coordinate
     float2 q = _Range.xy + o * (_Range.zw - _Range.xy);        // global point
-    float height = _ControlPoints[0].z;
+    float height = ControlPointFloat4(0u).z;
     float3 object = float3(q.x, height, q.y);
 
 #ifdef GT_READBACK
@@ -93,7 +93,7 @@ Fragment domain_shader(TileFactors factors, float2 st : SV_DomainLocation, const
     uint vertex = tile * (F + 1) * (F + 1) + (uint)round(st.y * F) * (F + 1) + (uint)round(st.x * F);
     _Readback[3 * vertex + 0] = float4(object, 1);
     _Readback[3 * vertex + 1] = float4(st, tile, primitive);
-    _Readback[3 * vertex + 2] = float4(_ControlPoints[tile].x, _Regions[tile].y, _GridLines[tile], tiles);
+    _Readback[3 * vertex + 2] = float4(ControlPointFloat4(tile).x, _Regions[tile].y, _GridLines[tile], tiles);
 #endif
 
     Fragment f;
@@ -113,12 +113,12 @@ Fragment vert_fallback(uint id : SV_VertexID, uint instance : SV_InstanceID)
     uint m = (uint)tiles;
     float2 o = (float2(tile % m, tile / m) + st * TileScale(tile)) / tiles;
     float2 q = _Range.xy + o * (_Range.zw - _Range.xy);
-    float3 object = float3(q.x, _ControlPoints[0].z, q.y);
+    float3 object = float3(q.x, ControlPointFloat4(0u).z, q.y);
 #ifdef GT_READBACK
     uint vertex = tile * (F + 1) * (F + 1) + id;
     _Readback[3 * vertex + 0] = float4(object, 1);
     _Readback[3 * vertex + 1] = float4(st, tile, 0);
-    _Readback[3 * vertex + 2] = float4(_ControlPoints[tile].x, _Regions[tile].y, _GridLines[tile], tiles);
+    _Readback[3 * vertex + 2] = float4(ControlPointFloat4(tile).x, _Regions[tile].y, _GridLines[tile], tiles);
 #endif
     Fragment f;
     f.positionCS = mul(_RigObjectToClip, float4(object, 1));
