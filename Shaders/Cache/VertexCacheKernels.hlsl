@@ -175,7 +175,7 @@ void CacheTileFactors(uint3 group : SV_GroupID, uint lane : SV_GroupIndex)
     float3 cornerOS[4];
     [unroll] for (uint c = 0u; c < 4u; c++)
         cornerOS[c] = gtTileFactorSamples[c].xyz;
-    bool culled = TileCulled(cornerOS);
+    bool culled = TileCulled(cornerOS, TileNoiseMargin(FrameTileLayout(), tile));
     if (!culled && lane < GT_TILE_FACTOR_PIECES)
     {
         if (lane == 6u)

@@ -111,6 +111,28 @@ float NoiseCurvatureBound(float4 noise, float octaveCount)
     return abs(noise.x) * GT_GRADIENT_NOISE_CURVATURE * sum;
 }
 
+// Largest |grad GradientNoise| per unit lattice, found on a dense grid (2.81), rounded up
+// (TessellationPolicy.GradientNoiseSlope).
+#define GT_GRADIENT_NOISE_SLOPE 3.0
+
+// Bound on |p(q) - p(O)| (terrain units) for q within `distance` (terrain units) of O, the noise a
+// vertex adds while a range origin is set: per octave the smaller of twice its amplitude and its slope
+// bound times the distance, over `octaves` octaves (noise = (amplitude, frequency, alpha, beta)).
+// Mirrors TessellationPolicy.NoiseDifferenceBound.
+float NoiseDifferenceBound(float4 noise, float octaves, float distance)
+{
+    float a = abs(noise.x), f = noise.y, invBeta = 1.0 / noise.w, sum = 0.0;
+    [loop] for (uint k = 0u; k < 16u; ++k)   // 16 = GT_MAX_OCTAVES (OctaveNoise.hlsl)
+    {
+        float fade = saturate(octaves - float(k));
+        if (fade <= 0.0) break;
+        sum += fade * min(2.0 * a, a * GT_GRADIENT_NOISE_SLOPE * f * distance);
+        f *= noise.z;
+        a *= invBeta;
+    }
+    return sum;
+}
+
 // The chord error (pixels) the noise can add to an edge edgeLength long (terrain units) drawn as one
 // segment: curvature L^2 / 8 at the edge's largest pixel scale. Mirrors TessellationPolicy.NoiseSagittaPixels.
 float NoiseSagittaPixels(float noiseCurvature, float edgeLength, float maxPixelsPerUnit)

@@ -34,11 +34,36 @@ float3 CellCornerObjectPosition(TileLayout l, uint drawPatch, uint corner)
     return TerrainToObject(OutputSurfacePosition(l, EvaluateCellSurface(l, drawPatch, CornerTessCoordinate(corner))));
 }
 
+// The height the noise may move the tile's surface from its corners' (no noise) frame: while a range
+// origin O is set the vertices output p(q) - p(O) (TerrainVertex.hlsl), bounded through the corners'
+// largest distance from O (NoiseDifferenceBound: metres near the feet, where the whole relief's
+// bound kept tiles behind a ground-level camera); else p(q) itself, within NoiseHeightBound. A cell
+// is a rectangle in q, so its farthest point from O is a corner. 0 without GT_NOISE. Mirrors Core
+// TileFactors.TileNoiseMargin.
+float TileNoiseMargin(TileLayout l, uint slot)
+{
+#if defined(GT_NOISE)
+    #if !defined(GT_EXTEND_DRAW_PATCHES)
+    [branch] if (RelativeSurfaceIsActive(l.origin))
+    {
+        TerrainPoint origin = MakeTerrainPoint(l.origin.xy, l.origin.zw);
+        float d = 0.0;
+        [unroll] for (uint c = 0u; c < 4u; c++)
+            d = max(d, length(TerrainPointDifference(CellToTerrainPoint(l, slot, CornerTessCoordinate(c)), origin)));
+        return NoiseDifferenceBound(NoiseSettings(), MaxNoiseOctaves(), d);
+    }
+    #endif
+    return NoiseHeightBound();
+#else
+    return 0.0;
+#endif
+}
+
 // True when the cell's box lies outside the view (so does the tile's part of it). The box is the corners' bounds, grown in height
-// by the noise bound (GT_NOISE) plus the corners' own height spread: a cheap allowance for the
+// by the noise margin (TileNoiseMargin) plus the corners' own height spread: a cheap allowance for the
 // surface rising between corners, which the corners alone cannot see. (Takes the corners as an
 // array, not the InputPatch: not every HLSL compiler accepts an InputPatch as a helper argument.)
-bool TileCulled(float3 cornerOS[4])
+bool TileCulled(float3 cornerOS[4], float noiseMargin)
 {
     float3 lo = cornerOS[0], hi = lo;
     [unroll] for (uint c = 1; c < 4; c++)
@@ -47,9 +72,7 @@ bool TileCulled(float3 cornerOS[4])
         hi = max(hi, cornerOS[c]);
     }
     float margin = hi.y - lo.y;
-#if defined(GT_NOISE)
-    margin += NoiseHeightBound();
-#endif
+    margin += noiseMargin;
     lo.y -= margin;
     hi.y += margin;
 #if defined(GT_SNOW)
@@ -300,7 +323,7 @@ TileFactorSet ComputeTileFactors(TileLayout l, uint patch, float3 cornerOS[4])
     TileFactorSet f;
     if (TileEmpty(l, patch)) return CulledTileFactors();
     if (UniformTileFactors(f)) return f;
-    if (TileCulled(cornerOS)) return CulledTileFactors();
+    if (TileCulled(cornerOS, TileNoiseMargin(l, patch))) return CulledTileFactors();
     float piece[GT_TILE_FACTOR_PIECES];
     [unroll] for (uint i = 0u; i < GT_TILE_FACTOR_PIECES; i++)
         piece[i] = TileFactorPiece(l, patch, i, cornerOS);

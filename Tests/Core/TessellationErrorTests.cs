@@ -254,6 +254,50 @@ namespace GregoryTerrain.Tests
         }
 
         [Test]
+        public void GradientNoiseSlopeBoundsTheNoiseGradient()
+        {
+            // The analytic gradient on 256 x 256 lattice cells, 16 x 16 samples each (cell corners included).
+            double largest = 0;
+            for (int cy = 0; cy < 256; cy++)
+                for (int cx = 0; cx < 256; cx++)
+                    for (int sy = 0; sy <= 16; sy++)
+                        for (int sx = 0; sx <= 16; sx++)
+                        {
+                            GradientNoise.Evaluate(cx - 128 + sx / 16.0, cy - 128 + sy / 16.0, out Double2 g);
+                            largest = Math.Max(largest, Math.Sqrt(g.x * g.x + g.y * g.y));
+                        }
+            TestContext.Out.WriteLine($"largest |grad noise| on the grid: {largest:G4} (bound {TessellationPolicy.GradientNoiseSlope})");
+            Assert.That(largest, Is.LessThanOrEqualTo(TessellationPolicy.GradientNoiseSlope));
+            Assert.That(largest, Is.GreaterThan(0.8 * TessellationPolicy.GradientNoiseSlope), "the bound is not loose by more than 1.25x");
+        }
+
+        [Test]
+        public void NoiseDifferenceBoundHoldsAroundTheOrigin()
+        {
+            // |p(q) - p(O)| at the settings' octaves (and at fewer: every term only shrinks) for q at
+            // distance d from O, random O and directions; near O the slope term, far away 2 * amplitude.
+            var noise = NoiseSettings.Default;
+            var rng = new Random(5);
+            double worst = 0;
+            foreach (double d in new[] { 1e-4, 1e-3, 0.01, 0.1, 1.0 })
+            {
+                float bound = TessellationPolicy.NoiseDifferenceBound(noise, noise.octaves, (float)d);
+                for (int n = 0; n < 20000; n++)
+                {
+                    double ox = rng.NextDouble(), oy = rng.NextDouble(), t = rng.NextDouble() * 2 * Math.PI, r = d * Math.Sqrt(rng.NextDouble());
+                    double octaves = noise.octaves - (n % 3) * 0.5;
+                    double diff = Math.Abs(OctaveNoise.Evaluate(ox + r * Math.Cos(t), oy + r * Math.Sin(t), noise, octaves, out _) - OctaveNoise.Evaluate(ox, oy, noise, octaves, out _));
+                    Assert.That(diff, Is.LessThanOrEqualTo(bound), $"d {d} at ({ox}, {oy})");
+                    worst = Math.Max(worst, diff / bound);
+                }
+            }
+            TestContext.Out.WriteLine($"largest |p(q) - p(O)| / bound: {worst:G3}");
+            Assert.That(TessellationPolicy.NoiseDifferenceBound(noise, noise.octaves, 0f), Is.EqualTo(0f));
+            Assert.That(TessellationPolicy.NoiseDifferenceBound(noise, noise.octaves, 1e9f), Is.EqualTo(2f * TessellationPolicy.NoiseHeightBound(noise)).Within(1e-5).Percent, "far: twice the height bound");
+            Assert.That(Assert.Throws<ArgumentException>(() => TessellationPolicy.NoiseDifferenceBound(noise, noise.octaves, float.NaN)).Message, Does.Contain("distance (NaN)"));
+        }
+
+        [Test]
         public void NoiseSagittaBoundsTheChordErrorOfOctaveNoise()
         {
             var noise = NoiseSettings.Default;

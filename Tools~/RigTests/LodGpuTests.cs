@@ -244,5 +244,38 @@ namespace GregoryTerrain.Rig.Tests
             if (holds) Assert.That(maxPx, Is.LessThanOrEqualTo(1.0), "largest screen error");
             else Assert.That(maxPx, Is.GreaterThan(1.0), "octaves dropped too early must show (the check can fail)");
         }
+
+        /// <summary>
+        /// The budget at the bench's own view: 1,000 km (the 100 km relief), camera 2 m up,
+        /// 1920 x 1080, 1 px target: at most 2M triangles reach the clipper (the harness's clipping
+        /// invocations at the GPU's adaptive factors) and the largest screen error stays within 1 px
+        /// (LodError). With the tiles' culling boxes grown by the whole relief's noise bound (before
+        /// TileNoiseMargin) the tiles behind the camera were kept at factor 64: 2,012,479 triangles,
+        /// which fails the first assertion.
+        /// </summary>
+        [Test]
+        public void ThousandKilometresWithinTwoMillionTrianglesAndOnePixel()
+        {
+            PatchGrid demo = HeightmapFitter.Fit(DemoHeightmap.Heights(129), 129, 129, 5, 5).Grid;   // gt lod-bench's terrain
+            var s = new LodScene { Tiles = 16, Factor = 0, Width = 1920, Height = 1080, TerrainMeters = 1e6 }.Build(demo);
+            string dir = Path.Combine(_work, (_runs++).ToString("D2") + "-budget");
+            s.Write(dir);
+            string rb = Path.Combine(dir, "factors.f32");
+            var args = new List<string>(ReadbackRun.Stages(_spirv, "factor_readback+lod+noise"));
+            args.AddRange(s.HarnessArgs(dir));
+            args.AddRange(new[] { "--width", "1920", "--height", "1080", "--device", "llvmpipe", "--stats",
+                                  "--readback", rb, "--readback-floats", (8 * s.Patches).ToString() });
+            HarnessRun h = HarnessRun.Harness(args.ToArray());
+            h.AssertSucceeded();
+            long triangles = h.Long("stat", "clipping_invocations");
+            string line = LodError.Measure(s, PatchFactors.FromReadback(ReadbackRun.ReadFloats(rb), s.Patches), 1 << 12);
+            TestContext.Out.WriteLine($"1,000 km, 1920x1080: {triangles} triangles; {line}");
+            string[] w = line.Split(' ');
+            double maxPx = double.Parse(w[Array.IndexOf(w, "max_px") + 1], System.Globalization.CultureInfo.InvariantCulture);
+            long model = long.Parse(w[Array.IndexOf(w, "triangles_model") + 1], System.Globalization.CultureInfo.InvariantCulture);
+            Assert.That(model, Is.EqualTo(triangles), "the error model cuts the triangles the GPU drew");
+            Assert.That(triangles, Is.LessThanOrEqualTo(2000000), "triangles at 1920 x 1080");
+            Assert.That(maxPx, Is.LessThanOrEqualTo(1.0), "largest screen error");
+        }
     }
 }

@@ -9,16 +9,19 @@
 # with --frames the harness's "time ..." lines (GPU frame times; lavapipe's are functional only).
 # --error: draws the view once more with GT_FACTOR_READBACK and prints gt-cli's "lod_error ..." line
 # (LodError.cs: largest and RMS screen error against the double full-detail surface).
+# --per-level: with --error, one "lod level k triangles T max_px X rms_px Y ..." line per level instead
+# (LodError.MeasureLevels: each level's triangles and screen error, the other levels left out).
 # --no-origin: the levels without a range origin (the plain absolute path, for comparison).
 # Measures only: no bound is asserted here (LodGpuTests asserts the seams, the camera step, the error).
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
-device=(); frames=1; png=(); scene=(); error=0
+device=(); frames=1; png=(); scene=(); error=0; levels_error=()
 while [ $# -gt 0 ]; do
   case "$1" in
     --device) device=(--device "${2:?--device needs a name substring}"); shift ;;
     --frames) frames="${2:?--frames needs a count}"; shift ;;
     --png) png=(--png "${2:?--png needs a file}"); shift ;;
     --error) error=1; shift; continue ;;
+    --per-level) levels_error=(--per-level); shift; continue ;;
     --no-origin) scene+=(--no-origin); shift; continue ;;
     --*) scene+=("$1" "${2:?$1 needs a value}"); shift ;;
     *) die "lod-bench: unknown argument '$1'" ;;
@@ -59,5 +62,6 @@ if [ "$error" = 1 ]; then
     --buffers "$run" --params-tail "$run/lod_tail.f32" --patches "$patches" --width "$width" --height "$height" --reversed-z \
     --readback "$run/factors.f32" --readback-floats $((8 * patches)) "${device[@]}" > "$run/harness-factors.txt" \
     || die "factor readback draw failed ($run/harness-factors.txt)"
-  [ -n "${GT_LOD_SKIP_ERROR:-}" ] || "$cli" lod-scene --out "$run/error-scene" "${scene[@]}" --factors "$run/factors.f32" | grep '^lod_error ' | sed 's/^lod_error /lod error /'
+  [ -n "${GT_LOD_SKIP_ERROR:-}" ] || "$cli" lod-scene --out "$run/error-scene" "${scene[@]}" --factors "$run/factors.f32" "${levels_error[@]}" \
+    | grep -E '^lod_(error|level) ' | sed -e 's/^lod_error /lod error /' -e 's/^lod_level /lod level /'
 fi

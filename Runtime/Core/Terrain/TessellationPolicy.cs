@@ -369,6 +369,41 @@ namespace GregoryTerrain
         }
 
         /// <summary>
+        /// Bound on the gradient of <see cref="GradientNoise"/>, per unit lattice (|grad n| &lt;= this,
+        /// Euclidean): the largest value found on a dense grid of 256 x 256 lattice cells
+        /// (Tests/Core/TessellationErrorTests.cs checks it), rounded up.
+        /// </summary>
+        public const float GradientNoiseSlope = 3f;
+
+        /// <summary>
+        /// Bound on |p(q) - p(O)|, the noise a vertex adds while a range origin O is set (the
+        /// vertices output p(q) - p(O), both at the vertex's octave count), for every q within
+        /// <paramref name="distance"/> (terrain units, Euclidean) of O: per octave k the smaller of
+        /// twice its amplitude (both ends anywhere in [-a_k, a_k]) and its slope bound times the
+        /// distance (<c>a_k GradientNoiseSlope frequency alpha^k d</c>), summed over
+        /// <paramref name="octaveCount"/> octaves (the most a vertex draws, <c>MaxNoiseOctaves</c>: it
+        /// weights each by a fade in [0, 1]; a fraction weights the last as OctaveNoise does). Near the origin
+        /// (the feet, under the levels of detail) this is metres where <see cref="NoiseHeightBound"/>
+        /// is the whole relief. Mirrors HLSL <c>NoiseDifferenceBound</c>.
+        /// </summary>
+        public static float NoiseDifferenceBound(NoiseSettings settings, float octaveCount, float distance)
+        {
+            settings.Validate(nameof(settings));
+            if (float.IsNaN(octaveCount)) throw new ArgumentException("octaveCount (NaN) must be a number", nameof(octaveCount));
+            if (!(distance >= 0f)) throw new ArgumentException(FormattableString.Invariant($"distance ({distance:R}) must be >= 0"), nameof(distance));
+            float a = Math.Abs(settings.amplitude), f = settings.frequency, invBeta = 1f / settings.beta, sum = 0f;
+            for (int k = 0; k < NoiseSettings.MaxOctaves; k++)
+            {
+                float fade = GMath.saturate(octaveCount - k);
+                if (fade <= 0f) break;
+                sum += fade * Math.Min(2f * a, a * GradientNoiseSlope * f * distance);
+                f *= settings.alpha;
+                a *= invBeta;
+            }
+            return sum;
+        }
+
+        /// <summary>
         /// The tile culling test of <c>hull_const</c> (HLSL <c>TileCulled</c>): the box of the tile's four
         /// corner positions (object space, Unity's Y-up: height is y), grown in height by the corners'
         /// own height spread (the surface may rise between corners) plus <paramref name="noiseHeightBound"/>

@@ -55,13 +55,39 @@ namespace GregoryTerrain
         public static TileFactorSet CulledTileFactors() => default;
 
         /// <summary>
-        /// HLSL <c>TileCulled</c>: the corners' box, grown in height by their spread plus the noise
-        /// bound (<see cref="TerrainKeywords.Noise"/>), and upwards by the snow cap
-        /// (<see cref="TerrainKeywords.Snow"/>: snow only raises the surface), lies outside the view.
+        /// HLSL <c>TileNoiseMargin</c>: the height the noise may move slot <paramref name="tile"/>'s
+        /// surface from its corners' (no noise) frame. While a range origin O is set (not in paper
+        /// mode) the vertices output p(q) - p(O): <see cref="TessellationPolicy.NoiseDifferenceBound"/>
+        /// at the cell corners' largest distance from O (a cell is a rectangle in q); else p(q) itself,
+        /// within <see cref="TessellationPolicy.NoiseHeightBound"/>. 0 without <see cref="TerrainKeywords.Noise"/>.
         /// </summary>
-        public static bool TileCulled(TerrainInputs inputs, Float4x4 objectToClip, Float3[] cornersOS, TerrainKeywords keywords)
+        public static float TileNoiseMargin(TerrainInputs inputs, int tile, TerrainKeywords keywords)
         {
-            float noise = (keywords & TerrainKeywords.Noise) != 0 ? TessellationPolicy.NoiseHeightBound(inputs.NoiseSettingsStruct()) : 0f;
+            if ((keywords & TerrainKeywords.Noise) == 0) return 0f;
+            Float4 originF = inputs.Params.rangeOrigin;
+            if ((keywords & TerrainKeywords.PaperMode) == 0 && RelativeSurface.IsActive(originF))
+            {
+                TerrainPoint origin = RelativeSurface.OriginPoint(originF);
+                float d = 0f;
+                for (int c = 0; c < 4; c++)
+                {
+                    Float2 t = CornerTessCoordinate(c);
+                    Float2 diff = RelativeSurface.Difference(TileLattice.CellToTerrainPoint(inputs.Params, tile, t.x, t.y), origin);
+                    d = Math.Max(d, (float)Math.Sqrt(diff.x * diff.x + diff.y * diff.y));
+                }
+                return TessellationPolicy.NoiseDifferenceBound(inputs.NoiseSettingsStruct(), inputs.MaxNoiseOctaves(), d);
+            }
+            return TessellationPolicy.NoiseHeightBound(inputs.NoiseSettingsStruct());
+        }
+
+        /// <summary>
+        /// HLSL <c>TileCulled</c>: the corners' box of slot <paramref name="tile"/>'s cell, grown in
+        /// height by their spread plus the noise margin (<see cref="TileNoiseMargin"/>), and upwards by
+        /// the snow cap (<see cref="TerrainKeywords.Snow"/>: snow only raises the surface), lies outside the view.
+        /// </summary>
+        public static bool TileCulled(TerrainInputs inputs, int tile, Float4x4 objectToClip, Float3[] cornersOS, TerrainKeywords keywords)
+        {
+            float noise = TileNoiseMargin(inputs, tile, keywords);
             float snow = (keywords & TerrainKeywords.Snow) != 0 ? inputs.SnowDepthCap() : 0f;
             return TessellationPolicy.TileCulled(objectToClip, cornersOS, noise, snow);
         }
@@ -218,7 +244,7 @@ namespace GregoryTerrain
             if (inputs == null) throw new ArgumentNullException(nameof(inputs));
             var corners = new Float3[4];
             for (int c = 0; c < 4; c++) corners[c] = CellCornerObjectPosition(inputs, tile, c);
-            if (TileCulled(inputs, objectToClip, corners, keywords)) return CulledTileFactors();
+            if (TileCulled(inputs, tile, objectToClip, corners, keywords)) return CulledTileFactors();
             var piece = new float[Pieces];
             for (int i = 0; i < Pieces; i++) piece[i] = TileFactorPiece(inputs, tile, i, corners, objectToClip, screenSize, keywords);
             return TileFactorsOfPieces(piece);

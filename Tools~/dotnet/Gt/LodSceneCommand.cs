@@ -48,7 +48,7 @@ namespace GregoryTerrain.Rig
             if (a.Flag("factors"))
             {
                 PatchFactors[] f = PatchFactors.FromReadback(BufferFiles.Read(a.String("factors")), s.Patches);
-                Console.WriteLine(LodError.Measure(s, f, a.Int("max-cells", 1 << 20)));
+                Console.WriteLine(a.Flag("per-level") ? LodError.MeasureLevels(s, f, a.Int("max-cells", 1 << 20)) : LodError.Measure(s, f, a.Int("max-cells", 1 << 20)));
             }
             return 0;
         }

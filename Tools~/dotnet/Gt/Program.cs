@@ -86,7 +86,7 @@ namespace GregoryTerrain.Rig
             Add("bench-report", "tables of a gt bench run (--plan DIR --raw DIR --grid FILE)", BenchReport.Run, "grid plan raw tsv");
             Add("bench-docs", "rewrite the summary tables of a performance page from a run's full table (--table bench_table.md --page performance.md)", a => BenchDocs.Run(a.String("table"), a.String("page")), "page table");
             Add("lod-scene", "write a ground-level levels-of-detail view for the harness: buffers and --params-tail (--out DIR)", LodSceneCommand.Run,
-                "out grid terrain-m eye-m finest-m tiles factor target-pixels segment-pixels width height ground no-origin factors max-cells relief-m");
+                "out grid terrain-m eye-m finest-m tiles factor target-pixels segment-pixels width height ground no-origin factors max-cells relief-m per-level");
             Add("snow-scene", "write a snow run's inputs: ridge grid, harness buffers, field/snow params per R (--out DIR [--cpu])", SnowSceneCommand.Run,
                 "cap cpu dt eye factor fov grid height height-scale light no-noise noise-amplitude out patches resolutions scale steps target tiles width wind");
             Add("pack", "write the harness's buffer files for one scene (--grid FILE --out DIR ...)", PackCommand.Run, SceneOptions + " orbit out");
