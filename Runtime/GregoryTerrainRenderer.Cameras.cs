@@ -50,7 +50,7 @@ namespace GregoryTerrain
                 layer = gameObject.layer,
             };
             int across = TileLattice.TilesAcross(_params), tileCount = across * across;
-            if (LevelsOn(_drawFallback)) tileCount = PushLevels(cam);   // L x M^2 tiles around this camera
+            if (LevelsOn(_drawFallback)) tileCount = PushLevels();   // L x M^2 tiles, laid out around cam by Prepare(cam)
             if (_drawFallback)
                 Graphics.RenderPrimitivesIndexed(rp, MeshTopology.Triangles, _fallbackIndices,
                     _fallbackIndices.count, 0, tileCount);

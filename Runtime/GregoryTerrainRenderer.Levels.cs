@@ -16,7 +16,7 @@ namespace GregoryTerrain
 
         readonly TerrainRange[] _levelRanges = new TerrainRange[LodTiles.MaxLevels];
         readonly Vector4[] _levelVectors = new Vector4[LodTiles.MaxLevels];
-        int _levelCount;      // levels drawn by the last camera (0: none yet)
+        int _levelCount;      // levels laid out for the camera being drawn (Prepare), then sent (0: none yet)
         int _sentLevelCount;  // _LodLevels.x last set
 
         /// <summary>Whether the draw uses the levels: the setting, with the tessellator (the fallback grid draws one range).</summary>
@@ -47,26 +47,27 @@ namespace GregoryTerrain
         }
 
         /// <summary>
-        /// The range the range origin follows (<see cref="RangeOriginTracker"/>): with the levels, the
-        /// finest level around the camera, so on a large terrain (below RangeOrigin.DeepWidth of it,
-        /// a terrain wider than ~4 km) the vertices output S(q) - S(O) near the feet from precise
-        /// differences (precision.md) and the draw matrices cancel S(O) against the camera in
-        /// double; otherwise the renderer's range.
+        /// Lays the levels out around <paramref name="cam"/> (once a camera and frame: <see cref="PushLevels"/>
+        /// sends this layout) and returns the range the range origin follows
+        /// (<see cref="RangeOriginTracker"/>): with the levels, the finest level around the camera, so
+        /// on a large terrain (below RangeOrigin.DeepWidth of it, a terrain wider than ~4 km) the
+        /// vertices output S(q) - S(O) near the feet from precise differences (precision.md) and the
+        /// draw matrices cancel S(O) against the camera in double; otherwise the renderer's range.
         /// </summary>
         TerrainRange OriginRange(Camera cam, bool fallback)
         {
             if (cam == null || !LevelsOn(fallback)) return _range;
-            LayoutLevels(cam);
+            _levelCount = LayoutLevels(cam);
             return _levelRanges[0];
         }
 
         /// <summary>
-        /// Lays the levels out around <paramref name="cam"/> and sends their ranges relative to the
-        /// origin: one float4 per level. Returns how many tiles the draw holds (L x M^2).
+        /// Sends the levels <see cref="OriginRange"/> laid out for this camera in <see cref="Prepare"/>,
+        /// relative to the origin: one float4 per level. Returns how many tiles the draw holds (L x M^2).
         /// </summary>
-        int PushLevels(Camera cam)
+        int PushLevels()
         {
-            int count = LayoutLevels(cam);
+            int count = _levelCount;
             for (int k = 0; k < count; k++)
             {
                 RangeMapping.EncodeRange(_levelRanges[k], _origin.Origin, out Float4 r, out _);
@@ -79,7 +80,6 @@ namespace GregoryTerrain
                 SetVector(ShaderIds.LodLevels, new Vector4(count, 0f, 0f, 0f));
                 _sentLevelCount = count;
             }
-            _levelCount = count;
             return count * tiles * tiles;
         }
     }
