@@ -94,37 +94,32 @@ float3 PatchDifference(uint patch, float4 region, float4 regionLo, TerrainPoint 
     return GregoryDifferenceEvaluate(cp, uv0, duv);
 }
 
-// S(q) - S(O) = [S_p(q) - S_p(r1)] + [S_p0(r1) - S_p0(O)], r1 = O clamped into q's patch p.
+// S(q) - S(O) as a sum of differences within one patch each: S_p(q) - S_p(r1), r1 = O clamped into
+// q's patch p, then, while that point is not O, one patch (or diagonal) step toward O at a time, each
+// step from where the last ended (on the line or corner the two patches share, so inside the next one
+// bit for bit) to O clamped into the next patch. A neighbour of O's patch takes one step (deep zoom);
+// the levels' far tiles take more, each a difference across one patch (float keeps ~6e-8 of a patch).
+// One PatchDifference call site: the driver keeps registers for this code even where no vertex of a
+// frame enters it (no range origin).
 float3 RelativeSurfaceFromOrigin(TerrainPoint q, float4 rangeOrigin)
 {
     TerrainPoint origin = MakeTerrainPoint(rangeOrigin.xy, rangeOrigin.zw);
+    uint n = GridColumns();
     uint patch = FindPatchPrecise(q);
-    float4 region = PatchRegion(patch);
-    float4 regionLo = PatchRegionLo(patch);
-    TerrainPoint r1 = ClampToRegion(origin, region, regionLo);
-    float3 d = PatchDifference(patch, region, regionLo, q, r1);
-    if (any(r1.originHi != origin.originHi) || any(r1.local != origin.local))
+    int2 cell = int2(patch % n, patch / n);
+    TerrainPoint from = q;   // the first step starts at q itself (outside [0, 1] the difference extrapolates)
+    float3 d = 0.0;
+    [loop] for (uint k = 0u; k <= n + GridRows(); k++)
     {
-        // From r1 to O, one patch (or diagonal) step at a time: each step ends at O clamped into the
-        // next patch, which lies on the line (or corner) it shares with the one before. A neighbour
-        // of O's patch takes one step (the deep-zoom case); the levels' far tiles take more, each
-        // a difference across one patch (float keeps ~6e-8 of a patch there, far from the camera).
-        uint patch0 = FindPatchPrecise(origin);
-        uint n = GridColumns();
-        int i = (int)(patch % n), j = (int)(patch / n), i0 = (int)(patch0 % n), j0 = (int)(patch0 / n);
-        TerrainPoint at = r1;
-        [loop] for (uint k = 0u; k < n + GridRows(); k++)
-        {
-            i += sign(i0 - i);
-            j += sign(j0 - j);
-            uint p = (uint)j * n + (uint)i;
-            float4 rg = PatchRegion(p);
-            float4 rgLo = PatchRegionLo(p);
-            TerrainPoint next = ClampToRegion(origin, rg, rgLo);
-            d += PatchDifference(p, rg, rgLo, ClampToRegion(at, rg, rgLo), next);
-            if (p == patch0) break;
-            at = next;
-        }
+        uint p = (uint)cell.y * n + (uint)cell.x;
+        float4 region = PatchRegion(p);
+        float4 regionLo = PatchRegionLo(p);
+        TerrainPoint to = ClampToRegion(origin, region, regionLo);
+        d += PatchDifference(p, region, regionLo, from, to);
+        int2 step = int2(sign(TerrainPointDifference(origin, to)));   // 0 on an axis where O is inside p
+        if (all(step == 0)) break;
+        cell += step;
+        from = to;
     }
     return d;
 }

@@ -21,7 +21,8 @@ namespace GregoryTerrain
     /// boundary shared by p and p0 (an edge or a corner) as long as p and p0 are neighbours, i.e. the
     /// range is narrower than the narrowest patch; there the two patches agree (shared boundary
     /// control points are bit-identical). A q farther away (the levels of detail reach the whole
-    /// terrain) walks patch by patch from r1 to O, each step a difference within one patch. Everything depends only on q and per-frame constants, so
+    /// terrain) walks patch by patch from r1 to O, each step a difference within one patch; one loop
+    /// takes every step, the first from q. Everything depends only on q and per-frame constants, so
     /// shared tile edges stay bit-identical.</para>
     /// </summary>
     internal static class RelativeSurface
@@ -140,32 +141,24 @@ namespace GregoryTerrain
             if (grid == null) throw new ArgumentNullException(nameof(grid));
             Span<Float3> cp = stackalloc Float3[GregoryPatch.SlotCount];
             TerrainPoint origin = OriginPoint(rangeOriginF);
+            int n = grid.GridColumns();
             int patch = FindPatchPrecise(grid, q);
-            Float4 region = grid.PatchRegion(patch), regionLo = grid.PatchRegionLo(patch);
-            TerrainPoint r1 = ClampToRegion(origin, region, regionLo);
-            grid.LoadGregoryPatch(patch, cp);
-            Float3 d = PatchDifference(cp, region, regionLo, q, r1);
-            if (!r1.Equals(origin))
+            int i = patch % n, j = patch / n;
+            TerrainPoint from = q;   // the first step starts at q itself (outside [0, 1] the difference extrapolates)
+            Float3 d = default;
+            for (int k = 0; k <= n + grid.GridRows(); k++)
             {
-                // From r1 to O, one patch (or diagonal) step at a time: each step ends at O clamped
-                // into the next patch, on the line or corner it shares with the one before. A
-                // neighbour of O's patch takes one step (deep zoom); the levels' far tiles take more.
-                int patch0 = FindPatchPrecise(grid, origin);
-                int n = grid.GridColumns();
-                int i = patch % n, j = patch / n, i0 = patch0 % n, j0 = patch0 / n;
-                TerrainPoint at = r1;
-                for (int k = 0; k < n + grid.GridRows(); k++)
-                {
-                    i += Math.Sign(i0 - i);
-                    j += Math.Sign(j0 - j);
-                    int p = j * n + i;
-                    Float4 rg = grid.PatchRegion(p), rgLo = grid.PatchRegionLo(p);
-                    TerrainPoint next = ClampToRegion(origin, rg, rgLo);
-                    grid.LoadGregoryPatch(p, cp);
-                    d += PatchDifference(cp, rg, rgLo, ClampToRegion(at, rg, rgLo), next);
-                    if (p == patch0) break;
-                    at = next;
-                }
+                int p = j * n + i;
+                Float4 region = grid.PatchRegion(p), regionLo = grid.PatchRegionLo(p);
+                TerrainPoint to = ClampToRegion(origin, region, regionLo);
+                grid.LoadGregoryPatch(p, cp);
+                d += PatchDifference(cp, region, regionLo, from, to);
+                Float2 toward = Difference(origin, to);   // 0 on an axis where O is inside p
+                int si = Math.Sign(toward.x), sj = Math.Sign(toward.y);
+                if (si == 0 && sj == 0) break;
+                i += si;
+                j += sj;
+                from = to;   // on the line or corner the next patch shares: inside it, bit for bit
             }
             return d;
         }
