@@ -53,3 +53,21 @@ namespace UnityEngine
         public static void BakeMesh(int meshID, bool convex, MeshColliderCookingOptions cookingOptions) { } // SR:Physics.BakeMesh
     }
 }
+
+// The collider's Profiler marker (Runtime/Profiler/ScriptBindings/ProfilerMarker.bindings.cs, 2022.3:
+// a struct; Begin/End are [Conditional("ENABLE_PROFILER")], Auto is not).
+namespace Unity.Profiling
+{
+    // SR:Unity.Profiling.ProfilerMarker
+    public struct ProfilerMarker
+    {
+        public ProfilerMarker(string name) { }                                        // SR:Unity.Profiling.ProfilerMarker-ctor
+        public AutoScope Auto() => default;                                           // SR:Unity.Profiling.ProfilerMarker.Auto
+
+        // SR:Unity.Profiling.ProfilerMarker.AutoScope
+        public struct AutoScope : IDisposable
+        {
+            public void Dispose() { }                                                 // SR:Unity.Profiling.ProfilerMarker.AutoScope.Dispose
+        }
+    }
+}
