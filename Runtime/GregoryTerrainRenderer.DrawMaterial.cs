@@ -3,7 +3,8 @@ using UnityEngine;
 namespace GregoryTerrain
 {
     // Per-renderer shader state. The user's material is never written: keywords this renderer
-    // chooses (GT_VERTEX_CACHE from Vertex evaluation, GT_SNOW from an attached Snow Simulator) go on
+    // chooses (GT_VERTEX_CACHE from Vertex evaluation, GT_SNOW from an attached Snow Simulator,
+    // GT_LOD from the levels, GT_RANGE_ORIGIN with the range origin sent) go on
     // a runtime copy of it, and buffers and constants on the renderer's MaterialPropertyBlock.
     //
     // Why a copy for keywords and a property block for the rest: a MaterialPropertyBlock (or
@@ -49,16 +50,15 @@ namespace GregoryTerrain
         internal Material DrawMaterial => _drawMaterial != null ? _drawMaterial : material;
 
         /// <summary>
-        /// Picks the asset or the copy for the wanted <c>GT_VERTEX_CACHE</c> and <c>GT_SNOW</c>
-        /// states. The copy is made once and synced (properties, keywords, shader) only when the
-        /// asset changed, so a steady frame costs one CRC of the asset (for its first camera; the
-        /// others reuse that frame's comparison) and sets nothing.
+        /// Picks the asset or the copy for the wanted <c>GT_VERTEX_CACHE</c>, <c>GT_SNOW</c>,
+        /// <c>GT_LOD</c> and <c>GT_RANGE_ORIGIN</c> states. The copy is made once and synced
+        /// (properties, keywords, shader) only when the asset changed, so a steady frame costs one CRC
+        /// of the asset (for its first camera; the others reuse that frame's comparison) and sets nothing.
         /// </summary>
-        internal Material UpdateDrawMaterial(bool cache, bool snow, bool levels = false)
+        internal Material UpdateDrawMaterial(bool cache, bool snow, bool levels = false, bool rangeOrigin = false)
         {
             if (material == null) { ReleaseDrawMaterial(); return null; }
-            if (material.IsKeywordEnabled(ShaderIds.VertexCacheKeyword) == cache && material.IsKeywordEnabled(ShaderIds.SnowKeyword) == snow
-                && material.IsKeywordEnabled(ShaderIds.LevelsKeyword) == levels)
+            if (HasKeywords(material, cache, snow, levels, rangeOrigin))
             {
                 ReleaseDrawMaterial();
                 return material;
@@ -69,7 +69,7 @@ namespace GregoryTerrain
             // does not advance between the editor's repaints as it does between player frames.
             int frame = Application.isPlaying ? Time.frameCount : -1;
             if (frame >= 0 && _drawMaterial != null && _drawMaterialSource == material && _drawMaterialCheckedFrame == frame
-                && _drawMaterial.IsKeywordEnabled(ShaderIds.VertexCacheKeyword) == cache && _drawMaterial.IsKeywordEnabled(ShaderIds.SnowKeyword) == snow)
+                && HasKeywords(_drawMaterial, cache, snow, levels, rangeOrigin))
                 return _drawMaterial;
             _drawMaterialCheckedFrame = frame;
             int crc = material.ComputeCRC(), keywords = AssetKeywordBits();
@@ -83,8 +83,7 @@ namespace GregoryTerrain
                 _drawMaterial.CopyPropertiesFromMaterial(material);
                 _drawMaterial.shaderKeywords = material.shaderKeywords;   // the asset's keywords, whatever the copy above took
             }
-            else if (_drawMaterial.IsKeywordEnabled(ShaderIds.VertexCacheKeyword) == cache && _drawMaterial.IsKeywordEnabled(ShaderIds.SnowKeyword) == snow
-                     && _drawMaterial.IsKeywordEnabled(ShaderIds.LevelsKeyword) == levels)
+            else if (HasKeywords(_drawMaterial, cache, snow, levels, rangeOrigin))
                 return _drawMaterial;   // steady state: nothing set
             _drawMaterialSource = material;
             _drawMaterialCrc = crc;
@@ -92,8 +91,13 @@ namespace GregoryTerrain
             SetKeyword(_drawMaterial, ShaderIds.VertexCacheKeyword, cache);
             SetKeyword(_drawMaterial, ShaderIds.SnowKeyword, snow);
             SetKeyword(_drawMaterial, ShaderIds.LevelsKeyword, levels);
+            SetKeyword(_drawMaterial, ShaderIds.RangeOriginKeyword, rangeOrigin);
             return _drawMaterial;
         }
+
+        static bool HasKeywords(Material m, bool cache, bool snow, bool levels, bool rangeOrigin) =>
+            m.IsKeywordEnabled(ShaderIds.VertexCacheKeyword) == cache && m.IsKeywordEnabled(ShaderIds.SnowKeyword) == snow
+            && m.IsKeywordEnabled(ShaderIds.LevelsKeyword) == levels && m.IsKeywordEnabled(ShaderIds.RangeOriginKeyword) == rangeOrigin;
 
         static void SetKeyword(Material copy, string keyword, bool on)
         {

@@ -475,7 +475,10 @@ namespace GregoryTerrain
             if (_settingsError != null) return false;   // logged once; drawn again after the next valid change
             if (!UpdateVertexCache(fallback)) return false;
             UpdateSnowBinding();
-            return UpdateDrawMaterial(_usesCache, SnowOn(), LevelsOn(fallback)) != null;
+            // The range-origin keyword from the very _RangeOrigin just sent (_params): the stages
+            // without it compile no origin code and would draw a set origin as 0.
+            bool levels = LevelsOn(fallback);
+            return UpdateDrawMaterial(_usesCache, SnowOn(), levels, RelativeSurface.NeedsRangeOriginKeyword(_params.rangeOrigin, levels)) != null;
         }
 
         /// <summary>

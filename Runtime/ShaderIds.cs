@@ -68,6 +68,8 @@ namespace GregoryTerrain
         public const string NoiseKeyword = "GT_NOISE", HeightColorKeyword = "GT_HEIGHT_COLOR";
         /// <summary>Keywords the renderer sets on its runtime copy of the material (multi_compile_local).</summary>
         public const string VertexCacheKeyword = "GT_VERTEX_CACHE", SnowKeyword = "GT_SNOW", LevelsKeyword = "GT_LOD";
+        /// <summary>The range-origin (deep zoom) code of the tessellated passes, set with <c>_RangeOrigin</c> (RelativeSurface.NeedsRangeOriginKeyword).</summary>
+        public const string RangeOriginKeyword = "GT_RANGE_ORIGIN";
         /// <summary>The material's debug view (KeywordEnum GT_DEBUG; None has no keyword of its own).</summary>
         public const string DebugNormalsKeyword = "GT_DEBUG_NORMALS", DebugPatchIdKeyword = "GT_DEBUG_PATCH_ID",
             DebugTessFactorKeyword = "GT_DEBUG_TESS_FACTOR";

@@ -24,9 +24,11 @@
 // shader_feature_local except GT_SNOW, which SnowSimulator switches at run time, and GT_VERTEX_CACHE,
 // which GregoryTerrainRenderer switches (Vertex evaluation = Compute cache: the domain stage reads the
 // vertices TerrainCache.compute evaluated): both are multi_compile_local, so a player build keeps both
-// variants even when no saved material has them on. GT_VERTEX_CACHE only in the tessellated passes
-// (the fallback has no hull/domain stage to feed). Depth, shadow and editor passes declare only
-// GT_NOISE, GT_SNOW (and GT_VERTEX_CACHE), the ones that change the shape or where it comes from.
+// variants even when no saved material has them on; so are GT_LOD and GT_RANGE_ORIGIN, one set
+// (the renderer's levels, and its range origin: the deep-zoom code, compiled in only while an origin
+// is sent; the levels compile it too). GT_VERTEX_CACHE and that set only in the tessellated passes
+// (the fallback has no hull/domain stage to feed, and keeps the origin's run-time branch). Depth, shadow and editor passes declare only
+// GT_NOISE, GT_SNOW (and GT_VERTEX_CACHE, GT_RANGE_ORIGIN, GT_LOD), the ones that change the shape or where it comes from.
 // The pipelines' own keywords are multi_compile, only where a pass reads them (the adapters say what
 // each one changes). Each pass defines one GT_PASS_* (and GT_FALLBACK without a tessellator) before
 // its adapter; `frag` writes what that pass needs (TerrainStages.hlsl). Checked off Unity by
@@ -93,7 +95,7 @@ Shader "GregoryTerrain/Terrain"
             // Effects: off = not compiled into the build at all (shader_feature: unused variants are stripped).
             #pragma shader_feature_local GT_NOISE
             #pragma multi_compile_local _ GT_SNOW
-            #pragma multi_compile_local _ GT_LOD
+            #pragma multi_compile_local _ GT_RANGE_ORIGIN GT_LOD
             // Vertex evaluation (renderer setting): the compute pre-pass's cached vertices, switched at run time.
             #pragma multi_compile_local _ GT_VERTEX_CACHE
             #pragma shader_feature_local GT_HEIGHT_COLOR
@@ -131,7 +133,7 @@ Shader "GregoryTerrain/Terrain"
             #pragma fragment frag
             #pragma shader_feature_local GT_NOISE
             #pragma multi_compile_local _ GT_SNOW
-            #pragma multi_compile_local _ GT_LOD
+            #pragma multi_compile_local _ GT_RANGE_ORIGIN GT_LOD
             // Vertex evaluation (renderer setting): the compute pre-pass's cached vertices, switched at run time.
             #pragma multi_compile_local _ GT_VERTEX_CACHE
             // Spot and point lights: the bias direction per vertex from _LightPosition (URP's keyword).
@@ -163,7 +165,7 @@ Shader "GregoryTerrain/Terrain"
             #pragma fragment frag
             #pragma shader_feature_local GT_NOISE
             #pragma multi_compile_local _ GT_SNOW
-            #pragma multi_compile_local _ GT_LOD
+            #pragma multi_compile_local _ GT_RANGE_ORIGIN GT_LOD
             // Vertex evaluation (renderer setting): the compute pre-pass's cached vertices, switched at run time.
             #pragma multi_compile_local _ GT_VERTEX_CACHE
             #define GT_PASS_DEPTH 1
@@ -191,7 +193,7 @@ Shader "GregoryTerrain/Terrain"
             #pragma fragment frag
             #pragma shader_feature_local GT_NOISE
             #pragma multi_compile_local _ GT_SNOW
-            #pragma multi_compile_local _ GT_LOD
+            #pragma multi_compile_local _ GT_RANGE_ORIGIN GT_LOD
             // Vertex evaluation (renderer setting): the compute pre-pass's cached vertices, switched at run time.
             #pragma multi_compile_local _ GT_VERTEX_CACHE
             // URP's normal packing for the deferred renderer's accurate G-buffer normals.
@@ -221,7 +223,7 @@ Shader "GregoryTerrain/Terrain"
             #pragma fragment frag
             #pragma shader_feature_local GT_NOISE
             #pragma multi_compile_local _ GT_SNOW
-            #pragma multi_compile_local _ GT_LOD
+            #pragma multi_compile_local _ GT_RANGE_ORIGIN GT_LOD
             // Vertex evaluation (renderer setting): the compute pre-pass's cached vertices, switched at run time.
             #pragma multi_compile_local _ GT_VERTEX_CACHE
             // Editor only: compiled when the Scene view first needs it, not ahead (as Unity's own passes).
@@ -251,7 +253,7 @@ Shader "GregoryTerrain/Terrain"
             #pragma fragment frag
             #pragma shader_feature_local GT_NOISE
             #pragma multi_compile_local _ GT_SNOW
-            #pragma multi_compile_local _ GT_LOD
+            #pragma multi_compile_local _ GT_RANGE_ORIGIN GT_LOD
             // Vertex evaluation (renderer setting): the compute pre-pass's cached vertices, switched at run time.
             #pragma multi_compile_local _ GT_VERTEX_CACHE
             // Editor only: compiled when the Scene view first needs it, not ahead (as Unity's own passes).
@@ -457,7 +459,7 @@ Shader "GregoryTerrain/Terrain"
             #pragma fragment frag
             #pragma shader_feature_local GT_NOISE
             #pragma multi_compile_local _ GT_SNOW
-            #pragma multi_compile_local _ GT_LOD
+            #pragma multi_compile_local _ GT_RANGE_ORIGIN GT_LOD
             // Vertex evaluation (renderer setting): the compute pre-pass's cached vertices, switched at run time.
             #pragma multi_compile_local _ GT_VERTEX_CACHE
             // Editor only: compiled when the Scene view first needs it, not ahead (as Unity's own passes).
@@ -487,7 +489,7 @@ Shader "GregoryTerrain/Terrain"
             #pragma fragment frag
             #pragma shader_feature_local GT_NOISE
             #pragma multi_compile_local _ GT_SNOW
-            #pragma multi_compile_local _ GT_LOD
+            #pragma multi_compile_local _ GT_RANGE_ORIGIN GT_LOD
             // Vertex evaluation (renderer setting): the compute pre-pass's cached vertices, switched at run time.
             #pragma multi_compile_local _ GT_VERTEX_CACHE
             // Editor only: compiled when the Scene view first needs it, not ahead (as Unity's own passes).
@@ -526,7 +528,7 @@ Shader "GregoryTerrain/Terrain"
             #pragma fragment frag
             #pragma shader_feature_local GT_NOISE
             #pragma multi_compile_local _ GT_SNOW
-            #pragma multi_compile_local _ GT_LOD
+            #pragma multi_compile_local _ GT_RANGE_ORIGIN GT_LOD
             // Vertex evaluation (renderer setting): the compute pre-pass's cached vertices, switched at run time.
             #pragma multi_compile_local _ GT_VERTEX_CACHE
             // MSAA: HDRP also binds the depth as a colour target (its keyword).
@@ -566,7 +568,7 @@ Shader "GregoryTerrain/Terrain"
             // Effects: off = not compiled into the build at all (shader_feature: unused variants are stripped).
             #pragma shader_feature_local GT_NOISE
             #pragma multi_compile_local _ GT_SNOW
-            #pragma multi_compile_local _ GT_LOD
+            #pragma multi_compile_local _ GT_RANGE_ORIGIN GT_LOD
             // Vertex evaluation (renderer setting): the compute pre-pass's cached vertices, switched at run time.
             #pragma multi_compile_local _ GT_VERTEX_CACHE
             #pragma shader_feature_local GT_HEIGHT_COLOR
@@ -599,7 +601,7 @@ Shader "GregoryTerrain/Terrain"
             #pragma fragment frag
             #pragma shader_feature_local GT_NOISE
             #pragma multi_compile_local _ GT_SNOW
-            #pragma multi_compile_local _ GT_LOD
+            #pragma multi_compile_local _ GT_RANGE_ORIGIN GT_LOD
             // Vertex evaluation (renderer setting): the compute pre-pass's cached vertices, switched at run time.
             #pragma multi_compile_local _ GT_VERTEX_CACHE
             #define GT_PASS_SHADOWCASTER 1
@@ -787,7 +789,7 @@ Shader "GregoryTerrain/Terrain"
             // Effects: off = not compiled into the build at all (shader_feature: unused variants are stripped).
             #pragma shader_feature_local GT_NOISE
             #pragma multi_compile_local _ GT_SNOW
-            #pragma multi_compile_local _ GT_LOD
+            #pragma multi_compile_local _ GT_RANGE_ORIGIN GT_LOD
             // Vertex evaluation (renderer setting): the compute pre-pass's cached vertices, switched at run time.
             #pragma multi_compile_local _ GT_VERTEX_CACHE
             #pragma shader_feature_local GT_HEIGHT_COLOR
@@ -820,7 +822,7 @@ Shader "GregoryTerrain/Terrain"
             #pragma fragment frag
             #pragma shader_feature_local GT_NOISE
             #pragma multi_compile_local _ GT_SNOW
-            #pragma multi_compile_local _ GT_LOD
+            #pragma multi_compile_local _ GT_RANGE_ORIGIN GT_LOD
             // Vertex evaluation (renderer setting): the compute pre-pass's cached vertices, switched at run time.
             #pragma multi_compile_local _ GT_VERTEX_CACHE
             #define GT_PASS_SHADOWCASTER 1

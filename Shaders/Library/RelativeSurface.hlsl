@@ -58,15 +58,18 @@ uint FindPatchPrecise(TerrainPoint q)
 }
 
 // The tile path's lookup: FindPatchPrecise while q has a hi part (a range origin is set: every
-// point of the frame has the origin's, so the branch is uniform), else FindPatch on the plain float
+// point of the frame has the origin's, so the branch is uniform; compiled with GT_RANGE_ORIGIN_CODE
+// only, TerrainInputs.hlsl), else FindPatch on the plain float
 // point. Without an origin q is one float: a point within a float step of a line is one rounding
 // from either patch, whose surfaces meet there, so the correction buys nothing visible and cost a
 // fifth of the domain stage (performance.md, "Where the domain stage's time goes").
 uint FindPatchAt(TerrainPoint q)
 {
     uint patch = FindPatch(TerrainPointApprox(q));
+#if defined(GT_RANGE_ORIGIN_CODE)
     [branch] if (any(q.originHi != 0.0))
         patch = FindPatchCorrect(q, patch);
+#endif
     return patch;
 }
 

@@ -16,6 +16,16 @@
 #error "Include a pipeline adapter (Shaders/Pipelines/*Adapter.hlsl) before TerrainInputs.hlsl"
 #endif
 
+// The range origin's code (deep zoom: relative output, precise lookup and noise differences) is
+// compiled only where an origin can be set: the renderer's GT_RANGE_ORIGIN, set exactly while it
+// sends one (RelativeSurface.NeedsRangeOriginKeyword); the levels (GT_LOD), whose origin follows the
+// feet; the vertex cache's kernels and the passes without a tessellator (GT_FALLBACK), which keep
+// one variant and a run-time branch. Elsewhere the layout's origin is the constant 0
+// (FrameTileLayout), so not even an untaken branch is left: the driver kept registers for it.
+#if defined(GT_RANGE_ORIGIN) || defined(GT_LOD) || defined(GT_VERTEX_CACHE) || defined(GT_FALLBACK)
+    #define GT_RANGE_ORIGIN_CODE 1
+#endif
+
 #include "TileLattice.hlsl"
 #if defined(GT_LOD)
     #include "LodTiles.hlsl"
@@ -104,7 +114,16 @@ uint TileCountInt() { return (uint)_Tess.x; }
 // The frame's tile layout (TileLattice.hlsl): _Range, _TileLattice, _RangeOrigin and M. Stage entry
 // points read it and pass it down; the library functions take a layout, so a level of detail can
 // pass its own.
-TileLayout FrameTileLayout() { return MakeTileLayout(_Range, _TileLattice, _RangeOrigin, TileCount()); }
+// The origin as the stages read it: _RangeOrigin, or the constant 0 without GT_RANGE_ORIGIN_CODE.
+float4 FrameRangeOrigin()
+{
+#if defined(GT_RANGE_ORIGIN_CODE)
+    return _RangeOrigin;
+#else
+    return float4(0.0, 0.0, 0.0, 0.0);
+#endif
+}
+TileLayout FrameTileLayout() { return MakeTileLayout(_Range, _TileLattice, FrameRangeOrigin(), TileCount()); }
 #if defined(GT_LOD)
 uint LodLevelCount() { return (uint)_LodLevels.x; }
 // Level k's range relative to the origin (k clamped into the array: an out-of-range read would be
@@ -112,7 +131,7 @@ uint LodLevelCount() { return (uint)_LodLevels.x; }
 float4 LodRange(uint level) { return _Ranges[min(level, (uint)GT_MAX_LOD_LEVELS - 1u)]; }
 // Level k's tiles: M x M laid on its range (no anchoring: the range itself is snapped to the
 // coarser level's cells), the frame's origin.
-TileLayout LodLevelLayout(uint level) { return MakeTileLayout(LodRange(level), float4(0.0, 0.0, 0.0, 0.0), _RangeOrigin, TileCount()); }
+TileLayout LodLevelLayout(uint level) { return MakeTileLayout(LodRange(level), float4(0.0, 0.0, 0.0, 0.0), FrameRangeOrigin(), TileCount()); }
 #endif
 // Whether the frame's tiles are anchored to the terrain (TileLattice.hlsl): a nonzero lattice.
 bool TilesAnchored() { return IsAnchored(_TileLattice); }

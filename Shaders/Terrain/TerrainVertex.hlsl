@@ -128,13 +128,11 @@ TerrainSurfacePoint EvaluateCellSurface(TileLayout l, uint slot, float2 tess)
 // renderer then adds S(O) in the object-to-world transform.
 float3 OutputSurfacePosition(TileLayout l, TerrainSurfacePoint s)
 {
-#if defined(GT_EXTEND_DRAW_PATCHES)
-    return s.position;
-#else
+#if !defined(GT_EXTEND_DRAW_PATCHES) && defined(GT_RANGE_ORIGIN_CODE)
     [branch] if (RelativeSurfaceIsActive(l.origin))
         return RelativeSurfaceFromOrigin(s.q, l.origin);
-    return s.position;
 #endif
+    return s.position;
 }
 
 // A terrain vertex before the camera: what the domain stage computes per vertex, and what the
@@ -189,11 +187,12 @@ TerrainVertexAttributes FinishTerrainVertex(TileLayout l, TerrainSurfacePoint s)
     float octaves = VertexOctaveCount(l, s);
     float2 gradient;   // d(noise)/dq
 #endif
-#if !defined(GT_EXTEND_DRAW_PATCHES)
+#if !defined(GT_EXTEND_DRAW_PATCHES) && defined(GT_RANGE_ORIGIN_CODE)
     // Deep zoom (a range origin set): S(q) - S(O) and p(q) - p(O) from precise differences, which
-    // the renderer adds back (OutputSurfacePosition's rule). One branch for the surface and the
-    // noise: with two, the untaken deep-zoom code cost the plain path measurably more
-    // (performance.md, "Where the domain stage's time goes").
+    // the renderer adds back (OutputSurfacePosition's rule). Compiled only with the origin's
+    // keywords (GT_RANGE_ORIGIN_CODE, TerrainInputs.hlsl): even untaken, this branch cost the plain
+    // path measurably (performance.md, "Where the domain stage's time goes"). One branch for the
+    // surface and the noise: two cost more still.
     [branch] if (RelativeSurfaceIsActive(l.origin))
     {
         position = RelativeSurfaceFromOrigin(s.q, l.origin);

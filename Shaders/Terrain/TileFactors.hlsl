@@ -43,7 +43,7 @@ float3 CellCornerObjectPosition(TileLayout l, uint drawPatch, uint corner)
 float TileNoiseMargin(TileLayout l, uint slot)
 {
 #if defined(GT_NOISE)
-    #if !defined(GT_EXTEND_DRAW_PATCHES)
+    #if !defined(GT_EXTEND_DRAW_PATCHES) && defined(GT_RANGE_ORIGIN_CODE)
     [branch] if (RelativeSurfaceIsActive(l.origin))
     {
         TerrainPoint origin = MakeTerrainPoint(l.origin.xy, l.origin.zw);

@@ -13,6 +13,26 @@ namespace GregoryTerrain.Tests
         static PatchGrid _grid;
         static PatchGrid Grid => _grid ??= HardCaseGrids.Fitted();
 
+        // The renderer's keyword rule (GT_RANGE_ORIGIN, issue 26): on exactly while the origin it sends
+        // is set, so the stages that compile no origin code never see one; under the levels off (GT_LOD
+        // compiles that code, one keyword set). A wide range sends 0, a deep one a snapped origin.
+        [Test]
+        public void TheRangeOriginKeywordIsOnExactlyWhileAnOriginIsSent()
+        {
+            foreach (double w in new[] { 1.0, 0.1, 2 * RangeOrigin.DeepWidth, RangeOrigin.DeepWidth, 0.5 * RangeOrigin.DeepWidth, 1e-6, 1e-9 })
+                foreach (double c in new[] { 0.0, 0.3 * (1.0 - w), 1.0 - w })
+                {
+                    var range = new TerrainRange(c, c, c + w, c + w);
+                    RangeOrigin o = RangeOrigin.For(range);
+                    RangeMapping.EncodeRange(range, o, out Float4 rangeF, out Float4 originF);
+                    bool deep = w < RangeOrigin.DeepWidth && !(o.Equals(RangeOrigin.zero));
+                    Assert.That(RelativeSurface.NeedsRangeOriginKeyword(originF, false), Is.EqualTo(RelativeSurface.IsActive(originF)), $"w {w} c {c}");
+                    Assert.That(RelativeSurface.NeedsRangeOriginKeyword(originF, false), Is.EqualTo(deep), $"w {w} c {c}: keyword on for a deep range only");
+                    Assert.That(RelativeSurface.NeedsRangeOriginKeyword(originF, true), Is.False, $"w {w} c {c}: the levels' GT_LOD instead");
+                }
+            Assert.That(RelativeSurface.NeedsRangeOriginKeyword(new Float4(0f, 0f, 1e-30f, 0f), false), Is.True, "a lo part alone is an origin");
+        }
+
         [Test]
         public void BernsteinDifferenceMatchesTheDefinitionInDouble()
         {

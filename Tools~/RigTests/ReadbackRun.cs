@@ -82,11 +82,31 @@ namespace GregoryTerrain.Rig.Tests
             return PatchGridJson.Read(File.ReadAllText(path));
         }
 
-        /// <summary>Compiles the named shader variants into <paramref name="work"/>/spirv and returns that folder.</summary>
+        /// <summary>The variants that have a GT_RANGE_ORIGIN sibling (Tools~/rig/shader_variants.txt).</summary>
+        static readonly string[] OriginSiblings = { "base", "noise+height_color", "readback", "readback+noise", "factor_readback", "factor_readback+noise" };
+
+        /// <summary>
+        /// The variant a draw with range origin <paramref name="rangeOriginF"/> needs, by the renderer's
+        /// rule (RelativeSurface.NeedsRangeOriginKeyword): <paramref name="variant"/>, or its
+        /// GT_RANGE_ORIGIN sibling while an origin is set; without that keyword the stages compile no
+        /// origin code and would draw the origin as 0. Levels and cache variants compile it already.
+        /// </summary>
+        public static string ForOrigin(string variant, Float4 rangeOriginF)
+        {
+            if (!RelativeSurface.NeedsRangeOriginKeyword(rangeOriginF, false) || variant.Contains("lod") || variant.Contains("vertex_cache")) return variant;
+            Assert.That(OriginSiblings, Does.Contain(variant), variant + " has no GT_RANGE_ORIGIN variant in shader_variants.txt");
+            return variant == "base" ? "range_origin" : variant + "+range_origin";
+        }
+
+        /// <summary>
+        /// Compiles the named shader variants, and their GT_RANGE_ORIGIN siblings (<see cref="ForOrigin"/>),
+        /// into <paramref name="work"/>/spirv and returns that folder.
+        /// </summary>
         public static string CompileVariants(string work, params string[] variants)
         {
             var args = new List<string> { Path.Combine(HarnessRun.PackageRoot(), "Tools~", "gt"), "shaders" };
-            foreach (string v in variants) { args.Add("--only"); args.Add(v); }
+            foreach (string v in variants.Concat(variants.Where(v => OriginSiblings.Contains(v)).Select(v => v == "base" ? "range_origin" : v + "+range_origin")))
+            { args.Add("--only"); args.Add(v); }
             Exec("bash", args.ToArray(), new Dictionary<string, string> { ["GT_BUILD_DIR"] = work });
             return Path.Combine(work, "spirv");
         }
@@ -253,7 +273,7 @@ namespace GregoryTerrain.Rig.Tests
             var run = new ReadbackRun { Grid = grid, Inputs = inputs, Noise = noise, Tiles = tiles, Factor = factor,
                                         Keywords = noise.HasValue ? TerrainKeywords.Noise : TerrainKeywords.None };
             string readback = Path.Combine(dir, "readback.f32");
-            var args = new List<string>(Stages(spirv, noise.HasValue ? "readback+noise" : "readback"));
+            var args = new List<string>(Stages(spirv, ForOrigin(noise.HasValue ? "readback+noise" : "readback", p.rangeOrigin)));
             args.AddRange(new[] { "--buffers", dir, "--patches", (tiles * tiles).ToString(), "--width", "64", "--height", "64",
                                   "--device", "llvmpipe", "--stats", "--readback", readback, "--readback-floats", (12 * run.VertexCount).ToString() });
             args.AddRange(extra);

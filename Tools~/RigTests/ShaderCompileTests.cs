@@ -71,11 +71,15 @@ namespace GregoryTerrain.Rig.Tests
             // effect/mode keywords, each debug view alone, the factor readback with and without
             // noise (gt bench), the six snow variants, the six vertex-cache variants and the seven
             // levels-of-detail ones (GT_LOD: alone, with the effects, the two readbacks, and with snow
-            // and with the cache, which Unity compiles though the renderer never draws them).
-            Assert.That(variants.Count, Is.EqualTo(16 + 3 + 2 + 6 + 6 + 7));
+            // and with the cache, which Unity compiles though the renderer never draws them), and the
+            // eight range-origin ones (GT_RANGE_ORIGIN: alone, the fair variant, the four readbacks the
+            // deep-zoom tests draw, with snow and with the cache).
+            Assert.That(variants.Count, Is.EqualTo(16 + 3 + 2 + 6 + 6 + 7 + 8));
             Assert.That(variants.Count(v => v.keywords.Contains("GT_LOD")), Is.EqualTo(7));
-            Assert.That(variants.Count(v => v.keywords.Contains("GT_SNOW")), Is.EqualTo(8));
-            Assert.That(variants.Count(v => v.keywords.Contains("GT_VERTEX_CACHE")), Is.EqualTo(7));
+            Assert.That(variants.Count(v => v.keywords.Contains("GT_RANGE_ORIGIN")), Is.EqualTo(8));
+            Assert.That(variants.Count(v => v.keywords.Contains("GT_RANGE_ORIGIN") && v.keywords.Contains("GT_LOD")), Is.EqualTo(0), "one multi_compile set");
+            Assert.That(variants.Count(v => v.keywords.Contains("GT_SNOW")), Is.EqualTo(9));
+            Assert.That(variants.Count(v => v.keywords.Contains("GT_VERTEX_CACHE")), Is.EqualTo(8));
             var counts = Regex.Match(output, @"variants: (\d+), stages: (\d+) \(\+(\d+) with GT_VERTEX_CACHE\), compiled: (\d+), passed: (\d+), failed: (\d+)");
             Assert.That(counts.Success, Is.True, "no counts line");
             int total = variants.Sum(v => StagesOf(v.keywords).Length);
@@ -100,6 +104,11 @@ namespace GregoryTerrain.Rig.Tests
         [TestCase("snow", "fallback")]
         [TestCase("snow", "frag")]           // the blend by depth
         [TestCase("snow", "tesc")]           // the tile bounds grow by the depth cap
+        // The range origin (deep zoom): without GT_RANGE_ORIGIN the tessellated stages compile none
+        // of its code, not even an untaken branch (the driver kept registers for it).
+        [TestCase("range_origin", "vert")]
+        [TestCase("range_origin", "tesc")]
+        [TestCase("range_origin", "tese")]
         public void AnEffectThatIsOffHasFewerInstructions(string effect, string stage)
         {
             int off = InstructionCount("base", stage);
@@ -114,9 +123,19 @@ namespace GregoryTerrain.Rig.Tests
         [TestCase("height_color", "vert")]
         [TestCase("height_color", "tesc")]
         [TestCase("readback", "frag")]
+        [TestCase("range_origin", "frag")]
+        [TestCase("range_origin", "fallback")]   // GT_FALLBACK keeps the origin's run-time branch in every variant
         public void AnEffectAddsNothingToStagesThatDoNotUseIt(string effect, string stage)
         {
             Assert.That(InstructionCount(effect, stage), Is.EqualTo(InstructionCount("base", stage)));
+        }
+
+        // The fair variant (noise + height colour) drops the origin's code the same way.
+        [Test]
+        public void TheRangeOriginsCodeIsInTheFairVariantOnlyWithItsKeyword()
+        {
+            Assert.That(InstructionCount("noise+height_color", "tese"), Is.LessThan(InstructionCount("noise+height_color+range_origin", "tese")));
+            Assert.That(InstructionCount("noise+height_color", "tesc"), Is.LessThan(InstructionCount("noise+height_color+range_origin", "tesc")));
         }
 
         // The rig-only readback buffer exists only in the GT_READBACK variants (vertices: domain and

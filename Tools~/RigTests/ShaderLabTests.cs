@@ -18,7 +18,7 @@ namespace GregoryTerrain.Rig.Tests
     public class ShaderLabTests
     {
         const string PackageName = "com.gregoryterrain.tessellation";
-        static readonly string[] RuntimeToggledKeywords = { "GT_SNOW", "GT_VERTEX_CACHE", "GT_LOD" };
+        static readonly string[] RuntimeToggledKeywords = { "GT_SNOW", "GT_VERTEX_CACHE", "GT_LOD", "GT_RANGE_ORIGIN" };
         /// <summary>The renderer's Vertex evaluation switch: declared by the tessellated passes only.</summary>
         const string VertexCacheKeyword = "GT_VERTEX_CACHE";
         static readonly string[] ForwardModes = { "UniversalForwardOnly", "ForwardOnly", "ForwardBase" };
@@ -127,7 +127,7 @@ namespace GregoryTerrain.Rig.Tests
             // GT_VERTEX_CACHE (the renderer's) likewise, once the rig's cache variants are listed.
             var shipped = new HashSet<string>(listed.Except(RigKeywords.RigOnly)) { "GT_SNOW", VertexCacheKeyword };
             Assert.That(listed, Does.Contain("GT_PAPER_MODE").And.Contain("GT_READBACK"), "rig-only keywords are in the list");
-            Assert.That(shipped, Is.EquivalentTo(new[] { "GT_NOISE", "GT_HEIGHT_COLOR", "GT_SNOW", VertexCacheKeyword, "GT_DEBUG_NORMALS", "GT_DEBUG_PATCH_ID", "GT_DEBUG_TESS_FACTOR", "GT_LOD" }));
+            Assert.That(shipped, Is.EquivalentTo(new[] { "GT_NOISE", "GT_HEIGHT_COLOR", "GT_SNOW", VertexCacheKeyword, "GT_DEBUG_NORMALS", "GT_DEBUG_PATCH_ID", "GT_DEBUG_TESS_FACTOR", "GT_LOD", "GT_RANGE_ORIGIN" }));
 
             var all = new HashSet<string>(_subShaders.SelectMany(s => s.Passes).SelectMany(p => p.Keywords));
             Assert.That(all, Is.EquivalentTo(shipped), "keywords declared anywhere in the .shader");
@@ -149,15 +149,20 @@ namespace GregoryTerrain.Rig.Tests
                         Assert.That(a[0], Is.EqualTo("multi_compile_local"), where);
                         Assert.That(a.Skip(1).Where(k => k != "_"), Is.SubsetOf(RuntimeToggledKeywords), where + ": only run-time keywords in multi_compile_local");
                     }
-                    // The vertex cache and the levels (GT_LOD) feed the hull and domain stages: a fallback pass has neither.
-                    var forPass = s.Tessellated ? shipped : new HashSet<string>(shipped.Except(new[] { VertexCacheKeyword, "GT_LOD" }));
+                    // The vertex cache, the levels (GT_LOD) and the range origin's variant feed the hull and domain
+                    // stages: a fallback pass has none of them (it keeps the origin's run-time branch, GT_FALLBACK).
+                    var forPass = s.Tessellated ? shipped : new HashSet<string>(shipped.Except(new[] { VertexCacheKeyword, "GT_LOD", "GT_RANGE_ORIGIN" }));
                     if (ForwardModes.Contains(p.LightMode))
                         Assert.That(p.Keywords, Is.EquivalentTo(forPass), where);
                     else
                         // Depth and shadow passes: only what changes the shape (or where it comes from).
-                        Assert.That(p.Keywords, Is.EquivalentTo(s.Tessellated ? new[] { "GT_NOISE", "GT_SNOW", VertexCacheKeyword, "GT_LOD" } : new[] { "GT_NOISE", "GT_SNOW" }), where);
+                        Assert.That(p.Keywords, Is.EquivalentTo(s.Tessellated ? new[] { "GT_NOISE", "GT_SNOW", VertexCacheKeyword, "GT_LOD", "GT_RANGE_ORIGIN" } : new[] { "GT_NOISE", "GT_SNOW" }), where);
                     Assert.That(p.Pragmas.Count(a => a.SequenceEqual(new[] { "multi_compile_local", "_", VertexCacheKeyword })), Is.EqualTo(s.Tessellated ? 1 : 0),
                         where + ": GT_VERTEX_CACHE as its own multi_compile_local set, in tessellated passes only");
+                    // The range origin's code with the levels' in one set: the levels always compile it, so the
+                    // two never need to be on together, and a third variant instead of a fourth.
+                    Assert.That(p.Pragmas.Count(a => a.SequenceEqual(new[] { "multi_compile_local", "_", "GT_RANGE_ORIGIN", "GT_LOD" })), Is.EqualTo(s.Tessellated ? 1 : 0),
+                        where + ": GT_RANGE_ORIGIN and GT_LOD as one multi_compile_local set, in tessellated passes only");
                     foreach (string rigOnly in RigKeywords.RigOnly)
                         Assert.That(Regex.IsMatch(p.Program, @"\b" + rigOnly + @"\b"), Is.False, where + ": mentions " + rigOnly);
                 }

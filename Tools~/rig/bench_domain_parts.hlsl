@@ -7,8 +7,8 @@
 // (GT_NOISE GT_HEIGHT_COLOR), entry point domain_part, one SPIR-V per part (bench_parts.txt).
 // A knocked-out piece is replaced by the cheapest stand-in that keeps the rest of the work alive
 // (what the driver cannot prove dead); the pictures are wrong on purpose: these are timings only.
-//   PART_FULL         nothing removed but the deep-zoom branch (not taken at origin 0, but compiled
-//                     in: the terrain job minus this one is what that branch costs)
+//   PART_FULL         nothing removed (the deep-zoom code is compiled in only with GT_RANGE_ORIGIN,
+//                     so terrain - full is what this rewrite misses; it was that branch's cost)
 //   PART_NO_LOOKUP    FindPatchAt (FindPatch's guess, its binary searches as the fallback) -> the
 //                     patch of a uniform grid, by multiply
 //   PART_NO_RANGE     tile -> q and q -> (u, v) by plain float (no TwoSum, no tile lattice reads)

@@ -24,9 +24,11 @@ fi
 if [ "$gpu" = 1 ]; then
   # The two readback variants, in their own build folder (gt shaders empties the one it writes).
   spirv="$BUILD_DIR/eval/spirv"
-  if [ ! -f "$spirv/readback/tese.spv" ] || [ ! -f "$spirv/readback+noise/tese.spv" ] \
-     || [ -n "$(find "$PKG_DIR/Shaders" -name '*.hlsl' -newer "$spirv/readback+noise/tese.spv")" ]; then
+  # With their range-origin variants (GT_RANGE_ORIGIN): a narrow span draws relative to an origin.
+  if [ ! -f "$spirv/readback/tese.spv" ] || [ ! -f "$spirv/readback+noise+range_origin/tese.spv" ] \
+     || [ -n "$(find "$PKG_DIR/Shaders" -name '*.hlsl' -newer "$spirv/readback+noise+range_origin/tese.spv")" ]; then
     GT_BUILD_DIR="$BUILD_DIR/eval" bash "$RIG_DIR/shaders.sh" --only readback --only readback+noise \
+      --only readback+range_origin --only readback+noise+range_origin \
       >"$BUILD_DIR/eval-shaders.log" 2>&1 || { cat "$BUILD_DIR/eval-shaders.log" >&2; die "compiling the readback shaders failed"; }
   fi
   args+=(--harness "$BUILD_DIR/harness/gt-harness" --spirv "$spirv")

@@ -37,6 +37,9 @@ CACHE_STAGES = [
 ]
 
 
+# Defines a stage gets whatever the variant, as GregoryTerrain.shader's passes have them: the
+# no-tessellator pass defines GT_FALLBACK (it keeps the range origin's run-time branch, TerrainInputs.hlsl).
+STAGE_DEFINES = {"fallback": ["-DGT_FALLBACK"]}
 def stages_of(keywords):
     return STAGES + (CACHE_STAGES if "GT_VERTEX_CACHE" in keywords else [])
 
@@ -143,7 +146,7 @@ def compile_one(out_dir, variant, stage, includes):
 
     cmd = (["glslangValidator", "-D", "-V", "-S", gstage, "-e", entry, "--hlsl-iomap"]
            + REGISTER_SHIFTS + [f"-I{d}" for d in includes]
-           + [f"-D{k}" for k in keywords] + ["-o", spv, ENTRY_FILE])
+           + [f"-D{k}" for k in keywords] + STAGE_DEFINES.get(sname, []) + ["-o", spv, ENTRY_FILE])
     if step("glslang", cmd) and step("spirv-val", ["spirv-val", spv]):
         targets.append("spirv")
         problems.extend(check_bindings(spv, log, keywords))

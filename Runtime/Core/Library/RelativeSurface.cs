@@ -47,6 +47,15 @@ namespace GregoryTerrain
             rangeOriginF.x != 0f || rangeOriginF.y != 0f || rangeOriginF.z != 0f || rangeOriginF.w != 0f;
 
         /// <summary>
+        /// Whether a tessellated draw needs the shaders' <c>GT_RANGE_ORIGIN</c> keyword: exactly while
+        /// the origin is set (<see cref="IsActive"/>), except under the levels, whose <c>GT_LOD</c>
+        /// compiles the same code (the two are one keyword set). Without either keyword the stages
+        /// compile no range-origin code and read the origin as 0, so a set origin would be drawn at
+        /// the wrong place; with it and no origin they take the plain path at run time.
+        /// </summary>
+        public static bool NeedsRangeOriginKeyword(Float4 rangeOriginF, bool levels) => !levels && IsActive(rangeOriginF);
+
+        /// <summary>
         /// The patch that holds the hi/lo point <paramref name="q"/> by the FindPatch rule, decided on the
         /// precise point: FindPatch on the rounded <c>hi + local</c> can be one patch off within a float
         /// step (~6e-8) of a grid line, where u or v would then be slightly outside [0, 1] and get

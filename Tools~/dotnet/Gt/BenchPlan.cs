@@ -412,7 +412,7 @@ namespace GregoryTerrain.Rig
         /// </summary>
         public static readonly (string name, string what)[] DomainParts =
         {
-            ("full", "the deep-zoom branch (compiled in, not taken)"),
+            ("full", "nothing: the rewrite of the stage (the deep-zoom code compiled in only with GT_RANGE_ORIGIN)"),
             ("no_lookup", "patch lookup: FindPatch's binary searches -> a multiply"),
             ("no_range", "range and origin arithmetic: tile -> q -> (u, v) in plain float"),
             ("no_deriv", "Gregory derivatives (position only)"),

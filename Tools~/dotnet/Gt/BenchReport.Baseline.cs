@@ -93,7 +93,7 @@ namespace GregoryTerrain.Rig
         {
             o.AppendLine("## Where the domain stage's time goes");
             o.AppendLine();
-            o.AppendLine("The fair variant's domain stage (noise + height colour, uniform F, range moving) rewritten from the same library functions without its deep-zoom branch (`full`), then with one piece taken out a job (`Tools~/rig/bench_domain_parts.hlsl`, rig only; the pictures of those jobs are wrong on purpose). A piece costs full - that job; the deep-zoom branch costs terrain - full though it is never taken. ns a vertex: per domain invocation.");
+            o.AppendLine("The fair variant's domain stage (noise + height colour, uniform F, range moving) rewritten from the same library functions without its deep-zoom branch (`full`), then with one piece taken out a job (`Tools~/rig/bench_domain_parts.hlsl`, rig only; the pictures of those jobs are wrong on purpose). A piece costs full - that job; terrain - full is what the rewrite misses (up to 38e67eb the never-taken deep-zoom branch, now compiled in only with GT_RANGE_ORIGIN). ns a vertex: per domain invocation.");
             o.AppendLine();
             foreach (var (m, f) in BenchPlan.DomainPartSizes(quick))
             {
