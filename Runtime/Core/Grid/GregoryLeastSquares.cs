@@ -1,6 +1,7 @@
 using System;
 using System.Collections.Generic;
 using System.Numerics;
+using System.Runtime.InteropServices;
 using System.Threading;
 
 namespace GregoryTerrain
@@ -268,50 +269,74 @@ namespace GregoryTerrain
             return rhs;
         }
 
-        /// <summary>y = A p (the data's normal matrix only): per patch, gather 20, multiply by its Gram, scatter.</summary>
+        /// <summary>
+        /// y = A p (the data's normal matrix only): per patch, gather 20, multiply by its Gram,
+        /// scatter. The 20 local unknowns are five runs of consecutive indices (the row's two
+        /// vertices, the next row's two, the bottom edge, the top edge, the left and right edges:
+        /// see <see cref="GregoryNet.LocalUnknowns"/>), so gather and scatter are slices, not an
+        /// index table per patch. Every entry of G p is summed over k in order and the patches are
+        /// scattered in row-major order, whatever the SIMD width.
+        /// </summary>
         void Multiply(double[] p, double[] y)
         {
             Array.Clear(y, 0, y.Length);
-            Span<int> index = stackalloc int[L];
+            Span<double> local = stackalloc double[L];
             Span<double> acc = stackalloc double[Stride];
+            int columns = net.Columns, xClasses = xAxis.Offsets.Count;
+            int[] xClass = xAxis.Class;
             for (int j = 0; j < net.Rows; j++)
-                for (int i = 0; i < net.Columns; i++)
+            {
+                int v0 = net.Vertex(0, j), v1 = net.Vertex(0, j + 1);
+                int eb = net.HorizontalEdge(0, j), et = net.HorizontalEdge(0, j + 1), el = net.VerticalEdge(0, j);
+                int pairRow = yAxis.Class[j] * xClasses;
+                for (int i = 0; i < columns; i++)
                 {
-                    double[] g = GramOf(i, j);
-                    net.LocalUnknowns(i, j, index);
+                    double[] g = ownOf != null && ownOf[j * columns + i] >= 0 ? ownGrams[ownOf[j * columns + i]] : grams[pairRow + xClass[i]];
+                    int a = v0 + 3 * i, b = v1 + 3 * i, c = eb + 2 * i, d = et + 2 * i, e = el + 2 * i;
+                    p.AsSpan(a, 6).CopyTo(local);
+                    p.AsSpan(b, 6).CopyTo(local.Slice(6));
+                    local[12] = p[c]; local[13] = p[c + 1];
+                    local[14] = p[d]; local[15] = p[d + 1];
+                    p.AsSpan(e, 4).CopyTo(local.Slice(16));
                     if (Stride == 5 * Lanes)
                     {
-                        // The common case (4 or 2 lanes): five accumulators the JIT keeps in registers.
-                        // Lane q of the accumulators is entry q of G p, summed over k in order.
+                        // The common case (4 lanes): five accumulators the JIT keeps in registers.
+                        // Lane q of the accumulators is entry q of G p, summed over k in order. The
+                        // Gram read as vectors (a span of them: one bounds check each, not the
+                        // array constructor's) halves the time of A p.
+                        ReadOnlySpan<Vector<double>> gv = MemoryMarshal.Cast<double, Vector<double>>(new ReadOnlySpan<double>(g, 0, L * Stride));
                         Vector<double> a0 = Vector<double>.Zero, a1 = a0, a2 = a0, a3 = a0, a4 = a0;
                         for (int k = 0; k < L; k++)
                         {
-                            var f = new Vector<double>(p[index[k]]);
-                            int c = k * Stride;
-                            a0 += new Vector<double>(g, c) * f;
-                            a1 += new Vector<double>(g, c + Lanes) * f;
-                            a2 += new Vector<double>(g, c + 2 * Lanes) * f;
-                            a3 += new Vector<double>(g, c + 3 * Lanes) * f;
-                            a4 += new Vector<double>(g, c + 4 * Lanes) * f;
+                            var f = new Vector<double>(local[k]);
+                            int o = 5 * k;
+                            a0 += gv[o] * f;
+                            a1 += gv[o + 1] * f;
+                            a2 += gv[o + 2] * f;
+                            a3 += gv[o + 3] * f;
+                            a4 += gv[o + 4] * f;
                         }
-                        for (int q = 0; q < Lanes; q++)
-                        {
-                            acc[q] = a0[q]; acc[Lanes + q] = a1[q]; acc[2 * Lanes + q] = a2[q];
-                            acc[3 * Lanes + q] = a3[q]; acc[4 * Lanes + q] = a4[q];
-                        }
+                        Span<Vector<double>> av = MemoryMarshal.Cast<double, Vector<double>>(acc);
+                        av[0] = a0; av[1] = a1; av[2] = a2; av[3] = a3; av[4] = a4;
                     }
                     else
                     {
                         // Any other width: the same sums, entry by entry, in the same order.
                         for (int q = 0; q < L; q++)
                         {
-                            double s = 0;
-                            for (int k = 0; k < L; k++) s += g[k * Stride + q] * p[index[k]];
-                            acc[q] = s;
+                            double sum = 0;
+                            for (int k = 0; k < L; k++) sum += g[k * Stride + q] * local[k];
+                            acc[q] = sum;
                         }
                     }
-                    for (int q = 0; q < L; q++) y[index[q]] += acc[q];
+                    Span<double> ya = y.AsSpan(a, 6), yb = y.AsSpan(b, 6), ye = y.AsSpan(e, 4);
+                    for (int q = 0; q < 6; q++) ya[q] += acc[q];
+                    for (int q = 0; q < 6; q++) yb[q] += acc[6 + q];
+                    y[c] += acc[12]; y[c + 1] += acc[13];
+                    y[d] += acc[14]; y[d + 1] += acc[15];
+                    for (int q = 0; q < 4; q++) ye[q] += acc[16 + q];
                 }
+            }
         }
 
         // The preconditioner's blocks: a vertex's 3 unknowns and an edge's 2 are strongly coupled (a
@@ -417,6 +442,66 @@ namespace GregoryTerrain
         }
 
         double mu = -1;
+        // CG's vectors, 4 doubles an unknown: kept from one solve to the next (the reweighting
+        // rounds) until ReleaseWorkspace.
+        double[] cgR, cgQ, cgZ, cgP;
+
+        /// <summary>
+        /// Drops CG's vectors (the next <see cref="Solve"/> allocates them again). Called between
+        /// phases so that they are garbage, not live, while the error pass, the baseline and the
+        /// grid allocate (at 256 x 256 patches they are 15 MB).
+        /// </summary>
+        public void ReleaseWorkspace() => cgR = cgQ = cgZ = cgP = null;
+
+        /// <summary>
+        /// One CG update in one sweep over the unknowns, block by block: x += alpha p, r -= alpha q,
+        /// z = B^-1 r (0 on fixed unknowns), and the sums r.r and r.z. One sweep instead of four
+        /// because at 256 x 256 patches each vector is 3.7 MB and the sweeps are bound by memory
+        /// traffic, not arithmetic. The sums run in unknown order, as four separate loops would.
+        /// </summary>
+        void Step(double[] blocks, double alpha, double[] x, double[] p, double[] q, double[] r, double[] z, bool[] fixedMask,
+            out double rr, out double rz)
+        {
+            int vb = net.VerticalBase, n = net.Count;
+            rr = 0;
+            rz = 0;
+            for (int k = 0; k < vb; k += 3)
+            {
+                x[k] += alpha * p[k]; x[k + 1] += alpha * p[k + 1]; x[k + 2] += alpha * p[k + 2];
+                double r0 = r[k] - alpha * q[k], r1 = r[k + 1] - alpha * q[k + 1], r2 = r[k + 2] - alpha * q[k + 2];
+                r[k] = r0; r[k + 1] = r1; r[k + 2] = r2;
+                rr += r0 * r0; rr += r1 * r1; rr += r2 * r2;
+                int at = 3 * k;
+                double z0 = blocks[at] * r0 + blocks[at + 1] * r1 + blocks[at + 2] * r2;
+                double z1 = blocks[at + 3] * r0 + blocks[at + 4] * r1 + blocks[at + 5] * r2;
+                double z2 = blocks[at + 6] * r0 + blocks[at + 7] * r1 + blocks[at + 8] * r2;
+                if (fixedMask != null)
+                {
+                    if (fixedMask[k]) z0 = 0;
+                    if (fixedMask[k + 1]) z1 = 0;
+                    if (fixedMask[k + 2]) z2 = 0;
+                }
+                z[k] = z0; z[k + 1] = z1; z[k + 2] = z2;
+                rz += r0 * z0; rz += r1 * z1; rz += r2 * z2;
+            }
+            for (int k = vb; k < n; k += 2)
+            {
+                x[k] += alpha * p[k]; x[k + 1] += alpha * p[k + 1];
+                double r0 = r[k] - alpha * q[k], r1 = r[k + 1] - alpha * q[k + 1];
+                r[k] = r0; r[k + 1] = r1;
+                rr += r0 * r0; rr += r1 * r1;
+                int at = 3 * vb + 2 * (k - vb);
+                double z0 = blocks[at] * r0 + blocks[at + 1] * r1;
+                double z1 = blocks[at + 2] * r0 + blocks[at + 3] * r1;
+                if (fixedMask != null)
+                {
+                    if (fixedMask[k]) z0 = 0;
+                    if (fixedMask[k + 1]) z1 = 0;
+                }
+                z[k] = z0; z[k + 1] = z1;
+                rz += r0 * z0; rz += r1 * z1;
+            }
+        }
 
         /// <summary>
         /// Solves <c>(A + mu I) x = rhs + mu prior</c> by block-Jacobi-preconditioned CG, starting from
@@ -443,13 +528,14 @@ namespace GregoryTerrain
             }
             double[] blocks = BlockInverses(mu);
 
-            var r = new double[n];
-            var q = new double[n];
+            if (cgR == null)
+            {
+                cgR = new double[n]; cgQ = new double[n]; cgZ = new double[n]; cgP = new double[n];
+            }
+            double[] r = cgR, q = cgQ, z = cgZ, p = cgP;
             Multiply(x, q);
             // r = rhs + mu prior - (A + mu) x.
             for (int k = 0; k < n; k++) r[k] = fixedMask != null && fixedMask[k] ? 0 : rhs[k] - q[k] + mu * (prior[k] - x[k]);
-            var z = new double[n];
-            var p = new double[n];
             double rz = 0, r0 = 0;
             Precondition(blocks, r, z, fixedMask);
             for (int k = 0; k < n; k++)
@@ -479,15 +565,8 @@ namespace GregoryTerrain
                     pq += p[k] * q[k];
                 }
                 if (!(pq > 0)) break;   // converged to rounding: p is (numerically) zero
-                double alpha = rz / pq, rzNew = 0, rr = 0;
-                for (int k = 0; k < n; k++)
-                {
-                    x[k] += alpha * p[k];
-                    r[k] -= alpha * q[k];
-                    rr += r[k] * r[k];
-                }
-                Precondition(blocks, r, z, fixedMask);
-                for (int k = 0; k < n; k++) rzNew += r[k] * z[k];
+                double alpha = rz / pq;
+                Step(blocks, alpha, x, p, q, r, z, fixedMask, out double rr, out double rzNew);
                 double beta = rzNew / rz;
                 rz = rzNew;
                 for (int k = 0; k < n; k++) p[k] = z[k] + beta * p[k];

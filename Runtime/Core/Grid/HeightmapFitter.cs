@@ -296,6 +296,7 @@ namespace GregoryTerrain
             // 3. CG from the spline on the normal equations (x is the start and the ridge's prior).
             ls.Solve(rhs, x, x, fixedMask, progress, 0.3f, 0.5f, ct);
             int iterations = ls.Iterations;
+            ls.ReleaseWorkspace();
 
             // 4. Error at every sample, from the same weights the grid's patches evaluate; with the
             // bounded max, the baseline to hold it to and the samples above ReweightThreshold of it.
@@ -338,6 +339,7 @@ namespace GregoryTerrain
                         x = next; map = nextMap; max = nextMax; rms = nextRms; rounds = round;
                     }
                 }
+                ls.ReleaseWorkspace();
             }
 
             // 6. The grid: the net's points, G1 by construction. The solves' vectors (CG's four, the
