@@ -358,7 +358,9 @@ namespace GregoryTerrain
         double[] BlockInverses(double mu)
         {
             int vb = net.VerticalBase;
-            var blocks = new double[3 * vb + 2 * (net.Count - vb)];
+            if (blockStore == null) blockStore = new double[3 * vb + 2 * (net.Count - vb)];
+            else Array.Clear(blockStore, 0, blockStore.Length);
+            double[] blocks = blockStore;
             Span<int> index = stackalloc int[L];
             for (int j = 0; j < net.Rows; j++)
                 for (int i = 0; i < net.Columns; i++)
@@ -442,16 +444,20 @@ namespace GregoryTerrain
         }
 
         double mu = -1;
-        // CG's vectors, 4 doubles an unknown: kept from one solve to the next (the reweighting
-        // rounds) until ReleaseWorkspace.
-        double[] cgR, cgQ, cgZ, cgP;
+        // The first solve's initial residual norm: what every solve's stop is relative to.
+        double firstResidual = -1;
+        // CG's vectors (4 doubles an unknown) and the preconditioner's blocks (2.4): allocated by
+        // the first solve, reused by the reweighting rounds' (a round allocates none of them).
+        double[] cgR, cgQ, cgZ, cgP, blockStore;
 
         /// <summary>
-        /// Drops CG's vectors (the next <see cref="Solve"/> allocates them again). Called between
-        /// phases so that they are garbage, not live, while the error pass, the baseline and the
-        /// grid allocate (at 256 x 256 patches they are 15 MB).
+        /// Drops CG's vectors and blocks (a later <see cref="Solve"/> allocates them again). The
+        /// fitter drops them as soon as it knows no reweighting round follows, before the
+        /// baseline's and the grid's allocations: measured, the later a large net's vectors become
+        /// garbage, the less of their memory the grid's patches reuse (8193^2 into 256 x 256
+        /// patches: 52 MiB peak dropped after the solve, 66 dropped just before the grid).
         /// </summary>
-        public void ReleaseWorkspace() => cgR = cgQ = cgZ = cgP = null;
+        public void ReleaseWorkspace() => cgR = cgQ = cgZ = cgP = blockStore = null;
 
         /// <summary>
         /// One CG update in one sweep over the unknowns, block by block: x += alpha p, r -= alpha q,
@@ -545,15 +551,21 @@ namespace GregoryTerrain
                 r0 += r[k] * r[k];
             }
             r0 = Math.Sqrt(r0);
+            // The stop is relative to the first solve's initial residual (the unweighted problem's
+            // scale), not this one's: a reweighting round starts from the last net, its initial
+            // residual is only what the raised weights add (about 1% of the first's on the SRTM
+            // tiles), and 1e-4 of that would ask it for 100 times the first solve's accuracy.
+            if (firstResidual < 0) firstResidual = r0;
+            double stop = Tolerance * Math.Max(r0, firstResidual);
             int it = 0;
             double rn = r0, done = 0;
-            while (rn > Tolerance * r0 && it < MaxIterations)
+            while (rn > stop && it < MaxIterations)
             {
                 if ((it & 7) == 0)
                 {
                     ct.ThrowIfCancellationRequested();
                     // CG's residual is not monotone: report the best fraction of the way so far.
-                    done = Math.Max(done, Math.Min(1.0, Math.Log(r0 / rn) / Math.Log(1 / Tolerance)));
+                    done = Math.Max(done, Math.Min(1.0, Math.Log(r0 / rn) / Math.Log(r0 / stop)));
                     progress?.Report(p0 + (p1 - p0) * (float)done);
                 }
                 Multiply(p, q);
@@ -579,9 +591,11 @@ namespace GregoryTerrain
         }
 
         /// <summary>
-        /// The error of the net x at every sample: max, RMS, and the binned picture; samples whose
-        /// |error| exceeds <paramref name="collectAbove"/> are added to <paramref name="collected"/>
-        /// (patch, sample within the patch row-major, |error|). 10 multiply-adds a sample, fixed order.
+        /// The error of the net x at every sample: max, RMS, and the binned picture (none when
+        /// <paramref name="map"/> is null: the picture costs as much as the rest of the pass, a
+        /// read-compare-write per sample); samples whose |error| exceeds
+        /// <paramref name="collectAbove"/> are added to <paramref name="collected"/> (patch, sample
+        /// within the patch row-major, |error|). 10 multiply-adds a sample, fixed order.
         /// </summary>
         public void Errors(double[] heights, double[] x, FitErrorMap map, out double max, out double rms,
             double collectAbove, List<(int patch, int sample, double error)> collected,
@@ -590,14 +604,18 @@ namespace GregoryTerrain
             // The map's cell of (c, r) is rowCell[r] + colCell[c]: no divisions per sample.
             var colCell = new int[width];
             var rowCell = new int[height];
-            for (int c = 0; c < width; c++) colCell[c] = map.CellOf(c, 0);
-            for (int r = 0; r < height; r++) rowCell[r] = map.CellOf(0, r);
+            if (map != null)
+            {
+                for (int c = 0; c < width; c++) colCell[c] = map.CellOf(c, 0);
+                for (int r = 0; r < height; r++) rowCell[r] = map.CellOf(0, r);
+            }
             Span<int> index = stackalloc int[L];
             Span<double> local = stackalloc double[L];
             Span<double> slot = stackalloc double[GregoryPatch.SlotCount];
             Span<double> d = stackalloc double[4];
             max = 0;
             double sum2 = 0;
+            float[] cells = map?.Cells;
             for (int j = 0; j < net.Rows; j++)
             {
                 ct.ThrowIfCancellationRequested();
@@ -638,7 +656,14 @@ namespace GregoryTerrain
                             double e = Math.Abs(f - heights[row + a]);
                             if (e > patchMax) patchMax = e;
                             patchSum += e * e;
-                            map.Add(cellRow + colCell[c0 + a], e);
+                            if (cells != null)
+                            {
+                                // A conditional move, not a branch: whether a sample raises its
+                                // cell is a coin toss on a fresh map.
+                                int cell = cellRow + colCell[c0 + a];
+                                float fe = (float)e, was = cells[cell];
+                                cells[cell] = fe > was ? fe : was;
+                            }
                             if (e > collectAbove) collected.Add((patch, b * cn + a, e));
                         }
                     }
@@ -652,12 +677,13 @@ namespace GregoryTerrain
 
         /// <summary>
         /// Raises the weights of the given samples (multiplied by <c>(error / tau)^2</c>, Lawson's
-        /// rule toward the min-max fit, squared to get there in fewer rounds) and returns the weighted
-        /// right-hand side (<paramref name="rhs"/>, the unweighted one, plus the extra weights' terms).
+        /// rule toward the min-max fit, squared to get there in fewer rounds) and writes the weighted
+        /// right-hand side into <paramref name="weighted"/> (<paramref name="rhs"/>, the unweighted
+        /// one, plus the extra weights' terms).
         /// Each patch with a raised weight gets its own Gram matrix: its class's plus
         /// <c>sum (w - 1) l l^T</c> over its raised samples' local weights l.
         /// </summary>
-        public double[] Reweight(double[] heights, double[] rhs, List<(int patch, int sample, double error)> samples, double tau)
+        public void Reweight(double[] heights, double[] rhs, List<(int patch, int sample, double error)> samples, double tau, double[] weighted)
         {
             if (ownOf == null)
             {
@@ -680,7 +706,7 @@ namespace GregoryTerrain
                 if (at < 0) list.Add((sample, g * g));
                 else list[at] = (sample, list[at].weight * g * g);
             }
-            var weighted = (double[])rhs.Clone();
+            Array.Copy(rhs, weighted, rhs.Length);
             Span<int> index = stackalloc int[L];
             var w = new double[L];
             int count = 0;
@@ -705,7 +731,6 @@ namespace GregoryTerrain
                 ownGrams[o] = g;
             }
             ReweightedSamples = count;
-            return weighted;
         }
     }
 }
