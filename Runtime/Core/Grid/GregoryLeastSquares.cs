@@ -38,7 +38,7 @@ namespace GregoryTerrain
     /// <para><b>Preconditioner and stop.</b> Block Jacobi: the inverse of each vertex's 3 x 3 and each
     /// edge's 2 x 2 diagonal block (a height and the offsets next to it are strongly coupled). From x0
     /// (already the best C1 net) CG runs until the residual is <see cref="Tolerance"/> of the initial
-    /// one. With very few samples a patch (2 to 4 a side) the data barely tell some unknowns apart
+    /// one (a reweighting round's solve: of the first solve's). With very few samples a patch (2 to 4 a side) the data barely tell some unknowns apart
     /// and CG would need hundreds of iterations; it stops at <see cref="MaxIterations"/>, and since
     /// every CG step lowers the objective the result still fits at least as well as its start.</para>
     /// </summary>
@@ -46,8 +46,13 @@ namespace GregoryTerrain
     {
         /// <summary>mu as a fraction of the mean diagonal of the data's normal matrix.</summary>
         public const double RidgeWeight = 1e-6;
-        /// <summary>CG stops when the residual's norm is this fraction of the initial one (or at <see cref="MaxIterations"/>).</summary>
-        public const double Tolerance = 1e-4;
+        /// <summary>
+        /// CG stops when the residual's norm is this fraction of the first solve's initial one (or
+        /// at <see cref="MaxIterations"/>). The error is quadratic in the residual near the optimum:
+        /// on the SRTM tiles at 8 to 256 patches a side, 3e-3 against 1e-4 moves the RMS by at most
+        /// 2e-7 of itself and the max by at most 0.05 m, in 30 to 40% fewer iterations.
+        /// </summary>
+        public const double Tolerance = 3e-3;
         /// <summary>The most CG iterations: bounds the time where the data barely determine the net (see the class comment).</summary>
         public const int MaxIterations = 200;
         /// <summary>Rational-weight tables are cached up to this many doubles (32 MiB); beyond, recomputed per patch.</summary>
