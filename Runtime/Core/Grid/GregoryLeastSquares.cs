@@ -47,10 +47,8 @@ namespace GregoryTerrain
         /// <summary>mu as a fraction of the mean diagonal of the data's normal matrix.</summary>
         public const double RidgeWeight = 1e-6;
         /// <summary>
-        /// CG stops when the residual's norm is this fraction of the first solve's initial one (or
-        /// at <see cref="MaxIterations"/>). The error is quadratic in the residual near the optimum:
-        /// on the SRTM tiles at 8 to 256 patches a side, 3e-3 against 1e-4 moves the RMS by at most
-        /// 2e-7 of itself and the max by at most 0.05 m, in 30 to 40% fewer iterations.
+        /// CG stops when the residual's norm is this fraction of the first solve's initial one (or at
+        /// <see cref="MaxIterations"/>). Against 1e-4: RMS within 2e-7 of itself on the SRTM tiles.
         /// </summary>
         public const double Tolerance = 3e-3;
         /// <summary>The most CG iterations: bounds the time where the data barely determine the net (see the class comment).</summary>
@@ -86,10 +84,9 @@ namespace GregoryTerrain
 
         /// <summary>
         /// Where one axis's samples fall: per patch its first sample and class; per class the
-        /// offsets and Bernstein weights. Classes with the same first offset differ only in their
-        /// count (the last patch holds the boundary sample, or the spacing leaves one more), so
-        /// their offsets are prefixes of one another: they form a group, whose longest class's
-        /// rational-weight table serves them all (read with that class's count as its row stride).
+        /// offsets and Bernstein weights. Classes with the same first offset differ only in count,
+        /// so one's offsets are a prefix of the other's: a group, whose longest class's rational-weight
+        /// table serves all (read with its count as the row stride).
         /// </summary>
         sealed class Axis
         {
@@ -178,9 +175,7 @@ namespace GregoryTerrain
         /// The rational weights <c>B_a(u) B_b(v) t(u, v)</c> of the 4 pairs' first points at every
         /// sample of patch (i, j), [4 (b stride + a) + p]; and, the first time a class is seen, its
         /// Gram matrix (from the full 20 local weights, summed in sample order). The table is its
-        /// group's (<see cref="Axis"/>): the same values as the class's own at the same offsets,
-        /// in a quarter of the memory where the patch count divides the samples' spacing (1201
-        /// samples into 16 patches: 0.18 MB instead of 0.73; 8193 into 32: 2.1 MB instead of 8.5).
+        /// group's (<see cref="Axis"/>): a quarter of the memory where P divides W - 1.
         /// </summary>
         double[] Rational(int i, int j, out int stride)
         {
@@ -297,11 +292,8 @@ namespace GregoryTerrain
 
         /// <summary>
         /// y = A p (the data's normal matrix only): per patch, gather 20, multiply by its Gram,
-        /// scatter. The 20 local unknowns are five runs of consecutive indices (the row's two
-        /// vertices, the next row's two, the bottom edge, the top edge, the left and right edges:
-        /// see <see cref="GregoryNet.LocalUnknowns"/>), so gather and scatter are slices, not an
-        /// index table per patch. Every entry of G p is summed over k in order and the patches are
-        /// scattered in row-major order, whatever the SIMD width.
+        /// scatter, in row-major order. The 20 local unknowns are five runs of consecutive indices
+        /// (<see cref="GregoryNet.LocalUnknowns"/>): slices, not an index table.
         /// </summary>
         void Multiply(double[] p, double[] y)
         {
@@ -326,10 +318,9 @@ namespace GregoryTerrain
                     p.AsSpan(e, 4).CopyTo(local.Slice(16));
                     if (Stride == 5 * Lanes)
                     {
-                        // The common case (4 lanes): five accumulators the JIT keeps in registers.
-                        // Lane q of the accumulators is entry q of G p, summed over k in order. The
-                        // Gram read as vectors (a span of them: one bounds check each, not the
-                        // array constructor's) halves the time of A p.
+                        // 4 lanes: five accumulators in registers; lane q is entry q of G p, summed
+                        // over k in order. The Gram as a span of vectors halves A p's time (one
+                        // bounds check a load, not the array constructor's).
                         ReadOnlySpan<Vector<double>> gv = MemoryMarshal.Cast<double, Vector<double>>(new ReadOnlySpan<double>(g, 0, L * Stride));
                         Vector<double> a0 = Vector<double>.Zero, a1 = a0, a2 = a0, a3 = a0, a4 = a0;
                         for (int k = 0; k < L; k++)
@@ -436,39 +427,6 @@ namespace GregoryTerrain
             for (int k = 0; k < 9; k++) a[k] = t[k] / d;
         }
 
-        /// <summary>z = B^-1 r block by block; 0 on fixed unknowns.</summary>
-        /// <remarks>
-        /// A second level through the C1 splines (z += T (G_y kron G_x)^-1 T^T r, separable and exact
-        /// in the spline subspace) was tried: it saved 5 to 15% of the iterations and cost as much as
-        /// a product with A each, so it is not used. What CG spends its iterations on is local.
-        /// </remarks>
-        void Precondition(double[] blocks, double[] r, double[] z, bool[] fixedMask)
-        {
-            PreconditionBlocks(blocks, r, z);
-            if (fixedMask != null)
-                for (int k = 0; k < z.Length; k++) if (fixedMask[k]) z[k] = 0;
-        }
-
-        void PreconditionBlocks(double[] blocks, double[] r, double[] z)
-        {
-            int vb = net.VerticalBase;
-            for (int k = 0; k < vb; k += 3)
-            {
-                int at = 3 * k;
-                double r0 = r[k], r1 = r[k + 1], r2 = r[k + 2];
-                z[k] = blocks[at] * r0 + blocks[at + 1] * r1 + blocks[at + 2] * r2;
-                z[k + 1] = blocks[at + 3] * r0 + blocks[at + 4] * r1 + blocks[at + 5] * r2;
-                z[k + 2] = blocks[at + 6] * r0 + blocks[at + 7] * r1 + blocks[at + 8] * r2;
-            }
-            for (int k = vb; k < net.Count; k += 2)
-            {
-                int at = 3 * vb + 2 * (k - vb);
-                double r0 = r[k], r1 = r[k + 1];
-                z[k] = blocks[at] * r0 + blocks[at + 1] * r1;
-                z[k + 1] = blocks[at + 2] * r0 + blocks[at + 3] * r1;
-            }
-        }
-
         double mu = -1;
         // The first solve's initial residual norm: what every solve's stop is relative to.
         double firstResidual = -1;
@@ -477,20 +435,21 @@ namespace GregoryTerrain
         double[] cgR, cgQ, cgZ, cgP, blockStore;
 
         /// <summary>
-        /// Drops CG's vectors and blocks (a later <see cref="Solve"/> allocates them again). The
-        /// fitter drops them as soon as it knows no reweighting round follows, before the
-        /// baseline's and the grid's allocations: measured, the later a large net's vectors become
-        /// garbage, the less of their memory the grid's patches reuse (8193^2 into 256 x 256
-        /// patches: 52 MiB peak dropped after the solve, 66 dropped just before the grid).
+        /// Drops CG's vectors and blocks. The fitter drops them as soon as no round follows: the
+        /// later a large net's vectors become garbage, the less of them the grid reuses (8193^2 into
+        /// 256 x 256: 52 MiB peak dropped after the solve, 66 just before the grid).
         /// </summary>
         public void ReleaseWorkspace() => cgR = cgQ = cgZ = cgP = blockStore = null;
 
         /// <summary>
-        /// One CG update in one sweep over the unknowns, block by block: x += alpha p, r -= alpha q,
-        /// z = B^-1 r (0 on fixed unknowns), and the sums r.r and r.z. One sweep instead of four
-        /// because at 256 x 256 patches each vector is 3.7 MB and the sweeps are bound by memory
-        /// traffic, not arithmetic. The sums run in unknown order, as four separate loops would.
+        /// One CG update in one sweep, block by block: x += alpha p, r -= alpha q, z = B^-1 r (0 on
+        /// fixed unknowns), the sums r.r and r.z in unknown order. One sweep, not four: at 256 x 256
+        /// patches a vector is 3.7 MB and the sweeps are bound by memory traffic.
         /// </summary>
+        /// <remarks>
+        /// A second level through the C1 splines (z += T (G_y kron G_x)^-1 T^T r) was tried: 5 to
+        /// 15% fewer iterations for the cost of a product with A each. What CG spends them on is local.
+        /// </remarks>
         void Step(double[] blocks, double alpha, double[] x, double[] p, double[] q, double[] r, double[] z, bool[] fixedMask,
             out double rr, out double rz)
         {
@@ -568,19 +527,12 @@ namespace GregoryTerrain
             Multiply(x, q);
             // r = rhs + mu prior - (A + mu) x.
             for (int k = 0; k < n; k++) r[k] = fixedMask != null && fixedMask[k] ? 0 : rhs[k] - q[k] + mu * (prior[k] - x[k]);
-            double rz = 0, r0 = 0;
-            Precondition(blocks, r, z, fixedMask);
-            for (int k = 0; k < n; k++)
-            {
-                p[k] = z[k];
-                rz += r[k] * z[k];
-                r0 += r[k] * r[k];
-            }
+            // z = B^-1 r (a step of 0 leaves x and r as they are), p = z.
+            Step(blocks, 0, x, p, q, r, z, fixedMask, out double r0, out double rz);
+            Array.Copy(z, p, n);
             r0 = Math.Sqrt(r0);
-            // The stop is relative to the first solve's initial residual (the unweighted problem's
-            // scale), not this one's: a reweighting round starts from the last net, its initial
-            // residual is only what the raised weights add (about 1% of the first's on the SRTM
-            // tiles), and 1e-4 of that would ask it for 100 times the first solve's accuracy.
+            // Relative to the first solve's initial residual: a reweighting round starts from the
+            // last net, with about 1% of it; Tolerance of its own would ask 100 times the accuracy.
             if (firstResidual < 0) firstResidual = r0;
             double stop = Tolerance * Math.Max(r0, firstResidual);
             int it = 0;
@@ -618,8 +570,7 @@ namespace GregoryTerrain
 
         /// <summary>
         /// The error of the net x at every sample: max, RMS, and the binned picture (none when
-        /// <paramref name="map"/> is null: the picture costs as much as the rest of the pass, a
-        /// read-compare-write per sample); samples whose |error| exceeds
+        /// <paramref name="map"/> is null: it costs as much as the rest); samples whose |error| exceeds
         /// <paramref name="collectAbove"/> are added to <paramref name="collected"/> (patch, sample
         /// within the patch row-major, |error|). 10 multiply-adds a sample, fixed order.
         /// </summary>
@@ -684,8 +635,7 @@ namespace GregoryTerrain
                             patchSum += e * e;
                             if (cells != null)
                             {
-                                // A conditional move, not a branch: whether a sample raises its
-                                // cell is a coin toss on a fresh map.
+                                // A conditional move: on a fresh map a branch here mispredicts.
                                 int cell = cellRow + colCell[c0 + a];
                                 float fe = (float)e, was = cells[cell];
                                 cells[cell] = fe > was ? fe : was;
