@@ -29,6 +29,9 @@ namespace GregoryTerrain
             Cells = new float[Width * Height];
         }
 
+        /// <summary>Every cell back to 0 (a map reused for another net).</summary>
+        public void Clear() => Array.Clear(Cells, 0, Cells.Length);
+
         /// <summary>The cell of sample (c, r).</summary>
         public int CellOf(int c, int r) => (int)((long)r * Height / sampleHeight) * Width + (int)((long)c * Width / sampleWidth);
 

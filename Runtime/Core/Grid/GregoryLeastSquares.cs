@@ -1,6 +1,7 @@
 using System;
 using System.Collections.Generic;
 using System.Numerics;
+using System.Runtime.InteropServices;
 using System.Threading;
 
 namespace GregoryTerrain
@@ -37,7 +38,7 @@ namespace GregoryTerrain
     /// <para><b>Preconditioner and stop.</b> Block Jacobi: the inverse of each vertex's 3 x 3 and each
     /// edge's 2 x 2 diagonal block (a height and the offsets next to it are strongly coupled). From x0
     /// (already the best C1 net) CG runs until the residual is <see cref="Tolerance"/> of the initial
-    /// one. With very few samples a patch (2 to 4 a side) the data barely tell some unknowns apart
+    /// one (a reweighting round's solve: of the first solve's). With very few samples a patch (2 to 4 a side) the data barely tell some unknowns apart
     /// and CG would need hundreds of iterations; it stops at <see cref="MaxIterations"/>, and since
     /// every CG step lowers the objective the result still fits at least as well as its start.</para>
     /// </summary>
@@ -45,8 +46,11 @@ namespace GregoryTerrain
     {
         /// <summary>mu as a fraction of the mean diagonal of the data's normal matrix.</summary>
         public const double RidgeWeight = 1e-6;
-        /// <summary>CG stops when the residual's norm is this fraction of the initial one (or at <see cref="MaxIterations"/>).</summary>
-        public const double Tolerance = 1e-4;
+        /// <summary>
+        /// CG stops when the residual's norm is this fraction of the first solve's initial one (or at
+        /// <see cref="MaxIterations"/>). Against 1e-4: RMS within 2e-7 of itself on the SRTM tiles.
+        /// </summary>
+        public const double Tolerance = 3e-3;
         /// <summary>The most CG iterations: bounds the time where the data barely determine the net (see the class comment).</summary>
         public const int MaxIterations = 200;
         /// <summary>Rational-weight tables are cached up to this many doubles (32 MiB); beyond, recomputed per patch.</summary>
@@ -78,13 +82,20 @@ namespace GregoryTerrain
         /// <summary>Samples whose weight <see cref="Reweight"/> has raised above 1.</summary>
         public int ReweightedSamples { get; private set; }
 
-        /// <summary>Where one axis's samples fall: per patch its first sample and class; per class the offsets and Bernstein weights.</summary>
+        /// <summary>
+        /// Where one axis's samples fall: per patch its first sample and class; per class the
+        /// offsets and Bernstein weights. Classes with the same first offset differ only in count,
+        /// so one's offsets are a prefix of the other's: a group, whose longest class's rational-weight
+        /// table serves all (read with its count as the row stride).
+        /// </summary>
         sealed class Axis
         {
             public int[] First, Count, Class;
             public List<double[]> Offsets = new List<double[]>();
             /// <summary>Per class, B_0..B_3 at each offset: [4 a + k].</summary>
             public List<double[]> Bernstein = new List<double[]>();
+            /// <summary>Per class its group; per group the class with the most samples.</summary>
+            public List<int> Group = new List<int>(), Longest = new List<int>();
 
             public Axis(int samples, int spans)
             {
@@ -93,6 +104,7 @@ namespace GregoryTerrain
                 Class = new int[spans];
                 long n = samples - 1;
                 var key = new Dictionary<long, int>();
+                var group = new Dictionary<long, int>();
                 Span<double> b = stackalloc double[4], d = stackalloc double[4];
                 for (int i = 0; i < spans; i++)
                 {
@@ -117,6 +129,14 @@ namespace GregoryTerrain
                         }
                         Offsets.Add(t);
                         Bernstein.Add(bt);
+                        if (!group.TryGetValue(num0, out int g))
+                        {
+                            g = Longest.Count;
+                            group.Add(num0, g);
+                            Longest.Add(cls);
+                        }
+                        Group.Add(g);
+                        if (Count[i] > Offsets[Longest[g]].Length) Longest[g] = cls;
                     }
                     Class[i] = cls;
                 }
@@ -130,12 +150,11 @@ namespace GregoryTerrain
             this.height = height;
             xAxis = new Axis(width, net.Columns);
             yAxis = new Axis(height, net.Rows);
-            int pairs = xAxis.Offsets.Count * yAxis.Offsets.Count;
-            rational = new double[pairs][];
-            grams = new double[pairs][];
+            grams = new double[xAxis.Offsets.Count * yAxis.Offsets.Count][];
+            rational = new double[xAxis.Longest.Count * yAxis.Longest.Count][];
             long tableDoubles = 0;
-            foreach (double[] u in xAxis.Offsets)
-                foreach (double[] v in yAxis.Offsets) tableDoubles += 4L * u.Length * v.Length;
+            foreach (int cu in xAxis.Longest)
+                foreach (int cv in yAxis.Longest) tableDoubles += 4L * xAxis.Offsets[cu].Length * yAxis.Offsets[cv].Length;
             cacheTables = tableDoubles <= TableCacheDoubles;
         }
 
@@ -154,14 +173,18 @@ namespace GregoryTerrain
 
         /// <summary>
         /// The rational weights <c>B_a(u) B_b(v) t(u, v)</c> of the 4 pairs' first points at every
-        /// sample of patch (i, j), [4 s + p] with s = b count_u + a; and, the first time a class is
-        /// seen, its Gram matrix (from the full 20 local weights, summed in sample order).
+        /// sample of patch (i, j), [4 (b stride + a) + p]; and, the first time a class is seen, its
+        /// Gram matrix (from the full 20 local weights, summed in sample order). The table is its
+        /// group's (<see cref="Axis"/>): a quarter of the memory where P divides W - 1.
         /// </summary>
-        double[] Rational(int i, int j)
+        double[] Rational(int i, int j, out int stride)
         {
-            int pair = Pair(i, j);
-            if (rational[pair] != null) return rational[pair];
-            double[] us = xAxis.Offsets[xAxis.Class[i]], vs = yAxis.Offsets[yAxis.Class[j]];
+            int pair = Pair(i, j), cx = xAxis.Class[i], cy = yAxis.Class[j];
+            if (grams[pair] == null) grams[pair] = BuildGram(xAxis.Offsets[cx], yAxis.Offsets[cy]);
+            int gx = xAxis.Group[cx], gy = yAxis.Group[cy], table = gy * xAxis.Longest.Count + gx;
+            double[] us = xAxis.Offsets[xAxis.Longest[gx]], vs = yAxis.Offsets[yAxis.Longest[gy]];
+            stride = us.Length;
+            if (rational[table] != null) return rational[table];
             int n = 4 * us.Length * vs.Length;
             double[] t;
             if (cacheTables) t = new double[n];
@@ -180,8 +203,7 @@ namespace GregoryTerrain
                     int s = 4 * (b * us.Length + a);
                     for (int p = 0; p < 4; p++) t[s + p] = w[FirstSlot[p]];
                 }
-            if (grams[pair] == null) grams[pair] = BuildGram(us, vs);
-            if (cacheTables) rational[pair] = t;
+            if (cacheTables) rational[table] = t;
             return t;
         }
 
@@ -226,7 +248,7 @@ namespace GregoryTerrain
                 double[] bv = yAxis.Bernstein[yAxis.Class[j]];
                 for (int i = 0; i < net.Columns; i++)
                 {
-                    double[] t = Rational(i, j);
+                    double[] t = Rational(i, j, out int stride);
                     double[] bu = xAxis.Bernstein[xAxis.Class[i]];
                     int c0 = xAxis.First[i], cn = xAxis.Count[i];
                     m.Clear();
@@ -234,7 +256,7 @@ namespace GregoryTerrain
                     for (int b = 0; b < rn; b++)
                     {
                         long row = (long)(r0 + b) * width + c0;
-                        int ts = 4 * b * cn;
+                        int ts = 4 * b * stride;
                         double s0 = 0, s1 = 0, s2 = 0, s3 = 0;
                         for (int a = 0; a < cn; a++)
                         {
@@ -268,50 +290,70 @@ namespace GregoryTerrain
             return rhs;
         }
 
-        /// <summary>y = A p (the data's normal matrix only): per patch, gather 20, multiply by its Gram, scatter.</summary>
+        /// <summary>
+        /// y = A p (the data's normal matrix only): per patch, gather 20, multiply by its Gram,
+        /// scatter, in row-major order. The 20 local unknowns are five runs of consecutive indices
+        /// (<see cref="GregoryNet.LocalUnknowns"/>): slices, not an index table.
+        /// </summary>
         void Multiply(double[] p, double[] y)
         {
             Array.Clear(y, 0, y.Length);
-            Span<int> index = stackalloc int[L];
+            Span<double> local = stackalloc double[L];
             Span<double> acc = stackalloc double[Stride];
+            int columns = net.Columns, xClasses = xAxis.Offsets.Count;
+            int[] xClass = xAxis.Class;
             for (int j = 0; j < net.Rows; j++)
-                for (int i = 0; i < net.Columns; i++)
+            {
+                int v0 = net.Vertex(0, j), v1 = net.Vertex(0, j + 1);
+                int eb = net.HorizontalEdge(0, j), et = net.HorizontalEdge(0, j + 1), el = net.VerticalEdge(0, j);
+                int pairRow = yAxis.Class[j] * xClasses;
+                for (int i = 0; i < columns; i++)
                 {
-                    double[] g = GramOf(i, j);
-                    net.LocalUnknowns(i, j, index);
+                    double[] g = ownOf != null && ownOf[j * columns + i] >= 0 ? ownGrams[ownOf[j * columns + i]] : grams[pairRow + xClass[i]];
+                    int a = v0 + 3 * i, b = v1 + 3 * i, c = eb + 2 * i, d = et + 2 * i, e = el + 2 * i;
+                    p.AsSpan(a, 6).CopyTo(local);
+                    p.AsSpan(b, 6).CopyTo(local.Slice(6));
+                    local[12] = p[c]; local[13] = p[c + 1];
+                    local[14] = p[d]; local[15] = p[d + 1];
+                    p.AsSpan(e, 4).CopyTo(local.Slice(16));
                     if (Stride == 5 * Lanes)
                     {
-                        // The common case (4 or 2 lanes): five accumulators the JIT keeps in registers.
-                        // Lane q of the accumulators is entry q of G p, summed over k in order.
+                        // 4 lanes: five accumulators in registers; lane q is entry q of G p, summed
+                        // over k in order. The Gram as a span of vectors halves A p's time (one
+                        // bounds check a load, not the array constructor's).
+                        ReadOnlySpan<Vector<double>> gv = MemoryMarshal.Cast<double, Vector<double>>(new ReadOnlySpan<double>(g, 0, L * Stride));
                         Vector<double> a0 = Vector<double>.Zero, a1 = a0, a2 = a0, a3 = a0, a4 = a0;
                         for (int k = 0; k < L; k++)
                         {
-                            var f = new Vector<double>(p[index[k]]);
-                            int c = k * Stride;
-                            a0 += new Vector<double>(g, c) * f;
-                            a1 += new Vector<double>(g, c + Lanes) * f;
-                            a2 += new Vector<double>(g, c + 2 * Lanes) * f;
-                            a3 += new Vector<double>(g, c + 3 * Lanes) * f;
-                            a4 += new Vector<double>(g, c + 4 * Lanes) * f;
+                            var f = new Vector<double>(local[k]);
+                            int o = 5 * k;
+                            a0 += gv[o] * f;
+                            a1 += gv[o + 1] * f;
+                            a2 += gv[o + 2] * f;
+                            a3 += gv[o + 3] * f;
+                            a4 += gv[o + 4] * f;
                         }
-                        for (int q = 0; q < Lanes; q++)
-                        {
-                            acc[q] = a0[q]; acc[Lanes + q] = a1[q]; acc[2 * Lanes + q] = a2[q];
-                            acc[3 * Lanes + q] = a3[q]; acc[4 * Lanes + q] = a4[q];
-                        }
+                        Span<Vector<double>> av = MemoryMarshal.Cast<double, Vector<double>>(acc);
+                        av[0] = a0; av[1] = a1; av[2] = a2; av[3] = a3; av[4] = a4;
                     }
                     else
                     {
                         // Any other width: the same sums, entry by entry, in the same order.
                         for (int q = 0; q < L; q++)
                         {
-                            double s = 0;
-                            for (int k = 0; k < L; k++) s += g[k * Stride + q] * p[index[k]];
-                            acc[q] = s;
+                            double sum = 0;
+                            for (int k = 0; k < L; k++) sum += g[k * Stride + q] * local[k];
+                            acc[q] = sum;
                         }
                     }
-                    for (int q = 0; q < L; q++) y[index[q]] += acc[q];
+                    Span<double> ya = y.AsSpan(a, 6), yb = y.AsSpan(b, 6), ye = y.AsSpan(e, 4);
+                    for (int q = 0; q < 6; q++) ya[q] += acc[q];
+                    for (int q = 0; q < 6; q++) yb[q] += acc[6 + q];
+                    y[c] += acc[12]; y[c + 1] += acc[13];
+                    y[d] += acc[14]; y[d + 1] += acc[15];
+                    for (int q = 0; q < 4; q++) ye[q] += acc[16 + q];
                 }
+            }
         }
 
         // The preconditioner's blocks: a vertex's 3 unknowns and an edge's 2 are strongly coupled (a
@@ -333,7 +375,9 @@ namespace GregoryTerrain
         double[] BlockInverses(double mu)
         {
             int vb = net.VerticalBase;
-            var blocks = new double[3 * vb + 2 * (net.Count - vb)];
+            if (blockStore == null) blockStore = new double[3 * vb + 2 * (net.Count - vb)];
+            else Array.Clear(blockStore, 0, blockStore.Length);
+            double[] blocks = blockStore;
             Span<int> index = stackalloc int[L];
             for (int j = 0; j < net.Rows; j++)
                 for (int i = 0; i < net.Columns; i++)
@@ -383,40 +427,72 @@ namespace GregoryTerrain
             for (int k = 0; k < 9; k++) a[k] = t[k] / d;
         }
 
-        /// <summary>z = B^-1 r block by block; 0 on fixed unknowns.</summary>
-        /// <remarks>
-        /// A second level through the C1 splines (z += T (G_y kron G_x)^-1 T^T r, separable and exact
-        /// in the spline subspace) was tried: it saved 5 to 15% of the iterations and cost as much as
-        /// a product with A each, so it is not used. What CG spends its iterations on is local.
-        /// </remarks>
-        void Precondition(double[] blocks, double[] r, double[] z, bool[] fixedMask)
-        {
-            PreconditionBlocks(blocks, r, z);
-            if (fixedMask != null)
-                for (int k = 0; k < z.Length; k++) if (fixedMask[k]) z[k] = 0;
-        }
+        double mu = -1;
+        // The first solve's initial residual norm: what every solve's stop is relative to.
+        double firstResidual = -1;
+        // CG's vectors (4 doubles an unknown) and the preconditioner's blocks (2.4): allocated by
+        // the first solve, reused by the reweighting rounds' (a round allocates none of them).
+        double[] cgR, cgQ, cgZ, cgP, blockStore;
 
-        void PreconditionBlocks(double[] blocks, double[] r, double[] z)
+        /// <summary>
+        /// Drops CG's vectors and blocks. The fitter drops them as soon as no round follows: the
+        /// later a large net's vectors become garbage, the less of them the grid reuses (8193^2 into
+        /// 256 x 256: 52 MiB peak dropped after the solve, 66 just before the grid).
+        /// </summary>
+        public void ReleaseWorkspace() => cgR = cgQ = cgZ = cgP = blockStore = null;
+
+        /// <summary>
+        /// One CG update in one sweep, block by block: x += alpha p, r -= alpha q, z = B^-1 r (0 on
+        /// fixed unknowns), the sums r.r and r.z in unknown order. One sweep, not four: at 256 x 256
+        /// patches a vector is 3.7 MB and the sweeps are bound by memory traffic.
+        /// </summary>
+        /// <remarks>
+        /// A second level through the C1 splines (z += T (G_y kron G_x)^-1 T^T r) was tried: 5 to
+        /// 15% fewer iterations for the cost of a product with A each. What CG spends them on is local.
+        /// </remarks>
+        void Step(double[] blocks, double alpha, double[] x, double[] p, double[] q, double[] r, double[] z, bool[] fixedMask,
+            out double rr, out double rz)
         {
-            int vb = net.VerticalBase;
+            int vb = net.VerticalBase, n = net.Count;
+            rr = 0;
+            rz = 0;
             for (int k = 0; k < vb; k += 3)
             {
+                x[k] += alpha * p[k]; x[k + 1] += alpha * p[k + 1]; x[k + 2] += alpha * p[k + 2];
+                double r0 = r[k] - alpha * q[k], r1 = r[k + 1] - alpha * q[k + 1], r2 = r[k + 2] - alpha * q[k + 2];
+                r[k] = r0; r[k + 1] = r1; r[k + 2] = r2;
+                rr += r0 * r0; rr += r1 * r1; rr += r2 * r2;
                 int at = 3 * k;
-                double r0 = r[k], r1 = r[k + 1], r2 = r[k + 2];
-                z[k] = blocks[at] * r0 + blocks[at + 1] * r1 + blocks[at + 2] * r2;
-                z[k + 1] = blocks[at + 3] * r0 + blocks[at + 4] * r1 + blocks[at + 5] * r2;
-                z[k + 2] = blocks[at + 6] * r0 + blocks[at + 7] * r1 + blocks[at + 8] * r2;
+                double z0 = blocks[at] * r0 + blocks[at + 1] * r1 + blocks[at + 2] * r2;
+                double z1 = blocks[at + 3] * r0 + blocks[at + 4] * r1 + blocks[at + 5] * r2;
+                double z2 = blocks[at + 6] * r0 + blocks[at + 7] * r1 + blocks[at + 8] * r2;
+                if (fixedMask != null)
+                {
+                    if (fixedMask[k]) z0 = 0;
+                    if (fixedMask[k + 1]) z1 = 0;
+                    if (fixedMask[k + 2]) z2 = 0;
+                }
+                z[k] = z0; z[k + 1] = z1; z[k + 2] = z2;
+                rz += r0 * z0; rz += r1 * z1; rz += r2 * z2;
             }
-            for (int k = vb; k < net.Count; k += 2)
+            for (int k = vb; k < n; k += 2)
             {
+                x[k] += alpha * p[k]; x[k + 1] += alpha * p[k + 1];
+                double r0 = r[k] - alpha * q[k], r1 = r[k + 1] - alpha * q[k + 1];
+                r[k] = r0; r[k + 1] = r1;
+                rr += r0 * r0; rr += r1 * r1;
                 int at = 3 * vb + 2 * (k - vb);
-                double r0 = r[k], r1 = r[k + 1];
-                z[k] = blocks[at] * r0 + blocks[at + 1] * r1;
-                z[k + 1] = blocks[at + 2] * r0 + blocks[at + 3] * r1;
+                double z0 = blocks[at] * r0 + blocks[at + 1] * r1;
+                double z1 = blocks[at + 2] * r0 + blocks[at + 3] * r1;
+                if (fixedMask != null)
+                {
+                    if (fixedMask[k]) z0 = 0;
+                    if (fixedMask[k + 1]) z1 = 0;
+                }
+                z[k] = z0; z[k + 1] = z1;
+                rz += r0 * z0; rz += r1 * z1;
             }
         }
-
-        double mu = -1;
 
         /// <summary>
         /// Solves <c>(A + mu I) x = rhs + mu prior</c> by block-Jacobi-preconditioned CG, starting from
@@ -443,31 +519,31 @@ namespace GregoryTerrain
             }
             double[] blocks = BlockInverses(mu);
 
-            var r = new double[n];
-            var q = new double[n];
+            if (cgR == null)
+            {
+                cgR = new double[n]; cgQ = new double[n]; cgZ = new double[n]; cgP = new double[n];
+            }
+            double[] r = cgR, q = cgQ, z = cgZ, p = cgP;
             Multiply(x, q);
             // r = rhs + mu prior - (A + mu) x.
             for (int k = 0; k < n; k++) r[k] = fixedMask != null && fixedMask[k] ? 0 : rhs[k] - q[k] + mu * (prior[k] - x[k]);
-            var z = new double[n];
-            var p = new double[n];
-            double rz = 0, r0 = 0;
-            Precondition(blocks, r, z, fixedMask);
-            for (int k = 0; k < n; k++)
-            {
-                p[k] = z[k];
-                rz += r[k] * z[k];
-                r0 += r[k] * r[k];
-            }
+            // z = B^-1 r (a step of 0 leaves x and r as they are), p = z.
+            Step(blocks, 0, x, p, q, r, z, fixedMask, out double r0, out double rz);
+            Array.Copy(z, p, n);
             r0 = Math.Sqrt(r0);
+            // Relative to the first solve's initial residual: a reweighting round starts from the
+            // last net, with about 1% of it; Tolerance of its own would ask 100 times the accuracy.
+            if (firstResidual < 0) firstResidual = r0;
+            double stop = Tolerance * Math.Max(r0, firstResidual);
             int it = 0;
             double rn = r0, done = 0;
-            while (rn > Tolerance * r0 && it < MaxIterations)
+            while (rn > stop && it < MaxIterations)
             {
                 if ((it & 7) == 0)
                 {
                     ct.ThrowIfCancellationRequested();
                     // CG's residual is not monotone: report the best fraction of the way so far.
-                    done = Math.Max(done, Math.Min(1.0, Math.Log(r0 / rn) / Math.Log(1 / Tolerance)));
+                    done = Math.Max(done, Math.Min(1.0, Math.Log(r0 / rn) / Math.Log(r0 / stop)));
                     progress?.Report(p0 + (p1 - p0) * (float)done);
                 }
                 Multiply(p, q);
@@ -479,15 +555,8 @@ namespace GregoryTerrain
                     pq += p[k] * q[k];
                 }
                 if (!(pq > 0)) break;   // converged to rounding: p is (numerically) zero
-                double alpha = rz / pq, rzNew = 0, rr = 0;
-                for (int k = 0; k < n; k++)
-                {
-                    x[k] += alpha * p[k];
-                    r[k] -= alpha * q[k];
-                    rr += r[k] * r[k];
-                }
-                Precondition(blocks, r, z, fixedMask);
-                for (int k = 0; k < n; k++) rzNew += r[k] * z[k];
+                double alpha = rz / pq;
+                Step(blocks, alpha, x, p, q, r, z, fixedMask, out double rr, out double rzNew);
                 double beta = rzNew / rz;
                 rz = rzNew;
                 for (int k = 0; k < n; k++) p[k] = z[k] + beta * p[k];
@@ -500,9 +569,10 @@ namespace GregoryTerrain
         }
 
         /// <summary>
-        /// The error of the net x at every sample: max, RMS, and the binned picture; samples whose
-        /// |error| exceeds <paramref name="collectAbove"/> are added to <paramref name="collected"/>
-        /// (patch, sample within the patch row-major, |error|). 10 multiply-adds a sample, fixed order.
+        /// The error of the net x at every sample: max, RMS, and the binned picture (none when
+        /// <paramref name="map"/> is null: it costs as much as the rest); samples whose |error| exceeds
+        /// <paramref name="collectAbove"/> are added to <paramref name="collected"/> (patch, sample
+        /// within the patch row-major, |error|). 10 multiply-adds a sample, fixed order.
         /// </summary>
         public void Errors(double[] heights, double[] x, FitErrorMap map, out double max, out double rms,
             double collectAbove, List<(int patch, int sample, double error)> collected,
@@ -511,14 +581,18 @@ namespace GregoryTerrain
             // The map's cell of (c, r) is rowCell[r] + colCell[c]: no divisions per sample.
             var colCell = new int[width];
             var rowCell = new int[height];
-            for (int c = 0; c < width; c++) colCell[c] = map.CellOf(c, 0);
-            for (int r = 0; r < height; r++) rowCell[r] = map.CellOf(0, r);
+            if (map != null)
+            {
+                for (int c = 0; c < width; c++) colCell[c] = map.CellOf(c, 0);
+                for (int r = 0; r < height; r++) rowCell[r] = map.CellOf(0, r);
+            }
             Span<int> index = stackalloc int[L];
             Span<double> local = stackalloc double[L];
             Span<double> slot = stackalloc double[GregoryPatch.SlotCount];
             Span<double> d = stackalloc double[4];
             max = 0;
             double sum2 = 0;
+            float[] cells = map?.Cells;
             for (int j = 0; j < net.Rows; j++)
             {
                 ct.ThrowIfCancellationRequested();
@@ -527,7 +601,7 @@ namespace GregoryTerrain
                 double[] bv = yAxis.Bernstein[yAxis.Class[j]];
                 for (int i = 0; i < net.Columns; i++)
                 {
-                    double[] t = Rational(i, j);
+                    double[] t = Rational(i, j, out int stride);
                     double[] bu = xAxis.Bernstein[xAxis.Class[i]];
                     int c0 = xAxis.First[i], cn = xAxis.Count[i];
                     net.LocalUnknowns(i, j, index);
@@ -550,7 +624,7 @@ namespace GregoryTerrain
                         double q2 = slot[8] * bv[vb] + slot[9] * bv[vb + 1] + slot[10] * bv[vb + 2] + slot[11] * bv[vb + 3];
                         double q3 = slot[12] * bv[vb] + slot[13] * bv[vb + 1] + slot[14] * bv[vb + 2] + slot[15] * bv[vb + 3];
                         long row = (long)(r0 + b) * width + c0;
-                        int ts = 4 * b * cn, cellRow = rowCell[r0 + b];
+                        int ts = 4 * b * stride, cellRow = rowCell[r0 + b];
                         for (int a = 0; a < cn; a++)
                         {
                             int o = 4 * a, q = ts + o;
@@ -559,7 +633,13 @@ namespace GregoryTerrain
                             double e = Math.Abs(f - heights[row + a]);
                             if (e > patchMax) patchMax = e;
                             patchSum += e * e;
-                            map.Add(cellRow + colCell[c0 + a], e);
+                            if (cells != null)
+                            {
+                                // A conditional move: on a fresh map a branch here mispredicts.
+                                int cell = cellRow + colCell[c0 + a];
+                                float fe = (float)e, was = cells[cell];
+                                cells[cell] = fe > was ? fe : was;
+                            }
                             if (e > collectAbove) collected.Add((patch, b * cn + a, e));
                         }
                     }
@@ -573,12 +653,13 @@ namespace GregoryTerrain
 
         /// <summary>
         /// Raises the weights of the given samples (multiplied by <c>(error / tau)^2</c>, Lawson's
-        /// rule toward the min-max fit, squared to get there in fewer rounds) and returns the weighted
-        /// right-hand side (<paramref name="rhs"/>, the unweighted one, plus the extra weights' terms).
+        /// rule toward the min-max fit, squared to get there in fewer rounds) and writes the weighted
+        /// right-hand side into <paramref name="weighted"/> (<paramref name="rhs"/>, the unweighted
+        /// one, plus the extra weights' terms).
         /// Each patch with a raised weight gets its own Gram matrix: its class's plus
         /// <c>sum (w - 1) l l^T</c> over its raised samples' local weights l.
         /// </summary>
-        public double[] Reweight(double[] heights, double[] rhs, List<(int patch, int sample, double error)> samples, double tau)
+        public void Reweight(double[] heights, double[] rhs, List<(int patch, int sample, double error)> samples, double tau, double[] weighted)
         {
             if (ownOf == null)
             {
@@ -601,7 +682,7 @@ namespace GregoryTerrain
                 if (at < 0) list.Add((sample, g * g));
                 else list[at] = (sample, list[at].weight * g * g);
             }
-            var weighted = (double[])rhs.Clone();
+            Array.Copy(rhs, weighted, rhs.Length);
             Span<int> index = stackalloc int[L];
             var w = new double[L];
             int count = 0;
@@ -626,7 +707,6 @@ namespace GregoryTerrain
                 ownGrams[o] = g;
             }
             ReweightedSamples = count;
-            return weighted;
         }
     }
 }

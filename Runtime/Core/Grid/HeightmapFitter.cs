@@ -314,34 +314,48 @@ namespace GregoryTerrain
             // weights of the samples above tau and re-solves from the last net.
             int rounds = 0;
             double rmsCap = rms <= bRms ? bRms : rms * (1 + RmsAllowance);
-            if (bounded && max > bMax)
+            if (!(bounded && max > bMax)) ls.ReleaseWorkspace();
+            else
             {
                 double[] prior = new double[net.Count];
                 net.FromSpline(surface.Coefficients, prior);
                 Hold(west, south, net, prior, width, height);
+                // One candidate net and list, reused round after round (swapped with the kept ones
+                // when a round lowers the max): a round allocates nothing the size of the net, so
+                // the rounds add a fixed few vectors to the fit's peak memory. The rounds measure
+                // max, RMS and the samples above tau without the error map (half a pass's time);
+                // the kept net's map is drawn once after the last round.
+                double[] weighted = new double[net.Count], next = new double[net.Count];
+                var nextCollected = new List<(int patch, int sample, double error)>();
                 for (int round = 1; round <= MaxReweightRounds && max > bMax && collected.Count > 0; round++)
                 {
                     ct.ThrowIfCancellationRequested();
                     progress?.Report(0.7f + 0.25f * round / MaxReweightRounds);
-                    double[] weighted = ls.Reweight(heights, rhs, collected, tau);
-                    var next = (double[])x.Clone();
+                    ls.Reweight(heights, rhs, collected, tau, weighted);
+                    Array.Copy(x, next, x.Length);
                     ls.Solve(weighted, next, prior, fixedMask, null, 0f, 0f, ct);
                     iterations += ls.Iterations;
-                    var nextCollected = new List<(int patch, int sample, double error)>();
-                    var nextMap = new FitErrorMap(width, height);
-                    ls.Errors(heights, next, nextMap, out double nextMax, out double nextRms, tau, nextCollected, null, 0f, 0f, ct);
+                    nextCollected.Clear();
+                    ls.Errors(heights, next, null, out double nextMax, out double nextRms, tau, nextCollected, null, 0f, 0f, ct);
                     if (nextRms > rmsCap) break;   // the RMS would pass the baseline's: keep the last net
                     if (nextCollected.Count > MaxCollected) nextCollected.RemoveRange(MaxCollected, nextCollected.Count - MaxCollected);
-                    collected = nextCollected;
+                    (collected, nextCollected) = (nextCollected, collected);
                     if (nextMax < max)
                     {
-                        x = next; map = nextMap; max = nextMax; rms = nextRms; rounds = round;
+                        (x, next) = (next, x);
+                        max = nextMax; rms = nextRms; rounds = round;
                     }
+                }
+                if (rounds > 0)
+                {
+                    // The same pass as the round's that chose x, so the same max and RMS.
+                    map.Clear();
+                    ls.Errors(heights, x, map, out max, out rms, double.PositiveInfinity, nextCollected, null, 0f, 0f, ct);
                 }
             }
 
             // 6. The grid: the net's points, G1 by construction. The solves' vectors (CG's four, the
-            // block inverses, the right-hand sides: about 9 doubles an unknown, per round) and the
+            // block inverses, the right-hand sides: about 9 doubles an unknown, 12 with rounds) and the
             // spline's are garbage now, in the large-object heap a gen-0 collection leaves alone;
             // on a large net they are collected before the grid's patches (20 points each, the
             // largest single allocation of the fit) are allocated, so that the fit's peak memory is
