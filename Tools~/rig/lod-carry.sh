@@ -1,6 +1,6 @@
 # gt lod-carry DEST [--terrains M1,M2,...]: assembles the self-contained folder that
 # Tools~/rig/lod-device.sh runs (on lavapipe here, or carried to a GPU machine): the prebuilt
-# gt-harness, the SPIR-V of the levels (lod+noise) and of today's single-range draw (noise), and per
+# gt-harness, the SPIR-V of the levels (lod+noise) and of today's single-range draw (noise+range_origin), and per
 # terrain width (default 100 km and 1,000 km) the ground-level view of `gt-cli lod-scene` (camera 2 m
 # up, M = 16, adaptive factors at 1 px) plus the single range over the whole terrain from the same
 # camera at M = 64 tiles and the uniform factor F whose 2 x 64^2 x F^2 triangles come nearest the
@@ -22,9 +22,11 @@ rm -rf "$dest"; mkdir -p "$dest/bin" "$dest/spv"
 cp "$harness" "$dest/bin/"
 cp "$RIG_DIR/lod-device.sh" "$dest/"
 tmp="$BUILD_DIR/lod-carry-spirv"; rm -rf "$tmp"
-GT_BUILD_DIR="$tmp" bash "$TOOLS_DIR/gt" shaders --only lod+noise --only noise >/dev/null \
+# The single range is drawn around the same range origin as the levels (lod-scene sends one), so it
+# needs the origin's code: without GT_RANGE_ORIGIN a stage draws a sent origin as 0.
+GT_BUILD_DIR="$tmp" bash "$TOOLS_DIR/gt" shaders --only lod+noise --only noise+range_origin >/dev/null \
   || die "gt shaders failed (run it alone to see why)"
-for v in lod:lod+noise single:noise; do
+for v in lod:lod+noise single:noise+range_origin; do
   mkdir -p "$dest/spv/${v%%:*}"
   for s in vert tesc tese frag; do cp "$tmp/spirv/${v#*:}/$s.spv" "$dest/spv/${v%%:*}/"; done
 done
