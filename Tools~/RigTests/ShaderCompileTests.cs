@@ -72,11 +72,11 @@ namespace GregoryTerrain.Rig.Tests
             // noise (gt bench), the six snow variants, the six vertex-cache variants and the seven
             // levels-of-detail ones (GT_LOD: alone, with the effects, the two readbacks, and with snow
             // and with the cache, which Unity compiles though the renderer never draws them), and the
-            // eight range-origin ones (GT_RANGE_ORIGIN: alone, the fair variant, the four readbacks the
-            // deep-zoom tests draw, with snow and with the cache).
-            Assert.That(variants.Count, Is.EqualTo(16 + 3 + 2 + 6 + 6 + 7 + 8));
+            // nine range-origin ones (GT_RANGE_ORIGIN: alone, with noise (gt lod-carry's single range),
+            // the fair variant, the four readbacks the deep-zoom tests draw, with snow and with the cache).
+            Assert.That(variants.Count, Is.EqualTo(16 + 3 + 2 + 6 + 6 + 7 + 9));
             Assert.That(variants.Count(v => v.keywords.Contains("GT_LOD")), Is.EqualTo(7));
-            Assert.That(variants.Count(v => v.keywords.Contains("GT_RANGE_ORIGIN")), Is.EqualTo(8));
+            Assert.That(variants.Count(v => v.keywords.Contains("GT_RANGE_ORIGIN")), Is.EqualTo(9));
             Assert.That(variants.Count(v => v.keywords.Contains("GT_RANGE_ORIGIN") && v.keywords.Contains("GT_LOD")), Is.EqualTo(0), "one multi_compile set");
             Assert.That(variants.Count(v => v.keywords.Contains("GT_SNOW")), Is.EqualTo(9));
             Assert.That(variants.Count(v => v.keywords.Contains("GT_VERTEX_CACHE")), Is.EqualTo(8));
