@@ -529,7 +529,10 @@ namespace GregoryTerrain
             Multiply(x, q);
             // r = rhs + mu prior - (A + mu) x.
             for (int k = 0; k < n; k++) r[k] = fixedMask != null && fixedMask[k] ? 0 : rhs[k] - q[k] + mu * (prior[k] - x[k]);
-            // z = B^-1 r (a step of 0 leaves x and r as they are), p = z.
+            // z = B^-1 r (a step of 0 leaves x and r as they are), p = z. p is cleared first: it may
+            // hold the last solve's direction, NaN once that solve's residual reached exactly 0, and
+            // 0 * NaN is NaN.
+            Array.Clear(p, 0, n);
             Step(blocks, 0, x, p, q, r, z, fixedMask, out double r0, out double rz);
             Array.Copy(z, p, n);
             r0 = Math.Sqrt(r0);
