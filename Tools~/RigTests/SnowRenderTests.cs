@@ -19,6 +19,8 @@ namespace GregoryTerrain.Rig.Tests
         static readonly string[] Stages = { "vert", "tesc", "tese", "frag", "fallback" };
         static readonly string[] Entries = { "vert", "hull_shader", "domain_shader", "frag", "vert_fallback" };
         static readonly string[] GlslangStages = { "vert", "tesc", "tese", "frag", "vert" };
+        // What shaders.py (STAGE_DEFINES) defines per stage: the no-tessellator pass is GT_FALLBACK.
+        static readonly string[][] StageDefines = { new string[0], new string[0], new string[0], new string[0], new[] { "-DGT_FALLBACK" } };
         // The terrain stages' register shifts (shaders.py REGISTER_SHIFTS, internals.md bindings).
         static readonly string[] Shifts = { "--hlsl-iomap", "--shift-cbuffer-binding", "0", "--shift-texture-binding", "2", "--shift-UAV-binding", "5" };
 
@@ -121,7 +123,7 @@ namespace GregoryTerrain.Rig.Tests
             for (int k = 0; k < Stages.Length; k++)
             {
                 string stripped = Path.Combine(_work, "nosnow", Stages[k] + ".spv");
-                Exec("glslangValidator", new[] { "-D", "-V", "-S", GlslangStages[k], "-e", Entries[k] }.Concat(Shifts)
+                Exec("glslangValidator", new[] { "-D", "-V", "-S", GlslangStages[k], "-e", Entries[k] }.Concat(StageDefines[k]).Concat(Shifts)
                     .Concat(new[] { "-o", stripped, rigEntry }).ToArray(), null);
                 byte[] shipped = File.ReadAllBytes(Path.Combine(_spirv, "base", Stages[k] + ".spv"));
                 Assert.That(File.ReadAllBytes(stripped), Is.EqualTo(shipped), "base/" + Stages[k] + " differs from the build without snow code");
