@@ -28,4 +28,12 @@ float HeightColorNoise(TerrainPoint p, float4 heightColor)
     return heightColor.y * GradientNoiseAtPoint(p, heightColor.z, GradientNoiseStreamOffset(GT_COLOR_NOISE_STREAM), unused);
 }
 
+// HeightColorNoise of a point without a hi part (originHi = 0): the same value bit for bit, without
+// TwoProduct (GradientNoiseAtLocal).
+float HeightColorNoiseAtLocal(float2 local, float4 heightColor)
+{
+    float2 unused;
+    return heightColor.y * GradientNoiseAtLocal(local, heightColor.z, GradientNoiseStreamOffset(GT_COLOR_NOISE_STREAM), unused);
+}
+
 #endif // GT_HEIGHT_COLOR_INCLUDED

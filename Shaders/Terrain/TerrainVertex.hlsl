@@ -153,9 +153,12 @@ struct TerrainVertexAttributes
 // (the levels of detail): then the continuous rule at the vertex's pixel scale, a function of q and
 // the camera only, so both sides of a level seam, which form the same q, agree. Paper mode keeps the
 // single-range rule. Mirrors Core TerrainVertex.VertexOctaveCount.
+// The renderer sends NoiseSegmentPixels() only with its levels on, which draw with GT_LOD, so the
+// continuous rule is compiled with the origin's code (GT_RANGE_ORIGIN_CODE, which GT_LOD sets):
+// elsewhere the untaken branch kept registers (performance.md, "Choices in the shaders, measured").
 float VertexOctaveCount(TileLayout l, TerrainSurfacePoint s)
 {
-#if !defined(GT_EXTEND_DRAW_PATCHES)
+#if !defined(GT_EXTEND_DRAW_PATCHES) && defined(GT_RANGE_ORIGIN_CODE)
     [branch] if (NoiseSegmentPixels() > 0.0)
     {
         float3 p = TerrainToObject(OutputSurfacePosition(l, s));   // what the vertex outputs before noise
@@ -242,7 +245,12 @@ TerrainVertexAttributes FinishTerrainVertex(TileLayout l, TerrainSurfacePoint s)
     a.absoluteHeight = s.position.z + noiseHeight;
     a.colorNoise = 0.0;
 #if defined(GT_HEIGHT_COLOR)
+    #if defined(GT_RANGE_ORIGIN_CODE) || defined(GT_EXTEND_DRAW_PATCHES)
     a.colorNoise = HeightColorNoise(s.q, HeightColorSettings());
+    #else
+    // Without the origin's code q's hi part is the constant 0: the same value without TwoProduct.
+    a.colorNoise = HeightColorNoiseAtLocal(s.q.local, HeightColorSettings());
+    #endif
 #endif
     a.patch = s.patch;
     return a;

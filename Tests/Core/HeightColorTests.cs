@@ -63,5 +63,20 @@ namespace GregoryTerrain.Tests
             Assert.That(maxAbs, Is.GreaterThan(settings.noiseAmplitude * 0.3));
             Assert.That(differsFromOctave0, Is.True, "colour noise must not repeat the height noise");
         }
+
+        [Test]
+        public void ColorNoiseAtLocalIsColorNoiseWithoutAHiPartBitForBit()
+        {
+            // What the tessellated stages draw without the range origin's code must not change a bit.
+            var rng = new Random(22);
+            for (int i = 0; i < 5000; i++)
+            {
+                var settings = new HeightColorSettings(0.3f, 0.25f, (float)Math.Pow(2, rng.NextDouble() * 16 - 2));
+                var local = new Float2((float)(rng.NextDouble() * 1.5 - 0.25), (float)(rng.NextDouble() * 1.5 - 0.25));
+                float a = HeightColor.ColorNoiseAtLocal(local, settings);
+                float b = HeightColor.ColorNoise(new TerrainPoint(new Float2(0f, 0f), local), settings);
+                Assert.That(BitConverter.SingleToInt32Bits(a), Is.EqualTo(BitConverter.SingleToInt32Bits(b)), $"at {local} f {settings.noiseFrequency:R}");
+            }
+        }
     }
 }

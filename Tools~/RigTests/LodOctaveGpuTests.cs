@@ -1,4 +1,4 @@
-// The continuous octave rule of the levels of detail on the GPU (lavapipe, readback+noise): with
+// The continuous octave rule of the levels of detail on the GPU (lavapipe, readback+noise+range_origin): with
 // _NoiseOctaves.z > 0 every vertex takes its octave count from its own pixel scale under the rig's
 // perspective camera (HLSL VertexOctaveCount), and Core's float mirror (TerrainVertex.EvaluateAtWithCamera)
 // computes the same at the q the GPU read back. Helpers: ReadbackRun.cs.
@@ -41,7 +41,9 @@ namespace GregoryTerrain.Rig.Tests
             ReadbackRun.WriteBuffers(dir, inputs, camera);
             int vertices = tiles * tiles * (factor + 1) * (factor + 1);
             string rb = Path.Combine(dir, "readback.f32");
-            var args = ReadbackRun.Stages(_spirv, "readback+noise").Concat(new[] { "--buffers", dir, "--patches", (tiles * tiles).ToString(),
+            // The origin sibling: the continuous rule is compiled only with the origin's code
+            // (GT_RANGE_ORIGIN_CODE, which the levels' GT_LOD sets); the origin stays 0 here.
+            var args = ReadbackRun.Stages(_spirv, "readback+noise+range_origin").Concat(new[] { "--buffers", dir, "--patches", (tiles * tiles).ToString(),
                 "--width", width.ToString(), "--height", height.ToString(), "--device", "llvmpipe", "--readback", rb,
                 "--readback-floats", (12 * vertices).ToString() }).ToArray();
             HarnessRun h = HarnessRun.Harness(args);

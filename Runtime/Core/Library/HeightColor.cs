@@ -44,6 +44,17 @@ namespace GregoryTerrain
             return settings.noiseAmplitude * GradientNoise.AtPoint(p, settings.noiseFrequency, GradientNoise.StreamOffset(ColorStream), out _);
         }
 
+        /// <summary>
+        /// HLSL <c>HeightColorNoiseAtLocal</c>: <see cref="ColorNoise(TerrainPoint, HeightColorSettings)"/>
+        /// of a point whose originHi is 0, bit for bit, without TwoProduct (what the tessellated stages
+        /// draw without the range origin's code).
+        /// </summary>
+        public static float ColorNoiseAtLocal(Float2 local, HeightColorSettings settings)
+        {
+            settings.Validate(nameof(settings));
+            return settings.noiseAmplitude * GradientNoise.AtLocal(local, settings.noiseFrequency, GradientNoise.StreamOffset(ColorStream), out _);
+        }
+
         /// <summary>The double reference of <see cref="ColorNoise(TerrainPoint, HeightColorSettings)"/>.</summary>
         public static double ColorNoise(double x, double y, HeightColorSettings settings)
         {
