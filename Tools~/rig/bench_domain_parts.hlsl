@@ -17,8 +17,8 @@
 //   PART_NO_OCTAVES   the noise height (colour kept)
 //   PART_ONE_OCTAVE   one octave instead of the frame's count: (full - one) / (count - 1) an octave
 //   PART_CHEAP_HASH   each PCG hash -> one multiply and shift
-//   PART_PLAIN_SPLIT  the lattice split -> floor(f q + offset) in plain float (the octaves' split
-//                     without a hi part has no TwoProduct left; the colour noise's keeps it)
+//   PART_PLAIN_SPLIT  the lattice split -> floor(f q + offset) in plain float (without a hi part
+//                     neither the octaves' nor the colour noise's split has a TwoProduct left)
 //   PART_NO_NORMAL    the normal (and every derivative only it needs) -> up
 //   PART_NO_COLOUR    the height colour's noise
 //   PART_PLAIN        no noise, no colour: the plain domain stage
@@ -31,6 +31,11 @@
 //   PART_MINIMAL      a minimal Gregory evaluator drawing the same triangles: the patch of a uniform
 //                     grid by multiply, q and (u, v) in plain float, the Gregory position and normal,
 //                     the package's varyings (what the plain stage is measured against)
+//   PART_TABLE_CELLS  a candidate noise (it repeats every 256 lattice cells): each cell's four corner
+//                     gradients from a 256 x 256 table (two float4 loads) instead of six PCG hashes
+//                     and four reads of the direction table
+//   PART_TABLE_COEF   the same table holding each cell's noise polynomial (three float4 loads), so
+//                     the corner ramps' differences are not formed per vertex
 #include "TerrainRig.hlsl"
 
 #if defined(PART_PLAIN) || defined(PART_MINIMAL)
@@ -51,6 +56,50 @@ uint PartHash(uint v)
 #endif
 }
 
+#if defined(PART_TABLE_CELLS) || defined(PART_TABLE_COEF)
+// The candidates' table: 256 x 256 lattice cells, so the noise would repeat every 256 cells (a new
+// noise, not the package's). The rig binds it zero-filled (--storage 9): timings only.
+StructuredBuffer<float4> _PartGradients : register(t7);
+#endif
+
+#if defined(PART_TABLE_COEF)
+// Each cell's noise polynomial from the table, its coefficients scaled by sqrt(2) (GT_NOISE_SCALE):
+// r0 = (g00, A = g10 - g00), r1 = (B = g01 - g00, C = g00 - g10 - g01 + g11), r2 = (c1, c2, c3, 0)
+// with c1 = -g10.x, c2 = -g01.y, c3 = g10.x + g01.y - g11.x - g11.y, so that
+// GradientNoiseCorners' k1 = A.f + c1, k2 = B.f + c2, k3 = C.f + c3 and n00 = g00.f.
+float PartCellPolynomial(int2 cell, float2 f, out float2 gradient)
+{
+    uint i = (((uint(cell.y) & 255u) << 8u) | (uint(cell.x) & 255u)) * 3u;
+    float4 r0 = _PartGradients[i], r1 = _PartGradients[i + 1u], r2 = _PartGradients[i + 2u];
+    float n00 = r0.x * f.x + r0.y * f.y;
+    float k1 = r0.z * f.x + r0.w * f.y + r2.x;
+    float k2 = r1.x * f.x + r1.y * f.y + r2.y;
+    float k3 = r1.z * f.x + r1.w * f.y + r2.z;
+    float u = GradientNoiseFade(f.x), v = GradientNoiseFade(f.y);
+    float du = GradientNoiseFadeDerivative(f.x), dv = GradientNoiseFadeDerivative(f.y);
+    float uv = u * v;
+    gradient = r0.xy + u * r0.zw + v * r1.xy + uv * r1.zw + float2(du * (k1 + v * k3), dv * (k2 + u * k3));
+    return n00 + u * k1 + v * k2 + uv * k3;
+}
+#endif
+
+// The four corner gradients of lattice cell `cell`: hashed (the package's), or (PART_TABLE_CELLS)
+// one record of two float4 a cell, (g00, g10) and (g01, g11), from the candidates' table.
+void PartCellGradients(int2 cell, out float2 g00, out float2 g10, out float2 g01, out float2 g11)
+{
+#if defined(PART_TABLE_CELLS)
+    uint i = (((uint(cell.y) & 255u) << 8u) | (uint(cell.x) & 255u)) << 1u;
+    float4 r0 = _PartGradients[i], r1 = _PartGradients[i + 1u];
+    g00 = r0.xy; g10 = r0.zw; g01 = r1.xy; g11 = r1.zw;
+#else
+    uint h0 = PartHash(asuint(cell.y)), h1 = PartHash(asuint(cell.y + 1));
+    g00 = GradientNoiseGradient(PartHash(asuint(cell.x) + h0));
+    g10 = GradientNoiseGradient(PartHash(asuint(cell.x + 1) + h0));
+    g01 = GradientNoiseGradient(PartHash(asuint(cell.x) + h1));
+    g11 = GradientNoiseGradient(PartHash(asuint(cell.x + 1) + h1));
+#endif
+}
+
 float PartNoiseAtPoint(TerrainPoint p, float frequency, float2 offset, out float2 gradient)
 {
     int2 cell;
@@ -64,12 +113,13 @@ float PartNoiseAtPoint(TerrainPoint p, float frequency, float2 offset, out float
     GradientNoiseSplitLattice(p.originHi.x, p.local.x, frequency, offset.x, cell.x, f.x);
     GradientNoiseSplitLattice(p.originHi.y, p.local.y, frequency, offset.y, cell.y, f.y);
 #endif
-    uint h0 = PartHash(asuint(cell.y)), h1 = PartHash(asuint(cell.y + 1));
-    float2 g00 = GradientNoiseGradient(PartHash(asuint(cell.x) + h0));
-    float2 g10 = GradientNoiseGradient(PartHash(asuint(cell.x + 1) + h0));
-    float2 g01 = GradientNoiseGradient(PartHash(asuint(cell.x) + h1));
-    float2 g11 = GradientNoiseGradient(PartHash(asuint(cell.x + 1) + h1));
+#if defined(PART_TABLE_COEF)
+    return PartCellPolynomial(cell, f, gradient);
+#else
+    float2 g00, g10, g01, g11;
+    PartCellGradients(cell, g00, g10, g01, g11);
     return GradientNoiseCorners(g00, g10, g01, g11, f, gradient);
+#endif
 }
 
 float PartNoiseAtLocal(float2 local, float frequency, float2 offset, out float2 gradient)
@@ -85,12 +135,13 @@ float PartNoiseAtLocal(float2 local, float frequency, float2 offset, out float2 
     GradientNoiseSplitLocal(local.x, frequency, offset.x, cell.x, f.x);
     GradientNoiseSplitLocal(local.y, frequency, offset.y, cell.y, f.y);
 #endif
-    uint h0 = PartHash(asuint(cell.y)), h1 = PartHash(asuint(cell.y + 1));
-    float2 g00 = GradientNoiseGradient(PartHash(asuint(cell.x) + h0));
-    float2 g10 = GradientNoiseGradient(PartHash(asuint(cell.x + 1) + h0));
-    float2 g01 = GradientNoiseGradient(PartHash(asuint(cell.x) + h1));
-    float2 g11 = GradientNoiseGradient(PartHash(asuint(cell.x + 1) + h1));
+#if defined(PART_TABLE_COEF)
+    return PartCellPolynomial(cell, f, gradient);
+#else
+    float2 g00, g10, g01, g11;
+    PartCellGradients(cell, g00, g10, g01, g11);
     return GradientNoiseCorners(g00, g10, g01, g11, f, gradient);
+#endif
 }
 
 float PartOctaveNoise(TerrainPoint p, float4 noise, float octaveCount, out float2 gradient)
@@ -253,7 +304,8 @@ TerrainVaryings domain_part(PART_FACTORS factors, const OutputPatch<TileCorner, 
 #if !defined(PART_NO_COLOUR) && defined(GT_HEIGHT_COLOR)
     float4 hc = HeightColorSettings();
     float2 unusedGradient;
-    colorNoise = hc.y * PartNoiseAtPoint(q, hc.z, GradientNoiseStreamOffset(GT_COLOR_NOISE_STREAM), unusedGradient);
+    // As the stage without the origin's code: q has no hi part, the split without TwoProduct.
+    colorNoise = hc.y * PartNoiseAtLocal(q.local, hc.z, GradientNoiseStreamOffset(GT_COLOR_NOISE_STREAM), unusedGradient);
 #endif
     float3 positionOS = TerrainToObject(position);
     float3 shading = PackNormalAndHeightWeight(GT_ObjectToWorldNormal(normalOS), TerrainHeightWeight(absoluteHeight, colorNoise));

@@ -425,6 +425,16 @@ namespace GregoryTerrain.Rig
             ("no_colour", "the height colour's noise"),
             ("plain", "no noise, no colour: the plain domain stage"),
             ("minimal", "a minimal Gregory evaluator drawing the same triangles: patch by multiply, q and (u, v) in plain float, position and normal"),
+            ("table_cells", "a candidate noise that repeats every 256 cells: each cell's corner gradients from a 256 x 256 table (2 float4 loads) instead of the hashes"),
+            ("table_coef", "the same table holding each cell's noise polynomial (3 float4 loads)"),
+        };
+
+        /// <summary>The zero-filled table a candidate part reads (binding 9, t7): "--storage 9:BYTES", or "".</summary>
+        static string PartStorage(string part) => part switch
+        {
+            "table_cells" => " --storage 9:" + (256 * 256 * 2 * 16),
+            "table_coef" => " --storage 9:" + (256 * 256 * 3 * 16),
+            _ => "",
         };
 
         /// <summary>The fair sizes (tiles, F) whose domain stage is broken down into DomainParts.</summary>
@@ -434,7 +444,7 @@ namespace GregoryTerrain.Rig
 
         /// <summary>The fair variant's stages with the domain stage of breakdown part `part`.</summary>
         static string PartStages(string part) =>
-            $"--vert @SPV@/{FairVariant}/vert.spv --tesc @SPV@/{FairVariant}/tesc.spv --tese @SPV@/parts/{part}.spv --frag @SPV@/{FairVariant}/frag.spv";
+            $"--vert @SPV@/{FairVariant}/vert.spv --tesc @SPV@/{FairVariant}/tesc.spv --tese @SPV@/parts/{part}.spv --frag @SPV@/{FairVariant}/frag.spv{PartStorage(part)}";
 
         /// <summary>Folder of the plan's jobs/ holding the static meshes' index orders (GridIndexOrder files).</summary>
         public const string OrdersDir = "orders";
