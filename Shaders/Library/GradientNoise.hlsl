@@ -70,14 +70,59 @@ float GradientNoiseCorners(float2 g00, float2 g10, float2 g01, float2 g11, float
     return GT_NOISE_SCALE * n;
 }
 
+// --- Tiled noise (GT_NOISE_TABLE; C# GradientNoiseTable) ----------------------------------------
+// The lattice wrapped modulo 256: the noise repeats every 256 cells. Each cell's polynomial comes
+// from three float4 rows of a table instead of six hashes and four gradient reads (the includer
+// defines GradientNoiseTableRows(uint firstRow, out float4 r0, out float4 r1, out float4 r2),
+// reading its buffer): scaled by GT_NOISE_SCALE, r0 = (g00, A), r1 = (B, C), r2 = (c1, c2, c3, 0)
+// with A = g10 - g00, B = g01 - g00, C = (g00 - g10) - (g01 - g11), c1 = -g10.x, c2 = -g01.y,
+// c3 = g10.x + g01.y - g11.x - g11.y, so k1 = A.f + c1, k2 = B.f + c2, k3 = C.f + c3.
+
+uint GradientNoiseTableFirstRow(int2 cell)
+{
+    return (((uint(cell.y) & 255u) << 8u) | (uint(cell.x) & 255u)) * 3u;
+}
+
+// The cell's noise from its rows: GradientNoiseCorners' polynomial, coefficients precomputed.
+float GradientNoiseTablePolynomial(float4 r0, float4 r1, float4 r2, float2 f, out float2 gradient)
+{
+    float n00 = r0.x * f.x + r0.y * f.y;
+    float k1 = (r0.z * f.x + r0.w * f.y) + r2.x;
+    float k2 = (r1.x * f.x + r1.y * f.y) + r2.y;
+    float k3 = (r1.z * f.x + r1.w * f.y) + r2.z;
+    float u = GradientNoiseFade(f.x), v = GradientNoiseFade(f.y);
+    float du = GradientNoiseFadeDerivative(f.x), dv = GradientNoiseFadeDerivative(f.y);
+    float uv = u * v;
+    gradient = r0.xy + u * r0.zw + v * r1.xy + uv * r1.zw + float2(du * (k1 + v * k3), dv * (k2 + u * k3));
+    return n00 + u * k1 + v * k2 + uv * k3;
+}
+
+// The four corner gradients of lattice cell `cell` (wrapped modulo 256 for the tiled noise).
+void GradientNoiseCornerGradients(int2 cell, out float2 g00, out float2 g10, out float2 g01, out float2 g11)
+{
+#if defined(GT_NOISE_TABLE)
+    int2 c0 = cell & 255, c1 = (cell + 1) & 255;
+#else
+    int2 c0 = cell, c1 = cell + 1;
+#endif
+    g00 = GradientNoiseGradient(GradientNoiseHash2(c0));
+    g10 = GradientNoiseGradient(GradientNoiseHash2(int2(c1.x, c0.y)));
+    g01 = GradientNoiseGradient(GradientNoiseHash2(int2(c0.x, c1.y)));
+    g11 = GradientNoiseGradient(GradientNoiseHash2(c1));
+}
+
 // Noise in lattice cell `cell` at fraction f (normally in [0, 1]); gradient w.r.t. the lattice coordinate.
 float GradientNoiseCell(int2 cell, float2 f, out float2 gradient)
 {
-    float2 g00 = GradientNoiseGradient(GradientNoiseHash2(cell));
-    float2 g10 = GradientNoiseGradient(GradientNoiseHash2(cell + int2(1, 0)));
-    float2 g01 = GradientNoiseGradient(GradientNoiseHash2(cell + int2(0, 1)));
-    float2 g11 = GradientNoiseGradient(GradientNoiseHash2(cell + int2(1, 1)));
+#if defined(GT_NOISE_TABLE)
+    float4 r0, r1, r2;
+    GradientNoiseTableRows(GradientNoiseTableFirstRow(cell), r0, r1, r2);
+    return GradientNoiseTablePolynomial(r0, r1, r2, f, gradient);
+#else
+    float2 g00, g10, g01, g11;
+    GradientNoiseCornerGradients(cell, g00, g10, g01, g11);
     return GradientNoiseCorners(g00, g10, g01, g11, f, gradient);
+#endif
 }
 
 // Fade(t + s) - Fade(t) as the quintic's exact Taylor polynomial in the step s: every term carries
@@ -94,12 +139,11 @@ float GradientNoiseFadeStep(float t, float s)
 // K(cell, f + step) - K(cell, f) within one cell's polynomial from the precise step (lattice units):
 // linear ramps differ by g . step, products by dA B1 + A0 dB, fades by GradientNoiseFadeStep.
 // gradient: at f + step (lattice units); baseValue: K at f (plain float).
+// The tiled noise takes the wrapped corners' gradients here, not its table: the steps need them.
 float GradientNoiseCellDifference(int2 cell, float2 f, float2 step, out float2 gradient, out float baseValue)
 {
-    float2 g00 = GradientNoiseGradient(GradientNoiseHash2(cell));
-    float2 g10 = GradientNoiseGradient(GradientNoiseHash2(cell + int2(1, 0)));
-    float2 g01 = GradientNoiseGradient(GradientNoiseHash2(cell + int2(0, 1)));
-    float2 g11 = GradientNoiseGradient(GradientNoiseHash2(cell + int2(1, 1)));
+    float2 g00, g10, g01, g11;
+    GradientNoiseCornerGradients(cell, g00, g10, g01, g11);
     float2 h = f - 1.0;
     float n00 = g00.x * f.x + g00.y * f.y;
     float n10 = g10.x * h.x + g10.y * f.y;

@@ -90,9 +90,11 @@ namespace GregoryTerrain
         /// <summary>
         /// Noise in cell <c>(ix, iy)</c> at fraction <c>(fx, fy)</c> (normally in [0, 1]); the core every
         /// float path shares. Its gradient is with respect to the lattice coordinate.
+        /// <paramref name="tiled"/>: the tiled noise (<see cref="GradientNoiseTable"/>, GT_NOISE_TABLE).
         /// </summary>
-        public static float EvaluateCell(int ix, int iy, float fx, float fy, out Float2 gradient)
+        public static float EvaluateCell(int ix, int iy, float fx, float fy, out Float2 gradient, bool tiled = false)
         {
+            if (tiled) return GradientNoiseTable.EvaluateCell(ix, iy, fx, fy, out gradient);
             Float2 g00 = Gradient(Hash(ix, iy));
             Float2 g10 = Gradient(Hash(unchecked(ix + 1), iy));
             Float2 g01 = Gradient(Hash(ix, unchecked(iy + 1)));
@@ -137,20 +139,29 @@ namespace GregoryTerrain
             return s * (f1 + s * (f2 + s * (f3 + s * (f4 + s * 6f))));
         }
 
+        /// <summary>The four corner gradients of cell (ix, iy): hashed, or wrapped modulo 256 when <paramref name="tiled"/>.</summary>
+        static void CornerGradients(int ix, int iy, bool tiled, out Float2 g00, out Float2 g10, out Float2 g01, out Float2 g11)
+        {
+            if (tiled) { GradientNoiseTable.CornerGradients(ix, iy, out g00, out g10, out g01, out g11); return; }
+            g00 = Gradient(Hash(ix, iy));
+            g10 = Gradient(Hash(unchecked(ix + 1), iy));
+            g01 = Gradient(Hash(ix, unchecked(iy + 1)));
+            g11 = Gradient(Hash(unchecked(ix + 1), unchecked(iy + 1)));
+        }
+
         /// <summary>
         /// <c>K(cell, f + step) - K(cell, f)</c> within one lattice cell's polynomial, from the precise
         /// step (lattice units, per axis; f + step may leave [0, 1] slightly: the polynomial goes on
         /// smoothly). The corner ramps are linear, so their differences are <c>g . step</c> exactly;
         /// products use <c>A1 B1 - A0 B0 = dA B1 + A0 dB</c>; fades use <see cref="FadeStep"/>.
         /// <paramref name="gradient"/>: d K / d(lattice) at <c>f + step</c>; <paramref name="baseValue"/>:
-        /// K at f (plain float, for uses that do not need the precision).
+        /// K at f (plain float, for uses that do not need the precision). The tiled noise takes the
+        /// wrapped corners' gradients here (not its table: the steps need the gradients themselves).
         /// </summary>
-        public static float CellDifference(int ix, int iy, float fx, float fy, float sx, float sy, out Float2 gradient, out float baseValue)
+        public static float CellDifference(int ix, int iy, float fx, float fy, float sx, float sy, out Float2 gradient, out float baseValue,
+                                           bool tiled = false)
         {
-            Float2 g00 = Gradient(Hash(ix, iy));
-            Float2 g10 = Gradient(Hash(unchecked(ix + 1), iy));
-            Float2 g01 = Gradient(Hash(ix, unchecked(iy + 1)));
-            Float2 g11 = Gradient(Hash(unchecked(ix + 1), unchecked(iy + 1)));
+            CornerGradients(ix, iy, tiled, out Float2 g00, out Float2 g10, out Float2 g01, out Float2 g11);
             float gx = fx - 1f, gy = fy - 1f;
             float n00 = g00.x * fx + g00.y * fy;
             float n10 = g10.x * gx + g10.y * fy;
@@ -173,19 +184,18 @@ namespace GregoryTerrain
 
         /// <summary>
         /// The double reference: same hash, same gradients (the float constants, widened), same
-        /// formula, double arithmetic. Coordinates must be below 2^31 in magnitude.
+        /// formula, double arithmetic. Coordinates must be below 2^31 in magnitude. <paramref name="tiled"/>:
+        /// the tiled noise's reference, the corners wrapped modulo 256 (its table's values unrounded).
         /// </summary>
-        public static double Evaluate(double x, double y, out Double2 gradient)
+        public static double Evaluate(double x, double y, out Double2 gradient, bool tiled = false)
         {
             double flx = Math.Floor(x), fly = Math.Floor(y);
             if (!(Math.Abs(flx) < 2147483647.0 && Math.Abs(fly) < 2147483647.0))
                 throw new ArgumentException(FormattableString.Invariant($"noise coordinate ({x:R}, {y:R}) must be finite and below 2^31"), nameof(x));
             int ix = (int)flx, iy = (int)fly;
             double fx = x - flx, fy = y - fly;
-            Double2 g00 = Gradient(Hash(ix, iy));
-            Double2 g10 = Gradient(Hash(unchecked(ix + 1), iy));
-            Double2 g01 = Gradient(Hash(ix, unchecked(iy + 1)));
-            Double2 g11 = Gradient(Hash(unchecked(ix + 1), unchecked(iy + 1)));
+            CornerGradients(ix, iy, tiled, out Float2 f00, out Float2 f10, out Float2 f01, out Float2 f11);
+            Double2 g00 = f00, g10 = f10, g01 = f01, g11 = f11;
             double gx = fx - 1.0, gy = fy - 1.0;
             double n00 = g00.x * fx + g00.y * fy;
             double n10 = g10.x * gx + g10.y * fy;
@@ -213,11 +223,11 @@ namespace GregoryTerrain
         /// offset's fraction, are added in float. The cell is then renormalised so the fraction lies in
         /// [0, 1]. With origin 0 this is <c>Evaluate(frequency * q + offset)</c> up to one rounding.
         /// </summary>
-        public static float AtPoint(TerrainPoint p, float frequency, Float2 offset, out Float2 gradient)
+        public static float AtPoint(TerrainPoint p, float frequency, Float2 offset, out Float2 gradient, bool tiled = false)
         {
             SplitLattice(p.originHi.x, p.local.x, frequency, offset.x, out int ix, out float fx);
             SplitLattice(p.originHi.y, p.local.y, frequency, offset.y, out int iy, out float fy);
-            return EvaluateCell(ix, iy, fx, fy, out gradient);
+            return EvaluateCell(ix, iy, fx, fy, out gradient, tiled);
         }
 
         /// <summary>One axis of <see cref="AtPoint"/>: <c>frequency * (hi + local) + offset = cell + fraction</c>.</summary>
@@ -247,11 +257,11 @@ namespace GregoryTerrain
         }
 
         /// <summary>HLSL <c>GradientNoiseAtLocal</c>: <see cref="AtPoint"/> of a point whose originHi is 0, bit for bit.</summary>
-        public static float AtLocal(Float2 local, float frequency, Float2 offset, out Float2 gradient)
+        public static float AtLocal(Float2 local, float frequency, Float2 offset, out Float2 gradient, bool tiled = false)
         {
             SplitLocal(local.x, frequency, offset.x, out int ix, out float fx);
             SplitLocal(local.y, frequency, offset.y, out int iy, out float fy);
-            return EvaluateCell(ix, iy, fx, fy, out gradient);
+            return EvaluateCell(ix, iy, fx, fy, out gradient, tiled);
         }
 
         /// <summary>

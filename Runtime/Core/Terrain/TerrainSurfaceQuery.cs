@@ -72,6 +72,7 @@ namespace GregoryTerrain
 
         readonly PatchGrid _grid;
         readonly bool _noiseOn;
+        readonly bool _tiled;     // the tiled noise (GT_NOISE_TABLE)
         readonly NoiseSettings _noise;
         readonly double[] _frequency;        // octave k's frequency (the float sequence, widened)
         readonly Double2[] _offset;          // octave k's stream offset
@@ -101,14 +102,15 @@ namespace GregoryTerrain
 
         /// <summary>
         /// A query over <paramref name="grid"/> (validated), with <paramref name="noise"/> (validated;
-        /// null: no noise). Precomputes the bounds the ray march needs; nothing is allocated later.
+        /// null: no noise; <paramref name="tiledNoise"/>: the tiled noise of GT_NOISE_TABLE). Precomputes the bounds the ray march needs; nothing is allocated later.
         /// </summary>
-        public TerrainSurfaceQuery(PatchGrid grid, NoiseSettings? noise)
+        public TerrainSurfaceQuery(PatchGrid grid, NoiseSettings? noise, bool tiledNoise = false)
         {
             if (grid == null) throw new ArgumentNullException(nameof(grid));
             grid.Validate();
             _grid = grid;
             _noiseOn = noise.HasValue;
+            _tiled = tiledNoise;
             int n = 0;
             if (_noiseOn)
             {
@@ -202,7 +204,7 @@ namespace GregoryTerrain
         }
 
         /// <summary>
-        /// p(x, y) with every octave and its gradient d p / d q: <see cref="OctaveNoise.Evaluate(double, double, NoiseSettings, double, out Double2)"/>
+        /// p(x, y) with every octave and its gradient d p / d q: <see cref="OctaveNoise.Evaluate(double, double, NoiseSettings, double, out Double2, bool)"/>
         /// at the full count, step for step (same sums in the same order), from precomputed octave constants.
         /// </summary>
         double NoiseHeight(double x, double y, out Double2 gradient)
@@ -212,7 +214,7 @@ namespace GregoryTerrain
             for (int k = 0; k < _frequency.Length; k++)
             {
                 double f = _frequency[k];
-                double nk = GradientNoise.Evaluate(f * x + _offset[k].x, f * y + _offset[k].y, out Double2 gk);
+                double nk = GradientNoise.Evaluate(f * x + _offset[k].x, f * y + _offset[k].y, out Double2 gk, _tiled);
                 n += w * nk;
                 g += gk * (w * f);
                 w *= invBeta;
@@ -237,7 +239,7 @@ namespace GregoryTerrain
                 for (int k = 0; k < _frequency.Length; k++)
                 {
                     double f = _frequency[k];
-                    n += w * GradientNoise.Evaluate(f * x + _offset[k].x, f * y + _offset[k].y, out _);
+                    n += w * GradientNoise.Evaluate(f * x + _offset[k].x, f * y + _offset[k].y, out _, _tiled);
                     w *= invBeta;
                     partial[k + 1] = _noise.amplitude * n;
                 }

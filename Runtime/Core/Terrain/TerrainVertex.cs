@@ -15,6 +15,8 @@ namespace GregoryTerrain
         PaperMode = 4,
         /// <summary>GT_SNOW: the surface is raised by the snow depth (<see cref="TerrainInputs.Snow"/>).</summary>
         Snow = 8,
+        /// <summary>GT_NOISE_TABLE: the height and colour noise are the tiled noise (<see cref="GradientNoiseTable"/>).</summary>
+        NoiseTable = 16,
     }
 
     /// <summary>A point of the Gregory surface (no noise yet), terrain space. HLSL <c>TerrainSurfacePoint</c>.</summary>
@@ -241,7 +243,7 @@ namespace GregoryTerrain
             {
                 Double2 o = origin.Value;
                 var noise = new NoiseSettings(p.noise.x, p.noise.y, p.noise.z, p.noise.w, (int)p.noiseOctaves.x);
-                s.z += OctaveNoise.Evaluate(o.x, o.y, noise, OutputOffsetOctaves(p), out _);
+                s.z += OctaveNoise.Evaluate(o.x, o.y, noise, OutputOffsetOctaves(p), out _, (keywords & TerrainKeywords.NoiseTable) != 0);
             }
             return s;
         }
@@ -266,6 +268,7 @@ namespace GregoryTerrain
         {
             Float3 position = OutputSurfacePosition(inputs, s, keywords), dPdu = s.dPdu, dPdv = s.dPdv;
             float noiseHeight = 0f;   // the absolute p(q)
+            bool tiled = (keywords & TerrainKeywords.NoiseTable) != 0;
             if ((keywords & TerrainKeywords.Noise) != 0)
             {
                 // Noise lives on the global point; in paper mode a clamped vertex takes the noise of
@@ -281,14 +284,14 @@ namespace GregoryTerrain
                     // Deep zoom: p(q) - p(O) from precise differences, like the surface (precision.md).
                     TerrainPoint origin = RelativeSurface.OriginPoint(originF);
                     position.z += OctaveNoise.Relative(s.q, origin, RelativeSurface.Difference(s.q, origin),
-                                                       inputs.NoiseSettingsStruct(), octaves, out gradient);
+                                                       inputs.NoiseSettingsStruct(), octaves, out gradient, tiled);
                     // The height colour needs the absolute p(q); HLSL evaluates it only with GT_HEIGHT_COLOR.
                     if ((keywords & TerrainKeywords.HeightColor) != 0)
-                        noiseHeight = OctaveNoise.Evaluate(noisePoint, inputs.NoiseSettingsStruct(), octaves, out _);
+                        noiseHeight = OctaveNoise.Evaluate(noisePoint, inputs.NoiseSettingsStruct(), octaves, out _, tiled);
                 }
                 else
                 {
-                    noiseHeight = OctaveNoise.Evaluate(noisePoint, inputs.NoiseSettingsStruct(), octaves, out gradient);
+                    noiseHeight = OctaveNoise.Evaluate(noisePoint, inputs.NoiseSettingsStruct(), octaves, out gradient, tiled);
                     position.z += noiseHeight;
                 }
                 // q = (a + u (e - a), b + v (f - b)): the chain rule scales the gradient by the region size.
@@ -314,7 +317,13 @@ namespace GregoryTerrain
                 normal = GregoryEval.NormalFromDerivatives(dPdu, dPdv),
             };
             if ((keywords & TerrainKeywords.HeightColor) != 0)
-                o.colorNoise = HeightColor.ColorNoise(s.q, inputs.HeightColorSettings());
+            {
+                // Without a hi part the HLSL splits without TwoProduct (HeightColorNoiseAtLocal): the
+                // same value bit for bit, mirrored here step for step.
+                bool local = s.q.originHi.x == 0f && s.q.originHi.y == 0f;
+                o.colorNoise = local ? HeightColor.ColorNoiseAtLocal(s.q.local, inputs.HeightColorSettings(), tiled)
+                                     : HeightColor.ColorNoise(s.q, inputs.HeightColorSettings(), tiled);
+            }
             return o;
         }
 
