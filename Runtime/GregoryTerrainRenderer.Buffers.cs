@@ -138,6 +138,12 @@ namespace GregoryTerrain
             _boundNoiseCells = table;
         }
 
+        /// <summary>True while the renderer holds the tiled noise's table (the Unity-side tests check it is made only then).</summary>
+        internal bool HasNoiseTable => _noiseCells != null;
+
+        /// <summary>The property ID of <c>_NoiseCells</c> (for the Unity-side tests).</summary>
+        internal static int NoiseCellsPropertyId => ShaderIds.NoiseCells;
+
         void ReleaseNoiseTable()
         {
             _noiseCells?.Release(); _noiseCells = null;
