@@ -68,6 +68,7 @@ namespace GregoryTerrain.Tests
             var r = _t.Renderer("terrain");
             Camera a = _t.Camera("a");
             _t.Asset.EnableKeyword(ShaderIds.NoiseKeyword);
+            _t.Asset.DisableKeyword(ShaderIds.HeightColorKeyword);   // whatever the toggles' defaults did
             _t.Asset.DisableKeyword(ShaderIds.NoiseTableKeyword);
             r.DrawFor(a);
             Assert.That(r.HasNoiseTable, Is.False, "hashed noise (the default): no table");
