@@ -10,6 +10,9 @@ namespace GregoryTerrain
         // of every frame. ReleaseGpuResources clears _uploadedGrid, so it cannot hold this.
         PatchGridAsset _failedGrid;
         int _failedVersion;
+        // The tiled noise's cell table (GT_NOISE_TABLE), while the material's noise is tiled, and the
+        // table the property block holds now (null after the block is cleared).
+        GraphicsBuffer _noiseCells, _boundNoiseCells;
 
         /// <summary>Uploads the grid when it is new or changed; false when it cannot be drawn.</summary>
         bool EnsureUploaded()
@@ -98,6 +101,54 @@ namespace GregoryTerrain
             return true;
         }
 
+        /// <summary>
+        /// True when the material's noise is tiled: GT_NOISE_TABLE with GT_NOISE or GT_HEIGHT_COLOR
+        /// (the table alone changes nothing: no noise reads it).
+        /// </summary>
+        bool NoiseTableOn() =>
+            material != null && material.IsKeywordEnabled(ShaderIds.NoiseTableKeyword)
+            && (material.IsKeywordEnabled(ShaderIds.NoiseKeyword) || material.IsKeywordEnabled(ShaderIds.HeightColorKeyword));
+
+        /// <summary>
+        /// The tiled noise's table (<c>_NoiseCells</c>: 256 x 256 cells, 3 float4 each, 3 MiB), made
+        /// from Core's <see cref="GradientNoiseTable"/> the first time the noise is tiled; released
+        /// and null while it is not, so the default (hashed) noise holds no table at all.
+        /// </summary>
+        GraphicsBuffer EnsureNoiseTable()
+        {
+            if (!NoiseTableOn())
+            {
+                ReleaseNoiseTable();
+                return null;
+            }
+            if (_noiseCells != null) return _noiseCells;
+            float[] floats = GradientNoiseTable.Floats;   // shared with Core: read, never written
+            _noiseCells = new GraphicsBuffer(GraphicsBuffer.Target.Structured,
+                GradientNoiseTable.Size * GradientNoiseTable.Size * GradientNoiseTable.RowsPerCell, GpuLayout.Float4Stride);
+            _noiseCells.SetData(floats);
+            return _noiseCells;
+        }
+
+        /// <summary>The table on the property block: set when the table is new (or the block was cleared), not per frame.</summary>
+        void UpdateNoiseTableBinding()
+        {
+            GraphicsBuffer table = EnsureNoiseTable();
+            if (table == null || table == _boundNoiseCells) return;   // off: the variants drawn do not read _NoiseCells
+            SetBuffer(ShaderIds.NoiseCells, table);
+            _boundNoiseCells = table;
+        }
+
+        /// <summary>True while the renderer holds the tiled noise's table (the Unity-side tests check it is made only then).</summary>
+        internal bool HasNoiseTable => _noiseCells != null;
+
+        /// <summary>The property ID of <c>_NoiseCells</c> (for the Unity-side tests).</summary>
+        internal static int NoiseCellsPropertyId => ShaderIds.NoiseCells;
+
+        void ReleaseNoiseTable()
+        {
+            _noiseCells?.Release(); _noiseCells = null;
+        }
+
         /// <summary>Releases every GPU buffer this renderer holds. Safe to call twice.</summary>
         public void ReleaseGpuResources()
         {
@@ -105,6 +156,7 @@ namespace GregoryTerrain
             _regions?.Release(); _regions = null;
             _gridLines?.Release(); _gridLines = null;
             _fallbackIndices?.Release(); _fallbackIndices = null;
+            ReleaseNoiseTable();
             _cache.Release();
             _uploadedGrid = null;
             _uploadedPatchGrid = null;
@@ -114,6 +166,7 @@ namespace GregoryTerrain
             _drawModeMaterial = null;   // read the SubShader's tag again (it may change with the shader)
             _props?.Clear();
             _boundSnowDepth = null;   // the block no longer holds the snow map
+            _boundNoiseCells = null;  // nor the noise table
         }
 
         /// <summary>Grid uploads since this renderer was created (once per asset version; the Unity-side tests check it).</summary>

@@ -31,7 +31,7 @@ namespace GregoryTerrain
         /// </summary>
         static readonly string[] AssetKeywords =
         {
-            ShaderIds.NoiseKeyword, ShaderIds.HeightColorKeyword,
+            ShaderIds.NoiseKeyword, ShaderIds.HeightColorKeyword, ShaderIds.NoiseTableKeyword,
             ShaderIds.DebugNormalsKeyword, ShaderIds.DebugPatchIdKeyword, ShaderIds.DebugTessFactorKeyword,
         };
 
@@ -136,16 +136,20 @@ namespace GregoryTerrain
 
         /// <summary>
         /// What a Snow Simulator evaluates its field from: the uploaded grid's buffers (as GpuLayout
-        /// packs them), the constants last sent (any range: the simulator replaces it) and whether the
-        /// material has GT_NOISE. False until a grid is uploaded with valid settings.
+        /// packs them), the constants last sent (any range: the simulator replaces it), whether the
+        /// material has GT_NOISE, and with tiled noise (GT_NOISE_TABLE) the noise table, else null.
+        /// False until a grid is uploaded with valid settings.
         /// </summary>
         internal bool TryGetSnowTerrain(out GraphicsBuffer controlPoints, out GraphicsBuffer regions, out GraphicsBuffer gridLines,
-            out TerrainParams parameters, out bool noise, out int gridStamp)
+            out TerrainParams parameters, out bool noise, out GraphicsBuffer noiseCells, out int gridStamp)
         {
             controlPoints = _controlPoints; regions = _regions; gridLines = _gridLines;
             parameters = _params; gridStamp = _gridStamp;
             noise = material != null && material.IsKeywordEnabled(ShaderIds.NoiseKeyword);
-            return _controlPoints != null && _settingsError == null && _uploadedPatchGrid != null;
+            bool ready = _controlPoints != null && _settingsError == null && _uploadedPatchGrid != null;
+            // The table the draw binds (made here if the simulator asks before the next draw does).
+            noiseCells = ready && noise ? EnsureNoiseTable() : null;
+            return ready;
         }
 
         /// <summary>The snow map on the property block: set when the simulator's buffer or size changes, not per frame.</summary>

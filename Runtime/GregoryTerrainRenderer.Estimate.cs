@@ -33,7 +33,7 @@ namespace GregoryTerrain
             }
             else _estimateInputs = _estimateInputs.WithParams(_params);
             Matrix4x4 m = ObjectToClip(cam);
-            var keywords = material != null && material.IsKeywordEnabled(ShaderIds.NoiseKeyword) ? TerrainKeywords.Noise : TerrainKeywords.None;
+            TerrainKeywords keywords = NoiseKeywords();
             var partitioning = _usesCache ? TessellationPartitioning.Integer : TessellationPartitioning.FractionalOdd;
             return TerrainTriangleEstimate.InView(_estimateInputs, ToFloat4x4(m), new Float2(w, h), keywords, partitioning, maxTiles);
         }

@@ -15,11 +15,12 @@ namespace GregoryTerrain
         PatchGridAsset _queryAsset;
         int _queryVersion;
         NoiseSettings? _queryNoise;
+        bool _queryTiledNoise;
 
         /// <summary>
         /// The Core query for the current grid and noise (GT_NOISE on the material: the renderer's noise
-        /// settings with every octave), rebuilt when the grid's version, the noise settings or the keyword
-        /// change; null without a valid grid. Main thread; the object it returns may then be used from any thread.
+        /// settings with every octave; tiled with GT_NOISE_TABLE), rebuilt when the grid's version, the noise
+        /// settings or either keyword change; null without a valid grid. Main thread; the object it returns may then be used from any thread.
         /// </summary>
         internal TerrainSurfaceQuery SurfaceQuery
         {
@@ -29,9 +30,10 @@ namespace GregoryTerrain
                 NoiseSettings? noise = material != null && material.IsKeywordEnabled(ShaderIds.NoiseKeyword)
                     ? new NoiseSettings(noiseAmplitude, noiseFrequency, noiseAlpha, noiseBeta, noiseOctaves)
                     : (NoiseSettings?)null;
-                if (_queryAsset == grid && _queryVersion == grid.Version && Nullable.Equals(_queryNoise, noise))
+                bool tiled = noise.HasValue && material.IsKeywordEnabled(ShaderIds.NoiseTableKeyword);
+                if (_queryAsset == grid && _queryVersion == grid.Version && Nullable.Equals(_queryNoise, noise) && _queryTiledNoise == tiled)
                     return _query;
-                try { _query = new TerrainSurfaceQuery(grid.ToPatchGrid(), noise); }
+                try { _query = new TerrainSurfaceQuery(grid.ToPatchGrid(), noise, tiledNoise: tiled); }
                 catch (ArgumentException e)
                 {
                     Debug.LogError($"{name}: cannot answer height queries: {e.Message}", this);
@@ -42,6 +44,7 @@ namespace GregoryTerrain
                 _queryAsset = grid;
                 _queryVersion = grid.Version;
                 _queryNoise = noise;
+                _queryTiledNoise = tiled;
                 return _query;
             }
         }

@@ -65,6 +65,7 @@ namespace GregoryTerrain
                     controlPoints = _controlPoints, regions = _regions, gridLines = _gridLines,
                     gridStamp = _gridStamp,
                     effects = Effects(snow),
+                    noiseCells = _noiseCells,
                     snowDepth = snowSource != null ? snowSource.DepthBuffer : null,
                     snowMapSize = snowSource != null ? snowSource.MapSize : default,
                     snowVersion = snowSource != null ? snowSource.DepthVersion : 0,
@@ -135,6 +136,7 @@ namespace GregoryTerrain
             var e = VertexCachePass.Effects.None;
             if (material.IsKeywordEnabled(ShaderIds.NoiseKeyword)) e |= VertexCachePass.Effects.Noise;
             if (material.IsKeywordEnabled(ShaderIds.HeightColorKeyword)) e |= VertexCachePass.Effects.HeightColor;
+            if (_noiseCells != null) e |= VertexCachePass.Effects.NoiseTable;   // made by UpdateNoiseTableBinding while the noise is tiled
             if (snow) e |= VertexCachePass.Effects.Snow;
             return e;
         }

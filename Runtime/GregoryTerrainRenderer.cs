@@ -44,8 +44,9 @@ namespace GregoryTerrain
         /// <c>_GtObjectToWorld/_GtWorldToObject</c> (128 bytes, when the Transform changes),
         /// <c>_TileLattice</c> (16 bytes, when anchored tiles are anchored again: a zoom, a re-snap), the
         /// whole TerrainParams block (10 float4, 160 bytes, when a setting or the grid changes) and the
-        /// buffers (on a new asset version). What Unity does with the property block inside the draw
-        /// (it builds the draw's constant buffers from it) is Unity's and not counted here. With
+        /// buffers (on a new asset version; the tiled noise's 3 MiB table once, when GT_NOISE_TABLE is
+        /// switched on). What Unity does with the property block inside the draw (it builds the draw's
+        /// constant buffers from it) is Unity's and not counted here. With
         /// Vertex evaluation = Compute cache the steady state is the same: the cache pass compares its
         /// inputs on the CPU and sets and dispatches nothing unless the LOD camera, the range, the
         /// origin, a setting, the grid or the snow map changed.
@@ -473,6 +474,7 @@ namespace GregoryTerrain
                 if (UpdateOutputOffset() || TransformMoved() || _frameDirty) PushMatrices();
             }
             if (_settingsError != null) return false;   // logged once; drawn again after the next valid change
+            UpdateNoiseTableBinding();   // before the cache: its kernels read the same table
             if (!UpdateVertexCache(fallback)) return false;
             UpdateSnowBinding();
             // The range-origin keyword from the very _RangeOrigin just sent (_params): the stages
@@ -590,12 +592,12 @@ namespace GregoryTerrain
         /// While a range origin is set, the shaders output <c>S(q) - S(O)</c> (and the noise as
         /// <c>p(q) - p(O)</c>; internals.md, "Deep-zoom output"): the part left out,
         /// <see cref="TerrainVertex.OutputOffset(PatchGrid, TerrainParams, TerrainKeywords)"/>, in double.
-        /// It changes on a re-snap, and with GT_NOISE also with the range width (the octave count).
+        /// It changes on a re-snap, and with GT_NOISE also with the range width (the octave count) and GT_NOISE_TABLE.
         /// Returns true when it changed (the matrices must be sent again).
         /// </summary>
         bool UpdateOutputOffset()
         {
-            var keywords = material != null && material.IsKeywordEnabled(ShaderIds.NoiseKeyword) ? TerrainKeywords.Noise : TerrainKeywords.None;
+            TerrainKeywords keywords = NoiseKeywords();
             float octaves = TerrainVertex.OutputOffsetOctaves(_params);
             if (_offsetGrid == _uploadedPatchGrid && _offsetKeywords == keywords && _offsetOrigin.Equals(_params.rangeOrigin)
                 && _offsetNoise.Equals(_params.noise) && _offsetOctaves.Equals(octaves)) return false;
@@ -669,6 +671,16 @@ namespace GregoryTerrain
             m02 = f.c2.x, m12 = f.c2.y, m22 = f.c2.z, m32 = f.c2.w,
             m03 = f.c3.x, m13 = f.c3.y, m23 = f.c3.z, m33 = f.c3.w,
         };
+
+        /// <summary>
+        /// The material's keywords that change the height noise, as Core names them: GT_NOISE, and
+        /// with it GT_NOISE_TABLE (tiled noise is another noise, so other heights and offsets).
+        /// </summary>
+        TerrainKeywords NoiseKeywords()
+        {
+            if (material == null || !material.IsKeywordEnabled(ShaderIds.NoiseKeyword)) return TerrainKeywords.None;
+            return material.IsKeywordEnabled(ShaderIds.NoiseTableKeyword) ? TerrainKeywords.Noise | TerrainKeywords.NoiseTable : TerrainKeywords.Noise;
+        }
 
         /// <summary>sum_k amplitude / beta^k over the octaves: the most noise can move a point.</summary>
         float NoiseMargin()

@@ -20,6 +20,8 @@ namespace GregoryTerrain
         public static readonly int ControlPoints = Shader.PropertyToID("_ControlPoints");
         public static readonly int Regions = Shader.PropertyToID("_Regions");
         public static readonly int GridLines = Shader.PropertyToID("_GridLines");
+        /// <summary>The tiled noise's cell table (GT_NOISE_TABLE): Core's <see cref="GradientNoiseTable"/>, sent once.</summary>
+        public static readonly int NoiseCells = Shader.PropertyToID("_NoiseCells");
 
         /// <summary><c>Params[k]</c> is the ID of TerrainParams float4 k (cbuffer order).</summary>
         public static readonly int[] Params = Array.ConvertAll(TerrainParams.PropertyNames, Shader.PropertyToID);
@@ -66,6 +68,8 @@ namespace GregoryTerrain
 
         /// <summary>Material toggles the user sets on the asset (Properties block), mirrored onto the compute kernels.</summary>
         public const string NoiseKeyword = "GT_NOISE", HeightColorKeyword = "GT_HEIGHT_COLOR";
+        /// <summary>Tiled noise: both noises read each lattice cell from <c>_NoiseCells</c> (repeats every 256 cells).</summary>
+        public const string NoiseTableKeyword = "GT_NOISE_TABLE";
         /// <summary>Keywords the renderer sets on its runtime copy of the material (multi_compile_local).</summary>
         public const string VertexCacheKeyword = "GT_VERTEX_CACHE", SnowKeyword = "GT_SNOW", LevelsKeyword = "GT_LOD";
         /// <summary>The range-origin (deep zoom) code of the tessellated passes, set with <c>_RangeOrigin</c> (RelativeSurface.NeedsRangeOriginKeyword).</summary>

@@ -20,7 +20,7 @@ namespace GregoryTerrain
     /// </para>
     /// <para>
     /// The field (detail normal and height per cell) comes from the terrain itself: each step reads
-    /// the renderer's grid buffers, constants and GT_NOISE, and Shaders/Snow/SnowField.compute
+    /// the renderer's grid buffers, constants and GT_NOISE (GT_NOISE_TABLE and its table too), and Shaders/Snow/SnowField.compute
     /// (<c>SnowFieldKernel</c>, the terrain's own vertex path at the cell centres) fills it on the GPU
     /// whenever one of them changed (a new grid, a setting; not the range); the exposure follows,
     /// since it is recomputed whenever the field changed. Alternatives for tests and custom terrains,
@@ -62,10 +62,10 @@ namespace GregoryTerrain
         int _fieldKernel = -1;
         GregoryTerrainRenderer _attached;      // the renderer this simulator is attached to now
         // What the field was last evaluated from: the renderer's upload, its constants for the field
-        // (SnowFieldTerrain.ParamsFor: range-independent) and its noise keyword.
+        // (SnowFieldTerrain.ParamsFor: range-independent) and its noise keywords (GT_NOISE, GT_NOISE_TABLE).
         int _fieldGridStamp = -1;
         TerrainParams _fieldParams;
-        bool _fieldNoise;
+        bool _fieldNoise, _fieldNoiseTable;
         int _terrainVersion, _fieldTerrainVersion = -1;
 
         /// <summary>The simulation settings. Setting them validates them (ArgumentException naming the field and value); a new resolution starts a new, empty snow map.</summary>
@@ -239,15 +239,16 @@ namespace GregoryTerrain
             {
                 if (_fieldKernel < 0) return null;   // no SnowField.compute assigned
                 if (!terrain.TryGetSnowTerrain(out GraphicsBuffer cps, out GraphicsBuffer regions, out GraphicsBuffer lines,
-                        out TerrainParams parameters, out bool noise, out int gridStamp))
+                        out TerrainParams parameters, out bool noise, out GraphicsBuffer noiseCells, out int gridStamp))
                     return null;   // nothing uploaded yet, or settings the renderer cannot draw
                 TerrainParams p = SnowFieldTerrain.ParamsFor(parameters, settings.resolution);
-                if (gridStamp != _fieldGridStamp || noise != _fieldNoise || !SameParams(p, _fieldParams))
+                bool tiled = noiseCells != null;   // tiled noise is another height field
+                if (gridStamp != _fieldGridStamp || noise != _fieldNoise || tiled != _fieldNoiseTable || !SameParams(p, _fieldParams))
                 {
-                    _fieldGridStamp = gridStamp; _fieldNoise = noise; _fieldParams = p;
+                    _fieldGridStamp = gridStamp; _fieldNoise = noise; _fieldNoiseTable = tiled; _fieldParams = p;
                     _terrainVersion++;
                 }
-                if (_fieldTerrainVersion != _terrainVersion) EvaluateField(cps, regions, lines);
+                if (_fieldTerrainVersion != _terrainVersion) EvaluateField(cps, regions, lines, noiseCells);
                 return _field;
             }
             if (_cpuField == null) return null;
@@ -261,11 +262,13 @@ namespace GregoryTerrain
         }
 
         /// <summary>SnowFieldKernel over the R x R cells: the terrain's vertex path at every cell centre.</summary>
-        void EvaluateField(GraphicsBuffer controlPoints, GraphicsBuffer regions, GraphicsBuffer gridLines)
+        void EvaluateField(GraphicsBuffer controlPoints, GraphicsBuffer regions, GraphicsBuffer gridLines, GraphicsBuffer noiseCells)
         {
             TerrainParams p = _fieldParams;
             ShaderIds.SetParams(fieldShader, p);
             if (_fieldNoise) fieldShader.EnableKeyword(ShaderIds.NoiseKeyword); else fieldShader.DisableKeyword(ShaderIds.NoiseKeyword);
+            if (_fieldNoiseTable) fieldShader.EnableKeyword(ShaderIds.NoiseTableKeyword); else fieldShader.DisableKeyword(ShaderIds.NoiseTableKeyword);
+            if (_fieldNoiseTable) fieldShader.SetBuffer(_fieldKernel, ShaderIds.NoiseCells, noiseCells);
             fieldShader.SetBuffer(_fieldKernel, ShaderIds.ControlPoints, controlPoints);
             fieldShader.SetBuffer(_fieldKernel, ShaderIds.Regions, regions);
             fieldShader.SetBuffer(_fieldKernel, ShaderIds.GridLines, gridLines);

@@ -26,7 +26,7 @@ namespace GregoryTerrain
     {
         /// <summary>Effect keywords the kernels evaluate, mirrored from the material onto the compute shader.</summary>
         [Flags]
-        public enum Effects { None = 0, Noise = 1, HeightColor = 2, Snow = 4 }
+        public enum Effects { None = 0, Noise = 1, HeightColor = 2, Snow = 4, NoiseTable = 8 }
 
         /// <summary>Everything one dispatch reads besides the buffers this pass owns.</summary>
         public struct Inputs
@@ -46,6 +46,8 @@ namespace GregoryTerrain
             public GraphicsBuffer snowDepth;
             public Vector4 snowMapSize;
             public int snowVersion;
+            /// <summary>With <see cref="Effects.NoiseTable"/>: the renderer's <c>_NoiseCells</c> (constant content: only bound, never compared).</summary>
+            public GraphicsBuffer noiseCells;
         }
 
         GraphicsBuffer _factors, _vertices;
@@ -125,12 +127,13 @@ namespace GregoryTerrain
             shader.SetVector(ShaderIds.LodScreenSize, inputs.screenSize);
             SetKeyword(shader, ShaderIds.NoiseKeyword, (inputs.effects & Effects.Noise) != 0);
             SetKeyword(shader, ShaderIds.HeightColorKeyword, (inputs.effects & Effects.HeightColor) != 0);
+            SetKeyword(shader, ShaderIds.NoiseTableKeyword, (inputs.effects & Effects.NoiseTable) != 0);
             bool snow = (inputs.effects & Effects.Snow) != 0;
             SetKeyword(shader, ShaderIds.SnowKeyword, snow);
             if (snow) shader.SetVector(ShaderIds.SnowMapSize, inputs.snowMapSize);
 
             // Kernel 1 writes the factors (u2, _TileFactorsRW); kernel 2 reads them there and
-            // writes the records (u3, _VertexCacheRW). Both sample the surface: the patch buffers.
+            // writes the records (u3, _VertexCacheRW). Both sample the surface: the patch buffers (and the noise table).
             BindPatchBuffers(shader, _factorsKernel, inputs, snow);
             shader.SetBuffer(_factorsKernel, ShaderIds.TileFactorsRW, _factors);
             BindPatchBuffers(shader, _verticesKernel, inputs, snow);
@@ -177,6 +180,7 @@ namespace GregoryTerrain
             shader.SetBuffer(kernel, ShaderIds.Regions, inputs.regions);
             shader.SetBuffer(kernel, ShaderIds.GridLines, inputs.gridLines);
             if (snow) shader.SetBuffer(kernel, ShaderIds.SnowDepth, inputs.snowDepth);
+            if ((inputs.effects & Effects.NoiseTable) != 0) shader.SetBuffer(kernel, ShaderIds.NoiseCells, inputs.noiseCells);
         }
 
         static void SetKeyword(ComputeShader shader, string keyword, bool on)

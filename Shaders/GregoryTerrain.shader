@@ -28,7 +28,7 @@
 // (the renderer's levels, and its range origin: the deep-zoom code, compiled in only while an origin
 // is sent; the levels compile it too). GT_VERTEX_CACHE and that set only in the tessellated passes
 // (the fallback has no hull/domain stage to feed, and keeps the origin's run-time branch). Depth, shadow and editor passes declare only
-// GT_NOISE, GT_SNOW (and GT_VERTEX_CACHE, GT_RANGE_ORIGIN, GT_LOD), the ones that change the shape or where it comes from.
+// GT_NOISE, GT_NOISE_TABLE, GT_SNOW (and GT_VERTEX_CACHE, GT_RANGE_ORIGIN, GT_LOD), the ones that change the shape or where it comes from.
 // The pipelines' own keywords are multi_compile, only where a pass reads them (the adapters say what
 // each one changes). Each pass defines one GT_PASS_* (and GT_FALLBACK without a tessellator) before
 // its adapter; `frag` writes what that pass needs (TerrainStages.hlsl). Checked off Unity by
@@ -41,6 +41,7 @@ Shader "GregoryTerrain/Terrain"
         [Header(Effects)]
         [Toggle(GT_NOISE)] _GtNoise ("Noise detail", Float) = 1
         [Toggle(GT_HEIGHT_COLOR)] _GtHeightColor ("Height colour", Float) = 1
+        [Toggle(GT_NOISE_TABLE)] _GtNoiseTable ("Tiled noise (faster; repeats every 256 noise cells)", Float) = 0
 
         // One popup for the debug views, as they replace each other: KeywordEnum enables
         // GT_DEBUG_<ENTRY> (the property name, '_', the entry upper-cased), which matches the one
@@ -94,6 +95,7 @@ Shader "GregoryTerrain/Terrain"
             #pragma fragment frag
             // Effects: off = not compiled into the build at all (shader_feature: unused variants are stripped).
             #pragma shader_feature_local GT_NOISE
+            #pragma shader_feature_local GT_NOISE_TABLE
             #pragma multi_compile_local _ GT_SNOW
             #pragma multi_compile_local _ GT_RANGE_ORIGIN GT_LOD
             // Vertex evaluation (renderer setting): the compute pre-pass's cached vertices, switched at run time.
@@ -132,6 +134,7 @@ Shader "GregoryTerrain/Terrain"
             #pragma domain domain_shader
             #pragma fragment frag
             #pragma shader_feature_local GT_NOISE
+            #pragma shader_feature_local GT_NOISE_TABLE
             #pragma multi_compile_local _ GT_SNOW
             #pragma multi_compile_local _ GT_RANGE_ORIGIN GT_LOD
             // Vertex evaluation (renderer setting): the compute pre-pass's cached vertices, switched at run time.
@@ -164,6 +167,7 @@ Shader "GregoryTerrain/Terrain"
             #pragma domain domain_shader
             #pragma fragment frag
             #pragma shader_feature_local GT_NOISE
+            #pragma shader_feature_local GT_NOISE_TABLE
             #pragma multi_compile_local _ GT_SNOW
             #pragma multi_compile_local _ GT_RANGE_ORIGIN GT_LOD
             // Vertex evaluation (renderer setting): the compute pre-pass's cached vertices, switched at run time.
@@ -192,6 +196,7 @@ Shader "GregoryTerrain/Terrain"
             #pragma domain domain_shader
             #pragma fragment frag
             #pragma shader_feature_local GT_NOISE
+            #pragma shader_feature_local GT_NOISE_TABLE
             #pragma multi_compile_local _ GT_SNOW
             #pragma multi_compile_local _ GT_RANGE_ORIGIN GT_LOD
             // Vertex evaluation (renderer setting): the compute pre-pass's cached vertices, switched at run time.
@@ -222,6 +227,7 @@ Shader "GregoryTerrain/Terrain"
             #pragma domain domain_shader
             #pragma fragment frag
             #pragma shader_feature_local GT_NOISE
+            #pragma shader_feature_local GT_NOISE_TABLE
             #pragma multi_compile_local _ GT_SNOW
             #pragma multi_compile_local _ GT_RANGE_ORIGIN GT_LOD
             // Vertex evaluation (renderer setting): the compute pre-pass's cached vertices, switched at run time.
@@ -252,6 +258,7 @@ Shader "GregoryTerrain/Terrain"
             #pragma domain domain_shader
             #pragma fragment frag
             #pragma shader_feature_local GT_NOISE
+            #pragma shader_feature_local GT_NOISE_TABLE
             #pragma multi_compile_local _ GT_SNOW
             #pragma multi_compile_local _ GT_RANGE_ORIGIN GT_LOD
             // Vertex evaluation (renderer setting): the compute pre-pass's cached vertices, switched at run time.
@@ -291,6 +298,7 @@ Shader "GregoryTerrain/Terrain"
             #pragma fragment frag
             // Effects: off = not compiled into the build at all (shader_feature: unused variants are stripped).
             #pragma shader_feature_local GT_NOISE
+            #pragma shader_feature_local GT_NOISE_TABLE
             #pragma multi_compile_local _ GT_SNOW
             #pragma shader_feature_local GT_HEIGHT_COLOR
             #pragma shader_feature_local _ GT_DEBUG_NORMALS GT_DEBUG_PATCH_ID GT_DEBUG_TESS_FACTOR
@@ -323,6 +331,7 @@ Shader "GregoryTerrain/Terrain"
             #pragma vertex vert_fallback
             #pragma fragment frag
             #pragma shader_feature_local GT_NOISE
+            #pragma shader_feature_local GT_NOISE_TABLE
             #pragma multi_compile_local _ GT_SNOW
             // Spot and point lights: the bias direction per vertex from _LightPosition (URP's keyword).
             #pragma multi_compile_vertex _ _CASTING_PUNCTUAL_LIGHT_SHADOW
@@ -348,6 +357,7 @@ Shader "GregoryTerrain/Terrain"
             #pragma vertex vert_fallback
             #pragma fragment frag
             #pragma shader_feature_local GT_NOISE
+            #pragma shader_feature_local GT_NOISE_TABLE
             #pragma multi_compile_local _ GT_SNOW
             #define GT_PASS_DEPTH 1
             #define GT_FALLBACK 1
@@ -370,6 +380,7 @@ Shader "GregoryTerrain/Terrain"
             #pragma vertex vert_fallback
             #pragma fragment frag
             #pragma shader_feature_local GT_NOISE
+            #pragma shader_feature_local GT_NOISE_TABLE
             #pragma multi_compile_local _ GT_SNOW
             // URP's normal packing for the deferred renderer's accurate G-buffer normals.
             #pragma multi_compile_fragment _ _GBUFFER_NORMALS_OCT
@@ -394,6 +405,7 @@ Shader "GregoryTerrain/Terrain"
             #pragma vertex vert_fallback
             #pragma fragment frag
             #pragma shader_feature_local GT_NOISE
+            #pragma shader_feature_local GT_NOISE_TABLE
             #pragma multi_compile_local _ GT_SNOW
             // Editor only: compiled when the Scene view first needs it, not ahead (as Unity's own passes).
             #pragma editor_sync_compilation
@@ -418,6 +430,7 @@ Shader "GregoryTerrain/Terrain"
             #pragma vertex vert_fallback
             #pragma fragment frag
             #pragma shader_feature_local GT_NOISE
+            #pragma shader_feature_local GT_NOISE_TABLE
             #pragma multi_compile_local _ GT_SNOW
             // Editor only: compiled when the Scene view first needs it, not ahead (as Unity's own passes).
             #pragma editor_sync_compilation
@@ -458,6 +471,7 @@ Shader "GregoryTerrain/Terrain"
             #pragma domain domain_shader
             #pragma fragment frag
             #pragma shader_feature_local GT_NOISE
+            #pragma shader_feature_local GT_NOISE_TABLE
             #pragma multi_compile_local _ GT_SNOW
             #pragma multi_compile_local _ GT_RANGE_ORIGIN GT_LOD
             // Vertex evaluation (renderer setting): the compute pre-pass's cached vertices, switched at run time.
@@ -488,6 +502,7 @@ Shader "GregoryTerrain/Terrain"
             #pragma domain domain_shader
             #pragma fragment frag
             #pragma shader_feature_local GT_NOISE
+            #pragma shader_feature_local GT_NOISE_TABLE
             #pragma multi_compile_local _ GT_SNOW
             #pragma multi_compile_local _ GT_RANGE_ORIGIN GT_LOD
             // Vertex evaluation (renderer setting): the compute pre-pass's cached vertices, switched at run time.
@@ -527,6 +542,7 @@ Shader "GregoryTerrain/Terrain"
             #pragma domain domain_shader
             #pragma fragment frag
             #pragma shader_feature_local GT_NOISE
+            #pragma shader_feature_local GT_NOISE_TABLE
             #pragma multi_compile_local _ GT_SNOW
             #pragma multi_compile_local _ GT_RANGE_ORIGIN GT_LOD
             // Vertex evaluation (renderer setting): the compute pre-pass's cached vertices, switched at run time.
@@ -567,6 +583,7 @@ Shader "GregoryTerrain/Terrain"
             #pragma fragment frag
             // Effects: off = not compiled into the build at all (shader_feature: unused variants are stripped).
             #pragma shader_feature_local GT_NOISE
+            #pragma shader_feature_local GT_NOISE_TABLE
             #pragma multi_compile_local _ GT_SNOW
             #pragma multi_compile_local _ GT_RANGE_ORIGIN GT_LOD
             // Vertex evaluation (renderer setting): the compute pre-pass's cached vertices, switched at run time.
@@ -600,6 +617,7 @@ Shader "GregoryTerrain/Terrain"
             #pragma domain domain_shader
             #pragma fragment frag
             #pragma shader_feature_local GT_NOISE
+            #pragma shader_feature_local GT_NOISE_TABLE
             #pragma multi_compile_local _ GT_SNOW
             #pragma multi_compile_local _ GT_RANGE_ORIGIN GT_LOD
             // Vertex evaluation (renderer setting): the compute pre-pass's cached vertices, switched at run time.
@@ -636,6 +654,7 @@ Shader "GregoryTerrain/Terrain"
             #pragma vertex vert_fallback
             #pragma fragment frag
             #pragma shader_feature_local GT_NOISE
+            #pragma shader_feature_local GT_NOISE_TABLE
             #pragma multi_compile_local _ GT_SNOW
             // Editor only: compiled when the Scene view first needs it, not ahead (as Unity's own passes).
             #pragma editor_sync_compilation
@@ -660,6 +679,7 @@ Shader "GregoryTerrain/Terrain"
             #pragma vertex vert_fallback
             #pragma fragment frag
             #pragma shader_feature_local GT_NOISE
+            #pragma shader_feature_local GT_NOISE_TABLE
             #pragma multi_compile_local _ GT_SNOW
             // Editor only: compiled when the Scene view first needs it, not ahead (as Unity's own passes).
             #pragma editor_sync_compilation
@@ -693,6 +713,7 @@ Shader "GregoryTerrain/Terrain"
             #pragma vertex vert_fallback
             #pragma fragment frag
             #pragma shader_feature_local GT_NOISE
+            #pragma shader_feature_local GT_NOISE_TABLE
             #pragma multi_compile_local _ GT_SNOW
             // MSAA: HDRP also binds the depth as a colour target (its keyword).
             #pragma multi_compile _ WRITE_MSAA_DEPTH
@@ -727,6 +748,7 @@ Shader "GregoryTerrain/Terrain"
             #pragma fragment frag
             // Effects: off = not compiled into the build at all (shader_feature: unused variants are stripped).
             #pragma shader_feature_local GT_NOISE
+            #pragma shader_feature_local GT_NOISE_TABLE
             #pragma multi_compile_local _ GT_SNOW
             #pragma shader_feature_local GT_HEIGHT_COLOR
             #pragma shader_feature_local _ GT_DEBUG_NORMALS GT_DEBUG_PATCH_ID GT_DEBUG_TESS_FACTOR
@@ -754,6 +776,7 @@ Shader "GregoryTerrain/Terrain"
             #pragma vertex vert_fallback
             #pragma fragment frag
             #pragma shader_feature_local GT_NOISE
+            #pragma shader_feature_local GT_NOISE_TABLE
             #pragma multi_compile_local _ GT_SNOW
             #define GT_PASS_SHADOWCASTER 1
             #define GT_FALLBACK 1
@@ -788,6 +811,7 @@ Shader "GregoryTerrain/Terrain"
             #pragma fragment frag
             // Effects: off = not compiled into the build at all (shader_feature: unused variants are stripped).
             #pragma shader_feature_local GT_NOISE
+            #pragma shader_feature_local GT_NOISE_TABLE
             #pragma multi_compile_local _ GT_SNOW
             #pragma multi_compile_local _ GT_RANGE_ORIGIN GT_LOD
             // Vertex evaluation (renderer setting): the compute pre-pass's cached vertices, switched at run time.
@@ -821,6 +845,7 @@ Shader "GregoryTerrain/Terrain"
             #pragma domain domain_shader
             #pragma fragment frag
             #pragma shader_feature_local GT_NOISE
+            #pragma shader_feature_local GT_NOISE_TABLE
             #pragma multi_compile_local _ GT_SNOW
             #pragma multi_compile_local _ GT_RANGE_ORIGIN GT_LOD
             // Vertex evaluation (renderer setting): the compute pre-pass's cached vertices, switched at run time.
@@ -853,6 +878,7 @@ Shader "GregoryTerrain/Terrain"
             #pragma fragment frag
             // Effects: off = not compiled into the build at all (shader_feature: unused variants are stripped).
             #pragma shader_feature_local GT_NOISE
+            #pragma shader_feature_local GT_NOISE_TABLE
             #pragma multi_compile_local _ GT_SNOW
             #pragma shader_feature_local GT_HEIGHT_COLOR
             #pragma shader_feature_local _ GT_DEBUG_NORMALS GT_DEBUG_PATCH_ID GT_DEBUG_TESS_FACTOR
@@ -880,6 +906,7 @@ Shader "GregoryTerrain/Terrain"
             #pragma vertex vert_fallback
             #pragma fragment frag
             #pragma shader_feature_local GT_NOISE
+            #pragma shader_feature_local GT_NOISE_TABLE
             #pragma multi_compile_local _ GT_SNOW
             #define GT_PASS_SHADOWCASTER 1
             #define GT_FALLBACK 1

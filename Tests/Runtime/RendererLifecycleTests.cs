@@ -63,6 +63,36 @@ namespace GregoryTerrain.Tests
         }
 
         [Test]
+        public void NoiseTableIsMadeAndSentOnlyWhileTheNoiseIsTiled()
+        {
+            var r = _t.Renderer("terrain");
+            Camera a = _t.Camera("a");
+            _t.Asset.EnableKeyword(ShaderIds.NoiseKeyword);
+            _t.Asset.DisableKeyword(ShaderIds.HeightColorKeyword);   // whatever the toggles' defaults did
+            _t.Asset.DisableKeyword(ShaderIds.NoiseTableKeyword);
+            r.DrawFor(a);
+            Assert.That(r.HasNoiseTable, Is.False, "hashed noise (the default): no table");
+            Assert.That(r.PropertiesSetLastPrepare, Does.Not.Contain(GregoryTerrainRenderer.NoiseCellsPropertyId));
+
+            _t.Asset.EnableKeyword(ShaderIds.NoiseTableKeyword);   // the user switches Tiled noise on
+            r.DrawFor(a);
+            Assert.That(r.HasNoiseTable, Is.True, "tiled noise: the table is made");
+            Assert.That(r.PropertiesSetLastPrepare, Does.Contain(GregoryTerrainRenderer.NoiseCellsPropertyId), "and sent");
+            r.DrawFor(a);
+            Assert.That(r.PropertiesSetLastPrepare, Is.EqualTo(new[] { GregoryTerrainRenderer.RangePropertyId }), "sent once, not per frame");
+
+            _t.Asset.DisableKeyword(ShaderIds.NoiseKeyword);   // the table alone tiles nothing
+            r.DrawFor(a);
+            Assert.That(r.HasNoiseTable, Is.False, "GT_NOISE_TABLE without a noise: released");
+
+            _t.Asset.EnableKeyword(ShaderIds.NoiseKeyword);
+            r.DrawFor(a);
+            Assert.That(r.HasNoiseTable, Is.True);
+            r.enabled = false;
+            Assert.That(r.HasNoiseTable, Is.False, "released on disable");
+        }
+
+        [Test]
         public void DomainReloadHandlerReleasesEverything()
         {
             // ReleaseAll is what the renderer registers with AssemblyReloadEvents.beforeAssemblyReload

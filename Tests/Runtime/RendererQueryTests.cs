@@ -71,5 +71,21 @@ namespace GregoryTerrain.Tests
             Assert.That(_r.Raycast(new Ray { origin = above, direction = new Vector3(0f, -1f, 0f) }, 29f, out _, out _, out _), Is.False, "too short");
             Assert.That(_r.Raycast(new Ray { origin = World(0.4, 0.4, h - 1f), direction = new Vector3(0f, -1f, 0f) }, 100f, out _, out _, out _), Is.False, "from below");
         }
+
+        [Test]
+        public void QueryIsRebuiltWhenTheNoiseIsTiledOrNot()
+        {
+            _t.Asset.EnableKeyword(ShaderIds.NoiseKeyword);
+            _t.Asset.DisableKeyword(ShaderIds.NoiseTableKeyword);
+            TerrainSurfaceQuery hashed = _r.SurfaceQuery;
+            Assert.That(hashed, Is.Not.Null);
+            Assert.That(_r.SurfaceQuery, Is.SameAs(hashed), "nothing changed: the same query");
+            _t.Asset.EnableKeyword(ShaderIds.NoiseTableKeyword);   // tiled noise is another surface
+            TerrainSurfaceQuery tiled = _r.SurfaceQuery;
+            Assert.That(tiled, Is.Not.SameAs(hashed));
+            Assert.That(_r.SurfaceQuery, Is.SameAs(tiled));
+            _t.Asset.DisableKeyword(ShaderIds.NoiseTableKeyword);
+            Assert.That(_r.SurfaceQuery, Is.Not.SameAs(tiled));
+        }
     }
 }

@@ -185,8 +185,8 @@ namespace GregoryTerrain.Rig.Tests
         public void UnityCacheComputeFileCompilesForEveryKeywordCombination()
         {
             string src = Path.Combine(packageRoot, "Shaders", "Cache", "TerrainCache.compute");
-            string[] effects = { "GT_NOISE", "GT_HEIGHT_COLOR", "GT_SNOW" };
-            for (int mask = 0; mask < 8; mask++)
+            string[] effects = { "GT_NOISE", "GT_HEIGHT_COLOR", "GT_SNOW", "GT_NOISE_TABLE" };
+            for (int mask = 0; mask < 1 << effects.Length; mask++)
                 foreach (var kernel in new[] { "CacheTileFactors", "CacheTileVertices" })
                 {
                     string spv = Path.Combine(buildDir, $"unity-cache-{mask}-{kernel}.spv");

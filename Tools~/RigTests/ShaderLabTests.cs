@@ -124,10 +124,11 @@ namespace GregoryTerrain.Rig.Tests
                 .SelectMany(l => l.Split(' ', StringSplitOptions.RemoveEmptyEntries)).Distinct().ToList();
             // GT_SNOW (SnowSimulator's keyword) is declared by the .shader; the snow rendering branch
             // lists it in shader_variants.txt too, so after that merge the union changes nothing.
-            // GT_VERTEX_CACHE (the renderer's) likewise, once the rig's cache variants are listed.
-            var shipped = new HashSet<string>(listed.Except(RigKeywords.RigOnly)) { "GT_SNOW", VertexCacheKeyword };
+            // GT_VERTEX_CACHE (the renderer's) likewise, once the rig's cache variants are listed,
+            // and GT_NOISE_TABLE (the tiled-noise toggle) once the rig's table variants are.
+            var shipped = new HashSet<string>(listed.Except(RigKeywords.RigOnly)) { "GT_SNOW", VertexCacheKeyword, "GT_NOISE_TABLE" };
             Assert.That(listed, Does.Contain("GT_PAPER_MODE").And.Contain("GT_READBACK"), "rig-only keywords are in the list");
-            Assert.That(shipped, Is.EquivalentTo(new[] { "GT_NOISE", "GT_HEIGHT_COLOR", "GT_SNOW", VertexCacheKeyword, "GT_DEBUG_NORMALS", "GT_DEBUG_PATCH_ID", "GT_DEBUG_TESS_FACTOR", "GT_LOD", "GT_RANGE_ORIGIN" }));
+            Assert.That(shipped, Is.EquivalentTo(new[] { "GT_NOISE", "GT_NOISE_TABLE", "GT_HEIGHT_COLOR", "GT_SNOW", VertexCacheKeyword, "GT_DEBUG_NORMALS", "GT_DEBUG_PATCH_ID", "GT_DEBUG_TESS_FACTOR", "GT_LOD", "GT_RANGE_ORIGIN" }));
 
             var all = new HashSet<string>(_subShaders.SelectMany(s => s.Passes).SelectMany(p => p.Keywords));
             Assert.That(all, Is.EquivalentTo(shipped), "keywords declared anywhere in the .shader");
@@ -156,7 +157,7 @@ namespace GregoryTerrain.Rig.Tests
                         Assert.That(p.Keywords, Is.EquivalentTo(forPass), where);
                     else
                         // Depth and shadow passes: only what changes the shape (or where it comes from).
-                        Assert.That(p.Keywords, Is.EquivalentTo(s.Tessellated ? new[] { "GT_NOISE", "GT_SNOW", VertexCacheKeyword, "GT_LOD", "GT_RANGE_ORIGIN" } : new[] { "GT_NOISE", "GT_SNOW" }), where);
+                        Assert.That(p.Keywords, Is.EquivalentTo(s.Tessellated ? new[] { "GT_NOISE", "GT_NOISE_TABLE", "GT_SNOW", VertexCacheKeyword, "GT_LOD", "GT_RANGE_ORIGIN" } : new[] { "GT_NOISE", "GT_NOISE_TABLE", "GT_SNOW" }), where);
                     Assert.That(p.Pragmas.Count(a => a.SequenceEqual(new[] { "multi_compile_local", "_", VertexCacheKeyword })), Is.EqualTo(s.Tessellated ? 1 : 0),
                         where + ": GT_VERTEX_CACHE as its own multi_compile_local set, in tessellated passes only");
                     // The range origin's code with the levels' in one set: the levels always compile it, so the
@@ -290,7 +291,7 @@ namespace GregoryTerrain.Rig.Tests
             string properties = Blocks(text, "Properties").Single();
             var declared = new HashSet<string>(_subShaders.SelectMany(s => s.Passes).SelectMany(p => p.Keywords));
             var toggles = Regex.Matches(properties, @"\[Toggle\((\w+)\)\]").Select(m => m.Groups[1].Value).ToList();
-            Assert.That(toggles, Is.EquivalentTo(new[] { "GT_NOISE", "GT_HEIGHT_COLOR" }));
+            Assert.That(toggles, Is.EquivalentTo(new[] { "GT_NOISE", "GT_HEIGHT_COLOR", "GT_NOISE_TABLE" }));
             foreach (string k in toggles) Assert.That(declared, Does.Contain(k));
 
             var enums = Regex.Matches(properties, @"\[KeywordEnum\(([^)]*)\)\]\s*(\w+)").ToList();
