@@ -83,7 +83,8 @@ namespace GregoryTerrain.Rig.Tests
         }
 
         /// <summary>The variants that have a GT_RANGE_ORIGIN sibling (Tools~/rig/shader_variants.txt).</summary>
-        static readonly string[] OriginSiblings = { "base", "noise+height_color", "readback", "readback+noise", "factor_readback", "factor_readback+noise" };
+        static readonly string[] OriginSiblings = { "base", "noise+height_color", "readback", "readback+noise", "factor_readback", "factor_readback+noise",
+                                                    "readback+noise+noise_table", "noise+height_color+noise_table" };
 
         /// <summary>
         /// The variant a draw with range origin <paramref name="rangeOriginF"/> needs, by the renderer's
@@ -263,17 +264,34 @@ namespace GregoryTerrain.Rig.Tests
         /// reads every vertex back. <paramref name="extra"/>: more harness options (e.g. --range).
         /// </summary>
         public static ReadbackRun Draw(string dir, string spirv, PatchGrid grid, TerrainParams p, NoiseSettings? noise,
-                                       params string[] extra)
+                                       params string[] extra) => Draw(dir, spirv, grid, p, noise, false, extra);
+
+        /// <summary>
+        /// <see cref="Draw(string, string, PatchGrid, TerrainParams, NoiseSettings?, string[])"/>; with
+        /// <paramref name="tiledNoise"/> the tiled noise (<c>readback+noise+noise_table</c>), Core's
+        /// table written to <paramref name="dir"/>/noise_cells.f32 and bound at 9 (--storage-data).
+        /// </summary>
+        public static ReadbackRun Draw(string dir, string spirv, PatchGrid grid, TerrainParams p, NoiseSettings? noise,
+                                       bool tiledNoise, params string[] extra)
         {
+            Assert.That(!tiledNoise || noise.HasValue, Is.True, "the tiled noise needs noise");
             var inputs = TerrainInputs.Create(grid, p);
             int tiles = inputs.TilesAcross(), factor = (int)inputs.UniformTessFactor();
             Assert.That(factor, Is.InRange(1, 64), "readback needs an integer uniform factor");
             Assert.That((float)factor, Is.EqualTo(inputs.UniformTessFactor()), "readback needs an integer uniform factor");
             WriteBuffers(dir, inputs, TopDownCamera());
             var run = new ReadbackRun { Grid = grid, Inputs = inputs, Noise = noise, Tiles = tiles, Factor = factor,
-                                        Keywords = noise.HasValue ? TerrainKeywords.Noise : TerrainKeywords.None };
+                                        Keywords = !noise.HasValue ? TerrainKeywords.None
+                                                 : tiledNoise ? TerrainKeywords.Noise | TerrainKeywords.NoiseTable : TerrainKeywords.Noise };
             string readback = Path.Combine(dir, "readback.f32");
-            var args = new List<string>(Stages(spirv, ForOrigin(noise.HasValue ? "readback+noise" : "readback", p.rangeOrigin)));
+            string variant = !noise.HasValue ? "readback" : tiledNoise ? "readback+noise+noise_table" : "readback+noise";
+            var args = new List<string>(Stages(spirv, ForOrigin(variant, p.rangeOrigin)));
+            if (tiledNoise)
+            {
+                string table = Path.Combine(dir, "noise_cells.f32");
+                WriteFloats(table, GradientNoiseTable.Floats);
+                args.AddRange(new[] { "--storage-data", "9:" + table });
+            }
             args.AddRange(new[] { "--buffers", dir, "--patches", (tiles * tiles).ToString(), "--width", "64", "--height", "64",
                                   "--device", "llvmpipe", "--stats", "--readback", readback, "--readback-floats", (12 * run.VertexCount).ToString() });
             args.AddRange(extra);
@@ -366,7 +384,8 @@ namespace GregoryTerrain.Rig.Tests
                 c.MaxPosition = Math.Max(c.MaxPosition, Distance(gp, cp));
                 c.MaxNormal = Math.Max(c.MaxNormal, Distance(gn, cn));
                 // And the float path against the double reference at the same exact point.
-                TerrainVertex.Reference(Grid, core.surface.q.ToDouble(), Noise, octaves, out Double3 rp, out _);
+                TerrainVertex.Reference(Grid, core.surface.q.ToDouble(), Noise, octaves, out Double3 rp, out _,
+                                        (Keywords & TerrainKeywords.NoiseTable) != 0);
                 rp -= offset;
                 c.MaxReference = Math.Max(c.MaxReference, GMath.length(new Double3(core.position.x, core.position.y, core.position.z) - rp));
             }

@@ -353,7 +353,7 @@ namespace GregoryTerrain
         /// differ only in arithmetic). Position (x, y, z) and unit normal.
         /// </summary>
         public static void Reference(PatchGrid grid, Double2 q, NoiseSettings? noise, double octaveCount,
-                                     out Double3 position, out Double3 normal)
+                                     out Double3 position, out Double3 normal, bool tiledNoise = false)
         {
             if (grid == null) throw new ArgumentNullException(nameof(grid));
             if (!q.IsFinite) throw new ArgumentException($"q {q} must be finite", nameof(q));
@@ -363,7 +363,7 @@ namespace GregoryTerrain
             GregoryEval.Evaluate(grid.Patches[patch].Points, uv.x, uv.y, out position, out Double3 dPdu, out Double3 dPdv);
             if (noise.HasValue)
             {
-                position.z += OctaveNoise.Evaluate(q.x, q.y, noise.Value, octaveCount, out Double2 gradient);
+                position.z += OctaveNoise.Evaluate(q.x, q.y, noise.Value, octaveCount, out Double2 gradient, tiledNoise);
                 dPdu.z += gradient.x * (region.e - region.a);
                 dPdv.z += gradient.y * (region.f - region.b);
             }

@@ -93,6 +93,21 @@ StorageOption parseStorage(const std::string& value) {
     return s;
 }
 
+// --storage-data BINDING:FILE: a storage buffer holding FILE's bytes (a non-zero multiple of 4;
+// its size is checked when the file is read).
+StorageOption parseStorageData(const std::string& value) {
+    const std::string option = "--storage-data";
+    const auto [bindingText, path] = splitAtColon(option, "BINDING:FILE", value, false);
+    StorageOption s;
+    s.binding = static_cast<uint32_t>(parseField(option, value, "BINDING", bindingText, 0, kMaxStorageBinding));
+    if (const char* taken = rigBindingName(s.binding))
+        fail(option + ": binding " + std::to_string(s.binding) + " in '" + value + "' is the rig's " + taken +
+             " (bindings 0.." + std::to_string(kBindingCountSnow - 1) + " are taken)");
+    if (path.empty()) fail(option + ": FILE is empty in '" + value + "'");
+    s.dataPath = path;
+    return s;
+}
+
 ComputeOption parseCompute(const std::string& value) {
     const std::string option = "--compute";
     const auto [path, groupsText] = splitAtColon(option, "SPV:GX[,GY[,GZ]]", value, true);
@@ -135,8 +150,8 @@ StorageDump parseDumpPrefix(const std::string& value) {
 }
 
 // A second --storage at the same binding would leave the shaders' view ambiguous: refuse it.
-void addStorage(Options& o, const std::string& value) {
-    const StorageOption s = parseStorage(value);
+void addStorage(Options& o, const std::string& value, bool data = false) {
+    const StorageOption s = data ? parseStorageData(value) : parseStorage(value);
     for (const StorageOption& earlier : o.storage)
         if (earlier.binding == s.binding)
             fail("--storage: binding " + std::to_string(s.binding) + " in '" + value + "' is already given (" +
@@ -188,6 +203,7 @@ const char* usageText() {
   --reversed-z                   depth cleared to 0 and GREATER_OR_EQUAL: near 1, far 0, as Unity draws
                                  (float depth keeps its relative precision to the horizon)
   --storage BINDING:BYTES        zero-filled device-local storage buffer at BINDING (>= 7), repeatable
+  --storage-data BINDING:FILE    the same holding FILE's bytes (e.g. the tiled noise's table at 9)
   --compute SPV:GX[,GY[,GZ]]     each frame, before the render pass, dispatch the module's compute
                                  entry point over GX x GY x GZ groups; repeatable, run in order
   --dump-storage BINDING:FILE    write that storage buffer's bytes after the last frame, repeatable
@@ -266,6 +282,7 @@ Options parseOptions(int argc, char** argv) {
         else if (a == "--wireframe") o.wireframe = true;
         else if (a == "--reversed-z") o.reversedZ = true;
         else if (a == "--storage") addStorage(o, value());
+        else if (a == "--storage-data") addStorage(o, value(), true);
         else if (a == "--compute") o.computes.push_back(parseCompute(value()));
         else if (a == "--dump-storage") o.dumps.push_back(parseDump(value()));
         else if (a == "--dump-storage-prefix") o.dumps.push_back(parseDumpPrefix(value()));

@@ -18,6 +18,7 @@ enum class Mode {
 struct StorageOption {
     uint32_t binding = 0;
     uint64_t bytes = 0;
+    std::string dataPath;  // --storage-data: the buffer holds this file's bytes instead of zeros
 };
 
 // --compute SPV:GX[,GY[,GZ]]: a compute kernel dispatched over GX x GY x GZ work groups each frame.

@@ -1,5 +1,7 @@
 #include "storage.hpp"
 
+#include <algorithm>
+
 #include "check.hpp"
 
 namespace gt {
@@ -7,7 +9,17 @@ namespace gt {
 std::vector<StorageBuffer> createStorageBuffers(const Gpu& gpu, const std::vector<StorageOption>& options) {
     const uint64_t range = gpu.properties.limits.maxStorageBufferRange;
     std::vector<StorageBuffer> storage;
-    for (const StorageOption& o : options) {
+    std::vector<size_t> filled;   // indices of the buffers that hold a file's bytes, not zeros
+    for (const StorageOption& given : options) {
+        StorageOption o = given;
+        std::vector<uint8_t> data;
+        if (!o.dataPath.empty()) {
+            data = readFile(o.dataPath);
+            if (data.empty() || data.size() % 4 != 0)
+                fail("--storage-data: '" + o.dataPath + "' has " + std::to_string(data.size()) +
+                     " bytes; expected a non-zero multiple of 4 (storage buffers hold 32-bit words)");
+            o.bytes = data.size();
+        }
         if (o.bytes > range)
             fail("--storage: BYTES " + std::to_string(o.bytes) + " in '" + std::to_string(o.binding) + ":" +
                  std::to_string(o.bytes) + "' exceeds " + gpu.properties.deviceName + "'s maxStorageBufferRange " +
@@ -16,12 +28,20 @@ std::vector<StorageBuffer> createStorageBuffers(const Gpu& gpu, const std::vecto
         s.binding = o.binding;
         s.bytes = o.bytes;
         // TRANSFER_SRC for --dump-storage (TRANSFER_DST, for the fill, is added by createDeviceBuffer).
-        s.buffer = createDeviceBuffer(gpu, o.bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
+        const VkBufferUsageFlags usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT;
+        if (data.empty()) {
+            s.buffer = createDeviceBuffer(gpu, o.bytes, usage);
+        } else {
+            s.buffer = createDeviceBuffer(gpu, data, usage);   // filled through a staging copy, waited for
+            filled.push_back(storage.size());
+        }
         storage.push_back(s);
     }
-    if (storage.empty()) return storage;
+    if (storage.size() == filled.size()) return storage;
     submitOnce(gpu, [&](VkCommandBuffer cmd) {
-        for (const StorageBuffer& s : storage) vkCmdFillBuffer(cmd, s.buffer.buffer, 0, VK_WHOLE_SIZE, 0);
+        for (size_t i = 0; i < storage.size(); i++)
+            if (std::find(filled.begin(), filled.end(), i) == filled.end())
+                vkCmdFillBuffer(cmd, storage[i].buffer.buffer, 0, VK_WHOLE_SIZE, 0);
         // The zeros must be visible to whatever reads or writes the buffers first in later
         // submissions (a compute kernel, or a graphics stage when no kernel writes it).
         VkMemoryBarrier zeros{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
