@@ -10,7 +10,7 @@ namespace GregoryTerrain
     /// <summary>
     /// Draws a <see cref="PatchGridAsset"/> with the GregoryTerrain/Terrain shader in one procedural
     /// draw call: M x M tiles over the current <see cref="Range"/>, each a 4-control-point patch that
-    /// the hull/domain stages tessellate and evaluate (internals.md, "Draw modes").
+    /// the hull/domain stages tessellate and evaluate (internals.md, "Shader stages and compiled files").
     ///
     /// GPU traffic (see <see cref="PerFrameTrafficBytes"/>): the control points, regions and grid lines
     /// go up once per asset version; the settings constants when a setting changes; the object

@@ -35,7 +35,7 @@
 //                             with GT_SHADOW_CASTER_NORMAL_BIAS: the shadow caster's vertex
 //                             position with the pipeline's normal bias (URP)
 //
-// Here the camera comes from the cbuffer RigCamera at b1 (internals.md, "Descriptor bindings").
+// Here the camera comes from the cbuffer RigCamera at b1 (Tools~/rig/README.md, "Descriptor bindings").
 #ifndef GT_STANDALONE_ADAPTER_INCLUDED
 #define GT_STANDALONE_ADAPTER_INCLUDED
 

@@ -2,7 +2,7 @@
 // Programming vol. 4, chapter 6. Include a pipeline adapter (Shaders/Pipelines) first.
 //
 //   vert           tile mode: one 4-control-point patch per tile, no vertex buffer:
-//                  tile = SV_VertexID / 4, corner = SV_VertexID % 4 (internals.md, "Draw modes")
+//                  tile = SV_VertexID / 4, corner = SV_VertexID % 4 (internals.md, "Shader stages")
 //   hull_const     edge factors from each tile edge's chord error in pixels, frustum culling
 //                  (TileFactors.hlsl); GT_VERTEX_CACHE: the factors the compute pass decided
 //   hull_shader    passes the 4 corners through

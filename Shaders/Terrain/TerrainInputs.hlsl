@@ -1,5 +1,5 @@
 // The terrain's GPU inputs: three buffers sent once and the TerrainParams constants
-// (Documentation~/internals.md, "GPU layout" and "Descriptor bindings"; GpuLayout in Core packs them).
+// (Documentation~/internals.md, "GPU layout"; Tools~/rig/README.md, "Descriptor bindings"; GpuLayout in Core packs them).
 //
 // The pipeline adapter, included before this file, defines:
 //   GT_CBUFFER_START(name) / GT_CBUFFER_END  how a block of material constants is declared

@@ -1,5 +1,5 @@
 // GPU tests through the Vulkan harness (Tools~/harness) on Mesa's lavapipe: the harness binds,
-// splits, reads back and counts what Documentation~/internals.md says. They fail (never skip)
+// splits, reads back and counts what Tools~/rig/README.md says. They fail (never skip)
 // when the harness, glslang or lavapipe is missing: `gt setup` provides all three.
 using System;
 using System.Collections.Generic;
@@ -176,7 +176,7 @@ namespace GregoryTerrain.Rig.Tests
             return f;
         }
 
-        /// <summary>Every readback slot holds the vertex internals.md's index formula puts there:
+        /// <summary>Every readback slot holds the vertex Tools~/rig/README.md's index formula puts there:
         /// vertex = tile (F+1)^2 + round(t F)(F+1) + round(s F); the hull stage's SV_PrimitiveID is
         /// tile % perDraw, since it restarts at 0 in each draw of perDraw patches.</summary>
         static void AssertReadback(string path, int m, int f, float[] range, int perDraw)

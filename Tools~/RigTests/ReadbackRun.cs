@@ -33,7 +33,7 @@ namespace GregoryTerrain.Rig.Tests
 
     /// <summary>
     /// A readback draw: M x M tiles at an integer uniform factor F with the GT_READBACK variant, every
-    /// vertex read back (internals.md, "Rig-only readback"), and the Core float path at the GPU's own
+    /// vertex read back (Tools~/rig/README.md, "Rig-only readback"), and the Core float path at the GPU's own
     /// tess coordinates to compare it with.
     /// </summary>
     internal sealed class ReadbackRun
@@ -158,7 +158,7 @@ namespace GregoryTerrain.Rig.Tests
         }
 
         /// <summary>
-        /// RigCamera block (internals.md, binding 1): a top-down orthographic camera over the unit
+        /// RigCamera block (Tools~/rig/README.md, binding 1): a top-down orthographic camera over the unit
         /// square (object (x, z) -> clip). The readback does not depend on it.
         /// </summary>
         public static float[] TopDownCamera() => TopDownCameraOver(0, 0, 1, 1, 64, 64);

@@ -37,7 +37,7 @@ namespace GregoryTerrain.Rig.Tests
             foreach (string k in Kernels)
             {
                 string spv = Spv(k);
-                // The command of internals.md ("Snow"): no register shifts; glslang ignores #pragma kernel.
+                // The command of Tools~/rig/README.md ("Snow kernels"): no register shifts; glslang ignores #pragma kernel.
                 Run("glslangValidator", "-D", "-V", "-S", "comp", "-e", k, "-o", spv, src);
                 Run("spirv-val", spv);
             }

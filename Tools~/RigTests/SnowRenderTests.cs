@@ -21,7 +21,7 @@ namespace GregoryTerrain.Rig.Tests
         static readonly string[] GlslangStages = { "vert", "tesc", "tese", "frag", "vert" };
         // What shaders.py (STAGE_DEFINES) defines per stage: the no-tessellator pass is GT_FALLBACK.
         static readonly string[][] StageDefines = { new string[0], new string[0], new string[0], new string[0], new[] { "-DGT_FALLBACK" } };
-        // The terrain stages' register shifts (shaders.py REGISTER_SHIFTS, internals.md bindings).
+        // The terrain stages' register shifts (shaders.py REGISTER_SHIFTS, Tools~/rig/README.md bindings).
         static readonly string[] Shifts = { "--hlsl-iomap", "--shift-cbuffer-binding", "0", "--shift-texture-binding", "2", "--shift-UAV-binding", "5" };
 
         string _root, _work, _spirv, _cli, _runner;

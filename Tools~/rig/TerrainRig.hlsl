@@ -36,7 +36,7 @@
 #endif
 
 #if defined(GT_READBACK) || defined(GT_FACTOR_READBACK)
-// internals.md, "Rig-only readback".
+// Tools~/rig/README.md, "Rig-only readback".
 RWStructuredBuffer<float4> _Readback GT_REGISTER(u0);
 #endif
 

@@ -4,7 +4,7 @@
     bench_static_mesh.py CAPTURE.f32 JOB_DIR OUT_DIR
 
 CAPTURE: the terrain's vertices as GT_READBACK wrote them (3 float4 a vertex: (position, 1),
-(normal, 0), (q, u, v); internals.md "Rig-only readback"), for M*M tiles at the uniform factor F.
+(normal, 0), (q, u, v); Tools~/rig/README.md "Rig-only readback"), for M*M tiles at the uniform factor F.
 OUT_DIR gets what vert_static reads, 2 float4 a vertex (position, normal: 32 bytes, the size of a
 baked mesh's vertex) in the _ControlPoints file, padded to whole 320-byte "patches", regions.f32
 of zeros to match (the harness checks the pair), and the job's params, camera and grid lines.

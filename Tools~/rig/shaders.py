@@ -4,7 +4,7 @@
 For each variant of shader_variants.txt and each stage of STAGES (plus CACHE_STAGES, the vertex
 cache's compute kernels, for GT_VERTEX_CACHE variants):
   1. glslangValidator, HLSL front end -> SPIR-V (Vulkan), registers mapped to the bindings of
-     internals.md ("Descriptor bindings"),
+     Tools~/rig/README.md ("Descriptor bindings"),
   2. spirv-val,
   3. the bindings, read back with spirv-cross --reflect, compared with EXPECTED_BINDINGS,
   4. spirv-cross -> GLSL 4.50, GLSL ES 3.20 and MSL 2.1,

@@ -16,7 +16,7 @@ namespace GregoryTerrain.Rig
 
         public static PatchFactors Uniform(double f) => new PatchFactors { e0 = f, e1 = f, e2 = f, e3 = f, i0 = f, i1 = f };
 
-        /// <summary>Reads GT_FACTOR_READBACK's 2 float4 per patch (internals.md, "Rig-only readback").</summary>
+        /// <summary>Reads GT_FACTOR_READBACK's 2 float4 per patch (Tools~/rig/README.md, "Rig-only readback").</summary>
         public static PatchFactors[] FromReadback(float[] r, int patches)
         {
             if (r.Length < 8 * patches)

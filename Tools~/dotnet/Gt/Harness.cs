@@ -13,7 +13,7 @@ namespace GregoryTerrain.Rig
         public string SpirvDir;      // $BUILD_DIR/spirv: one folder per variant
         public string Device;        // --device SUBSTR, or null for the first device
 
-        /// <summary>The four tessellated stages of a variant (internals.md, "Shader stages and compiled files").</summary>
+        /// <summary>The four tessellated stages of a variant (Tools~/rig/README.md, "Rig-only entry points and compiled files").</summary>
         public List<string> TessellatedStages(string variant)
         {
             var a = new List<string>();

@@ -3,7 +3,7 @@ using System;
 namespace GregoryTerrain.Rig
 {
     /// <summary>
-    /// The rig's camera: the 36 floats of the <c>RigCamera</c> cbuffer (internals.md, binding 1).
+    /// The rig's camera: the 36 floats of the <c>RigCamera</c> cbuffer (Tools~/rig/README.md, "Descriptor bindings", binding 1).
     /// Matrices are built in double, row-major in maths (<c>clip = M * p</c>), and written column
     /// after column, which is how HLSL's default column_major packing reads them.
     /// Clip space as HLSL/D3D has it: y up (the harness flips the viewport), depth 0..1.

@@ -35,7 +35,7 @@ struct Gpu {
     VkPhysicalDeviceMemoryProperties memory{};
     VkPhysicalDeviceFeatures enabled{};  // what was turned on
     std::string driverName, driverInfo;  // VK_KHR_driver_properties / Vulkan 1.2, "" if unavailable
-    bool isLavapipe = false;             // Mesa's CPU driver (llvmpipe): Documentation~/internals.md, "The rig's drivers"
+    bool isLavapipe = false;             // Mesa's CPU driver (llvmpipe): Tools~/rig/README.md, "The rig's drivers"
     uint32_t timestampValidBits = 0;     // of the chosen queue family; 0 = no timestamps
 };
 

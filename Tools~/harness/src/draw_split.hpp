@@ -1,7 +1,7 @@
 // Splitting a patch-list draw into several draws over whole patches.
 //
 // Why: Mesa's lavapipe (22.3.6 .. 25.0.7) mis-renders any tessellated draw that generates more
-// than 65,536 vertices (Documentation~/internals.md, "The rig's drivers"). Each draw here covers
+// than 65,536 vertices (Tools~/rig/README.md, "The rig's drivers"). Each draw here covers
 // whole patches and starts at firstVertex = firstPatch * controlPoints, so SV_VertexID (which
 // includes firstVertex) keeps counting across draws, while SV_PrimitiveID restarts at 0 in each
 // draw: shaders must derive the tile from SV_VertexID / 4, never from SV_PrimitiveID.

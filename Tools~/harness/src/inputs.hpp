@@ -1,5 +1,5 @@
 // The rig's input files (little-endian float32, written by the C# rig's GpuLayout) and the six
-// descriptor bindings of Documentation~/internals.md "Descriptor bindings".
+// descriptor bindings of Tools~/rig/README.md "Descriptor bindings".
 #pragma once
 #include <array>
 #include <optional>

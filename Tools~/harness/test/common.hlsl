@@ -1,6 +1,6 @@
 #ifndef GT_HARNESS_TEST_COMMON_INCLUDED
 #define GT_HARNESS_TEST_COMMON_INCLUDED
-// Test-only declarations matching Documentation~/internals.md "Descriptor bindings".
+// Test-only declarations matching Tools~/rig/README.md "Descriptor bindings".
 // The harness self-test uses these shaders to prove the harness (bindings, split draws,
 // readback, stats); they are not the package's shaders.
 

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Compiles the self-test HLSL to SPIR-V with the package's register mapping
-# (internals.md "Descriptor bindings": b0->0, b1->1, t0..t2->2..4, u0->5; the vertex cache's
+# (Tools~/rig/README.md "Descriptor bindings": b0->0, b1->1, t0..t2->2..4, u0->5; the vertex cache's
 # t5/t6 and u2/u3 -> 7/8, the --storage bindings of the compute tests):
 #   --hlsl-iomap            shifts apply per HLSL register class (b/t/u), not per SPIR-V kind
 #   --stb 2                 t registers (StructuredBuffer) start at binding 2

@@ -3,7 +3,7 @@
 
 Runs gt-harness with the test shaders of this folder and checks what it must produce:
   - a non-blank image whose covered area matches the drawn range (camera matrix layout);
-  - readback: every vertex of every tile written exactly where internals.md says, with the tess
+  - readback: every vertex of every tile written exactly where Tools~/rig/README.md says, with the tess
     coordinate, the tile index (from SV_VertexID / 4), q and the bindings 2..4 read right, for a
     4x4-tile draw at factor 8 (one draw) and 6x6 tiles at factor 63 (147,456 vertices: split);
   - pipeline statistics equal to the counts an integer-partitioned quad draw must give;

@@ -1,4 +1,4 @@
-// Harness self-test shaders: the tile draw of internals.md "Draw modes" reduced to what the
+// Harness self-test shaders: the tile draw of Tools~/rig/README.md "Draw modes" reduced to what the
 // harness must get right. The surface is flat (height from _ControlPoints, so binding 2 is
 // read); the point is which tile and tess coordinate each vertex gets.
 //
