@@ -3,7 +3,7 @@ using System;
 namespace GregoryTerrain.Rig
 {
     /// <summary>
-    /// The screen error of a levels-of-detail view (internals.md, "Levels of detail: screen error"):
+    /// The screen error of a levels-of-detail view (Tools~/rig/README.md, "Levels of detail: measurements", screen error):
     /// every drawn tile cut into the cells of the integer factors the GPU gave it (GT_FACTOR_READBACK),
     /// its vertices where the vertex stage puts them (Core's float mirror: float range mapping, the
     /// continuous octave rule, float positions) and, at the vertices, edge midpoints and cell centres,
