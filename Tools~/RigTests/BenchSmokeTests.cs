@@ -62,6 +62,7 @@ namespace GregoryTerrain.Rig.Tests
             Assert.That(_output, Does.Contain("## The fair baseline and the floor"), "the fair baseline section");
             Assert.That(_output, Does.Contain("## Motion users make"), "the motion section");
             Assert.That(_output, Does.Not.Contain("| (incomplete) |"), "every fair static size ran");
+            Assert.That(_output, Does.Match(@"\| domain stage, tiled noise \+ colour \| [0-9.]+x \|"), "the tiled noise's job ran (GT_NOISE_TABLE, its table bound)");
         }
 
         [Test]

@@ -43,7 +43,7 @@ make_plan() {  # make_plan DIR
       || die "gt shaders wrote no $v/cache_factors.spv + cache_vertices.spv (GT_VERTEX_CACHE variants and kernels, internals.md)"
   done
   mkdir -p "$dir/spirv"
-  for v in base noise noise+height_color paper_mode paper_mode+noise factor_readback factor_readback+noise readback+noise "${cache[@]}"; do
+  for v in base noise noise+height_color paper_mode paper_mode+noise factor_readback factor_readback+noise readback+noise noise+height_color+noise_table "${cache[@]}"; do
     mkdir -p "$dir/spirv/$v"; cp "$BUILD_DIR/spirv/$v/"*.spv "$dir/spirv/$v/"
   done
   # The fair static mesh's vertex stage (rig only, GT_STATIC_MESH): reads baked vertices, same frag

@@ -3,19 +3,24 @@
 # harness at the paper's ranges g = h = 1.0, 0.5, 0.2, 0.1, 0.02 (c = d = 0), each range filling
 # the same view (the paper's zoom view). Prints vertices and triangles per range (pipeline
 # statistics: tessellation evaluation invocations and clipping invocations, the triangles entering the clipper).
-#   gt demo [--docs] [--dem] [--no-setup] [--device SUBSTR] [--tiles M] [--factor F] [--width W] [--height H]
+#   gt demo [--docs] [--dem | --tiled] [--no-setup] [--device SUBSTR] [--tiles M] [--factor F] [--width W] [--height H]
 # Writes .build/demo/demo_g<g>.png; with --docs also Documentation~/images/demo_g<g>.png (small indexed PNGs, png_palette.py;
 # g < 1 at half size, the thumbnails of the README's row of five).
 # --dem: instead, the real-data crop of the tests (Tools~/RigTests/Data/dem/N48E009_east.hgt, SRTM3, 241 x 241
 # samples, 14.7 km across) fitted with 32 x 32 patches, heights x 3, rendered whole at g = h = 1 without
 # noise: .build/demo/demo_dem.png (with --docs also Documentation~/images/demo_dem.png).
+# --tiled: instead, the sample grid whole with fine noise (6 octaves from 64 cells across, so the
+# finer ones span more than the table's 256 cells), hashed (noise+height_color) and tiled
+# (GT_NOISE_TABLE, its table bound at 9): .build/demo/noise_hashed.png and noise_tiled.png (with
+# --docs half size in Documentation~/images/, the manual's "Tiled noise" pair).
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 # 400 x 300: the manual ships these pictures, so they stay small (about 30 KB; the half-size ones 10 KB).
-docs=0 dem=0 setup=1 device="" tiles=16 factor=15 width=400 height=300
+docs=0 dem=0 tiled=0 setup=1 device="" tiles=16 factor=15 width=400 height=300
 while [ $# -gt 0 ]; do
   case "$1" in
     --docs) docs=1 ;;
     --dem) dem=1 ;;
+    --tiled) tiled=1 ;;
     --no-setup) setup=0 ;;
     --device) device="$2"; shift ;;
     --tiles) tiles="$2"; shift ;;
@@ -49,6 +54,28 @@ dev=(); [ -n "$device" ] && dev=(--device "$device")
 # The factor is odd: shipped shaders partition fractional_odd, which rounds an even factor up.
 # Noise: 8 octaves, so that the narrow ranges show detail the wide ones cannot (the octave count
 # follows the range width); a gentle light from the side-front.
+if [ "$tiled" = 1 ]; then
+  dir="$out/buffers_tiled"
+  # Many vertices, so the octave rule keeps the fine octaves that wrap the table.
+  "$cli" pack --grid "$out/grid.json" --range "0,0,1,1" --tiles 32 --factor 31 \
+    --noise 0.003,64,2,1.6 --octaves 6 --width "$width" --height "$height" --out "$dir" --noise-table >/dev/null
+  GT_BUILD_DIR="$out/shaders_tiled" bash "$RIG_DIR/shaders.sh" --only noise+height_color+noise_table >"$out/shaders_tiled.log" 2>&1 \
+    || { cat "$out/shaders_tiled.log" >&2; die "compiling noise+height_color+noise_table failed"; }
+  for kind in hashed tiled; do
+    s="$spv"; table=()
+    [ "$kind" = tiled ] && { s="$out/shaders_tiled/spirv/noise+height_color+noise_table"; table=(--storage-data "9:$dir/noise_cells.f32"); }
+    log="$out/harness_$kind.log"
+    "$harness" --vert "$s/vert.spv" --tesc "$s/tesc.spv" --tese "$s/tese.spv" --frag "$s/frag.spv" \
+      --buffers "$dir" --patches $((32 * 32)) --width "$width" --height "$height" "${table[@]}" \
+      --png "$out/noise_$kind.png" --stats "${dev[@]}" >"$log" 2>&1 || { cat "$log" >&2; die "harness failed ($kind noise)"; }
+    say "$kind noise: $(awk '$1=="stat" && $2=="clipping_invocations" {print $3}' "$log") triangles; image $out/noise_$kind.png"
+    if [ "$docs" = 1 ]; then
+      mkdir -p "$PKG_DIR/Documentation~/images"
+      python3 "$RIG_DIR/png_palette.py" "$out/noise_$kind.png" "$PKG_DIR/Documentation~/images/noise_$kind.png" 32 --half
+    fi
+  done
+  exit 0
+fi
 if [ "$dem" = 1 ]; then
   dir="$out/buffers_dem"
   "$cli" pack --grid "$out/dem_grid.json" --range "0,0,1,1" --tiles "$tiles" --factor "$factor" \

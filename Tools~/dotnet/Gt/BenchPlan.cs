@@ -238,6 +238,8 @@ namespace GregoryTerrain.Rig
                 plan.Append($"{id}:cached-still\trun\t-\t{cache} --compute-once\n");
                 meta.Append(Inv($"{id}\tfair\t{m}\t{f}\t0\t{f}\t4\tfar\t{patches}\n"));
             }
+            Directory.CreateDirectory(Path.Combine(dir, "jobs"));
+            BufferFiles.Write(Path.Combine(dir, "jobs", NoiseCellsFile), GradientNoiseTable.Floats);
             foreach (var (m, sm, sf) in AdaptiveVsStatic(quick))
             {
                 double want = 2.0 * sm * sm * sf * sf;
@@ -247,6 +249,8 @@ namespace GregoryTerrain.Rig
                 Scene(grid, cfg, CameraPath[0].range, width, height).WriteBuffers(Path.Combine(dir, "jobs", id));
                 string direct = $"{Stages(FairVariant, false)} --patches {m * m} --buffers @JOB@/{id} {view} {t}";
                 plan.Append($"{id}:terrain\trun\t-\t{direct} --update-range-per-frame\n");
+                // The same with the tiled noise (GT_NOISE_TABLE): Core's cell table bound at 9.
+                plan.Append($"{id}:terrain-tiled\trun\t-\t{Stages(TiledVariant, false)} --patches {m * m} --buffers @JOB@/{id} --storage-data 9:@JOB@/{NoiseCellsFile} {view} {t} --update-range-per-frame\n");
                 // Goal "only _Range changes within 1.02x of nothing changing", with noise and colour on.
                 plan.Append($"{id}:still\trun\t-\t{direct}\n");
                 plan.Append($"{id}:tess-floor\trun\t-\t{FloorStages} --patches {m * m} --buffers @JOB@/{id} {view} {t} --update-range-per-frame\n");
@@ -315,6 +319,10 @@ namespace GregoryTerrain.Rig
         /// the same fragment work, one interpolant less computed per vertex.
         /// </summary>
         public const string FairVariant = "noise+height_color";
+
+        /// <summary>The fair variant with the tiled noise (GT_NOISE_TABLE), its table in the jobs folder.</summary>
+        public const string TiledVariant = "noise+height_color+noise_table";
+        const string NoiseCellsFile = "noise_cells.f32";
 
         /// <summary>
         /// Frames as an application runs them: two queued at once, each with its own vertex cache and

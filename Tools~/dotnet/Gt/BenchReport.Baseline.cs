@@ -206,6 +206,7 @@ namespace GregoryTerrain.Rig
             Row("compute cache, zoom", s => Over(s.vc + ":zoom", s.fs + $":static-zoom-{s.m}"));
             Row("compute cache, fly-over", s => Over(s.vc + ":flyover", s.fs + $":static-flyover-{s.m}"));
             Row("domain stage, noise + colour", s => Over(s.va + ":terrain", s.fs + ":static"));
+            Row("domain stage, tiled noise + colour", s => Over(s.va + ":terrain-tiled", s.fs + ":static"));
             Row("domain stage, fly-over", s => Over(s.va + ":flyover", s.fs + $":static-flyover-{s.m}"));
             Row("compute cache, still / fastest static order", s => OverBest(s.vc + ":still", s.fs));
             Row("compute cache, panning / fastest static order", s => OverBest(s.vc + ":pan", s.fs));
@@ -215,6 +216,7 @@ namespace GregoryTerrain.Rig
             Row("static row by row / fair static", s => Over(s.fs + ":static-rows", s.fs + ":static"));
             Row("compute cache, panning / floor", s => Over(s.vc + ":pan", s.fs + ":tess-floor"));
             Row("domain stage / floor", s => Over(s.va + ":terrain", s.fs + ":tess-floor"));
+            Row("domain stage, tiled noise / floor", s => Over(s.va + ":terrain-tiled", s.fs + ":tess-floor"));
             o.AppendLine();
         }
 

@@ -89,7 +89,7 @@ namespace GregoryTerrain.Rig
                 "out grid terrain-m eye-m finest-m tiles factor target-pixels segment-pixels width height ground no-origin factors max-cells relief-m per-level");
             Add("snow-scene", "write a snow run's inputs: ridge grid, harness buffers, field/snow params per R (--out DIR [--cpu])", SnowSceneCommand.Run,
                 "cap cpu dt eye factor fov grid height height-scale light no-noise noise-amplitude out patches resolutions scale steps target tiles width wind");
-            Add("pack", "write the harness's buffer files for one scene (--grid FILE --out DIR ...)", PackCommand.Run, SceneOptions + " orbit out");
+            Add("pack", "write the harness's buffer files for one scene (--grid FILE --out DIR ...)", PackCommand.Run, SceneOptions + " orbit out noise-table");
             Add("estimate", "CPU time of the inspector's triangle estimate, and its sample against every tile (--grid FILE [--tiles 16,32,64] [--target PX] [--repeat N])", EstimateCommand.Run,
                 "grid repeat target tiles");
             Add("fit-bench", "one heightmap fit's error, G1 angle, time and memory (--dem FILE.hgt | --size N) --patches P [--c1 | --legacy | --ls]", FitBenchCommand.Run,
