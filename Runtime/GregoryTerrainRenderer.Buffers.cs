@@ -110,7 +110,7 @@ namespace GregoryTerrain
             && (material.IsKeywordEnabled(ShaderIds.NoiseKeyword) || material.IsKeywordEnabled(ShaderIds.HeightColorKeyword));
 
         /// <summary>
-        /// The tiled noise's table (<c>_NoiseCells</c>: 256 x 256 cells, 3 float4 each, 3 MiB), made
+        /// The tiled noise's table (<c>_NoiseCells</c>: 256 x 256 cells, 2 float4 each, 2 MiB), made
         /// from Core's <see cref="GradientNoiseTable"/> the first time the noise is tiled; released
         /// and null while it is not, so the default (hashed) noise holds no table at all.
         /// </summary>

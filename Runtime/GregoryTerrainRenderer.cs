@@ -44,7 +44,7 @@ namespace GregoryTerrain
         /// <c>_GtObjectToWorld/_GtWorldToObject</c> (128 bytes, when the Transform changes),
         /// <c>_TileLattice</c> (16 bytes, when anchored tiles are anchored again: a zoom, a re-snap), the
         /// whole TerrainParams block (10 float4, 160 bytes, when a setting or the grid changes) and the
-        /// buffers (on a new asset version; the tiled noise's 3 MiB table once, when GT_NOISE_TABLE is
+        /// buffers (on a new asset version; the tiled noise's 2 MiB table once, when GT_NOISE_TABLE is
         /// switched on). What Unity does with the property block inside the draw (it builds the draw's
         /// constant buffers from it) is Unity's and not counted here. With
         /// Vertex evaluation = Compute cache the steady state is the same: the cache pass compares its

@@ -72,24 +72,25 @@ float GradientNoiseCorners(float2 g00, float2 g10, float2 g01, float2 g11, float
 
 // --- Tiled noise (GT_NOISE_TABLE; C# GradientNoiseTable) ----------------------------------------
 // The lattice wrapped modulo 256: the noise repeats every 256 cells. Each cell's polynomial comes
-// from three float4 rows of a table instead of six hashes and four gradient reads (the includer
-// defines GradientNoiseTableRows(uint firstRow, out float4 r0, out float4 r1, out float4 r2),
-// reading its buffer): scaled by GT_NOISE_SCALE, r0 = (g00, A), r1 = (B, C), r2 = (c1, c2, c3, 0)
-// with A = g10 - g00, B = g01 - g00, C = (g00 - g10) - (g01 - g11), c1 = -g10.x, c2 = -g01.y,
-// c3 = g10.x + g01.y - g11.x - g11.y, so k1 = A.f + c1, k2 = B.f + c2, k3 = C.f + c3.
+// from two float4 rows of a table (32 bytes, one memory sector) instead of six hashes and four
+// gradient reads; the includer defines GradientNoiseTableRows(uint firstRow, out float4 r0,
+// out float4 r1), reading its buffer. Scaled by GT_NOISE_SCALE: r0 = (g00, A), r1 = (B, C) with
+// A = g10 - g00, B = g01 - g00, C = (g00 - g10) - (g01 - g11), so that with h = f - 1
+// k1 = A.(h.x, f.y) - g00.x, k2 = B.(f.x, h.y) - g00.y, k3 = C.h - (B.x + A.y).
 
 uint GradientNoiseTableFirstRow(int2 cell)
 {
-    return (((uint(cell.y) & 255u) << 8u) | (uint(cell.x) & 255u)) * 3u;
+    return (((uint(cell.y) & 255u) << 8u) | (uint(cell.x) & 255u)) * 2u;
 }
 
-// The cell's noise from its rows: GradientNoiseCorners' polynomial, coefficients precomputed.
-float GradientNoiseTablePolynomial(float4 r0, float4 r1, float4 r2, float2 f, out float2 gradient)
+// The cell's noise from its rows: GradientNoiseCorners' polynomial, its differences precomputed.
+float GradientNoiseTablePolynomial(float4 r0, float4 r1, float2 f, out float2 gradient)
 {
+    float2 h = f - 1.0;
     float n00 = r0.x * f.x + r0.y * f.y;
-    float k1 = (r0.z * f.x + r0.w * f.y) + r2.x;
-    float k2 = (r1.x * f.x + r1.y * f.y) + r2.y;
-    float k3 = (r1.z * f.x + r1.w * f.y) + r2.z;
+    float k1 = (r0.z * h.x + r0.w * f.y) - r0.x;
+    float k2 = (r1.x * f.x + r1.y * h.y) - r0.y;
+    float k3 = (r1.z * h.x + r1.w * h.y) - (r1.x + r0.w);
     float u = GradientNoiseFade(f.x), v = GradientNoiseFade(f.y);
     float du = GradientNoiseFadeDerivative(f.x), dv = GradientNoiseFadeDerivative(f.y);
     float uv = u * v;
@@ -115,9 +116,9 @@ void GradientNoiseCornerGradients(int2 cell, out float2 g00, out float2 g10, out
 float GradientNoiseCell(int2 cell, float2 f, out float2 gradient)
 {
 #if defined(GT_NOISE_TABLE)
-    float4 r0, r1, r2;
-    GradientNoiseTableRows(GradientNoiseTableFirstRow(cell), r0, r1, r2);
-    return GradientNoiseTablePolynomial(r0, r1, r2, f, gradient);
+    float4 r0, r1;
+    GradientNoiseTableRows(GradientNoiseTableFirstRow(cell), r0, r1);
+    return GradientNoiseTablePolynomial(r0, r1, f, gradient);
 #else
     float2 g00, g10, g01, g11;
     GradientNoiseCornerGradients(cell, g00, g10, g01, g11);

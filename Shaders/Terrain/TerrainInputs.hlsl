@@ -95,17 +95,16 @@ StructuredBuffer<uint4> _VertexCache GT_REGISTER(t6);
 #endif
 
 #if defined(GT_NOISE_TABLE)
-// The tiled noise's table (internals.md, "Tiled noise"): 256 x 256 lattice cells, three float4 rows
+// The tiled noise's table (internals.md, "Tiled noise"): 256 x 256 lattice cells, two float4 rows
 // each (C# GradientNoiseTable.Floats), sent once. Declared only in the tiled variants. The rig's
 // texture shift (+2) puts t7 on binding 9.
 StructuredBuffer<float4> _NoiseCells GT_REGISTER(t7);
 
-// GradientNoise.hlsl's hook: cell rows firstRow .. firstRow + 2.
-void GradientNoiseTableRows(uint firstRow, out float4 r0, out float4 r1, out float4 r2)
+// GradientNoise.hlsl's hook: cell rows firstRow and firstRow + 1.
+void GradientNoiseTableRows(uint firstRow, out float4 r0, out float4 r1)
 {
     r0 = _NoiseCells[firstRow];
     r1 = _NoiseCells[firstRow + 1u];
-    r2 = _NoiseCells[firstRow + 2u];
 }
 #endif
 

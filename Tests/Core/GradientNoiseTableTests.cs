@@ -130,7 +130,7 @@ namespace GregoryTerrain.Tests
             // A broken row (here: the table read one cell over) must show: the tiled value at a cell
             // centre is the wrapped corners' noise, which a neighbour's row does not give.
             float[] t = GradientNoiseTable.Floats;
-            Assert.That(t.Length, Is.EqualTo(256 * 256 * 3 * 4));
+            Assert.That(t.Length, Is.EqualTo(256 * 256 * GradientNoiseTable.RowsPerCell * 4));
             int mismatched = 0;
             for (int y = 0; y < 256; y += 5)
                 for (int x = 0; x < 256; x += 3)

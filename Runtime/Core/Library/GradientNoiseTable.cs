@@ -10,13 +10,12 @@ namespace GregoryTerrain
     /// and stays C2 across the seam. Inside [0, 255)^2 it is <see cref="GradientNoise"/> itself.
     /// <para>
     /// The GPU reads each cell's noise polynomial from <c>_NoiseCells</c> (<see cref="Floats"/>,
-    /// uploaded once) instead of hashing four corners: three float4 per cell, scaled by
-    /// <see cref="GradientNoise.Scale"/>,
-    /// <c>r0 = (g00, A)</c>, <c>r1 = (B, C)</c>, <c>r2 = (c1, c2, c3, 0)</c> with
-    /// <c>A = g10 - g00</c>, <c>B = g01 - g00</c>, <c>C = (g00 - g10) - (g01 - g11)</c>,
-    /// <c>c1 = -g10.x</c>, <c>c2 = -g01.y</c>, <c>c3 = g10.x + g01.y - g11.x - g11.y</c>, so that
-    /// the corner ramps' blend coefficients are <c>n00 = g00 . f</c>, <c>k1 = A . f + c1</c>,
-    /// <c>k2 = B . f + c2</c>, <c>k3 = C . f + c3</c>.
+    /// uploaded once) instead of hashing four corners: two float4 per cell (32 bytes, one memory
+    /// sector), scaled by <see cref="GradientNoise.Scale"/>, <c>r0 = (g00, A)</c>, <c>r1 = (B, C)</c>
+    /// with <c>A = g10 - g00</c>, <c>B = g01 - g00</c>, <c>C = (g00 - g10) - (g01 - g11)</c>, so that
+    /// with <c>h = f - 1</c> the corner ramps' blend coefficients are <c>n00 = g00 . f</c>,
+    /// <c>k1 = A . (h.x, f.y) - g00.x</c>, <c>k2 = B . (f.x, h.y) - g00.y</c>,
+    /// <c>k3 = C . h - (B.x + A.y)</c>.
     /// </para>
     /// </summary>
     internal static class GradientNoiseTable
@@ -24,13 +23,13 @@ namespace GregoryTerrain
         /// <summary>Lattice cells per side of the table: the noise's period.</summary>
         public const int Size = 256;
         /// <summary>float4 rows per cell.</summary>
-        public const int RowsPerCell = 3;
+        public const int RowsPerCell = 2;
 
         static float[] s_floats;
 
         /// <summary>
         /// The table as the GPU gets it: <c>Size * Size * RowsPerCell</c> float4, cell (x, y) from
-        /// float index <c>FirstRow(x, y) * 4</c>. Built once (about 5 ms), shared: do not modify.
+        /// float index <c>FirstRow(x, y) * 4</c>. Built once (a few ms), shared: do not modify.
         /// </summary>
         public static float[] Floats => LazyInitializer.EnsureInitialized(ref s_floats, Build);
 
@@ -57,11 +56,9 @@ namespace GregoryTerrain
                 {
                     CornerGradients(x, y, out Float2 g00, out Float2 g10, out Float2 g01, out Float2 g11);
                     Float2 a = g10 - g00, b = g01 - g00, c = (g00 - g10) - (g01 - g11);
-                    float c1 = -g10.x, c2 = -g01.y, c3 = (g10.x + g01.y) - (g11.x + g11.y);
                     int i = FirstRow(x, y) * 4;
                     t[i + 0] = s * g00.x; t[i + 1] = s * g00.y; t[i + 2] = s * a.x; t[i + 3] = s * a.y;
                     t[i + 4] = s * b.x; t[i + 5] = s * b.y; t[i + 6] = s * c.x; t[i + 7] = s * c.y;
-                    t[i + 8] = s * c1; t[i + 9] = s * c2; t[i + 10] = s * c3; t[i + 11] = 0f;
                 }
             return t;
         }
@@ -76,10 +73,11 @@ namespace GregoryTerrain
         {
             float[] t = Floats;
             int i = FirstRow(ix, iy) * 4;
+            float hx = fx - 1f, hy = fy - 1f;
             float n00 = t[i + 0] * fx + t[i + 1] * fy;
-            float k1 = (t[i + 2] * fx + t[i + 3] * fy) + t[i + 8];
-            float k2 = (t[i + 4] * fx + t[i + 5] * fy) + t[i + 9];
-            float k3 = (t[i + 6] * fx + t[i + 7] * fy) + t[i + 10];
+            float k1 = (t[i + 2] * hx + t[i + 3] * fy) - t[i + 0];
+            float k2 = (t[i + 4] * fx + t[i + 5] * hy) - t[i + 1];
+            float k3 = (t[i + 6] * hx + t[i + 7] * hy) - (t[i + 4] + t[i + 3]);
             float u = GradientNoise.Fade(fx), v = GradientNoise.Fade(fy);
             float du = GradientNoise.FadeDerivative(fx), dv = GradientNoise.FadeDerivative(fy);
             float uv = u * v;
