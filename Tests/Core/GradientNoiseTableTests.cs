@@ -98,33 +98,6 @@ namespace GregoryTerrain.Tests
         }
 
         [Test]
-        public void RelativeNoiseMatchesTheDoubleDifferenceAcrossTheSeam()
-        {
-            // Deep zoom on the tiled noise, straddling coarse lattice lines and (octave 5: 256 cells
-            // across the terrain) the table's seam at x = 0.5.
-            var noise = new NoiseSettings(0.004f, 8f, 2f, 2f, 12);
-            double worst = 0, w = 1e-6;
-            foreach (var c in new[] { new Double2(0.5, 0.5 + 1e-7), new Double2(0.5137, 0.6262) })
-            {
-                var range = new TerrainRange(c.x - w / 2, c.y - w / 2, c.x + w / 2, c.y + w / 2);
-                RangeOrigin o = RangeOrigin.For(range);
-                RangeMapping.EncodeRange(range, o, out Float4 rf, out Float4 of);
-                TerrainPoint origin = RelativeSurface.OriginPoint(of);
-                for (int k = 0; k <= 16; k++)
-                    for (int l = 0; l <= 16; l++)
-                    {
-                        TerrainPoint q = RangeMapping.ToTerrainPoint(rf, of, 1, 0, 0, k / 16f, l / 16f);
-                        float f = OctaveNoise.Relative(q, origin, RelativeSurface.Difference(q, origin), noise, 12f, out _, tiled: true);
-                        Double2 qd = q.ToDouble(), od = o.Value;
-                        double d = OctaveNoise.Evaluate(qd.x, qd.y, noise, 12.0, out _, true) - OctaveNoise.Evaluate(od.x, od.y, noise, 12.0, out _, true);
-                        worst = Math.Max(worst, Math.Abs(f - d));
-                    }
-            }
-            TestContext.Out.WriteLine($"tiled relative noise (width 1e-6): max |float - double difference| = {worst / w:G3} widths");
-            Assert.That(worst / w, Is.LessThan(1e-5));
-        }
-
-        [Test]
         public void TheTableHoldsEachCellsPolynomial()
         {
             // A broken row (here: the table read one cell over) must show: the tiled value at a cell

@@ -494,6 +494,30 @@ namespace GregoryTerrain.Rig.Tests
             return w.ToArray();
         }
 
+        [Test]
+        public void StorageData_TheBufferHoldsTheFileAndABadSizeIsRefused()
+        {
+            // --storage-data (the tiled noise's table at binding 9): no kernel writes binding 8 here,
+            // so its dump after the frames must be the file, byte for byte.
+            string dir = MakeInputs("in_storage_data", 4, 8, new[] { 0f, 0, 1, 1 });
+            var (pos, idx) = WriteQuadMesh("sdquad");
+            byte[] data = Enumerable.Range(0, 96).Select(i => (byte)(i * 7 + 3)).ToArray();
+            string file = Path.Combine(_work, "storage_data.bin"), dump = Path.Combine(_work, "storage_data_8.bin");
+            File.WriteAllBytes(file, data);
+            string[] Args(string f) => new[] { "--static-mesh", "--mesh", pos, idx, "--vert", Spv("mesh.vert.spv"),
+                "--frag", Spv("mesh.frag.spv"), "--buffers", dir, "--width", Size.ToString(), "--height", Size.ToString(),
+                "--device", "llvmpipe", "--storage-data", "8:" + f, "--dump-storage", "8:" + dump, "--frames", "2" };
+            HarnessRun r = HarnessRun.Harness(Args(file));
+            r.AssertSucceeded();
+            Assert.That(File.ReadAllBytes(dump), Is.EqualTo(data));
+
+            string odd = Path.Combine(_work, "storage_data_odd.bin");
+            File.WriteAllBytes(odd, new byte[6]);
+            HarnessRun bad = HarnessRun.Harness(Args(odd));
+            Assert.That(bad.ExitCode, Is.EqualTo(1), bad.Stdout + bad.Stderr);
+            Assert.That(bad.Stderr, Does.Contain("--storage-data").And.Contain("storage_data_odd.bin").And.Contain("multiple of 4"));
+        }
+
         static double[] TimeLines(HarnessRun r, string key) =>
             r.Stdout.Split('\n').Where(l => l.StartsWith("time " + key + " "))
                 .Select(l => double.Parse(l.Split(' ')[3], System.Globalization.CultureInfo.InvariantCulture)).ToArray();
@@ -627,6 +651,9 @@ namespace GregoryTerrain.Rig.Tests
         [TestCase("--storage|7:6", "--storage|7:6|multiple of 4")]
         [TestCase("--storage|8:64|--storage|8:128", "--storage|8:128")]
         [TestCase("--storage|8:4294967292", "--storage|8:4294967292|maxStorageBufferRange")]
+        [TestCase("--storage-data|3:x.f32", "--storage-data|3:x.f32|_Regions")]
+        [TestCase("--storage-data|9:no-such-table.f32", "no-such-table.f32")]
+        [TestCase("--storage-data|9:", "--storage-data|FILE")]
         [TestCase("--compute|pattern.spv", "--compute|pattern.spv")]
         [TestCase("--compute|{spv}/pattern.comp.spv:0", "--compute|pattern.comp.spv:0")]
         [TestCase("--compute|{spv}/pattern.comp.spv:1,1,1,1", "--compute|pattern.comp.spv:1,1,1,1")]

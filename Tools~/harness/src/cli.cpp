@@ -79,14 +79,20 @@ uint64_t parseField(const std::string& option, const std::string& value, const s
 constexpr uint64_t kMaxStorageBinding = 1023;        // far above any real layout; catches typos
 constexpr uint64_t kMaxStorageBytes = 0xffffffffull;  // maxStorageBufferRange is a uint32_t
 
+// The BINDING of a --storage or --storage-data value: a number that is not one of the rig's own.
+uint32_t parseStorageBinding(const std::string& option, const std::string& value, const std::string& bindingText) {
+    const auto binding = static_cast<uint32_t>(parseField(option, value, "BINDING", bindingText, 0, kMaxStorageBinding));
+    if (const char* taken = rigBindingName(binding))
+        fail(option + ": binding " + std::to_string(binding) + " in '" + value + "' is the rig's " + taken +
+             " (bindings 0.." + std::to_string(kBindingCountSnow - 1) + " are taken)");
+    return binding;
+}
+
 StorageOption parseStorage(const std::string& value) {
     const std::string option = "--storage";
     const auto [bindingText, bytesText] = splitAtColon(option, "BINDING:BYTES", value, false);
     StorageOption s;
-    s.binding = static_cast<uint32_t>(parseField(option, value, "BINDING", bindingText, 0, kMaxStorageBinding));
-    if (const char* taken = rigBindingName(s.binding))
-        fail(option + ": binding " + std::to_string(s.binding) + " in '" + value + "' is the rig's " + taken +
-             " (bindings 0.." + std::to_string(kBindingCountSnow - 1) + " are taken)");
+    s.binding = parseStorageBinding(option, value, bindingText);
     s.bytes = parseField(option, value, "BYTES", bytesText, 4, kMaxStorageBytes);
     if (s.bytes % 4 != 0)
         fail(option + ": BYTES " + bytesText + " in '" + value + "' is not a multiple of 4 (storage buffers hold 32-bit words)");
@@ -99,10 +105,7 @@ StorageOption parseStorageData(const std::string& value) {
     const std::string option = "--storage-data";
     const auto [bindingText, path] = splitAtColon(option, "BINDING:FILE", value, false);
     StorageOption s;
-    s.binding = static_cast<uint32_t>(parseField(option, value, "BINDING", bindingText, 0, kMaxStorageBinding));
-    if (const char* taken = rigBindingName(s.binding))
-        fail(option + ": binding " + std::to_string(s.binding) + " in '" + value + "' is the rig's " + taken +
-             " (bindings 0.." + std::to_string(kBindingCountSnow - 1) + " are taken)");
+    s.binding = parseStorageBinding(option, value, bindingText);
     if (path.empty()) fail(option + ": FILE is empty in '" + value + "'");
     s.dataPath = path;
     return s;
