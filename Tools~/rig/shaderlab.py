@@ -89,6 +89,9 @@ PROJECTS = {
 # Defines Unity's compiler sets per platform rather than per keyword, compiled together with the
 # keyword whose code path they change (Built-in: mobile shadows read the shadow map directly).
 PLATFORM_DEFINES = {"SHADOWS_SCREEN": ["UNITY_NO_SCREENSPACE_SHADOWS"]}
+# Keywords that only change another keyword's path: alone they compile to the base variant, so
+# each is also compiled with the keyword whose path it changes.
+MODIFIERS = {"GT_NOISE_TABLE": "GT_NOISE"}
 
 KEYWORD_PRAGMA = re.compile(r"^(shader_feature|multi_compile)(_local)?(_vertex|_fragment|_hull|_domain)?$")
 PRAGMA_SUFFIX_STAGES = {"_vertex": "vert", "_fragment": "frag", "_hull": "tesc", "_domain": "tese"}
@@ -293,7 +296,8 @@ FOG_KEYWORDS = ["FOG_LINEAR", "FOG_EXP", "FOG_EXP2"]   # what Unity's multi_comp
 
 def variants(program):
     """Keyword sets to compile: none, each keyword alone (plus the platform defines that change
-    its path), all effects together, and the effects with the first keyword of every other set."""
+    its path; a modifier with the keyword it modifies), all effects together, and the effects with
+    the first keyword of every other set."""
     keywords, firsts, required_sets = [], [], []
     for p in pragmas(program):
         if p and p[0] == "multi_compile_fog":
@@ -313,6 +317,7 @@ def variants(program):
         out = [v if set(v) & set(required) else v + [required[0]] for v in out]
     out = [v for i, v in enumerate(out) if v not in out[:i]]
     out += [[k] + PLATFORM_DEFINES[k] for k in keywords if k in PLATFORM_DEFINES]
+    out += [[MODIFIERS[k], k] for k in keywords if k in MODIFIERS and MODIFIERS[k] in keywords]
     effects = [k for k in EFFECTS if k in keywords]
     if len(effects) > 1:
         out.append(effects)
