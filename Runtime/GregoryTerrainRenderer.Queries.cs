@@ -30,7 +30,7 @@ namespace GregoryTerrain
                 NoiseSettings? noise = material != null && material.IsKeywordEnabled(ShaderIds.NoiseKeyword)
                     ? new NoiseSettings(noiseAmplitude, noiseFrequency, noiseAlpha, noiseBeta, noiseOctaves)
                     : (NoiseSettings?)null;
-                bool tiled = noise.HasValue && material.IsKeywordEnabled(ShaderIds.NoiseTableKeyword);
+                bool tiled = (NoiseKeywords() & TerrainKeywords.NoiseTable) != 0;
                 if (_queryAsset == grid && _queryVersion == grid.Version && Nullable.Equals(_queryNoise, noise) && _queryTiledNoise == tiled)
                     return _query;
                 try { _query = new TerrainSurfaceQuery(grid.ToPatchGrid(), noise, tiledNoise: tiled); }

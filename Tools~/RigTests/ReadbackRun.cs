@@ -149,6 +149,15 @@ namespace GregoryTerrain.Rig.Tests
             return u;
         }
 
+        /// <summary>A params.f32 written by gt-cli pack, back as the TerrainParams it packed (the 10 float4 of TerrainParams.Pack).</summary>
+        public static TerrainParams ReadParams(string path)
+        {
+            float[] f = ReadFloats(path);
+            Float4 F(int i) => new Float4(f[4 * i], f[4 * i + 1], f[4 * i + 2], f[4 * i + 3]);
+            return new TerrainParams { range = F(0), rangeOrigin = F(1), gridSize = F(2), tess = F(3), noise = F(4),
+                                       noiseOctaves = F(5), heightColor = F(6), colorLow = F(7), colorHigh = F(8), tileLattice = F(9) };
+        }
+
         public static float[] ReadFloats(string path)
         {
             byte[] b = File.ReadAllBytes(path);

@@ -35,14 +35,6 @@ namespace GregoryTerrain.Rig.Tests
             _spirv = ReadbackRun.CompileVariants(_work, Cached);
         }
 
-        static TerrainParams ReadParams(string path)
-        {
-            float[] f = ReadbackRun.ReadFloats(path);
-            Float4 F(int i) => new Float4(f[4 * i], f[4 * i + 1], f[4 * i + 2], f[4 * i + 3]);
-            return new TerrainParams { range = F(0), rangeOrigin = F(1), gridSize = F(2), tess = F(3), noise = F(4),
-                                       noiseOctaves = F(5), heightColor = F(6), colorLow = F(7), colorHigh = F(8), tileLattice = F(9) };
-        }
-
         /// <summary>
         /// Every slot the kernel writes holds Core's float TerrainVertex with the tiled noise
         /// (position; the packed normal and height weight within half a step plus float error), no other slot is touched,
@@ -61,7 +53,7 @@ namespace GregoryTerrain.Rig.Tests
             }, null);
             string table = Path.Combine(dir, "noise_cells.f32");
             ReadbackRun.WriteFloats(table, GradientNoiseTable.Floats);
-            TerrainParams p = ReadParams(Path.Combine(dir, "params.f32"));
+            TerrainParams p = ReadbackRun.ReadParams(Path.Combine(dir, "params.f32"));
             var inputs = TerrainInputs.Create(_grid, p);
             Assert.That(TileLattice.TilesAcross(p), Is.EqualTo(Tiles));
             Assert.That(inputs.NoiseOctaveCount(), Is.EqualTo(6f), "every octave drawn, the table wrapped");

@@ -82,7 +82,7 @@ namespace GregoryTerrain.Rig.Tests
             pack.AddRange(tessArgs);
             ReadbackRun.Exec(_cli, pack.ToArray(), null);
             if (camera != null) ReadbackRun.WriteFloats(Path.Combine(dir, "camera.f32"), camera);
-            var p = ReadParams(Path.Combine(dir, "params.f32"));
+            var p = ReadbackRun.ReadParams(Path.Combine(dir, "params.f32"));
             tiles = TileLattice.TilesAcross(p);   // M, or M + 1 with --anchor-at
             var frame = new CacheFrame { Tiles = tiles, Inputs = TerrainInputs.Create(_grid, p), Limit = VertexCache.FactorLimit(p.tess) };
             frame.Slots = VertexCache.SlotsPerTile(frame.Limit);
@@ -125,14 +125,6 @@ namespace GregoryTerrain.Rig.Tests
 
         static TileFactorSet HullFactorsOf(float[] h, int tile) =>
             new TileFactorSet(new Float4(h[8 * tile], h[8 * tile + 1], h[8 * tile + 2], h[8 * tile + 3]), new Float2(h[8 * tile + 4], h[8 * tile + 5]));
-
-        static TerrainParams ReadParams(string path)
-        {
-            float[] f = ReadbackRun.ReadFloats(path);
-            Float4 F(int i) => new Float4(f[4 * i], f[4 * i + 1], f[4 * i + 2], f[4 * i + 3]);
-            return new TerrainParams { range = F(0), rangeOrigin = F(1), gridSize = F(2), tess = F(3), noise = F(4),
-                                       noiseOctaves = F(5), heightColor = F(6), colorLow = F(7), colorHigh = F(8), tileLattice = F(9) };
-        }
 
         /// <summary>
         /// Every slot the kernel writes holds Core's float TerrainVertex at that point (position; the
@@ -330,7 +322,7 @@ namespace GregoryTerrain.Rig.Tests
 
             RigPng pm = RigPng.Read(Path.Combine(_work, "orbit", "image.png")), pf = RigPng.Read(Path.Combine(_work, "orbit-fresh", "image.png"));
             Assert.That(pm.PixelsDifferingFrom(pf, 0), Is.EqualTo(0), "the updated frame against one built from scratch");
-            Float4 planRange = ReadParams(Path.Combine(_work, "orbit", "params.f32")).range;
+            Float4 planRange = ReadbackRun.ReadParams(Path.Combine(_work, "orbit", "params.f32")).range;
             int drawn = 0, evaluated = 0, slots = 0;
             for (int tile = 0; tile < tiles * tiles; tile++)
             {
@@ -395,7 +387,7 @@ namespace GregoryTerrain.Rig.Tests
             Assert.That(pp.PixelsDifferingFrom(pf, 0), Is.EqualTo(0), "after the pan against one frame built from scratch");
             Assert.That(panned.Run.Long("stat", "clipping_invocations"), Is.EqualTo(fresh.Run.Long("stat", "clipping_invocations")));
 
-            TerrainParams p = ReadParams(Path.Combine(_work, name, "params.f32"));
+            TerrainParams p = ReadbackRun.ReadParams(Path.Combine(_work, name, "params.f32"));
             TerrainParams shifted = p;
             // Harness frameRange, frame 1: the tiny shift, or the pan's first step.
             float k = rangePan > 0f ? rangePan * (float)Math.Sin(2.0 * 3.14159265358979 * 1 / 100.0) : 1e-4f * 1f;
@@ -463,7 +455,7 @@ namespace GregoryTerrain.Rig.Tests
             CacheFrame f = DrawCached("clipped-above", range, tiles, tess, size, size, inside);
             CacheFrame g = DrawCached("clipped-above-wider", range, tiles, tess, size, size, wider);
 
-            TerrainParams p = ReadParams(Path.Combine(_work, "clipped-above", "params.f32"));
+            TerrainParams p = ReadbackRun.ReadParams(Path.Combine(_work, "clipped-above", "params.f32"));
             int clipped = 0;
             var factors = new HashSet<float>();
             for (int tile = 0; tile < f.Tiles * f.Tiles; tile++)
