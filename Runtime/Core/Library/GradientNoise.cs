@@ -95,10 +95,7 @@ namespace GregoryTerrain
         public static float EvaluateCell(int ix, int iy, float fx, float fy, out Float2 gradient, bool tiled = false)
         {
             if (tiled) return GradientNoiseTable.EvaluateCell(ix, iy, fx, fy, out gradient);
-            Float2 g00 = Gradient(Hash(ix, iy));
-            Float2 g10 = Gradient(Hash(unchecked(ix + 1), iy));
-            Float2 g01 = Gradient(Hash(ix, unchecked(iy + 1)));
-            Float2 g11 = Gradient(Hash(unchecked(ix + 1), unchecked(iy + 1)));
+            CornerGradients(ix, iy, false, out Float2 g00, out Float2 g10, out Float2 g01, out Float2 g11);
             return EvaluateCorners(g00, g10, g01, g11, fx, fy, out gradient);
         }
 
