@@ -602,6 +602,9 @@ Shader "GregoryTerrain/Terrain"
         {
             Name "ShadowCaster"
             Tags { "LightMode" = "ShadowCaster" }
+            // HDRP's global: 0 (depth clamped, not clipped) for directional cascades, so casters
+            // between the light and the cascade's near plane still cast; 1 for the other lights.
+            ZClip [_ZClip]
             ZWrite On
             ZTest LEqual
             ColorMask 0
@@ -765,6 +768,9 @@ Shader "GregoryTerrain/Terrain"
         {
             Name "ShadowCaster"
             Tags { "LightMode" = "ShadowCaster" }
+            // HDRP's global: 0 (depth clamped, not clipped) for directional cascades, so casters
+            // between the light and the cascade's near plane still cast; 1 for the other lights.
+            ZClip [_ZClip]
             ZWrite On
             ZTest LEqual
             ColorMask 0

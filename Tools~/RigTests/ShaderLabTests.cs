@@ -263,6 +263,37 @@ namespace GregoryTerrain.Rig.Tests
             }
         }
 
+        /// <summary>
+        /// Every HDRP pass has the render state of HDRP's own pass of its LightMode (HDRP 14's Lit.shader
+        /// and Unlit.shader, with their materials' defaults: _CullMode = Back). ShadowCaster:
+        /// <c>ZClip [_ZClip]</c>, the global HDRP sets to 0 while it draws a directional light's
+        /// cascades (HDShadowAtlas: shadowRequest.zClip), so a caster between the light and a cascade's
+        /// near plane is clamped onto it instead of clipped (without it, that terrain casts no shadow),
+        /// then ZWrite On, ZTest LEqual, ColorMask 0. ForwardOnly keeps ZTest LEqual where Lit tests Equal
+        /// after its full depth prepass (index.md says why). A state a pass leaves out is ShaderLab's
+        /// default (Cull Back, ZWrite On, ZTest LEqual, ZClip True, ColorMask RGBA).
+        /// </summary>
+        [Test]
+        public void HdrpPassStatesAreThoseOfHdrpsOwnPasses()
+        {
+            var expected = new Dictionary<string, string>
+            {
+                ["ShadowCaster"] = "Cull Back, ZWrite On, ZTest LEqual, ZClip [_ZClip], ColorMask 0",
+                ["DepthForwardOnly"] = "Cull Back, ZWrite On, ZTest LEqual, ZClip True, ColorMask RGBA",
+                ["ForwardOnly"] = "Cull Back, ZWrite On, ZTest LEqual, ZClip True, ColorMask RGBA",
+                ["SceneSelectionPass"] = "Cull Off, ZWrite On, ZTest LEqual, ZClip True, ColorMask RGBA",
+                ["Picking"] = "Cull Back, ZWrite On, ZTest LEqual, ZClip True, ColorMask RGBA",
+            };
+            int passes = 0;
+            foreach (SubShaderInfo s in _subShaders.Where(s => s.Pipeline == "HDRP"))
+                foreach (PassInfo p in s.Passes)
+                {
+                    Assert.That(PassState(s.Body, p.Name), Is.EqualTo(expected[p.LightMode]), $"{s} pass {p.Name}");
+                    passes++;
+                }
+            Assert.That(passes, Is.EqualTo(10), "five passes in each HDRP SubShader");
+        }
+
         /// <summary>The Scene view's passes, as Unity's own shaders have them: outline without culling, both compiled on demand.</summary>
         [Test]
         public void SrpSubShadersHaveTheSceneViewSelectionAndPickingPasses()
@@ -366,6 +397,19 @@ namespace GregoryTerrain.Rig.Tests
         /// <summary>A pass's text (state and program) by its Name, comments stripped.</summary>
         static string PassBody(string sub, string name) =>
             Blocks(sub, "Pass").Single(b => Regex.IsMatch(b, "\\bName\\s+\"" + Regex.Escape(name) + "\""));
+
+        /// <summary>A pass's Cull, ZWrite, ZTest, ZClip and ColorMask as written, or ShaderLab's default.</summary>
+        static string PassState(string sub, string name)
+        {
+            string state = Regex.Replace(PassBody(sub, name), "HLSLPROGRAM.*?ENDHLSL", "", RegexOptions.Singleline);
+            string Of(string key, string otherwise)
+            {
+                var m = Regex.Match(state, @"\b" + key + @"\s+(\[\w+\]|\w+)");
+                return m.Success ? m.Groups[1].Value : otherwise;
+            }
+            return $"Cull {Of("Cull", "Back")}, ZWrite {Of("ZWrite", "On")}, ZTest {Of("ZTest", "LEqual")}, " +
+                   $"ZClip {Of("ZClip", "True")}, ColorMask {Of("ColorMask", "RGBA")}";
+        }
 
         /// <summary>The pass's Stencil block, whitespace collapsed ("" if none).</summary>
         static string StencilOf(string sub, string name)
