@@ -77,6 +77,28 @@ namespace GregoryTerrain
 #endif
         }
 
+        /// <summary>
+        /// The tessellation view of <paramref name="cam"/>'s draw: its object -> clip
+        /// (<see cref="ObjectToClip"/>) and pixel size, which every pass of the draw reads for its
+        /// factors (URP and Built-in; HDRP reads its own camera constants), so the shadow maps Unity
+        /// renders for this camera hold the surface it draws. Set only when they differ from what the
+        /// property block holds (read back, so a cleared block is refilled): a camera that holds
+        /// still sends nothing, another camera drawing in between sends its own (80 bytes).
+        /// </summary>
+        void PushTessellationView(Camera cam)
+        {
+            if (cam == null) return;
+            int w = cam.pixelWidth, h = cam.pixelHeight;
+            if (w <= 0 || h <= 0) return;   // renders nothing
+            Matrix4x4 m = ObjectToClip(cam);
+            var size = new Vector4(w, h, 1f / w, 1f / h);
+            if (_props.HasMatrix(ShaderIds.TessObjectToClip) && VertexCachePass.SameMatrix(m, _props.GetMatrix(ShaderIds.TessObjectToClip))
+                && VertexCachePass.SameVector(size, _props.GetVector(ShaderIds.TessScreenSize)))
+                return;
+            SetMatrix(ShaderIds.TessObjectToClip, m);
+            SetVector(ShaderIds.TessScreenSize, size);
+        }
+
 #if UNITY_EDITOR
         static ulong SceneCullingMaskOf(Camera cam)
         {

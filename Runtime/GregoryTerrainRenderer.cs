@@ -14,8 +14,8 @@ namespace GregoryTerrain
     ///
     /// GPU traffic (see <see cref="PerFrameTrafficBytes"/>): the control points, regions and grid lines
     /// go up once per asset version; the settings constants when a setting changes; the object
-    /// matrices when the Transform moves; the range origin when it re-snaps; and every frame
-    /// <c>_Range</c> alone.
+    /// matrices when the Transform moves; the range origin when it re-snaps; a camera's tessellation
+    /// view when it moved or another camera drew since; and every frame <c>_Range</c>.
     /// <para>With <see cref="GregoryTerrain.VertexEvaluation.ComputeCache"/> a compute pre-pass
     /// (<see cref="VertexCachePass"/>, Shaders/Cache/TerrainCache.compute) evaluates the vertices into a
     /// buffer the domain stage reads (keyword <c>GT_VERTEX_CACHE</c>), in frames where the LOD
@@ -37,10 +37,12 @@ namespace GregoryTerrain
     public sealed partial class GregoryTerrainRenderer : MonoBehaviour
     {
         /// <summary>
-        /// Bytes this script sets per camera in the steady state: one float4, <c>_Range</c> (one
-        /// MaterialPropertyBlock.SetVector in PushRange, then one Graphics.RenderPrimitives call for
-        /// that camera).
-        /// Anything else is set only on change: <c>_RangeOrigin</c> (16 bytes, on re-snap),
+        /// Bytes this script sets per camera in the steady state (the camera holding still): one
+        /// float4, <c>_Range</c> (one MaterialPropertyBlock.SetVector in PushRange, then one
+        /// Graphics.RenderPrimitives call for that camera).
+        /// Anything else is set only on change: the camera's tessellation view
+        /// (<c>_GtTessObjectToClip/_GtTessScreenSize</c>, 80 bytes, when it moved or another camera
+        /// drew since), <c>_RangeOrigin</c> (16 bytes, on re-snap),
         /// <c>_GtObjectToWorld/_GtWorldToObject</c> (128 bytes, when the Transform changes),
         /// <c>_TileLattice</c> (16 bytes, when anchored tiles are anchored again: a zoom, a re-snap), the
         /// whole TerrainParams block (10 float4, 160 bytes, when a setting or the grid changes) and the
@@ -474,6 +476,7 @@ namespace GregoryTerrain
                 if (UpdateOutputOffset() || TransformMoved() || _frameDirty) PushMatrices();
             }
             if (_settingsError != null) return false;   // logged once; drawn again after the next valid change
+            PushTessellationView(cam);
             UpdateNoiseTableBinding();   // before the cache: its kernels read the same table
             if (!UpdateVertexCache(fallback)) return false;
             UpdateSnowBinding();

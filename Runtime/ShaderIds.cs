@@ -34,6 +34,9 @@ namespace GregoryTerrain
         /// <summary>The renderer's object matrices (the Unity adapters; deep-zoom offset included).</summary>
         public static readonly int ObjectToWorld = Shader.PropertyToID("_GtObjectToWorld");
         public static readonly int WorldToObject = Shader.PropertyToID("_GtWorldToObject");
+        /// <summary>The tessellation view (UnityAdapterCommon.hlsl): the drawing camera's object -> clip and pixel size, per camera.</summary>
+        public static readonly int TessObjectToClip = Shader.PropertyToID("_GtTessObjectToClip");
+        public static readonly int TessScreenSize = Shader.PropertyToID("_GtTessScreenSize");
 
         // ---- vertex cache (VertexCacheKernels.hlsl, LodCameraComputeAdapter.hlsl) --------------------
 

@@ -236,7 +236,7 @@ namespace GregoryTerrain
         }
 
         // Bit-level equality through float.Equals (NaN equals NaN, so a NaN never forces a dispatch per frame).
-        static bool SameVector(Vector4 a, Vector4 b) =>
+        internal static bool SameVector(Vector4 a, Vector4 b) =>
             a.x.Equals(b.x) && a.y.Equals(b.y) && a.z.Equals(b.z) && a.w.Equals(b.w);
 
         /// <summary>Every entry equal, bit for bit as float.Equals compares (the renderer's Transform check uses it too).</summary>

@@ -7,8 +7,9 @@
 // SubShader order matters: Unity takes the first SubShader whose RenderPipeline tag matches the
 // active pipeline and whose passes the GPU supports. Each pipeline has a tessellated SubShader
 // (#pragma require tessellation tessHW) followed by a fallback SubShader (vert_fallback) that
-// devices without hull/domain stages get instead. Shadow and depth passes run the same stages, so
-// shadows and depth come from the same tessellated surface as the colour. Each SubShader's
+// devices without hull/domain stages get instead. Shadow and depth passes run the same stages with
+// the drawing camera's factors (the adapters' GT_TessObjectToClip), so shadows and depth come from
+// the same tessellated surface as the colour. Each SubShader's
 // "GregoryTerrainDraw" tag (Tessellated / Fallback) tells GregoryTerrainRenderer which draw the
 // SubShader Unity picked expects (Material.GetTag without fallbacks reads the SubShader in use).
 //

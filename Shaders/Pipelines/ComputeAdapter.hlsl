@@ -19,6 +19,8 @@ float4 GT_WorldToClip(float3 positionWS) { return float4(positionWS, 1.0); }
 float4 GT_ObjectToClip(float3 positionOS) { return float4(positionOS, 1.0); }
 float3 GT_CameraPositionWS() { return float3(0.0, 0.0, 0.0); }
 float2 GT_ScreenSize() { return float2(1.0, 1.0); }
+float4 GT_TessObjectToClip(float3 positionOS) { return GT_ObjectToClip(positionOS); }
+float2 GT_TessScreenSize() { return GT_ScreenSize(); }
 void GT_MainLight(out float3 directionWS, out float3 color)
 {
     directionWS = float3(0.0, 1.0, 0.0);

@@ -3,8 +3,8 @@
 // brings the light loop's globals (TransformWorldToHClip, GetCameraRelativePositionWS,
 // _WorldSpaceCameraPos, _ScreenSize, GetCurrentExposureMultiplier, _DirectionalLightCount,
 // _DirectionalShadowIndex, _DirectionalLightDatas, DirectionalLightData, unity_SelectionID),
-// LightLoop/HDShadow.hlsl (HDShadowContext, InitShadowContext, GetDirectionalShadowAttenuation) and
-// Material/NormalBuffer.hlsl (NormalData, EncodeIntoNormalBuffer).
+// LightLoop/HDShadow.hlsl (HDShadowContext, InitShadowContext, GetDirectionalShadowAttenuation),
+// Material/NormalBuffer.hlsl (NormalData, EncodeIntoNormalBuffer) and _CameraViewProjMatrix.
 // Compiled against HDRP 14's real includes off Unity by the rig (Tools~/rig/shaderlab.py).
 //
 // HDRP renders camera-relative: its "world space" has the camera at the origin, and so does ours
@@ -79,6 +79,14 @@ float4 GT_WorldToClip(float3 positionWS) { return TransformWorldToHClip(position
 float4 GT_ObjectToClip(float3 positionOS) { return TransformWorldToHClip(GT_ObjectToWorld(positionOS)); }
 float3 GT_CameraPositionWS() { return GetCameraRelativePositionWS(_WorldSpaceCameraPos); }
 float2 GT_ScreenSize() { return _ScreenSize.xy; }
+
+// The tessellation view (StandaloneAdapter.hlsl): the camera's, in every pass. HDRP's shadow passes
+// replace only the view matrices of its global constants with the light's (HDShadowAtlas: _ViewMatrix,
+// _ViewProjMatrix, ...); _CameraViewProjMatrix (the camera's camera-relative view-projection, equal
+// to _ViewProjMatrix in the camera's own passes), _ScreenSize and the camera position stay the
+// camera's. HDRP's own tessellation reads these two for the same reason (TessellationShare.hlsl).
+float4 GT_TessObjectToClip(float3 positionOS) { return mul(_CameraViewProjMatrix, float4(GT_ObjectToWorld(positionOS), 1.0)); }
+float2 GT_TessScreenSize() { return _ScreenSize.xy; }
 
 // HDRP has no "main light"; the sun is the directional light that casts the cascaded shadows
 // (_DirectionalShadowIndex, -1 when none does). Without one: the first directional light that

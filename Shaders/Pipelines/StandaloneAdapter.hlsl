@@ -11,6 +11,12 @@
 //                                                       key of the factors they keep)
 //   float3 GT_CameraPositionWS()
 //   float2 GT_ScreenSize()                              render target size in pixels
+//   float4 GT_TessObjectToClip(float3 positionOS)       the tessellation view: the camera whose
+//   float2 GT_TessScreenSize()                          frame this draw is part of, even in a pass
+//                                                       drawn from another view (a shadow map), so
+//                                                       every pass tessellates the surface the
+//                                                       camera sees; the factors and octave counts
+//                                                       read these, the culling GT_ObjectToClip
 //   void   GT_MainLight(out float3 directionWS, out float3 color)
 //                                                       directionWS: unit, from the surface TOWARDS
 //                                                       the light (the convention of URP's Light)
@@ -106,6 +112,10 @@ float4 GT_WorldToClip(float3 positionWS)
 float3 GT_CameraPositionWS() { return _RigCameraPosition.xyz; }
 
 float2 GT_ScreenSize() { return _RigScreenSize.xy; }
+
+// The rig draws from its camera only.
+float4 GT_TessObjectToClip(float3 positionOS) { return GT_ObjectToClip(positionOS); }
+float2 GT_TessScreenSize() { return GT_ScreenSize(); }
 
 void GT_MainLight(out float3 directionWS, out float3 color)
 {

@@ -89,9 +89,10 @@ float4 GT_ObjectToClip(float3 positionOS)
 {
     float3 positionWS = GT_ObjectToWorld(positionOS);
 #if defined(GT_PASS_SHADOWCASTER)
-    // What the shadow pass's tessellation factors and culling see (tile corners and bounding boxes,
-    // which have no normal): the depth bias only. The vertices get the normal bias too
-    // (GT_ObjectToShadowClip); it moves them by a few shadow-map texels, well inside a tile.
+    // What the shadow pass's culling sees (tile bounding boxes, which have no normal): the light's
+    // view with the depth bias only; the factors read the camera's (GT_TessObjectToClip). The
+    // vertices get the normal bias too (GT_ObjectToShadowClip); it moves them by a few shadow-map
+    // texels, well inside a tile.
     return ShadowCasterWorldToClip(positionWS + ShadowCasterLightDirection(positionWS) * _ShadowBias.x);
 #else
     return TransformWorldToHClip(positionWS);

@@ -48,6 +48,37 @@ namespace GregoryTerrain.Tests
             Assert.That(r.UploadCount, Is.EqualTo(1));
         }
 
+        /// <summary>
+        /// Each camera's draw carries its tessellation view (its object -> clip and pixel size), which
+        /// every pass of the draw reads, its shadow maps included; it is set only when it differs from
+        /// what the property block holds, and again after the block is cleared.
+        /// </summary>
+        [Test]
+        public void EachCameraSendsItsTessellationViewOnlyWhenItDiffers()
+        {
+            var r = _t.Renderer("terrain");
+            Camera a = _t.Camera("a"), b = _t.Camera("b");
+            b.transform.position = new Vector3(0.5f, 2f, -3f);
+            b.fieldOfView = 30f;
+            Assert.That(a.pixelWidth, Is.GreaterThan(0), "the test needs cameras with pixels (the Game view's size)");
+            int[] range = { GregoryTerrainRenderer.RangePropertyId };
+            int[] rangeAndView = { GregoryTerrainRenderer.RangePropertyId, ShaderIds.TessObjectToClip, ShaderIds.TessScreenSize };
+            r.DrawFor(a);
+            Assert.That(r.PropertiesSetLastPrepare, Does.Contain(ShaderIds.TessObjectToClip).And.Contain(ShaderIds.TessScreenSize), "the first draw");
+            r.DrawFor(a);
+            Assert.That(r.PropertiesSetLastPrepare, Is.EqualTo(range), "a camera that holds still");
+            r.DrawFor(b);
+            Assert.That(r.PropertiesSetLastPrepare, Is.EqualTo(rangeAndView), "another camera's draw carries its own view");
+            r.DrawFor(a);
+            Assert.That(r.PropertiesSetLastPrepare, Is.EqualTo(rangeAndView), "and the first camera's again");
+            a.transform.position = new Vector3(0f, 1f, 0f);
+            r.DrawFor(a);
+            Assert.That(r.PropertiesSetLastPrepare, Is.EqualTo(rangeAndView), "a camera that moved");
+            r.ReleaseGpuResources();   // clears the property block
+            r.DrawFor(a);
+            Assert.That(r.PropertiesSetLastPrepare, Does.Contain(ShaderIds.TessObjectToClip), "a cleared block gets the view again");
+        }
+
         [Test]
         public void DisableReleasesBuffersAndTheRuntimeMaterial()
         {

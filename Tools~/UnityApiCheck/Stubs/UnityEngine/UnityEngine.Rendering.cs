@@ -56,6 +56,8 @@ namespace UnityEngine
     public sealed partial class MaterialPropertyBlock
     {
         public Vector4 GetVector(int nameID) => default;                              // SR:MaterialPropertyBlock.GetVector
+        public Matrix4x4 GetMatrix(int nameID) => default;                            // SR:MaterialPropertyBlock.GetMatrix
+        public bool HasMatrix(int nameID) => false;                                   // SR:MaterialPropertyBlock.HasMatrix
         public bool HasBuffer(int nameID) => false;                                   // SR:MaterialPropertyBlock.HasBuffer
         public bool isEmpty => true;                                                  // SR:MaterialPropertyBlock-isEmpty
     }
