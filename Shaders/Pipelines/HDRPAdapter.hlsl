@@ -4,7 +4,9 @@
 // _WorldSpaceCameraPos, _ScreenSize, GetCurrentExposureMultiplier, _DirectionalLightCount,
 // _DirectionalShadowIndex, _DirectionalLightDatas, DirectionalLightData, unity_SelectionID),
 // LightLoop/HDShadow.hlsl (HDShadowContext, InitShadowContext, GetDirectionalShadowAttenuation),
-// Material/NormalBuffer.hlsl (NormalData, EncodeIntoNormalBuffer) and _CameraViewProjMatrix.
+// Material/NormalBuffer.hlsl (NormalData, EncodeIntoNormalBuffer), the sky's ambient probe
+// (_AmbientProbeData, GetIndirectDiffuseMultiplier, GetMeshRenderingLightLayer; SRP Core's
+// SphericalHarmonics.hlsl: SampleSH9), _CameraViewProjMatrix and INV_PI.
 // Compiled against HDRP 14's real includes off Unity by the rig (Tools~/rig/shaderlab.py).
 //
 // HDRP renders camera-relative: its "world space" has the camera at the origin, and so does ours
@@ -43,6 +45,9 @@
     #endif
     #include "Packages/com.unity.render-pipelines.high-definition/Runtime/Lighting/LightLoop/HDShadow.hlsl"
 #endif
+#if defined(GT_PASS_FORWARD)
+    #include "Packages/com.unity.render-pipelines.core/ShaderLibrary/SphericalHarmonics.hlsl"
+#endif
 #if defined(GT_PASS_DEPTH_NORMALS)
     #include "Packages/com.unity.render-pipelines.high-definition/Runtime/Material/NormalBuffer.hlsl"
 #endif
@@ -50,12 +55,14 @@
 #define GT_ADAPTER_HDRP 1
 
 // The forward pass receives the main directional light's shadow, through HDRP's own shadow code
-// (the cascades, filtering and fade of the HDRP asset), and pre-exposes its lit colour as every
-// HDRP lit material does. Fog on opaque surfaces is HDRP's own full-screen pass, not the material's.
+// (the cascades, filtering and fade of the HDRP asset), is lit by the sky's ambient probe and
+// pre-exposes its lit colour as every HDRP lit material does. Fog on opaque surfaces is HDRP's own
+// full-screen pass, not the material's.
 #if defined(GT_PASS_FORWARD)
     #define GT_RECEIVE_SHADOWS 1
     #define GT_VARYINGS_POSITION_WS 1
     #define GT_PRE_EXPOSE 1
+    #define GT_AMBIENT_PROBE 1
 #endif
 // The depth prepass also writes the normal buffer (SSAO, SSR, contact shadows read it); with MSAA
 // HDRP binds the depth as a colour target first (WRITE_MSAA_DEPTH, HDRP's keyword).
@@ -103,8 +110,9 @@ int MainDirectionalLightIndex()
     return -1;
 }
 
-// forward is the direction the light travels, so the direction towards the light is its negation;
-// the colour is what reaches diffuse surfaces (HDRP scales it by the light's diffuse dimmer).
+// forward is the direction the light travels, so the direction towards the light is its negation.
+// The colour is what a white Lambertian surface facing the light reflects, as HDRP's Lit computes
+// it: the light's illuminance (lux, times its diffuse dimmer) times Lambert(), 1/pi.
 void GT_MainLight(out float3 directionWS, out float3 color)
 {
     directionWS = float3(0.0, 1.0, 0.0);
@@ -114,7 +122,7 @@ void GT_MainLight(out float3 directionWS, out float3 color)
     {
         DirectionalLightData light = _DirectionalLightDatas[index];
         directionWS = -light.forward;
-        color = light.color * light.diffuseDimmer;
+        color = light.color * (light.diffuseDimmer * INV_PI);
     }
 }
 
@@ -145,6 +153,18 @@ float GT_MainLightShadow(float3 positionWS, float4 positionSS, float3 normalWS)
 // The pre-exposure of HDRP's lit colours (its exposure texture), so the terrain matches an
 // exposed scene: light intensities are physical (lux), the exposure brings them to display range.
 float GT_ExposureMultiplier() { return GetCurrentExposureMultiplier(); }
+
+#if defined(GT_PASS_FORWARD)
+// The sky's light on a surface facing normalWS, as HDRP lights a surface with neither lightmap nor
+// probe volume (its light loop's EvaluateAmbientProbe): the ambient probe, already convolved with
+// the clamped cosine and divided by pi (albedo times it is the reflected radiance), scaled by the
+// Indirect Lighting Controller. Its units are the sun's, so the exposure keeps both in proportion
+// (a constant ambient came out about 1e-5 of the display, black).
+float3 GT_AmbientProbe(float3 normalWS)
+{
+    return SampleSH9(_AmbientProbeData, normalWS) * GetIndirectDiffuseMultiplier(GetMeshRenderingLightLayer());
+}
+#endif
 
 #if defined(GT_PASS_DEPTH_NORMALS)
 // HDRP's normal buffer (EncodeIntoNormalBuffer: octahedral normal, perceptual roughness). The

@@ -33,6 +33,9 @@
 //   float3 GT_ApplyFog(float3 color, float3 positionWS)             with GT_FOG
 //   float2 GT_AmbientOcclusion(float4 positionSS)  (indirect, direct) occlusion, with GT_AMBIENT_OCCLUSION
 //   float  GT_ExposureMultiplier()                 the lit colour's scale, with GT_PRE_EXPOSE
+//   float3 GT_AmbientProbe(float3 normalWS)        the sky's light reflected by a white Lambertian
+//                                                  surface (in the main light colour's units), with
+//                                                  GT_AMBIENT_PROBE; else the constant GT_AMBIENT
 //   float4 GT_EncodeDepthNormal(float3 normalWS)   the depth-normals output of a world normal
 //                                                  (the pipeline's packing), in GT_PASS_DEPTH_NORMALS
 //   GT_WRITE_DEPTH_COLOR      the depth-normals pass writes the depth as colour first (HDRP MSAA)
