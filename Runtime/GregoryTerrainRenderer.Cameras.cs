@@ -78,12 +78,9 @@ namespace GregoryTerrain
         }
 
         /// <summary>
-        /// The tessellation view of <paramref name="cam"/>'s draw: its object -> clip
-        /// (<see cref="ObjectToClip"/>) and pixel size, which every pass of the draw reads for its
-        /// factors (URP and Built-in; HDRP reads its own camera constants), so the shadow maps Unity
-        /// renders for this camera hold the surface it draws. Set only when they differ from what the
-        /// property block holds (read back, so a cleared block is refilled): a camera that holds
-        /// still sends nothing, another camera drawing in between sends its own (80 bytes).
+        /// <paramref name="cam"/>'s object -> clip and pixel size, from which every pass of its draw,
+        /// its shadow maps included, takes the factors (URP, Built-in). Set only when they differ from
+        /// what the property block holds (read back: a cleared block is refilled).
         /// </summary>
         void PushTessellationView(Camera cam)
         {

@@ -40,9 +40,8 @@ namespace GregoryTerrain
         /// Bytes this script sets per camera in the steady state (the camera holding still): one
         /// float4, <c>_Range</c> (one MaterialPropertyBlock.SetVector in PushRange, then one
         /// Graphics.RenderPrimitives call for that camera).
-        /// Anything else is set only on change: the camera's tessellation view
-        /// (<c>_GtTessObjectToClip/_GtTessScreenSize</c>, 80 bytes, when it moved or another camera
-        /// drew since), <c>_RangeOrigin</c> (16 bytes, on re-snap),
+        /// Anything else is set only on change: the camera's view (80 bytes, when it moved or another
+        /// camera drew since), <c>_RangeOrigin</c> (16 bytes, on re-snap),
         /// <c>_GtObjectToWorld/_GtWorldToObject</c> (128 bytes, when the Transform changes),
         /// <c>_TileLattice</c> (16 bytes, when anchored tiles are anchored again: a zoom, a re-snap), the
         /// whole TerrainParams block (10 float4, 160 bytes, when a setting or the grid changes) and the

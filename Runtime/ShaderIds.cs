@@ -34,7 +34,7 @@ namespace GregoryTerrain
         /// <summary>The renderer's object matrices (the Unity adapters; deep-zoom offset included).</summary>
         public static readonly int ObjectToWorld = Shader.PropertyToID("_GtObjectToWorld");
         public static readonly int WorldToObject = Shader.PropertyToID("_GtWorldToObject");
-        /// <summary>The tessellation view (UnityAdapterCommon.hlsl): the drawing camera's object -> clip and pixel size, per camera.</summary>
+        /// <summary>The drawing camera's object -> clip and pixel size (UnityAdapterCommon.hlsl).</summary>
         public static readonly int TessObjectToClip = Shader.PropertyToID("_GtTessObjectToClip");
         public static readonly int TessScreenSize = Shader.PropertyToID("_GtTessScreenSize");
 

@@ -8,8 +8,7 @@
 // active pipeline and whose passes the GPU supports. Each pipeline has a tessellated SubShader
 // (#pragma require tessellation tessHW) followed by a fallback SubShader (vert_fallback) that
 // devices without hull/domain stages get instead. Shadow and depth passes run the same stages with
-// the drawing camera's factors (the adapters' GT_TessObjectToClip), so shadows and depth come from
-// the same tessellated surface as the colour. Each SubShader's
+// the camera's factors, so shadows and depth come from the same tessellated surface as the colour. Each SubShader's
 // "GregoryTerrainDraw" tag (Tessellated / Fallback) tells GregoryTerrainRenderer which draw the
 // SubShader Unity picked expects (Material.GetTag without fallbacks reads the SubShader in use).
 //
@@ -603,9 +602,7 @@ Shader "GregoryTerrain/Terrain"
         {
             Name "ShadowCaster"
             Tags { "LightMode" = "ShadowCaster" }
-            // HDRP's global: 0 (depth clamped, not clipped) for directional cascades, so casters
-            // between the light and the cascade's near plane still cast; 1 for the other lights.
-            ZClip [_ZClip]
+            ZClip [_ZClip]   // HDRP's: 0 (clamp) for directional cascades
             ZWrite On
             ZTest LEqual
             ColorMask 0
@@ -769,9 +766,7 @@ Shader "GregoryTerrain/Terrain"
         {
             Name "ShadowCaster"
             Tags { "LightMode" = "ShadowCaster" }
-            // HDRP's global: 0 (depth clamped, not clipped) for directional cascades, so casters
-            // between the light and the cascade's near plane still cast; 1 for the other lights.
-            ZClip [_ZClip]
+            ZClip [_ZClip]   // HDRP's: 0 (clamp) for directional cascades
             ZWrite On
             ZTest LEqual
             ColorMask 0

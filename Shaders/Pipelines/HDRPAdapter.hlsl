@@ -4,9 +4,7 @@
 // _WorldSpaceCameraPos, _ScreenSize, GetCurrentExposureMultiplier, _DirectionalLightCount,
 // _DirectionalShadowIndex, _DirectionalLightDatas, DirectionalLightData, unity_SelectionID),
 // LightLoop/HDShadow.hlsl (HDShadowContext, InitShadowContext, GetDirectionalShadowAttenuation),
-// Material/NormalBuffer.hlsl (NormalData, EncodeIntoNormalBuffer), the sky's ambient probe
-// (_AmbientProbeData, GetIndirectDiffuseMultiplier, GetMeshRenderingLightLayer; SRP Core's
-// SphericalHarmonics.hlsl: SampleSH9), _CameraViewProjMatrix and INV_PI.
+// Material/NormalBuffer.hlsl (NormalData, EncodeIntoNormalBuffer) and SphericalHarmonics.hlsl.
 // Compiled against HDRP 14's real includes off Unity by the rig (Tools~/rig/shaderlab.py).
 //
 // HDRP renders camera-relative: its "world space" has the camera at the origin, and so does ours
@@ -55,9 +53,8 @@
 #define GT_ADAPTER_HDRP 1
 
 // The forward pass receives the main directional light's shadow, through HDRP's own shadow code
-// (the cascades, filtering and fade of the HDRP asset), is lit by the sky's ambient probe and
-// pre-exposes its lit colour as every HDRP lit material does. Fog on opaque surfaces is HDRP's own
-// full-screen pass, not the material's.
+// (the cascades, filtering and fade of the HDRP asset), and pre-exposes its lit colour as every
+// HDRP lit material does. Fog on opaque surfaces is HDRP's own full-screen pass, not the material's.
 #if defined(GT_PASS_FORWARD)
     #define GT_RECEIVE_SHADOWS 1
     #define GT_VARYINGS_POSITION_WS 1
@@ -87,11 +84,8 @@ float4 GT_ObjectToClip(float3 positionOS) { return TransformWorldToHClip(GT_Obje
 float3 GT_CameraPositionWS() { return GetCameraRelativePositionWS(_WorldSpaceCameraPos); }
 float2 GT_ScreenSize() { return _ScreenSize.xy; }
 
-// The tessellation view (StandaloneAdapter.hlsl): the camera's, in every pass. HDRP's shadow passes
-// replace only the view matrices of its global constants with the light's (HDShadowAtlas: _ViewMatrix,
-// _ViewProjMatrix, ...); _CameraViewProjMatrix (the camera's camera-relative view-projection, equal
-// to _ViewProjMatrix in the camera's own passes), _ScreenSize and the camera position stay the
-// camera's. HDRP's own tessellation reads these two for the same reason (TessellationShare.hlsl).
+// The camera's view, also in a shadow pass: HDRP's shadow atlas replaces only the view matrices
+// (_ViewProjMatrix, ...), as its own tessellation assumes (TessellationShare.hlsl).
 float4 GT_TessObjectToClip(float3 positionOS) { return mul(_CameraViewProjMatrix, float4(GT_ObjectToWorld(positionOS), 1.0)); }
 float2 GT_TessScreenSize() { return _ScreenSize.xy; }
 
@@ -111,8 +105,7 @@ int MainDirectionalLightIndex()
 }
 
 // forward is the direction the light travels, so the direction towards the light is its negation.
-// The colour is what a white Lambertian surface facing the light reflects, as HDRP's Lit computes
-// it: the light's illuminance (lux, times its diffuse dimmer) times Lambert(), 1/pi.
+// The colour: what a white Lambertian surface facing it reflects, lux * Lambert() (1/pi), as Lit.
 void GT_MainLight(out float3 directionWS, out float3 color)
 {
     directionWS = float3(0.0, 1.0, 0.0);
@@ -155,11 +148,7 @@ float GT_MainLightShadow(float3 positionWS, float4 positionSS, float3 normalWS)
 float GT_ExposureMultiplier() { return GetCurrentExposureMultiplier(); }
 
 #if defined(GT_PASS_FORWARD)
-// The sky's light on a surface facing normalWS, as HDRP lights a surface with neither lightmap nor
-// probe volume (its light loop's EvaluateAmbientProbe): the ambient probe, already convolved with
-// the clamped cosine and divided by pi (albedo times it is the reflected radiance), scaled by the
-// Indirect Lighting Controller. Its units are the sun's, so the exposure keeps both in proportion
-// (a constant ambient came out about 1e-5 of the display, black).
+// The sky's light as HDRP's light loop gives it without lightmaps (in lux / pi, as the sun's).
 float3 GT_AmbientProbe(float3 normalWS)
 {
     return SampleSH9(_AmbientProbeData, normalWS) * GetIndirectDiffuseMultiplier(GetMeshRenderingLightLayer());

@@ -28,7 +28,6 @@ float4 GT_ObjectToClip(float3 positionOS) { return mul(GT_ObjectToClipMatrix(), 
 float4 GT_WorldToClip(float3 positionWS) { return GT_ObjectToClip(positionWS); }
 float3 GT_CameraPositionWS() { return float3(0.0, 0.0, 0.0); }
 float2 GT_ScreenSize() { return _GT_LodScreenSize.xy; }
-// The LOD camera decides the tessellation of every pass and camera (the draw reads its factors).
 float4 GT_TessObjectToClip(float3 positionOS) { return GT_ObjectToClip(positionOS); }
 float2 GT_TessScreenSize() { return GT_ScreenSize(); }
 void GT_MainLight(out float3 directionWS, out float3 color)

@@ -11,12 +11,8 @@
 //                                                       key of the factors they keep)
 //   float3 GT_CameraPositionWS()
 //   float2 GT_ScreenSize()                              render target size in pixels
-//   float4 GT_TessObjectToClip(float3 positionOS)       the tessellation view: the camera whose
-//   float2 GT_TessScreenSize()                          frame this draw is part of, even in a pass
-//                                                       drawn from another view (a shadow map), so
-//                                                       every pass tessellates the surface the
-//                                                       camera sees; the factors and octave counts
-//                                                       read these, the culling GT_ObjectToClip
+//   float4 GT_TessObjectToClip(float3 positionOS)       the drawing camera's view, also in a
+//   float2 GT_TessScreenSize()                          shadow pass: what the factors read
 //   void   GT_MainLight(out float3 directionWS, out float3 color)
 //                                                       directionWS: unit, from the surface TOWARDS
 //                                                       the light (the convention of URP's Light)
@@ -33,9 +29,7 @@
 //   float3 GT_ApplyFog(float3 color, float3 positionWS)             with GT_FOG
 //   float2 GT_AmbientOcclusion(float4 positionSS)  (indirect, direct) occlusion, with GT_AMBIENT_OCCLUSION
 //   float  GT_ExposureMultiplier()                 the lit colour's scale, with GT_PRE_EXPOSE
-//   float3 GT_AmbientProbe(float3 normalWS)        the sky's light reflected by a white Lambertian
-//                                                  surface (in the main light colour's units), with
-//                                                  GT_AMBIENT_PROBE; else the constant GT_AMBIENT
+//   float3 GT_AmbientProbe(float3 normalWS)        sky light, with GT_AMBIENT_PROBE (else GT_AMBIENT)
 //   float4 GT_EncodeDepthNormal(float3 normalWS)   the depth-normals output of a world normal
 //                                                  (the pipeline's packing), in GT_PASS_DEPTH_NORMALS
 //   GT_WRITE_DEPTH_COLOR      the depth-normals pass writes the depth as colour first (HDRP MSAA)
@@ -116,7 +110,6 @@ float3 GT_CameraPositionWS() { return _RigCameraPosition.xyz; }
 
 float2 GT_ScreenSize() { return _RigScreenSize.xy; }
 
-// The rig draws from its camera only.
 float4 GT_TessObjectToClip(float3 positionOS) { return GT_ObjectToClip(positionOS); }
 float2 GT_TessScreenSize() { return GT_ScreenSize(); }
 

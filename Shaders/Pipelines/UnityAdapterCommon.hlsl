@@ -23,15 +23,8 @@ float4x4 _GtWorldToObject;
 float3 GT_ObjectToWorldNormal(float3 normalOS) { return normalize(mul(normalOS, (float3x3)_GtWorldToObject)); }
 
 #if !defined(GT_ADAPTER_HDRP)
-// The tessellation view (StandaloneAdapter.hlsl), for URP and the Built-in pipeline: the camera
-// whose frame the draw is part of, which GregoryTerrainRenderer sets per camera (C# names:
-// ShaderIds.TessObjectToClip / TessScreenSize): its GPU projection * view * _GtObjectToWorld and
-// its pixel size (w, h, 1/w, 1/h). The pipelines' own constants cannot serve: in a shadow pass
-// their view and projection are the light's (URP's ShadowUtils.RenderShadowSlice sets them with
-// SetViewProjectionMatrices; the Built-in pipeline likewise), and URP 14 sets no camera position
-// or screen size for the passes it runs before the camera's own. Every pass reads these, so the
-// colour, depth and shadow passes choose the same factors bit for bit. (HDRP keeps the camera's
-// constants through its shadow passes: HDRPAdapter.hlsl.)
+// The drawing camera's view, which the renderer sets per camera (ShaderIds.TessObjectToClip,
+// TessScreenSize): in a shadow pass URP's and Built-in's own view is the light's. (HDRP: its own.)
 float4x4 _GtTessObjectToClip;
 float4 _GtTessScreenSize;
 float4 GT_TessObjectToClip(float3 positionOS) { return mul(_GtTessObjectToClip, float4(positionOS, 1.0)); }

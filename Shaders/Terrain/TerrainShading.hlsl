@@ -1,8 +1,8 @@
 // Fragment colour of the terrain: Lambert lighting from the adapter's main light, the height
 // colour of eq. 14-15 (GT_HEIGHT_COLOR), snow blended by depth (GT_SNOW), what the pipeline adds
 // when its adapter says so (received shadows GT_RECEIVE_SHADOWS, screen-space occlusion
-// GT_AMBIENT_OCCLUSION, fog GT_FOG, pre-exposure GT_PRE_EXPOSE, the sky's ambient GT_AMBIENT_PROBE;
-// none of them in the off-Unity rig)
+// GT_AMBIENT_OCCLUSION, fog GT_FOG, pre-exposure GT_PRE_EXPOSE, sky light GT_AMBIENT_PROBE; none of
+// them in the off-Unity rig)
 // and the debug views (each replaces the lit colour):
 //   GT_DEBUG_NORMALS      world normal as RGB (n * 0.5 + 0.5)
 //   GT_DEBUG_PATCH_ID     one flat colour per Gregory patch
@@ -13,8 +13,8 @@
 #include "TerrainVertex.hlsl"
 
 static const float3 GT_DEFAULT_ALBEDO = float3(0.55, 0.55, 0.5);
-// Light from the sky on faces turned away from the main light, so slopes never go black: in the
-// units of a main light of colour 1, for adapters without the pipeline's own sky light (GT_AMBIENT_PROBE).
+// Light from the sky on faces turned away from the main light, so slopes never go black (against a
+// main light of colour 1; GT_AMBIENT_PROBE: the pipeline's own).
 static const float GT_AMBIENT = 0.2;
 
 // A stable, well-spread colour per patch index (integer hash to three bytes).
@@ -70,7 +70,7 @@ float4 TerrainFragmentColor(TerrainVaryings i)
     GT_MainLight(lightDirectionWS, lightColor);
     float lambert = saturate(dot(normalWS, lightDirectionWS));
     #if defined(GT_AMBIENT_PROBE)
-    float3 ambient = GT_AmbientProbe(normalWS);   // the pipeline's sky light, in its lights' units
+    float3 ambient = GT_AmbientProbe(normalWS);
     #else
     float ambient = GT_AMBIENT;
     #endif

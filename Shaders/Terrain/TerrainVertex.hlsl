@@ -162,7 +162,6 @@ float VertexOctaveCount(TileLayout l, TerrainSurfacePoint s)
     [branch] if (NoiseSegmentPixels() > 0.0)
     {
         float3 p = TerrainToObject(OutputSurfacePosition(l, s));   // what the vertex outputs before noise
-        // In the tessellation view (the camera's, also in a shadow pass), as the factors.
         float k = PixelsPerUnit(GT_TessObjectToClip(p), GT_TessObjectToClip(p + float3(1.0, 0.0, 0.0)),
                                 GT_TessObjectToClip(p + float3(0.0, 1.0, 0.0)), GT_TessObjectToClip(p + float3(0.0, 0.0, 1.0)),
                                 GT_TessScreenSize());

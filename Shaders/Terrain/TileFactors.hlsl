@@ -3,9 +3,8 @@
 // hull_const and by the vertex cache's CacheTileFactors kernel (VertexCacheKernels.hlsl), so both
 // decide identically. Mirrors Runtime/Core/Terrain/TileFactors.cs name for name (the pieces' arithmetic:
 // TessellationPolicy.cs). Needs the adapter's
-// GT_ObjectToClip (the culling: the view the pass draws, a light's in a shadow pass), its
-// tessellation view GT_TessObjectToClip / GT_TessScreenSize (the pixel scales: the camera's in every
-// pass, so a shadow caster is the surface the camera draws) and TerrainVertex.hlsl's EvaluateCellSurface.
+// GT_ObjectToClip (the culling: the pass's view), GT_TessObjectToClip / GT_TessScreenSize (the pixel
+// scales: the camera's, also in a shadow pass) and TerrainVertex.hlsl's EvaluateCellSurface.
 //
 // Every sample below is of the tile's cell (TileLattice.hlsl): the tile itself unless anchored and
 // clipped to the range. A clipped tile draws its cell's factors scaled to the part it keeps
@@ -90,8 +89,7 @@ bool TileCulled(float3 cornerOS[4], float noiseMargin)
     return BoxOutsideFrustum(boxCS, 0.0);
 }
 
-// Object point -> pixels per object unit there (TessellationFactors.hlsl, PixelsPerUnit), in the
-// tessellation view: the camera's, whichever view the pass draws.
+// Object point -> pixels per object unit there (TessellationFactors.hlsl, PixelsPerUnit), camera's view.
 float ObjectPixelsPerUnit(float3 p)
 {
     return PixelsPerUnit(GT_TessObjectToClip(p), GT_TessObjectToClip(p + float3(1.0, 0.0, 0.0)),
