@@ -255,9 +255,12 @@ TileFactors hull_const(InputPatch<TileCorner, 4> corners)
     return f;
 }
 
+// Winding: tess u -> object x, v -> object z. The domain's origin is its upper left with v growing
+// down, so its counter-clockwise triangles are clockwise seen from above: Unity's front face (Cull
+// Back keeps them), as the fallback's index buffer (v, v + row, v + 1) is.
 [domain("quad")]
 [partitioning(GT_PARTITIONING)]
-[outputtopology("triangle_cw")]
+[outputtopology("triangle_ccw")]
 [patchconstantfunc("hull_const")]
 [outputcontrolpoints(4)]
 TileCorner hull_shader(InputPatch<TileCorner, 4> corners, uint id : SV_OutputControlPointID)

@@ -55,9 +55,31 @@ namespace GregoryTerrain.Rig.Tests
             }
         }
 
+        /// <summary>
+        /// Runs the harness with the render state of the pass the rig's variants stand for (the
+        /// forward pass of GregoryTerrain.shader, read by Tools~/rig/render_state.py) before
+        /// <paramref name="args"/>: a later option wins, so a test may name its own.
+        /// </summary>
         public static HarnessRun Harness(params string[] args)
         {
-            return Start(HarnessPath(), args);
+            if (args.Contains("--list-devices")) return Start(HarnessPath(), args);
+            return Start(HarnessPath(), PassStateArgs(args.Contains("--tesc") ? "tessellated" : "fallback").Concat(args));
+        }
+
+        static readonly Dictionary<string, string[]> PassStates = new Dictionary<string, string[]>();
+
+        /// <summary>The forward pass's Cull, ZTest, ZWrite, ZClip and ColorMask as harness options, for
+        /// the SubShaders of <paramref name="draw"/> (tessellated or fallback); read once per run.</summary>
+        public static string[] PassStateArgs(string draw)
+        {
+            lock (PassStates)
+            {
+                if (PassStates.TryGetValue(draw, out string[] cached)) return cached;
+                string script = Path.Combine(PackageRoot(), "Tools~", "rig", "render_state.py");
+                HarnessRun r = Start("python3", new[] { script, "--draw", draw });
+                Assert.That(r.ExitCode, Is.EqualTo(0), "render_state.py --draw " + draw + " failed:\n" + r.Stdout + r.Stderr);
+                return PassStates[draw] = r.Stdout.Split((char[])null, StringSplitOptions.RemoveEmptyEntries);
+            }
         }
 
         /// <summary>The words after "key sub" on the first such line, or null.</summary>
@@ -114,13 +136,13 @@ namespace GregoryTerrain.Rig.Tests
                 foreach (float v in values) w.Write(v);  // BinaryWriter is little-endian
         }
 
-        /// <summary>A static mesh for --static-mesh: one quad over object (x, z) in [0.25, 0.75]^2, two triangles.</summary>
+        /// <summary>A static mesh for --static-mesh: one quad over object (x, z) in [0.25, 0.75]^2, two triangles, clockwise from above (Unity's front face).</summary>
         (string positions, string indices) WriteQuadMesh(string name)
         {
             string pos = Path.Combine(_work, name + "_positions.f32"), idx = Path.Combine(_work, name + "_indices.u32");
             WriteFloats(pos, new[] { 0.25f, 0, 0.25f, 0.75f, 0, 0.25f, 0.75f, 0, 0.75f, 0.25f, 0, 0.75f });
             using (var w = new BinaryWriter(File.Create(idx)))
-                foreach (uint i in new uint[] { 0, 1, 2, 0, 2, 3 }) w.Write(i);
+                foreach (uint i in new uint[] { 0, 2, 1, 0, 3, 2 }) w.Write(i);
             return (pos, idx);
         }
 
@@ -316,9 +338,9 @@ namespace GregoryTerrain.Rig.Tests
             for (uint j = 0; j < f; j++)
                 for (uint i = 0; i < f; i++)
                 {
-                    uint a = j * row + i, b = a + 1, c = a + row, d = c + 1;
-                    tris.Add(new[] { a, b, d });
-                    tris.Add(new[] { a, d, c });
+                    uint v = j * row + i;
+                    tris.Add(new[] { v, v + row, v + 1 });
+                    tris.Add(new[] { v + 1, v + row, v + row + 1 });
                 }
             tris.Reverse();
             uint[] idx = change(tris.SelectMany(t => t).ToArray());
@@ -409,6 +431,195 @@ namespace GregoryTerrain.Rig.Tests
             Assert.That(r.Stdout.Split('\n').Count(l => l.StartsWith("time frame_ms ")), Is.EqualTo(4));
             double median = double.Parse(r.Value("time", "frame_ms_median")[0], System.Globalization.CultureInfo.InvariantCulture);
             Assert.That(median, Is.GreaterThan(0.0));
+        }
+
+        // ---- render state: culling, depth, colour mask (render_state.hpp) -----------------------
+
+        /// <summary>
+        /// A static mesh of quads in the plane z = <c>zs[k]</c> over x in [x0, x0 + 1], y in [0, 1]
+        /// (quad k at <c>x0s[k]</c>), each as the Unity manual's "Creating a quad" builds it: vertices
+        /// (0,0,0) (w,0,0) (0,h,0) (w,h,0), triangles 0,2,1 / 2,3,1; <paramref name="reversed"/>: 0,1,2 / 2,1,3.
+        /// </summary>
+        (string positions, string indices) WriteManualQuads(string name, bool reversed, double[] x0s, double[] zs)
+        {
+            var p = new List<float>();
+            var idx = new List<uint>();
+            for (int k = 0; k < x0s.Length; k++)
+            {
+                float x = (float)x0s[k], z = (float)zs[k];
+                p.AddRange(new[] { x, 0, z, x + 1, 0, z, x, 1, z, x + 1, 1, z });
+                uint b = (uint)(4 * k);
+                idx.AddRange((reversed ? new uint[] { 0, 1, 2, 2, 1, 3 } : new uint[] { 0, 2, 1, 2, 3, 1 }).Select(i => b + i));
+            }
+            string pos = Path.Combine(_work, name + "_positions.f32"), ind = Path.Combine(_work, name + "_indices.u32");
+            WriteFloats(pos, p);
+            File.WriteAllBytes(ind, idx.SelectMany(BitConverter.GetBytes).ToArray());
+            return (pos, ind);
+        }
+
+        /// <summary>Unity's default camera: at (0.5, 0.25, -2) looking along +Z, +Y up (RigCamera: Unity's
+        /// left-handed world, reversed depth), far plane at <paramref name="far"/>.</summary>
+        string UnityCameraInputs(string name, double far = 10)
+        {
+            string dir = MakeInputs(name, 4, 8, new[] { 0f, 0, 1, 1 });
+            var cam = RigCamera.LookAt(new[] { 0.5, 0.25, -2 }, new[] { 0.5, 0.25, 0 }, 60, Size, Size, 0.1, far, RigCamera.Scale(1, 1, 1));
+            WriteFloats(Path.Combine(dir, "camera.f32"), cam.Pack());
+            return dir;
+        }
+
+        HarnessRun DrawMesh(string dir, (string positions, string indices) mesh, string png, params string[] state)
+        {
+            var args = new List<string> { "--static-mesh", "--mesh", mesh.positions, mesh.indices, "--vert", Path.Combine(_spv, "mesh.vert.spv"),
+                "--frag", Path.Combine(_spv, "mesh.frag.spv"), "--buffers", dir, "--width", Size.ToString(), "--height", Size.ToString(),
+                "--device", "llvmpipe", "--png", png };
+            args.AddRange(state);
+            HarnessRun r = HarnessRun.Harness(args.ToArray());
+            r.AssertSucceeded();
+            return r;
+        }
+
+        // The quad 1 x 1 at 2 units, fov 60 on 128 px: 128 / 2 / tan(30 deg) / 2 = 55.4 px a side.
+        const double ManualQuadPixels = 55.4256 * 55.4256;
+
+        [TestCase(false, "back", true)]
+        [TestCase(true, "back", false)]
+        [TestCase(false, "front", false)]
+        [TestCase(true, "front", true)]
+        [TestCase(true, "off", true)]
+        public void FrontFaceRule_TheUnityManualsQuad_FacesACameraLookingAlongZ(bool reversed, string cull, bool drawn)
+        {
+            string dir = UnityCameraInputs("in_manual_quad");
+            string png = Path.Combine(_work, $"manual_quad_{reversed}_{cull}.png");
+            HarnessRun r = DrawMesh(dir, WriteManualQuads("manual_quad_" + reversed, reversed, new[] { 0.0 }, new[] { 0.0 }), png, "--cull", cull);
+            Assert.That(r.Value("state", "cull"), Is.EqualTo(new[] { cull, "front_face", "clockwise", "ztest", "lequal", "compare", "greater_or_equal",
+                                                                      "zwrite", "on", "zclip", "on", "color_mask", "rgba", "depth", "reversed" }));
+            long covered = r.Long("image", "nonsky_pixels");
+            TestContext.Out.WriteLine($"manual quad, {(reversed ? "reversed" : "Unity's")} triangles, Cull {cull}: {covered} px");
+            if (!drawn)
+            {
+                Assert.That(covered, Is.EqualTo(0), "culled");
+                return;
+            }
+            Assert.That(covered, Is.EqualTo(ManualQuadPixels).Within(0.05 * ManualQuadPixels));
+            // Not mirrored and upright, as Unity shows it: +x to the right (mesh.hlsl reddens with x),
+            // the quad (y in [0, 1], camera at y = 0.25) mostly above the centre.
+            RigPng img = RigPng.Read(png);
+            double redLeft = 0, redRight = 0;
+            int above = 0, below = 0;
+            for (int y = 0; y < Size; y++)
+                for (int x = 0; x < Size; x++)
+                {
+                    int o = 4 * (y * Size + x);
+                    if (img.Rgba[o + 2] > 200) continue;   // sky (blue 230); the quad's blue is 0.2..0.6
+                    if (x < Size / 2) redLeft += img.Rgba[o]; else redRight += img.Rgba[o];
+                    if (y < Size / 2) above++; else below++;
+                }
+            Assert.That(redRight, Is.GreaterThan(redLeft), "+x is on the right");
+            Assert.That(above, Is.GreaterThan(2 * below), "+y is up");
+        }
+
+        [TestCase("--cull", "backward", "back, front, off")]
+        [TestCase("--ztest", "lessequal", "lequal")]
+        [TestCase("--zwrite", "yes", "on, off")]
+        [TestCase("--zclip", "clamp", "on, off")]
+        [TestCase("--color-mask", "RGBX", "R, G, B, A in that order")]
+        [TestCase("--color-mask", "AR", "R, G, B, A in that order")]
+        [TestCase("--color-mask", "", "R, G, B, A in that order")]
+        [TestCase("--depth", "inverted", "reversed, forward")]
+        public void RenderStateOptions_BadValue_Exit1NamingTheOptionAndValue(string option, string value, string expected)
+        {
+            string dir = MakeInputs("in_4x4_f8", 4, 8, new[] { 0f, 0, 1, 1 });
+            HarnessRun r = HarnessRun.Harness(TessArgs(dir, 4, 8, null).Concat(new[] { option, value }).ToArray());
+            Assert.That(r.ExitCode, Is.EqualTo(1), r.Stdout + r.Stderr);
+            Assert.That(r.Stderr, Does.Contain(option + ": expected").And.Contain("'" + value + "'").And.Contain(expected));
+        }
+
+        [Test]
+        public void RenderState_WithoutOptions_IsShaderLabsDefaultWithReversedDepth_AndOptionsAreShaderLabsWords()
+        {
+            string dir = MakeInputs("in_4x4_f8", 4, 8, new[] { 0f, 0, 1, 1 });
+            HarnessRun plain = HarnessRun.Start(HarnessRun.HarnessPath(), TessArgs(dir, 4, 8, null));
+            plain.AssertSucceeded();
+            Assert.That(plain.Stdout, Does.Contain("state cull back front_face clockwise ztest lequal compare greater_or_equal zwrite on zclip on color_mask rgba depth reversed\n"));
+            HarnessRun named = HarnessRun.Start(HarnessRun.HarnessPath(), TessArgs(dir, 4, 8, null,
+                "--cull", "Off", "--ztest", "GEqual", "--zwrite", "Off", "--zclip", "False", "--color-mask", "RGB", "--depth", "forward"));
+            named.AssertSucceeded();
+            Assert.That(named.Stdout, Does.Contain("state cull off front_face clockwise ztest gequal compare greater_or_equal zwrite off zclip off color_mask rgb depth forward\n"));
+        }
+
+        [Test]
+        public void RenderState_TheRigsRunsDrawWithTheShadersForwardPass()
+        {
+            string dir = MakeInputs("in_4x4_f8", 4, 8, new[] { 0f, 0, 1, 1 });
+            HarnessRun r = HarnessRun.Harness(TessArgs(dir, 4, 8, null));
+            r.AssertSucceeded();
+            string[] pass = HarnessRun.PassStateArgs("tessellated");
+            Assert.That(pass, Is.EqualTo(new[] { "--cull", "back", "--ztest", "lequal", "--zwrite", "on", "--zclip", "on", "--color-mask", "rgba" }),
+                "GregoryTerrain.shader's forward passes");
+            Assert.That(r.Value("state", "cull")[0], Is.EqualTo(pass[1]));
+        }
+
+        [TestCase("reversed", "lequal", true)]
+        [TestCase("reversed", "less", true)]
+        [TestCase("reversed", "greater", false)]
+        [TestCase("reversed", "gequal", false)]
+        [TestCase("forward", "lequal", true)]
+        [TestCase("forward", "greater", false)]
+        [TestCase("forward", "gequal", false)]
+        [TestCase("reversed", "never", false)]
+        [TestCase("reversed", "always", true)]
+        public void ZTest_IsTurnedAroundByTheDepthConvention(string depth, string ztest, bool drawn)
+        {
+            // The quad's depth lies strictly between the clear values (0 reversed, 1 forward): only a
+            // test turned the right way for the convention passes against the cleared buffer.
+            string dir = UnityCameraInputs("in_ztest");
+            HarnessRun r = DrawMesh(dir, WriteManualQuads("ztest_quad", false, new[] { 0.0 }, new[] { 0.0 }), Path.Combine(_work, "ztest.png"),
+                "--depth", depth, "--ztest", ztest);
+            Assert.That(r.Long("image", "nonsky_pixels") > 0, Is.EqualTo(drawn), r.Stdout);
+            Assert.That(r.Value("state", "cull"), Does.Contain("depth").And.Contain(depth));
+        }
+
+        [Test]
+        public void ZWrite_Off_LetsAFartherQuadDrawnLaterCoverANearerOne()
+        {
+            // Quad 0 at z = 0, drawn first; quad 1 behind it at z = 0.5, shifted 0.5 along x (redder).
+            string dir = UnityCameraInputs("in_zwrite");
+            var mesh = WriteManualQuads("zwrite_quads", false, new[] { 0.0, 0.5 }, new[] { 0.0, 0.5 });
+            string onPng = Path.Combine(_work, "zwrite_on.png"), offPng = Path.Combine(_work, "zwrite_off.png");
+            DrawMesh(dir, mesh, onPng, "--zwrite", "on");
+            DrawMesh(dir, mesh, offPng, "--zwrite", "off");
+            RigPng on = RigPng.Read(onPng), off = RigPng.Read(offPng);
+            int differing = on.PixelsDifferingFrom(off, 8);
+            TestContext.Out.WriteLine($"ZWrite On against Off: {differing} pixels differ");
+            Assert.That(differing, Is.GreaterThan(500), "with ZWrite Off the later, farther quad paints over the overlap");
+        }
+
+        [TestCase("on", false)]
+        [TestCase("off", true)]
+        public void ZClip_Off_ClampsAQuadBeyondTheFarPlaneInsteadOfClippingIt(string zclip, bool drawn)
+        {
+            string dir = UnityCameraInputs("in_zclip", far: 1.5);   // the quad is 2 units away
+            HarnessRun r = DrawMesh(dir, WriteManualQuads("zclip_quad", false, new[] { 0.0 }, new[] { 0.0 }), Path.Combine(_work, "zclip.png"), "--zclip", zclip);
+            long covered = r.Long("image", "nonsky_pixels");
+            Assert.That(covered > 0, Is.EqualTo(drawn), covered + " px");
+            if (drawn) Assert.That(covered, Is.EqualTo(ManualQuadPixels).Within(0.05 * ManualQuadPixels));
+        }
+
+        [TestCase("0", 0)]
+        [TestCase("R", 1)]
+        [TestCase("RGBA", 3)]
+        public void ColorMask_WritesOnlyTheNamedChannels(string mask, int channelsChanged)
+        {
+            string dir = UnityCameraInputs("in_colormask");
+            string png = Path.Combine(_work, "colormask_" + mask + ".png");
+            DrawMesh(dir, WriteManualQuads("colormask_quad", false, new[] { 0.0 }, new[] { 0.0 }), png, "--color-mask", mask);
+            RigPng img = RigPng.Read(png);
+            byte[] sky = { 140, 179, 230 };
+            var changed = new bool[3];
+            for (int p = 0; p < Size * Size; p++)
+                for (int c = 0; c < 3; c++) changed[c] |= Math.Abs(img.Rgba[4 * p + c] - sky[c]) > 2;
+            Assert.That(changed.Count(c => c), Is.EqualTo(channelsChanged), "channels written: " + string.Join(",", changed));
+            if (channelsChanged == 1) Assert.That(changed[0], Is.True, "R only");
         }
 
         [TestCase("params.f32", 39, "160")]

@@ -174,7 +174,8 @@ namespace GregoryTerrain.Rig.Tests
 
         /// <summary>
         /// RigCamera block: orthographic, straight down, the object rectangle [x0, x1] x [z0, z1]
-        /// filling the view; clip z = 0.5 + 0.01 height (heights within +-50 stay inside the depth range).
+        /// filling the view as a Unity camera above sees it (+x right, +z up); clip z = 0.5 + 0.01
+        /// height, reversed depth (higher is nearer; heights within +-50 stay inside the depth range).
         /// </summary>
         public static float[] TopDownCameraOver(double x0, double z0, double x1, double z1, int width, int height)
         {
@@ -184,29 +185,28 @@ namespace GregoryTerrain.Rig.Tests
         }
 
         /// <summary>
+        /// RigCamera block: orthographic, straight up from below, the object rectangle [x0, x1] x
+        /// [z0, z1] filling the view as a Unity camera below sees it (turned to look up with +z up,
+        /// so +x is on its left); clip z = 0.5 - 0.01 height, reversed depth (lower is nearer).
+        /// </summary>
+        public static float[] BottomUpCameraOver(double x0, double z0, double x1, double z1, int width, int height)
+        {
+            float sx = (float)(2 / (x1 - x0)), sz = (float)(2 / (z1 - z0));
+            float[,] m = { { -sx, 0, 0, (float)(1 + sx * x0) }, { 0, 0, sz, (float)(-1 - sz * z0) }, { 0, -0.01f, 0, 0.5f }, { 0, 0, 0, 1 } };
+            return CameraBlock(m, new[] { (float)(0.5 * (x0 + x1)), -2f, (float)(0.5 * (z0 + z1)) }, width, height);
+        }
+
+        /// <summary>
         /// RigCamera block of a perspective camera at object-space <paramref name="eye"/> looking at
         /// <paramref name="target"/> (object space is Unity's (x, height, y), identity object-to-world):
-        /// right-handed view, clip z in [0, w] (Vulkan/D3D depth), +y up.
+        /// RigCamera.LookAt's, so a Unity camera's view (left-handed world, y up, reversed depth).
         /// </summary>
         public static float[] PerspectiveCamera(Double3 eye, Double3 target, double fovYDegrees, int width, int height, double near, double far)
         {
-            Double3 f = GMath.normalize(target - eye);
-            Double3 up = Math.Abs(f.y) > 0.99 ? new Double3(0, 0, 1) : new Double3(0, 1, 0);
-            Double3 r = GMath.normalize(GMath.cross(f, up));
-            Double3 u = GMath.cross(r, f);
-            double t = 1.0 / Math.Tan(0.5 * fovYDegrees * Math.PI / 180.0), a = (double)width / height;
-            // view: x = r.(p - eye), y = u.(p - eye), depth d = f.(p - eye); clip = (x t / a, y t, z, d)
-            // with z = far (d - near) / (far - near) so that z / w runs 0 .. 1 over [near, far].
-            double k = far / (far - near);
-            var rows = new[]
-            {
-                new[] { r.x * t / a, r.y * t / a, r.z * t / a, -GMath.dot(r, eye) * t / a },
-                new[] { u.x * t, u.y * t, u.z * t, -GMath.dot(u, eye) * t },
-                new[] { f.x * k, f.y * k, f.z * k, -(GMath.dot(f, eye) + near) * k },
-                new[] { f.x, f.y, f.z, -GMath.dot(f, eye) },
-            };
+            double[,] d = RigCamera.LookAt(new[] { eye.x, eye.y, eye.z }, new[] { target.x, target.y, target.z }, fovYDegrees,
+                                           width, height, near, far, RigCamera.Scale(1, 1, 1)).ObjectToClip();
             var m = new float[4, 4];
-            for (int i = 0; i < 4; i++) for (int j = 0; j < 4; j++) m[i, j] = (float)rows[i][j];
+            for (int i = 0; i < 4; i++) for (int j = 0; j < 4; j++) m[i, j] = (float)d[i, j];
             return CameraBlock(m, new[] { (float)eye.x, (float)eye.y, (float)eye.z }, width, height);
         }
 

@@ -33,6 +33,7 @@ make_plan() {  # make_plan DIR
   local dir=$1
   rm -rf "$dir"; mkdir -p "$dir"
   "${cli[@]}" bench-plan --grid "$grid" --out "$dir" "${quick[@]}" >&2
+  write_pass_states "$dir"   # the forward pass's render state: bench_run.sh draws every job with it
   # The vertex cache's variants (GT_VERTEX_CACHE) carry their two compute kernels (internals.md, "Vertex cache").
   local cache=(vertex_cache noise+vertex_cache noise+height_color+vertex_cache)
   # Always compiled afresh (~30 s): a plan carried to the GPU with SPIR-V older than Shaders/ times

@@ -219,7 +219,7 @@ PartFactors hull_const_part(InputPatch<TileCorner, 4> corners)
 
 [domain("quad")]
 [partitioning(GT_PARTITIONING)]
-[outputtopology("triangle_cw")]
+[outputtopology("triangle_ccw")]
 [patchconstantfunc("hull_const_part")]
 [outputcontrolpoints(4)]
 TileCorner hull_part(InputPatch<TileCorner, 4> corners, uint id : SV_OutputControlPointID)

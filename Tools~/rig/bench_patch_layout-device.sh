@@ -6,6 +6,8 @@
 #   device NAME
 #   round K old X ms new Y ms            (each run's median frame time)
 #   patch layout (VARIANT): REF X ms, TREE Y ms, new / old R
+# Both layouts draw with this tree's forward-pass render state (bench.conf's state): a REF from
+# before the tessellated winding was made clockwise draws its terrain back-facing, culled.
 # Logs go to $OUT when it is set, else DIR/out.
 set -euo pipefail
 dir="$(cd "${1:?usage: bench_patch_layout-device.sh DIR [--rounds R] [--frames N] [--device SUBSTR]}" && pwd)"; shift
@@ -28,11 +30,12 @@ if ! ldconfig -p 2>/dev/null | grep -q libvulkan.so.1; then
   done
 fi
 H="$dir/bin/gt-harness"
+read -ra state_args <<< "${state:?bench.conf has no state (prepare the folder again)}"
 dev=(); [ -n "$device" ] && dev=(--device "$device")
 draw() {  # draw LAYOUT ROUND: one harness run, prints its median frame ms
   local s="$dir/spv/$1" log="$out/$1-$2.log"
   "$H" "${dev[@]}" --vert "$s/vert.spv" --tesc "$s/tesc.spv" --tese "$s/tese.spv" --frag "$s/frag.spv" \
-    --buffers "$dir/$1" --patches "$patches" --width "$width" --height "$height" \
+    --buffers "$dir/$1" --patches "$patches" --width "$width" --height "$height" "${state_args[@]}" \
     --frames "$frames" --warmup 5 --timestamps >"$log" 2>&1 || { cat "$log" >&2; exit 1; }
   awk '$1 == "time" && $2 == "frame_ms_median" {print $3}' "$log"
 }

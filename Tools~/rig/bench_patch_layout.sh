@@ -86,6 +86,7 @@ old_layout="$old_layout"
 patches=$((tiles * tiles))
 width=$width
 height=$height
+state="$(pass_state tessellated)"
 CONF
 if [ -n "$prepare" ]; then
   say "prepared $work ($(du -sh "$work" | cut -f1)): REF ${ref:0:12} ($old_layout) vs this tree; on the device: bash $work/bench_patch_layout-device.sh $work"

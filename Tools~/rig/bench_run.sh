@@ -10,6 +10,8 @@
 # the captures and packed meshes are deleted at the end (hundreds of MB at 8M triangles).
 # A job naming an option this harness's --help does not list (e.g. the vertex cache's --compute-once
 # on a harness without it) is not run: "skipped: this harness has no OPTION" instead of its output.
+# Every job draws with the render state of the shader's forward pass, PLAN_DIR/pass_state_tessellated.args
+# for jobs with --tesc, else pass_state_fallback.args (written by bench.sh's make_plan).
 set -uo pipefail
 plan=$1 harness=$2 spv=$3 out=$4; shift 4
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
@@ -26,6 +28,11 @@ missing_option() {  # prints the first --option of "$1" that the harness's usage
     esac
   done
 }
+for draw in tessellated fallback; do
+  [ -f "$plan/pass_state_$draw.args" ] || { echo "bench_run: $plan has no pass_state_$draw.args (make the plan again)" >&2; exit 2; }
+done
+read -ra state_tessellated < "$plan/pass_state_tessellated.args"
+read -ra state_fallback < "$plan/pass_state_fallback.args"
 start=$(date +%s)
 n=0
 while IFS=$'\t' read -r id kind ref args; do
@@ -42,8 +49,9 @@ while IFS=$'\t' read -r id kind ref args; do
   printf '== %s %s\n' "$id" "$kind" >> "$res"
   miss=$(missing_option "$args")
   if [ -n "$miss" ]; then printf 'skipped: this harness has no %s\n' "$miss" >> "$res"; continue; fi
+  state=("${state_fallback[@]}"); [[ " $args " == *" --tesc "* ]] && state=("${state_tessellated[@]}")
   # shellcheck disable=SC2086
-  "$harness" $args "$@" >> "$res" 2>&1
+  "$harness" "${state[@]}" $args "$@" >> "$res" 2>&1
   rc=$?
   if [ "$kind" = static-bake ] && [ $rc -eq 0 ]; then
     python3 "$here/bench_static_mesh.py" "$out/capture/$ref.f32" "$plan/jobs/$ref" "$out/static/$ref" >> "$res" 2>&1

@@ -14,3 +14,21 @@ export MESA_SHADER_CACHE_DIR="${MESA_SHADER_CACHE_DIR:-$BUILD_DIR/mesa-shader-ca
 
 say() { printf '[gt] %s\n' "$*" >&2; }
 die() { printf '[gt] error: %s\n' "$*" >&2; exit 1; }
+
+# The render state the rig's variants draw with: the forward pass's Cull, ZTest, ZWrite, ZClip and
+# ColorMask in Shaders/GregoryTerrain.shader (render_state.py), as harness options.
+#   pass_state tessellated|fallback          prints them (one line)
+#   pass_state_args ARRAY tessellated|fallback   sets the array ARRAY to them
+#   write_pass_states DIR                    DIR/pass_state_tessellated.args and _fallback.args, for
+#                                            folders carried to a machine without the package
+pass_state() { python3 "$RIG_DIR/render_state.py" --draw "$1" || die "render_state.py --draw $1 failed"; }
+pass_state_args() {
+  local -n _state=$1
+  local line
+  line=$(pass_state "$2") || exit 1
+  read -ra _state <<< "$line"
+}
+write_pass_states() {
+  local draw
+  for draw in tessellated fallback; do pass_state "$draw" > "$1/pass_state_$draw.args"; done
+}

@@ -50,6 +50,8 @@ GT_BUILD_DIR="$out/shaders" bash "$RIG_DIR/shaders.sh" --only "$variant" >"$out/
   || { cat "$out/shaders.log" >&2; die "compiling $variant failed"; }
 spv="$out/shaders/spirv/$variant"
 dev=(); [ -n "$device" ] && dev=(--device "$device")
+# The forward pass's render state (Cull Back: the terrain draws its front faces only, as in Unity).
+pass_state_args state tessellated
 
 # The factor is odd: shipped shaders partition fractional_odd, which rounds an even factor up.
 # Noise: 8 octaves, so that the narrow ranges show detail the wide ones cannot (the octave count
@@ -67,7 +69,7 @@ if [ "$tiled" = 1 ]; then
     log="$out/harness_$kind.log"
     "$harness" --vert "$s/vert.spv" --tesc "$s/tesc.spv" --tese "$s/tese.spv" --frag "$s/frag.spv" \
       --buffers "$dir" --patches $((32 * 32)) --width "$width" --height "$height" "${table[@]}" \
-      --png "$out/noise_$kind.png" --stats "${dev[@]}" >"$log" 2>&1 || { cat "$log" >&2; die "harness failed ($kind noise)"; }
+      --png "$out/noise_$kind.png" --stats "${state[@]}" "${dev[@]}" >"$log" 2>&1 || { cat "$log" >&2; die "harness failed ($kind noise)"; }
     say "$kind noise: $(awk '$1=="stat" && $2=="clipping_invocations" {print $3}' "$log") triangles; image $out/noise_$kind.png"
     if [ "$docs" = 1 ]; then
       mkdir -p "$PKG_DIR/Documentation~/images"
@@ -83,7 +85,7 @@ if [ "$dem" = 1 ]; then
   log="$out/harness_dem.log"
   "$harness" --vert "$spv/vert.spv" --tesc "$spv/tesc.spv" --tese "$spv/tese.spv" --frag "$spv/frag.spv" \
     --buffers "$dir" --patches $((tiles * tiles)) --width "$width" --height "$height" \
-    --png "$out/demo_dem.png" --stats "${dev[@]}" >"$log" 2>&1 || { cat "$log" >&2; die "harness failed on the DEM grid"; }
+    --png "$out/demo_dem.png" --stats "${state[@]}" "${dev[@]}" >"$log" 2>&1 || { cat "$log" >&2; die "harness failed on the DEM grid"; }
   say "DEM crop: $(awk '$1=="stat" && $2=="clipping_invocations" {print $3}' "$log") triangles; image $out/demo_dem.png"
   if [ "$docs" = 1 ]; then
     mkdir -p "$PKG_DIR/Documentation~/images"
@@ -100,7 +102,7 @@ for g in 1.0 0.5 0.2 0.1 0.02; do
   log="$out/harness_g$g.log"
   "$harness" --vert "$spv/vert.spv" --tesc "$spv/tesc.spv" --tese "$spv/tese.spv" --frag "$spv/frag.spv" \
     --buffers "$dir" --patches $((tiles * tiles)) --width "$width" --height "$height" \
-    --png "$out/demo_g$g.png" --stats "${dev[@]}" >"$log" 2>&1 || { cat "$log" >&2; die "harness failed at g = $g"; }
+    --png "$out/demo_g$g.png" --stats "${state[@]}" "${dev[@]}" >"$log" 2>&1 || { cat "$log" >&2; die "harness failed at g = $g"; }
   verts=$(awk '$1=="stat" && $2=="tessellation_evaluation_shader_invocations" {print $3}' "$log")
   tris=$(awk '$1=="stat" && $2=="clipping_invocations" {print $3}' "$log")
   nonsky=$(awk '$1=="image" && $2=="nonsky_pixels" {print $3 " of " $5}' "$log")

@@ -31,6 +31,7 @@ if [ "$gpu" = 1 ]; then
       --only readback+range_origin --only readback+noise+range_origin \
       >"$BUILD_DIR/eval-shaders.log" 2>&1 || { cat "$BUILD_DIR/eval-shaders.log" >&2; die "compiling the readback shaders failed"; }
   fi
-  args+=(--harness "$BUILD_DIR/harness/gt-harness" --spirv "$spirv")
+  write_pass_states "$BUILD_DIR/eval"
+  args+=(--harness "$BUILD_DIR/harness/gt-harness" --spirv "$spirv" --pass-state "$BUILD_DIR/eval/pass_state_tessellated.args")
 fi
 exec "$cli" eval --grid "$grid" "${args[@]}"

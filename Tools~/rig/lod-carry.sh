@@ -4,7 +4,8 @@
 # terrain width (default 100 km and 1,000 km) the ground-level view of `gt-cli lod-scene` (camera 2 m
 # up, M = 16, adaptive factors at 1 px) plus the single range over the whole terrain from the same
 # camera at M = 64 tiles and the uniform factor F whose 2 x 64^2 x F^2 triangles come nearest the
-# levels' count on lavapipe (clipping invocations; the device prints its own counts). A Vulkan loader
+# levels' count on lavapipe (clipping invocations; the device prints its own counts), and the render
+# state of the shader's forward pass (pass_state_*.args, write_pass_states). A Vulkan loader
 # .deb found in $PKG_DIR/.gl is copied to DEST/.gl. Then: bash DEST/lod-device.sh DEST [--device NVIDIA]
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 dest="${1:?usage: gt lod-carry DEST [--terrains M1,M2,...]}"; shift
@@ -21,6 +22,8 @@ harness="$BUILD_DIR/harness/gt-harness"; cli="$BUILD_DIR/gt-cli/gt-cli"
 rm -rf "$dest"; mkdir -p "$dest/bin" "$dest/spv"
 cp "$harness" "$dest/bin/"
 cp "$RIG_DIR/lod-device.sh" "$dest/"
+write_pass_states "$dest"   # the forward pass's render state, for lod-device.sh
+read -ra state < "$dest/pass_state_tessellated.args"
 tmp="$BUILD_DIR/lod-carry-spirv"; rm -rf "$tmp"
 # The single range is drawn around the same range origin as the levels (lod-scene sends one), so it
 # needs the origin's code: without GT_RANGE_ORIGIN a stage draws a sent origin as 0.
@@ -38,7 +41,7 @@ for m in "${list[@]}"; do
   patches=$(awk '$1 == "patches" { print $2 }' "$dest/$name/lod.txt")
   "$harness" --vert "$dest/spv/lod/vert.spv" --tesc "$dest/spv/lod/tesc.spv" --tese "$dest/spv/lod/tese.spv" \
     --frag "$dest/spv/lod/frag.spv" --buffers "$dest/$name/lod" --params-tail "$dest/$name/lod/lod_tail.f32" \
-    --patches "$patches" --width 1920 --height 1080 --reversed-z --stats --device llvmpipe > "$dest/$name/lod-lavapipe.txt" \
+    --patches "$patches" --width 1920 --height 1080 "${state[@]}" --stats --device llvmpipe > "$dest/$name/lod-lavapipe.txt" \
     || die "the levels' draw failed on lavapipe ($dest/$name/lod-lavapipe.txt)"
   tris=$(awk '$1 == "stat" && $2 == "clipping_invocations" { print $3 }' "$dest/$name/lod-lavapipe.txt")
   f=$(python3 -c "import math; print(max(1, min(64, round(math.sqrt($tris / (2 * 64 * 64))))))")

@@ -11,7 +11,8 @@
 #
 # RUN_DIR layout: bin/gt-harness; spv/lod/*.spv (lod+noise), spv/single/*.spv (noise);
 # runs.txt ("NAME TERRAIN_M PATCHES LAVAPIPE_TRIANGLES F" a line); NAME/lod, NAME/single (lod-scene
-# folders); .gl/*.deb (optional) a Vulkan loader to unpack where the machine has none.
+# folders); pass_state_tessellated.args (the forward pass's render state as harness options);
+# .gl/*.deb (optional) a Vulkan loader to unpack where the machine has none.
 set -euo pipefail
 run="$(cd "${1:?usage: lod-device.sh RUN_DIR [--device SUBSTR] [--frames N] [--rounds R]}" && pwd)"; shift
 device=""; frames=50; rounds=3
@@ -31,13 +32,14 @@ if ! ldconfig -p 2>/dev/null | grep -q libvulkan.so.1; then
   done
 fi
 H="$run/bin/gt-harness"
+read -ra state < "$run/pass_state_tessellated.args" || { echo "lod-device: $run has no pass_state_tessellated.args (assemble it again with gt lod-carry)" >&2; exit 2; }
 dev=(); [ -n "$device" ] && dev=(--device "$device")
 median() { python3 -c "import sys, statistics; v = [float(x) for x in sys.stdin.read().split()]; print(f'{statistics.median(v):.4f}' if v else 'nan')"; }
 draw() {  # draw NAME KIND PATCHES LOG
   local v="$run/spv/$2" dir="$run/$1/$2" tail=()
   [ "$2" = lod ] && tail=(--params-tail "$dir/lod_tail.f32")
   "$H" "${dev[@]}" --vert "$v/vert.spv" --tesc "$v/tesc.spv" --tese "$v/tese.spv" --frag "$v/frag.spv" \
-    --buffers "$dir" "${tail[@]}" --patches "$3" --width 1920 --height 1080 --reversed-z --stats \
+    --buffers "$dir" "${tail[@]}" --patches "$3" --width 1920 --height 1080 "${state[@]}" --stats \
     --frames "$frames" --warmup 3 --timestamps >"$4" || { cat "$4"; exit 1; }
 }
 first=1

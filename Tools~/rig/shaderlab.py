@@ -152,13 +152,15 @@ def outer_part(body, inner_keyword):
 
 
 class Pass:
-    def __init__(self, name, program, requirements):
-        self.name, self.program, self.requirements = name, program, requirements
+    # shaderlab: the pass's ShaderLab text with its programs removed (tags, render state; render_state.py).
+    def __init__(self, name, program, requirements, shaderlab=""):
+        self.name, self.program, self.requirements, self.shaderlab = name, program, requirements, shaderlab
 
 
 class SubShader:
-    def __init__(self, index, pipeline, requirements, passes):
-        self.index, self.pipeline, self.requirements, self.passes = index, pipeline, requirements, passes
+    # outer: the SubShader's text before its first pass (tags, PackageRequirements, shared render state).
+    def __init__(self, index, pipeline, requirements, passes, outer=""):
+        self.index, self.pipeline, self.requirements, self.passes, self.outer = index, pipeline, requirements, passes, outer
 
 
 def parse_shader(path):
@@ -175,8 +177,9 @@ def parse_shader(path):
             name = name.group(1) if name else "?"
             progs = re.findall(r"HLSLPROGRAM(.*?)ENDHLSL", body, flags=re.S)
             passes.append(Pass(name, progs[0] if progs else None,
-                               parse_requirements(body.split("HLSLPROGRAM")[0], f"{where} Pass {name}")))
-        subs.append(SubShader(k, pipeline, parse_requirements(outer, where), passes))
+                               parse_requirements(body.split("HLSLPROGRAM")[0], f"{where} Pass {name}"),
+                               re.sub(r"HLSLPROGRAM.*?ENDHLSL", "", body, flags=re.S)))
+        subs.append(SubShader(k, pipeline, parse_requirements(outer, where), passes, outer))
     return subs
 
 

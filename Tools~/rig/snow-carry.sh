@@ -2,7 +2,8 @@
 # folder that Tools~/rig/snow-device.sh runs (on lavapipe here, or carried to a GPU machine): the
 # prebuilt gt-harness and gt-compute, the SPIR-V of the snow kernels and of the terrain with and
 # without GT_SNOW, and the ridge scene of `gt-cli snow-scene` (default R 256,512,1024,2048, 200
-# steps of 0.05 s, frames of 640 x 480). A Vulkan loader .deb found in $PKG_DIR/.gl is copied to DEST/.gl.
+# steps of 0.05 s, frames of 640 x 480), and the render state of the shader's forward pass
+# (pass_state_*.args). A Vulkan loader .deb found in $PKG_DIR/.gl is copied to DEST/.gl.
 # Then: bash DEST/snow-device.sh DEST [--device NVIDIA]
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 dest="${1:?usage: gt snow-carry DEST [--resolutions R,...] [--steps N] [--dt S]}"; shift
@@ -23,6 +24,7 @@ done
 rm -rf "$dest"; mkdir -p "$dest/bin" "$dest/spv"
 cp "$BUILD_DIR/harness/gt-harness" "$BUILD_DIR/computerig/gt-compute" "$dest/bin/"
 cp "$RIG_DIR/snow-device.sh" "$dest/"
+write_pass_states "$dest"   # the forward pass's render state, for snow-device.sh
 # The terrain variants, compiled by gt shaders into a private build folder.
 tmp="$BUILD_DIR/snow-carry-spirv"; rm -rf "$tmp"
 GT_BUILD_DIR="$tmp" bash "$TOOLS_DIR/gt" shaders --only noise+height_color+snow --only noise+height_color >/dev/null \

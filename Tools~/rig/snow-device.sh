@@ -20,6 +20,7 @@
 #   spv/snow/{vert,tesc,tese,frag}.spv   (variant noise+height_color+snow)
 #   spv/bare/{vert,tesc,tese,frag}.spv   (variant noise+height_color)
 #   snow/                                 (gt-cli snow-scene output: scene/, *_R.f32, run.txt)
+#   pass_state_tessellated.args           the forward pass's render state as harness options
 #   .gl/*.deb (optional)                  a Vulkan loader to unpack where the machine has none
 set -euo pipefail
 run="$(cd "${1:?usage: snow-device.sh RUN_DIR [--device SUBSTR] [--frames N]}" && pwd)"; shift
@@ -42,6 +43,7 @@ if ! ldconfig -p 2>/dev/null | grep -q libvulkan.so.1; then
   done
 fi
 H="$run/bin/gt-harness"; C="$run/bin/gt-compute"; S="$run/snow"; spv="$run/spv"
+read -ra state < "$run/pass_state_tessellated.args" || { echo "snow-device: $run has no pass_state_tessellated.args (assemble it again with gt snow-carry)" >&2; exit 2; }
 dev=(); [ -n "$device" ] && dev=(--device "$device")
 val() { sed -n "s/^$1 //p" "$S/run.txt"; }
 read -r -a RES <<< "$(val resolutions)"
@@ -53,7 +55,7 @@ draw() {  # draw VARIANT LOG PNG [snow args...]
   local v="$spv/$1" log="$2" png="$3"; shift 3
   "$H" "${dev[@]}" --vert "$v/vert.spv" --tesc "$v/tesc.spv" --tese "$v/tese.spv" --frag "$v/frag.spv" \
     --buffers "$S/scene" --patches "$patches" --width "$W" --height "$Hh" --png "$png" \
-    --frames "$frames" --warmup 3 --timestamps "$@" >"$log" || { cat "$log"; exit 1; }
+    --frames "$frames" --warmup 3 --timestamps "${state[@]}" "$@" >"$log" || { cat "$log"; exit 1; }
 }
 
 draw bare "$out/render_bare.log" "$out/bare.png"

@@ -27,7 +27,8 @@ namespace GregoryTerrain.Rig
             string work = null;
             if (a.Flag("gpu"))
             {
-                gpu = new Harness { Executable = a.String("harness"), SpirvDir = a.String("spirv"), Device = a.String("device", "") };
+                gpu = new Harness { Executable = a.String("harness"), SpirvDir = a.String("spirv"), Device = a.String("device", ""),
+                                    PassState = Harness.ReadPassState(a.String("pass-state")) };
                 if (gpu.Device.Length == 0) gpu.Device = null;
                 work = Path.Combine(Path.GetTempPath(), "gt-eval-" + Guid.NewGuid().ToString("N"));
             }

@@ -15,7 +15,8 @@ namespace GregoryTerrain.Rig
     {
         public static string FileName(string method, int f) => $"{method}_f{f}.u32";
 
-        /// <summary>The harness's own order: cell by cell, row by row, triangles (a, b, d), (a, d, c).</summary>
+        /// <summary>The harness's own order, the renderer's fallback index buffer: cell by cell, row by row,
+        /// triangles (v, v + row, v + 1), (v + 1, v + row, v + row + 1), clockwise from above.</summary>
         public static uint[] RowMajor(int f)
         {
             var idx = new uint[6 * f * f];
@@ -40,8 +41,8 @@ namespace GregoryTerrain.Rig
 
         static int Cell(uint[] idx, int k, int f, int i, int j)
         {
-            uint row = (uint)(f + 1), a = (uint)j * row + (uint)i, b = a + 1, c = a + row, d = c + 1;
-            idx[k] = a; idx[k + 1] = b; idx[k + 2] = d; idx[k + 3] = a; idx[k + 4] = d; idx[k + 5] = c;
+            uint row = (uint)(f + 1), v = (uint)j * row + (uint)i;
+            idx[k] = v; idx[k + 1] = v + row; idx[k + 2] = v + 1; idx[k + 3] = v + 1; idx[k + 4] = v + row; idx[k + 5] = v + row + 1;
             return k + 6;
         }
 

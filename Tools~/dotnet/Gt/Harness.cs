@@ -12,6 +12,13 @@ namespace GregoryTerrain.Rig
         public string Executable;
         public string SpirvDir;      // $BUILD_DIR/spirv: one folder per variant
         public string Device;        // --device SUBSTR, or null for the first device
+        /// <summary>The drawn pass's render state as harness options (a pass_state_*.args file of
+        /// Tools~/rig/render_state.py), given before every run's own options.</summary>
+        public string[] PassState = Array.Empty<string>();
+
+        /// <summary>The options of a pass_state_*.args file (one line of render_state.py).</summary>
+        public static string[] ReadPassState(string file) =>
+            File.ReadAllText(file).Split((char[])null, StringSplitOptions.RemoveEmptyEntries);
 
         /// <summary>The four tessellated stages of a variant (Tools~/rig/README.md, "Rig-only entry points and compiled files").</summary>
         public List<string> TessellatedStages(string variant)
@@ -32,6 +39,7 @@ namespace GregoryTerrain.Rig
         {
             if (!File.Exists(Executable)) throw new IOException($"{Executable} is missing (run: gt setup)");
             var psi = new ProcessStartInfo(Executable) { RedirectStandardOutput = true, RedirectStandardError = true, UseShellExecute = false };
+            foreach (string a in PassState) psi.ArgumentList.Add(a);
             foreach (string a in args) psi.ArgumentList.Add(a);
             using var p = Process.Start(psi);
             var err = p.StandardError.ReadToEndAsync();

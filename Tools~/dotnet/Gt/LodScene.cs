@@ -91,13 +91,13 @@ namespace GregoryTerrain.Rig
             _grid = grid;
             OutputOffset = TerrainVertex.OutputOffset(grid, p, TerrainKeywords.Noise);
             // The surface under the camera with every octave (the feet draw them all); the camera in
-            // the vertices' frame (output minus the offset), built in double. Reversed depth, as Unity
-            // draws (the harness needs --reversed-z, HarnessArgs): with 0..1 depth a far ridge's back
-            // faces won the depth test in speckles (RigCamera.LookAt).
+            // the vertices' frame (output minus the offset), built in double. RigCamera's reversed
+            // depth, as Unity draws: with 0..1 depth a far ridge's hidden faces won the depth test in
+            // speckles (RigCamera.LookAt).
             double ground = FullDetail(Ground.x, Ground.y).z;
             double[] eye = { Ground.x - OutputOffset.x, ground + EyeMeters * Meter - OutputOffset.z, Ground.y - OutputOffset.y };
             double[] target = { Ground.x - OutputOffset.x, ground - OutputOffset.z, Ground.y + LookAheadMeters * Meter - OutputOffset.y };
-            Camera = RigCamera.LookAt(eye, target, FovYDegrees, Width, Height, 0.05 * Meter, 2.0, RigCamera.Scale(1, 1, 1), reversedZ: true);
+            Camera = RigCamera.LookAt(eye, target, FovYDegrees, Width, Height, 0.05 * Meter, 2.0, RigCamera.Scale(1, 1, 1));
             return this;
         }
 
@@ -181,7 +181,7 @@ namespace GregoryTerrain.Rig
         /// <summary>The harness options that draw the scene from <paramref name="dir"/> (stages and output options are the caller's).</summary>
         public List<string> HarnessArgs(string dir) => new List<string>
         {
-            "--buffers", dir, "--params-tail", Path.Combine(dir, "lod_tail.f32"), "--patches", Patches.ToString(), "--reversed-z",
+            "--buffers", dir, "--params-tail", Path.Combine(dir, "lod_tail.f32"), "--patches", Patches.ToString(),
         };
     }
 }

@@ -6,7 +6,12 @@ namespace GregoryTerrain.Rig
     /// The rig's camera: the 36 floats of the <c>RigCamera</c> cbuffer (Tools~/rig/README.md, "Descriptor bindings", binding 1).
     /// Matrices are built in double, row-major in maths (<c>clip = M * p</c>), and written column
     /// after column, which is how HLSL's default column_major packing reads them.
-    /// Clip space as HLSL/D3D has it: y up (the harness flips the viewport), depth 0..1.
+    /// A Unity camera's: the world is Unity's, left-handed (a camera looking along +Z with +Y up has
+    /// +X on its right), camera space right-handed (looking down -z, Camera.worldToCameraMatrix),
+    /// clip space as HLSL/D3D has it, y up (the harness flips the viewport), and reversed depth as
+    /// Unity draws on Vulkan (UNITY_REVERSED_Z: near 1, far 0; the harness's default --depth
+    /// reversed). So the harness's picture is what Unity shows, and a triangle's winding in it is
+    /// the one Unity's culling sees.
     /// </summary>
     sealed class RigCamera
     {
@@ -17,30 +22,31 @@ namespace GregoryTerrain.Rig
         public int Width = 1024, Height = 768;
 
         /// <summary>
-        /// Perspective camera at <paramref name="eye"/> looking at <paramref name="target"/>, +Y up.
-        /// <paramref name="reversedZ"/>: depth near 1, far 0, as Unity draws (draw with the harness's
-        /// --reversed-z). Float depth then keeps its relative precision (~6e-8 of the distance) out to
-        /// the horizon; the conventional 0..1 keeps only ~6e-8 z^2 / near, kilometres at 500 km with
-        /// near = 5 cm, so a far ridge's back faces (the harness culls none) show through its front.
+        /// Perspective camera at <paramref name="eye"/> looking at <paramref name="target"/>, +Y up
+        /// (+Z up when looking straight up or down), as Unity's Transform.LookAt turns a camera.
+        /// Depth is reversed: float depth then keeps its relative precision (~6e-8 of the distance)
+        /// out to the horizon; the conventional 0..1 keeps only ~6e-8 z^2 / near, kilometres at
+        /// 500 km with near = 5 cm, so a far ridge's hidden faces would show through its front.
         /// </summary>
         public static RigCamera LookAt(double[] eye, double[] target, double fovYDegrees, int width, int height,
-                                       double near, double far, double[,] objectToWorld, bool reversedZ = false)
+                                       double near, double far, double[,] objectToWorld)
         {
             var f = Normalize(Sub(target, eye));
-            var s = Normalize(Cross(f, new[] { 0.0, 1.0, 0.0 }));
-            var u = Cross(s, f);
+            double[] up = Math.Abs(f[1]) > 0.99 ? new[] { 0.0, 0.0, 1.0 } : new[] { 0.0, 1.0, 0.0 };
+            // Left-handed world: right = up x forward (Quaternion.LookRotation's x axis).
+            var r = Normalize(Cross(up, f));
+            var u = Cross(f, r);
             var view = new double[,]
             {
-                { s[0], s[1], s[2], -Dot(s, eye) },
+                { r[0], r[1], r[2], -Dot(r, eye) },
                 { u[0], u[1], u[2], -Dot(u, eye) },
                 { -f[0], -f[1], -f[2], Dot(f, eye) },
                 { 0, 0, 0, 1 },
             };
             double t = 1.0 / Math.Tan(fovYDegrees * Math.PI / 360.0), aspect = (double)width / height;
-            // Right-handed view (camera looks down -z) to D3D-style clip: y up (the harness's viewport
-            // has a negative height, as internals.md says), depth near 0 far 1 (reversed: near 1 far 0).
-            double zz = reversedZ ? near / (far - near) : far / (near - far);
-            double zw = reversedZ ? near * far / (far - near) : near * far / (near - far);
+            // Camera space (looking down -z) to D3D-style clip: y up (the harness's viewport has a
+            // negative height, as internals.md says), depth reversed: z / w = 1 at near, 0 at far.
+            double zz = near / (far - near), zw = near * far / (far - near);
             var proj = new double[,]
             {
                 { t / aspect, 0, 0, 0 },
@@ -58,6 +64,9 @@ namespace GregoryTerrain.Rig
             };
         }
 
+        /// <summary>Object to clip, in double (what <see cref="Pack"/> rounds to float).</summary>
+        public double[,] ObjectToClip() => Mul(WorldToClip, ObjectToWorld);
+
         public static double[,] Scale(double x, double y, double z) =>
             new double[,] { { x, 0, 0, 0 }, { 0, y, 0, 0 }, { 0, 0, z, 0 }, { 0, 0, 0, 1 } };
 
@@ -65,7 +74,7 @@ namespace GregoryTerrain.Rig
         public float[] Pack()
         {
             var r = new float[16 + 16 + 4 + 4 + 4];
-            WriteColumns(Mul(WorldToClip, ObjectToWorld), r, 0);
+            WriteColumns(ObjectToClip(), r, 0);
             WriteColumns(ObjectToWorld, r, 16);
             r[32] = (float)Position[0]; r[33] = (float)Position[1]; r[34] = (float)Position[2]; r[35] = 1;
             r[36] = Width; r[37] = Height; r[38] = 1f / Width; r[39] = 1f / Height;
@@ -74,10 +83,10 @@ namespace GregoryTerrain.Rig
             return r;
         }
 
-        /// <summary>Object-space point to pixel coordinates and NDC depth, for error measures in pixels.</summary>
+        /// <summary>Object-space point to pixel coordinates, NDC depth (reversed: 1 at near) and w, for error measures in pixels.</summary>
         public double[] ToPixels(double[] objectPoint)
         {
-            var m = Mul(WorldToClip, ObjectToWorld);
+            var m = ObjectToClip();
             var c = new double[4];
             for (int i = 0; i < 4; i++)
                 c[i] = m[i, 0] * objectPoint[0] + m[i, 1] * objectPoint[1] + m[i, 2] * objectPoint[2] + m[i, 3];

@@ -203,8 +203,14 @@ const char* usageText() {
   --width W --height H           render target size (default 256x256)
   --png FILE                     write the colour image as PNG
   --wireframe                    polygonMode LINE (needs fillModeNonSolid)
-  --reversed-z                   depth cleared to 0 and GREATER_OR_EQUAL: near 1, far 0, as Unity draws
-                                 (float depth keeps its relative precision to the horizon)
+  --cull back|front|off          the drawn pass's render state, in ShaderLab's words (any case);
+  --ztest less|lequal|equal|gequal|greater|notequal|always|never
+  --zwrite on|off  --zclip on|off   defaults: ShaderLab's, Cull Back, ZTest LEqual, ZWrite On,
+  --color-mask 0|RGBA|RGB|R|...  ZClip On, ColorMask RGBA. Front faces are clockwise in the
+                                 (upright) image, as in Unity; ZClip off clamps depth
+  --depth reversed|forward       depth convention (default reversed, as Unity on Vulkan: near 1,
+                                 far 0, cleared to 0, ZTest turned around: LEqual draws GEQUAL);
+                                 the camera's projection must use the same one
   --storage BINDING:BYTES        zero-filled device-local storage buffer at BINDING (>= 7), repeatable
   --storage-data BINDING:FILE    the same holding FILE's bytes (e.g. the tiled noise's table at 9)
   --compute SPV:GX[,GY[,GZ]]     each frame, before the render pass, dispatch the module's compute
@@ -283,7 +289,12 @@ Options parseOptions(int argc, char** argv) {
         else if (a == "--height") o.height = u32(16384);
         else if (a == "--png") o.pngPath = value();
         else if (a == "--wireframe") o.wireframe = true;
-        else if (a == "--reversed-z") o.reversedZ = true;
+        else if (a == "--cull") o.state.cull = parseCull(a, value());
+        else if (a == "--ztest") o.state.zTest = parseZTest(a, value());
+        else if (a == "--zwrite") o.state.zWrite = parseOnOff(a, value());
+        else if (a == "--zclip") o.state.zClip = parseOnOff(a, value());
+        else if (a == "--color-mask") o.state.colorMask = parseColorMask(a, value());
+        else if (a == "--depth") o.state.depth = parseDepth(a, value());
         else if (a == "--storage") addStorage(o, value());
         else if (a == "--storage-data") addStorage(o, value(), true);
         else if (a == "--compute") o.computes.push_back(parseCompute(value()));

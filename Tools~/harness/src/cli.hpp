@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "render_state.hpp"
+
 namespace gt {
 
 enum class Mode {
@@ -58,7 +60,7 @@ struct Options {
     uint32_t width = 256, height = 256;
     std::string pngPath;
     bool wireframe = false;
-    bool reversedZ = false;  // --reversed-z: depth cleared to 0, GREATER_OR_EQUAL (Unity's reversed depth)
+    RenderState state;  // --cull --ztest --zwrite --zclip --color-mask --depth (render_state.hpp)
 
     std::vector<StorageOption> storage;  // in command-line order
     std::vector<ComputeOption> computes; // dispatched in command-line order before the render pass

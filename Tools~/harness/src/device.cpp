@@ -167,6 +167,7 @@ Gpu createGpu(const std::string& nameSubstring, const FeatureRequest& request) {
     need(request.tessellation, supported.tessellationShader, gpu.enabled.tessellationShader, "tessellationShader",
          "the tessellated draw (use the fallback mode: no --tesc/--tese)");
     need(request.wireframe, supported.fillModeNonSolid, gpu.enabled.fillModeNonSolid, "fillModeNonSolid", "--wireframe");
+    need(request.depthClamp, supported.depthClamp, gpu.enabled.depthClamp, "depthClamp", "--zclip off");
     need(request.vertexStores, supported.vertexPipelineStoresAndAtomics, gpu.enabled.vertexPipelineStoresAndAtomics,
          "vertexPipelineStoresAndAtomics", "--readback (the domain/vertex stage writes _Readback)");
     need(request.statistics, supported.pipelineStatisticsQuery, gpu.enabled.pipelineStatisticsQuery,

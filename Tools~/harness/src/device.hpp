@@ -10,6 +10,7 @@ namespace gt {
 struct FeatureRequest {
     bool tessellation = false;    // tessellationShader
     bool wireframe = false;       // fillModeNonSolid
+    bool depthClamp = false;      // depthClamp (--zclip off)
     bool vertexStores = false;    // vertexPipelineStoresAndAtomics (readback from the domain/vertex stage)
     bool statistics = false;      // pipelineStatisticsQuery
     bool compute = false;         // the queue must also do compute (--compute pre-pass in the frame)

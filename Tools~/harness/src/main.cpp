@@ -26,15 +26,17 @@
 namespace gt {
 namespace {
 
-// Indices of the two triangles of each cell of a (F+1) x (F+1) vertex grid, row-major vertices.
+// Indices of the two triangles of each cell of a (F+1) x (F+1) vertex grid, row-major vertices:
+// the renderer's fallback index buffer (GregoryTerrainRenderer.EnsureFallbackIndices), cell split
+// along its (v + 1, v + row) diagonal, clockwise seen from above (col -> x, row -> z, Unity's front).
 std::vector<uint32_t> rowMajorGrid(uint32_t f) {
     std::vector<uint32_t> idx;
     idx.reserve(static_cast<size_t>(f) * f * 6);
     const uint32_t row = f + 1;
     for (uint32_t j = 0; j < f; ++j)
         for (uint32_t i = 0; i < f; ++i) {
-            const uint32_t a = j * row + i, b = a + 1, c = a + row, d = c + 1;
-            idx.insert(idx.end(), {a, b, d, a, d, c});
+            const uint32_t v = j * row + i;
+            idx.insert(idx.end(), {v, v + row, v + 1, v + 1, v + row, v + row + 1});
         }
     return idx;
 }
@@ -137,6 +139,7 @@ int run(const Options& o) {
     FeatureRequest request;
     request.tessellation = o.mode == Mode::Tessellated;
     request.wireframe = o.wireframe;
+    request.depthClamp = !o.state.zClip;
     request.vertexStores = !o.readbackPath.empty();
     request.statistics = o.stats;
     request.compute = !o.computes.empty();
@@ -174,7 +177,8 @@ int run(const Options& o) {
     desc.mode = o.mode;
     desc.controlPoints = o.controlPoints;
     desc.wireframe = o.wireframe;
-    desc.reversedZ = o.reversedZ;
+    desc.state = o.state;
+    std::printf("%s\n", describeRenderState(o.state).c_str());
     desc.descriptorSets = o.inFlight;
     const std::string vertDefault = o.mode == Mode::Fallback ? "vert_fallback" : "vert";
     desc.vert = loadShader(gpu, o.vertPath, 0, o.vertEntry, vertDefault);
@@ -184,7 +188,7 @@ int run(const Options& o) {
     }
     desc.frag = loadShader(gpu, o.fragPath, 4, o.fragEntry, "frag");
 
-    RenderTarget target = createRenderTarget(gpu, o.width, o.height, o.reversedZ);
+    RenderTarget target = createRenderTarget(gpu, o.width, o.height, depthClearValue(o.state.depth));
     Pipeline pipeline = createPipeline(gpu, desc, target, inputs, storage);
     std::vector<ComputePass> compute = createComputePasses(gpu, o.computes, pipeline);
     DrawWork work = prepareWork(o, gpu);

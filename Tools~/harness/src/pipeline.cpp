@@ -143,7 +143,7 @@ Pipeline createPipeline(const Gpu& gpu, const PipelineDesc& d, const RenderTarge
              std::to_string(gpu.properties.limits.maxTessellationPatchSize));
 
     // Negative viewport height (Vulkan 1.1): clip-space +y is up, as in D3D/HLSL and Unity's
-    // projection, so images come out upright. It flips the winding, hence no culling.
+    // projection, so images come out upright; facing is decided after it (render_state.hpp).
     VkViewport viewport{0.0f, static_cast<float>(target.height), static_cast<float>(target.width),
                         -static_cast<float>(target.height), 0.0f, 1.0f};
     VkRect2D scissor{{0, 0}, {target.width, target.height}};
@@ -155,18 +155,18 @@ Pipeline createPipeline(const Gpu& gpu, const PipelineDesc& d, const RenderTarge
 
     VkPipelineRasterizationStateCreateInfo rs{VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO};
     rs.polygonMode = d.wireframe ? VK_POLYGON_MODE_LINE : VK_POLYGON_MODE_FILL;
-    rs.cullMode = VK_CULL_MODE_NONE;
-    rs.frontFace = VK_FRONT_FACE_COUNTER_CLOCKWISE;
+    rs.cullMode = vulkanCullMode(d.state.cull);
+    rs.frontFace = VK_FRONT_FACE_CLOCKWISE;   // Unity's front faces: clockwise in the upright image
+    rs.depthClampEnable = d.state.zClip ? VK_FALSE : VK_TRUE;
     rs.lineWidth = 1.0f;
     VkPipelineMultisampleStateCreateInfo ms{VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO};
     ms.rasterizationSamples = VK_SAMPLE_COUNT_1_BIT;
     VkPipelineDepthStencilStateCreateInfo ds{VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO};
     ds.depthTestEnable = VK_TRUE;
-    ds.depthWriteEnable = VK_TRUE;
-    ds.depthCompareOp = d.reversedZ ? VK_COMPARE_OP_GREATER_OR_EQUAL : VK_COMPARE_OP_LESS_OR_EQUAL;
+    ds.depthWriteEnable = d.state.zWrite ? VK_TRUE : VK_FALSE;
+    ds.depthCompareOp = vulkanCompareOp(d.state.zTest, d.state.depth);
     VkPipelineColorBlendAttachmentState blend{};
-    blend.colorWriteMask = VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT | VK_COLOR_COMPONENT_B_BIT |
-                           VK_COLOR_COMPONENT_A_BIT;
+    blend.colorWriteMask = d.state.colorMask;
     VkPipelineColorBlendStateCreateInfo cb{VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO};
     cb.attachmentCount = 1;
     cb.pAttachments = &blend;

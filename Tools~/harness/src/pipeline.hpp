@@ -16,7 +16,7 @@ struct PipelineDesc {
     Mode mode = Mode::Tessellated;
     uint32_t controlPoints = 4;  // patch size for the tessellated mode
     bool wireframe = false;
-    bool reversedZ = false;  // GREATER_OR_EQUAL (the target clears depth to 0)
+    RenderState state;       // the drawn pass's Cull, ZTest, ZWrite, ZClip, ColorMask and depth convention
     ShaderModule vert, tesc, tese, frag;  // tesc/tese empty outside the tessellated mode
     uint32_t descriptorSets = 1;          // set 0 of each frame in flight (--in-flight), see addFrameSet
 };

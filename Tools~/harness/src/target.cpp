@@ -59,11 +59,11 @@ void destroyImage(const Gpu& gpu, Image& img) {
 
 }  // namespace
 
-RenderTarget createRenderTarget(const Gpu& gpu, uint32_t width, uint32_t height, bool reversedZ) {
+RenderTarget createRenderTarget(const Gpu& gpu, uint32_t width, uint32_t height, float depthClear) {
     RenderTarget t;
     t.width = width;
     t.height = height;
-    t.depthClear = reversedZ ? 0.0f : 1.0f;
+    t.depthClear = depthClear;
     t.color = createImage(gpu, width, height, kColorFormat,
                           VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT, VK_IMAGE_ASPECT_COLOR_BIT);
     t.depth = createImage(gpu, width, height, kDepthFormat, VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT,

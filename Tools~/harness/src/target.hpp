@@ -24,7 +24,7 @@ struct RenderTarget {
     VkFramebuffer framebuffer = VK_NULL_HANDLE;
 };
 
-RenderTarget createRenderTarget(const Gpu& gpu, uint32_t width, uint32_t height, bool reversedZ = false);
+RenderTarget createRenderTarget(const Gpu& gpu, uint32_t width, uint32_t height, float depthClear);
 void destroyRenderTarget(const Gpu& gpu, RenderTarget& target);
 
 // Begins the render pass with the clears (sky colour, depth 1, or 0 when reversed).

@@ -16,8 +16,9 @@ row = n + 1
 for j in range(n):
     base = j * row
     for i in range(n):
-        a = base + i
-        idx.extend((a, a + 1, a + row + 1, a, a + row + 1, a + row))
+        v = base + i
+        # The renderer's fallback triangles: clockwise seen from above (Unity's front face).
+        idx.extend((v, v + row, v + 1, v + 1, v + row, v + row + 1))
 if sys.byteorder != "little":
     pos.byteswap(); idx.byteswap()
 with open(sys.argv[2], "wb") as f:

@@ -377,7 +377,7 @@ def main():
     os.makedirs(mesh, exist_ok=True)
     write_f32(mesh + "/positions.f32", [0.25, 0, 0.25, 0.75, 0, 0.25, 0.75, 0, 0.75, 0.25, 0, 0.75])
     with open(mesh + "/indices.u32", "wb") as f:
-        f.write(struct.pack("<6I", 0, 1, 2, 0, 2, 3))
+        f.write(struct.pack("<6I", 0, 2, 1, 0, 3, 2))  # clockwise from above: Unity's front face
     p, l = run(["--static-mesh", "--mesh", mesh + "/positions.f32", mesh + "/indices.u32", "--vert", SPV + "/mesh.vert.spv",
                 "--frag", SPV + "/mesh.frag.spv", "--buffers", d, "--width", "128", "--height", "128",
                 "--frames", "3", "--timestamps"])

@@ -61,7 +61,9 @@ TileFactors hull_constant(InputPatch<TileVertex, 4> patch, uint primitive : SV_P
 
 [domain("quad")]
 [partitioning("integer")]
-[outputtopology("triangle_cw")]
+// s -> object x, t -> object z: triangle_ccw in the domain (origin upper left, t down) is
+// clockwise seen from above, Unity's front face (the harness culls as Unity does).
+[outputtopology("triangle_ccw")]
 [outputcontrolpoints(4)]
 [patchconstantfunc("hull_constant")]
 TileVertex hull_shader(InputPatch<TileVertex, 4> patch, uint i : SV_OutputControlPointID)

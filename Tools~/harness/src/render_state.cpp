@@ -1,0 +1,116 @@
+#include "render_state.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <utility>
+#include <vector>
+
+#include "check.hpp"
+
+namespace gt {
+
+namespace {
+
+std::string lower(std::string s) {
+    std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    return s;
+}
+
+// The value among `names` (compared without case), else an error listing them.
+template <typename T>
+T pick(const std::string& option, const std::string& value, const std::vector<std::pair<const char*, T>>& names) {
+    const std::string v = lower(value);
+    std::string accepted;
+    for (const auto& n : names) {
+        if (v == n.first) return n.second;
+        accepted += (accepted.empty() ? "" : ", ") + std::string(n.first);
+    }
+    fail(option + ": expected one of " + accepted + " (ShaderLab's words, any case), got '" + value + "'");
+}
+
+const std::vector<std::pair<const char*, ZTest>> kZTests = {
+    {"never", ZTest::Never},     {"less", ZTest::Less},         {"equal", ZTest::Equal},   {"lequal", ZTest::LEqual},
+    {"greater", ZTest::Greater}, {"notequal", ZTest::NotEqual}, {"gequal", ZTest::GEqual}, {"always", ZTest::Always},
+};
+
+}  // namespace
+
+CullMode parseCull(const std::string& option, const std::string& value) {
+    return pick<CullMode>(option, value, {{"back", CullMode::Back}, {"front", CullMode::Front}, {"off", CullMode::Off}});
+}
+
+ZTest parseZTest(const std::string& option, const std::string& value) { return pick<ZTest>(option, value, kZTests); }
+
+// ShaderLab writes ZWrite On/Off and ZClip True/False; both spellings are taken for either.
+bool parseOnOff(const std::string& option, const std::string& value) {
+    return pick<bool>(option, value, {{"on", true}, {"off", false}, {"true", true}, {"false", false}});
+}
+
+// ShaderLab's ColorMask: 0, or any of R, G, B, A, each at most once, in that order.
+uint32_t parseColorMask(const std::string& option, const std::string& value) {
+    if (value == "0") return 0;
+    const std::string order = "rgba";
+    const std::string v = lower(value);
+    uint32_t mask = 0;
+    size_t next = 0;
+    for (char c : v) {
+        const size_t at = order.find(c, next);
+        if (at == std::string::npos)
+            fail(option + ": expected 0 or channels from R, G, B, A in that order (e.g. RGBA, RGB, R), got '" + value + "'");
+        mask |= 1u << at;   // VK_COLOR_COMPONENT_R_BIT = 1, G = 2, B = 4, A = 8
+        next = at + 1;
+    }
+    if (mask == 0) fail(option + ": expected 0 or channels from R, G, B, A in that order (e.g. RGBA, RGB, R), got '" + value + "'");
+    return mask;
+}
+
+DepthConvention parseDepth(const std::string& option, const std::string& value) {
+    return pick<DepthConvention>(option, value, {{"reversed", DepthConvention::Reversed}, {"forward", DepthConvention::Forward}});
+}
+
+VkCullModeFlags vulkanCullMode(CullMode cull) {
+    switch (cull) {
+        case CullMode::Off: return VK_CULL_MODE_NONE;
+        case CullMode::Front: return VK_CULL_MODE_FRONT_BIT;
+        case CullMode::Back: break;
+    }
+    return VK_CULL_MODE_BACK_BIT;
+}
+
+VkCompareOp vulkanCompareOp(ZTest test, DepthConvention depth) {
+    const bool reversed = depth == DepthConvention::Reversed;
+    switch (test) {
+        case ZTest::Never: return VK_COMPARE_OP_NEVER;
+        case ZTest::Less: return reversed ? VK_COMPARE_OP_GREATER : VK_COMPARE_OP_LESS;
+        case ZTest::Equal: return VK_COMPARE_OP_EQUAL;
+        case ZTest::LEqual: return reversed ? VK_COMPARE_OP_GREATER_OR_EQUAL : VK_COMPARE_OP_LESS_OR_EQUAL;
+        case ZTest::Greater: return reversed ? VK_COMPARE_OP_LESS : VK_COMPARE_OP_GREATER;
+        case ZTest::NotEqual: return VK_COMPARE_OP_NOT_EQUAL;
+        case ZTest::GEqual: return reversed ? VK_COMPARE_OP_LESS_OR_EQUAL : VK_COMPARE_OP_GREATER_OR_EQUAL;
+        case ZTest::Always: break;
+    }
+    return VK_COMPARE_OP_ALWAYS;
+}
+
+float depthClearValue(DepthConvention depth) { return depth == DepthConvention::Reversed ? 0.0f : 1.0f; }
+
+std::string describeRenderState(const RenderState& s) {
+    static const char* culls[] = {"off", "front", "back"};
+    static const char* compares[] = {"never", "less", "equal", "less_or_equal", "greater", "not_equal", "greater_or_equal", "always"};
+    std::string mask;
+    for (int i = 0; i < 4; ++i)
+        if (s.colorMask & (1u << i)) mask += "rgba"[i];
+    std::string line = "state cull ";
+    line += culls[static_cast<int>(s.cull)];
+    line += " front_face clockwise ztest ";
+    line += kZTests[static_cast<int>(s.zTest)].first;
+    line += " compare ";
+    line += compares[vulkanCompareOp(s.zTest, s.depth)];
+    line += std::string(" zwrite ") + (s.zWrite ? "on" : "off");
+    line += std::string(" zclip ") + (s.zClip ? "on" : "off");
+    line += " color_mask " + (mask.empty() ? std::string("0") : mask);
+    line += std::string(" depth ") + (s.depth == DepthConvention::Reversed ? "reversed" : "forward");
+    return line;
+}
+
+}  // namespace gt
