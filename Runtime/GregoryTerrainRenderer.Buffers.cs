@@ -10,9 +10,28 @@ namespace GregoryTerrain
         // of every frame. ReleaseGpuResources clears _uploadedGrid, so it cannot hold this.
         PatchGridAsset _failedGrid;
         int _failedVersion;
-        // The tiled noise's cell table (GT_NOISE_TABLE), while the material's noise is tiled, and the
-        // table the property block holds now (null after the block is cleared).
-        GraphicsBuffer _noiseCells, _boundNoiseCells;
+        // The tiled noise's cell table (GT_NOISE_TABLE), while the material's noise is tiled.
+        GraphicsBuffer _noiseCells;
+
+        /// <summary>
+        /// What the property block holds of the values the renderer sets only on change. Cleared
+        /// with the block (<see cref="ClearPropertyBlock"/>), so each is sent again afterwards; a
+        /// memo added here is cleared with it.
+        /// </summary>
+        struct BlockMemo
+        {
+            public GraphicsBuffer snowDepth, noiseCells;
+            public Vector4 snowMapSize;
+            public int levelCount;   // _LodLevels.x (0: not sent)
+        }
+        BlockMemo _sent;
+
+        /// <summary>Empties the property block and forgets what it held: the one place the block is cleared.</summary>
+        void ClearPropertyBlock()
+        {
+            _props?.Clear();
+            _sent = default;
+        }
 
         /// <summary>Uploads the grid when it is new or changed; false when it cannot be drawn.</summary>
         bool EnsureUploaded()
@@ -133,9 +152,9 @@ namespace GregoryTerrain
         void UpdateNoiseTableBinding()
         {
             GraphicsBuffer table = EnsureNoiseTable();
-            if (table == null || table == _boundNoiseCells) return;   // off: the variants drawn do not read _NoiseCells
+            if (table == null || table == _sent.noiseCells) return;   // off: the variants drawn do not read _NoiseCells
             SetBuffer(ShaderIds.NoiseCells, table);
-            _boundNoiseCells = table;
+            _sent.noiseCells = table;
         }
 
         /// <summary>True while the renderer holds the tiled noise's table (the Unity-side tests check it is made only then).</summary>
@@ -164,9 +183,7 @@ namespace GregoryTerrain
             _estimateGrid = null;
             _uploadedVersion = 0;
             _drawModeMaterial = null;   // read the SubShader's tag again (it may change with the shader)
-            _props?.Clear();
-            _boundSnowDepth = null;   // the block no longer holds the snow map
-            _boundNoiseCells = null;  // nor the noise table
+            ClearPropertyBlock();
         }
 
         /// <summary>Grid uploads since this renderer was created (once per asset version; the Unity-side tests check it).</summary>

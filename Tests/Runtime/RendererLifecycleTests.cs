@@ -49,6 +49,27 @@ namespace GregoryTerrain.Tests
         }
 
         [Test]
+        public void LevelCountIsSentAgainAfterTheBlockIsCleared()
+        {
+            var r = _t.Renderer("terrain");
+            r.HorizonLevels = true;
+            Camera a = _t.Camera("a");
+            Assume.That(r.DrawsFallback, Is.False, "the levels need the tessellated SubShader");
+            r.DrawFor(a);
+            Assert.That(r.PropertiesSetLastPrepare, Does.Contain(GregoryTerrainRenderer.LodLevelsPropertyId), "first draw");
+            r.DrawFor(a);
+            Assert.That(r.PropertiesSetLastPrepare, Does.Not.Contain(GregoryTerrainRenderer.LodLevelsPropertyId), "steady: not sent again");
+            // A grid edit re-uploads, which clears the block; so do undo, a disable/enable and ReleaseGpuResources.
+            _t.Grid.MarkChanged();
+            r.DrawFor(a);
+            Assert.That(r.PropertiesSetLastPrepare, Does.Contain(GregoryTerrainRenderer.LodLevelsPropertyId), "after a re-upload");
+            r.enabled = false;
+            r.enabled = true;
+            r.DrawFor(a);
+            Assert.That(r.PropertiesSetLastPrepare, Does.Contain(GregoryTerrainRenderer.LodLevelsPropertyId), "after disable/enable");
+        }
+
+        [Test]
         public void DisableReleasesBuffersAndTheRuntimeMaterial()
         {
             var r = _t.Renderer("terrain");
