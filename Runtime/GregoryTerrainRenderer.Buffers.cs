@@ -33,6 +33,31 @@ namespace GregoryTerrain
             _sent = default;
         }
 
+        // Whether this device can make structured buffers: checked, and logged, once a run.
+        static bool s_DeviceChecked;
+        static string s_DeviceError;
+
+        /// <summary>
+        /// False on a device where Unity cannot make structured buffers (GraphicsBuffer's constructor
+        /// throws for Target.Structured unless SystemInfo.supportsComputeShaders): every pass, the
+        /// fallback's included, reads the patches from them, so nothing can be drawn. Logged once for
+        /// the run, not from every camera of every frame; <see cref="SettingsError"/> shows it.
+        /// </summary>
+        bool DeviceCanDraw()
+        {
+            if (!s_DeviceChecked)
+            {
+                s_DeviceChecked = true;
+                if (!SystemInfo.supportsComputeShaders)
+                {
+                    s_DeviceError = "this device has no compute shader support (SystemInfo.supportsComputeShaders = false), " +
+                                    "so Unity cannot make the structured buffers the terrain shader reads its patches from; the terrain is not drawn";
+                    Debug.LogError($"Gregory Terrain: {s_DeviceError}.", this);
+                }
+            }
+            return s_DeviceError == null;
+        }
+
         /// <summary>Uploads the grid when it is new or changed; false when it cannot be drawn.</summary>
         bool EnsureUploaded()
         {
@@ -182,7 +207,7 @@ namespace GregoryTerrain
             _estimateInputs = null;   // the grid's CPU copy for the view estimate
             _estimateGrid = null;
             _uploadedVersion = 0;
-            _drawModeMaterial = null;   // read the SubShader's tag again (it may change with the shader)
+            _drawModeKey = default;   // read the SubShader's tag again (it may change with the shader)
             ClearPropertyBlock();
         }
 

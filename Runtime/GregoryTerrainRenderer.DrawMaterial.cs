@@ -115,6 +115,9 @@ namespace GregoryTerrain
         /// <summary>True while an enabled Snow Simulator is attached and holds a depth map: the draw has GT_SNOW.</summary>
         bool SnowOn() => _snow != null && _snow.DepthBuffer != null;
 
+        /// <summary>HLSL <c>SnowDepthCap()</c>: the deepest snow drawn, in terrain height units (0 without snow).</summary>
+        float SnowDepthCap() => SnowOn() ? _snow.MapSize.z : 0f;
+
         /// <summary>Called by a Snow Simulator whose Terrain is this renderer, when it is enabled.</summary>
         internal void AttachSnow(SnowSimulator simulator)
         {

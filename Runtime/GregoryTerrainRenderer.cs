@@ -153,8 +153,7 @@ namespace GregoryTerrain
         TerrainKeywords _offsetKeywords;
         PatchGrid _offsetGrid;
         float _gridMinZ, _gridMaxZ;
-        Material _drawModeMaterial;
-        Shader _drawModeShader;
+        DrawModeKey _drawModeKey;         // what Unity's choice of SubShader depended on when _drawFallback was read
         bool _drawFallback;
         static bool s_FallbackLogged;
         Matrix4x4 _objectToWorld = Matrix4x4.identity;   // what PushMatrices sent (deep-zoom offset included)
@@ -322,8 +321,8 @@ namespace GregoryTerrain
         public double EstimatedTriangleCount => TessellationPolicy.EstimateTriangleCount(TilesAcross(DrawsFallback),
             DrawsFallback ? fallbackGridFactor : uniformFactor > 0 ? uniformFactor : maxFactor);
 
-        /// <summary>Why the current settings cannot be drawn (Core's message, naming field and value), or null.</summary>
-        public string SettingsError => _settingsError ?? _cacheError;
+        /// <summary>Why the terrain cannot be drawn: the device (no structured buffers), or the current settings (Core's message, naming field and value); else null.</summary>
+        public string SettingsError => s_DeviceError ?? _settingsError ?? _cacheError;
 
         /// <summary>
         /// Where the vertices are evaluated (<see cref="GregoryTerrain.VertexEvaluation"/>). Compute
@@ -451,6 +450,7 @@ namespace GregoryTerrain
         {
             _setLastPrepare.Clear();
             if (material == null || grid == null || !grid.IsValid) return false;
+            if (!DeviceCanDraw()) return false;
             if (!EnsureUploaded()) return false;
 
             bool fallback = ReadDrawMode();
@@ -572,18 +572,45 @@ namespace GregoryTerrain
         internal static int RangePropertyId => ShaderIds.Range;
 
         /// <summary>
+        /// What Unity picks the SubShader by, besides the device: the material, its shader, the shader
+        /// LOD (global and the shader's own: a SubShader whose LOD is above it is skipped) and the
+        /// render pipeline (the SubShaders' RenderPipeline tags).
+        /// </summary>
+        readonly struct DrawModeKey
+        {
+            readonly Material _material;
+            readonly Shader _shader;
+            readonly int _globalLod, _shaderLod;
+            readonly UnityEngine.Rendering.RenderPipelineAsset _pipeline;
+
+            public DrawModeKey(Material material)
+            {
+                _material = material;
+                _shader = material.shader;
+                _globalLod = Shader.globalMaximumLOD;
+                _shaderLod = _shader != null ? _shader.maximumLOD : 0;
+                _pipeline = UnityEngine.Rendering.GraphicsSettings.currentRenderPipeline;
+            }
+
+            public bool Matches(in DrawModeKey o) => _material == o._material && _shader == o._shader
+                && _globalLod == o._globalLod && _shaderLod == o._shaderLod && _pipeline == o._pipeline;
+        }
+
+        /// <summary>
         /// The draw the material's SubShader in use expects (see <see cref="DrawsFallback"/>). Read
-        /// again only when the material or its shader changes (GetTag returns a new string); a change
-        /// of mode marks the settings dirty, since the uniform factor sent differs between the modes.
+        /// again only when what Unity picks the SubShader by changes (<see cref="DrawModeKey"/>: a
+        /// lowered shader LOD or a pipeline switch picks another SubShader of the same shader); the
+        /// key costs no allocation, the tag read does (GetTag returns a new string). A change of mode
+        /// marks the settings dirty, since the uniform factor sent differs between the modes.
         /// </summary>
         bool ReadDrawMode()
         {
-            if (material == _drawModeMaterial && material.shader == _drawModeShader) return _drawFallback;
+            var key = new DrawModeKey(material);
+            if (key.Matches(_drawModeKey)) return _drawFallback;
             string tag = material.GetTag(DrawTag, false, "");
             bool fallback = tag == "Fallback" || (tag.Length == 0 && UsesFallback);
             if (fallback != _drawFallback) _settingsDirty = true;
-            _drawModeMaterial = material;
-            _drawModeShader = material.shader;
+            _drawModeKey = key;
             _drawFallback = fallback;
             return fallback;
         }
@@ -642,14 +669,16 @@ namespace GregoryTerrain
         /// <summary>
         /// World bounds of the drawn range: object x in [c, g], z in [d, h] (the shaders output
         /// (x, z, y)), height between the lowest and highest control point (the patch lies in their
-        /// hull) widened by the largest noise the octaves can add.
+        /// hull) widened by the largest noise the octaves can add, and raised by the snow cap while
+        /// snow is drawn (what the shader's tile culling keeps).
         /// </summary>
         Bounds WorldBounds()
         {
             float noise = NoiseMargin();
+            float snow = SnowDepthCap();   // the shader's tile culling raises a tile's box by it (TileCulled)
             TerrainRange drawn = LevelsOn(_drawFallback) ? TerrainRange.full : _range;   // the levels end with the whole terrain
             Vector3 min = new Vector3((float)drawn.c, _gridMinZ - noise, (float)drawn.d);
-            Vector3 max = new Vector3((float)drawn.g, _gridMaxZ + noise, (float)drawn.h);
+            Vector3 max = new Vector3((float)drawn.g, _gridMaxZ + noise + snow, (float)drawn.h);
             Matrix4x4 m = _objectToWorld;   // size, height scale and offset included (t is added to the object points below)
             Double3 t = TerrainVertex.TerrainToObject(_outputOffset);
             min -= new Vector3((float)t.x, (float)t.y, (float)t.z);

@@ -70,6 +70,25 @@ namespace GregoryTerrain.Tests
         }
 
         [Test]
+        public void DrawModeFollowsALoweredShaderLod()
+        {
+            var r = _t.Renderer("terrain");
+            Camera a = _t.Camera("a");
+            r.DrawFor(a);
+            Assume.That(r.DrawsFallback, Is.False, "the tessellated SubShader (LOD 300) is in use on this device");
+            int lod = Shader.globalMaximumLOD;
+            try
+            {
+                Shader.globalMaximumLOD = 250;   // below the tessellated SubShader, above the fallback's (200)
+                r.DrawFor(a);
+                Assert.That(r.DrawsFallback, Is.True, "the fallback SubShader Unity now picks");
+            }
+            finally { Shader.globalMaximumLOD = lod; }
+            r.DrawFor(a);
+            Assert.That(r.DrawsFallback, Is.False, "and back");
+        }
+
+        [Test]
         public void DisableReleasesBuffersAndTheRuntimeMaterial()
         {
             var r = _t.Renderer("terrain");

@@ -88,5 +88,111 @@ namespace GregoryTerrain.Rig.Tests
             Assert.That(MemosNotResetWithTheBlock(twice), Does.Contain("the property block is cleared in 2 places, not one"));
             Assert.That(MemosNotResetWithTheBlock("void ClearPropertyBlock() { _props?.Clear(); _sent = default; } void P() { if (_sent.levelCount != n) _sent.levelCount = n; }"), Is.Empty);
         }
+
+        // ---- 2. The draw's bounds hold what the shader's tile culling keeps -----------------------
+
+        static string ShaderFunction(string file, string name) =>
+            Body(StripComments(File.ReadAllText(PackageRoot.Combine("Shaders", "Terrain", file))), name);
+
+        /// <summary>
+        /// The height margins the shader's <c>TileCulled</c> adds to a tile's box as named terms
+        /// (<c>hi.y += F()</c>) that the renderer's <c>WorldBounds</c> does not add: Unity culls the
+        /// whole draw by those bounds, so a tile the shader keeps outside them vanishes.
+        /// </summary>
+        internal static List<string> CullMarginsMissingFromBounds(string tileCulled, string worldBounds)
+        {
+            var terms = Regex.Matches(tileCulled, @"hi\.y\s*\+=\s*(\w+)\s*\(\s*\)").Select(m => m.Groups[1].Value).Distinct();
+            return terms.Where(t => !Regex.IsMatch(worldBounds, $@"\b{t}\s*\(\s*\)")).ToList();
+        }
+
+        [Test]
+        public void WorldBoundsHoldTheSnowCapTheTileCullingAdds()
+        {
+            string tileCulled = ShaderFunction("TileFactors.hlsl", "TileCulled");
+            Assert.That(tileCulled, Does.Contain("SnowDepthCap()"), "the shader's culling box grows by the snow cap");
+            Assert.That(CullMarginsMissingFromBounds(tileCulled, Body(RendererCode(), "WorldBounds")), Is.Empty,
+                "height margins of TileCulled that RenderParams.worldBounds lacks");
+        }
+
+        [Test]
+        public void BoundsCheckRejectsBoundsWithoutTheCap()
+        {
+            string culled = "{ hi.y += margin; #if defined(GT_SNOW)\n hi.y += SnowDepthCap();\n#endif }";
+            string old = "{ float noise = NoiseMargin(); Vector3 max = new Vector3(c, _gridMaxZ + noise, h); }";
+            Assert.That(CullMarginsMissingFromBounds(culled, old), Is.EqualTo(new[] { "SnowDepthCap" }));
+            Assert.That(CullMarginsMissingFromBounds(culled, "{ max.y += SnowDepthCap(); }"), Is.Empty);
+        }
+
+        // ---- 3. The draw mode follows the SubShader Unity picks -----------------------------------
+
+        /// <summary>
+        /// What Unity's choice of SubShader depends on besides the material and its shader, which the
+        /// cached draw mode must be keyed on: the shader LOD (global and per shader) and the render
+        /// pipeline (the SubShaders' RenderPipeline tags).
+        /// </summary>
+        internal static readonly string[] SubShaderInputs = { "Shader.globalMaximumLOD", "maximumLOD", "GraphicsSettings.currentRenderPipeline" };
+
+        internal static List<string> DrawModeKeyMisses(string readDrawMode) =>
+            SubShaderInputs.Where(i => !Regex.IsMatch(readDrawMode, $@"(?<![\w]){Regex.Escape(i)}\b")).ToList();
+
+        [Test]
+        public void DrawModeIsReadAgainWhenTheActiveSubShaderCanChange()
+        {
+            string code = RendererCode();
+            string read = Body(code, "ReadDrawMode");
+            Assert.That(read, Does.Contain("GetTag"), "ReadDrawMode reads the SubShader's tag");
+            // With the types it keys the cache by (a struct of the renderer's named in it).
+            foreach (Match t in Regex.Matches(code, @"\b(?:struct|class)\s+(\w+)"))
+                if (Regex.IsMatch(read, $@"\b{t.Groups[1].Value}\b")) read += Body(code, t.Groups[1].Value);
+            Assert.That(DrawModeKeyMisses(read), Is.Empty, "inputs of Unity's SubShader choice the cached draw mode ignores");
+        }
+
+        [Test]
+        public void DrawModeCheckRejectsACachePerMaterialAndShader()
+        {
+            string old = "{ if (material == _drawModeMaterial && material.shader == _drawModeShader) return _drawFallback; string tag = material.GetTag(DrawTag, false, \"\"); }";
+            Assert.That(DrawModeKeyMisses(old), Is.EqualTo(SubShaderInputs));
+        }
+
+        // ---- 7. No structured buffer on a device that cannot make one -----------------------------
+
+        /// <summary>
+        /// Problems with the device check in <c>Prepare</c>: Unity's GraphicsBuffer constructor throws
+        /// for a Structured target when <c>SystemInfo.supportsComputeShaders</c> is false, so the check
+        /// must come before the upload (the first buffer made) and be made and logged once, not from
+        /// every camera of every frame.
+        /// </summary>
+        internal static List<string> DeviceCheckProblems(string code)
+        {
+            var problems = new List<string>();
+            string prepare = Body(code, "Prepare") ?? "";
+            int upload = prepare.IndexOf("EnsureUploaded(");
+            string checkName = Regex.Matches(prepare, @"!\s*(\w+)\s*\(\s*\)").Cast<Match>()
+                .Select(m => m.Groups[1].Value).FirstOrDefault(n => (Body(code, n) ?? "").Contains("SystemInfo.supportsComputeShaders"));
+            if (checkName == null) { problems.Add("Prepare calls no check of SystemInfo.supportsComputeShaders"); return problems; }
+            if (prepare.IndexOf(checkName + "(") > upload) problems.Add($"{checkName} comes after EnsureUploaded");
+            string body = Body(code, checkName);
+            if (!Regex.IsMatch(code, @"static\s+\w+\??\s+s_\w+")) problems.Add("no static memo: the check is not made once");
+            if (!body.Contains("Debug.Log")) problems.Add($"{checkName} logs nothing");
+            return problems;
+        }
+
+        [Test]
+        public void DeviceWithoutComputeIsToldOnceBeforeAnyStructuredBuffer()
+        {
+            string code = RendererCode();
+            Assert.That(code, Does.Contain("GraphicsBuffer.Target.Structured"), "the renderer makes structured buffers");
+            Assert.That(DeviceCheckProblems(code), Is.Empty);
+        }
+
+        [Test]
+        public void DeviceCheckRejectsAnUncheckedUpload()
+        {
+            string old = "bool Prepare(Camera cam = null) { if (material == null) return false; if (!EnsureUploaded()) return false; }";
+            Assert.That(DeviceCheckProblems(old), Is.EqualTo(new[] { "Prepare calls no check of SystemInfo.supportsComputeShaders" }));
+            string late = "static string s_DeviceError; bool Prepare(Camera cam = null) { if (!EnsureUploaded()) return false; if (!DeviceCanDraw()) return false; }\n" +
+                          "bool DeviceCanDraw() { return SystemInfo.supportsComputeShaders; }";
+            Assert.That(DeviceCheckProblems(late), Is.EqualTo(new[] { "DeviceCanDraw comes after EnsureUploaded", "DeviceCanDraw logs nothing" }));
+        }
     }
 }
