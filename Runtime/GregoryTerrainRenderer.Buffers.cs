@@ -13,11 +13,7 @@ namespace GregoryTerrain
         // The tiled noise's cell table (GT_NOISE_TABLE), while the material's noise is tiled.
         GraphicsBuffer _noiseCells;
 
-        /// <summary>
-        /// What the property block holds of the values the renderer sets only on change. Cleared
-        /// with the block (<see cref="ClearPropertyBlock"/>), so each is sent again afterwards; a
-        /// memo added here is cleared with it.
-        /// </summary>
+        /// <summary>What the property block holds of the values set only on change; forgotten with the block.</summary>
         struct BlockMemo
         {
             public GraphicsBuffer snowDepth, noiseCells;
@@ -38,10 +34,8 @@ namespace GregoryTerrain
         static string s_DeviceError;
 
         /// <summary>
-        /// False on a device where Unity cannot make structured buffers (GraphicsBuffer's constructor
-        /// throws for Target.Structured unless SystemInfo.supportsComputeShaders): every pass, the
-        /// fallback's included, reads the patches from them, so nothing can be drawn. Logged once for
-        /// the run, not from every camera of every frame; <see cref="SettingsError"/> shows it.
+        /// False where Unity cannot make structured buffers (GraphicsBuffer throws for Target.Structured
+        /// unless SystemInfo.supportsComputeShaders), which every pass reads. Logged once a run.
         /// </summary>
         bool DeviceCanDraw()
         {

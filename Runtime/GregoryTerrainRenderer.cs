@@ -153,7 +153,7 @@ namespace GregoryTerrain
         TerrainKeywords _offsetKeywords;
         PatchGrid _offsetGrid;
         float _gridMinZ, _gridMaxZ;
-        DrawModeKey _drawModeKey;         // what Unity's choice of SubShader depended on when _drawFallback was read
+        DrawModeKey _drawModeKey;         // what _drawFallback was read for
         bool _drawFallback;
         static bool s_FallbackLogged;
         Matrix4x4 _objectToWorld = Matrix4x4.identity;   // what PushMatrices sent (deep-zoom offset included)
@@ -571,11 +571,7 @@ namespace GregoryTerrain
         /// <summary>The property ID of <c>_Range</c> (for the Unity-side tests).</summary>
         internal static int RangePropertyId => ShaderIds.Range;
 
-        /// <summary>
-        /// What Unity picks the SubShader by, besides the device: the material, its shader, the shader
-        /// LOD (global and the shader's own: a SubShader whose LOD is above it is skipped) and the
-        /// render pipeline (the SubShaders' RenderPipeline tags).
-        /// </summary>
+        /// <summary>What Unity picks the SubShader by, besides the device: material, shader, shader LOD (global, own), pipeline.</summary>
         readonly struct DrawModeKey
         {
             readonly Material _material;
@@ -597,11 +593,9 @@ namespace GregoryTerrain
         }
 
         /// <summary>
-        /// The draw the material's SubShader in use expects (see <see cref="DrawsFallback"/>). Read
-        /// again only when what Unity picks the SubShader by changes (<see cref="DrawModeKey"/>: a
-        /// lowered shader LOD or a pipeline switch picks another SubShader of the same shader); the
-        /// key costs no allocation, the tag read does (GetTag returns a new string). A change of mode
-        /// marks the settings dirty, since the uniform factor sent differs between the modes.
+        /// The draw the material's SubShader in use expects (see <see cref="DrawsFallback"/>), read again
+        /// only when its <see cref="DrawModeKey"/> changes (GetTag allocates). A change of mode marks the
+        /// settings dirty, since the uniform factor sent differs between the modes.
         /// </summary>
         bool ReadDrawMode()
         {

@@ -8,6 +8,7 @@ namespace GregoryTerrain.Tests
     /// once, a steady frame sets only <c>_Range</c> per camera, and disabling or a domain reload frees
     /// every native object it made. <c>DrawFor</c> is what each camera's rendering callback calls.
     /// </summary>
+    [EditorOnly]   // draws with the package's shader, loaded through the AssetDatabase (TestTerrain)
     public class RendererLifecycleTests
     {
         TestTerrain _t;
