@@ -105,6 +105,7 @@ namespace UnityEngine
         public const float Deg2Rad = 0.017453292f;                                    // SR:Mathf.Deg2Rad
         public const float PI = 3.14159274f;                                          // SR:Mathf.PI
         public static float Clamp(float value, float min, float max) => value;        // SR:Mathf.Clamp
+        public static float Log(float f, float p) => f;                               // SR:Mathf.Log
         public static int Clamp(int value, int min, int max) => value;                // SR:Mathf.Clamp
         public static float Clamp01(float value) => value;                            // SR:Mathf.Clamp01
         public static float Abs(float f) => f;                                        // SR:Mathf.Abs
