@@ -16,9 +16,10 @@ namespace GregoryTerrain
     /// <para>Per rebuild: the heights and vertices are computed on a worker thread
     /// (Task.Run, Core's thread-safe <see cref="TerrainSurfaceQuery"/>); the main thread copies them into
     /// a spare Mesh (SetVertices of N^2 vertices, RecalculateBounds); a worker cooks it
-    /// (Physics.BakeMesh); the main thread then swaps the collider's sharedMesh (the cooked data is
-    /// reused) and moves this GameObject to the patch. The collider in use is never touched while the
-    /// next one is built, so physics sees one whole patch or the next.</para>
+    /// (Physics.BakeMesh); the main thread then moves this GameObject to the patch, swaps the
+    /// collider's sharedMesh (the cooked data is reused) and syncs the move to physics
+    /// (Physics.SyncTransforms). The collider in use is never touched while the next one is built, so
+    /// physics sees one whole patch or the next.</para>
     /// <para>Put it on an empty GameObject of its own (it moves its Transform to the patch; keep the
     /// scale 1). The samples lie on a lattice fixed in the terrain, so the surface under the target does
     /// not change when the patch moves (<see cref="ColliderPatch"/>).</para>
@@ -235,6 +236,9 @@ namespace GregoryTerrain
                 Debug.LogWarning($"{name}: cooking the collider off the main thread failed ({_task.Exception?.GetBaseException().Message}); Unity cooks it on assignment.", this);
             transform.SetPositionAndRotation(_pendingPosition, _pendingRotation);
             _collider.sharedMesh = _meshes[_spare];
+            // The new mesh reaches physics at once, the move (autoSyncTransforms off) only before the
+            // next simulation step: sync now, so no query sees the new patch at the old pose.
+            Physics.SyncTransforms();
             _spare = 1 - _spare;
             _current = _pending;
             _hasCurrent = true;
