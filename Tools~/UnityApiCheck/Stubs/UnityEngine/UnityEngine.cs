@@ -96,8 +96,8 @@ namespace UnityEngine
     }
 
     public class Application { public static bool isPlaying => false; }              // SR:Application-isPlaying (plain class)
-    // SR:RuntimePlatform (the editor values the tests name; Runtime/Export/BaseClass.cs:47 in 2022.3)
-    public enum RuntimePlatform { OSXEditor = 0, WindowsEditor = 7, LinuxEditor = 16 }
+    public enum RuntimePlatform { OSXEditor = 0, WindowsEditor = 7, LinuxEditor = 16 } // SR:RuntimePlatform (the editor values; Runtime/Export/BaseClass.cs:47 in 2022.3)
+    public enum LogType { Error = 0, Assert = 1, Warning = 2, Log = 3, Exception = 4 } // SR:LogType (Runtime/Export/BaseClass.cs:256 in 2022.3)
     public class Time { public static float deltaTime => 0f; public static float time => 0f; public static int frameCount => 0; } // SR:Time-deltaTime, SR:Time-time, SR:Time-frameCount (plain class)
 
     public struct Mathf                                                               // SR:Mathf (a struct in 2022.3)
