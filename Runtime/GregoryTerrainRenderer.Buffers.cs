@@ -19,6 +19,7 @@ namespace GregoryTerrain
             public GraphicsBuffer snowDepth, noiseCells;
             public Vector4 snowMapSize;
             public int levelCount;   // _LodLevels.x (0: not sent)
+            public RangeOrigin origin;   // _RangeOrigin
         }
         BlockMemo _sent;
 
@@ -44,8 +45,7 @@ namespace GregoryTerrain
                 s_DeviceChecked = true;
                 if (!SystemInfo.supportsComputeShaders)
                 {
-                    s_DeviceError = "this device has no compute shader support (SystemInfo.supportsComputeShaders = false), " +
-                                    "so Unity cannot make the structured buffers the terrain shader reads its patches from; the terrain is not drawn";
+                    s_DeviceError = "no compute support on this device (SystemInfo.supportsComputeShaders = false), so no structured buffers, which every pass reads: not drawn";
                     Debug.LogError($"Gregory Terrain: {s_DeviceError}.", this);
                 }
             }
@@ -106,7 +106,8 @@ namespace GregoryTerrain
             UploadCount++;
             _settingsDirty = true;
             _originDirty = true;
-            _origin.Reset();
+            _rangeOrigin.Reset();
+            _cameraOrigins.Reset();
             return true;
         }
 

@@ -48,6 +48,10 @@ namespace GregoryTerrain
             return LodLevels.Layout(new Double2(local.x, local.z), n, tiles, _levelRanges);
         }
 
+        /// <summary>This draw's origin tracker: with the levels <paramref name="cam"/>'s own, else the range's.</summary>
+        RangeOriginTracker OriginTracker(Camera cam, bool fallback) =>
+            cam != null && LevelsOn(fallback) ? _cameraOrigins.For(cam.GetInstanceID()) : _rangeOrigin;
+
         /// <summary>
         /// Lays the levels out around <paramref name="cam"/> (once a camera and frame: <see cref="PushLevels"/>
         /// sends this layout) and returns the range the range origin follows

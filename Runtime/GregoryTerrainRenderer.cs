@@ -8,28 +8,15 @@ using UnityEditor;
 namespace GregoryTerrain
 {
     /// <summary>
-    /// Draws a <see cref="PatchGridAsset"/> with the GregoryTerrain/Terrain shader in one procedural
-    /// draw call: M x M tiles over the current <see cref="Range"/>, each a 4-control-point patch that
-    /// the hull/domain stages tessellate and evaluate (internals.md, "Shader stages and compiled files").
-    ///
-    /// GPU traffic (see <see cref="PerFrameTrafficBytes"/>): the control points, regions and grid lines
-    /// go up once per asset version; the settings constants when a setting changes; the object
-    /// matrices when the Transform moves; the range origin when it re-snaps; and every frame
-    /// <c>_Range</c> alone.
-    /// <para>With <see cref="GregoryTerrain.VertexEvaluation.ComputeCache"/> a compute pre-pass
-    /// (<see cref="VertexCachePass"/>, Shaders/Cache/TerrainCache.compute) evaluates the vertices into a
-    /// buffer the domain stage reads (keyword <c>GT_VERTEX_CACHE</c>), in frames where the LOD
-    /// camera, the range, the origin or a setting changed; other frames dispatch nothing.</para>
-    /// <para>It draws once per camera, from the camera's own rendering callback
-    /// (<c>RenderPipelineManager.beginCameraRendering</c> under URP/HDRP, <c>Camera.onPreCull</c>
-    /// under the Built-in pipeline), so the Scene view in Edit Mode, the Game view and every other
-    /// camera draw it without any Update running; in the editor only cameras of its own stage
-    /// (Prefab Mode) draw it. Keywords the renderer chooses (<c>GT_VERTEX_CACHE</c>, <c>GT_SNOW</c>)
-    /// go on a runtime copy of the material, never on the asset.</para>
-    /// <para>Files: this one (settings, public API, the per-frame constants),
-    /// <c>.Cameras.cs</c> (which cameras draw, and the draw), <c>.DrawMaterial.cs</c> (the
-    /// per-renderer shader state), <c>.Buffers.cs</c> (GPU buffers), <c>.VertexCache.cs</c> (the
-    /// compute cache's part), <c>.Estimate.cs</c> (the triangles a camera's view draws).</para>
+    /// Draws a <see cref="PatchGridAsset"/> with the GregoryTerrain/Terrain shader in one procedural draw
+    /// call per camera, from the camera's rendering callback (<c>beginCameraRendering</c> in URP/HDRP,
+    /// <c>Camera.onPreCull</c> in Built-in; Edit Mode too): M x M tiles over <see cref="Range"/> (or the
+    /// Horizon levels), each a 4-control-point patch the hull/domain stages tessellate. Only
+    /// <c>_Range</c> is sent every frame (<see cref="PerFrameTrafficBytes"/>); the grid, settings,
+    /// matrices and origin on change. Keywords it chooses go on a runtime copy of the material.
+    /// Files: this (settings, API, constants), <c>.Cameras</c> (the draw), <c>.DrawMaterial</c>,
+    /// <c>.Buffers</c>, <c>.VertexCache</c> (the compute pre-pass, <see cref="VertexCachePass"/>),
+    /// <c>.Levels</c>, <c>.Estimate</c>, <c>.Queries</c>. The manual: internals.md.
     /// </summary>
     [ExecuteAlways]
     [DisallowMultipleComponent]
@@ -38,18 +25,9 @@ namespace GregoryTerrain
     {
         /// <summary>
         /// Bytes this script sets per camera in the steady state: one float4, <c>_Range</c> (one
-        /// MaterialPropertyBlock.SetVector in PushRange, then one Graphics.RenderPrimitives call for
-        /// that camera).
-        /// Anything else is set only on change: <c>_RangeOrigin</c> (16 bytes, on re-snap),
-        /// <c>_GtObjectToWorld/_GtWorldToObject</c> (128 bytes, when the Transform changes),
-        /// <c>_TileLattice</c> (16 bytes, when anchored tiles are anchored again: a zoom, a re-snap), the
-        /// whole TerrainParams block (10 float4, 160 bytes, when a setting or the grid changes) and the
-        /// buffers (on a new asset version; the tiled noise's 2 MiB table once, when GT_NOISE_TABLE is
-        /// switched on). What Unity does with the property block inside the draw (it builds the draw's
-        /// constant buffers from it) is Unity's and not counted here. With
-        /// Vertex evaluation = Compute cache the steady state is the same: the cache pass compares its
-        /// inputs on the CPU and sets and dispatches nothing unless the LOD camera, the range, the
-        /// origin, a setting, the grid or the snow map changed.
+        /// MaterialPropertyBlock.SetVector in PushRange, then one Graphics.RenderPrimitives call for that
+        /// camera); with the Compute cache too. What else is set, only on a change, and when:
+        /// index.md, "What is sent per frame".
         /// </summary>
         public const int PerFrameTrafficBytes = 16;
 
@@ -142,16 +120,15 @@ namespace GregoryTerrain
         string _settingsError;
         PatchGrid _uploadedPatchGrid;
         TerrainRange _range = TerrainRange.full;
-        readonly RangeOriginTracker _origin = new RangeOriginTracker();
+        readonly RangeOriginTracker _rangeOrigin = new RangeOriginTracker();    // the one range's origin
+        readonly CameraRangeOrigins _cameraOrigins = new CameraRangeOrigins();  // with the levels, each camera's
+        RangeOriginTracker _origin = new RangeOriginTracker();                  // the draw's: one of those (OriginTracker)
         TerrainParams _params;          // the constants last sent (range and origin kept current)
         Double3 _outputOffset;          // terrain space; what the deep-zoom relative output leaves out
-        // What _outputOffset was computed from: the origin, the noise block, the octave count, the
-        // keyword and the grid. It is recomputed (a double Gregory evaluation plus the octaves) only
-        // when one of them changes, not every frame the range moves.
-        Float4 _offsetOrigin, _offsetNoise;
-        float _offsetOctaves = float.NaN;
-        TerrainKeywords _offsetKeywords;
-        PatchGrid _offsetGrid;
+        // What _outputOffset (a double Gregory evaluation plus the octaves) was computed from, and the
+        // one before: two cameras with origins of their own (Horizon levels) switch without recomputing.
+        OffsetInputs _offsetFor, _offsetForBefore;
+        Double3 _outputOffsetBefore;
         float _gridMinZ, _gridMaxZ;
         DrawModeKey _drawModeKey;         // what _drawFallback was read for
         bool _drawFallback;
@@ -304,12 +281,9 @@ namespace GregoryTerrain
         public static bool UsesFallback => !SystemInfo.supportsTessellationShaders;
 
         /// <summary>
-        /// True when this renderer draws the vertex-shader fallback: the SubShader Unity picked for the
-        /// material is a fallback one (its "GregoryTerrainDraw" tag, read with Material.GetTag without
-        /// fallbacks, which queries the SubShader in use), or, for a shader without the tag, the
-        /// device has no tessellation shaders. Following the picked SubShader keeps draw and shader in
-        /// agreement where the device flag alone would not (a device whose tessellation is not the
-        /// hull/domain hardware the tessellated SubShaders require, a lowered shader LOD).
+        /// True when this renderer draws the vertex-shader fallback: the SubShader Unity picked is a
+        /// fallback one (its "GregoryTerrainDraw" tag, Material.GetTag without fallbacks), or, for a
+        /// shader without the tag, the device has no tessellation shaders.
         /// </summary>
         public bool DrawsFallback => material != null ? ReadDrawMode() : UsesFallback;
 
@@ -456,7 +430,8 @@ namespace GregoryTerrain
             bool fallback = ReadDrawMode();
             if (fallback && !EnsureFallbackIndices()) return false;
 
-            if (_origin.Update(OriginRange(cam, fallback))) _originDirty = true;
+            _origin = OriginTracker(cam, fallback);
+            if (_origin.Update(OriginRange(cam, fallback)) || !_origin.Origin.Equals(_sent.origin)) _originDirty = true;
             // The lattice before the output offset: with noise the offset's octave count follows
             // the lattice's width (TileLattice.LayoutWidth).
             if (_settingsDirty)
@@ -496,6 +471,7 @@ namespace GregoryTerrain
             if (_originDirty)
             {
                 SetVector(ShaderIds.RangeOrigin, ToVector(o));
+                _sent.origin = _origin.Origin;
                 _params.tileLattice = default;   // in the old origin's coordinates: anchor again
                 _originDirty = false;
             }
@@ -551,6 +527,7 @@ namespace GregoryTerrain
             for (int k = 0; k < TerrainParams.Float4Count; k++)
                 SetVector(ShaderIds.Params[k], ToVector(p[k]));
             _originDirty = false;   // and _TileLattice = 0: UpdateTileLattice anchors at the range if it should
+            _sent.origin = _origin.Origin;
         }
 
         static Vector4 ToVector(Float4 v) => new Vector4(v.x, v.y, v.z, v.w);
@@ -619,18 +596,32 @@ namespace GregoryTerrain
         bool UpdateOutputOffset()
         {
             TerrainKeywords keywords = NoiseKeywords();
-            float octaves = TerrainVertex.OutputOffsetOctaves(_params);
-            if (_offsetGrid == _uploadedPatchGrid && _offsetKeywords == keywords && _offsetOrigin.Equals(_params.rangeOrigin)
-                && _offsetNoise.Equals(_params.noise) && _offsetOctaves.Equals(octaves)) return false;
-            _offsetGrid = _uploadedPatchGrid;
-            _offsetKeywords = keywords;
-            _offsetOrigin = _params.rangeOrigin;
-            _offsetNoise = _params.noise;
-            _offsetOctaves = octaves;
-            Double3 offset = _uploadedPatchGrid == null ? Double3.zero : TerrainVertex.OutputOffset(_uploadedPatchGrid, _params, keywords);
+            var inputs = new OffsetInputs(_uploadedPatchGrid, keywords, _params.rangeOrigin, _params.noise, TerrainVertex.OutputOffsetOctaves(_params));
+            if (inputs.Same(_offsetFor)) return false;
+            Double3 offset = inputs.Same(_offsetForBefore) ? _outputOffsetBefore
+                : _uploadedPatchGrid == null ? Double3.zero : TerrainVertex.OutputOffset(_uploadedPatchGrid, _params, keywords);
+            (_offsetForBefore, _outputOffsetBefore) = (_offsetFor, _outputOffset);
+            _offsetFor = inputs;
             if (offset.x == _outputOffset.x && offset.y == _outputOffset.y && offset.z == _outputOffset.z) return false;
             _outputOffset = offset;
             return true;
+        }
+
+        readonly struct OffsetInputs
+        {
+            readonly PatchGrid _grid;
+            readonly TerrainKeywords _keywords;
+            readonly Float4 _origin, _noise;
+            readonly float _octaves;
+
+            public OffsetInputs(PatchGrid grid, TerrainKeywords keywords, Float4 origin, Float4 noise, float octaves)
+            {
+                _grid = grid; _keywords = keywords; _origin = origin; _noise = noise; _octaves = octaves;
+            }
+
+            // _grid null (nothing computed yet) never matches: an offset needs a grid.
+            public bool Same(in OffsetInputs o) => _grid != null && _grid == o._grid && _keywords == o._keywords
+                && _origin.Equals(o._origin) && _noise.Equals(o._noise) && _octaves.Equals(o._octaves);
         }
 
         /// <summary>

@@ -22,9 +22,7 @@ namespace GregoryTerrain.Tests
 
         const string ShaderGuid = "d10911ff66aad0d4ff5ba251996825e9";   // Shaders/GregoryTerrain.shader.meta
 
-        // The editor loads the shader through the AssetDatabase. A player's Shader.Find sees only
-        // shaders its content or Always Included Shaders hold, and a Resources folder would add a
-        // test material to every user's build: the fixtures using this are [EditorOnly].
+        // From the AssetDatabase: a player's Shader.Find sees only shaders its build holds ([EditorOnly]).
         public TestTerrain()
         {
 #if UNITY_EDITOR

@@ -154,6 +154,39 @@ namespace GregoryTerrain.Rig.Tests
             Assert.That(DrawModeKeyMisses(old), Is.EqualTo(SubShaderInputs));
         }
 
+        // ---- 4. With the levels, each camera keeps its own range origin --------------------------
+
+        /// <summary>
+        /// Why Prepare would re-snap the range origin per camera with Horizon levels (the origin
+        /// follows each camera's finest level): it must take the tracker of the camera drawn
+        /// (CameraRangeOrigins, by instance ID) rather than update one tracker for every camera.
+        /// </summary>
+        internal static List<string> SharedOriginProblems(string code)
+        {
+            Match pick = Regex.Match(Body(code, "Prepare") ?? "", @"_origin\s*=\s*(\w+)\s*\(");
+            if (!pick.Success) return new List<string> { "Prepare updates one origin tracker for every camera" };
+            Match chooser = Regex.Match(code, $@"RangeOriginTracker\s+{pick.Groups[1].Value}\s*\([^)]*\)\s*(=>[^;]*;|\{{)");
+            string body = chooser.Groups[1].Value == "{" ? Body(code, pick.Groups[1].Value) : chooser.Groups[1].Value;
+            var p = new List<string>();
+            if (!Regex.IsMatch(body ?? "", @"\.For\s*\(\s*cam\.GetInstanceID\(\)\s*\)")) p.Add($"{pick.Groups[1].Value} takes no tracker per camera");
+            if (!(body ?? "").Contains("LevelsOn(")) p.Add($"{pick.Groups[1].Value} does not keep the one range's tracker without the levels");
+            return p;
+        }
+
+        [Test]
+        public void WithTheLevelsEachCameraKeepsItsOwnOrigin()
+        {
+            Assert.That(SharedOriginProblems(RendererCode()), Is.Empty);
+        }
+
+        [Test]
+        public void OriginCheckRejectsOneTrackerForEveryCamera()
+        {
+            string old = "readonly RangeOriginTracker _origin = new RangeOriginTracker();\n" +
+                         "bool Prepare(Camera cam = null) { if (_origin.Update(OriginRange(cam, fallback))) _originDirty = true; }";
+            Assert.That(SharedOriginProblems(old), Is.EqualTo(new[] { "Prepare updates one origin tracker for every camera" }));
+        }
+
         // ---- 7. No structured buffer on a device that cannot make one -----------------------------
 
         /// <summary>
