@@ -6,22 +6,16 @@ using UnityEngine;
 namespace GregoryTerrain
 {
     /// <summary>
-    /// Keeps a physics surface of the terrain around a target (a player, a vehicle): a MeshCollider
-    /// patch of N x N height samples of the full-detail surface (the renderer's CPU queries), re-centred
-    /// when the target leaves the patch's middle. A MeshCollider rather than a TerrainCollider: a
-    /// TerrainCollider needs TerrainData (a heightmap of its own, a power of two plus one, resampled on
-    /// the main thread with SetHeights), whereas a mesh patch is built from samples anywhere in a
-    /// 1,000 km terrain, follows its Transform (rotation included), and Unity cooks it off the main thread
-    /// (Physics.BakeMesh is thread-safe).
-    /// <para>Per rebuild: the heights and vertices are computed on a worker thread
-    /// (Task.Run, Core's thread-safe <see cref="TerrainSurfaceQuery"/>); the main thread copies them into
-    /// a spare Mesh (SetVertices of N^2 vertices, RecalculateBounds); a worker cooks it
-    /// (Physics.BakeMesh); the main thread then swaps the collider's sharedMesh (the cooked data is
-    /// reused) and moves this GameObject to the patch. The collider in use is never touched while the
-    /// next one is built, so physics sees one whole patch or the next.</para>
-    /// <para>Put it on an empty GameObject of its own (it moves its Transform to the patch; keep the
-    /// scale 1). The samples lie on a lattice fixed in the terrain, so the surface under the target does
-    /// not change when the patch moves (<see cref="ColliderPatch"/>).</para>
+    /// Keeps a physics surface of the terrain around a target (a player, a vehicle): a MeshCollider patch
+    /// of N x N samples of the full-detail surface (the renderer's CPU queries), re-centred when the target
+    /// leaves the patch's middle. A mesh rather than a TerrainCollider, which needs a TerrainData heightmap
+    /// resampled on the main thread: a patch comes from samples anywhere in a 1,000 km terrain and is
+    /// cooked off the main thread. Per rebuild: samples on a worker (Core's thread-safe
+    /// <see cref="TerrainSurfaceQuery"/>), SetVertices into a spare Mesh on the main thread,
+    /// Physics.BakeMesh on a worker, then on the main thread the move to the patch, the sharedMesh swap
+    /// and Physics.SyncTransforms; the collider in use is never touched meanwhile. Put it on an empty
+    /// GameObject of its own (scale 1): it moves its Transform. The samples lie on a lattice fixed in the
+    /// terrain, so the surface under the target does not change when the patch moves (<see cref="ColliderPatch"/>).
     /// </summary>
     [DisallowMultipleComponent]
     [RequireComponent(typeof(MeshCollider))]
@@ -235,6 +229,9 @@ namespace GregoryTerrain
                 Debug.LogWarning($"{name}: cooking the collider off the main thread failed ({_task.Exception?.GetBaseException().Message}); Unity cooks it on assignment.", this);
             transform.SetPositionAndRotation(_pendingPosition, _pendingRotation);
             _collider.sharedMesh = _meshes[_spare];
+            // The new mesh reaches physics at once, the move (autoSyncTransforms off) only before the
+            // next simulation step: sync now, so no query sees the new patch at the old pose.
+            Physics.SyncTransforms();
             _spare = 1 - _spare;
             _current = _pending;
             _hasCurrent = true;

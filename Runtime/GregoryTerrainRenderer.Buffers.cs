@@ -10,9 +10,47 @@ namespace GregoryTerrain
         // of every frame. ReleaseGpuResources clears _uploadedGrid, so it cannot hold this.
         PatchGridAsset _failedGrid;
         int _failedVersion;
-        // The tiled noise's cell table (GT_NOISE_TABLE), while the material's noise is tiled, and the
-        // table the property block holds now (null after the block is cleared).
-        GraphicsBuffer _noiseCells, _boundNoiseCells;
+        // The tiled noise's cell table (GT_NOISE_TABLE), while the material's noise is tiled.
+        GraphicsBuffer _noiseCells;
+
+        /// <summary>What the property block holds of the values set only on change; forgotten with the block.</summary>
+        struct BlockMemo
+        {
+            public GraphicsBuffer snowDepth, noiseCells;
+            public Vector4 snowMapSize;
+            public int levelCount;   // _LodLevels.x (0: not sent)
+            public RangeOrigin origin;   // _RangeOrigin
+        }
+        BlockMemo _sent;
+
+        /// <summary>Empties the property block and forgets what it held: the one place the block is cleared.</summary>
+        void ClearPropertyBlock()
+        {
+            _props?.Clear();
+            _sent = default;
+        }
+
+        // Whether this device can make structured buffers: checked, and logged, once a run.
+        static bool s_DeviceChecked;
+        static string s_DeviceError;
+
+        /// <summary>
+        /// False where Unity cannot make structured buffers (GraphicsBuffer throws for Target.Structured
+        /// unless SystemInfo.supportsComputeShaders), which every pass reads. Logged once a run.
+        /// </summary>
+        bool DeviceCanDraw()
+        {
+            if (!s_DeviceChecked)
+            {
+                s_DeviceChecked = true;
+                if (!SystemInfo.supportsComputeShaders)
+                {
+                    s_DeviceError = "no compute support on this device (SystemInfo.supportsComputeShaders = false), so no structured buffers, which every pass reads: not drawn";
+                    Debug.LogError($"Gregory Terrain: {s_DeviceError}.", this);
+                }
+            }
+            return s_DeviceError == null;
+        }
 
         /// <summary>Uploads the grid when it is new or changed; false when it cannot be drawn.</summary>
         bool EnsureUploaded()
@@ -68,7 +106,8 @@ namespace GregoryTerrain
             UploadCount++;
             _settingsDirty = true;
             _originDirty = true;
-            _origin.Reset();
+            _rangeOrigin.Reset();
+            _cameraOrigins.Reset();
             return true;
         }
 
@@ -133,9 +172,9 @@ namespace GregoryTerrain
         void UpdateNoiseTableBinding()
         {
             GraphicsBuffer table = EnsureNoiseTable();
-            if (table == null || table == _boundNoiseCells) return;   // off: the variants drawn do not read _NoiseCells
+            if (table == null || table == _sent.noiseCells) return;   // off: the variants drawn do not read _NoiseCells
             SetBuffer(ShaderIds.NoiseCells, table);
-            _boundNoiseCells = table;
+            _sent.noiseCells = table;
         }
 
         /// <summary>True while the renderer holds the tiled noise's table (the Unity-side tests check it is made only then).</summary>
@@ -163,10 +202,8 @@ namespace GregoryTerrain
             _estimateInputs = null;   // the grid's CPU copy for the view estimate
             _estimateGrid = null;
             _uploadedVersion = 0;
-            _drawModeMaterial = null;   // read the SubShader's tag again (it may change with the shader)
-            _props?.Clear();
-            _boundSnowDepth = null;   // the block no longer holds the snow map
-            _boundNoiseCells = null;  // nor the noise table
+            _drawModeKey = default;   // read the SubShader's tag again (it may change with the shader)
+            ClearPropertyBlock();
         }
 
         /// <summary>Grid uploads since this renderer was created (once per asset version; the Unity-side tests check it).</summary>

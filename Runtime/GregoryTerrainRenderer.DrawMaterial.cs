@@ -21,8 +21,6 @@ namespace GregoryTerrain
         int _drawMaterialCrc;          // the asset's Material.ComputeCRC() at the last sync
         int _drawMaterialKeywords;     // the asset's package keywords (AssetKeywordBits) at the last sync
         int _drawMaterialCheckedFrame = -1;   // Time.frameCount when the asset was last compared (CRC, keywords)
-        GraphicsBuffer _boundSnowDepth;
-        Vector4 _boundSnowMapSize;
 
         /// <summary>
         /// The package's own material keywords. Their state on the asset is compared bit by bit as
@@ -117,6 +115,9 @@ namespace GregoryTerrain
         /// <summary>True while an enabled Snow Simulator is attached and holds a depth map: the draw has GT_SNOW.</summary>
         bool SnowOn() => _snow != null && _snow.DepthBuffer != null;
 
+        /// <summary>HLSL <c>SnowDepthCap()</c>: the deepest snow drawn, in terrain height units (0 without snow).</summary>
+        float SnowDepthCap() => SnowOn() ? _snow.MapSize.z : 0f;
+
         /// <summary>Called by a Snow Simulator whose Terrain is this renderer, when it is enabled.</summary>
         internal void AttachSnow(SnowSimulator simulator)
         {
@@ -158,11 +159,11 @@ namespace GregoryTerrain
             if (!SnowOn()) return;   // GT_SNOW off: whatever the block holds is not read
             GraphicsBuffer depth = _snow.DepthBuffer;
             Vector4 size = _snow.MapSize;
-            if (depth == _boundSnowDepth && size.x == _boundSnowMapSize.x && size.y == _boundSnowMapSize.y && size.z == _boundSnowMapSize.z) return;
+            if (depth == _sent.snowDepth && size.x == _sent.snowMapSize.x && size.y == _sent.snowMapSize.y && size.z == _sent.snowMapSize.z) return;
             SetBuffer(ShaderIds.SnowDepth, depth);
             SetVector(ShaderIds.SnowMapSize, size);
-            _boundSnowDepth = depth;
-            _boundSnowMapSize = size;
+            _sent.snowDepth = depth;
+            _sent.snowMapSize = size;
         }
     }
 }

@@ -17,7 +17,9 @@ namespace GregoryTerrain
         readonly TerrainRange[] _levelRanges = new TerrainRange[LodTiles.MaxLevels];
         readonly Vector4[] _levelVectors = new Vector4[LodTiles.MaxLevels];
         int _levelCount;      // levels laid out for the camera being drawn (Prepare), then sent (0: none yet)
-        int _sentLevelCount;  // _LodLevels.x last set
+
+        /// <summary>The property ID of <c>_LodLevels</c> (for the Unity-side tests).</summary>
+        internal static int LodLevelsPropertyId => ShaderIds.LodLevels;
 
         /// <summary>Whether the draw uses the levels: the setting, with the tessellator (the fallback grid draws one range).</summary>
         bool LevelsOn(bool fallback) => horizonLevels && !fallback;
@@ -45,6 +47,10 @@ namespace GregoryTerrain
             n = System.Math.Min(n, LodTiles.MaxLevels - 1);
             return LodLevels.Layout(new Double2(local.x, local.z), n, tiles, _levelRanges);
         }
+
+        /// <summary>This draw's origin tracker: with the levels <paramref name="cam"/>'s own, else the range's.</summary>
+        RangeOriginTracker OriginTracker(Camera cam, bool fallback) =>
+            cam != null && LevelsOn(fallback) ? _cameraOrigins.For(cam.GetInstanceID()) : _rangeOrigin;
 
         /// <summary>
         /// Lays the levels out around <paramref name="cam"/> (once a camera and frame: <see cref="PushLevels"/>
@@ -75,10 +81,10 @@ namespace GregoryTerrain
             }
             _props.SetVectorArray(ShaderIds.Ranges, _levelVectors);
             _setLastPrepare.Add(ShaderIds.Ranges);
-            if (count != _sentLevelCount)
+            if (count != _sent.levelCount)
             {
                 SetVector(ShaderIds.LodLevels, new Vector4(count, 0f, 0f, 0f));
-                _sentLevelCount = count;
+                _sent.levelCount = count;
             }
             return count * tiles * tiles;
         }

@@ -8,28 +8,15 @@ using UnityEditor;
 namespace GregoryTerrain
 {
     /// <summary>
-    /// Draws a <see cref="PatchGridAsset"/> with the GregoryTerrain/Terrain shader in one procedural
-    /// draw call: M x M tiles over the current <see cref="Range"/>, each a 4-control-point patch that
-    /// the hull/domain stages tessellate and evaluate (internals.md, "Shader stages and compiled files").
-    ///
-    /// GPU traffic (see <see cref="PerFrameTrafficBytes"/>): the control points, regions and grid lines
-    /// go up once per asset version; the settings constants when a setting changes; the object
-    /// matrices when the Transform moves; the range origin when it re-snaps; a camera's tessellation
-    /// view when it moved or another camera drew since; and every frame <c>_Range</c>.
-    /// <para>With <see cref="GregoryTerrain.VertexEvaluation.ComputeCache"/> a compute pre-pass
-    /// (<see cref="VertexCachePass"/>, Shaders/Cache/TerrainCache.compute) evaluates the vertices into a
-    /// buffer the domain stage reads (keyword <c>GT_VERTEX_CACHE</c>), in frames where the LOD
-    /// camera, the range, the origin or a setting changed; other frames dispatch nothing.</para>
-    /// <para>It draws once per camera, from the camera's own rendering callback
-    /// (<c>RenderPipelineManager.beginCameraRendering</c> under URP/HDRP, <c>Camera.onPreCull</c>
-    /// under the Built-in pipeline), so the Scene view in Edit Mode, the Game view and every other
-    /// camera draw it without any Update running; in the editor only cameras of its own stage
-    /// (Prefab Mode) draw it. Keywords the renderer chooses (<c>GT_VERTEX_CACHE</c>, <c>GT_SNOW</c>)
-    /// go on a runtime copy of the material, never on the asset.</para>
-    /// <para>Files: this one (settings, public API, the per-frame constants),
-    /// <c>.Cameras.cs</c> (which cameras draw, and the draw), <c>.DrawMaterial.cs</c> (the
-    /// per-renderer shader state), <c>.Buffers.cs</c> (GPU buffers), <c>.VertexCache.cs</c> (the
-    /// compute cache's part), <c>.Estimate.cs</c> (the triangles a camera's view draws).</para>
+    /// Draws a <see cref="PatchGridAsset"/> with the GregoryTerrain/Terrain shader in one procedural draw
+    /// call per camera, from the camera's rendering callback (<c>beginCameraRendering</c> in URP/HDRP,
+    /// <c>Camera.onPreCull</c> in Built-in; Edit Mode too): M x M tiles over <see cref="Range"/> (or the
+    /// Horizon levels), each a 4-control-point patch the hull/domain stages tessellate. Only
+    /// <c>_Range</c> is sent every frame (<see cref="PerFrameTrafficBytes"/>); the grid, settings,
+    /// matrices, origin and a camera's tessellation view on change. Keywords it chooses go on a runtime copy of the material.
+    /// Files: this (settings, API, constants), <c>.Cameras</c> (the draw), <c>.DrawMaterial</c>,
+    /// <c>.Buffers</c>, <c>.VertexCache</c> (the compute pre-pass, <see cref="VertexCachePass"/>),
+    /// <c>.Levels</c>, <c>.Estimate</c>, <c>.Queries</c>. The manual: internals.md.
     /// </summary>
     [ExecuteAlways]
     [DisallowMultipleComponent]
@@ -37,20 +24,11 @@ namespace GregoryTerrain
     public sealed partial class GregoryTerrainRenderer : MonoBehaviour
     {
         /// <summary>
-        /// Bytes this script sets per camera in the steady state (the camera holding still): one
-        /// float4, <c>_Range</c> (one MaterialPropertyBlock.SetVector in PushRange, then one
-        /// Graphics.RenderPrimitives call for that camera).
-        /// Anything else is set only on change: the camera's view (80 bytes, when it moved or another
-        /// camera drew since), <c>_RangeOrigin</c> (16 bytes, on re-snap),
-        /// <c>_GtObjectToWorld/_GtWorldToObject</c> (128 bytes, when the Transform changes),
-        /// <c>_TileLattice</c> (16 bytes, when anchored tiles are anchored again: a zoom, a re-snap), the
-        /// whole TerrainParams block (10 float4, 160 bytes, when a setting or the grid changes) and the
-        /// buffers (on a new asset version; the tiled noise's 2 MiB table once, when GT_NOISE_TABLE is
-        /// switched on). What Unity does with the property block inside the draw (it builds the draw's
-        /// constant buffers from it) is Unity's and not counted here. With
-        /// Vertex evaluation = Compute cache the steady state is the same: the cache pass compares its
-        /// inputs on the CPU and sets and dispatches nothing unless the LOD camera, the range, the
-        /// origin, a setting, the grid or the snow map changed.
+        /// Bytes this script sets per camera in the steady state: one float4, <c>_Range</c> (one
+        /// MaterialPropertyBlock.SetVector in PushRange, then one Graphics.RenderPrimitives call for that
+        /// camera); with the Compute cache too. What else (a camera's tessellation view when it moved or
+        /// another camera drew since, ...) is set, only on a change, and when:
+        /// index.md, "What is sent per frame".
         /// </summary>
         public const int PerFrameTrafficBytes = 16;
 
@@ -143,19 +121,17 @@ namespace GregoryTerrain
         string _settingsError;
         PatchGrid _uploadedPatchGrid;
         TerrainRange _range = TerrainRange.full;
-        readonly RangeOriginTracker _origin = new RangeOriginTracker();
+        readonly RangeOriginTracker _rangeOrigin = new RangeOriginTracker();    // the one range's origin
+        readonly CameraRangeOrigins _cameraOrigins = new CameraRangeOrigins();  // with the levels, each camera's
+        RangeOriginTracker _origin = new RangeOriginTracker();                  // the draw's: one of those (OriginTracker)
         TerrainParams _params;          // the constants last sent (range and origin kept current)
         Double3 _outputOffset;          // terrain space; what the deep-zoom relative output leaves out
-        // What _outputOffset was computed from: the origin, the noise block, the octave count, the
-        // keyword and the grid. It is recomputed (a double Gregory evaluation plus the octaves) only
-        // when one of them changes, not every frame the range moves.
-        Float4 _offsetOrigin, _offsetNoise;
-        float _offsetOctaves = float.NaN;
-        TerrainKeywords _offsetKeywords;
-        PatchGrid _offsetGrid;
+        // What _outputOffset (a double Gregory evaluation plus the octaves) was computed from, and the
+        // one before: two cameras with origins of their own (Horizon levels) switch without recomputing.
+        OffsetInputs _offsetFor, _offsetForBefore;
+        Double3 _outputOffsetBefore;
         float _gridMinZ, _gridMaxZ;
-        Material _drawModeMaterial;
-        Shader _drawModeShader;
+        DrawModeKey _drawModeKey;         // what _drawFallback was read for
         bool _drawFallback;
         static bool s_FallbackLogged;
         Matrix4x4 _objectToWorld = Matrix4x4.identity;   // what PushMatrices sent (deep-zoom offset included)
@@ -306,12 +282,9 @@ namespace GregoryTerrain
         public static bool UsesFallback => !SystemInfo.supportsTessellationShaders;
 
         /// <summary>
-        /// True when this renderer draws the vertex-shader fallback: the SubShader Unity picked for the
-        /// material is a fallback one (its "GregoryTerrainDraw" tag, read with Material.GetTag without
-        /// fallbacks, which queries the SubShader in use), or, for a shader without the tag, the
-        /// device has no tessellation shaders. Following the picked SubShader keeps draw and shader in
-        /// agreement where the device flag alone would not (a device whose tessellation is not the
-        /// hull/domain hardware the tessellated SubShaders require, a lowered shader LOD).
+        /// True when this renderer draws the vertex-shader fallback: the SubShader Unity picked is a
+        /// fallback one (its "GregoryTerrainDraw" tag, Material.GetTag without fallbacks), or, for a
+        /// shader without the tag, the device has no tessellation shaders.
         /// </summary>
         public bool DrawsFallback => material != null ? ReadDrawMode() : UsesFallback;
 
@@ -323,8 +296,8 @@ namespace GregoryTerrain
         public double EstimatedTriangleCount => TessellationPolicy.EstimateTriangleCount(TilesAcross(DrawsFallback),
             DrawsFallback ? fallbackGridFactor : uniformFactor > 0 ? uniformFactor : maxFactor);
 
-        /// <summary>Why the current settings cannot be drawn (Core's message, naming field and value), or null.</summary>
-        public string SettingsError => _settingsError ?? _cacheError;
+        /// <summary>Why the terrain cannot be drawn: the device (no structured buffers), or the current settings (Core's message, naming field and value); else null.</summary>
+        public string SettingsError => s_DeviceError ?? _settingsError ?? _cacheError;
 
         /// <summary>
         /// Where the vertices are evaluated (<see cref="GregoryTerrain.VertexEvaluation"/>). Compute
@@ -452,12 +425,14 @@ namespace GregoryTerrain
         {
             _setLastPrepare.Clear();
             if (material == null || grid == null || !grid.IsValid) return false;
+            if (!DeviceCanDraw()) return false;
             if (!EnsureUploaded()) return false;
 
             bool fallback = ReadDrawMode();
             if (fallback && !EnsureFallbackIndices()) return false;
 
-            if (_origin.Update(OriginRange(cam, fallback))) _originDirty = true;
+            _origin = OriginTracker(cam, fallback);
+            if (_origin.Update(OriginRange(cam, fallback)) || !_origin.Origin.Equals(_sent.origin)) _originDirty = true;
             // The lattice before the output offset: with noise the offset's octave count follows
             // the lattice's width (TileLattice.LayoutWidth).
             if (_settingsDirty)
@@ -498,6 +473,7 @@ namespace GregoryTerrain
             if (_originDirty)
             {
                 SetVector(ShaderIds.RangeOrigin, ToVector(o));
+                _sent.origin = _origin.Origin;
                 _params.tileLattice = default;   // in the old origin's coordinates: anchor again
                 _originDirty = false;
             }
@@ -553,6 +529,7 @@ namespace GregoryTerrain
             for (int k = 0; k < TerrainParams.Float4Count; k++)
                 SetVector(ShaderIds.Params[k], ToVector(p[k]));
             _originDirty = false;   // and _TileLattice = 0: UpdateTileLattice anchors at the range if it should
+            _sent.origin = _origin.Origin;
         }
 
         static Vector4 ToVector(Float4 v) => new Vector4(v.x, v.y, v.z, v.w);
@@ -573,19 +550,40 @@ namespace GregoryTerrain
         /// <summary>The property ID of <c>_Range</c> (for the Unity-side tests).</summary>
         internal static int RangePropertyId => ShaderIds.Range;
 
+        /// <summary>What Unity picks the SubShader by, besides the device: material, shader, shader LOD (global, own), pipeline.</summary>
+        readonly struct DrawModeKey
+        {
+            readonly Material _material;
+            readonly Shader _shader;
+            readonly int _globalLod, _shaderLod;
+            readonly UnityEngine.Rendering.RenderPipelineAsset _pipeline;
+
+            public DrawModeKey(Material material)
+            {
+                _material = material;
+                _shader = material.shader;
+                _globalLod = Shader.globalMaximumLOD;
+                _shaderLod = _shader != null ? _shader.maximumLOD : 0;
+                _pipeline = UnityEngine.Rendering.GraphicsSettings.currentRenderPipeline;
+            }
+
+            public bool Matches(in DrawModeKey o) => _material == o._material && _shader == o._shader
+                && _globalLod == o._globalLod && _shaderLod == o._shaderLod && _pipeline == o._pipeline;
+        }
+
         /// <summary>
-        /// The draw the material's SubShader in use expects (see <see cref="DrawsFallback"/>). Read
-        /// again only when the material or its shader changes (GetTag returns a new string); a change
-        /// of mode marks the settings dirty, since the uniform factor sent differs between the modes.
+        /// The draw the material's SubShader in use expects (see <see cref="DrawsFallback"/>), read again
+        /// only when its <see cref="DrawModeKey"/> changes (GetTag allocates). A change of mode marks the
+        /// settings dirty, since the uniform factor sent differs between the modes.
         /// </summary>
         bool ReadDrawMode()
         {
-            if (material == _drawModeMaterial && material.shader == _drawModeShader) return _drawFallback;
+            var key = new DrawModeKey(material);
+            if (key.Matches(_drawModeKey)) return _drawFallback;
             string tag = material.GetTag(DrawTag, false, "");
             bool fallback = tag == "Fallback" || (tag.Length == 0 && UsesFallback);
             if (fallback != _drawFallback) _settingsDirty = true;
-            _drawModeMaterial = material;
-            _drawModeShader = material.shader;
+            _drawModeKey = key;
             _drawFallback = fallback;
             return fallback;
         }
@@ -600,18 +598,32 @@ namespace GregoryTerrain
         bool UpdateOutputOffset()
         {
             TerrainKeywords keywords = NoiseKeywords();
-            float octaves = TerrainVertex.OutputOffsetOctaves(_params);
-            if (_offsetGrid == _uploadedPatchGrid && _offsetKeywords == keywords && _offsetOrigin.Equals(_params.rangeOrigin)
-                && _offsetNoise.Equals(_params.noise) && _offsetOctaves.Equals(octaves)) return false;
-            _offsetGrid = _uploadedPatchGrid;
-            _offsetKeywords = keywords;
-            _offsetOrigin = _params.rangeOrigin;
-            _offsetNoise = _params.noise;
-            _offsetOctaves = octaves;
-            Double3 offset = _uploadedPatchGrid == null ? Double3.zero : TerrainVertex.OutputOffset(_uploadedPatchGrid, _params, keywords);
+            var inputs = new OffsetInputs(_uploadedPatchGrid, keywords, _params.rangeOrigin, _params.noise, TerrainVertex.OutputOffsetOctaves(_params));
+            if (inputs.Same(_offsetFor)) return false;
+            Double3 offset = inputs.Same(_offsetForBefore) ? _outputOffsetBefore
+                : _uploadedPatchGrid == null ? Double3.zero : TerrainVertex.OutputOffset(_uploadedPatchGrid, _params, keywords);
+            (_offsetForBefore, _outputOffsetBefore) = (_offsetFor, _outputOffset);
+            _offsetFor = inputs;
             if (offset.x == _outputOffset.x && offset.y == _outputOffset.y && offset.z == _outputOffset.z) return false;
             _outputOffset = offset;
             return true;
+        }
+
+        readonly struct OffsetInputs
+        {
+            readonly PatchGrid _grid;
+            readonly TerrainKeywords _keywords;
+            readonly Float4 _origin, _noise;
+            readonly float _octaves;
+
+            public OffsetInputs(PatchGrid grid, TerrainKeywords keywords, Float4 origin, Float4 noise, float octaves)
+            {
+                _grid = grid; _keywords = keywords; _origin = origin; _noise = noise; _octaves = octaves;
+            }
+
+            // _grid null (nothing computed yet) never matches: an offset needs a grid.
+            public bool Same(in OffsetInputs o) => _grid != null && _grid == o._grid && _keywords == o._keywords
+                && _origin.Equals(o._origin) && _noise.Equals(o._noise) && _octaves.Equals(o._octaves);
         }
 
         /// <summary>
@@ -644,14 +656,16 @@ namespace GregoryTerrain
         /// <summary>
         /// World bounds of the drawn range: object x in [c, g], z in [d, h] (the shaders output
         /// (x, z, y)), height between the lowest and highest control point (the patch lies in their
-        /// hull) widened by the largest noise the octaves can add.
+        /// hull) widened by the largest noise the octaves can add, and raised by the snow cap while
+        /// snow is drawn (what the shader's tile culling keeps).
         /// </summary>
         Bounds WorldBounds()
         {
             float noise = NoiseMargin();
+            float snow = SnowDepthCap();   // the shader's tile culling raises a tile's box by it (TileCulled)
             TerrainRange drawn = LevelsOn(_drawFallback) ? TerrainRange.full : _range;   // the levels end with the whole terrain
             Vector3 min = new Vector3((float)drawn.c, _gridMinZ - noise, (float)drawn.d);
-            Vector3 max = new Vector3((float)drawn.g, _gridMaxZ + noise, (float)drawn.h);
+            Vector3 max = new Vector3((float)drawn.g, _gridMaxZ + noise + snow, (float)drawn.h);
             Matrix4x4 m = _objectToWorld;   // size, height scale and offset included (t is added to the object points below)
             Double3 t = TerrainVertex.TerrainToObject(_outputOffset);
             min -= new Vector3((float)t.x, (float)t.y, (float)t.z);

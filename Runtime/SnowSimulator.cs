@@ -4,29 +4,14 @@ using UnityEngine;
 namespace GregoryTerrain
 {
     /// <summary>
-    /// Wind-driven snow on the terrain (Moriya and Takahashi, eq. 1), simulated on the GPU with
-    /// Shaders/Snow/SnowSimulation.compute. Add it only to scenes that want snow, and point its
-    /// <see cref="Terrain"/> at a <see cref="GregoryTerrainRenderer"/>: while it is disabled or absent
-    /// there is no snow buffer and no dispatch, and the renderer draws without <c>GT_SNOW</c>, so the
-    /// terrain shader runs without the snow code. It simulates in Play Mode (like a particle system
-    /// without a preview: nothing runs in Edit Mode).
-    /// <para>
-    /// While enabled it owns three buffers over the R x R snow map (<c>_SnowField</c> float4,
-    /// <c>_SnowExposure</c> float, <c>_SnowDepth</c> float), runs the exposure kernel only when the wind,
-    /// the march settings or the terrain field changed (<see cref="SnowSettings.ExposureEquals"/>,
-    /// the field version), and one accumulation step per frame. While it is enabled the renderer draws
-    /// with <c>GT_SNOW</c> on its own runtime copy of the material (never the asset) and binds the depth
-    /// map on its property block as <c>_SnowDepth</c> with <c>_SnowMapSize = (R, 1/R, depthCap, 0)</c>.
-    /// </para>
-    /// <para>
-    /// The field (detail normal and height per cell) comes from the terrain itself: each step reads
-    /// the renderer's grid buffers, constants and GT_NOISE (GT_NOISE_TABLE and its table too), and Shaders/Snow/SnowField.compute
-    /// (<c>SnowFieldKernel</c>, the terrain's own vertex path at the cell centres) fills it on the GPU
-    /// whenever one of them changed (a new grid, a setting; not the range); the exposure follows,
-    /// since it is recomputed whenever the field changed. Alternatives for tests and custom terrains,
-    /// used instead of the renderer's while set: a CPU <see cref="Field"/> or a ready GPU buffer
-    /// (<see cref="SetFieldBuffer"/>).
-    /// </para>
+    /// Wind-driven snow (Moriya and Takahashi, eq. 1) simulated on the GPU (Shaders/Snow/SnowSimulation.compute)
+    /// in Play Mode, on the <see cref="Terrain"/> renderer, which draws it (<c>GT_SNOW</c> on its runtime
+    /// material copy) while this is enabled; disabled or absent, there is no snow buffer, dispatch or snow
+    /// code. It owns the R x R map (<c>_SnowField</c> float4, <c>_SnowExposure</c>, <c>_SnowDepth</c>
+    /// float), evaluates the field from the renderer's grid, constants and noise keywords
+    /// (SnowField.compute) when they change, the exposure when the field, wind or march settings change,
+    /// and one accumulation step a frame. Instead of the renderer's field: a CPU <see cref="Field"/> or a
+    /// GPU buffer (<see cref="SetFieldBuffer"/>). The manual: snow.md.
     /// </summary>
     [DisallowMultipleComponent]
     [AddComponentMenu("Gregory Terrain/Snow Simulator")]
@@ -49,6 +34,11 @@ namespace GregoryTerrain
 
         readonly float[] _params = new float[SnowSettings.ParamsFloat4Count * 4];   // packed each step, no allocation
 
+        // What the buffers and kernels use: `settings` (which the Inspector writes) once validated.
+        SnowSettings? _applied;
+        bool _editPending;   // OnValidate found a valid Inspector edit; Update applies it
+        SnowSettings Applied => _applied ?? settings;
+
         GraphicsBuffer _field, _exposure, _depth;
         bool _ownsField;
         int _exposureKernel = -1, _accumulateKernel = -1;
@@ -68,25 +58,48 @@ namespace GregoryTerrain
         bool _fieldNoise, _fieldNoiseTable;
         int _terrainVersion, _fieldTerrainVersion = -1;
 
-        /// <summary>The simulation settings. Setting them validates them (ArgumentException naming the field and value); a new resolution starts a new, empty snow map.</summary>
+        /// <summary>
+        /// The settings. Setting them validates them (ArgumentException naming field and value); a new
+        /// resolution starts a new, empty map. An Inspector edit is validated (logged if invalid, the
+        /// last valid settings kept) and applied in the next Update.
+        /// </summary>
         public SnowSettings Settings
         {
             get => settings;
             set
             {
                 value.Validate();
-                if (value.resolution != settings.resolution) DropFieldsOfOtherResolution(value.resolution);
-                if (_depth != null && value.resolution != settings.resolution)
-                {
-                    settings = value;
-                    Release();
-                    Allocate();  // a new resolution starts a new snow map
-                }
-                else
-                {
-                    settings = value;   // the renderer reads the new cap from MapSize
-                }
+                Apply(value);
+                settings = value;
             }
+        }
+
+        /// <summary>Puts validated settings in use; a new resolution drops old fields, and a new map while enabled.</summary>
+        void Apply(SnowSettings value)
+        {
+            _editPending = false;
+            bool newMap = value.resolution != Applied.resolution;
+            _applied = value;   // the renderer reads the new cap from MapSize
+            if (!newMap) return;
+            DropFieldsOfOtherResolution(value.resolution);
+            if (_depth != null)
+            {
+                Release();
+                Allocate();
+            }
+        }
+
+        void OnValidate()
+        {
+            // Applied in Update: OnValidate must not make or release GPU buffers.
+            try { settings.Validate(); }
+            catch (ArgumentException e)
+            {
+                Debug.LogError($"{name}: Snow Simulator: {e.Message}; the last valid settings stay in use until it is fixed.", this);
+                _editPending = false;
+                return;
+            }
+            _editPending = true;
         }
 
         /// <summary>
@@ -109,8 +122,8 @@ namespace GregoryTerrain
             get => _cpuField;
             set
             {
-                if (value != null && value.Resolution != settings.resolution)
-                    throw new ArgumentException($"Field.Resolution ({value.Resolution}) must equal snow.resolution ({settings.resolution})", nameof(value));
+                if (value != null && value.Resolution != Applied.resolution)
+                    throw new ArgumentException($"Field.Resolution ({value.Resolution}) must equal snow.resolution ({Applied.resolution})", nameof(value));
                 _cpuField = value; _externalField = null; _uploadedCpuVersion = -1;
             }
         }
@@ -121,9 +134,9 @@ namespace GregoryTerrain
         /// </summary>
         public void SetFieldBuffer(GraphicsBuffer buffer, int version)
         {
-            int cells = settings.resolution * settings.resolution;
+            int r = Applied.resolution, cells = r * r;
             if (buffer == null || buffer.count != cells || buffer.stride != 16)
-                throw new ArgumentException($"buffer must hold {cells} float4 (R = {settings.resolution})", nameof(buffer));
+                throw new ArgumentException($"buffer must hold {cells} float4 (R = {r})", nameof(buffer));
             _externalField = buffer; _externalVersion = version; _cpuField = null;
         }
 
@@ -157,10 +170,10 @@ namespace GregoryTerrain
         public int DepthVersion { get; private set; }
 
         /// <summary><c>_SnowMapSize = (R, 1/R, depthCap, 0)</c>, as the terrain material gets it.</summary>
-        public Vector4 MapSize => new Vector4(settings.resolution, 1f / settings.resolution, settings.depthCap, 0f);
+        public Vector4 MapSize => new Vector4(Applied.resolution, 1f / Applied.resolution, Applied.depthCap, 0f);
 
         /// <summary>True when the next step will recompute the exposure.</summary>
-        public bool NeedsExposureUpdate => !_exposureValid || !settings.ExposureEquals(_exposureSettings) || FieldVersion != _exposureFieldVersion;
+        public bool NeedsExposureUpdate => !_exposureValid || !Applied.ExposureEquals(_exposureSettings) || FieldVersion != _exposureFieldVersion;
 
         int FieldVersion => _externalField != null ? _externalVersion
             : _cpuField != null ? _cpuField.Version : _fieldTerrainVersion;
@@ -175,6 +188,9 @@ namespace GregoryTerrain
             }
             try { settings.Validate(); }
             catch (ArgumentException e) { Debug.LogError("SnowSimulator: " + e.Message, this); enabled = false; return; }
+            _applied = settings;
+            _editPending = false;
+            DropFieldsOfOtherResolution(settings.resolution);
             _exposureKernel = simulation.FindKernel(ShaderIds.SnowExposureKernel);
             _accumulateKernel = simulation.FindKernel(ShaderIds.SnowAccumulateKernel);
             _fieldKernel = fieldShader != null ? fieldShader.FindKernel(ShaderIds.SnowFieldKernel) : -1;
@@ -194,6 +210,7 @@ namespace GregoryTerrain
 
         void Update()
         {
+            if (_editPending) Apply(settings);   // validated by OnValidate
             if (_depth == null) return;
             if (terrain != _attached) Attach();   // retargeted in the inspector
             float dt = Mathf.Min(Time.deltaTime * timeScale, maxStep);
@@ -206,16 +223,17 @@ namespace GregoryTerrain
             if (_depth == null) throw new InvalidOperationException("SnowSimulator is not enabled");
             GraphicsBuffer field = CurrentField();
             if (field == null) return;  // no terrain field yet: nothing to snow on
-            settings.PackParams(dt, _params);
+            SnowSettings applied = Applied;
+            applied.PackParams(dt, _params);
             SetParams(_params);
-            int groups = settings.resolution / 8;  // R is a power of two >= 64
+            int groups = applied.resolution / 8;  // R is a power of two >= 64
             if (NeedsExposureUpdate)
             {
                 simulation.SetBuffer(_exposureKernel, ShaderIds.SnowField, field);
                 simulation.SetBuffer(_exposureKernel, ShaderIds.SnowExposure, _exposure);
                 simulation.Dispatch(_exposureKernel, groups, groups, 1);
                 _exposureValid = true;
-                _exposureSettings = settings;
+                _exposureSettings = applied;
                 _exposureFieldVersion = FieldVersion;
             }
             simulation.SetBuffer(_accumulateKernel, ShaderIds.SnowField, field);
@@ -228,7 +246,7 @@ namespace GregoryTerrain
         /// <summary>Clears the snow (the exposure stays valid).</summary>
         public void ClearSnow()
         {
-            _depth?.SetData(new float[settings.resolution * settings.resolution]);
+            _depth?.SetData(new float[Applied.resolution * Applied.resolution]);
             DepthVersion++;
         }
 
@@ -241,7 +259,7 @@ namespace GregoryTerrain
                 if (!terrain.TryGetSnowTerrain(out GraphicsBuffer cps, out GraphicsBuffer regions, out GraphicsBuffer lines,
                         out TerrainParams parameters, out bool noise, out GraphicsBuffer noiseCells, out int gridStamp))
                     return null;   // nothing uploaded yet, or settings the renderer cannot draw
-                TerrainParams p = SnowFieldTerrain.ParamsFor(parameters, settings.resolution);
+                TerrainParams p = SnowFieldTerrain.ParamsFor(parameters, Applied.resolution);
                 bool tiled = noiseCells != null;   // tiled noise is another height field
                 if (gridStamp != _fieldGridStamp || noise != _fieldNoise || tiled != _fieldNoiseTable || !SameParams(p, _fieldParams))
                 {
@@ -252,7 +270,7 @@ namespace GregoryTerrain
                 return _field;
             }
             if (_cpuField == null) return null;
-            if (_cpuField.Resolution != settings.resolution) return null;
+            if (_cpuField.Resolution != Applied.resolution) return null;
             if (_uploadedCpuVersion != _cpuField.Version)
             {
                 _field.SetData(_cpuField.Data);
@@ -273,7 +291,7 @@ namespace GregoryTerrain
             fieldShader.SetBuffer(_fieldKernel, ShaderIds.Regions, regions);
             fieldShader.SetBuffer(_fieldKernel, ShaderIds.GridLines, gridLines);
             fieldShader.SetBuffer(_fieldKernel, ShaderIds.SnowField, _field);
-            int groups = settings.resolution / 8;
+            int groups = Applied.resolution / 8;
             fieldShader.Dispatch(_fieldKernel, groups, groups, 1);
             _fieldTerrainVersion = _terrainVersion;   // the field's version: the exposure sees the change
         }
@@ -296,7 +314,7 @@ namespace GregoryTerrain
 
         void Allocate()
         {
-            int cells = settings.resolution * settings.resolution;
+            int cells = Applied.resolution * Applied.resolution;
             _field = new GraphicsBuffer(GraphicsBuffer.Target.Structured, cells, 16);
             _ownsField = true;
             _exposure = new GraphicsBuffer(GraphicsBuffer.Target.Structured, cells, 4);

@@ -1,4 +1,7 @@
 using UnityEngine;
+#if ENABLE_INPUT_SYSTEM
+using UnityEngine.InputSystem;
+#endif
 
 namespace GregoryTerrain.Samples.GroundWalk
 {
@@ -6,7 +9,8 @@ namespace GregoryTerrain.Samples.GroundWalk
     /// Sample: a first-person walker on the terrain. A Rigidbody capsule (rotation frozen) stands on the
     /// <see cref="GregoryTerrainCollider"/> patch that follows it; the camera is a child 1.7 m above the
     /// feet. WASD or the arrow keys walk, Space jumps, the mouse looks around while the right button is
-    /// held (the legacy Input Manager's default axes).
+    /// held: through the Input System package when the project's Active Input Handling includes it
+    /// (ENABLE_INPUT_SYSTEM), else through the legacy Input Manager's default axes.
     /// <para>While the walker touches the ground its velocity is set along the surface (the renderer's
     /// <see cref="GregoryTerrainRenderer.SampleNormal"/>), so it walks up and down slopes without
     /// hopping and stands still without sliding; slopes steeper than <see cref="maxSlope"/> are left to
@@ -51,7 +55,7 @@ namespace GregoryTerrain.Samples.GroundWalk
         bool _jumpRequested;
         bool _waiting = true;
         bool _loggedFall;
-#if !ENABLE_LEGACY_INPUT_MANAGER
+#if !ENABLE_INPUT_SYSTEM && !ENABLE_LEGACY_INPUT_MANAGER
         bool _loggedInput;
 #endif
 
@@ -76,23 +80,51 @@ namespace GregoryTerrain.Samples.GroundWalk
 
         void Update()
         {
-#if ENABLE_LEGACY_INPUT_MANAGER
+            ReadInput();
+            if (view != null) view.rotation = Quaternion.Euler(_pitch, _yaw, 0f);
+        }
+
+#if ENABLE_INPUT_SYSTEM
+        // The legacy "Mouse X"/"Mouse Y" axes are the mouse delta in pixels times 0.1 (their default
+        // sensitivity): the same turn per pixel either way.
+        const float PixelsToMouseAxis = 0.1f;
+
+        static float Axis(bool negative, bool positive) => (positive ? 1f : 0f) - (negative ? 1f : 0f);
+
+        void ReadInput()
+        {
+            Keyboard keys = Keyboard.current;
+            Mouse mouse = Mouse.current;
+            _moveX = keys == null ? 0f : Axis(keys.aKey.isPressed || keys.leftArrowKey.isPressed, keys.dKey.isPressed || keys.rightArrowKey.isPressed);
+            _moveZ = keys == null ? 0f : Axis(keys.sKey.isPressed || keys.downArrowKey.isPressed, keys.wKey.isPressed || keys.upArrowKey.isPressed);
+            if (keys != null && keys.spaceKey.wasPressedThisFrame) _jumpRequested = true;
+            if (mouse != null && mouse.rightButton.isPressed)
+            {
+                Vector2 delta = mouse.delta.ReadValue() * PixelsToMouseAxis;
+                Look(delta.x, delta.y);
+            }
+        }
+#elif ENABLE_LEGACY_INPUT_MANAGER
+        void ReadInput()
+        {
             _moveX = Input.GetAxis("Horizontal");
             _moveZ = Input.GetAxis("Vertical");
             if (Input.GetButtonDown("Jump")) _jumpRequested = true;
-            if (Input.GetMouseButton(1))
-            {
-                _yaw += Input.GetAxis("Mouse X") * mouseSensitivity;
-                _pitch = Mathf.Clamp(_pitch - Input.GetAxis("Mouse Y") * mouseSensitivity, -89f, 89f);
-            }
+            if (Input.GetMouseButton(1)) Look(Input.GetAxis("Mouse X"), Input.GetAxis("Mouse Y"));
+        }
 #else
-            if (!_loggedInput)
-            {
-                _loggedInput = true;
-                Debug.LogWarning($"{name}: the walker reads the legacy Input Manager, which this project has turned off (Project Settings > Player > Active Input Handling); it stands still.", this);
-            }
+        void ReadInput()
+        {
+            if (_loggedInput) return;
+            _loggedInput = true;
+            Debug.LogWarning($"{name}: the project has no input handling on (Project Settings > Player > Active Input Handling); the walker stands still.", this);
+        }
 #endif
-            if (view != null) view.rotation = Quaternion.Euler(_pitch, _yaw, 0f);
+
+        void Look(float mouseX, float mouseY)
+        {
+            _yaw += mouseX * mouseSensitivity;
+            _pitch = Mathf.Clamp(_pitch - mouseY * mouseSensitivity, -89f, 89f);
         }
 
         void FixedUpdate()

@@ -38,6 +38,13 @@ namespace GregoryTerrain.Samples.GroundWalk
         Rigidbody[] _spheres;
         int _nextSlot;
 
+        // GameObject.CreatePrimitive(Sphere) adds these three, which the scene does not hold; a build
+        // strips engine components nothing references, and CreatePrimitive then fails. Naming their
+        // types keeps them, as the Scripting Reference's note on CreatePrimitive advises.
+        MeshFilter KeptForCreatePrimitiveFilter => null;
+        MeshRenderer KeptForCreatePrimitiveRenderer => null;
+        SphereCollider KeptForCreatePrimitiveCollider => null;
+
         void OnDisable()
         {
             if (_spheres == null) return;

@@ -7,11 +7,11 @@ namespace GregoryTerrain.Samples.GroundWalk
     /// <summary>
     /// Sample: one sun that looks right in Built-in, URP and HDRP. Built-in and URP take the Light's
     /// unitless intensity; HDRP reads a directional light's intensity as illuminance in lux and shows it
-    /// through the camera's exposure, so under HDRP this sets the sun to <see cref="hdrpLux"/> and adds a
+    /// through the camera's exposure, so under HDRP in Play Mode this sets the sun to <see cref="hdrpLux"/> and adds a
     /// global Volume, never saved, with a fixed exposure of <see cref="hdrpExposure"/> EV100. The HDRP
     /// types are reached by name (the sample must compile and open without HDRP): no HDRP component is
     /// stored in the scene, so Built-in and URP projects see no missing script.
-    /// (The Terrain Fly-over sample's SampleSun, in this namespace: each sample is imported on its own.)
+    /// (The Terrain Fly-over sample has its own SampleSun in its own namespace: each sample is imported on its own.)
     /// </summary>
     [ExecuteAlways, RequireComponent(typeof(Light))]
     [AddComponentMenu("Gregory Terrain/Samples/Ground Walk/Sample Sun")]
@@ -28,13 +28,13 @@ namespace GregoryTerrain.Samples.GroundWalk
         [Tooltip("HDRP fixed exposure in EV100 for the sun above. 15 suits a 100000 lux sun (the sunny-16 rule: f/16 at 1/100 s, ISO 100).")]
         [SerializeField, Range(-10f, 20f)] float hdrpExposure = 15f;
 
-        bool? _appliedHdrp;
+        (bool hdrp, bool playing)? _applied;
         GameObject _exposureVolume;
         ScriptableObject _exposureProfile;
 
         void OnEnable() => Apply();
 
-        void OnValidate() => _appliedHdrp = null;   // re-applied on the next Update (OnValidate must not create objects)
+        void OnValidate() => _applied = null;   // re-applied on the next Update (OnValidate must not create objects)
 
         // HDRP sets the pipeline tag when it first renders, which may follow OnEnable: look again each frame
         // (one string compare) and apply only when the pipeline changed.
@@ -42,7 +42,7 @@ namespace GregoryTerrain.Samples.GroundWalk
 
         void OnDisable()
         {
-            _appliedHdrp = null;
+            _applied = null;
             RemoveExposureVolume();
         }
 
@@ -54,23 +54,33 @@ namespace GregoryTerrain.Samples.GroundWalk
             _exposureProfile = null;
         }
 
+        // In Edit Mode the Light keeps its saved intensity (a write would change the scene as it opens);
+        // under HDRP the unsaved exposure is then lowered by the ratio of that intensity to hdrpLux,
+        // so the Scene view shows what Play Mode shows.
         void Apply()
         {
-            bool hdrp = Shader.globalRenderPipeline == HdrpTag;
-            if (_appliedHdrp == hdrp) return;
-            _appliedHdrp = hdrp;
+            bool hdrp = Shader.globalRenderPipeline == HdrpTag, playing = Application.isPlaying;
+            if (_applied == (hdrp, playing)) return;
+            _applied = (hdrp, playing);
             var sun = GetComponent<Light>();
             if (!hdrp)
             {
-                sun.intensity = intensity;
+                if (playing) sun.intensity = intensity;
                 RemoveExposureVolume();
                 return;
             }
-            sun.intensity = hdrpLux;
-            // HDRP keeps the intensity it uses on its additional light data when the light has one.
-            Component hdLight = gameObject.GetComponent("HDAdditionalLightData");
-            if (hdLight != null) SetProperty(hdLight, "intensity", hdrpLux);
-            if (_exposureVolume == null) _exposureVolume = CreateExposureVolume(hdrpExposure, out _exposureProfile);
+            float ev100 = hdrpExposure;
+            if (playing)
+            {
+                sun.intensity = hdrpLux;
+                // HDRP keeps the intensity it uses on its additional light data when the light has one.
+                Component hdLight = gameObject.GetComponent("HDAdditionalLightData");
+                if (hdLight != null) SetProperty(hdLight, "intensity", hdrpLux);
+            }
+            else if (sun.intensity > 0f && hdrpLux > 0f)
+                ev100 -= Mathf.Log(hdrpLux / sun.intensity, 2f);
+            RemoveExposureVolume();
+            _exposureVolume = CreateExposureVolume(ev100, out _exposureProfile);
         }
 
         /// <summary>

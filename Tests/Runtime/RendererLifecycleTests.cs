@@ -8,6 +8,7 @@ namespace GregoryTerrain.Tests
     /// once, a steady frame sets only <c>_Range</c> per camera, and disabling or a domain reload frees
     /// every native object it made. <c>DrawFor</c> is what each camera's rendering callback calls.
     /// </summary>
+    [EditorOnly]   // draws with the package's shader, loaded through the AssetDatabase (TestTerrain)
     public class RendererLifecycleTests
     {
         TestTerrain _t;
@@ -71,6 +72,45 @@ namespace GregoryTerrain.Tests
             r.ReleaseGpuResources();   // clears the property block
             r.DrawFor(a);
             Assert.That(r.PropertiesSetLastPrepare, Does.Contain(ShaderIds.TessObjectToClip), "a cleared block");
+        }
+
+        [Test]
+        public void LevelCountIsSentAgainAfterTheBlockIsCleared()
+        {
+            var r = _t.Renderer("terrain");
+            r.HorizonLevels = true;
+            Camera a = _t.Camera("a");
+            int levels = GregoryTerrainRenderer.LodLevelsPropertyId;
+            Assume.That(r.DrawsFallback, Is.False, "the levels need the tessellator");
+            r.DrawFor(a);
+            r.DrawFor(a);
+            Assert.That(r.PropertiesSetLastPrepare, Does.Not.Contain(levels), "steady");
+            _t.Grid.MarkChanged();   // a re-upload (grid edit, undo) clears the block
+            r.DrawFor(a);
+            Assert.That(r.PropertiesSetLastPrepare, Does.Contain(levels), "after a re-upload");
+            r.enabled = false;
+            r.enabled = true;
+            r.DrawFor(a);
+            Assert.That(r.PropertiesSetLastPrepare, Does.Contain(levels), "after disable/enable");
+        }
+
+        [Test]
+        public void DrawModeFollowsALoweredShaderLod()
+        {
+            var r = _t.Renderer("terrain");
+            Camera a = _t.Camera("a");
+            r.DrawFor(a);
+            Assume.That(r.DrawsFallback, Is.False, "tessellated SubShader (LOD 300) in use");
+            int lod = Shader.globalMaximumLOD;
+            try
+            {
+                Shader.globalMaximumLOD = 250;   // between the fallback's 200 and the tessellated 300
+                r.DrawFor(a);
+                Assert.That(r.DrawsFallback, Is.True, "the fallback SubShader");
+            }
+            finally { Shader.globalMaximumLOD = lod; }
+            r.DrawFor(a);
+            Assert.That(r.DrawsFallback, Is.False, "and back");
         }
 
         [Test]

@@ -9,6 +9,7 @@ namespace GregoryTerrain.Tests
     /// grid (Gregory patches reproduce a plane exactly) the height, the normal and a ray's hit are
     /// known in closed form. No noise: the test material has no GT_NOISE.
     /// </summary>
+    [EditorOnly]   // draws with the package's shader, loaded through the AssetDatabase (TestTerrain)
     public class RendererQueryTests
     {
         TestTerrain _t;

@@ -1,5 +1,6 @@
 using NUnit.Framework;
 using UnityEngine;
+using UnityEngine.TestTools;
 
 namespace GregoryTerrain.Tests
 {
@@ -34,6 +35,22 @@ namespace GregoryTerrain.Tests
             Assert.That(snow.UsesFieldBuffer, Is.False, "a 64^2 field buffer kept after the map became 128^2");
             Assert.Throws<System.ArgumentException>(() => snow.SetFieldBuffer(_buffer, 2), "the old buffer is refused for the new resolution");
         }
+
+#if UNITY_EDITOR
+        [Test]
+        public void AnInvalidInspectorEditIsLoggedAndNotUsed()
+        {
+            var snow = _go.AddComponent<SnowSimulator>();
+            SnowSettings s = snow.Settings;
+            s.resolution = 128;
+            snow.Settings = s;
+            using var so = new UnityEditor.SerializedObject(snow);
+            so.FindProperty("settings.resolution").intValue = 100;
+            LogAssert.Expect(LogType.Error, new System.Text.RegularExpressions.Regex(@"snow\.resolution \(100\) must be a power of two"));
+            so.ApplyModifiedProperties();   // as the Inspector: Unity calls OnValidate
+            Assert.That(snow.MapSize.x, Is.EqualTo(128f), "the last valid resolution stays in use");
+        }
+#endif
 
         [Test]
         public void SameResolutionKeepsTheFieldBuffer()

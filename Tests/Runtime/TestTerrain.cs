@@ -3,6 +3,12 @@ using UnityEngine;
 
 namespace GregoryTerrain.Tests
 {
+    /// <summary>Runs a fixture in the editor only (Edit and Play Mode), not in a player.</summary>
+    public sealed class EditorOnlyAttribute : UnityEngine.TestTools.UnityPlatformAttribute
+    {
+        public EditorOnlyAttribute() : base(RuntimePlatform.WindowsEditor, RuntimePlatform.OSXEditor, RuntimePlatform.LinuxEditor) { }
+    }
+
     /// <summary>
     /// A renderer on a 2 x 2 flat grid with the package's terrain shader, and cameras, made for one
     /// test and destroyed after it (<see cref="Dispose"/>).
@@ -14,10 +20,17 @@ namespace GregoryTerrain.Tests
         public Material Asset { get; }
         public PatchGridAsset Grid { get; }
 
+        const string ShaderGuid = "d10911ff66aad0d4ff5ba251996825e9";   // Shaders/GregoryTerrain.shader.meta
+
+        // From the AssetDatabase: a player's Shader.Find sees only shaders its build holds ([EditorOnly]).
         public TestTerrain()
         {
-            Shader shader = Shader.Find("GregoryTerrain/Terrain");
-            if (shader == null) throw new System.InvalidOperationException("shader GregoryTerrain/Terrain not found: is the package imported?");
+#if UNITY_EDITOR
+            Shader shader = UnityEditor.AssetDatabase.LoadAssetAtPath<Shader>(UnityEditor.AssetDatabase.GUIDToAssetPath(ShaderGuid));
+#else
+            Shader shader = null;
+#endif
+            if (shader == null) throw new System.InvalidOperationException($"shader GregoryTerrain/Terrain (GUID {ShaderGuid}) not found: is the package imported?");
             Asset = Keep(new Material(shader));
             Grid = Keep(ScriptableObject.CreateInstance<PatchGridAsset>());
             Grid.SetGrid(PatchGrid.CreateFlat(2, 2));

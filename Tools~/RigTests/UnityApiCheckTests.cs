@@ -55,7 +55,7 @@ namespace GregoryTerrain.Rig.Tests
                     if (include.StartsWith("../Stubs/") || include.StartsWith("Stubs/")) continue;
                     bool fromStub = f.Replace('\\', '/').Contains("/Stubs/");
                     if (fromStub && System.Text.RegularExpressions.Regex.IsMatch(include, @"^\.\./Unity(Engine|Editor)/Unity(Engine|Editor)\.csproj$")) continue;
-                    if (System.Text.RegularExpressions.Regex.IsMatch(include, @"^(\.\./)?(RuntimePlayer|RuntimeEditor|EditorCheck|SamplesCheck|TestsRuntimeCheck|TestsEditorCheck)/\w+\.csproj$")) continue;
+                    if (System.Text.RegularExpressions.Regex.IsMatch(include, @"^(\.\./)?(RuntimePlayer|RuntimeEditor|EditorCheck|SamplesCheck|SamplesInputSystemCheck|TestsRuntimeCheck|TestsEditorCheck)/\w+\.csproj$")) continue;
                     bad.Add($"{Path.GetFileName(f)} -> {include}");
                 }
             }

@@ -63,6 +63,48 @@ namespace GregoryTerrain.Rig.Tests
             Assert.That(File.ReadAllText(PackageRoot.Combine("Runtime", "AssemblyInfo.cs")), Does.Contain($"InternalsVisibleTo(\"{AsmdefName(json)}\")"));
         }
 
+        /// <summary>
+        /// Tests/Runtime fixtures that can fail in a player for want of the shader: a Shader.Find
+        /// anywhere in the assembly (a player finds only shaders its content or Always Included
+        /// Shaders hold), or a fixture that makes a TestTerrain without [EditorOnly].
+        /// </summary>
+        internal static List<string> PlayerShaderProblems(IDictionary<string, string> files)
+        {
+            var p = new List<string>();
+            foreach (var f in files)
+            {
+                string code = System.Text.RegularExpressions.Regex.Replace(f.Value, @"//[^\n]*", "");
+                if (code.Contains("Shader.Find(")) p.Add($"{f.Key}: Shader.Find");
+                if (code.Contains("new TestTerrain(") && !System.Text.RegularExpressions.Regex.IsMatch(code, @"\[EditorOnly\]\s*(?:public\s+)?class"))
+                    p.Add($"{f.Key}: a fixture making a TestTerrain is not [EditorOnly]");
+            }
+            return p;
+        }
+
+        [Test]
+        public void RuntimeTestsFindTheShaderWhereTheyRun()
+        {
+            var files = Directory.GetFiles(PackageRoot.Combine("Tests", "Runtime"), "*.cs").ToDictionary(Path.GetFileName, File.ReadAllText);
+            Assert.That(PlayerShaderProblems(files), Is.Empty);
+            string testTerrain = files["TestTerrain.cs"];
+            string guid = File.ReadAllLines(PackageRoot.Combine("Shaders", "GregoryTerrain.shader.meta")).Single(l => l.StartsWith("guid:")).Substring(5).Trim();
+            Assert.That(testTerrain, Does.Contain($"\"{guid}\""), "TestTerrain loads Shaders/GregoryTerrain.shader by its GUID");
+            Assert.That(testTerrain, Does.Match(@"EditorOnlyAttribute\s*:\s*UnityEngine\.TestTools\.UnityPlatformAttribute"));
+            Assert.That(testTerrain, Does.Contain("RuntimePlatform.WindowsEditor, RuntimePlatform.OSXEditor, RuntimePlatform.LinuxEditor"));
+        }
+
+        [Test]
+        public void PlayerShaderCheckRejectsShaderFind()
+        {
+            var old = new Dictionary<string, string>
+            {
+                ["TestTerrain.cs"] = "public TestTerrain() { Shader shader = Shader.Find(\"GregoryTerrain/Terrain\"); }",
+                ["RendererQueryTests.cs"] = "public class RendererQueryTests { [SetUp] public void SetUp() { _t = new TestTerrain(); } }",
+            };
+            Assert.That(PlayerShaderProblems(old), Is.EqualTo(new[] { "TestTerrain.cs: Shader.Find", "RendererQueryTests.cs: a fixture making a TestTerrain is not [EditorOnly]" }));
+            Assert.That(PlayerShaderProblems(new Dictionary<string, string> { ["A.cs"] = "[EditorOnly] // why\n    public class A { void S() { _t = new TestTerrain(); } }" }), Is.Empty);
+        }
+
         [Test]
         public void AsmdefCheckRejectsAPlainAssembly()
         {

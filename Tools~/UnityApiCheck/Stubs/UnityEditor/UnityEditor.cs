@@ -40,7 +40,7 @@ namespace UnityEditor
     // No AttributeUsage in 2022.3 (so: any target, not AllowMultiple, inherited).
     public sealed class CanEditMultipleObjects : Attribute { }                                // SR:CanEditMultipleObjects
 
-    public class SerializedObject : IDisposable                                              // SR:SerializedObject
+    public partial class SerializedObject : IDisposable                                              // SR:SerializedObject
     {
         public SerializedProperty FindProperty(string propertyPath) => null;                 // SR:SerializedObject.FindProperty
         public bool UpdateIfRequiredOrScript() => false;                                     // SR:SerializedObject.UpdateIfRequiredOrScript

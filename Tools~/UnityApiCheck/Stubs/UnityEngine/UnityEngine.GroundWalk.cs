@@ -30,3 +30,16 @@ namespace UnityEngine
         public static GameObject CreatePrimitive(PrimitiveType type) => null;        // SR:GameObject.CreatePrimitive
     }
 }
+
+namespace UnityEngine
+{
+    // The components GameObject.CreatePrimitive(Sphere) adds, named by the Walk sample so that a build
+    // keeps them. UnityCsReference 2022.3: Runtime/Export/Graphics/GraphicsComponents.bindings.cs:122
+    // (`public sealed partial class MeshFilter : Component`), GraphicsRenderers.bindings.cs:21, :415
+    // (`public partial class Renderer : Component`, `public partial class MeshRenderer : Renderer`),
+    // Modules/Physics/ScriptBindings/Dynamics.bindings.cs:424 (`public class SphereCollider : Collider`).
+    public sealed partial class MeshFilter : Component { }                            // SR:MeshFilter
+    public partial class Renderer : Component { }                                     // SR:Renderer
+    public partial class MeshRenderer : Renderer { }                                  // SR:MeshRenderer
+    public class SphereCollider : Collider { }                                        // SR:SphereCollider
+}

@@ -51,6 +51,7 @@ namespace UnityEngine
     {
         // [ThreadSafe] in the reference source: callable from any thread (SR:Physics.BakeMesh says so too).
         public static void BakeMesh(int meshID, bool convex, MeshColliderCookingOptions cookingOptions) { } // SR:Physics.BakeMesh
+        public static void SyncTransforms() { }                                       // SR:Physics.SyncTransforms (Dynamics.bindings.cs:1575 in 2022.3)
     }
 }
 

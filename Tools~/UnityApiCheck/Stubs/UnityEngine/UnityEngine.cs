@@ -96,6 +96,8 @@ namespace UnityEngine
     }
 
     public class Application { public static bool isPlaying => false; }              // SR:Application-isPlaying (plain class)
+    public enum RuntimePlatform { OSXEditor = 0, WindowsEditor = 7, LinuxEditor = 16 } // SR:RuntimePlatform (the editor values; Runtime/Export/BaseClass.cs:47 in 2022.3)
+    public enum LogType { Error = 0, Assert = 1, Warning = 2, Log = 3, Exception = 4 } // SR:LogType (Runtime/Export/BaseClass.cs:256 in 2022.3)
     public class Time { public static float deltaTime => 0f; public static float time => 0f; public static int frameCount => 0; } // SR:Time-deltaTime, SR:Time-time, SR:Time-frameCount (plain class)
 
     public struct Mathf                                                               // SR:Mathf (a struct in 2022.3)
@@ -103,6 +105,7 @@ namespace UnityEngine
         public const float Deg2Rad = 0.017453292f;                                    // SR:Mathf.Deg2Rad
         public const float PI = 3.14159274f;                                          // SR:Mathf.PI
         public static float Clamp(float value, float min, float max) => value;        // SR:Mathf.Clamp
+        public static float Log(float f, float p) => f;                               // SR:Mathf.Log
         public static int Clamp(int value, int min, int max) => value;                // SR:Mathf.Clamp
         public static float Clamp01(float value) => value;                            // SR:Mathf.Clamp01
         public static float Abs(float f) => f;                                        // SR:Mathf.Abs

@@ -1,3 +1,5 @@
+using System.Collections.Generic;
+
 namespace GregoryTerrain
 {
     /// <summary>
@@ -44,5 +46,28 @@ namespace GregoryTerrain
             _origin = wanted;
             return true;
         }
+    }
+
+    /// <summary>
+    /// A <see cref="RangeOriginTracker"/> per camera, for views laid out around each camera (Horizon
+    /// levels): cameras far apart keep their own origins, so none re-snaps when another one draws.
+    /// Past <see cref="MaxCameras"/> cameras it forgets them all (each snaps once more).
+    /// </summary>
+    internal sealed class CameraRangeOrigins
+    {
+        public const int MaxCameras = 16;
+        readonly Dictionary<int, RangeOriginTracker> _byCamera = new Dictionary<int, RangeOriginTracker>();
+
+        /// <summary>The tracker of camera <paramref name="cameraId"/> (an instance ID), made on first use.</summary>
+        public RangeOriginTracker For(int cameraId)
+        {
+            if (_byCamera.TryGetValue(cameraId, out RangeOriginTracker t)) return t;
+            if (_byCamera.Count >= MaxCameras) _byCamera.Clear();
+            _byCamera.Add(cameraId, t = new RangeOriginTracker());
+            return t;
+        }
+
+        /// <summary>Forgets every camera's origin.</summary>
+        public void Reset() => _byCamera.Clear();
     }
 }

@@ -1,0 +1,231 @@
+using System.Collections.Generic;
+using System.IO;
+using System.Linq;
+using System.Text.RegularExpressions;
+using NUnit.Framework;
+
+namespace GregoryTerrain.Rig.Tests
+{
+    /// <summary>
+    /// Static checks over the renderer's C# (Runtime/GregoryTerrainRenderer*.cs) for state that only a
+    /// Unity editor could show going wrong: what the property block is known to hold once it is
+    /// cleared, the draw's bounds against the shader's tile culling, what the draw mode is cached
+    /// against, the device check before any structured buffer, and the range origin per camera.
+    /// The Unity-side tests (Tests/Runtime) check the same in Unity; each check here is also run on
+    /// the broken code it replaces, which it must reject.
+    /// </summary>
+    [TestFixture]
+    public class RendererStateSourceTests
+    {
+        static string StripComments(string code) =>
+            Regex.Replace(code, @"//[^\n]*|/\*.*?\*/", "", RegexOptions.Singleline);
+
+        static string RendererCode() => string.Join("\n",
+            Directory.GetFiles(PackageRoot.Combine("Runtime"), "GregoryTerrainRenderer*.cs").OrderBy(f => f)
+                .Select(f => StripComments(File.ReadAllText(f))));
+
+        /// <summary>The body (braces included) of the method or property declared as <paramref name="name"/>, or null.</summary>
+        internal static string Body(string code, string name)
+        {
+            Match m = Regex.Match(code, $@"\b{Regex.Escape(name)}\s*(\([^)]*\))?\s*(?=\{{)");
+            if (!m.Success) return null;
+            int start = m.Index + m.Length, depth = 0;
+            for (int i = start; i < code.Length; i++)
+            {
+                if (code[i] == '{') depth++;
+                else if (code[i] == '}' && --depth == 0) return code.Substring(start, i - start + 1);
+            }
+            return null;
+        }
+
+        /// <summary>The name of the method whose body holds <paramref name="index"/>.</summary>
+        static string EnclosingMethod(string code, int index)
+        {
+            foreach (Match m in Regex.Matches(code.Substring(0, index), @"\b(\w+)\s*\([^)]*\)\s*\{").Cast<Match>().Reverse())
+            {
+                string body = Body(code.Substring(m.Index), m.Groups[1].Value);
+                if (body != null && m.Index + m.Length - 1 + body.Length > index) return m.Groups[1].Value;
+            }
+            return null;
+        }
+
+        // ---- 1. What the property block holds, forgotten with it ----------------------------------
+
+        /// <summary>
+        /// Memos of what the property block holds (fields named <c>_sent*</c> / <c>_bound*</c>) that
+        /// the one method clearing the block does not reset: after the clear each would skip sending
+        /// a value the block no longer has. Also a problem: the block cleared in more than one place.
+        /// </summary>
+        internal static List<string> MemosNotResetWithTheBlock(string code)
+        {
+            var problems = new List<string>();
+            var clears = Regex.Matches(code, @"_props\s*\??\s*\.\s*Clear\s*\(\s*\)");
+            if (clears.Count != 1) { problems.Add($"the property block is cleared in {clears.Count} places, not one"); if (clears.Count == 0) return problems; }
+            string method = EnclosingMethod(code, clears[0].Index);
+            string body = Body(code, method) ?? "";
+            var memos = Regex.Matches(code, @"(?<![\w.])(_(?:sent|bound)\w*)").Select(m => m.Groups[1].Value).Distinct();
+            foreach (string memo in memos)
+                if (!Regex.IsMatch(body, $@"\b{memo}\s*=(?!=)"))
+                    problems.Add($"{memo} is not reset in {method}, which clears the property block");
+            return problems;
+        }
+
+        [Test]
+        public void EveryMemoOfThePropertyBlockIsResetWhereTheBlockIsCleared()
+        {
+            Assert.That(MemosNotResetWithTheBlock(RendererCode()), Is.Empty);
+        }
+
+        [Test]
+        public void MemoCheckRejectsAMemoLeftStale()
+        {
+            // _LodLevels' memo kept after the clear: the level count is never sent again (cracked seams).
+            string old = "int _sentLevelCount; GraphicsBuffer _boundSnowDepth;\n" +
+                         "public void ReleaseGpuResources() { _props?.Clear(); _boundSnowDepth = null; }\n" +
+                         "void PushLevels() { if (count != _sentLevelCount) { SetVector(Ids.LodLevels, v); _sentLevelCount = count; } }";
+            Assert.That(MemosNotResetWithTheBlock(old), Is.EqualTo(new[] { "_sentLevelCount is not reset in ReleaseGpuResources, which clears the property block" }));
+            string twice = "void A() { _props.Clear(); _sent = default; } void B() { _props?.Clear(); }";
+            Assert.That(MemosNotResetWithTheBlock(twice), Does.Contain("the property block is cleared in 2 places, not one"));
+            Assert.That(MemosNotResetWithTheBlock("void ClearPropertyBlock() { _props?.Clear(); _sent = default; } void P() { if (_sent.levelCount != n) _sent.levelCount = n; }"), Is.Empty);
+        }
+
+        // ---- 2. The draw's bounds hold what the shader's tile culling keeps -----------------------
+
+        static string ShaderFunction(string file, string name) =>
+            Body(StripComments(File.ReadAllText(PackageRoot.Combine("Shaders", "Terrain", file))), name);
+
+        /// <summary>
+        /// The height margins the shader's <c>TileCulled</c> adds to a tile's box as named terms
+        /// (<c>hi.y += F()</c>) that the renderer's <c>WorldBounds</c> does not add: Unity culls the
+        /// whole draw by those bounds, so a tile the shader keeps outside them vanishes.
+        /// </summary>
+        internal static List<string> CullMarginsMissingFromBounds(string tileCulled, string worldBounds)
+        {
+            var terms = Regex.Matches(tileCulled, @"hi\.y\s*\+=\s*(\w+)\s*\(\s*\)").Select(m => m.Groups[1].Value).Distinct();
+            return terms.Where(t => !Regex.IsMatch(worldBounds, $@"\b{t}\s*\(\s*\)")).ToList();
+        }
+
+        [Test]
+        public void WorldBoundsHoldTheSnowCapTheTileCullingAdds()
+        {
+            string tileCulled = ShaderFunction("TileFactors.hlsl", "TileCulled");
+            Assert.That(tileCulled, Does.Contain("SnowDepthCap()"), "the shader's culling box grows by the snow cap");
+            Assert.That(CullMarginsMissingFromBounds(tileCulled, Body(RendererCode(), "WorldBounds")), Is.Empty,
+                "height margins of TileCulled that RenderParams.worldBounds lacks");
+        }
+
+        [Test]
+        public void BoundsCheckRejectsBoundsWithoutTheCap()
+        {
+            string culled = "{ hi.y += margin; #if defined(GT_SNOW)\n hi.y += SnowDepthCap();\n#endif }";
+            string old = "{ float noise = NoiseMargin(); Vector3 max = new Vector3(c, _gridMaxZ + noise, h); }";
+            Assert.That(CullMarginsMissingFromBounds(culled, old), Is.EqualTo(new[] { "SnowDepthCap" }));
+            Assert.That(CullMarginsMissingFromBounds(culled, "{ max.y += SnowDepthCap(); }"), Is.Empty);
+        }
+
+        // ---- 3. The draw mode follows the SubShader Unity picks -----------------------------------
+
+        /// <summary>
+        /// What Unity's choice of SubShader depends on besides the material and its shader, which the
+        /// cached draw mode must be keyed on: the shader LOD (global and per shader) and the render
+        /// pipeline (the SubShaders' RenderPipeline tags).
+        /// </summary>
+        internal static readonly string[] SubShaderInputs = { "Shader.globalMaximumLOD", "maximumLOD", "GraphicsSettings.currentRenderPipeline" };
+
+        internal static List<string> DrawModeKeyMisses(string readDrawMode) =>
+            SubShaderInputs.Where(i => !Regex.IsMatch(readDrawMode, $@"(?<![\w]){Regex.Escape(i)}\b")).ToList();
+
+        [Test]
+        public void DrawModeIsReadAgainWhenTheActiveSubShaderCanChange()
+        {
+            string code = RendererCode();
+            string read = Body(code, "ReadDrawMode");
+            Assert.That(read, Does.Contain("GetTag"), "ReadDrawMode reads the SubShader's tag");
+            // With the types it keys the cache by (a struct of the renderer's named in it).
+            foreach (Match t in Regex.Matches(code, @"\b(?:struct|class)\s+(\w+)"))
+                if (Regex.IsMatch(read, $@"\b{t.Groups[1].Value}\b")) read += Body(code, t.Groups[1].Value);
+            Assert.That(DrawModeKeyMisses(read), Is.Empty, "inputs of Unity's SubShader choice the cached draw mode ignores");
+        }
+
+        [Test]
+        public void DrawModeCheckRejectsACachePerMaterialAndShader()
+        {
+            string old = "{ if (material == _drawModeMaterial && material.shader == _drawModeShader) return _drawFallback; string tag = material.GetTag(DrawTag, false, \"\"); }";
+            Assert.That(DrawModeKeyMisses(old), Is.EqualTo(SubShaderInputs));
+        }
+
+        // ---- 4. With the levels, each camera keeps its own range origin --------------------------
+
+        /// <summary>
+        /// Why Prepare would re-snap the range origin per camera with Horizon levels (the origin
+        /// follows each camera's finest level): it must take the tracker of the camera drawn
+        /// (CameraRangeOrigins, by instance ID) rather than update one tracker for every camera.
+        /// </summary>
+        internal static List<string> SharedOriginProblems(string code)
+        {
+            Match pick = Regex.Match(Body(code, "Prepare") ?? "", @"_origin\s*=\s*(\w+)\s*\(");
+            if (!pick.Success) return new List<string> { "Prepare updates one origin tracker for every camera" };
+            Match chooser = Regex.Match(code, $@"RangeOriginTracker\s+{pick.Groups[1].Value}\s*\([^)]*\)\s*(=>[^;]*;|\{{)");
+            string body = chooser.Groups[1].Value == "{" ? Body(code, pick.Groups[1].Value) : chooser.Groups[1].Value;
+            var p = new List<string>();
+            if (!Regex.IsMatch(body ?? "", @"\.For\s*\(\s*cam\.GetInstanceID\(\)\s*\)")) p.Add($"{pick.Groups[1].Value} takes no tracker per camera");
+            if (!(body ?? "").Contains("LevelsOn(")) p.Add($"{pick.Groups[1].Value} does not keep the one range's tracker without the levels");
+            return p;
+        }
+
+        [Test]
+        public void WithTheLevelsEachCameraKeepsItsOwnOrigin()
+        {
+            Assert.That(SharedOriginProblems(RendererCode()), Is.Empty);
+        }
+
+        [Test]
+        public void OriginCheckRejectsOneTrackerForEveryCamera()
+        {
+            string old = "readonly RangeOriginTracker _origin = new RangeOriginTracker();\n" +
+                         "bool Prepare(Camera cam = null) { if (_origin.Update(OriginRange(cam, fallback))) _originDirty = true; }";
+            Assert.That(SharedOriginProblems(old), Is.EqualTo(new[] { "Prepare updates one origin tracker for every camera" }));
+        }
+
+        // ---- 7. No structured buffer on a device that cannot make one -----------------------------
+
+        /// <summary>
+        /// Problems with the device check in <c>Prepare</c>: Unity's GraphicsBuffer constructor throws
+        /// for a Structured target when <c>SystemInfo.supportsComputeShaders</c> is false, so the check
+        /// must come before the upload (the first buffer made) and be made and logged once, not from
+        /// every camera of every frame.
+        /// </summary>
+        internal static List<string> DeviceCheckProblems(string code)
+        {
+            var problems = new List<string>();
+            string prepare = Body(code, "Prepare") ?? "";
+            int upload = prepare.IndexOf("EnsureUploaded(");
+            string checkName = Regex.Matches(prepare, @"!\s*(\w+)\s*\(\s*\)").Cast<Match>()
+                .Select(m => m.Groups[1].Value).FirstOrDefault(n => (Body(code, n) ?? "").Contains("SystemInfo.supportsComputeShaders"));
+            if (checkName == null) { problems.Add("Prepare calls no check of SystemInfo.supportsComputeShaders"); return problems; }
+            if (prepare.IndexOf(checkName + "(") > upload) problems.Add($"{checkName} comes after EnsureUploaded");
+            string body = Body(code, checkName);
+            if (!Regex.IsMatch(code, @"static\s+\w+\??\s+s_\w+")) problems.Add("no static memo: the check is not made once");
+            if (!body.Contains("Debug.Log")) problems.Add($"{checkName} logs nothing");
+            return problems;
+        }
+
+        [Test]
+        public void DeviceWithoutComputeIsToldOnceBeforeAnyStructuredBuffer()
+        {
+            string code = RendererCode();
+            Assert.That(code, Does.Contain("GraphicsBuffer.Target.Structured"), "the renderer makes structured buffers");
+            Assert.That(DeviceCheckProblems(code), Is.Empty);
+        }
+
+        [Test]
+        public void DeviceCheckRejectsAnUncheckedUpload()
+        {
+            string old = "bool Prepare(Camera cam = null) { if (material == null) return false; if (!EnsureUploaded()) return false; }";
+            Assert.That(DeviceCheckProblems(old), Is.EqualTo(new[] { "Prepare calls no check of SystemInfo.supportsComputeShaders" }));
+            string late = "static string s_DeviceError; bool Prepare(Camera cam = null) { if (!EnsureUploaded()) return false; if (!DeviceCanDraw()) return false; }\n" +
+                          "bool DeviceCanDraw() { return SystemInfo.supportsComputeShaders; }";
+            Assert.That(DeviceCheckProblems(late), Is.EqualTo(new[] { "DeviceCanDraw comes after EnsureUploaded", "DeviceCanDraw logs nothing" }));
+        }
+    }
+}
