@@ -16,10 +16,10 @@ namespace GregoryTerrain
         /// <summary>What the property block holds of the values set only on change; forgotten with the block.</summary>
         struct BlockMemo
         {
-            public GraphicsBuffer snowDepth, noiseCells;
-            public Vector4 snowMapSize;
-            public int levelCount;   // _LodLevels.x (0: not sent)
-            public RangeOrigin origin;   // _RangeOrigin
+            internal GraphicsBuffer snowDepth, noiseCells;
+            internal Vector4 snowMapSize;
+            internal int levelCount;   // _LodLevels.x (0: not sent)
+            internal RangeOrigin origin;   // _RangeOrigin
         }
         BlockMemo _sent;
 
@@ -30,7 +30,6 @@ namespace GregoryTerrain
             _sent = default;
         }
 
-        // Whether this device can make structured buffers: checked, and logged, once a run.
         static bool s_DeviceChecked;
         static string s_DeviceError;
 
