@@ -55,6 +55,8 @@ namespace GregoryTerrain.EditorTools
         Vector3 _lastDab;
         double _flattenTarget;
         int _selectFrom = -1;
+        int _dragControl;               // the control ID holding GUIUtility.hotControl during a drag, else 0
+        static readonly int ControlHint = "GregoryTerrainSculptTool".GetHashCode();
 
         public override GUIContent toolbarIcon => Icon;
 
@@ -99,23 +101,32 @@ namespace GregoryTerrain.EditorTools
             return Selection;
         }
 
-        public override void OnWillBeDeactivated() => EndStroke();
+        public override void OnWillBeDeactivated() => EndDrag();
 
         public override void OnToolGUI(EditorWindow window)
         {
+            Event e = Event.current;
+            int id = GUIUtility.GetControlID(ControlHint, FocusType.Passive);
+            // The type as this control sees it: while the tool holds the hot control, Unity sends it the
+            // drag and the release even when the mouse is outside the Scene view.
+            EventType type = e.GetTypeForControl(id);
+            if (type == EventType.MouseUp && GUIUtility.hotControl == id)
+            {
+                EndDrag();   // before anything that may return early: the undo group and the mouse are always released
+                e.Use();
+                return;
+            }
             if (!(window is SceneView)) return;
             var renderer = target as GregoryTerrainRenderer;
             if (renderer == null) return;
             PatchGridAsset grid = renderer.Grid;
             if (grid == null || !grid.IsValid) return;
-            Event e = Event.current;
-            int id = GUIUtility.GetControlID(FocusType.Passive);
-            if (e.type == EventType.Layout) HandleUtility.AddDefaultControl(id);   // clicks paint instead of selecting other objects
+            if (type == EventType.Layout) HandleUtility.AddDefaultControl(id);   // clicks paint instead of selecting other objects
 
             DrawSelection(renderer, grid);
             Ray ray = HandleUtility.GUIPointToWorldRay(e.mousePosition);
             bool hit = renderer.Raycast(ray, float.PositiveInfinity, out Vector3 point, out Vector3 normal, out _);
-            if (hit && e.type == EventType.Repaint && Mode != SculptMode.SelectPatches)
+            if (hit && type == EventType.Repaint && Mode != SculptMode.SelectPatches)
             {
                 Handles.matrix = Matrix4x4.identity;   // the disc is in world space
                 Handles.color = Mode == SculptMode.Smooth ? Color.cyan : Mode == SculptMode.Flatten ? Color.yellow : (Mode == SculptMode.Lower) != e.shift ? Color.red : Color.green;
@@ -123,18 +134,20 @@ namespace GregoryTerrain.EditorTools
                 Handles.DrawWireDisc(point, normal, 0.5f * RadiusMetres);
             }
 
-            switch (e.type)
+            switch (type)
             {
                 case EventType.MouseMove:
                     HandleUtility.Repaint();
                     break;
-                case EventType.MouseDown when e.button == 0 && !e.alt && hit:
+                // Another control (a handle, the camera) owns the mouse: leave its click alone.
+                case EventType.MouseDown when e.button == 0 && !e.alt && hit && GUIUtility.hotControl == 0:
+                    GUIUtility.hotControl = _dragControl = id;   // the drag and the release come here, wherever the mouse goes
                     if (Mode == SculptMode.SelectPatches) _selectFrom = PatchUnder(renderer, grid, point);
                     else BeginStroke(renderer, grid, point);
                     Select(renderer, grid, point);
                     e.Use();
                     break;
-                case EventType.MouseDrag when e.button == 0 && (_strokeGrid != null || _selectFrom >= 0):
+                case EventType.MouseDrag when GUIUtility.hotControl == id:
                     if (hit)
                     {
                         if (_strokeGrid != null && Distance(point, _lastDab) >= 0.25f * RadiusMetres) Dab(renderer, grid, point, e.shift);
@@ -142,12 +155,16 @@ namespace GregoryTerrain.EditorTools
                     }
                     e.Use();
                     break;
-                case EventType.MouseUp when e.button == 0 && (_strokeGrid != null || _selectFrom >= 0):
-                    EndStroke();
-                    _selectFrom = -1;
-                    e.Use();
-                    break;
             }
+        }
+
+        /// <summary>Closes the stroke's undo group, ends a selection drag and gives the mouse back.</summary>
+        void EndDrag()
+        {
+            EndStroke();
+            _selectFrom = -1;
+            if (_dragControl != 0 && GUIUtility.hotControl == _dragControl) GUIUtility.hotControl = 0;
+            _dragControl = 0;
         }
 
         void BeginStroke(GregoryTerrainRenderer renderer, PatchGridAsset grid, Vector3 point)
@@ -219,27 +236,25 @@ namespace GregoryTerrain.EditorTools
         static void DrawSelection(GregoryTerrainRenderer renderer, PatchGridAsset grid)
         {
             if (Event.current.type != EventType.Repaint || !(SelectionOf(grid) is PatchRect s)) return;
-            Handles.matrix = renderer.transform.localToWorldMatrix;
+            if (!TerrainScenePoints.TryGet(renderer, out TerrainScenePoints points)) return;
+            Handles.matrix = Matrix4x4.identity;   // world positions, from the renderer's frame
             Handles.color = Color.yellow;
             for (int i = s.I0; i <= s.I1; i++)
             {
-                Edge(grid, s.J0 * grid.Columns + i, 0, 4);
-                Edge(grid, s.J1 * grid.Columns + i, 3, 4);
+                Edge(grid, points, s.J0 * grid.Columns + i, 0, 4);
+                Edge(grid, points, s.J1 * grid.Columns + i, 3, 4);
             }
             for (int j = s.J0; j <= s.J1; j++)
             {
-                Edge(grid, j * grid.Columns + s.I0, 0, 1);
-                Edge(grid, j * grid.Columns + s.I1, 12, 1);
+                Edge(grid, points, j * grid.Columns + s.I0, 0, 1);
+                Edge(grid, points, j * grid.Columns + s.I1, 12, 1);
             }
-            Handles.matrix = Matrix4x4.identity;
         }
 
-        static void Edge(PatchGridAsset grid, int patch, int first, int step)
+        static void Edge(PatchGridAsset grid, TerrainScenePoints points, int patch, int first, int step)
         {
             for (int k = 0; k < 3; k++)
-                Handles.DrawLine(ToObject(grid.GetControlPoint(patch, first + k * step)), ToObject(grid.GetControlPoint(patch, first + (k + 1) * step)));
+                Handles.DrawLine(points.ToWorld(grid.GetControlPoint(patch, first + k * step)), points.ToWorld(grid.GetControlPoint(patch, first + (k + 1) * step)));
         }
-
-        static Vector3 ToObject(Vector3 terrain) => new Vector3(terrain.x, terrain.z, terrain.y);
     }
 }

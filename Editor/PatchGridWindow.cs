@@ -90,7 +90,8 @@ namespace GregoryTerrain.EditorTools
             rawWidth = Mathf.Max(0, EditorGUILayout.IntField(RawSizeLabel, rawWidth));
             rawHeight = Mathf.Max(0, EditorGUILayout.IntField(" ", rawHeight));
             rawVoids = EditorGUILayout.Toggle(RawVoidLabel, rawVoids);
-            if (GUILayout.Button(new GUIContent("Fit to RAW file...", "Least-squares fit to a headerless RAW heightmap in the format above."))) FitRaw();
+            // The RAW buttons open a modal file dialog, which leaves this GUI pass's layout stale: exit it, as Unity's windows do.
+            if (GUILayout.Button(new GUIContent("Fit to RAW file...", "Least-squares fit to a headerless RAW heightmap in the format above."))) { FitRaw(); GUIUtility.ExitGUI(); }
 
             EditorGUILayout.Space();
             PatchRect? selection = PatchGridSculptTool.SelectionOf(asset);
@@ -99,7 +100,7 @@ namespace GregoryTerrain.EditorTools
             {
                 using (new EditorGUI.DisabledScope(heightmap == null))
                     if (GUILayout.Button(RefitTextureLabel)) RefitTexture();
-                if (GUILayout.Button(RefitRawLabel)) RefitRaw();
+                if (GUILayout.Button(RefitRawLabel)) { RefitRaw(); GUIUtility.ExitGUI(); }
             }
 
             EditorGUILayout.Space();
