@@ -25,6 +25,7 @@ namespace GregoryTerrain.EditorTools
         static readonly GUIContent TextureLabel = new GUIContent("Heightmap texture", "Read/Write must be on. R16, RGBA64 (16-bit PNG), RHalf, RFloat, RGBAHalf, RGBAFloat (EXR) are read at full precision; other formats through 8-bit grey.");
         static readonly GUIContent RawFormatLabel = new GUIContent("RAW sample format", "How the RAW file stores a sample: Unity's RAW export is 16-bit unsigned (Windows = little-endian, Mac = big-endian); SRTM .hgt is signed 16-bit big-endian.");
         static readonly GUIContent RawSizeLabel = new GUIContent("RAW width x height", "Samples per row and rows. 0 x 0 reads a square file's size from its length; with one given, the other follows.");
+        static readonly GUIContent RawRowsLabel = new GUIContent("RAW first row", "Which edge of the terrain the first row of the file is. By File Type: north for SRTM .hgt files, south for other RAW files (as Unity's Import Raw). North First is Unity's Flip Vertically.");
         static readonly GUIContent RawVoidLabel = new GUIContent("-32768 is no data", "Treat -32768 as a void (SRTM) and fill it from its neighbours before fitting.");
         static readonly GUIContent HeightScaleLabel = new GUIContent("Height scale", "Terrain units of height for a full-scale sample (white, 65535), or per stored unit for signed 16-bit and float samples.");
         static readonly GUIContent WidthMetresLabel = new GUIContent("Terrain width (m)", "Metres the terrain's x side spans in the scene (the renderer's scale); used to report errors in metres.");
@@ -42,6 +43,7 @@ namespace GregoryTerrain.EditorTools
         [SerializeField] RawSampleFormat rawFormat = RawSampleFormat.UInt16LittleEndian;
         [SerializeField] int rawWidth, rawHeight;
         [SerializeField] bool rawVoids;
+        [SerializeField] RawRowOrder rawRowOrder = RawRowOrder.ByFileType;
         [SerializeField] float heightScale = 0.1f;
         [SerializeField] float widthMetres = 1000f;
         [SerializeField] bool useTarget;
@@ -89,6 +91,7 @@ namespace GregoryTerrain.EditorTools
             rawFormat = (RawSampleFormat)EditorGUILayout.EnumPopup(RawFormatLabel, rawFormat);
             rawWidth = Mathf.Max(0, EditorGUILayout.IntField(RawSizeLabel, rawWidth));
             rawHeight = Mathf.Max(0, EditorGUILayout.IntField(" ", rawHeight));
+            rawRowOrder = (RawRowOrder)EditorGUILayout.EnumPopup(RawRowsLabel, rawRowOrder);
             rawVoids = EditorGUILayout.Toggle(RawVoidLabel, rawVoids);
             // The RAW buttons open a modal file dialog, which leaves this GUI pass's layout stale: exit it, as Unity's windows do.
             if (GUILayout.Button(new GUIContent("Fit to RAW file...", "Least-squares fit to a headerless RAW heightmap in the format above."))) { FitRaw(); GUIUtility.ExitGUI(); }
@@ -195,15 +198,14 @@ namespace GregoryTerrain.EditorTools
             try
             {
                 byte[] bytes = File.ReadAllBytes(path);
-                RawHeightmap.InferSize(name, bytes.Length, rawFormat, ref w, ref h);
-                heights = RawHeightmap.Decode(name, bytes, w, h, rawFormat, rawVoids ? RawHeightmap.SrtmVoid : (int?)null);
+                heights = RawHeightmap.ReadSouthFirst(name, bytes, rawFormat, rawRowOrder, ref w, ref h, rawVoids ? RawHeightmap.SrtmVoid : (int?)null);
             }
             catch (IOException e) { Report($"{name}: {e.Message}", MessageType.Error); return false; }
             catch (ArgumentException e) { Report(e.Message, MessageType.Error); return false; }
             bool unsigned16 = rawFormat == RawSampleFormat.UInt16LittleEndian || rawFormat == RawSampleFormat.UInt16BigEndian;
             double scale = unsigned16 ? heightScale / 65535.0 : heightScale;
             for (int k = 0; k < heights.Length; k++) heights[k] *= scale;
-            source = $"{name} ({w} x {h}, {rawFormat})";
+            source = $"{name} ({w} x {h}, {rawFormat}, first row {(RawHeightmap.FirstRowIsNorth(name, rawRowOrder) ? "north" : "south")})";
             return true;
         }
 
@@ -247,8 +249,8 @@ namespace GregoryTerrain.EditorTools
             var progress = new CancelableProgressBar($"{what}: {source}", cancel);
             try
             {
-                // Texture rows run bottom-up and RAW rows as stored: sample (c, r) lands at
-                // (c / (W-1), r / (H-1)) of the unit square either way (HeightmapFitter's convention).
+                // Texture rows run bottom-up and RAW rows come south first (ReadSouthFirst): sample (c, r)
+                // lands at (c / (W-1), r / (H-1)) of the unit square, y = 0 the south edge, either way.
                 HeightmapFit fit = useTarget
                     ? HeightmapFitter.FitToTarget(heights, width, height, targetMetres / widthMetres, targetKind, MaxSide, progress, cancel.Token)
                     : HeightmapFitter.Fit(heights, width, height, columns, rows, progress, cancel.Token);
