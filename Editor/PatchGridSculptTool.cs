@@ -51,7 +51,13 @@ namespace GregoryTerrain.EditorTools
 
         const string StrokeName = "Sculpt Gregory terrain";
         int _undoGroup = -1;
-        PatchGrid _strokeGrid;          // the grid as Core sees it during a stroke: dabs apply to it and to the asset
+        bool _stroking;
+        // The grid as Core sees it: dabs apply to it and to the asset. Kept between strokes while the
+        // asset's version is the one it matches, so a stroke does not start with a whole-grid copy. Its
+        // patches are its own (it is written in place), never shared with the renderer's grids.
+        PatchGrid _strokeGrid;
+        PatchGridAsset _strokeAsset;
+        int _strokeVersion;
         Vector3 _lastDab;
         double _flattenTarget;
         int _selectFrom = -1;
@@ -150,7 +156,7 @@ namespace GregoryTerrain.EditorTools
                 case EventType.MouseDrag when GUIUtility.hotControl == id:
                     if (hit)
                     {
-                        if (_strokeGrid != null && Distance(point, _lastDab) >= 0.25f * RadiusMetres) Dab(renderer, grid, point, e.shift);
+                        if (_stroking && Distance(point, _lastDab) >= 0.25f * RadiusMetres) Dab(renderer, grid, point, e.shift);
                         Select(renderer, grid, point);
                     }
                     e.Use();
@@ -173,7 +179,13 @@ namespace GregoryTerrain.EditorTools
             Undo.SetCurrentGroupName(StrokeName);
             _undoGroup = Undo.GetCurrentGroup();
             PatchGridAssetUndo.MoveLegacyDataToBlocks(grid, StrokeName);
-            _strokeGrid = grid.ToPatchGrid();
+            if (_strokeAsset != grid || _strokeVersion != grid.Version || _strokeGrid == null)
+            {
+                _strokeGrid = grid.ToPatchGrid();
+                _strokeAsset = grid;
+                _strokeVersion = grid.Version;
+            }
+            _stroking = true;
             _flattenTarget = (float)renderer.WorldToTerrainObject(point).y;   // object y is terrain height z
             Dab(renderer, grid, point, Event.current.shift);
         }
@@ -197,6 +209,7 @@ namespace GregoryTerrain.EditorTools
                 PatchEdit edit = PatchBrush.Apply(_strokeGrid, dab, BrushInsideSelection ? SelectionOf(grid) : null);
                 PatchGridAssetUndo.ApplyEdit(grid, edit, StrokeName);
                 edit.ApplyTo(_strokeGrid);
+                _strokeVersion = grid.Version;
             }
             catch (ArgumentException ex)
             {
@@ -209,7 +222,7 @@ namespace GregoryTerrain.EditorTools
         {
             if (_undoGroup >= 0) Undo.CollapseUndoOperations(_undoGroup);
             _undoGroup = -1;
-            _strokeGrid = null;
+            _stroking = false;
         }
 
         void Select(GregoryTerrainRenderer renderer, PatchGridAsset grid, Vector3 point)

@@ -240,5 +240,68 @@ namespace GregoryTerrain.Rig.Tests
                          " case EventType.MouseUp when e.button == 0 && (_strokeGrid != null): EndStroke(); e.Use(); break;\n}";
             Assert.That(DragProtocolGaps(old).Count, Is.EqualTo(5), string.Join("; ", DragProtocolGaps(old)));
         }
+        // ---- 6, 7, 9: the grid asset's whole-grid work once per content change, not per dab or load ----
+
+        /// <summary>
+        /// Where the authoring code does whole-grid work it should not (issue 36): the asset validating
+        /// every grid Unity loads (OnEnable) or again on each conversion; the renderer re-uploading and the
+        /// query rebuilding the whole grid on a dab without first catching up on the edited patches; a
+        /// whole-grid replacement recording every block for Undo. Keys: file name -> C#.
+        /// </summary>
+        internal static List<string> WholeGridWorkGaps(IDictionary<string, string> files)
+        {
+            var gaps = new List<string>();
+            string Body(string file, string method) =>
+                Methods(files[file]).Where(m => m.name == method).Select(m => m.body).FirstOrDefault() ?? "";
+            string onEnable = Body("PatchGridAsset.cs", "OnEnable");
+            if (Regex.IsMatch(onEnable, @"\b(MarkChanged|CheckSerializedData)\s*\(\s*\)")) gaps.Add("PatchGridAsset.OnEnable validates the whole grid at every load");
+            foreach (var (name, body) in Methods(files["PatchGridAsset.cs"]))
+                if (name != "MarkChanged" && name != "MoveLegacyDataToBlocks" && name != "CheckSerializedData" && Regex.IsMatch(body, @"\bCheckSerializedData\s*\(\s*\)"))
+                    gaps.Add($"PatchGridAsset.{name} validates the whole grid again instead of using the verdict kept since the last change");
+            string apply = Body("PatchGridAsset.cs", "ApplyEdit");
+            if (!Regex.IsMatch(apply, @"_changes\.Add\s*\(")) gaps.Add("PatchGridAsset.ApplyEdit does not log the patches it changed for readers to catch up");
+            string upload = Body("GregoryTerrainRenderer.Buffers.cs", "EnsureUploaded");
+            int partial = upload.IndexOf("TryUploadEditedPatches()", System.StringComparison.Ordinal), release = upload.IndexOf("ReleaseGpuResources()", System.StringComparison.Ordinal);
+            if (partial < 0 || release >= 0 && partial > release) gaps.Add("the renderer uploads the whole grid on an edit without first uploading the edited patches only");
+            string queries = StripComments(files["GregoryTerrainRenderer.Queries.cs"]);
+            int edited = queries.IndexOf("EditedQuery(", System.StringComparison.Ordinal), rebuilt = queries.IndexOf("new TerrainSurfaceQuery(", System.StringComparison.Ordinal);
+            if (edited < 0 || rebuilt >= 0 && edited > rebuilt) gaps.Add("the query is rebuilt on an edit without first catching up on the edited patches");
+            string setGrid = Body("PatchGridAssetUndo.cs", "SetGrid");
+            Match recorded = Regex.Match(setGrid, @"Undo\.RecordObjects\s*\(\s*(\w+)");
+            if (!recorded.Success || !Regex.IsMatch(setGrid, $@"\b{recorded.Groups[1].Value}\s*=\s*asset\.BlocksChangedBy\s*\("))
+                gaps.Add("a whole-grid replacement records blocks whose bits do not change");
+            return gaps;
+        }
+
+        static Dictionary<string, string> AuthoringSources()
+        {
+            var files = new Dictionary<string, string>();
+            foreach (string name in new[] { "PatchGridAsset.cs", "GregoryTerrainRenderer.Buffers.cs", "GregoryTerrainRenderer.Queries.cs" })
+                files[name] = File.ReadAllText(PackageRoot.Combine("Runtime", name));
+            files["PatchGridAssetUndo.cs"] = File.ReadAllText(PackageRoot.Combine("Editor", "PatchGridAssetUndo.cs"));
+            return files;
+        }
+
+        [Test]
+        public void WholeGridWorkRunsOncePerContentChange()
+        {
+            Assert.That(WholeGridWorkGaps(AuthoringSources()), Is.Empty);
+        }
+
+        [Test]
+        public void WholeGridWorkCheckRejectsTheOldPaths()
+        {
+            var old = new Dictionary<string, string>
+            {
+                ["PatchGridAsset.cs"] = "void OnEnable() => MarkChanged();\npublic void MarkChanged() { _error = CheckSerializedData(); }\n" +
+                                        "internal PatchGrid ToPatchGrid()\n{\n string error = CheckSerializedData();\n return null;\n}\n" +
+                                        "internal void ApplyEdit(PatchEdit edit)\n{\n _version = s_NextVersion++;\n _fingerprint = Fingerprint();\n}",
+                ["GregoryTerrainRenderer.Buffers.cs"] = "bool EnsureUploaded()\n{\n if (_uploadedVersion == grid.Version) return true;\n ReleaseGpuResources();\n return true;\n}",
+                ["GregoryTerrainRenderer.Queries.cs"] = "try { _query = new TerrainSurfaceQuery(grid.ToPatchGrid(), noise, tiledNoise: tiled); }",
+                ["PatchGridAssetUndo.cs"] = "public static void SetGrid(PatchGridAsset asset, PatchGrid grid, string undoName)\n{\n Undo.RecordObject(asset, undoName);\n" +
+                                            " PatchGridBlock[] existing = asset.Blocks;\n if (existing.Length > 0) Undo.RecordObjects(existing, undoName);\n}",
+            };
+            Assert.That(WholeGridWorkGaps(old).Count, Is.EqualTo(6), string.Join("\n", WholeGridWorkGaps(old)));
+        }
     }
 }
