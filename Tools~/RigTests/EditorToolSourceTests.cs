@@ -303,5 +303,44 @@ namespace GregoryTerrain.Rig.Tests
             };
             Assert.That(WholeGridWorkGaps(old).Count, Is.EqualTo(6), string.Join("\n", WholeGridWorkGaps(old)));
         }
+        // ---- 8. Fit to texture reads the file's heights or refuses ----------------------------------
+
+        /// <summary>
+        /// Methods that read a texture's texels (GetRawTextureData, GetPixels) without first checking,
+        /// through a method of the same file, that the import holds its file's heights: the file's size
+        /// from its importer (GetSourceTextureWidthAndHeight: Max Size and Non-Power of 2 scaling
+        /// resample) and an uncompressed format (GraphicsFormatUtility.IsCompressedFormat).
+        /// </summary>
+        internal static List<string> UncheckedTextureReads(string code)
+        {
+            var methods = Methods(code);
+            var checks = methods.Where(m => m.body.Contains("GetSourceTextureWidthAndHeight(") && m.body.Contains("IsCompressedFormat(")).Select(m => m.name).ToList();
+            var found = new List<string>();
+            foreach (var (name, body) in methods)
+            {
+                Match read = Regex.Match(body, @"\.(GetRawTextureData|GetPixels)\s*\(");
+                if (!read.Success) continue;
+                string before = body.Substring(0, read.Index);
+                if (!checks.Any(c => Regex.IsMatch(before, $@"(?<![\w.]){c}\s*\(")) || !Regex.IsMatch(before, @"\breturn\b"))
+                    found.Add($"{name} reads {read.Groups[1].Value} without checking the import against the file");
+            }
+            return found;
+        }
+
+        [Test]
+        public void FitToTextureChecksTheImportAgainstItsFile()
+        {
+            string window = EditorSources()["Editor/PatchGridWindow.cs"];
+            Assert.That(window, Does.Contain("GetRawTextureData"), "the window reads texels");
+            Assert.That(UncheckedTextureReads(window), Is.Empty);
+        }
+
+        [Test]
+        public void TextureReadCheckRejectsAReadOfTheImportAsIs()
+        {
+            string old = "bool ReadTexture(out double[] heights)\n{\n heights = null;\n if (!heightmap.isReadable) { Report(\"not readable\"); return false; }\n" +
+                         " heights = TextureHeights.Decode(heightmap.name, heightmap.GetRawTextureData(), heightmap.width, heightmap.height, texel);\n return true;\n}";
+            Assert.That(UncheckedTextureReads(old), Is.EqualTo(new[] { "ReadTexture reads GetRawTextureData without checking the import against the file" }));
+        }
     }
 }

@@ -201,5 +201,16 @@ namespace GregoryTerrain.Rig.Tests
             Assert.That(PatchGridBlocks.Combine(5, hashes), Is.EqualTo(PatchGridBlocks.Fingerprint(after, 5)));
             Assert.That(PatchGridBlocks.Fingerprint(after, 5), Is.Not.EqualTo(PatchGridBlocks.Fingerprint(current, 5)));
         }
+        [Test]
+        public void ATextureImportThatResamplesOrCompressesItsFileIsRefused()
+        {
+            Assert.That(TextureHeights.ImportProblem("h", 4097, 4097, 4097, 4097, "R16", compressed: false, readable: true), Is.Null);
+            string capped = TextureHeights.ImportProblem("h", 4097, 4097, 2048, 2048, "R16", compressed: false, readable: true);
+            Assert.That(capped, Does.Contain("'h'").And.Contain("imported at 2048 x 2048").And.Contain("file is 4097 x 4097"));
+            string compressed = TextureHeights.ImportProblem("h", 513, 513, 513, 513, "DXT1", compressed: true, readable: true);
+            Assert.That(compressed, Does.Contain("compressed (DXT1)").And.Contain("Compression to None"));
+            string all = TextureHeights.ImportProblem("h", 1000, 600, 1024, 512, "BC6H", compressed: true, readable: false);
+            Assert.That(all, Does.Contain("Read/Write is off").And.Contain("imported at 1024 x 512 but its file is 1000 x 600").And.Contain("BC6H"));
+        }
     }
 }

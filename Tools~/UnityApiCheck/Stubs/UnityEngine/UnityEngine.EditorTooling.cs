@@ -1,6 +1,7 @@
 // STUB members of UnityEngine's IMGUI used by the editor tools' fixes for issue 36 (the sculpt
-// tool's hot control, leaving the GUI after a modal dialog), checked against UnityCsReference 2022.3:
-// Modules/IMGUI/GUIUtility.cs, Modules/IMGUI/Event.bindings.cs. SR:<Page> as in UnityEngine.cs.
+// tool's hot control, leaving the GUI after a modal dialog, the heightmap's compression check), checked
+// against UnityCsReference 2022.3: Modules/IMGUI/GUIUtility.cs, Modules/IMGUI/Event.bindings.cs,
+// Runtime/Export/Graphics/GraphicsFormatUtility.bindings.cs. SR:<Page> as in UnityEngine.cs.
 // NOT Unity's assembly: signatures only.
 #pragma warning disable CS1591
 
@@ -16,5 +17,13 @@ namespace UnityEngine
     public sealed partial class Event
     {
         public EventType GetTypeForControl(int controlID) => default;                       // SR:Event.GetTypeForControl
+    }
+}
+
+namespace UnityEngine.Experimental.Rendering
+{
+    public class GraphicsFormatUtility                                                       // SR:Experimental.Rendering.GraphicsFormatUtility
+    {
+        public static bool IsCompressedFormat(TextureFormat format) => false;               // SR:Experimental.Rendering.GraphicsFormatUtility.IsCompressedFormat
     }
 }
