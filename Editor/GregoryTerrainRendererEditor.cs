@@ -160,18 +160,13 @@ namespace GregoryTerrain.EditorTools
         {
             var r = (GregoryTerrainRenderer)target;
             PatchGridAsset grid = r.Grid;
-            if (grid == null || !grid.IsValid) return;
-            Handles.matrix = r.transform.localToWorldMatrix;
-            if (r.debugShowPatchWireframe) DrawWireframe(grid);
-            if (r.debugShowControlPoints) EditControlPoints(r, grid);
-            Handles.matrix = Matrix4x4.identity;
+            if (grid == null || !grid.IsValid || !TerrainScenePoints.TryGet(r, out TerrainScenePoints points)) return;
+            Handles.matrix = Matrix4x4.identity;   // world positions, from the renderer's frame
+            if (r.debugShowPatchWireframe) DrawWireframe(grid, points);
+            if (r.debugShowControlPoints) EditControlPoints(r, grid, points);
         }
 
-        // Terrain point (x, y, z) -> object position (x, z, y): Unity is Y-up.
-        static Vector3 ToObject(Vector3 terrain) => new Vector3(terrain.x, terrain.z, terrain.y);
-        static Vector3 ToTerrain(Vector3 obj) => new Vector3(obj.x, obj.z, obj.y);
-
-        static void DrawWireframe(PatchGridAsset grid)
+        static void DrawWireframe(PatchGridAsset grid, TerrainScenePoints points)
         {
             Handles.color = Color.cyan;
             for (int p = 0; p < grid.PatchCount; p++)
@@ -179,23 +174,23 @@ namespace GregoryTerrain.EditorTools
                 // The four boundary curves' control polygons (slots 0-3, 12-15, 0-12, 3-15).
                 for (int k = 0; k < 3; k++)
                 {
-                    Line(grid, p, k, k + 1);
-                    Line(grid, p, 12 + k, 13 + k);
-                    Line(grid, p, 4 * k, 4 * k + 4);
-                    Line(grid, p, 4 * k + 3, 4 * k + 7);
+                    Line(grid, points, p, k, k + 1);
+                    Line(grid, points, p, 12 + k, 13 + k);
+                    Line(grid, points, p, 4 * k, 4 * k + 4);
+                    Line(grid, points, p, 4 * k + 3, 4 * k + 7);
                 }
             }
         }
 
-        static void Line(PatchGridAsset grid, int p, int a, int b) =>
-            Handles.DrawLine(ToObject(grid.GetControlPoint(p, a)), ToObject(grid.GetControlPoint(p, b)));
+        static void Line(PatchGridAsset grid, TerrainScenePoints points, int p, int a, int b) =>
+            Handles.DrawLine(points.ToWorld(grid.GetControlPoint(p, a)), points.ToWorld(grid.GetControlPoint(p, b)));
 
         /// <summary>
         /// Buttons for the control points of the chosen patch and its eight neighbours only (180 at
         /// most, not 20 for every patch of the grid): a click on the terrain chooses the patch under
         /// the mouse, a click on a button picks that point for the move handle.
         /// </summary>
-        void EditControlPoints(GregoryTerrainRenderer r, PatchGridAsset grid)
+        void EditControlPoints(GregoryTerrainRenderer r, PatchGridAsset grid, TerrainScenePoints points)
         {
             if (_nearPatch >= grid.PatchCount) _nearPatch = -1;
             if (_nearPatch >= 0)
@@ -206,7 +201,7 @@ namespace GregoryTerrain.EditorTools
                 for (int s = 0; s < GregoryPatch.SlotCount; s++)
                 {
                     int p = j * grid.Columns + i;
-                    Vector3 pos = ToObject(grid.GetControlPoint(p, s));
+                    Vector3 pos = points.ToWorld(grid.GetControlPoint(p, s));
                     float size = 0.06f * HandleUtility.GetHandleSize(pos);
                     Handles.color = s >= 16 ? Color.yellow : Color.white;
                     if (Handles.Button(pos, Quaternion.identity, size, size, Handles.DotHandleCap))
@@ -224,12 +219,12 @@ namespace GregoryTerrain.EditorTools
                 e.Use();
             }
             if (_selectedPatch < 0 || _selectedPatch >= grid.PatchCount) return;
-            Vector3 current = ToObject(grid.GetControlPoint(_selectedPatch, _selectedSlot));
+            Vector3 current = points.ToWorld(grid.GetControlPoint(_selectedPatch, _selectedSlot));
             EditorGUI.BeginChangeCheck();
             Vector3 moved = Handles.PositionHandle(current, Quaternion.identity);
             if (EditorGUI.EndChangeCheck())
             {
-                PatchGridAssetUndo.MoveControlPoint(grid, _selectedPatch, _selectedSlot, ToTerrain(moved));
+                PatchGridAssetUndo.MoveControlPoint(grid, _selectedPatch, _selectedSlot, points.ToTerrain(moved));
             }
         }
     }

@@ -29,7 +29,28 @@ namespace GregoryTerrain.EditorTools
         static void FactorUp() => ChangeSelected("Uniform factor +", r => r.UniformFactor = r.UniformFactor + 1);
 
         [Shortcut("Gregory Terrain/Sculpt Tool", typeof(SceneView), KeyCode.B)]
-        static void SculptTool() => UnityEditor.EditorTools.ToolManager.SetActiveTool<PatchGridSculptTool>();
+        static void SculptTool()
+        {
+            // ToolManager.SetActiveTool throws InvalidOperationException when the selection has no
+            // terrain for the tool: check first and do nothing, as Unity's own tool shortcuts do.
+            if (!SculptToolAvailable())
+            {
+                SceneView.lastActiveSceneView?.ShowNotification(new GUIContent("Select a Gregory terrain to sculpt it."));
+                return;
+            }
+            UnityEditor.EditorTools.ToolManager.SetActiveTool<PatchGridSculptTool>();
+        }
+
+        /// <summary>
+        /// Whether Unity has made the sculpt tool for the selection: it makes a component tool for the
+        /// components the Inspector shows, which with several GameObjects selected are only those every
+        /// one of them has.
+        /// </summary>
+        static bool SculptToolAvailable()
+        {
+            GameObject[] selected = Selection.gameObjects;
+            return selected.Length > 0 && Array.TrueForAll(selected, g => g.GetComponent<GregoryTerrainRenderer>() != null);
+        }
 
         [Shortcut("Gregory Terrain/Shrink Sculpt Brush", typeof(SceneView), KeyCode.LeftBracket, ShortcutModifiers.Shift)]
         static void ShrinkBrush() => PatchGridSculptTool.ScaleBrush(1f / 1.2f);

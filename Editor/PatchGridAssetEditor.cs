@@ -48,9 +48,10 @@ namespace GregoryTerrain.EditorTools
                     _measure = Measure(asset.ToPatchGrid());
                 }
                 if (_measure != null) EditorGUILayout.HelpBox(_measure, MessageType.None);
-                if (GUILayout.Button(ExportLabel)) Export(asset);
+                // A modal dialog leaves this GUI pass's layout stale: exit it, as Unity's inspectors do.
+                if (GUILayout.Button(ExportLabel)) { Export(asset); GUIUtility.ExitGUI(); }
             }
-            if (GUILayout.Button(ImportLabel)) Import(asset);
+            if (GUILayout.Button(ImportLabel)) { Import(asset); GUIUtility.ExitGUI(); }
 
             EditorGUILayout.Space();
             DrawDefaultInspector();

@@ -10,8 +10,8 @@ namespace GregoryTerrain.EditorTools
     /// Every editor change to a <see cref="PatchGridAsset"/> goes through here: one undo step each,
     /// recording only what the change touches. A control point move records the blocks (64 patches,
     /// 30,720 bytes of doubles each) holding the point and its shared copies, not the grid; a whole-grid
-    /// change (fit, flat, G1, import) records the asset and all its blocks, and creates or destroys
-    /// block sub-assets with Undo when the patch count changes.
+    /// change (fit, flat, G1, import) records the asset and the blocks whose bits change, and creates or
+    /// destroys block sub-assets with Undo when the patch count changes.
     /// </summary>
     [InitializeOnLoad]
     internal static class PatchGridAssetUndo
@@ -40,16 +40,21 @@ namespace GregoryTerrain.EditorTools
             EditorUtility.SetDirty(asset);
         }
 
-        /// <summary>Replaces the whole grid: one undo step named <paramref name="undoName"/>.</summary>
+        /// <summary>
+        /// Replaces the whole grid: one undo step named <paramref name="undoName"/> that records the
+        /// asset (shape, lines, block list) and only the blocks whose bits change; blocks the new grid
+        /// no longer needs are destroyed with Undo, new ones created with it.
+        /// </summary>
         public static void SetGrid(PatchGridAsset asset, PatchGrid grid, string undoName)
         {
+            double[][] data = PatchGridBlocks.FromGrid(grid);
+            PatchGridBlock[] changed = asset.BlocksChangedBy(data);
             Undo.RecordObject(asset, undoName);
-            PatchGridBlock[] existing = asset.Blocks;
-            if (existing.Length > 0) Undo.RecordObjects(existing, undoName);
-            asset.SetGrid(grid, out PatchGridBlock[] created, out PatchGridBlock[] dropped);
+            if (changed.Length > 0) Undo.RecordObjects(changed, undoName);
+            asset.SetGrid(grid, data, out PatchGridBlock[] created, out PatchGridBlock[] dropped);
             Persist(asset, created, undoName);
             foreach (PatchGridBlock b in dropped) Undo.DestroyObjectImmediate(b);
-            foreach (PatchGridBlock b in asset.Blocks) EditorUtility.SetDirty(b);
+            foreach (PatchGridBlock b in changed) EditorUtility.SetDirty(b);
             EditorUtility.SetDirty(asset);
         }
 

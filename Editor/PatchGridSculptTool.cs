@@ -51,10 +51,18 @@ namespace GregoryTerrain.EditorTools
 
         const string StrokeName = "Sculpt Gregory terrain";
         int _undoGroup = -1;
-        PatchGrid _strokeGrid;          // the grid as Core sees it during a stroke: dabs apply to it and to the asset
+        bool _stroking;
+        // The grid as Core sees it: dabs apply to it and to the asset. Kept between strokes while the
+        // asset's version is the one it matches, so a stroke does not start with a whole-grid copy. Its
+        // patches are its own (it is written in place), never shared with the renderer's grids.
+        PatchGrid _strokeGrid;
+        PatchGridAsset _strokeAsset;
+        int _strokeVersion;
         Vector3 _lastDab;
         double _flattenTarget;
         int _selectFrom = -1;
+        int _dragControl;               // the control ID holding GUIUtility.hotControl during a drag, else 0
+        static readonly int ControlHint = "GregoryTerrainSculptTool".GetHashCode();
 
         public override GUIContent toolbarIcon => Icon;
 
@@ -99,23 +107,32 @@ namespace GregoryTerrain.EditorTools
             return Selection;
         }
 
-        public override void OnWillBeDeactivated() => EndStroke();
+        public override void OnWillBeDeactivated() => EndDrag();
 
         public override void OnToolGUI(EditorWindow window)
         {
+            Event e = Event.current;
+            int id = GUIUtility.GetControlID(ControlHint, FocusType.Passive);
+            // The type as this control sees it: while the tool holds the hot control, Unity sends it the
+            // drag and the release even when the mouse is outside the Scene view.
+            EventType type = e.GetTypeForControl(id);
+            if (type == EventType.MouseUp && GUIUtility.hotControl == id)
+            {
+                EndDrag();   // before anything that may return early: the undo group and the mouse are always released
+                e.Use();
+                return;
+            }
             if (!(window is SceneView)) return;
             var renderer = target as GregoryTerrainRenderer;
             if (renderer == null) return;
             PatchGridAsset grid = renderer.Grid;
             if (grid == null || !grid.IsValid) return;
-            Event e = Event.current;
-            int id = GUIUtility.GetControlID(FocusType.Passive);
-            if (e.type == EventType.Layout) HandleUtility.AddDefaultControl(id);   // clicks paint instead of selecting other objects
+            if (type == EventType.Layout) HandleUtility.AddDefaultControl(id);   // clicks paint instead of selecting other objects
 
             DrawSelection(renderer, grid);
             Ray ray = HandleUtility.GUIPointToWorldRay(e.mousePosition);
             bool hit = renderer.Raycast(ray, float.PositiveInfinity, out Vector3 point, out Vector3 normal, out _);
-            if (hit && e.type == EventType.Repaint && Mode != SculptMode.SelectPatches)
+            if (hit && type == EventType.Repaint && Mode != SculptMode.SelectPatches)
             {
                 Handles.matrix = Matrix4x4.identity;   // the disc is in world space
                 Handles.color = Mode == SculptMode.Smooth ? Color.cyan : Mode == SculptMode.Flatten ? Color.yellow : (Mode == SculptMode.Lower) != e.shift ? Color.red : Color.green;
@@ -123,31 +140,37 @@ namespace GregoryTerrain.EditorTools
                 Handles.DrawWireDisc(point, normal, 0.5f * RadiusMetres);
             }
 
-            switch (e.type)
+            switch (type)
             {
                 case EventType.MouseMove:
                     HandleUtility.Repaint();
                     break;
-                case EventType.MouseDown when e.button == 0 && !e.alt && hit:
+                // Another control (a handle, the camera) owns the mouse: leave its click alone.
+                case EventType.MouseDown when e.button == 0 && !e.alt && hit && GUIUtility.hotControl == 0:
+                    GUIUtility.hotControl = _dragControl = id;   // the drag and the release come here, wherever the mouse goes
                     if (Mode == SculptMode.SelectPatches) _selectFrom = PatchUnder(renderer, grid, point);
                     else BeginStroke(renderer, grid, point);
                     Select(renderer, grid, point);
                     e.Use();
                     break;
-                case EventType.MouseDrag when e.button == 0 && (_strokeGrid != null || _selectFrom >= 0):
+                case EventType.MouseDrag when GUIUtility.hotControl == id:
                     if (hit)
                     {
-                        if (_strokeGrid != null && Distance(point, _lastDab) >= 0.25f * RadiusMetres) Dab(renderer, grid, point, e.shift);
+                        if (_stroking && Distance(point, _lastDab) >= 0.25f * RadiusMetres) Dab(renderer, grid, point, e.shift);
                         Select(renderer, grid, point);
                     }
                     e.Use();
                     break;
-                case EventType.MouseUp when e.button == 0 && (_strokeGrid != null || _selectFrom >= 0):
-                    EndStroke();
-                    _selectFrom = -1;
-                    e.Use();
-                    break;
             }
+        }
+
+        /// <summary>Closes the stroke's undo group, ends a selection drag and gives the mouse back.</summary>
+        void EndDrag()
+        {
+            EndStroke();
+            _selectFrom = -1;
+            if (_dragControl != 0 && GUIUtility.hotControl == _dragControl) GUIUtility.hotControl = 0;
+            _dragControl = 0;
         }
 
         void BeginStroke(GregoryTerrainRenderer renderer, PatchGridAsset grid, Vector3 point)
@@ -156,7 +179,13 @@ namespace GregoryTerrain.EditorTools
             Undo.SetCurrentGroupName(StrokeName);
             _undoGroup = Undo.GetCurrentGroup();
             PatchGridAssetUndo.MoveLegacyDataToBlocks(grid, StrokeName);
-            _strokeGrid = grid.ToPatchGrid();
+            if (_strokeAsset != grid || _strokeVersion != grid.Version || _strokeGrid == null)
+            {
+                _strokeGrid = grid.ToPatchGrid();
+                _strokeAsset = grid;
+                _strokeVersion = grid.Version;
+            }
+            _stroking = true;
             _flattenTarget = (float)renderer.WorldToTerrainObject(point).y;   // object y is terrain height z
             Dab(renderer, grid, point, Event.current.shift);
         }
@@ -180,6 +209,7 @@ namespace GregoryTerrain.EditorTools
                 PatchEdit edit = PatchBrush.Apply(_strokeGrid, dab, BrushInsideSelection ? SelectionOf(grid) : null);
                 PatchGridAssetUndo.ApplyEdit(grid, edit, StrokeName);
                 edit.ApplyTo(_strokeGrid);
+                _strokeVersion = grid.Version;
             }
             catch (ArgumentException ex)
             {
@@ -192,7 +222,7 @@ namespace GregoryTerrain.EditorTools
         {
             if (_undoGroup >= 0) Undo.CollapseUndoOperations(_undoGroup);
             _undoGroup = -1;
-            _strokeGrid = null;
+            _stroking = false;
         }
 
         void Select(GregoryTerrainRenderer renderer, PatchGridAsset grid, Vector3 point)
@@ -219,27 +249,25 @@ namespace GregoryTerrain.EditorTools
         static void DrawSelection(GregoryTerrainRenderer renderer, PatchGridAsset grid)
         {
             if (Event.current.type != EventType.Repaint || !(SelectionOf(grid) is PatchRect s)) return;
-            Handles.matrix = renderer.transform.localToWorldMatrix;
+            if (!TerrainScenePoints.TryGet(renderer, out TerrainScenePoints points)) return;
+            Handles.matrix = Matrix4x4.identity;   // world positions, from the renderer's frame
             Handles.color = Color.yellow;
             for (int i = s.I0; i <= s.I1; i++)
             {
-                Edge(grid, s.J0 * grid.Columns + i, 0, 4);
-                Edge(grid, s.J1 * grid.Columns + i, 3, 4);
+                Edge(grid, points, s.J0 * grid.Columns + i, 0, 4);
+                Edge(grid, points, s.J1 * grid.Columns + i, 3, 4);
             }
             for (int j = s.J0; j <= s.J1; j++)
             {
-                Edge(grid, j * grid.Columns + s.I0, 0, 1);
-                Edge(grid, j * grid.Columns + s.I1, 12, 1);
+                Edge(grid, points, j * grid.Columns + s.I0, 0, 1);
+                Edge(grid, points, j * grid.Columns + s.I1, 12, 1);
             }
-            Handles.matrix = Matrix4x4.identity;
         }
 
-        static void Edge(PatchGridAsset grid, int patch, int first, int step)
+        static void Edge(PatchGridAsset grid, TerrainScenePoints points, int patch, int first, int step)
         {
             for (int k = 0; k < 3; k++)
-                Handles.DrawLine(ToObject(grid.GetControlPoint(patch, first + k * step)), ToObject(grid.GetControlPoint(patch, first + (k + 1) * step)));
+                Handles.DrawLine(points.ToWorld(grid.GetControlPoint(patch, first + k * step)), points.ToWorld(grid.GetControlPoint(patch, first + (k + 1) * step)));
         }
-
-        static Vector3 ToObject(Vector3 terrain) => new Vector3(terrain.x, terrain.z, terrain.y);
     }
 }

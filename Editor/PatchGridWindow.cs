@@ -4,6 +4,7 @@ using System.Threading;
 using GregoryTerrain;
 using UnityEditor;
 using UnityEngine;
+using UnityEngine.Experimental.Rendering;
 
 namespace GregoryTerrain.EditorTools
 {
@@ -18,13 +19,16 @@ namespace GregoryTerrain.EditorTools
     {
         /// <summary>Patches a side the window offers; GpuLayout.CheckSize holds the GPU's own limit (documented in the manual).</summary>
         const int MaxSide = 1024;
+        /// <summary>The largest Max Size a texture import offers.</summary>
+        const int MaxImportSize = 16384;
 
         static readonly GUIContent AssetLabel = new GUIContent("Patch grid", "The asset the buttons below change.");
         static readonly GUIContent ColumnsLabel = new GUIContent("Columns (n)", "Patches along x (1 to 1024).");
         static readonly GUIContent RowsLabel = new GUIContent("Rows (m)", "Patches along y (1 to 1024).");
-        static readonly GUIContent TextureLabel = new GUIContent("Heightmap texture", "Read/Write must be on. R16, RGBA64 (16-bit PNG), RHalf, RFloat, RGBAHalf, RGBAFloat (EXR) are read at full precision; other formats through 8-bit grey.");
+        static readonly GUIContent TextureLabel = new GUIContent("Heightmap texture", "Imported readable, uncompressed, at its file's size. R16, RGBA64 (16-bit PNG), RHalf, RFloat and EXR formats keep full precision; others are read as 8-bit grey.");
         static readonly GUIContent RawFormatLabel = new GUIContent("RAW sample format", "How the RAW file stores a sample: Unity's RAW export is 16-bit unsigned (Windows = little-endian, Mac = big-endian); SRTM .hgt is signed 16-bit big-endian.");
         static readonly GUIContent RawSizeLabel = new GUIContent("RAW width x height", "Samples per row and rows. 0 x 0 reads a square file's size from its length; with one given, the other follows.");
+        static readonly GUIContent RawRowsLabel = new GUIContent("RAW first row", "Which edge of the terrain the first row of the file is. By File Type: north for SRTM .hgt files, south for other RAW files (as Unity's Import Raw). North First is Unity's Flip Vertically.");
         static readonly GUIContent RawVoidLabel = new GUIContent("-32768 is no data", "Treat -32768 as a void (SRTM) and fill it from its neighbours before fitting.");
         static readonly GUIContent HeightScaleLabel = new GUIContent("Height scale", "Terrain units of height for a full-scale sample (white, 65535), or per stored unit for signed 16-bit and float samples.");
         static readonly GUIContent WidthMetresLabel = new GUIContent("Terrain width (m)", "Metres the terrain's x side spans in the scene (the renderer's scale); used to report errors in metres.");
@@ -32,6 +36,7 @@ namespace GregoryTerrain.EditorTools
         static readonly GUIContent TargetErrorLabel = new GUIContent("Target error (m)", "The largest acceptable error, in metres.");
         static readonly GUIContent TargetKindLabel = new GUIContent("Error measured as", "Max: the worst sample. Rms: the root mean square over all samples.");
 
+        static readonly GUIContent FixImportLabel = new GUIContent("Fix import settings", "Reimport the texture readable, uncompressed and at its file's size, so the fit reads the file's heights.");
         static readonly GUIContent SelectionLabel = new GUIContent("Selected patches", "The patches picked in the Scene view with the Sculpt tool's Select Patches mode.");
         static readonly GUIContent RefitTextureLabel = new GUIContent("Refit selection to texture", "Fit only the selected patches to the heightmap texture above (it covers the whole terrain). The border with other patches stays.");
         static readonly GUIContent RefitRawLabel = new GUIContent("Refit selection to RAW file...", "Fit only the selected patches to a RAW heightmap of the whole terrain, in the format above. The border with other patches stays.");
@@ -42,6 +47,7 @@ namespace GregoryTerrain.EditorTools
         [SerializeField] RawSampleFormat rawFormat = RawSampleFormat.UInt16LittleEndian;
         [SerializeField] int rawWidth, rawHeight;
         [SerializeField] bool rawVoids;
+        [SerializeField] RawRowOrder rawRowOrder = RawRowOrder.ByFileType;
         [SerializeField] float heightScale = 0.1f;
         [SerializeField] float widthMetres = 1000f;
         [SerializeField] bool useTarget;
@@ -82,24 +88,34 @@ namespace GregoryTerrain.EditorTools
 
             EditorGUILayout.Space();
             heightmap = (Texture2D)EditorGUILayout.ObjectField(TextureLabel, heightmap, typeof(Texture2D), false);
-            using (new EditorGUI.DisabledScope(heightmap == null))
+            TextureImporter importer = null;
+            string importProblem = heightmap != null ? ImportProblem(heightmap, out importer, out _, out _) : null;
+            if (importProblem != null)
+            {
+                EditorGUILayout.HelpBox(importProblem, MessageType.Warning);
+                // Reimporting reloads the texture: leave this GUI pass, whose layout no longer holds.
+                if (importer != null && GUILayout.Button(FixImportLabel)) { FixImport(heightmap); GUIUtility.ExitGUI(); }
+            }
+            using (new EditorGUI.DisabledScope(heightmap == null || importProblem != null))
                 if (GUILayout.Button(new GUIContent("Fit to texture", "Least-squares fit of a G1 grid to every texel (Core's HeightmapFitter)."))) FitTexture();
 
             EditorGUILayout.Space();
             rawFormat = (RawSampleFormat)EditorGUILayout.EnumPopup(RawFormatLabel, rawFormat);
             rawWidth = Mathf.Max(0, EditorGUILayout.IntField(RawSizeLabel, rawWidth));
             rawHeight = Mathf.Max(0, EditorGUILayout.IntField(" ", rawHeight));
+            rawRowOrder = (RawRowOrder)EditorGUILayout.EnumPopup(RawRowsLabel, rawRowOrder);
             rawVoids = EditorGUILayout.Toggle(RawVoidLabel, rawVoids);
-            if (GUILayout.Button(new GUIContent("Fit to RAW file...", "Least-squares fit to a headerless RAW heightmap in the format above."))) FitRaw();
+            // The RAW buttons open a modal file dialog, which leaves this GUI pass's layout stale: exit it, as Unity's windows do.
+            if (GUILayout.Button(new GUIContent("Fit to RAW file...", "Least-squares fit to a headerless RAW heightmap in the format above."))) { FitRaw(); GUIUtility.ExitGUI(); }
 
             EditorGUILayout.Space();
             PatchRect? selection = PatchGridSculptTool.SelectionOf(asset);
             EditorGUILayout.LabelField(SelectionLabel, new GUIContent(selection is PatchRect sel ? $"columns {sel.I0} to {sel.I1}, rows {sel.J0} to {sel.J1}" : "none (Sculpt tool, Select Patches)"));
             using (new EditorGUI.DisabledScope(!asset.IsValid || selection == null))
             {
-                using (new EditorGUI.DisabledScope(heightmap == null))
+                using (new EditorGUI.DisabledScope(heightmap == null || importProblem != null))
                     if (GUILayout.Button(RefitTextureLabel)) RefitTexture();
-                if (GUILayout.Button(RefitRawLabel)) RefitRaw();
+                if (GUILayout.Button(RefitRawLabel)) { RefitRaw(); GUIUtility.ExitGUI(); }
             }
 
             EditorGUILayout.Space();
@@ -134,9 +150,10 @@ namespace GregoryTerrain.EditorTools
         {
             heights = null;
             source = null;
-            if (!heightmap.isReadable)
+            string problem = ImportProblem(heightmap, out _, out _, out _);
+            if (problem != null)
             {
-                Report($"'{heightmap.name}' is not readable: enable Read/Write in its import settings.", MessageType.Error);
+                Report(problem + " The grid was not changed.", MessageType.Error);
                 return false;
             }
             string precision;
@@ -156,6 +173,37 @@ namespace GregoryTerrain.EditorTools
             for (int k = 0; k < heights.Length; k++) heights[k] *= heightScale;
             source = $"'{heightmap.name}' ({precision})";
             return true;
+        }
+
+        /// <summary>
+        /// Why the texture as imported does not hold its file's heights (Core's TextureHeights.ImportProblem),
+        /// or null. The file's size comes from its importer; a texture with no file of its own is its own source.
+        /// </summary>
+        static string ImportProblem(Texture2D texture, out TextureImporter importer, out int sourceWidth, out int sourceHeight)
+        {
+            importer = AssetImporter.GetAtPath(AssetDatabase.GetAssetPath(texture)) as TextureImporter;
+            sourceWidth = texture.width; sourceHeight = texture.height;
+            importer?.GetSourceTextureWidthAndHeight(out sourceWidth, out sourceHeight);
+            return TextureHeights.ImportProblem(texture.name, sourceWidth, sourceHeight, texture.width, texture.height,
+                texture.format.ToString(), GraphicsFormatUtility.IsCompressedFormat(texture.format), texture.isReadable);
+        }
+
+        /// <summary>Imports the texture so that it holds its file's heights: readable, uncompressed, at the file's size.</summary>
+        void FixImport(Texture2D texture)
+        {
+            ImportProblem(texture, out TextureImporter importer, out int w, out int h);
+            int side = Math.Max(w, h);
+            if (side > MaxImportSize)
+            {
+                Report($"'{texture.name}' is {w} x {h}: Unity imports textures up to {MaxImportSize} a side. Export it as RAW and use Fit to RAW file.", MessageType.Error);
+                return;
+            }
+            importer.isReadable = true;
+            importer.textureCompression = TextureImporterCompression.Uncompressed;
+            importer.npotScale = TextureImporterNPOTScale.None;
+            while (importer.maxTextureSize < side) importer.maxTextureSize *= 2;
+            importer.SaveAndReimport();
+            Report($"'{texture.name}' reimported readable, uncompressed, at {w} x {h}.", MessageType.Info);
         }
 
         static bool TryTexelFormat(TextureFormat format, out HeightTexelFormat texel)
@@ -194,15 +242,14 @@ namespace GregoryTerrain.EditorTools
             try
             {
                 byte[] bytes = File.ReadAllBytes(path);
-                RawHeightmap.InferSize(name, bytes.Length, rawFormat, ref w, ref h);
-                heights = RawHeightmap.Decode(name, bytes, w, h, rawFormat, rawVoids ? RawHeightmap.SrtmVoid : (int?)null);
+                heights = RawHeightmap.ReadSouthFirst(name, bytes, rawFormat, rawRowOrder, ref w, ref h, rawVoids ? RawHeightmap.SrtmVoid : (int?)null);
             }
             catch (IOException e) { Report($"{name}: {e.Message}", MessageType.Error); return false; }
             catch (ArgumentException e) { Report(e.Message, MessageType.Error); return false; }
             bool unsigned16 = rawFormat == RawSampleFormat.UInt16LittleEndian || rawFormat == RawSampleFormat.UInt16BigEndian;
             double scale = unsigned16 ? heightScale / 65535.0 : heightScale;
             for (int k = 0; k < heights.Length; k++) heights[k] *= scale;
-            source = $"{name} ({w} x {h}, {rawFormat})";
+            source = $"{name} ({w} x {h}, {rawFormat}, first row {(RawHeightmap.FirstRowIsNorth(name, rawRowOrder) ? "north" : "south")})";
             return true;
         }
 
@@ -246,8 +293,8 @@ namespace GregoryTerrain.EditorTools
             var progress = new CancelableProgressBar($"{what}: {source}", cancel);
             try
             {
-                // Texture rows run bottom-up and RAW rows as stored: sample (c, r) lands at
-                // (c / (W-1), r / (H-1)) of the unit square either way (HeightmapFitter's convention).
+                // Texture rows run bottom-up and RAW rows come south first (ReadSouthFirst): sample (c, r)
+                // lands at (c / (W-1), r / (H-1)) of the unit square, y = 0 the south edge, either way.
                 HeightmapFit fit = useTarget
                     ? HeightmapFitter.FitToTarget(heights, width, height, targetMetres / widthMetres, targetKind, MaxSide, progress, cancel.Token)
                     : HeightmapFitter.Fit(heights, width, height, columns, rows, progress, cancel.Token);

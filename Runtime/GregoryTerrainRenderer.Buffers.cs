@@ -56,6 +56,7 @@ namespace GregoryTerrain
         {
             if (_uploadedGrid == grid && _uploadedVersion == grid.Version && _controlPoints != null) return true;
             if (_failedGrid == grid && _failedVersion == grid.Version) return false;   // logged once; retried on the next version
+            if (TryUploadEditedPatches()) return true;
             ReleaseGpuResources();
             PatchGrid g;
             try { g = grid.ToPatchGrid(); }

@@ -33,7 +33,7 @@ namespace GregoryTerrain
                 bool tiled = (NoiseKeywords() & TerrainKeywords.NoiseTable) != 0;
                 if (_queryAsset == grid && _queryVersion == grid.Version && Nullable.Equals(_queryNoise, noise) && _queryTiledNoise == tiled)
                     return _query;
-                try { _query = new TerrainSurfaceQuery(grid.ToPatchGrid(), noise, tiledNoise: tiled); }
+                try { _query = EditedQuery(noise, tiled) ?? new TerrainSurfaceQuery(grid.ToPatchGrid(), noise, tiledNoise: tiled); }
                 catch (ArgumentException e)
                 {
                     Debug.LogError($"{name}: cannot answer height queries: {e.Message}", this);

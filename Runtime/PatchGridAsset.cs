@@ -52,6 +52,8 @@ namespace GregoryTerrain
         [NonSerialized] double[][] _legacyBlocks;   // controlPoints cut into blocks, read-only view
         [NonSerialized] bool _changedSinceCheck;    // MarkChangedOnNextRead was called: check on the next read
         [NonSerialized] ulong _fingerprint;         // of the data last checked (MarkChanged): an undo that restores nothing of ours keeps the version
+        [NonSerialized] ulong[] _blockHashes;       // per block, for _fingerprint: an edit hashes again only the blocks it wrote
+        [NonSerialized] PatchChangeLog _changes = new PatchChangeLog();   // the patches each edit changed, for readers to catch up
 
         /// <summary>Changes whenever the grid data may have changed (edit, undo, import, load).</summary>
         public int Version { get { CheckIfChanged(); return _version; } }
@@ -77,7 +79,9 @@ namespace GregoryTerrain
         /// <summary>The control point blocks (empty while <see cref="HasLegacyLayout"/>). A copy of the array.</summary>
         internal PatchGridBlock[] Blocks => blocks == null ? Array.Empty<PatchGridBlock>() : (PatchGridBlock[])blocks.Clone();
 
-        void OnEnable() => MarkChanged();
+        // Loading (and every domain reload) only marks the grid: the whole-grid check runs at its first
+        // read, once per content change, not for every grid Unity loads.
+        void OnEnable() => MarkChangedOnNextRead();
 
         void OnValidate() => MarkChangedOnNextRead();
 
@@ -90,7 +94,9 @@ namespace GregoryTerrain
             _changedSinceCheck = false;
             _version = s_NextVersion++;
             _legacyBlocks = null;
+            _blockHashes = PatchGridBlocks.BlockHashes(HashedData());
             _fingerprint = Fingerprint();
+            _changes.Restart(_version, Math.Max(1, PatchCount));
             _error = CheckSerializedData();
             if (_error != null)
                 Debug.LogError($"Patch grid '{name}' is invalid: {_error}", this);
@@ -115,48 +121,78 @@ namespace GregoryTerrain
             // restored): when the data is bit for bit what was last checked, keep the verdict and the
             // version, so renderers do not upload it again. Hashing reads the data once, without the
             // whole-grid validation.
-            if (_version != 0 && Fingerprint() == _fingerprint) { _changedSinceCheck = false; return; }
+            if (_version != 0 && PatchGridBlocks.Combine(HeaderHash(), PatchGridBlocks.BlockHashes(HashedData())) == _fingerprint)
+            {
+                _changedSinceCheck = false;
+                return;
+            }
             MarkChanged();
         }
 
-        /// <summary>Fingerprint of everything the grid is made of: shape, lines and control points.</summary>
-        ulong Fingerprint()
+        /// <summary>Fingerprint of everything the grid is made of: shape, lines and control points (the blocks' hashes as last computed).</summary>
+        ulong Fingerprint() => PatchGridBlocks.Combine(HeaderHash(), _blockHashes);
+
+        ulong HeaderHash()
         {
             ulong h = PatchGridBlocks.Mix((ulong)(uint)columns, (ulong)(uint)rows);
             if (xLines != null) foreach (double v in xLines) h = PatchGridBlocks.Mix(h, (ulong)BitConverter.DoubleToInt64Bits(v));
             h = PatchGridBlocks.Mix(h, 0x5E9UL);
             if (yLines != null) foreach (double v in yLines) h = PatchGridBlocks.Mix(h, (ulong)BitConverter.DoubleToInt64Bits(v));
-            h = PatchGridBlocks.Mix(h, HasLegacyLayout ? 1UL : 2UL);
-            if (HasLegacyLayout) return PatchGridBlocks.Fingerprint(new[] { controlPoints }, h);
-            if (blocks == null) return h;
-            var data = new double[blocks.Length][];
-            for (int b = 0; b < blocks.Length; b++) data[b] = blocks[b] != null ? blocks[b].Points : null;
-            return PatchGridBlocks.Fingerprint(data, h);
+            return PatchGridBlocks.Mix(h, HasLegacyLayout ? 1UL : 2UL);
         }
 
-        /// <summary>The grid as Core's <see cref="PatchGrid"/>. Throws ArgumentException when invalid.</summary>
+        /// <summary>The arrays the fingerprint hashes: the older single array, or each block's (null for a missing block).</summary>
+        double[][] HashedData()
+        {
+            if (HasLegacyLayout) return new[] { controlPoints };
+            var data = new double[blocks?.Length ?? 0][];
+            for (int b = 0; b < data.Length; b++) data[b] = blocks[b] != null ? blocks[b].Points : null;
+            return data;
+        }
+
+        /// <summary>
+        /// The grid as Core's <see cref="PatchGrid"/>, new patches each call. Throws ArgumentException
+        /// when invalid. Uses the verdict kept since the last change (<see cref="IsValid"/>), not a
+        /// second whole-grid check.
+        /// </summary>
         internal PatchGrid ToPatchGrid()
         {
-            string error = CheckSerializedData();
-            if (error != null) throw new ArgumentException(error);
+            if (!IsValid) throw new ArgumentException(_error);
             return new PatchGrid(columns, rows, (double[])xLines.Clone(), (double[])yLines.Clone(), PatchGridBlocks.ToPatches(Data(), PatchCount));
         }
 
         /// <summary>
-        /// Replaces the data with <paramref name="grid"/> (already validated by PatchGrid). Existing
-        /// blocks are written in place; <paramref name="created"/> are new blocks (not yet sub-assets:
-        /// the editor adds them to the asset) and <paramref name="dropped"/> blocks no longer used (the
-        /// editor destroys them with Undo). Record the asset and its blocks before calling it.
+        /// <paramref name="previous"/>, this grid at <paramref name="previousVersion"/>, brought to this
+        /// version at the cost of the patches edited since (<see cref="ApplyEdit"/>; Core's
+        /// PatchChangeLog), as a new grid that shares its unchanged patches: what the renderer's upload
+        /// and query use per brush dab. Null, with <paramref name="changed"/> null, when only a whole
+        /// rebuild (<see cref="ToPatchGrid"/>) can tell: a whole-grid change, an undo or load since.
         /// </summary>
-        internal void SetGrid(PatchGrid grid, out PatchGridBlock[] created, out PatchGridBlock[] dropped)
+        internal PatchGrid UpdatedPatchGrid(PatchGrid previous, int previousVersion, out int[] changed)
+        {
+            changed = null;
+            if (!IsValid || HasLegacyLayout) return null;
+            return _changes.Update(previous, previousVersion, Data(), out changed);
+        }
+
+        /// <summary>
+        /// Replaces the data with <paramref name="grid"/> (already validated by PatchGrid) whose blocks
+        /// are <paramref name="data"/> (<c>PatchGridBlocks.FromGrid(grid)</c>). Existing blocks are
+        /// written in place (those <see cref="BlocksChangedBy"/> does not list keep their bits);
+        /// <paramref name="created"/> are new blocks (not yet sub-assets: the editor adds them to the
+        /// asset) and <paramref name="dropped"/> blocks no longer used (the editor destroys them with
+        /// Undo). Record the asset and the changed blocks before calling it.
+        /// </summary>
+        internal void SetGrid(PatchGrid grid, double[][] data, out PatchGridBlock[] created, out PatchGridBlock[] dropped)
         {
             if (grid == null) throw new ArgumentNullException(nameof(grid));
+            string shape = PatchGridBlocks.CheckShape(data, grid.PatchCount);
+            if (shape != null) throw new ArgumentException(shape, nameof(data));
             int n = grid.Columns, m = grid.Rows;
             var xs = new double[n + 1];
             var ys = new double[m + 1];
             for (int i = 0; i <= n; i++) xs[i] = grid.XLines[i];
             for (int j = 0; j <= m; j++) ys[j] = grid.YLines[j];
-            double[][] data = PatchGridBlocks.FromGrid(grid);
             // Everything is built; only now replace the old data.
             PatchGridBlock[] old = blocks ?? Array.Empty<PatchGridBlock>();
             var next = new PatchGridBlock[data.Length];
@@ -180,7 +216,8 @@ namespace GregoryTerrain
         /// </summary>
         internal void SetGrid(PatchGrid grid)
         {
-            SetGrid(grid, out PatchGridBlock[] created, out PatchGridBlock[] dropped);
+            if (grid == null) throw new ArgumentNullException(nameof(grid));
+            SetGrid(grid, PatchGridBlocks.FromGrid(grid), out PatchGridBlock[] created, out PatchGridBlock[] dropped);
             bool inFile = false;
 #if UNITY_EDITOR
             // A grid saved in a file keeps its blocks as sub-assets: new ones must join the file, or
@@ -198,6 +235,22 @@ namespace GregoryTerrain
                 else if (Application.isPlaying) Destroy(b);
                 else DestroyImmediate(b);
             }
+        }
+
+        /// <summary>
+        /// The existing blocks that <see cref="SetGrid(PatchGrid, double[][], out PatchGridBlock[], out PatchGridBlock[])"/>
+        /// with <paramref name="data"/> gives other bits: all that a whole-grid replacement has to record
+        /// for Undo (Enforce G1 on a grid already G1 records none). Blocks it creates or drops are not listed.
+        /// </summary>
+        internal PatchGridBlock[] BlocksChangedBy(double[][] data)
+        {
+            if (HasLegacyLayout || blocks == null) return Array.Empty<PatchGridBlock>();
+            var current = new double[Math.Min(blocks.Length, data.Length)][];
+            for (int b = 0; b < current.Length; b++) current[b] = blocks[b] != null ? blocks[b].Points : null;
+            var changed = new System.Collections.Generic.List<PatchGridBlock>();
+            foreach (int b in PatchGridBlocks.ChangedBlocks(current, data))
+                if (b < current.Length && blocks[b] != null) changed.Add(blocks[b]);
+            return changed.ToArray();
         }
 
         /// <summary>
@@ -315,14 +368,16 @@ namespace GregoryTerrain
             for (int k = 0; k < edit.Patches.Length; k++) PatchGridBlocks.SetPatch(data, edit.Patches[k], edit.Values[k]);
             _changedSinceCheck = false;
             _version = s_NextVersion++;
+            PatchGridBlocks.Rehash(_blockHashes, data, edit.Patches);
             _fingerprint = Fingerprint();
+            _changes.Add(_version, edit.Patches);
         }
 
         /// <summary>Smallest and largest control point height (z); the surface lies between them.</summary>
         public void GetHeightRange(out float minZ, out float maxZ)
         {
             minZ = float.PositiveInfinity; maxZ = float.NegativeInfinity;
-            if (CheckSerializedData() == null)
+            if (IsValid)
                 foreach (double[] a in Data())
                     for (int k = 2; k < a.Length; k += 3)
                     {

@@ -41,7 +41,7 @@ namespace GregoryTerrain.EditorTools
                 HeightmapFit fit = HeightmapFitter.FitToTarget(z, res, res, RmsTargetOfHeight * size.y / size.x, FitErrorKind.Rms, MaxColumns, progress, cancel.Token);
 
                 var grid = ScriptableObject.CreateInstance<PatchGridAsset>();
-                grid.SetGrid(fit.Grid, out PatchGridBlock[] blocks, out _);
+                grid.SetGrid(fit.Grid, PatchGridBlocks.FromGrid(fit.Grid), out PatchGridBlock[] blocks, out _);
                 AssetDatabase.CreateAsset(grid, AssetDatabase.GenerateUniqueAssetPath($"Assets/{terrain.name} Patch Grid.asset"));
                 // The control points live in block objects: sub-assets of the grid's file, or the saved
                 // grid refers to objects that are gone after a reload ("blocks[0] is missing").

@@ -51,5 +51,30 @@ namespace GregoryTerrain.Tests
             Assert.That(ContinuityMeasure.MaxNormalAngleDegrees(after), Is.LessThan(1e-7));
             Assert.That(after.Patch(5, 5)[GregoryPatch.Corner00].z, Is.GreaterThan(0.0));
         }
+
+        [Test]
+        public void AReaderCatchesUpOnADabAndRebuildsAfterAWholeChange()
+        {
+            PatchGrid before = _asset.ToPatchGrid();
+            int v0 = _asset.Version;
+            PatchEdit edit = PatchBrush.Apply(before.Clone(), new BrushDab(BrushMode.Raise, 0.5, 0.5, 0.2, 0.05));
+            _asset.ApplyEdit(edit);
+            PatchGrid caught = _asset.UpdatedPatchGrid(before, v0, out int[] changed);
+            Assert.That(changed, Is.EqualTo(edit.Patches));
+            PatchGrid now = _asset.ToPatchGrid();
+            for (int p = 0; p < now.PatchCount; p++)
+                for (int k = 0; k < GregoryPatch.SlotCount; k++) Assert.That(caught.Patches[p][k], Is.EqualTo(now.Patches[p][k]));
+            _asset.SetGrid(PatchGrid.CreateFlat(10, 10));
+            Assert.That(_asset.UpdatedPatchGrid(before, v0, out changed), Is.Null, "a whole-grid change: rebuild");
+        }
+
+        [Test]
+        public void AReplacementWithTheSameBitsChangesNoBlock()
+        {
+            double[][] same = PatchGridBlocks.FromGrid(_asset.ToPatchGrid());
+            Assert.That(_asset.BlocksChangedBy(same), Is.Empty, "nothing to record for Undo");
+            same[1][5] += 1.0;
+            Assert.That(_asset.BlocksChangedBy(same), Is.EqualTo(new[] { _asset.Blocks[1] }));
+        }
     }
 }

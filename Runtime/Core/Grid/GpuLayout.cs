@@ -103,17 +103,22 @@ namespace GregoryTerrain
         {
             CheckPackable(grid);
             var data = new GregoryPatchRecord[grid.PatchCount];
-            for (int p = 0; p < grid.PatchCount; p++)
-            {
-                Float3 r = PatchReference(grid.Patches[p]);
-                for (int k = 0; k < GregoryPatch.SlotCount; k++)
-                {
-                    Double3 c = grid.Patches[p][k];
-                    data[p][k] = new Float4((float)(c.x - r.x), (float)(c.y - r.y), (float)(c.z - r.z),
-                        k == 0 ? r.x : k == 1 ? r.y : k == 2 ? r.z : 0f);
-                }
-            }
+            for (int p = 0; p < grid.PatchCount; p++) data[p] = PackPatchRecord(grid.Patches[p]);
             return data;
+        }
+
+        /// <summary>One patch's record of <see cref="PackPatchRecords"/> (a patch of a validated grid: an edit uploads only these).</summary>
+        public static GregoryPatchRecord PackPatchRecord(GregoryPatch patch)
+        {
+            Float3 r = PatchReference(patch);
+            var record = new GregoryPatchRecord();
+            for (int k = 0; k < GregoryPatch.SlotCount; k++)
+            {
+                Double3 c = patch[k];
+                record[k] = new Float4((float)(c.x - r.x), (float)(c.y - r.y), (float)(c.z - r.z),
+                    k == 0 ? r.x : k == 1 ? r.y : k == 2 ? r.z : 0f);
+            }
+            return record;
         }
 
         /// <summary>

@@ -81,13 +81,16 @@ namespace GregoryTerrain
         public static GregoryPatch[] ToPatches(double[][] blocks, int patchCount)
         {
             var patches = new GregoryPatch[patchCount];
-            for (int p = 0; p < patchCount; p++)
-            {
-                var patch = new GregoryPatch();
-                for (int s = 0; s < GregoryPatch.SlotCount; s++) patch[s] = Get(blocks, p, s);
-                patches[p] = patch;
-            }
+            for (int p = 0; p < patchCount; p++) patches[p] = ReadPatch(blocks, p);
             return patches;
+        }
+
+        /// <summary>Patch <paramref name="patch"/> as a new Core patch.</summary>
+        public static GregoryPatch ReadPatch(double[][] blocks, int patch)
+        {
+            var result = new GregoryPatch();
+            for (int s = 0; s < GregoryPatch.SlotCount; s++) result[s] = Get(blocks, patch, s);
+            return result;
         }
 
         /// <summary>The blocks of <paramref name="grid"/>'s patches.</summary>
@@ -167,16 +170,66 @@ namespace GregoryTerrain
         /// fingerprint. Lets a grid tell after an undo whether its data really changed (a different
         /// fingerprint) without validating it whole, so unrelated undos do not re-upload it.
         /// </summary>
-        public static ulong Fingerprint(double[][] blocks, ulong seed)
+        public static ulong Fingerprint(double[][] blocks, ulong seed) => Combine(seed, BlockHashes(blocks));
+
+        /// <summary>
+        /// <see cref="Fingerprint"/> from each block's <see cref="BlockHash"/>: after an edit only the
+        /// blocks it wrote are hashed again (a brush dab, not the whole grid).
+        /// </summary>
+        public static ulong Combine(ulong seed, ulong[] blockHashes)
         {
             ulong h = seed ^ 0x9E3779B97F4A7C15UL;
-            foreach (double[] b in blocks)
-            {
-                if (b == null) { h = Mix(h, 0xFFFFFFFFFFFFFFFFUL); continue; }
-                h = Mix(h, (ulong)b.Length);
-                for (int k = 0; k < b.Length; k++) h = Mix(h, (ulong)BitConverter.DoubleToInt64Bits(b[k]));
-            }
+            foreach (ulong b in blockHashes) h = Mix(h, b);
             return h;
+        }
+
+        /// <summary><see cref="BlockHash"/> of every block.</summary>
+        public static ulong[] BlockHashes(double[][] blocks)
+        {
+            var hashes = new ulong[blocks.Length];
+            for (int b = 0; b < blocks.Length; b++) hashes[b] = BlockHash(blocks[b]);
+            return hashes;
+        }
+
+        /// <summary>Hashes again the blocks holding <paramref name="patches"/> (ascending, an edit's), each once.</summary>
+        public static void Rehash(ulong[] hashes, double[][] blocks, int[] patches)
+        {
+            int hashed = -1;
+            foreach (int p in patches)
+            {
+                int b = BlockOf(p);
+                if (b != hashed) hashes[hashed = b] = BlockHash(blocks[b]);
+            }
+        }
+
+        /// <summary>A hash of one block's length and doubles (their bits); a missing block has its own.</summary>
+        public static ulong BlockHash(double[] block)
+        {
+            if (block == null) return 0xFFFFFFFFFFFFFFFFUL;
+            ulong h = Mix(0, (ulong)block.Length);
+            for (int k = 0; k < block.Length; k++) h = Mix(h, (ulong)BitConverter.DoubleToInt64Bits(block[k]));
+            return h;
+        }
+
+        /// <summary>
+        /// The blocks of <paramref name="next"/> that differ from <paramref name="current"/> (new, of
+        /// another length, or any double of other bits), ascending: what a whole-grid replacement must
+        /// write and record for Undo. The rest already hold those bits.
+        /// </summary>
+        public static int[] ChangedBlocks(double[][] current, double[][] next)
+        {
+            var changed = new List<int>();
+            for (int b = 0; b < next.Length; b++)
+                if (current == null || b >= current.Length || !SameBits(current[b], next[b])) changed.Add(b);
+            return changed.ToArray();
+        }
+
+        static bool SameBits(double[] a, double[] b)
+        {
+            if (a == null || b == null || a.Length != b.Length) return false;
+            for (int k = 0; k < a.Length; k++)
+                if (BitConverter.DoubleToInt64Bits(a[k]) != BitConverter.DoubleToInt64Bits(b[k])) return false;
+            return true;
         }
 
         /// <summary>One step of a multiply-xorshift hash (not cryptographic: it tells edits apart, it does not resist forgery).</summary>

@@ -1,4 +1,5 @@
 using System;
+using System.Collections.Generic;
 using System.Globalization;
 
 namespace GregoryTerrain
@@ -22,24 +23,51 @@ namespace GregoryTerrain
             ValidateLines(YLines, "yLines");
             for (int j = 0; j < Rows; j++)
                 for (int i = 0; i < Columns; i++)
-                {
-                    GregoryPatch p = Patch(i, j);
-                    p.Validate(Name(i, j));
-                    for (int k = 0; k < GregoryPatch.SlotCount; k++)
-                        CheckFloatRange(p[k], i, j, k);
-                }
+                    ValidatePoints(i, j);
             for (int j = 0; j < Rows; j++)
                 for (int i = 0; i < Columns; i++)
-                {
-                    // Right neighbour: our u = 1 column (slots 12..15) is its u = 0 column (slots 0..3).
-                    if (i + 1 < Columns)
-                        for (int k = 0; k < 4; k++)
-                            CheckShared(i, j, GregoryPatch.Slot(3, k), i + 1, j, GregoryPatch.Slot(0, k), "x", XLines[i + 1]);
-                    // Upper neighbour: our v = 1 row (slots 3, 7, 11, 15) is its v = 0 row (0, 4, 8, 12).
-                    if (j + 1 < Rows)
-                        for (int k = 0; k < 4; k++)
-                            CheckShared(i, j, GregoryPatch.Slot(k, 3), i, j + 1, GregoryPatch.Slot(k, 0), "y", YLines[j + 1]);
-                }
+                    ValidateEdgesAfter(i, j);
+        }
+
+        /// <summary>
+        /// <see cref="Validate"/>'s rules for <paramref name="patches"/> only: their control points and
+        /// the edges they share with their four neighbours. For a grid that was valid before those
+        /// patches changed (an edit): it is valid again exactly when this passes, at the cost of the
+        /// patches changed, not of the grid.
+        /// </summary>
+        public void ValidatePatches(IReadOnlyList<int> patches)
+        {
+            foreach (int p in patches)
+            {
+                if (p < 0 || p >= PatchCount)
+                    throw new ArgumentOutOfRangeException(nameof(patches), p, F("patch {0} is outside the grid's {1} patches.", p, PatchCount));
+                int i = p % Columns, j = p / Columns;
+                ValidatePoints(i, j);
+                ValidateEdgesAfter(i, j);
+                if (i > 0) ValidateEdgesAfter(i - 1, j, up: false);
+                if (j > 0) ValidateEdgesAfter(i, j - 1, right: false);
+            }
+        }
+
+        void ValidatePoints(int i, int j)
+        {
+            GregoryPatch p = Patch(i, j);
+            p.Validate(Name(i, j));
+            for (int k = 0; k < GregoryPatch.SlotCount; k++)
+                CheckFloatRange(p[k], i, j, k);
+        }
+
+        /// <summary>The edges patch (i, j) shares with its right and upper neighbours.</summary>
+        void ValidateEdgesAfter(int i, int j, bool right = true, bool up = true)
+        {
+            // Right neighbour: our u = 1 column (slots 12..15) is its u = 0 column (slots 0..3).
+            if (right && i + 1 < Columns)
+                for (int k = 0; k < 4; k++)
+                    CheckShared(i, j, GregoryPatch.Slot(3, k), i + 1, j, GregoryPatch.Slot(0, k), "x", XLines[i + 1]);
+            // Upper neighbour: our v = 1 row (slots 3, 7, 11, 15) is its v = 0 row (0, 4, 8, 12).
+            if (up && j + 1 < Rows)
+                for (int k = 0; k < 4; k++)
+                    CheckShared(i, j, GregoryPatch.Slot(k, 3), i, j + 1, GregoryPatch.Slot(k, 0), "y", YLines[j + 1]);
         }
 
         /// <summary>

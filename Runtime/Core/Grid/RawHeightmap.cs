@@ -22,6 +22,21 @@ namespace GregoryTerrain
     }
 
     /// <summary>
+    /// Which edge of the terrain a RAW file's first row lies on. The terrain's y = 0 edge is its south
+    /// edge (Unity's -Z side); the fitter puts sample row r at y = r / (H - 1).
+    /// </summary>
+    internal enum RawRowOrder
+    {
+        /// <summary>North first for SRTM <c>.hgt</c> files (stored north to south), south first for any
+        /// other file, as Unity's own Import Raw reads a RAW with Flip Vertically off.</summary>
+        ByFileType,
+        /// <summary>Row 0 is the south edge (Unity's RAW export and import, Flip Vertically off).</summary>
+        SouthFirst,
+        /// <summary>Row 0 is the north edge (SRTM, most GIS exports; Unity's Flip Vertically on).</summary>
+        NorthFirst,
+    }
+
+    /// <summary>
     /// Reads headerless RAW heightmaps: W x H samples, rows one after another, no padding. The size
     /// is inferred when the file is square and checked against the byte count otherwise; every
     /// error names the file and what is wrong. Values come out as stored (no scaling); a sample equal
@@ -69,6 +84,50 @@ namespace GregoryTerrain
                 throw new ArgumentException($"{fileName}: {byteCount} bytes hold {samples} samples of {bps} bytes; {width} x {height} needs {(long)width * height}. Check the size and format ({format}).");
             if (width < 2 || height < 2)
                 throw new ArgumentException($"{fileName}: {width} x {height} samples, need at least 2 x 2.");
+        }
+
+        /// <summary>
+        /// A whole RAW file's heights, south row first (what the fitter puts at the terrain's y = 0
+        /// edge): the size inferred or checked (<see cref="InferSize"/>), samples decoded
+        /// (<see cref="Decode"/>), rows flipped when the file's first row is the north edge
+        /// (<see cref="FirstRowIsNorth"/>).
+        /// </summary>
+        public static double[] ReadSouthFirst(string fileName, ReadOnlySpan<byte> bytes, RawSampleFormat format, RawRowOrder order,
+            ref int width, ref int height, int? voidValue = null)
+        {
+            bool flip = FirstRowIsNorth(fileName, order);
+            InferSize(fileName, bytes.Length, format, ref width, ref height);
+            double[] heights = Decode(fileName, bytes, width, height, format, voidValue);
+            if (flip) FlipRows(heights, width, height);
+            return heights;
+        }
+
+        /// <summary>Whether a file's first row is the terrain's north edge; <see cref="RawRowOrder.ByFileType"/> decides by the extension.</summary>
+        public static bool FirstRowIsNorth(string fileName, RawRowOrder order)
+        {
+            switch (order)
+            {
+                case RawRowOrder.NorthFirst: return true;
+                case RawRowOrder.SouthFirst: return false;
+                case RawRowOrder.ByFileType:
+                    return string.Equals(System.IO.Path.GetExtension(fileName ?? ""), ".hgt", StringComparison.OrdinalIgnoreCase);
+                default:
+                    throw new ArgumentException(string.Format(CultureInfo.InvariantCulture, "{0}: order = {1} is not a row order.", fileName, order), nameof(order));
+            }
+        }
+
+        /// <summary>Reverses the order of the <paramref name="height"/> rows of <paramref name="width"/> samples, in place.</summary>
+        public static void FlipRows(double[] samples, int width, int height)
+        {
+            if (samples == null) throw new ArgumentNullException(nameof(samples));
+            if (width < 1 || height < 1 || (long)width * height != samples.Length)
+                throw new ArgumentException($"samples.Length = {samples.Length} is not width {width} x height {height}.", nameof(samples));
+            for (int top = 0, bottom = height - 1; top < bottom; top++, bottom--)
+                for (int c = 0; c < width; c++)
+                {
+                    int a = top * width + c, b = bottom * width + c;
+                    (samples[a], samples[b]) = (samples[b], samples[a]);
+                }
         }
 
         /// <summary>Decodes W x H samples (sizes from <see cref="InferSize"/>) to doubles; voids become NaN.</summary>

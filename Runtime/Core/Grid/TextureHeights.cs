@@ -27,6 +27,22 @@ namespace GregoryTerrain
     /// </summary>
     internal static class TextureHeights
     {
+        /// <summary>
+        /// Why a texture as imported does not hold its file's heights, or null: not readable, resized
+        /// from the file's <paramref name="sourceWidth"/> x <paramref name="sourceHeight"/> (Max Size, or
+        /// Non-Power of 2 scaling: resampled heights), or block-compressed (lossy). The fit reads the
+        /// file's heights exactly or not at all, as Unity's own heightmap import reads raw data.
+        /// </summary>
+        public static string ImportProblem(string name, int sourceWidth, int sourceHeight, int width, int height, string format, bool compressed, bool readable)
+        {
+            var problems = new System.Collections.Generic.List<string>();
+            if (!readable) problems.Add("Read/Write is off, so its texels cannot be read");
+            if (width != sourceWidth || height != sourceHeight)
+                problems.Add($"it is imported at {width} x {height} but its file is {sourceWidth} x {sourceHeight} (Max Size or Non-Power of 2 resized it): the fit would see resampled heights");
+            if (compressed) problems.Add($"it is imported compressed ({format}), which changes the heights: set Compression to None (and in the current platform's override, if any)");
+            return problems.Count == 0 ? null : $"'{name}': " + string.Join("; ", problems) + ".";
+        }
+
         public static int BytesPerTexel(HeightTexelFormat format)
         {
             switch (format)

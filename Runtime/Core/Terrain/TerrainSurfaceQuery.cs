@@ -1,4 +1,5 @@
 using System;
+using System.Collections.Generic;
 using System.Globalization;
 
 namespace GregoryTerrain
@@ -140,6 +141,44 @@ namespace GregoryTerrain
             double lo = double.MaxValue, hi = double.MinValue, slope = 0.0;
             bool affine = true;
             for (int p = 0; p < grid.PatchCount; p++)
+            {
+                foreach (Double3 c in grid.Patches[p].Points) { lo = Math.Min(lo, c.z); hi = Math.Max(hi, c.z); }
+                slope = Math.Max(slope, PatchSlopeBound(grid.Patches[p], grid.RegionOf(p)));
+                affine &= IsAffine(grid.Patches[p], grid.RegionOf(p));
+            }
+            MinControlHeight = lo;
+            MaxControlHeight = hi;
+            SurfaceSlopeBound = slope;
+            AffinePatches = affine;
+        }
+
+        /// <summary>
+        /// This query's noise over <paramref name="grid"/>, which differs from <see cref="Grid"/> in
+        /// <paramref name="changed"/> patches only (a brush dab: PatchChangeLog.Update validated them).
+        /// The bounds are widened by the changed patches, never narrowed: still bounds, so rays and
+        /// samples stay exact, at the cost of the changed patches rather than the grid's. This query is
+        /// not changed (another thread may be using it).
+        /// </summary>
+        public TerrainSurfaceQuery WithPatches(PatchGrid grid, IReadOnlyList<int> changed) => new TerrainSurfaceQuery(this, grid, changed);
+
+        TerrainSurfaceQuery(TerrainSurfaceQuery previous, PatchGrid grid, IReadOnlyList<int> changed)
+        {
+            if (grid == null) throw new ArgumentNullException(nameof(grid));
+            if (changed == null) throw new ArgumentNullException(nameof(changed));
+            PatchGrid old = previous._grid;
+            if (grid.Columns != old.Columns || grid.Rows != old.Rows)
+                throw new ArgumentException($"grid is {grid.Columns} x {grid.Rows} patches, the query's {old.Columns} x {old.Rows}.", nameof(grid));
+            _grid = grid;
+            _noiseOn = previous._noiseOn;
+            _tiled = previous._tiled;
+            _noise = previous._noise;
+            _frequency = previous._frequency;
+            _offset = previous._offset;
+            _amplitudeTail = previous._amplitudeTail;
+            _slopeHead = previous._slopeHead;
+            double lo = previous.MinControlHeight, hi = previous.MaxControlHeight, slope = previous.SurfaceSlopeBound;
+            bool affine = previous.AffinePatches;
+            foreach (int p in changed)
             {
                 foreach (Double3 c in grid.Patches[p].Points) { lo = Math.Min(lo, c.z); hi = Math.Max(hi, c.z); }
                 slope = Math.Max(slope, PatchSlopeBound(grid.Patches[p], grid.RegionOf(p)));

@@ -83,6 +83,15 @@ namespace GregoryTerrain
             return new Double3(l.x / s.x, l.y / s.y, l.z / s.z);
         }
 
+        /// <summary>
+        /// A terrain point (x, y across the unit square, z height: a control point as the grid stores
+        /// it) to world, in double: the point the renderer draws there (object = terrain (x, z, y)).
+        /// </summary>
+        public Double3 TerrainToWorld(Double3 t) => ObjectToWorld(TerrainVertex.TerrainToObject(t));
+
+        /// <summary>A world point to terrain (x, y, height z), in double: the inverse of <see cref="TerrainToWorld"/>.</summary>
+        public Double3 WorldToTerrain(Double3 w) => TerrainVertex.TerrainToObject(WorldToObject(w));
+
         /// <summary>A world direction to object (not normalized).</summary>
         public Double3 DirectionToObject(Double3 d)
         {

@@ -98,6 +98,8 @@ namespace GregoryTerrain.Rig
                 "dem patches crop");
             Add("query-bench", "CPU height/normal/ray queries per second (1 and N threads) and the collider patch's cost and deviation (--grid FILE [--size M] [--threads N])", QueryBenchCommand.Run,
                 "collider-samples collider-spacing grid no-noise octaves seconds size threads");
+            Add("sculpt-bench", "CPU cost of one sculpt dab before and after issue 36, the whole-grid check, and the bytes a whole-grid step records for Undo (--patches N [--dabs D] [--radius-patches R])", SculptBenchCommand.Run,
+                "dabs patches radius-patches");
             Add("jitter", "deep-zoom vertex jitter table, plain vs shipped float path (--widths 1e-2,1e-4,1e-6 ...)", JitterCommand.Run,
                 "center factor grid noise octaves pan pixels tiles widths");
         }

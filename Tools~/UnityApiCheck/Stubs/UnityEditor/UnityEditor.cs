@@ -62,7 +62,7 @@ namespace UnityEditor
         public static void SetBool(string key, bool value) { }                               // SR:EditorPrefs.SetBool
     }
 
-    public class EditorWindow : UnityEngine.ScriptableObject                                 // SR:EditorWindow
+    public partial class EditorWindow : UnityEngine.ScriptableObject                         // SR:EditorWindow (partial in 2022.3)
     {
         public static T GetWindow<T>(string title) where T : EditorWindow => null;           // SR:EditorWindow.GetWindow
         public void Repaint() { }                                                            // SR:EditorWindow.Repaint
