@@ -210,21 +210,32 @@ namespace GregoryTerrain.EditorTools
                     }
                 }
             }
+            if (_selectedPatch >= 0 && _selectedPatch < grid.PatchCount)
+            {
+                Vector3 current = points.ToWorld(grid.GetControlPoint(_selectedPatch, _selectedSlot));
+                EditorGUI.BeginChangeCheck();
+                Vector3 moved = Handles.PositionHandle(current, Quaternion.identity);
+                if (EditorGUI.EndChangeCheck())
+                {
+                    PatchGridAssetUndo.MoveControlPoint(grid, _selectedPatch, _selectedSlot, points.ToTerrain(moved));
+                }
+            }
+            PickPatchUnderMouse(r, grid);
+        }
+
+        // After the handles: a click that a handle or button took (it holds the hot control, or used
+        // the event) is theirs; only a click on bare terrain picks the patch there, and none while
+        // the sculpt tool (whose OnToolGUI runs after this) paints.
+        void PickPatchUnderMouse(GregoryTerrainRenderer r, PatchGridAsset grid)
+        {
             Event e = Event.current;
-            if (e.type == EventType.MouseDown && e.button == 0 && !e.alt &&
+            if (e.type == EventType.MouseDown && e.button == 0 && !e.alt && GUIUtility.hotControl == 0 &&
+                UnityEditor.EditorTools.ToolManager.activeToolType != typeof(PatchGridSculptTool) &&
                 r.Raycast(HandleUtility.GUIPointToWorldRay(e.mousePosition), float.PositiveInfinity, out Vector3 hit, out _, out _))
             {
                 Double3 local = r.WorldToTerrainObject(hit);   // object (x, height, y)
                 _nearPatch = grid.FindPatch(local.x, local.z);
                 e.Use();
-            }
-            if (_selectedPatch < 0 || _selectedPatch >= grid.PatchCount) return;
-            Vector3 current = points.ToWorld(grid.GetControlPoint(_selectedPatch, _selectedSlot));
-            EditorGUI.BeginChangeCheck();
-            Vector3 moved = Handles.PositionHandle(current, Quaternion.identity);
-            if (EditorGUI.EndChangeCheck())
-            {
-                PatchGridAssetUndo.MoveControlPoint(grid, _selectedPatch, _selectedSlot, points.ToTerrain(moved));
             }
         }
     }

@@ -49,7 +49,10 @@ namespace GregoryTerrain.EditorTools
         static bool SculptToolAvailable()
         {
             GameObject[] selected = Selection.gameObjects;
-            return selected.Length > 0 && Array.TrueForAll(selected, g => g.GetComponent<GregoryTerrainRenderer>() != null);
+            // Unity makes no component tool for assets (a prefab picked in the Project window), and
+            // builds tools from the Inspector's editors, so a selection holding anything else has none.
+            return selected.Length > 0 && Selection.objects.Length == selected.Length &&
+                   Array.TrueForAll(selected, g => !EditorUtility.IsPersistent(g) && g.GetComponent<GregoryTerrainRenderer>() != null);
         }
 
         [Shortcut("Gregory Terrain/Shrink Sculpt Brush", typeof(SceneView), KeyCode.LeftBracket, ShortcutModifiers.Shift)]

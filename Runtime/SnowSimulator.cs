@@ -65,7 +65,7 @@ namespace GregoryTerrain
         /// </summary>
         public SnowSettings Settings
         {
-            get => settings;
+            get => Applied;   // not an Inspector edit that failed validation and is not used
             set
             {
                 value.Validate();

@@ -1,5 +1,7 @@
 using UnityEngine;
-#if ENABLE_INPUT_SYSTEM
+// ENABLE_INPUT_SYSTEM follows Active Input Handling, not whether the package is installed; the
+// sample's asmdef defines GT_INPUT_SYSTEM_PACKAGE only when com.unity.inputsystem is (versionDefines).
+#if ENABLE_INPUT_SYSTEM && GT_INPUT_SYSTEM_PACKAGE
 using UnityEngine.InputSystem;
 #endif
 
@@ -10,7 +12,7 @@ namespace GregoryTerrain.Samples.GroundWalk
     /// <see cref="GregoryTerrainCollider"/> patch that follows it; the camera is a child 1.7 m above the
     /// feet. WASD or the arrow keys walk, Space jumps, the mouse looks around while the right button is
     /// held: through the Input System package when the project's Active Input Handling includes it
-    /// (ENABLE_INPUT_SYSTEM), else through the legacy Input Manager's default axes.
+    /// (ENABLE_INPUT_SYSTEM) and the package is installed, else through the legacy Input Manager's default axes.
     /// <para>While the walker touches the ground its velocity is set along the surface (the renderer's
     /// <see cref="GregoryTerrainRenderer.SampleNormal"/>), so it walks up and down slopes without
     /// hopping and stands still without sliding; slopes steeper than <see cref="maxSlope"/> are left to
@@ -55,7 +57,7 @@ namespace GregoryTerrain.Samples.GroundWalk
         bool _jumpRequested;
         bool _waiting = true;
         bool _loggedFall;
-#if !ENABLE_INPUT_SYSTEM && !ENABLE_LEGACY_INPUT_MANAGER
+#if !(ENABLE_INPUT_SYSTEM && GT_INPUT_SYSTEM_PACKAGE) && !ENABLE_LEGACY_INPUT_MANAGER
         bool _loggedInput;
 #endif
 
@@ -84,7 +86,7 @@ namespace GregoryTerrain.Samples.GroundWalk
             if (view != null) view.rotation = Quaternion.Euler(_pitch, _yaw, 0f);
         }
 
-#if ENABLE_INPUT_SYSTEM
+#if ENABLE_INPUT_SYSTEM && GT_INPUT_SYSTEM_PACKAGE
         // The legacy "Mouse X"/"Mouse Y" axes are the mouse delta in pixels times 0.1 (their default
         // sensitivity): the same turn per pixel either way.
         const float PixelsToMouseAxis = 0.1f;

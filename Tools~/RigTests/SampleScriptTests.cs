@@ -131,15 +131,37 @@ namespace GregoryTerrain.Rig.Tests
             new[] { @"_moveX\s*=", @"_moveZ\s*=", @"_jumpRequested\s*=\s*true", @"_yaw\s*\+=", @"_pitch\s*=" }
                 .Where(p => !Regex.IsMatch(StripComments(code), p)).ToList();
 
-        [TestCase("ENABLE_INPUT_SYSTEM")]
+        [TestCase("ENABLE_INPUT_SYSTEM", "GT_INPUT_SYSTEM_PACKAGE")]
         [TestCase("ENABLE_LEGACY_INPUT_MANAGER")]
         [TestCase("ENABLE_INPUT_SYSTEM", "ENABLE_LEGACY_INPUT_MANAGER")]
+        [TestCase("ENABLE_INPUT_SYSTEM", "ENABLE_LEGACY_INPUT_MANAGER", "GT_INPUT_SYSTEM_PACKAGE")]
         public void TheWalkerReadsInputUnderEveryActiveInputHandling(params string[] defines)
         {
             string walker = SampleScripts()["GroundWalk/GroundWalker.cs"];
             Assert.That(InputNotRead(Preprocess(walker, new HashSet<string>(defines))), Is.Empty,
                 $"the walker's input as compiled with {string.Join(" ", defines)}");
         }
+
+        /// <summary>
+        /// ENABLE_INPUT_SYSTEM follows Active Input Handling, not the package: a project set to "Both"
+        /// or "New" without com.unity.inputsystem must still compile the walker (CS0234 in a sample
+        /// blocks every script of the project). The package's presence reaches the code only through
+        /// the sample asmdef's versionDefines.
+        /// </summary>
+        [Test]
+        public void TheWalkerCompilesWithoutTheInputSystemPackage()
+        {
+            Assert.That(UsesInputSystemNamespace(SampleScripts()["GroundWalk/GroundWalker.cs"], "ENABLE_INPUT_SYSTEM", "ENABLE_LEGACY_INPUT_MANAGER"), Is.False,
+                "the walker as compiled with Active Input Handling = Both and no Input System package");
+            string asmdef = File.ReadAllText(PackageRoot.Combine("Samples~", "GroundWalk", "GregoryTerrain.Samples.GroundWalk.asmdef"));
+            Assert.That(Regex.IsMatch(asmdef, @"""name""\s*:\s*""com\.unity\.inputsystem""[^}]*""define""\s*:\s*""GT_INPUT_SYSTEM_PACKAGE"""), Is.True,
+                "the sample asmdef defines GT_INPUT_SYSTEM_PACKAGE from the package's presence");
+            // The guard this replaces: the namespace under ENABLE_INPUT_SYSTEM alone.
+            Assert.That(UsesInputSystemNamespace("#if ENABLE_INPUT_SYSTEM\nusing UnityEngine.InputSystem;\n#endif", "ENABLE_INPUT_SYSTEM"), Is.True);
+        }
+
+        static bool UsesInputSystemNamespace(string code, params string[] defines) =>
+            Regex.IsMatch(StripComments(Preprocess(code, new HashSet<string>(defines))), @"\bUnityEngine\.InputSystem\b|\bKeyboard\.current\b");
 
         [Test]
         public void InputCheckRejectsALegacyOnlyWalker()

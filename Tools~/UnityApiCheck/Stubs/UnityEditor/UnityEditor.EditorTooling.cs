@@ -13,6 +13,7 @@ namespace UnityEditor
     public sealed partial class Selection
     {
         public static GameObject[] gameObjects => null;                                      // SR:Selection-gameObjects (read only)
+        public static Object[] objects { get; set; }                                         // SR:Selection-objects
     }
 
     public partial class EditorWindow

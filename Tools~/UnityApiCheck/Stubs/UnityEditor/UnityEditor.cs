@@ -108,6 +108,7 @@ namespace UnityEditor
         public static bool DisplayDialog(string title, string message, string ok) => true;                                // SR:EditorUtility.DisplayDialog
         public static bool DisplayCancelableProgressBar(string title, string info, float progress) => false;              // SR:EditorUtility.DisplayCancelableProgressBar
         public static void ClearProgressBar() { }                                                                         // SR:EditorUtility.ClearProgressBar
+        public static bool IsPersistent(Object target) => false;                                                          // SR:EditorUtility.IsPersistent
     }
 
     public partial class Undo                                                                // SR:Undo (plain partial class in 2022.3)
