@@ -145,8 +145,8 @@ namespace GregoryTerrain.EditorTools
                 case EventType.MouseMove:
                     HandleUtility.Repaint();
                     break;
-                // Another control (a handle, the camera) owns the mouse: leave its click alone.
-                case EventType.MouseDown when e.button == 0 && !e.alt && hit && GUIUtility.hotControl == 0:
+                // Another control (a handle, the camera) owns the mouse or is nearer: leave its click alone.
+                case EventType.MouseDown when e.button == 0 && !e.alt && hit && GUIUtility.hotControl == 0 && HandleUtility.nearestControl == id:
                     GUIUtility.hotControl = _dragControl = id;   // the drag and the release come here, wherever the mouse goes
                     if (Mode == SculptMode.SelectPatches) _selectFrom = PatchUnder(renderer, grid, point);
                     else BeginStroke(renderer, grid, point);

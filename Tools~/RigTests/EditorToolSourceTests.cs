@@ -206,7 +206,8 @@ namespace GregoryTerrain.Rig.Tests
         /// <summary>
         /// What an EditorTool that handles mouse drags lacks of Unity's drag protocol (TerrainInspector's
         /// paint tools in 2022.3): the event type read for its control (GetTypeForControl), the hot
-        /// control taken on MouseDown, drags and the release taken only while it holds it, and given back
+        /// control taken on a MouseDown no nearer control wants (HandleUtility.nearestControl), drags and
+        /// the release taken only while it holds it, and given back
         /// (hotControl = 0). Without it a release outside the Scene view never reaches the tool.
         /// </summary>
         internal static List<string> DragProtocolGaps(string code)
@@ -217,6 +218,7 @@ namespace GregoryTerrain.Rig.Tests
             if (!Regex.IsMatch(code, @"\.GetTypeForControl\s*\(\s*id\s*\)")) gaps.Add("event type not read with GetTypeForControl(id)");
             if (!Regex.IsMatch(code, @"GUIUtility\.hotControl\s*=(?!=)[^;]*\bid\s*;")) gaps.Add("hot control not taken (GUIUtility.hotControl = id)");
             if (!Regex.IsMatch(code, @"GUIUtility\.hotControl\s*=\s*0\s*;")) gaps.Add("hot control not given back (GUIUtility.hotControl = 0)");
+            if (!Regex.IsMatch(code, @"EventType\.MouseDown\s+when[^:]*HandleUtility\.nearestControl\s*==\s*id")) gaps.Add("a click taken though another control is nearer (HandleUtility.nearestControl)");
             if (!Regex.IsMatch(code, @"EventType\.MouseDrag\s+when\s+GUIUtility\.hotControl\s*==\s*id")) gaps.Add("drags not confined to the hot control");
             if (!Regex.IsMatch(code, @"EventType\.MouseUp\s*&&\s*GUIUtility\.hotControl\s*==\s*id|EventType\.MouseUp\s+when\s+GUIUtility\.hotControl\s*==\s*id")) gaps.Add("the release not taken by the hot control");
             return gaps;
@@ -238,7 +240,7 @@ namespace GregoryTerrain.Rig.Tests
                          " case EventType.MouseDown when e.button == 0 && hit: BeginStroke(); e.Use(); break;\n" +
                          " case EventType.MouseDrag when e.button == 0 && (_strokeGrid != null): Dab(); e.Use(); break;\n" +
                          " case EventType.MouseUp when e.button == 0 && (_strokeGrid != null): EndStroke(); e.Use(); break;\n}";
-            Assert.That(DragProtocolGaps(old).Count, Is.EqualTo(5), string.Join("; ", DragProtocolGaps(old)));
+            Assert.That(DragProtocolGaps(old).Count, Is.EqualTo(6), string.Join("; ", DragProtocolGaps(old)));
         }
         // ---- 6, 7, 9: the grid asset's whole-grid work once per content change, not per dab or load ----
 

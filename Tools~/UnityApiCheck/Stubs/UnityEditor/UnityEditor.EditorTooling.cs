@@ -1,7 +1,7 @@
 // STUB members of UnityEditor used by the editor tools' fixes for issue 36 (the sculpt shortcut's
 // guard, the Scene view's notification, the heightmap texture's import check), kept apart so that
 // changes elsewhere merge cleanly. Checked against UnityCsReference 2022.3: Editor/Mono/Selection.bindings.cs,
-// Editor/Mono/EditorWindow.cs, Editor/Mono/AssetPipeline/AssetImporter.bindings.cs,
+// Editor/Mono/EditorWindow.cs, Editor/Mono/HandleUtility.cs, Editor/Mono/AssetPipeline/AssetImporter.bindings.cs,
 // TextureImporter.bindings.cs, TextureImporterEnums.cs, Modules/AssetDatabase/Editor/ScriptBindings/AssetDatabase.bindings.cs.
 // SR:<Page> as in UnityEditor.cs. NOT Unity's assembly: signatures only.
 #pragma warning disable CS1591
@@ -14,6 +14,11 @@ namespace UnityEditor
     {
         public static GameObject[] gameObjects => null;                                      // SR:Selection-gameObjects (read only)
         public static Object[] objects { get; set; }                                         // SR:Selection-objects
+    }
+
+    public sealed partial class HandleUtility
+    {
+        public static int nearestControl { get => 0; set { } }                               // SR:HandleUtility-nearestControl
     }
 
     public partial class EditorWindow
