@@ -116,7 +116,7 @@ namespace GregoryTerrain.EditorTools
             // The type as this control sees it: while the tool holds the hot control, Unity sends it the
             // drag and the release even when the mouse is outside the Scene view.
             EventType type = e.GetTypeForControl(id);
-            if (type == EventType.MouseUp && e.button == 0 && GUIUtility.hotControl == id)
+            if (type == EventType.MouseUp && GUIUtility.hotControl == id && e.button == 0)
             {
                 EndDrag();   // before anything that may return early: the undo group and the mouse are always released
                 e.Use();
