@@ -22,7 +22,7 @@ namespace GregoryTerrain.Rig.Tests
 
         static string[] StagesOf(string[] keywords) =>
             keywords.Contains("GT_VERTEX_CACHE") ? Stages.Concat(CacheStages).ToArray() : Stages;
-        static readonly string[] Targets = { "spirv", "glsl450", "essl320", "msl21" };
+        static readonly string[] Targets = { "spirv", "glsl450", "essl320", "msl21", "dxc" };
 
         string packageRoot;
         string buildDir;
