@@ -10,8 +10,8 @@ cache's compute kernels, for GT_VERTEX_CACHE variants):
   4. spirv-cross -> GLSL 4.50, GLSL ES 3.20 and MSL 2.1,
   5. the two GLSL outputs compiled again by glslangValidator,
   6. Microsoft's DXC (../shared/dxc) on the same source, stage and keywords at HLSL 2018 (FXC's
-     language), front end and SPIR-V code generation only (-fcgl: the language errors FXC and DXC
-     share; DXC's output is not kept). Target "dxc".
+     language), front end and SPIR-V code generation only (-fcgl -Vd: the language errors FXC and
+     DXC share; the module is neither legalised nor kept). Target "dxc".
 Prints one line per variant and stage, then the counts. Exit status 1 on any error, and on any
 diagnostic line that ALLOWED_OUTPUT does not explain.
 
@@ -170,7 +170,7 @@ def compile_one(out_dir, variant, stage, includes, dxc=DXC):
         if step("spirv-cross msl", ["spirv-cross", spv, "--entry", entry] + MSL_OPTIONS
                 + MSL_STAGE_OPTIONS.get(sname, []) + ["--output", msl]):
             targets.append("msl21")
-    if step("dxc", [dxc, "-HV", "2018", "-spirv", "-fcgl", "-T", DXC_PROFILES[gstage], "-E", entry, "-Fo", os.devnull]
+    if step("dxc", [dxc, "-HV", "2018", "-spirv", "-fcgl", "-Vd", "-T", DXC_PROFILES[gstage], "-E", entry, "-Fo", os.devnull]
             + [f"-I{d}" for d in includes] + [f"-D{k}" for k in keywords] + STAGE_DEFINES.get(sname, []) + [ENTRY_FILE]):
         targets.append("dxc")
     with open(os.path.join(vdir, sname + ".log"), "w") as f:
