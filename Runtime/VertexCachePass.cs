@@ -132,12 +132,13 @@ namespace GregoryTerrain
             SetKeyword(shader, ShaderIds.SnowKeyword, snow);
             if (snow) shader.SetVector(ShaderIds.SnowMapSize, inputs.snowMapSize);
 
-            // Kernel 1 writes the factors (u2, _TileFactorsRW); kernel 2 reads them there and
-            // writes the records (u3, _VertexCacheRW). Both sample the surface: the patch buffers (and the noise table).
+            // Kernel 1 writes the factors (u2, _TileFactorsRW); kernel 2 reads them read-only (t5,
+            // _TileFactors: FXC refuses its loop on a UAV read) and writes the records (u3,
+            // _VertexCacheRW). Both sample the surface: the patch buffers (and the noise table).
             BindPatchBuffers(shader, _factorsKernel, inputs, snow);
             shader.SetBuffer(_factorsKernel, ShaderIds.TileFactorsRW, _factors);
             BindPatchBuffers(shader, _verticesKernel, inputs, snow);
-            shader.SetBuffer(_verticesKernel, ShaderIds.TileFactorsRW, _factors);
+            shader.SetBuffer(_verticesKernel, ShaderIds.TileFactors, _factors);
             shader.SetBuffer(_verticesKernel, ShaderIds.VertexCacheRW, _vertices);
 
             // A group a tile for the factors; groups (x, y, 0 .. G - 1) share tile y T + x for the vertices.

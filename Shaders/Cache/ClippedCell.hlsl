@@ -118,16 +118,16 @@ CellPointBlend CellPoint(float2 tess, TileFactorSet tile, TileFactorSet cell, fl
         uint e = at0.x ? 0u : 2u;
         float d = CellFactorOfEdge(tile.edge, e);
         float k = round(tess.y * d);
-        return clipU ? CellGridBlend(su * cell.inside.x, KeptLinePosition(cell.inside.y, kept.z, kept.w, d, k), cell.inside.x)
-                     : CellEdgeBlend(e, KeptLinePosition(CellFactorOfEdge(cell.edge, e), kept.z, kept.w, d, k), limit);
+        if (clipU) return CellGridBlend(su * cell.inside.x, KeptLinePosition(cell.inside.y, kept.z, kept.w, d, k), cell.inside.x);
+        return CellEdgeBlend(e, KeptLinePosition(CellFactorOfEdge(cell.edge, e), kept.z, kept.w, d, k), limit);
     }
     if (onV)
     {
         uint e = at0.y ? 1u : 3u;
         float d = CellFactorOfEdge(tile.edge, e);
         float k = round(tess.x * d);
-        return clipV ? CellGridBlend(KeptLinePosition(cell.inside.x, kept.x, kept.y, d, k), sv * cell.inside.y, cell.inside.x)
-                     : CellEdgeBlend(e, KeptLinePosition(CellFactorOfEdge(cell.edge, e), kept.x, kept.y, d, k), limit);
+        if (clipV) return CellGridBlend(KeptLinePosition(cell.inside.x, kept.x, kept.y, d, k), sv * cell.inside.y, cell.inside.x);
+        return CellEdgeBlend(e, KeptLinePosition(CellFactorOfEdge(cell.edge, e), kept.x, kept.y, d, k), limit);
     }
     float2 ij = round(tess * tile.inside);
     return CellGridBlend(KeptLinePosition(cell.inside.x, kept.x, kept.y, tile.inside.x, ij.x),

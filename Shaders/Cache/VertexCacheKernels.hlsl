@@ -137,7 +137,7 @@ float4 CachedTileFactorSample(uint tile, uint s, bool cellMoved)
 
 // Dispatch (T, T, 1), T = TilesAcrossInt(): a group a tile. Three ways, the same for every lane:
 //   the cell's factors held (its key and FactorInputs unchanged: an anchored pan, the camera still):
-//     lane 0 writes them (rounded) as the tile's; no sample, no barrier;
+//     lane 0 writes them (rounded) as the tile's; no sample;
 //   else the cell's 51 surface samples (CachedTileFactorSample) one a lane, read back while the
 //     cell holds; then its seven pieces (TileFactorPiece's arithmetic on the shared samples) one a
 //     lane; then lane 0 assembles, keeps the cell's factors and writes them rounded. Anchored, the
@@ -146,6 +146,9 @@ float4 CachedTileFactorSample(uint tile, uint s, bool cellMoved)
 // One lane a tile: a chain of ~50 evaluations; one lane a piece: ~11; one sample a lane: 1, the
 // shortest pass (performance.md, "Choices in the shaders, measured"). Why the held way: that one
 // evaluation is still most of a pan's pre-pass (performance.md, "Choices in the shaders, measured").
+// Every lane of the group reaches both barriers: whether the cell is held is read from the records (a
+// UAV), which FXC takes for non-uniform, and it refuses a barrier after a return on such a value
+// (error X3663); so the held way guards the work, not the barriers.
 [numthreads(64, 1, 1)]
 void CacheTileFactors(uint3 group : SV_GroupID, uint lane : SV_GroupIndex)
 {
@@ -165,18 +168,16 @@ void CacheTileFactors(uint3 group : SV_GroupID, uint lane : SV_GroupIndex)
     }
     // Anchored, the cell's factors and slots, even where the range keeps none of it yet: a pan
     // that keeps the cells dispatches nothing, and the hull clips (ClippedTileFactors).
-    if (!cellMoved && FactorInputsHeld(tile))
-    {
-        if (lane == 0u) WriteTileFactors(tile, HeldCellFactors(tile), rangeMoved);
-        return;
-    }
-    if (lane < GT_TILE_FACTOR_SAMPLES) gtTileFactorSamples[lane] = CachedTileFactorSample(tile, lane, cellMoved);
+    bool held = !cellMoved && FactorInputsHeld(tile);
+    if (!held && lane < GT_TILE_FACTOR_SAMPLES) gtTileFactorSamples[lane] = CachedTileFactorSample(tile, lane, cellMoved);
     GroupMemoryBarrierWithGroupSync();
     float3 cornerOS[4];
     [unroll] for (uint c = 0u; c < 4u; c++)
         cornerOS[c] = gtTileFactorSamples[c].xyz;
-    bool culled = TileCulled(cornerOS, TileNoiseMargin(FrameTileLayout(), tile));
-    if (!culled && lane < GT_TILE_FACTOR_PIECES)
+    // The pieces of a cell sampled now and in view.
+    bool pieces = false;
+    if (!held) pieces = !TileCulled(cornerOS, TileNoiseMargin(FrameTileLayout(), tile));
+    if (pieces && lane < GT_TILE_FACTOR_PIECES)
     {
         if (lane == 6u)
             gtTileFactorPieces[lane] = CentreErrorTessFactor(cornerOS, gtTileFactorSamples[GT_TILE_CENTRE_SAMPLE]);
@@ -195,15 +196,21 @@ void CacheTileFactors(uint3 group : SV_GroupID, uint lane : SV_GroupIndex)
     }
     GroupMemoryBarrierWithGroupSync();
     if (lane != 0u) return;
-    TileFactorSet cell = CulledTileFactors();
-    if (!culled)
+    TileFactorSet cell;
+    if (held)
+        cell = HeldCellFactors(tile);
+    else
     {
-        float piece[GT_TILE_FACTOR_PIECES];
-        [unroll] for (uint k = 0u; k < GT_TILE_FACTOR_PIECES; k++)
-            piece[k] = gtTileFactorPieces[k];
-        cell = TileFactorsOfPieces(piece);
+        cell = CulledTileFactors();
+        if (pieces)
+        {
+            float piece[GT_TILE_FACTOR_PIECES];
+            [unroll] for (uint k = 0u; k < GT_TILE_FACTOR_PIECES; k++)
+                piece[k] = gtTileFactorPieces[k];
+            cell = TileFactorsOfPieces(piece);
+        }
+        KeepCellFactors(tile, cell, cellMoved);
     }
-    KeepCellFactors(tile, cell, cellMoved);
     WriteTileFactors(tile, cell, rangeMoved);
 }
 
@@ -244,15 +251,16 @@ void VertexCachePoint(uint k, float4 edge, float2 inside, uint limit, out float2
 
 // Dispatch (T, T, G), G = VertexCacheGroupsPerTile(L): groups (x, y, 0 .. G - 1) share tile
 // y T + x, their G x GT_VERTEX_CACHE_VERTEX_GROUP lanes striding over its points (at most
-// GT_VERTEX_CACHE_PASSES each).
+// GT_VERTEX_CACHE_PASSES each). The factors come through the read-only _TileFactors (the same
+// buffer): FXC refuses a compute loop whose end depends on a UAV read without [allow_uav_condition].
 [numthreads(GT_VERTEX_CACHE_VERTEX_GROUP, 1, 1)]
 void CacheTileVertices(uint3 group : SV_GroupID, uint lane : SV_GroupIndex)
 {
     uint tiles = TilesAcrossInt();
     if (group.x >= tiles || group.y >= tiles) return;
     uint tile = group.y * tiles + group.x;
-    float4 edge = _TileFactorsRW[VertexCacheFactorIndex(tile)];
-    float4 inside = _TileFactorsRW[VertexCacheFactorIndex(tile) + 1u];
+    float4 edge = _TileFactors[VertexCacheFactorIndex(tile)];
+    float4 inside = _TileFactors[VertexCacheFactorIndex(tile) + 1u];
     if (inside.w == 0.0) return;   // culled (the draw emits nothing), or its slots are up to date
     uint limit = VertexCacheFactorLimit();
     uint base = tile * VertexCacheSlotsPerTile(limit);

@@ -138,8 +138,8 @@ float CoarseSeamEdgeFactor(uint drawPatch, uint edgeBit, int2 abUp)
     uint m = TileCountInt();
     uint level = LodLevelOfPatch(drawPatch, m), slot = LodSlotOfPatch(drawPatch, m);
     uint coarseEdge;
-    int half;
-    int2 coarseTile = FineSeamCoarseTile(edgeBit, int2(slot % m, slot / m), abUp, coarseEdge, half);
+    int upperHalf;
+    int2 coarseTile = FineSeamCoarseTile(edgeBit, int2(slot % m, slot / m), abUp, coarseEdge, upperHalf);
     uint coarseSlot = (uint)coarseTile.y * m + (uint)coarseTile.x;
     TileLayout coarse = LodLevelLayout(level + 1u);
     float3 cornerOS[4];
@@ -157,7 +157,8 @@ TileFactorSet LodTileFactors(uint drawPatch, TileFactorSet set)
     bool inside;
     int2 ab, abUp;
     LodTileSeams(drawPatch, coarseMask, fineMask, inside, ab, abUp);
-    if (inside || TileFactorsCulled(set)) return inside ? CulledTileFactors() : set;
+    if (inside) return CulledTileFactors();
+    if (TileFactorsCulled(set)) return set;
     float edge[4] = { set.edge.x, set.edge.y, set.edge.z, set.edge.w };
     [unroll] for (uint i = 0u; i < 4u; i++)
     {

@@ -87,15 +87,15 @@ float2 SeamCoarseTess(uint edge, int numerator, float halfFactor)
 }
 
 // The coarse tile across fine seam edge `edge` of fine tile `tile` at offset ab, the coarse tile's
-// edge on the seam, and which half of it the fine edge is.
-int2 FineSeamCoarseTile(uint edge, int2 tile, int2 ab, out uint coarseEdge, out int half)
+// edge on the seam, and which half of it the fine edge is (upperHalf 1: the upper tess half).
+int2 FineSeamCoarseTile(uint edge, int2 tile, int2 ab, out uint coarseEdge, out int upperHalf)
 {
     int2 f = 2 * ab + tile;   // the fine tile in fine cells of the coarse range
-    if (edge == GT_EDGE_U0) { coarseEdge = GT_EDGE_U1; half = f.y % 2; return int2(ab.x - 1, f.y / 2); }
-    if (edge == GT_EDGE_U1) { coarseEdge = GT_EDGE_U0; half = f.y % 2; return int2((f.x + 1) / 2, f.y / 2); }
-    if (edge == GT_EDGE_V0) { coarseEdge = GT_EDGE_V1; half = f.x % 2; return int2(f.x / 2, ab.y - 1); }
+    if (edge == GT_EDGE_U0) { coarseEdge = GT_EDGE_U1; upperHalf = f.y % 2; return int2(ab.x - 1, f.y / 2); }
+    if (edge == GT_EDGE_U1) { coarseEdge = GT_EDGE_U0; upperHalf = f.y % 2; return int2((f.x + 1) / 2, f.y / 2); }
+    if (edge == GT_EDGE_V0) { coarseEdge = GT_EDGE_V1; upperHalf = f.x % 2; return int2(f.x / 2, ab.y - 1); }
     coarseEdge = GT_EDGE_V0;
-    half = f.x % 2;
+    upperHalf = f.x % 2;
     return int2(f.x / 2, (f.y + 1) / 2);
 }
 
@@ -113,7 +113,7 @@ uint SeamEdgeAt(uint mask, float2 tess)
 float SeamAlong(uint edge, float2 tess) { return (edge & (GT_EDGE_U0 | GT_EDGE_U1)) != 0u ? tess.y : tess.x; }
 
 // The global point of a seam vertex at tess of tile `tile` of level `range`. Coarse side (fine
-// false): the edge draws 2g, n = round(along 2g). Fine side: g, n = round(along g) + half g on the
+// false): the edge draws 2g, n = round(along 2g). Fine side: g, n = round(along g) + upperHalf g on the
 // coarse tile across (`coarser`; this level at offset ab in its cells). round() recovers n from a
 // tessellator's fixed-point tess coordinate (lavapipe: 16.16). Both sides then form
 // RangeToTerrainPoint of the coarse range, tile and SeamCoarseTess, bit for bit the same.
@@ -127,9 +127,9 @@ TerrainPoint SeamCoarsePoint(bool fine, uint edge, float2 tess, float halfFactor
         return RangeToTerrainPoint(range, rangeOrigin, tiles, uint2(tile), SeamCoarseTess(edge, n, halfFactor));
     }
     uint coarseEdge;
-    int half;
-    int2 coarseTile = FineSeamCoarseTile(edge, tile, ab, coarseEdge, half);
-    int m = (int)round(along * halfFactor) + half * (int)halfFactor;
+    int upperHalf;
+    int2 coarseTile = FineSeamCoarseTile(edge, tile, ab, coarseEdge, upperHalf);
+    int m = (int)round(along * halfFactor) + upperHalf * (int)halfFactor;
     return RangeToTerrainPoint(coarser, rangeOrigin, tiles, uint2(coarseTile), SeamCoarseTess(coarseEdge, m, halfFactor));
 }
 

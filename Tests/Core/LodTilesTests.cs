@@ -82,7 +82,7 @@ namespace GregoryTerrain.Tests
                         {
                             if ((mask & edge) == 0) continue;
                             fineEdges++;
-                            LodTiles.FineSeamCoarseTile(edge, ti, tj, a, b, out int cti, out int ctj, out int coarseEdge, out int half);
+                            LodTiles.FineSeamCoarseTile(edge, ti, tj, a, b, out int cti, out int ctj, out int coarseEdge, out int upperHalf);
                             Assert.That(LodTiles.CoarseSeamEdges(cti, ctj, a, b, tiles) & coarseEdge, Is.Not.Zero,
                                         $"level {k} tile ({ti}, {tj}) edge {edge}: coarse tile ({cti}, {ctj}) has the edge on its seam");
                             Assert.That(LodTiles.TileInsideFiner(cti, ctj, a, b, tiles), Is.False, "the coarse tile across is drawn");
@@ -95,7 +95,7 @@ namespace GregoryTerrain.Tests
                                     var tess = (edge & (LodTiles.EdgeU0 | LodTiles.EdgeU1)) != 0
                                         ? new Float2(edge == LodTiles.EdgeU0 ? 0f : 1f, along) : new Float2(along, edge == LodTiles.EdgeV0 ? 0f : 1f);
                                     TerrainPoint qf = LodTiles.SeamCoarsePoint(true, edge, tess, g, ti, tj, range, coarser, a, b, origin, tiles);
-                                    int n = j + half * (int)g;
+                                    int n = j + upperHalf * (int)g;
                                     float coarseAlong = Fixed16(n, 2f * g);
                                     var ctess = (coarseEdge & (LodTiles.EdgeU0 | LodTiles.EdgeU1)) != 0
                                         ? new Float2(coarseEdge == LodTiles.EdgeU0 ? 0f : 1f, coarseAlong) : new Float2(coarseAlong, coarseEdge == LodTiles.EdgeV0 ? 0f : 1f);

@@ -108,12 +108,12 @@ namespace GregoryTerrain.Rig.Tests
                         foreach (int edge in new[] { LodTiles.EdgeU0, LodTiles.EdgeV0, LodTiles.EdgeU1, LodTiles.EdgeV1 })
                         {
                             if ((mask & edge) == 0) continue;
-                            LodTiles.FineSeamCoarseTile(edge, ti, tj, a, b, out int cti, out int ctj, out int coarseEdge, out int half);
+                            LodTiles.FineSeamCoarseTile(edge, ti, tj, a, b, out int cti, out int ctj, out int coarseEdge, out int upperHalf);
                             int g = Factor / 2;   // the fine seam edge draws g, the coarse one 2g = F
                             for (int j = 0; j <= g; j++)
                             {
                                 var (col, row) = EdgeVertex(edge, j, 2);
-                                var (ccol, crow) = EdgeVertex(coarseEdge, j + half * g, 1);
+                                var (ccol, crow) = EdgeVertex(coarseEdge, j + upperHalf * g, 1);
                                 int fo = Index(s, k, ti, tj, col, row), co = Index(s, k + 1, cti, ctj, ccol, crow);
                                 seamVertices++;
                                 bool same = true;

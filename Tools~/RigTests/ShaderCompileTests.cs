@@ -22,7 +22,7 @@ namespace GregoryTerrain.Rig.Tests
 
         static string[] StagesOf(string[] keywords) =>
             keywords.Contains("GT_VERTEX_CACHE") ? Stages.Concat(CacheStages).ToArray() : Stages;
-        static readonly string[] Targets = { "spirv", "glsl450", "essl320", "msl21" };
+        static readonly string[] Targets = { "spirv", "glsl450", "essl320", "msl21", "dxc" };
 
         string packageRoot;
         string buildDir;
@@ -175,6 +175,8 @@ namespace GregoryTerrain.Rig.Tests
                 Assert.That(vert, Does.Not.Contain("\"_ControlPoints\""), name);
                 string kernel = Disassemble(name, "cache_vertices");
                 Assert.That(kernel, Does.Contain("\"_ControlPoints\"").And.Contain("\"_VertexCacheRW\""), name);
+                // Its loop ends on the factors: read-only, as FXC wants (a UAV read there needs [allow_uav_condition]).
+                Assert.That(kernel, Does.Contain("\"_TileFactors\"").And.Not.Contain("\"_TileFactorsRW\""), name);
                 Assert.That(Disassemble(name, "cache_factors"), Does.Contain("\"_TileFactorsRW\""), name);
             }
             // Without the keyword nothing of the cache is there.
@@ -201,6 +203,38 @@ namespace GregoryTerrain.Rig.Tests
                     var (vrc, vtext) = Run("spirv-val", new[] { spv }, null);
                     Assert.That(vrc, Is.EqualTo(0), $"{kernel} mask {mask}: {vtext}");
                 }
+        }
+
+        // Unity's side of the cache's kernels: VertexCachePass must bind every buffer a kernel reads,
+        // under that kernel (an unbound one is an error at Dispatch in Unity, which the rig cannot
+        // see). The names each kernel of TerrainCache.compute reads (all effects on, spirv-cross
+        // reflection) against the ShaderIds the pass's SetBuffer calls give that kernel.
+        [Test]
+        public void VertexCachePassBindsEveryBufferEachKernelReads()
+        {
+            string src = Path.Combine(packageRoot, "Shaders", "Cache", "TerrainCache.compute");
+            string pass = File.ReadAllText(Path.Combine(packageRoot, "Runtime", "VertexCachePass.cs"));
+            var ids = Regex.Matches(File.ReadAllText(Path.Combine(packageRoot, "Runtime", "ShaderIds.cs")),
+                                    @"static readonly int (\w+) = Shader\.PropertyToID\(""(\w+)""\)")
+                .ToDictionary(m => m.Groups[1].Value, m => m.Groups[2].Value);
+            var patch = Regex.Match(pass, @"static void BindPatchBuffers\([^)]*\)\s*\{(.*?)\n        \}", RegexOptions.Singleline);
+            Assert.That(patch.Success, Is.True, "BindPatchBuffers not found in VertexCachePass.cs");
+            var patchNames = Regex.Matches(patch.Groups[1].Value, @"SetBuffer\(kernel, ShaderIds\.(\w+)").Select(m => ids[m.Groups[1].Value]).ToList();
+            foreach (var (kernel, field) in new[] { ("CacheTileFactors", "_factorsKernel"), ("CacheTileVertices", "_verticesKernel") })
+            {
+                var bound = Regex.Matches(pass, $@"SetBuffer\({field}, ShaderIds\.(\w+)").Select(m => ids[m.Groups[1].Value]).ToList();
+                if (Regex.IsMatch(pass, $@"BindPatchBuffers\(shader, {field},")) bound.AddRange(patchNames);
+                string spv = Path.Combine(buildDir, $"unity-cache-bindings-{kernel}.spv");
+                var (rc, text) = Run("glslangValidator", new[] { "-D", "-V", "-S", "comp", "-e", kernel, "--hlsl-iomap", "--stb", "2", "--suavb", "5",
+                                                                 "-DGT_NOISE", "-DGT_HEIGHT_COLOR", "-DGT_SNOW", "-DGT_NOISE_TABLE", "-o", spv, src }, null);
+                Assert.That(rc, Is.EqualTo(0), text);
+                var (rrc, json) = Run("spirv-cross", new[] { spv, "--reflect" }, null);
+                Assert.That(rrc, Is.EqualTo(0), json);
+                var read = Regex.Matches(Regex.Match(json, @"""ssbos""\s*:\s*\[(.*?)\]", RegexOptions.Singleline).Groups[1].Value, @"""name""\s*:\s*""(\w+)""")
+                    .Select(m => m.Groups[1].Value).ToList();
+                Assert.That(read, Is.Not.Empty, kernel);
+                Assert.That(read, Is.SubsetOf(bound), $"{kernel} reads [{string.Join(", ", read)}]; VertexCachePass binds [{string.Join(", ", bound)}]");
+            }
         }
 
         // --- helpers ------------------------------------------------------------------------------

@@ -10,8 +10,9 @@ namespace GregoryTerrain.Rig.Tests
 {
     /// <summary>
     /// <c>gt shaderlab</c> (Tools~/rig/shaderlab.py): every pass, variant and stage of
-    /// GregoryTerrain.shader and every compute kernel compiled with glslang against Unity's real
-    /// shader libraries (../shared/unity-shaderlib), then the .shader imported as a Built-in-only, a
+    /// GregoryTerrain.shader and every compute kernel compiled with glslang and with Microsoft's DXC
+    /// against Unity's real shader libraries (../shared/unity-shaderlib), linted for FXC's rules that
+    /// neither compiler enforces (Tools~/rig/fxc_lint.py), then the .shader imported as a Built-in-only, a
     /// URP-only and an HDRP-only project would import it. Also shows the check failing on broken
     /// copies of the package, and the PackageRequirements selection on a copy with known blocks.
     /// </summary>
@@ -35,7 +36,7 @@ namespace GregoryTerrain.Rig.Tests
             (_exitCode, _output) = RunScript("--counts");
             _seconds = clock.Elapsed.TotalSeconds;
             TestContext.Out.WriteLine($"gt shaderlab --counts: {_seconds:F0} s, exit {_exitCode}");
-            foreach (string l in Lines().Where(l => l.StartsWith("shaderlab") || l.StartsWith("cost ") || Regex.IsMatch(l, @"^project \w+: subshaders")))
+            foreach (string l in Lines().Where(l => l.StartsWith("shaderlab") || l.StartsWith("cost ") || l.StartsWith("lint ") || Regex.IsMatch(l, @"^project \w+: subshaders")))
                 TestContext.Out.WriteLine(l);
         }
 
@@ -61,6 +62,63 @@ namespace GregoryTerrain.Rig.Tests
                 .FirstOrDefault(x => x.Success);
             Assert.That(m, Is.Not.Null, $"no summary line for {pipeline}:\n" + string.Join("\n", Lines().Take(40)));
             return (int.Parse(m.Groups[1].Value), int.Parse(m.Groups[2].Value), int.Parse(m.Groups[3].Value), int.Parse(m.Groups[4].Value));
+        }
+
+        (int compiled, int failed, int limit) DxcSummary(string pipeline)
+        {
+            var m = Lines().Select(l => Regex.Match(l, $@"^shaderlab dxc {pipeline}: (\d+) compiled, (\d+) failed, (\d+) dxc-limit$"))
+                .FirstOrDefault(x => x.Success);
+            Assert.That(m, Is.Not.Null, $"no DXC summary line for {pipeline}:\n" + string.Join("\n", Lines().Where(l => l.StartsWith("shaderlab"))));
+            return (int.Parse(m.Groups[1].Value), int.Parse(m.Groups[2].Value), int.Parse(m.Groups[3].Value));
+        }
+
+        /// <summary>
+        /// DXC (HLSL 2018, Unity's use_dxc defines) compiles every case glslang compiles: FXC's language
+        /// rules that glslang lets through (a conditional operator on structs, `int float` after
+        /// Built-in's `#define half float`) fail here.
+        /// </summary>
+        [TestCase("URP")]
+        [TestCase("HDRP")]
+        [TestCase("Builtin")]
+        [TestCase("Compute")]
+        public void EveryCaseCompilesWithDxc(string pipeline)
+        {
+            var d = DxcSummary(pipeline);
+            var g = Summary(pipeline);
+            TestContext.Out.WriteLine($"{pipeline}: DXC {d.compiled} compiled, {d.failed} failed, {d.limit} dxc-limit; glslang {g.compiled} compiled");
+            Assert.That(d.failed, Is.EqualTo(0), Failures("dxc FAIL " + pipeline));
+            Assert.That(d.compiled + d.failed + d.limit, Is.EqualTo(g.compiled + g.failed + g.limit), pipeline + ": DXC saw every case");
+            Assert.That(d.compiled, Is.GreaterThan(0), pipeline + ": nothing compiled");
+        }
+
+        /// <summary>A failure put down to a known DXC/FXC difference is named on its own line, one per case.</summary>
+        [Test]
+        public void DxcLimitCasesAreNamedOneByOne()
+        {
+            var limits = Lines().Where(l => l.StartsWith("dxc-limit: ")).ToList();
+            foreach (string l in limits)
+                Assert.That(l, Does.Match(@"^dxc-limit: (URP|HDRP|Builtin|Compute) .+: [\w-]+$"), l);
+            int counted = new[] { "URP", "HDRP", "Builtin", "Compute" }.Sum(p => DxcSummary(p).limit);
+            Assert.That(limits.Count, Is.EqualTo(counted), "every dxc-limit case is listed");
+        }
+
+        /// <summary>
+        /// FXC's rules that neither compiler enforces (Tools~/rig/fxc_lint.py: barriers in varying flow,
+        /// loops ending on a UAV read, reserved words as names, groupshared size): no finding in any
+        /// pipeline. Each finding is listed as "lint rule: file:line: message".
+        /// </summary>
+        [TestCase("URP")]
+        [TestCase("HDRP")]
+        [TestCase("Builtin")]
+        [TestCase("Compute")]
+        public void TheLintFindsNothing(string pipeline)
+        {
+            var m = Lines().Select(l => Regex.Match(l, $@"^shaderlab lint {pipeline}: (\d+) findings$")).FirstOrDefault(x => x.Success);
+            Assert.That(m, Is.Not.Null, $"no lint summary line for {pipeline}");
+            var findings = Lines().Where(l => l.StartsWith("lint ")).ToList();
+            foreach (string l in findings)
+                Assert.That(l, Does.Match(@"^lint [\w-]+: \S+:\d+: .+$"), l);
+            Assert.That(int.Parse(m.Groups[1].Value), Is.EqualTo(0), string.Join("\n", findings));
         }
 
         [TestCase("URP")]
@@ -257,6 +315,50 @@ namespace GregoryTerrain.Rig.Tests
         }
 
         /// <summary>
+        /// An error only DXC sees (FXC's language: a conditional operator choosing between structs,
+        /// which glslang accepts) fails the check on DXC's summary line, the error naming the operator.
+        /// </summary>
+        [Test]
+        public void ADxcOnlyErrorFailsTheCheck()
+        {
+            using var copy = new ShaderLibraryTests.PackageCopy();
+            string adapter = copy.AdapterOf("UniversalPipeline");
+            File.AppendAllText(adapter, "\nstruct GtRigPair { float a; };\n"
+                                        + "GtRigPair GT_RigPick(bool c, GtRigPair x, GtRigPair y) { return c ? x : y; }\n");
+            var (code, output) = RunScript("--package", copy.Root, "--shaderlib", ShaderLib, "--check", "pipelines",
+                                           "--pipeline", "URP", "--variants", "base", "--quiet");
+            Assert.That(output, Does.Match(@"shaderlab URP: \d+ compiled, 0 failed"), "glslang accepts it");
+            var m = Regex.Match(output, @"shaderlab dxc URP: (\d+) compiled, (\d+) failed");
+            Assert.That(m.Success, Is.True, output);
+            Assert.That(int.Parse(m.Groups[2].Value), Is.GreaterThan(0), output);
+            Assert.That(output, Does.Match(@"dxc FAIL URP [^\n]*\n\s+[^\n]*URPAdapter\.hlsl:\d+:\d+: error: conditional operator"), output);
+            Assert.That(code, Is.EqualTo(1));
+        }
+
+        /// <summary>
+        /// A lint finding fails the check: a copy whose CacheTileFactors returns on a value read from
+        /// its RW buffer before the group's barrier (FXC error X3663), on a kernel both compilers accept.
+        /// </summary>
+        [Test]
+        public void ALintFindingFailsTheCheck()
+        {
+            using var copy = new ShaderLibraryTests.PackageCopy();
+            string kernels = Path.Combine(copy.Root, "Shaders", "Cache", "VertexCacheKernels.hlsl");
+            var lines = File.ReadAllLines(kernels).ToList();
+            int barrier = lines.FindIndex(l => l.Trim() == "GroupMemoryBarrierWithGroupSync();");
+            Assert.That(barrier, Is.GreaterThan(0), "no barrier in " + kernels);
+            lines.Insert(barrier, "    if (_TileFactorsRW[tile].x < 0.0) return;");
+            File.WriteAllLines(kernels, lines);
+            int line = barrier + 2;   // the barrier, 1-based, after the inserted line
+            var (code, output) = RunScript("--package", copy.Root, "--shaderlib", ShaderLib, "--check", "pipelines",
+                                           "--pipeline", "Compute", "--variants", "base", "--quiet");
+            Assert.That(output, Does.Match(@"shaderlab dxc Compute: \d+ compiled, 0 failed"), "DXC accepts it");
+            Assert.That(output, Does.Contain($"lint barrier-in-varying-flow: Shaders/Cache/VertexCacheKernels.hlsl:{line}: "), output);
+            Assert.That(output, Does.Match(@"shaderlab lint Compute: [1-9]\d* findings"), output);
+            Assert.That(code, Is.EqualTo(1));
+        }
+
+        /// <summary>
         /// The glslang limit is recognised by its own spirv-val error only: any other error in the
         /// Built-in SHADOWS_SCREEN variants is a failure, not a glslang-limit.
         /// </summary>
@@ -337,6 +439,14 @@ namespace GregoryTerrain.Rig.Tests
             var (code, output) = RunScript("--package", copy.Root, "--shaderlib", ShaderLib, "--check", "projects", "--selection-only");
             Assert.That(code, Is.EqualTo(2), output);
             Assert.That(output, Does.Contain("SubShader ").And.Contain(message), output);
+        }
+
+        [Test]
+        public void MissingDxcIsAnErrorSayingWhere()
+        {
+            var (code, output) = RunScript("--dxc", Path.Combine(Path.GetTempPath(), "gt-no-such-dxc"), "--variants", "base");
+            Assert.That(code, Is.EqualTo(2), output);
+            Assert.That(output, Does.Contain("no DXC there").And.Contain("gt-no-such-dxc"), output);
         }
 
         [Test]

@@ -2,7 +2,8 @@
 """gt shaderlab: compile the package's shaders against Unity's REAL shader libraries, off Unity.
 
 Every SubShader/Pass of Shaders/GregoryTerrain.shader (and every kernel of every Shaders/**/*.compute)
-is compiled with glslang's HLSL front end, once per stage its #pragma lines name (vertex -> vert,
+is compiled with glslang's HLSL front end and with Microsoft's DXC, and linted for FXC's rules that
+neither enforces (fxc_lint.py), once per stage its #pragma lines name (vertex -> vert,
 hull -> tesc, domain -> tese, fragment -> frag, kernel -> comp) and keyword combination (none, each
 keyword alone, all effects together, the effects with the first keyword of every other set), then
 validated with spirv-val. Includes resolve as in a Unity project: "Packages/<name>/..." to the
@@ -24,9 +25,24 @@ are emulated after preprocessing (see the shaderlib README), each reported per c
 A case that fails only for a known glslang limit is printed "glslang-limit: <case>: <limit>", never
 skipped; any other failure in it still fails.
 
+DXC, the second compiler (../shared/dxc): Unity 2022.3 compiles every platform with FXC, which
+cannot run here; DXC is the closest compiler that does and the one Unity uses with `#pragma use_dxc`.
+Each case is compiled with `-HV 2018` (FXC's HLSL), its own platform defines and keywords (the
+Vulkan ones glslang gets) plus UNITY_COMPILER_DXC, so that Unity's headers take their DXC paths, and
+Unity's DXC mapping of the HLSLcc precision types emulated by -D (DXC_EMULATED). Target: SPIR-V,
+stopping after code generation (-fcgl, unvalidated: -Vd). Why: the language errors FXC refuses and glslang accepts
+(`int float`, `cond ? structA : structB`) are DXC front-end errors, caught the same on any target;
+DXIL with D3D defines would test the D3D header path, which holds no package code, at 15x the cost
+(a URP hull stage: 31 CPU s against 2); SPIR-V legalisation and optimisation find no such error and
+would double DXC's share of the check. The SPIR-V, on the platform defines the harness uses, is the
+module a later check can run once DXC_OPTIONS legalises it (-O0). DXC's failures are failures;
+a known DXC/FXC difference would be a named DXC_LIMITS entry, printed "dxc-limit: <case>: <name>".
+
 Checks (--check, default all):
-  pipelines  every SubShader with every library visible; per-pipeline summary
-             "shaderlab <pipeline>: N compiled, N failed, N glslang-limit, N emulated".
+  pipelines  every SubShader with every library visible; per-pipeline summaries
+             "shaderlab <pipeline>: N compiled, N failed, N glslang-limit, N emulated",
+             "shaderlab dxc <pipeline>: N compiled, N failed, N dxc-limit" and
+             "shaderlab lint <pipeline>: N findings" (each "lint <rule>: <file>:<line>: <message>").
   projects   the .shader as a Built-in-only, a URP-only and an HDRP-only project imports it: a
              SubShader or Pass whose PackageRequirements name an absent package (or a version or
              Unity version outside its ranges) is skipped, every other one compiles with only that
@@ -38,8 +54,9 @@ Checks (--check, default all):
 --package DIR  check another copy of the package (default: the one holding this script); the
              libraries default to DIR/../shared/unity-shaderlib (--shaderlib DIR to override).
 --variants base  only the no-keyword variant (KEYWORD: only the variants with it); --pipeline URP,HDRP,Builtin,Compute  only those.
-Exit 1 on any failure (a project's compile errors included), 2 on bad input (missing libraries, a
-PackageRequirements block Unity would reject).
+--dxc PATH   DXC (default ../shared/dxc/bin/dxc beside this package); --no-dxc: glslang only.
+Exit 1 on any failure (a project's compile errors, a DXC failure and a lint finding included), 2 on
+bad input (missing libraries or DXC, a PackageRequirements block Unity would reject).
 """
 import argparse
 import concurrent.futures
@@ -52,6 +69,8 @@ import sys
 import tempfile
 import threading
 import time
+
+import fxc_lint
 
 RIG_DIR = os.path.dirname(os.path.abspath(__file__))
 DEFAULT_PKG = os.path.dirname(os.path.dirname(RIG_DIR))
@@ -92,6 +111,23 @@ PLATFORM_DEFINES = {"SHADOWS_SCREEN": ["UNITY_NO_SCREENSPACE_SHADOWS"]}
 # Keywords that only change another keyword's path: alone they compile to the base variant, so
 # each is also compiled with the keyword whose path it changes.
 MODIFIERS = {"GT_NOISE_TABLE": "GT_NOISE"}
+
+# DXC: Microsoft's DirectX Shader Compiler (../shared/dxc), HLSL 2018 (FXC's language), SPIR-V.
+DXC_PROFILES = {"vert": "vs_6_0", "tesc": "hs_6_0", "tese": "ds_6_0", "frag": "ps_6_0", "comp": "cs_6_0"}
+# What Unity defines for a `#pragma use_dxc` compile: UNITY_COMPILER_DXC, which the headers test to take
+# their DXC paths (Built-in HLSLSupport.cginc and SRP Core Common.hlsl: "DXC no longer supports DX9-style
+# HLSL syntax for sampler2D, tex2D and the like", emulated there with sampler2D_f/_h structs; SRP Core
+# API/Vulkan.hlsl: the pre-transform constant; Common.hlsl: wave intrinsics left alone). On the platform
+# defines glslang uses (SHADER_API_VULKAN, ...), as Unity's own Vulkan compile with use_dxc.
+DXC_DEFINES = ["UNITY_COMPILER_DXC=1"]
+# Unity's shader compiler front end, not the headers, maps the HLSLcc precision types on GLES3, Vulkan,
+# Metal and Switch (HLSLSupport.cginc: on the other DXC platforms "we want the emulated types to work
+# directly e.g without needing to redefine 'sampler2D' to 'sampler2D_f'"): emulated by -D, on every case.
+DXC_EMULATED = ([f"sampler{t}=sampler{t}_f" for t in ("1D", "2D", "3D", "CUBE")]
+                + [f"sampler{t}_float=sampler{t}_f" for t in ("1D", "2D", "3D", "CUBE")]
+                + [f"sampler{t}_half=sampler{t}_h" for t in ("1D", "2D", "3D", "CUBE")]
+                + [f"Texture{t}_{p}=Texture{t}" for t in ("2D", "2DArray", "Cube", "CubeArray", "3D", "2DMS")
+                   for p in ("half", "float")])
 
 KEYWORD_PRAGMA = re.compile(r"^(shader_feature|multi_compile)(_local)?(_vertex|_fragment|_hull|_domain)?$")
 PRAGMA_SUFFIX_STAGES = {"_vertex": "vert", "_fragment": "frag", "_hull": "tesc", "_domain": "tese"}
@@ -530,13 +566,13 @@ def emulate(text):
     return text, applied
 
 
-SHADOW_CONTEXT_MEMBER = re.compile(r"^\s*StructuredBuffer\s*<\s*HDShadowData\s*>\s*shadowDatas\s*;\s*$", re.M)
-SHADOW_CONTEXT_SET = re.compile(r"^\s*\w+\s*\.\s*shadowDatas\s*=\s*_HDShadowDatas\s*;\s*$", re.M)
+SHADOW_CONTEXT_MEMBER = re.compile(r"^[ \t]*StructuredBuffer\s*<\s*HDShadowData\s*>\s*shadowDatas\s*;[ \t]*$", re.M)
+SHADOW_CONTEXT_SET = re.compile(r"^[ \t]*\w+\s*\.\s*shadowDatas\s*=\s*_HDShadowDatas\s*;[ \t]*$", re.M)
 SHADOW_CONTEXT_READ = re.compile(r"\b\w+\s*\.\s*shadowDatas\b")
 
 
-SHADOW_DATAS_GLOBAL = re.compile(r"^\s*StructuredBuffer\s*<\s*HDShadowData\s*>\s*_HDShadowDatas\s*;\s*$", re.M)
-SHADOW_CONTEXT_STRUCT = re.compile(r"^\s*struct\s+HDShadowContext\b", re.M)
+SHADOW_DATAS_GLOBAL = re.compile(r"^[ \t]*StructuredBuffer\s*<\s*HDShadowData\s*>\s*_HDShadowDatas\s*;[ \t]*$", re.M)
+SHADOW_CONTEXT_STRUCT = re.compile(r"^[ \t]*struct\s+HDShadowContext\b", re.M)
 
 
 def emulate_shadow_context_buffer(text):
@@ -549,7 +585,8 @@ def emulate_shadow_context_buffer(text):
     text, members = SHADOW_CONTEXT_MEMBER.subn("", text)
     text = SHADOW_DATAS_GLOBAL.sub("", text)
     struct = SHADOW_CONTEXT_STRUCT.search(text)
-    text = text[:struct.start()] + "\nStructuredBuffer<HDShadowData> _HDShadowDatas;\n" + text[struct.start():]
+    # On the struct's own line: the line numbers after it stay those of the source.
+    text = text[:struct.start()] + "StructuredBuffer<HDShadowData> _HDShadowDatas; " + text[struct.start():]
     text, sets = SHADOW_CONTEXT_SET.subn("", text)
     text, reads = SHADOW_CONTEXT_READ.subn("_HDShadowDatas", text)
     return text, members + sets + reads
@@ -570,16 +607,38 @@ def _builtin_screen_shadow(case, errors):
 
 LIMITS = [("builtin-shadows-screen-tex2Dproj", _builtin_screen_shadow)]
 
+# Known differences between DXC and FXC, each a (name, test) like LIMITS: a DXC failure is put down
+# to one only when the test says so; none is needed today.
+DXC_LIMITS = []
+# Front end and code generation only (see the docstring); -Vd: the module is not legalised, so
+# spirv-val would refuse what legalisation removes (Built-in's emulated sampler2D_f struct holding a
+# texture and a sampler). ["-O0"] would legalise and validate it, at about twice DXC's time.
+DXC_OPTIONS = ["-fcgl", "-Vd"]
+
+
+def hlsl_blocks_only(shader_text):
+    """A .shader with everything outside its HLSLPROGRAM blocks blanked (line numbers kept)."""
+    out, pos = [], 0
+    for m in re.finditer(r"HLSLPROGRAM(.*?)ENDHLSL", shader_text, flags=re.S):
+        out.append(re.sub(r"[^\n]", " ", shader_text[pos:m.start(1)]))
+        out.append(m.group(1))
+        pos = m.end(1)
+    out.append(re.sub(r"[^\n]", " ", shader_text[pos:]))
+    return "".join(out)
+
 
 # ---------------------------------------------------------------------------------------------
 # Compilation
 
 class Rig:
-    def __init__(self, pkg, shaderlib, tmp, jobs, counts):
-        self.pkg, self.shaderlib, self.tmp, self.jobs, self.counts = pkg, shaderlib, tmp, jobs, counts
+    def __init__(self, pkg, shaderlib, tmp, jobs, counts, dxc=None):
+        self.pkg, self.shaderlib, self.tmp, self.jobs, self.counts, self.dxc = pkg, shaderlib, tmp, jobs, counts, dxc
         self.cache, self.lock, self.serial = {}, threading.Lock(), 0
         self.preprocessed = 0
         self.resolved = {}   # Case.key() -> (result, logical paths of the files it included), all libraries visible
+        self.dxc_cache = {}  # Case.key() -> DXC's result
+        self.lint_cache = {}  # (text hash, kernel) or package file -> findings
+        self.banned = fxc_lint.banned_words(shaderlib)
 
     def include_root(self, name, packages):
         """A folder whose Packages/ holds the package under test and the given libraries."""
@@ -595,10 +654,11 @@ class Rig:
             self.serial += 1
             return os.path.join(self.tmp, f"c{self.serial}{suffix}")
 
-    def run_case(self, case, includes, visible=None):
+    def run_case(self, case, includes, visible=None, lint=None):
         """-> (status 'ok' | 'fail' | 'limit', lines, emulated list, instruction count or None).
         visible: the packages a project has (None: all). A case whose files, with every library
-        visible, all lie in visible packages preprocesses to the same text: its result is reused."""
+        visible, all lie in visible packages preprocesses to the same text: its result is reused.
+        lint: a list that takes the case's lint findings (the pipelines check)."""
         if case.source is None:
             return "fail", [], [], None
         key = case.key()
@@ -606,12 +666,12 @@ class Rig:
             result, used = self.resolved[key]
             if all(not u.startswith("Packages/") or u.split("/")[1] in visible for u in used):
                 return result
-        result, used = self.preprocess_and_compile(case, includes)
+        result, used = self.preprocess_and_compile(case, includes, lint)
         if visible is None:
             self.resolved[key] = (result, used)
         return result
 
-    def preprocess_and_compile(self, case, includes):
+    def preprocess_and_compile(self, case, includes, lint=None):
         with self.lock:
             self.preprocessed += 1
         cmd = (["glslangValidator", "-D", "-E", "-S", case.stage, "-e", case.entry]
@@ -627,6 +687,8 @@ class Rig:
         for d in includes:
             text = text.replace(d + "/", "")
         used = set(re.findall(r'(?m)^#line \d+ "([^"]+)"', text))
+        if lint is not None:
+            lint.extend(self.lint(case, text, used))
         text, applied = emulate(text)
         key = hashlib.sha256(f"{case.stage}\0{case.entry}\0{text}".encode()).hexdigest()
         with self.lock:
@@ -663,6 +725,96 @@ class Rig:
     def run(self, cases, includes, visible=None):
         with concurrent.futures.ThreadPoolExecutor(self.jobs) as pool:
             return list(pool.map(lambda c: self.run_case(c, includes, visible), cases))
+
+    def run_pipelines(self, cases, includes):
+        """[(glslang result, DXC result or None, lint findings)] per case, every compile in one pool."""
+        def one(case):
+            found = []
+            result = self.run_case(case, includes, None, found)
+            return result, (self.run_dxc(case, includes) if self.dxc else None), found
+        with concurrent.futures.ThreadPoolExecutor(self.jobs) as pool:
+            return list(pool.map(one, cases))
+
+    # -- DXC
+
+    def run_dxc(self, case, includes):
+        """-> (status 'ok' | 'fail' | 'limit', lines). DXC preprocesses the pass itself (its own
+        preprocessor, with Unity's DXC defines); the same compile in two cases runs once."""
+        if case.source is None:
+            return "fail", ["no HLSLPROGRAM block"]
+        key = case.key()
+        with self.lock:
+            hit = self.dxc_cache.get(key)
+        if hit is None:
+            hit = self.dxc_compile(case, includes)
+            with self.lock:
+                self.dxc_cache[key] = hit
+        ok, errors = hit
+        if ok:
+            return "ok", []
+        for name, test in DXC_LIMITS:
+            if test(case, errors):
+                return "limit", [name] + errors
+        return "fail", errors
+
+    def dxc_compile(self, case, includes):
+        spv = self.next_path(".dxc.spv")
+        cmd = ([self.dxc, "-HV", "2018", "-spirv", "-T", DXC_PROFILES[case.stage], "-E", case.entry] + DXC_OPTIONS
+               + ["-Fo", spv] + [f"-I{d}" for d in includes]
+               + [f"-D{d}" for d in case.defines() + DXC_DEFINES + DXC_EMULATED] + [case.source])
+        p = subprocess.run(cmd, capture_output=True, text=True)
+        out = p.stdout + p.stderr
+        for d in includes:
+            out = out.replace(d + "/", "")
+        errors = [l.strip() for l in out.splitlines() if re.search(r"\berror\b", l)]
+        if p.returncode != 0:
+            return False, errors or [l.strip() for l in out.splitlines() if l.strip()][:12] or [f"dxc exit {p.returncode}"]
+        return True, []
+
+    # -- lint (fxc_lint.py)
+
+    def package_file(self, path):
+        """The package-relative path of a file the case included, or None (Unity's headers)."""
+        prefix = f"Packages/{PACKAGE_NAME}/"
+        if path.startswith(prefix):
+            return os.path.normpath(path[len(prefix):])
+        full = os.path.normpath(path)
+        return os.path.relpath(full, self.pkg) if full.startswith(self.pkg + os.sep) else None
+
+    def lint(self, case, text, used):
+        """FXC's rules on the case (fxc_lint.py): a kernel's flow and groupshared size on its
+        preprocessed text, reserved-name on the package's files the case includes."""
+        found = []
+        if case.stage == "comp":
+            key = (hashlib.sha256(text.encode()).hexdigest(), case.entry)
+            with self.lock:
+                kernel = self.lint_cache.get(key)
+            if kernel is None:
+                raw = []
+                fxc_lint.lint_text(text, case.source, case.entry,
+                                   lambda rule, tok, msg: raw.append((rule, tok.file, tok.line, msg)))
+                kernel = [(rule, self.package_file(f), line, msg) for rule, f, line, msg in raw if self.package_file(f)]
+                with self.lock:
+                    self.lint_cache[key] = kernel
+            found += kernel
+        for path in sorted(used):
+            rel = self.package_file(path)
+            if rel is None or not os.path.isfile(os.path.join(self.pkg, rel)):
+                continue
+            with self.lock:
+                names = self.lint_cache.get(rel)
+            if names is None:
+                with open(os.path.join(self.pkg, rel), encoding="utf-8") as f:
+                    source = f.read()
+                if rel.endswith(".shader"):
+                    source = hlsl_blocks_only(source)
+                names = []
+                fxc_lint.lint_source_names(source, rel, self.banned,
+                                           lambda rule, tok, msg: names.append((rule, tok.file, tok.line, msg)))
+                with self.lock:
+                    self.lint_cache[rel] = names
+            found += names
+        return found
 
 
 def count_instructions(spv):
@@ -717,6 +869,38 @@ def report(cases, results, prefix, quiet=False):
     return totals
 
 
+def report_dxc(cases, results, quiet=False):
+    """DXC's failures and known differences per case; {pipeline: [compiled, failed, limit]}."""
+    totals = {}
+    for case, (status, lines) in zip(cases, results):
+        t = totals.setdefault(case.pipeline, [0, 0, 0])
+        if status == "ok":
+            t[0] += 1
+        elif status == "limit":
+            t[2] += 1
+            print(f"dxc-limit: {case.label}: {lines[0]}")
+            for l in lines[1:]:
+                print("     " + l)
+        else:
+            t[1] += 1
+            print(f"dxc FAIL {case.label}")
+            for l in lines[:12]:
+                print("     " + l)
+    return totals
+
+
+def report_lint(cases, found):
+    """Each distinct finding once ("lint <rule>: <file>:<line>: <message>"); {pipeline: count}."""
+    first, per_pipeline = {}, {}
+    for case, findings in zip(cases, found):
+        for rule, file, line, message in findings:
+            first.setdefault((rule, file, line), message)
+            per_pipeline.setdefault(case.pipeline, set()).add((rule, file, line))
+    for (rule, file, line), message in sorted(first.items()):
+        print(f"lint {rule}: {file}:{line}: {message}")
+    return {p: len(per_pipeline.get(p, ())) for p in dict.fromkeys(c.pipeline for c in cases)}, len(first)
+
+
 def print_counts(cases, results):
     print("instruction counts (SPIR-V after spirv-opt -O, function bodies; see shaderlab.py count_instructions)")
     rows = {}
@@ -743,6 +927,9 @@ def main(argv=None):
     ap.add_argument("--selection-only", action="store_true",
                     help="projects check: print which SubShaders and passes each project kind uses, compile nothing")
     ap.add_argument("--quiet", action="store_true", help="print failures, limits and summaries only")
+    ap.add_argument("--dxc", default=os.path.join(DEFAULT_PKG, "..", "shared", "dxc", "bin", "dxc"),
+                    help="Microsoft's DXC (default: ../shared/dxc/bin/dxc beside this package)")
+    ap.add_argument("--no-dxc", action="store_true", help="glslang only, for a quick look (the tests run both)")
     args = ap.parse_args(argv)
 
     pkg = os.path.abspath(args.package)
@@ -761,6 +948,11 @@ def main(argv=None):
         if subprocess.run(["which", tool], capture_output=True).returncode != 0:
             print(f"shaderlab: error: {tool} not found (run Tools~/gt setup)", file=sys.stderr)
             return 2
+    dxc = None if args.no_dxc else os.path.abspath(args.dxc)
+    if dxc and not os.access(dxc, os.X_OK):
+        print(f"shaderlab: error: --dxc {dxc}: no DXC there. Microsoft's DXC sits beside the package as "
+              "../shared/dxc (see its README); pass --dxc PATH to use another copy.", file=sys.stderr)
+        return 2
     try:
         subs = parse_shader(shader)
     except ValueError as e:
@@ -769,13 +961,16 @@ def main(argv=None):
 
     failed, started = False, time.time()
     with tempfile.TemporaryDirectory(prefix="gt-shaderlab-") as tmp:
-        rig = Rig(pkg, shaderlib, tmp, args.jobs, args.counts)
+        rig = Rig(pkg, shaderlib, tmp, args.jobs, args.counts, dxc)
         if args.check in ("all", "pipelines"):
             cases = shader_cases(subs, shader, tmp, "all", args.variants) + compute_cases(pkg, args.variants)
             if args.pipeline:
                 cases = [c for c in cases if c.pipeline in args.pipeline.split(",")]
-            results = rig.run(cases, rig.include_root("all", LIBRARIES))
+            outcome = rig.run_pipelines(cases, rig.include_root("all", LIBRARIES))
+            results = [o[0] for o in outcome]
             totals = report(cases, results, "", args.quiet)
+            dxc_totals = report_dxc(cases, [o[1] for o in outcome]) if dxc else {}
+            lint_totals, lint_all = report_lint(cases, [o[2] for o in outcome])
             if args.counts:
                 print_counts(cases, results)
             all_t = [0, 0, 0, 0]
@@ -784,6 +979,19 @@ def main(argv=None):
                 all_t = [a + b for a, b in zip(all_t, t)]
             print(f"shaderlab: {all_t[0]} compiled, {all_t[1]} failed, {all_t[2]} glslang-limit, {all_t[3]} emulated")
             failed |= all_t[1] > 0 or all_t[0] == 0
+            if dxc:
+                print("dxc emulated (every case): unity-dxc-precision-types (" + ", ".join(DXC_EMULATED[:3]) + ", ...)")
+                all_d = [0, 0, 0]
+                for pipeline, t in dxc_totals.items():
+                    print(f"shaderlab dxc {pipeline}: {t[0]} compiled, {t[1]} failed, {t[2]} dxc-limit")
+                    all_d = [a + b for a, b in zip(all_d, t)]
+                print(f"shaderlab dxc: {all_d[0]} compiled, {all_d[1]} failed, {all_d[2]} dxc-limit "
+                      f"({len(rig.dxc_cache)} distinct programs)")
+                failed |= all_d[1] > 0 or all_d[0] == 0
+            for pipeline, n in lint_totals.items():
+                print(f"shaderlab lint {pipeline}: {n} findings")
+            print(f"shaderlab lint: {lint_all} findings")
+            failed |= lint_all > 0
         if args.check in ("all", "projects"):
             for kind, installed in PROJECTS.items():
                 used, skipped, kept = [], [], []

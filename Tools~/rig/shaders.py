@@ -8,11 +8,14 @@ cache's compute kernels, for GT_VERTEX_CACHE variants):
   2. spirv-val,
   3. the bindings, read back with spirv-cross --reflect, compared with EXPECTED_BINDINGS,
   4. spirv-cross -> GLSL 4.50, GLSL ES 3.20 and MSL 2.1,
-  5. the two GLSL outputs compiled again by glslangValidator.
+  5. the two GLSL outputs compiled again by glslangValidator,
+  6. Microsoft's DXC (../shared/dxc) on the same source, stage and keywords at HLSL 2018 (FXC's
+     language), front end and SPIR-V code generation only (-fcgl -Vd: the language errors FXC and
+     DXC share; the module is neither legalised nor kept). Target "dxc".
 Prints one line per variant and stage, then the counts. Exit status 1 on any error, and on any
 diagnostic line that ALLOWED_OUTPUT does not explain.
 
-Usage: shaders.py OUT_DIR [-j JOBS] [-I DIR]... [--only VARIANT]...
+Usage: shaders.py OUT_DIR [-j JOBS] [-I DIR]... [--only VARIANT]... [--dxc PATH]
 """
 import argparse, json, os, re, subprocess, sys
 from concurrent.futures import ThreadPoolExecutor
@@ -21,6 +24,8 @@ RIG_DIR = os.path.dirname(os.path.abspath(__file__))
 PKG_DIR = os.path.dirname(os.path.dirname(RIG_DIR))
 ENTRY_FILE = os.path.join(RIG_DIR, "TerrainRig.hlsl")
 VARIANTS_FILE = os.path.join(RIG_DIR, "shader_variants.txt")
+DXC = os.path.join(PKG_DIR, "..", "shared", "dxc", "bin", "dxc")
+DXC_PROFILES = {"vert": "vs_6_0", "tesc": "hs_6_0", "tese": "ds_6_0", "frag": "ps_6_0", "comp": "cs_6_0"}
 
 # (name, glslang stage, HLSL entry point). "fallback" is the no-tessellator vertex stage.
 STAGES = [
@@ -131,7 +136,7 @@ def check_bindings(spv, log, keywords=()):
     return errors
 
 
-def compile_one(out_dir, variant, stage, includes):
+def compile_one(out_dir, variant, stage, includes, dxc=DXC):
     name, keywords = variant
     sname, gstage, entry = stage
     vdir = os.path.join(out_dir, name)
@@ -165,6 +170,9 @@ def compile_one(out_dir, variant, stage, includes):
         if step("spirv-cross msl", ["spirv-cross", spv, "--entry", entry] + MSL_OPTIONS
                 + MSL_STAGE_OPTIONS.get(sname, []) + ["--output", msl]):
             targets.append("msl21")
+    if step("dxc", [dxc, "-HV", "2018", "-spirv", "-fcgl", "-Vd", "-T", DXC_PROFILES[gstage], "-E", entry, "-Fo", os.devnull]
+            + [f"-I{d}" for d in includes] + [f"-D{k}" for k in keywords] + STAGE_DEFINES.get(sname, []) + [ENTRY_FILE]):
+        targets.append("dxc")
     with open(os.path.join(vdir, sname + ".log"), "w") as f:
         f.write("\n".join(log))
     return name, sname, problems, targets
@@ -177,7 +185,10 @@ def main():
     ap.add_argument("-I", dest="includes", action="append", default=[],
                     help="extra include directory (searched after the includer's own folder)")
     ap.add_argument("--only", action="append", default=[], help="compile only this variant")
+    ap.add_argument("--dxc", default=DXC, help="Microsoft's DXC (default: ../shared/dxc/bin/dxc beside the package)")
     args = ap.parse_args()
+    if not os.access(args.dxc, os.X_OK):
+        sys.exit(f"shaders: --dxc {args.dxc}: no DXC there (it sits beside the package as ../shared/dxc, see its README)")
 
     variants = read_variants()
     if args.only:
@@ -190,7 +201,7 @@ def main():
 
     jobs = [(v, s) for v in variants for s in stages_of(v[1])]
     with ThreadPoolExecutor(max_workers=max(1, args.jobs)) as pool:
-        results = list(pool.map(lambda j: compile_one(args.out_dir, j[0], j[1], args.includes), jobs))
+        results = list(pool.map(lambda j: compile_one(args.out_dir, j[0], j[1], args.includes, args.dxc), jobs))
 
     failed = 0
     for name, sname, problems, targets in results:

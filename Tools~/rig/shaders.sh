@@ -1,6 +1,7 @@
 # gt shaders: compile every stage of every keyword variant (shader_variants.txt) to SPIR-V with
 # glslang's HLSL front end, validate, check the descriptor bindings, cross-compile to GLSL 4.50,
-# GLSL ES 3.20 and MSL, and recompile the GLSL. One line per variant and stage, then the counts.
+# GLSL ES 3.20 and MSL, and recompile the GLSL; and the same stage with Microsoft's DXC (HLSL 2018).
+# One line per variant and stage, then the counts.
 # Outputs: $BUILD_DIR/spirv/<variant>/<stage>.spv (+ .glsl/.metal and a .log per stage).
 #   gt shaders [--only VARIANT]... [-j JOBS]
 # GT_SHADER_INCLUDES: extra include folders (':'-separated), searched after Shaders/ itself.

@@ -118,19 +118,19 @@ namespace GregoryTerrain
 
         /// <summary>
         /// The coarse tile across fine seam edge <paramref name="edge"/> of fine tile (ti, tj) at offset
-        /// (a, b), and which half of it the fine edge is (0: the lower tess half, 1: the upper); the
+        /// (a, b), and which half of it the fine edge is (<paramref name="upperHalf"/> 0: the lower tess half, 1: the upper); the
         /// coarse tile's edge on the seam is the opposite one (fine u = 0 meets coarse u = 1).
         /// HLSL <c>FineSeamCoarseTile</c>.
         /// </summary>
-        public static void FineSeamCoarseTile(int edge, int ti, int tj, int a, int b, out int cti, out int ctj, out int coarseEdge, out int half)
+        public static void FineSeamCoarseTile(int edge, int ti, int tj, int a, int b, out int cti, out int ctj, out int coarseEdge, out int upperHalf)
         {
             int fx = 2 * a + ti, fy = 2 * b + tj;   // the fine tile in fine cells of the coarse range
             switch (edge)
             {
-                case EdgeU0: cti = a - 1; ctj = fy / 2; half = fy % 2; coarseEdge = EdgeU1; break;
-                case EdgeU1: cti = (fx + 1) / 2; ctj = fy / 2; half = fy % 2; coarseEdge = EdgeU0; break;
-                case EdgeV0: cti = fx / 2; ctj = b - 1; half = fx % 2; coarseEdge = EdgeV1; break;
-                case EdgeV1: cti = fx / 2; ctj = (fy + 1) / 2; half = fx % 2; coarseEdge = EdgeV0; break;
+                case EdgeU0: cti = a - 1; ctj = fy / 2; upperHalf = fy % 2; coarseEdge = EdgeU1; break;
+                case EdgeU1: cti = (fx + 1) / 2; ctj = fy / 2; upperHalf = fy % 2; coarseEdge = EdgeU0; break;
+                case EdgeV0: cti = fx / 2; ctj = b - 1; upperHalf = fx % 2; coarseEdge = EdgeV1; break;
+                case EdgeV1: cti = fx / 2; ctj = (fy + 1) / 2; upperHalf = fx % 2; coarseEdge = EdgeV0; break;
                 default: throw new ArgumentException(FormattableString.Invariant($"edge ({edge}) must be one edge bit"), nameof(edge));
             }
         }
@@ -151,7 +151,7 @@ namespace GregoryTerrain
         /// <summary>
         /// The global point of a seam vertex at tess <paramref name="tess"/> of tile (ti, tj) of level
         /// <paramref name="range"/>. Coarse side (<paramref name="fine"/> false): the edge's factor is
-        /// <c>2g</c>, n = round(along 2g). Fine side: factor g, n = round(along g) + half g on the coarse
+        /// <c>2g</c>, n = round(along 2g). Fine side: factor g, n = round(along g) + upperHalf g on the coarse
         /// tile across (<paramref name="coarser"/>, the level sits at (a, b) in its cells). Both form
         /// <see cref="RangeMapping.ToTerrainPoint"/> of the coarse range, tile and <see cref="SeamCoarseTess"/>.
         /// HLSL <c>SeamCoarsePoint</c>.
@@ -165,8 +165,8 @@ namespace GregoryTerrain
                 int n = (int)Math.Round(along * 2f * halfFactor, MidpointRounding.AwayFromZero);
                 return RangeMapping.ToTerrainPoint(range, rangeOrigin, tiles, ti, tj, SeamCoarseTess(edge, n, halfFactor).x, SeamCoarseTess(edge, n, halfFactor).y);
             }
-            FineSeamCoarseTile(edge, ti, tj, a, b, out int cti, out int ctj, out int coarseEdge, out int half);
-            int m = (int)Math.Round(along * halfFactor, MidpointRounding.AwayFromZero) + half * (int)halfFactor;
+            FineSeamCoarseTile(edge, ti, tj, a, b, out int cti, out int ctj, out int coarseEdge, out int upperHalf);
+            int m = (int)Math.Round(along * halfFactor, MidpointRounding.AwayFromZero) + upperHalf * (int)halfFactor;
             Float2 ct = SeamCoarseTess(coarseEdge, m, halfFactor);
             return RangeMapping.ToTerrainPoint(coarser, rangeOrigin, tiles, cti, ctj, ct.x, ct.y);
         }
