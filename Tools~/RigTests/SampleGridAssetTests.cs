@@ -174,6 +174,16 @@ namespace GregoryTerrain.Rig.Tests
             Assert.That(File.Exists(Path.Combine(_tmp, "x.asset")), Is.False);
         }
 
+        [Test]
+        public void UnityAssetCommandRejectsTheGridsGuidAsTheBlocks()
+        {
+            string guid = ScriptGuid("PatchGridAsset.cs");
+            var (code, output) = TryGtCli("unity-asset", "--grid", _demoJsonPath, "--out", Path.Combine(_tmp, "y.asset"), "--script-guid", guid, "--block-script-guid", guid);
+            Assert.That(code, Is.Not.EqualTo(0));
+            Assert.That(output, Does.Contain($"--block-script-guid '{guid}'"));
+            Assert.That(File.Exists(Path.Combine(_tmp, "y.asset")), Is.False);
+        }
+
         /// <summary>
         /// Reads the PatchGridAsset YAML: "  columns: N", "  rows: M", the grid lines and the control
         /// points (the blocks' "points" in the order the grid lists them, or the older single array),
