@@ -28,7 +28,7 @@ namespace GregoryTerrain.EditorTools
     /// the control points under the brush, G1 kept), and each stroke is one undo step that records
     /// only the blocks it changed. SelectPatches drags a patch rectangle, drawn on the surface, which
     /// confines the brush and is what the Patch Grid window's "Refit selection" refits. Settings
-    /// live in the renderer's inspector while the tool is active.
+    /// live at the foot of the renderer's inspector, drawn whenever one renderer is selected.
     /// </summary>
     [EditorTool("Sculpt Gregory Terrain", typeof(GregoryTerrainRenderer))]
     internal sealed class PatchGridSculptTool : EditorTool

@@ -26,7 +26,8 @@ namespace GregoryTerrain
         /// <summary>
         /// Bytes this script sets per camera in the steady state: one float4, <c>_Range</c> (one
         /// MaterialPropertyBlock.SetVector in PushRange, then one Graphics.RenderPrimitives call for that
-        /// camera); with the Compute cache too. What else (a camera's tessellation view when it moved or
+        /// camera); with the Compute cache too. Horizon levels add the level ranges every frame (20 float4,
+        /// SetVectorArray in PushLevels). What else (a camera's tessellation view when it moved or
         /// another camera drew since, ...) is set, only on a change, and when:
         /// index.md, "What is sent per frame".
         /// </summary>
@@ -45,7 +46,7 @@ namespace GregoryTerrain
         [SerializeField, Range(1f, 64f)] float maxFactor = 64f;
 
         [Tooltip("How far, in pixels, the drawn triangles may stray from the surface (like Unity Terrain's Pixel Error). Halving it about doubles the triangles.")]
-        [SerializeField, Range(1f, 64f)] float targetPixelError = 8f;
+        [SerializeField, Range(0.25f, 64f)] float targetPixelError = 8f;
 
         [Tooltip("0: subdivide each tile edge by its size on screen. Above 0: subdivide every edge this many times (for testing and measuring).")]
         [SerializeField, Range(0, 64)] int uniformFactor;
@@ -66,7 +67,7 @@ namespace GregoryTerrain
         [Tooltip("The camera whose view sets the detail and culls tiles for all cameras and shadows. Empty: the main camera.")]
         [SerializeField] Camera lodCamera;
 
-        [Tooltip("Metres across the terrain's x and y (the whole grid). The Transform then needs only position and rotation.")]
+        [Tooltip("Metres across the terrain's x and y (the whole grid). Keep the Transform's scale at 1: a scale there multiplies this.")]
         [SerializeField] Vector2 terrainSize = new Vector2(1f, 1f);
         [Tooltip("Metres per terrain height unit (a grid height of 0.01 on a terrainSize of 1000 m with heightScale 1000 is 10 m).")]
         [SerializeField] float heightScale = 1f;
@@ -159,7 +160,7 @@ namespace GregoryTerrain
 
         /// <summary>
         /// Metres across the terrain's x and y (Unity's x and z): the object-to-world matrix carries it,
-        /// so the Transform holds position and rotation only. Throws ArgumentException (naming the
+        /// so the Transform can keep scale 1 (a scale there multiplies it). Throws ArgumentException (naming the
         /// field and value) unless both are finite and positive.
         /// </summary>
         public Vector2 TerrainSize
@@ -246,7 +247,7 @@ namespace GregoryTerrain
         /// </summary>
         public bool HorizonLevels { get => horizonLevels; set { horizonLevels = value; _settingsDirty = true; } }
 
-        /// <summary>Uniform factor (0 = adaptive); the Scene view's C/V keys change it.</summary>
+        /// <summary>Uniform factor (0 = adaptive); the Scene view's Uniform Factor Down / Up shortcuts (U / I by default) change it.</summary>
         public int UniformFactor { get => uniformFactor; set { uniformFactor = Mathf.Clamp(value, 0, 64); _settingsDirty = true; } }
 
         /// <summary>

@@ -3,39 +3,85 @@ using UnityEngine;
 namespace GregoryTerrain.Samples.TerrainFlyover
 {
     /// <summary>
-    /// Sample: flies the camera in a slow loop over the terrain and zooms the drawn range in and out
-    /// with it, so the constant vertex budget of the tile layout can be seen at every scale.
+    /// Sample: flies the camera in a slow loop over the terrain, a stated clearance above the surface
+    /// the renderer draws (<see cref="GregoryTerrainRenderer.SampleHeight"/> under and ahead of it,
+    /// <see cref="FlyoverPath"/>), and either draws the whole terrain or zooms the drawn range in and
+    /// out with the loop as the paper does, so the constant vertex budget shows at every scale.
     /// </summary>
     [AddComponentMenu("Gregory Terrain/Samples/Flyover Camera")]
     public sealed class FlyoverCamera : MonoBehaviour
     {
+        /// <summary>What the terrain draws during the flight.</summary>
+        public enum View
+        {
+            /// <summary>The whole terrain, every frame (Range 0..1).</summary>
+            WholeTerrain,
+            /// <summary>The paper's zoom: a range around the camera that narrows and widens twice per loop.</summary>
+            PaperZoom,
+        }
+
         [Tooltip("The terrain to fly over.")]
         [SerializeField] GregoryTerrainRenderer terrain = null;
+
+        [Tooltip("Whole terrain: draw all of it. Paper zoom: draw a range around the camera that narrows to the Range Width's second value and widens to its first, twice per loop, at the same vertex count. Switch it in Play Mode.")]
+        [SerializeField] View view = View.PaperZoom;
 
         [Tooltip("Seconds per loop.")]
         [SerializeField, Range(5f, 600f)] float loopSeconds = 60f;
 
-        [Tooltip("Flight height above the terrain's base, in terrain units.")]
-        [SerializeField, Range(0.001f, 1f)] float height = 0.08f;
+        [Tooltip("Metres the camera keeps above the surface under it, at least. It climbs before higher ground ahead and sinks gently after it.")]
+        [SerializeField, Range(1f, 500f)] float clearance = 25f;
 
-        [Tooltip("Widest and narrowest range side during the loop, terrain units.")]
+        [Tooltip("Seconds of the flight ahead whose ground the camera climbs for in advance.")]
+        [SerializeField, Range(0f, 20f)] float lookAheadSeconds = 3f;
+
+        [Tooltip("Seconds the camera takes to follow the ground ahead (about 63% of a change).")]
+        [SerializeField, Range(0.05f, 10f)] float smoothSeconds = 1f;
+
+        [Tooltip("Paper zoom only: widest and narrowest range side, as fractions of the terrain's width.")]
         [SerializeField] Vector2 rangeWidth = new Vector2(0.6f, 0.02f);
+
+        float _height = float.NaN;   // world y of the camera, eased from frame to frame
+
+        void OnEnable() => _height = float.NaN;
 
         void LateUpdate()
         {
             if (terrain == null) return;
-            float phase = Mathf.Repeat(Time.time / loopSeconds, 1f) * 2f * Mathf.PI;
-            // A loop of radius 0.3 around the terrain centre, in terrain (x, y).
-            float x = 0.5f + 0.3f * Mathf.Cos(phase), y = 0.5f + 0.3f * Mathf.Sin(phase);
-            float zoom = 0.5f + 0.5f * Mathf.Cos(2f * phase);            // zooms in and out twice per loop
-            float width = Mathf.Lerp(rangeWidth.y, rangeWidth.x, zoom);
+            double perSecond = 2.0 * System.Math.PI / loopSeconds;
+            double phase = Mathf.Repeat(Time.time / loopSeconds, 1f) * 2.0 * System.Math.PI;
+            FlyoverPath.Point(phase, out double x, out double y);
 
-            Transform t = terrain.transform;
-            transform.position = t.TransformPoint(new Vector3(x, height * Mathf.Lerp(0.3f, 1f, zoom), y));
-            Vector3 ahead = new Vector3(0.5f + 0.3f * Mathf.Cos(phase + 0.3f), 0f, 0.5f + 0.3f * Mathf.Sin(phase + 0.3f));
-            transform.LookAt(t.TransformPoint(ahead));
+            double under = SurfaceAt(x, y);
+            double ahead = FlyoverPath.GroundAhead(phase, lookAheadSeconds * perSecond, SurfaceAt);
+            double next = FlyoverPath.NextHeight(_height, under, ahead, clearance, Time.deltaTime, smoothSeconds);
+            if (!double.IsNaN(next)) _height = (float)next;
 
-            terrain.Range = RangeFit.Around(x, y, width, width);
+            Vector3 position = WorldPoint(x, y);
+            position.y = float.IsNaN(_height) ? transform.position.y : _height;
+            transform.position = position;
+            FlyoverPath.Point(phase + FlyoverPath.LookAngle, out double ax, out double ay);
+            Vector3 target = WorldPoint(ax, ay);
+            double groundThere = SurfaceAt(ax, ay);
+            if (!double.IsNaN(groundThere)) target.y = (float)groundThere;
+            transform.LookAt(target);
+
+            if (view == View.WholeTerrain) terrain.Range = TerrainRange.full;
+            else
+            {
+                double width = FlyoverPath.RangeWidth(phase, rangeWidth.x, rangeWidth.y);
+                terrain.Range = RangeFit.Around(x, y, width, width);
+            }
         }
+
+        /// <summary>The world point over the terrain's unit-square point (x, y), at the terrain's base.</summary>
+        Vector3 WorldPoint(double x, double y)
+        {
+            Vector2 size = terrain.TerrainSize;
+            return terrain.transform.TransformPoint(new Vector3((float)(x * size.x), 0f, (float)(y * size.y)));
+        }
+
+        /// <summary>World height of the surface the renderer draws over the unit-square point (x, y); NaN off the terrain.</summary>
+        double SurfaceAt(double x, double y) => terrain.SampleHeight(WorldPoint(x, y));
     }
 }

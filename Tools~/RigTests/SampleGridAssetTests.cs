@@ -12,8 +12,11 @@ namespace GregoryTerrain.Rig.Tests
     /// <summary>
     /// Samples~/TerrainFlyover/PatchGrid.asset (and its copy in Samples~/GroundWalk) must be the real fitted grid: its YAML is read back
     /// (numbers parsed here, not by the tool that wrote them) into a PatchGrid that is valid and equal,
-    /// bit for bit, to what <c>gt-cli demo-grid</c> builds; its fields must be PatchGridAsset's
-    /// serialized fields in declaration order; and <c>gt-cli unity-asset</c> must reproduce the file.
+    /// bit for bit, to what <c>gt-cli demo-grid</c> builds; it must be saved in the current layout
+    /// (block sub-assets, each bit for bit Core's PatchGridBlocks of that grid; no single array, so the
+    /// asset inspector shows no "move to blocks" notice); its fields must be PatchGridAsset's and
+    /// PatchGridBlock's serialized fields in declaration order; and <c>gt-cli unity-asset</c> must
+    /// reproduce the file.
     /// </summary>
     [TestFixture]
     public class SampleGridAssetTests
@@ -74,30 +77,71 @@ namespace GregoryTerrain.Rig.Tests
         [TestCase("GroundWalk")]
         public void AssetFieldsAreThePatchGridAssetSerializedFieldsInOrder(string sample)
         {
-            string source = File.ReadAllText(PackageRoot.Combine("Runtime", "PatchGridAsset.cs"));
-            var declared = Regex.Matches(source, @"\[SerializeField[^\]]*\]\s*(?:\w+(?:\[\])?)\s+(\w+)\s*=")
-                .Select(m => m.Groups[1].Value).ToList();
+            var declared = DeclaredFields("PatchGridAsset.cs");
             Assert.That(declared, Is.EqualTo(new[] { "columns", "rows", "xLines", "yLines", "blocks", "controlPoints" }), "PatchGridAsset's serialized fields");
-            string yaml = File.ReadAllText(AssetPath(sample));
-            var written = Regex.Matches(yaml, @"^  (\w+):", RegexOptions.Multiline).Select(m => m.Groups[1].Value)
-                .Where(n => !n.StartsWith("m_")).ToList();
-            Assert.That(written, Is.EqualTo(declared));
-
-            string meta = File.ReadAllText(PackageRoot.Combine("Runtime", "PatchGridAsset.cs.meta"));
-            string guid = Regex.Match(meta, @"^guid: ([0-9a-f]{32})", RegexOptions.Multiline).Groups[1].Value;
-            Assert.That(yaml, Does.Contain($"m_Script: {{fileID: 11500000, guid: {guid}, type: 3}}"));
+            var blockDeclared = DeclaredFields("PatchGridBlock.cs");
+            Assert.That(blockDeclared, Is.EqualTo(new[] { "owner", "points" }), "PatchGridBlock's serialized fields");
+            var documents = Documents(File.ReadAllText(AssetPath(sample)));
+            Assert.That(documents[0].fileId, Is.EqualTo(11400000L), "the grid is the file's first object");
+            Assert.That(Keys(documents[0].text), Is.EqualTo(declared));
+            Assert.That(documents[0].text, Does.Contain($"m_Script: {{fileID: 11500000, guid: {ScriptGuid("PatchGridAsset.cs")}, type: 3}}"));
+            foreach (var (fileId, text) in documents.Skip(1))
+            {
+                Assert.That(Keys(text), Is.EqualTo(blockDeclared), "block " + fileId);
+                Assert.That(text, Does.Contain($"m_Script: {{fileID: 11500000, guid: {ScriptGuid("PatchGridBlock.cs")}, type: 3}}"), "block " + fileId);
+                Assert.That(text, Does.Contain("  m_ObjectHideFlags: 1\n"), "block " + fileId + " is hidden in the hierarchy, as PatchGridBlock.Create makes it");
+            }
         }
+
+        /// <summary>
+        /// The current layout: every control point in block sub-assets, none left in the single array
+        /// (the asset inspector's "move to blocks" notice), and each block's doubles, in order, bit for
+        /// bit the block Core's PatchGridBlocks.FromGrid cuts from the demo grid.
+        /// </summary>
+        [TestCase("TerrainFlyover")]
+        [TestCase("GroundWalk")]
+        public void AssetIsSavedInBlocksEqualToCoresBlocks(string sample)
+        {
+            string yaml = File.ReadAllText(AssetPath(sample));
+            var documents = Documents(yaml);
+            Assert.That(Sequence(documents[0].text, "controlPoints").Length, Is.EqualTo(0), "doubles left in controlPoints (the single-array layout)");
+            Assert.That(documents[0].text, Does.Contain("  controlPoints: []\n"));
+            long[] refs = BlockReferences(documents[0].text);
+            double[][] core = PatchGridBlocks.FromGrid(_demo);
+            Assert.That(refs.Length, Is.EqualTo(core.Length), "blocks");
+            for (int b = 0; b < core.Length; b++)
+            {
+                var doc = documents.Single(d => d.fileId == refs[b]);
+                Assert.That(doc.text, Does.Contain("  owner: {fileID: 11400000}\n"), "block " + b + "'s owner");
+                Assert.That(doc.text, Does.Contain("  m_Name: Block " + b + "\n"), "block " + b + "'s name");
+                double[] points = Sequence(doc.text, "points");
+                Assert.That(points.Length, Is.EqualTo(core[b].Length), "block " + b + " length");
+                int differing = Enumerable.Range(0, points.Length)
+                    .Count(i => BitConverter.DoubleToInt64Bits(points[i]) != BitConverter.DoubleToInt64Bits(core[b][i]));
+                Assert.That(differing, Is.EqualTo(0), "doubles of block " + b + " that differ from Core's");
+            }
+            Assert.That(documents.Count, Is.EqualTo(1 + core.Length), "objects in the file: the grid and its blocks");
+        }
+
+        static List<string> DeclaredFields(string script) =>
+            Regex.Matches(File.ReadAllText(PackageRoot.Combine("Runtime", script)), @"\[SerializeField[^\]]*\]\s*(?:\w+(?:\[\])?)\s+(\w+)\s*[=;]")
+                .Select(m => m.Groups[1].Value).ToList();
+
+        static List<string> Keys(string document) =>
+            Regex.Matches(document, @"^  (\w+):", RegexOptions.Multiline).Select(m => m.Groups[1].Value).Where(n => !n.StartsWith("m_")).ToList();
+
+        static string ScriptGuid(string script) =>
+            Regex.Match(File.ReadAllText(PackageRoot.Combine("Runtime", script + ".meta")), @"^guid: ([0-9a-f]{32})", RegexOptions.Multiline).Groups[1].Value;
 
         [TestCase("TerrainFlyover")]
         [TestCase("GroundWalk")]
         public void UnityAssetCommandReproducesTheSampleFile(string sample)
         {
-            string meta = File.ReadAllText(PackageRoot.Combine("Runtime", "PatchGridAsset.cs.meta"));
-            string guid = Regex.Match(meta, @"^guid: ([0-9a-f]{32})", RegexOptions.Multiline).Groups[1].Value;
+            string guid = ScriptGuid("PatchGridAsset.cs"), blockGuid = ScriptGuid("PatchGridBlock.cs");
             string output = Path.Combine(_tmp, "PatchGrid.asset");
-            RunGtCli("unity-asset", "--grid", _demoJsonPath, "--out", output, "--script-guid", guid, "--name", "PatchGrid");
+            RunGtCli("unity-asset", "--grid", _demoJsonPath, "--out", output, "--script-guid", guid, "--block-script-guid", blockGuid, "--name", "PatchGrid");
             Assert.That(File.ReadAllText(output), Is.EqualTo(File.ReadAllText(AssetPath(sample))),
-                "regenerate with: gt-cli demo-grid --out g.json; gt-cli unity-asset --grid g.json --out Samples~/" + sample + "/PatchGrid.asset --script-guid " + guid);
+                "regenerate with: gt-cli demo-grid --out g.json; gt-cli unity-asset --grid g.json --out Samples~/" + sample + "/PatchGrid.asset --script-guid " + guid + " --block-script-guid " + blockGuid);
         }
 
         /// <summary>
@@ -124,22 +168,38 @@ namespace GregoryTerrain.Rig.Tests
         [Test]
         public void UnityAssetCommandRejectsABadGuid()
         {
-            var (code, output) = TryGtCli("unity-asset", "--grid", _demoJsonPath, "--out", Path.Combine(_tmp, "x.asset"), "--script-guid", "XYZ");
+            var (code, output) = TryGtCli("unity-asset", "--grid", _demoJsonPath, "--out", Path.Combine(_tmp, "x.asset"), "--script-guid", "XYZ", "--block-script-guid", ScriptGuid("PatchGridBlock.cs"));
             Assert.That(code, Is.Not.EqualTo(0));
             Assert.That(output, Does.Contain("--script-guid 'XYZ'"));
             Assert.That(File.Exists(Path.Combine(_tmp, "x.asset")), Is.False);
         }
 
-        /// <summary>
-        /// Reads the PatchGridAsset YAML: "  columns: N", "  rows: M" and the three sequences of
-        /// doubles, into Core's PatchGrid (20 (x, y, z) per patch, slot order, patch j * n + i).
-        /// </summary>
-        static PatchGrid ReadAsset(string yaml)
+        [Test]
+        public void UnityAssetCommandRejectsTheGridsGuidAsTheBlocks()
         {
-            int columns = int.Parse(Regex.Match(yaml, @"^  columns: (\d+)$", RegexOptions.Multiline).Groups[1].Value, CultureInfo.InvariantCulture);
-            int rows = int.Parse(Regex.Match(yaml, @"^  rows: (\d+)$", RegexOptions.Multiline).Groups[1].Value, CultureInfo.InvariantCulture);
-            double[] xs = Sequence(yaml, "xLines"), ys = Sequence(yaml, "yLines"), cps = Sequence(yaml, "controlPoints");
-            Assert.That(cps.Length, Is.EqualTo(columns * rows * 3 * GregoryPatch.SlotCount), "controlPoints length");
+            string guid = ScriptGuid("PatchGridAsset.cs");
+            var (code, output) = TryGtCli("unity-asset", "--grid", _demoJsonPath, "--out", Path.Combine(_tmp, "y.asset"), "--script-guid", guid, "--block-script-guid", guid);
+            Assert.That(code, Is.Not.EqualTo(0));
+            Assert.That(output, Does.Contain($"--block-script-guid '{guid}'"));
+            Assert.That(File.Exists(Path.Combine(_tmp, "y.asset")), Is.False);
+        }
+
+        /// <summary>
+        /// Reads the PatchGridAsset YAML: "  columns: N", "  rows: M", the grid lines and the control
+        /// points (the blocks' "points" in the order the grid lists them, or the older single array),
+        /// into Core's PatchGrid (20 (x, y, z) per patch, slot order, patch j * n + i).
+        /// </summary>
+        internal static PatchGrid ReadAsset(string yaml)
+        {
+            var documents = Documents(yaml);
+            string grid = documents[0].text;
+            int columns = int.Parse(Regex.Match(grid, @"^  columns: (\d+)$", RegexOptions.Multiline).Groups[1].Value, CultureInfo.InvariantCulture);
+            int rows = int.Parse(Regex.Match(grid, @"^  rows: (\d+)$", RegexOptions.Multiline).Groups[1].Value, CultureInfo.InvariantCulture);
+            double[] xs = Sequence(grid, "xLines"), ys = Sequence(grid, "yLines");
+            double[] cps = Sequence(grid, "controlPoints");
+            if (cps.Length == 0)
+                cps = BlockReferences(grid).SelectMany(id => Sequence(documents.Single(d => d.fileId == id).text, "points")).ToArray();
+            Assert.That(cps.Length, Is.EqualTo(columns * rows * 3 * GregoryPatch.SlotCount), "control points");
             var patches = new GregoryPatch[columns * rows];
             for (int p = 0; p < patches.Length; p++)
             {
@@ -153,9 +213,32 @@ namespace GregoryTerrain.Rig.Tests
             return new PatchGrid(columns, rows, xs, ys, patches);
         }
 
+        /// <summary>The file's objects, in order: (file ID, text from its "--- !u!" line to the next).</summary>
+        internal static List<(long fileId, string text)> Documents(string yaml)
+        {
+            yaml = yaml.Replace("\r\n", "\n");
+            var heads = Regex.Matches(yaml, @"^--- !u!114 &(-?\d+)\n", RegexOptions.Multiline).ToList();
+            Assert.That(heads.Count, Is.GreaterThan(0), "no MonoBehaviour object in the asset");
+            return heads.Select((m, k) => (long.Parse(m.Groups[1].Value, CultureInfo.InvariantCulture),
+                                           yaml.Substring(m.Index, (k + 1 < heads.Count ? heads[k + 1].Index : yaml.Length) - m.Index))).ToList();
+        }
+
+        /// <summary>The file IDs the grid's "blocks" list references, in order.</summary>
+        static long[] BlockReferences(string grid)
+        {
+            var lines = grid.Split('\n');
+            int start = Array.IndexOf(lines, "  blocks:");
+            if (start < 0) return Array.Empty<long>();
+            var ids = new List<long>();
+            for (int i = start + 1; i < lines.Length && lines[i].StartsWith("  - ", StringComparison.Ordinal); i++)
+                ids.Add(long.Parse(Regex.Match(lines[i], @"^  - \{fileID: (-?\d+)\}$").Groups[1].Value, CultureInfo.InvariantCulture));
+            return ids.ToArray();
+        }
+
         static double[] Sequence(string yaml, string field)
         {
             var lines = yaml.Replace("\r\n", "\n").Split('\n');
+            if (Array.IndexOf(lines, $"  {field}: []") >= 0) return Array.Empty<double>();
             int start = Array.IndexOf(lines, $"  {field}:");
             Assert.That(start, Is.GreaterThanOrEqualTo(0), field + " not found");
             var values = new List<double>();

@@ -42,7 +42,7 @@ namespace GregoryTerrain.Tests
             PatchGrid grid = uneven ? Curved(Uneven, PatchGrid.UniformLines(6)) : Curved(PatchGrid.UniformLines(6), PatchGrid.UniformLines(6));
             PatchGrid before = grid.Clone();
             var region = new PatchRect(i0, j0, i1, j1);
-            double[] heights = Samples(Bumped, Samples, Samples);
+            double[] heights = AuthoringGrids.Samples(Bumped, Samples, Samples);
             RegionFitResult fit = PatchRegionFit.Fit(grid, region, heights, Samples, Samples);
             Assert.That(AuthoringGrids.SameBits(before, grid), "Fit must not write the grid");
             double oldRms = RegionRms(grid, region, Bumped);
@@ -63,7 +63,7 @@ namespace GregoryTerrain.Tests
             // What the G1 check above guards against: the fitted patches pasted in as they come.
             PatchGrid grid = Curved(PatchGrid.UniformLines(6), PatchGrid.UniformLines(6));
             var region = new PatchRect(2, 2, 3, 3);
-            HeightmapFit alone = HeightmapFitter.Fit(Samples(Bumped, Samples, Samples), Samples, Samples, 6, 6);
+            HeightmapFit alone = HeightmapFitter.Fit(AuthoringGrids.Samples(Bumped, Samples, Samples), Samples, Samples, 6, 6);
             for (int j = region.J0; j <= region.J1; j++)
                 for (int i = region.I0; i <= region.I1; i++) alone.Grid.Patch(i, j).Points.CopyTo(grid.Patch(i, j).Points, 0);
             Assert.That(ContinuityMeasure.MaxNormalAngleDegrees(grid), Is.GreaterThan(1000 * G1BoundDegrees));
@@ -73,7 +73,7 @@ namespace GregoryTerrain.Tests
         public void BadInputThrowsNamingTheFieldAndChangesNothing()
         {
             PatchGrid grid = Curved(PatchGrid.UniformLines(6), PatchGrid.UniformLines(6)), before = grid.Clone();
-            double[] good = Samples(Bumped, Samples, Samples);
+            double[] good = AuthoringGrids.Samples(Bumped, Samples, Samples);
             void Expect<T>(TestDelegate call, string field, string text) where T : ArgumentException
             {
                 var e = Assert.Throws(Is.InstanceOf<T>(), call);

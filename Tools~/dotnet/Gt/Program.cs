@@ -78,8 +78,8 @@ namespace GregoryTerrain.Rig
             Add("demo-grid", "build the 5x5 sample grid fitted to a procedural heightmap, or with --dem FILE to an SRTM crop (--out FILE)", DemoGridCommand.Run, "out columns rows samples dem metres-across exaggerate");
             Add("eval", "Core float, Core double and (--gpu) GPU position and normal at points (--grid FILE --points \"x,y;...\")", EvalCommand.Run,
                 "grid device gpu harness no-noise noise octaves pass-state points points-file span spirv");
-            Add("unity-asset", "write a grid JSON as the YAML of a PatchGridAsset (--grid FILE --out FILE.asset --script-guid GUID [--name NAME])", UnityAssetCommand.Run,
-                "grid name out script-guid");
+            Add("unity-asset", "write a grid JSON as the YAML of a PatchGridAsset in blocks (--grid FILE --out FILE.asset --script-guid GUID --block-script-guid GUID [--name NAME])", UnityAssetCommand.Run,
+                "block-script-guid grid name out script-guid");
             Add("error", "error of the drawn triangles against the exact surface (scene options; --factors FILE or --factor F)", ErrorCommand.Run,
                 SceneOptions + " factors max-cells paper print-factors tile-factors vertex-cache with-noise write-tile-factors");
             Add("bench-plan", "write the buffers and the job list of gt bench (--grid FILE --out DIR [--quick])", BenchPlan.Run, "grid frames height out quick warmup width");
