@@ -1,9 +1,6 @@
 using System.Runtime.CompilerServices;
 
-// The authoring code (fitting, G1 building, brushes, heightmap readers) is internal like Core's; these
-// assemblies use it. The names are the asmdefs' (Unity: the editor tools and the Editor-only test
-// assemblies) and the csprojs' (the off-Unity rig: the dotnet test project and gt-cli). No player
-// assembly may reference this one: Unity compiles it for the Editor only.
+// Internal like Core; the asmdefs' and the rig's csprojs' names. No player assembly may use it.
 [assembly: InternalsVisibleTo("GregoryTerrain.Editor")]
 [assembly: InternalsVisibleTo("GregoryTerrain.Core.Tests")]
 [assembly: InternalsVisibleTo("GregoryTerrain.Editor.Tests")]

@@ -55,8 +55,8 @@ namespace GregoryTerrain.Rig.Tests
         [Test]
         public void AsmdefCheckRejectsAPlayerAssemblyReferencingAuthoring()
         {
-            var runtime = new Asmdef("GregoryTerrain.Runtime", new[] { "GregoryTerrain.Core", AuthoringName }, new string[0], false, "Runtime");
-            var editor = new Asmdef("GregoryTerrain.Editor", new[] { AuthoringName }, new[] { "Editor" }, false, "Editor");
+            var runtime = new Asmdef("GregoryTerrain.Runtime", new[] { "GregoryTerrain.Core", AuthoringName }, new string[0], false);
+            var editor = new Asmdef("GregoryTerrain.Editor", new[] { AuthoringName }, new[] { "Editor" }, false);
             Assert.That(PlayerReferencesToAuthoring(new[] { runtime, editor }),
                 Is.EqualTo(new[] { $"GregoryTerrain.Runtime is built for players and references {AuthoringName}" }));
         }
@@ -157,12 +157,11 @@ namespace GregoryTerrain.Rig.Tests
             public readonly string[] References;
             public readonly string[] IncludePlatforms;
             public readonly bool NoEngineReferences;
-            public readonly string Path;
             public bool EditorOnly => IncludePlatforms.Length == 1 && IncludePlatforms[0] == "Editor";
 
-            public Asmdef(string name, string[] references, string[] includePlatforms, bool noEngineReferences, string path)
+            public Asmdef(string name, string[] references, string[] includePlatforms, bool noEngineReferences)
             {
-                Name = name; References = references; IncludePlatforms = includePlatforms; NoEngineReferences = noEngineReferences; Path = path;
+                Name = name; References = references; IncludePlatforms = includePlatforms; NoEngineReferences = noEngineReferences;
             }
 
             public static Asmdef Read(string path)
@@ -172,7 +171,7 @@ namespace GregoryTerrain.Rig.Tests
                 string[] Strings(string key) => r.TryGetProperty(key, out JsonElement e) && e.ValueKind == JsonValueKind.Array
                     ? e.EnumerateArray().Select(x => x.GetString()).ToArray() : new string[0];
                 bool noEngine = r.TryGetProperty("noEngineReferences", out JsonElement n) && n.ValueKind == JsonValueKind.True;
-                return new Asmdef(r.GetProperty("name").GetString(), Strings("references"), Strings("includePlatforms"), noEngine, path);
+                return new Asmdef(r.GetProperty("name").GetString(), Strings("references"), Strings("includePlatforms"), noEngine);
             }
         }
 
