@@ -9,7 +9,7 @@ using NUnit.Framework;
 namespace GregoryTerrain.Rig.Tests
 {
     /// <summary>
-    /// The package's public API stays small and deliberate: the types the Core, Runtime and Editor
+    /// The package's public API stays small and deliberate: the types the Core, Runtime, Authoring and Editor
     /// assemblies export (as Tools~/UnityApiCheck builds them, editor and player flavours) are read
     /// from the assemblies' metadata and must all be on <see cref="Allowed"/>, at most
     /// <see cref="MaxPublicTypes"/> of them. A type made public by accident fails here; one made public
@@ -48,6 +48,7 @@ namespace GregoryTerrain.Rig.Tests
             Path.Combine("EditorCheck", "bin", "Release", "netstandard2.1", "GregoryTerrain.Core.dll"),
             Path.Combine("EditorCheck", "bin", "Release", "netstandard2.1", "GregoryTerrain.Runtime.dll"),
             Path.Combine("EditorCheck", "bin", "Release", "netstandard2.1", "GregoryTerrain.Editor.dll"),
+            Path.Combine("EditorCheck", "bin", "Release", "netstandard2.1", "GregoryTerrain.Authoring.dll"),
             Path.Combine("RuntimePlayer", "bin", "Release", "netstandard2.1", "GregoryTerrain.Runtime.dll"),
         };
 

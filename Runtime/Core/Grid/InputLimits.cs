@@ -18,7 +18,7 @@ namespace GregoryTerrain
         /// <summary>The largest grid JSON file read (1 GiB: a grid at the GPU's patch limit, written in full precision, is about 8 GB, so this is the tighter limit).</summary>
         public const long MaxJsonBytes = 1L << 30;
 
-        /// <summary>The most samples per shared edge <see cref="ContinuityMeasure"/> takes (steps of 1/4096).</summary>
+        /// <summary>The most samples per shared edge the authoring assembly's <c>ContinuityMeasure</c> takes (steps of 1/4096).</summary>
         public const int MaxSamplesPerEdge = 4097;
 
         /// <summary>Characters of a user's value that an error message quotes before cutting it short.</summary>

@@ -4,7 +4,7 @@ using System.Globalization;
 namespace GregoryTerrain
 {
     /// <summary>
-    /// The result of an edit (<see cref="PatchBrush"/>, <see cref="PatchRegionFit"/>) not yet written:
+    /// The result of an edit (the authoring assembly's <c>PatchBrush</c>, <c>PatchRegionFit</c>) not yet written:
     /// the indices of the patches it changes and their new control points. Nothing else of the grid
     /// changes, so the editor records for Undo only the blocks holding these patches, then applies it.
     /// </summary>
