@@ -34,9 +34,17 @@ namespace GregoryTerrain
         public static double ControlPointSpacing(PatchGrid grid, double sizeXMetres, double sizeYMetres)
         {
             if (grid == null) throw new ArgumentNullException(nameof(grid));
+            return ControlPointSpacing(grid.XLines, grid.YLines, sizeXMetres, sizeYMetres);
+        }
+
+        /// <summary>The same from the grid lines alone (an asset's, without building its grid).</summary>
+        public static double ControlPointSpacing(double[] xLines, double[] yLines, double sizeXMetres, double sizeYMetres)
+        {
+            if (xLines == null) throw new ArgumentNullException(nameof(xLines));
+            if (yLines == null) throw new ArgumentNullException(nameof(yLines));
             CheckMetres(sizeXMetres, nameof(sizeXMetres));
             CheckMetres(sizeYMetres, nameof(sizeYMetres));
-            return Math.Max(WidestInterval(grid.XLines) * sizeXMetres, WidestInterval(grid.YLines) * sizeYMetres) / 3.0;
+            return Math.Max(WidestInterval(xLines) * sizeXMetres, WidestInterval(yLines) * sizeYMetres) / 3.0;
         }
 
         /// <summary>The brush radius the sculpt tool uses: at least the control-point spacing, so a dab always moves the surface.</summary>

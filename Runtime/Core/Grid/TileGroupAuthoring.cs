@@ -12,6 +12,8 @@ namespace GregoryTerrain
         /// <summary>World x and z of the tile's south-west corner (the Terrain's position), metres.</summary>
         public double X { get; }
         public double Z { get; }
+        /// <summary>World y of the tile's base, metres (carried to the converted terrain).</summary>
+        public double Y { get; }
         /// <summary>TerrainData.size: width (x), height (y) and length (z), metres.</summary>
         public double SizeX { get; }
         public double SizeY { get; }
@@ -20,9 +22,9 @@ namespace GregoryTerrain
         public int Resolution { get; }
         public double[] Heights { get; }
 
-        public TerrainTile(string name, double x, double z, double sizeX, double sizeY, double sizeZ, int resolution, double[] heights)
+        public TerrainTile(string name, double x, double z, double sizeX, double sizeY, double sizeZ, int resolution, double[] heights, double y = 0)
         {
-            Name = name; X = x; Z = z; SizeX = sizeX; SizeY = sizeY; SizeZ = sizeZ; Resolution = resolution; Heights = heights;
+            Name = name; X = x; Y = y; Z = z; SizeX = sizeX; SizeY = sizeY; SizeZ = sizeZ; Resolution = resolution; Heights = heights;
         }
     }
 
