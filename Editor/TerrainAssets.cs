@@ -10,11 +10,9 @@ namespace GregoryTerrain.EditorTools
         public const string ShaderName = "GregoryTerrain/Terrain";
 
         /// <summary>
-        /// The package's compute shaders by their .meta GUIDs, the same wherever the package is
-        /// installed (Packages/ or Assets/). The editor looks them up once and the renderer serializes
-        /// the reference, so a player build carries the shader like any other referenced asset (a
-        /// Shader.Find-style lookup by name at run time would need the shader in Resources or Always
-        /// Included). The scripts' .meta default references name the same GUIDs for Add Component.
+        /// The package's compute shaders by their .meta GUIDs, the same wherever it is installed. The
+        /// renderer serializes the reference, so a player build carries the shader as any referenced
+        /// asset. The scripts' .meta default references name the same GUIDs for Add Component.
         /// </summary>
         public const string CacheShaderGuid = "1a20dfa1a3d1ff52c7ddffa8efd311e6";
         public const string SnowSimulationGuid = "251c209b7446d79a419f2c9de7c5b002";

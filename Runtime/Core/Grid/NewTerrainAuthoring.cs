@@ -27,17 +27,10 @@ namespace GregoryTerrain
         public static PatchGrid CreateGrid() => PatchGrid.CreateFlat(Patches, Patches);
 
         /// <summary>
-        /// The largest distance in metres between neighbouring control points along x or y: a cubic
-        /// patch has three intervals a side, so a patch w metres wide has points w / 3 apart. A brush
-        /// at least this wide always has a control point within 0.71 of its radius (falloff 0.25 or more).
+        /// The largest distance in metres between neighbouring control points along x or y: a patch w
+        /// metres wide has points w / 3 apart. A brush at least this wide always has a control point
+        /// within 0.71 of its radius (falloff 0.25 or more).
         /// </summary>
-        public static double ControlPointSpacing(PatchGrid grid, double sizeXMetres, double sizeYMetres)
-        {
-            if (grid == null) throw new ArgumentNullException(nameof(grid));
-            return ControlPointSpacing(grid.XLines, grid.YLines, sizeXMetres, sizeYMetres);
-        }
-
-        /// <summary>The same from the grid lines alone (an asset's, without building its grid).</summary>
         public static double ControlPointSpacing(double[] xLines, double[] yLines, double sizeXMetres, double sizeYMetres)
         {
             if (xLines == null) throw new ArgumentNullException(nameof(xLines));

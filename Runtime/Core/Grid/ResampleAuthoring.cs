@@ -5,10 +5,8 @@ using System.Threading;
 namespace GregoryTerrain
 {
     /// <summary>
-    /// "Resample grid to N x M": a new grid of N x M patches fitted (<see cref="HeightmapFitter.Fit"/>)
-    /// to samples of the old grid's surface, so the terrain keeps its shape at another control-point
-    /// spacing. The old grid's x, y must be linear in u, v within each patch (fitted, flat, sculpted
-    /// and joined grids are: the brush changes heights only).
+    /// "Resample grid to N x M": N x M patches fitted (<see cref="HeightmapFitter.Fit"/>) to samples of
+    /// the old surface, whose x, y must be linear in u, v per patch (fitted, flat, sculpted and joined grids are).
     /// </summary>
     internal static class ResampleAuthoring
     {
@@ -17,10 +15,7 @@ namespace GregoryTerrain
         /// <summary>The most samples a side (16.8 M samples in all).</summary>
         public const int MaxSamples = 4097;
 
-        /// <summary>
-        /// The fitted grid and its error against the old surface at the samples (the fit's MaxError and
-        /// RmsError, in height units). Cancellation throws OperationCanceledException; the old grid is only read.
-        /// </summary>
+        /// <summary>The fit, its MaxError and RmsError against the old surface (height units); cancelling throws OperationCanceledException.</summary>
         public static HeightmapFit Resample(PatchGrid old, int columns, int rows, IProgress<float> progress = null, CancellationToken cancellationToken = default)
         {
             if (old == null) throw new ArgumentNullException(nameof(old));

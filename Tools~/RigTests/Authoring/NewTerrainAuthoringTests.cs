@@ -27,7 +27,7 @@ namespace GregoryTerrain.Tests
         public void MenuGridsControlPointsAreCloserThanTheDefaultBrush()
         {
             PatchGrid grid = NewTerrainAuthoring.CreateGrid();
-            double spacing = NewTerrainAuthoring.ControlPointSpacing(grid, NewTerrainAuthoring.SizeMetres, NewTerrainAuthoring.SizeMetres);
+            double spacing = NewTerrainAuthoring.ControlPointSpacing(grid.XLines, grid.YLines, NewTerrainAuthoring.SizeMetres, NewTerrainAuthoring.SizeMetres);
             Assert.That(spacing, Is.EqualTo(1000.0 / 192.0).Within(1e-9), "metres between control points");
             Assert.That(spacing, Is.LessThan(NewTerrainAuthoring.DefaultBrushMetres / 4), "the default brush spans several control points");
         }
@@ -51,10 +51,10 @@ namespace GregoryTerrain.Tests
         public void SpacingOfAnUnevenGridIsItsWidestInterval()
         {
             PatchGrid grid = PatchGrid.CreateFlat(2, 1, new[] { 0, 0.75, 1.0 }, PatchGrid.UniformLines(1));
-            Assert.That(NewTerrainAuthoring.ControlPointSpacing(grid, 300, 30), Is.EqualTo(75.0).Within(1e-9));
+            Assert.That(NewTerrainAuthoring.ControlPointSpacing(grid.XLines, grid.YLines, 300, 30), Is.EqualTo(75.0).Within(1e-9));
             Assert.That(NewTerrainAuthoring.ClampBrushRadius(10, 75), Is.EqualTo(75.0));
             Assert.That(NewTerrainAuthoring.ClampBrushRadius(90, 75), Is.EqualTo(90.0));
-            var e = Assert.Throws<ArgumentException>(() => NewTerrainAuthoring.ControlPointSpacing(grid, 0, 30));
+            var e = Assert.Throws<ArgumentException>(() => NewTerrainAuthoring.ControlPointSpacing(grid.XLines, grid.YLines, 0, 30));
             Assert.That(e.Message, Does.Contain("sizeXMetres = 0"));
         }
     }
