@@ -28,6 +28,7 @@ namespace GregoryTerrain.Tests
         {
             PatchGrid grid = NewTerrainAuthoring.CreateGrid();
             double spacing = NewTerrainAuthoring.ControlPointSpacing(grid.XLines, grid.YLines, NewTerrainAuthoring.SizeMetres, NewTerrainAuthoring.SizeMetres);
+            TestContext.Out.WriteLine($"menu terrain: {grid.Columns} x {grid.Rows} patches, control points {spacing:G4} m apart");
             Assert.That(spacing, Is.EqualTo(1000.0 / 192.0).Within(1e-9), "metres between control points");
             Assert.That(spacing, Is.LessThan(NewTerrainAuthoring.DefaultBrushMetres / 4), "the default brush spans several control points");
         }
@@ -43,6 +44,7 @@ namespace GregoryTerrain.Tests
                 PatchBrush.Apply(grid, new BrushDab(BrushMode.Raise, x, 0.5, radius, raise)).ApplyTo(grid);
             double middle = ResampleAuthoring.Height(grid, 0.5, 0.5) * scale.y;
             double far = ResampleAuthoring.Height(grid, 0.1, 0.1) * scale.y;
+            TestContext.Out.WriteLine($"stroke of {NewTerrainAuthoring.DefaultBrushMetres} m dabs, 1 m each, every quarter radius over 200 m: ground under it raised {middle:G4} m, 400 m away {far} m");
             Assert.That(middle, Is.GreaterThan(2.0), "metres the stroke raised the ground under it");
             Assert.That(far, Is.EqualTo(0.0), "ground far from the stroke");
         }

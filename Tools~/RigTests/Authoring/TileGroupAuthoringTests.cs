@@ -40,6 +40,7 @@ namespace GregoryTerrain.Tests
             Assert.That(joined.Rows, Is.EqualTo(8));
             Assert.That(ContinuityMeasure.MaxPositionGap(joined), Is.LessThan(1e-12), "largest gap across any shared edge (height units)");
             Assert.That(ContinuityMeasure.MaxNormalAngleDegrees(joined), Is.LessThan(1e-6), "largest normal angle across any shared edge, seams included (degrees)");
+            TestContext.Out.WriteLine($"3 x 2 tiles of 33 x 33 samples, 4 x 4 patches each: normal angle across edges {ContinuityMeasure.MaxNormalAngleDegrees(joined):G3} deg, gap {ContinuityMeasure.MaxPositionGap(joined):G3}, max error {max:G3}, RMS {rms:G3}");
             Assert.That(max, Is.LessThan(1e-3), "max error against the tiles' samples");
             Assert.That(rms, Is.LessThanOrEqualTo(max));
             // Across the seams the surface is the group's: off-sample points near x = 1/3 and y = 1/2.
