@@ -4,30 +4,57 @@ using UnityEngine;
 
 namespace GregoryTerrain.EditorTools
 {
-    /// <summary>Menu items: a terrain GameObject ready to draw; the patch grid asset itself comes from CreateAssetMenu.</summary>
+    /// <summary>
+    /// Menu items: a terrain ready to sculpt and fly over, in metres as Unity Terrain's own menu item
+    /// makes one (Transform scale 1, 1000 x 1000 m, 600 m high, Core's NewTerrainAuthoring), placed as
+    /// Unity places its 3D objects; the patch grid asset itself comes from CreateAssetMenu.
+    /// </summary>
     internal static class GregoryTerrainMenu
     {
-        public const string ShaderName = "GregoryTerrain/Terrain";
+        const string CreateName = "Create Gregory Terrain";
 
         [MenuItem("GameObject/3D Object/Gregory Terrain", false, 10)]
-        static void CreateTerrain()
+        static void CreateTerrain(MenuCommand command) => Create(command.context as GameObject, false);
+
+        [MenuItem("GameObject/3D Object/Gregory Terrain with Collider", false, 11)]
+        static void CreateTerrainWithCollider(MenuCommand command) => Create(command.context as GameObject, true);
+
+        /// <summary>
+        /// The assets first (grid, material), then the GameObject: one undo step removes the object;
+        /// the assets stay, as Unity Terrain's TerrainData does. Placed at the Scene view's pivot, or
+        /// at the origin with Preferences &gt; Scene View &gt; Create Objects at Origin, or under
+        /// <paramref name="parent"/> (the Hierarchy's context menu), and selected.
+        /// </summary>
+        static void Create(GameObject parent, bool withCollider)
         {
+            PatchGrid flat = NewTerrainAuthoring.CreateGrid();
+            PatchGridAsset grid = TerrainAssets.CreateGrid(flat, "Assets/PatchGrid.asset");
             var go = new GameObject("Gregory Terrain");
-            go.transform.localScale = new Vector3(1000f, 1000f, 1000f);   // 1 terrain unit = 1 km
             var renderer = go.AddComponent<GregoryTerrainRenderer>();
-            Shader shader = Shader.Find(ShaderName);
-            if (shader != null)
-            {
-                var material = new Material(shader);
-                AssetDatabase.CreateAsset(material, AssetDatabase.GenerateUniqueAssetPath("Assets/Gregory Terrain.mat"));
-                renderer.Material = material;
-            }
-            else Debug.LogWarning($"Shader '{ShaderName}' not found; assign a material by hand.", go);
-            var grid = ScriptableObject.CreateInstance<PatchGridAsset>();
-            AssetDatabase.CreateAsset(grid, AssetDatabase.GenerateUniqueAssetPath("Assets/PatchGrid.asset"));
+            renderer.TerrainSize = new Vector2((float)NewTerrainAuthoring.SizeMetres, (float)NewTerrainAuthoring.SizeMetres);
+            renderer.HeightScale = (float)NewTerrainAuthoring.HeightMetres;
+            renderer.HorizonLevels = true;
             renderer.Grid = grid;
-            Undo.RegisterCreatedObjectUndo(go, "Create Gregory Terrain");
-            Selection.activeObject = go;
+            renderer.Material = TerrainAssets.CreateMaterial(go, noise: false);
+            TerrainAssets.AssignComputeShaders(renderer);
+            Undo.RegisterCreatedObjectUndo(go, CreateName);
+            if (withCollider) AddColliderFollowingMainCamera(renderer);
+            ObjectFactory.PlaceGameObject(go, parent);
+        }
+
+        /// <summary>
+        /// A GameObject of its own (the collider moves its Transform) with a Gregory Terrain Collider
+        /// around the main camera; a warning when the scene has none.
+        /// </summary>
+        static void AddColliderFollowingMainCamera(GregoryTerrainRenderer renderer)
+        {
+            var child = new GameObject("Gregory Terrain Collider");
+            var collider = child.AddComponent<GregoryTerrainCollider>();   // RequireComponent adds the MeshCollider
+            collider.Terrain = renderer;
+            Camera main = Camera.main;
+            if (main != null) collider.Target = main.transform;
+            else Debug.LogWarning("No camera is tagged MainCamera: set the Gregory Terrain Collider's Target by hand.", child);
+            Undo.RegisterCreatedObjectUndo(child, CreateName);
         }
 
         [MenuItem("Window/Gregory Terrain/Patch Grid")]

@@ -35,7 +35,7 @@ namespace GregoryTerrain.EditorTools
                 DrawReadouts((GregoryTerrainRenderer)target);
             DrawSettings();
             serializedObject.ApplyModifiedProperties();
-            if (!serializedObject.isEditingMultipleObjects) PatchGridSculptTool.DrawSettings();
+            if (!serializedObject.isEditingMultipleObjects) PatchGridSculptTool.DrawSettings((GregoryTerrainRenderer)target);
         }
 
         void DrawReadouts(GregoryTerrainRenderer r)

@@ -1,4 +1,5 @@
 using System;
+using System.Threading;
 using GregoryTerrain;
 using UnityEditor;
 using UnityEditor.EditorTools;
@@ -34,8 +35,12 @@ namespace GregoryTerrain.EditorTools
     internal sealed class PatchGridSculptTool : EditorTool
     {
         internal static SculptMode Mode = SculptMode.Raise;
-        /// <summary>Brush radius in metres (world units along the terrain's x).</summary>
-        internal static float RadiusMetres = 50f;
+        /// <summary>Brush radius in metres (world units along the terrain's x), as typed; dabs use at least the control-point spacing (<see cref="BrushRadius"/>).</summary>
+        internal static float RadiusMetres = (float)NewTerrainAuthoring.DefaultBrushMetres;
+        /// <summary>Patches a side the Resample button makes.</summary>
+        internal static int ResampleSide = NewTerrainAuthoring.Patches;
+        static string s_ResampleMessage;
+        static MessageType s_ResampleMessageType;
         /// <summary>Raise/lower: metres added at the brush centre per dab.</summary>
         internal static float HeightMetres = 1f;
         /// <summary>Smooth/flatten: fraction of the way per dab at the centre.</summary>
@@ -71,15 +76,22 @@ namespace GregoryTerrain.EditorTools
         static readonly GUIContent HeightLabel = new GUIContent("Height per dab (m)", "How far one dab raises or lowers the ground at the brush centre, in metres.");
         static readonly GUIContent AmountLabel = new GUIContent("Strength", "How far one dab moves the ground toward smooth or flat at the brush centre: 0 nothing, 1 all the way.");
         static readonly GUIContent InsideLabel = new GUIContent("Only inside selection", "Keep the brush inside the selected patches; points just outside may still move so the surface stays smooth.");
+        static readonly GUIContent SpacingLabel = new GUIContent("Control-point spacing (m)", "Metres between neighbouring control points (the widest patch / 3). A brush smaller than this may miss every point, so it is used at this size at least.");
+        static readonly GUIContent ResampleSideLabel = new GUIContent("Resample to N x N", "Patches a side of the resampled grid (1 to 1024). More patches: control points closer together, a finer brush.");
+        static readonly GUIContent ResampleLabel = new GUIContent("Resample grid", "Replace the grid with N x N patches fitted to the current surface (it keeps its shape; the error is reported). One undo step; Cancel leaves the grid as it was.");
         static readonly GUIContent ClearLabel = new GUIContent("Clear selection", "Forget the selected patches.");
 
         /// <summary>The tool's settings, shown in the renderer's inspector.</summary>
-        internal static void DrawSettings()
+        internal static void DrawSettings(GregoryTerrainRenderer renderer)
         {
             EditorGUILayout.Space();
             EditorGUILayout.HelpBox("Sculpt: pick the Sculpt tool in the Scene view's Tools overlay (key B), then drag on the terrain. Each stroke is one undo step.", MessageType.None);
             Mode = (SculptMode)EditorGUILayout.EnumPopup(ModeLabel, Mode);
+            double spacing = ControlPointSpacing(renderer);
+            if (!double.IsNaN(spacing)) EditorGUILayout.LabelField(SpacingLabel, new GUIContent($"{spacing:G3}"));
             RadiusMetres = Mathf.Max(1e-3f, EditorGUILayout.FloatField(RadiusLabel, RadiusMetres));
+            if (Mode != SculptMode.SelectPatches && RadiusMetres < spacing)
+                EditorGUILayout.HelpBox($"The brush ({RadiusMetres:G3} m) is smaller than the control-point spacing ({spacing:G3} m), so it is used at {spacing:G3} m. Resample the grid to more patches below to sculpt finer.", MessageType.Warning);
             if (Mode == SculptMode.Raise || Mode == SculptMode.Lower)
                 HeightMetres = Mathf.Max(0f, EditorGUILayout.FloatField(HeightLabel, HeightMetres));
             else if (Mode != SculptMode.SelectPatches)
@@ -90,7 +102,53 @@ namespace GregoryTerrain.EditorTools
                 EditorGUILayout.LabelField("Selection", $"columns {Selection.I0} to {Selection.I1}, rows {Selection.J0} to {Selection.J1} of '{SelectionGrid.name}'");
                 if (GUILayout.Button(ClearLabel)) { SelectionGrid = null; SceneView.RepaintAll(); }
             }
+            ResampleSide = Mathf.Clamp(EditorGUILayout.IntField(ResampleSideLabel, ResampleSide), 1, PatchGridWindow.MaxSide);
+            using (new EditorGUI.DisabledScope(renderer == null || renderer.Grid == null || !renderer.Grid.IsValid))
+                if (GUILayout.Button(ResampleLabel)) { Resample(renderer, ResampleSide); GUIUtility.ExitGUI(); }
+            if (s_ResampleMessage != null) EditorGUILayout.HelpBox(s_ResampleMessage, s_ResampleMessageType);
         }
+
+        /// <summary>Metres between neighbouring control points of the renderer's grid (Terrain Size and the Transform included); NaN without a valid grid.</summary>
+        internal static double ControlPointSpacing(GregoryTerrainRenderer renderer)
+        {
+            PatchGridAsset grid = renderer != null ? renderer.Grid : null;
+            if (grid == null || !grid.IsValid) return double.NaN;
+            Double3 scale = renderer.WorldUnitsPerObjectUnit;   // object (x, height, y)
+            if (!(scale.x > 0) || !(scale.z > 0)) return double.NaN;
+            return NewTerrainAuthoring.ControlPointSpacing(grid.XLinesData, grid.YLinesData, scale.x, scale.z);
+        }
+
+        /// <summary>The radius a dab uses, metres: the typed one, at least the control-point spacing.</summary>
+        internal static float BrushRadius(GregoryTerrainRenderer renderer)
+        {
+            double spacing = ControlPointSpacing(renderer);
+            return double.IsNaN(spacing) ? RadiusMetres : (float)NewTerrainAuthoring.ClampBrushRadius(RadiusMetres, spacing);
+        }
+
+        /// <summary>
+        /// Replaces the grid with <paramref name="side"/> x <paramref name="side"/> patches fitted to its
+        /// surface (Core's ResampleAuthoring), with a progress bar and Cancel; one undo step; a cancel or
+        /// an error leaves the grid as it was. The error against the old surface is reported in metres.
+        /// </summary>
+        static void Resample(GregoryTerrainRenderer renderer, int side)
+        {
+            PatchGridAsset grid = renderer.Grid;
+            string name = $"Resample grid to {side} x {side}";
+            using var cancel = new CancellationTokenSource();
+            var progress = new CancelableProgressBar($"{name}: '{grid.name}'", cancel);
+            try
+            {
+                HeightmapFit fit = ResampleAuthoring.Resample(grid.ToPatchGrid(), side, side, progress, cancel.Token);
+                PatchGridAssetUndo.SetGrid(grid, fit.Grid, name);
+                double metres = renderer.WorldUnitsPerObjectUnit.y;
+                ReportResample($"{name}: done. Against the old surface: max error {fit.MaxError * metres:G3} m, RMS {fit.RmsError * metres:G3} m; control points now {ControlPointSpacing(renderer):G3} m apart.", MessageType.Info);
+            }
+            catch (OperationCanceledException) { ReportResample($"{name} cancelled; the grid was not changed.", MessageType.Warning); }
+            catch (ArgumentException e) { ReportResample($"{name}: {e.Message} The grid was not changed.", MessageType.Error); }
+            finally { EditorUtility.ClearProgressBar(); }
+        }
+
+        static void ReportResample(string message, MessageType type) { s_ResampleMessage = message; s_ResampleMessageType = type; }
 
         /// <summary>Grows or shrinks the brush by a fifth (the shortcuts).</summary>
         internal static void ScaleBrush(float factor)
@@ -136,8 +194,9 @@ namespace GregoryTerrain.EditorTools
             {
                 Handles.matrix = Matrix4x4.identity;   // the disc is in world space
                 Handles.color = Mode == SculptMode.Smooth ? Color.cyan : Mode == SculptMode.Flatten ? Color.yellow : (Mode == SculptMode.Lower) != e.shift ? Color.red : Color.green;
-                Handles.DrawWireDisc(point, normal, RadiusMetres);
-                Handles.DrawWireDisc(point, normal, 0.5f * RadiusMetres);
+                float radius = BrushRadius(renderer);
+                Handles.DrawWireDisc(point, normal, radius);
+                Handles.DrawWireDisc(point, normal, 0.5f * radius);
             }
 
             switch (type)
@@ -156,7 +215,7 @@ namespace GregoryTerrain.EditorTools
                 case EventType.MouseDrag when GUIUtility.hotControl == id:
                     if (hit)
                     {
-                        if (_stroking && Distance(point, _lastDab) >= 0.25f * RadiusMetres) Dab(renderer, grid, point, e.shift);
+                        if (_stroking && Distance(point, _lastDab) >= 0.25f * BrushRadius(renderer)) Dab(renderer, grid, point, e.shift);
                         Select(renderer, grid, point);
                     }
                     e.Use();
@@ -198,11 +257,12 @@ namespace GregoryTerrain.EditorTools
             Double3 scale = renderer.WorldUnitsPerObjectUnit;   // Terrain Size, Height Scale and the Transform
             float sx = Mathf.Max((float)scale.x, 1e-12f), sy = Mathf.Max((float)scale.y, 1e-12f);
             bool lower = (Mode == SculptMode.Lower) != invert;
+            float radius = BrushRadius(renderer) / sx;
             BrushDab dab = Mode switch
             {
-                SculptMode.Smooth => new BrushDab(BrushMode.Smooth, local.x, local.z, RadiusMetres / sx, Amount),
-                SculptMode.Flatten => new BrushDab(BrushMode.Flatten, local.x, local.z, RadiusMetres / sx, Amount, _flattenTarget),
-                _ => new BrushDab(BrushMode.Raise, local.x, local.z, RadiusMetres / sx, (lower ? -HeightMetres : HeightMetres) / sy),
+                SculptMode.Smooth => new BrushDab(BrushMode.Smooth, local.x, local.z, radius, Amount),
+                SculptMode.Flatten => new BrushDab(BrushMode.Flatten, local.x, local.z, radius, Amount, _flattenTarget),
+                _ => new BrushDab(BrushMode.Raise, local.x, local.z, radius, (lower ? -HeightMetres : HeightMetres) / sy),
             };
             try
             {

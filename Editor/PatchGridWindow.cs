@@ -18,7 +18,7 @@ namespace GregoryTerrain.EditorTools
     internal sealed class PatchGridWindow : EditorWindow
     {
         /// <summary>Patches a side the window offers; GpuLayout.CheckSize holds the GPU's own limit (documented in the manual).</summary>
-        const int MaxSide = 1024;
+        internal const int MaxSide = 1024;
         /// <summary>The largest Max Size a texture import offers.</summary>
         const int MaxImportSize = 16384;
 

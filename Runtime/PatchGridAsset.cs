@@ -76,6 +76,10 @@ namespace GregoryTerrain
         /// <summary>True while the control points are still in the older single array (not yet in blocks).</summary>
         internal bool HasLegacyLayout => (blocks == null || blocks.Length == 0) && controlPoints != null && controlPoints.Length > 0;
 
+        /// <summary>The grid lines as serialized, for readers that need no grid (the sculpt panel's spacing); never write into them.</summary>
+        internal double[] XLinesData => xLines;
+        internal double[] YLinesData => yLines;
+
         /// <summary>The control point blocks (empty while <see cref="HasLegacyLayout"/>). A copy of the array.</summary>
         internal PatchGridBlock[] Blocks => blocks == null ? Array.Empty<PatchGridBlock>() : (PatchGridBlock[])blocks.Clone();
 

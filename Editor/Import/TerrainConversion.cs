@@ -1,4 +1,5 @@
 using System;
+using System.Collections.Generic;
 using System.Threading;
 using GregoryTerrain;
 using UnityEditor;
@@ -7,67 +8,108 @@ using UnityEngine;
 namespace GregoryTerrain.EditorTools
 {
     /// <summary>
-    /// GameObject > Gregory Terrain > Convert Selected Terrain: a new Gregory terrain with the selected
-    /// Unity Terrain's size, position and heights (fitted by least squares); the Terrain is only read.
+    /// GameObject &gt; Gregory Terrain &gt; Convert Selected Terrain: one Gregory terrain, in metres, from
+    /// the selected Unity Terrain or group of adjacent, equal Terrain tiles (Core's TileGroupAuthoring:
+    /// one seamless grid). The whole fit runs first, with a progress bar and Cancel; only then are the
+    /// assets and the GameObject made and the source Terrains deactivated, all one undo step, so a
+    /// cancel or a refusal changes nothing.
     /// </summary>
     internal static class TerrainConversion
     {
         const string MenuPath = "GameObject/Gregory Terrain/Convert Selected Terrain";
-        /// <summary>RMS target as a fraction of the terrain's height range, and the most patches a side tried.</summary>
+        const string UndoName = "Convert Terrain to Gregory Terrain";
+        /// <summary>RMS target as a fraction of the terrain's height, and the most patches a side tried per tile.</summary>
         const double RmsTargetOfHeight = 1e-3;
         const int MaxColumns = 256;
 
         [MenuItem(MenuPath, true, 11)]
-        static bool CanConvert() => Selected() != null;
+        static bool CanConvert() => SelectedTerrains().Count > 0;
 
         [MenuItem(MenuPath, false, 11)]
         static void Convert()
         {
-            Terrain terrain = Selected();
-            if (terrain == null) return;
-            TerrainData data = terrain.terrainData;
-            if (data == null)
+            List<Terrain> terrains = SelectedTerrains();
+            if (terrains.Count == 0) return;
+            var tiles = new List<TerrainTile>();
+            foreach (Terrain t in terrains)
             {
-                EditorUtility.DisplayDialog("Convert terrain", $"'{terrain.name}' has no TerrainData: nothing to convert.", "OK");
-                return;
+                if (t.terrainData == null) { Refuse($"'{t.name}' has no TerrainData: nothing to convert."); return; }
+                tiles.Add(Tile(t));
             }
-            Vector3 size = data.size;
-            int res = data.heightmapResolution;
+            TerrainTile[,] group;
+            try { group = TileGroupAuthoring.Arrange(tiles); }
+            catch (ArgumentException e) { Refuse(e.Message + " Nothing was converted."); return; }
+
+            TerrainTile first = group[0, 0];
+            int n = group.GetLength(0), m = group.GetLength(1), res = first.Resolution;
+            string what = n * m == 1 ? $"'{first.Name}'" : $"{n} x {m} tiles from '{first.Name}'";
             using var cancel = new CancellationTokenSource();
+            var progress = new CancelableProgressBar($"Converting {what} ({res} x {res} heights a tile)", cancel);
             try
             {
-                double[] z = TerrainHeights.FromUnity(data.GetHeights(0, 0, res, res), size.x, size.y, size.z);
-                var progress = new CancelableProgressBar($"Converting '{terrain.name}' ({res} x {res} heights)", cancel);
-                HeightmapFit fit = HeightmapFitter.FitToTarget(z, res, res, RmsTargetOfHeight * size.y / size.x, FitErrorKind.Rms, MaxColumns, progress, cancel.Token);
-
-                var grid = ScriptableObject.CreateInstance<PatchGridAsset>();
-                grid.SetGrid(fit.Grid, PatchGridBlocks.FromGrid(fit.Grid), out PatchGridBlock[] blocks, out _);
-                AssetDatabase.CreateAsset(grid, AssetDatabase.GenerateUniqueAssetPath($"Assets/{terrain.name} Patch Grid.asset"));
-                // The control points live in block objects: sub-assets of the grid's file, or the saved
-                // grid refers to objects that are gone after a reload ("blocks[0] is missing").
-                foreach (PatchGridBlock b in blocks) AssetDatabase.AddObjectToAsset(b, grid);
-                var go = new GameObject($"{terrain.name} (Gregory)");
-                go.transform.position = terrain.transform.position;
-                go.transform.localScale = new Vector3(size.x, size.x, size.z);
-                var renderer = go.AddComponent<GregoryTerrainRenderer>();
-                Shader shader = Shader.Find(GregoryTerrainMenu.ShaderName);
-                if (shader != null)
-                {
-                    var material = new Material(shader);
-                    AssetDatabase.CreateAsset(material, AssetDatabase.GenerateUniqueAssetPath("Assets/Gregory Terrain.mat"));
-                    renderer.Material = material;
-                }
-                else Debug.LogWarning($"Shader '{GregoryTerrainMenu.ShaderName}' not found; assign a material by hand.", go);
-                renderer.Grid = grid;
-                Undo.RegisterCreatedObjectUndo(go, "Convert Terrain to Gregory Terrain");
-                Selection.activeObject = go;
-                Debug.Log($"Converted '{terrain.name}' to {fit.Grid.Columns} x {fit.Grid.Rows} Gregory patches: height error max {fit.MaxError * size.x:G3} m, RMS {fit.RmsError * size.x:G3} m against its {res} x {res} heights.", go);
+                // Heights are fractions of the Terrain's height: with Height Scale = size.y they are metres.
+                HeightmapFit sw = HeightmapFitter.FitToTarget(first.Heights, res, res, RmsTargetOfHeight, FitErrorKind.Rms, Math.Max(1, MaxColumns / n), progress, cancel.Token);
+                PatchGrid grid = sw.Grid;
+                double max = sw.MaxError, rms = sw.RmsError;
+                if (n * m > 1) grid = TileGroupAuthoring.FitAndJoin(group, sw.Grid.Columns, sw.Grid.Rows, out max, out rms, progress, cancel.Token);
+                GameObject go = Create(first, n, m, grid);
+                Deactivate(terrains);
+                Undo.SetCurrentGroupName(UndoName);
+                Debug.Log($"Converted {what} to {grid.Columns} x {grid.Rows} Gregory patches: height error max {max * first.SizeY:G3} m, RMS {rms * first.SizeY:G3} m against the Terrain heights. The source Terrain GameObjects were deactivated (Undo brings them back).", go);
             }
-            catch (OperationCanceledException) { Debug.Log($"Converting '{terrain.name}' was cancelled; nothing was created.", terrain); }
-            catch (ArgumentException e) { EditorUtility.DisplayDialog("Convert terrain", $"'{terrain.name}': {e.Message}", "OK"); }
+            catch (OperationCanceledException) { Debug.Log($"Converting {what} was cancelled; nothing was changed.", terrains[0]); }
+            catch (ArgumentException e) { Refuse($"{what}: {e.Message} Nothing was converted."); }
             finally { EditorUtility.ClearProgressBar(); }
         }
 
-        static Terrain Selected() => Selection.activeObject is GameObject g ? g.GetComponent<Terrain>() : null;
+        /// <summary>The new terrain over the whole group, at the south-west tile's corner, in metres (Transform scale 1).</summary>
+        static GameObject Create(TerrainTile southWest, int columns, int rows, PatchGrid grid)
+        {
+            PatchGridAsset asset = TerrainAssets.CreateGrid(grid, $"Assets/{southWest.Name} Patch Grid.asset");
+            var go = new GameObject($"{southWest.Name} (Gregory)");
+            go.transform.position = new Vector3((float)southWest.X, (float)southWest.Y, (float)southWest.Z);
+            var renderer = go.AddComponent<GregoryTerrainRenderer>();
+            renderer.TerrainSize = new Vector2((float)(columns * southWest.SizeX), (float)(rows * southWest.SizeZ));
+            renderer.HeightScale = (float)southWest.SizeY;
+            renderer.HorizonLevels = true;
+            renderer.Grid = asset;
+            renderer.Material = TerrainAssets.CreateMaterial(go, noise: false);   // the user's terrain as it was, no detail added
+            TerrainAssets.AssignComputeShaders(renderer);
+            Undo.RegisterCreatedObjectUndo(go, UndoName);
+            Selection.activeObject = go;
+            return go;
+        }
+
+        /// <summary>Deactivates the source Terrains' GameObjects, recorded for Undo: the converted terrain replaces them in the scene.</summary>
+        static void Deactivate(List<Terrain> terrains)
+        {
+            foreach (Terrain t in terrains)
+            {
+                Undo.RecordObject(t.gameObject, UndoName);
+                t.gameObject.SetActive(false);
+            }
+        }
+
+        static TerrainTile Tile(Terrain t)
+        {
+            TerrainData data = t.terrainData;
+            int res = data.heightmapResolution;
+            float[,] fractions = data.GetHeights(0, 0, res, res);   // [z, x], south row first
+            var heights = new double[res * res];
+            for (int r = 0; r < res; r++)
+                for (int c = 0; c < res; c++) heights[r * res + c] = fractions[r, c];
+            Vector3 p = t.transform.position, size = data.size;
+            return new TerrainTile(t.name, p.x, p.z, size.x, size.y, size.z, res, heights, p.y);
+        }
+
+        static void Refuse(string message) => EditorUtility.DisplayDialog("Convert terrain", message, "OK");
+
+        static List<Terrain> SelectedTerrains()
+        {
+            var result = new List<Terrain>();
+            foreach (GameObject g in Selection.gameObjects)
+                if (g.GetComponent<Terrain>() is Terrain t) result.Add(t);
+            return result;
+        }
     }
 }

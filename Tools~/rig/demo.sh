@@ -4,8 +4,9 @@
 # the same view (the paper's zoom view). Prints vertices and triangles per range (pipeline
 # statistics: tessellation evaluation invocations and clipping invocations, the triangles entering the clipper).
 #   gt demo [--docs] [--dem | --tiled] [--no-setup] [--device SUBSTR] [--tiles M] [--factor F] [--width W] [--height H]
-# Writes .build/demo/demo_g<g>.png; with --docs also Documentation~/images/demo_g<g>.png (small indexed PNGs, png_palette.py;
-# g < 1 at half size, the thumbnails of the README's row of five).
+# Writes .build/demo/demo_g<g>.png; with --docs also Documentation~/images/demo_g1.0.png and, for
+# g < 1, Tools~/images/demo_g<g>.png (only the development page shows those: not packed; half size,
+# the thumbnails of its row of five). Small indexed PNGs, png_palette.py.
 # --dem: instead, the real-data crop of the tests (Tools~/RigTests/Data/dem/N48E009_east.hgt, SRTM3, 241 x 241
 # samples, 14.7 km across) fitted with 32 x 32 patches, heights x 3, rendered whole at g = h = 1 without
 # noise: .build/demo/demo_dem.png (with --docs also Documentation~/images/demo_dem.png).
@@ -108,11 +109,11 @@ for g in 1.0 0.5 0.2 0.1 0.02; do
   nonsky=$(awk '$1=="image" && $2=="nonsky_pixels" {print $3 " of " $5}' "$log")
   printf '%-6s %-24s %12s %12s %14s\n' "$g" "0,0,$g,$g" "$verts" "$tris" "$nonsky"
   if [ "$docs" = 1 ]; then
-    mkdir -p "$PKG_DIR/Documentation~/images"
-    # g < 1 only appears in the README's row of five, where half size is what shows: 200 x 150.
-    half=(); [ "$g" = 1.0 ] || half=(--half)
-    python3 "$RIG_DIR/png_palette.py" "$out/demo_g$g.png" "$PKG_DIR/Documentation~/images/demo_g$g.png" "${half[@]}"
+    # g < 1 only appears in the development page's row of five, where half size is what shows: 200 x 150.
+    half=() images="$PKG_DIR/Documentation~/images"; [ "$g" = 1.0 ] || { half=(--half); images="$PKG_DIR/Tools~/images"; }
+    mkdir -p "$images"
+    python3 "$RIG_DIR/png_palette.py" "$out/demo_g$g.png" "$images/demo_g$g.png" "${half[@]}"
   fi
 done
-say "images: $out/demo_g*.png$([ "$docs" = 1 ] && echo " and Documentation~/images/demo_g*.png")"
+say "images: $out/demo_g*.png$([ "$docs" = 1 ] && echo " and Documentation~/images/demo_g1.0.png, Tools~/images/demo_g0.*.png")"
 say "device: $(awk '$1=="device" && $2=="name" {$1=$2=""; print substr($0,3)}' "$out/harness_g1.0.log")"

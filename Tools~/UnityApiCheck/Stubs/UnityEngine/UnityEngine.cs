@@ -252,6 +252,7 @@ namespace UnityEngine
         public void EnableKeyword(string keyword) { }                                 // SR:Material.EnableKeyword
         public void DisableKeyword(string keyword) { }                                // SR:Material.DisableKeyword
         public void SetVector(int nameID, Vector4 value) { }                          // SR:Material.SetVector
+        public void SetFloat(string name, float value) { }                            // SR:Material.SetFloat
         public void SetBuffer(int nameID, ComputeBuffer value) { }                    // SR:Material.SetBuffer
         public void SetBuffer(int nameID, GraphicsBuffer value) { }                   // SR:Material.SetBuffer
     }

@@ -1,0 +1,101 @@
+using System.IO;
+using System.Linq;
+using System.Text.RegularExpressions;
+using NUnit.Framework;
+using static GregoryTerrain.Rig.Tests.EditorToolSourceTests;
+
+namespace GregoryTerrain.Rig.Tests
+{
+    /// <summary>
+    /// Source-level checks of issue 40's first hour where only a Unity editor runs the code: the menu's
+    /// terrain in metres with Horizon levels, placed as Unity places its 3D objects (ObjectFactory.PlaceGameObject,
+    /// UnityCsReference 2022.3 GOCreationCommands.Place) after its creation is registered for Undo; its
+    /// material's toggles set property and keyword alike; the compute shaders found by the GUIDs their
+    /// .meta files hold (and named as the scripts' default references); the converter deactivating its
+    /// sources through Undo and leaving noise off; every dab and the disc at the clamped radius.
+    /// Core's NewTerrainAuthoringTests, ResampleAuthoringTests and TileGroupAuthoringTests test the operations.
+    /// </summary>
+    [TestFixture]
+    public class FirstHourSourceTests
+    {
+        static string Code(string path) => StripComments(File.ReadAllText(PackageRoot.Combine(path)));
+
+        static string Body(string path, string method) => Methods(File.ReadAllText(PackageRoot.Combine(path))).Single(m => m.name == method).body;
+
+        static string MetaGuid(string path) => Regex.Match(File.ReadAllText(PackageRoot.Combine(path + ".meta")), @"guid: (\w+)").Groups[1].Value;
+
+        [Test]
+        public void MenuTerrainIsInMetresWithHorizonLevelsAndPlacedAsUnityPlacesObjects()
+        {
+            string create = Body("Editor/GregoryTerrainMenu.cs", "Create");
+            Assert.That(Code("Editor/GregoryTerrainMenu.cs"), Does.Not.Contain("localScale"), "the Transform keeps scale 1");
+            StringAssert.Contains("TerrainSize = new Vector2((float)NewTerrainAuthoring.SizeMetres", create);
+            StringAssert.Contains("HeightScale = (float)NewTerrainAuthoring.HeightMetres", create);
+            StringAssert.Contains("HorizonLevels = true", create);
+            StringAssert.Contains("NewTerrainAuthoring.CreateGrid()", create);
+            StringAssert.Contains("TerrainAssets.AssignComputeShaders(renderer)", create);
+            int undo = create.IndexOf("Undo.RegisterCreatedObjectUndo(go"), place = create.IndexOf("ObjectFactory.PlaceGameObject(go, parent)");
+            Assert.That(undo, Is.GreaterThanOrEqualTo(0), "the creation is one undo step");
+            Assert.That(place, Is.GreaterThan(undo), "placed (pivot, origin preference, parent, selection) after the creation is registered");
+        }
+
+        [Test]
+        public void NewMaterialSetsEveryShaderToggleExplicitly()
+        {
+            string shader = File.ReadAllText(PackageRoot.Combine("Shaders/GregoryTerrain.shader"));
+            string material = Body("Editor/TerrainAssets.cs", "CreateMaterial");
+            var toggles = Regex.Matches(shader, @"\[Toggle\((\w+)\)\]\s*(\w+)").Select(m => m.Groups[2].Value).ToList();
+            Assert.That(toggles, Is.Not.Empty);
+            foreach (string property in toggles)
+                StringAssert.Contains($"SetToggle(material, \"{property}\"", material, $"{property} set with its keyword");
+        }
+
+        [Test]
+        public void ComputeShadersAreFoundByTheirMetaGuids()
+        {
+            string assets = Code("Editor/TerrainAssets.cs");
+            string renderer = File.ReadAllText(PackageRoot.Combine("Runtime/GregoryTerrainRenderer.cs.meta"));
+            string snow = File.ReadAllText(PackageRoot.Combine("Runtime/SnowSimulator.cs.meta"));
+            (string constant, string shader, string meta, string field)[] shaders =
+            {
+                ("CacheShaderGuid", "Shaders/Cache/TerrainCache.compute", renderer, "cacheShader"),
+                ("SnowSimulationGuid", "Shaders/Snow/SnowSimulation.compute", snow, "simulation"),
+                ("SnowFieldGuid", "Shaders/Snow/SnowField.compute", snow, "fieldShader"),
+            };
+            foreach (var s in shaders)
+            {
+                string guid = MetaGuid(s.shader);
+                StringAssert.Contains($"{s.constant} = \"{guid}\"", assets, s.shader);
+                StringAssert.Contains($"- {s.field}: {{fileID: 7200000, guid: {guid}, type: 3}}", s.meta, $"default reference of {s.field}");
+            }
+        }
+
+        [Test]
+        public void ConverterDeactivatesItsSourcesThroughUndoWithNoiseOff()
+        {
+            string code = Code("Editor/Import/TerrainConversion.cs");
+            Assert.That(code, Does.Not.Contain("localScale"), "the Transform keeps scale 1");
+            StringAssert.Contains("CreateMaterial(go, noise: false)", code);
+            string deactivate = Body("Editor/Import/TerrainConversion.cs", "Deactivate");
+            int record = deactivate.IndexOf("Undo.RecordObject(t.gameObject"), off = deactivate.IndexOf("SetActive(false)");
+            Assert.That(record, Is.GreaterThanOrEqualTo(0));
+            Assert.That(off, Is.GreaterThan(record), "recorded before it is changed");
+            string convert = Body("Editor/Import/TerrainConversion.cs", "Convert");
+            Assert.That(convert.IndexOf("TileGroupAuthoring.FitAndJoin"), Is.LessThan(convert.IndexOf("Create(first")), "the whole fit runs before anything is made");
+            Assert.That(convert.IndexOf("Create(first"), Is.LessThan(convert.IndexOf("Deactivate(terrains)")));
+        }
+
+        [Test]
+        public void DabsAndDiscUseTheClampedRadius()
+        {
+            string tool = "Editor/PatchGridSculptTool.cs";
+            foreach (string method in new[] { "Dab", "OnToolGUI" })
+            {
+                string body = Body(tool, method);
+                StringAssert.Contains("BrushRadius(renderer)", body, method);
+                Assert.That(Regex.IsMatch(body, @"RadiusMetres\s*[/*,)]"), Is.False, $"{method} uses the typed radius unclamped");
+            }
+            StringAssert.Contains("ClampBrushRadius(RadiusMetres, spacing)", Body(tool, "BrushRadius"));
+        }
+    }
+}
