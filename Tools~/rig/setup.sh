@@ -2,7 +2,7 @@
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 
 APT_PACKAGES=(glslang-tools spirv-tools spirv-cross mesa-vulkan-drivers libvulkan-dev libvulkan1
-              vulkan-tools libpng-dev cmake g++ python3-matplotlib python3-numpy)
+              vulkan-tools libpng-dev cmake g++ python3-matplotlib python3-numpy optipng)
 
 missing=()
 for p in "${APT_PACKAGES[@]}"; do
