@@ -41,6 +41,7 @@ namespace GregoryTerrain.EditorTools
         internal static int ResampleSide = NewTerrainAuthoring.Patches;
         static string s_ResampleMessage;
         static MessageType s_ResampleMessageType;
+        static PatchGridAsset s_ResampleMessageGrid;   // the message is shown under that grid's renderers only
         /// <summary>Raise/lower: metres added at the brush centre per dab.</summary>
         internal static float HeightMetres = 1f;
         /// <summary>Smooth/flatten: fraction of the way per dab at the centre.</summary>
@@ -105,7 +106,7 @@ namespace GregoryTerrain.EditorTools
             ResampleSide = Mathf.Clamp(EditorGUILayout.IntField(ResampleSideLabel, ResampleSide), 1, PatchGridWindow.MaxSide);
             using (new EditorGUI.DisabledScope(renderer == null || renderer.Grid == null || !renderer.Grid.IsValid))
                 if (GUILayout.Button(ResampleLabel)) { Resample(renderer, ResampleSide); GUIUtility.ExitGUI(); }
-            if (s_ResampleMessage != null) EditorGUILayout.HelpBox(s_ResampleMessage, s_ResampleMessageType);
+            if (s_ResampleMessage != null && s_ResampleMessageGrid == renderer.Grid) EditorGUILayout.HelpBox(s_ResampleMessage, s_ResampleMessageType);
         }
 
         /// <summary>Metres between neighbouring control points of the renderer's grid (Terrain Size and the Transform included); NaN without a valid grid.</summary>
@@ -140,15 +141,16 @@ namespace GregoryTerrain.EditorTools
             {
                 HeightmapFit fit = ResampleAuthoring.Resample(grid.ToPatchGrid(), side, side, progress, cancel.Token);
                 PatchGridAssetUndo.SetGrid(grid, fit.Grid, name);
+                if (SelectionGrid == grid) SelectionGrid = null;   // its patch indices name other places on the new grid
                 double metres = renderer.WorldUnitsPerObjectUnit.y;
-                ReportResample($"{name}: done. Against the old surface: max error {fit.MaxError * metres:G3} m, RMS {fit.RmsError * metres:G3} m; control points now {ControlPointSpacing(renderer):G3} m apart.", MessageType.Info);
+                ReportResample(grid, $"{name}: done. Against the old surface: max error {fit.MaxError * metres:G3} m, RMS {fit.RmsError * metres:G3} m; control points now {ControlPointSpacing(renderer):G3} m apart.", MessageType.Info);
             }
-            catch (OperationCanceledException) { ReportResample($"{name} cancelled; the grid was not changed.", MessageType.Warning); }
-            catch (ArgumentException e) { ReportResample($"{name}: {e.Message} The grid was not changed.", MessageType.Error); }
+            catch (OperationCanceledException) { ReportResample(grid, $"{name} cancelled; the grid was not changed.", MessageType.Warning); }
+            catch (ArgumentException e) { ReportResample(grid, $"{name}: {e.Message} The grid was not changed.", MessageType.Error); }
             finally { EditorUtility.ClearProgressBar(); }
         }
 
-        static void ReportResample(string message, MessageType type) { s_ResampleMessage = message; s_ResampleMessageType = type; }
+        static void ReportResample(PatchGridAsset grid, string message, MessageType type) { s_ResampleMessage = message; s_ResampleMessageType = type; s_ResampleMessageGrid = grid; }
 
         /// <summary>Grows or shrinks the brush by a fifth (the shortcuts).</summary>
         internal static void ScaleBrush(float factor)

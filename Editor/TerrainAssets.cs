@@ -75,6 +75,7 @@ namespace GregoryTerrain.EditorTools
             asset.SetGrid(grid, PatchGridBlocks.FromGrid(grid), out PatchGridBlock[] blocks, out _);
             AssetDatabase.CreateAsset(asset, AssetDatabase.GenerateUniqueAssetPath(path));
             foreach (PatchGridBlock b in blocks) AssetDatabase.AddObjectToAsset(b, asset);
+            AssetDatabase.SaveAssetIfDirty(asset);   // AddObjectToAsset changes memory only: without this the file holds no blocks until the project is saved
             return asset;
         }
     }

@@ -65,16 +65,29 @@ namespace GregoryTerrain.EditorTools
         /// <summary>The new terrain over the whole group, at the south-west tile's corner, in metres (Transform scale 1).</summary>
         static GameObject Create(TerrainTile southWest, int columns, int rows, PatchGrid grid)
         {
-            PatchGridAsset asset = TerrainAssets.CreateGrid(grid, $"Assets/{southWest.Name} Patch Grid.asset");
             var go = new GameObject($"{southWest.Name} (Gregory)");
-            go.transform.position = new Vector3((float)southWest.X, (float)southWest.Y, (float)southWest.Z);
-            var renderer = go.AddComponent<GregoryTerrainRenderer>();
-            renderer.TerrainSize = new Vector2((float)(columns * southWest.SizeX), (float)(rows * southWest.SizeZ));
-            renderer.HeightScale = (float)southWest.SizeY;
-            renderer.HorizonLevels = true;
-            renderer.Grid = asset;
-            renderer.Material = TerrainAssets.CreateMaterial(go, noise: false);   // the user's terrain as it was, no detail added
-            TerrainAssets.AssignComputeShaders(renderer);
+            PatchGridAsset asset = null;
+            Material material = null;
+            try
+            {
+                go.transform.position = new Vector3((float)southWest.X, (float)southWest.Y, (float)southWest.Z);
+                var renderer = go.AddComponent<GregoryTerrainRenderer>();
+                renderer.TerrainSize = new Vector2((float)(columns * southWest.SizeX), (float)(rows * southWest.SizeZ));   // refuses a bad size before any asset exists
+                renderer.HeightScale = (float)southWest.SizeY;
+                renderer.HorizonLevels = true;
+                asset = TerrainAssets.CreateGrid(grid, $"Assets/{AssetFileName(southWest.Name)} Patch Grid.asset");
+                renderer.Grid = asset;
+                material = TerrainAssets.CreateMaterial(go, noise: false);   // the user's terrain as it was, no detail added
+                renderer.Material = material;
+                TerrainAssets.AssignComputeShaders(renderer);
+            }
+            catch
+            {
+                UnityEngine.Object.DestroyImmediate(go);
+                if (asset != null) AssetDatabase.DeleteAsset(AssetDatabase.GetAssetPath(asset));
+                if (material != null) AssetDatabase.DeleteAsset(AssetDatabase.GetAssetPath(material));
+                throw;
+            }
             Undo.RegisterCreatedObjectUndo(go, UndoName);
             Selection.activeObject = go;
             return go;
@@ -102,13 +115,26 @@ namespace GregoryTerrain.EditorTools
             return new TerrainTile(t.name, p.x, p.z, size.x, size.y, size.z, res, heights, p.y);
         }
 
+        /// <summary>A Terrain's name as a file name: a '/' or another character no file name may hold becomes '_'.</summary>
+        static string AssetFileName(string name)
+        {
+            char[] bad = System.IO.Path.GetInvalidFileNameChars();
+            var chars = name.ToCharArray();
+            for (int i = 0; i < chars.Length; i++)
+                if (chars[i] == '/' || chars[i] == '\\' || chars[i] == ':' || System.Array.IndexOf(bad, chars[i]) >= 0) chars[i] = '_';
+            return new string(chars);
+        }
+
         static void Refuse(string message) => EditorUtility.DisplayDialog("Convert terrain", message, "OK");
 
         static List<Terrain> SelectedTerrains()
         {
             var result = new List<Terrain>();
             foreach (GameObject g in Selection.gameObjects)
-                if (g.GetComponent<Terrain>() is Terrain t) result.Add(t);
+            {
+                Terrain t = g.GetComponent<Terrain>();   // Unity's == null: in the editor a missing component is a fake-null object, which `is` would take
+                if (t != null) result.Add(t);
+            }
             return result;
         }
     }

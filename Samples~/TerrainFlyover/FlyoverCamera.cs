@@ -43,7 +43,13 @@ namespace GregoryTerrain.Samples.TerrainFlyover
 
         float _height = float.NaN;   // world y of the camera, eased from frame to frame
 
-        void OnEnable() => _height = float.NaN;
+        System.Func<double, double, double> _surfaceAt;   // made once: a method group passed as a delegate allocates at every call
+
+        void OnEnable()
+        {
+            _height = float.NaN;
+            _surfaceAt ??= SurfaceAt;
+        }
 
         void LateUpdate()
         {
@@ -53,7 +59,7 @@ namespace GregoryTerrain.Samples.TerrainFlyover
             FlyoverPath.Point(phase, out double x, out double y);
 
             double under = SurfaceAt(x, y);
-            double ahead = FlyoverPath.GroundAhead(phase, lookAheadSeconds * perSecond, SurfaceAt);
+            double ahead = FlyoverPath.GroundAhead(phase, lookAheadSeconds * perSecond, _surfaceAt);
             double next = FlyoverPath.NextHeight(_height, under, ahead, clearance, Time.deltaTime, smoothSeconds);
             if (!double.IsNaN(next)) _height = (float)next;
 

@@ -97,5 +97,29 @@ namespace GregoryTerrain.Rig.Tests
             }
             StringAssert.Contains("ClampBrushRadius(RadiusMetres, spacing)", Body(tool, "BrushRadius"));
         }
+        [Test]
+        public void EditorCodeNeverTestsAComponentWithIs()
+        {
+            // In the editor GetComponent returns a fake-null object for a missing component; `is T` and
+            // `?.` test the C# reference, so every selected GameObject would pass as a Terrain.
+            foreach (string file in Directory.GetFiles(PackageRoot.Combine("Editor"), "*.cs", SearchOption.AllDirectories))
+            {
+                string code = StripComments(File.ReadAllText(file));
+                Assert.That(Regex.IsMatch(code, @"GetComponent<\w+>\(\)\s*(is\s|\?\.)"), Is.False, $"{Path.GetFileName(file)} tests GetComponent's result with `is` or `?.`");
+            }
+        }
+
+        [Test]
+        public void NewGridsAreOnDiskWithTheirBlocksAndAFailedConversionLeavesNothing()
+        {
+            string grid = Body("Editor/TerrainAssets.cs", "CreateGrid");
+            Assert.That(grid.IndexOf("AssetDatabase.SaveAssetIfDirty(asset)"), Is.GreaterThan(grid.IndexOf("AddObjectToAsset")),
+                "AddObjectToAsset changes memory only: the blocks reach the file when it is saved");
+            string create = Body("Editor/Import/TerrainConversion.cs", "Create");
+            Assert.That(create.IndexOf("TerrainSize ="), Is.LessThan(create.IndexOf("TerrainAssets.CreateGrid")), "the sizes are refused before an asset is made");
+            StringAssert.Contains("UnityEngine.Object.DestroyImmediate(go)", create);
+            StringAssert.Contains("AssetDatabase.DeleteAsset(AssetDatabase.GetAssetPath(asset))", create);
+            StringAssert.Contains("AssetFileName(southWest.Name)", create);
+        }
     }
 }

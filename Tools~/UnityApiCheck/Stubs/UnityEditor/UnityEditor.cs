@@ -122,6 +122,8 @@ namespace UnityEditor
     {
         public static void CreateAsset(Object asset, string path) { }                        // SR:AssetDatabase.CreateAsset
         public static string GenerateUniqueAssetPath(string path) => path;                   // SR:AssetDatabase.GenerateUniqueAssetPath
+        public static void SaveAssetIfDirty(Object obj) { }                                  // SR:AssetDatabase.SaveAssetIfDirty
+        public static bool DeleteAsset(string path) => false;                                // SR:AssetDatabase.DeleteAsset
     }
 
     public sealed partial class Selection { public static Object activeObject { get; set; } } // SR:Selection-activeObject
