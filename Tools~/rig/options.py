@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
 """The range check of the rig's numeric options, for its python scripts (argparse type=) and its
-bash scripts (check_number in common.sh; the carried device scripts call this file beside them).
+bash scripts (check_number in common.sh; the carried device scripts call this file beside them);
+python scripts declare theirs with add_number.
 gt-cli's own options are checked in Tools~/dotnet/Gt/Args.cs with the same messages:
     gt CMD: --tiles 0 is out of range (1..64)          (exit 2)
 
@@ -64,7 +65,9 @@ def parse(name, text):
 def parse_form(form, text):
     """FORM as the command line gives it: NAME, NAME,... (a list) or size (WIDTHxHEIGHT)."""
     if form == "size":
-        parts = (text or "").split("x")
+        if not text:
+            raise OptionError(f"needs a value: WIDTHxHEIGHT ({range_text('pixels')} each)")
+        parts = text.split("x")
         if len(parts) != 2:
             raise OptionError(f"{text} is not WIDTHxHEIGHT ({range_text('pixels')} each)")
         return [parse("pixels", p) for p in parts]
@@ -79,17 +82,24 @@ def parse_form(form, text):
     return parse(form, text)
 
 
-def argtype(name):
-    """An argparse type= for a numeric option in RANGES[name]: argparse names the option and exits 2."""
+def add_number(parser, *flags, range, **kwargs):
+    """parser.add_argument for a numeric option in RANGES[range]: a bad or missing value ends the
+    script with argparse's "error: argument --jobs: 0 is out of range (1..256)", exit 2."""
     import argparse
 
     def check(text):
         try:
-            return parse(name, text)
+            return parse(range, text)
         except OptionError as e:
             raise argparse.ArgumentTypeError(str(e)) from None
-    check.__name__ = name
-    return check
+    check.__name__ = range
+
+    class NeedsValue(argparse.Action):
+        def __call__(self, p, namespace, value, option_string=None):
+            if value is None:
+                p.error(f"argument {option_string}: needs a value ({range_text(range)})")
+            setattr(namespace, self.dest, value)
+    return parser.add_argument(*flags, type=check, nargs="?", action=NeedsValue, **kwargs)
 
 
 def main(argv):

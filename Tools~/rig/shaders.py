@@ -183,7 +183,7 @@ def compile_one(out_dir, variant, stage, includes, dxc=DXC):
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("out_dir")
-    ap.add_argument("-j", "--jobs", type=options.argtype("jobs"), default=min(os.cpu_count() or 1, 256))
+    options.add_number(ap, "-j", "--jobs", range="jobs", default=min(os.cpu_count() or 1, 256))
     ap.add_argument("-I", dest="includes", action="append", default=[],
                     help="extra include directory (searched after the includer's own folder)")
     ap.add_argument("--only", action="append", default=[], help="compile only this variant")
