@@ -28,7 +28,7 @@ namespace GregoryTerrain.Rig
 
         public bool Holds(double v) => (MinOpen ? v > Min : v >= Min) && v <= Max && !(NotZero && v == 0);
 
-        /// <summary>"1..64", "&gt;0..16384", "-1000..1000, not 0"; integers added "whole" only where the range alone does not say so.</summary>
+        /// <summary>As the messages print it: "1..64", "&gt;0..16384", "-1000..1000, not 0".</summary>
         public string Text => (MinOpen ? ">" : "") + N(Min) + ".." + N(Max) + (NotZero ? ", not 0" : "");
 
         static string N(double v) => v.ToString("G", CultureInfo.InvariantCulture);

@@ -45,19 +45,30 @@ namespace GregoryTerrain.Rig
         const string SceneOptions = "grid plain-origin";
         static readonly NumericOption[] SceneNumbers =
         {
-            NumericOption.Numbers("range", Bounds.Real(0, 1, "c"), Bounds.Real(0, 1, "d"), Bounds.Real(0, 1, "g"), Bounds.Real(0, 1, "h")),
-            NumericOption.Numbers("anchor-at", Bounds.Real(0, 1, "c"), Bounds.Real(0, 1, "d"), Bounds.Real(0, 1, "g"), Bounds.Real(0, 1, "h")),
+            UnitSquareRange("range"), UnitSquareRange("anchor-at"),
             Tiles, NumericOption.Real("max-factor", 1, TessellationSettings.HardwareMaxFactor), TargetPixels,
             NumericOption.Real("factor", 0, TessellationSettings.HardwareMaxFactor),   // 0: adaptive (Core refuses 0 < F < 1)
             Noise, Octaves, NumericOption.One("gamma", new Bounds { Min = -1000, Max = 1000, NotZero = true }),
             NumericOption.Real("noise-vertices", 0, 1 << 24), Width, Height,
         };
 
+        /// <summary>c,d,g,h in the unit square (TerrainRange.Validate refuses an empty or mirrored one).</summary>
+        static NumericOption UnitSquareRange(string name) =>
+            NumericOption.Numbers(name, Bounds.Real(0, 1, "c"), Bounds.Real(0, 1, "d"), Bounds.Real(0, 1, "g"), Bounds.Real(0, 1, "h"));
+
         static int Main(string[] argv)
         {
             Register();
-            if (argv.Length == 2 && argv[0] == "help" && Commands.TryGetValue(argv[1], out var described))
-                return Describe(argv[1], described);
+            if (argv.Length > 0 && argv[0] == "help")
+            {
+                if (argv.Length == 1) argv = new string[0];   // the list of commands
+                else if (argv.Length == 2 && Commands.TryGetValue(argv[1], out var described)) return Describe(argv[1], described);
+                else
+                {
+                    Console.Error.WriteLine($"gt-cli help: '{InputLimits.Quote(string.Join(" ", argv, 1, argv.Length - 1))}' is not a command (gt-cli help COMMAND)");
+                    return ExitUsage;
+                }
+            }
             if (argv.Length == 0 || !Commands.TryGetValue(argv[0], out var cmd))
             {
                 if (argv.Length > 0)
