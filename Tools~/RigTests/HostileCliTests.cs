@@ -122,8 +122,8 @@ namespace GregoryTerrain.Rig.Tests
                 Data("a range of width 0", new[] { "pack", "--grid", grid, "--range", "0.5,0,0.5,1", "--out", o }, "range.g", "0.5"),
                 Data("a mirrored range", new[] { "pack", "--grid", grid, "--range", "0.6,0,0.1,1", "--out", o }, "range.g", "0.1"),
                 Usage("a range outside the square", new[] { "pack", "--grid", grid, "--range", "-5,0,1,1", "--out", o }, "--range", "c -5", "0..1"),
-                Usage("tiles 0", new[] { "pack", "--grid", grid, "--tiles", "0", "--out", o }, "--tiles 0", "1..64"),
-                Usage("tiles 1000000000", new[] { "pack", "--grid", grid, "--tiles", "1000000000", "--out", o }, "--tiles 1000000000", "1..64"),
+                Usage("tiles 0", new[] { "pack", "--grid", grid, "--tiles", "0", "--out", o }, "--tiles 0", "1..1024"),
+                Usage("tiles 1000000000", new[] { "pack", "--grid", grid, "--tiles", "1000000000", "--out", o }, "--tiles 1000000000", "1..1024"),
                 Usage("max factor 65", new[] { "pack", "--grid", grid, "--max-factor", "65", "--out", o }, "--max-factor 65", "1..64"),
                 Usage("octaves 1000", new[] { "pack", "--grid", grid, "--octaves", "1000", "--out", o }, "--octaves 1000", "0..16"),
                 Usage("gamma 0", new[] { "pack", "--grid", grid, "--gamma", "0", "--out", o }, "--gamma 0", "not 0"),
@@ -131,7 +131,7 @@ namespace GregoryTerrain.Rig.Tests
                 Accept("pack a good scene", "the control: exit 0", new[] { "pack", "--grid", grid, "--out", o }, "packed 3x2"),
             };
             foreach (string bad in new[] { "1x", "", "1.5", "1e3", "99999999999", "0x10", "ten", "+-1" })
-                all.Add(Usage($"tiles '{bad}'", new[] { "pack", "--grid", grid, "--tiles", bad, "--out", o }, "--tiles", bad.Length == 0 ? "needs a value" : bad, "1..64"));
+                all.Add(Usage($"tiles '{bad}'", new[] { "pack", "--grid", grid, "--tiles", bad, "--out", o }, "--tiles", bad.Length == 0 ? "needs a value" : bad, "1..1024"));
             foreach (string bad in new[] { "nan", "NaN", "inf", "-Infinity", "1e400", "abc", "1,5", "0x1p3", "--" })
                 all.Add(bad == "--"
                     ? Usage("gamma with no value", new[] { "pack", "--grid", grid, "--gamma", "--out", o }, "--gamma")

@@ -69,7 +69,7 @@ namespace GregoryTerrain.Rig.Tests
 
         static IEnumerable<Option> Scene(string cmd) => new[]
         {
-            Cli(cmd, "range", Unit4, "0,0,1,1"), Cli(cmd, "anchor-at", Unit4, "0,0,1,1"), Cli(cmd, "tiles", "int 1..64"),
+            Cli(cmd, "range", Unit4, "0,0,1,1"), Cli(cmd, "anchor-at", Unit4, "0,0,1,1"), Cli(cmd, "tiles", "int 1..1024"),
             Cli(cmd, "max-factor", "1..64"), Cli(cmd, "target-pixels", ">0..16384"), Cli(cmd, "factor", "0..64"),
             Cli(cmd, "noise", Noise, NoiseValid), Cli(cmd, "octaves", "int 0..16"), Cli(cmd, "gamma", "-1000..1000, not 0"),
             Cli(cmd, "noise-vertices", "0..16777216"), Cli(cmd, "width", "int 1..16384"), Cli(cmd, "height", "int 1..16384"),
@@ -105,9 +105,9 @@ namespace GregoryTerrain.Rig.Tests
             Cli("jitter", "center", "x 0..1; y 0..1", "0.5,0.5"), Cli("jitter", "factor", "int 1..64"), Cli("jitter", "noise", Noise, NoiseValid),
             Cli("jitter", "octaves", "int 0..16"), Cli("jitter", "pan", "-16384..16384"), Cli("jitter", "pixels", ">0..16384"),
             Cli("jitter", "tiles", "int 1..64"), Cli("jitter", "widths", "list >0..1", "0.01"),
-            Gt("demo", "tiles", "int 1..64"), Gt("demo", "factor", "0..64"), Gt("demo", "width", "int 1..16384"), Gt("demo", "height", "int 1..16384"),
+            Gt("demo", "tiles", "int 1..1024"), Gt("demo", "factor", "0..64"), Gt("demo", "width", "int 1..16384"), Gt("demo", "height", "int 1..16384"),
             Gt("bench_patch_layout", "rounds", "int 1..1000"), Gt("bench_patch_layout", "frames", "int 1..100000"), Gt("bench_patch_layout", "factor", "0..64"),
-            Gt("bench_patch_layout", "tiles", "int 1..64"), Gt("bench_patch_layout", "width", "int 1..16384"), Gt("bench_patch_layout", "height", "int 1..16384"),
+            Gt("bench_patch_layout", "tiles", "int 1..1024"), Gt("bench_patch_layout", "width", "int 1..16384"), Gt("bench_patch_layout", "height", "int 1..16384"),
             Gt("bench_patch_layout-device", "rounds", "int 1..1000"), Gt("bench_patch_layout-device", "frames", "int 1..100000"),
             Gt("fit-bench", "patches", "list int 1..1024", "16"), Gt("fit-bench", "sizes", "list int 2..16384", "257"),
             Gt("fit-bench", "scale-patches", "list int 1..1024", "32"), Gt("fit-bench", "legacy-sizes", "list int 2..16384", "1025"),
@@ -188,8 +188,6 @@ namespace GregoryTerrain.Rig.Tests
                 }
             }
         }
-
-        static string Num(double v) => v.ToString("R", CultureInfo.InvariantCulture);
 
         [TestCaseSource(nameof(Cases))]
         public void RefusesOutOfRange(Probe probe)

@@ -18,7 +18,7 @@ RANGES = {
     "frames": (True, 1, 100000, False),      # 100,000 frames of 1080p: minutes on a GPU, hours on lavapipe
     "rounds": (True, 1, 1000, False),
     "pixels": (True, 1, 16384, False),       # Vulkan's and D3D11's largest framebuffer side
-    "tiles": (True, 1, 64, False),           # GregoryTerrainRenderer.Tiles clamps to 1..64
+    "tiles": (True, 1, 1024, False),         # gt-cli pack --tiles (TessellationSettings.Validate)
     "factor": (False, 0, 64, False),         # gt-cli pack --factor: 0 adaptive, else uniform up to the hardware's 64
     "jobs": (True, 1, 256, False),
     "patches": (True, 1, 1024, False),       # a side of a fitted grid, as gt-cli fit-bench --patches
@@ -57,7 +57,7 @@ def parse(name, text):
         raise OptionError(f"{text} is not a finite number ({r})")
     if not ((v > lo) if open_lo else (v >= lo)) or v > hi:
         raise OptionError(f"{text} is out of range ({r})")
-    if whole and not v.is_integer():
+    if whole and not re.fullmatch(r"[+-]?[0-9]+", text.strip()):
         raise OptionError(f"{text} is not an integer ({r})")
     return int(v) if whole else v
 

@@ -13,7 +13,7 @@ namespace GregoryTerrain.Rig
 
     /// <summary>
     /// The values one number of an option accepts: finite, in [Min, Max] (above Min when MinOpen),
-    /// whole when Whole, not 0 when NotZero. Label names the number inside a comma-separated option.
+    /// written as an integer ("12", not "1.2e1") when Whole, not 0 when NotZero. Label names the number inside a comma-separated option.
     /// </summary>
     sealed class Bounds
     {
@@ -44,7 +44,7 @@ namespace GregoryTerrain.Rig
                 throw new UsageException($"{where} {q} is not a finite number ({Text})");
             if (!Holds(v))
                 throw new UsageException($"{where} {q} is out of range ({Text})");
-            if (Whole && v != Math.Floor(v))
+            if (Whole && !long.TryParse(text, NumberStyles.AllowLeadingSign, CultureInfo.InvariantCulture, out _))
                 throw new UsageException($"{where} {q} is not an integer ({Text})");
             return v;
         }
@@ -109,7 +109,7 @@ namespace GregoryTerrain.Rig
         readonly Dictionary<string, double[]> _numbers = new Dictionary<string, double[]>(StringComparer.Ordinal);
         readonly IReadOnlyDictionary<string, NumericOption> _numeric;
 
-        /// <param name="known">The options this command reads; null accepts any (internal use).</param>
+        /// <param name="known">The options this command reads; null accepts any.</param>
         /// <param name="numeric">Its numeric options with their ranges; each one given is checked now.</param>
         public Args(string[] argv, int start, ICollection<string> known = null, IReadOnlyDictionary<string, NumericOption> numeric = null)
         {

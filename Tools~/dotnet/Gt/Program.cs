@@ -34,6 +34,8 @@ namespace GregoryTerrain.Rig
         static readonly NumericOption Width = NumericOption.Int("width", 1, MaxPixels), Height = NumericOption.Int("height", 1, MaxPixels);
         /// <summary>M x M tiles: GregoryTerrainRenderer.Tiles clamps to 1..64.</summary>
         static readonly NumericOption Tiles = NumericOption.Int("tiles", 1, 64);
+        /// <summary>A drawn scene's tiles: TessellationSettings.Validate's 1..1024 (gt bench draws up to 256 beside static meshes).</summary>
+        static readonly NumericOption SceneTiles = NumericOption.Int("tiles", 1, 1024);
         static readonly NumericOption TargetPixels = NumericOption.Above("target-pixels", 0, MaxPixels);
         static readonly NumericOption Octaves = NumericOption.Int("octaves", 0, NoiseSettings.MaxOctaves);
         /// <summary>amplitude (terrain units; the terrain is 1 across), frequency (cells across: the finest octave stays below 2^24, NoiseSettings), alpha &gt; 1, beta &gt; 0.</summary>
@@ -46,7 +48,7 @@ namespace GregoryTerrain.Rig
         static readonly NumericOption[] SceneNumbers =
         {
             UnitSquareRange("range"), UnitSquareRange("anchor-at"),
-            Tiles, NumericOption.Real("max-factor", 1, TessellationSettings.HardwareMaxFactor), TargetPixels,
+            SceneTiles, NumericOption.Real("max-factor", 1, TessellationSettings.HardwareMaxFactor), TargetPixels,
             NumericOption.Real("factor", 0, TessellationSettings.HardwareMaxFactor),   // 0: adaptive (Core refuses 0 < F < 1)
             Noise, Octaves, NumericOption.One("gamma", new Bounds { Min = -1000, Max = 1000, NotZero = true }),
             NumericOption.Real("noise-vertices", 0, 1 << 24), Width, Height,
@@ -136,6 +138,10 @@ namespace GregoryTerrain.Rig
         }
 
         static NumericOption[] Scene(params NumericOption[] more) => SceneNumbers.Concat(more).ToArray();
+
+        /// <summary>Args over the scene options alone, for a scene a command builds itself (BenchPlan.Scene): checked as a user's.</summary>
+        internal static Args SceneArgs(string[] argv) =>
+            new Args(argv, 0, SceneOptions.Split(' '), SceneNumbers.ToDictionary(n => n.Name, StringComparer.Ordinal));
 
         static void Register()
         {
