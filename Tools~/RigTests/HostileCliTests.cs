@@ -121,17 +121,17 @@ namespace GregoryTerrain.Rig.Tests
                 Data("a range 1e-300 wide", new[] { "pack", "--grid", grid, "--range", "0,0,1e-300,1e-300", "--out", o }, "range width", "1E-300", "1E-10"),
                 Data("a range of width 0", new[] { "pack", "--grid", grid, "--range", "0.5,0,0.5,1", "--out", o }, "range.g", "0.5"),
                 Data("a mirrored range", new[] { "pack", "--grid", grid, "--range", "0.6,0,0.1,1", "--out", o }, "range.g", "0.1"),
-                Data("a range outside the square", new[] { "pack", "--grid", grid, "--range", "-5,0,1,1", "--out", o }, "range.c", "-5"),
-                Data("tiles 0", new[] { "pack", "--grid", grid, "--tiles", "0", "--out", o }, "tessellation.tiles", "0"),
-                Data("tiles 1000000000", new[] { "pack", "--grid", grid, "--tiles", "1000000000", "--out", o }, "tessellation.tiles", "1000000000"),
-                Data("max factor 65", new[] { "pack", "--grid", grid, "--max-factor", "65", "--out", o }, "tessellation.maxFactor", "65"),
-                Data("octaves 1000", new[] { "pack", "--grid", grid, "--octaves", "1000", "--out", o }, "noise.octaves", "1000"),
-                Data("gamma 0", new[] { "pack", "--grid", grid, "--gamma", "0", "--out", o }, "heightColor.gamma", "0"),
-                Data("orbit of 0 frames", new[] { "pack", "--grid", grid, "--orbit", "0,10", "--out", o }, "--orbit", "FRAMES"),
+                Usage("a range outside the square", new[] { "pack", "--grid", grid, "--range", "-5,0,1,1", "--out", o }, "--range", "c -5", "0..1"),
+                Usage("tiles 0", new[] { "pack", "--grid", grid, "--tiles", "0", "--out", o }, "--tiles 0", "1..1024"),
+                Usage("tiles 1000000000", new[] { "pack", "--grid", grid, "--tiles", "1000000000", "--out", o }, "--tiles 1000000000", "1..1024"),
+                Usage("max factor 65", new[] { "pack", "--grid", grid, "--max-factor", "65", "--out", o }, "--max-factor 65", "1..64"),
+                Usage("octaves 1000", new[] { "pack", "--grid", grid, "--octaves", "1000", "--out", o }, "--octaves 1000", "0..16"),
+                Usage("gamma 0", new[] { "pack", "--grid", grid, "--gamma", "0", "--out", o }, "--gamma 0", "not 0"),
+                Usage("orbit of 0 frames", new[] { "pack", "--grid", grid, "--orbit", "0,10", "--out", o }, "--orbit", "frames 0", "1..100000"),
                 Accept("pack a good scene", "the control: exit 0", new[] { "pack", "--grid", grid, "--out", o }, "packed 3x2"),
             };
             foreach (string bad in new[] { "1x", "", "1.5", "1e3", "99999999999", "0x10", "ten", "+-1" })
-                all.Add(Usage($"tiles '{bad}'", new[] { "pack", "--grid", grid, "--tiles", bad, "--out", o }, "--tiles", bad.Length == 0 ? "needs a value" : "not an integer"));
+                all.Add(Usage($"tiles '{bad}'", new[] { "pack", "--grid", grid, "--tiles", bad, "--out", o }, "--tiles", bad.Length == 0 ? "needs a value" : bad, "1..1024"));
             foreach (string bad in new[] { "nan", "NaN", "inf", "-Infinity", "1e400", "abc", "1,5", "0x1p3", "--" })
                 all.Add(bad == "--"
                     ? Usage("gamma with no value", new[] { "pack", "--grid", grid, "--gamma", "--out", o }, "--gamma")
@@ -142,10 +142,11 @@ namespace GregoryTerrain.Rig.Tests
                 all.Add(Usage($"noise '{bad}'", new[] { "pack", "--grid", grid, "--noise", bad, "--out", o }, "--noise"));
             foreach (string s in new[] { "2000000000", "-5", "1" })
                 all.Add(Usage($"demo-grid samples {s}", new[] { "demo-grid", "--samples", s, "--out", Path.Combine(_dir, "demo.json") }, "--samples", s));
-            all.Add(Data("demo-grid 100000 x 100000 patches", new[] { "demo-grid", "--columns", "100000", "--rows", "100000", "--out", Path.Combine(_dir, "demo.json") }, "columns * rows", "10000000000"));
-            all.Add(Usage("jitter width 'x'", new[] { "jitter", "--widths", "1e-2,x" }, "--widths", "'x'"));
-            foreach (string w in new[] { "1e-300", "0", "2" })
-                all.Add(Data($"jitter width {w}", new[] { "jitter", "--widths", w }, "width", w == "1e-300" ? "1E-300" : w));
+            all.Add(Usage("demo-grid 100000 x 100000 patches", new[] { "demo-grid", "--columns", "100000", "--rows", "100000", "--out", Path.Combine(_dir, "demo.json") }, "--columns 100000", "1..1024"));
+            all.Add(Usage("jitter width 'x'", new[] { "jitter", "--widths", "1e-2,x" }, "--widths", "x is not a number"));
+            all.Add(Data("jitter width 1e-300", new[] { "jitter", "--widths", "1e-300" }, "width", "1E-300"));
+            foreach (string w in new[] { "0", "2" })
+                all.Add(Usage($"jitter width {w}", new[] { "jitter", "--widths", w }, "--widths", w + " is out of range", ">0..1"));
             foreach (string cmd in new[] { "eval", "pack", "estimate", "jitter", "unity-asset", "error", "bench-plan", "bench-report", "snow-scene", "demo-grid" })
                 all.Add(Usage($"{cmd} with a mistyped option", new[] { cmd, "--no-such-option", "1" }, "unknown option --no-such-option"));
             for (int k = 0; k < all.Count; k++)

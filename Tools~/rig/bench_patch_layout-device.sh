@@ -12,10 +12,12 @@
 set -euo pipefail
 dir="$(cd "${1:?usage: bench_patch_layout-device.sh DIR [--rounds R] [--frames N] [--device SUBSTR]}" && pwd)"; shift
 rounds=5; frames=60; device=""
+# The rig's range check (options.py, carried beside this script).
+check_number() { python3 "$(dirname "${BASH_SOURCE[0]}")/options.py" bench_patch_layout-device "$@" || exit 2; }
 while [ $# -gt 0 ]; do
   case "$1" in
-    --rounds) rounds="${2:?--rounds needs a count}"; shift ;;
-    --frames) frames="${2:?--frames needs a count}"; shift ;;
+    --rounds) check_number "$1" rounds "${2-}"; rounds=$2; shift ;;
+    --frames) check_number "$1" frames "${2-}"; frames=$2; shift ;;
     --device) device="${2:?--device needs a name substring}"; shift ;;
     *) echo "bench_patch_layout-device: unknown argument '$1'" >&2; exit 2 ;;
   esac

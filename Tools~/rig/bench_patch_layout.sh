@@ -20,15 +20,15 @@ while [ $# -gt 0 ]; do
   case "$1" in
     --ref) ref=$2; shift ;;
     --variant) variant=$2; shift ;;
-    --rounds) rounds=$2; shift ;;
-    --frames) frames=$2; shift ;;
-    --factor) factor=$2; shift ;;
-    --tiles) tiles=$2; shift ;;
-    --width) width=$2; shift ;;
-    --height) height=$2; shift ;;
+    --rounds) check_number bench_patch_layout "$1" rounds "${2-}"; rounds=$2; shift ;;
+    --frames) check_number bench_patch_layout "$1" frames "${2-}"; frames=$2; shift ;;
+    --factor) check_number bench_patch_layout "$1" factor "${2-}"; factor=$2; shift ;;
+    --tiles) check_number bench_patch_layout "$1" tiles "${2-}"; tiles=$2; shift ;;
+    --width) check_number bench_patch_layout "$1" pixels "${2-}"; width=$2; shift ;;
+    --height) check_number bench_patch_layout "$1" pixels "${2-}"; height=$2; shift ;;
     --device) device=(--device "$2"); shift ;;
     --prepare) prepare=$2; shift ;;
-    *) die "bench_patch_layout: unknown option $1" ;;
+    *) usage_error bench_patch_layout "unknown option $1" ;;
   esac
   shift
 done
@@ -77,7 +77,7 @@ PY
 fi
 rm -rf "$scratch"
 cp "$harness" "$work/bin/gt-harness"
-cp "$RIG_DIR/bench_patch_layout-device.sh" "$work/"
+cp "$RIG_DIR/bench_patch_layout-device.sh" "$RIG_DIR/options.py" "$work/"
 cat >"$work/bench.conf" <<CONF
 ref=${ref:0:12}
 tree=$(git -C "$PKG_DIR" rev-parse --short=12 HEAD)$(git -C "$PKG_DIR" diff --quiet HEAD -- Shaders Runtime || echo +dirty)

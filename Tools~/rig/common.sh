@@ -14,6 +14,12 @@ export MESA_SHADER_CACHE_DIR="${MESA_SHADER_CACHE_DIR:-$BUILD_DIR/mesa-shader-ca
 
 say() { printf '[gt] %s\n' "$*" >&2; }
 die() { printf '[gt] error: %s\n' "$*" >&2; exit 1; }
+# A bad command line: "gt CMD: MESSAGE", exit 2 (gt-cli's exit code for bad usage).
+usage_error() { printf 'gt %s: %s\n' "$1" "$2" >&2; exit 2; }
+# check_number CMD OPTION FORM VALUE: exit 2 with "gt CMD: OPTION VALUE is out of range (LO..HI)"
+# unless VALUE is a number of FORM (a range of options.py's RANGES; NAME,... a list; size WxH).
+# Called as each option is read, so a bad value stops the command before any work.
+check_number() { python3 "$RIG_DIR/options.py" "$@" || exit 2; }
 
 # The render state the rig's variants draw with: the forward pass's Cull, ZTest, ZWrite, ZClip and
 # ColorMask in Shaders/GregoryTerrain.shader (render_state.py), as harness options.

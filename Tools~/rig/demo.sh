@@ -24,11 +24,11 @@ while [ $# -gt 0 ]; do
     --tiled) tiled=1 ;;
     --no-setup) setup=0 ;;
     --device) device="$2"; shift ;;
-    --tiles) tiles="$2"; shift ;;
-    --factor) factor="$2"; shift ;;
-    --width) width="$2"; shift ;;
-    --height) height="$2"; shift ;;
-    *) die "demo: unknown option '$1' (see the header of $0)" ;;
+    --tiles) check_number demo "$1" tiles "${2-}"; tiles="$2"; shift ;;
+    --factor) check_number demo "$1" factor "${2-}"; factor="$2"; shift ;;
+    --width) check_number demo "$1" pixels "${2-}"; width="$2"; shift ;;
+    --height) check_number demo "$1" pixels "${2-}"; height="$2"; shift ;;
+    *) usage_error demo "unknown option '$1' (see the header of $0)" ;;
   esac
   shift
 done

@@ -16,14 +16,14 @@ scale_patches="32 128 256" legacy_sizes="1025 4097" skip_dem=0 skip_scale=0 refe
 while [ $# -gt 0 ]; do
   case "$1" in
     --dem) dem="$2"; shift ;;
-    --patches) patches="$2"; shift ;;
-    --sizes) sizes="$2"; shift ;;
-    --scale-patches) scale_patches="$2"; shift ;;
-    --legacy-sizes) legacy_sizes="$2"; shift ;;
+    --patches) check_number fit-bench "$1" patches,... "${2-}"; patches="$2"; shift ;;
+    --sizes) check_number fit-bench "$1" samples,... "${2-}"; sizes="$2"; shift ;;
+    --scale-patches) check_number fit-bench "$1" patches,... "${2-}"; scale_patches="$2"; shift ;;
+    --legacy-sizes) check_number fit-bench "$1" samples,... "${2-}"; legacy_sizes="$2"; shift ;;
     --skip-dem) skip_dem=1 ;;
     --skip-scale) skip_scale=1 ;;
     --reference) reference=1 ;;
-    *) die "fit-bench: unknown option '$1'" ;;
+    *) usage_error fit-bench "unknown option '$1'" ;;
   esac
   shift
 done

@@ -18,25 +18,26 @@ device=(); frames=1; png=(); scene=(); error=0; levels_error=()
 while [ $# -gt 0 ]; do
   case "$1" in
     --device) device=(--device "${2:?--device needs a name substring}"); shift ;;
-    --frames) frames="${2:?--frames needs a count}"; shift ;;
+    --frames) check_number lod-bench "$1" frames "${2-}"; frames=$2; shift ;;
     --png) png=(--png "${2:?--png needs a file}"); shift ;;
     --error) error=1; shift; continue ;;
     --per-level) levels_error=(--per-level); shift; continue ;;
     --no-origin) scene+=(--no-origin); shift; continue ;;
     --*) scene+=("$1" "${2:?$1 needs a value}"); shift ;;
-    *) die "lod-bench: unknown argument '$1'" ;;
+    *) usage_error lod-bench "unknown argument '$1'" ;;
   esac
   shift
 done
 harness="$BUILD_DIR/harness/gt-harness"
 cli="$BUILD_DIR/gt-cli/gt-cli"
 [ -x "$harness" ] && [ -x "$cli" ] || die "harness or gt-cli not built (run: gt setup)"
+run="$BUILD_DIR/lod-run"
+rm -rf "$run"; mkdir -p "$run"
+# The scene first: gt-cli checks the scene options before the shaders compile.
+"$cli" lod-scene --out "$run" "${scene[@]}" > "$run/scene.txt"
 variants=(--only lod+noise); [ "$error" = 1 ] && variants+=(--only factor_readback+lod+noise)
 bash "$RIG_DIR/shaders.sh" "${variants[@]}" >/dev/null || die "the ${variants[*]} variants do not compile (gt shaders ${variants[*]})"
 spv="$BUILD_DIR/spirv/lod+noise"
-run="$BUILD_DIR/lod-run"
-rm -rf "$run"; mkdir -p "$run"
-"$cli" lod-scene --out "$run" "${scene[@]}" > "$run/scene.txt"
 levels=$(awk '$1 == "levels" { print $2 }' "$run/scene.txt")
 patches=$(awk '$1 == "patches" { print $2 }' "$run/scene.txt")
 width=1920; height=1080

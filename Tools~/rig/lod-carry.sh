@@ -12,8 +12,8 @@ dest="${1:?usage: gt lod-carry DEST [--terrains M1,M2,...]}"; shift
 terrains="100000,1000000"
 while [ $# -gt 0 ]; do
   case "$1" in
-    --terrains) terrains="${2:?--terrains needs metres, comma-separated}"; shift ;;
-    *) die "lod-carry: unknown argument '$1'" ;;
+    --terrains) check_number lod-carry "$1" metres,... "${2-}"; terrains=$2; shift ;;
+    *) usage_error lod-carry "unknown argument '$1'" ;;
   esac
   shift
 done
@@ -21,7 +21,7 @@ harness="$BUILD_DIR/harness/gt-harness"; cli="$BUILD_DIR/gt-cli/gt-cli"
 [ -x "$harness" ] && [ -x "$cli" ] || die "harness or gt-cli not built (run: gt setup)"
 rm -rf "$dest"; mkdir -p "$dest/bin" "$dest/spv"
 cp "$harness" "$dest/bin/"
-cp "$RIG_DIR/lod-device.sh" "$dest/"
+cp "$RIG_DIR/lod-device.sh" "$RIG_DIR/options.py" "$dest/"
 write_pass_states "$dest"   # the forward pass's render state, for lod-device.sh
 read -ra state < "$dest/pass_state_tessellated.args"
 tmp="$BUILD_DIR/lod-carry-spirv"; rm -rf "$tmp"

@@ -16,11 +16,13 @@
 set -euo pipefail
 run="$(cd "${1:?usage: lod-device.sh RUN_DIR [--device SUBSTR] [--frames N] [--rounds R]}" && pwd)"; shift
 device=""; frames=50; rounds=3
+# The rig's range check (options.py, carried beside this script).
+check_number() { python3 "$(dirname "${BASH_SOURCE[0]}")/options.py" lod-device "$@" || exit 2; }
 while [ $# -gt 0 ]; do
   case "$1" in
     --device) device="${2:?--device needs a name substring}"; shift ;;
-    --frames) frames="${2:?--frames needs a count}"; shift ;;
-    --rounds) rounds="${2:?--rounds needs a count}"; shift ;;
+    --frames) check_number "$1" frames "${2-}"; frames=$2; shift ;;
+    --rounds) check_number "$1" rounds "${2-}"; rounds=$2; shift ;;
     *) echo "lod-device: unknown argument '$1'" >&2; exit 2 ;;
   esac
   shift

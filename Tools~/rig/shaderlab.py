@@ -71,6 +71,7 @@ import threading
 import time
 
 import fxc_lint
+import options
 
 RIG_DIR = os.path.dirname(os.path.abspath(__file__))
 DEFAULT_PKG = os.path.dirname(os.path.dirname(RIG_DIR))
@@ -919,7 +920,7 @@ def main(argv=None):
     ap.add_argument("--shaderlib", default=None, help="Unity's shader libraries (default: PACKAGE/../shared/unity-shaderlib)")
     ap.add_argument("--check", choices=["all", "pipelines", "projects"], default="all")
     ap.add_argument("--counts", action="store_true", help="print SPIR-V instruction counts per pass, variant and stage")
-    ap.add_argument("--jobs", type=int, default=2, help="parallel compiles (default 2)")
+    options.add_number(ap, "--jobs", range="jobs", default=2, help="parallel compiles (default 2)")
     ap.add_argument("--pipeline", default=None, help="comma-separated pipelines to check (URP,HDRP,Builtin,Compute; default all)")
     ap.add_argument("--variants", default="all", metavar="all|base|KEYWORD",
                     help="all: none, each keyword alone, the effects together, the effects with the other sets' first keywords; "

@@ -15,9 +15,9 @@ cache's compute kernels, for GT_VERTEX_CACHE variants):
 Prints one line per variant and stage, then the counts. Exit status 1 on any error, and on any
 diagnostic line that ALLOWED_OUTPUT does not explain.
 
-Usage: shaders.py OUT_DIR [-j JOBS] [-I DIR]... [--only VARIANT]... [--dxc PATH]
+Usage: shaders.py OUT_DIR [-j JOBS] [-I DIR]... [--only VARIANT]... [--dxc PATH] [--clean]
 """
-import argparse, json, os, re, subprocess, sys
+import argparse, json, os, re, shutil, subprocess, sys
 from concurrent.futures import ThreadPoolExecutor
 
 RIG_DIR = os.path.dirname(os.path.abspath(__file__))
@@ -25,6 +25,8 @@ PKG_DIR = os.path.dirname(os.path.dirname(RIG_DIR))
 ENTRY_FILE = os.path.join(RIG_DIR, "TerrainRig.hlsl")
 VARIANTS_FILE = os.path.join(RIG_DIR, "shader_variants.txt")
 DXC = os.path.join(PKG_DIR, "..", "shared", "dxc", "bin", "dxc")
+import options  # noqa: E402  (the rig's range check, beside this file)
+
 DXC_PROFILES = {"vert": "vs_6_0", "tesc": "hs_6_0", "tese": "ds_6_0", "frag": "ps_6_0", "comp": "cs_6_0"}
 
 # (name, glslang stage, HLSL entry point). "fallback" is the no-tessellator vertex stage.
@@ -181,12 +183,15 @@ def compile_one(out_dir, variant, stage, includes, dxc=DXC):
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("out_dir")
-    ap.add_argument("-j", "--jobs", type=int, default=os.cpu_count() or 1)
+    options.add_number(ap, "-j", "--jobs", range="jobs", default=min(os.cpu_count() or 1, 256))
     ap.add_argument("-I", dest="includes", action="append", default=[],
                     help="extra include directory (searched after the includer's own folder)")
     ap.add_argument("--only", action="append", default=[], help="compile only this variant")
     ap.add_argument("--dxc", default=DXC, help="Microsoft's DXC (default: ../shared/dxc/bin/dxc beside the package)")
+    ap.add_argument("--clean", action="store_true", help="empty OUT_DIR first (once the options are checked)")
     args = ap.parse_args()
+    if args.clean:
+        shutil.rmtree(args.out_dir, ignore_errors=True)
     if not os.access(args.dxc, os.X_OK):
         sys.exit(f"shaders: --dxc {args.dxc}: no DXC there (it sits beside the package as ../shared/dxc, see its README)")
 
@@ -200,7 +205,7 @@ def main():
         os.makedirs(os.path.join(args.out_dir, name), exist_ok=True)
 
     jobs = [(v, s) for v in variants for s in stages_of(v[1])]
-    with ThreadPoolExecutor(max_workers=max(1, args.jobs)) as pool:
+    with ThreadPoolExecutor(max_workers=args.jobs) as pool:
         results = list(pool.map(lambda j: compile_one(args.out_dir, j[0], j[1], args.includes, args.dxc), jobs))
 
     failed = 0

@@ -10,8 +10,7 @@ for tool in glslangValidator spirv-val spirv-cross python3; do
   command -v "$tool" >/dev/null || die "$tool is not on PATH (run: gt setup)"
 done
 out="$BUILD_DIR/spirv"
-rm -rf "$out"; mkdir -p "$out"
 inc=()
 IFS=':' read -r -a dirs <<< "${GT_SHADER_INCLUDES:-}"
 for d in "${dirs[@]}"; do [ -n "$d" ] && inc+=(-I "$d"); done
-exec python3 "$RIG_DIR/shaders.py" "$out" "${inc[@]}" "$@"
+exec python3 "$RIG_DIR/shaders.py" "$out" --clean "${inc[@]}" "$@"

@@ -10,11 +10,11 @@ dest="${1:?usage: gt snow-carry DEST [--resolutions R,...] [--steps N] [--dt S]}
 resolutions="256,512,1024,2048"; steps=200; dt=0.05; size=640x480
 while [ $# -gt 0 ]; do
   case "$1" in
-    --resolutions) resolutions="${2:?}"; shift ;;
-    --steps) steps="${2:?}"; shift ;;
-    --dt) dt="${2:?}"; shift ;;
-    --size) size="${2:?}"; shift ;;
-    *) die "snow-carry: unknown argument '$1'" ;;
+    --resolutions) check_number snow-carry "$1" resolution,... "${2-}"; resolutions=$2; shift ;;
+    --steps) check_number snow-carry "$1" frames "${2-}"; steps=$2; shift ;;
+    --dt) check_number snow-carry "$1" seconds "${2-}"; dt=$2; shift ;;
+    --size) check_number snow-carry "$1" size "${2-}"; size=$2; shift ;;
+    *) usage_error snow-carry "unknown argument '$1'" ;;
   esac
   shift
 done
@@ -23,7 +23,7 @@ for f in "$BUILD_DIR/harness/gt-harness" "$BUILD_DIR/computerig/gt-compute" "$BU
 done
 rm -rf "$dest"; mkdir -p "$dest/bin" "$dest/spv"
 cp "$BUILD_DIR/harness/gt-harness" "$BUILD_DIR/computerig/gt-compute" "$dest/bin/"
-cp "$RIG_DIR/snow-device.sh" "$dest/"
+cp "$RIG_DIR/snow-device.sh" "$RIG_DIR/options.py" "$dest/"
 write_pass_states "$dest"   # the forward pass's render state, for snow-device.sh
 # The terrain variants, compiled by gt shaders into a private build folder.
 tmp="$BUILD_DIR/snow-carry-spirv"; rm -rf "$tmp"

@@ -25,10 +25,12 @@
 set -euo pipefail
 run="$(cd "${1:?usage: snow-device.sh RUN_DIR [--device SUBSTR] [--frames N]}" && pwd)"; shift
 device=""; frames=20
+# The rig's range check (options.py, carried beside this script).
+check_number() { python3 "$(dirname "${BASH_SOURCE[0]}")/options.py" snow-device "$@" || exit 2; }
 while [ $# -gt 0 ]; do
   case "$1" in
     --device) device="${2:?--device needs a name substring}"; shift ;;
-    --frames) frames="${2:?--frames needs a count}"; shift ;;
+    --frames) check_number "$1" frames "${2-}"; frames=$2; shift ;;
     *) echo "snow-device: unknown argument '$1'" >&2; exit 2 ;;
   esac
   shift

@@ -492,7 +492,7 @@ namespace GregoryTerrain.Rig
                 "--octaves", Math.Max(cfg.Octaves, 1).ToString(CultureInfo.InvariantCulture),
                 "--width", width.ToString(CultureInfo.InvariantCulture), "--height", height.ToString(CultureInfo.InvariantCulture),
             };
-            return RigScene.FromGrid(grid, new Args(args.ToArray(), 0));
+            return RigScene.FromGrid(grid, Program.SceneArgs(args.ToArray()));
         }
 
         static string Inv(FormattableString s) => s.ToString(CultureInfo.InvariantCulture);

@@ -12,14 +12,10 @@ namespace GregoryTerrain.Rig
     /// </summary>
     static class DemoGridCommand
     {
-        const int MaxSamples = 16384;
-
         public static int Run(Args a)
         {
             string output = a.String("out");
             int columns = a.Int("columns", 5), rows = a.Int("rows", 5), samples = a.Int("samples", 257);
-            if (samples < 2 || samples > MaxSamples)
-                throw new UsageException($"--samples {samples} must lie in [2, {MaxSamples}] (a {MaxSamples} x {MaxSamples} heightmap is 2 GiB of doubles)");
             string dem = a.Flag("dem") ? a.String("dem") : null;
             double[] heights;
             int width = samples, height = samples;
@@ -32,8 +28,6 @@ namespace GregoryTerrain.Rig
                 heights = RawHeightmap.Decode(name, bytes, width, height, RawSampleFormat.Int16BigEndian, RawHeightmap.SrtmVoid);
                 int voids = HeightmapVoids.Fill(heights, width, height);
                 double across = a.Double("metres-across", 240 * 61.2), exaggerate = a.Double("exaggerate", 1.0);
-                if (!(across > 0) || !(exaggerate > 0))
-                    throw new UsageException(FormattableString.Invariant($"--metres-across {across} and --exaggerate {exaggerate} must be positive"));
                 double min = double.PositiveInfinity;
                 foreach (double z in heights) min = Math.Min(min, z);
                 // Lowest point at 0, so the renders' height colours span the relief.

@@ -1,8 +1,6 @@
 using System;
 using System.Diagnostics;
-using System.Globalization;
 using System.IO;
-using System.Linq;
 
 namespace GregoryTerrain.Rig
 {
@@ -19,10 +17,9 @@ namespace GregoryTerrain.Rig
         public static int Run(Args a)
         {
             var grid = RigScene.ReadGrid(a);
-            int[] tileCounts = a.String("tiles", "16,32,64").Split(',').Select(t => int.Parse(t, CultureInfo.InvariantCulture)).ToArray();
+            int[] tileCounts = a.Ints("tiles", "16,32,64");
             double target = a.Double("target", 0.25);
             int repeat = a.Int("repeat", 20);
-            if (repeat < 1) throw new ArgumentException($"--repeat ({repeat}) must be >= 1");
             Console.WriteLine("| tiles | target px | sampled tiles | ms per estimate (median of {0}) | estimate | every tile | difference |", repeat);
             Console.WriteLine("| ---: | ---: | ---: | ---: | ---: | ---: | ---: |");
             foreach (int m in tileCounts)

@@ -22,7 +22,6 @@ namespace GregoryTerrain.Rig
             var n = a.Doubles("noise", 4, "0.004,16,2,2");
             var noise = new NoiseSettings((float)n[0], (float)n[1], (float)n[2], (float)n[3], a.Int("octaves", 4));
             double span = a.Double("span", 1.0 / 64.0);
-            if (!(span > 0 && span <= 0.5)) throw new ArgumentException($"--span {span} must lie in (0, 0.5]");
             Harness gpu = null;
             string work = null;
             if (a.Flag("gpu"))

@@ -20,8 +20,7 @@ namespace GregoryTerrain.Rig
                 ? RigScene.ReadGrid(a)
                 : HeightmapFitter.Fit(DemoGridCommand.Heightmap(129), 129, 129, 5, 5).Grid;
             var c = a.Doubles("center", 2, "0.5137,0.6262");
-            string widthList = a.String("widths", "1e-2,1e-4,1e-6");
-            double[] widths = Array.ConvertAll(widthList.Split(','), ws => Args.Number("widths", widthList, ws));
+            double[] widths = a.Doubles("widths", 0, "1e-2,1e-4,1e-6");
             double pixels = a.Double("pixels", 800), pan = a.Double("pan", 0.25);
             int tiles = a.Int("tiles", 8), factor = a.Int("factor", 16);
             NoiseSettings? noise = null;

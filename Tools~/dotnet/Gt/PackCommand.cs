@@ -18,7 +18,8 @@ namespace GregoryTerrain.Rig
         {
             var scene = RigScene.FromArgs(a);
             string dir = a.String("out");
-            float[] orbit = a.Flag("orbit") ? Orbit(scene, a.Doubles("orbit", 2)) : null;
+            double[] o = a.Flag("orbit") ? a.Doubles("orbit", 2) : null;
+            float[] orbit = o == null ? null : scene.OrbitCameraPath((int)o[0], o[1]);
             scene.WriteBuffers(dir);
             if (orbit != null) BufferFiles.Write(Path.Combine(dir, CameraPathFile), orbit);
             // The tiled noise's table (GT_NOISE_TABLE), for harness --storage-data 9:DIR/noise_cells.f32.
@@ -26,15 +27,6 @@ namespace GregoryTerrain.Rig
             Console.WriteLine(FormattableString.Invariant(
                 $"packed {scene.Grid.Columns}x{scene.Grid.Rows} patches, range {scene.Range.c:R},{scene.Range.d:R},{scene.Range.g:R},{scene.Range.h:R}, tiles {scene.Tessellation.tiles} -> {dir}"));
             return 0;
-        }
-
-        static float[] Orbit(RigScene scene, double[] v)
-        {
-            if (!(v[0] >= 1 && v[0] <= 100000) || v[0] != Math.Floor(v[0]))
-                throw new ArgumentException(FormattableString.Invariant($"--orbit: FRAMES must be a whole number in [1, 100000], got {v[0]:R}"));
-            if (!(Math.Abs(v[1]) <= 90))
-                throw new ArgumentException(FormattableString.Invariant($"--orbit: DEGREES must be in [-90, 90], got {v[1]:R}"));
-            return scene.OrbitCameraPath((int)v[0], v[1]);
         }
     }
 }

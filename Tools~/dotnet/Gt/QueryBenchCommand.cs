@@ -23,7 +23,6 @@ namespace GregoryTerrain.Rig
             int threads = a.Int("threads", Environment.ProcessorCount);
             int colliderSamples = a.Int("collider-samples", 65);
             double colliderSpacing = a.Double("collider-spacing", 1.0);   // metres
-            if (!(size > 0) || !(seconds > 0) || threads < 1) throw new ArgumentException("--size, --seconds and --threads must be positive");
             var query = new TerrainSurfaceQuery(grid, noise);
             Console.WriteLine(FormattableString.Invariant(
                 $"# {grid.Columns}x{grid.Rows} patches, noise {(noise.HasValue ? noise.Value.ToString() : "off")}, terrain {size:R} m across; {Environment.ProcessorCount} logical CPUs"));

@@ -25,7 +25,6 @@ namespace GregoryTerrain.Rig
             int n = a.Int("patches", 256);
             int dabs = a.Int("dabs", 20);
             double radiusPatches = a.Double("radius-patches", 2.0);
-            if (n < 2 || dabs < 1 || !(radiusPatches > 0)) throw new ArgumentException("--patches must be at least 2, --dabs at least 1, --radius-patches positive");
             var noise = new NoiseSettings(0.004f, 16f, 2f, 2f, 8);
             PatchGrid grid = PatchGrid.CreateFlat(n, n);
             Console.WriteLine(FormattableString.Invariant(

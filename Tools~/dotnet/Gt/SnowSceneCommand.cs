@@ -1,5 +1,4 @@
 using System;
-using System.Globalization;
 using System.IO;
 
 namespace GregoryTerrain.Rig
@@ -23,7 +22,7 @@ namespace GregoryTerrain.Rig
         public static int Run(Args a)
         {
             string dir = a.String("out");
-            var resolutions = Array.ConvertAll(a.String("resolutions", "256,512,1024,2048").Split(','), s => int.Parse(s, CultureInfo.InvariantCulture));
+            var resolutions = a.Ints("resolutions", "256,512,1024,2048");
             int steps = a.Int("steps", 40), width = a.Int("width", 640), height = a.Int("height", 480);
             float dt = (float)a.Double("dt", 0.25);
             bool cpu = a.Flag("cpu"), noise = !a.Flag("no-noise");
