@@ -199,11 +199,24 @@ class SubShader:
         self.index, self.pipeline, self.requirements, self.passes, self.outer = index, pipeline, requirements, passes, outer
 
 
+HLSL_INCLUDE = re.compile(r"\bHLSLINCLUDE\b(.*?)\bENDHLSL\b", flags=re.S)
+
+
+def shared_hlsl(shaderlab):
+    """The HLSLINCLUDE blocks of a Shader's or SubShader's own text, joined: Unity pastes them at the top
+    of every HLSLPROGRAM in that scope, so their #pragma lines count as the pass's own."""
+    return "".join(HLSL_INCLUDE.findall(shaderlab))
+
+
 def parse_shader(path):
     text = strip_comments(open(path, encoding="utf-8").read())
     subs = []
-    for k, (_, _, sub) in enumerate(blocks(text, "SubShader")):
+    found = blocks(text, "SubShader")
+    shader_shared = shared_hlsl(text[:found[0][0]] if found else text)
+    for k, (_, _, sub) in enumerate(found):
         outer = outer_part(sub, "Pass")
+        shared = shader_shared + shared_hlsl(outer)
+        outer = HLSL_INCLUDE.sub("", outer)
         tag = re.search(r'"RenderPipeline"\s*=\s*"(\w+)"', outer)
         pipeline = {"UniversalPipeline": "URP", "HDRenderPipeline": "HDRP"}.get(tag.group(1), tag.group(1)) if tag else "Builtin"
         where = f"{os.path.basename(path)} SubShader {k}"
@@ -212,7 +225,7 @@ def parse_shader(path):
             name = re.search(r'\bName\s+"([^"]+)"', body)
             name = name.group(1) if name else "?"
             progs = re.findall(r"HLSLPROGRAM(.*?)ENDHLSL", body, flags=re.S)
-            passes.append(Pass(name, progs[0] if progs else None,
+            passes.append(Pass(name, shared + progs[0] if progs else None,
                                parse_requirements(body.split("HLSLPROGRAM")[0], f"{where} Pass {name}"),
                                re.sub(r"HLSLPROGRAM.*?ENDHLSL", "", body, flags=re.S)))
         subs.append(SubShader(k, pipeline, parse_requirements(outer, where), passes, outer))
@@ -617,9 +630,9 @@ DXC_OPTIONS = ["-fcgl", "-Vd"]
 
 
 def hlsl_blocks_only(shader_text):
-    """A .shader with everything outside its HLSLPROGRAM blocks blanked (line numbers kept)."""
+    """A .shader with everything outside its HLSLPROGRAM and HLSLINCLUDE blocks blanked (line numbers kept)."""
     out, pos = [], 0
-    for m in re.finditer(r"HLSLPROGRAM(.*?)ENDHLSL", shader_text, flags=re.S):
+    for m in re.finditer(r"HLSL(?:PROGRAM|INCLUDE)(.*?)ENDHLSL", shader_text, flags=re.S):
         out.append(re.sub(r"[^\n]", " ", shader_text[pos:m.start(1)]))
         out.append(m.group(1))
         pos = m.end(1)
