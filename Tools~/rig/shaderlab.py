@@ -208,8 +208,33 @@ def shared_hlsl(shaderlab):
     return "".join(HLSL_INCLUDE.findall(shaderlab))
 
 
+INCLUDE_WITH_PRAGMAS = re.compile(r'^[ \t]*#[ \t]*include_with_pragmas[ \t]+"([^"]+)"[^\n]*', flags=re.M)
+
+
+def with_included_pragmas(program, pkg, seen=()):
+    """Unity's #include_with_pragmas (Caching Shader Preprocessor, the only one in 2022.3): the file is
+    included and its #pragma lines count as the program's own (its own #include_with_pragmas too).
+    Each such line becomes those pragmas and a plain #include, which is all glslang needs; a plain
+    #include keeps Unity's behaviour, its file's pragmas ignored."""
+    def expand(m):
+        name = m.group(1)
+        prefix = f"Packages/{PACKAGE_NAME}/"
+        if not name.startswith(prefix):
+            raise ValueError(f'#include_with_pragmas "{name}": only the package\'s own files ({prefix}...) are read here')
+        if name in seen:
+            raise ValueError(f'#include_with_pragmas "{name}": includes itself')
+        path = os.path.join(pkg, *name[len(prefix):].split("/"))
+        if not os.path.isfile(path):
+            raise ValueError(f'#include_with_pragmas "{name}": no such file {path}')
+        inner = with_included_pragmas(strip_comments(open(path, encoding="utf-8").read()), pkg, seen + (name,))
+        lines = [l.strip() for l in inner.splitlines() if l.strip().startswith("#pragma")]
+        return "\n".join(lines + [f'#include "{name}"'])
+    return INCLUDE_WITH_PRAGMAS.sub(expand, program)
+
+
 def parse_shader(path):
     text = strip_comments(open(path, encoding="utf-8").read())
+    text = with_included_pragmas(text, os.path.dirname(os.path.dirname(os.path.abspath(path))))
     subs = []
     found = blocks(text, "SubShader")
     shader_shared = shared_hlsl(text[:found[0][0]] if found else text)
