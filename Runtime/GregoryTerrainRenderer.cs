@@ -458,7 +458,7 @@ namespace GregoryTerrain
             // The range-origin keyword from the very _RangeOrigin just sent (_params): the stages
             // without it compile no origin code and would draw a set origin as 0.
             bool levels = LevelsOn(fallback);
-            return UpdateDrawMaterial(_usesCache, SnowOn(), levels, RelativeSurface.NeedsRangeOriginKeyword(_params.rangeOrigin, levels)) != null;
+            return UpdateDrawMaterial(_usesCache, SnowOn(), levels, RelativeSurface.NeedsRangeOriginKeyword(_params.rangeOrigin, levels, _usesCache)) != null;
         }
 
         /// <summary>

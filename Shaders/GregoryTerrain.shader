@@ -19,21 +19,22 @@
 // (DepthForwardOnly writes the normal buffer, ForwardOnly the colour); both have the Scene view's
 // selection and picking passes. Documentation~/index.md, "Pipelines", lists what each one supports.
 //
-// Keywords: the package's are exactly the shipped ones of Tools~/rig/shader_variants.txt
-// (the rig-only ones belong to Tools~/rig/TerrainRig.hlsl and are never declared here), all
-// shader_feature_local except GT_SNOW, which SnowSimulator switches at run time, and GT_VERTEX_CACHE,
-// which GregoryTerrainRenderer switches (Vertex evaluation = Compute cache: the domain stage reads the
-// vertices TerrainCache.compute evaluated): both are multi_compile_local, so a player build keeps both
-// variants even when no saved material has them on; so are GT_LOD and GT_RANGE_ORIGIN, one set
-// (the renderer's levels, and its range origin: the deep-zoom code, compiled in only while an origin
-// is sent; the levels compile it too). GT_VERTEX_CACHE and that set only in the tessellated passes
-// (the fallback has no hull/domain stage to feed, and keeps the origin's run-time branch). Depth, shadow and editor passes declare only
-// GT_NOISE, GT_NOISE_TABLE, GT_SNOW (and GT_VERTEX_CACHE, GT_RANGE_ORIGIN, GT_LOD), the ones that change the shape or where it comes from.
-// The pipelines' own keywords are multi_compile, only where a pass reads them (the adapters say what
-// each one changes). Each pass defines one GT_PASS_* (and GT_FALLBACK without a tessellator) before
-// its adapter; `frag` writes what that pass needs (TerrainStages.hlsl). Checked off Unity by
-// Tools~/RigTests/ShaderLabTests.cs and compiled pass by pass against Unity's real shader libraries
-// by `gt shaderlab` (glslang).
+// Keywords: the package's are exactly the shipped ones of Tools~/rig/shader_variants.txt (the
+// rig-only ones belong to Tools~/rig/TerrainRig.hlsl). Those that change the shape or where it comes
+// from are written once per SubShader, in its HLSLINCLUDE (Unity pastes it at the top of every pass's
+// HLSLPROGRAM), with the stage pragmas; a pass adds only its own: the forward passes their colour and
+// debug switches, each pass the pipeline keywords it reads (multi_compile; the adapters say what each
+// changes). The material's toggles are shader_feature_local; those a script switches at run time are
+// multi_compile_local, so a player build keeps them though no saved material has them on: GT_SNOW
+// (SnowSimulator) and, in the tessellated SubShaders only, one set for where the vertices come from:
+// GT_RANGE_ORIGIN (the deep-zoom code, while the renderer sends an origin), GT_LOD (the renderer's
+// levels) or GT_VERTEX_CACHE (Vertex evaluation = Compute cache: the domain stage reads the vertices
+// TerrainCache.compute evaluated). The levels and the cache compile the origin's code too and never
+// draw together, so at most one is on (RelativeSurface.NeedsRangeOriginKeyword) and no combination is
+// compiled that is never drawn. The fallback has no hull/domain stage to feed and keeps the origin's
+// run-time branch. Each pass defines one GT_PASS_* before its adapter; `frag` writes what that pass
+// needs (TerrainStages.hlsl). Checked off Unity by Tools~/RigTests/ShaderLabTests.cs and compiled pass
+// by pass against Unity's real shader libraries by `gt shaderlab` (glslang and DXC).
 Shader "GregoryTerrain/Terrain"
 {
     Properties
@@ -75,31 +76,30 @@ Shader "GregoryTerrain/Terrain"
         }
         Tags { "RenderPipeline" = "UniversalPipeline" "RenderType" = "Opaque" "Queue" = "Geometry" "GregoryTerrainDraw" = "Tessellated" }
         LOD 300
+        ZWrite On
+        ZTest LEqual
+        Cull Back
+
+        // Every pass: hull and domain stages (a device without tessellation hardware skips this
+        // SubShader for the next one) and the package's keywords (see the top of the file).
+        HLSLINCLUDE
+        #pragma target 4.6
+        #pragma require tessellation tessHW
+        #pragma vertex vert
+        #pragma hull hull_shader
+        #pragma domain domain_shader
+        #pragma fragment frag
+        #pragma shader_feature_local GT_NOISE
+        #pragma shader_feature_local GT_NOISE_TABLE
+        #pragma multi_compile_local _ GT_SNOW
+        #pragma multi_compile_local _ GT_RANGE_ORIGIN GT_LOD GT_VERTEX_CACHE
+        ENDHLSL
 
         Pass
         {
             Name "ForwardLit"
             Tags { "LightMode" = "UniversalForwardOnly" }
-            ZWrite On
-            ZTest LEqual
-            Cull Back
-
             HLSLPROGRAM
-            // Hull and domain stages: tessellation hardware required. A device without it skips
-            // this SubShader and takes the next one (vert_fallback, no hull/domain).
-            #pragma target 4.6
-            #pragma require tessellation tessHW
-            #pragma vertex vert
-            #pragma hull hull_shader
-            #pragma domain domain_shader
-            #pragma fragment frag
-            // Effects: off = not compiled into the build at all (shader_feature: unused variants are stripped).
-            #pragma shader_feature_local GT_NOISE
-            #pragma shader_feature_local GT_NOISE_TABLE
-            #pragma multi_compile_local _ GT_SNOW
-            #pragma multi_compile_local _ GT_RANGE_ORIGIN GT_LOD
-            // Vertex evaluation (renderer setting): the compute pre-pass's cached vertices, switched at run time.
-            #pragma multi_compile_local _ GT_VERTEX_CACHE
             #pragma shader_feature_local GT_HEIGHT_COLOR
             #pragma shader_feature_local _ GT_DEBUG_NORMALS GT_DEBUG_PATCH_ID GT_DEBUG_TESS_FACTOR
             // URP's own keywords, where the pass reads them (URPAdapter.hlsl): main-light shadows received
@@ -119,26 +119,8 @@ Shader "GregoryTerrain/Terrain"
         {
             Name "ShadowCaster"
             Tags { "LightMode" = "ShadowCaster" }
-            ZWrite On
-            ZTest LEqual
             ColorMask 0
-            Cull Back
-
             HLSLPROGRAM
-            // Hull and domain stages: tessellation hardware required. A device without it skips
-            // this SubShader and takes the next one (vert_fallback, no hull/domain).
-            #pragma target 4.6
-            #pragma require tessellation tessHW
-            #pragma vertex vert
-            #pragma hull hull_shader
-            #pragma domain domain_shader
-            #pragma fragment frag
-            #pragma shader_feature_local GT_NOISE
-            #pragma shader_feature_local GT_NOISE_TABLE
-            #pragma multi_compile_local _ GT_SNOW
-            #pragma multi_compile_local _ GT_RANGE_ORIGIN GT_LOD
-            // Vertex evaluation (renderer setting): the compute pre-pass's cached vertices, switched at run time.
-            #pragma multi_compile_local _ GT_VERTEX_CACHE
             // Spot and point lights: the bias direction per vertex from _LightPosition (URP's keyword).
             // The hull and domain stages transform the vertices too: not multi_compile_vertex as URP's Lit.
             #pragma multi_compile _ _CASTING_PUNCTUAL_LIGHT_SHADOW
@@ -152,26 +134,8 @@ Shader "GregoryTerrain/Terrain"
         {
             Name "DepthOnly"
             Tags { "LightMode" = "DepthOnly" }
-            ZWrite On
-            ZTest LEqual
             ColorMask R
-            Cull Back
-
             HLSLPROGRAM
-            // Hull and domain stages: tessellation hardware required. A device without it skips
-            // this SubShader and takes the next one (vert_fallback, no hull/domain).
-            #pragma target 4.6
-            #pragma require tessellation tessHW
-            #pragma vertex vert
-            #pragma hull hull_shader
-            #pragma domain domain_shader
-            #pragma fragment frag
-            #pragma shader_feature_local GT_NOISE
-            #pragma shader_feature_local GT_NOISE_TABLE
-            #pragma multi_compile_local _ GT_SNOW
-            #pragma multi_compile_local _ GT_RANGE_ORIGIN GT_LOD
-            // Vertex evaluation (renderer setting): the compute pre-pass's cached vertices, switched at run time.
-            #pragma multi_compile_local _ GT_VERTEX_CACHE
             #define GT_PASS_DEPTH 1
             #include "Packages/com.gregoryterrain.tessellation/Shaders/Pipelines/URPAdapter.hlsl"
             #include "Packages/com.gregoryterrain.tessellation/Shaders/Pipelines/TerrainStages.hlsl"
@@ -182,25 +146,7 @@ Shader "GregoryTerrain/Terrain"
         {
             Name "DepthNormalsOnly"
             Tags { "LightMode" = "DepthNormalsOnly" }
-            ZWrite On
-            ZTest LEqual
-            Cull Back
-
             HLSLPROGRAM
-            // Hull and domain stages: tessellation hardware required. A device without it skips
-            // this SubShader and takes the next one (vert_fallback, no hull/domain).
-            #pragma target 4.6
-            #pragma require tessellation tessHW
-            #pragma vertex vert
-            #pragma hull hull_shader
-            #pragma domain domain_shader
-            #pragma fragment frag
-            #pragma shader_feature_local GT_NOISE
-            #pragma shader_feature_local GT_NOISE_TABLE
-            #pragma multi_compile_local _ GT_SNOW
-            #pragma multi_compile_local _ GT_RANGE_ORIGIN GT_LOD
-            // Vertex evaluation (renderer setting): the compute pre-pass's cached vertices, switched at run time.
-            #pragma multi_compile_local _ GT_VERTEX_CACHE
             // URP's normal packing for the deferred renderer's accurate G-buffer normals.
             #pragma multi_compile_fragment _ _GBUFFER_NORMALS_OCT
             #define GT_PASS_DEPTH_NORMALS 1
@@ -213,25 +159,8 @@ Shader "GregoryTerrain/Terrain"
         {
             Name "SceneSelectionPass"
             Tags { "LightMode" = "SceneSelectionPass" }
-            ZWrite On
-            ZTest LEqual
             Cull Off
-
             HLSLPROGRAM
-            // Hull and domain stages: tessellation hardware required. A device without it skips
-            // this SubShader and takes the next one (vert_fallback, no hull/domain).
-            #pragma target 4.6
-            #pragma require tessellation tessHW
-            #pragma vertex vert
-            #pragma hull hull_shader
-            #pragma domain domain_shader
-            #pragma fragment frag
-            #pragma shader_feature_local GT_NOISE
-            #pragma shader_feature_local GT_NOISE_TABLE
-            #pragma multi_compile_local _ GT_SNOW
-            #pragma multi_compile_local _ GT_RANGE_ORIGIN GT_LOD
-            // Vertex evaluation (renderer setting): the compute pre-pass's cached vertices, switched at run time.
-            #pragma multi_compile_local _ GT_VERTEX_CACHE
             // Editor only: compiled when the Scene view first needs it, not ahead (as Unity's own passes).
             #pragma editor_sync_compilation
             #define GT_PASS_SCENE_SELECTION 1
@@ -244,25 +173,7 @@ Shader "GregoryTerrain/Terrain"
         {
             Name "ScenePickingPass"
             Tags { "LightMode" = "Picking" }
-            ZWrite On
-            ZTest LEqual
-            Cull Back
-
             HLSLPROGRAM
-            // Hull and domain stages: tessellation hardware required. A device without it skips
-            // this SubShader and takes the next one (vert_fallback, no hull/domain).
-            #pragma target 4.6
-            #pragma require tessellation tessHW
-            #pragma vertex vert
-            #pragma hull hull_shader
-            #pragma domain domain_shader
-            #pragma fragment frag
-            #pragma shader_feature_local GT_NOISE
-            #pragma shader_feature_local GT_NOISE_TABLE
-            #pragma multi_compile_local _ GT_SNOW
-            #pragma multi_compile_local _ GT_RANGE_ORIGIN GT_LOD
-            // Vertex evaluation (renderer setting): the compute pre-pass's cached vertices, switched at run time.
-            #pragma multi_compile_local _ GT_VERTEX_CACHE
             // Editor only: compiled when the Scene view first needs it, not ahead (as Unity's own passes).
             #pragma editor_sync_compilation
             #define GT_PASS_SCENE_PICKING 1
@@ -282,24 +193,27 @@ Shader "GregoryTerrain/Terrain"
         }
         Tags { "RenderPipeline" = "UniversalPipeline" "RenderType" = "Opaque" "Queue" = "Geometry" "GregoryTerrainDraw" = "Fallback" }
         LOD 200
+        ZWrite On
+        ZTest LEqual
+        Cull Back
+
+        // Every pass: no tessellator (each tile an instanced (F+1)^2 UV grid evaluated in the vertex
+        // stage) and the package's keywords (see the top of the file).
+        HLSLINCLUDE
+        #pragma target 4.5
+        #pragma vertex vert_fallback
+        #pragma fragment frag
+        #pragma shader_feature_local GT_NOISE
+        #pragma shader_feature_local GT_NOISE_TABLE
+        #pragma multi_compile_local _ GT_SNOW
+        #define GT_FALLBACK 1
+        ENDHLSL
 
         Pass
         {
             Name "ForwardLit"
             Tags { "LightMode" = "UniversalForwardOnly" }
-            ZWrite On
-            ZTest LEqual
-            Cull Back
-
             HLSLPROGRAM
-            // No tessellator: each tile is an instanced (F+1)^2 UV grid evaluated in the vertex stage.
-            #pragma target 4.5
-            #pragma vertex vert_fallback
-            #pragma fragment frag
-            // Effects: off = not compiled into the build at all (shader_feature: unused variants are stripped).
-            #pragma shader_feature_local GT_NOISE
-            #pragma shader_feature_local GT_NOISE_TABLE
-            #pragma multi_compile_local _ GT_SNOW
             #pragma shader_feature_local GT_HEIGHT_COLOR
             #pragma shader_feature_local _ GT_DEBUG_NORMALS GT_DEBUG_PATCH_ID GT_DEBUG_TESS_FACTOR
             // URP's own keywords, where the pass reads them (URPAdapter.hlsl): main-light shadows received
@@ -310,7 +224,6 @@ Shader "GregoryTerrain/Terrain"
             #pragma multi_compile_fragment _ _SCREEN_SPACE_OCCLUSION
             #pragma multi_compile_fog
             #define GT_PASS_FORWARD 1
-            #define GT_FALLBACK 1
             #include "Packages/com.gregoryterrain.tessellation/Shaders/Pipelines/URPAdapter.hlsl"
             #include "Packages/com.gregoryterrain.tessellation/Shaders/Pipelines/TerrainStages.hlsl"
             ENDHLSL
@@ -320,23 +233,11 @@ Shader "GregoryTerrain/Terrain"
         {
             Name "ShadowCaster"
             Tags { "LightMode" = "ShadowCaster" }
-            ZWrite On
-            ZTest LEqual
             ColorMask 0
-            Cull Back
-
             HLSLPROGRAM
-            // No tessellator: each tile is an instanced (F+1)^2 UV grid evaluated in the vertex stage.
-            #pragma target 4.5
-            #pragma vertex vert_fallback
-            #pragma fragment frag
-            #pragma shader_feature_local GT_NOISE
-            #pragma shader_feature_local GT_NOISE_TABLE
-            #pragma multi_compile_local _ GT_SNOW
             // Spot and point lights: the bias direction per vertex from _LightPosition (URP's keyword).
             #pragma multi_compile_vertex _ _CASTING_PUNCTUAL_LIGHT_SHADOW
             #define GT_PASS_SHADOWCASTER 1
-            #define GT_FALLBACK 1
             #include "Packages/com.gregoryterrain.tessellation/Shaders/Pipelines/URPAdapter.hlsl"
             #include "Packages/com.gregoryterrain.tessellation/Shaders/Pipelines/TerrainStages.hlsl"
             ENDHLSL
@@ -346,21 +247,9 @@ Shader "GregoryTerrain/Terrain"
         {
             Name "DepthOnly"
             Tags { "LightMode" = "DepthOnly" }
-            ZWrite On
-            ZTest LEqual
             ColorMask R
-            Cull Back
-
             HLSLPROGRAM
-            // No tessellator: each tile is an instanced (F+1)^2 UV grid evaluated in the vertex stage.
-            #pragma target 4.5
-            #pragma vertex vert_fallback
-            #pragma fragment frag
-            #pragma shader_feature_local GT_NOISE
-            #pragma shader_feature_local GT_NOISE_TABLE
-            #pragma multi_compile_local _ GT_SNOW
             #define GT_PASS_DEPTH 1
-            #define GT_FALLBACK 1
             #include "Packages/com.gregoryterrain.tessellation/Shaders/Pipelines/URPAdapter.hlsl"
             #include "Packages/com.gregoryterrain.tessellation/Shaders/Pipelines/TerrainStages.hlsl"
             ENDHLSL
@@ -370,22 +259,10 @@ Shader "GregoryTerrain/Terrain"
         {
             Name "DepthNormalsOnly"
             Tags { "LightMode" = "DepthNormalsOnly" }
-            ZWrite On
-            ZTest LEqual
-            Cull Back
-
             HLSLPROGRAM
-            // No tessellator: each tile is an instanced (F+1)^2 UV grid evaluated in the vertex stage.
-            #pragma target 4.5
-            #pragma vertex vert_fallback
-            #pragma fragment frag
-            #pragma shader_feature_local GT_NOISE
-            #pragma shader_feature_local GT_NOISE_TABLE
-            #pragma multi_compile_local _ GT_SNOW
             // URP's normal packing for the deferred renderer's accurate G-buffer normals.
             #pragma multi_compile_fragment _ _GBUFFER_NORMALS_OCT
             #define GT_PASS_DEPTH_NORMALS 1
-            #define GT_FALLBACK 1
             #include "Packages/com.gregoryterrain.tessellation/Shaders/Pipelines/URPAdapter.hlsl"
             #include "Packages/com.gregoryterrain.tessellation/Shaders/Pipelines/TerrainStages.hlsl"
             ENDHLSL
@@ -395,22 +272,11 @@ Shader "GregoryTerrain/Terrain"
         {
             Name "SceneSelectionPass"
             Tags { "LightMode" = "SceneSelectionPass" }
-            ZWrite On
-            ZTest LEqual
             Cull Off
-
             HLSLPROGRAM
-            // No tessellator: each tile is an instanced (F+1)^2 UV grid evaluated in the vertex stage.
-            #pragma target 4.5
-            #pragma vertex vert_fallback
-            #pragma fragment frag
-            #pragma shader_feature_local GT_NOISE
-            #pragma shader_feature_local GT_NOISE_TABLE
-            #pragma multi_compile_local _ GT_SNOW
             // Editor only: compiled when the Scene view first needs it, not ahead (as Unity's own passes).
             #pragma editor_sync_compilation
             #define GT_PASS_SCENE_SELECTION 1
-            #define GT_FALLBACK 1
             #include "Packages/com.gregoryterrain.tessellation/Shaders/Pipelines/URPAdapter.hlsl"
             #include "Packages/com.gregoryterrain.tessellation/Shaders/Pipelines/TerrainStages.hlsl"
             ENDHLSL
@@ -420,22 +286,10 @@ Shader "GregoryTerrain/Terrain"
         {
             Name "ScenePickingPass"
             Tags { "LightMode" = "Picking" }
-            ZWrite On
-            ZTest LEqual
-            Cull Back
-
             HLSLPROGRAM
-            // No tessellator: each tile is an instanced (F+1)^2 UV grid evaluated in the vertex stage.
-            #pragma target 4.5
-            #pragma vertex vert_fallback
-            #pragma fragment frag
-            #pragma shader_feature_local GT_NOISE
-            #pragma shader_feature_local GT_NOISE_TABLE
-            #pragma multi_compile_local _ GT_SNOW
             // Editor only: compiled when the Scene view first needs it, not ahead (as Unity's own passes).
             #pragma editor_sync_compilation
             #define GT_PASS_SCENE_PICKING 1
-            #define GT_FALLBACK 1
             #include "Packages/com.gregoryterrain.tessellation/Shaders/Pipelines/URPAdapter.hlsl"
             #include "Packages/com.gregoryterrain.tessellation/Shaders/Pipelines/TerrainStages.hlsl"
             ENDHLSL
@@ -452,30 +306,31 @@ Shader "GregoryTerrain/Terrain"
         }
         Tags { "RenderPipeline" = "HDRenderPipeline" "RenderType" = "Opaque" "Queue" = "Geometry" "GregoryTerrainDraw" = "Tessellated" }
         LOD 300
+        ZWrite On
+        ZTest LEqual
+        Cull Back
+
+        // Every pass: hull and domain stages (a device without tessellation hardware skips this
+        // SubShader for the next one) and the package's keywords (see the top of the file).
+        HLSLINCLUDE
+        #pragma target 4.6
+        #pragma require tessellation tessHW
+        #pragma vertex vert
+        #pragma hull hull_shader
+        #pragma domain domain_shader
+        #pragma fragment frag
+        #pragma shader_feature_local GT_NOISE
+        #pragma shader_feature_local GT_NOISE_TABLE
+        #pragma multi_compile_local _ GT_SNOW
+        #pragma multi_compile_local _ GT_RANGE_ORIGIN GT_LOD GT_VERTEX_CACHE
+        ENDHLSL
 
         Pass
         {
             Name "SceneSelectionPass"
             Tags { "LightMode" = "SceneSelectionPass" }
-            ZWrite On
-            ZTest LEqual
             Cull Off
-
             HLSLPROGRAM
-            // Hull and domain stages: tessellation hardware required. A device without it skips
-            // this SubShader and takes the next one (vert_fallback, no hull/domain).
-            #pragma target 4.6
-            #pragma require tessellation tessHW
-            #pragma vertex vert
-            #pragma hull hull_shader
-            #pragma domain domain_shader
-            #pragma fragment frag
-            #pragma shader_feature_local GT_NOISE
-            #pragma shader_feature_local GT_NOISE_TABLE
-            #pragma multi_compile_local _ GT_SNOW
-            #pragma multi_compile_local _ GT_RANGE_ORIGIN GT_LOD
-            // Vertex evaluation (renderer setting): the compute pre-pass's cached vertices, switched at run time.
-            #pragma multi_compile_local _ GT_VERTEX_CACHE
             // Editor only: compiled when the Scene view first needs it, not ahead (as Unity's own passes).
             #pragma editor_sync_compilation
             #define GT_PASS_SCENE_SELECTION 1
@@ -488,25 +343,7 @@ Shader "GregoryTerrain/Terrain"
         {
             Name "ScenePickingPass"
             Tags { "LightMode" = "Picking" }
-            ZWrite On
-            ZTest LEqual
-            Cull Back
-
             HLSLPROGRAM
-            // Hull and domain stages: tessellation hardware required. A device without it skips
-            // this SubShader and takes the next one (vert_fallback, no hull/domain).
-            #pragma target 4.6
-            #pragma require tessellation tessHW
-            #pragma vertex vert
-            #pragma hull hull_shader
-            #pragma domain domain_shader
-            #pragma fragment frag
-            #pragma shader_feature_local GT_NOISE
-            #pragma shader_feature_local GT_NOISE_TABLE
-            #pragma multi_compile_local _ GT_SNOW
-            #pragma multi_compile_local _ GT_RANGE_ORIGIN GT_LOD
-            // Vertex evaluation (renderer setting): the compute pre-pass's cached vertices, switched at run time.
-            #pragma multi_compile_local _ GT_VERTEX_CACHE
             // Editor only: compiled when the Scene view first needs it, not ahead (as Unity's own passes).
             #pragma editor_sync_compilation
             #define GT_PASS_SCENE_PICKING 1
@@ -528,25 +365,7 @@ Shader "GregoryTerrain/Terrain"
                 Comp Always
                 Pass Replace
             }
-            ZWrite On
-            ZTest LEqual
-            Cull Back
-
             HLSLPROGRAM
-            // Hull and domain stages: tessellation hardware required. A device without it skips
-            // this SubShader and takes the next one (vert_fallback, no hull/domain).
-            #pragma target 4.6
-            #pragma require tessellation tessHW
-            #pragma vertex vert
-            #pragma hull hull_shader
-            #pragma domain domain_shader
-            #pragma fragment frag
-            #pragma shader_feature_local GT_NOISE
-            #pragma shader_feature_local GT_NOISE_TABLE
-            #pragma multi_compile_local _ GT_SNOW
-            #pragma multi_compile_local _ GT_RANGE_ORIGIN GT_LOD
-            // Vertex evaluation (renderer setting): the compute pre-pass's cached vertices, switched at run time.
-            #pragma multi_compile_local _ GT_VERTEX_CACHE
             // MSAA: HDRP also binds the depth as a colour target (its keyword).
             #pragma multi_compile _ WRITE_MSAA_DEPTH
             // Writes HDRP's normal buffer too (SSAO, SSR and contact shadows read it).
@@ -568,26 +387,7 @@ Shader "GregoryTerrain/Terrain"
                 Comp Always
                 Pass Replace
             }
-            ZWrite On
-            ZTest LEqual
-            Cull Back
-
             HLSLPROGRAM
-            // Hull and domain stages: tessellation hardware required. A device without it skips
-            // this SubShader and takes the next one (vert_fallback, no hull/domain).
-            #pragma target 4.6
-            #pragma require tessellation tessHW
-            #pragma vertex vert
-            #pragma hull hull_shader
-            #pragma domain domain_shader
-            #pragma fragment frag
-            // Effects: off = not compiled into the build at all (shader_feature: unused variants are stripped).
-            #pragma shader_feature_local GT_NOISE
-            #pragma shader_feature_local GT_NOISE_TABLE
-            #pragma multi_compile_local _ GT_SNOW
-            #pragma multi_compile_local _ GT_RANGE_ORIGIN GT_LOD
-            // Vertex evaluation (renderer setting): the compute pre-pass's cached vertices, switched at run time.
-            #pragma multi_compile_local _ GT_VERTEX_CACHE
             #pragma shader_feature_local GT_HEIGHT_COLOR
             #pragma shader_feature_local _ GT_DEBUG_NORMALS GT_DEBUG_PATCH_ID GT_DEBUG_TESS_FACTOR
             // HDRP's shadow filtering quality (the HDRP asset's), as its Lit forward pass.
@@ -603,26 +403,8 @@ Shader "GregoryTerrain/Terrain"
             Name "ShadowCaster"
             Tags { "LightMode" = "ShadowCaster" }
             ZClip [_ZClip]   // HDRP's: 0 (clamp) for directional cascades
-            ZWrite On
-            ZTest LEqual
             ColorMask 0
-            Cull Back
-
             HLSLPROGRAM
-            // Hull and domain stages: tessellation hardware required. A device without it skips
-            // this SubShader and takes the next one (vert_fallback, no hull/domain).
-            #pragma target 4.6
-            #pragma require tessellation tessHW
-            #pragma vertex vert
-            #pragma hull hull_shader
-            #pragma domain domain_shader
-            #pragma fragment frag
-            #pragma shader_feature_local GT_NOISE
-            #pragma shader_feature_local GT_NOISE_TABLE
-            #pragma multi_compile_local _ GT_SNOW
-            #pragma multi_compile_local _ GT_RANGE_ORIGIN GT_LOD
-            // Vertex evaluation (renderer setting): the compute pre-pass's cached vertices, switched at run time.
-            #pragma multi_compile_local _ GT_VERTEX_CACHE
             #define GT_PASS_SHADOWCASTER 1
             #include "Packages/com.gregoryterrain.tessellation/Shaders/Pipelines/HDRPAdapter.hlsl"
             #include "Packages/com.gregoryterrain.tessellation/Shaders/Pipelines/TerrainStages.hlsl"
@@ -640,27 +422,31 @@ Shader "GregoryTerrain/Terrain"
         }
         Tags { "RenderPipeline" = "HDRenderPipeline" "RenderType" = "Opaque" "Queue" = "Geometry" "GregoryTerrainDraw" = "Fallback" }
         LOD 200
+        ZWrite On
+        ZTest LEqual
+        Cull Back
+
+        // Every pass: no tessellator (each tile an instanced (F+1)^2 UV grid evaluated in the vertex
+        // stage) and the package's keywords (see the top of the file).
+        HLSLINCLUDE
+        #pragma target 4.5
+        #pragma vertex vert_fallback
+        #pragma fragment frag
+        #pragma shader_feature_local GT_NOISE
+        #pragma shader_feature_local GT_NOISE_TABLE
+        #pragma multi_compile_local _ GT_SNOW
+        #define GT_FALLBACK 1
+        ENDHLSL
 
         Pass
         {
             Name "SceneSelectionPass"
             Tags { "LightMode" = "SceneSelectionPass" }
-            ZWrite On
-            ZTest LEqual
             Cull Off
-
             HLSLPROGRAM
-            // No tessellator: each tile is an instanced (F+1)^2 UV grid evaluated in the vertex stage.
-            #pragma target 4.5
-            #pragma vertex vert_fallback
-            #pragma fragment frag
-            #pragma shader_feature_local GT_NOISE
-            #pragma shader_feature_local GT_NOISE_TABLE
-            #pragma multi_compile_local _ GT_SNOW
             // Editor only: compiled when the Scene view first needs it, not ahead (as Unity's own passes).
             #pragma editor_sync_compilation
             #define GT_PASS_SCENE_SELECTION 1
-            #define GT_FALLBACK 1
             #include "Packages/com.gregoryterrain.tessellation/Shaders/Pipelines/HDRPAdapter.hlsl"
             #include "Packages/com.gregoryterrain.tessellation/Shaders/Pipelines/TerrainStages.hlsl"
             ENDHLSL
@@ -670,22 +456,10 @@ Shader "GregoryTerrain/Terrain"
         {
             Name "ScenePickingPass"
             Tags { "LightMode" = "Picking" }
-            ZWrite On
-            ZTest LEqual
-            Cull Back
-
             HLSLPROGRAM
-            // No tessellator: each tile is an instanced (F+1)^2 UV grid evaluated in the vertex stage.
-            #pragma target 4.5
-            #pragma vertex vert_fallback
-            #pragma fragment frag
-            #pragma shader_feature_local GT_NOISE
-            #pragma shader_feature_local GT_NOISE_TABLE
-            #pragma multi_compile_local _ GT_SNOW
             // Editor only: compiled when the Scene view first needs it, not ahead (as Unity's own passes).
             #pragma editor_sync_compilation
             #define GT_PASS_SCENE_PICKING 1
-            #define GT_FALLBACK 1
             #include "Packages/com.gregoryterrain.tessellation/Shaders/Pipelines/HDRPAdapter.hlsl"
             #include "Packages/com.gregoryterrain.tessellation/Shaders/Pipelines/TerrainStages.hlsl"
             ENDHLSL
@@ -704,23 +478,11 @@ Shader "GregoryTerrain/Terrain"
                 Comp Always
                 Pass Replace
             }
-            ZWrite On
-            ZTest LEqual
-            Cull Back
-
             HLSLPROGRAM
-            // No tessellator: each tile is an instanced (F+1)^2 UV grid evaluated in the vertex stage.
-            #pragma target 4.5
-            #pragma vertex vert_fallback
-            #pragma fragment frag
-            #pragma shader_feature_local GT_NOISE
-            #pragma shader_feature_local GT_NOISE_TABLE
-            #pragma multi_compile_local _ GT_SNOW
             // MSAA: HDRP also binds the depth as a colour target (its keyword).
             #pragma multi_compile _ WRITE_MSAA_DEPTH
             // Writes HDRP's normal buffer too (SSAO, SSR and contact shadows read it).
             #define GT_PASS_DEPTH_NORMALS 1
-            #define GT_FALLBACK 1
             #include "Packages/com.gregoryterrain.tessellation/Shaders/Pipelines/HDRPAdapter.hlsl"
             #include "Packages/com.gregoryterrain.tessellation/Shaders/Pipelines/TerrainStages.hlsl"
             ENDHLSL
@@ -738,25 +500,12 @@ Shader "GregoryTerrain/Terrain"
                 Comp Always
                 Pass Replace
             }
-            ZWrite On
-            ZTest LEqual
-            Cull Back
-
             HLSLPROGRAM
-            // No tessellator: each tile is an instanced (F+1)^2 UV grid evaluated in the vertex stage.
-            #pragma target 4.5
-            #pragma vertex vert_fallback
-            #pragma fragment frag
-            // Effects: off = not compiled into the build at all (shader_feature: unused variants are stripped).
-            #pragma shader_feature_local GT_NOISE
-            #pragma shader_feature_local GT_NOISE_TABLE
-            #pragma multi_compile_local _ GT_SNOW
             #pragma shader_feature_local GT_HEIGHT_COLOR
             #pragma shader_feature_local _ GT_DEBUG_NORMALS GT_DEBUG_PATCH_ID GT_DEBUG_TESS_FACTOR
             // HDRP's shadow filtering quality (the HDRP asset's), as its Lit forward pass.
             #pragma multi_compile_fragment SHADOW_LOW SHADOW_MEDIUM SHADOW_HIGH
             #define GT_PASS_FORWARD 1
-            #define GT_FALLBACK 1
             #include "Packages/com.gregoryterrain.tessellation/Shaders/Pipelines/HDRPAdapter.hlsl"
             #include "Packages/com.gregoryterrain.tessellation/Shaders/Pipelines/TerrainStages.hlsl"
             ENDHLSL
@@ -767,21 +516,9 @@ Shader "GregoryTerrain/Terrain"
             Name "ShadowCaster"
             Tags { "LightMode" = "ShadowCaster" }
             ZClip [_ZClip]   // HDRP's: 0 (clamp) for directional cascades
-            ZWrite On
-            ZTest LEqual
             ColorMask 0
-            Cull Back
-
             HLSLPROGRAM
-            // No tessellator: each tile is an instanced (F+1)^2 UV grid evaluated in the vertex stage.
-            #pragma target 4.5
-            #pragma vertex vert_fallback
-            #pragma fragment frag
-            #pragma shader_feature_local GT_NOISE
-            #pragma shader_feature_local GT_NOISE_TABLE
-            #pragma multi_compile_local _ GT_SNOW
             #define GT_PASS_SHADOWCASTER 1
-            #define GT_FALLBACK 1
             #include "Packages/com.gregoryterrain.tessellation/Shaders/Pipelines/HDRPAdapter.hlsl"
             #include "Packages/com.gregoryterrain.tessellation/Shaders/Pipelines/TerrainStages.hlsl"
             ENDHLSL
@@ -793,31 +530,30 @@ Shader "GregoryTerrain/Terrain"
     {
         Tags { "RenderType" = "Opaque" "Queue" = "Geometry" "GregoryTerrainDraw" = "Tessellated" }
         LOD 300
+        ZWrite On
+        ZTest LEqual
+        Cull Back
+
+        // Every pass: hull and domain stages (a device without tessellation hardware skips this
+        // SubShader for the next one) and the package's keywords (see the top of the file).
+        HLSLINCLUDE
+        #pragma target 4.6
+        #pragma require tessellation tessHW
+        #pragma vertex vert
+        #pragma hull hull_shader
+        #pragma domain domain_shader
+        #pragma fragment frag
+        #pragma shader_feature_local GT_NOISE
+        #pragma shader_feature_local GT_NOISE_TABLE
+        #pragma multi_compile_local _ GT_SNOW
+        #pragma multi_compile_local _ GT_RANGE_ORIGIN GT_LOD GT_VERTEX_CACHE
+        ENDHLSL
 
         Pass
         {
             Name "ForwardBase"
             Tags { "LightMode" = "ForwardBase" }
-            ZWrite On
-            ZTest LEqual
-            Cull Back
-
             HLSLPROGRAM
-            // Hull and domain stages: tessellation hardware required. A device without it skips
-            // this SubShader and takes the next one (vert_fallback, no hull/domain).
-            #pragma target 4.6
-            #pragma require tessellation tessHW
-            #pragma vertex vert
-            #pragma hull hull_shader
-            #pragma domain domain_shader
-            #pragma fragment frag
-            // Effects: off = not compiled into the build at all (shader_feature: unused variants are stripped).
-            #pragma shader_feature_local GT_NOISE
-            #pragma shader_feature_local GT_NOISE_TABLE
-            #pragma multi_compile_local _ GT_SNOW
-            #pragma multi_compile_local _ GT_RANGE_ORIGIN GT_LOD
-            // Vertex evaluation (renderer setting): the compute pre-pass's cached vertices, switched at run time.
-            #pragma multi_compile_local _ GT_VERTEX_CACHE
             #pragma shader_feature_local GT_HEIGHT_COLOR
             #pragma shader_feature_local _ GT_DEBUG_NORMALS GT_DEBUG_PATCH_ID GT_DEBUG_TESS_FACTOR
             // Main directional light's shadow received (BuiltinAdapter.hlsl, GT_MainLightShadow).
@@ -832,26 +568,8 @@ Shader "GregoryTerrain/Terrain"
         {
             Name "ShadowCaster"
             Tags { "LightMode" = "ShadowCaster" }
-            ZWrite On
-            ZTest LEqual
             ColorMask 0
-            Cull Back
-
             HLSLPROGRAM
-            // Hull and domain stages: tessellation hardware required. A device without it skips
-            // this SubShader and takes the next one (vert_fallback, no hull/domain).
-            #pragma target 4.6
-            #pragma require tessellation tessHW
-            #pragma vertex vert
-            #pragma hull hull_shader
-            #pragma domain domain_shader
-            #pragma fragment frag
-            #pragma shader_feature_local GT_NOISE
-            #pragma shader_feature_local GT_NOISE_TABLE
-            #pragma multi_compile_local _ GT_SNOW
-            #pragma multi_compile_local _ GT_RANGE_ORIGIN GT_LOD
-            // Vertex evaluation (renderer setting): the compute pre-pass's cached vertices, switched at run time.
-            #pragma multi_compile_local _ GT_VERTEX_CACHE
             #define GT_PASS_SHADOWCASTER 1
             #include "Packages/com.gregoryterrain.tessellation/Shaders/Pipelines/BuiltinAdapter.hlsl"
             #include "Packages/com.gregoryterrain.tessellation/Shaders/Pipelines/TerrainStages.hlsl"
@@ -864,30 +582,32 @@ Shader "GregoryTerrain/Terrain"
     {
         Tags { "RenderType" = "Opaque" "Queue" = "Geometry" "GregoryTerrainDraw" = "Fallback" }
         LOD 200
+        ZWrite On
+        ZTest LEqual
+        Cull Back
+
+        // Every pass: no tessellator (each tile an instanced (F+1)^2 UV grid evaluated in the vertex
+        // stage) and the package's keywords (see the top of the file).
+        HLSLINCLUDE
+        #pragma target 4.5
+        #pragma vertex vert_fallback
+        #pragma fragment frag
+        #pragma shader_feature_local GT_NOISE
+        #pragma shader_feature_local GT_NOISE_TABLE
+        #pragma multi_compile_local _ GT_SNOW
+        #define GT_FALLBACK 1
+        ENDHLSL
 
         Pass
         {
             Name "ForwardBase"
             Tags { "LightMode" = "ForwardBase" }
-            ZWrite On
-            ZTest LEqual
-            Cull Back
-
             HLSLPROGRAM
-            // No tessellator: each tile is an instanced (F+1)^2 UV grid evaluated in the vertex stage.
-            #pragma target 4.5
-            #pragma vertex vert_fallback
-            #pragma fragment frag
-            // Effects: off = not compiled into the build at all (shader_feature: unused variants are stripped).
-            #pragma shader_feature_local GT_NOISE
-            #pragma shader_feature_local GT_NOISE_TABLE
-            #pragma multi_compile_local _ GT_SNOW
             #pragma shader_feature_local GT_HEIGHT_COLOR
             #pragma shader_feature_local _ GT_DEBUG_NORMALS GT_DEBUG_PATCH_ID GT_DEBUG_TESS_FACTOR
             // Main directional light's shadow received (BuiltinAdapter.hlsl, GT_MainLightShadow).
             #pragma multi_compile _ SHADOWS_SCREEN
             #define GT_PASS_FORWARD 1
-            #define GT_FALLBACK 1
             #include "Packages/com.gregoryterrain.tessellation/Shaders/Pipelines/BuiltinAdapter.hlsl"
             #include "Packages/com.gregoryterrain.tessellation/Shaders/Pipelines/TerrainStages.hlsl"
             ENDHLSL
@@ -897,21 +617,9 @@ Shader "GregoryTerrain/Terrain"
         {
             Name "ShadowCaster"
             Tags { "LightMode" = "ShadowCaster" }
-            ZWrite On
-            ZTest LEqual
             ColorMask 0
-            Cull Back
-
             HLSLPROGRAM
-            // No tessellator: each tile is an instanced (F+1)^2 UV grid evaluated in the vertex stage.
-            #pragma target 4.5
-            #pragma vertex vert_fallback
-            #pragma fragment frag
-            #pragma shader_feature_local GT_NOISE
-            #pragma shader_feature_local GT_NOISE_TABLE
-            #pragma multi_compile_local _ GT_SNOW
             #define GT_PASS_SHADOWCASTER 1
-            #define GT_FALLBACK 1
             #include "Packages/com.gregoryterrain.tessellation/Shaders/Pipelines/BuiltinAdapter.hlsl"
             #include "Packages/com.gregoryterrain.tessellation/Shaders/Pipelines/TerrainStages.hlsl"
             ENDHLSL

@@ -14,8 +14,10 @@ namespace GregoryTerrain.Tests
         static PatchGrid Grid => _grid ??= HardCaseGrids.Fitted();
 
         // The renderer's keyword rule (GT_RANGE_ORIGIN, issue 26): on exactly while the origin it sends
-        // is set, so the stages that compile no origin code never see one; under the levels off (GT_LOD
-        // compiles that code, one keyword set). A wide range sends 0, a deep one a snapped origin.
+        // is set, so the stages that compile no origin code never see one; under the levels or the vertex
+        // cache off (GT_LOD and GT_VERTEX_CACHE compile that code; the three are one keyword set, so a
+        // cache or levels variant with the origin's keyword would be compiled and never drawn).
+        // A wide range sends 0, a deep one a snapped origin.
         [Test]
         public void TheRangeOriginKeywordIsOnExactlyWhileAnOriginIsSent()
         {
@@ -26,11 +28,12 @@ namespace GregoryTerrain.Tests
                     RangeOrigin o = RangeOrigin.For(range);
                     RangeMapping.EncodeRange(range, o, out Float4 rangeF, out Float4 originF);
                     bool deep = w < RangeOrigin.DeepWidth && !(o.Equals(RangeOrigin.zero));
-                    Assert.That(RelativeSurface.NeedsRangeOriginKeyword(originF, false), Is.EqualTo(RelativeSurface.IsActive(originF)), $"w {w} c {c}");
-                    Assert.That(RelativeSurface.NeedsRangeOriginKeyword(originF, false), Is.EqualTo(deep), $"w {w} c {c}: keyword on for a deep range only");
-                    Assert.That(RelativeSurface.NeedsRangeOriginKeyword(originF, true), Is.False, $"w {w} c {c}: the levels' GT_LOD instead");
+                    Assert.That(RelativeSurface.NeedsRangeOriginKeyword(originF, false, false), Is.EqualTo(RelativeSurface.IsActive(originF)), $"w {w} c {c}");
+                    Assert.That(RelativeSurface.NeedsRangeOriginKeyword(originF, false, false), Is.EqualTo(deep), $"w {w} c {c}: keyword on for a deep range only");
+                    Assert.That(RelativeSurface.NeedsRangeOriginKeyword(originF, true, false), Is.False, $"w {w} c {c}: the levels' GT_LOD instead");
+                    Assert.That(RelativeSurface.NeedsRangeOriginKeyword(originF, false, true), Is.False, $"w {w} c {c}: the cache's GT_VERTEX_CACHE instead");
                 }
-            Assert.That(RelativeSurface.NeedsRangeOriginKeyword(new Float4(0f, 0f, 1e-30f, 0f), false), Is.True, "a lo part alone is an origin");
+            Assert.That(RelativeSurface.NeedsRangeOriginKeyword(new Float4(0f, 0f, 1e-30f, 0f), false, false), Is.True, "a lo part alone is an origin");
         }
 
         [Test]

@@ -94,7 +94,7 @@ namespace GregoryTerrain.Rig.Tests
         /// </summary>
         public static string ForOrigin(string variant, Float4 rangeOriginF)
         {
-            if (!RelativeSurface.NeedsRangeOriginKeyword(rangeOriginF, false) || variant.Contains("lod") || variant.Contains("vertex_cache")) return variant;
+            if (!RelativeSurface.NeedsRangeOriginKeyword(rangeOriginF, variant.Contains("lod"), variant.Contains("vertex_cache"))) return variant;
             Assert.That(OriginSiblings, Does.Contain(variant), variant + " has no GT_RANGE_ORIGIN variant in shader_variants.txt");
             return variant == "base" ? "range_origin" : variant + "+range_origin";
         }

@@ -21,11 +21,15 @@ namespace GregoryTerrain.Rig.Tests
         static readonly string[] RuntimeToggledKeywords = { "GT_SNOW", "GT_VERTEX_CACHE", "GT_LOD", "GT_RANGE_ORIGIN" };
         /// <summary>The renderer's Vertex evaluation switch: declared by the tessellated passes only.</summary>
         const string VertexCacheKeyword = "GT_VERTEX_CACHE";
+        static readonly string[] VertexSourceSet = { "multi_compile_local", "_", "GT_RANGE_ORIGIN", "GT_LOD", VertexCacheKeyword };
+        /// <summary>The most package-keyword combinations a tessellated forward pass may compile (issue 39).</summary>
+        const int MaxForwardCombinations = 256;
         static readonly string[] ForwardModes = { "UniversalForwardOnly", "ForwardOnly", "ForwardBase" };
 
         sealed class PassInfo
         {
-            public string Name, LightMode, Program;
+            public string Name, LightMode, Program;   // Program: the SubShader's HLSLINCLUDE, then the pass's HLSLPROGRAM
+            public string OwnProgram;                 // the pass's HLSLPROGRAM alone
             public List<string[]> Pragmas;
             public HashSet<string> Keywords;          // the package's: shader_feature*
             public HashSet<string> PipelineKeywords;  // Unity's: multi_compile*
@@ -37,6 +41,7 @@ namespace GregoryTerrain.Rig.Tests
             public string Pipeline;   // "URP", "HDRP", "Builtin"
             public bool Tessellated;
             public string Body;
+            public string Shared;   // its HLSLINCLUDE blocks, which Unity pastes at the top of every pass's program
             public List<PassInfo> Passes;
             public override string ToString() => $"SubShader {Index} ({Pipeline}, {(Tessellated ? "tessellated" : "fallback")})";
         }
@@ -53,10 +58,12 @@ namespace GregoryTerrain.Rig.Tests
                 var info = new SubShaderInfo { Index = _subShaders.Count, Body = sub, Passes = new List<PassInfo>() };
                 string pipeline = Regex.Match(OuterPart(sub), "\"RenderPipeline\"\\s*=\\s*\"(\\w+)\"").Groups[1].Value;
                 info.Pipeline = pipeline == "UniversalPipeline" ? "URP" : pipeline == "HDRenderPipeline" ? "HDRP" : pipeline == "" ? "Builtin" : pipeline;
+                info.Shared = string.Concat(Regex.Matches(OuterPart(sub), @"\bHLSLINCLUDE\b(.*?)\bENDHLSL\b", RegexOptions.Singleline).Select(x => x.Groups[1].Value));
                 foreach (string pass in Blocks(sub, "Pass"))
                 {
                     var m = Regex.Match(pass, "HLSLPROGRAM(.*?)ENDHLSL", RegexOptions.Singleline);
-                    string program = m.Success ? m.Groups[1].Value : "";
+                    string own = m.Success ? m.Groups[1].Value : "";
+                    string program = info.Shared + own;
                     var pragmas = program.Split('\n').Select(l => l.Trim()).Where(l => l.StartsWith("#pragma"))
                         .Select(l => l.Substring("#pragma".Length).Split(new[] { ' ', '\t' }, StringSplitOptions.RemoveEmptyEntries)).ToList();
                     info.Passes.Add(new PassInfo
@@ -64,6 +71,7 @@ namespace GregoryTerrain.Rig.Tests
                         Name = Regex.Match(pass, "\\bName\\s+\"([^\"]+)\"").Groups[1].Value,
                         LightMode = Regex.Match(pass, "\"LightMode\"\\s*=\\s*\"(\\w+)\"").Groups[1].Value,
                         Program = program,
+                        OwnProgram = own,
                         Pragmas = pragmas,
                         Keywords = new HashSet<string>(pragmas.Where(p => p.Length > 1 && p[0].StartsWith("shader_feature"))
                             .SelectMany(p => p.Skip(1)).Where(k => k != "_")
@@ -93,7 +101,7 @@ namespace GregoryTerrain.Rig.Tests
                 foreach (PassInfo p in s.Passes)
                 {
                     string where = $"{s} pass {p.Name}";
-                    Assert.That(p.Program, Is.Not.Empty, where + ": HLSLPROGRAM block");
+                    Assert.That(p.OwnProgram, Is.Not.Empty, where + ": HLSLPROGRAM block");
                     if (s.Tessellated)
                     {
                         Assert.That(PragmaArg(p, "vertex"), Is.EqualTo("vert"), where);
@@ -158,12 +166,12 @@ namespace GregoryTerrain.Rig.Tests
                     else
                         // Depth and shadow passes: only what changes the shape (or where it comes from).
                         Assert.That(p.Keywords, Is.EquivalentTo(s.Tessellated ? new[] { "GT_NOISE", "GT_NOISE_TABLE", "GT_SNOW", VertexCacheKeyword, "GT_LOD", "GT_RANGE_ORIGIN" } : new[] { "GT_NOISE", "GT_NOISE_TABLE", "GT_SNOW" }), where);
-                    Assert.That(p.Pragmas.Count(a => a.SequenceEqual(new[] { "multi_compile_local", "_", VertexCacheKeyword })), Is.EqualTo(s.Tessellated ? 1 : 0),
-                        where + ": GT_VERTEX_CACHE as its own multi_compile_local set, in tessellated passes only");
-                    // The range origin's code with the levels' in one set: the levels always compile it, so the
-                    // two never need to be on together, and a third variant instead of a fourth.
-                    Assert.That(p.Pragmas.Count(a => a.SequenceEqual(new[] { "multi_compile_local", "_", "GT_RANGE_ORIGIN", "GT_LOD" })), Is.EqualTo(s.Tessellated ? 1 : 0),
-                        where + ": GT_RANGE_ORIGIN and GT_LOD as one multi_compile_local set, in tessellated passes only");
+                    // Where the vertices come from, one set: the range origin's code, the levels (which
+                    // compile that code too) or the cache (likewise; it draws one range, never the levels).
+                    // The renderer turns on at most one (RelativeSurface.NeedsRangeOriginKeyword), so a
+                    // set of their own would compile combinations that are never drawn.
+                    Assert.That(p.Pragmas.Count(a => a.SequenceEqual(VertexSourceSet)), Is.EqualTo(s.Tessellated ? 1 : 0),
+                        where + ": GT_RANGE_ORIGIN, GT_LOD and GT_VERTEX_CACHE as one multi_compile_local set, in tessellated passes only");
                     foreach (string rigOnly in RigKeywords.RigOnly)
                         Assert.That(Regex.IsMatch(p.Program, @"\b" + rigOnly + @"\b"), Is.False, where + ": mentions " + rigOnly);
                 }
@@ -171,6 +179,85 @@ namespace GregoryTerrain.Rig.Tests
             foreach (PassInfo p in _subShaders.SelectMany(s => s.Passes).Where(p => ForwardModes.Contains(p.LightMode)))
                 Assert.That(p.Pragmas.Any(a => a.SequenceEqual(new[] { "shader_feature_local", "_", "GT_DEBUG_NORMALS", "GT_DEBUG_PATCH_ID", "GT_DEBUG_TESS_FACTOR" })),
                     Is.True, p.Name + ": the debug views as one set");
+        }
+
+        /// <summary>
+        /// The package's keywords and the stage pragmas are written once per SubShader, in its
+        /// HLSLINCLUDE (Unity pastes it at the top of every HLSLPROGRAM of the SubShader); a pass's own
+        /// HLSLPROGRAM adds only what that pass alone reads (the forward passes' colour and debug
+        /// switches, the pipeline's keywords). The shared blocks of the same kind are the same text.
+        /// </summary>
+        [Test]
+        public void ThePackageKeywordBlockIsWrittenOncePerSubShader()
+        {
+            string[] forwardOnly = { "GT_HEIGHT_COLOR", "GT_DEBUG_NORMALS", "GT_DEBUG_PATCH_ID", "GT_DEBUG_TESS_FACTOR" };
+            foreach (SubShaderInfo s in _subShaders)
+            {
+                Assert.That(Regex.Matches(s.Shared, @"#pragma\s+(shader_feature|multi_compile)\w*[ \t][^\n]*\bGT_").Count, Is.EqualTo(s.Tessellated ? 4 : 3),
+                    $"{s}: the package's keyword pragmas in the SubShader's HLSLINCLUDE");
+                foreach (PassInfo p in s.Passes)
+                {
+                    string[] own = Regex.Matches(p.OwnProgram, @"#pragma\s+(shader_feature|multi_compile)\w*[ \t]([^\n]*)").SelectMany(x => x.Groups[2].Value.Split(' ', '\t'))
+                        .Where(k => k.StartsWith("GT_")).ToArray();
+                    Assert.That(own, Is.SubsetOf(ForwardModes.Contains(p.LightMode) ? forwardOnly : Array.Empty<string>()),
+                        $"{s} pass {p.Name}: a package keyword declared in the pass, not once in the SubShader");
+                    Assert.That(Regex.IsMatch(p.OwnProgram, @"#pragma\s+(target|require|vertex|hull|domain|fragment)\b"), Is.False,
+                        $"{s} pass {p.Name}: a stage pragma in the pass, not once in the SubShader");
+                }
+            }
+            foreach (bool tessellated in new[] { true, false })
+                Assert.That(_subShaders.Where(s => s.Tessellated == tessellated).Select(s => s.Shared.Trim()).Distinct().Count(), Is.EqualTo(1),
+                    (tessellated ? "tessellated" : "fallback") + " SubShaders: the same HLSLINCLUDE in every pipeline");
+        }
+
+        /// <summary>
+        /// The package-keyword combinations a tessellated forward pass compiles (the product over its
+        /// sets: a set with "_" is its keywords or none, a one-keyword shader_feature on or off, a set
+        /// without "_" one of its keywords): at most <see cref="MaxForwardCombinations"/>, every one a
+        /// draw the renderer can make.
+        /// </summary>
+        [Test]
+        public void ATessellatedForwardPassCompilesAtMost256PackageCombinations()
+        {
+            foreach (SubShaderInfo s in _subShaders.Where(s => s.Tessellated))
+                foreach (PassInfo p in s.Passes.Where(p => ForwardModes.Contains(p.LightMode)))
+                {
+                    int combinations = PackageCombinations(p);
+                    TestContext.Out.WriteLine($"{s} pass {p.Name}: {combinations} package-keyword combinations");
+                    Assert.That(combinations, Is.LessThanOrEqualTo(MaxForwardCombinations), $"{s} pass {p.Name}");
+                }
+        }
+
+        static int PackageCombinations(PassInfo p)
+        {
+            int n = 1;
+            foreach (string[] a in p.Pragmas.Where(a => KeywordPragma.IsMatch(a[0]) && a.Skip(1).Any(k => k.StartsWith("GT_"))))
+            {
+                int keywords = a.Skip(1).Count(k => k != "_");
+                n *= a.Contains("_") || keywords == 1 ? keywords + 1 : keywords;
+            }
+            return n;
+        }
+
+        static readonly Regex KeywordPragma = new Regex(@"^(shader_feature|multi_compile)(_local)?(_vertex|_fragment|_hull|_domain)?$");
+
+        /// <summary>
+        /// Unity reads #pragma lines only in the .shader's own HLSL and in files pulled in with
+        /// #include_with_pragmas (what <c>gt shaderlab</c> emulates); in a file pulled in with a plain
+        /// #include they are dropped without a word. So only a file the .shader includes with pragmas
+        /// may declare a keyword.
+        /// </summary>
+        [Test]
+        public void NoPlainlyIncludedFileDeclaresKeywords()
+        {
+            string shaders = PackageRoot.Combine("Shaders");
+            string shader = StripComments(File.ReadAllText(Path.Combine(shaders, "GregoryTerrain.shader")));
+            var withPragmas = new HashSet<string>(Regex.Matches(shader, "#\\s*include_with_pragmas\\s+\"Packages/" + PackageName + "/Shaders/([^\"]+)\"")
+                .Select(m => m.Groups[1].Value));
+            var declaring = Directory.GetFiles(shaders, "*.hlsl", SearchOption.AllDirectories)
+                .Where(f => Regex.IsMatch(StripComments(File.ReadAllText(f)), @"(?m)^\s*#pragma\s+(multi_compile|shader_feature)"))
+                .Select(f => Path.GetRelativePath(shaders, f).Replace('\\', '/')).Where(f => !withPragmas.Contains(f)).ToList();
+            Assert.That(declaring, Is.Empty, "keyword pragmas in a plainly included file (Unity ignores them)");
         }
 
         /// <summary>

@@ -200,11 +200,49 @@ class SubShader:
         self.index, self.pipeline, self.requirements, self.passes, self.outer = index, pipeline, requirements, passes, outer
 
 
+HLSL_INCLUDE = re.compile(r"\bHLSLINCLUDE\b(.*?)\bENDHLSL\b", flags=re.S)
+
+
+def shared_hlsl(shaderlab):
+    """The HLSLINCLUDE blocks of a Shader's or SubShader's own text, joined: Unity pastes them at the top
+    of every HLSLPROGRAM in that scope, so their #pragma lines count as the pass's own."""
+    return "".join(HLSL_INCLUDE.findall(shaderlab))
+
+
+INCLUDE_WITH_PRAGMAS = re.compile(r'^[ \t]*#[ \t]*include_with_pragmas[ \t]+"([^"]+)"[^\n]*', flags=re.M)
+
+
+def with_included_pragmas(program, pkg, seen=()):
+    """Unity's #include_with_pragmas (Caching Shader Preprocessor, the only one in 2022.3): the file is
+    included and its #pragma lines count as the program's own (its own #include_with_pragmas too).
+    Each such line becomes those pragmas and a plain #include, which is all glslang needs; a plain
+    #include keeps Unity's behaviour, its file's pragmas ignored."""
+    def expand(m):
+        name = m.group(1)
+        prefix = f"Packages/{PACKAGE_NAME}/"
+        if not name.startswith(prefix):
+            raise ValueError(f'#include_with_pragmas "{name}": only the package\'s own files ({prefix}...) are read here')
+        if name in seen:
+            raise ValueError(f'#include_with_pragmas "{name}": includes itself')
+        path = os.path.join(pkg, *name[len(prefix):].split("/"))
+        if not os.path.isfile(path):
+            raise ValueError(f'#include_with_pragmas "{name}": no such file {path}')
+        inner = with_included_pragmas(strip_comments(open(path, encoding="utf-8").read()), pkg, seen + (name,))
+        lines = [l.strip() for l in inner.splitlines() if l.strip().startswith("#pragma")]
+        return "\n".join(lines + [f'#include "{name}"'])
+    return INCLUDE_WITH_PRAGMAS.sub(expand, program)
+
+
 def parse_shader(path):
     text = strip_comments(open(path, encoding="utf-8").read())
+    text = with_included_pragmas(text, os.path.dirname(os.path.dirname(os.path.abspath(path))))
     subs = []
-    for k, (_, _, sub) in enumerate(blocks(text, "SubShader")):
+    found = blocks(text, "SubShader")
+    shader_shared = shared_hlsl(text[:found[0][0]] if found else text)
+    for k, (_, _, sub) in enumerate(found):
         outer = outer_part(sub, "Pass")
+        shared = shader_shared + shared_hlsl(outer)
+        outer = HLSL_INCLUDE.sub("", outer)
         tag = re.search(r'"RenderPipeline"\s*=\s*"(\w+)"', outer)
         pipeline = {"UniversalPipeline": "URP", "HDRenderPipeline": "HDRP"}.get(tag.group(1), tag.group(1)) if tag else "Builtin"
         where = f"{os.path.basename(path)} SubShader {k}"
@@ -213,7 +251,7 @@ def parse_shader(path):
             name = re.search(r'\bName\s+"([^"]+)"', body)
             name = name.group(1) if name else "?"
             progs = re.findall(r"HLSLPROGRAM(.*?)ENDHLSL", body, flags=re.S)
-            passes.append(Pass(name, progs[0] if progs else None,
+            passes.append(Pass(name, shared + progs[0] if progs else None,
                                parse_requirements(body.split("HLSLPROGRAM")[0], f"{where} Pass {name}"),
                                re.sub(r"HLSLPROGRAM.*?ENDHLSL", "", body, flags=re.S)))
         subs.append(SubShader(k, pipeline, parse_requirements(outer, where), passes, outer))
@@ -618,9 +656,9 @@ DXC_OPTIONS = ["-fcgl", "-Vd"]
 
 
 def hlsl_blocks_only(shader_text):
-    """A .shader with everything outside its HLSLPROGRAM blocks blanked (line numbers kept)."""
+    """A .shader with everything outside its HLSLPROGRAM and HLSLINCLUDE blocks blanked (line numbers kept)."""
     out, pos = [], 0
-    for m in re.finditer(r"HLSLPROGRAM(.*?)ENDHLSL", shader_text, flags=re.S):
+    for m in re.finditer(r"HLSL(?:PROGRAM|INCLUDE)(.*?)ENDHLSL", shader_text, flags=re.S):
         out.append(re.sub(r"[^\n]", " ", shader_text[pos:m.start(1)]))
         out.append(m.group(1))
         pos = m.end(1)

@@ -48,12 +48,13 @@ namespace GregoryTerrain
 
         /// <summary>
         /// Whether a tessellated draw needs the shaders' <c>GT_RANGE_ORIGIN</c> keyword: exactly while
-        /// the origin is set (<see cref="IsActive"/>), except under the levels, whose <c>GT_LOD</c>
-        /// compiles the same code (the two are one keyword set). Without either keyword the stages
-        /// compile no range-origin code and read the origin as 0, so a set origin would be drawn at
-        /// the wrong place; with it and no origin they take the plain path at run time.
+        /// the origin is set (<see cref="IsActive"/>), except under the levels (<c>GT_LOD</c>) or the
+        /// vertex cache (<c>GT_VERTEX_CACHE</c>), which compile the same code: the four are one keyword
+        /// set, so at most one is on and no combination is compiled that is never drawn. Without any
+        /// of them the stages compile no range-origin code and read the origin as 0, so a set origin
+        /// would be drawn at the wrong place; with one and no origin they take the plain path at run time.
         /// </summary>
-        public static bool NeedsRangeOriginKeyword(Float4 rangeOriginF, bool levels) => !levels && IsActive(rangeOriginF);
+        public static bool NeedsRangeOriginKeyword(Float4 rangeOriginF, bool levels, bool cache) => !levels && !cache && IsActive(rangeOriginF);
 
         /// <summary>
         /// The patch that holds the hi/lo point <paramref name="q"/> by the FindPatch rule, decided on the

@@ -110,7 +110,7 @@ namespace GregoryTerrain.Rig
             BufferFiles.Write(Path.Combine(dir, "camera.f32"), camera.Pack());
             string readback = Path.Combine(dir, "readback.f32");
             // A set range origin needs the stages that compile its code (GT_RANGE_ORIGIN), as the renderer draws it.
-            var args = gpu.TessellatedStages(RelativeSurface.NeedsRangeOriginKeyword(at.Params.rangeOrigin, false) ? variant + "+range_origin" : variant);
+            var args = gpu.TessellatedStages(RelativeSurface.NeedsRangeOriginKeyword(at.Params.rangeOrigin, false, false) ? variant + "+range_origin" : variant);
             args.AddRange(new[] { "--buffers", dir, "--patches", "1", "--width", "64", "--height", "64",
                                   "--readback", readback, "--readback-floats", (12 * 4).ToString(CultureInfo.InvariantCulture) });
             gpu.Run(args);
