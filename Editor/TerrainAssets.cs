@@ -49,8 +49,7 @@ namespace GregoryTerrain.EditorTools
             SetToggle(material, "_GtHeightColor", ShaderIds.HeightColorKeyword, true);
             SetToggle(material, "_GtNoise", ShaderIds.NoiseKeyword, noise);
             SetToggle(material, "_GtNoiseTable", ShaderIds.NoiseTableKeyword, false);
-            material.SetFloat("GT_DEBUG", 0f);
-            material.EnableKeyword("GT_DEBUG_NONE");
+            // The debug view keeps its property's default, None, which is no keyword at all.
             material.DisableKeyword(ShaderIds.DebugNormalsKeyword);
             material.DisableKeyword(ShaderIds.DebugPatchIdKeyword);
             material.DisableKeyword(ShaderIds.DebugTessFactorKeyword);
