@@ -4,17 +4,10 @@
 // The harness self-test uses these shaders to prove the harness (bindings, split draws,
 // readback, stats); they are not the package's shaders.
 
+// The package's TerrainParams block: its generated members (Core's TerrainParams declares them).
 cbuffer TerrainParams : register(b0)
 {
-    float4 _Range;        // (c, d, g, h) relative to the origin
-    float4 _RangeOrigin;
-    float4 _GridSize;
-    float4 _Tess;         // (tiles M, maxFactor, targetPixelError, uniformFactor)
-    float4 _Noise;
-    float4 _NoiseOctaves;
-    float4 _HeightColor;
-    float4 _ColorLow;
-    float4 _ColorHigh;
+#include "../../../Shaders/Terrain/TerrainParams.cs.hlsl"
 };
 
 cbuffer RigCamera : register(b1)
