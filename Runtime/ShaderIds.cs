@@ -51,11 +51,8 @@ namespace GregoryTerrain
 
         // ---- snow (SnowSimulation.compute, SnowField.compute, TerrainInputs.hlsl's GT_SNOW part) -----
 
-        public static readonly int SnowGrid = Shader.PropertyToID("_SnowGrid");
-        public static readonly int SnowFall = Shader.PropertyToID("_SnowFall");
-        public static readonly int SnowCatch = Shader.PropertyToID("_SnowCatch");
-        public static readonly int SnowEdge = Shader.PropertyToID("_SnowEdge");
-        public static readonly int SnowStep = Shader.PropertyToID("_SnowStep");
+        /// <summary><c>SnowParams[k]</c> is the ID of SnowParams float4 k (cbuffer order; Core's <see cref="GregoryTerrain.SnowParams.PropertyNames"/>, generated).</summary>
+        public static readonly int[] SnowParams = Array.ConvertAll(GregoryTerrain.SnowParams.PropertyNames, Shader.PropertyToID);
         public static readonly int SnowField = Shader.PropertyToID("_SnowField");
         public static readonly int SnowExposure = Shader.PropertyToID("_SnowExposure");
         public static readonly int SnowDepth = Shader.PropertyToID("_SnowDepth");

@@ -184,10 +184,10 @@ namespace GregoryTerrain.Rig.Tests
         [Test]
         public void AMisspeltNameFailsThePropertyComparison()
         {
-            var named = NamesInShaderIds(ShaderIdsSource().Replace("\"_SnowFall\"", "\"_SnowFal\""));
+            var named = NamesInShaderIds(ShaderIdsSource().Replace("\"_SnowMapSize\"", "\"_SnowMapSiz\""));
             var declared = DeclaredProperties(ShaderFiles());
             var e = Assert.Throws<AssertionException>(() => CompareProperties(named.properties, declared));
-            Assert.That(e.Message, Does.Contain("_SnowFal").And.Contain("_SnowFall"));
+            Assert.That(e.Message, Does.Contain("_SnowMapSiz").And.Contain("_SnowMapSize"));
         }
 
         /// <summary>
@@ -362,10 +362,10 @@ namespace GregoryTerrain.Rig.Tests
                 $"named although the package never sets them: [{string.Join(", ", exemptButNamed)}]");
         }
 
-        /// <summary>The identifier-like string literals of ShaderIds.cs by kind, plus Core's TerrainParams names.</summary>
+        /// <summary>The identifier-like string literals of ShaderIds.cs by kind, plus the names Core's contracts generate (TerrainParams, SnowParams).</summary>
         static (SortedSet<string> properties, SortedSet<string> keywords, SortedSet<string> kernels) NamesInShaderIds(string source)
         {
-            var properties = new SortedSet<string>(TerrainParams.PropertyNames, StringComparer.Ordinal);
+            var properties = new SortedSet<string>(TerrainParams.PropertyNames.Concat(SnowParams.PropertyNames), StringComparer.Ordinal);
             var keywords = new SortedSet<string>(StringComparer.Ordinal);
             var kernels = new SortedSet<string>(StringComparer.Ordinal);
             foreach (string line in source.Split('\n').Select(StripComment))

@@ -93,10 +93,8 @@ namespace GregoryTerrain
             };
         }
 
-        /// <summary>The float4 at cbuffer position <paramref name="index"/> (see <see cref="PropertyNames"/>): read from the layout itself.</summary>
-        public Float4 this[int index] => (uint)index < Float4Count
-            ? MemoryMarshal.Cast<TerrainParams, Float4>(MemoryMarshal.CreateSpan(ref this, 1))[index]
-            : throw new ArgumentOutOfRangeException(nameof(index), index, $"TerrainParams has {Float4Count} float4");
+        /// <summary>The float4 at cbuffer position <paramref name="index"/> (see <see cref="PropertyNames"/>).</summary>
+        public Float4 this[int index] => Float4Block.At(ref this, index, Float4Count);
 
         /// <summary>Whether the tiles are anchored to the terrain (a nonzero <see cref="tileLattice"/>).</summary>
         public bool TilesAnchored => TileLattice.IsAnchored(tileLattice);
@@ -116,10 +114,6 @@ namespace GregoryTerrain
         }
 
         /// <summary>The 40 floats of the cbuffer, in order: the struct's own bytes, so Pack cannot disagree with the layout.</summary>
-        public float[] Pack()
-        {
-            TerrainParams copy = this;
-            return MemoryMarshal.Cast<TerrainParams, float>(MemoryMarshal.CreateReadOnlySpan(ref copy, 1)).ToArray();
-        }
+        public float[] Pack() => Float4Block.Pack(this);
     }
 }
