@@ -221,26 +221,45 @@ namespace GregoryTerrain.Rig.Tests
         /// Compiles SnowField.compute (a product kernel that includes TerrainInputs.hlsl) with glslang's
         /// HLSL front end and reads the TerrainParams block's members and offsets back from the SPIR-V.
         /// </summary>
-        static List<(string name, int offset)> CompiledTerrainParams(bool snow, out int blockSize)
+        static List<(string name, int offset)> CompiledTerrainParams(bool snow, out int blockSize) =>
+            CompiledCbuffer(PackageRoot.Combine("Shaders", "Snow", "SnowField.compute"), "SnowFieldKernel", "TerrainParams", snow ? "-DGT_SNOW" : null, out blockSize);
+
+        /// <summary>A compute file's cbuffer <paramref name="block"/> as glslang lays it out: members and byte offsets, from the SPIR-V.</summary>
+        static List<(string name, int offset)> CompiledCbuffer(string file, string kernel, string block, string define, out int blockSize)
         {
             string dir = Path.Combine(Path.GetTempPath(), "gt-contract-" + Guid.NewGuid().ToString("N"));
             Directory.CreateDirectory(dir);
             try
             {
-                string spv = Path.Combine(dir, "field.spv");
-                var args = new List<string> { "-D", "-V", "-S", "comp", "-e", "SnowFieldKernel", "-o", spv };
-                if (snow) args.Add("-DGT_SNOW");
-                args.Add(PackageRoot.Combine("Shaders", "Snow", "SnowField.compute"));
+                string spv = Path.Combine(dir, "kernel.spv");
+                var args = new List<string> { "-D", "-V", "-S", "comp", "-e", kernel, "-o", spv };
+                if (define != null) args.Add(define);
+                args.Add(file);
                 ComputeRunner.Run("glslangValidator", args.ToArray());
                 using var doc = JsonDocument.Parse(ComputeRunner.Run("spirv-cross", spv, "--reflect"));
                 JsonElement ubo = doc.RootElement.GetProperty("ubos").EnumerateArray()
-                    .Single(u => u.GetProperty("name").GetString() == "TerrainParams");
+                    .Single(u => u.GetProperty("name").GetString() == block);
                 blockSize = ubo.GetProperty("block_size").GetInt32();
                 JsonElement type = doc.RootElement.GetProperty("types").GetProperty(ubo.GetProperty("type").GetString());
                 return type.GetProperty("members").EnumerateArray()
                     .Select(m => (m.GetProperty("name").GetString(), m.GetProperty("offset").GetInt32())).ToList();
             }
             finally { Directory.Delete(dir, true); }
+        }
+
+        /// <summary>
+        /// Core's <see cref="SnowParams"/> against SnowSimulation.compute's cbuffer as compiled: each
+        /// field (as its shader name) at its C# offset, in order, 80 bytes in all.
+        /// </summary>
+        [Test]
+        public void SnowParamsHasTheLayoutOfTheCompiledCbuffer()
+        {
+            var compiled = CompiledCbuffer(PackageRoot.Combine("Shaders", "Snow", "SnowSimulation.compute"), "SnowAccumulateKernel", "SnowParams", null, out int blockSize);
+            var expected = typeof(SnowParams).GetFields(BindingFlags.Instance | BindingFlags.Public | BindingFlags.NonPublic)
+                .Select(f => (ShaderName(f), (int)Marshal.OffsetOf<SnowParams>(f.Name))).OrderBy(m => m.Item2).ToList();
+            Assert.That(compiled, Is.EqualTo(expected), "SnowParams: (shader name, byte offset) in C# vs the compiled cbuffer");
+            Assert.That(expected.Select(m => m.Item1), Is.EqualTo(SnowParams.PropertyNames));
+            Assert.That(blockSize, Is.EqualTo(Marshal.SizeOf<SnowParams>()).And.EqualTo(80));
         }
 
         /// <summary>
