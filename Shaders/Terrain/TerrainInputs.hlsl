@@ -36,13 +36,9 @@
     #endif
 #endif
 
-// One record per patch, 320 bytes: the 20 control points in the slot order of GregoryPatch.hlsl,
-// xyz = P - R_p, w of points 0..2 = R_p (the reference point), w of the others 0. Mirror of Core's
-// blittable GregoryPatchRecord (ShaderContractTests compares the compiled offsets and stride).
-struct GregoryPatchRecord
-{
-    float4 points[20];
-};
+// One record per patch, 320 bytes: Core's GregoryPatchRecord is its one declaration (gt generate
+// writes the struct; ShaderContractTests compares the compiled offsets and stride).
+#include "GregoryPatchRecord.cs.hlsl"
 StructuredBuffer<GregoryPatchRecord> _ControlPoints GT_REGISTER(t0);
 // (a, b, e, f) per patch: the patch covers [a, e] x [b, f] of the unit square.
 StructuredBuffer<float4> _Regions GT_REGISTER(t1);

@@ -82,5 +82,23 @@ namespace GregoryTerrain.Rig.Tests
             var e = Assert.Throws<ArgumentException>(() => ContractGenerator.Generate(new[] { typeof(ScalarContract) }));
             Assert.That(e.Message, Does.Contain("ScalarContract.scale").And.Contain("Single").And.Contain("_Scale"));
         }
+
+        [StructLayout(LayoutKind.Sequential)]
+        [GenerateHlsl("Shaders/Bad.cs.hlsl", Record = true)]
+        struct BrokenArrayRecord
+        {
+            [HlslArray("points", 3)] public Float4 point0;
+            public Float4 point1;
+            public Float4 corner;
+        }
+
+        [Test]
+        public void ARecordArrayNeedsItsNumberedFieldsInOrder()
+        {
+            string record = ContractGenerator.Generate(new[] { typeof(GregoryPatchRecord) }).Single().Text;
+            Assert.That(record, Does.Contain("struct GregoryPatchRecord\n{\n    float4 points[20];"));
+            var e = Assert.Throws<ArgumentException>(() => ContractGenerator.Generate(new[] { typeof(BrokenArrayRecord) }));
+            Assert.That(e.Message, Does.Contain("BrokenArrayRecord.point0").And.Contain("point0..point2"));
+        }
     }
 }

@@ -284,10 +284,10 @@ namespace GregoryTerrain.Rig.Tests
             try
             {
                 CopyTree(PackageRoot.Combine("Shaders"), copy);
-                string inputs = Path.Combine(copy, "Terrain", "TerrainInputs.hlsl");
-                string text = File.ReadAllText(inputs);
+                string record = Path.Combine(copy, "Terrain", "GregoryPatchRecord.cs.hlsl");   // generated from Core's struct
+                string text = File.ReadAllText(record);
                 Assert.That(text, Does.Contain("float4 points[20];"));
-                File.WriteAllText(inputs, text.Replace("float4 points[20];", "float4 points[19];"));
+                File.WriteAllText(record, text.Replace("float4 points[20];", "float4 points[19];"));
                 CompiledRecord compiled = CompiledPatchRecord(copy);
                 Assert.That(compiled.recordStride, Is.EqualTo(304));
                 var e = Assert.Throws<AssertionException>(() => ComparePatchRecord(compiled));

@@ -14,9 +14,13 @@ namespace GregoryTerrain
     [AttributeUsage(AttributeTargets.Struct, Inherited = false)]
     internal sealed class GenerateHlslAttribute : Attribute
     {
-        /// <param name="hlslPath">The generated member list, relative to the package root; the HLSL block that holds the constants includes it.</param>
-        /// <param name="cSharpPath">The generated part of the struct, relative to the package root.</param>
-        public GenerateHlslAttribute(string hlslPath, string cSharpPath)
+        /// <param name="hlslPath">
+        /// The generated HLSL, relative to the package root: the member list of a constants block
+        /// (the block that holds the constants includes it), or with <see cref="Record"/> an HLSL
+        /// struct of the same name for a structured buffer's element.
+        /// </param>
+        /// <param name="cSharpPath">The generated part of a constants struct, relative to the package root; null for a record.</param>
+        public GenerateHlslAttribute(string hlslPath, string cSharpPath = null)
         {
             HlslPath = hlslPath;
             CSharpPath = cSharpPath;
@@ -24,6 +28,20 @@ namespace GregoryTerrain
 
         public string HlslPath { get; }
         public string CSharpPath { get; }
+        /// <summary>An element of a structured buffer, not constants set by name: an HLSL struct, no C# names.</summary>
+        public bool Record { get; set; }
+    }
+
+    /// <summary>
+    /// On the first of <see cref="Length"/> fields <c>stem0</c>, <c>stem1</c>, ...: in HLSL they are one
+    /// array member, <c>float4 Name[Length]</c> (C# 9 in Unity has no fixed-size buffer of a struct).
+    /// </summary>
+    [AttributeUsage(AttributeTargets.Field, Inherited = false)]
+    internal sealed class HlslArrayAttribute : Attribute
+    {
+        public HlslArrayAttribute(string name, int length) { Name = name; Length = length; }
+        public string Name { get; }
+        public int Length { get; }
     }
 
     /// <summary>A contract field's meaning and update rate, written beside its HLSL declaration.</summary>

@@ -42,7 +42,14 @@ namespace GregoryTerrain.Rig
             {
                 var a = t.GetCustomAttribute<GenerateHlslAttribute>()
                         ?? throw new ArgumentException($"{t.FullName} has no [GenerateHlsl]", nameof(contracts));
-                List<FieldInfo> fields = Float4Fields(t);
+                List<FieldInfo> fields = Float4Fields(t, a.Record);
+                if (a.Record)
+                {
+                    if (a.CSharpPath != null) throw new ArgumentException($"{t.FullName}: a record has no generated C# ({a.CSharpPath})", nameof(contracts));
+                    files.Add(new GeneratedFile(a.HlslPath, HlslRecord(t, a, fields)));
+                    continue;
+                }
+                if (a.CSharpPath == null) throw new ArgumentException($"{t.FullName}: constants need a path for their generated C#", nameof(contracts));
                 files.Add(new GeneratedFile(a.HlslPath, Hlsl(t, a, fields)));
                 files.Add(new GeneratedFile(a.CSharpPath, CSharp(t, fields)));
             }
@@ -87,7 +94,7 @@ namespace GregoryTerrain.Rig
         public static string ShaderName(FieldInfo f) => "_" + char.ToUpperInvariant(f.Name[0]) + f.Name.Substring(1);
 
         // The instance fields in layout order; each must be a Float4 so the C# offsets are std140's.
-        static List<FieldInfo> Float4Fields(Type t)
+        static List<FieldInfo> Float4Fields(Type t, bool record)
         {
             if (!t.IsValueType || !t.IsLayoutSequential)
                 throw new ArgumentException($"{t.FullName}: a contract is a struct with [StructLayout(LayoutKind.Sequential)]");
@@ -95,16 +102,16 @@ namespace GregoryTerrain.Rig
                 .OrderBy(f => (int)Marshal.OffsetOf(t, f.Name)).ToList();
             if (fields.Count == 0) throw new ArgumentException($"{t.FullName}: a contract needs at least one field");
             foreach (FieldInfo f in fields)
-                if (f.FieldType != typeof(Float4) || !char.IsLower(f.Name[0]))
-                    throw new ArgumentException($"{t.FullName}.{f.Name} ({f.FieldType.Name}): a contract field is a Float4 named in camelCase (its constant is {ShaderName(f)})");
+                if (f.FieldType != typeof(Float4) || !char.IsLower(f.Name[0]) || (!record && f.GetCustomAttribute<HlslArrayAttribute>() != null))
+                    throw new ArgumentException($"{t.FullName}.{f.Name} ({f.FieldType.Name}): a contract field is a Float4 named in camelCase (its constant is {ShaderName(f)}); arrays only in a record");
             return fields;
         }
 
         static string Hlsl(Type t, GenerateHlslAttribute a, List<FieldInfo> fields)
         {
-            string guard = System.IO.Path.GetFileName(a.HlslPath).Replace('.', '_').ToUpperInvariant();
+            string guard = Guard(a);
             var s = new StringBuilder();
-            s.Append("// ").Append(DoNotEdit).Append(t.Name).Append(" (").Append(a.CSharpPath.Replace(".Generated.cs", ".cs")).Append("): do not edit.\n");
+            s.Append("// ").Append(DoNotEdit).Append(t.FullName).Append(": do not edit.\n");
             s.Append("// The members of the ").Append(t.Name).Append(" constants, in field order: ").Append(fields.Count)
              .Append(" float4, ").Append(16 * fields.Count).Append(" bytes. Included inside the block that declares them.\n");
             s.Append("#ifndef ").Append(guard).Append('\n').Append("#define ").Append(guard).Append('\n');
@@ -119,10 +126,41 @@ namespace GregoryTerrain.Rig
             return s.ToString();
         }
 
+        // A structured buffer's element: an HLSL struct of the fields, a run of HlslArray fields as one array.
+        static string HlslRecord(Type t, GenerateHlslAttribute a, List<FieldInfo> fields)
+        {
+            string guard = Guard(a);
+            var members = new List<(string decl, string comment)>();
+            for (int i = 0; i < fields.Count; i++)
+            {
+                var array = fields[i].GetCustomAttribute<HlslArrayAttribute>();
+                string comment = fields[i].GetCustomAttribute<HlslCommentAttribute>()?.Text;
+                if (array == null) { members.Add(($"float4 {fields[i].Name};", comment)); continue; }
+                string stem = fields[i].Name.TrimEnd('0');
+                for (int k = 0; k < array.Length; k++)
+                    if (i + k >= fields.Count || fields[i + k].Name != stem + k)
+                        throw new ArgumentException($"{t.FullName}.{fields[i].Name}: [HlslArray({array.Name}, {array.Length})] needs fields {stem}0..{stem}{array.Length - 1} in order");
+                members.Add(($"float4 {array.Name}[{array.Length}];", comment));
+                i += array.Length - 1;
+            }
+            var s = new StringBuilder();
+            s.Append("// ").Append(DoNotEdit).Append(t.FullName).Append(": do not edit.\n");
+            s.Append("// One ").Append(t.Name).Append(": ").Append(fields.Count).Append(" float4, ").Append(16 * fields.Count).Append(" bytes.\n");
+            s.Append("#ifndef ").Append(guard).Append('\n').Append("#define ").Append(guard).Append('\n');
+            s.Append("struct ").Append(t.Name).Append("\n{\n");
+            int width = members.Max(m => m.decl.Length);
+            foreach (var (decl, comment) in members)
+                s.Append("    ").Append(comment == null ? decl : decl.PadRight(width + 2) + "// " + comment).Append('\n');
+            s.Append("};\n#endif // ").Append(guard).Append('\n');
+            return s.ToString();
+        }
+
+        static string Guard(GenerateHlslAttribute a) => System.IO.Path.GetFileName(a.HlslPath).Replace('.', '_').ToUpperInvariant();
+
         static string CSharp(Type t, List<FieldInfo> fields)
         {
             var s = new StringBuilder();
-            s.Append("// ").Append(DoNotEdit).Append(t.Name).Append(": do not edit.\n");
+            s.Append("// ").Append(DoNotEdit).Append(t.FullName).Append(": do not edit.\n");
             s.Append("namespace ").Append(t.Namespace).Append("\n{\n");
             s.Append("    partial struct ").Append(t.Name).Append("\n    {\n");
             s.Append("        /// <summary>The float4 fields, each a constant of the cbuffer.</summary>\n");

@@ -19,11 +19,8 @@ cbuffer RigCamera : register(b1)
     float4 _RigLightDirection;
 };
 
-// The package's patch record (Shaders/Terrain/TerrainInputs.hlsl): 20 float4, stride 320.
-struct GregoryPatchRecord
-{
-    float4 points[20];
-};
+// The package's patch record (Core's GregoryPatchRecord, generated): 20 float4, stride 320.
+#include "../../../Shaders/Terrain/GregoryPatchRecord.cs.hlsl"
 StructuredBuffer<GregoryPatchRecord> _ControlPoints : register(t0);
 // Float4 i of the control points read as one array (the tests fill it float4 by float4).
 float4 ControlPointFloat4(uint i) { return _ControlPoints[i / 20u].points[i % 20u]; }
