@@ -210,8 +210,8 @@ namespace GregoryTerrain.Rig.Tests
                 "TerrainParams.PropertyNames vs the cbuffer's member order");
         }
 
-        /// <summary>The shader constant a field mirrors: rangeOrigin is _RangeOrigin.</summary>
-        static string ShaderName(FieldInfo f) => "_" + char.ToUpperInvariant(f.Name[0]) + f.Name.Substring(1);
+        /// <summary>The shader constant a field declares: rangeOrigin is _RangeOrigin (the generator's rule).</summary>
+        static string ShaderName(FieldInfo f) => ContractGenerator.ShaderName(f);
 
         static List<FieldInfo> InstanceFields() =>
             typeof(TerrainParams).GetFields(BindingFlags.Instance | BindingFlags.Public | BindingFlags.NonPublic)
