@@ -7,8 +7,8 @@ namespace GregoryTerrain
     /// Every name the package's C# shares with its shaders, written once: material and compute
     /// properties (looked up once with Shader.PropertyToID, never a string per frame), buffers,
     /// keywords and kernels. The TerrainParams constants are named by Core's
-    /// <see cref="TerrainParams.PropertyNames"/>, the mirror of the HLSL cbuffer; everything else is
-    /// named here. The HLSL declares each name once (Shaders/Terrain/TerrainInputs.hlsl, the compute
+    /// <see cref="TerrainParams.PropertyNames"/>, generated with the HLSL cbuffer's members from the
+    /// struct's one declaration (gt generate); everything else is named here. The HLSL declares each name once (Shaders/Terrain/TerrainInputs.hlsl, the compute
     /// files, the adapters' object matrices). Tools~/RigTests/ShaderContractTests checks both ways
     /// that this list and the shaders' declarations are the same names, and that no other Runtime or
     /// Editor file spells a shader name.
@@ -51,11 +51,8 @@ namespace GregoryTerrain
 
         // ---- snow (SnowSimulation.compute, SnowField.compute, TerrainInputs.hlsl's GT_SNOW part) -----
 
-        public static readonly int SnowGrid = Shader.PropertyToID("_SnowGrid");
-        public static readonly int SnowFall = Shader.PropertyToID("_SnowFall");
-        public static readonly int SnowCatch = Shader.PropertyToID("_SnowCatch");
-        public static readonly int SnowEdge = Shader.PropertyToID("_SnowEdge");
-        public static readonly int SnowStep = Shader.PropertyToID("_SnowStep");
+        /// <summary><c>SnowParams[k]</c> is the ID of SnowParams float4 k (cbuffer order; Core's <see cref="GregoryTerrain.SnowParams.PropertyNames"/>, generated).</summary>
+        public static readonly int[] SnowParams = Array.ConvertAll(GregoryTerrain.SnowParams.PropertyNames, Shader.PropertyToID);
         public static readonly int SnowField = Shader.PropertyToID("_SnowField");
         public static readonly int SnowExposure = Shader.PropertyToID("_SnowExposure");
         public static readonly int SnowDepth = Shader.PropertyToID("_SnowDepth");

@@ -32,7 +32,6 @@ namespace GregoryTerrain
         [Tooltip("Longest simulated step (s): a long frame is not one huge step.")]
         [SerializeField, Min(0.001f)] float maxStep = 0.1f;
 
-        readonly float[] _params = new float[SnowSettings.ParamsFloat4Count * 4];   // packed each step, no allocation
 
         // What the buffers and kernels use: `settings` (which the Inspector writes) once validated.
         SnowSettings? _applied;
@@ -224,8 +223,7 @@ namespace GregoryTerrain
             GraphicsBuffer field = CurrentField();
             if (field == null) return;  // no terrain field yet: nothing to snow on
             SnowSettings applied = Applied;
-            applied.PackParams(dt, _params);
-            SetParams(_params);
+            SetParams(applied.Params(dt));
             int groups = applied.resolution / 8;  // R is a power of two >= 64
             if (NeedsExposureUpdate)
             {
@@ -303,13 +301,13 @@ namespace GregoryTerrain
             return true;
         }
 
-        void SetParams(float[] p)
+        void SetParams(in SnowParams p)
         {
-            simulation.SetVector(ShaderIds.SnowGrid, new Vector4(p[0], p[1], p[2], p[3]));
-            simulation.SetVector(ShaderIds.SnowFall, new Vector4(p[4], p[5], p[6], p[7]));
-            simulation.SetVector(ShaderIds.SnowCatch, new Vector4(p[8], p[9], p[10], p[11]));
-            simulation.SetVector(ShaderIds.SnowEdge, new Vector4(p[12], p[13], p[14], p[15]));
-            simulation.SetVector(ShaderIds.SnowStep, new Vector4(p[16], p[17], p[18], p[19]));
+            for (int k = 0; k < SnowParams.Float4Count; k++)
+            {
+                Float4 v = p[k];
+                simulation.SetVector(ShaderIds.SnowParams[k], new Vector4(v.x, v.y, v.z, v.w));
+            }
         }
 
         void Allocate()

@@ -36,33 +36,21 @@
     #endif
 #endif
 
-// One record per patch, 320 bytes: the 20 control points in the slot order of GregoryPatch.hlsl,
-// xyz = P - R_p, w of points 0..2 = R_p (the reference point), w of the others 0. Mirror of Core's
-// blittable GregoryPatchRecord (ShaderContractTests compares the compiled offsets and stride).
-struct GregoryPatchRecord
-{
-    float4 points[20];
-};
+// One record per patch, 320 bytes: Core's GregoryPatchRecord is its one declaration (gt generate
+// writes the struct; ShaderContractTests compares the compiled offsets and stride).
+#include "GregoryPatchRecord.cs.hlsl"
 StructuredBuffer<GregoryPatchRecord> _ControlPoints GT_REGISTER(t0);
 // (a, b, e, f) per patch: the patch covers [a, e] x [b, f] of the unit square.
 StructuredBuffer<float4> _Regions GT_REGISTER(t1);
 // xLines[0..n] then yLines[0..m], each strictly increasing from 0 to 1.
 StructuredBuffer<float> _GridLines GT_REGISTER(t2);
 
-// 10 float4, 160 bytes, in exactly this order: the mirror of Core's blittable TerrainParams struct
-// (same order, field rangeOrigin = _RangeOrigin; ShaderContractTests compares the compiled offsets).
-// Named float4s, not one struct member: Unity sets them by name (internals.md, "One contract to the GPU").
+// Core's TerrainParams (10 float4, 160 bytes) is the one declaration of these constants: its fields,
+// in order, are the generated members below (gt generate; ShaderContractTests compares the compiled
+// offsets). Named float4s, not one struct member: Unity sets them by name (internals.md, "One
+// contract to the GPU"). The variants' own constants follow, always last.
 GT_CBUFFER_START(TerrainParams)
-    float4 _Range;         // (c, d, g, h) relative to the range origin        per frame
-    float4 _RangeOrigin;   // (O.x hi, O.y hi, O.x lo, O.y lo)                  on re-snap
-    float4 _GridSize;      // (n columns, m rows, 0, 0)                         once
-    float4 _Tess;          // (tiles M, maxFactor, targetPixelError, uniform)   on change
-    float4 _Noise;         // (amplitude, frequency, alpha, beta)               on change
-    float4 _NoiseOctaves;  // (octaves N, verticesAcross override or 0, LOD segment pixels or 0, 0)
-    float4 _HeightColor;   // (gamma, colorNoiseAmplitude, colorNoiseFrequency, 0)
-    float4 _ColorLow;      // C of eq. 15, linear RGB
-    float4 _ColorHigh;     // B of eq. 15, linear RGB
-    float4 _TileLattice;   // 0, or the range the tiles were anchored at (TileLattice.hlsl)  on anchoring
+#include "TerrainParams.cs.hlsl"
 #if defined(GT_SNOW)
     float4 _SnowMapSize;   // (R, 1/R, depthCap, 0): snow variant only, always last   on change
 #endif

@@ -51,7 +51,7 @@ namespace GregoryTerrain.Tests
             var field = SnowTestTerrain.Ridge(r, 0.1f, 0.1f);  // faces of slope 1
             var s = SnowSettings.Default;
             s.resolution = r; s.wind = new Float2(2f, 0f); s.fallSpeed = 1f;  // fall line slope 0.5 < 1
-            float[] p = s.PackParams(0f);
+            float[] p = s.Params(0f).Pack();
             var grid = new Float4(p[0], p[1], p[2], p[3]);
             var fall = new Float4(p[4], p[5], p[6], p[7]);
             int windward = SnowTestTerrain.Column(r, 0.45), lee = SnowTestTerrain.Column(r, 0.55);
@@ -65,7 +65,7 @@ namespace GregoryTerrain.Tests
             Assert.That(SnowExposure.Evaluate(field.Data, 3, 64, grid, fall, s.exposureSoftness), Is.EqualTo(1f));
             // Wind from the other side swaps the roles.
             s.wind = new Float2(-2f, 0f);
-            p = s.PackParams(0f);
+            p = s.Params(0f).Pack();
             fall = new Float4(p[4], p[5], p[6], p[7]);
             Assert.That(SnowExposure.Evaluate(field.Data, windward, 64, grid, fall, s.exposureSoftness), Is.EqualTo(0f));
             Assert.That(SnowExposure.Evaluate(field.Data, lee, 64, grid, fall, s.exposureSoftness), Is.EqualTo(1f));
@@ -80,7 +80,7 @@ namespace GregoryTerrain.Tests
             s.resolution = r; s.wind = new Float2(0f, 0f);
             Float4 fall = s.FallLine;
             Assert.That(fall, Is.EqualTo(new Float4(0f, 0f, 0f, 1f)));
-            float[] p = s.PackParams(0f);
+            float[] p = s.Params(0f).Pack();
             var grid = new Float4(p[0], p[1], p[2], p[3]);
             for (int i = 0; i < r; i++)
                 Assert.That(SnowExposure.Evaluate(field.Data, i, 10, grid, fall, s.exposureSoftness), Is.EqualTo(1f));

@@ -184,10 +184,10 @@ namespace GregoryTerrain.Rig.Tests
         [Test]
         public void AMisspeltNameFailsThePropertyComparison()
         {
-            var named = NamesInShaderIds(ShaderIdsSource().Replace("\"_SnowFall\"", "\"_SnowFal\""));
+            var named = NamesInShaderIds(ShaderIdsSource().Replace("\"_SnowMapSize\"", "\"_SnowMapSiz\""));
             var declared = DeclaredProperties(ShaderFiles());
             var e = Assert.Throws<AssertionException>(() => CompareProperties(named.properties, declared));
-            Assert.That(e.Message, Does.Contain("_SnowFal").And.Contain("_SnowFall"));
+            Assert.That(e.Message, Does.Contain("_SnowMapSiz").And.Contain("_SnowMapSize"));
         }
 
         /// <summary>
@@ -210,8 +210,8 @@ namespace GregoryTerrain.Rig.Tests
                 "TerrainParams.PropertyNames vs the cbuffer's member order");
         }
 
-        /// <summary>The shader constant a field mirrors: rangeOrigin is _RangeOrigin.</summary>
-        static string ShaderName(FieldInfo f) => "_" + char.ToUpperInvariant(f.Name[0]) + f.Name.Substring(1);
+        /// <summary>The shader constant a field declares: rangeOrigin is _RangeOrigin (the generator's rule).</summary>
+        static string ShaderName(FieldInfo f) => ContractGenerator.ShaderName(f);
 
         static List<FieldInfo> InstanceFields() =>
             typeof(TerrainParams).GetFields(BindingFlags.Instance | BindingFlags.Public | BindingFlags.NonPublic)
@@ -221,26 +221,45 @@ namespace GregoryTerrain.Rig.Tests
         /// Compiles SnowField.compute (a product kernel that includes TerrainInputs.hlsl) with glslang's
         /// HLSL front end and reads the TerrainParams block's members and offsets back from the SPIR-V.
         /// </summary>
-        static List<(string name, int offset)> CompiledTerrainParams(bool snow, out int blockSize)
+        static List<(string name, int offset)> CompiledTerrainParams(bool snow, out int blockSize) =>
+            CompiledCbuffer(PackageRoot.Combine("Shaders", "Snow", "SnowField.compute"), "SnowFieldKernel", "TerrainParams", snow ? "-DGT_SNOW" : null, out blockSize);
+
+        /// <summary>A compute file's cbuffer <paramref name="block"/> as glslang lays it out: members and byte offsets, from the SPIR-V.</summary>
+        static List<(string name, int offset)> CompiledCbuffer(string file, string kernel, string block, string define, out int blockSize)
         {
             string dir = Path.Combine(Path.GetTempPath(), "gt-contract-" + Guid.NewGuid().ToString("N"));
             Directory.CreateDirectory(dir);
             try
             {
-                string spv = Path.Combine(dir, "field.spv");
-                var args = new List<string> { "-D", "-V", "-S", "comp", "-e", "SnowFieldKernel", "-o", spv };
-                if (snow) args.Add("-DGT_SNOW");
-                args.Add(PackageRoot.Combine("Shaders", "Snow", "SnowField.compute"));
+                string spv = Path.Combine(dir, "kernel.spv");
+                var args = new List<string> { "-D", "-V", "-S", "comp", "-e", kernel, "-o", spv };
+                if (define != null) args.Add(define);
+                args.Add(file);
                 ComputeRunner.Run("glslangValidator", args.ToArray());
                 using var doc = JsonDocument.Parse(ComputeRunner.Run("spirv-cross", spv, "--reflect"));
                 JsonElement ubo = doc.RootElement.GetProperty("ubos").EnumerateArray()
-                    .Single(u => u.GetProperty("name").GetString() == "TerrainParams");
+                    .Single(u => u.GetProperty("name").GetString() == block);
                 blockSize = ubo.GetProperty("block_size").GetInt32();
                 JsonElement type = doc.RootElement.GetProperty("types").GetProperty(ubo.GetProperty("type").GetString());
                 return type.GetProperty("members").EnumerateArray()
                     .Select(m => (m.GetProperty("name").GetString(), m.GetProperty("offset").GetInt32())).ToList();
             }
             finally { Directory.Delete(dir, true); }
+        }
+
+        /// <summary>
+        /// Core's <see cref="SnowParams"/> against SnowSimulation.compute's cbuffer as compiled: each
+        /// field (as its shader name) at its C# offset, in order, 80 bytes in all.
+        /// </summary>
+        [Test]
+        public void SnowParamsHasTheLayoutOfTheCompiledCbuffer()
+        {
+            var compiled = CompiledCbuffer(PackageRoot.Combine("Shaders", "Snow", "SnowSimulation.compute"), "SnowAccumulateKernel", "SnowParams", null, out int blockSize);
+            var expected = typeof(SnowParams).GetFields(BindingFlags.Instance | BindingFlags.Public | BindingFlags.NonPublic)
+                .Select(f => (ShaderName(f), (int)Marshal.OffsetOf<SnowParams>(f.Name))).OrderBy(m => m.Item2).ToList();
+            Assert.That(compiled, Is.EqualTo(expected), "SnowParams: (shader name, byte offset) in C# vs the compiled cbuffer");
+            Assert.That(expected.Select(m => m.Item1), Is.EqualTo(SnowParams.PropertyNames));
+            Assert.That(blockSize, Is.EqualTo(Marshal.SizeOf<SnowParams>()).And.EqualTo(80));
         }
 
         /// <summary>
@@ -265,10 +284,10 @@ namespace GregoryTerrain.Rig.Tests
             try
             {
                 CopyTree(PackageRoot.Combine("Shaders"), copy);
-                string inputs = Path.Combine(copy, "Terrain", "TerrainInputs.hlsl");
-                string text = File.ReadAllText(inputs);
+                string record = Path.Combine(copy, "Terrain", "GregoryPatchRecord.cs.hlsl");   // generated from Core's struct
+                string text = File.ReadAllText(record);
                 Assert.That(text, Does.Contain("float4 points[20];"));
-                File.WriteAllText(inputs, text.Replace("float4 points[20];", "float4 points[19];"));
+                File.WriteAllText(record, text.Replace("float4 points[20];", "float4 points[19];"));
                 CompiledRecord compiled = CompiledPatchRecord(copy);
                 Assert.That(compiled.recordStride, Is.EqualTo(304));
                 var e = Assert.Throws<AssertionException>(() => ComparePatchRecord(compiled));
@@ -362,10 +381,10 @@ namespace GregoryTerrain.Rig.Tests
                 $"named although the package never sets them: [{string.Join(", ", exemptButNamed)}]");
         }
 
-        /// <summary>The identifier-like string literals of ShaderIds.cs by kind, plus Core's TerrainParams names.</summary>
+        /// <summary>The identifier-like string literals of ShaderIds.cs by kind, plus the names Core's contracts generate (TerrainParams, SnowParams).</summary>
         static (SortedSet<string> properties, SortedSet<string> keywords, SortedSet<string> kernels) NamesInShaderIds(string source)
         {
-            var properties = new SortedSet<string>(TerrainParams.PropertyNames, StringComparer.Ordinal);
+            var properties = new SortedSet<string>(TerrainParams.PropertyNames.Concat(SnowParams.PropertyNames), StringComparer.Ordinal);
             var keywords = new SortedSet<string>(StringComparer.Ordinal);
             var kernels = new SortedSet<string>(StringComparer.Ordinal);
             foreach (string line in source.Split('\n').Select(StripComment))

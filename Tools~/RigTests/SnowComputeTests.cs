@@ -77,7 +77,7 @@ namespace GregoryTerrain.Rig.Tests
                         foreach (var r in list.EnumerateArray())
                         {
                             found[r.GetProperty("name").GetString()] = r.GetProperty("binding").GetInt32();
-                            if (kind == "ubos") Assert.That(r.GetProperty("block_size").GetInt32(), Is.EqualTo(16 * SnowSettings.ParamsFloat4Count));
+                            if (kind == "ubos") Assert.That(r.GetProperty("block_size").GetInt32(), Is.EqualTo(16 * SnowParams.Float4Count));
                         }
                 foreach (var kv in found)
                     Assert.That(kv.Value, Is.EqualTo(expected[kv.Key]), k + " " + kv.Key);
@@ -115,7 +115,7 @@ namespace GregoryTerrain.Rig.Tests
             string fieldFile = Path.Combine(_dir, "field.bin"), paramsFile = Path.Combine(_dir, "params.bin");
             string exposureFile = Path.Combine(_dir, "exposure.bin"), depthFile = Path.Combine(_dir, "depth.bin");
             ReadbackRun.WriteFloats(fieldFile, field.Data);
-            ReadbackRun.WriteFloats(paramsFile, s.PackParams(dt));
+            ReadbackRun.WriteFloats(paramsFile, s.Params(dt).Pack());
             int groups = r / 8, bytes = 4 * r * r;
             string runner = Runner();
             string o1 = Run(runner, "--spv", Spv("SnowExposureKernel"), "--entry", "SnowExposureKernel", "--device", Lavapipe,

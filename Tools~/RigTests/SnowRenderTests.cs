@@ -345,7 +345,7 @@ namespace GregoryTerrain.Rig.Tests
             s.fallSpeed = 1f; s.wind = new Float2(-sp[4] * cosF / sinF, -sp[5] * cosF / sinF);
             s.scale = sp[11]; s.edgeStrength = sp[12]; s.edgeWidth = sp[13]; s.exposureSoftness = sp[14];
             s.depthCap = sp[17]; s.meltRate = sp[18];
-            Assert.That(s.PackParams(sp[16]), Is.EqualTo(sp).Within(1e-6f), "the scene's SnowParams round-trip");
+            Assert.That(s.Params(sp[16]).Pack(), Is.EqualTo(sp).Within(1e-6f), "the scene's SnowParams round-trip");
             return (dir, TerrainInputs.Create(g, p), s, 40, sp[16]);
         }
 

@@ -65,7 +65,7 @@ namespace GregoryTerrain.Rig.Tests
         public void SettingsCheckRejectsTheUnvalidatedReads()
         {
             string old = "void Update() { if (_depth == null) return; StepSimulation(dt); }\n" +
-                         "public void StepSimulation(float dt) { settings.PackParams(dt, _params); int groups = settings.resolution / 8; }\n" +
+                         "public void StepSimulation(float dt) { settings.Params(dt); int groups = settings.resolution / 8; }\n" +
                          "public Vector4 MapSize => new Vector4(settings.resolution, 1f / settings.resolution, settings.depthCap, 0f);\n" +
                          "void OnEnable() { try { settings.Validate(); } catch (ArgumentException e) { } }";
             Assert.That(UnvalidatedSettingsUses(old), Is.EqualTo(new[]

@@ -114,38 +114,23 @@ namespace GregoryTerrain
         static ArgumentException Bad(string name, string field, object value, string rule) =>
             new ArgumentException(FormattableString.Invariant($"{name}.{field} ({value}) {rule}"), name + "." + field);
 
-        /// <summary>Number of float4 in the <c>SnowParams</c> cbuffer.</summary>
-        internal const int ParamsFloat4Count = 5;
-
         /// <summary>
-        /// The <c>SnowParams</c> cbuffer (internals.md, "Snow"), 5 float4, this order:
-        /// <c>_SnowGrid = (R, 1/R, rayLength, raySteps)</c>, <c>_SnowFall = FallLine</c>,
-        /// <c>_SnowCatch = (Gn.xyz, scale)</c>, <c>_SnowEdge = (edgeStrength, edgeWidth, exposureSoftness, 0)</c>,
-        /// <c>_SnowStep = (dt, depthCap, meltRate, 0)</c>.
+        /// The <see cref="SnowParams"/> constants of a step of <paramref name="dt"/> seconds (0 for the
+        /// exposure alone). Validates the settings and dt, naming the field and value; allocates nothing.
         /// </summary>
-        internal float[] PackParams(float dt)
-        {
-            var p = new float[ParamsFloat4Count * 4];
-            PackParams(dt, p);
-            return p;
-        }
-
-        /// <summary>
-        /// <see cref="PackParams(float)"/> into <paramref name="p"/> (at least 20 floats), allocating
-        /// nothing: the simulator packs every step.
-        /// </summary>
-        internal void PackParams(float dt, float[] p)
+        internal SnowParams Params(float dt)
         {
             Validate();
             if (!GMath.isfinite(dt) || dt < 0f) throw new ArgumentException(FormattableString.Invariant($"dt ({dt:R}) must be finite and >= 0"), nameof(dt));
-            if (p == null || p.Length < ParamsFloat4Count * 4) throw new ArgumentException($"p must hold {ParamsFloat4Count * 4} floats", nameof(p));
-            Float4 fall = FallLine;
             Float3 up = Up;
-            p[0] = resolution; p[1] = 1f / resolution; p[2] = rayLength; p[3] = raySteps;
-            p[4] = fall.x; p[5] = fall.y; p[6] = fall.z; p[7] = fall.w;
-            p[8] = up.x; p[9] = up.y; p[10] = up.z; p[11] = scale;
-            p[12] = edgeStrength; p[13] = edgeWidth; p[14] = exposureSoftness; p[15] = 0f;
-            p[16] = dt; p[17] = depthCap; p[18] = meltRate; p[19] = 0f;
+            return new SnowParams
+            {
+                snowGrid = new Float4(resolution, 1f / resolution, rayLength, raySteps),
+                snowFall = FallLine,
+                snowCatch = new Float4(up.x, up.y, up.z, scale),
+                snowEdge = new Float4(edgeStrength, edgeWidth, exposureSoftness, 0f),
+                snowStep = new Float4(dt, depthCap, meltRate, 0f),
+            };
         }
 
         /// <inheritdoc/>

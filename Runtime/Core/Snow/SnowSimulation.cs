@@ -60,13 +60,11 @@ namespace GregoryTerrain
         public void UpdateExposure(SnowField field)
         {
             CheckField(field);
-            float[] p = _settings.PackParams(0f);
-            var grid = new Float4(p[0], p[1], p[2], p[3]);
-            var fall = new Float4(p[4], p[5], p[6], p[7]);
+            SnowParams p = _settings.Params(0f);
             int r = Resolution;
             for (int j = 0; j < r; j++)
                 for (int i = 0; i < r; i++)
-                    Exposure[j * r + i] = SnowExposure.Evaluate(field.Data, i, j, grid, fall, p[14]);
+                    Exposure[j * r + i] = SnowExposure.Evaluate(field.Data, i, j, p.snowGrid, p.snowFall, p.ExposureSoftness);
             _exposureValid = true;
             _exposureSettings = _settings;
             _exposureField = field;
@@ -78,18 +76,15 @@ namespace GregoryTerrain
         public void Step(SnowField field, float dt)
         {
             CheckField(field);
-            float[] p = _settings.PackParams(dt);  // validates dt before anything changes
+            SnowParams p = _settings.Params(dt);  // validates dt before anything changes
             if (NeedsExposureUpdate(field)) UpdateExposure(field);
-            var grid = new Float4(p[0], p[1], p[2], p[3]);
-            var catchParams = new Float4(p[8], p[9], p[10], p[11]);
-            var edge = new Float4(p[12], p[13], p[14], p[15]);
             int r = Resolution;
             for (int j = 0; j < r; j++)
                 for (int i = 0; i < r; i++)
                 {
                     int k = j * r + i;
-                    float rate = SnowAccumulation.RateAt(field.Data, i, j, Exposure[k], grid, catchParams, edge);
-                    Depth[k] = SnowAccumulation.Step(Depth[k], rate, dt, p[17], p[18]);
+                    float rate = SnowAccumulation.RateAt(field.Data, i, j, Exposure[k], p.snowGrid, p.snowCatch, p.snowEdge);
+                    Depth[k] = SnowAccumulation.Step(Depth[k], rate, dt, p.DepthCap, p.MeltRate);
                 }
         }
 

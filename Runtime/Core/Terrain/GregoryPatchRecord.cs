@@ -5,7 +5,7 @@ namespace GregoryTerrain
 {
     /// <summary>
     /// One patch of <c>_ControlPoints</c> as the GPU reads it: the mirror of the HLSL
-    /// <c>struct GregoryPatchRecord { float4 points[20]; }</c> (Shaders/Terrain/TerrainInputs.hlsl),
+    /// <c>struct GregoryPatchRecord { float4 points[20]; }</c> (generated: Shaders/Terrain/GregoryPatchRecord.cs.hlsl),
     /// 320 bytes, blittable, <c>point</c>k at byte 16 k (the array's stride). Point k is slot k of
     /// <see cref="GregoryPatch"/>: xyz = <c>P_k - R_p</c>, the point relative to the patch's reference
     /// point; w of points 0, 1, 2 = <c>R_p</c>.x, .y, .z, w of the others 0 (<see cref="GpuLayout"/>).
@@ -14,6 +14,7 @@ namespace GregoryTerrain
     /// array would not be blittable. The indexer is the HLSL's <c>points[k]</c>.</para>
     /// </summary>
     [StructLayout(LayoutKind.Sequential)]
+    [GenerateHlsl("Shaders/Terrain/GregoryPatchRecord.cs.hlsl", Record = true)]
     internal struct GregoryPatchRecord
     {
         /// <summary>Points per record: <see cref="GregoryPatch.SlotCount"/>, the HLSL array's length.</summary>
@@ -22,6 +23,8 @@ namespace GregoryTerrain
         public const int Stride = PointCount * 16;
 
         // Instance fields only below, in slot order: the layout is the declaration order.
+        [HlslArray("points", PointCount)]
+        [HlslComment("the 20 control points in the slot order of GregoryPatch.hlsl: xyz = P - R_p, w of points 0..2 = R_p, of the others 0")]
         public Float4 point0;
         public Float4 point1;
         public Float4 point2;

@@ -5,30 +5,41 @@ namespace GregoryTerrain
 {
     /// <summary>
     /// The <c>TerrainParams</c> constants every stage reads (internals.md, "One contract to the
-    /// GPU"): ten float4, 160 bytes, blittable, its fields in the order of the HLSL cbuffer
-    /// (Shaders/Terrain/TerrainInputs.hlsl), field k named <see cref="PropertyNames"/>[k] there
-    /// (<c>rangeOrigin</c> is <c>_RangeOrigin</c>). The rig uploads <see cref="Pack"/> as one block;
+    /// GPU"): ten float4, 160 bytes, blittable, declared here once. <c>gt generate</c> writes the HLSL
+    /// members (Shaders/Terrain/TerrainParams.cs.hlsl, inside TerrainInputs.hlsl's cbuffer) and
+    /// TerrainParams.Generated.cs (<see cref="PropertyNames"/>, <see cref="Float4Count"/>) from
+    /// these fields, in their order. The rig uploads <see cref="Pack"/> as one block;
     /// Unity sets each float4 by name (the SRP Batcher wants named material constants). Only
     /// <see cref="range"/> changes per frame. Tools~/RigTests/ShaderContractTests compares this
     /// layout with the cbuffer the shader compiler lays out.
     /// </summary>
     [StructLayout(LayoutKind.Sequential)]
-    internal struct TerrainParams
+    [GenerateHlsl("Shaders/Terrain/TerrainParams.cs.hlsl", "Runtime/Core/Terrain/TerrainParams.Generated.cs")]
+    internal partial struct TerrainParams
     {
-        public const int Float4Count = 10;
         public const int Floats = Float4Count * 4;
         /// <summary>Size of the block: the cbuffer's size without the snow variant's <c>_SnowMapSize</c>.</summary>
         public const int Bytes = Floats * sizeof(float);
 
-        /// <summary>The shader names of the fields, in field (and cbuffer) order; <see cref="Pack"/> and the shaders agree on it.</summary>
-        public static readonly string[] PropertyNames =
-        {
-            "_Range", "_RangeOrigin", "_GridSize", "_Tess", "_Noise", "_NoiseOctaves", "_HeightColor", "_ColorLow", "_ColorHigh",
-            "_TileLattice",
-        };
-
         // Instance fields only below, in cbuffer order: the layout is the declaration order.
-        public Float4 range, rangeOrigin, gridSize, tess, noise, noiseOctaves, heightColor, colorLow, colorHigh;
+        [HlslComment("(c, d, g, h) relative to the range origin        per frame")]
+        public Float4 range;
+        [HlslComment("(O.x hi, O.y hi, O.x lo, O.y lo)                  on re-snap")]
+        public Float4 rangeOrigin;
+        [HlslComment("(n columns, m rows, 0, 0)                         once")]
+        public Float4 gridSize;
+        [HlslComment("(tiles M, maxFactor, targetPixelError, uniform)   on change")]
+        public Float4 tess;
+        [HlslComment("(amplitude, frequency, alpha, beta)               on change")]
+        public Float4 noise;
+        [HlslComment("(octaves N, verticesAcross override or 0, LOD segment pixels or 0, 0)")]
+        public Float4 noiseOctaves;
+        [HlslComment("(gamma, colorNoiseAmplitude, colorNoiseFrequency, 0)")]
+        public Float4 heightColor;
+        [HlslComment("C of eq. 15, linear RGB")]
+        public Float4 colorLow;
+        [HlslComment("B of eq. 15, linear RGB")]
+        public Float4 colorHigh;
 
         /// <summary>
         /// <c>_TileLattice</c>: 0 (the default) lays the M x M tiles over the range, as the paper does;
@@ -37,6 +48,7 @@ namespace GregoryTerrain
         /// lattice of that range's tiles, clipped to the current range, so a pan moves only the
         /// clipped ones. Set with <see cref="WithTileLattice"/>.
         /// </summary>
+        [HlslComment("0, or the range the tiles were anchored at (TileLattice.hlsl)  on anchoring")]
         public Float4 tileLattice;
 
         /// <summary>
@@ -82,12 +94,7 @@ namespace GregoryTerrain
         }
 
         /// <summary>The float4 at cbuffer position <paramref name="index"/> (see <see cref="PropertyNames"/>).</summary>
-        public Float4 this[int index] => index switch
-        {
-            0 => range, 1 => rangeOrigin, 2 => gridSize, 3 => tess, 4 => noise,
-            5 => noiseOctaves, 6 => heightColor, 7 => colorLow, 8 => colorHigh, 9 => tileLattice,
-            _ => throw new ArgumentOutOfRangeException(nameof(index), index, "TerrainParams has 10 float4"),
-        };
+        public Float4 this[int index] => Float4Block.At(ref this, index, Float4Count);
 
         /// <summary>Whether the tiles are anchored to the terrain (a nonzero <see cref="tileLattice"/>).</summary>
         public bool TilesAnchored => TileLattice.IsAnchored(tileLattice);
@@ -107,10 +114,6 @@ namespace GregoryTerrain
         }
 
         /// <summary>The 40 floats of the cbuffer, in order: the struct's own bytes, so Pack cannot disagree with the layout.</summary>
-        public float[] Pack()
-        {
-            TerrainParams copy = this;
-            return MemoryMarshal.Cast<TerrainParams, float>(MemoryMarshal.CreateReadOnlySpan(ref copy, 1)).ToArray();
-        }
+        public float[] Pack() => Float4Block.Pack(this);
     }
 }

@@ -10,7 +10,7 @@ namespace GregoryTerrain.Rig
     ///   grid.json                  a ridge across the wind (fitted Gregory grid), unless --grid is given
     ///   scene/*.f32                the harness's buffers: params, camera (a view of both faces), grid
     ///   field_params_R.f32         TerrainParams of SnowFieldKernel at R (SnowFieldTerrain.ParamsFor)
-    ///   snow_params_R.f32          SnowParams of the simulation at R (SnowSettings.PackParams(dt))
+    ///   snow_params_R.f32          SnowParams of the simulation at R (SnowSettings.Params(dt).Pack())
     ///   snow_size_R.f32            _SnowMapSize at R (the harness's --snow-params)
     ///   cpu_depth_R.f32            with --cpu: the Core reference's depth after the run (R*R floats)
     ///   run.txt                    "resolutions ...", "steps N", "dt X", "keywords ..." for the script
@@ -62,7 +62,7 @@ namespace GregoryTerrain.Rig
                 snow.resolution = r;
                 snow.Validate();
                 BufferFiles.Write(Path.Combine(dir, $"field_params_{r}.f32"), SnowFieldTerrain.ParamsFor(p, r).Pack());
-                BufferFiles.Write(Path.Combine(dir, $"snow_params_{r}.f32"), snow.PackParams(dt));
+                BufferFiles.Write(Path.Combine(dir, $"snow_params_{r}.f32"), snow.Params(dt).Pack());
                 Float4 size = SnowMap.PackMapSize(r, snow.depthCap);
                 BufferFiles.Write(Path.Combine(dir, $"snow_size_{r}.f32"), new[] { size.x, size.y, size.z, size.w });
                 if (cpu)

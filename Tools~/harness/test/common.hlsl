@@ -4,17 +4,10 @@
 // The harness self-test uses these shaders to prove the harness (bindings, split draws,
 // readback, stats); they are not the package's shaders.
 
+// The package's TerrainParams block: its generated members (Core's TerrainParams declares them).
 cbuffer TerrainParams : register(b0)
 {
-    float4 _Range;        // (c, d, g, h) relative to the origin
-    float4 _RangeOrigin;
-    float4 _GridSize;
-    float4 _Tess;         // (tiles M, maxFactor, targetPixelError, uniformFactor)
-    float4 _Noise;
-    float4 _NoiseOctaves;
-    float4 _HeightColor;
-    float4 _ColorLow;
-    float4 _ColorHigh;
+#include "../../../Shaders/Terrain/TerrainParams.cs.hlsl"
 };
 
 cbuffer RigCamera : register(b1)
@@ -26,11 +19,8 @@ cbuffer RigCamera : register(b1)
     float4 _RigLightDirection;
 };
 
-// The package's patch record (Shaders/Terrain/TerrainInputs.hlsl): 20 float4, stride 320.
-struct GregoryPatchRecord
-{
-    float4 points[20];
-};
+// The package's patch record (Core's GregoryPatchRecord, generated): 20 float4, stride 320.
+#include "../../../Shaders/Terrain/GregoryPatchRecord.cs.hlsl"
 StructuredBuffer<GregoryPatchRecord> _ControlPoints : register(t0);
 // Float4 i of the control points read as one array (the tests fill it float4 by float4).
 float4 ControlPointFloat4(uint i) { return _ControlPoints[i / 20u].points[i % 20u]; }

@@ -1,0 +1,104 @@
+using System;
+using System.Collections.Generic;
+using System.IO;
+using System.Linq;
+using System.Runtime.InteropServices;
+using NUnit.Framework;
+
+namespace GregoryTerrain.Rig.Tests
+{
+    /// <summary>
+    /// The generated side of each GPU contract (gt generate, <see cref="ContractGenerator"/>) is what
+    /// its one declaration in Core gives today: regenerated into a temp folder and compared line by
+    /// line with the committed file. A hand edit or a declaration changed without <c>gt generate</c>
+    /// fails here, naming the file and its first differing line.
+    /// </summary>
+    [TestFixture]
+    public class GeneratedContractTests
+    {
+        [Test]
+        public void EveryGeneratedFileIsCurrent()
+        {
+            var contracts = ContractGenerator.Contracts();
+            Assert.That(contracts, Does.Contain(typeof(TerrainParams)));
+            string temp = Path.Combine(Path.GetTempPath(), "gt-generate-" + Guid.NewGuid().ToString("N"));
+            try
+            {
+                var files = ContractGenerator.Generate(contracts);
+                ContractGenerator.Write(files, temp);
+                var stale = new List<string>();
+                foreach (var f in files)
+                {
+                    string committed = PackageRoot.Combine(f.Path);
+                    if (!File.Exists(committed)) { stale.Add($"{f.Path}: missing"); continue; }
+                    string difference = ContractGenerator.FirstDifference(File.ReadAllText(committed), File.ReadAllText(Path.Combine(temp, f.Path)));
+                    if (difference != null) stale.Add($"{f.Path} is stale: {difference}");
+                }
+                Assert.That(stale, Is.Empty, "run gt generate and commit what it writes");
+                TestContext.Progress.WriteLine($"generated and current: {string.Join(", ", files.Select(f => f.Path))}");
+            }
+            finally
+            {
+                if (Directory.Exists(temp)) Directory.Delete(temp, true);
+            }
+        }
+
+        [Test]
+        public void EachGeneratedFileSaysItIsGeneratedAndIsIncluded()
+        {
+            foreach (var f in ContractGenerator.Generate(ContractGenerator.Contracts()))
+                Assert.That(f.Text.Split('\n')[0], Does.StartWith("// " + ContractGenerator.DoNotEdit), f.Path);
+            Assert.That(File.ReadAllText(PackageRoot.Combine("Shaders", "Terrain", "TerrainInputs.hlsl")),
+                Does.Contain("#include \"TerrainParams.cs.hlsl\""), "the cbuffer holds the generated members");
+        }
+
+        /// <summary>The comparison the staleness test makes, on a hand-edited copy: it names the line and both texts.</summary>
+        [Test]
+        public void AHandEditedLineIsNamed()
+        {
+            string generated = ContractGenerator.Generate(new[] { typeof(TerrainParams) })[0].Text;
+            string edited = generated.Replace("float4 _Tess;", "float4 _Tess2;");
+            int line = Array.FindIndex(generated.Split('\n'), l => l.StartsWith("float4 _Tess;")) + 1;
+            Assert.That(line, Is.GreaterThan(0));
+            Assert.That(ContractGenerator.FirstDifference(generated, generated), Is.Null);
+            Assert.That(ContractGenerator.FirstDifference(edited, generated),
+                Does.StartWith($"line {line}: committed 'float4 _Tess2;").And.Contain("generated 'float4 _Tess;"));
+            Assert.That(ContractGenerator.FirstDifference(generated + "float4 _Extra;\n", generated), Does.Contain("generated end of file"));
+            Assert.That(ContractGenerator.FirstDifference(generated.TrimEnd('\n'), generated), Does.Contain("line ends differ"));
+            Assert.That(ContractGenerator.FirstDifference(generated.Replace("\n", "\r\n"), generated), Does.Contain("and a CR"));
+        }
+
+        [StructLayout(LayoutKind.Sequential)]
+        [GenerateHlsl("Shaders/Bad.cs.hlsl", "Runtime/Core/Bad.Generated.cs")]
+        struct ScalarContract
+        {
+            public Float4 range;
+            public float scale;
+        }
+
+        [Test]
+        public void AFieldThatIsNotAFloat4IsRefusedNamingIt()
+        {
+            var e = Assert.Throws<ArgumentException>(() => ContractGenerator.Generate(new[] { typeof(ScalarContract) }));
+            Assert.That(e.Message, Does.Contain("ScalarContract.scale").And.Contain("Single").And.Contain("_Scale"));
+        }
+
+        [StructLayout(LayoutKind.Sequential)]
+        [GenerateHlsl("Shaders/Bad.cs.hlsl", Record = true)]
+        struct BrokenArrayRecord
+        {
+            [HlslArray("points", 3)] public Float4 point0;
+            public Float4 point1;
+            public Float4 corner;
+        }
+
+        [Test]
+        public void ARecordArrayNeedsItsNumberedFieldsInOrder()
+        {
+            string record = ContractGenerator.Generate(new[] { typeof(GregoryPatchRecord) }).Single().Text;
+            Assert.That(record, Does.Contain("struct GregoryPatchRecord\n{\n    float4 points[20];"));
+            var e = Assert.Throws<ArgumentException>(() => ContractGenerator.Generate(new[] { typeof(BrokenArrayRecord) }));
+            Assert.That(e.Message, Does.Contain("BrokenArrayRecord.point0").And.Contain("point0..point2"));
+        }
+    }
+}
