@@ -18,12 +18,13 @@ namespace GregoryTerrain
         /// <paramref name="maxTiles"/> tiles are evaluated (51 surface points each, on the CPU), an
         /// even sample of them beyond that. Null when there is nothing to estimate: no grid uploaded
         /// yet, invalid settings, the fallback (fixed grids: <see cref="EstimatedTriangleCount"/>),
-        /// or a camera without pixels. With GT_SNOW the snow's culling allowance is left out.
+        /// Horizon levels (each camera's L levels and their seams are not mirrored here: the count
+        /// would be one range's), or a camera without pixels. With GT_SNOW the snow's culling allowance is left out.
         /// </summary>
         public TriangleEstimate? EstimateTrianglesInView(Camera cam, int maxTiles = 256)
         {
             if (cam == null) throw new ArgumentNullException(nameof(cam));
-            if (_uploadedPatchGrid == null || _settingsError != null || _drawFallback) return null;
+            if (_uploadedPatchGrid == null || _settingsError != null || _drawFallback || LevelsOn(_drawFallback)) return null;
             int w = cam.pixelWidth, h = cam.pixelHeight;
             if (w <= 0 || h <= 0) return null;
             if (_estimateGrid != _uploadedPatchGrid)

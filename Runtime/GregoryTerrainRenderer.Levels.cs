@@ -41,12 +41,19 @@ namespace GregoryTerrain
         int LayoutLevels(Camera cam)
         {
             Double3 local = WorldToTerrainObject(cam.transform.position);   // object space: (x, height, y)
-            double metres = WorldUnitsPerObjectUnit.x;                      // world units across the terrain's x
-            if (!(metres > 0.0)) metres = 1.0;
-            int n = LodLevels.FinestExponent(metres, FinestLevelMeters);
-            n = System.Math.Min(n, LodTiles.MaxLevels - 1);
-            return LodLevels.Layout(new Double2(local.x, local.z), n, tiles, _levelRanges);
+            return LodLevels.Layout(new Double2(local.x, local.z), FinestExponent(), tiles, _levelRanges);
         }
+
+        /// <summary>The finest level's exponent for the terrain's width in world units.</summary>
+        int FinestExponent()
+        {
+            double metres = WorldUnitsPerObjectUnit.x;   // world units across the terrain's x
+            if (!(metres > 0.0) || double.IsInfinity(metres)) metres = 1.0;
+            return System.Math.Min(LodLevels.FinestExponent(metres, FinestLevelMeters), LodTiles.MaxLevels - 1);
+        }
+
+        /// <summary>Horizon levels drawn (L), 0 for one range.</summary>
+        internal int LevelCount => LevelsOn(DrawsFallback) ? LodLevels.LevelCount(FinestExponent()) : 0;
 
         /// <summary>This draw's origin tracker: with the levels <paramref name="cam"/>'s own, else the range's.</summary>
         RangeOriginTracker OriginTracker(Camera cam, bool fallback) =>

@@ -75,9 +75,9 @@ namespace GregoryTerrain
         [Tooltip("The part of the terrain drawn, as min x, min y, max x, max y inside 0..1. Range controllers set it every frame.")]
         [SerializeField] Vector4 range = new Vector4(0f, 0f, 1f, 1f);
 
-        [Tooltip("Height of the largest noise layer, in terrain units.")]
+        [Tooltip("Height of the largest noise layer, in terrain height units (the inspector shows metres: times Height Scale).")]
         [SerializeField, Range(0f, 0.5f)] float noiseAmplitude = 0.02f;
-        [Tooltip("Noise cells across the whole terrain in the largest noise layer.")]
+        [Tooltip("Noise cells across the whole terrain in the largest noise layer (the inspector shows one cell's width in metres).")]
         [SerializeField, Range(0.5f, 4096f)] float noiseFrequency = 16f;
         [Tooltip("How much finer each noise layer is than the one before it (2: twice as fine).")]
         [SerializeField, Range(1.1f, 8f)] float noiseAlpha = 2f;
@@ -88,11 +88,11 @@ namespace GregoryTerrain
         [Tooltip("0: the mesh detail decides how many noise layers show. Above 0: assume this many vertices across the drawn area instead.")]
         [SerializeField, Min(0f)] float noiseVerticesAcross = 0f;
 
-        [Tooltip("Height over which the colour blends from the low colour to the high colour, in terrain units.")]
+        [Tooltip("Height over which the colour blends from the low colour to the high colour, in terrain height units (the inspector shows metres).")]
         [SerializeField, Range(0.001f, 4f)] float colorGamma = 0.5f;
         [Tooltip("How strongly noise breaks up the boundary between the low and high colours.")]
         [SerializeField, Range(0f, 1f)] float colorNoiseAmplitude = 0.1f;
-        [Tooltip("Noise cells across the whole terrain for the colour noise.")]
+        [Tooltip("Noise cells across the whole terrain for the colour noise (the inspector shows one cell's width in metres).")]
         [SerializeField, Range(0.5f, 4096f)] float colorNoiseFrequency = 64f;
         [Tooltip("Colour of the low ground.")]
         [SerializeField] Color colorLow = new Color(0.22f, 0.33f, 0.14f);
@@ -187,11 +187,9 @@ namespace GregoryTerrain
         }
 
         /// <summary>
-        /// For floating-origin applications: the application has moved the world by
-        /// <paramref name="delta"/> (every object's position gained it) and the terrain moves with it,
-        /// kept as a double offset by the renderer rather than in the float Transform (which rounds at
-        /// 4 mm at 50 km). Do not move this object's Transform as well. Nothing moves on screen when the
-        /// camera was shifted by the same delta; the CPU queries and the collider use the same offset.
+        /// For floating-origin applications: the world has moved by <paramref name="delta"/> and the
+        /// terrain moves with it, kept as a double offset rather than in the float Transform (4 mm
+        /// steps at 50 km); do not move the Transform as well. Queries and the collider follow it.
         /// Throws ArgumentException unless <paramref name="delta"/> is finite.
         /// </summary>
         public void ShiftOrigin(Vector3 delta)
@@ -291,11 +289,23 @@ namespace GregoryTerrain
 
         /// <summary>
         /// Triangles the current settings can produce at most (Core's TessellationPolicy: 2 F^2 per
-        /// tile, F = the uniform factor, else maxFactor; the fallback grid's F without a tessellator).
+        /// tile drawn, F = the uniform factor, else maxFactor; the fallback grid's F without a tessellator).
         /// What a camera's view draws: <see cref="EstimateTrianglesInView"/>.
         /// </summary>
-        public double EstimatedTriangleCount => TessellationPolicy.EstimateTriangleCount(TilesAcross(DrawsFallback),
+        public double EstimatedTriangleCount => DrawnTileCount * TessellationPolicy.EstimateTriangleCount(1,
             DrawsFallback ? fallbackGridFactor : uniformFactor > 0 ? uniformFactor : maxFactor);
+
+        /// <summary>Tiles drawn: M^2 ((M + 1)^2 anchored), or the Horizon levels' (<see cref="LodLevels.DrawnTileCount"/>).</summary>
+        internal int DrawnTileCount
+        {
+            get
+            {
+                int levels = LevelCount;
+                if (levels > 0) return LodLevels.DrawnTileCount(levels, tiles);
+                int across = TilesAcross(DrawsFallback);
+                return across * across;
+            }
+        }
 
         /// <summary>Why the terrain cannot be drawn: the device (no structured buffers), or the current settings (Core's message, naming field and value); else null.</summary>
         public string SettingsError => s_DeviceError ?? _settingsError ?? _cacheError;
@@ -340,11 +350,8 @@ namespace GregoryTerrain
         public string VertexCacheFallbackReason => _cacheFallbackReason;
 
         /// <summary>
-        /// GPU memory the vertex cache needs for the current settings, in bytes (Core's
-        /// <see cref="VertexCacheBudget.TotalBytes"/>: 992 T^2 + 16 T^2 ((L+1)^2 + 4 (L+1)) R, T = M, or
-        /// M + 1 with anchored tiles (<see cref="CacheTilesAcross"/>), L the
-        /// uniform factor, else the max factor, rounded up; R = 2 while a Snow Simulator is attached, else 1),
-        /// whichever evaluation is chosen.
+        /// GPU memory the vertex cache needs at the current settings, in bytes, whichever evaluation is
+        /// chosen (Core's <see cref="VertexCacheBudget.TotalBytes"/>).
         /// </summary>
         public long VertexCacheBytes
         {
@@ -416,11 +423,9 @@ namespace GregoryTerrain
         // ---- drawing --------------------------------------------------------------------------------
 
         /// <summary>
-        /// Brings the draw's state up to date before a camera draws: uploads (once per asset
-        /// version), constants on change, this camera's <c>_Range</c>, the vertex cache, the draw
-        /// material. In the steady state (no setting, Transform, origin or grid change) the only
-        /// value set is <c>_Range</c>: see <see cref="PerFrameTrafficBytes"/>. No allocation once
-        /// the buffers exist. False when nothing can be drawn.
+        /// Brings the draw's state up to date before a camera draws: uploads, constants on change,
+        /// <c>_Range</c>, the vertex cache, the draw material. In the steady state only <c>_Range</c>
+        /// is set (<see cref="PerFrameTrafficBytes"/>); no allocation. False when nothing can be drawn.
         /// </summary>
         bool Prepare(Camera cam = null)
         {
@@ -453,7 +458,10 @@ namespace GregoryTerrain
             if (_settingsError != null) return false;   // logged once; drawn again after the next valid change
             PushTessellationView(cam);
             UpdateNoiseTableBinding();   // before the cache: its kernels read the same table
-            if (!UpdateVertexCache(fallback)) return false;
+            bool cacheReady;
+            using (s_VertexCacheMarker.Auto())
+                cacheReady = UpdateVertexCache(fallback);
+            if (!cacheReady) return false;
             UpdateSnowBinding();
             // The range-origin keyword from the very _RangeOrigin just sent (_params): the stages
             // without it compile no origin code and would draw a set origin as 0.
@@ -481,10 +489,8 @@ namespace GregoryTerrain
         }
 
         /// <summary>
-        /// Anchored tiles (<see cref="TileLattice"/>): keeps <c>_TileLattice</c> while the range only
-        /// pans and anchors it at the range on a zoom, a re-snap or a settings change (16 bytes then);
-        /// 0 when the tiles lie on the range (off, a uniform factor, the fallback grid). The cache pass
-        /// sees a new lattice as a new record input and evaluates every tile again.
+        /// Anchored tiles (<see cref="TileLattice"/>): <c>_TileLattice</c> kept while the range only pans,
+        /// anchored again on a zoom, re-snap or settings change; 0 when the tiles lie on the range.
         /// </summary>
         void UpdateTileLattice(bool fallback)
         {
@@ -495,9 +501,8 @@ namespace GregoryTerrain
         }
 
         /// <summary>
-        /// Builds the TerrainParams block with Core (which validates every input and knows the order)
-        /// and sets each float4 by its name. On invalid settings nothing is set and the renderer
-        /// stops drawing until a change fixes them, so the GPU never sees half-updated constants.
+        /// Builds the TerrainParams block with Core (which validates every input) and sets each float4.
+        /// On invalid settings nothing is set and nothing drawn until a change fixes them.
         /// </summary>
         void PushSettings(bool fallback)
         {
@@ -573,9 +578,8 @@ namespace GregoryTerrain
         }
 
         /// <summary>
-        /// The draw the material's SubShader in use expects (see <see cref="DrawsFallback"/>), read again
-        /// only when its <see cref="DrawModeKey"/> changes (GetTag allocates). A change of mode marks the
-        /// settings dirty, since the uniform factor sent differs between the modes.
+        /// The draw the material's SubShader expects (<see cref="DrawsFallback"/>), read again only when
+        /// its <see cref="DrawModeKey"/> changes (GetTag allocates); a change marks the settings dirty.
         /// </summary>
         bool ReadDrawMode()
         {
@@ -590,11 +594,9 @@ namespace GregoryTerrain
         }
 
         /// <summary>
-        /// While a range origin is set, the shaders output <c>S(q) - S(O)</c> (and the noise as
-        /// <c>p(q) - p(O)</c>; internals.md, "Deep-zoom output"): the part left out,
-        /// <see cref="TerrainVertex.OutputOffset(PatchGrid, TerrainParams, TerrainKeywords)"/>, in double.
-        /// It changes on a re-snap, and with GT_NOISE also with the range width (the octave count) and GT_NOISE_TABLE.
-        /// Returns true when it changed (the matrices must be sent again).
+        /// While a range origin is set the shaders output <c>S(q) - S(O)</c> (internals.md, "Deep-zoom
+        /// output"): the part left out, <see cref="TerrainVertex.OutputOffset(PatchGrid, TerrainParams, TerrainKeywords)"/>,
+        /// in double. True when it changed (the matrices must be sent again).
         /// </summary>
         bool UpdateOutputOffset()
         {
@@ -628,12 +630,9 @@ namespace GregoryTerrain
         }
 
         /// <summary>
-        /// RenderPrimitives has no object matrix (the shader gets none from Unity), so the adapters
-        /// read ours, from <see cref="WorldFrame"/>: <c>T(worldOffset) localToWorld S T(t)</c>, S the
-        /// terrain size and height scale, t the deep-zoom output offset in object space (object =
-        /// terrain (x, z, y)), and its inverse, every entry formed in double and rounded once
-        /// (<see cref="TerrainWorldFrame.DrawMatrices"/>). Sent when the Transform, the size, the world
-        /// offset or the output offset changes only.
+        /// RenderPrimitives has no object matrix, so the adapters read ours: <c>T(worldOffset)
+        /// localToWorld S T(t)</c> and its inverse, formed in double (<see cref="TerrainWorldFrame.DrawMatrices"/>).
+        /// Sent only when the Transform, size, world offset or output offset changes.
         /// </summary>
         void PushMatrices()
         {
@@ -648,17 +647,14 @@ namespace GregoryTerrain
         }
 
         /// <summary>
-        /// Whether the Transform moved since <see cref="PushMatrices"/>. Compared, not read from
-        /// Transform.hasChanged: that flag is shared with every other script on the object, and one
-        /// that clears it would hide a move (the terrain would draw where it was).
+        /// Whether the Transform moved since <see cref="PushMatrices"/>: compared, not Transform.hasChanged,
+        /// which another script may clear.
         /// </summary>
         bool TransformMoved() => !VertexCachePass.SameMatrix(transform.localToWorldMatrix, _pushedLocalToWorld);
 
         /// <summary>
-        /// World bounds of the drawn range: object x in [c, g], z in [d, h] (the shaders output
-        /// (x, z, y)), height between the lowest and highest control point (the patch lies in their
-        /// hull) widened by the largest noise the octaves can add, and raised by the snow cap while
-        /// snow is drawn (what the shader's tile culling keeps).
+        /// World bounds of the drawn range: height between the lowest and highest control point,
+        /// widened by the largest noise and raised by the snow cap (what the shader's culling keeps).
         /// </summary>
         Bounds WorldBounds()
         {
