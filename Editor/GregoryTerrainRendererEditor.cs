@@ -1,4 +1,6 @@
 using System;
+using System.Collections.Generic;
+using System.Linq;
 using GregoryTerrain;
 using UnityEditor;
 using UnityEngine;
@@ -6,11 +8,9 @@ using UnityEngine;
 namespace GregoryTerrain.EditorTools
 {
     /// <summary>
-    /// Renderer inspector: readouts (triangles in view and at most, vertex cache memory), help boxes for
-    /// invalid settings and fallbacks, then the settings in foldouts (open state kept per user in
-    /// EditorPrefs), each field shown only where it has an effect. Scene-view tools: control points and
-    /// patch wireframe drawn with Handles, control points moved with position handles (undoable).
-    /// The Scene-view keys are shortcuts of the Shortcut Manager (GregoryTerrainShortcuts).
+    /// Renderer inspector: readouts, help boxes, then the settings in foldouts (open state kept in
+    /// EditorPrefs), each field where it has an effect. Scene view: control points and patch wireframe
+    /// (Handles), points moved with position handles (undoable); keys in GregoryTerrainShortcuts.
     /// </summary>
     [CustomEditor(typeof(GregoryTerrainRenderer)), CanEditMultipleObjects]
     internal sealed class GregoryTerrainRendererEditor : Editor
@@ -43,8 +43,8 @@ namespace GregoryTerrain.EditorTools
             EditorGUILayout.LabelField(new GUIContent("Triangles in view", "Triangles drawn for the LOD camera (else the main or Scene view camera) at the current settings. Up to 256 tiles are evaluated."),
                 new GUIContent(InViewText(r)));
             if (_estimateCapped != null) EditorGUILayout.HelpBox(_estimateCapped, MessageType.Info);
-            EditorGUILayout.LabelField(new GUIContent("Most triangles", "The most triangles these settings can draw, whatever the view."),
-                new GUIContent(r.EstimatedTriangleCount.ToString("N0")));
+            EditorGUILayout.LabelField(new GUIContent("Most triangles", "The most triangles these settings can draw, whatever the view (with Horizon levels, every level's tiles)."),
+                new GUIContent($"{r.EstimatedTriangleCount:N0} ({r.DrawnTileCount:N0} tiles{(r.LevelCount > 0 ? $" in {r.LevelCount} levels" : "")})"));
             bool cache = r.VertexEvaluation == VertexEvaluation.ComputeCache;
             if (cache)
                 EditorGUILayout.LabelField(new GUIContent("Vertex cache memory", "GPU memory the Compute cache's buffers take at these settings."),
@@ -63,43 +63,120 @@ namespace GregoryTerrain.EditorTools
                 EditorGUILayout.HelpBox("Assign a material that uses GregoryTerrain/Terrain.", MessageType.Warning);
         }
 
-        // The serialized field names are the scenes' data: never rename them here or in the renderer.
+        // The serialized field names are the scenes' data: never rename them. What shows where: RendererInspectorLayout.
         void DrawSettings()
         {
-            SerializedProperty uniformFactor = serializedObject.FindProperty("uniformFactor");
-            SerializedProperty vertexEvaluation = serializedObject.FindProperty("vertexEvaluation");
-            // With several renderers selected and differing values, show what any of them may use.
-            bool mayAdapt = uniformFactor.hasMultipleDifferentValues || uniformFactor.intValue == 0;
-            bool mayCache = vertexEvaluation.hasMultipleDifferentValues ||
-                            vertexEvaluation.intValue == (int)VertexEvaluation.ComputeCache;
-
-            Section("Content", true, () => Fields("grid", "material", "terrainSize", "heightScale", "range"));
-            Section("Tessellation", true, () =>
-            {
-                Fields("tiles", "uniformFactor", "horizonLevels");
-                if (mayAdapt) Fields("maxFactor", "targetPixelError", "anchorTiles");
-                Fields("fallbackGridFactor");
-            });
-            Section("Vertex evaluation", true, () =>
-            {
-                Fields("vertexEvaluation");
-                if (mayCache) Fields("cacheShader", "lodCamera");
-            });
-            Section("Noise and colour", false, () =>
-            {
-                KeywordOffNote(ShaderIds.NoiseKeyword, "Noise detail");
-                Fields("noiseAmplitude", "noiseFrequency", "noiseAlpha", "noiseBeta", "noiseOctaves", "noiseVerticesAcross");
-                KeywordOffNote(ShaderIds.HeightColorKeyword, "Height colour");
-                Fields("colorGamma", "colorNoiseAmplitude", "colorNoiseFrequency", "colorLow", "colorHigh");
-            });
-            Section("Lighting", false, () => Fields("shadowCasting", "receiveShadows"));
-            Section("Debug", false, () => Fields("debugShowControlPoints", "debugShowPatchWireframe"));
+            var contexts = targets.Select(t => ContextOf((GregoryTerrainRenderer)t)).ToList();
+            foreach (var (title, open, fields) in RendererInspectorLayout.Sections)
+                Section(title, open, () =>
+                {
+                    if (title == "Noise and colour") KeywordOffNote(ShaderIds.NoiseKeyword, "Noise detail");
+                    foreach (string name in fields)
+                    {
+                        if (!RendererInspectorLayout.ShowsForAny(name, contexts)) continue;
+                        if (name == "colorGamma") KeywordOffNote(ShaderIds.HeightColorKeyword, "Height colour");
+                        DrawField(name);
+                    }
+                });
         }
 
-        void Fields(params string[] names)
+        static InspectorContext ContextOf(GregoryTerrainRenderer r) => new InspectorContext(
+            RendererInspectorLayout.ModeOf(r.HorizonLevels, ZoomControllerOf(r) != null),
+            r.UniformFactor == 0, r.VertexEvaluation == VertexEvaluation.ComputeCache, r.DrawsFallback);
+
+        void DrawField(string name)
         {
-            foreach (string name in names)
-                EditorGUILayout.PropertyField(serializedObject.FindProperty(name));
+            if (name == RendererInspectorLayout.ViewModeField) { DrawViewMode(); DrawQuality(); return; }
+            foreach (var m in RendererInspectorLayout.MetreFields)
+                if (m.field == name && MetresField(m.field, m.kind, m.label, m.min, m.max)) return;
+            EditorGUILayout.PropertyField(serializedObject.FindProperty(name));
+        }
+
+        static readonly GUIContent ViewModeLabel = new GUIContent("View mode", "Open world: from each camera's feet to the horizon (Horizon levels). " +
+            "Single range: the Range, or a Camera Range Controller's. Zoom: the paper's zoom, by a Zoom Range Controller on this object.");
+        static readonly GUIContent[] ViewModeNames = { new GUIContent("Open world"), new GUIContent("Single range"), new GUIContent("Zoom") };
+
+        /// <summary>Horizon levels as a view mode; the renderer and its zoom controller change in one Undo step.</summary>
+        void DrawViewMode()
+        {
+            SerializedProperty levels = serializedObject.FindProperty(RendererInspectorLayout.ViewModeField);
+            TerrainViewMode mode = RendererInspectorLayout.ModeOf(levels.boolValue, ZoomControllerOf((GregoryTerrainRenderer)target) != null);
+            Rect rect = EditorGUILayout.GetControlRect();
+            GUIContent label = EditorGUI.BeginProperty(rect, ViewModeLabel, levels);
+            EditorGUI.showMixedValue = levels.hasMultipleDifferentValues;
+            EditorGUI.BeginChangeCheck();
+            var chosen = (TerrainViewMode)EditorGUI.Popup(rect, label, (int)mode, ViewModeNames);
+            EditorGUI.showMixedValue = false;
+            bool changed = EditorGUI.EndChangeCheck();
+            EditorGUI.EndProperty();
+            if (!changed) return;
+            Undo.SetCurrentGroupName("View mode " + ViewModeNames[(int)chosen].text);
+            int group = Undo.GetCurrentGroup();
+            levels.boolValue = chosen == TerrainViewMode.OpenWorld;
+            SerializedProperty tiles = serializedObject.FindProperty("tiles");
+            if (levels.boolValue) tiles.intValue = RendererInspectorLayout.TilesForOpenWorld(tiles.intValue);
+            serializedObject.ApplyModifiedProperties();
+            foreach (UnityEngine.Object t in targets) SetZoomController((GregoryTerrainRenderer)t, chosen == TerrainViewMode.Zoom);
+            Undo.CollapseUndoOperations(group);
+        }
+
+        static ZoomRangeController ZoomControllerOf(GregoryTerrainRenderer r) =>
+            r.GetComponents<ZoomRangeController>().FirstOrDefault(z => z.enabled && z.Target == r);
+
+        /// <summary>Enables the renderer's own Zoom Range Controller (adds one if none) or disables them, undoably.</summary>
+        static void SetZoomController(GregoryTerrainRenderer r, bool on)
+        {
+            ZoomRangeController[] own = r.GetComponents<ZoomRangeController>().Where(z => z.Target == r).ToArray();
+            if (on && own.Length == 0) { Undo.AddComponent<ZoomRangeController>(r.gameObject).Target = r; return; }
+            foreach (ZoomRangeController z in on ? own.Take(1) : own)
+            {
+                Undo.RecordObject(z, "Zoom Range Controller");
+                z.enabled = on;
+            }
+        }
+
+        static readonly GUIContent QualityLabel = new GUIContent("Quality", "Sets Target pixel error, Max factor, Tiles, Noise octaves and " +
+            "Vertex evaluation in one Undo step: Low 16 px, Medium 8 px (a new terrain's), High 2 px, Ultra 0.5 px (largest error about 1 px).");
+        static readonly GUIContent[] QualityNames = { new GUIContent("Low"), new GUIContent("Medium"), new GUIContent("High"), new GUIContent("Ultra"), new GUIContent("Custom") };
+
+        void DrawQuality()
+        {
+            SerializedProperty[] p = { P("targetPixelError"), P("maxFactor"), P("tiles"), P("noiseOctaves"), P("vertexEvaluation") };
+            QualityPreset? now = RendererInspectorLayout.PresetOf(new QualityValues(p[0].floatValue, p[1].floatValue, p[2].intValue, p[3].intValue, p[4].enumValueIndex));
+            EditorGUI.showMixedValue = p.Any(x => x.hasMultipleDifferentValues);
+            EditorGUI.BeginChangeCheck();
+            int chosen = EditorGUILayout.Popup(QualityLabel, now.HasValue ? (int)now.Value : 4, QualityNames);
+            EditorGUI.showMixedValue = false;
+            if (!EditorGUI.EndChangeCheck() || chosen == 4) return;
+            QualityValues v = RendererInspectorLayout.Preset((QualityPreset)chosen);
+            // Applied with the inspector's other changes at the end of OnInspectorGUI: one Undo step.
+            p[0].floatValue = v.targetPixelError; p[1].floatValue = v.maxFactor; p[2].intValue = v.tiles;
+            p[3].intValue = v.noiseOctaves; p[4].enumValueIndex = v.vertexEvaluation;
+        }
+
+        SerializedProperty P(string name) => serializedObject.FindProperty(name);
+
+        /// <summary>
+        /// A terrain-unit length typed and read in metres (stored unchanged, so scenes keep their look).
+        /// False, and the stored field is drawn, when the selected renderers' scales differ.
+        /// </summary>
+        bool MetresField(string name, TerrainLength kind, string text, float min, float max)
+        {
+            Double3 unit = ((GregoryTerrainRenderer)target).WorldUnitsPerObjectUnit;
+            if (targets.Any(t => !((GregoryTerrainRenderer)t).WorldUnitsPerObjectUnit.Equals(unit))) return false;
+            SerializedProperty p = P(name);
+            Rect rect = EditorGUILayout.GetControlRect();
+            GUIContent label = EditorGUI.BeginProperty(rect, new GUIContent(text, $"{p.tooltip} Stored: {p.floatValue:G4}; it scales with the terrain."), p);
+            EditorGUI.showMixedValue = p.hasMultipleDifferentValues;
+            EditorGUI.BeginChangeCheck();
+            float metres = (float)RendererInspectorLayout.ToMetres(kind, p.floatValue, unit.y, unit.x);
+            float typed = kind == TerrainLength.Height
+                ? EditorGUI.Slider(rect, label, metres, (float)(min * unit.y), (float)(max * unit.y))
+                : EditorGUI.FloatField(rect, label, metres);
+            if (EditorGUI.EndChangeCheck()) p.floatValue = RendererInspectorLayout.ClampedFromMetres(kind, typed, unit.y, unit.x, min, max);
+            EditorGUI.showMixedValue = false;
+            EditorGUI.EndProperty();
+            return true;
         }
 
         /// <summary>
@@ -139,7 +216,9 @@ namespace GregoryTerrain.EditorTools
             if (cam == null && SceneView.lastActiveSceneView != null) cam = SceneView.lastActiveSceneView.camera;
             TriangleEstimate? e = cam != null ? r.EstimateTrianglesInView(cam) : null;
             if (cam == null) _estimateText = "no camera";
-            else if (e == null) _estimateText = r.DrawsFallback ? "fallback: see Most triangles" : "(nothing drawn yet)";
+            else if (e == null) _estimateText = r.DrawsFallback ? "fallback: see Most triangles"
+                : r.LevelCount > 0 ? $"not estimated with Horizon levels ({r.LevelCount} levels, {r.DrawnTileCount:N0} tiles): see Most triangles"
+                : "(nothing drawn yet)";
             else
             {
                 TriangleEstimate v = e.Value;
@@ -147,7 +226,7 @@ namespace GregoryTerrain.EditorTools
                 _estimateText = $"{v.triangles:N0} ({cam.name}: {v.tilesSampledDrawn} of {v.tilesSampled} tiles drawn{sample})";
                 // Tiles held at the max factor may miss the target: more, smaller tiles need smaller factors.
                 if (v.tilesSampledAtMaxFactor > 0)
-                    _estimateCapped = $"{v.tilesSampledAtMaxFactor} of the {v.tilesSampledDrawn} tiles evaluated and drawn are held at the max factor: the target pixel error may not hold there. More tiles (Tiles M) need smaller factors; fewer, larger tiles draw the same triangles faster until they reach it.";
+                    _estimateCapped = $"{v.tilesSampledAtMaxFactor} of the {v.tilesSampledDrawn} tiles evaluated and drawn are held at the max factor: the target pixel error may not hold there. More tiles need smaller factors.";
             }
             return _estimateText;
         }
