@@ -123,7 +123,7 @@ namespace GregoryTerrain.EditorTools
         static ZoomRangeController ZoomControllerOf(GregoryTerrainRenderer r) =>
             r.GetComponents<ZoomRangeController>().FirstOrDefault(z => z.enabled && z.Target == r);
 
-        /// <summary>Enables the renderer's own Zoom Range Controller (adds one if none) or disables them, undoably.</summary>
+        /// <summary>Enables the renderer's own Zoom Range Controller (adds one if none) or disables them and draws the saved Range.</summary>
         static void SetZoomController(GregoryTerrainRenderer r, bool on)
         {
             ZoomRangeController[] own = r.GetComponents<ZoomRangeController>().Where(z => z.Target == r).ToArray();
@@ -133,6 +133,7 @@ namespace GregoryTerrain.EditorTools
                 Undo.RecordObject(z, "Zoom Range Controller");
                 z.enabled = on;
             }
+            if (!on) r.SyncRangeFromSerialized();
         }
 
         static readonly GUIContent QualityLabel = new GUIContent("Quality", "Sets Target pixel error, Max factor, Tiles, Noise octaves and " +

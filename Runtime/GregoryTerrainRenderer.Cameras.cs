@@ -76,11 +76,9 @@ namespace GregoryTerrain
         }
 
         /// <summary>
-        /// Whether <paramref name="cam"/> draws this terrain. Preview cameras (inspector previews,
-        /// thumbnails) never do. In the editor a camera draws it only when its scene culling mask
-        /// shares a bit with this GameObject's (<see cref="CameraSceneFilter"/>): what Unity does
-        /// for its own renderers, so an instance in a Prefab stage draws only in that stage's
-        /// cameras and a main-scene instance stays out of the stage.
+        /// Whether <paramref name="cam"/> draws this terrain: never a preview camera; in the editor only
+        /// when its scene culling mask shares a bit with this GameObject's (<see cref="CameraSceneFilter"/>),
+        /// as Unity's own renderers (Prefab stages).
         /// </summary>
         bool DrawsIn(Camera cam)
         {
@@ -93,9 +91,8 @@ namespace GregoryTerrain
         }
 
         /// <summary>
-        /// <paramref name="cam"/>'s object -> clip and pixel size, from which every pass of its draw,
-        /// its shadow maps included, takes the factors (URP, Built-in). Set only when they differ from
-        /// what the property block holds (read back: a cleared block is refilled).
+        /// <paramref name="cam"/>'s object -> clip and pixel size, from which every pass of its draw takes
+        /// the factors; set only when they differ from what the property block holds.
         /// </summary>
         void PushTessellationView(Camera cam)
         {

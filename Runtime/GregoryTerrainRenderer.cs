@@ -24,12 +24,9 @@ namespace GregoryTerrain
     public sealed partial class GregoryTerrainRenderer : MonoBehaviour
     {
         /// <summary>
-        /// Bytes this script sets per camera in the steady state: one float4, <c>_Range</c> (one
-        /// MaterialPropertyBlock.SetVector in PushRange, then one Graphics.RenderPrimitives call for that
-        /// camera); with the Compute cache too. Horizon levels add the level ranges every frame (20 float4,
-        /// SetVectorArray in PushLevels). What else (a camera's tessellation view when it moved or
-        /// another camera drew since, ...) is set, only on a change, and when:
-        /// index.md, "What is sent per frame".
+        /// Bytes this script sets per camera in the steady state: one float4, <c>_Range</c>, then one
+        /// Graphics.RenderPrimitives call; with the Compute cache too. Horizon levels add 20 float4 of
+        /// level ranges. What else is set, only on a change: index.md, "What is sent per frame".
         /// </summary>
         public const int PerFrameTrafficBytes = 16;
 
@@ -703,7 +700,7 @@ namespace GregoryTerrain
             return sum;
         }
 
-        void SyncRangeFromSerialized()
+        internal void SyncRangeFromSerialized()
         {
             var r = new TerrainRange(range.x, range.y, range.z, range.w);
             try { r.Validate("range"); }
