@@ -66,6 +66,11 @@ namespace GregoryTerrain.Rig.Tests
             Assert.That(RendererInspectorLayout.ShowsForAny("range", new[] { Views[0], Views[1] }), Is.True);
             Assert.That(RendererInspectorLayout.ShowsForAny("range", new[] { Views[0], Views[2] }), Is.False);
             foreach (InspectorContext v in Views) Assert.That(RendererInspectorLayout.FieldsShown(v).Count, Is.LessThan(ShownBefore(v)), v.mode.ToString());
+            // The manual quotes these counts (index.md, "Renderer settings").
+            Match quoted = Regex.Match(Source("Documentation~", "index.md"), @"of (\d+), Open world shows\s+(\d+), Single range\s+(\d+), Zoom (\d+) \((\d+) before\)");
+            Assert.That(quoted.Success, "index.md no longer quotes the fields shown per view mode");
+            Assert.That(Enumerable.Range(1, 5).Select(k => int.Parse(quoted.Groups[k].Value, CultureInfo.InvariantCulture)),
+                Is.EqualTo(new[] { RendererInspectorLayout.Sections.Sum(s => s.fields.Length), open.Count, single.Count, zoom.Count, ShownBefore(Views[0]) }));
         }
 
         static float RendererDefault(string type, string field)
