@@ -45,7 +45,7 @@ namespace GregoryTerrain.EditorTools
             if (_estimateCapped != null) EditorGUILayout.HelpBox(_estimateCapped, MessageType.Info);
             EditorGUILayout.LabelField(new GUIContent("Most triangles", "The most triangles these settings can draw, whatever the view (with Horizon levels, every level's tiles)."),
                 new GUIContent($"{r.EstimatedTriangleCount:N0} ({r.DrawnTileCount:N0} tiles{(r.LevelCount > 0 ? $" in {r.LevelCount} levels" : "")})"));
-            bool cache = r.VertexEvaluation == VertexEvaluation.ComputeCache;
+            bool cache = r.VertexEvaluation == VertexEvaluation.ComputeCache && r.LevelCount == 0;   // the levels draw through the domain stage
             if (cache)
                 EditorGUILayout.LabelField(new GUIContent("Vertex cache memory", "GPU memory the Compute cache's buffers take at these settings."),
                     new GUIContent(FormatBytes(r.VertexCacheBytes)));
