@@ -12,7 +12,7 @@ namespace GregoryTerrain
     internal enum TerrainLength { Height, CellsAcross }
 
     /// <summary>What a quality preset writes (vertexEvaluation: 0 domain stage, 1 compute cache).</summary>
-    internal readonly struct QualityValues
+    internal readonly struct QualityValues : IEquatable<QualityValues>
     {
         public readonly float targetPixelError, maxFactor;
         public readonly int tiles, noiseOctaves, vertexEvaluation;
@@ -22,6 +22,15 @@ namespace GregoryTerrain
             this.targetPixelError = targetPixelError; this.maxFactor = maxFactor;
             this.tiles = tiles; this.noiseOctaves = noiseOctaves; this.vertexEvaluation = vertexEvaluation;
         }
+
+        public QualityValues WithVertexEvaluation(int v) => new QualityValues(targetPixelError, maxFactor, tiles, noiseOctaves, v);
+
+        public bool Equals(QualityValues o) => targetPixelError == o.targetPixelError && maxFactor == o.maxFactor
+            && tiles == o.tiles && noiseOctaves == o.noiseOctaves && vertexEvaluation == o.vertexEvaluation;
+
+        public override bool Equals(object obj) => obj is QualityValues o && Equals(o);
+
+        public override int GetHashCode() => HashCode.Combine(targetPixelError, maxFactor, tiles, noiseOctaves, vertexEvaluation);
     }
 
     /// <summary>What decides which fields take effect for one renderer (adaptive: uniform factor 0; fallback: no tessellator).</summary>
@@ -102,12 +111,36 @@ namespace GregoryTerrain
             }
         }
 
+        /// <summary>The preset whose values these are; Vertex evaluation aside, which <see cref="PresetToWrite"/> may leave.</summary>
         public static QualityPreset? PresetOf(QualityValues v)
         {
             for (var p = QualityPreset.Low; p <= QualityPreset.Ultra; p++)
-                if (Preset(p).Equals(v)) return p;
+                if (Preset(p).WithVertexEvaluation(v.vertexEvaluation).Equals(v)) return p;
             return null;
         }
+
+        /// <summary>
+        /// A preset as written: Compute cache only with a Cache Shader set (else the domain stage
+        /// draws anyway, under a warning); in Open world Vertex evaluation is hidden and kept.
+        /// </summary>
+        public static QualityValues PresetToWrite(QualityPreset p, QualityValues current, bool cacheShaderSet, bool openWorld)
+        {
+            QualityValues v = Preset(p);
+            if (openWorld) return v.WithVertexEvaluation(current.vertexEvaluation);
+            return cacheShaderSet ? v : v.WithVertexEvaluation(0);
+        }
+
+        /// <summary>The selected renderers' View mode, or null when they differ (drawn as mixed).</summary>
+        public static TerrainViewMode? CommonMode(IReadOnlyList<TerrainViewMode> modes)
+        {
+            for (int k = 1; k < modes.Count; k++)
+                if (modes[k] != modes[0]) return null;
+            return modes.Count > 0 ? modes[0] : (TerrainViewMode?)null;
+        }
+
+        /// <summary>Why a typed cell size is refused (null when it is positive).</summary>
+        public static string CellSizeProblem(string label, double metres) =>
+            metres > 0.0 ? null : $"{label} must be above 0 m (typed {metres:G6}); the stored value was kept.";
 
         public static TerrainViewMode ModeOf(bool horizonLevels, bool zoomControlled) =>
             horizonLevels ? TerrainViewMode.OpenWorld : zoomControlled ? TerrainViewMode.Zoom : TerrainViewMode.SingleRange;

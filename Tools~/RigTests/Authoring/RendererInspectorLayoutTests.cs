@@ -125,6 +125,44 @@ namespace GregoryTerrain.Rig.Tests
         }
 
         /// <summary>
+        /// What a preset writes: Compute cache only where a Cache Shader is set (else the renderer
+        /// warns and draws through the domain stage), and in Open world the hidden Vertex
+        /// evaluation is left as it is. A preset still reads back whatever Vertex evaluation it left.
+        /// </summary>
+        [Test]
+        public void UltraCachesOnlyWithACacheShaderAndOpenWorldKeepsVertexEvaluation()
+        {
+            var custom = new QualityValues(3f, 64f, 16, 6, 1);
+            Assert.That(RendererInspectorLayout.PresetToWrite(QualityPreset.Ultra, custom, cacheShaderSet: true, openWorld: false).vertexEvaluation, Is.EqualTo(1));
+            Assert.That(RendererInspectorLayout.PresetToWrite(QualityPreset.Ultra, custom, cacheShaderSet: false, openWorld: false).vertexEvaluation, Is.EqualTo(0));
+            Assert.That(RendererInspectorLayout.PresetToWrite(QualityPreset.Low, custom, cacheShaderSet: true, openWorld: true).vertexEvaluation, Is.EqualTo(1), "Open world hides Vertex evaluation");
+            Assert.That(RendererInspectorLayout.PresetToWrite(QualityPreset.Ultra, new QualityValues(3f, 64f, 16, 6, 0), true, openWorld: true).vertexEvaluation, Is.EqualTo(0));
+            QualityValues ultraNoCache = RendererInspectorLayout.PresetToWrite(QualityPreset.Ultra, custom, false, false);
+            Assert.That(ultraNoCache.targetPixelError, Is.EqualTo(0.5f));
+            Assert.That(RendererInspectorLayout.PresetOf(ultraNoCache), Is.EqualTo(QualityPreset.Ultra));
+            Assert.That(typeof(IEquatable<QualityValues>).IsAssignableFrom(typeof(QualityValues)), "struct equality without IEquatable boxes");
+            Assert.That(new QualityValues(1f, 2f, 8, 4, 0).Equals(new QualityValues(1f, 2f, 8, 4, 1)), Is.False);
+        }
+
+        /// <summary>With several renderers selected the View mode is theirs only when they all share it.</summary>
+        [Test]
+        public void ViewModeIsMixedWhenTheSelectedRenderersDiffer()
+        {
+            Assert.That(RendererInspectorLayout.CommonMode(new[] { TerrainViewMode.Zoom, TerrainViewMode.Zoom }), Is.EqualTo(TerrainViewMode.Zoom));
+            Assert.That(RendererInspectorLayout.CommonMode(new[] { TerrainViewMode.OpenWorld, TerrainViewMode.Zoom }), Is.Null);
+            Assert.That(RendererInspectorLayout.CommonMode(new[] { TerrainViewMode.SingleRange, TerrainViewMode.SingleRange, TerrainViewMode.OpenWorld }), Is.Null);
+        }
+
+        /// <summary>A typed cell size of 0 or less is refused with a message naming the field and value.</summary>
+        [Test]
+        public void ANonPositiveCellSizeIsNamed()
+        {
+            Assert.That(RendererInspectorLayout.CellSizeProblem("Noise cell size (m)", 0.0), Does.Contain("Noise cell size (m)").And.Contain("0"));
+            Assert.That(RendererInspectorLayout.CellSizeProblem("Noise cell size (m)", -2.0), Does.Contain("-2"));
+            Assert.That(RendererInspectorLayout.CellSizeProblem("Noise cell size (m)", 0.5), Is.Null);
+        }
+
+        /// <summary>
         /// One unit: every renderer field whose tooltip speaks of terrain units or cells across the
         /// terrain is typed and read in metres, within the stored field's own [Range].
         /// </summary>
@@ -168,8 +206,9 @@ namespace GregoryTerrain.Rig.Tests
                 Assert.That(Regex.IsMatch(File.ReadAllText(path), @"GUIContent\(""Height scale", RegexOptions.IgnoreCase), Is.False,
                     $"{Path.GetFileName(path)} labels something else \"Height scale\"");
             string window = Source("Editor", "PatchGridWindow.cs");
-            Assert.That(window, Does.Not.Contain("widthMetres"), "fit errors are heights: metres per height unit, not the terrain's width");
-            Assert.That(Regex.Matches(window, @"Error \* metresPerHeightUnit").Count, Is.GreaterThanOrEqualTo(3));
+            // The old name stays only as the setting's former name (FormerlySerializedAs), so windows keep it.
+            Assert.That(window.Replace("FormerlySerializedAs(\"widthMetres\")", ""), Does.Not.Contain("widthMetres"), "fit errors are heights: metres per height unit, not the terrain's width");
+            Assert.That(Regex.Matches(window, @"Error \* _unitMetres").Count, Is.GreaterThanOrEqualTo(3));
         }
 
         /// <summary>
