@@ -29,6 +29,7 @@ namespace GregoryTerrain.EditorTools
         public override void OnInspectorGUI()
         {
             serializedObject.UpdateIfRequiredOrScript();
+            FindRangeControllers();
             if (serializedObject.isEditingMultipleObjects)
                 EditorGUILayout.HelpBox("Select one renderer to see its triangle counts and warnings.", MessageType.Info);
             else
@@ -80,8 +81,7 @@ namespace GregoryTerrain.EditorTools
                 });
         }
 
-        static InspectorContext ContextOf(GregoryTerrainRenderer r) => new InspectorContext(
-            RendererInspectorLayout.ModeOf(r.HorizonLevels, ZoomControllerOf(r) != null),
+        InspectorContext ContextOf(GregoryTerrainRenderer r) => new InspectorContext(ModeOf(r),
             r.UniformFactor == 0, r.VertexEvaluation == VertexEvaluation.ComputeCache, r.DrawsFallback);
 
         void DrawField(string name)
@@ -93,66 +93,122 @@ namespace GregoryTerrain.EditorTools
         }
 
         static readonly GUIContent ViewModeLabel = new GUIContent("View mode", "Open world: from each camera's feet to the horizon (Horizon levels). " +
-            "Single range: the Range, or a Camera Range Controller's. Zoom: the paper's zoom, by a Zoom Range Controller on this object.");
+            "Single range: the Range, or a Camera Range Controller's. Zoom: a Zoom Range Controller zooms into a fixed box of the terrain (it turns off Camera Range Controllers of this terrain).");
         static readonly GUIContent[] ViewModeNames = { new GUIContent("Open world"), new GUIContent("Single range"), new GUIContent("Zoom") };
 
-        /// <summary>Horizon levels as a view mode; the renderer and its zoom controller change in one Undo step.</summary>
+        // The loaded scenes' range controllers, searched once per Layout event, not on every GUI event.
+        ZoomRangeController[] _zooms;
+        CameraRangeController[] _cameraRanges;
+
+        void FindRangeControllers()
+        {
+            if (Event.current.type != EventType.Layout && _zooms != null) return;
+            _zooms = UnityEngine.Object.FindObjectsByType<ZoomRangeController>(FindObjectsSortMode.None);
+            _cameraRanges = UnityEngine.Object.FindObjectsByType<CameraRangeController>(FindObjectsSortMode.None);
+        }
+
+        TerrainViewMode ModeOf(GregoryTerrainRenderer r) =>
+            RendererInspectorLayout.ModeOf(r.HorizonLevels, _zooms.Any(z => z != null && z.enabled && z.Target == r));
+
+        /// <summary>Horizon levels as a view mode, per selected renderer; renderers and controllers change in one Undo step.</summary>
         void DrawViewMode()
         {
             SerializedProperty levels = serializedObject.FindProperty(RendererInspectorLayout.ViewModeField);
-            TerrainViewMode mode = RendererInspectorLayout.ModeOf(levels.boolValue, ZoomControllerOf((GregoryTerrainRenderer)target) != null);
+            TerrainViewMode? mode = RendererInspectorLayout.CommonMode(targets.Select(t => ModeOf((GregoryTerrainRenderer)t)).ToList());
             Rect rect = EditorGUILayout.GetControlRect();
             GUIContent label = EditorGUI.BeginProperty(rect, ViewModeLabel, levels);
-            EditorGUI.showMixedValue = levels.hasMultipleDifferentValues;
+            EditorGUI.showMixedValue = mode == null;
             EditorGUI.BeginChangeCheck();
-            var chosen = (TerrainViewMode)EditorGUI.Popup(rect, label, (int)mode, ViewModeNames);
+            var chosen = (TerrainViewMode)EditorGUI.Popup(rect, label, mode.HasValue ? (int)mode.Value : -1, ViewModeNames);
             EditorGUI.showMixedValue = false;
             bool changed = EditorGUI.EndChangeCheck();
             EditorGUI.EndProperty();
-            if (!changed) return;
+            if (!changed || chosen < TerrainViewMode.OpenWorld) return;
             Undo.SetCurrentGroupName("View mode " + ViewModeNames[(int)chosen].text);
             int group = Undo.GetCurrentGroup();
             levels.boolValue = chosen == TerrainViewMode.OpenWorld;
-            SerializedProperty tiles = serializedObject.FindProperty("tiles");
-            if (levels.boolValue) tiles.intValue = RendererInspectorLayout.TilesForOpenWorld(tiles.intValue);
             serializedObject.ApplyModifiedProperties();
-            foreach (UnityEngine.Object t in targets) SetZoomController((GregoryTerrainRenderer)t, chosen == TerrainViewMode.Zoom);
+            foreach (UnityEngine.Object t in targets)
+            {
+                if (chosen == TerrainViewMode.OpenWorld) MakeTilesOpenWorld(t);
+                SetZoomController((GregoryTerrainRenderer)t, chosen == TerrainViewMode.Zoom);
+            }
+            serializedObject.Update();
             Undo.CollapseUndoOperations(group);
         }
 
-        static ZoomRangeController ZoomControllerOf(GregoryTerrainRenderer r) =>
-            r.GetComponents<ZoomRangeController>().FirstOrDefault(z => z.enabled && z.Target == r);
-
-        /// <summary>Enables the renderer's own Zoom Range Controller (adds one if none) or disables them and draws the saved Range.</summary>
-        static void SetZoomController(GregoryTerrainRenderer r, bool on)
+        /// <summary>Each renderer's own Tiles made even and at least the minimum, written only where that changes them.</summary>
+        static void MakeTilesOpenWorld(UnityEngine.Object renderer)
         {
-            ZoomRangeController[] own = r.GetComponents<ZoomRangeController>().Where(z => z.Target == r).ToArray();
-            if (on && own.Length == 0) { Undo.AddComponent<ZoomRangeController>(r.gameObject).Target = r; return; }
-            foreach (ZoomRangeController z in on ? own.Take(1) : own)
+            using var so = new SerializedObject(renderer);
+            SerializedProperty tiles = so.FindProperty("tiles");
+            int open = RendererInspectorLayout.TilesForOpenWorld(tiles.intValue);
+            if (open == tiles.intValue) return;
+            tiles.intValue = open;
+            so.ApplyModifiedProperties();
+        }
+
+        /// <summary>
+        /// Zoom: enables a Zoom Range Controller targeting the renderer (anywhere in the loaded scenes;
+        /// else adopts an empty one on its object, else adds one) and disables its Camera Range
+        /// Controllers, which would set the range every frame. Off: disables its Zoom Range Controllers,
+        /// whose OnDisable gives the saved Range back.
+        /// </summary>
+        void SetZoomController(GregoryTerrainRenderer r, bool on)
+        {
+            ZoomRangeController[] own = _zooms.Where(z => z != null && z.Target == r).ToArray();
+            if (!on)
             {
-                Undo.RecordObject(z, "Zoom Range Controller");
-                z.enabled = on;
+                foreach (ZoomRangeController z in own) SetSerialized(z, false, null);
+                return;
             }
-            if (!on) r.SyncRangeFromSerialized();
+            foreach (CameraRangeController c in _cameraRanges.Where(c => c != null && c.enabled && c.Target == r)) SetSerialized(c, false, null);
+            if (own.Length > 0) { SetSerialized(own[0], true, null); return; }
+            ZoomRangeController empty = r.GetComponents<ZoomRangeController>().FirstOrDefault(z => z.Target == null);
+            if (empty != null) SetSerialized(empty, true, r);
+            else Undo.AddComponent<ZoomRangeController>(r.gameObject).Target = r;
+        }
+
+        // A range controller's fields, not the renderer's (RendererInspectorTests reads literals as the renderer's).
+        const string BehaviourEnabled = "m_Enabled", ControllerTarget = "target";
+
+        /// <summary>Enabled (and Target) through a SerializedObject: recorded for Undo and as a prefab instance override.</summary>
+        static void SetSerialized(Behaviour b, bool enabled, GregoryTerrainRenderer newTarget)
+        {
+            using var so = new SerializedObject(b);
+            so.FindProperty(BehaviourEnabled).boolValue = enabled;
+            if (newTarget != null) so.FindProperty(ControllerTarget).objectReferenceValue = newTarget;
+            so.ApplyModifiedProperties();
         }
 
         static readonly GUIContent QualityLabel = new GUIContent("Quality", "Sets Target pixel error, Max factor, Tiles, Noise octaves and " +
-            "Vertex evaluation in one Undo step: Low 16 px, Medium 8 px (a new terrain's), High 2 px, Ultra 0.5 px (largest error about 1 px).");
+            "Vertex evaluation in one Undo step: Low 16 px, Medium 8 px (a new terrain's), High 2 px, Ultra 0.5 px (largest error about 1 px). " +
+            "Ultra chooses Compute cache only where a Cache Shader is set; Open world keeps Vertex evaluation as it is.");
         static readonly GUIContent[] QualityNames = { new GUIContent("Low"), new GUIContent("Medium"), new GUIContent("High"), new GUIContent("Ultra"), new GUIContent("Custom") };
 
         void DrawQuality()
         {
             SerializedProperty[] p = { P("targetPixelError"), P("maxFactor"), P("tiles"), P("noiseOctaves"), P("vertexEvaluation") };
-            QualityPreset? now = RendererInspectorLayout.PresetOf(new QualityValues(p[0].floatValue, p[1].floatValue, p[2].intValue, p[3].intValue, p[4].enumValueIndex));
+            QualityPreset? now = RendererInspectorLayout.PresetOf(new QualityValues(p[0].floatValue, p[1].floatValue, p[2].intValue, p[3].intValue, p[4].intValue));
             EditorGUI.showMixedValue = p.Any(x => x.hasMultipleDifferentValues);
             EditorGUI.BeginChangeCheck();
             int chosen = EditorGUILayout.Popup(QualityLabel, now.HasValue ? (int)now.Value : 4, QualityNames);
             EditorGUI.showMixedValue = false;
             if (!EditorGUI.EndChangeCheck() || chosen == 4) return;
+            Undo.SetCurrentGroupName("Quality " + QualityNames[chosen].text);
             QualityValues v = RendererInspectorLayout.Preset((QualityPreset)chosen);
             // Applied with the inspector's other changes at the end of OnInspectorGUI: one Undo step.
-            p[0].floatValue = v.targetPixelError; p[1].floatValue = v.maxFactor; p[2].intValue = v.tiles;
-            p[3].intValue = v.noiseOctaves; p[4].enumValueIndex = v.vertexEvaluation;
+            p[0].floatValue = v.targetPixelError; p[1].floatValue = v.maxFactor; p[2].intValue = v.tiles; p[3].intValue = v.noiseOctaves;
+            foreach (UnityEngine.Object t in targets)
+            {
+                var r = (GregoryTerrainRenderer)t;
+                int evaluation = RendererInspectorLayout.PresetToWrite((QualityPreset)chosen, new QualityValues(0f, 0f, 0, 0, (int)r.VertexEvaluation),
+                    r.CacheShader != null, r.HorizonLevels).vertexEvaluation;
+                if (evaluation == (int)r.VertexEvaluation) continue;
+                using var so = new SerializedObject(t);
+                so.FindProperty("vertexEvaluation").intValue = evaluation;
+                so.ApplyModifiedProperties();
+            }
         }
 
         SerializedProperty P(string name) => serializedObject.FindProperty(name);
@@ -161,6 +217,8 @@ namespace GregoryTerrain.EditorTools
         /// A terrain-unit length typed and read in metres (stored unchanged, so scenes keep their look).
         /// False, and the stored field is drawn, when the selected renderers' scales differ.
         /// </summary>
+        readonly Dictionary<string, string> _refused = new Dictionary<string, string>();   // field -> why the last typed value was not stored
+
         bool MetresField(string name, TerrainLength kind, string text, float min, float max)
         {
             Double3 unit = ((GregoryTerrainRenderer)target).WorldUnitsPerObjectUnit;
@@ -173,10 +231,16 @@ namespace GregoryTerrain.EditorTools
             float metres = (float)RendererInspectorLayout.ToMetres(kind, p.floatValue, unit.y, unit.x);
             float typed = kind == TerrainLength.Height
                 ? EditorGUI.Slider(rect, label, metres, (float)(min * unit.y), (float)(max * unit.y))
-                : EditorGUI.FloatField(rect, label, metres);
-            if (EditorGUI.EndChangeCheck()) p.floatValue = RendererInspectorLayout.ClampedFromMetres(kind, typed, unit.y, unit.x, min, max);
+                : EditorGUI.DelayedFloatField(rect, label, metres);   // applied on Enter: typing 0.5 passes through 0
+            if (EditorGUI.EndChangeCheck())
+            {
+                string problem = kind == TerrainLength.CellsAcross ? RendererInspectorLayout.CellSizeProblem(text, typed) : null;
+                if (problem == null) { _refused.Remove(name); p.floatValue = RendererInspectorLayout.ClampedFromMetres(kind, typed, unit.y, unit.x, min, max); }
+                else _refused[name] = problem;
+            }
             EditorGUI.showMixedValue = false;
             EditorGUI.EndProperty();
+            if (_refused.TryGetValue(name, out string refused)) EditorGUILayout.HelpBox(refused, MessageType.Warning);
             return true;
         }
 

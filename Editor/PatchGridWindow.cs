@@ -6,6 +6,7 @@ using GregoryTerrain;
 using UnityEditor;
 using UnityEngine;
 using UnityEngine.Experimental.Rendering;
+using UnityEngine.Serialization;
 
 namespace GregoryTerrain.EditorTools
 {
@@ -32,7 +33,7 @@ namespace GregoryTerrain.EditorTools
         static readonly GUIContent RawRowsLabel = new GUIContent("RAW first row", "Which edge of the terrain the first row of the file is. By File Type: north for SRTM .hgt files, south for other RAW files (as Unity's Import Raw). North First is Unity's Flip Vertically.");
         static readonly GUIContent RawVoidLabel = new GUIContent("-32768 is no data", "Treat -32768 as a void (SRTM) and fill it from its neighbours before fitting.");
         static readonly GUIContent SampleHeightLabel = new GUIContent("Sample height (terrain units)", "Terrain height units of a full-scale sample (white, 65535), or per stored unit for signed 16-bit and float samples.");
-        static readonly GUIContent MetresPerUnitLabel = new GUIContent("Metres per height unit", "The renderer's Height Scale: errors (heights) in metres. Read from a renderer drawing this grid, if any.");
+        static readonly GUIContent MetresPerUnitLabel = new GUIContent("Metres per height unit", "World metres per terrain height unit (a renderer's Height Scale times its Transform's y scale): errors in metres. Read from a renderer drawing this grid, if any; else as typed.");
         static readonly GUIContent TargetLabel = new GUIContent("Choose patches from a target error", "Fit with the fewest patches (rows follow the heightmap's aspect) whose error is at most the target.");
         static readonly GUIContent TargetErrorLabel = new GUIContent("Target error (m)", "The largest acceptable error, in metres.");
         static readonly GUIContent TargetKindLabel = new GUIContent("Error measured as", "Max: the worst sample. Rms: the root mean square over all samples.");
@@ -49,8 +50,8 @@ namespace GregoryTerrain.EditorTools
         [SerializeField] int rawWidth, rawHeight;
         [SerializeField] bool rawVoids;
         [SerializeField] RawRowOrder rawRowOrder = RawRowOrder.ByFileType;
-        [SerializeField] float sampleHeight = 0.1f;
-        [SerializeField] float metresPerHeightUnit = 1000f;
+        [SerializeField, FormerlySerializedAs("heightScale")] float sampleHeight = 0.1f;
+        [SerializeField, FormerlySerializedAs("widthMetres")] float metresPerHeightUnit = 1000f;   // as typed; a renderer drawing the asset overrides it
         [SerializeField] bool useTarget;
         [SerializeField] float targetMetres = 1f;
         [SerializeField] FitErrorKind targetKind = FitErrorKind.Max;
@@ -59,22 +60,35 @@ namespace GregoryTerrain.EditorTools
         Texture2D _errorTexture;
         string _errorLegend;
 
-        /// <summary>Metres per height unit: a renderer's that draws the asset in the open scenes, else typed.</summary>
+        GregoryTerrainRenderer[] _renderers;   // the loaded scenes' renderers; searched again when the hierarchy changes
+        double _unitMetres;                     // what the fit uses: a drawing renderer's, else metresPerHeightUnit
+
+        GregoryTerrainRenderer[] Renderers => _renderers ??= UnityEngine.Object.FindObjectsByType<GregoryTerrainRenderer>(FindObjectsSortMode.None);
+
+        void ForgetRenderers() => _renderers = null;
+
+        void OnEnable() => EditorApplication.hierarchyChanged += ForgetRenderers;
+
+        void OnFocus() => ForgetRenderers();
+
+        /// <summary>World metres per height unit: a renderer's that draws the asset in the loaded scenes, else as typed (kept).</summary>
         void DrawMetresPerHeightUnit()
         {
-            GregoryTerrainRenderer drawing = asset == null ? null
-                : UnityEngine.Object.FindObjectsByType<GregoryTerrainRenderer>(FindObjectsSortMode.None).FirstOrDefault(r => r.Grid == asset);
+            GregoryTerrainRenderer drawing = asset == null ? null : Renderers.FirstOrDefault(r => r != null && r.Grid == asset);
             if (drawing == null)
             {
                 metresPerHeightUnit = Mathf.Max(1e-3f, EditorGUILayout.FloatField(MetresPerUnitLabel, metresPerHeightUnit));
+                _unitMetres = metresPerHeightUnit;
                 return;
             }
-            metresPerHeightUnit = (float)drawing.WorldUnitsPerObjectUnit.y;
-            EditorGUILayout.LabelField(MetresPerUnitLabel, new GUIContent($"{metresPerHeightUnit:G4} ({drawing.name}'s Height Scale)"));
+            _unitMetres = drawing.WorldUnitsPerObjectUnit.y;
+            EditorGUILayout.LabelField(MetresPerUnitLabel, new GUIContent($"{_unitMetres:G4} m (from {drawing.name})",
+                $"{drawing.name}'s Height Scale times its Transform's y scale, used instead of the {metresPerHeightUnit:G4} typed here while it draws this grid."));
         }
 
         void OnDisable()
         {
+            EditorApplication.hierarchyChanged -= ForgetRenderers;
             if (_errorTexture != null) DestroyImmediate(_errorTexture);
         }
 
@@ -290,7 +304,7 @@ namespace GregoryTerrain.EditorTools
                 RegionFitResult fit = PatchRegionFit.Fit(asset.ToPatchGrid(), selection, heights, width, height, progress, cancel.Token);
                 PatchGridAssetUndo.ApplyEdit(asset, fit.Edit, $"Refit selection to {source}");
                 string filled = voids > 0 ? $" {voids} void samples were filled from their neighbours first." : "";
-                Report($"Refitted {selection} ({fit.Edit.Patches.Length} patches changed) to {source}: max error {fit.MaxError * metresPerHeightUnit:G3} m, RMS {fit.RmsError * metresPerHeightUnit:G3} m over the selection. The border with the other patches was kept.{filled}", MessageType.Info);
+                Report($"Refitted {selection} ({fit.Edit.Patches.Length} patches changed) to {source}: max error {fit.MaxError * _unitMetres:G3} m, RMS {fit.RmsError * _unitMetres:G3} m over the selection. The border with the other patches was kept.{filled}", MessageType.Info);
             }
             catch (OperationCanceledException) { Report("Refit cancelled; the grid was not changed.", MessageType.Warning); }
             catch (ArgumentException e) { Report($"{source}: {e.Message} The grid was not changed.", MessageType.Error); }
@@ -311,13 +325,13 @@ namespace GregoryTerrain.EditorTools
                 // Texture rows run bottom-up and RAW rows come south first (ReadSouthFirst): sample (c, r)
                 // lands at (c / (W-1), r / (H-1)) of the unit square, y = 0 the south edge, either way.
                 HeightmapFit fit = useTarget
-                    ? HeightmapFitter.FitToTarget(heights, width, height, targetMetres / metresPerHeightUnit, targetKind, MaxSide, progress, cancel.Token)
+                    ? HeightmapFitter.FitToTarget(heights, width, height, targetMetres / _unitMetres, targetKind, MaxSide, progress, cancel.Token)
                     : HeightmapFitter.Fit(heights, width, height, columns, rows, progress, cancel.Token);
                 Apply($"Fit patch grid to {source}", fit.Grid);
                 ShowErrorMap(fit);
                 string filled = voids > 0 ? $" {voids} void samples were filled from their neighbours first." : "";
-                Report($"Fitted {fit.Grid.Columns} x {fit.Grid.Rows} patches to {source}: max error {fit.MaxError * metresPerHeightUnit:G3} m, RMS {fit.RmsError * metresPerHeightUnit:G3} m ({fit.MaxError:G3} and {fit.RmsError:G3} terrain units).{filled}"
-                    + (useTarget && (targetKind == FitErrorKind.Max ? fit.MaxError : fit.RmsError) * metresPerHeightUnit > targetMetres ? $" The target was not reached at {MaxSide} columns." : ""),
+                Report($"Fitted {fit.Grid.Columns} x {fit.Grid.Rows} patches to {source}: max error {fit.MaxError * _unitMetres:G3} m, RMS {fit.RmsError * _unitMetres:G3} m ({fit.MaxError:G3} and {fit.RmsError:G3} terrain units).{filled}"
+                    + (useTarget && (targetKind == FitErrorKind.Max ? fit.MaxError : fit.RmsError) * _unitMetres > targetMetres ? $" The target was not reached at {MaxSide} columns." : ""),
                     MessageType.Info);
             }
             catch (OperationCanceledException) { Report("Fit cancelled; the grid was not changed.", MessageType.Warning); }
@@ -335,7 +349,7 @@ namespace GregoryTerrain.EditorTools
             _errorTexture = new Texture2D(map.Width, map.Height, TextureFormat.RGBA32, false);
             _errorTexture.LoadRawTextureData(map.ToRgba32(fit.MaxError));
             _errorTexture.Apply();
-            _errorLegend = $"Error map ({map.Width} x {map.Height} cells, each the worst sample in it): black 0, blue, yellow, red {fit.MaxError * metresPerHeightUnit:G3} m.";
+            _errorLegend = $"Error map ({map.Width} x {map.Height} cells, each the worst sample in it): black 0, blue, yellow, red {fit.MaxError * _unitMetres:G3} m.";
         }
 
         void EnforceG1()

@@ -48,6 +48,9 @@ namespace GregoryTerrain
 
         void OnEnable() { _cx = center.x; _cy = center.y; }
 
+        // Disabled, removed or undone: the renderer draws its saved Range again.
+        void OnDisable() { if (target) target.SyncRangeFromSerialized(); }
+
         void OnValidate() { _cx = center.x; _cy = center.y; }
 
         /// <summary>Zooms by <paramref name="levels"/> (positive = in) keeping the point at <paramref name="pivot01"/> of the view fixed.</summary>

@@ -45,6 +45,7 @@ namespace UnityEditor
     {
         public SerializedProperty FindProperty(string propertyPath) => null;                 // SR:SerializedObject.FindProperty
         public bool UpdateIfRequiredOrScript() => false;                                     // SR:SerializedObject.UpdateIfRequiredOrScript
+        public void Update() { }                                                             // SR:SerializedObject.Update
         public bool ApplyModifiedProperties() => false;                                      // SR:SerializedObject.ApplyModifiedProperties
         public bool isEditingMultipleObjects => false;                                       // SR:SerializedObject-isEditingMultipleObjects (get only)
         public void Dispose() { }                                                            // SR:SerializedObject.Dispose
@@ -56,6 +57,7 @@ namespace UnityEditor
         public int intValue { get => 0; set { } }                                            // SR:SerializedProperty-intValue
         public float floatValue { get => 0f; set { } }                                       // SR:SerializedProperty-floatValue
         public bool boolValue { get => false; set { } }                                      // SR:SerializedProperty-boolValue
+        public Object objectReferenceValue { get => null; set { } }                          // SR:SerializedProperty-objectReferenceValue
         public int enumValueIndex { get => 0; set { } }                                      // SR:SerializedProperty-enumValueIndex
         public string tooltip => null;                                                       // SR:SerializedProperty-tooltip (get only)
         public void Dispose() { }                                                            // SR:SerializedProperty.Dispose
@@ -88,6 +90,7 @@ namespace UnityEditor
         public static GUIContent BeginProperty(Rect totalPosition, GUIContent label, SerializedProperty property) => label; // SR:EditorGUI.BeginProperty
         public static void EndProperty() { }                                                 // SR:EditorGUI.EndProperty
         public static float FloatField(Rect position, GUIContent label, float value) => value; // SR:EditorGUI.FloatField
+        public static float DelayedFloatField(Rect position, GUIContent label, float value) => value; // SR:EditorGUI.DelayedFloatField
         public static float Slider(Rect position, GUIContent label, float value, float leftValue, float rightValue) => value; // SR:EditorGUI.Slider
         public static int Popup(Rect position, GUIContent label, int selectedIndex, GUIContent[] displayedOptions) => selectedIndex; // SR:EditorGUI.Popup
         public static void DrawPreviewTexture(Rect position, Texture image) { }              // SR:EditorGUI.DrawPreviewTexture
@@ -147,7 +150,11 @@ namespace UnityEditor
         public Camera camera => null;                                                        // SR:SceneView-camera
     }
 
-    public sealed class EditorApplication { public static double timeSinceStartup => 0.0; } // SR:EditorApplication-timeSinceStartup
+    public sealed class EditorApplication                                                    // SR:EditorApplication
+    {
+        public static double timeSinceStartup => 0.0;                                        // SR:EditorApplication-timeSinceStartup
+        public static event Action hierarchyChanged;                                         // SR:EditorApplication-hierarchyChanged
+    }
 
     public sealed partial class Handles                                                      // SR:Handles (sealed partial in 2022.3)
     {
