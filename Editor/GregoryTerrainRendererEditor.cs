@@ -93,10 +93,10 @@ namespace GregoryTerrain.EditorTools
         }
 
         static readonly GUIContent ViewModeLabel = new GUIContent("View mode", "Open world: from each camera's feet to the horizon (Horizon levels). " +
-            "Single range: the Range, or a Camera Range Controller's. Zoom: a Zoom Range Controller zooms into a fixed box of the terrain (it turns off Camera Range Controllers of this terrain).");
+            "Single range: the Range, or a Camera Range Controller's. Zoom: a Zoom Range Controller zooms into a fixed box (Camera Range Controllers turned off).");
         static readonly GUIContent[] ViewModeNames = { new GUIContent("Open world"), new GUIContent("Single range"), new GUIContent("Zoom") };
 
-        // The loaded scenes' range controllers, searched once per Layout event, not on every GUI event.
+        // Searched once per Layout event.
         ZoomRangeController[] _zooms;
         CameraRangeController[] _cameraRanges;
 
@@ -110,7 +110,7 @@ namespace GregoryTerrain.EditorTools
         TerrainViewMode ModeOf(GregoryTerrainRenderer r) =>
             RendererInspectorLayout.ModeOf(r.HorizonLevels, _zooms.Any(z => z != null && z.enabled && z.Target == r));
 
-        /// <summary>Horizon levels as a view mode, per selected renderer; renderers and controllers change in one Undo step.</summary>
+        /// <summary>Horizon levels as a view mode; one Undo step.</summary>
         void DrawViewMode()
         {
             SerializedProperty levels = serializedObject.FindProperty(RendererInspectorLayout.ViewModeField);
@@ -137,7 +137,6 @@ namespace GregoryTerrain.EditorTools
             Undo.CollapseUndoOperations(group);
         }
 
-        /// <summary>Each renderer's own Tiles made even and at least the minimum, written only where that changes them.</summary>
         static void MakeTilesOpenWorld(UnityEngine.Object renderer)
         {
             using var so = new SerializedObject(renderer);
@@ -148,12 +147,7 @@ namespace GregoryTerrain.EditorTools
             so.ApplyModifiedProperties();
         }
 
-        /// <summary>
-        /// Zoom: enables a Zoom Range Controller targeting the renderer (anywhere in the loaded scenes;
-        /// else adopts an empty one on its object, else adds one) and disables its Camera Range
-        /// Controllers, which would set the range every frame. Off: disables its Zoom Range Controllers,
-        /// whose OnDisable gives the saved Range back.
-        /// </summary>
+        /// <summary>Zoom: a controller targeting r enabled (else an empty one on r adopted, else added), its Camera Range Controllers off.</summary>
         void SetZoomController(GregoryTerrainRenderer r, bool on)
         {
             ZoomRangeController[] own = _zooms.Where(z => z != null && z.Target == r).ToArray();
@@ -169,10 +163,10 @@ namespace GregoryTerrain.EditorTools
             else Undo.AddComponent<ZoomRangeController>(r.gameObject).Target = r;
         }
 
-        // A range controller's fields, not the renderer's (RendererInspectorTests reads literals as the renderer's).
+        // Not the renderer's fields (RendererInspectorTests reads literals as its).
         const string BehaviourEnabled = "m_Enabled", ControllerTarget = "target";
 
-        /// <summary>Enabled (and Target) through a SerializedObject: recorded for Undo and as a prefab instance override.</summary>
+        // Through a SerializedObject: Undo and the prefab override recorded.
         static void SetSerialized(Behaviour b, bool enabled, GregoryTerrainRenderer newTarget)
         {
             using var so = new SerializedObject(b);
@@ -182,8 +176,7 @@ namespace GregoryTerrain.EditorTools
         }
 
         static readonly GUIContent QualityLabel = new GUIContent("Quality", "Sets Target pixel error, Max factor, Tiles, Noise octaves and " +
-            "Vertex evaluation in one Undo step: Low 16 px, Medium 8 px (a new terrain's), High 2 px, Ultra 0.5 px (largest error about 1 px). " +
-            "Ultra chooses Compute cache only where a Cache Shader is set; Open world keeps Vertex evaluation as it is.");
+            "Vertex evaluation: Low 16 px, Medium 8 px (a new terrain's), High 2 px, Ultra 0.5 px (largest error about 1 px; Compute cache if a Cache Shader is set).");
         static readonly GUIContent[] QualityNames = { new GUIContent("Low"), new GUIContent("Medium"), new GUIContent("High"), new GUIContent("Ultra"), new GUIContent("Custom") };
 
         void DrawQuality()
@@ -217,7 +210,7 @@ namespace GregoryTerrain.EditorTools
         /// A terrain-unit length typed and read in metres (stored unchanged, so scenes keep their look).
         /// False, and the stored field is drawn, when the selected renderers' scales differ.
         /// </summary>
-        readonly Dictionary<string, string> _refused = new Dictionary<string, string>();   // field -> why the last typed value was not stored
+        readonly Dictionary<string, string> _refused = new Dictionary<string, string>();
 
         bool MetresField(string name, TerrainLength kind, string text, float min, float max)
         {
@@ -231,7 +224,7 @@ namespace GregoryTerrain.EditorTools
             float metres = (float)RendererInspectorLayout.ToMetres(kind, p.floatValue, unit.y, unit.x);
             float typed = kind == TerrainLength.Height
                 ? EditorGUI.Slider(rect, label, metres, (float)(min * unit.y), (float)(max * unit.y))
-                : EditorGUI.DelayedFloatField(rect, label, metres);   // applied on Enter: typing 0.5 passes through 0
+                : EditorGUI.DelayedFloatField(rect, label, metres);   // typing 0.5 passes through 0
             if (EditorGUI.EndChangeCheck())
             {
                 string problem = kind == TerrainLength.CellsAcross ? RendererInspectorLayout.CellSizeProblem(text, typed) : null;

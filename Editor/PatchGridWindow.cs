@@ -33,7 +33,7 @@ namespace GregoryTerrain.EditorTools
         static readonly GUIContent RawRowsLabel = new GUIContent("RAW first row", "Which edge of the terrain the first row of the file is. By File Type: north for SRTM .hgt files, south for other RAW files (as Unity's Import Raw). North First is Unity's Flip Vertically.");
         static readonly GUIContent RawVoidLabel = new GUIContent("-32768 is no data", "Treat -32768 as a void (SRTM) and fill it from its neighbours before fitting.");
         static readonly GUIContent SampleHeightLabel = new GUIContent("Sample height (terrain units)", "Terrain height units of a full-scale sample (white, 65535), or per stored unit for signed 16-bit and float samples.");
-        static readonly GUIContent MetresPerUnitLabel = new GUIContent("Metres per height unit", "World metres per terrain height unit (a renderer's Height Scale times its Transform's y scale): errors in metres. Read from a renderer drawing this grid, if any; else as typed.");
+        static readonly GUIContent MetresPerUnitLabel = new GUIContent("Metres per height unit", "World metres per height unit (Height Scale x Transform y scale), for errors in metres. From a renderer drawing this grid, else typed.");
         static readonly GUIContent TargetLabel = new GUIContent("Choose patches from a target error", "Fit with the fewest patches (rows follow the heightmap's aspect) whose error is at most the target.");
         static readonly GUIContent TargetErrorLabel = new GUIContent("Target error (m)", "The largest acceptable error, in metres.");
         static readonly GUIContent TargetKindLabel = new GUIContent("Error measured as", "Max: the worst sample. Rms: the root mean square over all samples.");
@@ -51,7 +51,7 @@ namespace GregoryTerrain.EditorTools
         [SerializeField] bool rawVoids;
         [SerializeField] RawRowOrder rawRowOrder = RawRowOrder.ByFileType;
         [SerializeField, FormerlySerializedAs("heightScale")] float sampleHeight = 0.1f;
-        [SerializeField, FormerlySerializedAs("widthMetres")] float metresPerHeightUnit = 1000f;   // as typed; a renderer drawing the asset overrides it
+        [SerializeField, FormerlySerializedAs("widthMetres")] float metresPerHeightUnit = 1000f;
         [SerializeField] bool useTarget;
         [SerializeField] float targetMetres = 1f;
         [SerializeField] FitErrorKind targetKind = FitErrorKind.Max;
@@ -60,8 +60,8 @@ namespace GregoryTerrain.EditorTools
         Texture2D _errorTexture;
         string _errorLegend;
 
-        GregoryTerrainRenderer[] _renderers;   // the loaded scenes' renderers; searched again when the hierarchy changes
-        double _unitMetres;                     // what the fit uses: a drawing renderer's, else metresPerHeightUnit
+        GregoryTerrainRenderer[] _renderers;   // searched again when the hierarchy changes
+        double _unitMetres;                     // a drawing renderer's, else metresPerHeightUnit
 
         GregoryTerrainRenderer[] Renderers => _renderers ??= UnityEngine.Object.FindObjectsByType<GregoryTerrainRenderer>(FindObjectsSortMode.None);
 
@@ -71,7 +71,6 @@ namespace GregoryTerrain.EditorTools
 
         void OnFocus() => ForgetRenderers();
 
-        /// <summary>World metres per height unit: a renderer's that draws the asset in the loaded scenes, else as typed (kept).</summary>
         void DrawMetresPerHeightUnit()
         {
             GregoryTerrainRenderer drawing = asset == null ? null : Renderers.FirstOrDefault(r => r != null && r.Grid == asset);
@@ -83,7 +82,7 @@ namespace GregoryTerrain.EditorTools
             }
             _unitMetres = drawing.WorldUnitsPerObjectUnit.y;
             EditorGUILayout.LabelField(MetresPerUnitLabel, new GUIContent($"{_unitMetres:G4} m (from {drawing.name})",
-                $"{drawing.name}'s Height Scale times its Transform's y scale, used instead of the {metresPerHeightUnit:G4} typed here while it draws this grid."));
+                $"Used instead of the {metresPerHeightUnit:G4} typed, while {drawing.name} draws this grid."));
         }
 
         void OnDisable()

@@ -26,10 +26,8 @@ namespace GregoryTerrain
         [Tooltip("How far ahead of the camera (fraction of the side) the square's centre is pushed, so more of it lies in view.")]
         [SerializeField, Range(0f, 0.5f)] float lookAhead = 0.3f;
 
-        /// <summary>The terrain whose range follows the camera.</summary>
         internal GregoryTerrainRenderer Target => target;
 
-        // Disabled, removed or undone: the renderer draws its saved Range again.
         void OnDisable() { if (target) target.SyncRangeFromSerialized(); }
 
         void LateUpdate()

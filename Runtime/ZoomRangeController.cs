@@ -48,7 +48,6 @@ namespace GregoryTerrain
 
         void OnEnable() { _cx = center.x; _cy = center.y; }
 
-        // Disabled, removed or undone: the renderer draws its saved Range again.
         void OnDisable() { if (target) target.SyncRangeFromSerialized(); }
 
         void OnValidate() { _cx = center.x; _cy = center.y; }

@@ -111,7 +111,7 @@ namespace GregoryTerrain
             }
         }
 
-        /// <summary>The preset whose values these are; Vertex evaluation aside, which <see cref="PresetToWrite"/> may leave.</summary>
+        /// <summary>Vertex evaluation aside (<see cref="PresetToWrite"/>).</summary>
         public static QualityPreset? PresetOf(QualityValues v)
         {
             for (var p = QualityPreset.Low; p <= QualityPreset.Ultra; p++)
@@ -119,10 +119,7 @@ namespace GregoryTerrain
             return null;
         }
 
-        /// <summary>
-        /// A preset as written: Compute cache only with a Cache Shader set (else the domain stage
-        /// draws anyway, under a warning); in Open world Vertex evaluation is hidden and kept.
-        /// </summary>
+        /// <summary>Compute cache only with a Cache Shader; Open world's hidden Vertex evaluation kept.</summary>
         public static QualityValues PresetToWrite(QualityPreset p, QualityValues current, bool cacheShaderSet, bool openWorld)
         {
             QualityValues v = Preset(p);
@@ -130,7 +127,7 @@ namespace GregoryTerrain
             return cacheShaderSet ? v : v.WithVertexEvaluation(0);
         }
 
-        /// <summary>The selected renderers' View mode, or null when they differ (drawn as mixed).</summary>
+        /// <summary>Null when they differ.</summary>
         public static TerrainViewMode? CommonMode(IReadOnlyList<TerrainViewMode> modes)
         {
             for (int k = 1; k < modes.Count; k++)
@@ -138,9 +135,8 @@ namespace GregoryTerrain
             return modes.Count > 0 ? modes[0] : (TerrainViewMode?)null;
         }
 
-        /// <summary>Why a typed cell size is refused (null when it is positive).</summary>
         public static string CellSizeProblem(string label, double metres) =>
-            metres > 0.0 ? null : $"{label} must be above 0 m (typed {metres:G6}); the stored value was kept.";
+            metres > 0.0 ? null : $"{label} must be above 0 (typed {metres:G6}); value kept.";
 
         public static TerrainViewMode ModeOf(bool horizonLevels, bool zoomControlled) =>
             horizonLevels ? TerrainViewMode.OpenWorld : zoomControlled ? TerrainViewMode.Zoom : TerrainViewMode.SingleRange;
