@@ -17,8 +17,7 @@ namespace GregoryTerrain.EditorTools
     {
         int _selectedPatch = -1, _selectedSlot = -1;
         int _nearPatch = -1;   // the patch whose neighbourhood shows control-point buttons
-        // The in-view estimate evaluates up to 256 tiles' surface samples on the CPU: at most every
-        // EstimateSeconds, on Layout events, not on each of the inspector's many GUI events.
+        // The in-view estimate evaluates up to 256 tiles on the CPU: on Layout events, at most every EstimateSeconds.
         const double EstimateSeconds = 0.25;
         double _estimateTime = double.NegativeInfinity;
         string _estimateText = "";
@@ -206,10 +205,7 @@ namespace GregoryTerrain.EditorTools
 
         SerializedProperty P(string name) => serializedObject.FindProperty(name);
 
-        /// <summary>
-        /// A terrain-unit length typed and read in metres (stored unchanged, so scenes keep their look).
-        /// False, and the stored field is drawn, when the selected renderers' scales differ.
-        /// </summary>
+        /// <summary>A terrain-unit length shown in metres (stored unchanged); false when the selection's scales differ.</summary>
         readonly Dictionary<string, string> _refused = new Dictionary<string, string>();
 
         bool MetresField(string name, TerrainLength kind, string text, float min, float max)
@@ -237,10 +233,7 @@ namespace GregoryTerrain.EditorTools
             return true;
         }
 
-        /// <summary>
-        /// The noise and colour fields act only where the material's toggle is on; they stay editable
-        /// (settings kept for when it is turned on), with a note when it is off.
-        /// </summary>
+        /// <summary>Noise and colour act only with the material's toggle on: still editable, with a note.</summary>
         void KeywordOffNote(string keyword, string toggle)
         {
             if (serializedObject.isEditingMultipleObjects) return;
@@ -249,7 +242,7 @@ namespace GregoryTerrain.EditorTools
                 EditorGUILayout.HelpBox($"The material's {toggle} toggle is off: these settings have no effect.", MessageType.Info);
         }
 
-        /// <summary>A foldout header whose open state is kept per user across sessions, like Unity's own inspectors.</summary>
+        /// <summary>A foldout whose open state is kept per user.</summary>
         static void Section(string title, bool openByDefault, System.Action drawFields)
         {
             string key = FoldoutKeyPrefix + title;
@@ -322,11 +315,7 @@ namespace GregoryTerrain.EditorTools
         static void Line(PatchGridAsset grid, TerrainScenePoints points, int p, int a, int b) =>
             Handles.DrawLine(points.ToWorld(grid.GetControlPoint(p, a)), points.ToWorld(grid.GetControlPoint(p, b)));
 
-        /// <summary>
-        /// Buttons for the control points of the chosen patch and its eight neighbours only (180 at
-        /// most, not 20 for every patch of the grid): a click on the terrain chooses the patch under
-        /// the mouse, a click on a button picks that point for the move handle.
-        /// </summary>
+        /// <summary>Buttons for the chosen patch and its 8 neighbours only (180 at most); a click on the terrain chooses the patch, on a button the point.</summary>
         void EditControlPoints(GregoryTerrainRenderer r, PatchGridAsset grid, TerrainScenePoints points)
         {
             if (_nearPatch >= grid.PatchCount) _nearPatch = -1;
@@ -360,9 +349,7 @@ namespace GregoryTerrain.EditorTools
             PickPatchUnderMouse(r, grid);
         }
 
-        // After the handles: a click that a handle or button took (it holds the hot control, or used
-        // the event) is theirs; only a click on bare terrain picks the patch there, and none while
-        // the sculpt tool (whose OnToolGUI runs after this) paints.
+        // After the handles: only a click on bare terrain picks a patch, none while the sculpt tool paints.
         void PickPatchUnderMouse(GregoryTerrainRenderer r, PatchGridAsset grid)
         {
             Event e = Event.current;

@@ -11,11 +11,9 @@ using UnityEngine.Serialization;
 namespace GregoryTerrain.EditorTools
 {
     /// <summary>
-    /// Authoring window: makes an n x m grid, fits it by least squares to a heightmap (a readable
-    /// Texture2D, at full precision for 16-bit and float formats, or a RAW file in either byte order
-    /// or float) with a cancellable progress bar, optionally choosing the patch count from a target
-    /// error, shows where the error is as a heat map, and enforces G1 with Core's G1Builder. Every
-    /// change to the asset is one undo step.
+    /// Makes an n x m grid or fits one to a heightmap (readable Texture2D, full precision for 16-bit and
+    /// float, or RAW), cancellable, optionally from a target error; heat map of the error; G1 by
+    /// G1Builder. Each change to the asset is one Undo step.
     /// </summary>
     internal sealed class PatchGridWindow : EditorWindow
     {

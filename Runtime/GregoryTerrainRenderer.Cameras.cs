@@ -11,11 +11,7 @@ namespace GregoryTerrain
     // Scene view in Edit Mode, reflection probes, several cameras), which cameras draw, and the draw.
     public sealed partial class GregoryTerrainRenderer
     {
-        /// <summary>
-        /// Both callbacks are registered: a pipeline calls only its own. URP and HDRP call
-        /// <c>beginCameraRendering</c> before they cull a camera; the Built-in pipeline calls
-        /// <c>Camera.onPreCull</c>. A draw submitted there for that camera is part of its frame.
-        /// </summary>
+        /// <summary>Both registered, each pipeline calls its own: <c>beginCameraRendering</c> (URP, HDRP), <c>Camera.onPreCull</c> (Built-in).</summary>
         void RegisterCameraCallbacks()
         {
             RenderPipelineManager.beginCameraRendering += OnBeginCameraRendering;
@@ -75,11 +71,7 @@ namespace GregoryTerrain
                 Graphics.RenderPrimitives(rp, MeshTopology.Quads, 4 * tileCount, 1);
         }
 
-        /// <summary>
-        /// Whether <paramref name="cam"/> draws this terrain: never a preview camera; in the editor only
-        /// when its scene culling mask shares a bit with this GameObject's (<see cref="CameraSceneFilter"/>),
-        /// as Unity's own renderers (Prefab stages).
-        /// </summary>
+        /// <summary>Never a preview camera; in the editor only one whose scene culling mask shares a bit with ours (<see cref="CameraSceneFilter"/>; Prefab stages).</summary>
         bool DrawsIn(Camera cam)
         {
             if (cam.cameraType == CameraType.Preview) return false;

@@ -10,16 +10,11 @@ namespace GregoryTerrain
         PatchGrid _estimateGrid;
 
         /// <summary>
-        /// Triangles this renderer draws as <paramref name="cam"/> sees the terrain now, at the current
-        /// settings and range: each tile's factors from Core's mirror of the hull stage (or, drawing
-        /// from the vertex cache, of its kernel's integer factors), counted as the tessellator
-        /// triangulates (<see cref="TerrainTriangleEstimate"/>; the rig checks it against the GPU's
-        /// count). It shows what the target pixel error costs in a view. At most
-        /// <paramref name="maxTiles"/> tiles are evaluated (51 surface points each, on the CPU), an
-        /// even sample of them beyond that. Null when there is nothing to estimate: no grid uploaded
-        /// yet, invalid settings, the fallback (fixed grids: <see cref="EstimatedTriangleCount"/>),
-        /// Horizon levels (each camera's L levels and their seams are not mirrored here: the count
-        /// would be one range's), or a camera without pixels. With GT_SNOW the snow's culling allowance is left out.
+        /// Triangles drawn for <paramref name="cam"/> now: each tile's factors from Core's mirror of the
+        /// hull stage (or the cache kernel's), counted as the tessellator does (<see cref="TerrainTriangleEstimate"/>;
+        /// the rig checks it against the GPU). At most <paramref name="maxTiles"/> tiles evaluated, an even
+        /// sample beyond. Null without an uploaded grid, with invalid settings, the fallback, Horizon levels
+        /// (their seams are not mirrored) or a camera without pixels. GT_SNOW's culling allowance is left out.
         /// </summary>
         public TriangleEstimate? EstimateTrianglesInView(Camera cam, int maxTiles = 256)
         {

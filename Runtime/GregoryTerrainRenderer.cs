@@ -8,15 +8,12 @@ using UnityEditor;
 namespace GregoryTerrain
 {
     /// <summary>
-    /// Draws a <see cref="PatchGridAsset"/> with the GregoryTerrain/Terrain shader in one procedural draw
-    /// call per camera, from the camera's rendering callback (<c>beginCameraRendering</c> in URP/HDRP,
-    /// <c>Camera.onPreCull</c> in Built-in; Edit Mode too): M x M tiles over <see cref="Range"/> (or the
-    /// Horizon levels), each a 4-control-point patch the hull/domain stages tessellate. Only
-    /// <c>_Range</c> is sent every frame (<see cref="PerFrameTrafficBytes"/>); the grid, settings,
-    /// matrices, origin and a camera's tessellation view on change. Keywords it chooses go on a runtime copy of the material.
-    /// Files: this (settings, API, constants), <c>.Cameras</c> (the draw), <c>.DrawMaterial</c>,
-    /// <c>.Buffers</c>, <c>.VertexCache</c> (the compute pre-pass, <see cref="VertexCachePass"/>),
-    /// <c>.Levels</c>, <c>.Estimate</c>, <c>.Queries</c>. The manual: internals.md.
+    /// Draws a <see cref="PatchGridAsset"/> with GregoryTerrain/Terrain in one procedural draw per camera
+    /// (<c>beginCameraRendering</c> in URP/HDRP, <c>Camera.onPreCull</c> in Built-in; Edit Mode too):
+    /// M x M tessellated tiles over <see cref="Range"/> or the Horizon levels. Only <c>_Range</c> is sent
+    /// every frame (<see cref="PerFrameTrafficBytes"/>), the rest on change; keywords go on a runtime
+    /// copy of the material. Files: this, <c>.Cameras</c>, <c>.DrawMaterial</c>, <c>.Buffers</c>,
+    /// <c>.VertexCache</c>, <c>.Levels</c>, <c>.Estimate</c>, <c>.Queries</c>; internals.md.
     /// </summary>
     [ExecuteAlways]
     [DisallowMultipleComponent]
@@ -24,9 +21,8 @@ namespace GregoryTerrain
     public sealed partial class GregoryTerrainRenderer : MonoBehaviour
     {
         /// <summary>
-        /// Bytes this script sets per camera in the steady state: one float4, <c>_Range</c>, then one
-        /// Graphics.RenderPrimitives call; with the Compute cache too. Horizon levels add 20 float4 of
-        /// level ranges. What else is set, only on a change: index.md, "What is sent per frame".
+        /// Bytes set per camera in the steady state: <c>_Range</c>, one float4 (Compute cache too);
+        /// Horizon levels add 20 float4. The rest, on change only: index.md, "What is sent per frame".
         /// </summary>
         public const int PerFrameTrafficBytes = 16;
 
@@ -184,10 +180,9 @@ namespace GregoryTerrain
         }
 
         /// <summary>
-        /// For floating-origin applications: the world has moved by <paramref name="delta"/> and the
-        /// terrain moves with it, kept as a double offset rather than in the float Transform (4 mm
-        /// steps at 50 km); do not move the Transform as well. Queries and the collider follow it.
-        /// Throws ArgumentException unless <paramref name="delta"/> is finite.
+        /// Floating origin: the world moved by <paramref name="delta"/>; the terrain follows as a double
+        /// offset, not in the float Transform (4 mm steps at 50 km; do not move it too). Queries and the
+        /// collider follow. Throws ArgumentException unless <paramref name="delta"/> is finite.
         /// </summary>
         public void ShiftOrigin(Vector3 delta)
         {
@@ -200,10 +195,7 @@ namespace GregoryTerrain
         /// <summary>The sum of every <see cref="ShiftOrigin"/> so far, rounded to float (the renderer keeps it in double).</summary>
         public Vector3 WorldOriginOffset => new Vector3((float)_worldOffset.x, (float)_worldOffset.y, (float)_worldOffset.z);
 
-        /// <summary>
-        /// The terrain's world frame now: the Transform, <see cref="TerrainSize"/>, <see cref="HeightScale"/>
-        /// and the floating-origin offset, in double. Draw matrices, queries and the collider use it.
-        /// </summary>
+        /// <summary>Transform, <see cref="TerrainSize"/>, <see cref="HeightScale"/> and the origin offset, in double: for matrices, queries, the collider.</summary>
         internal TerrainWorldFrame WorldFrame
         {
             get
@@ -245,10 +237,7 @@ namespace GregoryTerrain
         /// <summary>Uniform factor (0 = adaptive); the Scene view's Uniform Factor Down / Up shortcuts (U / I by default) change it.</summary>
         public int UniformFactor { get => uniformFactor; set { uniformFactor = Mathf.Clamp(value, 0, 64); _settingsDirty = true; } }
 
-        /// <summary>
-        /// The drawn range. Throws ArgumentException (naming the field and value) unless it is finite,
-        /// non-empty and inside the unit square; the old range is then kept.
-        /// </summary>
+        /// <summary>The drawn range. Throws ArgumentException (field and value) unless finite, non-empty and in the unit square; the old one is kept.</summary>
         public TerrainRange Range
         {
             get => _range;
@@ -260,11 +249,7 @@ namespace GregoryTerrain
             }
         }
 
-        /// <summary>
-        /// Sets the drawn range for now without writing the serialized range: range controllers use
-        /// it in Edit Mode, so following a camera there neither marks the scene changed nor records an
-        /// Undo step (the saved range stays what the user set). Throws like <see cref="Range"/>.
-        /// </summary>
+        /// <summary>The drawn range, the serialized one left alone (range controllers in Edit Mode: no Undo, no scene change). Throws like <see cref="Range"/>.</summary>
         public void SetDrawnRange(TerrainRange value)
         {
             value.Validate("Range");
@@ -277,18 +262,10 @@ namespace GregoryTerrain
         /// <summary>True when this device has no tessellation shaders (Unity then skips the tessellated SubShaders).</summary>
         public static bool UsesFallback => !SystemInfo.supportsTessellationShaders;
 
-        /// <summary>
-        /// True when this renderer draws the vertex-shader fallback: the SubShader Unity picked is a
-        /// fallback one (its "GregoryTerrainDraw" tag, Material.GetTag without fallbacks), or, for a
-        /// shader without the tag, the device has no tessellation shaders.
-        /// </summary>
+        /// <summary>True when the vertex-shader fallback draws: the SubShader's "GregoryTerrainDraw" tag (Material.GetTag), else no tessellation on the device.</summary>
         public bool DrawsFallback => material != null ? ReadDrawMode() : UsesFallback;
 
-        /// <summary>
-        /// Triangles the current settings can produce at most (Core's TessellationPolicy: 2 F^2 per
-        /// tile drawn, F = the uniform factor, else maxFactor; the fallback grid's F without a tessellator).
-        /// What a camera's view draws: <see cref="EstimateTrianglesInView"/>.
-        /// </summary>
+        /// <summary>The most triangles these settings draw: 2 F^2 per tile, F the uniform factor, else maxFactor (fallback: its grid's). A view's: <see cref="EstimateTrianglesInView"/>.</summary>
         public double EstimatedTriangleCount => DrawnTileCount * TessellationPolicy.EstimateTriangleCount(1,
             DrawsFallback ? fallbackGridFactor : uniformFactor > 0 ? uniformFactor : maxFactor);
 
@@ -340,10 +317,7 @@ namespace GregoryTerrain
         /// <summary>True when the last frame drew from the vertex cache (GT_VERTEX_CACHE on).</summary>
         public bool UsesVertexCache => _usesCache;
 
-        /// <summary>
-        /// Why <see cref="VertexEvaluation.ComputeCache"/> is chosen but the domain stage draws
-        /// (no compute shaders, no cache shader, no LOD camera, ...), or null.
-        /// </summary>
+        /// <summary>Why Compute cache is chosen but the domain stage draws (no compute shaders, cache shader, LOD camera...), or null.</summary>
         public string VertexCacheFallbackReason => _cacheFallbackReason;
 
         /// <summary>
@@ -419,11 +393,7 @@ namespace GregoryTerrain
 
         // ---- drawing --------------------------------------------------------------------------------
 
-        /// <summary>
-        /// Brings the draw's state up to date before a camera draws: uploads, constants on change,
-        /// <c>_Range</c>, the vertex cache, the draw material. In the steady state only <c>_Range</c>
-        /// is set (<see cref="PerFrameTrafficBytes"/>); no allocation. False when nothing can be drawn.
-        /// </summary>
+        /// <summary>Uploads, constants on change, <c>_Range</c>, the vertex cache, the material: steady state only <c>_Range</c>, no allocation. False when nothing can be drawn.</summary>
         bool Prepare(Camera cam = null)
         {
             _setLastPrepare.Clear();
@@ -543,11 +513,7 @@ namespace GregoryTerrain
         void SetMatrix(int id, Matrix4x4 m) { _props.SetMatrix(id, m); _setLastPrepare.Add(id); }
         void SetBuffer(int id, GraphicsBuffer b) { _props.SetBuffer(id, b); _setLastPrepare.Add(id); }
 
-        /// <summary>
-        /// The property IDs the last draw's preparation set on the property block, in order
-        /// (<c>_Range</c> alone in the steady state; the Unity-side tests check it). Buffers bound by
-        /// the vertex cache pass are not listed.
-        /// </summary>
+        /// <summary>Property IDs the last preparation set, in order (<c>_Range</c> alone when steady; cache buffers not listed).</summary>
         internal System.Collections.Generic.IReadOnlyList<int> PropertiesSetLastPrepare => _setLastPrepare;
 
         /// <summary>The property ID of <c>_Range</c> (for the Unity-side tests).</summary>
@@ -590,11 +556,7 @@ namespace GregoryTerrain
             return fallback;
         }
 
-        /// <summary>
-        /// While a range origin is set the shaders output <c>S(q) - S(O)</c> (internals.md, "Deep-zoom
-        /// output"): the part left out, <see cref="TerrainVertex.OutputOffset(PatchGrid, TerrainParams, TerrainKeywords)"/>,
-        /// in double. True when it changed (the matrices must be sent again).
-        /// </summary>
+        /// <summary>With a range origin the shaders output <c>S(q) - S(O)</c>: S(O) in double (<see cref="TerrainVertex.OutputOffset(PatchGrid, TerrainParams, TerrainKeywords)"/>). True when it changed (matrices resent).</summary>
         bool UpdateOutputOffset()
         {
             TerrainKeywords keywords = NoiseKeywords();
@@ -626,11 +588,7 @@ namespace GregoryTerrain
                 && _origin.Equals(o._origin) && _noise.Equals(o._noise) && _octaves.Equals(o._octaves);
         }
 
-        /// <summary>
-        /// RenderPrimitives has no object matrix, so the adapters read ours: <c>T(worldOffset)
-        /// localToWorld S T(t)</c> and its inverse, formed in double (<see cref="TerrainWorldFrame.DrawMatrices"/>).
-        /// Sent only when the Transform, size, world offset or output offset changes.
-        /// </summary>
+        /// <summary>RenderPrimitives has no object matrix: ours, <c>T(worldOffset) localToWorld S T(t)</c> and inverse in double (<see cref="TerrainWorldFrame.DrawMatrices"/>), sent on change.</summary>
         void PushMatrices()
         {
             _pushedLocalToWorld = transform.localToWorldMatrix;

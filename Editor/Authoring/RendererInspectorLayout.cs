@@ -95,10 +95,7 @@ namespace GregoryTerrain
             return shown;
         }
 
-        /// <summary>
-        /// Medium is a new renderer's defaults; tiles even and at least 8 (Open world); Ultra's 0.5 px is
-        /// the manual's advice for a largest error of about 1 px, its many vertices cached.
-        /// </summary>
+        /// <summary>Medium: a new renderer's defaults; tiles even, at least 8; Ultra's 0.5 px: the manual's advice for about 1 px.</summary>
         public static QualityValues Preset(QualityPreset p)
         {
             switch (p)
