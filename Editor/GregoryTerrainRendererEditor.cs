@@ -1,4 +1,6 @@
 using System;
+using System.Collections.Generic;
+using System.Linq;
 using GregoryTerrain;
 using UnityEditor;
 using UnityEngine;
@@ -6,19 +8,16 @@ using UnityEngine;
 namespace GregoryTerrain.EditorTools
 {
     /// <summary>
-    /// Renderer inspector: readouts (triangles in view and at most, vertex cache memory), help boxes for
-    /// invalid settings and fallbacks, then the settings in foldouts (open state kept per user in
-    /// EditorPrefs), each field shown only where it has an effect. Scene-view tools: control points and
-    /// patch wireframe drawn with Handles, control points moved with position handles (undoable).
-    /// The Scene-view keys are shortcuts of the Shortcut Manager (GregoryTerrainShortcuts).
+    /// Renderer inspector: readouts, help boxes, then the settings in foldouts (open state kept in
+    /// EditorPrefs), each field where it has an effect. Scene view: control points and patch wireframe
+    /// (Handles), points moved with position handles (undoable); keys in GregoryTerrainShortcuts.
     /// </summary>
     [CustomEditor(typeof(GregoryTerrainRenderer)), CanEditMultipleObjects]
     internal sealed class GregoryTerrainRendererEditor : Editor
     {
         int _selectedPatch = -1, _selectedSlot = -1;
         int _nearPatch = -1;   // the patch whose neighbourhood shows control-point buttons
-        // The in-view estimate evaluates up to 256 tiles' surface samples on the CPU: at most every
-        // EstimateSeconds, on Layout events, not on each of the inspector's many GUI events.
+        // The in-view estimate evaluates up to 256 tiles on the CPU: on Layout events, at most every EstimateSeconds.
         const double EstimateSeconds = 0.25;
         double _estimateTime = double.NegativeInfinity;
         string _estimateText = "";
@@ -29,6 +28,7 @@ namespace GregoryTerrain.EditorTools
         public override void OnInspectorGUI()
         {
             serializedObject.UpdateIfRequiredOrScript();
+            FindRangeControllers();
             if (serializedObject.isEditingMultipleObjects)
                 EditorGUILayout.HelpBox("Select one renderer to see its triangle counts and warnings.", MessageType.Info);
             else
@@ -43,9 +43,9 @@ namespace GregoryTerrain.EditorTools
             EditorGUILayout.LabelField(new GUIContent("Triangles in view", "Triangles drawn for the LOD camera (else the main or Scene view camera) at the current settings. Up to 256 tiles are evaluated."),
                 new GUIContent(InViewText(r)));
             if (_estimateCapped != null) EditorGUILayout.HelpBox(_estimateCapped, MessageType.Info);
-            EditorGUILayout.LabelField(new GUIContent("Most triangles", "The most triangles these settings can draw, whatever the view."),
-                new GUIContent(r.EstimatedTriangleCount.ToString("N0")));
-            bool cache = r.VertexEvaluation == VertexEvaluation.ComputeCache;
+            EditorGUILayout.LabelField(new GUIContent("Most triangles", "The most triangles these settings can draw, whatever the view (with Horizon levels, every level's tiles)."),
+                new GUIContent($"{r.EstimatedTriangleCount:N0} ({r.DrawnTileCount:N0} tiles{(r.LevelCount > 0 ? $" in {r.LevelCount} levels" : "")})"));
+            bool cache = r.VertexEvaluation == VertexEvaluation.ComputeCache && r.LevelCount == 0;   // the levels draw through the domain stage
             if (cache)
                 EditorGUILayout.LabelField(new GUIContent("Vertex cache memory", "GPU memory the Compute cache's buffers take at these settings."),
                     new GUIContent(FormatBytes(r.VertexCacheBytes)));
@@ -63,49 +63,177 @@ namespace GregoryTerrain.EditorTools
                 EditorGUILayout.HelpBox("Assign a material that uses GregoryTerrain/Terrain.", MessageType.Warning);
         }
 
-        // The serialized field names are the scenes' data: never rename them here or in the renderer.
+        // The serialized field names are the scenes' data: never rename them. What shows where: RendererInspectorLayout.
         void DrawSettings()
         {
-            SerializedProperty uniformFactor = serializedObject.FindProperty("uniformFactor");
-            SerializedProperty vertexEvaluation = serializedObject.FindProperty("vertexEvaluation");
-            // With several renderers selected and differing values, show what any of them may use.
-            bool mayAdapt = uniformFactor.hasMultipleDifferentValues || uniformFactor.intValue == 0;
-            bool mayCache = vertexEvaluation.hasMultipleDifferentValues ||
-                            vertexEvaluation.intValue == (int)VertexEvaluation.ComputeCache;
-
-            Section("Content", true, () => Fields("grid", "material", "terrainSize", "heightScale", "range"));
-            Section("Tessellation", true, () =>
-            {
-                Fields("tiles", "uniformFactor", "horizonLevels");
-                if (mayAdapt) Fields("maxFactor", "targetPixelError", "anchorTiles");
-                Fields("fallbackGridFactor");
-            });
-            Section("Vertex evaluation", true, () =>
-            {
-                Fields("vertexEvaluation");
-                if (mayCache) Fields("cacheShader", "lodCamera");
-            });
-            Section("Noise and colour", false, () =>
-            {
-                KeywordOffNote(ShaderIds.NoiseKeyword, "Noise detail");
-                Fields("noiseAmplitude", "noiseFrequency", "noiseAlpha", "noiseBeta", "noiseOctaves", "noiseVerticesAcross");
-                KeywordOffNote(ShaderIds.HeightColorKeyword, "Height colour");
-                Fields("colorGamma", "colorNoiseAmplitude", "colorNoiseFrequency", "colorLow", "colorHigh");
-            });
-            Section("Lighting", false, () => Fields("shadowCasting", "receiveShadows"));
-            Section("Debug", false, () => Fields("debugShowControlPoints", "debugShowPatchWireframe"));
+            var contexts = targets.Select(t => ContextOf((GregoryTerrainRenderer)t)).ToList();
+            foreach (var (title, open, fields) in RendererInspectorLayout.Sections)
+                Section(title, open, () =>
+                {
+                    if (title == "Noise and colour") KeywordOffNote(ShaderIds.NoiseKeyword, "Noise detail");
+                    foreach (string name in fields)
+                    {
+                        if (!RendererInspectorLayout.ShowsForAny(name, contexts)) continue;
+                        if (name == "colorGamma") KeywordOffNote(ShaderIds.HeightColorKeyword, "Height colour");
+                        DrawField(name);
+                    }
+                });
         }
 
-        void Fields(params string[] names)
+        InspectorContext ContextOf(GregoryTerrainRenderer r) => new InspectorContext(ModeOf(r),
+            r.UniformFactor == 0, r.VertexEvaluation == VertexEvaluation.ComputeCache, r.DrawsFallback);
+
+        void DrawField(string name)
         {
-            foreach (string name in names)
-                EditorGUILayout.PropertyField(serializedObject.FindProperty(name));
+            if (name == RendererInspectorLayout.ViewModeField) { DrawViewMode(); DrawQuality(); return; }
+            foreach (var m in RendererInspectorLayout.MetreFields)
+                if (m.field == name && MetresField(m.field, m.kind, m.label, m.min, m.max)) return;
+            EditorGUILayout.PropertyField(serializedObject.FindProperty(name));
         }
 
-        /// <summary>
-        /// The noise and colour fields act only where the material's toggle is on; they stay editable
-        /// (settings kept for when it is turned on), with a note when it is off.
-        /// </summary>
+        static readonly GUIContent ViewModeLabel = new GUIContent("View mode", "Open world: from each camera's feet to the horizon (Horizon levels). " +
+            "Single range: the Range, or a Camera Range Controller's. Zoom: a Zoom Range Controller zooms into a fixed box (Camera Range Controllers turned off).");
+        static readonly GUIContent[] ViewModeNames = { new GUIContent("Open world"), new GUIContent("Single range"), new GUIContent("Zoom") };
+
+        // Searched once per Layout event.
+        ZoomRangeController[] _zooms;
+        CameraRangeController[] _cameraRanges;
+
+        void FindRangeControllers()
+        {
+            if (Event.current.type != EventType.Layout && _zooms != null) return;
+            _zooms = UnityEngine.Object.FindObjectsByType<ZoomRangeController>(FindObjectsSortMode.None);
+            _cameraRanges = UnityEngine.Object.FindObjectsByType<CameraRangeController>(FindObjectsSortMode.None);
+        }
+
+        TerrainViewMode ModeOf(GregoryTerrainRenderer r) =>
+            RendererInspectorLayout.ModeOf(r.HorizonLevels, _zooms.Any(z => z != null && z.enabled && z.Target == r));
+
+        /// <summary>Horizon levels as a view mode; one Undo step.</summary>
+        void DrawViewMode()
+        {
+            SerializedProperty levels = serializedObject.FindProperty(RendererInspectorLayout.ViewModeField);
+            TerrainViewMode? mode = RendererInspectorLayout.CommonMode(targets.Select(t => ModeOf((GregoryTerrainRenderer)t)).ToList());
+            Rect rect = EditorGUILayout.GetControlRect();
+            GUIContent label = EditorGUI.BeginProperty(rect, ViewModeLabel, levels);
+            EditorGUI.showMixedValue = mode == null;
+            EditorGUI.BeginChangeCheck();
+            var chosen = (TerrainViewMode)EditorGUI.Popup(rect, label, mode.HasValue ? (int)mode.Value : -1, ViewModeNames);
+            EditorGUI.showMixedValue = false;
+            bool changed = EditorGUI.EndChangeCheck();
+            EditorGUI.EndProperty();
+            if (!changed || chosen < TerrainViewMode.OpenWorld) return;
+            Undo.SetCurrentGroupName("View mode " + ViewModeNames[(int)chosen].text);
+            int group = Undo.GetCurrentGroup();
+            levels.boolValue = chosen == TerrainViewMode.OpenWorld;
+            serializedObject.ApplyModifiedProperties();
+            foreach (UnityEngine.Object t in targets)
+            {
+                if (chosen == TerrainViewMode.OpenWorld) MakeTilesOpenWorld(t);
+                SetZoomController((GregoryTerrainRenderer)t, chosen == TerrainViewMode.Zoom);
+            }
+            serializedObject.Update();
+            Undo.CollapseUndoOperations(group);
+        }
+
+        static void MakeTilesOpenWorld(UnityEngine.Object renderer)
+        {
+            using var so = new SerializedObject(renderer);
+            SerializedProperty tiles = so.FindProperty("tiles");
+            int open = RendererInspectorLayout.TilesForOpenWorld(tiles.intValue);
+            if (open == tiles.intValue) return;
+            tiles.intValue = open;
+            so.ApplyModifiedProperties();
+        }
+
+        /// <summary>Zoom: a controller targeting r enabled (else an empty one on r adopted, else added), its Camera Range Controllers off.</summary>
+        void SetZoomController(GregoryTerrainRenderer r, bool on)
+        {
+            ZoomRangeController[] own = _zooms.Where(z => z != null && z.Target == r).ToArray();
+            if (!on)
+            {
+                foreach (ZoomRangeController z in own) SetSerialized(z, false, null);
+                return;
+            }
+            foreach (CameraRangeController c in _cameraRanges.Where(c => c != null && c.enabled && c.Target == r)) SetSerialized(c, false, null);
+            if (own.Length > 0) { SetSerialized(own[0], true, null); return; }
+            ZoomRangeController empty = r.GetComponents<ZoomRangeController>().FirstOrDefault(z => z.Target == null);
+            if (empty != null) SetSerialized(empty, true, r);
+            else Undo.AddComponent<ZoomRangeController>(r.gameObject).Target = r;
+        }
+
+        // Not the renderer's fields (RendererInspectorTests reads literals as its).
+        const string BehaviourEnabled = "m_Enabled", ControllerTarget = "target";
+
+        // Through a SerializedObject: Undo and the prefab override recorded.
+        static void SetSerialized(Behaviour b, bool enabled, GregoryTerrainRenderer newTarget)
+        {
+            using var so = new SerializedObject(b);
+            so.FindProperty(BehaviourEnabled).boolValue = enabled;
+            if (newTarget != null) so.FindProperty(ControllerTarget).objectReferenceValue = newTarget;
+            so.ApplyModifiedProperties();
+        }
+
+        static readonly GUIContent QualityLabel = new GUIContent("Quality", "Sets Target pixel error, Max factor, Tiles, Noise octaves and " +
+            "Vertex evaluation: Low 16 px, Medium 8 px (a new terrain's), High 2 px, Ultra 0.5 px (largest error about 1 px; Compute cache if a Cache Shader is set).");
+        static readonly GUIContent[] QualityNames = { new GUIContent("Low"), new GUIContent("Medium"), new GUIContent("High"), new GUIContent("Ultra"), new GUIContent("Custom") };
+
+        void DrawQuality()
+        {
+            SerializedProperty[] p = { P("targetPixelError"), P("maxFactor"), P("tiles"), P("noiseOctaves"), P("vertexEvaluation") };
+            QualityPreset? now = RendererInspectorLayout.PresetOf(new QualityValues(p[0].floatValue, p[1].floatValue, p[2].intValue, p[3].intValue, p[4].intValue));
+            EditorGUI.showMixedValue = p.Any(x => x.hasMultipleDifferentValues);
+            EditorGUI.BeginChangeCheck();
+            int chosen = EditorGUILayout.Popup(QualityLabel, now.HasValue ? (int)now.Value : 4, QualityNames);
+            EditorGUI.showMixedValue = false;
+            if (!EditorGUI.EndChangeCheck() || chosen == 4) return;
+            Undo.SetCurrentGroupName("Quality " + QualityNames[chosen].text);
+            QualityValues v = RendererInspectorLayout.Preset((QualityPreset)chosen);
+            // Applied with the inspector's other changes at the end of OnInspectorGUI: one Undo step.
+            p[0].floatValue = v.targetPixelError; p[1].floatValue = v.maxFactor; p[2].intValue = v.tiles; p[3].intValue = v.noiseOctaves;
+            foreach (UnityEngine.Object t in targets)
+            {
+                var r = (GregoryTerrainRenderer)t;
+                int evaluation = RendererInspectorLayout.PresetToWrite((QualityPreset)chosen, new QualityValues(0f, 0f, 0, 0, (int)r.VertexEvaluation),
+                    r.CacheShader != null, r.HorizonLevels).vertexEvaluation;
+                if (evaluation == (int)r.VertexEvaluation) continue;
+                using var so = new SerializedObject(t);
+                so.FindProperty("vertexEvaluation").intValue = evaluation;
+                so.ApplyModifiedProperties();
+            }
+        }
+
+        SerializedProperty P(string name) => serializedObject.FindProperty(name);
+
+        /// <summary>A terrain-unit length shown in metres (stored unchanged); false when the selection's scales differ.</summary>
+        readonly Dictionary<string, string> _refused = new Dictionary<string, string>();
+
+        bool MetresField(string name, TerrainLength kind, string text, float min, float max)
+        {
+            Double3 unit = ((GregoryTerrainRenderer)target).WorldUnitsPerObjectUnit;
+            if (targets.Any(t => !((GregoryTerrainRenderer)t).WorldUnitsPerObjectUnit.Equals(unit))) return false;
+            SerializedProperty p = P(name);
+            Rect rect = EditorGUILayout.GetControlRect();
+            GUIContent label = EditorGUI.BeginProperty(rect, new GUIContent(text, $"{p.tooltip} Stored: {p.floatValue:G4}; it scales with the terrain."), p);
+            EditorGUI.showMixedValue = p.hasMultipleDifferentValues;
+            EditorGUI.BeginChangeCheck();
+            float metres = (float)RendererInspectorLayout.ToMetres(kind, p.floatValue, unit.y, unit.x);
+            float typed = kind == TerrainLength.Height
+                ? EditorGUI.Slider(rect, label, metres, (float)(min * unit.y), (float)(max * unit.y))
+                : EditorGUI.DelayedFloatField(rect, label, metres);   // typing 0.5 passes through 0
+            if (EditorGUI.EndChangeCheck())
+            {
+                string problem = kind == TerrainLength.CellsAcross ? RendererInspectorLayout.CellSizeProblem(text, typed) : null;
+                if (problem == null) { _refused.Remove(name); p.floatValue = RendererInspectorLayout.ClampedFromMetres(kind, typed, unit.y, unit.x, min, max); }
+                else _refused[name] = problem;
+            }
+            EditorGUI.showMixedValue = false;
+            EditorGUI.EndProperty();
+            if (_refused.TryGetValue(name, out string refused)) EditorGUILayout.HelpBox(refused, MessageType.Warning);
+            return true;
+        }
+
+        /// <summary>Noise and colour act only with the material's toggle on: still editable, with a note.</summary>
         void KeywordOffNote(string keyword, string toggle)
         {
             if (serializedObject.isEditingMultipleObjects) return;
@@ -114,7 +242,7 @@ namespace GregoryTerrain.EditorTools
                 EditorGUILayout.HelpBox($"The material's {toggle} toggle is off: these settings have no effect.", MessageType.Info);
         }
 
-        /// <summary>A foldout header whose open state is kept per user across sessions, like Unity's own inspectors.</summary>
+        /// <summary>A foldout whose open state is kept per user.</summary>
         static void Section(string title, bool openByDefault, System.Action drawFields)
         {
             string key = FoldoutKeyPrefix + title;
@@ -139,7 +267,9 @@ namespace GregoryTerrain.EditorTools
             if (cam == null && SceneView.lastActiveSceneView != null) cam = SceneView.lastActiveSceneView.camera;
             TriangleEstimate? e = cam != null ? r.EstimateTrianglesInView(cam) : null;
             if (cam == null) _estimateText = "no camera";
-            else if (e == null) _estimateText = r.DrawsFallback ? "fallback: see Most triangles" : "(nothing drawn yet)";
+            else if (e == null) _estimateText = r.DrawsFallback ? "fallback: see Most triangles"
+                : r.LevelCount > 0 ? $"not estimated with Horizon levels ({r.LevelCount} levels, {r.DrawnTileCount:N0} tiles): see Most triangles"
+                : "(nothing drawn yet)";
             else
             {
                 TriangleEstimate v = e.Value;
@@ -147,7 +277,7 @@ namespace GregoryTerrain.EditorTools
                 _estimateText = $"{v.triangles:N0} ({cam.name}: {v.tilesSampledDrawn} of {v.tilesSampled} tiles drawn{sample})";
                 // Tiles held at the max factor may miss the target: more, smaller tiles need smaller factors.
                 if (v.tilesSampledAtMaxFactor > 0)
-                    _estimateCapped = $"{v.tilesSampledAtMaxFactor} of the {v.tilesSampledDrawn} tiles evaluated and drawn are held at the max factor: the target pixel error may not hold there. More tiles (Tiles M) need smaller factors; fewer, larger tiles draw the same triangles faster until they reach it.";
+                    _estimateCapped = $"{v.tilesSampledAtMaxFactor} of the {v.tilesSampledDrawn} tiles evaluated and drawn are held at the max factor: the target pixel error may not hold there. More tiles need smaller factors.";
             }
             return _estimateText;
         }
@@ -185,11 +315,7 @@ namespace GregoryTerrain.EditorTools
         static void Line(PatchGridAsset grid, TerrainScenePoints points, int p, int a, int b) =>
             Handles.DrawLine(points.ToWorld(grid.GetControlPoint(p, a)), points.ToWorld(grid.GetControlPoint(p, b)));
 
-        /// <summary>
-        /// Buttons for the control points of the chosen patch and its eight neighbours only (180 at
-        /// most, not 20 for every patch of the grid): a click on the terrain chooses the patch under
-        /// the mouse, a click on a button picks that point for the move handle.
-        /// </summary>
+        /// <summary>Buttons for the chosen patch and its 8 neighbours only (180 at most); a click on the terrain chooses the patch, on a button the point.</summary>
         void EditControlPoints(GregoryTerrainRenderer r, PatchGridAsset grid, TerrainScenePoints points)
         {
             if (_nearPatch >= grid.PatchCount) _nearPatch = -1;
@@ -223,9 +349,7 @@ namespace GregoryTerrain.EditorTools
             PickPatchUnderMouse(r, grid);
         }
 
-        // After the handles: a click that a handle or button took (it holds the hot control, or used
-        // the event) is theirs; only a click on bare terrain picks the patch there, and none while
-        // the sculpt tool (whose OnToolGUI runs after this) paints.
+        // After the handles: only a click on bare terrain picks a patch, none while the sculpt tool paints.
         void PickPatchUnderMouse(GregoryTerrainRenderer r, PatchGridAsset grid)
         {
             Event e = Event.current;

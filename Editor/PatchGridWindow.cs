@@ -1,19 +1,19 @@
 using System;
 using System.IO;
+using System.Linq;
 using System.Threading;
 using GregoryTerrain;
 using UnityEditor;
 using UnityEngine;
 using UnityEngine.Experimental.Rendering;
+using UnityEngine.Serialization;
 
 namespace GregoryTerrain.EditorTools
 {
     /// <summary>
-    /// Authoring window: makes an n x m grid, fits it by least squares to a heightmap (a readable
-    /// Texture2D, at full precision for 16-bit and float formats, or a RAW file in either byte order
-    /// or float) with a cancellable progress bar, optionally choosing the patch count from a target
-    /// error, shows where the error is as a heat map, and enforces G1 with Core's G1Builder. Every
-    /// change to the asset is one undo step.
+    /// Makes an n x m grid or fits one to a heightmap (readable Texture2D, full precision for 16-bit and
+    /// float, or RAW), cancellable, optionally from a target error; heat map of the error; G1 by
+    /// G1Builder. Each change to the asset is one Undo step.
     /// </summary>
     internal sealed class PatchGridWindow : EditorWindow
     {
@@ -30,8 +30,8 @@ namespace GregoryTerrain.EditorTools
         static readonly GUIContent RawSizeLabel = new GUIContent("RAW width x height", "Samples per row and rows. 0 x 0 reads a square file's size from its length; with one given, the other follows.");
         static readonly GUIContent RawRowsLabel = new GUIContent("RAW first row", "Which edge of the terrain the first row of the file is. By File Type: north for SRTM .hgt files, south for other RAW files (as Unity's Import Raw). North First is Unity's Flip Vertically.");
         static readonly GUIContent RawVoidLabel = new GUIContent("-32768 is no data", "Treat -32768 as a void (SRTM) and fill it from its neighbours before fitting.");
-        static readonly GUIContent HeightScaleLabel = new GUIContent("Height scale", "Terrain units of height for a full-scale sample (white, 65535), or per stored unit for signed 16-bit and float samples.");
-        static readonly GUIContent WidthMetresLabel = new GUIContent("Terrain width (m)", "Metres the terrain's x side spans in the scene (the renderer's scale); used to report errors in metres.");
+        static readonly GUIContent SampleHeightLabel = new GUIContent("Sample height (terrain units)", "Terrain height units of a full-scale sample (white, 65535), or per stored unit for signed 16-bit and float samples.");
+        static readonly GUIContent MetresPerUnitLabel = new GUIContent("Metres per height unit", "World metres per height unit (Height Scale x Transform y scale), for errors in metres. From a renderer drawing this grid, else typed.");
         static readonly GUIContent TargetLabel = new GUIContent("Choose patches from a target error", "Fit with the fewest patches (rows follow the heightmap's aspect) whose error is at most the target.");
         static readonly GUIContent TargetErrorLabel = new GUIContent("Target error (m)", "The largest acceptable error, in metres.");
         static readonly GUIContent TargetKindLabel = new GUIContent("Error measured as", "Max: the worst sample. Rms: the root mean square over all samples.");
@@ -48,8 +48,8 @@ namespace GregoryTerrain.EditorTools
         [SerializeField] int rawWidth, rawHeight;
         [SerializeField] bool rawVoids;
         [SerializeField] RawRowOrder rawRowOrder = RawRowOrder.ByFileType;
-        [SerializeField] float heightScale = 0.1f;
-        [SerializeField] float widthMetres = 1000f;
+        [SerializeField, FormerlySerializedAs("heightScale")] float sampleHeight = 0.1f;
+        [SerializeField, FormerlySerializedAs("widthMetres")] float metresPerHeightUnit = 1000f;
         [SerializeField] bool useTarget;
         [SerializeField] float targetMetres = 1f;
         [SerializeField] FitErrorKind targetKind = FitErrorKind.Max;
@@ -58,8 +58,34 @@ namespace GregoryTerrain.EditorTools
         Texture2D _errorTexture;
         string _errorLegend;
 
+        GregoryTerrainRenderer[] _renderers;   // searched again when the hierarchy changes
+        double _unitMetres;                     // a drawing renderer's, else metresPerHeightUnit
+
+        GregoryTerrainRenderer[] Renderers => _renderers ??= UnityEngine.Object.FindObjectsByType<GregoryTerrainRenderer>(FindObjectsSortMode.None);
+
+        void ForgetRenderers() => _renderers = null;
+
+        void OnEnable() => EditorApplication.hierarchyChanged += ForgetRenderers;
+
+        void OnFocus() => ForgetRenderers();
+
+        void DrawMetresPerHeightUnit()
+        {
+            GregoryTerrainRenderer drawing = asset == null ? null : Renderers.FirstOrDefault(r => r != null && r.Grid == asset);
+            if (drawing == null)
+            {
+                metresPerHeightUnit = Mathf.Max(1e-3f, EditorGUILayout.FloatField(MetresPerUnitLabel, metresPerHeightUnit));
+                _unitMetres = metresPerHeightUnit;
+                return;
+            }
+            _unitMetres = drawing.WorldUnitsPerObjectUnit.y;
+            EditorGUILayout.LabelField(MetresPerUnitLabel, new GUIContent($"{_unitMetres:G4} m (from {drawing.name})",
+                $"Used instead of the {metresPerHeightUnit:G4} typed, while {drawing.name} draws this grid."));
+        }
+
         void OnDisable()
         {
+            EditorApplication.hierarchyChanged -= ForgetRenderers;
             if (_errorTexture != null) DestroyImmediate(_errorTexture);
         }
 
@@ -68,8 +94,8 @@ namespace GregoryTerrain.EditorTools
             asset = (PatchGridAsset)EditorGUILayout.ObjectField(AssetLabel, asset, typeof(PatchGridAsset), false);
             columns = Mathf.Clamp(EditorGUILayout.IntField(ColumnsLabel, columns), 1, MaxSide);
             rows = Mathf.Clamp(EditorGUILayout.IntField(RowsLabel, rows), 1, MaxSide);
-            heightScale = EditorGUILayout.FloatField(HeightScaleLabel, heightScale);
-            widthMetres = Mathf.Max(1e-3f, EditorGUILayout.FloatField(WidthMetresLabel, widthMetres));
+            sampleHeight = EditorGUILayout.FloatField(SampleHeightLabel, sampleHeight);
+            DrawMetresPerHeightUnit();
             useTarget = EditorGUILayout.Toggle(TargetLabel, useTarget);
             if (useTarget)
             {
@@ -170,7 +196,7 @@ namespace GregoryTerrain.EditorTools
                 for (int k = 0; k < pixels.Length; k++) heights[k] = pixels[k].grayscale;
                 precision = $"{heightmap.format} read as grey: 8 bits at most; import 16-bit PNGs as R16 and EXRs as RFloat or RHalf to keep their precision";
             }
-            for (int k = 0; k < heights.Length; k++) heights[k] *= heightScale;
+            for (int k = 0; k < heights.Length; k++) heights[k] *= sampleHeight;
             source = $"'{heightmap.name}' ({precision})";
             return true;
         }
@@ -247,7 +273,7 @@ namespace GregoryTerrain.EditorTools
             catch (IOException e) { Report($"{name}: {e.Message}", MessageType.Error); return false; }
             catch (ArgumentException e) { Report(e.Message, MessageType.Error); return false; }
             bool unsigned16 = rawFormat == RawSampleFormat.UInt16LittleEndian || rawFormat == RawSampleFormat.UInt16BigEndian;
-            double scale = unsigned16 ? heightScale / 65535.0 : heightScale;
+            double scale = unsigned16 ? sampleHeight / 65535.0 : sampleHeight;
             for (int k = 0; k < heights.Length; k++) heights[k] *= scale;
             source = $"{name} ({w} x {h}, {rawFormat}, first row {(RawHeightmap.FirstRowIsNorth(name, rawRowOrder) ? "north" : "south")})";
             return true;
@@ -275,7 +301,7 @@ namespace GregoryTerrain.EditorTools
                 RegionFitResult fit = PatchRegionFit.Fit(asset.ToPatchGrid(), selection, heights, width, height, progress, cancel.Token);
                 PatchGridAssetUndo.ApplyEdit(asset, fit.Edit, $"Refit selection to {source}");
                 string filled = voids > 0 ? $" {voids} void samples were filled from their neighbours first." : "";
-                Report($"Refitted {selection} ({fit.Edit.Patches.Length} patches changed) to {source}: max error {fit.MaxError * widthMetres:G3} m, RMS {fit.RmsError * widthMetres:G3} m over the selection. The border with the other patches was kept.{filled}", MessageType.Info);
+                Report($"Refitted {selection} ({fit.Edit.Patches.Length} patches changed) to {source}: max error {fit.MaxError * _unitMetres:G3} m, RMS {fit.RmsError * _unitMetres:G3} m over the selection. The border with the other patches was kept.{filled}", MessageType.Info);
             }
             catch (OperationCanceledException) { Report("Refit cancelled; the grid was not changed.", MessageType.Warning); }
             catch (ArgumentException e) { Report($"{source}: {e.Message} The grid was not changed.", MessageType.Error); }
@@ -296,13 +322,13 @@ namespace GregoryTerrain.EditorTools
                 // Texture rows run bottom-up and RAW rows come south first (ReadSouthFirst): sample (c, r)
                 // lands at (c / (W-1), r / (H-1)) of the unit square, y = 0 the south edge, either way.
                 HeightmapFit fit = useTarget
-                    ? HeightmapFitter.FitToTarget(heights, width, height, targetMetres / widthMetres, targetKind, MaxSide, progress, cancel.Token)
+                    ? HeightmapFitter.FitToTarget(heights, width, height, targetMetres / _unitMetres, targetKind, MaxSide, progress, cancel.Token)
                     : HeightmapFitter.Fit(heights, width, height, columns, rows, progress, cancel.Token);
                 Apply($"Fit patch grid to {source}", fit.Grid);
                 ShowErrorMap(fit);
                 string filled = voids > 0 ? $" {voids} void samples were filled from their neighbours first." : "";
-                Report($"Fitted {fit.Grid.Columns} x {fit.Grid.Rows} patches to {source}: max error {fit.MaxError * widthMetres:G3} m, RMS {fit.RmsError * widthMetres:G3} m ({fit.MaxError:G3} and {fit.RmsError:G3} terrain units).{filled}"
-                    + (useTarget && (targetKind == FitErrorKind.Max ? fit.MaxError : fit.RmsError) * widthMetres > targetMetres ? $" The target was not reached at {MaxSide} columns." : ""),
+                Report($"Fitted {fit.Grid.Columns} x {fit.Grid.Rows} patches to {source}: max error {fit.MaxError * _unitMetres:G3} m, RMS {fit.RmsError * _unitMetres:G3} m ({fit.MaxError:G3} and {fit.RmsError:G3} terrain units).{filled}"
+                    + (useTarget && (targetKind == FitErrorKind.Max ? fit.MaxError : fit.RmsError) * _unitMetres > targetMetres ? $" The target was not reached at {MaxSide} columns." : ""),
                     MessageType.Info);
             }
             catch (OperationCanceledException) { Report("Fit cancelled; the grid was not changed.", MessageType.Warning); }
@@ -320,7 +346,7 @@ namespace GregoryTerrain.EditorTools
             _errorTexture = new Texture2D(map.Width, map.Height, TextureFormat.RGBA32, false);
             _errorTexture.LoadRawTextureData(map.ToRgba32(fit.MaxError));
             _errorTexture.Apply();
-            _errorLegend = $"Error map ({map.Width} x {map.Height} cells, each the worst sample in it): black 0, blue, yellow, red {fit.MaxError * widthMetres:G3} m.";
+            _errorLegend = $"Error map ({map.Width} x {map.Height} cells, each the worst sample in it): black 0, blue, yellow, red {fit.MaxError * _unitMetres:G3} m.";
         }
 
         void EnforceG1()

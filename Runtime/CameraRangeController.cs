@@ -3,12 +3,9 @@ using UnityEngine;
 namespace GregoryTerrain
 {
     /// <summary>
-    /// World view: the range follows a camera flying over the terrain, a square of
-    /// <see cref="viewDistance"/> around the point below the camera (pushed ahead along its view).
-    /// Each frame it sets the range only (one float4); the camera is Unity's own and never moved.
-    /// In Edit Mode it previews: the renderer draws the followed range, but its saved range is not
-    /// written (<see cref="GregoryTerrainRenderer.SetDrawnRange"/>), so nothing enters Undo or
-    /// marks the scene changed.
+    /// The range follows a camera: a square of <see cref="viewDistance"/> around the point below it,
+    /// pushed ahead along its view; one float4 a frame, the camera never moved. In Edit Mode the
+    /// saved range is not written (<see cref="GregoryTerrainRenderer.SetDrawnRange"/>).
     /// </summary>
     [ExecuteAlways]
     [AddComponentMenu("Gregory Terrain/Camera Range Controller")]
@@ -25,6 +22,10 @@ namespace GregoryTerrain
 
         [Tooltip("How far ahead of the camera (fraction of the side) the square's centre is pushed, so more of it lies in view.")]
         [SerializeField, Range(0f, 0.5f)] float lookAhead = 0.3f;
+
+        internal GregoryTerrainRenderer Target => target;
+
+        void OnDisable() { if (target) target.SyncRangeFromSerialized(); }
 
         void LateUpdate()
         {

@@ -1,3 +1,4 @@
+using Unity.Profiling;
 using UnityEngine;
 using UnityEngine.Rendering;
 #if UNITY_EDITOR
@@ -10,11 +11,7 @@ namespace GregoryTerrain
     // Scene view in Edit Mode, reflection probes, several cameras), which cameras draw, and the draw.
     public sealed partial class GregoryTerrainRenderer
     {
-        /// <summary>
-        /// Both callbacks are registered: a pipeline calls only its own. URP and HDRP call
-        /// <c>beginCameraRendering</c> before they cull a camera; the Built-in pipeline calls
-        /// <c>Camera.onPreCull</c>. A draw submitted there for that camera is part of its frame.
-        /// </summary>
+        /// <summary>Both registered, each pipeline calls its own: <c>beginCameraRendering</c> (URP, HDRP), <c>Camera.onPreCull</c> (Built-in).</summary>
         void RegisterCameraCallbacks()
         {
             RenderPipelineManager.beginCameraRendering += OnBeginCameraRendering;
@@ -38,7 +35,21 @@ namespace GregoryTerrain
         internal void DrawFor(Camera cam)
         {
             if (cam == null || !DrawsIn(cam)) return;
-            if (!Prepare(cam)) return;
+            using (s_DrawMarker.Auto())
+                Draw(cam);
+        }
+
+        // The Profiler's names for the per-camera work (a struct scope: nothing allocated).
+        static readonly ProfilerMarker s_DrawMarker = new ProfilerMarker("GregoryTerrainRenderer.Draw");
+        static readonly ProfilerMarker s_PrepareMarker = new ProfilerMarker("GregoryTerrainRenderer.Prepare");
+        static readonly ProfilerMarker s_VertexCacheMarker = new ProfilerMarker("GregoryTerrainRenderer.VertexCache");
+
+        void Draw(Camera cam)
+        {
+            bool prepared;
+            using (s_PrepareMarker.Auto())
+                prepared = Prepare(cam);
+            if (!prepared) return;
 
             var rp = new RenderParams(_drawMaterial != null ? _drawMaterial : material)
             {
@@ -60,13 +71,7 @@ namespace GregoryTerrain
                 Graphics.RenderPrimitives(rp, MeshTopology.Quads, 4 * tileCount, 1);
         }
 
-        /// <summary>
-        /// Whether <paramref name="cam"/> draws this terrain. Preview cameras (inspector previews,
-        /// thumbnails) never do. In the editor a camera draws it only when its scene culling mask
-        /// shares a bit with this GameObject's (<see cref="CameraSceneFilter"/>): what Unity does
-        /// for its own renderers, so an instance in a Prefab stage draws only in that stage's
-        /// cameras and a main-scene instance stays out of the stage.
-        /// </summary>
+        /// <summary>Never a preview camera; in the editor only one whose scene culling mask shares a bit with ours (<see cref="CameraSceneFilter"/>; Prefab stages).</summary>
         bool DrawsIn(Camera cam)
         {
             if (cam.cameraType == CameraType.Preview) return false;
@@ -78,9 +83,8 @@ namespace GregoryTerrain
         }
 
         /// <summary>
-        /// <paramref name="cam"/>'s object -> clip and pixel size, from which every pass of its draw,
-        /// its shadow maps included, takes the factors (URP, Built-in). Set only when they differ from
-        /// what the property block holds (read back: a cleared block is refilled).
+        /// <paramref name="cam"/>'s object -> clip and pixel size, from which every pass of its draw takes
+        /// the factors; set only when they differ from what the property block holds.
         /// </summary>
         void PushTessellationView(Camera cam)
         {

@@ -10,20 +10,16 @@ namespace GregoryTerrain
         PatchGrid _estimateGrid;
 
         /// <summary>
-        /// Triangles this renderer draws as <paramref name="cam"/> sees the terrain now, at the current
-        /// settings and range: each tile's factors from Core's mirror of the hull stage (or, drawing
-        /// from the vertex cache, of its kernel's integer factors), counted as the tessellator
-        /// triangulates (<see cref="TerrainTriangleEstimate"/>; the rig checks it against the GPU's
-        /// count). It shows what the target pixel error costs in a view. At most
-        /// <paramref name="maxTiles"/> tiles are evaluated (51 surface points each, on the CPU), an
-        /// even sample of them beyond that. Null when there is nothing to estimate: no grid uploaded
-        /// yet, invalid settings, the fallback (fixed grids: <see cref="EstimatedTriangleCount"/>),
-        /// or a camera without pixels. With GT_SNOW the snow's culling allowance is left out.
+        /// Triangles drawn for <paramref name="cam"/> now: each tile's factors from Core's mirror of the
+        /// hull stage (or the cache kernel's), counted as the tessellator does (<see cref="TerrainTriangleEstimate"/>;
+        /// the rig checks it against the GPU). At most <paramref name="maxTiles"/> tiles evaluated, an even
+        /// sample beyond. Null without an uploaded grid, with invalid settings, the fallback, Horizon levels
+        /// (their seams are not mirrored) or a camera without pixels. GT_SNOW's culling allowance is left out.
         /// </summary>
         public TriangleEstimate? EstimateTrianglesInView(Camera cam, int maxTiles = 256)
         {
             if (cam == null) throw new ArgumentNullException(nameof(cam));
-            if (_uploadedPatchGrid == null || _settingsError != null || _drawFallback) return null;
+            if (_uploadedPatchGrid == null || _settingsError != null || _drawFallback || LevelsOn(_drawFallback)) return null;
             int w = cam.pixelWidth, h = cam.pixelHeight;
             if (w <= 0 || h <= 0) return null;
             if (_estimateGrid != _uploadedPatchGrid)

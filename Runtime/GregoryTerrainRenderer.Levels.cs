@@ -2,10 +2,8 @@ using UnityEngine;
 
 namespace GregoryTerrain
 {
-    // Horizon levels (internals.md, "Levels of detail: from the feet to the horizon"): instead of one
-    // range, L nested levels of M x M tiles around each camera's ground point, drawn in one call with
-    // GT_LOD. Per camera and frame the only values sent are the levels' ranges, one float4 each, in
-    // one preallocated array (_Ranges); _LodLevels only when the level count changes.
+    // Horizon levels (internals.md): L nested levels of M x M tiles around each camera's ground point,
+    // one draw with GT_LOD; per camera and frame only _Ranges (one float4 a level), _LodLevels on change.
     public sealed partial class GregoryTerrainRenderer
     {
         /// <summary>Narrowest level, in metres: the level at the feet is the first power-of-two part of the terrain at least this wide.</summary>
@@ -32,33 +30,32 @@ namespace GregoryTerrain
             return null;
         }
 
-        /// <summary>
-        /// Lays the levels out around <paramref name="cam"/>'s ground point into the preallocated
-        /// ranges and returns how many. The ground point and the terrain's width in metres come from
-        /// <see cref="WorldFrame"/> (Transform, Terrain Size, floating-origin offset), as the draw
-        /// matrices, the queries and the collider do.
-        /// </summary>
+        /// <summary>The levels around <paramref name="cam"/>'s ground point (through <see cref="WorldFrame"/>), into the preallocated ranges; returns how many.</summary>
         int LayoutLevels(Camera cam)
         {
             Double3 local = WorldToTerrainObject(cam.transform.position);   // object space: (x, height, y)
-            double metres = WorldUnitsPerObjectUnit.x;                      // world units across the terrain's x
-            if (!(metres > 0.0)) metres = 1.0;
-            int n = LodLevels.FinestExponent(metres, FinestLevelMeters);
-            n = System.Math.Min(n, LodTiles.MaxLevels - 1);
-            return LodLevels.Layout(new Double2(local.x, local.z), n, tiles, _levelRanges);
+            return LodLevels.Layout(new Double2(local.x, local.z), FinestExponent(), tiles, _levelRanges);
         }
+
+        /// <summary>The finest level's exponent for the terrain's width in world units.</summary>
+        int FinestExponent()
+        {
+            double metres = WorldUnitsPerObjectUnit.x;   // world units across the terrain's x
+            if (!(metres > 0.0) || double.IsInfinity(metres)) metres = 1.0;
+            return System.Math.Min(LodLevels.FinestExponent(metres, FinestLevelMeters), LodTiles.MaxLevels - 1);
+        }
+
+        /// <summary>Horizon levels drawn (L), 0 for one range.</summary>
+        internal int LevelCount => LevelsOn(DrawsFallback) ? LodLevels.LevelCount(FinestExponent()) : 0;
 
         /// <summary>This draw's origin tracker: with the levels <paramref name="cam"/>'s own, else the range's.</summary>
         RangeOriginTracker OriginTracker(Camera cam, bool fallback) =>
             cam != null && LevelsOn(fallback) ? _cameraOrigins.For(cam.GetInstanceID()) : _rangeOrigin;
 
         /// <summary>
-        /// Lays the levels out around <paramref name="cam"/> (once a camera and frame: <see cref="PushLevels"/>
-        /// sends this layout) and returns the range the range origin follows
-        /// (<see cref="RangeOriginTracker"/>): with the levels, the finest level around the camera, so
-        /// on a large terrain (below RangeOrigin.DeepWidth of it, a terrain wider than ~4 km) the
-        /// vertices output S(q) - S(O) near the feet from precise differences (precision.md) and the
-        /// draw matrices cancel S(O) against the camera in double; otherwise the renderer's range.
+        /// Lays the levels out around <paramref name="cam"/> (sent by <see cref="PushLevels"/>) and returns
+        /// the range the origin follows: the finest level (on a terrain wider than ~4 km the feet then
+        /// output S(q) - S(O) precisely, precision.md), else the renderer's range.
         /// </summary>
         TerrainRange OriginRange(Camera cam, bool fallback)
         {
@@ -67,10 +64,7 @@ namespace GregoryTerrain
             return _levelRanges[0];
         }
 
-        /// <summary>
-        /// Sends the levels <see cref="OriginRange"/> laid out for this camera in <see cref="Prepare"/>,
-        /// relative to the origin: one float4 per level. Returns how many tiles the draw holds (L x M^2).
-        /// </summary>
+        /// <summary>Sends <see cref="OriginRange"/>'s levels relative to the origin, one float4 each; returns the tiles drawn (L x M^2).</summary>
         int PushLevels()
         {
             int count = _levelCount;

@@ -8,15 +8,12 @@ using UnityEditor;
 namespace GregoryTerrain
 {
     /// <summary>
-    /// Draws a <see cref="PatchGridAsset"/> with the GregoryTerrain/Terrain shader in one procedural draw
-    /// call per camera, from the camera's rendering callback (<c>beginCameraRendering</c> in URP/HDRP,
-    /// <c>Camera.onPreCull</c> in Built-in; Edit Mode too): M x M tiles over <see cref="Range"/> (or the
-    /// Horizon levels), each a 4-control-point patch the hull/domain stages tessellate. Only
-    /// <c>_Range</c> is sent every frame (<see cref="PerFrameTrafficBytes"/>); the grid, settings,
-    /// matrices, origin and a camera's tessellation view on change. Keywords it chooses go on a runtime copy of the material.
-    /// Files: this (settings, API, constants), <c>.Cameras</c> (the draw), <c>.DrawMaterial</c>,
-    /// <c>.Buffers</c>, <c>.VertexCache</c> (the compute pre-pass, <see cref="VertexCachePass"/>),
-    /// <c>.Levels</c>, <c>.Estimate</c>, <c>.Queries</c>. The manual: internals.md.
+    /// Draws a <see cref="PatchGridAsset"/> with GregoryTerrain/Terrain in one procedural draw per camera
+    /// (<c>beginCameraRendering</c> in URP/HDRP, <c>Camera.onPreCull</c> in Built-in; Edit Mode too):
+    /// M x M tessellated tiles over <see cref="Range"/> or the Horizon levels. Only <c>_Range</c> is sent
+    /// every frame (<see cref="PerFrameTrafficBytes"/>), the rest on change; keywords go on a runtime
+    /// copy of the material. Files: this, <c>.Cameras</c>, <c>.DrawMaterial</c>, <c>.Buffers</c>,
+    /// <c>.VertexCache</c>, <c>.Levels</c>, <c>.Estimate</c>, <c>.Queries</c>; internals.md.
     /// </summary>
     [ExecuteAlways]
     [DisallowMultipleComponent]
@@ -24,12 +21,8 @@ namespace GregoryTerrain
     public sealed partial class GregoryTerrainRenderer : MonoBehaviour
     {
         /// <summary>
-        /// Bytes this script sets per camera in the steady state: one float4, <c>_Range</c> (one
-        /// MaterialPropertyBlock.SetVector in PushRange, then one Graphics.RenderPrimitives call for that
-        /// camera); with the Compute cache too. Horizon levels add the level ranges every frame (20 float4,
-        /// SetVectorArray in PushLevels). What else (a camera's tessellation view when it moved or
-        /// another camera drew since, ...) is set, only on a change, and when:
-        /// index.md, "What is sent per frame".
+        /// Bytes set per camera in the steady state: <c>_Range</c>, one float4 (Compute cache too);
+        /// Horizon levels add 20 float4. The rest, on change only: index.md, "What is sent per frame".
         /// </summary>
         public const int PerFrameTrafficBytes = 16;
 
@@ -75,9 +68,9 @@ namespace GregoryTerrain
         [Tooltip("The part of the terrain drawn, as min x, min y, max x, max y inside 0..1. Range controllers set it every frame.")]
         [SerializeField] Vector4 range = new Vector4(0f, 0f, 1f, 1f);
 
-        [Tooltip("Height of the largest noise layer, in terrain units.")]
+        [Tooltip("Height of the largest noise layer, in terrain height units (the inspector shows metres: times Height Scale).")]
         [SerializeField, Range(0f, 0.5f)] float noiseAmplitude = 0.02f;
-        [Tooltip("Noise cells across the whole terrain in the largest noise layer.")]
+        [Tooltip("Noise cells across the whole terrain in the largest noise layer (the inspector shows one cell's width in metres).")]
         [SerializeField, Range(0.5f, 4096f)] float noiseFrequency = 16f;
         [Tooltip("How much finer each noise layer is than the one before it (2: twice as fine).")]
         [SerializeField, Range(1.1f, 8f)] float noiseAlpha = 2f;
@@ -88,11 +81,11 @@ namespace GregoryTerrain
         [Tooltip("0: the mesh detail decides how many noise layers show. Above 0: assume this many vertices across the drawn area instead.")]
         [SerializeField, Min(0f)] float noiseVerticesAcross = 0f;
 
-        [Tooltip("Height over which the colour blends from the low colour to the high colour, in terrain units.")]
+        [Tooltip("Height over which the colour blends from the low colour to the high colour, in terrain height units (the inspector shows metres).")]
         [SerializeField, Range(0.001f, 4f)] float colorGamma = 0.5f;
         [Tooltip("How strongly noise breaks up the boundary between the low and high colours.")]
         [SerializeField, Range(0f, 1f)] float colorNoiseAmplitude = 0.1f;
-        [Tooltip("Noise cells across the whole terrain for the colour noise.")]
+        [Tooltip("Noise cells across the whole terrain for the colour noise (the inspector shows one cell's width in metres).")]
         [SerializeField, Range(0.5f, 4096f)] float colorNoiseFrequency = 64f;
         [Tooltip("Colour of the low ground.")]
         [SerializeField] Color colorLow = new Color(0.22f, 0.33f, 0.14f);
@@ -187,12 +180,9 @@ namespace GregoryTerrain
         }
 
         /// <summary>
-        /// For floating-origin applications: the application has moved the world by
-        /// <paramref name="delta"/> (every object's position gained it) and the terrain moves with it,
-        /// kept as a double offset by the renderer rather than in the float Transform (which rounds at
-        /// 4 mm at 50 km). Do not move this object's Transform as well. Nothing moves on screen when the
-        /// camera was shifted by the same delta; the CPU queries and the collider use the same offset.
-        /// Throws ArgumentException unless <paramref name="delta"/> is finite.
+        /// Floating origin: the world moved by <paramref name="delta"/>; the terrain follows as a double
+        /// offset, not in the float Transform (4 mm steps at 50 km; do not move it too). Queries and the
+        /// collider follow. Throws ArgumentException unless <paramref name="delta"/> is finite.
         /// </summary>
         public void ShiftOrigin(Vector3 delta)
         {
@@ -205,10 +195,7 @@ namespace GregoryTerrain
         /// <summary>The sum of every <see cref="ShiftOrigin"/> so far, rounded to float (the renderer keeps it in double).</summary>
         public Vector3 WorldOriginOffset => new Vector3((float)_worldOffset.x, (float)_worldOffset.y, (float)_worldOffset.z);
 
-        /// <summary>
-        /// The terrain's world frame now: the Transform, <see cref="TerrainSize"/>, <see cref="HeightScale"/>
-        /// and the floating-origin offset, in double. Draw matrices, queries and the collider use it.
-        /// </summary>
+        /// <summary>Transform, <see cref="TerrainSize"/>, <see cref="HeightScale"/> and the origin offset, in double: for matrices, queries, the collider.</summary>
         internal TerrainWorldFrame WorldFrame
         {
             get
@@ -250,10 +237,7 @@ namespace GregoryTerrain
         /// <summary>Uniform factor (0 = adaptive); the Scene view's Uniform Factor Down / Up shortcuts (U / I by default) change it.</summary>
         public int UniformFactor { get => uniformFactor; set { uniformFactor = Mathf.Clamp(value, 0, 64); _settingsDirty = true; } }
 
-        /// <summary>
-        /// The drawn range. Throws ArgumentException (naming the field and value) unless it is finite,
-        /// non-empty and inside the unit square; the old range is then kept.
-        /// </summary>
+        /// <summary>The drawn range. Throws ArgumentException (field and value) unless finite, non-empty and in the unit square; the old one is kept.</summary>
         public TerrainRange Range
         {
             get => _range;
@@ -265,11 +249,7 @@ namespace GregoryTerrain
             }
         }
 
-        /// <summary>
-        /// Sets the drawn range for now without writing the serialized range: range controllers use
-        /// it in Edit Mode, so following a camera there neither marks the scene changed nor records an
-        /// Undo step (the saved range stays what the user set). Throws like <see cref="Range"/>.
-        /// </summary>
+        /// <summary>The drawn range, the serialized one left alone (range controllers in Edit Mode: no Undo, no scene change). Throws like <see cref="Range"/>.</summary>
         public void SetDrawnRange(TerrainRange value)
         {
             value.Validate("Range");
@@ -282,20 +262,24 @@ namespace GregoryTerrain
         /// <summary>True when this device has no tessellation shaders (Unity then skips the tessellated SubShaders).</summary>
         public static bool UsesFallback => !SystemInfo.supportsTessellationShaders;
 
-        /// <summary>
-        /// True when this renderer draws the vertex-shader fallback: the SubShader Unity picked is a
-        /// fallback one (its "GregoryTerrainDraw" tag, Material.GetTag without fallbacks), or, for a
-        /// shader without the tag, the device has no tessellation shaders.
-        /// </summary>
+        /// <summary>True when the vertex-shader fallback draws: the SubShader's "GregoryTerrainDraw" tag (Material.GetTag), else no tessellation on the device.</summary>
         public bool DrawsFallback => material != null ? ReadDrawMode() : UsesFallback;
 
-        /// <summary>
-        /// Triangles the current settings can produce at most (Core's TessellationPolicy: 2 F^2 per
-        /// tile, F = the uniform factor, else maxFactor; the fallback grid's F without a tessellator).
-        /// What a camera's view draws: <see cref="EstimateTrianglesInView"/>.
-        /// </summary>
-        public double EstimatedTriangleCount => TessellationPolicy.EstimateTriangleCount(TilesAcross(DrawsFallback),
+        /// <summary>The most triangles these settings draw: 2 F^2 per tile, F the uniform factor, else maxFactor (fallback: its grid's). A view's: <see cref="EstimateTrianglesInView"/>.</summary>
+        public double EstimatedTriangleCount => DrawnTileCount * TessellationPolicy.EstimateTriangleCount(1,
             DrawsFallback ? fallbackGridFactor : uniformFactor > 0 ? uniformFactor : maxFactor);
+
+        /// <summary>Tiles drawn: M^2 ((M + 1)^2 anchored), or the Horizon levels' (<see cref="LodLevels.DrawnTileCount"/>).</summary>
+        internal int DrawnTileCount
+        {
+            get
+            {
+                int levels = LevelCount;
+                if (levels > 0) return LodLevels.DrawnTileCount(levels, tiles);
+                int across = TilesAcross(DrawsFallback);
+                return across * across;
+            }
+        }
 
         /// <summary>Why the terrain cannot be drawn: the device (no structured buffers), or the current settings (Core's message, naming field and value); else null.</summary>
         public string SettingsError => s_DeviceError ?? _settingsError ?? _cacheError;
@@ -333,18 +317,12 @@ namespace GregoryTerrain
         /// <summary>True when the last frame drew from the vertex cache (GT_VERTEX_CACHE on).</summary>
         public bool UsesVertexCache => _usesCache;
 
-        /// <summary>
-        /// Why <see cref="VertexEvaluation.ComputeCache"/> is chosen but the domain stage draws
-        /// (no compute shaders, no cache shader, no LOD camera, ...), or null.
-        /// </summary>
+        /// <summary>Why Compute cache is chosen but the domain stage draws (no compute shaders, cache shader, LOD camera...), or null.</summary>
         public string VertexCacheFallbackReason => _cacheFallbackReason;
 
         /// <summary>
-        /// GPU memory the vertex cache needs for the current settings, in bytes (Core's
-        /// <see cref="VertexCacheBudget.TotalBytes"/>: 992 T^2 + 16 T^2 ((L+1)^2 + 4 (L+1)) R, T = M, or
-        /// M + 1 with anchored tiles (<see cref="CacheTilesAcross"/>), L the
-        /// uniform factor, else the max factor, rounded up; R = 2 while a Snow Simulator is attached, else 1),
-        /// whichever evaluation is chosen.
+        /// GPU memory the vertex cache needs at the current settings, in bytes, whichever evaluation is
+        /// chosen (Core's <see cref="VertexCacheBudget.TotalBytes"/>).
         /// </summary>
         public long VertexCacheBytes
         {
@@ -415,13 +393,7 @@ namespace GregoryTerrain
 
         // ---- drawing --------------------------------------------------------------------------------
 
-        /// <summary>
-        /// Brings the draw's state up to date before a camera draws: uploads (once per asset
-        /// version), constants on change, this camera's <c>_Range</c>, the vertex cache, the draw
-        /// material. In the steady state (no setting, Transform, origin or grid change) the only
-        /// value set is <c>_Range</c>: see <see cref="PerFrameTrafficBytes"/>. No allocation once
-        /// the buffers exist. False when nothing can be drawn.
-        /// </summary>
+        /// <summary>Uploads, constants on change, <c>_Range</c>, the vertex cache, the material: steady state only <c>_Range</c>, no allocation. False when nothing can be drawn.</summary>
         bool Prepare(Camera cam = null)
         {
             _setLastPrepare.Clear();
@@ -453,7 +425,10 @@ namespace GregoryTerrain
             if (_settingsError != null) return false;   // logged once; drawn again after the next valid change
             PushTessellationView(cam);
             UpdateNoiseTableBinding();   // before the cache: its kernels read the same table
-            if (!UpdateVertexCache(fallback)) return false;
+            bool cacheReady;
+            using (s_VertexCacheMarker.Auto())
+                cacheReady = UpdateVertexCache(fallback);
+            if (!cacheReady) return false;
             UpdateSnowBinding();
             // The range-origin keyword from the very _RangeOrigin just sent (_params): the stages
             // without it compile no origin code and would draw a set origin as 0.
@@ -481,10 +456,8 @@ namespace GregoryTerrain
         }
 
         /// <summary>
-        /// Anchored tiles (<see cref="TileLattice"/>): keeps <c>_TileLattice</c> while the range only
-        /// pans and anchors it at the range on a zoom, a re-snap or a settings change (16 bytes then);
-        /// 0 when the tiles lie on the range (off, a uniform factor, the fallback grid). The cache pass
-        /// sees a new lattice as a new record input and evaluates every tile again.
+        /// Anchored tiles (<see cref="TileLattice"/>): <c>_TileLattice</c> kept while the range only pans,
+        /// anchored again on a zoom, re-snap or settings change; 0 when the tiles lie on the range.
         /// </summary>
         void UpdateTileLattice(bool fallback)
         {
@@ -495,9 +468,8 @@ namespace GregoryTerrain
         }
 
         /// <summary>
-        /// Builds the TerrainParams block with Core (which validates every input and knows the order)
-        /// and sets each float4 by its name. On invalid settings nothing is set and the renderer
-        /// stops drawing until a change fixes them, so the GPU never sees half-updated constants.
+        /// Builds the TerrainParams block with Core (which validates every input) and sets each float4.
+        /// On invalid settings nothing is set and nothing drawn until a change fixes them.
         /// </summary>
         void PushSettings(bool fallback)
         {
@@ -541,11 +513,7 @@ namespace GregoryTerrain
         void SetMatrix(int id, Matrix4x4 m) { _props.SetMatrix(id, m); _setLastPrepare.Add(id); }
         void SetBuffer(int id, GraphicsBuffer b) { _props.SetBuffer(id, b); _setLastPrepare.Add(id); }
 
-        /// <summary>
-        /// The property IDs the last draw's preparation set on the property block, in order
-        /// (<c>_Range</c> alone in the steady state; the Unity-side tests check it). Buffers bound by
-        /// the vertex cache pass are not listed.
-        /// </summary>
+        /// <summary>Property IDs the last preparation set, in order (<c>_Range</c> alone when steady; cache buffers not listed).</summary>
         internal System.Collections.Generic.IReadOnlyList<int> PropertiesSetLastPrepare => _setLastPrepare;
 
         /// <summary>The property ID of <c>_Range</c> (for the Unity-side tests).</summary>
@@ -573,9 +541,8 @@ namespace GregoryTerrain
         }
 
         /// <summary>
-        /// The draw the material's SubShader in use expects (see <see cref="DrawsFallback"/>), read again
-        /// only when its <see cref="DrawModeKey"/> changes (GetTag allocates). A change of mode marks the
-        /// settings dirty, since the uniform factor sent differs between the modes.
+        /// The draw the material's SubShader expects (<see cref="DrawsFallback"/>), read again only when
+        /// its <see cref="DrawModeKey"/> changes (GetTag allocates); a change marks the settings dirty.
         /// </summary>
         bool ReadDrawMode()
         {
@@ -589,13 +556,7 @@ namespace GregoryTerrain
             return fallback;
         }
 
-        /// <summary>
-        /// While a range origin is set, the shaders output <c>S(q) - S(O)</c> (and the noise as
-        /// <c>p(q) - p(O)</c>; internals.md, "Deep-zoom output"): the part left out,
-        /// <see cref="TerrainVertex.OutputOffset(PatchGrid, TerrainParams, TerrainKeywords)"/>, in double.
-        /// It changes on a re-snap, and with GT_NOISE also with the range width (the octave count) and GT_NOISE_TABLE.
-        /// Returns true when it changed (the matrices must be sent again).
-        /// </summary>
+        /// <summary>With a range origin the shaders output <c>S(q) - S(O)</c>: S(O) in double (<see cref="TerrainVertex.OutputOffset(PatchGrid, TerrainParams, TerrainKeywords)"/>). True when it changed (matrices resent).</summary>
         bool UpdateOutputOffset()
         {
             TerrainKeywords keywords = NoiseKeywords();
@@ -627,14 +588,7 @@ namespace GregoryTerrain
                 && _origin.Equals(o._origin) && _noise.Equals(o._noise) && _octaves.Equals(o._octaves);
         }
 
-        /// <summary>
-        /// RenderPrimitives has no object matrix (the shader gets none from Unity), so the adapters
-        /// read ours, from <see cref="WorldFrame"/>: <c>T(worldOffset) localToWorld S T(t)</c>, S the
-        /// terrain size and height scale, t the deep-zoom output offset in object space (object =
-        /// terrain (x, z, y)), and its inverse, every entry formed in double and rounded once
-        /// (<see cref="TerrainWorldFrame.DrawMatrices"/>). Sent when the Transform, the size, the world
-        /// offset or the output offset changes only.
-        /// </summary>
+        /// <summary>RenderPrimitives has no object matrix: ours, <c>T(worldOffset) localToWorld S T(t)</c> and inverse in double (<see cref="TerrainWorldFrame.DrawMatrices"/>), sent on change.</summary>
         void PushMatrices()
         {
             _pushedLocalToWorld = transform.localToWorldMatrix;
@@ -648,17 +602,14 @@ namespace GregoryTerrain
         }
 
         /// <summary>
-        /// Whether the Transform moved since <see cref="PushMatrices"/>. Compared, not read from
-        /// Transform.hasChanged: that flag is shared with every other script on the object, and one
-        /// that clears it would hide a move (the terrain would draw where it was).
+        /// Whether the Transform moved since <see cref="PushMatrices"/>: compared, not Transform.hasChanged,
+        /// which another script may clear.
         /// </summary>
         bool TransformMoved() => !VertexCachePass.SameMatrix(transform.localToWorldMatrix, _pushedLocalToWorld);
 
         /// <summary>
-        /// World bounds of the drawn range: object x in [c, g], z in [d, h] (the shaders output
-        /// (x, z, y)), height between the lowest and highest control point (the patch lies in their
-        /// hull) widened by the largest noise the octaves can add, and raised by the snow cap while
-        /// snow is drawn (what the shader's tile culling keeps).
+        /// World bounds of the drawn range: height between the lowest and highest control point,
+        /// widened by the largest noise and raised by the snow cap (what the shader's culling keeps).
         /// </summary>
         Bounds WorldBounds()
         {
@@ -707,7 +658,7 @@ namespace GregoryTerrain
             return sum;
         }
 
-        void SyncRangeFromSerialized()
+        internal void SyncRangeFromSerialized()
         {
             var r = new TerrainRange(range.x, range.y, range.z, range.w);
             try { r.Validate("range"); }

@@ -3,14 +3,10 @@ using UnityEngine;
 namespace GregoryTerrain
 {
     /// <summary>
-    /// The paper's zoom view: the range is always shown in the same display box. Zooming and panning
-    /// change only the range (one float4 per frame); the camera is placed over the range so it fills
-    /// the view, and camera data is what Unity sends anyway. Drive it with <see cref="Zoom"/> and
-    /// <see cref="Pan"/>, or with the mouse wheel and arrow keys when the legacy Input Manager is on.
-    /// <para>In Edit Mode it previews the range from its settings without writing any saved state
-    /// (the renderer's range is set with <see cref="GregoryTerrainRenderer.SetDrawnRange"/>), and it
-    /// leaves the camera where the user put it unless <c>Place Camera In Edit Mode</c> is on; then
-    /// each placement is one Undo step on the camera.</para>
+    /// Zoom into a fixed box: zoom and pan change only the range (one float4 a frame); the camera is
+    /// placed over it. <see cref="Zoom"/>, <see cref="Pan"/>, or wheel and arrows (legacy Input Manager).
+    /// In Edit Mode it previews (<see cref="GregoryTerrainRenderer.SetDrawnRange"/>, nothing saved) and
+    /// moves the camera only with <c>Place Camera In Edit Mode</c> (one Undo step each).
     /// </summary>
     [ExecuteAlways]
     [AddComponentMenu("Gregory Terrain/Zoom Range Controller")]
@@ -48,6 +44,8 @@ namespace GregoryTerrain
 
         void OnEnable() { _cx = center.x; _cy = center.y; }
 
+        void OnDisable() { if (target) target.SyncRangeFromSerialized(); }
+
         void OnValidate() { _cx = center.x; _cy = center.y; }
 
         /// <summary>Zooms by <paramref name="levels"/> (positive = in) keeping the point at <paramref name="pivot01"/> of the view fixed.</summary>
@@ -73,8 +71,7 @@ namespace GregoryTerrain
             KeepEditModeCenter();
         }
 
-        // Zoom and Pan called by a tool or script in Edit Mode change the saved settings: one Undo
-        // step each, as an inspector edit would be (in Play Mode they are runtime state).
+        // In Edit Mode Zoom and Pan change the saved settings: one Undo step each.
         void RecordEditModeChange(string name)
         {
 #if UNITY_EDITOR
@@ -111,10 +108,7 @@ namespace GregoryTerrain
         /// <summary>Whether the View Camera is also moved in Edit Mode (off by default; in Play Mode it always is).</summary>
         public bool PlaceCameraInEditMode { get => placeCameraInEditMode; set => placeCameraInEditMode = value; }
 
-        /// <summary>
-        /// Sends the range to the terrain and places the camera over it. In Edit Mode only the drawn
-        /// range changes (nothing saved), and the camera moves only with <see cref="PlaceCameraInEditMode"/>.
-        /// </summary>
+        /// <summary>Sends the range and places the camera (Edit Mode: drawn range only; camera with <see cref="PlaceCameraInEditMode"/>).</summary>
         public void Apply()
         {
             if (target == null) return;
@@ -147,8 +141,7 @@ namespace GregoryTerrain
             Transform ct = viewCamera.transform;
             if (position == ct.position && rot == ct.rotation && viewCamera.nearClipPlane == near && viewCamera.farClipPlane == far) return;
 #if UNITY_EDITOR
-            // Edit Mode: the move is the user's scene change (asked for by Place Camera In Edit Mode):
-            // one Undo step, and the scene is marked changed so it is saved.
+            // Edit Mode: one Undo step, the scene marked changed.
             if (recordUndo)
             {
                 UnityEditor.Undo.RecordObject(ct, "Place camera over range");

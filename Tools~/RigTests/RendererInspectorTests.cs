@@ -7,20 +7,19 @@ using NUnit.Framework;
 namespace GregoryTerrain.Rig.Tests
 {
     /// <summary>
-    /// The renderer's inspector names its fields as strings (SerializedObject.FindProperty): a
-    /// misspelt name is a null property and an exception in the editor, a field left out is a
-    /// setting users cannot reach. Every serialized field of GregoryTerrainRenderer must be drawn
-    /// exactly once, and every name drawn must be a serialized field.
+    /// The renderer's inspector names its fields as strings (SerializedObject.FindProperty), listed
+    /// once in RendererInspectorLayout.Sections: a misspelt name is a null property and an exception
+    /// in the editor, a field left out is a setting users cannot reach. Every serialized field of
+    /// GregoryTerrainRenderer must be listed exactly once, every name listed must be a serialized
+    /// field, and the inspector must draw the sections from that list.
     /// </summary>
     [TestFixture]
     public class RendererInspectorTests
     {
         static readonly Regex SerializedField = new Regex(@"\[SerializeField[^\]]*\]\s*[\w<>\[\].]+\s+(\w+)\s*[=;]");
         static readonly Regex PublicField = new Regex(@"^\s*public\s+(?!static\b|const\b|readonly\b|event\b)[\w<>\[\].]+\s+(\w+)\s*(?:=[^;>]*)?;", RegexOptions.Multiline);
-        static readonly Regex FieldsCall = new Regex(@"\bFields\s*\(([^)]*)\)");
-        static readonly Regex Literal = new Regex(@"""(\w+)""");
 
-        static List<string> RendererFields()
+        internal static List<string> RendererFields()
         {
             var names = new List<string>();
             foreach (string path in Directory.GetFiles(PackageRoot.Combine("Runtime"), "GregoryTerrainRenderer*.cs"))
@@ -32,13 +31,13 @@ namespace GregoryTerrain.Rig.Tests
             return names;
         }
 
+        static List<string> Listed() => RendererInspectorLayout.Sections.SelectMany(s => s.fields).ToList();
+
         static string EditorSource() => File.ReadAllText(PackageRoot.Combine("Editor", "GregoryTerrainRendererEditor.cs"));
 
-        /// <summary>What is wrong between the fields and the editor source's Fields("...") calls.</summary>
-        public static List<string> Problems(IReadOnlyCollection<string> fields, string editorSource)
+        /// <summary>What is wrong between the fields and the names the inspector draws.</summary>
+        public static List<string> Problems(IReadOnlyCollection<string> fields, IReadOnlyList<string> drawn)
         {
-            var drawn = FieldsCall.Matches(editorSource)
-                .SelectMany(m => Literal.Matches(m.Groups[1].Value).Select(l => l.Groups[1].Value)).ToList();
             var problems = new List<string>();
             problems.AddRange(fields.Where(f => !drawn.Contains(f)).Select(f => $"field {f} is not drawn"));
             problems.AddRange(drawn.Where(d => !fields.Contains(d)).Distinct().Select(d => $"\"{d}\" is drawn but is no serialized field"));
@@ -52,20 +51,109 @@ namespace GregoryTerrain.Rig.Tests
             var fields = RendererFields();
             Assert.That(fields, Has.Count.GreaterThanOrEqualTo(25), "too few serialized fields found: is the scan still reading the renderer?");
             Assert.That(fields, Does.Contain("grid").And.Contain("debugShowPatchWireframe"));
-            var problems = Problems(fields, EditorSource());
+            var problems = Problems(fields, Listed());
             Assert.That(problems, Is.Empty, string.Join("\n", problems));
+            // The editor draws the listed sections and names no field of its own (PropertyField by a literal).
+            string source = EditorSource();
+            Assert.That(source, Does.Contain("RendererInspectorLayout.Sections"));
+            Assert.That(NamedFields(source).Where(n => !fields.Contains(n)), Is.Empty,
+                "a FindProperty or P literal in the editor that is no serialized field");
         }
+
+        /// <summary>Field names the editor passes as literals, to FindProperty or its shorthand P.</summary>
+        internal static IEnumerable<string> NamedFields(string source) =>
+            Regex.Matches(source, @"\b(?:FindProperty|P)\(""(\w+)""\)").Select(m => m.Groups[1].Value);
+
+        [Test]
+        public void AFieldNamedThroughTheShorthandIsChecked() =>
+            Assert.That(NamedFields("SerializedProperty[] p = { P(\"targetPixelErr\"), FindProperty(\"tiles\") };"),
+                Is.EquivalentTo(new[] { "targetPixelErr", "tiles" }));
 
         [Test]
         public void AMisspeltOrMissingFieldIsCaught()
         {
             var fields = RendererFields();
-            string source = EditorSource();
-            Assert.That(source, Does.Contain("\"targetPixelError\""));
-            Assert.That(Problems(fields, source.Replace("\"targetPixelError\"", "\"targetPixelErr\"")),
+            var listed = Listed();
+            Assert.That(listed, Does.Contain("targetPixelError"));
+            Assert.That(Problems(fields, listed.Select(f => f == "targetPixelError" ? "targetPixelErr" : f).ToList()),
                 Is.EquivalentTo(new[] { "field targetPixelError is not drawn", "\"targetPixelErr\" is drawn but is no serialized field" }));
-            Assert.That(Problems(fields, source.Replace("\"cacheShader\", ", "")), Is.EquivalentTo(new[] { "field cacheShader is not drawn" }));
-            Assert.That(Problems(fields, source.Replace("Fields(\"tiles\"", "Fields(\"grid\", \"tiles\"")), Is.EquivalentTo(new[] { "\"grid\" is drawn 2 times" }));
+            Assert.That(Problems(fields, listed.Where(f => f != "cacheShader").ToList()), Is.EquivalentTo(new[] { "field cacheShader is not drawn" }));
+            Assert.That(Problems(fields, listed.Append("grid").ToList()), Is.EquivalentTo(new[] { "\"grid\" is drawn 2 times" }));
+        }
+    }
+
+    /// <summary>
+    /// The review of the renderer inspector against Unity 2022.3: what the editor C# must do that
+    /// only a Unity editor can run, checked as source patterns (each names the fault it keeps out).
+    /// </summary>
+    [TestFixture]
+    public class RendererInspectorReviewTests
+    {
+        static string Src(params string[] path) => File.ReadAllText(PackageRoot.Combine(path));
+        static string Editor() => Src("Editor", "GregoryTerrainRendererEditor.cs");
+
+        /// <summary>The text of method <paramref name="name"/> up to the next member at its indentation.</summary>
+        static string Body(string source, string name)
+        {
+            Match m = Regex.Match(source, @"\b" + name + @"\([^)]*\)\s*(?:=>[^;]*;|\{.*?\n        \})", RegexOptions.Singleline);
+            Assert.That(m.Success, $"no method {name}");
+            return m.Value;
+        }
+
+        [TestCase("ZoomRangeController.cs"), TestCase("CameraRangeController.cs")]
+        public void ADisabledRangeControllerGivesTheSavedRangeBack(string file) =>
+            // Undo of the add, Remove Component, the checkbox: each runs OnDisable ([ExecuteAlways]).
+            Assert.That(Body(Src("Runtime", file), "OnDisable"), Does.Contain("target.SyncRangeFromSerialized()"));
+
+        [Test]
+        public void OpenWorldWritesEachRenderersOwnTiles()
+        {
+            string view = Body(Editor(), "DrawViewMode");
+            Assert.That(view, Does.Not.Contain("FindProperty(\"tiles\")"), "a multi-object tiles property writes the first renderer's tiles to all");
+            Assert.That(Editor(), Does.Contain("new SerializedObject(t)"));
+        }
+
+        [Test]
+        public void ZoomFindsControllersAnywhereAndStopsCameraRangeControllers()
+        {
+            string e = Editor();
+            Assert.That(e, Does.Contain("FindObjectsByType<ZoomRangeController>").And.Contain("FindObjectsByType<CameraRangeController>"));
+            Assert.That(Body(e, "ModeOf"), Does.Not.Contain("GetComponents"), "a controller on another object is a zoom too");
+        }
+
+        [Test]
+        public void ControllersAreEnabledThroughSerializedPropertiesForPrefabOverrides()
+        {
+            Assert.That(Regex.IsMatch(Editor(), @"\.enabled\s*=[^=]"), Is.False, "Behaviour.enabled set directly records no prefab override");
+            Assert.That(Editor(), Does.Contain("\"m_Enabled\""));
+        }
+
+        [Test]
+        public void CellSizesApplyWhenTypingEnds() =>
+            Assert.That(Body(Editor(), "MetresField"), Does.Not.Contain("EditorGUI.FloatField(").And.Contain("EditorGUI.DelayedFloatField("));
+
+        [Test]
+        public void ViewModeReadsEverySelectedRenderer() =>
+            Assert.That(Body(Editor(), "DrawViewMode"), Does.Not.Contain("(GregoryTerrainRenderer)target").And.Contain("CommonMode("));
+
+        [Test]
+        public void QualityIsOneNamedUndoStepWrittenAsInts()
+        {
+            string q = Body(Editor(), "DrawQuality");
+            Assert.That(q, Does.Contain("Undo.SetCurrentGroupName(\"Quality \""));
+            Assert.That(Editor(), Does.Not.Contain("enumValueIndex"), "enumValueIndex is the index in the enum's names, not its value");
+            Assert.That(Editor(), Does.Not.Contain("paper's"), "tooltips in plain words");
+        }
+
+        [Test]
+        public void PatchGridWindowKeepsOldSettingsAndSearchesTheSceneOnlyWhenItChanges()
+        {
+            string w = Src("Editor", "PatchGridWindow.cs");
+            Assert.That(w, Does.Match(@"\[SerializeField, FormerlySerializedAs\(""heightScale""\)\] float sampleHeight"));
+            Assert.That(w, Does.Match(@"\[SerializeField, FormerlySerializedAs\(""widthMetres""\)\] float metresPerHeightUnit"));
+            Assert.That(Body(w, "DrawMetresPerHeightUnit"), Does.Not.Contain("FindObjectsByType"), "a scene search on every GUI event");
+            Assert.That(w, Does.Contain("EditorApplication.hierarchyChanged +=").And.Contain("EditorApplication.hierarchyChanged -="));
+            Assert.That(w, Does.Not.Contain("'s Height Scale)"), "the value is Height Scale times the Transform's y scale");
         }
     }
 }

@@ -30,6 +30,15 @@ namespace GregoryTerrain
             return finestExponent + 1;
         }
 
+        /// <summary>Tiles drawn by L levels of M^2: each coarser level's (M / 2)^2 under the finer one are culled.</summary>
+        public static int DrawnTileCount(int levelCount, int tiles)
+        {
+            if (levelCount < 1) throw new ArgumentException(Invariant($"levelCount ({levelCount}) must be >= 1"), nameof(levelCount));
+            if (tiles < 1) throw new ArgumentException(Invariant($"tiles ({tiles}) must be >= 1"), nameof(tiles));
+            int half = tiles / 2;
+            return tiles * tiles + (levelCount - 1) * (tiles * tiles - half * half);
+        }
+
         /// <summary>
         /// The finest exponent n whose level 0, <c>2^-n</c> of a terrain <paramref name="terrainMeters"/>
         /// wide, is at least <paramref name="finestMeters"/> wide.

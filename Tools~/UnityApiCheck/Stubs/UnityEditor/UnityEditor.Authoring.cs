@@ -68,10 +68,13 @@ namespace UnityEditor
         public static int GetCurrentGroup() => 0;                                            // SR:Undo.GetCurrentGroup
         public static void SetCurrentGroupName(string name) { }                              // SR:Undo.SetCurrentGroupName
         public static void CollapseUndoOperations(int groupIndex) { }                        // SR:Undo.CollapseUndoOperations
+        public static T AddComponent<T>(GameObject gameObject) where T : Component => null;  // SR:Undo.AddComponent
     }
 
     public sealed partial class EditorGUILayout
     {
         public static float Slider(GUIContent label, float value, float leftValue, float rightValue, params GUILayoutOption[] options) => value; // SR:EditorGUILayout.Slider
+        public static Rect GetControlRect(params GUILayoutOption[] options) => default;     // SR:EditorGUILayout.GetControlRect
+        public static int Popup(GUIContent label, int selectedIndex, GUIContent[] displayedOptions, params GUILayoutOption[] options) => selectedIndex; // SR:EditorGUILayout.Popup
     }
 }

@@ -32,6 +32,7 @@ namespace UnityEditor
     public class Editor : UnityEngine.ScriptableObject                                       // SR:Editor
     {
         public Object target { get => null; set { } }                                       // SR:Editor-target
+        public Object[] targets => null;                                                     // SR:Editor-targets (get only)
         public virtual void OnInspectorGUI() { }                                             // SR:Editor.OnInspectorGUI
         public bool DrawDefaultInspector() => false;                                         // SR:Editor.DrawDefaultInspector
         public SerializedObject serializedObject => null;                                    // SR:Editor-serializedObject (get only)
@@ -44,6 +45,7 @@ namespace UnityEditor
     {
         public SerializedProperty FindProperty(string propertyPath) => null;                 // SR:SerializedObject.FindProperty
         public bool UpdateIfRequiredOrScript() => false;                                     // SR:SerializedObject.UpdateIfRequiredOrScript
+        public void Update() { }                                                             // SR:SerializedObject.Update
         public bool ApplyModifiedProperties() => false;                                      // SR:SerializedObject.ApplyModifiedProperties
         public bool isEditingMultipleObjects => false;                                       // SR:SerializedObject-isEditingMultipleObjects (get only)
         public void Dispose() { }                                                            // SR:SerializedObject.Dispose
@@ -53,6 +55,11 @@ namespace UnityEditor
     {
         public bool hasMultipleDifferentValues => false;                                     // SR:SerializedProperty-hasMultipleDifferentValues (get only)
         public int intValue { get => 0; set { } }                                            // SR:SerializedProperty-intValue
+        public float floatValue { get => 0f; set { } }                                       // SR:SerializedProperty-floatValue
+        public bool boolValue { get => false; set { } }                                      // SR:SerializedProperty-boolValue
+        public Object objectReferenceValue { get => null; set { } }                          // SR:SerializedProperty-objectReferenceValue
+        public int enumValueIndex { get => 0; set { } }                                      // SR:SerializedProperty-enumValueIndex
+        public string tooltip => null;                                                       // SR:SerializedProperty-tooltip (get only)
         public void Dispose() { }                                                            // SR:SerializedProperty.Dispose
     }
 
@@ -79,6 +86,13 @@ namespace UnityEditor
         }
         public static void BeginChangeCheck() { }                                            // SR:EditorGUI.BeginChangeCheck
         public static bool EndChangeCheck() => false;                                        // SR:EditorGUI.EndChangeCheck
+        public static bool showMixedValue { get => false; set { } }                          // SR:EditorGUI-showMixedValue
+        public static GUIContent BeginProperty(Rect totalPosition, GUIContent label, SerializedProperty property) => label; // SR:EditorGUI.BeginProperty
+        public static void EndProperty() { }                                                 // SR:EditorGUI.EndProperty
+        public static float FloatField(Rect position, GUIContent label, float value) => value; // SR:EditorGUI.FloatField
+        public static float DelayedFloatField(Rect position, GUIContent label, float value) => value; // SR:EditorGUI.DelayedFloatField
+        public static float Slider(Rect position, GUIContent label, float value, float leftValue, float rightValue) => value; // SR:EditorGUI.Slider
+        public static int Popup(Rect position, GUIContent label, int selectedIndex, GUIContent[] displayedOptions) => selectedIndex; // SR:EditorGUI.Popup
         public static void DrawPreviewTexture(Rect position, Texture image) { }              // SR:EditorGUI.DrawPreviewTexture
         public static int indentLevel { get => 0; set { } }                                  // SR:EditorGUI-indentLevel
     }
@@ -136,7 +150,11 @@ namespace UnityEditor
         public Camera camera => null;                                                        // SR:SceneView-camera
     }
 
-    public sealed class EditorApplication { public static double timeSinceStartup => 0.0; } // SR:EditorApplication-timeSinceStartup
+    public sealed class EditorApplication                                                    // SR:EditorApplication
+    {
+        public static double timeSinceStartup => 0.0;                                        // SR:EditorApplication-timeSinceStartup
+        public static event Action hierarchyChanged;                                         // SR:EditorApplication-hierarchyChanged
+    }
 
     public sealed partial class Handles                                                      // SR:Handles (sealed partial in 2022.3)
     {

@@ -46,3 +46,15 @@ namespace UnityEngine
         public static T[] FindObjectsOfTypeAll<T>() where T : Object => null;        // SR:Resources.FindObjectsOfTypeAll
     }
 }
+
+namespace UnityEngine.Serialization
+{
+    // Used by PatchGridWindow (renamed settings). UnityCsReference 2022.3:
+    // Runtime/Export/Serialization/FormerlySerializedAsAttribute.cs:12.
+    [AttributeUsage(AttributeTargets.Field, AllowMultiple = true, Inherited = false)]
+    public class FormerlySerializedAsAttribute : Attribute                           // SR:Serialization.FormerlySerializedAsAttribute
+    {
+        public FormerlySerializedAsAttribute(string oldName) { this.oldName = oldName; } // SR:Serialization.FormerlySerializedAsAttribute-ctor
+        public string oldName { get; }                                               // SR:Serialization.FormerlySerializedAsAttribute-oldName
+    }
+}

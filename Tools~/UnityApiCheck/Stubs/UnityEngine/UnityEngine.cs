@@ -31,6 +31,7 @@ namespace UnityEngine
         public Transform transform => null;                                           // SR:Component-transform
         public GameObject gameObject => null;                                         // SR:Component-gameObject
         public T GetComponent<T>() => default;                                        // SR:Component.GetComponent
+        public T[] GetComponents<T>() => null;                                        // SR:Component.GetComponents
     }
     public class Behaviour : Component                                                // SR:Behaviour
     {
@@ -389,6 +390,7 @@ namespace UnityEngine
     {
         public GUIContent(string text) { }                                            // SR:GUIContent-ctor
         public GUIContent(string text, string tooltip) { }                            // SR:GUIContent-ctor
+        public string text { get => null; set { } }                                   // SR:GUIContent-text
     }
     public sealed class GUILayoutOption { }                                           // SR:GUILayoutOption
     public sealed class GUIStyle { }                                                  // SR:GUIStyle (passed through only)
