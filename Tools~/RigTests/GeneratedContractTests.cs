@@ -100,5 +100,19 @@ namespace GregoryTerrain.Rig.Tests
             var e = Assert.Throws<ArgumentException>(() => ContractGenerator.Generate(new[] { typeof(BrokenArrayRecord) }));
             Assert.That(e.Message, Does.Contain("BrokenArrayRecord.point0").And.Contain("point0..point2"));
         }
+
+        /// <summary>
+        /// SRP's own HLSL generator guards a file with its name alone (TERRAINPARAMS_CS_HLSL); a user's
+        /// TerrainParams.cs would get the same guard, and a pass including both would lose ours.
+        /// </summary>
+        [Test]
+        public void EachGuardIsPrefixedSoAUsersFileOfTheSameNameCannotHideIt()
+        {
+            foreach (var f in ContractGenerator.Generate(ContractGenerator.Contracts()).Where(f => f.Path.EndsWith(".hlsl")))
+            {
+                string guard = "GT_" + Path.GetFileName(f.Path).Replace('.', '_').ToUpperInvariant();
+                Assert.That(f.Text, Does.Contain($"\n#ifndef {guard}\n#define {guard}\n").And.EndWith($"#endif // {guard}\n"), f.Path);
+            }
+        }
     }
 }

@@ -155,7 +155,8 @@ namespace GregoryTerrain.Rig
             return s.ToString();
         }
 
-        static string Guard(GenerateHlslAttribute a) => System.IO.Path.GetFileName(a.HlslPath).Replace('.', '_').ToUpperInvariant();
+        // GT_: SRP's [GenerateHLSL] guards a file by its name alone, so a user's TerrainParams.cs.hlsl would hide ours.
+        static string Guard(GenerateHlslAttribute a) => "GT_" + System.IO.Path.GetFileName(a.HlslPath).Replace('.', '_').ToUpperInvariant();
 
         static string CSharp(Type t, List<FieldInfo> fields)
         {
