@@ -114,5 +114,38 @@ namespace GregoryTerrain.Rig.Tests
                 Assert.That(f.Text, Does.Contain($"\n#ifndef {guard}\n#define {guard}\n").And.EndWith($"#endif // {guard}\n"), f.Path);
             }
         }
+
+        [StructLayout(LayoutKind.Sequential)]
+        [GenerateHlsl("Shaders/Bad.cs.hlsl", "Runtime/Core/Bad.Generated.cs")]
+        struct NewlineCommentContract
+        {
+            [HlslComment("metres\nfloat4 _Injected;")] public Float4 range;
+        }
+
+        [StructLayout(LayoutKind.Sequential)]
+        [GenerateHlsl("Shaders/Bad.cs.hlsl", Record = true)]
+        struct CarriageReturnCommentRecord
+        {
+            [HlslComment("per frame\r")] public Float4 corner;
+        }
+
+        [StructLayout(LayoutKind.Sequential)]
+        [GenerateHlsl("Shaders/Bad.cs.hlsl", "Runtime/Core/Bad.Generated.cs")]
+        struct BackslashCommentContract
+        {
+            [HlslComment("per frame \\")] public Float4 range;
+        }
+
+        /// <summary>A comment is written after "// ": a line break would start HLSL, a trailing '\' would continue the comment onto the next declaration.</summary>
+        [Test]
+        public void ACommentThatWouldBreakItsLineIsRefusedNamingFieldAndText()
+        {
+            var e = Assert.Throws<ArgumentException>(() => ContractGenerator.Generate(new[] { typeof(NewlineCommentContract) }));
+            Assert.That(e.Message, Does.Contain("NewlineCommentContract.range").And.Contain("metres\\nfloat4 _Injected;"));
+            e = Assert.Throws<ArgumentException>(() => ContractGenerator.Generate(new[] { typeof(CarriageReturnCommentRecord) }));
+            Assert.That(e.Message, Does.Contain("CarriageReturnCommentRecord.corner").And.Contain("per frame\\r"));
+            e = Assert.Throws<ArgumentException>(() => ContractGenerator.Generate(new[] { typeof(BackslashCommentContract) }));
+            Assert.That(e.Message, Does.Contain("BackslashCommentContract.range").And.Contain("per frame \\"));
+        }
     }
 }
