@@ -1,5 +1,6 @@
 using System;
 using System.Collections.Generic;
+using System.Diagnostics;
 using System.IO;
 using System.Linq;
 using System.Runtime.InteropServices;
@@ -146,6 +147,37 @@ namespace GregoryTerrain.Rig.Tests
             Assert.That(e.Message, Does.Contain("CarriageReturnCommentRecord.corner").And.Contain("per frame\\r"));
             e = Assert.Throws<ArgumentException>(() => ContractGenerator.Generate(new[] { typeof(BackslashCommentContract) }));
             Assert.That(e.Message, Does.Contain("BackslashCommentContract.range").And.Contain("per frame \\"));
+        }
+
+        /// <summary>
+        /// Unity ignores an asset without a .meta in an immutable package: gt generate runs metas.py
+        /// after writing, which gives a new .hlsl a ShaderIncludeImporter and a new .cs a MonoImporter.
+        /// </summary>
+        [Test]
+        public void ANewGeneratedFileGetsAMetaWithItsImporter()
+        {
+            Assert.That(File.ReadAllText(PackageRoot.Combine("Tools~", "rig", "generate.sh")),
+                Does.Match(@"gt-cli\S* generate [^\n]*\n[\s\S]*metas\.py"), "generate.sh runs metas.py after gt-cli generate");
+            string temp = Path.Combine(Path.GetTempPath(), "gt-generate-" + Guid.NewGuid().ToString("N"));
+            try
+            {
+                var files = ContractGenerator.Generate(ContractGenerator.Contracts());
+                ContractGenerator.Write(files, temp);
+                var python = Process.Start(new ProcessStartInfo("python3") { ArgumentList = { PackageRoot.Combine("Tools~", "rig", "metas.py"), temp }, RedirectStandardOutput = true, UseShellExecute = false });
+                python.StandardOutput.ReadToEnd();
+                python.WaitForExit();
+                Assert.That(python.ExitCode, Is.Zero);
+                foreach (var f in files)
+                {
+                    string meta = Path.Combine(temp, f.Path + ".meta");
+                    Assert.That(File.Exists(meta), f.Path);
+                    Assert.That(File.ReadAllText(meta), Does.Contain(f.Path.EndsWith(".hlsl") ? "\nShaderIncludeImporter:\n" : "\nMonoImporter:\n"), f.Path);
+                }
+            }
+            finally
+            {
+                if (Directory.Exists(temp)) Directory.Delete(temp, true);
+            }
         }
     }
 }
