@@ -3,6 +3,7 @@ using System.Collections.Generic;
 using System.Diagnostics;
 using System.IO;
 using System.Linq;
+using System.Reflection;
 using System.Runtime.InteropServices;
 using NUnit.Framework;
 
@@ -178,6 +179,19 @@ namespace GregoryTerrain.Rig.Tests
             {
                 if (Directory.Exists(temp)) Directory.Delete(temp, true);
             }
+        }
+
+        /// <summary>
+        /// The attributes are the rig's: under [Conditional("GT_CONTRACTS")] a player build (no such
+        /// symbol) compiles their uses away, while Core built for the rig defines it and keeps them.
+        /// </summary>
+        [Test]
+        public void TheContractAttributesAreCompiledOnlyForTheRig()
+        {
+            foreach (Type a in new[] { typeof(GenerateHlslAttribute), typeof(HlslArrayAttribute), typeof(HlslCommentAttribute) })
+                Assert.That(a.GetCustomAttributes<ConditionalAttribute>().Select(c => c.ConditionString), Is.EqualTo(new[] { "GT_CONTRACTS" }), a.Name);
+            Assert.That(typeof(TerrainParams).GetCustomAttribute<GenerateHlslAttribute>(), Is.Not.Null, "Core built for the rig keeps the declarations");
+            Assert.That(typeof(ScalarContract).GetCustomAttribute<GenerateHlslAttribute>(), Is.Not.Null, "the tests keep theirs");
         }
     }
 }
