@@ -32,7 +32,6 @@ namespace GregoryTerrain
         [Tooltip("Longest simulated step (s): a long frame is not one huge step.")]
         [SerializeField, Min(0.001f)] float maxStep = 0.1f;
 
-
         // What the buffers and kernels use: `settings` (which the Inspector writes) once validated.
         SnowSettings? _applied;
         bool _editPending;   // OnValidate found a valid Inspector edit; Update applies it

@@ -140,13 +140,14 @@ namespace GregoryTerrain.Rig.Tests
                 ["Core/Patch.cs"] = "namespace G {\n    internal sealed partial class Patch { Box b; } }",
                 ["Core/PatchMore.cs"] = "namespace G {\n    internal sealed partial class Patch { void M() { Maths.Add(); } } }",
                 ["Core/Maths.cs"] = "namespace G {\n    static class Maths { struct Nested { } public static void Add() { } } }",
-                ["Core/Box.cs"] = "namespace G {\n    internal struct Box { } }",
+                ["Core/Box.cs"] = "namespace G {\n    [Mark(1)] internal struct Box { } }",
+                ["Core/MarkAttribute.cs"] = "namespace G {\n    sealed class MarkAttribute : System.Attribute { public MarkAttribute(int n) { } } }",
                 ["Core/AssemblyInfo.cs"] = "[assembly: InternalsVisibleTo(\"G.Editor\")]",
                 ["Core/Brush.cs"] = "namespace G {\n    // Patch\n    internal static class Brush { Patch p; Nested n; } }",
             };
             var roots = new[] { "class Renderer { Patch p; string s = \"Brush\"; /* Brush */ }" };
             Assert.That(Unreached(core, roots), Is.EqualTo(new[] { "Core/Brush.cs (Brush)" }),
-                "a file named only in a string or a comment, or by nested type names, is not reached");
+                "a file named only in a string or a comment, or by nested type names, is not reached; an attribute is reached by its use without 'Attribute'");
         }
 
         // ---- helpers --------------------------------------------------------------------------
@@ -215,9 +216,13 @@ namespace GregoryTerrain.Rig.Tests
             }
         }
 
-        /// <summary>Capitalised identifiers the code names (a superset of the types it uses: a member of the same name counts too, which only errs towards reached).</summary>
+        /// <summary>
+        /// Capitalised identifiers the code names, each also with "Attribute" ([GenerateHlsl] names
+        /// GenerateHlslAttribute): a superset of the types it uses (a member of the same name counts
+        /// too, which only errs towards reached).
+        /// </summary>
         static IEnumerable<string> NamesUsed(string source) =>
-            Regex.Matches(CodeOnly(source), @"\b[A-Z]\w*\b").Select(m => m.Value).Distinct(StringComparer.Ordinal);
+            Regex.Matches(CodeOnly(source), @"\b[A-Z]\w*\b").SelectMany(m => new[] { m.Value, m.Value + "Attribute" }).Distinct(StringComparer.Ordinal);
 
         /// <summary>
         /// Files of <paramref name="core"/> that no root reaches through type names, as "file (types)".

@@ -1,7 +1,9 @@
 using System;
 using System.Collections.Generic;
+using System.Diagnostics;
 using System.IO;
 using System.Linq;
+using System.Reflection;
 using System.Runtime.InteropServices;
 using NUnit.Framework;
 
@@ -99,6 +101,97 @@ namespace GregoryTerrain.Rig.Tests
             Assert.That(record, Does.Contain("struct GregoryPatchRecord\n{\n    float4 points[20];"));
             var e = Assert.Throws<ArgumentException>(() => ContractGenerator.Generate(new[] { typeof(BrokenArrayRecord) }));
             Assert.That(e.Message, Does.Contain("BrokenArrayRecord.point0").And.Contain("point0..point2"));
+        }
+
+        /// <summary>
+        /// SRP's own HLSL generator guards a file with its name alone (TERRAINPARAMS_CS_HLSL); a user's
+        /// TerrainParams.cs would get the same guard, and a pass including both would lose ours.
+        /// </summary>
+        [Test]
+        public void EachGuardIsPrefixedSoAUsersFileOfTheSameNameCannotHideIt()
+        {
+            foreach (var f in ContractGenerator.Generate(ContractGenerator.Contracts()).Where(f => f.Path.EndsWith(".hlsl")))
+            {
+                string guard = "GT_" + Path.GetFileName(f.Path).Replace('.', '_').ToUpperInvariant();
+                Assert.That(f.Text, Does.Contain($"\n#ifndef {guard}\n#define {guard}\n").And.EndWith($"#endif // {guard}\n"), f.Path);
+            }
+        }
+
+        [StructLayout(LayoutKind.Sequential)]
+        [GenerateHlsl("Shaders/Bad.cs.hlsl", "Runtime/Core/Bad.Generated.cs")]
+        struct NewlineCommentContract
+        {
+            [HlslComment("metres\nfloat4 _Injected;")] public Float4 range;
+        }
+
+        [StructLayout(LayoutKind.Sequential)]
+        [GenerateHlsl("Shaders/Bad.cs.hlsl", Record = true)]
+        struct CarriageReturnCommentRecord
+        {
+            [HlslComment("per frame\r")] public Float4 corner;
+        }
+
+        [StructLayout(LayoutKind.Sequential)]
+        [GenerateHlsl("Shaders/Bad.cs.hlsl", "Runtime/Core/Bad.Generated.cs")]
+        struct BackslashCommentContract
+        {
+            [HlslComment("per frame \\")] public Float4 range;
+        }
+
+        /// <summary>A comment is written after "// ": a line break would start HLSL, a trailing '\' would continue the comment onto the next declaration.</summary>
+        [Test]
+        public void ACommentThatWouldBreakItsLineIsRefusedNamingFieldAndText()
+        {
+            var e = Assert.Throws<ArgumentException>(() => ContractGenerator.Generate(new[] { typeof(NewlineCommentContract) }));
+            Assert.That(e.Message, Does.Contain("NewlineCommentContract.range").And.Contain("metres\\nfloat4 _Injected;"));
+            e = Assert.Throws<ArgumentException>(() => ContractGenerator.Generate(new[] { typeof(CarriageReturnCommentRecord) }));
+            Assert.That(e.Message, Does.Contain("CarriageReturnCommentRecord.corner").And.Contain("per frame\\r"));
+            e = Assert.Throws<ArgumentException>(() => ContractGenerator.Generate(new[] { typeof(BackslashCommentContract) }));
+            Assert.That(e.Message, Does.Contain("BackslashCommentContract.range").And.Contain("per frame \\"));
+        }
+
+        /// <summary>
+        /// Unity ignores an asset without a .meta in an immutable package: gt generate runs metas.py
+        /// after writing, which gives a new .hlsl a ShaderIncludeImporter and a new .cs a MonoImporter.
+        /// </summary>
+        [Test]
+        public void ANewGeneratedFileGetsAMetaWithItsImporter()
+        {
+            Assert.That(File.ReadAllText(PackageRoot.Combine("Tools~", "rig", "generate.sh")),
+                Does.Match(@"gt-cli\S* generate [^\n]*\n[\s\S]*metas\.py"), "generate.sh runs metas.py after gt-cli generate");
+            string temp = Path.Combine(Path.GetTempPath(), "gt-generate-" + Guid.NewGuid().ToString("N"));
+            try
+            {
+                var files = ContractGenerator.Generate(ContractGenerator.Contracts());
+                ContractGenerator.Write(files, temp);
+                var python = Process.Start(new ProcessStartInfo("python3") { ArgumentList = { PackageRoot.Combine("Tools~", "rig", "metas.py"), temp }, RedirectStandardOutput = true, UseShellExecute = false });
+                python.StandardOutput.ReadToEnd();
+                python.WaitForExit();
+                Assert.That(python.ExitCode, Is.Zero);
+                foreach (var f in files)
+                {
+                    string meta = Path.Combine(temp, f.Path + ".meta");
+                    Assert.That(File.Exists(meta), f.Path);
+                    Assert.That(File.ReadAllText(meta), Does.Contain(f.Path.EndsWith(".hlsl") ? "\nShaderIncludeImporter:\n" : "\nMonoImporter:\n"), f.Path);
+                }
+            }
+            finally
+            {
+                if (Directory.Exists(temp)) Directory.Delete(temp, true);
+            }
+        }
+
+        /// <summary>
+        /// The attributes are the rig's: under [Conditional("GT_CONTRACTS")] a player build (no such
+        /// symbol) compiles their uses away, while Core built for the rig defines it and keeps them.
+        /// </summary>
+        [Test]
+        public void TheContractAttributesAreCompiledOnlyForTheRig()
+        {
+            foreach (Type a in new[] { typeof(GenerateHlslAttribute), typeof(HlslArrayAttribute), typeof(HlslCommentAttribute) })
+                Assert.That(a.GetCustomAttributes<ConditionalAttribute>().Select(c => c.ConditionString), Is.EqualTo(new[] { "GT_CONTRACTS" }), a.Name);
+            Assert.That(typeof(TerrainParams).GetCustomAttribute<GenerateHlslAttribute>(), Is.Not.Null, "Core built for the rig keeps the declarations");
+            Assert.That(typeof(ScalarContract).GetCustomAttribute<GenerateHlslAttribute>(), Is.Not.Null, "the tests keep theirs");
         }
     }
 }

@@ -1,4 +1,5 @@
 using System;
+using System.Diagnostics;
 
 namespace GregoryTerrain
 {
@@ -10,7 +11,9 @@ namespace GregoryTerrain
     /// generated file differs from what the declaration gives. Every instance field is a
     /// <see cref="Float4"/> (a std140 float4 each: the C# and HLSL offsets agree) named as its
     /// constant without the '_' and with a small first letter (<c>rangeOrigin</c> is <c>_RangeOrigin</c>).
+    /// Only the rig defines GT_CONTRACTS: Unity compiles every use of these attributes away.
     /// </summary>
+    [Conditional("GT_CONTRACTS")]
     [AttributeUsage(AttributeTargets.Struct, Inherited = false)]
     internal sealed class GenerateHlslAttribute : Attribute
     {
@@ -36,6 +39,7 @@ namespace GregoryTerrain
     /// On the first of <see cref="Length"/> fields <c>stem0</c>, <c>stem1</c>, ...: in HLSL they are one
     /// array member, <c>float4 Name[Length]</c> (C# 9 in Unity has no fixed-size buffer of a struct).
     /// </summary>
+    [Conditional("GT_CONTRACTS")]
     [AttributeUsage(AttributeTargets.Field, Inherited = false)]
     internal sealed class HlslArrayAttribute : Attribute
     {
@@ -45,6 +49,7 @@ namespace GregoryTerrain
     }
 
     /// <summary>A contract field's meaning and update rate, written beside its HLSL declaration.</summary>
+    [Conditional("GT_CONTRACTS")]
     [AttributeUsage(AttributeTargets.Field, Inherited = false)]
     internal sealed class HlslCommentAttribute : Attribute
     {

@@ -80,7 +80,6 @@ namespace GregoryTerrain
             return Create(grid, new TerrainParams { gridSize = new Float4(grid.Columns, grid.Rows, 0f, 0f) });
         }
 
-
         /// <summary>The same buffers with other constants (a new range, other settings); the snow map stays.</summary>
         public TerrainInputs WithParams(TerrainParams parameters) => new TerrainInputs(ControlPoints, Regions, GridLines, parameters) { Snow = Snow };
 

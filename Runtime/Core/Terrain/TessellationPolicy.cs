@@ -295,7 +295,6 @@ namespace GregoryTerrain
         public static float NoiseSagittaPixels(float noiseCurvature, float edgeLength, float maxPixelsPerUnit) =>
             noiseCurvature * (edgeLength * edgeLength) * 0.125f * maxPixelsPerUnit;
 
-
         // ------------------------------------------------------------ culling
 
         /// <summary>

@@ -107,6 +107,17 @@ namespace GregoryTerrain.Rig
             return fields;
         }
 
+        // Written after "// ": a line break would start HLSL, a trailing '\' would splice the next line into the comment.
+        static string Comment(Type t, FieldInfo f)
+        {
+            string text = f.GetCustomAttribute<HlslCommentAttribute>()?.Text;
+            if (text != null && (text.IndexOfAny(new[] { '\n', '\r' }) >= 0 || text.EndsWith("\\")))
+                throw new ArgumentException($"{t.FullName}.{f.Name}: [HlslComment(\"{Escaped(text)}\")] must be one line that does not end in '\\' (it is written after // in the HLSL)");
+            return text;
+        }
+
+        static string Escaped(string text) => text.Replace("\\", "\\\\").Replace("\n", "\\n").Replace("\r", "\\r");
+
         static string Hlsl(Type t, GenerateHlslAttribute a, List<FieldInfo> fields)
         {
             string guard = Guard(a);
@@ -119,7 +130,7 @@ namespace GregoryTerrain.Rig
             foreach (FieldInfo f in fields)
             {
                 string decl = $"float4 {ShaderName(f)};";
-                string comment = f.GetCustomAttribute<HlslCommentAttribute>()?.Text;
+                string comment = Comment(t, f);
                 s.Append(comment == null ? decl : decl.PadRight(width + 2) + "// " + comment).Append('\n');
             }
             s.Append("#endif // ").Append(guard).Append('\n');
@@ -134,7 +145,7 @@ namespace GregoryTerrain.Rig
             for (int i = 0; i < fields.Count; i++)
             {
                 var array = fields[i].GetCustomAttribute<HlslArrayAttribute>();
-                string comment = fields[i].GetCustomAttribute<HlslCommentAttribute>()?.Text;
+                string comment = Comment(t, fields[i]);
                 if (array == null) { members.Add(($"float4 {fields[i].Name};", comment)); continue; }
                 string stem = fields[i].Name.TrimEnd('0');
                 for (int k = 0; k < array.Length; k++)
@@ -155,7 +166,8 @@ namespace GregoryTerrain.Rig
             return s.ToString();
         }
 
-        static string Guard(GenerateHlslAttribute a) => System.IO.Path.GetFileName(a.HlslPath).Replace('.', '_').ToUpperInvariant();
+        // GT_: SRP's [GenerateHLSL] guards a file by its name alone, so a user's TerrainParams.cs.hlsl would hide ours.
+        static string Guard(GenerateHlslAttribute a) => "GT_" + System.IO.Path.GetFileName(a.HlslPath).Replace('.', '_').ToUpperInvariant();
 
         static string CSharp(Type t, List<FieldInfo> fields)
         {
