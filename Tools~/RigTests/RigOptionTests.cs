@@ -127,7 +127,7 @@ namespace GregoryTerrain.Rig.Tests
             "bench_patch_layout-device --device", "eval --grid", "fit-bench --dem", "lod-bench --device", "lod-bench --png",
             "lod-device --device", "query-bench --grid", "snow-bench --device", "snow-device --device",
             "shaders --only", "shaders --dxc", "shaderlab --package", "shaderlab --shaderlib", "shaderlab --check", "shaderlab --pipeline",
-            "shaderlab --variants", "shaderlab --dxc",
+            "shaderlab --variants", "shaderlab --dxc", "shaderlab --counts",
         };
 
         /// <summary>What every probe is: out of range for most options (a probe inside an option's range is skipped for it).</summary>

@@ -38,7 +38,7 @@ make_plan() {  # make_plan DIR
   local cache=(vertex_cache noise+vertex_cache noise+height_color+vertex_cache)
   # Always compiled afresh (~30 s): a plan carried to the GPU with SPIR-V older than Shaders/ times
   # the old kernels under the new dispatch sizes, and nothing in the run would say so.
-  bash "$RIG_DIR/shaders.sh" -j "$(nproc)" >/dev/null
+  bash "$RIG_DIR/shaders.sh" --spirv-only -j "$(nproc)" >/dev/null
   for v in "${cache[@]}"; do
     [ -f "$BUILD_DIR/spirv/$v/cache_factors.spv" ] && [ -f "$BUILD_DIR/spirv/$v/cache_vertices.spv" ] \
       || die "gt shaders wrote no $v/cache_factors.spv + cache_vertices.spv (GT_VERTEX_CACHE variants and kernels, internals.md)"
