@@ -14,7 +14,8 @@ using NUnit.Framework;
 
 namespace GregoryTerrain.Rig.Tests
 {
-    [TestFixture]
+    // Each probe is its own process in its own folder: two at a time keep both cores busy.
+    [TestFixture, Parallelizable(ParallelScope.Children)]
     public class RigOptionTests
     {
         /// <summary>One number of an option: [Lo, Hi] (above Lo when Open), integers when Whole, 0 refused when NotZero.</summary>
