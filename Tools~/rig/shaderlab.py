@@ -51,8 +51,9 @@ Checks (--check, default all):
              in the project's packages (same preprocessed text); the rest are compiled again.
              --selection-only: print the SubShaders each project kind uses, compile nothing.
 --counts [VARIANTS]  SPIR-V instruction counts per pass, variant and stage ("cost ..." lines; see
-             count_instructions), of every variant or of the comma-separated VARIANTS (e.g. base,noise:
-             what the tests compare; spirv-opt -O is a quarter of a full run's compile time).
+             count_instructions), of every variant or of those whose package keywords are one of the
+             comma-separated VARIANTS (e.g. base,noise: what the tests compare; a pass's own keywords
+             come along; spirv-opt -O is a quarter of a full run's compile time).
 --package DIR  check another copy of the package (default: the one holding this script); the
              libraries default to DIR/../shared/unity-shaderlib (--shaderlib DIR to override).
 --variants base  only the no-keyword variant (KEYWORD: only the variants with it); --pipeline URP,HDRP,Builtin,Compute  only those.
@@ -764,7 +765,11 @@ class Rig:
         return True, [], spv
 
     def counted(self, case):
-        return self.counts == "all" or (self.counts is not None and variant_name(case.keywords) in self.counts)
+        """--counts VARIANTS name the package's keywords: a pass's own that come along (HDRP's
+        SHADOW_LOW in every ForwardOnly variant) do not change which variants are counted."""
+        if self.counts is None or self.counts == "all":
+            return self.counts == "all"
+        return variant_name([k for k in case.keywords if k.startswith("GT_")]) in self.counts
 
     def count(self, spv):
         """count_instructions of a compiled program, once per program."""
