@@ -35,7 +35,7 @@ namespace GregoryTerrain.Rig.Tests
             return Path.Combine(PackageRoot(), ".build", "harness", "gt-harness");
         }
 
-        public static HarnessRun Start(string file, IEnumerable<string> args)
+        public static HarnessRun Start(string file, IEnumerable<string> args, IDictionary<string, string> env = null)
         {
             var psi = new ProcessStartInfo(file)
             {
@@ -46,6 +46,7 @@ namespace GregoryTerrain.Rig.Tests
             foreach (string a in args) psi.ArgumentList.Add(a);
             psi.Environment["VK_ICD_FILENAMES"] = LavapipeIcd;
             psi.Environment["VK_DRIVER_FILES"] = LavapipeIcd;
+            if (env != null) foreach (var kv in env) psi.Environment[kv.Key] = kv.Value;
             using (var p = Process.Start(psi))
             {
                 var stderrTask = p.StandardError.ReadToEndAsync();

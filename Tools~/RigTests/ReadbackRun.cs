@@ -105,7 +105,7 @@ namespace GregoryTerrain.Rig.Tests
         /// </summary>
         public static string CompileVariants(string work, params string[] variants)
         {
-            var args = new List<string> { Path.Combine(HarnessRun.PackageRoot(), "Tools~", "gt"), "shaders" };
+            var args = new List<string> { Path.Combine(HarnessRun.PackageRoot(), "Tools~", "gt"), "shaders", "--spirv-only" };
             foreach (string v in variants.Concat(variants.Where(v => OriginSiblings.Contains(v)).Select(v => v == "base" ? "range_origin" : v + "+range_origin")))
             { args.Add("--only"); args.Add(v); }
             Exec("bash", args.ToArray(), new Dictionary<string, string> { ["GT_BUILD_DIR"] = work });

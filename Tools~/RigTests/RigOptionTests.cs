@@ -14,7 +14,8 @@ using NUnit.Framework;
 
 namespace GregoryTerrain.Rig.Tests
 {
-    [TestFixture]
+    // Each probe is its own process in its own folder: two at a time keep both cores busy.
+    [TestFixture, Parallelizable(ParallelScope.Children)]
     public class RigOptionTests
     {
         /// <summary>One number of an option: [Lo, Hi] (above Lo when Open), integers when Whole, 0 refused when NotZero.</summary>
@@ -127,7 +128,7 @@ namespace GregoryTerrain.Rig.Tests
             "bench_patch_layout-device --device", "eval --grid", "fit-bench --dem", "lod-bench --device", "lod-bench --png",
             "lod-device --device", "query-bench --grid", "snow-bench --device", "snow-device --device",
             "shaders --only", "shaders --dxc", "shaderlab --package", "shaderlab --shaderlib", "shaderlab --check", "shaderlab --pipeline",
-            "shaderlab --variants", "shaderlab --dxc",
+            "shaderlab --variants", "shaderlab --dxc", "shaderlab --counts",
         };
 
         /// <summary>What every probe is: out of range for most options (a probe inside an option's range is skipped for it).</summary>

@@ -38,7 +38,7 @@ namespace GregoryTerrain.Rig.Tests
             Assert.That(File.Exists(_runner), Is.True, "gt-compute not built at " + _runner + " (run Tools~/gt setup)");
             _work = Path.Combine(Path.GetTempPath(), "gt-snowrender-" + Guid.NewGuid().ToString("N"));
             Directory.CreateDirectory(_work);
-            var args = new List<string> { Path.Combine(_root, "Tools~", "gt"), "shaders" };
+            var args = new List<string> { Path.Combine(_root, "Tools~", "gt"), "shaders", "--spirv-only" };
             foreach (string v in new[] { "base", "snow", "readback", "readback+snow", "noise+height_color+snow", "noise+snow", "noise+snow+vertex_cache" }) { args.Add("--only"); args.Add(v); }
             Exec("bash", args.ToArray(), new Dictionary<string, string> { ["GT_BUILD_DIR"] = _work });
             _spirv = Path.Combine(_work, "spirv");

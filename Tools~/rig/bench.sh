@@ -36,15 +36,19 @@ make_plan() {  # make_plan DIR
   write_pass_states "$dir"   # the forward pass's render state: bench_run.sh draws every job with it
   # The vertex cache's variants (GT_VERTEX_CACHE) carry their two compute kernels (internals.md, "Vertex cache").
   local cache=(vertex_cache noise+vertex_cache noise+height_color+vertex_cache)
-  # Always compiled afresh (~30 s): a plan carried to the GPU with SPIR-V older than Shaders/ times
-  # the old kernels under the new dispatch sizes, and nothing in the run would say so.
-  bash "$RIG_DIR/shaders.sh" -j "$(nproc)" >/dev/null
+  local drawn=(base noise noise+height_color paper_mode paper_mode+noise factor_readback factor_readback+noise
+               readback+noise noise+height_color+noise_table "${cache[@]}")
+  # Always compiled afresh, the variants the plan draws only: a plan carried to the GPU with SPIR-V
+  # older than Shaders/ times the old kernels under the new dispatch sizes, and nothing would say so.
+  local only=()
+  for v in "${drawn[@]}"; do only+=(--only "$v"); done
+  bash "$RIG_DIR/shaders.sh" --spirv-only "${only[@]}" -j "$(nproc)" >/dev/null
   for v in "${cache[@]}"; do
     [ -f "$BUILD_DIR/spirv/$v/cache_factors.spv" ] && [ -f "$BUILD_DIR/spirv/$v/cache_vertices.spv" ] \
       || die "gt shaders wrote no $v/cache_factors.spv + cache_vertices.spv (GT_VERTEX_CACHE variants and kernels, internals.md)"
   done
   mkdir -p "$dir/spirv"
-  for v in base noise noise+height_color paper_mode paper_mode+noise factor_readback factor_readback+noise readback+noise noise+height_color+noise_table "${cache[@]}"; do
+  for v in "${drawn[@]}"; do
     mkdir -p "$dir/spirv/$v"; cp "$BUILD_DIR/spirv/$v/"*.spv "$dir/spirv/$v/"
   done
   # The fair static mesh's vertex stage (rig only, GT_STATIC_MESH): reads baked vertices, same frag

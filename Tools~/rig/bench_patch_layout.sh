@@ -43,7 +43,7 @@ rm -rf "$work" "$scratch"; mkdir -p "$work/bin" "$work/spv" "$work/new" "$work/o
 work="$(cd "$work" && pwd)"
 
 # This tree's shaders and buffers.
-bash "$RIG_DIR/shaders.sh" --only "$variant" >/dev/null || die "gt shaders --only $variant failed"
+bash "$RIG_DIR/shaders.sh" --spirv-only --only "$variant" >/dev/null || die "gt shaders --only $variant failed"
 mkdir -p "$work/spv/new" "$work/spv/old"
 cp "$BUILD_DIR/spirv/$variant/"*.spv "$work/spv/new/"
 "${cli[@]}" demo-grid --out "$scratch/grid.json" >/dev/null

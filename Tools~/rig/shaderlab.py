@@ -50,7 +50,10 @@ Checks (--check, default all):
              Project runs reuse the pipelines check's result for a case whose included files all lie
              in the project's packages (same preprocessed text); the rest are compiled again.
              --selection-only: print the SubShaders each project kind uses, compile nothing.
---counts     SPIR-V instruction counts per pass, variant and stage ("cost ..." lines; see count_instructions).
+--counts [VARIANTS]  SPIR-V instruction counts per pass, variant and stage ("cost ..." lines; see
+             count_instructions), of every variant or of those whose package keywords are one of the
+             comma-separated VARIANTS (e.g. base,noise: what the tests compare; a pass's own keywords
+             come along; spirv-opt -O is a quarter of a full run's compile time).
 --package DIR  check another copy of the package (default: the one holding this script); the
              libraries default to DIR/../shared/unity-shaderlib (--shaderlib DIR to override).
 --variants base  only the no-keyword variant (KEYWORD: only the variants with it); --pipeline URP,HDRP,Builtin,Compute  only those.
@@ -676,6 +679,7 @@ class Rig:
         self.preprocessed = 0
         self.resolved = {}   # Case.key() -> (result, logical paths of the files it included), all libraries visible
         self.dxc_cache = {}  # Case.key() -> DXC's result
+        self.count_cache = {}  # compiled program (.spv path) -> count_instructions
         self.lint_cache = {}  # (text hash, kernel) or package file -> findings
         self.banned = fxc_lint.banned_words(shaderlib)
 
@@ -736,9 +740,9 @@ class Rig:
             hit = self.compile(case, text)
             with self.lock:
                 self.cache[key] = hit
-        ok, errors, count = hit
+        ok, errors, spv = hit
         if ok:
-            return ("ok", [], applied, count), used
+            return ("ok", [], applied, self.count(spv) if self.counted(case) else None), used
         for name, test in LIMITS:
             if test(case, errors):
                 return ("limit", [name] + errors, applied, None), used
@@ -758,8 +762,24 @@ class Rig:
         v = subprocess.run(["spirv-val", spv], capture_output=True, text=True)
         if v.returncode != 0:
             return False, ["spirv-val: " + " ".join((v.stdout + v.stderr).split())], None
-        count = count_instructions(spv) if self.counts else None
-        return True, [], count
+        return True, [], spv
+
+    def counted(self, case):
+        """--counts VARIANTS name the package's keywords: a pass's own that come along (HDRP's
+        SHADOW_LOW in every ForwardOnly variant) do not change which variants are counted."""
+        if self.counts is None or self.counts == "all":
+            return self.counts == "all"
+        return variant_name([k for k in case.keywords if k.startswith("GT_")]) in self.counts
+
+    def count(self, spv):
+        """count_instructions of a compiled program, once per program."""
+        with self.lock:
+            hit = self.count_cache.get(spv)
+        if hit is None:
+            hit = count_instructions(spv)
+            with self.lock:
+                self.count_cache[spv] = hit
+        return hit
 
     def run(self, cases, includes, visible=None):
         with concurrent.futures.ThreadPoolExecutor(self.jobs) as pool:
@@ -957,7 +977,8 @@ def main(argv=None):
     ap.add_argument("--package", default=DEFAULT_PKG, help="package root to check (default: this package)")
     ap.add_argument("--shaderlib", default=None, help="Unity's shader libraries (default: PACKAGE/../shared/unity-shaderlib)")
     ap.add_argument("--check", choices=["all", "pipelines", "projects"], default="all")
-    ap.add_argument("--counts", action="store_true", help="print SPIR-V instruction counts per pass, variant and stage")
+    ap.add_argument("--counts", nargs="?", const="all", default=None, metavar="VARIANTS",
+                    help="print SPIR-V instruction counts per pass, variant and stage (all variants, or the comma-separated VARIANTS)")
     options.add_number(ap, "--jobs", range="jobs", default=2, help="parallel compiles (default 2)")
     ap.add_argument("--pipeline", default=None, help="comma-separated pipelines to check (URP,HDRP,Builtin,Compute; default all)")
     ap.add_argument("--variants", default="all", metavar="all|base|KEYWORD",
@@ -1000,7 +1021,8 @@ def main(argv=None):
 
     failed, started = False, time.time()
     with tempfile.TemporaryDirectory(prefix="gt-shaderlab-") as tmp:
-        rig = Rig(pkg, shaderlib, tmp, args.jobs, args.counts, dxc)
+        counted = None if args.counts is None else "all" if args.counts == "all" else set(args.counts.split(","))
+        rig = Rig(pkg, shaderlib, tmp, args.jobs, counted, dxc)
         if args.check in ("all", "pipelines"):
             cases = shader_cases(subs, shader, tmp, "all", args.variants) + compute_cases(pkg, args.variants)
             if args.pipeline:

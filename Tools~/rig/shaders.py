@@ -138,7 +138,7 @@ def check_bindings(spv, log, keywords=()):
     return errors
 
 
-def compile_one(out_dir, variant, stage, includes, dxc=DXC):
+def compile_one(out_dir, variant, stage, includes, dxc=DXC, spirv_only=False):
     name, keywords = variant
     sname, gstage, entry = stage
     vdir = os.path.join(out_dir, name)
@@ -158,6 +158,7 @@ def compile_one(out_dir, variant, stage, includes, dxc=DXC):
     if step("glslang", cmd) and step("spirv-val", ["spirv-val", spv]):
         targets.append("spirv")
         problems.extend(check_bindings(spv, log, keywords))
+    if "spirv" in targets and not spirv_only:
         glsl = os.path.join(vdir, f"{sname}.450.{gstage}")
         essl = os.path.join(vdir, f"{sname}.es320.{gstage}")
         msl = os.path.join(vdir, f"{sname}.metal")
@@ -172,7 +173,7 @@ def compile_one(out_dir, variant, stage, includes, dxc=DXC):
         if step("spirv-cross msl", ["spirv-cross", spv, "--entry", entry] + MSL_OPTIONS
                 + MSL_STAGE_OPTIONS.get(sname, []) + ["--output", msl]):
             targets.append("msl21")
-    if step("dxc", [dxc, "-HV", "2018", "-spirv", "-fcgl", "-Vd", "-T", DXC_PROFILES[gstage], "-E", entry, "-Fo", os.devnull]
+    if not spirv_only and step("dxc", [dxc, "-HV", "2018", "-spirv", "-fcgl", "-Vd", "-T", DXC_PROFILES[gstage], "-E", entry, "-Fo", os.devnull]
             + [f"-I{d}" for d in includes] + [f"-D{k}" for k in keywords] + STAGE_DEFINES.get(sname, []) + [ENTRY_FILE]):
         targets.append("dxc")
     with open(os.path.join(vdir, sname + ".log"), "w") as f:
@@ -189,6 +190,8 @@ def main():
     ap.add_argument("--only", action="append", default=[], help="compile only this variant")
     ap.add_argument("--dxc", default=DXC, help="Microsoft's DXC (default: ../shared/dxc/bin/dxc beside the package)")
     ap.add_argument("--clean", action="store_true", help="empty OUT_DIR first (once the options are checked)")
+    ap.add_argument("--spirv-only", action="store_true",
+                    help="SPIR-V, spirv-val and the binding check only (what a GPU test draws); no cross-compiles, no DXC")
     args = ap.parse_args()
     if args.clean:
         shutil.rmtree(args.out_dir, ignore_errors=True)
@@ -206,7 +209,7 @@ def main():
 
     jobs = [(v, s) for v in variants for s in stages_of(v[1])]
     with ThreadPoolExecutor(max_workers=args.jobs) as pool:
-        results = list(pool.map(lambda j: compile_one(args.out_dir, j[0], j[1], args.includes, args.dxc), jobs))
+        results = list(pool.map(lambda j: compile_one(args.out_dir, j[0], j[1], args.includes, args.dxc, args.spirv_only), jobs))
 
     failed = 0
     for name, sname, problems, targets in results:

@@ -3,7 +3,8 @@
 # GLSL ES 3.20 and MSL, and recompile the GLSL; and the same stage with Microsoft's DXC (HLSL 2018).
 # One line per variant and stage, then the counts.
 # Outputs: $BUILD_DIR/spirv/<variant>/<stage>.spv (+ .glsl/.metal and a .log per stage).
-#   gt shaders [--only VARIANT]... [-j JOBS]
+#   gt shaders [--only VARIANT]... [-j JOBS] [--spirv-only]   (--spirv-only: SPIR-V, spirv-val and the
+#   binding check only, what the GPU tests and the bench draw)
 # GT_SHADER_INCLUDES: extra include folders (':'-separated), searched after Shaders/ itself.
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 for tool in glslangValidator spirv-val spirv-cross python3; do

@@ -184,6 +184,10 @@ const char* usageText() {
 
   --list-devices                 list physical devices and exit
   --device SUBSTR                pick the device whose name contains SUBSTR (case-insensitive)
+  --uniform-blocks auto|uniform|storage   bind TerrainParams (b0) and the camera (b1) as compiled
+                                 (uniform) or as storage buffers, the shaders' blocks rewritten to
+                                 match (storage: lavapipe does not inline their values and compile
+                                 the pipeline again per scene); auto (default): storage on lavapipe
   --vert F --tesc F --tese F --frag F   SPIR-V stages (no tesc/tese: fallback grid mode)
   --entry-vert/--entry-tesc/--entry-tese/--entry-frag NAME
                                  entry points (default: the module's only one, else
@@ -250,6 +254,15 @@ const char* usageText() {
 )";
 }
 
+namespace {
+UniformBlocks parseUniformBlocks(const std::string& option, const std::string& v) {
+    if (v == "auto") return UniformBlocks::Auto;
+    if (v == "uniform") return UniformBlocks::Uniform;
+    if (v == "storage") return UniformBlocks::Storage;
+    fail(option + " '" + v + "': expected auto, uniform or storage");
+}
+}  // namespace
+
 Options parseOptions(int argc, char** argv) {
     Options o;
     bool staticMesh = false;
@@ -264,6 +277,7 @@ Options parseOptions(int argc, char** argv) {
         if (a == "--help" || a == "-h") { std::fputs(usageText(), stdout); std::exit(0); }
         else if (a == "--list-devices") o.listDevices = true;
         else if (a == "--device") o.deviceSubstring = value();
+        else if (a == "--uniform-blocks") o.uniformBlocks = parseUniformBlocks(a, value());
         else if (a == "--vert") o.vertPath = value();
         else if (a == "--tesc") o.tescPath = value();
         else if (a == "--tese") o.tesePath = value();

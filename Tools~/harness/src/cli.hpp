@@ -10,6 +10,13 @@
 
 namespace gt {
 
+// --uniform-blocks: how the rig's uniform blocks (TerrainParams b0, the camera b1) are bound.
+enum class UniformBlocks {
+    Auto,     // storage on lavapipe, uniform elsewhere
+    Uniform,  // as compiled: uniform-buffer descriptors
+    Storage,  // rewritten as storage blocks (spirv.hpp, uniformBlocksAsStorage)
+};
+
 enum class Mode {
     Tessellated,  // --vert --tesc --tese --frag: patch-list draw, SV_VertexID only
     Fallback,     // --vert --frag without tesc/tese: indexed (F+1)^2 grid, one instance per tile
@@ -40,6 +47,7 @@ struct StorageDump {
 struct Options {
     bool listDevices = false;
     std::string deviceSubstring;  // "" = first device that has what the run needs
+    UniformBlocks uniformBlocks = UniformBlocks::Auto;
 
     std::string vertPath, tescPath, tesePath, fragPath;
     std::string vertEntry, tescEntry, teseEntry, fragEntry;  // "" = the module's only entry point, else the default name

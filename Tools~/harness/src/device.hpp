@@ -37,6 +37,9 @@ struct Gpu {
     VkPhysicalDeviceFeatures enabled{};  // what was turned on
     std::string driverName, driverInfo;  // VK_KHR_driver_properties / Vulkan 1.2, "" if unavailable
     bool isLavapipe = false;             // Mesa's CPU driver (llvmpipe): Tools~/rig/README.md, "The rig's drivers"
+    // The rig's uniform blocks (TerrainParams, the camera) bound as storage buffers: see
+    // uniformBlocksAsStorage in spirv.hpp. Set by --uniform-blocks before any shader is loaded.
+    bool uniformBlocksAsStorage = false;
     uint32_t timestampValidBits = 0;     // of the chosen queue family; 0 = no timestamps
 };
 

@@ -11,6 +11,9 @@ namespace gt {
 
 namespace {
 
+// TerrainParams and the camera: bound as uniform or storage buffers (--uniform-blocks), so both.
+constexpr VkBufferUsageFlags kUniformBlockUsage = VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
+
 std::vector<uint8_t> readSized(const std::string& path, size_t exact, size_t multiple) {
     std::vector<uint8_t> bytes = readFile(path);
     if (exact && bytes.size() != exact)
@@ -63,13 +66,13 @@ Inputs loadInputs(const Gpu& gpu, const std::string& dir, const std::optional<st
     const size_t paramsBytes = kParamsBytes + (in.snow ? kSnowParamsBytes : 0) + tail.size();
 
     const VkBufferUsageFlags storage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
-    in.bindings[kBindingParams] = createHostBuffer(gpu, paramsBytes, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, true);
+    in.bindings[kBindingParams] = createHostBuffer(gpu, paramsBytes, kUniformBlockUsage, true);
     std::memcpy(in.bindings[kBindingParams].mapped, in.params.data(), kParamsBytes);
     if (in.snow)
         std::memcpy(static_cast<uint8_t*>(in.bindings[kBindingParams].mapped) + kParamsBytes, snowSize.data(), kSnowParamsBytes);
     if (!tail.empty())
         std::memcpy(static_cast<uint8_t*>(in.bindings[kBindingParams].mapped) + kParamsBytes, tail.data(), tail.size());
-    in.bindings[kBindingCamera] = createDeviceBuffer(gpu, camera, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
+    in.bindings[kBindingCamera] = createDeviceBuffer(gpu, camera, kUniformBlockUsage);
     in.bindings[kBindingControlPoints] = createDeviceBuffer(gpu, points, storage);
     in.bindings[kBindingRegions] = createDeviceBuffer(gpu, regions, storage);
     in.bindings[kBindingGridLines] = createDeviceBuffer(gpu, lines, storage);
@@ -92,7 +95,7 @@ void destroyInputs(const Gpu& gpu, Inputs& inputs) {
 Inputs copyWithOwnParams(const Gpu& gpu, const Inputs& inputs) {
     Inputs copy = inputs;
     const Buffer& from = inputs.bindings[kBindingParams];
-    copy.bindings[kBindingParams] = createHostBuffer(gpu, from.size, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, true);
+    copy.bindings[kBindingParams] = createHostBuffer(gpu, from.size, kUniformBlockUsage, true);
     std::memcpy(copy.bindings[kBindingParams].mapped, from.mapped, from.size);
     return copy;
 }
@@ -111,7 +114,7 @@ const char* rigBindingName(uint32_t binding) {
 std::vector<uint8_t> loadCameraPath(const Gpu& gpu, Inputs& inputs, const std::string& path) {
     std::vector<uint8_t> blocks = readSized(path, 0, kCameraBytes);
     destroyBuffer(gpu, inputs.bindings[kBindingCamera]);
-    inputs.bindings[kBindingCamera] = createHostBuffer(gpu, kCameraBytes, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, true);
+    inputs.bindings[kBindingCamera] = createHostBuffer(gpu, kCameraBytes, kUniformBlockUsage, true);
     writeCamera(inputs, blocks, 0);
     return blocks;
 }

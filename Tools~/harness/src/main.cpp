@@ -146,7 +146,10 @@ int run(const Options& o) {
     request.timeline = o.inFlight > 1;
     request.asyncCompute = o.asyncCompute;
     Gpu gpu = createGpu(o.deviceSubstring, request);
+    gpu.uniformBlocksAsStorage = o.uniformBlocks == UniformBlocks::Storage ||
+                                 (o.uniformBlocks == UniformBlocks::Auto && gpu.isLavapipe);
     printDevice(gpu);
+    std::printf("inputs uniform_blocks %s\n", gpu.uniformBlocksAsStorage ? "storage" : "uniform");
     // Held until the end, so every buffer of the job is placed after it (performance.md: where the
     // vertex cache lands moved a 0.6M frame by up to 1%; a sweep of pads averages that out).
     Buffer placementPad;

@@ -11,10 +11,12 @@ namespace gt {
 namespace {
 
 // The rig's bindings (uniform buffers 0 and 1, storage buffers above) then the --storage ones.
-std::vector<DescriptorEntry> descriptorEntries(const Inputs& inputs, const std::vector<StorageBuffer>& storage) {
+// With gpu.uniformBlocksAsStorage, 0 and 1 are storage buffers too (the shaders' blocks were rewritten).
+std::vector<DescriptorEntry> descriptorEntries(const Gpu& gpu, const Inputs& inputs, const std::vector<StorageBuffer>& storage) {
     std::vector<DescriptorEntry> entries;
     for (uint32_t i = 0; i < inputs.bindingCount(); ++i) {
-        const VkDescriptorType type = i <= kBindingCamera ? VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER : VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+        const bool uniform = i <= kBindingCamera && !gpu.uniformBlocksAsStorage;
+        const VkDescriptorType type = uniform ? VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER : VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
         entries.push_back({i, type, inputs.bindings[i].buffer});
     }
     for (const StorageBuffer& s : storage) entries.push_back({s.binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, s.buffer.buffer});
@@ -39,7 +41,7 @@ VkDescriptorSet allocateSet(const Gpu& gpu, const Pipeline& p) {
 
 void createDescriptors(const Gpu& gpu, Pipeline& p, uint32_t sets, const Inputs& inputs,
                        const std::vector<StorageBuffer>& storage) {
-    const std::vector<DescriptorEntry> entries = descriptorEntries(inputs, storage);
+    const std::vector<DescriptorEntry> entries = descriptorEntries(gpu, inputs, storage);
     const uint32_t uniforms = countOf(entries, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER);
     const uint32_t storages = countOf(entries, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER);
     // Every binding is visible to every stage, so each stage counts all of them against its limit.
@@ -65,7 +67,7 @@ void createDescriptors(const Gpu& gpu, Pipeline& p, uint32_t sets, const Inputs&
     GT_VK(vkCreateDescriptorSetLayout(gpu.device, &li, nullptr, &p.setLayout));
 
     // Room for the frames-in-flight sets too (addFrameSet): same layout, other buffers.
-    VkDescriptorPoolSize sizes[2] = {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, uniforms * sets},
+    VkDescriptorPoolSize sizes[2] = {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, std::max(uniforms, 1u) * sets},
                                      {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, storages * sets}};
     VkDescriptorPoolCreateInfo pi{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
     pi.maxSets = sets;
@@ -191,7 +193,7 @@ Pipeline createPipeline(const Gpu& gpu, const PipelineDesc& d, const RenderTarge
 
 VkDescriptorSet addFrameSet(const Gpu& gpu, const Pipeline& pipeline, const Inputs& inputs,
                             const std::vector<StorageBuffer>& storage) {
-    const std::vector<DescriptorEntry> entries = descriptorEntries(inputs, storage);
+    const std::vector<DescriptorEntry> entries = descriptorEntries(gpu, inputs, storage);
     std::vector<uint32_t> bindings;
     for (const DescriptorEntry& e : entries) bindings.push_back(e.binding);
     std::sort(bindings.begin(), bindings.end());

@@ -32,9 +32,19 @@ constexpr uint32_t kExecutionModelGLCompute = 5;
 // that equals a resource's id counts as a use: literals can only make the list longer, never shorter.
 std::vector<DescriptorUse> usedDescriptors(const std::vector<uint32_t>& words);
 
+// Rewrites each uniform block (a Uniform-class variable of a Block struct) as a storage block
+// (BufferBlock, SPIR-V 1.0-1.3): same members, offsets and loads, read through a storage-buffer
+// descriptor. Why: lavapipe inlines uniform-block values that steer branches and loops into the
+// shader and compiles it again at draw time for each new set of values, a few CPU seconds per
+// tessellated pipeline and a miss in Mesa's disk cache for every new scene; storage loads are never
+// inlined, so one compile per SPIR-V serves every scene. Returns how many blocks it rewrote; throws
+// gt::Error for SPIR-V 1.4+ (BufferBlock is gone there).
+uint32_t uniformBlocksAsStorage(std::vector<uint32_t>& words, const std::string& path);
+
 // Loads path. Entry: `requested` when given (must exist in the module); otherwise the module's
 // only entry point of that stage, else `fallbackName` (empty: the module must have exactly one).
-// Throws gt::Error naming the file.
+// Throws gt::Error naming the file. With gpu.uniformBlocksAsStorage, its uniform blocks are
+// rewritten as storage blocks first (uniformBlocksAsStorage).
 ShaderModule loadShader(const Gpu& gpu, const std::string& path, uint32_t executionModel, const std::string& requested,
                         const std::string& fallbackName);
 
