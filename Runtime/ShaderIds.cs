@@ -87,12 +87,15 @@ namespace GregoryTerrain
         }
 
         /// <summary>Sets the whole TerrainParams block on a compute shader, each float4 by its name.</summary>
-        public static void SetParams(ComputeShader shader, in TerrainParams p)
+        public static void SetParams(ComputeShader shader, in TerrainParams p) => SetFloat4s(shader, Params, p);
+
+        /// <summary>Sets a contract block (TerrainParams, SnowParams) on a compute shader, float4 k by ids[k].</summary>
+        public static void SetFloat4s<T>(ComputeShader shader, int[] ids, in T block) where T : struct, IFloat4Block
         {
-            for (int k = 0; k < TerrainParams.Float4Count; k++)
+            for (int k = 0; k < ids.Length; k++)
             {
-                Float4 v = p[k];
-                shader.SetVector(Params[k], new Vector4(v.x, v.y, v.z, v.w));
+                Float4 v = block[k];
+                shader.SetVector(ids[k], new Vector4(v.x, v.y, v.z, v.w));
             }
         }
     }

@@ -300,14 +300,7 @@ namespace GregoryTerrain
             return true;
         }
 
-        void SetParams(in SnowParams p)
-        {
-            for (int k = 0; k < SnowParams.Float4Count; k++)
-            {
-                Float4 v = p[k];
-                simulation.SetVector(ShaderIds.SnowParams[k], new Vector4(v.x, v.y, v.z, v.w));
-            }
-        }
+        void SetParams(in SnowParams p) => ShaderIds.SetFloat4s(simulation, ShaderIds.SnowParams, p);
 
         void Allocate()
         {

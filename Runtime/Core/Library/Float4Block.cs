@@ -7,6 +7,12 @@ namespace GregoryTerrain
     /// A contract struct (<see cref="GenerateHlslAttribute"/>: sequential Float4 fields) read through
     /// its own bytes, so the order can never disagree with the layout the shaders get.
     /// </summary>
+    internal interface IFloat4Block
+    {
+        /// <summary>Float4 <paramref name="index"/>, in field order.</summary>
+        Float4 this[int index] { get; }
+    }
+
     internal static class Float4Block
     {
         /// <summary>Float4 <paramref name="index"/> of <paramref name="block"/>, which holds <paramref name="count"/>.</summary>

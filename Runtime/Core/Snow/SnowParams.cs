@@ -13,7 +13,7 @@ namespace GregoryTerrain
     /// </summary>
     [StructLayout(LayoutKind.Sequential)]
     [GenerateHlsl("Shaders/Snow/SnowParams.cs.hlsl", "Runtime/Core/Snow/SnowParams.Generated.cs")]
-    internal partial struct SnowParams
+    internal partial struct SnowParams : IFloat4Block
     {
         // Instance fields only below, in cbuffer order: the layout is the declaration order.
         [HlslComment("(R, 1/R, rayLength, raySteps)")]

@@ -15,7 +15,7 @@ namespace GregoryTerrain
     /// </summary>
     [StructLayout(LayoutKind.Sequential)]
     [GenerateHlsl("Shaders/Terrain/TerrainParams.cs.hlsl", "Runtime/Core/Terrain/TerrainParams.Generated.cs")]
-    internal partial struct TerrainParams
+    internal partial struct TerrainParams : IFloat4Block
     {
         public const int Floats = Float4Count * 4;
         /// <summary>Size of the block: the cbuffer's size without the snow variant's <c>_SnowMapSize</c>.</summary>
