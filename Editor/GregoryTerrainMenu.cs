@@ -1,6 +1,7 @@
 using GregoryTerrain;
 using UnityEditor;
 using UnityEngine;
+using UnityEngine.SceneManagement;
 
 namespace GregoryTerrain.EditorTools
 {
@@ -13,10 +14,11 @@ namespace GregoryTerrain.EditorTools
     {
         const string CreateName = "Create Gregory Terrain";
 
-        [MenuItem("GameObject/3D Object/Gregory Terrain", false, 10)]
+        // Beside Unity's Terrain (3000), Tree (3001) and Wind Zone (3002) in the same menu group.
+        [MenuItem("GameObject/3D Object/Gregory Terrain", false, 3003)]
         static void CreateTerrain(MenuCommand command) => Create(command.context as GameObject, false);
 
-        [MenuItem("GameObject/3D Object/Gregory Terrain with Collider", false, 11)]
+        [MenuItem("GameObject/3D Object/Gregory Terrain with Collider", false, 3004)]
         static void CreateTerrainWithCollider(MenuCommand command) => Create(command.context as GameObject, true);
 
         /// <summary>
@@ -38,23 +40,36 @@ namespace GregoryTerrain.EditorTools
             renderer.Material = TerrainAssets.CreateMaterial(go, noise: false);
             TerrainAssets.AssignComputeShaders(renderer);
             Undo.RegisterCreatedObjectUndo(go, CreateName);
-            if (withCollider) AddColliderFollowingMainCamera(renderer);
             ObjectFactory.PlaceGameObject(go, parent);
+            if (withCollider) AddColliderFollowingMainCamera(renderer);
         }
 
         /// <summary>
         /// A GameObject of its own (the collider moves its Transform) with a Gregory Terrain Collider
-        /// around the main camera; a warning when the scene has none.
+        /// around the main camera, beside the placed terrain (same parent, scene or prefab stage); a
+        /// warning when the scene has none.
         /// </summary>
         static void AddColliderFollowingMainCamera(GregoryTerrainRenderer renderer)
         {
             var child = new GameObject("Gregory Terrain Collider");
+            PlaceBeside(child, renderer.gameObject);
             var collider = child.AddComponent<GregoryTerrainCollider>();   // RequireComponent adds the MeshCollider
             collider.Terrain = renderer;
             Camera main = Camera.main;
             if (main != null) collider.Target = main.transform;
             else Debug.LogWarning("No camera is tagged MainCamera: set the Gregory Terrain Collider's Target by hand.", child);
             Undo.RegisterCreatedObjectUndo(child, CreateName);
+        }
+
+        /// <summary>
+        /// <paramref name="go"/> where ObjectFactory put <paramref name="placed"/>: a new GameObject
+        /// starts in the active scene, which is not the prefab stage or the Hierarchy's target scene.
+        /// </summary>
+        static void PlaceBeside(GameObject go, GameObject placed)
+        {
+            Transform parent = placed.transform.parent;
+            if (parent != null) go.transform.SetParent(parent, false);
+            else if (go.scene != placed.scene) SceneManager.MoveGameObjectToScene(go, placed.scene);
         }
 
         [MenuItem("Window/Gregory Terrain/Patch Grid")]

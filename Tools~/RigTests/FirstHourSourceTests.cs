@@ -39,6 +39,32 @@ namespace GregoryTerrain.Rig.Tests
             Assert.That(place, Is.GreaterThan(undo), "placed (pivot, origin preference, parent, selection) after the creation is registered");
         }
 
+        /// <summary>
+        /// Review finding: the "...with Collider" object was made in the active scene before the terrain was
+        /// placed, so with a prefab stage open (or a parent in another scene) it landed elsewhere.
+        /// </summary>
+        [Test]
+        public void ColliderObjectIsPlacedBesideTheTerrain()
+        {
+            string create = Body("Editor/GregoryTerrainMenu.cs", "Create");
+            int place = create.IndexOf("ObjectFactory.PlaceGameObject(go, parent)"), collider = create.IndexOf("AddColliderFollowingMainCamera(renderer)");
+            Assert.That(collider, Is.GreaterThan(place), "the collider's object is made after the terrain is placed");
+            StringAssert.Contains("PlaceBeside(child, renderer.gameObject)", Body("Editor/GregoryTerrainMenu.cs", "AddColliderFollowingMainCamera"));
+            string beside = Body("Editor/GregoryTerrainMenu.cs", "PlaceBeside");
+            StringAssert.Contains("SetParent(parent, false)", beside);
+            StringAssert.Contains("SceneManager.MoveGameObjectToScene(go, placed.scene)", beside);
+        }
+
+        /// <summary>Unity's Terrain, Tree and Wind Zone are 3000-3002 in GameObject &gt; 3D Object (UnityCsReference 2022.3).</summary>
+        [Test]
+        public void MenuItemsSitBesideUnityTerrain()
+        {
+            var priorities = Regex.Matches(Code("Editor/GregoryTerrainMenu.cs"), @"MenuItem\(""GameObject/3D Object/[^""]+"", false, (\d+)\)")
+                .Select(m => int.Parse(m.Groups[1].Value)).ToList();
+            Assert.That(priorities, Has.Count.EqualTo(2));
+            Assert.That(priorities, Has.All.InRange(3003, 3010), "in Unity Terrain's menu group (items within 10 of each other)");
+        }
+
         [Test]
         public void NewMaterialSetsEveryShaderToggleExplicitly()
         {

@@ -68,8 +68,15 @@ namespace UnityEngine.SceneManagement
     public struct Scene                                                               // SR:SceneManagement.Scene
     {
         public bool IsValid() => false;                                               // SR:SceneManagement.Scene.IsValid
+        public static bool operator ==(Scene lhs, Scene rhs) => true;                 // SR:SceneManagement.Scene-operator_eq
+        public static bool operator !=(Scene lhs, Scene rhs) => false;                // SR:SceneManagement.Scene-operator_ne
+        public override bool Equals(object other) => other is Scene;                 // SR:SceneManagement.Scene.Equals
+        public override int GetHashCode() => 0;                                       // SR:SceneManagement.Scene.GetHashCode
     }
-    public class SceneManager { }                                                     // SR:SceneManagement.SceneManager
+    public class SceneManager                                                         // SR:SceneManagement.SceneManager
+    {
+        public static void MoveGameObjectToScene(GameObject go, Scene scene) { }      // SR:SceneManagement.SceneManager.MoveGameObjectToScene
+    }
 }
 
 namespace UnityEngine.Rendering

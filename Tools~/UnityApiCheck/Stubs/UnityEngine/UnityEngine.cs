@@ -68,6 +68,8 @@ namespace UnityEngine
         public Vector3 InverseTransformDirection(Vector3 direction) => default;       // SR:Transform.InverseTransformDirection
         public void SetPositionAndRotation(Vector3 position, Quaternion rotation) { } // SR:Transform.SetPositionAndRotation
         public void LookAt(Vector3 worldPosition) { }                                 // SR:Transform.LookAt
+        public Transform parent { get; set; }                                         // SR:Transform-parent
+        public void SetParent(Transform parent, bool worldPositionStays) { }          // SR:Transform.SetParent
     }
 
     public sealed partial class Camera : Behaviour                                    // SR:Camera (sealed partial in 2022.3)
