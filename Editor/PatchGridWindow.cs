@@ -4,6 +4,7 @@ using System.Linq;
 using System.Threading;
 using GregoryTerrain;
 using UnityEditor;
+using UnityEditor.Build;
 using UnityEngine;
 using UnityEngine.Experimental.Rendering;
 using UnityEngine.Serialization;
@@ -59,6 +60,8 @@ namespace GregoryTerrain.EditorTools
         string _errorLegend;
 
         GregoryTerrainRenderer[] _renderers;   // searched again when the hierarchy changes
+        string _exrPath;                        // the EXR file _exrHas32Bits was read from (OnGUI runs every repaint)
+        bool _exrHas32Bits;
         double _unitMetres;                     // a drawing renderer's, else metresPerHeightUnit
 
         GregoryTerrainRenderer[] Renderers => _renderers ??= UnityEngine.Object.FindObjectsByType<GregoryTerrainRenderer>(FindObjectsSortMode.None);
@@ -205,13 +208,55 @@ namespace GregoryTerrain.EditorTools
         /// Why the texture as imported does not hold its file's heights (Core's TextureHeights.ImportProblem),
         /// or null. The file's size comes from its importer; a texture with no file of its own is its own source.
         /// </summary>
-        static string ImportProblem(Texture2D texture, out TextureImporter importer, out int sourceWidth, out int sourceHeight)
+        string ImportProblem(Texture2D texture, out TextureImporter importer, out int sourceWidth, out int sourceHeight)
         {
             importer = AssetImporter.GetAtPath(AssetDatabase.GetAssetPath(texture)) as TextureImporter;
             sourceWidth = texture.width; sourceHeight = texture.height;
             importer?.GetSourceTextureWidthAndHeight(out sourceWidth, out sourceHeight);
             return TextureHeights.ImportProblem(texture.name, sourceWidth, sourceHeight, texture.width, texture.height,
-                texture.format.ToString(), GraphicsFormatUtility.IsCompressedFormat(texture.format), texture.isReadable);
+                texture.format.ToString(), GraphicsFormatUtility.IsCompressedFormat(texture.format), texture.isReadable,
+                FileHas32BitChannels(importer));
+        }
+
+        /// <summary>Whether the importer's file is an EXR of 32-bit channels (its header, read once per path).</summary>
+        bool FileHas32BitChannels(TextureImporter importer)
+        {
+            string path = importer == null ? null : importer.assetPath;
+            if (path == null || !path.EndsWith(".exr", StringComparison.OrdinalIgnoreCase)) return false;
+            if (path == _exrPath) return _exrHas32Bits;
+            byte[] header = new byte[64 * 1024];
+            int read = 0;
+            try
+            {
+                using (var f = File.OpenRead(path)) read = f.Read(header, 0, header.Length);
+            }
+            catch (IOException) { }
+            catch (UnauthorizedAccessException) { }
+            Array.Resize(ref header, read);
+            _exrPath = path;
+            _exrHas32Bits = TextureHeights.ExrHas32BitChannels(header) == true;
+            return _exrHas32Bits;
+        }
+
+        /// <summary>
+        /// The editor's active platform's settings for <paramref name="importer"/>: an override there
+        /// (a compressed format, a smaller Max Size) wins over the default settings the fix writes.
+        /// A 32-bit EXR gets an RFloat override (the default import is half: 11 significant bits);
+        /// anything else drops the override, so the default settings apply.
+        /// </summary>
+        void FixActivePlatform(TextureImporter importer, int side)
+        {
+            string platform = NamedBuildTarget.FromBuildTargetGroup(BuildPipeline.GetBuildTargetGroup(EditorUserBuildSettings.activeBuildTarget)).TargetName;
+            TextureImporterPlatformSettings settings = importer.GetPlatformTextureSettings(platform);
+            bool wide = FileHas32BitChannels(importer);
+            if (!settings.overridden && !wide) return;
+            settings.overridden = wide;
+            if (wide)
+            {
+                settings.format = TextureImporterFormat.RFloat;
+                while (settings.maxTextureSize < side) settings.maxTextureSize *= 2;
+            }
+            importer.SetPlatformTextureSettings(settings);
         }
 
         /// <summary>Imports the texture so that it holds its file's heights: readable, uncompressed, at the file's size.</summary>
@@ -228,8 +273,9 @@ namespace GregoryTerrain.EditorTools
             importer.textureCompression = TextureImporterCompression.Uncompressed;
             importer.npotScale = TextureImporterNPOTScale.None;
             while (importer.maxTextureSize < side) importer.maxTextureSize *= 2;
+            FixActivePlatform(importer, side);
             importer.SaveAndReimport();
-            Report($"'{texture.name}' reimported readable, uncompressed, at {w} x {h}.", MessageType.Info);
+            Report($"'{texture.name}' reimported readable, uncompressed{(FileHas32BitChannels(importer) ? " (RFloat)" : "")}, at {w} x {h}.", MessageType.Info);
         }
 
         static bool TryTexelFormat(TextureFormat format, out HeightTexelFormat texel)

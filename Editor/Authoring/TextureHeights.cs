@@ -30,17 +30,71 @@ namespace GregoryTerrain
         /// <summary>
         /// Why a texture as imported does not hold its file's heights, or null: not readable, resized
         /// from the file's <paramref name="sourceWidth"/> x <paramref name="sourceHeight"/> (Max Size, or
-        /// Non-Power of 2 scaling: resampled heights), or block-compressed (lossy). The fit reads the
+        /// Non-Power of 2 scaling: resampled heights), block-compressed (lossy), or half-float (11 significant
+        /// bits) from a file of 32-bit channels (<see cref="ExrHas32BitChannels"/>). The fit reads the
         /// file's heights exactly or not at all, as Unity's own heightmap import reads raw data.
         /// </summary>
-        public static string ImportProblem(string name, int sourceWidth, int sourceHeight, int width, int height, string format, bool compressed, bool readable)
+        public static string ImportProblem(string name, int sourceWidth, int sourceHeight, int width, int height, string format, bool compressed, bool readable,
+                                           bool fileHas32BitChannels = false)
         {
             var problems = new System.Collections.Generic.List<string>();
             if (!readable) problems.Add("Read/Write is off, so its texels cannot be read");
+            if (fileHas32BitChannels && (format == nameof(HeightTexelFormat.RHalf) || format == nameof(HeightTexelFormat.RGBAHalf)))
+                problems.Add($"it is imported at half precision ({format}: 11 significant bits) but its file holds 32-bit floats: the fit would see rounded heights");
             if (width != sourceWidth || height != sourceHeight)
                 problems.Add($"it is imported at {width} x {height} but its file is {sourceWidth} x {sourceHeight} (Max Size or Non-Power of 2 resized it): the fit would see resampled heights");
             if (compressed) problems.Add($"it is imported compressed ({format}), which changes the heights: set Compression to None (and in the current platform's override, if any)");
             return problems.Count == 0 ? null : $"'{name}': " + string.Join("; ", problems) + ".";
+        }
+
+        /// <summary>
+        /// Whether an OpenEXR file's header (its first bytes; 64 KB hold any real header) lists a channel
+        /// of 32 bits (FLOAT or UINT), which Unity's default half-float import rounds; null when
+        /// <paramref name="header"/> is not an EXR header or ends before its channel list does.
+        /// OpenEXR file layout: magic 20000630, a 4-byte version, then attributes (name, type, int32
+        /// size, value) up to an empty name; "channels" is a chlist of (name, int32 pixel type, 12
+        /// bytes) entries up to an empty name, pixel types 0 UINT, 1 HALF, 2 FLOAT.
+        /// </summary>
+        public static bool? ExrHas32BitChannels(byte[] header)
+        {
+            if (header == null || header.Length < 8 || BinaryPrimitives.ReadInt32LittleEndian(header) != 20000630) return null;
+            int at = 8;
+            while (true)
+            {
+                string attribute = ReadName(header, ref at), type = attribute == null ? null : ReadName(header, ref at);
+                if (attribute == null || attribute.Length == 0 || type == null || at + 4 > header.Length) return null;
+                int size = BinaryPrimitives.ReadInt32LittleEndian(header.AsSpan(at));
+                at += 4;
+                if (size < 0 || at + size > header.Length) return null;
+                if (attribute == "channels" && type == "chlist") return ChannelListHas32Bits(header, at, at + size);
+                at += size;
+            }
+        }
+
+        static bool? ChannelListHas32Bits(byte[] bytes, int at, int end)
+        {
+            bool wide = false;
+            while (true)
+            {
+                string channel = ReadName(bytes, ref at);
+                if (channel == null || at > end) return null;
+                if (channel.Length == 0) return wide;
+                if (at + 16 > end) return null;
+                int pixelType = BinaryPrimitives.ReadInt32LittleEndian(bytes.AsSpan(at));
+                wide |= pixelType == 0 || pixelType == 2;
+                at += 16;
+            }
+        }
+
+        /// <summary>A NUL-terminated ASCII name at <paramref name="at"/> (moved past it), or null when it runs off the end.</summary>
+        static string ReadName(byte[] bytes, ref int at)
+        {
+            if (at >= bytes.Length) return null;
+            int end = Array.IndexOf(bytes, (byte)0, at);
+            if (end < 0) return null;
+            string name = System.Text.Encoding.ASCII.GetString(bytes, at, end - at);
+            at = end + 1;
+            return name;
         }
 
         public static int BytesPerTexel(HeightTexelFormat format)

@@ -55,6 +55,22 @@ namespace GregoryTerrain.Rig.Tests
             StringAssert.Contains("SceneManager.MoveGameObjectToScene(go, placed.scene)", beside);
         }
 
+        /// <summary>
+        /// Review finding: "Fix import settings" wrote only the default platform's settings, which an
+        /// override for the active platform (a compressed format, a smaller Max Size) beats.
+        /// </summary>
+        [Test]
+        public void FixImportSetsTheActivePlatformToo()
+        {
+            string fix = Body("Editor/PatchGridWindow.cs", "FixImport");
+            int platform = fix.IndexOf("FixActivePlatform(importer, side)"), reimport = fix.IndexOf("SaveAndReimport()");
+            Assert.That(platform, Is.GreaterThanOrEqualTo(0).And.LessThan(reimport), "the active platform's settings set before the reimport");
+            string active = Body("Editor/PatchGridWindow.cs", "FixActivePlatform");
+            StringAssert.Contains("EditorUserBuildSettings.activeBuildTarget", active);
+            StringAssert.Contains("TextureImporterFormat.RFloat", active);
+            StringAssert.Contains("importer.SetPlatformTextureSettings(settings)", active);
+        }
+
         /// <summary>Unity's Terrain, Tree and Wind Zone are 3000-3002 in GameObject &gt; 3D Object (UnityCsReference 2022.3).</summary>
         [Test]
         public void MenuItemsSitBesideUnityTerrain()

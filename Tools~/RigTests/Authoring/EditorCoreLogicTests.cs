@@ -1,4 +1,5 @@
 using System;
+using System.Collections.Generic;
 using System.Linq;
 using NUnit.Framework;
 using GregoryTerrain.Tests;
@@ -211,6 +212,54 @@ namespace GregoryTerrain.Rig.Tests
             Assert.That(compressed, Does.Contain("compressed (DXT1)").And.Contain("Compression to None"));
             string all = TextureHeights.ImportProblem("h", 1000, 600, 1024, 512, "BC6H", compressed: true, readable: false);
             Assert.That(all, Does.Contain("Read/Write is off").And.Contain("imported at 1024 x 512 but its file is 1000 x 600").And.Contain("BC6H"));
+        }
+
+        /// <summary>
+        /// Review finding: an EXR of 32-bit floats imported as Unity's default RGBAHalf keeps 11 significant
+        /// bits (0.3 m steps on a 600 m terrain) and nothing said so.
+        /// </summary>
+        [Test]
+        public void AHalfImportOfA32BitExrIsRefused()
+        {
+            Assert.That(TextureHeights.ImportProblem("h", 513, 513, 513, 513, "RGBAHalf", compressed: false, readable: true, fileHas32BitChannels: false), Is.Null);
+            Assert.That(TextureHeights.ImportProblem("h", 513, 513, 513, 513, "RFloat", compressed: false, readable: true, fileHas32BitChannels: true), Is.Null);
+            string half = TextureHeights.ImportProblem("h", 513, 513, 513, 513, "RGBAHalf", compressed: false, readable: true, fileHas32BitChannels: true);
+            Assert.That(half, Does.Contain("half precision (RGBAHalf: 11 significant bits)").And.Contain("32-bit floats"));
+        }
+
+        /// <summary>An OpenEXR header as the format lays it out: magic, version 2, attributes, the empty name.</summary>
+        static byte[] ExrHeader(params int[] channelTypes)
+        {
+            var b = new List<byte>();
+            void Int(int v) => b.AddRange(BitConverter.GetBytes(v));
+            void Name(string n) { b.AddRange(System.Text.Encoding.ASCII.GetBytes(n)); b.Add(0); }
+            Int(20000630); Int(2);
+            Name("compression"); Name("compression"); Int(1); b.Add(0);
+            var list = new List<byte>();
+            for (int c = 0; c < channelTypes.Length; c++)
+            {
+                list.AddRange(System.Text.Encoding.ASCII.GetBytes("RGBA".Substring(c, 1))); list.Add(0);
+                list.AddRange(BitConverter.GetBytes(channelTypes[c])); list.AddRange(new byte[4]);
+                list.AddRange(BitConverter.GetBytes(1)); list.AddRange(BitConverter.GetBytes(1));
+            }
+            list.Add(0);
+            Name("channels"); Name("chlist"); Int(list.Count); b.AddRange(list);
+            Name("lineOrder"); Name("lineOrder"); Int(1); b.Add(0);
+            b.Add(0);
+            return b.ToArray();
+        }
+
+        [Test]
+        public void ExrChannelTypesAreReadFromTheHeader()
+        {
+            Assert.That(TextureHeights.ExrHas32BitChannels(ExrHeader(1, 1, 1)), Is.False, "half channels");
+            Assert.That(TextureHeights.ExrHas32BitChannels(ExrHeader(2)), Is.True, "one float channel");
+            Assert.That(TextureHeights.ExrHas32BitChannels(ExrHeader(1, 0)), Is.True, "a uint channel");
+            byte[] full = ExrHeader(2, 2);
+            Assert.That(TextureHeights.ExrHas32BitChannels(full.Take(40).ToArray()), Is.Null, "a header cut inside its channel list");
+            Assert.That(TextureHeights.ExrHas32BitChannels(new byte[] { 0x89, (byte)'P', (byte)'N', (byte)'G', 13, 10, 26, 10 }), Is.Null, "a PNG");
+            Assert.That(TextureHeights.ExrHas32BitChannels(Array.Empty<byte>()), Is.Null);
+            Assert.That(TextureHeights.ExrHas32BitChannels(null), Is.Null);
         }
     }
 }

@@ -30,6 +30,7 @@ namespace UnityEditor
     {
         public static AssetImporter GetAtPath(string path) => null;                          // SR:AssetImporter.GetAtPath
         public void SaveAndReimport() { }                                                    // SR:AssetImporter.SaveAndReimport
+        public string assetPath => null;                                                     // SR:AssetImporter-assetPath
     }
 
     public sealed partial class TextureImporter : AssetImporter                              // SR:TextureImporter
@@ -39,6 +40,34 @@ namespace UnityEditor
         public TextureImporterNPOTScale npotScale { get; set; }                              // SR:TextureImporter-npotScale
         public bool isReadable { get; set; }                                                 // SR:TextureImporter-isReadable
         public void GetSourceTextureWidthAndHeight(out int width, out int height) { width = height = 0; } // SR:TextureImporter.GetSourceTextureWidthAndHeight
+        public TextureImporterPlatformSettings GetPlatformTextureSettings(string platform) => null; // SR:TextureImporter.GetPlatformTextureSettings
+        public void SetPlatformTextureSettings(TextureImporterPlatformSettings platformSettings) { } // SR:TextureImporter.SetPlatformTextureSettings
+    }
+
+    // 2022.3: Editor/Mono/AssetPipeline/TextureImporterTypes.bindings.cs (a class: the settings are copied in and out).
+    public sealed partial class TextureImporterPlatformSettings                              // SR:TextureImporterPlatformSettings
+    {
+        public string name { get; set; }                                                     // SR:TextureImporterPlatformSettings-name
+        public bool overridden { get; set; }                                                 // SR:TextureImporterPlatformSettings-overridden
+        public int maxTextureSize { get; set; }                                              // SR:TextureImporterPlatformSettings-maxTextureSize
+        public TextureImporterFormat format { get; set; }                                    // SR:TextureImporterPlatformSettings-format
+    }
+
+    // A subset of 2022.3's members, with their values (Editor/Mono/AssetPipeline/TextureImporterEnums.cs).
+    public enum TextureImporterFormat { Automatic = -1, RGBA32 = 4, R16 = 9, RHalf = 15, RGBAHalf = 17, RFloat = 18, RGBAFloat = 20 } // SR:TextureImporterFormat
+
+    // Subsets of 2022.3's members, with their values (Editor/Mono/BuildTarget.cs, BuildTargetGroup.cs).
+    public enum BuildTarget { StandaloneOSX = 2, StandaloneWindows = 5, iOS = 9, Android = 13, StandaloneWindows64 = 19, WebGL = 20, StandaloneLinux64 = 24 } // SR:BuildTarget
+    public enum BuildTargetGroup { Unknown = 0, Standalone = 1, iOS = 4, Android = 7, WebGL = 13 } // SR:BuildTargetGroup
+
+    public class BuildPipeline                                                               // SR:BuildPipeline
+    {
+        public static BuildTargetGroup GetBuildTargetGroup(BuildTarget platform) => default;  // SR:BuildPipeline.GetBuildTargetGroup
+    }
+
+    public partial class EditorUserBuildSettings : Object                                    // SR:EditorUserBuildSettings
+    {
+        public static BuildTarget activeBuildTarget => default;                              // SR:EditorUserBuildSettings-activeBuildTarget
     }
 
     public enum TextureImporterCompression { Uncompressed = 0, Compressed = 1, CompressedHQ = 2, CompressedLQ = 3 } // SR:TextureImporterCompression
@@ -47,5 +76,18 @@ namespace UnityEditor
     public sealed partial class AssetDatabase
     {
         public static string GetAssetPath(Object assetObject) => null;                       // SR:AssetDatabase.GetAssetPath
+    }
+}
+
+namespace UnityEditor.Build
+{
+    // 2022.3: Editor/Mono/BuildPipeline/NamedBuildTarget.cs. TargetName is the platform name the
+    // importers' platform settings use ("Standalone", "iPhone", "Android", ...).
+    public readonly struct NamedBuildTarget : System.IEquatable<NamedBuildTarget>, System.IComparable<NamedBuildTarget> // SR:Build.NamedBuildTarget
+    {
+        public string TargetName { get; }                                                    // SR:Build.NamedBuildTarget-TargetName
+        public static NamedBuildTarget FromBuildTargetGroup(BuildTargetGroup buildTargetGroup) => default; // SR:Build.NamedBuildTarget.FromBuildTargetGroup
+        public bool Equals(NamedBuildTarget other) => false;                                 // SR:Build.NamedBuildTarget.Equals
+        public int CompareTo(NamedBuildTarget other) => 0;                                   // SR:Build.NamedBuildTarget.CompareTo
     }
 }
