@@ -267,14 +267,13 @@ namespace GregoryTerrain.EditorTools
             if (cam == null && SceneView.lastActiveSceneView != null) cam = SceneView.lastActiveSceneView.camera;
             TriangleEstimate? e = cam != null ? r.EstimateTrianglesInView(cam) : null;
             if (cam == null) _estimateText = "no camera";
-            else if (e == null) _estimateText = r.DrawsFallback ? "fallback: see Most triangles"
-                : r.LevelCount > 0 ? $"not estimated with Horizon levels ({r.LevelCount} levels, {r.DrawnTileCount:N0} tiles): see Most triangles"
-                : "(nothing drawn yet)";
+            else if (e == null) _estimateText = r.DrawsFallback ? "fallback: see Most triangles" : "(nothing drawn yet)";
             else
             {
                 TriangleEstimate v = e.Value;
                 string sample = v.tilesSampled < v.tileCount ? $", {v.tilesSampled} of {v.tileCount} tiles sampled" : "";
-                _estimateText = $"{v.triangles:N0} ({cam.name}: {v.tilesSampledDrawn} of {v.tilesSampled} tiles drawn{sample})";
+                string levels = r.LevelCount > 0 ? $", {r.LevelCount} levels" : "";
+                _estimateText = $"{v.triangles:N0} ({cam.name}: {v.tilesSampledDrawn} of {v.tilesSampled} tiles drawn{sample}{levels})";
                 // Tiles held at the max factor may miss the target: more, smaller tiles need smaller factors.
                 if (v.tilesSampledAtMaxFactor > 0)
                     _estimateCapped = $"{v.tilesSampledAtMaxFactor} of the {v.tilesSampledDrawn} tiles evaluated and drawn are held at the max factor: the target pixel error may not hold there. More tiles need smaller factors.";

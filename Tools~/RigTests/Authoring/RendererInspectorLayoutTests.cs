@@ -247,8 +247,9 @@ namespace GregoryTerrain.Rig.Tests
             string renderer = Source("Runtime", "GregoryTerrainRenderer.cs");
             Assert.That(Regex.IsMatch(renderer, @"EstimatedTriangleCount\s*=>\s*DrawnTileCount\s*\*"), "Most triangles counts the tiles drawn");
             Assert.That(renderer, Does.Contain("LodLevels.DrawnTileCount(levels, tiles)"));
-            // Triangles in view mirrors one range only: with the levels it says so instead of counting one range.
-            Assert.That(Source("Runtime", "GregoryTerrainRenderer.Estimate.cs"), Does.Contain("|| LevelsOn(_drawFallback)) return null;"));
+            // Triangles in view counts every level (Core's InLevels), and the inspector no longer says it is not estimated.
+            Assert.That(Source("Runtime", "GregoryTerrainRenderer.Estimate.cs"), Does.Contain("TerrainTriangleEstimate.InLevels(").And.Not.Contain("LevelsOn(_drawFallback)) return null"));
+            Assert.That(Source("Editor", "GregoryTerrainRendererEditor.cs"), Does.Not.Contain("not estimated"));
         }
 
         static Float4 F4(TerrainRange r) => new Float4((float)r.c, (float)r.d, (float)r.g, (float)r.h);
