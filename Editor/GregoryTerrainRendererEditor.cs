@@ -212,7 +212,13 @@ namespace GregoryTerrain.EditorTools
         {
             Double3 unit = ((GregoryTerrainRenderer)target).WorldUnitsPerObjectUnit;
             if (targets.Any(t => !((GregoryTerrainRenderer)t).WorldUnitsPerObjectUnit.Equals(unit))) return false;
-            SerializedProperty p = P(name);
+            DrawMetresField(P(name), name, unit, kind, text, min, max, _refused);
+            return true;
+        }
+
+        /// <summary><paramref name="p"/> in metres of a terrain of <paramref name="unit"/> (x: width, y: height scale); a refused value's note kept in <paramref name="refused"/>.</summary>
+        internal static void DrawMetresField(SerializedProperty p, string name, Double3 unit, TerrainLength kind, string text, float min, float max, Dictionary<string, string> refused)
+        {
             Rect rect = EditorGUILayout.GetControlRect();
             GUIContent label = EditorGUI.BeginProperty(rect, new GUIContent(text, $"{p.tooltip} Stored: {p.floatValue:G4}; it scales with the terrain."), p);
             EditorGUI.showMixedValue = p.hasMultipleDifferentValues;
@@ -223,14 +229,13 @@ namespace GregoryTerrain.EditorTools
                 : EditorGUI.DelayedFloatField(rect, label, metres);   // typing 0.5 passes through 0
             if (EditorGUI.EndChangeCheck())
             {
-                string problem = kind == TerrainLength.CellsAcross ? RendererInspectorLayout.CellSizeProblem(text, typed) : null;
-                if (problem == null) { _refused.Remove(name); p.floatValue = RendererInspectorLayout.ClampedFromMetres(kind, typed, unit.y, unit.x, min, max); }
-                else _refused[name] = problem;
+                string problem = kind == TerrainLength.Height ? null : RendererInspectorLayout.LengthProblem(text, typed);
+                if (problem == null) { refused.Remove(name); p.floatValue = RendererInspectorLayout.ClampedFromMetres(kind, typed, unit.y, unit.x, min, max); }
+                else refused[name] = problem;
             }
             EditorGUI.showMixedValue = false;
             EditorGUI.EndProperty();
-            if (_refused.TryGetValue(name, out string refused)) EditorGUILayout.HelpBox(refused, MessageType.Warning);
-            return true;
+            if (refused.TryGetValue(name, out string note)) EditorGUILayout.HelpBox(note, MessageType.Warning);
         }
 
         /// <summary>Noise and colour act only with the material's toggle on: still editable, with a note.</summary>

@@ -130,7 +130,7 @@ namespace GregoryTerrain.Rig.Tests
 
         [Test]
         public void CellSizesApplyWhenTypingEnds() =>
-            Assert.That(Body(Editor(), "MetresField"), Does.Not.Contain("EditorGUI.FloatField(").And.Contain("EditorGUI.DelayedFloatField("));
+            Assert.That(Body(Editor(), "DrawMetresField"), Does.Not.Contain("EditorGUI.FloatField(").And.Contain("EditorGUI.DelayedFloatField("));
 
         [Test]
         public void ViewModeReadsEverySelectedRenderer() =>
