@@ -182,7 +182,7 @@ namespace GregoryTerrain.Rig.Tests
             }
             Assert.That(Source("Editor", "GregoryTerrainRendererEditor.cs"), Does.Contain("RendererInspectorLayout.MetreFields"));
 
-            // The samples' 0.02 noise amplitude: 20 m on the Fly-over (Height Scale 1000), 60 m on the walk (3000).
+            // 0.02 of a Height Scale of 1000 m is 20 m, of 3000 m 60 m.
             Assert.That(RendererInspectorLayout.ToMetres(TerrainLength.Height, 0.02, 1000, 1000), Is.EqualTo(20.0).Within(1e-9));
             Assert.That(RendererInspectorLayout.ToMetres(TerrainLength.Height, 0.02, 3000, 20000), Is.EqualTo(60.0).Within(1e-9));
             Assert.That(RendererInspectorLayout.ToMetres(TerrainLength.CellsAcross, 16, 3000, 20000), Is.EqualTo(1250.0));
