@@ -290,6 +290,10 @@ namespace GregoryTerrain.EditorTools
         static string FormatBytes(long bytes) =>
             bytes.ToString("N0") + " bytes (" + (bytes / (1024.0 * 1024.0)).ToString("0.0") + " MiB)";
 
+        // F frames the drawn terrain (Unity calls these by name; a MonoBehaviour has no bounds of its own).
+        bool HasFrameBounds() => true;
+        Bounds OnGetFrameBounds() => ((GregoryTerrainRenderer)target).WorldBounds();
+
         void OnSceneGUI()
         {
             var r = (GregoryTerrainRenderer)target;

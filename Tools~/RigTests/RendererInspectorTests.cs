@@ -105,6 +105,14 @@ namespace GregoryTerrain.Rig.Tests
             // Undo of the add, Remove Component, the checkbox: each runs OnDisable ([ExecuteAlways]).
             Assert.That(Body(Src("Runtime", file), "OnDisable"), Does.Contain("target.SyncRangeFromSerialized()"));
 
+        /// <summary>F frames the drawn terrain, not the Transform's corner (editor-only: the source is checked).</summary>
+        [Test]
+        public void FFramesTheTerrain()
+        {
+            Assert.That(Editor(), Does.Contain("bool HasFrameBounds() => true;"));
+            Assert.That(Editor(), Does.Contain("Bounds OnGetFrameBounds() => ((GregoryTerrainRenderer)target).WorldBounds();"));
+        }
+
         [Test]
         public void OpenWorldWritesEachRenderersOwnTiles()
         {
