@@ -212,7 +212,13 @@ namespace GregoryTerrain.EditorTools
         {
             Double3 unit = ((GregoryTerrainRenderer)target).WorldUnitsPerObjectUnit;
             if (targets.Any(t => !((GregoryTerrainRenderer)t).WorldUnitsPerObjectUnit.Equals(unit))) return false;
-            SerializedProperty p = P(name);
+            DrawMetresField(P(name), name, unit, kind, text, min, max, _refused);
+            return true;
+        }
+
+        /// <summary><paramref name="p"/> in metres of a terrain of <paramref name="unit"/> (x: width, y: height scale); a refused value's note kept in <paramref name="refused"/>.</summary>
+        internal static void DrawMetresField(SerializedProperty p, string name, Double3 unit, TerrainLength kind, string text, float min, float max, Dictionary<string, string> refused)
+        {
             Rect rect = EditorGUILayout.GetControlRect();
             GUIContent label = EditorGUI.BeginProperty(rect, new GUIContent(text, $"{p.tooltip} Stored: {p.floatValue:G4}; it scales with the terrain."), p);
             EditorGUI.showMixedValue = p.hasMultipleDifferentValues;
@@ -223,14 +229,13 @@ namespace GregoryTerrain.EditorTools
                 : EditorGUI.DelayedFloatField(rect, label, metres);   // typing 0.5 passes through 0
             if (EditorGUI.EndChangeCheck())
             {
-                string problem = kind == TerrainLength.CellsAcross ? RendererInspectorLayout.CellSizeProblem(text, typed) : null;
-                if (problem == null) { _refused.Remove(name); p.floatValue = RendererInspectorLayout.ClampedFromMetres(kind, typed, unit.y, unit.x, min, max); }
-                else _refused[name] = problem;
+                string problem = kind == TerrainLength.Height ? null : RendererInspectorLayout.LengthProblem(text, typed);
+                if (problem == null) { refused.Remove(name); p.floatValue = RendererInspectorLayout.ClampedFromMetres(kind, typed, unit.y, unit.x, min, max); }
+                else refused[name] = problem;
             }
             EditorGUI.showMixedValue = false;
             EditorGUI.EndProperty();
-            if (_refused.TryGetValue(name, out string refused)) EditorGUILayout.HelpBox(refused, MessageType.Warning);
-            return true;
+            if (refused.TryGetValue(name, out string note)) EditorGUILayout.HelpBox(note, MessageType.Warning);
         }
 
         /// <summary>Noise and colour act only with the material's toggle on: still editable, with a note.</summary>
@@ -267,14 +272,13 @@ namespace GregoryTerrain.EditorTools
             if (cam == null && SceneView.lastActiveSceneView != null) cam = SceneView.lastActiveSceneView.camera;
             TriangleEstimate? e = cam != null ? r.EstimateTrianglesInView(cam) : null;
             if (cam == null) _estimateText = "no camera";
-            else if (e == null) _estimateText = r.DrawsFallback ? "fallback: see Most triangles"
-                : r.LevelCount > 0 ? $"not estimated with Horizon levels ({r.LevelCount} levels, {r.DrawnTileCount:N0} tiles): see Most triangles"
-                : "(nothing drawn yet)";
+            else if (e == null) _estimateText = r.DrawsFallback ? "fallback: see Most triangles" : "(nothing drawn yet)";
             else
             {
                 TriangleEstimate v = e.Value;
                 string sample = v.tilesSampled < v.tileCount ? $", {v.tilesSampled} of {v.tileCount} tiles sampled" : "";
-                _estimateText = $"{v.triangles:N0} ({cam.name}: {v.tilesSampledDrawn} of {v.tilesSampled} tiles drawn{sample})";
+                string levels = r.LevelCount > 0 ? $", {r.LevelCount} levels" : "";
+                _estimateText = $"{v.triangles:N0} ({cam.name}: {v.tilesSampledDrawn} of {v.tilesSampled} tiles drawn{sample}{levels})";
                 // Tiles held at the max factor may miss the target: more, smaller tiles need smaller factors.
                 if (v.tilesSampledAtMaxFactor > 0)
                     _estimateCapped = $"{v.tilesSampledAtMaxFactor} of the {v.tilesSampledDrawn} tiles evaluated and drawn are held at the max factor: the target pixel error may not hold there. More tiles need smaller factors.";
@@ -285,6 +289,10 @@ namespace GregoryTerrain.EditorTools
         /// <summary>"18,591,744 bytes (17.7 MiB)".</summary>
         static string FormatBytes(long bytes) =>
             bytes.ToString("N0") + " bytes (" + (bytes / (1024.0 * 1024.0)).ToString("0.0") + " MiB)";
+
+        // F frames the drawn terrain (Unity calls these by name; a MonoBehaviour has no bounds of its own).
+        bool HasFrameBounds() => true;
+        Bounds OnGetFrameBounds() => ((GregoryTerrainRenderer)target).WorldBounds();
 
         void OnSceneGUI()
         {

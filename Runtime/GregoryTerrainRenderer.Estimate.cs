@@ -8,18 +8,17 @@ namespace GregoryTerrain
     {
         TerrainInputs _estimateInputs;   // the uploaded grid packed for Core, made on the first estimate after an upload
         PatchGrid _estimateGrid;
+        readonly TerrainRange[] _estimateLevels = new TerrainRange[LodTiles.MaxLevels];
 
         /// <summary>
-        /// Triangles drawn for <paramref name="cam"/> now: each tile's factors from Core's mirror of the
-        /// hull stage (or the cache kernel's), counted as the tessellator does (<see cref="TerrainTriangleEstimate"/>;
-        /// the rig checks it against the GPU). At most <paramref name="maxTiles"/> tiles evaluated, an even
-        /// sample beyond. Null without an uploaded grid, with invalid settings, the fallback, Horizon levels
-        /// (their seams are not mirrored) or a camera without pixels. GT_SNOW's culling allowance is left out.
+        /// Triangles drawn for <paramref name="cam"/> now (<see cref="TerrainTriangleEstimate"/>), with Horizon
+        /// levels every level around it. At most <paramref name="maxTiles"/> tiles evaluated, an even sample
+        /// beyond. Null without an uploaded grid, with invalid settings, the fallback or a camera without pixels.
         /// </summary>
         public TriangleEstimate? EstimateTrianglesInView(Camera cam, int maxTiles = 256)
         {
             if (cam == null) throw new ArgumentNullException(nameof(cam));
-            if (_uploadedPatchGrid == null || _settingsError != null || _drawFallback || LevelsOn(_drawFallback)) return null;
+            if (_uploadedPatchGrid == null || _settingsError != null || _drawFallback) return null;
             int w = cam.pixelWidth, h = cam.pixelHeight;
             if (w <= 0 || h <= 0) return null;
             if (_estimateGrid != _uploadedPatchGrid)
@@ -28,10 +27,18 @@ namespace GregoryTerrain
                 _estimateGrid = _uploadedPatchGrid;
             }
             else _estimateInputs = _estimateInputs.WithParams(_params);
-            Matrix4x4 m = ObjectToClip(cam);
-            TerrainKeywords keywords = NoiseKeywords();
+            Float4x4 m = ToFloat4x4(ObjectToClip(cam));
+            var screen = new Float2(w, h);
+            if (LevelsOn(false))
+            {
+                // The camera's levels, against the origin the draw matrix (ObjectToClip) cancels.
+                Double3 local = WorldToTerrainObject(cam.transform.position);
+                int count = LodLevels.Layout(new Double2(local.x, local.z), FinestExponent(), tiles, _estimateLevels);
+                ReadOnlySpan<TerrainRange> levels = new ReadOnlySpan<TerrainRange>(_estimateLevels, 0, count);
+                return TerrainTriangleEstimate.InLevels(_estimateInputs, levels, _origin.Origin, m, screen, NoiseKeywords(), maxTiles);
+            }
             var partitioning = _usesCache ? TessellationPartitioning.Integer : TessellationPartitioning.FractionalOdd;
-            return TerrainTriangleEstimate.InView(_estimateInputs, ToFloat4x4(m), new Float2(w, h), keywords, partitioning, maxTiles);
+            return TerrainTriangleEstimate.InView(_estimateInputs, m, screen, NoiseKeywords(), partitioning, maxTiles);
         }
 
         static Float4x4 ToFloat4x4(Matrix4x4 m) => Float4x4.FromRows(

@@ -611,7 +611,7 @@ namespace GregoryTerrain
         /// World bounds of the drawn range: height between the lowest and highest control point,
         /// widened by the largest noise and raised by the snow cap (what the shader's culling keeps).
         /// </summary>
-        Bounds WorldBounds()
+        internal Bounds WorldBounds()
         {
             float noise = NoiseMargin();
             float snow = SnowDepthCap();   // the shader's tile culling raises a tile's box by it (TileCulled)

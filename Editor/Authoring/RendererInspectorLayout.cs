@@ -8,8 +8,8 @@ namespace GregoryTerrain
 
     internal enum QualityPreset { Low, Medium, High, Ultra }
 
-    /// <summary>Cells across the terrain become a cell's width; heights are times the Height Scale.</summary>
-    internal enum TerrainLength { Height, CellsAcross }
+    /// <summary>Heights are times the Height Scale; cells across become a cell's width; a part of the width its metres.</summary>
+    internal enum TerrainLength { Height, CellsAcross, Width }
 
     /// <summary>What a quality preset writes (vertexEvaluation: 0 domain stage, 1 compute cache).</summary>
     internal readonly struct QualityValues : IEquatable<QualityValues>
@@ -132,7 +132,7 @@ namespace GregoryTerrain
             return modes.Count > 0 ? modes[0] : (TerrainViewMode?)null;
         }
 
-        public static string CellSizeProblem(string label, double metres) =>
+        public static string LengthProblem(string label, double metres) =>
             metres > 0.0 ? null : $"{label} must be above 0 (typed {metres:G6}); value kept.";
 
         public static TerrainViewMode ModeOf(bool horizonLevels, bool zoomControlled) =>
@@ -150,11 +150,15 @@ namespace GregoryTerrain
             ("colorNoiseFrequency", TerrainLength.CellsAcross, "Colour noise cell size (m)", 0.5f, 4096f),
         };
 
+        /// <summary>Camera Range Controller's side of the square: a part of the terrain's width, shown in metres.</summary>
+        public static readonly (string field, TerrainLength kind, string label, float min, float max) ViewDistanceField =
+            ("viewDistance", TerrainLength.Width, "View distance (m)", 0.0001f, 1f);
+
         public static double ToMetres(TerrainLength kind, double value, double metresPerHeightUnit, double widthMetres) =>
-            kind == TerrainLength.Height ? value * metresPerHeightUnit : widthMetres / value;
+            kind == TerrainLength.Height ? value * metresPerHeightUnit : kind == TerrainLength.Width ? value * widthMetres : widthMetres / value;
 
         public static double FromMetres(TerrainLength kind, double metres, double metresPerHeightUnit, double widthMetres) =>
-            kind == TerrainLength.Height ? metres / metresPerHeightUnit : widthMetres / metres;
+            kind == TerrainLength.Height ? metres / metresPerHeightUnit : kind == TerrainLength.Width ? metres / widthMetres : widthMetres / metres;
 
         /// <summary>The stored value for typed metres, inside [min, max]; a cell size of 0 or less is the finest.</summary>
         public static float ClampedFromMetres(TerrainLength kind, double metres, double metresPerHeightUnit, double widthMetres, float min, float max)

@@ -105,6 +105,14 @@ namespace GregoryTerrain.Rig.Tests
             // Undo of the add, Remove Component, the checkbox: each runs OnDisable ([ExecuteAlways]).
             Assert.That(Body(Src("Runtime", file), "OnDisable"), Does.Contain("target.SyncRangeFromSerialized()"));
 
+        /// <summary>F frames the drawn terrain, not the Transform's corner (editor-only: the source is checked).</summary>
+        [Test]
+        public void FFramesTheTerrain()
+        {
+            Assert.That(Editor(), Does.Contain("bool HasFrameBounds() => true;"));
+            Assert.That(Editor(), Does.Contain("Bounds OnGetFrameBounds() => ((GregoryTerrainRenderer)target).WorldBounds();"));
+        }
+
         [Test]
         public void OpenWorldWritesEachRenderersOwnTiles()
         {
@@ -130,7 +138,7 @@ namespace GregoryTerrain.Rig.Tests
 
         [Test]
         public void CellSizesApplyWhenTypingEnds() =>
-            Assert.That(Body(Editor(), "MetresField"), Does.Not.Contain("EditorGUI.FloatField(").And.Contain("EditorGUI.DelayedFloatField("));
+            Assert.That(Body(Editor(), "DrawMetresField"), Does.Not.Contain("EditorGUI.FloatField(").And.Contain("EditorGUI.DelayedFloatField("));
 
         [Test]
         public void ViewModeReadsEverySelectedRenderer() =>

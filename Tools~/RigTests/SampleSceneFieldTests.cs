@@ -202,6 +202,30 @@ namespace GregoryTerrain.Rig.Tests
             Assert.That(walkProblems, Does.Contain("&100002 Rigidbody: unknown field m_MaxLinearVelocity"));
         }
 
+        /// <summary>
+        /// Both samples in metres, one convention: the terrain's Transform at scale 1, Terrain Size and
+        /// Height Scale in metres, and the detail noise (its first octave) equally high in metres.
+        /// </summary>
+        [Test]
+        public void BothSamplesAreInMetresWithTheSameNoiseHeight()
+        {
+            var noiseMetres = new List<double>();
+            foreach (string[] s in Scenes)
+            {
+                var objects = ReadScene(File.ReadAllText(PackageRoot.Combine("Samples~", s[0], s[1])));
+                SceneObject renderer = objects.Single(o => o.ClassName == "MonoBehaviour" && o.Text.Contains("\n  terrainSize:"));
+                string go = Regex.Match(renderer.Text, @"m_GameObject: \{fileID: -?\d+\}").Value;
+                SceneObject transform = objects.Single(o => o.ClassName == "Transform" && o.Text.Contains(go));
+                Assert.That(transform.Text, Does.Contain("m_LocalScale: {x: 1, y: 1, z: 1}"), s[1]);
+                double Number(string key) => double.Parse(Regex.Match(renderer.Text, @"\n  " + key + @": ([-\d.eE+]+)").Groups[1].Value, System.Globalization.CultureInfo.InvariantCulture);
+                Assert.That(Regex.Match(renderer.Text, @"terrainSize: \{x: (\d+)").Groups[1].Value, Is.EqualTo(s[0] == "GroundWalk" ? "20000" : "1000"), s[1]);
+                Assert.That(Number("heightScale"), Is.GreaterThanOrEqualTo(100), s[1] + ": Height Scale in metres");
+                noiseMetres.Add(Number("noiseAmplitude") * Number("heightScale"));
+            }
+            TestContext.Out.WriteLine("noise amplitude: " + string.Join(", ", noiseMetres.Select(m => m.ToString("0.###") + " m")));
+            Assert.That(noiseMetres[1], Is.EqualTo(noiseMetres[0]).Within(0.01), "the same noise height in metres in both samples");
+        }
+
         [TestCaseSource(nameof(Scenes))]
         public void SceneHasAListenerASkyAndASunForEveryPipeline(string sample, string scene)
         {

@@ -3,22 +3,10 @@ using System;
 namespace GregoryTerrain
 {
     /// <summary>
-    /// Drawing the levels of detail (internals.md, "Levels of detail: from the feet to the horizon"):
-    /// one draw of L levels of M x M tiles laid on each level's range (<see cref="LodLevels.Layout"/>),
-    /// the tiles of a level wholly inside the finer level culled, and the seam rule that makes a
-    /// coarse edge and the two fine edges along it share their vertices bit for bit. Mirrors
-    /// Shaders/Terrain/LodTiles.hlsl, same names.
-    /// <list type="bullet">
-    /// <item>Draw patch <c>p</c> is tile <c>p mod M^2</c> of level <c>p / M^2</c> (finest first).</item>
-    /// <item>A level's range is snapped to the coarser level's cells, so the finer level covers a
-    /// block of <c>M / 2 x M / 2</c> coarse tiles whose corner sits <see cref="FinerOffsetCells"/>
-    /// coarse cells from the coarse range's corner: the tests are on integers, not on float lines.</item>
-    /// <item>Seam edges (the coarse tiles' edges on the hole, the fine tiles' edges on their range's
-    /// boundary where a coarser level lies beyond) take integer factors <c>2g</c> (coarse) and
-    /// <c>g</c> (each fine half), and their vertices are formed on both sides as the coarse tile's
-    /// point at tess <c>n / (2g)</c> along the edge (<see cref="SeamCoarsePoint"/>): the same float
-    /// inputs to <see cref="RangeMapping.ToTerrainPoint"/>, so the same q, so the same vertex.</item>
-    /// </list>
+    /// Drawing the levels of detail (internals.md, "Levels of detail"): draw patch <c>p</c> is tile
+    /// <c>p mod M^2</c> of level <c>p / M^2</c>, the tiles inside the finer level culled, and the seam
+    /// rule that makes a coarse edge and the two fine edges along it share their vertices bit for bit.
+    /// Mirrors Shaders/Terrain/LodTiles.hlsl, same names.
     /// </summary>
     internal static class LodTiles
     {
@@ -37,11 +25,7 @@ namespace GregoryTerrain
         /// <summary>The tile (slot) of its level draw patch <paramref name="drawPatch"/> is. HLSL <c>LodSlotOfPatch</c>.</summary>
         public static int SlotOfPatch(int drawPatch, int tiles) => drawPatch % TilesPerLevel(tiles);
 
-        /// <summary>
-        /// Where the finer range's corner sits in the coarser range, in coarse cells (<c>W / M</c>):
-        /// an integer by the layout's snapping, rounded so that the float ranges' last bits do not
-        /// matter. HLSL <c>FinerOffsetCells</c>.
-        /// </summary>
+        /// <summary>The finer range's corner in the coarser range's cells (an integer by the layout's snapping, rounded). HLSL <c>FinerOffsetCells</c>.</summary>
         public static void FinerOffsetCells(Float4 coarse, Float4 finer, float tiles, out int a, out int b)
         {
             a = (int)Math.Round((finer.x - coarse.x) / (coarse.z - coarse.x) * tiles, MidpointRounding.AwayFromZero);
@@ -86,22 +70,13 @@ namespace GregoryTerrain
             return mask;
         }
 
-        /// <summary>
-        /// The seam rule's factors: each coarse seam edge of factor f takes <c>2g</c> and each fine one
-        /// <c>g</c>, with <c>g = ceil(f / 2)</c> from the coarse edge's own factor f
-        /// (<paramref name="coarseEdgeFactor"/>, computed from the coarse edge on both sides), at least
-        /// 1 and at most <c>floor(maxFactor / 2)</c>. HLSL <c>SeamHalfFactor</c>.
-        /// </summary>
+        /// <summary>g = ceil(f / 2) in [1, floor(maxFactor / 2)], f the coarse edge's factor: a coarse seam edge draws 2g, each fine one g. HLSL <c>SeamHalfFactor</c>.</summary>
         public static float SeamHalfFactor(float coarseEdgeFactor, float maxFactor) =>
             GMath.clamp((float)Math.Ceiling(coarseEdgeFactor * 0.5f), 1f, (float)Math.Floor(maxFactor * 0.5f));
 
         /// <summary>
-        /// The coarse tile and tess coordinate of a seam vertex. <paramref name="edge"/>: the one seam
-        /// edge bit the vertex lies on; <paramref name="numerator"/>: its index n along the coarse edge
-        /// (0 .. 2g) and <paramref name="halfFactor"/> g. On the coarse side (ti, tj) is the tile
-        /// itself; on the fine side <see cref="FineSeamCoarseTile"/> finds it. Along the edge the tess
-        /// coordinate is <c>n / (2g)</c>, formed identically on both sides; across it exactly 0 or 1.
-        /// HLSL <c>SeamCoarseTess</c>.
+        /// The coarse tile's tess coordinate of seam vertex n (0 .. 2g, <paramref name="halfFactor"/> g) on
+        /// <paramref name="edge"/>: <c>n / (2g)</c> along, formed alike on both sides; 0 or 1 across. HLSL <c>SeamCoarseTess</c>.
         /// </summary>
         public static Float2 SeamCoarseTess(int edge, int numerator, float halfFactor)
         {

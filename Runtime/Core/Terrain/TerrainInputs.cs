@@ -5,14 +5,10 @@ using System.Runtime.InteropServices;
 namespace GregoryTerrain
 {
     /// <summary>
-    /// The terrain's GPU inputs as Core holds them: the three buffers <see cref="GpuLayout"/> packs
-    /// (<c>_ControlPoints</c>, <c>_Regions</c>, <c>_GridLines</c>) and the <see cref="TerrainParams"/>
-    /// constants. Mirrors <c>Shaders/Terrain/TerrainInputs.hlsl</c> (the accessors, same names) and the buffer
-    /// reads of <c>Shaders/Grid/PatchGrid.hlsl</c> (<see cref="FindPatch"/>, <see cref="PatchRegion"/>,
-    /// <see cref="LoadGregoryPatch"/>), so <see cref="TerrainVertex"/> can do what the shaders do,
-    /// step for step, on exactly the floats they read.
-    /// <para>Immutable apart from <see cref="Params"/>, which <see cref="WithParams"/> replaces (the
-    /// buffers are shared, as on the GPU where only the constants change per frame).</para>
+    /// The terrain's GPU inputs as Core holds them: the three buffers <see cref="GpuLayout"/> packs and
+    /// the <see cref="TerrainParams"/> constants. Mirrors <c>Shaders/Terrain/TerrainInputs.hlsl</c> and the
+    /// buffer reads of <c>Shaders/Grid/PatchGrid.hlsl</c>, same names, on exactly the floats they read.
+    /// Immutable apart from <see cref="Params"/> (<see cref="WithParams"/>).
     /// </summary>
     internal sealed class TerrainInputs
     {

@@ -18,13 +18,9 @@ namespace GregoryTerrain
         public double triangles;
         /// <summary>Tiles whose factors were computed, and how many of them are drawn (not culled).</summary>
         public int tilesSampled, tilesSampledDrawn;
-        /// <summary>Tiles drawn: M^2, or (M + 1)^2 anchored.</summary>
+        /// <summary>Tiles drawn: M^2, (M + 1)^2 anchored, or the levels' (<see cref="LodLevels.DrawnTileCount"/>).</summary>
         public int tileCount;
-        /// <summary>
-        /// Of the sampled tiles drawn, those with an adaptive factor held at the max factor: the
-        /// target pixel error may not hold there, and more tiles (or a larger max factor) would
-        /// restore it. 0 with a uniform factor.
-        /// </summary>
+        /// <summary>Of the sampled tiles drawn, those held at the max factor (the target may not hold there); 0 with a uniform factor.</summary>
         public int tilesSampledAtMaxFactor;
 
         /// <inheritdoc/>
@@ -33,20 +29,13 @@ namespace GregoryTerrain
     }
 
     /// <summary>
-    /// How many triangles the terrain's draw makes for a camera: each tile's factors from Core's
-    /// mirror of the hull stage (<see cref="TileFactors.ComputeTileFactors"/>), counted as the
-    /// tessellator triangulates a quad (<see cref="PatchTriangles"/>). The renderer's inspector shows
-    /// it, so that the target pixel error's cost is visible before anything is drawn. The rig checks
-    /// it against the GPU's clipping invocations (Tools~/RigTests/VertexCacheGpuTests.cs,
-    /// <c>TriangleEstimateIsWhatTheGpuDraws</c>; and every adaptive job of <c>gt bench</c>).
+    /// The triangles a camera's draw makes: each tile's factors from Core's mirror of the hull stage,
+    /// counted as the tessellator triangulates a quad. The rig checks it against the GPU's clipping
+    /// invocations (VertexCacheGpuTests, LodEstimateGpuTests, <c>gt bench</c>).
     /// </summary>
     internal static class TerrainTriangleEstimate
     {
-        /// <summary>
-        /// The segments the tessellator makes of one factor: for <see cref="TessellationPartitioning.Integer"/>
-        /// ceil(F) (at most 64), for <see cref="TessellationPartitioning.FractionalOdd"/> the smallest
-        /// odd count >= F (at most 63); 1 for F &lt;= 1.
-        /// </summary>
+        /// <summary>Segments of one factor F: integer ceil(F) (at most 64), fractional_odd the odd count >= F (at most 63); 1 for F &lt;= 1.</summary>
         public static int Segments(float factor, TessellationPartitioning partitioning)
         {
             if (!(factor >= 0f) || float.IsInfinity(factor))
@@ -58,11 +47,9 @@ namespace GregoryTerrain
         }
 
         /// <summary>
-        /// Triangles of one quad patch at these factors, transition rings included: 0 when culled (an
-        /// edge factor 0), 2 when every count is 1; otherwise an inside count of 1 is raised to 2
-        /// (integer) or 3 (fractional_odd), as the tessellator does, and the patch makes an inner grid
-        /// of (i0 - 2) x (i1 - 2) quads plus, per side, e + i - 2 triangles joining the side's e
-        /// segments to the inner rectangle's i - 2. A uniform count n gives 2 n^2.
+        /// Triangles of one quad patch, transition rings included: 0 culled, 2 when every count is 1;
+        /// else an inside count of 1 raised to 2 (integer) or 3 (fractional_odd), an inner grid of
+        /// (i0 - 2) x (i1 - 2) quads and per side e + i - 2 triangles. A uniform count n gives 2 n^2.
         /// </summary>
         public static long PatchTriangles(TileFactorSet f, TessellationPartitioning partitioning)
         {
@@ -78,10 +65,7 @@ namespace GregoryTerrain
             return 2L * (i0 - 2) * (i1 - 2) + e1 + e3 + 2L * (i0 - 2) + e0 + e2 + 2L * (i1 - 2);
         }
 
-        /// <summary>
-        /// Whether any of a drawn tile's factors makes as many segments as the max factor allows
-        /// (segments grow with the factor, so the largest factor decides).
-        /// </summary>
+        /// <summary>Whether a drawn tile's largest factor makes as many segments as the max factor.</summary>
         public static bool ReachesMaxFactor(TileFactorSet f, float maxFactor, TessellationPartitioning partitioning)
         {
             float largest = MathF.Max(MathF.Max(MathF.Max(f.edge.x, f.edge.y), MathF.Max(f.edge.z, f.edge.w)), MathF.Max(f.inside.x, f.inside.y));
@@ -89,20 +73,14 @@ namespace GregoryTerrain
         }
 
         /// <summary>
-        /// The draw's triangles for a camera (<paramref name="objectToClip"/>, <paramref name="screenSize"/>
-        /// pixels) at the inputs' settings and range. At most <paramref name="maxTiles"/> tiles are
-        /// evaluated (51 surface points each): with more, the k x k tiles nearest the centres of a
-        /// k x k split of the tiles (k = floor(sqrt(maxTiles))), their count scaled to all of them (M^2, or (M + 1)^2 anchored). The
-        /// vertex cache's factors are the integers it rounds them to (<see cref="VertexCache.IntegerFactors"/>).
+        /// The draw's triangles for a camera at the inputs' settings and range. Beyond
+        /// <paramref name="maxTiles"/> tiles, the k x k nearest the centres of a k x k split
+        /// (k = floor(sqrt(maxTiles))), scaled to all. The cache's factors are its integers.
         /// </summary>
         public static TriangleEstimate InView(TerrainInputs inputs, Float4x4 objectToClip, Float2 screenSize, TerrainKeywords keywords,
                                               TessellationPartitioning partitioning, int maxTiles = 256)
         {
-            if (inputs == null) throw new ArgumentNullException(nameof(inputs));
-            if (!objectToClip.IsFinite) throw new ArgumentException($"objectToClip {objectToClip} must be finite", nameof(objectToClip));
-            if (!screenSize.IsFinite || !(screenSize.x > 0f) || !(screenSize.y > 0f))
-                throw new ArgumentException($"screenSize {screenSize} must be finite and positive", nameof(screenSize));
-            if (maxTiles < 1) throw new ArgumentException(FormattableString.Invariant($"maxTiles ({maxTiles}) must be >= 1"), nameof(maxTiles));
+            CheckArguments(inputs, objectToClip, screenSize, maxTiles);
             int tiles = inputs.TilesAcross(), count = tiles * tiles;
             int k = count <= maxTiles ? tiles : Math.Max(1, (int)Math.Sqrt(maxTiles));
             int sampled = k * k;
@@ -123,6 +101,114 @@ namespace GregoryTerrain
             }
             e.triangles = (double)sum * count / sampled;
             return e;
+        }
+
+        static void CheckArguments(TerrainInputs inputs, Float4x4 objectToClip, Float2 screenSize, int maxTiles)
+        {
+            if (inputs == null) throw new ArgumentNullException(nameof(inputs));
+            if (!objectToClip.IsFinite) throw new ArgumentException($"objectToClip {objectToClip} must be finite", nameof(objectToClip));
+            if (!screenSize.IsFinite || !(screenSize.x > 0f) || !(screenSize.y > 0f))
+                throw new ArgumentException($"screenSize {screenSize} must be finite and positive", nameof(screenSize));
+            if (maxTiles < 1) throw new ArgumentException(FormattableString.Invariant($"maxTiles ({maxTiles}) must be >= 1"), nameof(maxTiles));
+        }
+
+        /// <summary>
+        /// <see cref="InView"/> with Horizon levels: <paramref name="levels"/> from <see cref="LodLevels.Layout"/>,
+        /// factors by <see cref="LodTileFactors"/>. Beyond <paramref name="maxTiles"/>, k x k tiles a level (k = floor(sqrt(maxTiles / L))).
+        /// </summary>
+        public static TriangleEstimate InLevels(TerrainInputs inputs, ReadOnlySpan<TerrainRange> levels, RangeOrigin origin, Float4x4 objectToClip,
+                                                Float2 screenSize, TerrainKeywords keywords, int maxTiles = 256)
+        {
+            CheckArguments(inputs, objectToClip, screenSize, maxTiles);
+            int m = inputs.TileCountInt(), n = levels.Length, perLevel = m * m;
+            if (n < 1 || n > LodTiles.MaxLevels) throw new ArgumentException(FormattableString.Invariant($"levels.Length ({n}) must lie in [1, {LodTiles.MaxLevels}]"), nameof(levels));
+            if (m % 2 != 0 || m < LodLevels.MinTiles) throw new ArgumentException(FormattableString.Invariant($"tiles ({m}) must be even and >= {LodLevels.MinTiles}"), nameof(inputs));
+            TerrainInputs[] layouts = LevelInputs(inputs, levels, origin);
+            var e = new TriangleEstimate { tileCount = LodLevels.DrawnTileCount(n, m) };
+            int k = n * perLevel <= maxTiles ? m : Math.Max(1, (int)Math.Sqrt(maxTiles / n));
+            for (int l = 0; l < n; l++)
+            {
+                long sum = 0;
+                for (int i = 0; i < k * k; i++)
+                {
+                    int ti = (2 * (i % k) + 1) * m / (2 * k), tj = (2 * (i / k) + 1) * m / (2 * k);
+                    if (InsideFiner(layouts, l, ti, tj)) continue;
+                    e.tilesSampled++;
+                    TileFactorSet f = LodTileFactors(layouts, l, ti, tj, objectToClip, screenSize, keywords);
+                    if (f.IsCulled) continue;
+                    e.tilesSampledDrawn++;
+                    if (!inputs.UsesUniformTessFactor() && ReachesMaxFactor(f, inputs.MaxTessFactor(), TessellationPartitioning.Integer)) e.tilesSampledAtMaxFactor++;
+                    sum += PatchTriangles(f, TessellationPartitioning.Integer);
+                }
+                e.triangles += (double)sum * perLevel / (k * k);
+            }
+            return e;
+        }
+
+        /// <summary>Each level's inputs (HLSL <c>LodLevelLayout</c>).</summary>
+        public static TerrainInputs[] LevelInputs(TerrainInputs inputs, ReadOnlySpan<TerrainRange> levels, RangeOrigin origin)
+        {
+            var layouts = new TerrainInputs[levels.Length];
+            for (int l = 0; l < levels.Length; l++)
+            {
+                TerrainParams p = inputs.Params;
+                RangeMapping.EncodeRange(levels[l], origin, out p.range, out p.rangeOrigin);
+                p.tileLattice = default;
+                layouts[l] = inputs.WithParams(p);
+            }
+            return layouts;
+        }
+
+        static void Offset(TerrainInputs[] levels, int coarse, out int a, out int b) =>
+            LodTiles.FinerOffsetCells(levels[coarse].Params.range, levels[coarse - 1].Params.range, levels[0].TileCountInt(), out a, out b);
+
+        static bool InsideFiner(TerrainInputs[] levels, int level, int ti, int tj)
+        {
+            if (level == 0) return false;
+            Offset(levels, level, out int a, out int b);
+            return LodTiles.TileInsideFiner(ti, tj, a, b, levels[0].TileCountInt());
+        }
+
+        /// <summary>HLSL <c>LodTileFactors</c> (TerrainStages.hlsl) of tile (ti, tj) of <paramref name="level"/>.</summary>
+        public static TileFactorSet LodTileFactors(TerrainInputs[] levels, int level, int ti, int tj, Float4x4 objectToClip, Float2 screenSize, TerrainKeywords keywords)
+        {
+            if (InsideFiner(levels, level, ti, tj)) return TileFactors.CulledTileFactors();
+            TerrainInputs l = levels[level];
+            int m = l.TileCountInt(), coarseMask = 0, fineMask = 0, aUp = 0, bUp = 0;
+            if (level > 0)
+            {
+                Offset(levels, level, out int a, out int b);
+                coarseMask = LodTiles.CoarseSeamEdges(ti, tj, a, b, m);
+            }
+            if (level + 1 < levels.Length)
+            {
+                Offset(levels, level + 1, out aUp, out bUp);
+                fineMask = LodTiles.FineSeamEdges(ti, tj, aUp, bUp, m);
+            }
+            TileFactorSet set = TileFactors.ComputeTileFactors(l, tj * m + ti, objectToClip, screenSize, keywords);
+            if (set.IsCulled) return set;
+            float[] edge = { set.edge.x, set.edge.y, set.edge.z, set.edge.w };
+            for (int i = 0; i < 4; i++)
+            {
+                if ((coarseMask & 1 << i) != 0) edge[i] = 2f * LodTiles.SeamHalfFactor(edge[i], l.MaxTessFactor());
+                else if ((fineMask & 1 << i) != 0)
+                    edge[i] = LodTiles.SeamHalfFactor(CoarseSeamEdgeFactor(levels[level + 1], 1 << i, ti, tj, aUp, bUp, objectToClip, screenSize, keywords), l.MaxTessFactor());
+            }
+            return new TileFactorSet(new Float4(edge[0], edge[1], edge[2], edge[3]), set.inside);
+        }
+
+        /// <summary>HLSL <c>CoarseSeamEdgeFactor</c>.</summary>
+        public static float CoarseSeamEdgeFactor(TerrainInputs coarse, int edgeBit, int ti, int tj, int aUp, int bUp, Float4x4 objectToClip, Float2 screenSize,
+                                                 TerrainKeywords keywords)
+        {
+            if (coarse.UsesUniformTessFactor()) return coarse.UniformTessFactor();
+            int m = coarse.TileCountInt();
+            LodTiles.FineSeamCoarseTile(edgeBit, ti, tj, aUp, bUp, out int cti, out int ctj, out int coarseEdge, out _);
+            int slot = ctj * m + cti;
+            var corners = new Float3[4];
+            for (int c = 0; c < 4; c++) corners[c] = TileFactors.CellCornerObjectPosition(coarse, slot, c);
+            int piece = coarseEdge == LodTiles.EdgeU0 ? 0 : coarseEdge == LodTiles.EdgeV0 ? 1 : coarseEdge == LodTiles.EdgeU1 ? 2 : 3;
+            return Math.Max(TileFactors.TileFactorPiece(coarse, slot, piece, corners, objectToClip, screenSize, keywords), 1f);
         }
     }
 }

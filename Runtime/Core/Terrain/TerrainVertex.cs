@@ -216,11 +216,8 @@ namespace GregoryTerrain
 
         /// <summary>
         /// What the renderer adds back to a vertex's output position in the object-to-world transform,
-        /// in double (terrain space): while a range origin is set (tile mode), S(O) and, with
-        /// <see cref="TerrainKeywords.Noise"/>, the noise height p(O) at the frame's octave count
-        /// (<see cref="TerrainInputs.NoiseOctaveCount()"/>; it changes with the range width, so a
-        /// renderer with noise recomputes it when the range changes); else zero. Reference positions
-        /// minus this are comparable with a vertex's output.
+        /// in double (terrain space): with a range origin (tile mode) S(O) plus, with noise, p(O) at
+        /// the frame's octave count (recomputed when the range changes); else zero.
         /// </summary>
         public static Double3 OutputOffset(TerrainInputs inputs, PatchGrid grid, TerrainKeywords keywords)
         {
@@ -252,10 +249,7 @@ namespace GregoryTerrain
         /// The octaves of p(O) in <see cref="OutputOffset(PatchGrid, TerrainParams, TerrainKeywords)"/>: a vertex
         /// outputs <c>p_c(q) - p_c(O)</c> at its own count c, so the offset must be O's noise at the
         /// count of the vertices the eye sees closest. Single-range rule: the frame's one count. Under
-        /// the continuous rule (<c>_NoiseOctaves.z</c> &gt; 0, the levels) every octave: the feet draw
-        /// them all, and a farther vertex's count misses only octaves its rule calls invisible there.
-        /// (The frame's count, from the width of the whole terrain, left out octaves the feet draw:
-        /// the drawn ground stood metres off under the camera at 1,000 km.)
+        /// the continuous rule (<c>_NoiseOctaves.z</c> &gt; 0, the levels) every octave: the feet draw them all.
         /// </summary>
         public static float OutputOffsetOctaves(TerrainParams p) =>
             p.noiseOctaves.z > 0f ? GMath.clamp(p.noiseOctaves.x, 0f, NoiseSettings.MaxOctaves) : TerrainInputs.NoiseOctaveCount(p);

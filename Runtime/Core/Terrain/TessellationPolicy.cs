@@ -121,14 +121,10 @@ namespace GregoryTerrain
         }
 
         /// <summary>
-        /// The chord error of an edge drawn as one straight segment, from five points of the curve at
-        /// edge parameter 0, 1/4, 1/2, 3/4, 1 (object units, the deviations' lengths). For a curve
-        /// with second derivative c (per unit parameter) the chord over a parameter span h deviates
-        /// by <c>|c| h^2 / 8</c> at its middle (the sagitta, <c>L^2 kappa / 8</c> for an arc of length L
-        /// and curvature kappa). The middle's deviation from the whole chord measures it for h = 1;
-        /// each half's deviation measures it for h = 1/2, so it counts four times. The largest of the
-        /// three also sees an S-shaped edge, whose middle lies on its chord. Depends only on the edge's
-        /// points, and is the same whichever end is first: shared edges agree (crack-free).
+        /// The chord error of an edge drawn as one segment, from its points at 0, 1/4, 1/2, 3/4, 1: a
+        /// chord over a span h deviates by <c>|c| h^2 / 8</c> at its middle (c the second derivative), so
+        /// each half's deviation counts four times; the largest of the three also sees an S-shaped edge.
+        /// The same whichever end is first: shared edges agree (crack-free).
         /// </summary>
         public static float EdgeSagitta(Float3 p0, Float3 pQuarter, Float3 pMid, Float3 pThreeQuarter, Float3 p1)
         {
@@ -217,24 +213,17 @@ namespace GregoryTerrain
         }
 
         /// <summary>
-        /// Segments per tile edge the adaptive estimate samples (HLSL <c>GT_EDGE_SEGMENTS</c>): the
-        /// surface is evaluated at the <c>EdgeSegments - 1</c> inner points of the edge (the corners are
-        /// known). With four, bumps inside far tiles slipped between the samples (performance.md,
-        /// "Choices in the shaders, measured"); eight see detail twice as fine for 4 more evaluations
-        /// per edge, once per tile per frame.
+        /// Segments per tile edge the adaptive estimate samples (HLSL <c>GT_EDGE_SEGMENTS</c>) at its
+        /// <c>EdgeSegments - 1</c> inner points (performance.md, "Choices in the shaders, measured").
         /// </summary>
         public const int EdgeSegments = 8;
 
         /// <summary>
         /// The chord error, in pixels, of a curve drawn as one segment, from <c>n + 1</c> points at
-        /// parameter <c>k / n</c> (<paramref name="points"/>, n = <see cref="EdgeSegments"/> in the shaders,
-        /// any even n here) and the pixel scale at each (<paramref name="pixelScales"/>; the end values are
-        /// not used). Every level of the binary hierarchy counts: the deviation of point <c>k</c> from the
-        /// chord of its two neighbours at distance <c>d</c> measures the second derivative over a span
-        /// <c>2 d / n</c>, and the sagitta scales with the span squared, so it counts <c>(n / 2d)^2</c> times;
-        /// the largest over all levels and points. With n = 4 this is <see cref="EdgeSagittaPixels(Float3, Float3, Float3, Float3, Float3, float, float, float)"/>.
-        /// Symmetric in the direction of travel (shared edges agree bit for bit when both walk it the same way,
-        /// which the hull does: lower tess coordinate first).
+        /// <c>k / n</c> (n even) and the pixel scale at each (the ends' unused): point k's deviation from
+        /// the chord of its neighbours at distance d counts <c>(n / 2d)^2</c> times (sagitta ~ span^2);
+        /// the largest over all levels and points. Shared edges agree bit for bit (the hull walks them
+        /// lower tess coordinate first).
         /// </summary>
         public static float EdgeSagittaPixels(Float3[] points, float[] pixelScales)
         {
@@ -299,11 +288,9 @@ namespace GregoryTerrain
 
         /// <summary>
         /// True when clip position <paramref name="c"/> is outside plane <paramref name="plane"/> of the
-        /// widened clip volume <c>-w - m &lt;= x, y &lt;= w + m</c>, <c>w &gt;= -m</c>
-        /// (0: left, 1: right, 2: bottom, 3: top, 4: behind the eye). The margin m is in clip units
-        /// (roughly world units for a projection with focal scale ~1, as in the chunk culling of seed 004:
-        /// a bounding diameter there). Depth near/far are not tested: their clip z convention differs
-        /// between graphics APIs, and terrain to the horizon is clipped by the rasteriser anyway.
+        /// widened clip volume <c>-w - m &lt;= x, y &lt;= w + m</c>, <c>w &gt;= -m</c> (0: left, 1: right,
+        /// 2: bottom, 3: top, 4: behind the eye); m in clip units. Near/far are not tested (their z
+        /// convention differs between APIs; the rasteriser clips them).
         /// </summary>
         public static bool OutsidePlane(Float4 c, int plane, float margin)
         {
@@ -375,15 +362,10 @@ namespace GregoryTerrain
         public const float GradientNoiseSlope = 3f;
 
         /// <summary>
-        /// Bound on |p(q) - p(O)|, the noise a vertex adds while a range origin O is set (the
-        /// vertices output p(q) - p(O), both at the vertex's octave count), for every q within
-        /// <paramref name="distance"/> (terrain units, Euclidean) of O: per octave k the smaller of
-        /// twice its amplitude (both ends anywhere in [-a_k, a_k]) and its slope bound times the
-        /// distance (<c>a_k GradientNoiseSlope frequency alpha^k d</c>), summed over
-        /// <paramref name="octaveCount"/> octaves (the most a vertex draws, <c>MaxNoiseOctaves</c>: it
-        /// weights each by a fade in [0, 1]; a fraction weights the last as OctaveNoise does). Near the origin
-        /// (the feet, under the levels of detail) this is metres where <see cref="NoiseHeightBound"/>
-        /// is the whole relief. Mirrors HLSL <c>NoiseDifferenceBound</c>.
+        /// Bound on |p(q) - p(O)| for every q within <paramref name="distance"/> (terrain units) of the
+        /// range origin O: per octave k the smaller of twice its amplitude and its slope bound times the
+        /// distance (<c>a_k GradientNoiseSlope frequency alpha^k d</c>), over <paramref name="octaveCount"/>
+        /// octaves (a fraction weights the last). Mirrors HLSL <c>NoiseDifferenceBound</c>.
         /// </summary>
         public static float NoiseDifferenceBound(NoiseSettings settings, float octaveCount, float distance)
         {
@@ -440,13 +422,9 @@ namespace GregoryTerrain
         }
 
         /// <summary>
-        /// Triangles the adaptive policy draws, estimated: an edge spanning 1/M of the range has a
-        /// sagitta of <paramref name="rangeSagittaPixels"/> / M^2 (the sagitta of the whole range's width
-        /// drawn as one segment, in pixels: the sagitta scales with the square of the span), so each
-        /// factor is <c>F = clamp(sqrt(2 rangeSagittaPixels / targetPixelError) / M, 1, maxFactor)</c> and the
-        /// count <c>2 M^2 F^2</c>. Unclamped that is <c>4 rangeSagittaPixels / targetPixelError</c>, whatever M:
-        /// halving the pixel error doubles the triangles. With a uniform factor, or when the sagitta is
-        /// unknown (pass +infinity), it is the uniform count, resp. the most the settings allow.
+        /// Triangles the adaptive policy draws, estimated from the range's sagitta S (pixels):
+        /// <c>F = clamp(sqrt(2 S / target) / M, 1, maxFactor)</c>, <c>2 M^2 F^2</c> triangles (unclamped
+        /// <c>4 S / target</c>, whatever M). Uniform factor, or S = +infinity: the uniform count, resp. the most.
         /// </summary>
         public static double EstimateTriangleCount(TessellationSettings settings, double rangeSagittaPixels)
         {

@@ -3,17 +3,10 @@ using System;
 namespace GregoryTerrain
 {
     /// <summary>
-    /// A tile's tessellation factors as the hull stage decides them: frustum culling, then the
-    /// adaptive factors from the chord error of the tile's edges, midlines and diagonals in pixels.
-    /// Mirrors <c>Shaders/Terrain/TileFactors.hlsl</c> name for name (<c>ComputeTileFactors</c> and its
-    /// pieces) on Core's float path (<see cref="TerrainVertex.EvaluateSurface"/>), so the CPU can
-    /// tell what the GPU will draw for a camera: the renderer's triangle estimate
-    /// (<see cref="TerrainTriangleEstimate"/>). The arithmetic per piece is
-    /// <see cref="TessellationPolicy"/>'s.
-    /// <para>Every sample is of the tile's cell (<see cref="TileLattice.CellToTerrainPoint"/>): the
-    /// tile itself unless anchored and clipped to the range. A clipped tile draws its cell's factors
-    /// scaled to the part it keeps (<see cref="TileFactorsOfCell"/>), so a pan, which only moves the
-    /// clipped tiles, changes no sample.</para>
+    /// A tile's factors as the hull stage decides them (frustum culling, then the chord error of its
+    /// edges, midlines and diagonals in pixels), on Core's float path: the triangle estimate's
+    /// (<see cref="TerrainTriangleEstimate"/>). Mirrors <c>Shaders/Terrain/TileFactors.hlsl</c> name for
+    /// name. Samples are of the tile's cell; a clipped tile draws its cell's factors scaled to the part it keeps.
     /// </summary>
     internal static class TileFactors
     {
@@ -55,11 +48,9 @@ namespace GregoryTerrain
         public static TileFactorSet CulledTileFactors() => default;
 
         /// <summary>
-        /// HLSL <c>TileNoiseMargin</c>: the height the noise may move slot <paramref name="tile"/>'s
-        /// surface from its corners' (no noise) frame. While a range origin O is set (not in paper
-        /// mode) the vertices output p(q) - p(O): <see cref="TessellationPolicy.NoiseDifferenceBound"/>
-        /// at the cell corners' largest distance from O (a cell is a rectangle in q); else p(q) itself,
-        /// within <see cref="TessellationPolicy.NoiseHeightBound"/>. 0 without <see cref="TerrainKeywords.Noise"/>.
+        /// HLSL <c>TileNoiseMargin</c>: how far the noise may move the tile's surface: with a range origin O
+        /// (not paper mode) <see cref="TessellationPolicy.NoiseDifferenceBound"/> at the cell corners' largest
+        /// distance from O, else <see cref="TessellationPolicy.NoiseHeightBound"/>; 0 without noise.
         /// </summary>
         public static float TileNoiseMargin(TerrainInputs inputs, int tile, TerrainKeywords keywords)
         {
@@ -194,11 +185,8 @@ namespace GregoryTerrain
         }
 
         /// <summary>
-        /// HLSL <c>TileFactorsOfCell</c>: the factors of a tile that keeps the part
-        /// <paramref name="kept"/> (<see cref="TileLattice.TileKeptFraction"/>) of its cell along x and
-        /// y: each line's factor times the part of it the tile keeps, at least 1, so its segments are
-        /// no longer than the cell's and the cell's error bound holds. Edges u = 0, 1 run along v
-        /// (y), edges v = 0, 1 along u (x). Whole: the cell's factors bit for bit; culled stays culled.
+        /// HLSL <c>TileFactorsOfCell</c>: each line's factor times the part <paramref name="kept"/> of the
+        /// cell the tile keeps along it, at least 1 (segments no longer than the cell's). Whole: bit for bit.
         /// </summary>
         public static TileFactorSet TileFactorsOfCell(TileFactorSet cell, Float2 kept)
         {

@@ -5,15 +5,9 @@ namespace GregoryTerrain
     /// <summary>
     /// Tiles anchored to the terrain (internals.md, "Anchored tiles"). Mirrors
     /// <c>Shaders/Terrain/TileLattice.hlsl</c>, same names, step for step in float.
-    /// <para>Laid over the range, every tile moves when the range pans: every vertex slides over the
-    /// surface (the picture swims) and the vertex cache re-evaluates all of them. Anchored, the
-    /// tiles are the cells of a lattice fixed in terrain space: the M x M tiles of the range
-    /// <c>_TileLattice</c> had when the renderer anchored them, repeated beyond it. The current
-    /// range, no wider than that one, meets at most M + 1 cells per axis: (M + 1)^2 tiles, each a
-    /// cell clipped to the range. A pan changes only the clipped cells at the range's edges; the
-    /// whole cells keep their points bit for bit, so their cached vertices stay valid.</para>
-    /// <para>Slots: the tile of cell k sits in slot k mod (M + 1) (per axis), so a cell keeps its
-    /// slot while the pan moves the first cell k0 past it.</para>
+    /// <para>The tiles are the cells of the lattice of the range <c>_TileLattice</c> had when anchored;
+    /// the range meets at most M + 1 cells per axis, each clipped to it, so a pan changes only the
+    /// clipped cells. Cell k sits in slot k mod (M + 1) per axis.</para>
     /// </summary>
     internal static class TileLattice
     {

@@ -157,9 +157,9 @@ namespace GregoryTerrain.Rig.Tests
         [Test]
         public void ANonPositiveCellSizeIsNamed()
         {
-            Assert.That(RendererInspectorLayout.CellSizeProblem("Noise cell size (m)", 0.0), Does.Contain("Noise cell size (m)").And.Contain("0"));
-            Assert.That(RendererInspectorLayout.CellSizeProblem("Noise cell size (m)", -2.0), Does.Contain("-2"));
-            Assert.That(RendererInspectorLayout.CellSizeProblem("Noise cell size (m)", 0.5), Is.Null);
+            Assert.That(RendererInspectorLayout.LengthProblem("Noise cell size (m)", 0.0), Does.Contain("Noise cell size (m)").And.Contain("0"));
+            Assert.That(RendererInspectorLayout.LengthProblem("Noise cell size (m)", -2.0), Does.Contain("-2"));
+            Assert.That(RendererInspectorLayout.LengthProblem("Noise cell size (m)", 0.5), Is.Null);
         }
 
         /// <summary>
@@ -182,7 +182,7 @@ namespace GregoryTerrain.Rig.Tests
             }
             Assert.That(Source("Editor", "GregoryTerrainRendererEditor.cs"), Does.Contain("RendererInspectorLayout.MetreFields"));
 
-            // The samples' 0.02 noise amplitude: 20 m on the Fly-over (Height Scale 1000), 60 m on the walk (3000).
+            // 0.02 of a Height Scale of 1000 m is 20 m, of 3000 m 60 m.
             Assert.That(RendererInspectorLayout.ToMetres(TerrainLength.Height, 0.02, 1000, 1000), Is.EqualTo(20.0).Within(1e-9));
             Assert.That(RendererInspectorLayout.ToMetres(TerrainLength.Height, 0.02, 3000, 20000), Is.EqualTo(60.0).Within(1e-9));
             Assert.That(RendererInspectorLayout.ToMetres(TerrainLength.CellsAcross, 16, 3000, 20000), Is.EqualTo(1250.0));
@@ -192,6 +192,29 @@ namespace GregoryTerrain.Rig.Tests
             Assert.That(RendererInspectorLayout.ClampedFromMetres(TerrainLength.CellsAcross, 0, 1000, 1000, 0.5f, 4096f), Is.EqualTo(4096f));
             Assert.That(RendererInspectorLayout.ClampedFromMetres(TerrainLength.CellsAcross, 1e6, 1000, 1000, 0.5f, 4096f), Is.EqualTo(0.5f));
             Assert.That(RendererInspectorLayout.ClampedFromMetres(TerrainLength.CellsAcross, 62.5, 1000, 1000, 0.5f, 4096f), Is.EqualTo(16f));
+        }
+
+        /// <summary>
+        /// Camera Range Controller's View distance is typed in metres of its terrain's width; the
+        /// stored part of the width is unchanged, so saved scenes keep their square (editor-only:
+        /// the inspector's source and its conversion are checked here).
+        /// </summary>
+        [Test]
+        public void ViewDistanceIsTypedInMetres()
+        {
+            string editor = Directory.GetFiles(PackageRoot.Combine("Editor"), "*.cs").Select(File.ReadAllText)
+                .FirstOrDefault(t => t.Contains("[CustomEditor(typeof(CameraRangeController))"));
+            Assert.That(editor, Is.Not.Null, "no inspector of CameraRangeController: View distance is drawn in terrain units");
+            Assert.That(editor, Does.Contain("RendererInspectorLayout.ViewDistanceField").And.Contain("GregoryTerrainRendererEditor.DrawMetresField("));
+            var f = RendererInspectorLayout.ViewDistanceField;
+            Assert.That(f.label, Is.EqualTo("View distance (m)"));
+            Match range = Regex.Match(Source("Runtime", "CameraRangeController.cs"), @"Range\(([-0-9.]+)f?,\s*([-0-9.]+)f?\)\]\s*float\s+" + f.field + @"\b");
+            Assert.That(range.Success, "the stored field and its [Range]");
+            Assert.That((f.min, f.max), Is.EqualTo((float.Parse(range.Groups[1].Value, CultureInfo.InvariantCulture), float.Parse(range.Groups[2].Value, CultureInfo.InvariantCulture))));
+            Assert.That(RendererInspectorLayout.ToMetres(TerrainLength.Width, 0.5, 3000, 20000), Is.EqualTo(10000.0));
+            Assert.That(RendererInspectorLayout.FromMetres(TerrainLength.Width, 250, 3000, 1000), Is.EqualTo(0.25));
+            Assert.That(RendererInspectorLayout.ClampedFromMetres(TerrainLength.Width, 5e6, 600, 1000, f.min, f.max), Is.EqualTo(1f), "wider than the terrain: all of it");
+            Assert.That(RendererInspectorLayout.LengthProblem(f.label, -5), Does.Contain("View distance (m)").And.Contain("-5"));
         }
 
         /// <summary>
@@ -247,8 +270,9 @@ namespace GregoryTerrain.Rig.Tests
             string renderer = Source("Runtime", "GregoryTerrainRenderer.cs");
             Assert.That(Regex.IsMatch(renderer, @"EstimatedTriangleCount\s*=>\s*DrawnTileCount\s*\*"), "Most triangles counts the tiles drawn");
             Assert.That(renderer, Does.Contain("LodLevels.DrawnTileCount(levels, tiles)"));
-            // Triangles in view mirrors one range only: with the levels it says so instead of counting one range.
-            Assert.That(Source("Runtime", "GregoryTerrainRenderer.Estimate.cs"), Does.Contain("|| LevelsOn(_drawFallback)) return null;"));
+            // Triangles in view counts every level (Core's InLevels), and the inspector no longer says it is not estimated.
+            Assert.That(Source("Runtime", "GregoryTerrainRenderer.Estimate.cs"), Does.Contain("TerrainTriangleEstimate.InLevels(").And.Not.Contain("LevelsOn(_drawFallback)) return null"));
+            Assert.That(Source("Editor", "GregoryTerrainRendererEditor.cs"), Does.Not.Contain("not estimated"));
         }
 
         static Float4 F4(TerrainRange r) => new Float4((float)r.c, (float)r.d, (float)r.g, (float)r.h);

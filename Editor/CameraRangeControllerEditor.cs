@@ -1,0 +1,28 @@
+using System.Collections.Generic;
+using System.Linq;
+using UnityEditor;
+
+namespace GregoryTerrain.EditorTools
+{
+    /// <summary>View distance in metres of the target's width; stored as a part of it, so saved scenes keep their square.</summary>
+    [CustomEditor(typeof(CameraRangeController)), CanEditMultipleObjects]
+    internal sealed class CameraRangeControllerEditor : Editor
+    {
+        readonly Dictionary<string, string> _refused = new Dictionary<string, string>();
+
+        public override void OnInspectorGUI()
+        {
+            serializedObject.Update();
+            EditorGUILayout.PropertyField(serializedObject.FindProperty("target"));
+            EditorGUILayout.PropertyField(serializedObject.FindProperty("followCamera"));
+            var f = RendererInspectorLayout.ViewDistanceField;
+            SerializedProperty p = serializedObject.FindProperty(f.field);
+            GregoryTerrainRenderer r = ((CameraRangeController)target).Target;
+            if (r != null && targets.All(t => ((CameraRangeController)t).Target is GregoryTerrainRenderer o && o.WorldUnitsPerObjectUnit.Equals(r.WorldUnitsPerObjectUnit)))
+                GregoryTerrainRendererEditor.DrawMetresField(p, f.field, r.WorldUnitsPerObjectUnit, f.kind, f.label, f.min, f.max, _refused);
+            else EditorGUILayout.PropertyField(p);   // no terrain, or terrains of different widths: the part of the width
+            EditorGUILayout.PropertyField(serializedObject.FindProperty("lookAhead"));
+            serializedObject.ApplyModifiedProperties();
+        }
+    }
+}
