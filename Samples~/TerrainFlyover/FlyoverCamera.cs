@@ -23,7 +23,7 @@ namespace GregoryTerrain.Samples.TerrainFlyover
         [Tooltip("The terrain to fly over.")]
         [SerializeField] GregoryTerrainRenderer terrain = null;
 
-        [Tooltip("Whole terrain: draw all of it. Paper zoom: draw a range around the camera that narrows to the Range Width's second value and widens to its first, twice per loop, at the same vertex count. Switch it in Play Mode.")]
+        [Tooltip("Whole terrain: draw all of it. Paper zoom: draw a range around the camera that narrows to the Range Metres' second value and widens to its first, twice per loop, at the same vertex count. Switch it in Play Mode.")]
         [SerializeField] View view = View.PaperZoom;
 
         [Tooltip("Seconds per loop.")]
@@ -38,8 +38,8 @@ namespace GregoryTerrain.Samples.TerrainFlyover
         [Tooltip("Seconds the camera takes to follow the ground ahead (about 63% of a change).")]
         [SerializeField, Range(0.05f, 10f)] float smoothSeconds = 1f;
 
-        [Tooltip("Paper zoom only: widest and narrowest range side, as fractions of the terrain's width.")]
-        [SerializeField] Vector2 rangeWidth = new Vector2(0.6f, 0.02f);
+        [Tooltip("Paper zoom only: widest and narrowest side of the drawn range, in metres.")]
+        [SerializeField] Vector2 rangeMetres = new Vector2(600f, 20f);
 
         float _height = float.NaN;   // world y of the camera, eased from frame to frame
 
@@ -75,8 +75,9 @@ namespace GregoryTerrain.Samples.TerrainFlyover
             if (view == View.WholeTerrain) terrain.Range = TerrainRange.full;
             else
             {
-                double width = FlyoverPath.RangeWidth(phase, rangeWidth.x, rangeWidth.y);
-                terrain.Range = RangeFit.Around(x, y, width, width);
+                double metres = FlyoverPath.RangeWidth(phase, rangeMetres.x, rangeMetres.y);
+                Vector2 size = TerrainMetres();
+                terrain.Range = RangeFit.Around(x, y, metres / size.x, metres / size.y);
             }
         }
 
@@ -85,6 +86,13 @@ namespace GregoryTerrain.Samples.TerrainFlyover
         {
             Vector2 size = terrain.TerrainSize;
             return terrain.transform.TransformPoint(new Vector3((float)(x * size.x), 0f, (float)(y * size.y)));
+        }
+
+        /// <summary>The terrain's width and depth in world metres (Terrain Size times the Transform's scale).</summary>
+        Vector2 TerrainMetres()
+        {
+            Vector3 scale = terrain.transform.lossyScale;
+            return new Vector2(terrain.TerrainSize.x * Mathf.Abs(scale.x), terrain.TerrainSize.y * Mathf.Abs(scale.z));
         }
 
         /// <summary>World height of the surface the renderer draws over the unit-square point (x, y); NaN off the terrain.</summary>

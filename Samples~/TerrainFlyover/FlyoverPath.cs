@@ -28,7 +28,7 @@ namespace GregoryTerrain.Samples.TerrainFlyover
         /// <summary>1 at the widest range, 0 at the narrowest: zooms in and out twice per loop.</summary>
         public static double Zoom(double phase) => 0.5 + 0.5 * Math.Cos(2.0 * phase);
 
-        /// <summary>The range's side (unit square) at <paramref name="phase"/>, between the narrowest and widest.</summary>
+        /// <summary>The range's side at <paramref name="phase"/>, between the narrowest and widest (in their unit).</summary>
         public static double RangeWidth(double phase, double widest, double narrowest) =>
             narrowest + (widest - narrowest) * Zoom(phase);
 

@@ -376,6 +376,7 @@ namespace UnityEngine
     [AttributeUsage(AttributeTargets.All, Inherited = true, AllowMultiple = false)] public class TooltipAttribute : PropertyAttribute { public TooltipAttribute(string tooltip) { } } // SR:TooltipAttribute
     [AttributeUsage(AttributeTargets.Field, Inherited = true, AllowMultiple = false)] public sealed class RangeAttribute : PropertyAttribute { public RangeAttribute(float min, float max) { } } // SR:RangeAttribute
     [AttributeUsage(AttributeTargets.Field, Inherited = true, AllowMultiple = false)] public sealed class MinAttribute : PropertyAttribute { public MinAttribute(float min) { } } // SR:MinAttribute
+    [AttributeUsage(AttributeTargets.Field, Inherited = true, AllowMultiple = false)] public sealed class TextAreaAttribute : PropertyAttribute { public TextAreaAttribute() { } public TextAreaAttribute(int minLines, int maxLines) { } } // SR:TextAreaAttribute
     [AttributeUsage(AttributeTargets.Field, Inherited = true, AllowMultiple = true)] public class HeaderAttribute : PropertyAttribute { public HeaderAttribute(string header) { } } // SR:HeaderAttribute
     public sealed class HideInInspector : Attribute { }                                                                // SR:HideInInspector (no AttributeUsage in 2022.3)
 }
