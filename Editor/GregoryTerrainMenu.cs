@@ -1,5 +1,6 @@
 using GregoryTerrain;
 using UnityEditor;
+using UnityEditor.SceneManagement;
 using UnityEngine;
 using UnityEngine.SceneManagement;
 
@@ -55,9 +56,10 @@ namespace GregoryTerrain.EditorTools
             PlaceBeside(child, renderer.gameObject);
             var collider = child.AddComponent<GregoryTerrainCollider>();   // RequireComponent adds the MeshCollider
             collider.Terrain = renderer;
-            Camera main = Camera.main;
+            // In Prefab Mode the main camera is in another scene, which a prefab cannot reference.
+            Camera main = EditorSceneManager.IsPreviewScene(child.scene) ? null : Camera.main;
             if (main != null) collider.Target = main.transform;
-            else Debug.LogWarning("No camera is tagged MainCamera: set the Gregory Terrain Collider's Target by hand.", child);
+            else Debug.LogWarning("No main camera to follow here (none is tagged MainCamera, or this is Prefab Mode): set the Gregory Terrain Collider's Target by hand.", child);
             Undo.RegisterCreatedObjectUndo(child, CreateName);
         }
 

@@ -290,9 +290,25 @@ namespace GregoryTerrain.EditorTools
         static string FormatBytes(long bytes) =>
             bytes.ToString("N0") + " bytes (" + (bytes / (1024.0 * 1024.0)).ToString("0.0") + " MiB)";
 
-        // F frames the drawn terrain (Unity calls these by name; a MonoBehaviour has no bounds of its own).
-        bool HasFrameBounds() => true;
-        Bounds OnGetFrameBounds() => ((GregoryTerrainRenderer)target).WorldBounds();
+        // F frames the drawn terrain (Unity calls these by name; a MonoBehaviour has no bounds of its own):
+        // every selected renderer that has drawn; none drawn, Unity frames the selection itself.
+        bool HasFrameBounds() => targets.Any(t => Drawn(t as GregoryTerrainRenderer));
+
+        Bounds OnGetFrameBounds()
+        {
+            Bounds? all = null;
+            foreach (UnityEngine.Object t in targets)
+            {
+                var r = t as GregoryTerrainRenderer;
+                if (!Drawn(r)) continue;
+                Bounds b = r.WorldBounds();
+                if (all is Bounds a) { a.Encapsulate(b); all = a; }
+                else all = b;
+            }
+            return all ?? default;
+        }
+
+        static bool Drawn(GregoryTerrainRenderer r) => r != null && r.isActiveAndEnabled && r.HasDrawn;
 
         void OnSceneGUI()
         {

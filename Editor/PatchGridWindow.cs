@@ -61,6 +61,7 @@ namespace GregoryTerrain.EditorTools
 
         GregoryTerrainRenderer[] _renderers;   // searched again when the hierarchy changes
         string _exrPath;                        // the EXR file _exrHas32Bits was read from (OnGUI runs every repaint)
+        DateTime _exrWritten;                   // and its last write then
         bool _exrHas32Bits;
         double _unitMetres;                     // a drawing renderer's, else metresPerHeightUnit
 
@@ -218,45 +219,52 @@ namespace GregoryTerrain.EditorTools
                 FileHas32BitChannels(importer));
         }
 
-        /// <summary>Whether the importer's file is an EXR of 32-bit channels (its header, read once per path).</summary>
+        /// <summary>Whether the importer's file is an EXR of 32-bit channels (its header, read again when the file changes).</summary>
         bool FileHas32BitChannels(TextureImporter importer)
         {
             string path = importer == null ? null : importer.assetPath;
             if (path == null || !path.EndsWith(".exr", StringComparison.OrdinalIgnoreCase)) return false;
-            if (path == _exrPath) return _exrHas32Bits;
+            string full = Path.GetFullPath(path);   // a Packages/ path resolves to the package's folder
+            DateTime written = File.Exists(full) ? File.GetLastWriteTimeUtc(full) : default;
+            if (full == _exrPath && written == _exrWritten) return _exrHas32Bits;
             byte[] header = new byte[64 * 1024];
             int read = 0;
             try
             {
-                using (var f = File.OpenRead(path)) read = f.Read(header, 0, header.Length);
+                using (var f = File.OpenRead(full)) read = f.Read(header, 0, header.Length);
             }
             catch (IOException) { }
             catch (UnauthorizedAccessException) { }
             Array.Resize(ref header, read);
-            _exrPath = path;
+            _exrPath = full;
+            _exrWritten = written;
             _exrHas32Bits = TextureHeights.ExrHas32BitChannels(header) == true;
             return _exrHas32Bits;
         }
 
         /// <summary>
-        /// The editor's active platform's settings for <paramref name="importer"/>: an override there
-        /// (a compressed format, a smaller Max Size) wins over the default settings the fix writes.
-        /// A 32-bit EXR gets an RFloat override (the default import is half: 11 significant bits);
-        /// anything else drops the override, so the default settings apply.
+        /// The platform settings beside the default ones the fix writes: a 32-bit EXR gets RFloat on the
+        /// Default tab (Unity's default import is half: 11 significant bits). An override for the
+        /// editor's active platform wins over the Default tab: it is dropped when it compresses the
+        /// heights or would not read such an EXR at 32 bits, else kept (a chosen R16, say) with its Max
+        /// Size raised to the file's.
         /// </summary>
-        void FixActivePlatform(TextureImporter importer, int side)
+        void FixPlatformSettings(TextureImporter importer, bool compressed, int side)
         {
-            string platform = NamedBuildTarget.FromBuildTargetGroup(BuildPipeline.GetBuildTargetGroup(EditorUserBuildSettings.activeBuildTarget)).TargetName;
-            TextureImporterPlatformSettings settings = importer.GetPlatformTextureSettings(platform);
             bool wide = FileHas32BitChannels(importer);
-            if (!settings.overridden && !wide) return;
-            settings.overridden = wide;
             if (wide)
             {
-                settings.format = TextureImporterFormat.RFloat;
-                while (settings.maxTextureSize < side) settings.maxTextureSize *= 2;
+                TextureImporterPlatformSettings all = importer.GetDefaultPlatformTextureSettings();
+                all.format = TextureImporterFormat.RFloat;
+                importer.SetPlatformTextureSettings(all);
             }
-            importer.SetPlatformTextureSettings(settings);
+            string platform = NamedBuildTarget.FromBuildTargetGroup(BuildPipeline.GetBuildTargetGroup(EditorUserBuildSettings.activeBuildTarget)).TargetName;
+            TextureImporterPlatformSettings active = importer.GetPlatformTextureSettings(platform);
+            if (!active.overridden) return;
+            bool reads32 = active.format == TextureImporterFormat.RFloat || active.format == TextureImporterFormat.RGBAFloat;
+            if (compressed || (wide && !reads32)) active.overridden = false;
+            else while (active.maxTextureSize < side) active.maxTextureSize *= 2;
+            importer.SetPlatformTextureSettings(active);
         }
 
         /// <summary>Imports the texture so that it holds its file's heights: readable, uncompressed, at the file's size.</summary>
@@ -273,7 +281,7 @@ namespace GregoryTerrain.EditorTools
             importer.textureCompression = TextureImporterCompression.Uncompressed;
             importer.npotScale = TextureImporterNPOTScale.None;
             while (importer.maxTextureSize < side) importer.maxTextureSize *= 2;
-            FixActivePlatform(importer, side);
+            FixPlatformSettings(importer, GraphicsFormatUtility.IsCompressedFormat(texture.format), side);
             importer.SaveAndReimport();
             Report($"'{texture.name}' reimported readable, uncompressed{(FileHas32BitChannels(importer) ? " (RFloat)" : "")}, at {w} x {h}.", MessageType.Info);
         }

@@ -17,7 +17,7 @@ namespace GregoryTerrain
         [Tooltip("The camera to follow; the main camera when empty.")]
         [SerializeField] Camera followCamera = null;
 
-        [Tooltip("Side of the drawn square; stored as a part of the terrain's width (1 = all of it).")]
+        [Tooltip("Side of the drawn square, shown in metres of the terrain's width (x); stored as a part of it (1 = all of it).")]
         [SerializeField, Range(0.0001f, 1f)] float viewDistance = 0.5f;
 
         [Tooltip("How far ahead of the camera (fraction of the side) the square's centre is pushed, so more of it lies in view.")]

@@ -33,13 +33,19 @@ namespace GregoryTerrain
             {
                 // The camera's levels, against the origin the draw matrix (ObjectToClip) cancels.
                 Double3 local = WorldToTerrainObject(cam.transform.position);
-                int count = LodLevels.Layout(new Double2(local.x, local.z), FinestExponent(), tiles, _estimateLevels);
+                // The uploaded tile count, not the field: an inspector edit is not drawn (or checked) yet.
+                int uploadedTiles = _estimateInputs.TileCountInt();
+                if (uploadedTiles % 2 != 0 || uploadedTiles < LodLevels.MinTiles) return null;
+                int count = LodLevels.Layout(new Double2(local.x, local.z), FinestExponent(), uploadedTiles, _estimateLevels);
                 ReadOnlySpan<TerrainRange> levels = new ReadOnlySpan<TerrainRange>(_estimateLevels, 0, count);
                 return TerrainTriangleEstimate.InLevels(_estimateInputs, levels, _origin.Origin, m, screen, NoiseKeywords(), maxTiles);
             }
             var partitioning = _usesCache ? TessellationPartitioning.Integer : TessellationPartitioning.FractionalOdd;
             return TerrainTriangleEstimate.InView(_estimateInputs, m, screen, NoiseKeywords(), partitioning, maxTiles);
         }
+
+        /// <summary>Whether a grid is uploaded with valid settings: <see cref="WorldBounds"/> holds the drawn terrain.</summary>
+        internal bool HasDrawn => _uploadedPatchGrid != null && _settingsError == null;
 
         static Float4x4 ToFloat4x4(Matrix4x4 m) => Float4x4.FromRows(
             m.m00, m.m01, m.m02, m.m03, m.m10, m.m11, m.m12, m.m13,

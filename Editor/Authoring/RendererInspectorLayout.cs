@@ -152,7 +152,7 @@ namespace GregoryTerrain
 
         /// <summary>Camera Range Controller's side of the square: a part of the terrain's width, shown in metres.</summary>
         public static readonly (string field, TerrainLength kind, string label, float min, float max) ViewDistanceField =
-            ("viewDistance", TerrainLength.Width, "View distance (m)", 0.0001f, 1f);
+            ("viewDistance", TerrainLength.Width, "Range side (m)", 0.0001f, 1f);
 
         public static double ToMetres(TerrainLength kind, double value, double metresPerHeightUnit, double widthMetres) =>
             kind == TerrainLength.Height ? value * metresPerHeightUnit : kind == TerrainLength.Width ? value * widthMetres : widthMetres / value;

@@ -53,6 +53,8 @@ namespace GregoryTerrain.Rig.Tests
             string beside = Body("Editor/GregoryTerrainMenu.cs", "PlaceBeside");
             StringAssert.Contains("SetParent(parent, false)", beside);
             StringAssert.Contains("SceneManager.MoveGameObjectToScene(go, placed.scene)", beside);
+            // Review finding: in Prefab Mode the main camera lies in a scene the prefab cannot reference.
+            StringAssert.Contains("EditorSceneManager.IsPreviewScene(child.scene) ? null : Camera.main", Body("Editor/GregoryTerrainMenu.cs", "AddColliderFollowingMainCamera"));
         }
 
         /// <summary>
@@ -63,12 +65,13 @@ namespace GregoryTerrain.Rig.Tests
         public void FixImportSetsTheActivePlatformToo()
         {
             string fix = Body("Editor/PatchGridWindow.cs", "FixImport");
-            int platform = fix.IndexOf("FixActivePlatform(importer, side)"), reimport = fix.IndexOf("SaveAndReimport()");
+            int platform = fix.IndexOf("FixPlatformSettings(importer, "), reimport = fix.IndexOf("SaveAndReimport()");
             Assert.That(platform, Is.GreaterThanOrEqualTo(0).And.LessThan(reimport), "the active platform's settings set before the reimport");
-            string active = Body("Editor/PatchGridWindow.cs", "FixActivePlatform");
+            string active = Body("Editor/PatchGridWindow.cs", "FixPlatformSettings");
             StringAssert.Contains("EditorUserBuildSettings.activeBuildTarget", active);
             StringAssert.Contains("TextureImporterFormat.RFloat", active);
-            StringAssert.Contains("importer.SetPlatformTextureSettings(settings)", active);
+            StringAssert.Contains("importer.SetPlatformTextureSettings(active)", active);
+            StringAssert.Contains("GetDefaultPlatformTextureSettings()", active);
         }
 
         /// <summary>Unity's Terrain, Tree and Wind Zone are 3000-3002 in GameObject &gt; 3D Object (UnityCsReference 2022.3).</summary>

@@ -109,8 +109,28 @@ namespace GregoryTerrain.Rig.Tests
         [Test]
         public void FFramesTheTerrain()
         {
-            Assert.That(Editor(), Does.Contain("bool HasFrameBounds() => true;"));
-            Assert.That(Editor(), Does.Contain("Bounds OnGetFrameBounds() => ((GregoryTerrainRenderer)target).WorldBounds();"));
+            // Review finding: "=> true" framed a unit box at the origin for a terrain that had not drawn, and
+            // only the first of several selected terrains.
+            Assert.That(Editor(), Does.Contain("bool HasFrameBounds() => targets.Any(t => Drawn(t as GregoryTerrainRenderer));"));
+            string bounds = Body(Editor(), "OnGetFrameBounds");
+            Assert.That(bounds, Does.Contain("foreach (UnityEngine.Object t in targets)").And.Contain("Encapsulate(b)").And.Contain("WorldBounds()"));
+            Assert.That(Body(Editor(), "Drawn"), Does.Contain("r.isActiveAndEnabled && r.HasDrawn"));
+        }
+
+        /// <summary>
+        /// Review findings: the levels' estimate laid out the serialized Tiles (an edit not yet checked:
+        /// Tiles 6 threw out of the inspector); the range-side field's C# pattern let a fake-null target
+        /// through (UnassignedReferenceException on every repaint of a multi-selection).
+        /// </summary>
+        [Test]
+        public void EstimateAndRangeSideSurviveEditsAndEmptyTargets()
+        {
+            string estimate = File.ReadAllText(PackageRoot.Combine("Runtime/GregoryTerrainRenderer.Estimate.cs"));
+            Assert.That(estimate, Does.Contain("int uploadedTiles = _estimateInputs.TileCountInt();"));
+            Assert.That(estimate, Does.Not.Contain(", tiles, _estimateLevels)"));
+            string side = File.ReadAllText(PackageRoot.Combine("Editor/CameraRangeControllerEditor.cs"));
+            Assert.That(side, Does.Not.Contain("is GregoryTerrainRenderer o"));
+            Assert.That(side, Does.Contain("a != null && a.WorldUnitsPerObjectUnit.Equals(b.WorldUnitsPerObjectUnit)"));
         }
 
         [Test]

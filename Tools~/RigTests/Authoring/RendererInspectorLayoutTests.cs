@@ -207,14 +207,14 @@ namespace GregoryTerrain.Rig.Tests
             Assert.That(editor, Is.Not.Null, "no inspector of CameraRangeController: View distance is drawn in terrain units");
             Assert.That(editor, Does.Contain("RendererInspectorLayout.ViewDistanceField").And.Contain("GregoryTerrainRendererEditor.DrawMetresField("));
             var f = RendererInspectorLayout.ViewDistanceField;
-            Assert.That(f.label, Is.EqualTo("View distance (m)"));
+            Assert.That(f.label, Is.EqualTo("Range side (m)"));
             Match range = Regex.Match(Source("Runtime", "CameraRangeController.cs"), @"Range\(([-0-9.]+)f?,\s*([-0-9.]+)f?\)\]\s*float\s+" + f.field + @"\b");
             Assert.That(range.Success, "the stored field and its [Range]");
             Assert.That((f.min, f.max), Is.EqualTo((float.Parse(range.Groups[1].Value, CultureInfo.InvariantCulture), float.Parse(range.Groups[2].Value, CultureInfo.InvariantCulture))));
             Assert.That(RendererInspectorLayout.ToMetres(TerrainLength.Width, 0.5, 3000, 20000), Is.EqualTo(10000.0));
             Assert.That(RendererInspectorLayout.FromMetres(TerrainLength.Width, 250, 3000, 1000), Is.EqualTo(0.25));
             Assert.That(RendererInspectorLayout.ClampedFromMetres(TerrainLength.Width, 5e6, 600, 1000, f.min, f.max), Is.EqualTo(1f), "wider than the terrain: all of it");
-            Assert.That(RendererInspectorLayout.LengthProblem(f.label, -5), Does.Contain("View distance (m)").And.Contain("-5"));
+            Assert.That(RendererInspectorLayout.LengthProblem(f.label, -5), Does.Contain("Range side (m)").And.Contain("-5"));
         }
 
         /// <summary>

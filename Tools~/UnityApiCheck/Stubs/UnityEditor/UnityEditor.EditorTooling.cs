@@ -42,6 +42,7 @@ namespace UnityEditor
         public void GetSourceTextureWidthAndHeight(out int width, out int height) { width = height = 0; } // SR:TextureImporter.GetSourceTextureWidthAndHeight
         public TextureImporterPlatformSettings GetPlatformTextureSettings(string platform) => null; // SR:TextureImporter.GetPlatformTextureSettings
         public void SetPlatformTextureSettings(TextureImporterPlatformSettings platformSettings) { } // SR:TextureImporter.SetPlatformTextureSettings
+        public TextureImporterPlatformSettings GetDefaultPlatformTextureSettings() => null;   // SR:TextureImporter.GetDefaultPlatformTextureSettings
     }
 
     // 2022.3: Editor/Mono/AssetPipeline/TextureImporterTypes.bindings.cs (a class: the settings are copied in and out).
@@ -67,6 +68,7 @@ namespace UnityEditor
 
     public partial class EditorUserBuildSettings : Object                                    // SR:EditorUserBuildSettings
     {
+        private EditorUserBuildSettings() { }                                                // private in 2022.3
         public static BuildTarget activeBuildTarget => default;                              // SR:EditorUserBuildSettings-activeBuildTarget
     }
 

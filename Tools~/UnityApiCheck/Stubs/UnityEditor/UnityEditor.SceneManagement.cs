@@ -9,6 +9,7 @@ namespace UnityEditor.SceneManagement
     public sealed class EditorSceneManager : SceneManager                                    // SR:SceneManagement.EditorSceneManager
     {
         public static ulong GetSceneCullingMask(Scene scene) => 0;                          // SR:SceneManagement.EditorSceneManager.GetSceneCullingMask
+        public static bool IsPreviewScene(Scene scene) => false;                            // SR:SceneManagement.EditorSceneManager.IsPreviewScene
     }
 
     public static class SceneCullingMasks                                                    // SR:SceneManagement.SceneCullingMasks

@@ -205,6 +205,7 @@ namespace UnityEngine
     public struct Bounds                                                              // SR:Bounds
     {
         public Bounds(Vector3 center, Vector3 size) { }                               // SR:Bounds-ctor
+        public void Encapsulate(Bounds bounds) { }                                    // SR:Bounds.Encapsulate
     }
 
     public class Texture : Object                                                     // SR:Texture
