@@ -145,6 +145,7 @@ namespace GregoryTerrain.Rig
         public static Report Check(string root, Assembly core, string allowListPath)
         {
             var report = new Report();
+            CompareKeywordSets(core, report);
             Dictionary<string, List<Function>> cs = CsFunctionsByFile(core);
             foreach (string folder in Folders)
             {
@@ -164,14 +165,23 @@ namespace GregoryTerrain.Rig
                     report.Pairs.Add(stem);
                     List<Function> hlsl = HlslFunctions(File.ReadAllText(hlslPath), "Shaders/" + stem + ".hlsl");
                     report.HlslFunctions += hlsl.Select(f => f.Name).Distinct().Count();
-                    if (Environment.GetEnvironmentVariable("GT_MIRROR_LIST") == "1")
-                        Console.WriteLine($"{stem}: HLSL {string.Join(" ", hlsl.Select(f => f.Name))} | C# {string.Join(" ", csFunctions.Select(f => f.Name))}");
                     report.CsFunctions += csFunctions.Count;
                     ComparePair(stem, hlsl, csFunctions, report);
                 }
             }
             ApplyAllowList(report, ReadAllowList(allowListPath));
             return report;
+        }
+
+        /// <summary>The keyword table is Core's TerrainKeywords, member for member: a keyword added on one side fails here.</summary>
+        static void CompareKeywordSets(Assembly core, Report report)
+        {
+            Type keywords = core.GetType("GregoryTerrain.TerrainKeywords", throwOnError: true);
+            var members = Enum.GetNames(keywords).Where(n => n != "None").ToList();
+            foreach (string m in members.Where(m => !Keywords.ContainsValue(m)))
+                report.Findings.Add(new Finding { Kind = "keyword", Stem = "Terrain/TerrainVertex", Name = m, Message = $"TerrainKeywords.{m} has no HLSL keyword in MirrorCheck's table" });
+            foreach (var kv in Keywords.Where(kv => !members.Contains(kv.Value)))
+                report.Findings.Add(new Finding { Kind = "keyword", Stem = "Terrain/TerrainVertex", Name = kv.Value, Message = $"{kv.Key} has no TerrainKeywords.{kv.Value}" });
         }
 
         static void ComparePair(string stem, List<Function> hlsl, List<Function> csFunctions, Report report)
@@ -298,7 +308,7 @@ namespace GregoryTerrain.Rig
                             int startLine = LineOf(code, headerStart + m.Groups["ret"].Index);
                             var f = new Function
                             {
-                                Name = m.Groups["name"].Value, Returns = HlslType(m.Groups["ret"].Value, path), ReturnsWritten = m.Groups["ret"].Value,
+                                Name = m.Groups["name"].Value, Returns = HlslType(m.Groups["ret"].Value), ReturnsWritten = m.Groups["ret"].Value,
                                 Where = $"{path}:{startLine}",
                             };
                             f.Parameters.AddRange(HlslParameters(m.Groups["params"].Value, path, f.Name));
@@ -331,13 +341,13 @@ namespace GregoryTerrain.Rig
                 string[] mods = m.Groups["mods"].Value.Split(new[] { ' ', '\t', '\n' }, StringSplitOptions.RemoveEmptyEntries);
                 yield return new Parameter
                 {
-                    Name = m.Groups["name"].Value, Type = HlslType(m.Groups["type"].Value, path), Written = m.Groups["type"].Value, IsArray = m.Groups["len"].Success,
+                    Name = m.Groups["name"].Value, Type = HlslType(m.Groups["type"].Value), Written = m.Groups["type"].Value, IsArray = m.Groups["len"].Success,
                     Modifier = mods.Contains("inout") || (mods.Contains("in") && mods.Contains("out")) ? "inout" : mods.Contains("out") ? "out" : "in",
                 };
             }
         }
 
-        static string HlslType(string t, string path) => HlslToCs.TryGetValue(t, out string cs) ? cs : t;
+        static string HlslType(string t) => HlslToCs.TryGetValue(t, out string cs) ? cs : t;
 
         /// <summary>The text without comments and preprocessor lines (blanked, so offsets keep their line), and the directives by line.</summary>
         static string CodeOnly(string text, out List<(int, string)> directives)
