@@ -32,7 +32,7 @@ namespace GregoryTerrain.Tests
             double worst = 0, worstNearPole = 0;
             foreach (Double3 n in SphereNormals(100_000))
             {
-                Float3 back = NormalEncoding.LambertDecode(NormalEncoding.LambertEncode(ToFloat(n)));
+                Float3 back = NormalEncoding.LambertDecodeNormal(NormalEncoding.LambertEncodeNormal(ToFloat(n)));
                 double error = Math.Sqrt((back.x - n.x) * (back.x - n.x) + (back.y - n.y) * (back.y - n.y) + (back.z - n.z) * (back.z - n.z));
                 if (n.y > -0.999) worst = Math.Max(worst, error);
                 else worstNearPole = Math.Max(worstNearPole, error);
@@ -45,14 +45,14 @@ namespace GregoryTerrain.Tests
         [Test]
         public void UpIsTheCentreAndStraightDownStaysFinite()
         {
-            Assert.That(NormalEncoding.LambertEncode(new Float3(0f, 1f, 0f)), Is.EqualTo(new Float2(0f, 0f)));
-            Assert.That(NormalEncoding.LambertDecode(new Float2(0f, 0f)), Is.EqualTo(new Float3(0f, 1f, 0f)));
-            Float2 down = NormalEncoding.LambertEncode(new Float3(0f, -1f, 0f));
+            Assert.That(NormalEncoding.LambertEncodeNormal(new Float3(0f, 1f, 0f)), Is.EqualTo(new Float2(0f, 0f)));
+            Assert.That(NormalEncoding.LambertDecodeNormal(new Float2(0f, 0f)), Is.EqualTo(new Float3(0f, 1f, 0f)));
+            Float2 down = NormalEncoding.LambertEncodeNormal(new Float3(0f, -1f, 0f));
             Assert.That(down.IsFinite, Is.True, down.ToString());
             // The rim of the disk is straight down, whatever the direction.
-            Float3 rim = NormalEncoding.LambertDecode(new Float2(0.6f * 2f, 0.8f * 2f));
+            Float3 rim = NormalEncoding.LambertDecodeNormal(new Float2(0.6f * 2f, 0.8f * 2f));
             Assert.That(rim.y, Is.EqualTo(-1f));
-            Assert.That(NormalEncoding.LambertDecode(new Float2(2.5f, 0f)).IsFinite, Is.True, "outside the disk (rounding) stays finite");
+            Assert.That(NormalEncoding.LambertDecodeNormal(new Float2(2.5f, 0f)).IsFinite, Is.True, "outside the disk (rounding) stays finite");
         }
 
         /// <summary>Every point of the disk (an interpolated code) decodes to a unit vector.</summary>
@@ -65,7 +65,7 @@ namespace GregoryTerrain.Tests
                 {
                     var e = new Float2(i / 100f, j / 100f);
                     if (e.x * e.x + e.y * e.y > 4f) continue;
-                    Float3 n = NormalEncoding.LambertDecode(e);
+                    Float3 n = NormalEncoding.LambertDecodeNormal(e);
                     worst = Math.Max(worst, Math.Abs(Math.Sqrt(n.x * n.x + n.y * n.y + n.z * n.z) - 1.0));
                 }
             Assert.That(worst, Is.LessThan(1e-6));
@@ -85,8 +85,8 @@ namespace GregoryTerrain.Tests
                 double phi = k * Math.PI / 8;
                 Double3 Polar(double t) => new Double3(Math.Sin(t * Math.PI / 180) * Math.Cos(phi), Math.Cos(t * Math.PI / 180), Math.Sin(t * Math.PI / 180) * Math.Sin(phi));
                 Double3 a = Polar(theta0), b = Polar(theta1);
-                Float2 ea = NormalEncoding.LambertEncode(ToFloat(a)), eb = NormalEncoding.LambertEncode(ToFloat(b));
-                Float3 mid = NormalEncoding.LambertDecode(new Float2(0.5f * (ea.x + eb.x), 0.5f * (ea.y + eb.y)));
+                Float2 ea = NormalEncoding.LambertEncodeNormal(ToFloat(a)), eb = NormalEncoding.LambertEncodeNormal(ToFloat(b));
+                Float3 mid = NormalEncoding.LambertDecodeNormal(new Float2(0.5f * (ea.x + eb.x), 0.5f * (ea.y + eb.y)));
                 Double3 mean = a + b;
                 double len = Math.Sqrt(mean.x * mean.x + mean.y * mean.y + mean.z * mean.z);
                 Assert.That(AngleDegrees(mid, new Double3(mean.x / len, mean.y / len, mean.z / len)), Is.LessThan(boundDegrees), $"phi {phi}");

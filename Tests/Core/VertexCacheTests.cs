@@ -152,7 +152,7 @@ namespace GregoryTerrain.Tests
             Assert.That(r.Length, Is.EqualTo(8));
             // (x, z, y): Unity is Y-up; the float bits as they are.
             Assert.That(new[] { r[0], r[1], r[2] }, Is.EqualTo(new[] { Bits(1f), Bits(-3.5f), Bits(2f) }));
-            Float2 e = NormalEncoding.LambertEncode(new Float3(0f, 0.8f, 0.6f));
+            Float2 e = NormalEncoding.LambertEncodeNormal(new Float3(0f, 0.8f, 0.6f));
             Assert.That(r[3], Is.EqualTo(VertexCache.PackCachedVaryings(new Float3(e.x, e.y, 0.75f))));
             Assert.That(new[] { r[4], r[5], r[6], r[7] }, Is.EqualTo(new[] { Bits(0.125f), 0u, 0u, 0u }));
             Assert.That(VertexCache.Record(v, 0.75f, snow: false).Length, Is.EqualTo(4));
@@ -193,12 +193,12 @@ namespace GregoryTerrain.Tests
                 {
                     double azimuth = 2 * Math.PI * (j + 0.37) / 360;
                     var n = new Float3((float)(Math.Sin(polar) * Math.Cos(azimuth)), (float)Math.Cos(polar), (float)(Math.Sin(polar) * Math.Sin(azimuth)));
-                    Float2 e = NormalEncoding.LambertEncode(n);
+                    Float2 e = NormalEncoding.LambertEncodeNormal(n);
                     float s = (i * 360 + j) / (401f * 360f);
                     Float3 back = VertexCache.UnpackCachedVaryings(VertexCache.PackCachedVaryings(new Float3(e.x, e.y, s)));
                     worstE = Math.Max(worstE, Math.Max(Math.Abs(back.x - e.x), Math.Abs(back.y - e.y)));
                     worstS = Math.Max(worstS, Math.Abs(back.z - s));
-                    Float3 m = NormalEncoding.LambertDecode(new Float2(back.x, back.y));
+                    Float3 m = NormalEncoding.LambertDecodeNormal(new Float2(back.x, back.y));
                     double cos = GMath.dot(m, n) / (GMath.length(m) * GMath.length(n));
                     worstAngle = Math.Max(worstAngle, Math.Acos(Math.Min(1.0, cos)));
                 }

@@ -49,8 +49,8 @@ namespace GregoryTerrain.Rig.Tests
                 double worstCode = 0, worstNormal = 0;
                 for (int i = 0; i < normals.Count; i++)
                 {
-                    Float2 e = NormalEncoding.LambertEncode(normals[i]);
-                    Float3 d = NormalEncoding.LambertDecode(e);
+                    Float2 e = NormalEncoding.LambertEncodeNormal(normals[i]);
+                    Float3 d = NormalEncoding.LambertDecodeNormal(e);
                     // Relative to the code's size: rsqrt may differ by a few ulp between the two.
                     worstCode = Math.Max(worstCode, Math.Max(Math.Abs(gpu[8 * i] - e.x), Math.Abs(gpu[8 * i + 1] - e.y)) / Math.Max(1.0, Math.Sqrt(e.x * e.x + e.y * e.y)));
                     worstNormal = Math.Max(worstNormal, Math.Max(Math.Abs(gpu[8 * i + 4] - d.x), Math.Max(Math.Abs(gpu[8 * i + 5] - d.y), Math.Abs(gpu[8 * i + 6] - d.z))));

@@ -98,7 +98,7 @@ namespace GregoryTerrain.Rig.Tests
                     maxPos = Math.Max(maxPos, ReadbackRun.Distance(gpu, v.PositionOS) / extent);
                     TerrainVertexOutput hashed = TerrainVertex.Evaluate(inputs, tile, tess, TerrainKeywords.Noise);
                     maxHashed = Math.Max(maxHashed, ReadbackRun.Distance(gpu, hashed.PositionOS) / extent);
-                    Float2 e = NormalEncoding.LambertEncode(v.NormalOS);
+                    Float2 e = NormalEncoding.LambertEncodeNormal(v.NormalOS);
                     Float3 unpacked = VertexCache.UnpackCachedVaryings(g.w);
                     maxNormal = Math.Max(maxNormal, Math.Max(Math.Abs(unpacked.x - e.x), Math.Abs(unpacked.y - e.y)));
                     maxWeight = Math.Max(maxWeight, Math.Abs(unpacked.z - TerrainVertex.HeightWeight(v, inputs, Keywords)));

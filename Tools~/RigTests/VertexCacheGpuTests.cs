@@ -151,7 +151,7 @@ namespace GregoryTerrain.Rig.Tests
                     uint[] core = VertexCache.Record(v, TerrainVertex.HeightWeight(v, f.Inputs, Keywords), false);
                     maxPos = Math.Max(maxPos, ReadbackRun.Distance(f.PositionOS(tile, slot), v.PositionOS) / extent);
                     // The encoded normal and the weight before packing (Core's), against the GPU's unpacked.
-                    Float2 e = NormalEncoding.LambertEncode(v.NormalOS);
+                    Float2 e = NormalEncoding.LambertEncodeNormal(v.NormalOS);
                     Float3 gpu = VertexCache.UnpackCachedVaryings(f.Part(tile, slot, 0).w);
                     maxNormal = Math.Max(maxNormal, Math.Max(Math.Abs(gpu.x - e.x), Math.Abs(gpu.y - e.y)));
                     maxWeight = Math.Max(maxWeight, Math.Abs(gpu.z - TerrainVertex.HeightWeight(v, f.Inputs, Keywords)));

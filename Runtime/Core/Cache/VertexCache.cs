@@ -278,7 +278,7 @@ namespace GregoryTerrain
             r[0] = (uint)BitConverter.SingleToInt32Bits(p.x);
             r[1] = (uint)BitConverter.SingleToInt32Bits(p.y);
             r[2] = (uint)BitConverter.SingleToInt32Bits(p.z);
-            Float2 e = NormalEncoding.LambertEncode(v.NormalOS);
+            Float2 e = NormalEncoding.LambertEncodeNormal(v.NormalOS);
             r[3] = PackCachedVaryings(new Float3(e.x, e.y, heightWeight));
             if (snow) r[4] = (uint)BitConverter.SingleToInt32Bits(v.snowDepth);
             return r;

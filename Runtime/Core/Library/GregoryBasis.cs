@@ -130,7 +130,7 @@ namespace GregoryTerrain
         /// a, b: the distances (in u and v) from the pair's corner; ru, rv: R_u, R_v; sigmaU, sigmaV: da/du, db/dv.
         /// </summary>
         static void Pair(int i, int j, float a, float b, float ru, float rv, float sigmaU, float sigmaV,
-            Span<float> bu, Span<float> du, Span<float> bv, Span<float> dv, Span<float> w, Span<float> wu, Span<float> wv)
+            ReadOnlySpan<float> bu, ReadOnlySpan<float> du, ReadOnlySpan<float> bv, ReadOnlySpan<float> dv, Span<float> w, Span<float> wu, Span<float> wv)
         {
             float den = a + b;
             // den == 0 only at the pair's own corner (a = b = 0), where W = 0: any finite t will do.

@@ -113,7 +113,7 @@ namespace GregoryTerrain
         /// d(W t) = dW t + W0 dt and d(W s) = dW s - W0 dt (s = 1 - t).
         /// </summary>
         static Float3 Pair(ReadOnlySpan<Float3> cp, int i, int j, float a0, float b0, float da, float db,
-            Span<float> bu, Span<float> dbu, Span<float> bv, Span<float> dbv)
+            ReadOnlySpan<float> bu, ReadOnlySpan<float> dbu, ReadOnlySpan<float> bv, ReadOnlySpan<float> dbv)
         {
             float a = a0 + da, b = b0 + db;
             float den = a + b, den0 = a0 + b0;

@@ -15,7 +15,7 @@ namespace GregoryTerrain
         /// half and the equal <c>sqrt(2 (1 - n.y)) / |n.xz|</c> in the lower (there the first form
         /// divides a normal's rounding by 1 + n.y). n = -y gives (0, 0).
         /// </summary>
-        public static Float2 LambertEncode(Float3 n)
+        public static Float2 LambertEncodeNormal(Float3 n)
         {
             float k = n.y >= 0f
                 ? rsqrt(0.5f + 0.5f * n.y)
@@ -27,7 +27,7 @@ namespace GregoryTerrain
         /// HLSL <c>LambertDecodeNormal</c>: <c>(e.x sqrt(1 - f/4), 1 - f/2, e.y sqrt(1 - f/4))</c>,
         /// f = |e|^2; unit length for |e| &lt;= 2 (an interpolated e lies inside the disk).
         /// </summary>
-        public static Float3 LambertDecode(Float2 e)
+        public static Float3 LambertDecodeNormal(Float2 e)
         {
             float f = dot(e, e);
             float s = sqrt(System.MathF.Max(1f - 0.25f * f, 0f));

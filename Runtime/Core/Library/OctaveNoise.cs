@@ -111,14 +111,14 @@ namespace GregoryTerrain
             {
                 float fade = GMath.saturate(count - k);
                 if (fade <= 0f) break;
-                float nk = OctaveDifference(q, origin, qMinusOrigin, sum.frequency, GradientNoise.StreamOffset((uint)k), out Float2 gk, tiled);
+                float nk = OctaveNoiseDifference(q, origin, qMinusOrigin, sum.frequency, GradientNoise.StreamOffset((uint)k), out Float2 gk, tiled);
                 sum.Add(fade, nk, gk, settings.alpha);
             }
             return sum.Result(settings.amplitude, out gradient);
         }
 
         /// <summary>One octave of <see cref="Relative"/>: <c>K(f q + offset) - K(f O + offset)</c>, gradient at q (lattice units).</summary>
-        public static float OctaveDifference(TerrainPoint q, TerrainPoint origin, Float2 qMinusOrigin, float frequency, Float2 offset, out Float2 gradient,
+        public static float OctaveNoiseDifference(TerrainPoint q, TerrainPoint origin, Float2 qMinusOrigin, float frequency, Float2 offset, out Float2 gradient,
                                              bool tiled = false)
         {
             GradientNoise.SplitLattice(origin.originHi.x, origin.local.x, frequency, offset.x, out int cx, out float fx);

@@ -121,7 +121,7 @@ namespace GregoryTerrain
         }
 
         /// <summary>The tess coordinate along edge <paramref name="edge"/> (v on u-edges, u on v-edges).</summary>
-        public static float Along(int edge, Float2 tess) => (edge & (EdgeU0 | EdgeU1)) != 0 ? tess.y : tess.x;
+        public static float SeamAlong(int edge, Float2 tess) => (edge & (EdgeU0 | EdgeU1)) != 0 ? tess.y : tess.x;
 
         /// <summary>
         /// The global point of a seam vertex at tess <paramref name="tess"/> of tile (ti, tj) of level
@@ -134,7 +134,7 @@ namespace GregoryTerrain
         public static TerrainPoint SeamCoarsePoint(bool fine, int edge, Float2 tess, float halfFactor, int ti, int tj, Float4 range,
                                                    Float4 coarser, int a, int b, Float4 rangeOrigin, int tiles)
         {
-            float along = Along(edge, tess);
+            float along = SeamAlong(edge, tess);
             if (!fine)
             {
                 int n = (int)Math.Round(along * 2f * halfFactor, MidpointRounding.AwayFromZero);

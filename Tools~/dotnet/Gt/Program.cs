@@ -153,6 +153,7 @@ namespace GregoryTerrain.Rig
             NumericOption size = NumericOption.Int("size", 2, 16384);
 
             Add("generate", "write the generated side of each GPU contract Core declares with [GenerateHlsl] (--root PACKAGE_DIR)", a => ContractGenerator.Run(a.String("root")), "root");
+            Add("mirror", "pair each HLSL file with its Core twin and fail on a function on one side only, a different parameter shape or a keyword switched at runtime (--root PACKAGE_DIR)", a => MirrorCheck.Run(a.String("root")), "root");
             Add("check", "validate a grid file and list geometry warnings (--grid FILE); exit 1 if invalid", CheckCommand.Run, "grid");
             Add("demo-grid", "build the 5x5 sample grid fitted to a procedural heightmap, or with --dem FILE to an SRTM crop (--out FILE)", DemoGridCommand.Run, "out dem",
                 NumericOption.Int("columns", 1, 1024), NumericOption.Int("rows", 1, 1024), NumericOption.Int("samples", 2, 16384),
