@@ -163,7 +163,7 @@ namespace GregoryTerrain
             return _noiseCells;
         }
 
-        /// <summary>The table on the property block: set when the table is new (or the block was cleared), not per frame.</summary>
+        /// <summary>The table on the property block when new or the block was cleared.</summary>
         void UpdateNoiseTableBinding()
         {
             GraphicsBuffer table = EnsureNoiseTable();
@@ -172,7 +172,7 @@ namespace GregoryTerrain
             _sent.noiseCells = table;
         }
 
-        /// <summary>True while the renderer holds the tiled noise's table (the Unity-side tests check it is made only then).</summary>
+        /// <summary>True while the tiled noise's table is held (the Unity-side tests).</summary>
         internal bool HasNoiseTable => _noiseCells != null;
 
         /// <summary>The property ID of <c>_NoiseCells</c> (for the Unity-side tests).</summary>
@@ -201,7 +201,7 @@ namespace GregoryTerrain
             ClearPropertyBlock();
         }
 
-        /// <summary>Grid uploads since this renderer was created (once per asset version; the Unity-side tests check it).</summary>
+        /// <summary>Whole grid uploads (the Unity-side tests).</summary>
         internal int UploadCount { get; private set; }
 
         // ---- a grid edited patch by patch (a sculpt stroke's dabs: PatchGridAsset.ApplyEdit) reaches the
@@ -240,7 +240,7 @@ namespace GregoryTerrain
             return true;
         }
 
-        /// <summary>Uploads of edited patches only, since this renderer was created (the Unity-side tests check a dab makes one, not a whole upload).</summary>
+        /// <summary>Uploads of edited patches only (the Unity-side tests).</summary>
         internal int PatchUploadCount { get; private set; }
 
         /// <summary>The query brought to the grid's version at the cost of the patches edited since; null when only a rebuild can tell.</summary>

@@ -182,7 +182,7 @@ namespace GregoryTerrain
         /// <summary>The sum of every <see cref="ShiftOrigin"/> so far, rounded to float (the renderer keeps it in double).</summary>
         public Vector3 WorldOriginOffset => new Vector3((float)_worldOffset.x, (float)_worldOffset.y, (float)_worldOffset.z);
 
-        /// <summary>Transform, <see cref="TerrainSize"/>, <see cref="HeightScale"/> and the origin offset, in double: for matrices, queries, the collider.</summary>
+        /// <summary>Transform, size, height scale and origin offset, in double: for matrices, queries, the collider.</summary>
         internal TerrainWorldFrame WorldFrame
         {
             get
@@ -192,7 +192,7 @@ namespace GregoryTerrain
             }
         }
 
-        /// <summary>A world point in the terrain's object space (x, height, y; the unit square across), through <see cref="WorldFrame"/>.</summary>
+        /// <summary>A world point in the terrain's object space (x, height, y; the unit square across).</summary>
         internal Double3 WorldToTerrainObject(Vector3 world) => WorldFrame.WorldToObject(new Double3(world.x, world.y, world.z));
 
         /// <summary>An object point (x, height, y) in the world, through <see cref="WorldFrame"/>.</summary>
@@ -202,7 +202,7 @@ namespace GregoryTerrain
             return new Vector3((float)w.x, (float)w.y, (float)w.z);
         }
 
-        /// <summary>World units per object unit along object x, height and y (Terrain Size, Height Scale and the Transform's scale).</summary>
+        /// <summary>World units per object unit along object x, height and y.</summary>
         internal Double3 WorldUnitsPerObjectUnit => WorldFrame.ObjectScale;
 
         // The serialized values can be anything the Inspector or a scene file holds: a bad one draws
@@ -332,9 +332,9 @@ namespace GregoryTerrain
         /// <summary>True while GPU buffers for a grid are held.</summary>
         public bool HasGpuResources => _controlPoints != null;
 
-        // ---- Horizon levels (internals.md): L levels of M x M tiles around each camera, laid out by the planner
+        // ---- Horizon levels (internals.md), laid out by the planner
 
-        /// <summary>Narrowest level, in metres: the level at the feet is the first power-of-two part of the terrain at least this wide.</summary>
+        /// <summary>Narrowest level, in metres: the feet's level is the first power-of-two part at least this wide.</summary>
         internal const double FinestLevelMeters = 16.0;
 
         readonly Vector4[] _levelVectors = new Vector4[LodTiles.MaxLevels];   // SetVectorArray's copy of the plan's levels
@@ -342,7 +342,7 @@ namespace GregoryTerrain
         /// <summary>The property ID of <c>_LodLevels</c> (for the Unity-side tests).</summary>
         internal static int LodLevelsPropertyId => ShaderIds.LodLevels;
 
-        /// <summary>Whether the draw uses the levels: the setting, with the tessellator (the fallback grid draws one range).</summary>
+        /// <summary>The levels drawn: the setting, with the tessellator.</summary>
         bool LevelsOn(bool fallback) => horizonLevels && !fallback;
 
         /// <summary>The finest level's exponent for the terrain's width in world units.</summary>
@@ -356,7 +356,7 @@ namespace GregoryTerrain
         /// <summary>Horizon levels drawn (L), 0 for one range.</summary>
         internal int LevelCount => LevelsOn(DrawsFallback) ? LodLevels.LevelCount(FinestExponent()) : 0;
 
-        /// <summary>The plan's levels around the camera, one float4 each relative to its origin; <c>_LodLevels</c> when the count changed.</summary>
+        /// <summary>The plan's levels, one float4 each; <c>_LodLevels</c> when the count changed.</summary>
         void SendLevels(bool count)
         {
             for (int k = 0; k < _state.levelCount; k++) _levelVectors[k] = ToVector(_state.levelVectors[k]);
@@ -365,8 +365,7 @@ namespace GregoryTerrain
             if (count) SetVector(ShaderIds.LodLevels, new Vector4(_state.levelCount, 0f, 0f, 0f));
         }
 
-        // ---- Vertex evaluation = Compute cache: when it runs, its size check; GT_VERTEX_CACHE is the draw
-        // material's, never the asset's; the pass itself is VertexCachePass
+        // ---- Compute cache: when it runs, its size check; the pass is VertexCachePass
 
         readonly VertexCachePass _cache = new VertexCachePass();
         string _cacheError;                              // the size check's message (not drawn until fixed)
@@ -443,7 +442,7 @@ namespace GregoryTerrain
         Matrix4x4 ObjectToClip(Camera cam) =>
             GL.GetGPUProjectionMatrix(cam.projectionMatrix, false) * cam.worldToCameraMatrix * ToMatrix4x4(_state.objectToWorld);
 
-        /// <summary>The size check (<see cref="VertexCacheBudget.CheckFits"/>), run when M, L, snow or the device's limit changed; logged once per failing setting.</summary>
+        /// <summary>The size check, run when M, L, snow or the device's limit changed; logged once per failing setting.</summary>
         bool CacheFits(int limit, bool snow)
         {
             long deviceLimit = SystemInfo.maxGraphicsBufferSize;
@@ -468,7 +467,7 @@ namespace GregoryTerrain
             _cacheCheckedFor = default;
         }
 
-        /// <summary>Why the compute cache cannot run this frame, or null. The message names the setting or device flag.</summary>
+        /// <summary>Why the compute cache cannot run, naming the setting or device flag, or null.</summary>
         string CacheUnavailableReason(bool fallback, Camera cam, bool snow, SnowSimulator snowSource)
         {
             if (fallback)
@@ -531,7 +530,7 @@ namespace GregoryTerrain
             catch (ArgumentException e) { Debug.LogError($"{name}: {e.Message}; drawing at 1 until fixed", this); }
         }
 
-        /// <summary>GPU buffers, the runtime material copy and the per-draw state: what OnDisable and a domain reload free.</summary>
+        /// <summary>What OnDisable and a domain reload free.</summary>
         internal void ReleaseAll()
         {
             ReleaseGpuResources();
@@ -544,7 +543,7 @@ namespace GregoryTerrain
         // The callbacks each pipeline calls for every camera it renders (Game, Scene view in Edit Mode,
         // reflection probes, several cameras), which cameras draw, and the draw.
 
-        /// <summary>Both registered, each pipeline calls its own: <c>beginCameraRendering</c> (URP, HDRP), <c>Camera.onPreCull</c> (Built-in).</summary>
+        /// <summary>Both registered: <c>beginCameraRendering</c> (URP, HDRP), <c>Camera.onPreCull</c> (Built-in).</summary>
         void RegisterCameraCallbacks()
         {
             RenderPipelineManager.beginCameraRendering += OnBeginCameraRendering;
@@ -604,7 +603,7 @@ namespace GregoryTerrain
                 Graphics.RenderPrimitives(rp, MeshTopology.Quads, 4 * tileCount, 1);
         }
 
-        /// <summary>Never a preview camera; in the editor only one whose scene culling mask shares a bit with ours (<see cref="CameraSceneFilter"/>; Prefab stages).</summary>
+        /// <summary>Never a preview camera; in the editor one whose scene culling mask shares a bit with ours (Prefab stages).</summary>
         bool DrawsIn(Camera cam)
         {
             if (cam.cameraType == CameraType.Preview) return false;
@@ -644,7 +643,7 @@ namespace GregoryTerrain
 #endif
 
 
-        /// <summary>Uploads, the frame's plan sent, the vertex cache, the material: steady, only <c>_Range</c>. False when nothing can be drawn.</summary>
+        /// <summary>Uploads, the plan sent, the vertex cache, the material. False when nothing can be drawn.</summary>
         bool Prepare(Camera cam = null)
         {
             _setLastPrepare.Clear();
@@ -683,7 +682,7 @@ namespace GregoryTerrain
             };
         }
 
-        /// <summary>What the planner reads this frame; with the levels, <paramref name="cam"/>'s ground point.</summary>
+        /// <summary>What the planner reads this frame.</summary>
         FrameInputs FrameInputsFor(Camera cam, bool fallback)
         {
             var f = new FrameInputs
@@ -727,13 +726,13 @@ namespace GregoryTerrain
         void SetMatrix(int id, Matrix4x4 m) { _props.SetMatrix(id, m); _setLastPrepare.Add(id); }
         void SetBuffer(int id, GraphicsBuffer b) { _props.SetBuffer(id, b); _setLastPrepare.Add(id); }
 
-        /// <summary>Property IDs the last preparation set, in order (<c>_Range</c> alone when steady; cache buffers not listed).</summary>
+        /// <summary>Property IDs the last preparation set, in order (cache buffers not listed).</summary>
         internal System.Collections.Generic.IReadOnlyList<int> PropertiesSetLastPrepare => _setLastPrepare;
 
         /// <summary>The property ID of <c>_Range</c> (for the Unity-side tests).</summary>
         internal static int RangePropertyId => ShaderIds.Range;
 
-        /// <summary>What Unity picks the SubShader by, besides the device: material, shader, shader LOD (global, own), pipeline.</summary>
+        /// <summary>What Unity picks the SubShader by, besides the device.</summary>
         readonly struct DrawModeKey
         {
             readonly Material _material;
@@ -754,7 +753,7 @@ namespace GregoryTerrain
                 && _globalLod == o._globalLod && _shaderLod == o._shaderLod && _pipeline == o._pipeline;
         }
 
-        /// <summary>The draw the material's SubShader expects (<see cref="DrawsFallback"/>), read again only when its <see cref="DrawModeKey"/> changes (GetTag allocates).</summary>
+        /// <summary>The SubShader's draw, read again when its <see cref="DrawModeKey"/> changes (GetTag allocates).</summary>
         bool ReadDrawMode()
         {
             var key = new DrawModeKey(material);

@@ -57,12 +57,16 @@ namespace GregoryTerrain.Rig.Tests
             Assert.That(s.parameters.tess.x, Is.EqualTo(16f));
         }
 
-        [TestCase(false, 16)]
-        [TestCase(true, 16 + 16 * LodTiles.MaxLevels)]
-        public void TheSteadyStateSendsOnlyTheRange(bool levels, int bytes)
+        // The README's modes (the Compute cache plans as the domain stage: its pass is VertexCachePass's).
+        [TestCase(false, false, 16)]
+        [TestCase(true, false, 16 + 16 * LodTiles.MaxLevels)]
+        [TestCase(false, true, 16)]
+        public void TheSteadyStateSendsOnlyTheRange(bool levels, bool fallback, int bytes)
         {
             var s = new FrameState();
-            FrameInputs f = Inputs(Wide, Settings(levels: levels));
+            FrameSettings settings = Settings(levels: levels, uniform: fallback ? 16f : 0f);
+            settings.fallback = fallback;
+            FrameInputs f = Inputs(Wide, settings);
             FramePlanner.Plan(s, f);
             for (int frame = 0; frame < 3; frame++)
             {
