@@ -18,8 +18,6 @@ namespace GregoryTerrain
         {
             internal GraphicsBuffer snowDepth, noiseCells;
             internal Vector4 snowMapSize;
-            internal int levelCount;   // _LodLevels.x (0: not sent)
-            internal RangeOrigin origin;   // _RangeOrigin
         }
         BlockMemo _sent;
 
@@ -28,6 +26,7 @@ namespace GregoryTerrain
         {
             _props?.Clear();
             _sent = default;
+            _state.Forget();
         }
 
         static bool s_DeviceChecked;
@@ -95,7 +94,7 @@ namespace GregoryTerrain
             SetBuffer(ShaderIds.ControlPoints, _controlPoints);
             SetBuffer(ShaderIds.Regions, _regions);
             SetBuffer(ShaderIds.GridLines, _gridLines);
-            // _GridSize is part of TerrainParams: PushSettings sets it (settings are dirty below).
+            // _GridSize is part of TerrainParams: the block was cleared above, so the next plan sends it.
             grid.GetHeightRange(out _gridMinZ, out _gridMaxZ);
 
             _uploadedGrid = grid;
@@ -104,10 +103,7 @@ namespace GregoryTerrain
             _uploadedVersion = grid.Version;
             _gridStamp++;
             UploadCount++;
-            _settingsDirty = true;
-            _originDirty = true;
-            _rangeOrigin.Reset();
-            _cameraOrigins.Reset();
+            _state.ResetOrigins();
             return true;
         }
 
@@ -136,7 +132,6 @@ namespace GregoryTerrain
             _fallbackIndices = new GraphicsBuffer(GraphicsBuffer.Target.Index, indices.Length, sizeof(int));
             _fallbackIndices.SetData(indices);
             _fallbackIndexFactor = f;
-            _settingsDirty = true;
             return true;
         }
 
@@ -168,7 +163,7 @@ namespace GregoryTerrain
             return _noiseCells;
         }
 
-        /// <summary>The table on the property block: set when the table is new (or the block was cleared), not per frame.</summary>
+        /// <summary>The table on the property block when new or the block was cleared.</summary>
         void UpdateNoiseTableBinding()
         {
             GraphicsBuffer table = EnsureNoiseTable();
@@ -177,7 +172,7 @@ namespace GregoryTerrain
             _sent.noiseCells = table;
         }
 
-        /// <summary>True while the renderer holds the tiled noise's table (the Unity-side tests check it is made only then).</summary>
+        /// <summary>True while the tiled noise's table is held (the Unity-side tests).</summary>
         internal bool HasNoiseTable => _noiseCells != null;
 
         /// <summary>The property ID of <c>_NoiseCells</c> (for the Unity-side tests).</summary>
@@ -206,7 +201,54 @@ namespace GregoryTerrain
             ClearPropertyBlock();
         }
 
-        /// <summary>Grid uploads since this renderer was created (once per asset version; the Unity-side tests check it).</summary>
+        /// <summary>Whole grid uploads (the Unity-side tests).</summary>
         internal int UploadCount { get; private set; }
+
+        // ---- a grid edited patch by patch (a sculpt stroke's dabs: PatchGridAsset.ApplyEdit) reaches the
+        // buffers and the query at the cost of the patches changed (PatchGridAsset.UpdatedPatchGrid)
+
+        /// <summary>
+        /// Uploads only the patches edited since the grid version in the buffers; false when that
+        /// cannot be told (another grid, a whole-grid change, an undo): then the whole grid is uploaded.
+        /// </summary>
+        bool TryUploadEditedPatches()
+        {
+            if (_uploadedGrid != grid || _controlPoints == null) return false;
+            PatchGrid g = grid.UpdatedPatchGrid(_uploadedPatchGrid, _uploadedVersion, out int[] changed);
+            if (g == null) return false;
+            var records = new GregoryPatchRecord[changed.Length];
+            for (int k = 0; k < changed.Length; k++)
+            {
+                GregoryPatch p = g.Patches[changed[k]];
+                records[k] = GpuLayout.PackPatchRecord(p);
+                // The height range only widens (the draw bounds stay bounds); a whole upload tightens it.
+                foreach (Double3 c in p.Points)
+                {
+                    _gridMinZ = Mathf.Min(_gridMinZ, (float)c.z);
+                    _gridMaxZ = Mathf.Max(_gridMaxZ, (float)c.z);
+                }
+            }
+            for (int start = 0, end; start < changed.Length; start = end)   // one SetData per run of consecutive patches
+            {
+                for (end = start + 1; end < changed.Length && changed[end] == changed[end - 1] + 1; end++) { }
+                _controlPoints.SetData(records, start, changed[start], end - start);
+            }
+            _uploadedPatchGrid = g;
+            _uploadedVersion = grid.Version;
+            _gridStamp++;   // the vertex cache evaluates its tiles again; the settings block holds only the grid's size
+            PatchUploadCount++;
+            return true;
+        }
+
+        /// <summary>Uploads of edited patches only (the Unity-side tests).</summary>
+        internal int PatchUploadCount { get; private set; }
+
+        /// <summary>The query brought to the grid's version at the cost of the patches edited since; null when only a rebuild can tell.</summary>
+        TerrainSurfaceQuery EditedQuery(NoiseSettings? noise, bool tiled)
+        {
+            if (_query == null || _queryAsset != grid || !Nullable.Equals(_queryNoise, noise) || _queryTiledNoise != tiled) return null;
+            PatchGrid g = grid.UpdatedPatchGrid(_query.Grid, _queryVersion, out int[] changed);
+            return g == null ? null : _query.WithPatches(g, changed);
+        }
     }
 }

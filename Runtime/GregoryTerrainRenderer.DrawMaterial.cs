@@ -2,18 +2,11 @@ using UnityEngine;
 
 namespace GregoryTerrain
 {
-    // Per-renderer shader state. The user's material is never written: keywords this renderer
-    // chooses (GT_VERTEX_CACHE from Vertex evaluation, GT_SNOW from an attached Snow Simulator,
-    // GT_LOD from the levels, GT_RANGE_ORIGIN with the range origin sent) go on
-    // a runtime copy of it, and buffers and constants on the renderer's MaterialPropertyBlock.
-    //
-    // Why a copy for keywords and a property block for the rest: a MaterialPropertyBlock (or
-    // RenderParams.matProps) carries values and buffers per draw but no keywords, and a keyword set on
-    // the material is shared by every renderer using it and is saved with the .mat. So each renderer
-    // that needs a keyword state other than the asset's draws its own copy (HideAndDontSave: never
-    // saved, never shown), synced from the asset whenever the asset's content changes (its CRC), and
-    // destroyed on disable and before a domain reload. A renderer whose keywords equal the asset's
-    // draws the asset itself and holds no copy.
+    // Per-renderer shader state: the keywords a renderer chooses (FrameKeywords) go on a runtime copy
+    // of the material, buffers and constants on its MaterialPropertyBlock, which carries no keywords; a
+    // keyword on the asset would be shared by every renderer and saved with the .mat. The copy
+    // (HideAndDontSave) is synced when the asset's content (CRC) changes and destroyed on disable and
+    // before a domain reload; a renderer whose keywords equal the asset's draws the asset.
     public sealed partial class GregoryTerrainRenderer
     {
         Material _drawMaterial;        // the runtime copy, or null while the asset itself is drawn
@@ -53,10 +46,10 @@ namespace GregoryTerrain
         /// (properties, keywords, shader) only when the asset changed, so a steady frame costs one CRC
         /// of the asset (for its first camera; the others reuse that frame's comparison) and sets nothing.
         /// </summary>
-        internal Material UpdateDrawMaterial(bool cache, bool snow, bool levels = false, bool rangeOrigin = false)
+        internal Material UpdateDrawMaterial(FrameKeywords keywords)
         {
             if (material == null) { ReleaseDrawMaterial(); return null; }
-            if (HasKeywords(material, cache, snow, levels, rangeOrigin))
+            if (HasKeywords(material, keywords))
             {
                 ReleaseDrawMaterial();
                 return material;
@@ -67,39 +60,40 @@ namespace GregoryTerrain
             // does not advance between the editor's repaints as it does between player frames.
             int frame = Application.isPlaying ? Time.frameCount : -1;
             if (frame >= 0 && _drawMaterial != null && _drawMaterialSource == material && _drawMaterialCheckedFrame == frame
-                && HasKeywords(_drawMaterial, cache, snow, levels, rangeOrigin))
+                && HasKeywords(_drawMaterial, keywords))
                 return _drawMaterial;
             _drawMaterialCheckedFrame = frame;
-            int crc = material.ComputeCRC(), keywords = AssetKeywordBits();
+            int crc = material.ComputeCRC(), assetKeywords = AssetKeywordBits();
             if (_drawMaterial == null)
             {
                 _drawMaterial = new Material(material) { name = material.name + " (Gregory Terrain runtime copy)", hideFlags = HideFlags.HideAndDontSave };
             }
-            else if (_drawMaterialSource != material || _drawMaterialCrc != crc || _drawMaterialKeywords != keywords)
+            else if (_drawMaterialSource != material || _drawMaterialCrc != crc || _drawMaterialKeywords != assetKeywords)
             {
                 _drawMaterial.shader = material.shader;
                 _drawMaterial.CopyPropertiesFromMaterial(material);
                 _drawMaterial.shaderKeywords = material.shaderKeywords;   // the asset's keywords, whatever the copy above took
             }
-            else if (HasKeywords(_drawMaterial, cache, snow, levels, rangeOrigin))
+            else if (HasKeywords(_drawMaterial, keywords))
                 return _drawMaterial;   // steady state: nothing set
             _drawMaterialSource = material;
             _drawMaterialCrc = crc;
-            _drawMaterialKeywords = keywords;
-            SetKeyword(_drawMaterial, ShaderIds.VertexCacheKeyword, cache);
-            SetKeyword(_drawMaterial, ShaderIds.SnowKeyword, snow);
-            SetKeyword(_drawMaterial, ShaderIds.LevelsKeyword, levels);
-            SetKeyword(_drawMaterial, ShaderIds.RangeOriginKeyword, rangeOrigin);
+            _drawMaterialKeywords = assetKeywords;
+            for (int k = 0; k < RendererKeywords.Length; k++)
+                if ((keywords & (FrameKeywords)(1 << k)) != 0) _drawMaterial.EnableKeyword(RendererKeywords[k]);
+                else _drawMaterial.DisableKeyword(RendererKeywords[k]);
             return _drawMaterial;
         }
 
-        static bool HasKeywords(Material m, bool cache, bool snow, bool levels, bool rangeOrigin) =>
-            m.IsKeywordEnabled(ShaderIds.VertexCacheKeyword) == cache && m.IsKeywordEnabled(ShaderIds.SnowKeyword) == snow
-            && m.IsKeywordEnabled(ShaderIds.LevelsKeyword) == levels && m.IsKeywordEnabled(ShaderIds.RangeOriginKeyword) == rangeOrigin;
+        /// <summary>The keywords a renderer chooses, in <see cref="FrameKeywords"/>' bit order.</summary>
+        static readonly string[] RendererKeywords =
+            { ShaderIds.VertexCacheKeyword, ShaderIds.SnowKeyword, ShaderIds.LevelsKeyword, ShaderIds.RangeOriginKeyword };
 
-        static void SetKeyword(Material copy, string keyword, bool on)
+        static bool HasKeywords(Material m, FrameKeywords keywords)
         {
-            if (on) copy.EnableKeyword(keyword); else copy.DisableKeyword(keyword);
+            for (int k = 0; k < RendererKeywords.Length; k++)
+                if (m.IsKeywordEnabled(RendererKeywords[k]) != ((keywords & (FrameKeywords)(1 << k)) != 0)) return false;
+            return true;
         }
 
         void ReleaseDrawMaterial()
@@ -124,7 +118,6 @@ namespace GregoryTerrain
             if (_snow != null && _snow != simulator)
                 Debug.LogWarning($"{name}: Snow Simulator '{simulator.name}' replaces '{_snow.name}'; one simulator per terrain.", this);
             _snow = simulator;
-            _settingsDirty = true;   // the cache's size and effects change with snow
         }
 
         /// <summary>Called by the attached Snow Simulator when it is disabled or retargeted.</summary>
@@ -132,7 +125,6 @@ namespace GregoryTerrain
         {
             if (_snow != simulator) return;
             _snow = null;
-            _settingsDirty = true;
         }
 
         /// <summary>

@@ -1,8 +1,10 @@
 using System;
+using Unity.Profiling;
 using UnityEngine;
 using UnityEngine.Rendering;
 #if UNITY_EDITOR
 using UnityEditor;
+using UnityEditor.SceneManagement;
 #endif
 
 namespace GregoryTerrain
@@ -12,8 +14,8 @@ namespace GregoryTerrain
     /// (<c>beginCameraRendering</c> in URP/HDRP, <c>Camera.onPreCull</c> in Built-in; Edit Mode too):
     /// M x M tessellated tiles over <see cref="Range"/> or the Horizon levels. Only <c>_Range</c> is sent
     /// every frame (<see cref="PerFrameTrafficBytes"/>), the rest on change; keywords go on a runtime
-    /// copy of the material. Files: this, <c>.Cameras</c>, <c>.DrawMaterial</c>, <c>.Buffers</c>,
-    /// <c>.VertexCache</c>, <c>.Levels</c>, <c>.Estimate</c>, <c>.Queries</c>; internals.md.
+    /// copy of the material. Files: this, <c>.DrawMaterial</c>, <c>.Buffers</c>, <c>.Estimate</c>,
+    /// <c>.Queries</c>; Core's FramePlanner; internals.md.
     /// </summary>
     [ExecuteAlways]
     [DisallowMultipleComponent]
@@ -110,29 +112,17 @@ namespace GregoryTerrain
         PatchGridAsset _uploadedGrid;
         int _uploadedVersion;
         int _fallbackIndexFactor;
-        bool _settingsDirty = true;
-        bool _originDirty = true;
-        string _settingsError;
         PatchGrid _uploadedPatchGrid;
         TerrainRange _range = TerrainRange.full;
-        readonly RangeOriginTracker _rangeOrigin = new RangeOriginTracker();    // the one range's origin
-        readonly CameraRangeOrigins _cameraOrigins = new CameraRangeOrigins();  // with the levels, each camera's
-        RangeOriginTracker _origin = new RangeOriginTracker();                  // the draw's: one of those (OriginTracker)
-        TerrainParams _params;          // the constants last sent (range and origin kept current)
-        Double3 _outputOffset;          // terrain space; what the deep-zoom relative output leaves out
-        // What _outputOffset (a double Gregory evaluation plus the octaves) was computed from, and the
-        // one before: two cameras with origins of their own (Horizon levels) switch without recomputing.
-        OffsetInputs _offsetFor, _offsetForBefore;
-        Double3 _outputOffsetBefore;
+        // What the property block holds and what it was made from (Core's FramePlanner plans each frame).
+        readonly FrameState _state = new FrameState();
+        TerrainParams _params => _state.parameters;
+        string _settingsError => _state.error;
         float _gridMinZ, _gridMaxZ;
         DrawModeKey _drawModeKey;         // what _drawFallback was read for
         bool _drawFallback;
         static bool s_FallbackLogged;
-        Matrix4x4 _objectToWorld = Matrix4x4.identity;   // what PushMatrices sent (deep-zoom offset included)
-        Matrix4x4 _worldToObject = Matrix4x4.identity;   // its inverse, as sent (the cache's world normals)
-        Matrix4x4 _pushedLocalToWorld;                   // the Transform's matrix when PushMatrices ran (offset not added)
         Double3 _worldOffset;                            // ShiftOrigin's sum, in double (floating origin)
-        bool _frameDirty = true;                         // terrainSize, heightScale or the world offset changed
         int _gridStamp;                                  // bumped on every upload: the cache sees new grid buffers
         readonly System.Collections.Generic.List<int> _setLastPrepare = new System.Collections.Generic.List<int>(16);
         SnowSimulator _snow;                             // the enabled simulator attached to this renderer
@@ -163,7 +153,6 @@ namespace GregoryTerrain
             {
                 TerrainWorldFrame.CheckScale(new Double2(value.x, value.y), heightScale);
                 terrainSize = value;
-                _frameDirty = true;
             }
         }
 
@@ -175,7 +164,6 @@ namespace GregoryTerrain
             {
                 TerrainWorldFrame.CheckScale(new Double2(terrainSize.x, terrainSize.y), value);
                 heightScale = value;
-                _frameDirty = true;
             }
         }
 
@@ -189,13 +177,12 @@ namespace GregoryTerrain
             if (!(float.IsFinite(delta.x) && float.IsFinite(delta.y) && float.IsFinite(delta.z)))
                 throw new ArgumentException($"delta {delta} must be finite", nameof(delta));
             _worldOffset += new Double3(delta.x, delta.y, delta.z);
-            _frameDirty = true;
         }
 
         /// <summary>The sum of every <see cref="ShiftOrigin"/> so far, rounded to float (the renderer keeps it in double).</summary>
         public Vector3 WorldOriginOffset => new Vector3((float)_worldOffset.x, (float)_worldOffset.y, (float)_worldOffset.z);
 
-        /// <summary>Transform, <see cref="TerrainSize"/>, <see cref="HeightScale"/> and the origin offset, in double: for matrices, queries, the collider.</summary>
+        /// <summary>Transform, size, height scale and origin offset, in double: for matrices, queries, the collider.</summary>
         internal TerrainWorldFrame WorldFrame
         {
             get
@@ -205,7 +192,7 @@ namespace GregoryTerrain
             }
         }
 
-        /// <summary>A world point in the terrain's object space (x, height, y; the unit square across), through <see cref="WorldFrame"/>.</summary>
+        /// <summary>A world point in the terrain's object space (x, height, y; the unit square across).</summary>
         internal Double3 WorldToTerrainObject(Vector3 world) => WorldFrame.WorldToObject(new Double3(world.x, world.y, world.z));
 
         /// <summary>An object point (x, height, y) in the world, through <see cref="WorldFrame"/>.</summary>
@@ -215,7 +202,7 @@ namespace GregoryTerrain
             return new Vector3((float)w.x, (float)w.y, (float)w.z);
         }
 
-        /// <summary>World units per object unit along object x, height and y (Terrain Size, Height Scale and the Transform's scale).</summary>
+        /// <summary>World units per object unit along object x, height and y.</summary>
         internal Double3 WorldUnitsPerObjectUnit => WorldFrame.ObjectScale;
 
         // The serialized values can be anything the Inspector or a scene file holds: a bad one draws
@@ -225,17 +212,17 @@ namespace GregoryTerrain
         double ValidHeightScale() => heightScale > 0f && float.IsFinite(heightScale) ? heightScale : 1.0;
 
         /// <summary>Tiles per side M.</summary>
-        public int Tiles { get => tiles; set { tiles = Mathf.Clamp(value, 1, 64); _settingsDirty = true; } }
+        public int Tiles { get => tiles; set => tiles = Mathf.Clamp(value, 1, 64); }
 
         /// <summary>
         /// The view: false draws one range (<c>Range</c> or a range controller's, the paper's view);
         /// true draws levels of detail from each camera's feet to the horizon (internals.md, "Levels of
         /// detail"), which needs an even <see cref="Tiles"/> of at least 8 and the tessellator.
         /// </summary>
-        public bool HorizonLevels { get => horizonLevels; set { horizonLevels = value; _settingsDirty = true; } }
+        public bool HorizonLevels { get => horizonLevels; set => horizonLevels = value; }
 
         /// <summary>Uniform factor (0 = adaptive); the Scene view's Uniform Factor Down / Up shortcuts (U / I by default) change it.</summary>
-        public int UniformFactor { get => uniformFactor; set { uniformFactor = Mathf.Clamp(value, 0, 64); _settingsDirty = true; } }
+        public int UniformFactor { get => uniformFactor; set => uniformFactor = Mathf.Clamp(value, 0, 64); }
 
         /// <summary>The drawn range. Throws ArgumentException (field and value) unless finite, non-empty and in the unit square; the old one is kept.</summary>
         public TerrainRange Range
@@ -328,16 +315,13 @@ namespace GregoryTerrain
         {
             get
             {
-                int limit = VertexCache.FactorLimit(new TessellationSettings(tiles, maxFactor, targetPixelError, uniformFactor).ToFloat4());
+                int limit = VertexCache.FactorLimit(Settings(false).tess.ToFloat4());
                 return VertexCacheBudget.TotalBytes(CacheTilesAcross, limit, SnowOn());
             }
         }
 
-        /// <summary>Whether the tiles are anchored to the terrain: the setting, with adaptive factors and a tessellator.</summary>
-        bool AnchorsTiles(bool fallback) => anchorTiles && !fallback && uniformFactor == 0 && !LevelsOn(fallback);
-
-        /// <summary>Tiles per axis the draw makes: M + 1 anchored (<see cref="AnchorsTiles"/>), else M.</summary>
-        int TilesAcross(bool fallback) => tiles + (AnchorsTiles(fallback) ? 1 : 0);
+        /// <summary>Tiles per axis the draw makes: M + 1 anchored, else M.</summary>
+        int TilesAcross(bool fallback) => tiles + (Settings(fallback).AnchorsTiles ? 1 : 0);
 
         /// <summary>Tiles per axis the cache holds (it never runs with the fallback grid).</summary>
         int CacheTilesAcross => TilesAcross(false);
@@ -348,12 +332,177 @@ namespace GregoryTerrain
         /// <summary>True while GPU buffers for a grid are held.</summary>
         public bool HasGpuResources => _controlPoints != null;
 
+        // ---- Horizon levels (internals.md), laid out by the planner
+
+        /// <summary>Narrowest level, in metres: the feet's level is the first power-of-two part at least this wide.</summary>
+        internal const double FinestLevelMeters = 16.0;
+
+        readonly Vector4[] _levelVectors = new Vector4[LodTiles.MaxLevels];   // SetVectorArray's copy of the plan's levels
+
+        /// <summary>The property ID of <c>_LodLevels</c> (for the Unity-side tests).</summary>
+        internal static int LodLevelsPropertyId => ShaderIds.LodLevels;
+
+        /// <summary>The levels drawn: the setting, with the tessellator.</summary>
+        bool LevelsOn(bool fallback) => horizonLevels && !fallback;
+
+        /// <summary>The finest level's exponent for the terrain's width in world units.</summary>
+        int FinestExponent()
+        {
+            double metres = WorldUnitsPerObjectUnit.x;   // world units across the terrain's x
+            if (!(metres > 0.0) || double.IsInfinity(metres)) metres = 1.0;
+            return System.Math.Min(LodLevels.FinestExponent(metres, FinestLevelMeters), LodTiles.MaxLevels - 1);
+        }
+
+        /// <summary>Horizon levels drawn (L), 0 for one range.</summary>
+        internal int LevelCount => LevelsOn(DrawsFallback) ? LodLevels.LevelCount(FinestExponent()) : 0;
+
+        /// <summary>The plan's levels, one float4 each; <c>_LodLevels</c> when the count changed.</summary>
+        void SendLevels(bool count)
+        {
+            for (int k = 0; k < _state.levelCount; k++) _levelVectors[k] = ToVector(_state.levelVectors[k]);
+            _props.SetVectorArray(ShaderIds.Ranges, _levelVectors);
+            _setLastPrepare.Add(ShaderIds.Ranges);
+            if (count) SetVector(ShaderIds.LodLevels, new Vector4(_state.levelCount, 0f, 0f, 0f));
+        }
+
+        // ---- Compute cache: when it runs, its size check; the pass is VertexCachePass
+
+        readonly VertexCachePass _cache = new VertexCachePass();
+        string _cacheError;                              // the size check's message (not drawn until fixed)
+        (int tiles, int limit, bool snow, long deviceLimit) _cacheCheckedFor;   // what _cacheError is the verdict on
+        string _cacheFallbackReason;                     // why Compute cache is not used now, logged once per reason
+        bool _usesCache;
+
+        /// <summary>
+        /// This frame's part of the compute cache, after the constants: whether it runs (else the domain
+        /// stage draws, buffers released), the size check before touching anything, buffers made when M, L
+        /// or snow changed, a dispatch when the pass's inputs changed (<see cref="VertexCachePass.Update"/>).
+        /// False when nothing may be drawn: the size check failed (logged once, <see cref="SettingsError"/>;
+        /// the old buffers and keyword kept), or the cache was never filled (an LOD camera without pixels).
+        /// </summary>
+        bool UpdateVertexCache(bool fallback)
+        {
+            _usesCache = false;
+            // The levels draw through the domain stage (the cache holds one range's tiles).
+            if (vertexEvaluation != VertexEvaluation.ComputeCache || LevelsOn(fallback))
+            {
+                _cacheFallbackReason = null;
+                ClearCacheCheck();
+                StopCache();
+                return true;
+            }
+            bool snow = SnowOn();
+            Camera cam = EffectiveLodCamera;
+            SnowSimulator snowSource = snow ? _snow : null;
+            string reason = CacheUnavailableReason(fallback, cam, snow, snowSource);
+            if (reason != null)
+            {
+                if (reason != _cacheFallbackReason)
+                    Debug.LogWarning($"{name}: Vertex evaluation is Compute cache, but {reason}; evaluating in the domain stage instead.", this);
+                _cacheFallbackReason = reason;
+                ClearCacheCheck();
+                StopCache();
+                return true;
+            }
+            _cacheFallbackReason = null;
+
+            int limit = VertexCache.FactorLimit(_params.tess);
+            if (!CacheFits(limit, snow)) return false;
+
+            _cache.EnsureBuffers(CacheTilesAcross, limit, snow);
+            int w = cam.pixelWidth, h = cam.pixelHeight;
+            if (w > 0 && h > 0)
+            {
+                var inputs = new VertexCachePass.Inputs
+                {
+                    parameters = _params,
+                    objectToClip = ObjectToClip(cam),
+                    worldToObject = ToMatrix4x4(_state.worldToObject),
+                    screenSize = new Vector4(w, h, 1f / w, 1f / h),
+                    controlPoints = _controlPoints, regions = _regions, gridLines = _gridLines,
+                    gridStamp = _gridStamp,
+                    effects = Effects(snow),
+                    noiseCells = _noiseCells,
+                    snowDepth = snowSource != null ? snowSource.DepthBuffer : null,
+                    snowMapSize = snowSource != null ? snowSource.MapSize : default,
+                    snowVersion = snowSource != null ? snowSource.DepthVersion : 0,
+                };
+                if (_cache.Update(cacheShader, inputs)) _cache.BindTo(_props);
+            }
+            if (!_cache.HasContent) return false;   // nothing evaluated yet (a camera without pixels)
+            _usesCache = true;   // the draw material gets GT_VERTEX_CACHE
+            return true;
+        }
+
+        /// <summary>
+        /// The terrain's object -> clip transform as the graphics stages get it (GT_ObjectToClip: the
+        /// platform's depth range and orientation). A render-texture y flip changes no factor (screen
+        /// lengths) nor the culling (symmetric in y): renderIntoTexture = false serves every target.
+        /// </summary>
+        Matrix4x4 ObjectToClip(Camera cam) =>
+            GL.GetGPUProjectionMatrix(cam.projectionMatrix, false) * cam.worldToCameraMatrix * ToMatrix4x4(_state.objectToWorld);
+
+        /// <summary>The size check, run when M, L, snow or the device's limit changed; logged once per failing setting.</summary>
+        bool CacheFits(int limit, bool snow)
+        {
+            long deviceLimit = SystemInfo.maxGraphicsBufferSize;
+            int across = CacheTilesAcross;
+            var key = (across, limit, snow, deviceLimit);
+            if (key.Equals(_cacheCheckedFor)) return _cacheError == null;
+            _cacheCheckedFor = key;
+            _cacheError = null;
+            try { VertexCacheBudget.CheckFits(across, limit, snow, deviceLimit > 0 ? deviceLimit : GpuLayout.MaxBufferBytes); }
+            catch (ArgumentException e)
+            {
+                _cacheError = $"vertexEvaluation = ComputeCache: {e.Message}";
+                Debug.LogError($"{name}: cannot draw with these settings: {_cacheError}", this);
+            }
+            return _cacheError == null;
+        }
+
+        /// <summary>Forgets the size check's verdict (the cache is not used now; checked afresh when it is).</summary>
+        void ClearCacheCheck()
+        {
+            _cacheError = null;
+            _cacheCheckedFor = default;
+        }
+
+        /// <summary>Why the compute cache cannot run, naming the setting or device flag, or null.</summary>
+        string CacheUnavailableReason(bool fallback, Camera cam, bool snow, SnowSimulator snowSource)
+        {
+            if (fallback)
+                return "the material draws its no-tessellator fallback SubShader (there is no domain stage to feed)";
+            if (!SystemInfo.supportsComputeShaders)
+                return "this device has no compute shaders (SystemInfo.supportsComputeShaders = false)";
+            if (cacheShader == null)
+                return "no compute shader is assigned to Cache Shader (Shaders/Cache/TerrainCache.compute)";
+            if (!_cache.FindKernels(cacheShader, out string missing))
+                return $"the Cache Shader '{cacheShader.name}' has no kernel '{missing}'";
+            if (cam == null)
+                return "there is no LOD camera (LOD Camera is empty and no camera is tagged MainCamera)";
+            return null;
+        }
+
+        VertexCachePass.Effects Effects(bool snow)
+        {
+            var e = VertexCachePass.Effects.None;
+            if (material.IsKeywordEnabled(ShaderIds.NoiseKeyword)) e |= VertexCachePass.Effects.Noise;
+            if (material.IsKeywordEnabled(ShaderIds.HeightColorKeyword)) e |= VertexCachePass.Effects.HeightColor;
+            if (_noiseCells != null) e |= VertexCachePass.Effects.NoiseTable;   // made by UpdateNoiseTableBinding while the noise is tiled
+            if (snow) e |= VertexCachePass.Effects.Snow;
+            return e;
+        }
+
+        /// <summary>The domain stage draws: the cache's memory given back (the draw material drops GT_VERTEX_CACHE).</summary>
+        void StopCache()
+        {
+            if (_cache.IsAllocated) _cache.Release();
+        }
+
         // ---- Unity messages -------------------------------------------------------------------------
 
         void OnEnable()
         {
-            _settingsDirty = true;
-            _originDirty = true;
             SyncRangeFromSerialized();
             RegisterCameraCallbacks();
 #if UNITY_EDITOR
@@ -376,14 +525,12 @@ namespace GregoryTerrain
 
         void OnValidate()
         {
-            _settingsDirty = true;
-            _frameDirty = true;
             SyncRangeFromSerialized();
             try { TerrainWorldFrame.CheckScale(new Double2(terrainSize.x, terrainSize.y), heightScale); }
             catch (ArgumentException e) { Debug.LogError($"{name}: {e.Message}; drawing at 1 until fixed", this); }
         }
 
-        /// <summary>GPU buffers, the runtime material copy and the per-draw state: what OnDisable and a domain reload free.</summary>
+        /// <summary>What OnDisable and a domain reload free.</summary>
         internal void ReleaseAll()
         {
             ReleaseGpuResources();
@@ -393,7 +540,110 @@ namespace GregoryTerrain
 
         // ---- drawing --------------------------------------------------------------------------------
 
-        /// <summary>Uploads, constants on change, <c>_Range</c>, the vertex cache, the material: steady state only <c>_Range</c>, no allocation. False when nothing can be drawn.</summary>
+        // The callbacks each pipeline calls for every camera it renders (Game, Scene view in Edit Mode,
+        // reflection probes, several cameras), which cameras draw, and the draw.
+
+        /// <summary>Both registered: <c>beginCameraRendering</c> (URP, HDRP), <c>Camera.onPreCull</c> (Built-in).</summary>
+        void RegisterCameraCallbacks()
+        {
+            RenderPipelineManager.beginCameraRendering += OnBeginCameraRendering;
+            Camera.onPreCull += OnCameraPreCull;
+        }
+
+        void UnregisterCameraCallbacks()
+        {
+            RenderPipelineManager.beginCameraRendering -= OnBeginCameraRendering;
+            Camera.onPreCull -= OnCameraPreCull;
+        }
+
+        void OnBeginCameraRendering(ScriptableRenderContext context, Camera cam) => DrawFor(cam);
+
+        void OnCameraPreCull(Camera cam) => DrawFor(cam);
+
+        /// <summary>
+        /// One draw for one camera: <c>_Range</c> and, on change only, the rest (<see cref="Prepare"/>),
+        /// then one Graphics.RenderPrimitives call that only <paramref name="cam"/> renders.
+        /// </summary>
+        internal void DrawFor(Camera cam)
+        {
+            if (cam == null || !DrawsIn(cam)) return;
+            using (s_DrawMarker.Auto())
+                Draw(cam);
+        }
+
+        // The Profiler's names for the per-camera work (a struct scope: nothing allocated).
+        static readonly ProfilerMarker s_DrawMarker = new ProfilerMarker("GregoryTerrainRenderer.Draw");
+        static readonly ProfilerMarker s_PrepareMarker = new ProfilerMarker("GregoryTerrainRenderer.Prepare");
+        static readonly ProfilerMarker s_VertexCacheMarker = new ProfilerMarker("GregoryTerrainRenderer.VertexCache");
+
+        void Draw(Camera cam)
+        {
+            bool prepared;
+            using (s_PrepareMarker.Auto())
+                prepared = Prepare(cam);
+            if (!prepared) return;
+
+            var rp = new RenderParams(_drawMaterial != null ? _drawMaterial : material)
+            {
+                camera = cam,
+                worldBounds = WorldBounds(),
+                matProps = _props,
+                shadowCastingMode = shadowCasting,
+                receiveShadows = receiveShadows,
+                layer = gameObject.layer,
+            };
+            int across = TileLattice.TilesAcross(_params), tileCount = across * across;
+            if (LevelsOn(_drawFallback)) tileCount = _state.levelCount * tiles * tiles;   // L x M^2 tiles, laid out around cam by Prepare(cam)
+            if (_drawFallback)
+                Graphics.RenderPrimitivesIndexed(rp, MeshTopology.Triangles, _fallbackIndices,
+                    _fallbackIndices.count, 0, tileCount);
+            else
+                // One 4-control-point patch per tile; the vertex stage derives tile and corner from
+                // SV_VertexID, so there is no vertex buffer.
+                Graphics.RenderPrimitives(rp, MeshTopology.Quads, 4 * tileCount, 1);
+        }
+
+        /// <summary>Never a preview camera; in the editor one whose scene culling mask shares a bit with ours (Prefab stages).</summary>
+        bool DrawsIn(Camera cam)
+        {
+            if (cam.cameraType == CameraType.Preview) return false;
+#if UNITY_EDITOR
+            return CameraSceneFilter.Draws(gameObject.sceneCullingMask, SceneCullingMaskOf(cam));
+#else
+            return true;
+#endif
+        }
+
+        /// <summary>
+        /// <paramref name="cam"/>'s object -> clip and pixel size, from which every pass of its draw takes
+        /// the factors; set only when they differ from what the property block holds.
+        /// </summary>
+        void PushTessellationView(Camera cam)
+        {
+            if (cam == null) return;
+            int w = cam.pixelWidth, h = cam.pixelHeight;
+            if (w <= 0 || h <= 0) return;   // renders nothing
+            Matrix4x4 m = ObjectToClip(cam);
+            var size = new Vector4(w, h, 1f / w, 1f / h);
+            if (_props.HasMatrix(ShaderIds.TessObjectToClip) && VertexCachePass.SameMatrix(m, _props.GetMatrix(ShaderIds.TessObjectToClip))
+                && VertexCachePass.SameVector(size, _props.GetVector(ShaderIds.TessScreenSize)))
+                return;
+            SetMatrix(ShaderIds.TessObjectToClip, m);
+            SetVector(ShaderIds.TessScreenSize, size);
+        }
+
+#if UNITY_EDITOR
+        static ulong SceneCullingMaskOf(Camera cam)
+        {
+            bool hasScene = cam.scene.IsValid();
+            return CameraSceneFilter.CameraMask(cam.overrideSceneCullingMask, hasScene,
+                hasScene ? EditorSceneManager.GetSceneCullingMask(cam.scene) : 0UL,
+                cam.cameraType == CameraType.SceneView);
+        }
+#endif
+
+
+        /// <summary>Uploads, the plan sent, the vertex cache, the material. False when nothing can be drawn.</summary>
         bool Prepare(Camera cam = null)
         {
             _setLastPrepare.Clear();
@@ -404,25 +654,10 @@ namespace GregoryTerrain
             bool fallback = ReadDrawMode();
             if (fallback && !EnsureFallbackIndices()) return false;
 
-            _origin = OriginTracker(cam, fallback);
-            if (_origin.Update(OriginRange(cam, fallback)) || !_origin.Origin.Equals(_sent.origin)) _originDirty = true;
-            // The lattice before the output offset: with noise the offset's octave count follows
-            // the lattice's width (TileLattice.LayoutWidth).
-            if (_settingsDirty)
-            {
-                PushSettings(fallback);   // all ten TerrainParams float4, _Range and _RangeOrigin included
-                if (_settingsError == null) UpdateTileLattice(fallback);
-                UpdateOutputOffset();
-                PushMatrices();
-                _settingsDirty = false;
-            }
-            else
-            {
-                PushRange();
-                if (_settingsError == null) UpdateTileLattice(fallback);
-                if (UpdateOutputOffset() || TransformMoved() || _frameDirty) PushMatrices();
-            }
+            FrameChange change = FramePlanner.Plan(_state, FrameInputsFor(cam, fallback));
+            if ((change & FrameChange.Error) != 0) Debug.LogError($"{name}: cannot draw with these settings: {_settingsError}", this);
             if (_settingsError != null) return false;   // logged once; drawn again after the next valid change
+            Send(change);
             PushTessellationView(cam);
             UpdateNoiseTableBinding();   // before the cache: its kernels read the same table
             bool cacheReady;
@@ -430,96 +665,74 @@ namespace GregoryTerrain
                 cacheReady = UpdateVertexCache(fallback);
             if (!cacheReady) return false;
             UpdateSnowBinding();
-            // The range-origin keyword from the very _RangeOrigin just sent (_params): the stages
-            // without it compile no origin code and would draw a set origin as 0.
-            bool levels = LevelsOn(fallback);
-            return UpdateDrawMaterial(_usesCache, SnowOn(), levels, RelativeSurface.NeedsRangeOriginKeyword(_params.rangeOrigin, levels, _usesCache)) != null;
+            return UpdateDrawMaterial(FramePlanner.Keywords(_state, _usesCache, SnowOn())) != null;
         }
 
-        /// <summary>
-        /// The per-frame part: <c>_Range</c> relative to the origin (16 bytes). <c>_RangeOrigin</c>
-        /// goes with it only in a frame where the origin re-snapped.
-        /// </summary>
-        void PushRange()
+        /// <summary>The serialized settings as Core values.</summary>
+        FrameSettings Settings(bool fallback)
         {
-            RangeMapping.EncodeRange(_range, _origin.Origin, out Float4 r, out Float4 o);
-            SetVector(ShaderIds.Range, ToVector(r));
-            _params.range = r;
-            _params.rangeOrigin = o;
-            if (_originDirty)
-            {
-                SetVector(ShaderIds.RangeOrigin, ToVector(o));
-                _sent.origin = _origin.Origin;
-                _params.tileLattice = default;   // in the old origin's coordinates: anchor again
-                _originDirty = false;
-            }
-        }
-
-        /// <summary>
-        /// Anchored tiles (<see cref="TileLattice"/>): <c>_TileLattice</c> kept while the range only pans,
-        /// anchored again on a zoom, re-snap or settings change; 0 when the tiles lie on the range.
-        /// </summary>
-        void UpdateTileLattice(bool fallback)
-        {
-            Float4 lattice = AnchorsTiles(fallback) ? TileLattice.Follow(_params.tileLattice, _params.range, tiles) : default;
-            if (lattice.Equals(_params.tileLattice)) return;   // PushSettings sent 0 with the block
-            _params = _params.WithTileLattice(lattice);
-            SetVector(ShaderIds.TileLattice, ToVector(lattice));
-        }
-
-        /// <summary>
-        /// Builds the TerrainParams block with Core (which validates every input) and sets each float4.
-        /// On invalid settings nothing is set and nothing drawn until a change fixes them.
-        /// </summary>
-        void PushSettings(bool fallback)
-        {
-            var tess = new TessellationSettings(tiles, maxFactor, targetPixelError, fallback ? fallbackGridFactor : uniformFactor);
-            var noise = new NoiseSettings(noiseAmplitude, noiseFrequency, noiseAlpha, noiseBeta, noiseOctaves);
-            var heightColor = new HeightColorSettings(colorGamma, colorNoiseAmplitude, colorNoiseFrequency);
             Color low = colorLow.linear, high = colorHigh.linear;
-            TerrainParams p;
-            try
+            return new FrameSettings
             {
-                p = TerrainParams.Create(_uploadedPatchGrid, _range, _origin.Origin, tess, noise, heightColor,
-                    new Float3(low.r, low.g, low.b), new Float3(high.r, high.g, high.b), noiseVerticesAcross);
-                if (LevelsOn(fallback))
-                {
-                    string levels = LevelsSettingsError();
-                    if (levels != null) throw new ArgumentException(levels, nameof(tiles));
-                    // The continuous octave rule: both sides of a level seam draw the same noise.
-                    p.noiseOctaves = new Float4(p.noiseOctaves.x, p.noiseOctaves.y, LevelSegmentPixels, 0f);
-                }
-            }
-            catch (ArgumentException e)
+                tess = new TessellationSettings(tiles, maxFactor, targetPixelError, fallback ? fallbackGridFactor : uniformFactor),
+                noise = new NoiseSettings(noiseAmplitude, noiseFrequency, noiseAlpha, noiseBeta, noiseOctaves),
+                heightColor = new HeightColorSettings(colorGamma, colorNoiseAmplitude, colorNoiseFrequency),
+                colorLow = new Float3(low.r, low.g, low.b), colorHigh = new Float3(high.r, high.g, high.b),
+                noiseVerticesAcross = noiseVerticesAcross, anchorTiles = anchorTiles, levels = LevelsOn(fallback), fallback = fallback,
+            };
+        }
+
+        /// <summary>What the planner reads this frame.</summary>
+        FrameInputs FrameInputsFor(Camera cam, bool fallback)
+        {
+            var f = new FrameInputs
             {
-                if (_settingsError != e.Message)
-                    Debug.LogError($"{name}: cannot draw with these settings: {e.Message}", this);
-                _settingsError = e.Message;
-                return;
+                grid = _uploadedPatchGrid,
+                settings = Settings(fallback),
+                range = _range,
+                noiseKeywords = NoiseKeywords(),
+                localToWorld = ToFloat4x4(transform.localToWorldMatrix), terrainSize = ValidSize(), heightScale = ValidHeightScale(), worldOffset = _worldOffset,
+                hasCamera = cam != null,
+            };
+            if (cam == null || !f.settings.levels) return f;
+            f.camera = cam.GetInstanceID();   // each camera keeps its own range origin
+            Double3 local = WorldToTerrainObject(cam.transform.position);   // object space: (x, height, y)
+            f.ground = new Double2(local.x, local.z);
+            f.finestExponent = FinestExponent();
+            return f;
+        }
+
+        /// <summary>Sets what the plan changed: steady, <c>_Range</c> alone (and the levels' <c>_Ranges</c>).</summary>
+        void Send(FrameChange change)
+        {
+            TerrainParams p = _params;
+            if ((change & FrameChange.Params) != 0)
+                for (int k = 0; k < TerrainParams.Float4Count; k++) SetVector(ShaderIds.Params[k], ToVector(p[k]));
+            if ((change & (FrameChange.Params | FrameChange.Range)) == FrameChange.Range) SetVector(ShaderIds.Range, ToVector(p.range));
+            if ((change & (FrameChange.Params | FrameChange.RangeOrigin)) == FrameChange.RangeOrigin) SetVector(ShaderIds.RangeOrigin, ToVector(p.rangeOrigin));
+            if ((change & FrameChange.TileLattice) != 0) SetVector(ShaderIds.TileLattice, ToVector(p.tileLattice));
+            if ((change & FrameChange.Matrices) != 0)
+            {
+                SetMatrix(ShaderIds.ObjectToWorld, ToMatrix4x4(_state.objectToWorld));
+                SetMatrix(ShaderIds.WorldToObject, ToMatrix4x4(_state.worldToObject));
             }
-            _settingsError = null;
-            _params = p;
-            for (int k = 0; k < TerrainParams.Float4Count; k++)
-                SetVector(ShaderIds.Params[k], ToVector(p[k]));
-            _originDirty = false;   // and _TileLattice = 0: UpdateTileLattice anchors at the range if it should
-            _sent.origin = _origin.Origin;
+            if ((change & FrameChange.Levels) != 0) SendLevels((change & FrameChange.LevelCount) != 0);
         }
 
         static Vector4 ToVector(Float4 v) => new Vector4(v.x, v.y, v.z, v.w);
 
-        // Every value the renderer puts on its property block goes through these, so the steady
-        // state (only _Range) can be checked: PropertiesSetLastPrepare.
+        // Every value put on the property block goes through these: PropertiesSetLastPrepare.
         void SetVector(int id, Vector4 v) { _props.SetVector(id, v); _setLastPrepare.Add(id); }
         void SetMatrix(int id, Matrix4x4 m) { _props.SetMatrix(id, m); _setLastPrepare.Add(id); }
         void SetBuffer(int id, GraphicsBuffer b) { _props.SetBuffer(id, b); _setLastPrepare.Add(id); }
 
-        /// <summary>Property IDs the last preparation set, in order (<c>_Range</c> alone when steady; cache buffers not listed).</summary>
+        /// <summary>Property IDs the last preparation set, in order (cache buffers not listed).</summary>
         internal System.Collections.Generic.IReadOnlyList<int> PropertiesSetLastPrepare => _setLastPrepare;
 
         /// <summary>The property ID of <c>_Range</c> (for the Unity-side tests).</summary>
         internal static int RangePropertyId => ShaderIds.Range;
 
-        /// <summary>What Unity picks the SubShader by, besides the device: material, shader, shader LOD (global, own), pipeline.</summary>
+        /// <summary>What Unity picks the SubShader by, besides the device.</summary>
         readonly struct DrawModeKey
         {
             readonly Material _material;
@@ -540,72 +753,17 @@ namespace GregoryTerrain
                 && _globalLod == o._globalLod && _shaderLod == o._shaderLod && _pipeline == o._pipeline;
         }
 
-        /// <summary>
-        /// The draw the material's SubShader expects (<see cref="DrawsFallback"/>), read again only when
-        /// its <see cref="DrawModeKey"/> changes (GetTag allocates); a change marks the settings dirty.
-        /// </summary>
+        /// <summary>The SubShader's draw, read again when its <see cref="DrawModeKey"/> changes (GetTag allocates).</summary>
         bool ReadDrawMode()
         {
             var key = new DrawModeKey(material);
             if (key.Matches(_drawModeKey)) return _drawFallback;
             string tag = material.GetTag(DrawTag, false, "");
             bool fallback = tag == "Fallback" || (tag.Length == 0 && UsesFallback);
-            if (fallback != _drawFallback) _settingsDirty = true;
             _drawModeKey = key;
             _drawFallback = fallback;
             return fallback;
         }
-
-        /// <summary>With a range origin the shaders output <c>S(q) - S(O)</c>: S(O) in double (<see cref="TerrainVertex.OutputOffset(PatchGrid, TerrainParams, TerrainKeywords)"/>). True when it changed (matrices resent).</summary>
-        bool UpdateOutputOffset()
-        {
-            TerrainKeywords keywords = NoiseKeywords();
-            var inputs = new OffsetInputs(_uploadedPatchGrid, keywords, _params.rangeOrigin, _params.noise, TerrainVertex.OutputOffsetOctaves(_params));
-            if (inputs.Same(_offsetFor)) return false;
-            Double3 offset = inputs.Same(_offsetForBefore) ? _outputOffsetBefore
-                : _uploadedPatchGrid == null ? Double3.zero : TerrainVertex.OutputOffset(_uploadedPatchGrid, _params, keywords);
-            (_offsetForBefore, _outputOffsetBefore) = (_offsetFor, _outputOffset);
-            _offsetFor = inputs;
-            if (offset.x == _outputOffset.x && offset.y == _outputOffset.y && offset.z == _outputOffset.z) return false;
-            _outputOffset = offset;
-            return true;
-        }
-
-        readonly struct OffsetInputs
-        {
-            readonly PatchGrid _grid;
-            readonly TerrainKeywords _keywords;
-            readonly Float4 _origin, _noise;
-            readonly float _octaves;
-
-            public OffsetInputs(PatchGrid grid, TerrainKeywords keywords, Float4 origin, Float4 noise, float octaves)
-            {
-                _grid = grid; _keywords = keywords; _origin = origin; _noise = noise; _octaves = octaves;
-            }
-
-            // _grid null (nothing computed yet) never matches: an offset needs a grid.
-            public bool Same(in OffsetInputs o) => _grid != null && _grid == o._grid && _keywords == o._keywords
-                && _origin.Equals(o._origin) && _noise.Equals(o._noise) && _octaves.Equals(o._octaves);
-        }
-
-        /// <summary>RenderPrimitives has no object matrix: ours, <c>T(worldOffset) localToWorld S T(t)</c> and inverse in double (<see cref="TerrainWorldFrame.DrawMatrices"/>), sent on change.</summary>
-        void PushMatrices()
-        {
-            _pushedLocalToWorld = transform.localToWorldMatrix;
-            _frameDirty = false;
-            WorldFrame.DrawMatrices(TerrainVertex.TerrainToObject(_outputOffset), out Float4x4 fm, out Float4x4 fw);
-            Matrix4x4 m = ToMatrix4x4(fm), w = ToMatrix4x4(fw);
-            SetMatrix(ShaderIds.ObjectToWorld, m);
-            SetMatrix(ShaderIds.WorldToObject, w);
-            _objectToWorld = m;   // the vertex cache's LOD matrix uses the same object matrix
-            _worldToObject = w;
-        }
-
-        /// <summary>
-        /// Whether the Transform moved since <see cref="PushMatrices"/>: compared, not Transform.hasChanged,
-        /// which another script may clear.
-        /// </summary>
-        bool TransformMoved() => !VertexCachePass.SameMatrix(transform.localToWorldMatrix, _pushedLocalToWorld);
 
         /// <summary>
         /// World bounds of the drawn range: height between the lowest and highest control point,
@@ -618,8 +776,8 @@ namespace GregoryTerrain
             TerrainRange drawn = LevelsOn(_drawFallback) ? TerrainRange.full : _range;   // the levels end with the whole terrain
             Vector3 min = new Vector3((float)drawn.c, _gridMinZ - noise, (float)drawn.d);
             Vector3 max = new Vector3((float)drawn.g, _gridMaxZ + noise + snow, (float)drawn.h);
-            Matrix4x4 m = _objectToWorld;   // size, height scale and offset included (t is added to the object points below)
-            Double3 t = TerrainVertex.TerrainToObject(_outputOffset);
+            Matrix4x4 m = ToMatrix4x4(_state.objectToWorld);   // size, height scale and offset included (t is added to the object points below)
+            Double3 t = TerrainVertex.TerrainToObject(_state.outputOffset);
             min -= new Vector3((float)t.x, (float)t.y, (float)t.z);
             max -= new Vector3((float)t.x, (float)t.y, (float)t.z);
             Vector3 c = m.MultiplyPoint3x4(0.5f * (min + max));

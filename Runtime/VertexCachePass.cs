@@ -240,7 +240,7 @@ namespace GregoryTerrain
         internal static bool SameVector(Vector4 a, Vector4 b) =>
             a.x.Equals(b.x) && a.y.Equals(b.y) && a.z.Equals(b.z) && a.w.Equals(b.w);
 
-        /// <summary>Every entry equal, bit for bit as float.Equals compares (the renderer's Transform check uses it too).</summary>
+        /// <summary>Every entry equal, bit for bit as float.Equals compares.</summary>
         internal static bool SameMatrix(in Matrix4x4 a, in Matrix4x4 b) =>
             a.m00.Equals(b.m00) && a.m01.Equals(b.m01) && a.m02.Equals(b.m02) && a.m03.Equals(b.m03) &&
             a.m10.Equals(b.m10) && a.m11.Equals(b.m11) && a.m12.Equals(b.m12) && a.m13.Equals(b.m13) &&

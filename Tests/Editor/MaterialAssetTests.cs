@@ -25,9 +25,9 @@ namespace GregoryTerrain.Tests
             GregoryTerrainRenderer cached = _t.Renderer("cached"), snowy = _t.Renderer("snowy"), plain = _t.Renderer("plain");
             Camera cam = _t.Camera("cam");
             plain.DrawFor(cam); cached.DrawFor(cam); snowy.DrawFor(cam);
-            Material a = cached.UpdateDrawMaterial(cache: true, snow: false);
-            Material b = snowy.UpdateDrawMaterial(cache: false, snow: true);
-            Material c = plain.UpdateDrawMaterial(cache: false, snow: false);
+            Material a = cached.UpdateDrawMaterial(FrameKeywords.VertexCache);
+            Material b = snowy.UpdateDrawMaterial(FrameKeywords.Snow);
+            Material c = plain.UpdateDrawMaterial(FrameKeywords.None);
 
             Assert.That(_t.Asset.shaderKeywords, Is.EquivalentTo(keywordsBefore), "asset keywords");
             Assert.That(_t.Asset.ComputeCRC(), Is.EqualTo(crcBefore), "asset content (CRC)");
@@ -52,10 +52,10 @@ namespace GregoryTerrain.Tests
         {
             var r = _t.Renderer("cached");
             r.DrawFor(_t.Camera("cam"));
-            Material copy = r.UpdateDrawMaterial(cache: true, snow: false);
+            Material copy = r.UpdateDrawMaterial(FrameKeywords.VertexCache);
             Assert.That(copy.IsKeywordEnabled(ShaderIds.HeightColorKeyword), Is.False);
             _t.Asset.EnableKeyword(ShaderIds.HeightColorKeyword);   // the user edits the asset
-            Assert.That(r.UpdateDrawMaterial(cache: true, snow: false), Is.SameAs(copy), "the same copy, synced");
+            Assert.That(r.UpdateDrawMaterial(FrameKeywords.VertexCache), Is.SameAs(copy), "the same copy, synced");
             Assert.That(copy.IsKeywordEnabled(ShaderIds.HeightColorKeyword), Is.True, "the asset's change reached the copy");
             Assert.That(copy.IsKeywordEnabled(ShaderIds.VertexCacheKeyword), Is.True, "the renderer's keyword survives the sync");
             Assert.That(_t.Asset.IsKeywordEnabled(ShaderIds.VertexCacheKeyword), Is.False);

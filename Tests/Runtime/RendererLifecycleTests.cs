@@ -118,7 +118,7 @@ namespace GregoryTerrain.Tests
         {
             var r = _t.Renderer("terrain");
             r.DrawFor(_t.Camera("a"));
-            Material copy = r.UpdateDrawMaterial(cache: true, snow: false);
+            Material copy = r.UpdateDrawMaterial(FrameKeywords.VertexCache);
             Assert.That(copy, Is.Not.SameAs(_t.Asset), "a keyword the asset lacks is drawn from a copy");
             r.enabled = false;
             Assert.That(r.HasGpuResources, Is.False, "GPU buffers after OnDisable");
@@ -164,7 +164,7 @@ namespace GregoryTerrain.Tests
             // (OnDisable does not run before a reload); the rig checks that registration statically.
             var r = _t.Renderer("terrain");
             r.DrawFor(_t.Camera("a"));
-            Material copy = r.UpdateDrawMaterial(cache: false, snow: true);
+            Material copy = r.UpdateDrawMaterial(FrameKeywords.Snow);
             r.ReleaseAll();
             Assert.That(r.HasGpuResources, Is.False);
             Assert.That(r.DrawMaterial, Is.SameAs(_t.Asset));

@@ -38,7 +38,7 @@ namespace GregoryTerrain.Rig.Tests
         [Test]
         public void TheFinestLevelFollowsTerrainSize()
         {
-            string levels = Read("Runtime", "GregoryTerrainRenderer.Levels.cs");
+            string levels = Read("Runtime", "GregoryTerrainRenderer.cs");
             string frame = Read("Runtime", "Core", "Terrain", "TerrainWorldFrame.cs");
             Assert.That(levels, Does.Contain("double metres = WorldUnitsPerObjectUnit.x;"), "the levels' width in metres");
             Assert.That(frame, Does.Match(@"ObjectScale => new Double3\(terrainSize\.x \* Length\(localToWorld\.c0\)"),

@@ -156,35 +156,68 @@ namespace GregoryTerrain.Rig.Tests
 
         // ---- 4. With the levels, each camera keeps its own range origin --------------------------
 
+        static string PlannerCode() => StripComments(File.ReadAllText(PackageRoot.Combine("Runtime", "Core", "Terrain", "FramePlanner.cs")));
+
         /// <summary>
-        /// Why Prepare would re-snap the range origin per camera with Horizon levels (the origin
-        /// follows each camera's finest level): it must take the tracker of the camera drawn
-        /// (CameraRangeOrigins, by instance ID) rather than update one tracker for every camera.
+        /// Why the plan would re-snap the range origin per camera with Horizon levels (the origin
+        /// follows each camera's finest level): Core's <c>Plan</c> must take the tracker of the camera
+        /// drawn (CameraRangeOrigins) with the levels and the one range's without, and the renderer
+        /// must name the camera (its instance ID). FramePlannerTests checks the rule itself.
         /// </summary>
-        internal static List<string> SharedOriginProblems(string code)
+        internal static List<string> SharedOriginProblems(string renderer, string planner)
         {
-            Match pick = Regex.Match(Body(code, "Prepare") ?? "", @"_origin\s*=\s*(\w+)\s*\(");
-            if (!pick.Success) return new List<string> { "Prepare updates one origin tracker for every camera" };
-            Match chooser = Regex.Match(code, $@"RangeOriginTracker\s+{pick.Groups[1].Value}\s*\([^)]*\)\s*(=>[^;]*;|\{{)");
-            string body = chooser.Groups[1].Value == "{" ? Body(code, pick.Groups[1].Value) : chooser.Groups[1].Value;
+            string plan = Body(planner, "Plan") ?? "";
             var p = new List<string>();
-            if (!Regex.IsMatch(body ?? "", @"\.For\s*\(\s*cam\.GetInstanceID\(\)\s*\)")) p.Add($"{pick.Groups[1].Value} takes no tracker per camera");
-            if (!(body ?? "").Contains("LevelsOn(")) p.Add($"{pick.Groups[1].Value} does not keep the one range's tracker without the levels");
+            if (!Regex.IsMatch(plan, @"cameraOrigins\.For\s*\(\s*f\.camera\s*\)")) p.Add("Plan takes no tracker per camera");
+            if (!Regex.IsMatch(plan, @"levels\s*\?[^;]*cameraOrigins[^;]*:\s*s\.rangeOrigin\s*;")) p.Add("Plan does not keep the one range's tracker without the levels");
+            if (!Regex.IsMatch(renderer, @"\bcamera\s*=\s*cam\.GetInstanceID\(\)")) p.Add("the renderer does not name the camera drawn");
             return p;
         }
 
         [Test]
         public void WithTheLevelsEachCameraKeepsItsOwnOrigin()
         {
-            Assert.That(SharedOriginProblems(RendererCode()), Is.Empty);
+            Assert.That(SharedOriginProblems(RendererCode(), PlannerCode()), Is.Empty);
         }
 
         [Test]
         public void OriginCheckRejectsOneTrackerForEveryCamera()
         {
-            string old = "readonly RangeOriginTracker _origin = new RangeOriginTracker();\n" +
-                         "bool Prepare(Camera cam = null) { if (_origin.Update(OriginRange(cam, fallback))) _originDirty = true; }";
-            Assert.That(SharedOriginProblems(old), Is.EqualTo(new[] { "Prepare updates one origin tracker for every camera" }));
+            string old = "public static FrameChange Plan(FrameState s, in FrameInputs f) { RangeOriginTracker tracker = s.rangeOrigin; bool moved = tracker.Update(f.range); }";
+            Assert.That(SharedOriginProblems("FrameInputs FrameInputsFor(Camera cam) { return new FrameInputs { range = _range }; }", old), Is.EqualTo(new[]
+            {
+                "Plan takes no tracker per camera", "Plan does not keep the one range's tracker without the levels", "the renderer does not name the camera drawn",
+            }));
+        }
+
+        // ---- 5. The per-frame rules are Core's, not the renderer's memos ---------------------------
+
+        /// <summary>
+        /// Ways the renderer would keep per-frame rules of its own again: a dirty flag (the rules
+        /// were 11 writes of <c>_settingsDirty = true</c>), or a Prepare that does not send
+        /// <see cref="FramePlanner"/>'s plan (FramePlannerTests checks the rules in dotnet test).
+        /// </summary>
+        internal static List<string> PerFrameRulesOutsideThePlanner(string code)
+        {
+            var p = Regex.Matches(code, @"\bbool\s+(_\w*[Dd]irty)\b").Select(m => $"dirty flag {m.Groups[1].Value}").Distinct().ToList();
+            if (!Regex.IsMatch(Body(code, "Prepare") ?? "", @"FramePlanner\.Plan\s*\(\s*_\w+\s*,")) p.Add("Prepare does not plan the frame with FramePlanner.Plan");
+            return p;
+        }
+
+        [Test]
+        public void TheRendererSendsThePlannersPlanAndKeepsNoDirtyFlags()
+        {
+            Assert.That(PerFrameRulesOutsideThePlanner(RendererCode()), Is.Empty);
+        }
+
+        [Test]
+        public void PlannerCheckRejectsTheDirtyFlags()
+        {
+            string old = "bool _settingsDirty = true;\nbool _frameDirty = true;\nbool Prepare(Camera cam = null) { if (_settingsDirty) { PushSettings(fallback); _settingsDirty = false; } else PushRange(); }";
+            Assert.That(PerFrameRulesOutsideThePlanner(old), Is.EqualTo(new[]
+            {
+                "dirty flag _settingsDirty", "dirty flag _frameDirty", "Prepare does not plan the frame with FramePlanner.Plan",
+            }));
         }
 
         // ---- 7. No structured buffer on a device that cannot make one -----------------------------

@@ -42,18 +42,19 @@ namespace GregoryTerrain
         /// </summary>
         public void Validate(string name = "range")
         {
-            CheckUnit(name + ".c", c);
-            CheckUnit(name + ".d", d);
-            CheckUnit(name + ".g", g);
-            CheckUnit(name + ".h", h);
+            // Field names are formed only to throw: the renderer validates its range every frame.
+            CheckUnit(name, ".c", c);
+            CheckUnit(name, ".d", d);
+            CheckUnit(name, ".g", g);
+            CheckUnit(name, ".h", h);
             if (!(g > c))
                 throw new ArgumentException(FormattableString.Invariant(
                     $"{name}.g ({g:R}) must be greater than {name}.c ({c:R})"), name);
             if (!(h > d))
                 throw new ArgumentException(FormattableString.Invariant(
                     $"{name}.h ({h:R}) must be greater than {name}.d ({d:R})"), name);
-            CheckSize(name + " width (g - c)", g - c);
-            CheckSize(name + " height (h - d)", h - d);
+            if (!(g - c >= MinSize)) CheckSize(name + " width (g - c)", g - c);
+            if (!(h - d >= MinSize)) CheckSize(name + " height (h - d)", h - d);
         }
 
         /// <summary>Throws ArgumentException naming <paramref name="field"/> unless <paramref name="size"/> is at least <see cref="MinSize"/>.</summary>
@@ -64,8 +65,10 @@ namespace GregoryTerrain
                     $"{field} = {size:R} is narrower than the smallest range drawn, {MinSize:R} (float keeps ~1e-13 of a local offset)"), field);
         }
 
-        static void CheckUnit(string field, double value)
+        static void CheckUnit(string name, string part, double value)
         {
+            if (GMath.isfinite(value) && value >= 0.0 && value <= 1.0) return;
+            string field = name + part;
             if (!GMath.isfinite(value))
                 throw new ArgumentException(FormattableString.Invariant($"{field} ({value:R}) must be finite"), field);
             if (value < 0.0 || value > 1.0)
