@@ -38,7 +38,7 @@ namespace GregoryTerrain
                 if (uploadedTiles % 2 != 0 || uploadedTiles < LodLevels.MinTiles) return null;
                 int count = LodLevels.Layout(new Double2(local.x, local.z), FinestExponent(), uploadedTiles, _estimateLevels);
                 ReadOnlySpan<TerrainRange> levels = new ReadOnlySpan<TerrainRange>(_estimateLevels, 0, count);
-                return TerrainTriangleEstimate.InLevels(_estimateInputs, levels, _origin.Origin, m, screen, NoiseKeywords(), maxTiles);
+                return TerrainTriangleEstimate.InLevels(_estimateInputs, levels, _state.origin, m, screen, NoiseKeywords(), maxTiles);
             }
             var partitioning = _usesCache ? TessellationPartitioning.Integer : TessellationPartitioning.FractionalOdd;
             return TerrainTriangleEstimate.InView(_estimateInputs, m, screen, NoiseKeywords(), partitioning, maxTiles);

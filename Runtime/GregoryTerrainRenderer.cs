@@ -642,7 +642,6 @@ namespace GregoryTerrain
         }
 #endif
 
-
         /// <summary>Uploads, the plan sent, the vertex cache, the material. False when nothing can be drawn.</summary>
         bool Prepare(Camera cam = null)
         {
