@@ -177,6 +177,24 @@ namespace GregoryTerrain.Rig.Tests
             Assert.That(FramePlanner.Plan(s, a), Is.EqualTo(FrameChange.Params | FrameChange.Matrices | FrameChange.Levels | FrameChange.LevelCount), "everything again");
         }
 
+        /// <summary>
+        /// Review finding: a Transform of scale 0 threw after the plan had marked the block as sent, so once
+        /// the scale was fixed the terrain drew without its TerrainParams until a setting changed.
+        /// </summary>
+        [Test]
+        public void AFrameWithoutMatricesIsToldOnceAndTheNextGoodFrameSendsEverything()
+        {
+            var s = new FrameState();
+            FrameInputs flat = Inputs(Wide, Settings());
+            flat.localToWorld = new Float4x4(Float4x4.identity.c0, new Float4(0f, 0f, 0f, 0f), Float4x4.identity.c2, Float4x4.identity.c3);
+            Assert.That(FramePlanner.Plan(s, flat), Is.EqualTo(FrameChange.Error));
+            Assert.That(s.error, Does.Contain("invertible"));
+            Assert.That(FramePlanner.Plan(s, flat), Is.EqualTo(FrameChange.None), "told once");
+            Assert.That(FramePlanner.Plan(s, Inputs(Wide, Settings())), Is.EqualTo(FrameChange.Params | FrameChange.Matrices | FrameChange.TileLattice));
+            Assert.That(s.error, Is.Null);
+            Assert.That(FramePlanner.Plan(s, Inputs(Wide, Settings())), Is.EqualTo(FrameChange.Range));
+        }
+
         [Test]
         public void BadSettingsAreToldOnceAndNothingIsSentUntilFixed()
         {

@@ -94,6 +94,7 @@ namespace GregoryTerrain
             planned = false;
             sentOrigin = default;
             sentLevelCount = 0;
+            offsetFor = offsetForBefore = default;   // nor hold the grids' CPU copies of a disabled renderer
         }
 
         /// <summary>A new grid: the origins snap afresh.</summary>
@@ -135,7 +136,7 @@ namespace GregoryTerrain
             bool levels = f.settings.levels && f.hasCamera;
             RangeOriginTracker tracker = levels ? s.cameraOrigins.For(f.camera) : s.rangeOrigin;
             TerrainRange originRange = f.range;   // with the levels the finest: the feet output S(q) - S(O) precisely
-            if (levels && LevelsError(f.settings) == null)
+            if (levels && LevelsValid(f.settings))
             {
                 s.levelCount = LodLevels.Layout(f.ground, f.finestExponent, f.settings.tess.tiles, s.levelRanges);
                 originRange = s.levelRanges[0];
@@ -150,7 +151,6 @@ namespace GregoryTerrain
                 s.settings = f.settings;
                 string error = TryCreateParams(f, s.origin, out TerrainParams p);
                 if (error != null) return SetError(s, error);
-                s.error = null;
                 s.parameters = p;
                 s.sentOrigin = s.origin;
                 c |= FrameChange.Params | FrameChange.Matrices;
@@ -162,11 +162,25 @@ namespace GregoryTerrain
             if (UpdateOutputOffset(s, f.grid, f.noiseKeywords) | FrameMoved(s, f)) c |= FrameChange.Matrices;
             if ((c & FrameChange.Matrices) != 0)
             {
-                var frame = new TerrainWorldFrame(f.localToWorld, f.terrainSize, f.heightScale, f.worldOffset);
-                frame.DrawMatrices(TerrainVertex.TerrainToObject(s.outputOffset), out s.objectToWorld, out s.worldToObject);
+                string frameError = TryDrawMatrices(s, f);
+                // Nothing of this plan reaches the block: the next drawable frame sends all of it.
+                if (frameError != null) { s.Forget(); return SetError(s, frameError); }
             }
+            s.error = null;
             if (levels) c |= EncodeLevels(s);
             return c;
+        }
+
+        /// <summary>The draw's matrices, or why the Transform cannot give them (a scale of 0: not invertible).</summary>
+        static string TryDrawMatrices(FrameState s, in FrameInputs f)
+        {
+            try
+            {
+                var frame = new TerrainWorldFrame(f.localToWorld, f.terrainSize, f.heightScale, f.worldOffset);
+                frame.DrawMatrices(TerrainVertex.TerrainToObject(s.outputOffset), out s.objectToWorld, out s.worldToObject);
+                return null;
+            }
+            catch (ArgumentException e) { return e.Message; }
         }
 
         /// <summary>The draw's keywords: the range-origin variant only where its stages read the origin.</summary>
@@ -174,13 +188,13 @@ namespace GregoryTerrain
             (cache ? FrameKeywords.VertexCache : 0) | (snow ? FrameKeywords.Snow : 0) | (s.settings.levels ? FrameKeywords.Levels : 0)
             | (RelativeSurface.NeedsRangeOriginKeyword(s.parameters.rangeOrigin, s.settings.levels, cache) ? FrameKeywords.RangeOrigin : 0);
 
-        /// <summary>The levels' settings check: M even and at least <see cref="LodLevels.MinTiles"/>. Null when drawable.</summary>
-        public static string LevelsError(in FrameSettings settings)
-        {
-            int tiles = settings.tess.tiles;
-            if (!settings.levels || (tiles % 2 == 0 && tiles >= LodLevels.MinTiles)) return null;
-            return $"tiles ({tiles}) must be even and at least {LodLevels.MinTiles} with Horizon Levels (a finer level covers M / 2 tiles of the coarser one)";
-        }
+        /// <summary>The levels' settings check: M even and at least <see cref="LodLevels.MinTiles"/> (checked every frame: no message made).</summary>
+        public static bool LevelsValid(in FrameSettings settings) =>
+            !settings.levels || (settings.tess.tiles % 2 == 0 && settings.tess.tiles >= LodLevels.MinTiles);
+
+        /// <summary>Why the levels cannot draw these settings, or null.</summary>
+        public static string LevelsError(in FrameSettings settings) => LevelsValid(settings) ? null
+            : $"tiles ({settings.tess.tiles}) must be even and at least {LodLevels.MinTiles} with Horizon Levels (a finer level covers M / 2 tiles of the coarser one)";
 
         /// <summary>Core's TerrainParams (every input validated), or the message naming the field and value.</summary>
         static string TryCreateParams(in FrameInputs f, RangeOrigin origin, out TerrainParams p)
@@ -190,8 +204,7 @@ namespace GregoryTerrain
             try
             {
                 p = TerrainParams.Create(f.grid, f.range, origin, st.tess, st.noise, st.heightColor, st.colorLow, st.colorHigh, st.noiseVerticesAcross);
-                string levels = LevelsError(st);
-                if (levels != null) throw new ArgumentException(levels, "tiles");
+                if (!LevelsValid(st)) throw new ArgumentException(LevelsError(st), "tiles");
                 // The continuous octave rule: both sides of a level seam draw the same noise.
                 if (st.levels) p.noiseOctaves = new Float4(p.noiseOctaves.x, p.noiseOctaves.y, LevelSegmentPixels, 0f);
                 return null;
