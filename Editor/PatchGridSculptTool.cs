@@ -23,13 +23,10 @@ namespace GregoryTerrain.EditorTools
     }
 
     /// <summary>
-    /// The Scene-view sculpt tool of a Gregory terrain (the Tools overlay shows it when a terrain is
-    /// selected), as Unity's Terrain tools work: the brush disc follows the surface under the mouse
-    /// (the renderer's Raycast), a left drag paints a stroke of dabs (Core's PatchBrush: heights of
-    /// the control points under the brush, G1 kept), and each stroke is one undo step that records
-    /// only the blocks it changed. SelectPatches drags a patch rectangle, drawn on the surface, which
-    /// confines the brush and is what the Patch Grid window's "Refit selection" refits. Settings
-    /// live at the foot of the renderer's inspector, drawn whenever one renderer is selected.
+    /// The Scene-view sculpt tool of a Gregory terrain, as Unity's Terrain tools work: the brush disc
+    /// follows the surface under the mouse, a left drag paints a stroke of dabs (Core's PatchBrush, G1
+    /// kept), and each stroke is one undo step. SelectPatches drags a patch rectangle that confines the
+    /// brush and that "Refit selection" refits. Settings live in the renderer's inspector.
     /// </summary>
     [EditorTool("Sculpt Gregory Terrain", typeof(GregoryTerrainRenderer))]
     internal sealed class PatchGridSculptTool : EditorTool
@@ -58,9 +55,8 @@ namespace GregoryTerrain.EditorTools
         const string StrokeName = "Sculpt Gregory terrain";
         int _undoGroup = -1;
         bool _stroking;
-        // The grid as Core sees it: dabs apply to it and to the asset. Kept between strokes while the
-        // asset's version is the one it matches, so a stroke does not start with a whole-grid copy. Its
-        // patches are its own (it is written in place), never shared with the renderer's grids.
+        // The grid as Core sees it, kept between strokes while the asset's version matches (no whole-grid
+        // copy a stroke); its patches are its own, never shared with the renderer's grids.
         PatchGrid _strokeGrid;
         PatchGridAsset _strokeAsset;
         int _strokeVersion;
@@ -128,8 +124,7 @@ namespace GregoryTerrain.EditorTools
 
         /// <summary>
         /// Replaces the grid with <paramref name="side"/> x <paramref name="side"/> patches fitted to its
-        /// surface (Core's ResampleAuthoring), with a progress bar and Cancel; one undo step; a cancel or
-        /// an error leaves the grid as it was. The error against the old surface is reported in metres.
+        /// surface, with a progress bar and Cancel; one undo step; a cancel or an error leaves the grid as it was.
         /// </summary>
         static void Resample(GregoryTerrainRenderer renderer, int side)
         {
@@ -173,8 +168,7 @@ namespace GregoryTerrain.EditorTools
         {
             Event e = Event.current;
             int id = GUIUtility.GetControlID(ControlHint, FocusType.Passive);
-            // The type as this control sees it: while the tool holds the hot control, Unity sends it the
-            // drag and the release even when the mouse is outside the Scene view.
+            // While the tool holds the hot control, Unity sends it the drag and release outside the Scene view too.
             EventType type = e.GetTypeForControl(id);
             if (type == EventType.MouseUp && GUIUtility.hotControl == id && e.button == 0)
             {
@@ -307,7 +301,7 @@ namespace GregoryTerrain.EditorTools
             return (float)Math.Sqrt(dx * dx + dy * dy + dz * dz);
         }
 
-        /// <summary>The selection's outline along the boundary control points of its border patches (they lie on the surface's border curves' polygons).</summary>
+        /// <summary>The selection's outline along the boundary control points of its border patches.</summary>
         static void DrawSelection(GregoryTerrainRenderer renderer, PatchGridAsset grid)
         {
             if (Event.current.type != EventType.Repaint || !(SelectionOf(grid) is PatchRect s)) return;

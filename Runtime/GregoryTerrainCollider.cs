@@ -7,15 +7,10 @@ namespace GregoryTerrain
 {
     /// <summary>
     /// Keeps a physics surface of the terrain around a target (a player, a vehicle): a MeshCollider patch
-    /// of N x N samples of the full-detail surface (the renderer's CPU queries), re-centred when the target
-    /// leaves the patch's middle. A mesh rather than a TerrainCollider, which needs a TerrainData heightmap
-    /// resampled on the main thread: a patch comes from samples anywhere in a 1,000 km terrain and is
-    /// cooked off the main thread. Per rebuild: samples on a worker (Core's thread-safe
-    /// <see cref="TerrainSurfaceQuery"/>), SetVertices into a spare Mesh on the main thread,
-    /// Physics.BakeMesh on a worker, then on the main thread the move to the patch, the sharedMesh swap
-    /// and Physics.SyncTransforms; the collider in use is never touched meanwhile. Put it on an empty
-    /// GameObject of its own (scale 1): it moves its Transform. The samples lie on a lattice fixed in the
-    /// terrain, so the surface under the target does not change when the patch moves (<see cref="ColliderPatch"/>).
+    /// of N x N samples of the full-detail surface, re-centred when the target leaves the patch's middle,
+    /// sampled and cooked off the main thread; the collider in use is never touched meanwhile
+    /// (internals.md, "Terrain collider"). Put it on an empty GameObject of its own (scale 1): it moves
+    /// its Transform. The samples lie on a lattice fixed in the terrain (<see cref="ColliderPatch"/>).
     /// </summary>
     [DisallowMultipleComponent]
     [RequireComponent(typeof(MeshCollider))]
@@ -99,9 +94,8 @@ namespace GregoryTerrain
 
         void OnDisable()
         {
-            // Never wait here (a sampling pass is ~10 ms of worker time). A sampling task is left to
-            // finish into arrays no one reads again; a cook still reads the spare mesh natively, so it
-            // is remembered and waited for only before that mesh is written or destroyed.
+            // Never wait here. A sampling task finishes into arrays no one reads; a cook still reads the
+            // spare mesh natively, so it is waited for before that mesh is written or destroyed.
             if (_stage == Stage.Sampling) _heights = null;   // the next rebuild samples into new arrays
             if (_stage == Stage.Baking) _bakeInFlight = _task;
             _task = null;
@@ -163,12 +157,12 @@ namespace GregoryTerrain
                 _vertices = new Vector3[n * n];
                 _triangles = ColliderPatch.Triangles(n);
             }
-            // The patch's pose: its centre on the surface, the terrain's rotation, unit scale; vertices
-            // relative to it in world units (small numbers, so float keeps millimetres at any distance).
+            // The patch's pose: centre on the surface, the terrain's rotation, unit scale; vertices relative
+            // to it in world units, so float keeps millimetres at any distance.
             Double2 c = patch.Center;
             double centreHeight = query.SampleHeight(GMath.clamp(c.x, 0.0, 1.0), GMath.clamp(c.y, 0.0, 1.0));
             if (double.IsNaN(centreHeight)) centreHeight = 0.0;
-            // In double: the object point rounded to float first would place the patch 6 mm off on a 100 km terrain.
+            // In double: rounding the object point to float first would misplace the patch on a large terrain.
             Double3 centre = frame.ObjectToWorld(new Double3(c.x, centreHeight, c.y));
             _pendingPosition = new Vector3((float)centre.x, (float)centre.y, (float)centre.z);
             _pendingRotation = terrain.transform.rotation;

@@ -6,17 +6,13 @@ namespace GregoryTerrain
 {
     /// <summary>
     /// A patch grid saved as a Unity asset: the serializable form of Core's <see cref="PatchGrid"/>
-    /// (internals.md: n columns, m rows, grid lines, 20 control points per patch in GregoryPatch slot
-    /// order, patch <c>p = j * n + i</c>). The control points live in <see cref="PatchGridBlock"/>
-    /// sub-assets of 64 patches (Core's <see cref="PatchGridBlocks"/>), so an edit records for Undo
-    /// only the blocks it changes, and the asset is saved in Unity's binary format whatever the
-    /// project's serialization mode (<see cref="PreferBinarySerialization"/>, as Unity does for
-    /// TerrainData): 8 bytes a double instead of about 20 characters of YAML. Grids saved with the
-    /// older single <c>controlPoints</c> array still load; the first edit moves them into blocks
-    /// (the editor's PatchGridAssetUndo), bit for bit. Every change goes through <see cref="SetGrid(PatchGrid)"/>,
-    /// <see cref="ImportJson"/> or <see cref="SetControlPoint"/>, which check the new data completely
-    /// before touching the old, and stamps a new <see cref="Version"/> so renderers upload again only
-    /// when the grid changed.
+    /// (internals.md, "The tile layout"). The control points live in <see cref="PatchGridBlock"/>
+    /// sub-assets of 64 patches (Core's <see cref="PatchGridBlocks"/>), so Undo records only the
+    /// blocks an edit changes; the asset is binary (<see cref="PreferBinarySerialization"/>, as
+    /// TerrainData). The single <c>controlPoints</c> array layout still loads; the first edit moves it
+    /// into blocks. Every change goes through <see cref="SetGrid(PatchGrid)"/>, <see cref="ImportJson"/>
+    /// or <see cref="SetControlPoint"/>, which check the new data before touching the old, and stamps
+    /// a new <see cref="Version"/>.
     /// </summary>
     [CreateAssetMenu(menuName = "Gregory Terrain/Patch Grid", fileName = "PatchGrid", order = 200)]
     [PreferBinarySerialization]
@@ -40,12 +36,10 @@ namespace GregoryTerrain
         [Tooltip("The control point blocks (sub-assets of this grid), 64 patches each. Edit with the Patch Grid window or the Scene-view handles.")]
         [SerializeField] PatchGridBlock[] blocks = Array.Empty<PatchGridBlock>();
 
-        // The layout before blocks: all control points in one array. Read when blocks is empty; emptied
-        // when the editor moves the data into blocks. A new asset starts here with one flat patch.
+        // The single-array layout: read when blocks is empty, emptied when moved into blocks.
         [SerializeField, HideInInspector] double[] controlPoints = FlatPatch();
 
-        // Version stamps come from one process-wide counter, so a stamp is never reused: after an undo
-        // the asset gets a fresh stamp too, and a renderer never mistakes old data for uploaded data.
+        // Stamps come from one process-wide counter, never reused: an undo gets a fresh one too.
         static int s_NextVersion = 1;
         [NonSerialized] int _version;
         [NonSerialized] string _error;
@@ -73,26 +67,22 @@ namespace GregoryTerrain
         /// <summary>True when the serialized data is a valid grid.</summary>
         public bool IsValid { get { CheckIfChanged(); return _error == null; } }
 
-        /// <summary>True while the control points are still in the older single array (not yet in blocks).</summary>
+        /// <summary>True while the control points are in the single-array layout.</summary>
         internal bool HasLegacyLayout => (blocks == null || blocks.Length == 0) && controlPoints != null && controlPoints.Length > 0;
 
-        /// <summary>The grid lines as serialized, for readers that need no grid (the sculpt panel's spacing); never write into them.</summary>
+        /// <summary>The grid lines as serialized, for readers that need no grid; never write into them.</summary>
         internal double[] XLinesData => xLines;
         internal double[] YLinesData => yLines;
 
         /// <summary>The control point blocks (empty while <see cref="HasLegacyLayout"/>). A copy of the array.</summary>
         internal PatchGridBlock[] Blocks => blocks == null ? Array.Empty<PatchGridBlock>() : (PatchGridBlock[])blocks.Clone();
 
-        // Loading (and every domain reload) only marks the grid: the whole-grid check runs at its first
-        // read, once per content change, not for every grid Unity loads.
+        // Loading only marks the grid: the whole-grid check runs at its first read.
         void OnEnable() => MarkChangedOnNextRead();
 
         void OnValidate() => MarkChangedOnNextRead();
 
-        /// <summary>
-        /// Re-validates and stamps a new version. Editor code calls it after changing the serialized
-        /// data directly (handles, undo/redo); the setters call it themselves.
-        /// </summary>
+        /// <summary>Re-validates and stamps a new version; for editor code that changed the serialized data directly.</summary>
         public void MarkChanged()
         {
             _changedSinceCheck = false;
@@ -107,10 +97,9 @@ namespace GregoryTerrain
         }
 
         /// <summary>
-        /// Like <see cref="MarkChanged"/>, but the check (the whole grid: a quarter of a second on a
-        /// 256 x 256 grid) runs once, at the next read of <see cref="Version"/>, <see cref="IsValid"/>
-        /// or <see cref="ValidationError"/>. For Unity's OnValidate calls, which come once per block
-        /// when the grid loads (1,024 of them on a 256 x 256 grid) and once per restored block on undo.
+        /// Like <see cref="MarkChanged"/>, but the whole-grid check runs once, at the next read of
+        /// <see cref="Version"/>, <see cref="IsValid"/> or <see cref="ValidationError"/>: OnValidate
+        /// comes once per block on load and undo.
         /// </summary>
         internal void MarkChangedOnNextRead()
         {
@@ -121,10 +110,8 @@ namespace GregoryTerrain
         void CheckIfChanged()
         {
             if (!_changedSinceCheck) return;
-            // Any undo in the editor marks every loaded grid (Unity does not say which objects an undo
-            // restored): when the data is bit for bit what was last checked, keep the verdict and the
-            // version, so renderers do not upload it again. Hashing reads the data once, without the
-            // whole-grid validation.
+            // Any undo marks every loaded grid (Unity does not say which it restored): when the data hash
+            // matches what was last checked, keep the verdict and version, so renderers do not re-upload.
             if (_version != 0 && PatchGridBlocks.Combine(HeaderHash(), PatchGridBlocks.BlockHashes(HashedData())) == _fingerprint)
             {
                 _changedSinceCheck = false;
@@ -145,7 +132,7 @@ namespace GregoryTerrain
             return PatchGridBlocks.Mix(h, HasLegacyLayout ? 1UL : 2UL);
         }
 
-        /// <summary>The arrays the fingerprint hashes: the older single array, or each block's (null for a missing block).</summary>
+        /// <summary>The arrays the fingerprint hashes (null for a missing block).</summary>
         double[][] HashedData()
         {
             if (HasLegacyLayout) return new[] { controlPoints };
@@ -155,9 +142,8 @@ namespace GregoryTerrain
         }
 
         /// <summary>
-        /// The grid as Core's <see cref="PatchGrid"/>, new patches each call. Throws ArgumentException
-        /// when invalid. Uses the verdict kept since the last change (<see cref="IsValid"/>), not a
-        /// second whole-grid check.
+        /// The grid as Core's <see cref="PatchGrid"/>, new patches each call, using the kept verdict
+        /// (<see cref="IsValid"/>). Throws ArgumentException when invalid.
         /// </summary>
         internal PatchGrid ToPatchGrid()
         {
@@ -166,11 +152,9 @@ namespace GregoryTerrain
         }
 
         /// <summary>
-        /// <paramref name="previous"/>, this grid at <paramref name="previousVersion"/>, brought to this
-        /// version at the cost of the patches edited since (<see cref="ApplyEdit"/>; Core's
-        /// PatchChangeLog), as a new grid that shares its unchanged patches: what the renderer's upload
-        /// and query use per brush dab. Null, with <paramref name="changed"/> null, when only a whole
-        /// rebuild (<see cref="ToPatchGrid"/>) can tell: a whole-grid change, an undo or load since.
+        /// <paramref name="previous"/> (this grid at <paramref name="previousVersion"/>) brought to this
+        /// version by the patches edited since (<see cref="ApplyEdit"/>), sharing unchanged patches. Null,
+        /// with <paramref name="changed"/> null, when only a whole rebuild (<see cref="ToPatchGrid"/>) can tell.
         /// </summary>
         internal PatchGrid UpdatedPatchGrid(PatchGrid previous, int previousVersion, out int[] changed)
         {
@@ -180,12 +164,10 @@ namespace GregoryTerrain
         }
 
         /// <summary>
-        /// Replaces the data with <paramref name="grid"/> (already validated by PatchGrid) whose blocks
-        /// are <paramref name="data"/> (<c>PatchGridBlocks.FromGrid(grid)</c>). Existing blocks are
-        /// written in place (those <see cref="BlocksChangedBy"/> does not list keep their bits);
-        /// <paramref name="created"/> are new blocks (not yet sub-assets: the editor adds them to the
-        /// asset) and <paramref name="dropped"/> blocks no longer used (the editor destroys them with
-        /// Undo). Record the asset and the changed blocks before calling it.
+        /// Replaces the data with <paramref name="grid"/> (validated) whose blocks are
+        /// <paramref name="data"/>; existing blocks are written in place, <paramref name="created"/> are
+        /// new (the editor adds them as sub-assets), <paramref name="dropped"/> unused (the editor destroys
+        /// them with Undo). Record the asset and the changed blocks first.
         /// </summary>
         internal void SetGrid(PatchGrid grid, double[][] data, out PatchGridBlock[] created, out PatchGridBlock[] dropped)
         {
@@ -224,8 +206,7 @@ namespace GregoryTerrain
             SetGrid(grid, PatchGridBlocks.FromGrid(grid), out PatchGridBlock[] created, out PatchGridBlock[] dropped);
             bool inFile = false;
 #if UNITY_EDITOR
-            // A grid saved in a file keeps its blocks as sub-assets: new ones must join the file, or
-            // they are lost on the next reload, and old ones must leave it.
+            // Blocks of a saved grid are sub-assets: new ones must join the file, old ones leave it.
             inFile = UnityEditor.AssetDatabase.Contains(this);
             if (inFile)
             {
@@ -243,8 +224,7 @@ namespace GregoryTerrain
 
         /// <summary>
         /// The existing blocks that <see cref="SetGrid(PatchGrid, double[][], out PatchGridBlock[], out PatchGridBlock[])"/>
-        /// with <paramref name="data"/> gives other bits: all that a whole-grid replacement has to record
-        /// for Undo (Enforce G1 on a grid already G1 records none). Blocks it creates or drops are not listed.
+        /// with <paramref name="data"/> changes: what a whole-grid replacement records for Undo.
         /// </summary>
         internal PatchGridBlock[] BlocksChangedBy(double[][] data)
         {
@@ -257,10 +237,7 @@ namespace GregoryTerrain
             return changed.ToArray();
         }
 
-        /// <summary>
-        /// Moves the older single array into new blocks, bit for bit (returned; not yet sub-assets: the
-        /// editor adds them to the asset). Does nothing and returns none when the grid has blocks.
-        /// </summary>
+        /// <summary>Moves the single-array layout into new blocks, bit for bit (returned; the editor adds them as sub-assets); none when already in blocks.</summary>
         internal PatchGridBlock[] MoveLegacyDataToBlocks()
         {
             if (!HasLegacyLayout) return Array.Empty<PatchGridBlock>();
@@ -292,17 +269,15 @@ namespace GregoryTerrain
         public Vector3 GetControlPoint(int patch, int slot)
         {
             CheckIndex(patch, slot);
-            // One block, not Data(): that allocates the list of all blocks, and the Scene view's handles
-            // and wireframe read every control point of the grid on each repaint.
+            // One block, not Data() (allocates the list): handles read every point each repaint.
             int b = PatchGridBlocks.BlockOf(patch);
             Double3 q = PatchGridBlocks.Get(HasLegacyLayout ? Data()[b] : blocks[b].Points, patch, slot);
             return new Vector3((float)q.x, (float)q.y, (float)q.z);
         }
 
         /// <summary>
-        /// The blocks <see cref="SetControlPoint"/> may change for this point (its own and, for a shared
-        /// boundary point, its neighbours'): record these for Undo before the move. Empty while the grid
-        /// still has the older layout (move its data to blocks first).
+        /// The blocks <see cref="SetControlPoint"/> may change for this point (its neighbours' too, for a
+        /// shared point): record them for Undo first. Empty in the single-array layout.
         /// </summary>
         internal PatchGridBlock[] BlocksTouchedByMove(int patch, int slot)
         {
@@ -315,25 +290,22 @@ namespace GregoryTerrain
         }
 
         /// <summary>
-        /// Moves one control point (terrain space); every bit-identical copy of a shared boundary point
-        /// in the neighbouring patches moves with it (Core's PatchGridBlocks.MoveControlPoint). Record
-        /// <see cref="BlocksTouchedByMove"/> first. Does not enforce G1: run the Patch Grid window's
-        /// "Enforce G1" afterwards if the grid must stay smooth.
+        /// Moves one control point (terrain space) and every bit-identical copy of it in neighbouring
+        /// patches. Record <see cref="BlocksTouchedByMove"/> first. Does not enforce G1.
         /// </summary>
         public void SetControlPoint(int patch, int slot, Vector3 terrainPosition)
         {
             CheckIndex(patch, slot);
             if (HasLegacyLayout)
                 throw new InvalidOperationException($"Patch grid '{name}' still has the older single-array layout: move its data to blocks first (MoveLegacyDataToBlocks)");
-            // The verdict kept since the last change, not a second whole-grid check: a handle drag calls
-            // this every mouse move, and MarkChanged below checks the grid once more anyway.
+            // The kept verdict: a handle drag calls this every mouse move.
             if (!IsValid) throw new InvalidOperationException($"Patch grid '{name}' is invalid: {ValidationError}");
             PatchGridBlocks.MoveControlPoint(Data(), columns, rows, patch, slot,
                 new Double3(terrainPosition.x, terrainPosition.y, terrainPosition.z));
             MarkChanged();
         }
 
-        /// <summary>Index of the patch holding terrain point (x, y) (Core's PatchGrid.FindPatch on this grid's lines; outside points go to the border patches).</summary>
+        /// <summary>Index of the patch holding terrain point (x, y); outside points go to the border patches.</summary>
         internal int FindPatch(double x, double y)
         {
             if (double.IsNaN(x) || double.IsNaN(y)) throw new ArgumentException($"({x}, {y}) is not a point: cannot locate a patch.");
@@ -354,11 +326,9 @@ namespace GregoryTerrain
         }
 
         /// <summary>
-        /// Writes an edit's patches (a brush dab or a region refit, Core's PatchEdit) into the blocks.
-        /// Core built and checked the edit against this grid (finite, float range, shared edges
-        /// written in every copy, G1 rejoined), so a valid grid stays valid: the version changes
-        /// without a whole-grid check, which a brush stroke would pay on every dab. Throws, changing
-        /// nothing, when the grid is invalid, still in the older layout, or of another shape.
+        /// Writes an edit's patches (Core's PatchEdit, built and checked against this grid) into the
+        /// blocks: a valid grid stays valid, so no whole-grid check a dab. Throws, changing nothing, when
+        /// the grid is invalid, in the single-array layout, or of another shape.
         /// </summary>
         internal void ApplyEdit(PatchEdit edit)
         {

@@ -4,14 +4,10 @@ using UnityEngine;
 namespace GregoryTerrain
 {
     /// <summary>
-    /// Wind-driven snow (Moriya and Takahashi, eq. 1) simulated on the GPU (Shaders/Snow/SnowSimulation.compute)
-    /// in Play Mode, on the <see cref="Terrain"/> renderer, which draws it (<c>GT_SNOW</c> on its runtime
-    /// material copy) while this is enabled; disabled or absent, there is no snow buffer, dispatch or snow
-    /// code. It owns the R x R map (<c>_SnowField</c> float4, <c>_SnowExposure</c>, <c>_SnowDepth</c>
-    /// float), evaluates the field from the renderer's grid, constants and noise keywords
-    /// (SnowField.compute) when they change, the exposure when the field, wind or march settings change,
-    /// and one accumulation step a frame. Instead of the renderer's field: a CPU <see cref="Field"/> or a
-    /// GPU buffer (<see cref="SetFieldBuffer"/>). The manual: snow.md.
+    /// Wind-driven snow (Moriya and Takahashi, eq. 1) simulated on the GPU in Play Mode, drawn by the
+    /// <see cref="Terrain"/> renderer (<c>GT_SNOW</c>) while this is enabled; disabled or absent, there is
+    /// no snow buffer, dispatch or snow code. The terrain field comes from the renderer, a CPU
+    /// <see cref="Field"/> or a GPU buffer (<see cref="SetFieldBuffer"/>). The manual: snow.md.
     /// </summary>
     [DisallowMultipleComponent]
     [AddComponentMenu("Gregory Terrain/Snow Simulator")]
@@ -49,8 +45,7 @@ namespace GregoryTerrain
         int _externalVersion;
         int _fieldKernel = -1;
         GregoryTerrainRenderer _attached;      // the renderer this simulator is attached to now
-        // What the field was last evaluated from: the renderer's upload, its constants for the field
-        // (SnowFieldTerrain.ParamsFor: range-independent) and its noise keywords (GT_NOISE, GT_NOISE_TABLE).
+        // What the field was last evaluated from: the renderer's upload, field constants and noise keywords.
         int _fieldGridStamp = -1;
         TerrainParams _fieldParams;
         bool _fieldNoise, _fieldNoiseTable;
@@ -58,8 +53,7 @@ namespace GregoryTerrain
 
         /// <summary>
         /// The settings. Setting them validates them (ArgumentException naming field and value); a new
-        /// resolution starts a new, empty map. An Inspector edit is validated (logged if invalid, the
-        /// last valid settings kept) and applied in the next Update.
+        /// resolution starts a new, empty map. An Inspector edit is validated and applied in the next Update.
         /// </summary>
         public SnowSettings Settings
         {
@@ -100,10 +94,7 @@ namespace GregoryTerrain
             _editPending = true;
         }
 
-        /// <summary>
-        /// The renderer snow falls on. While this component is enabled it is attached to it: the
-        /// renderer draws GT_SNOW with this depth map, and the field is evaluated from its grid.
-        /// </summary>
+        /// <summary>The renderer snow falls on; while enabled this is attached to it and its grid gives the field.</summary>
         public GregoryTerrainRenderer Terrain
         {
             get => terrain;
@@ -138,8 +129,7 @@ namespace GregoryTerrain
             _externalField = buffer; _externalVersion = version; _cpuField = null;
         }
 
-        // A field set for the old resolution would be read past its end by the new map's kernels: a
-        // new resolution forgets it and falls back to the terrain's own field until one is set again.
+        // A field for the old resolution would be read past its end: a new resolution forgets it.
         void DropFieldsOfOtherResolution(int resolution)
         {
             if (_externalField != null && _externalField.count != resolution * resolution) _externalField = null;
@@ -150,9 +140,8 @@ namespace GregoryTerrain
         internal bool UsesFieldBuffer => _externalField != null;
 
         /// <summary>
-        /// Evaluates the field from the terrain again at the next step. Changes of the renderer's grid,
-        /// settings or noise are seen without it; call it after changing something the renderer
-        /// does not know of.
+        /// Evaluates the field from the terrain again at the next step; call it after changing something
+        /// the renderer does not know of.
         /// </summary>
         public void MarkTerrainChanged() => _terrainVersion++;
 
@@ -161,10 +150,7 @@ namespace GregoryTerrain
         /// <summary>The depth map (R*R floats) while enabled, else null.</summary>
         public GraphicsBuffer DepthBuffer => _depth;
 
-        /// <summary>
-        /// Changes whenever the depth map's contents may have changed (a step, a clear, a new map):
-        /// readers that cache something derived from it (the renderer's vertex cache) compare it.
-        /// </summary>
+        /// <summary>Changes whenever the depth map's contents may have changed; caches derived from it compare it.</summary>
         public int DepthVersion { get; private set; }
 
         /// <summary><c>_SnowMapSize = (R, 1/R, depthCap, 0)</c>, as the terrain material gets it.</summary>

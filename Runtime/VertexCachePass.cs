@@ -5,22 +5,12 @@ namespace GregoryTerrain
 {
     /// <summary>
     /// The compute pre-pass of <see cref="VertexEvaluation.ComputeCache"/>: owns <c>_TileFactors</c>
-    /// (62 T^2 float4) and <c>_VertexCache</c> (T^2 S(L) R uint4, T = M, or M + 1 with anchored tiles; sizes from Core's
-    /// <see cref="VertexCacheBudget"/>) and dispatches <c>CacheTileFactors</c> then
-    /// <c>CacheTileVertices</c> of <c>Shaders/Cache/TerrainCache.compute</c> only when something the
-    /// kernels read differs from the last dispatch: the TerrainParams block (range and origin
-    /// included), the LOD camera's object-to-clip matrix and pixel size, the effect keywords, the
-    /// grid's buffers, or the snow map's version. A frame where none changed dispatches nothing.
-    /// <para>The kernels re-evaluate only the tiles whose integer factors or range key (<c>_Range</c>,
-    /// or with anchored tiles the tile's own span) differ from what their slots hold (a camera move,
-    /// or an anchored pan, leaves most tiles alone), and keep a cell's factors while its key, the
-    /// camera and the factor settings hold (an anchored pan samples no surface). Whatever else the
-    /// records depend on is this class's to notice: when the origin, the tile lattice, the grid, a
-    /// noise or colour setting, the object transform, the effects or the snow map changed, or the
-    /// buffers are new, it zeroes the tiles' keys (32 T^2 bytes) first; a zero key always reads as
-    /// moved, so every tile's samples, factors and slots are evaluated again.</para>
-    /// <para>The renderer decides whether the pass runs at all (compute support, the shader, the
-    /// LOD camera, the size check); this class only sizes, compares and dispatches.</para>
+    /// and <c>_VertexCache</c> (sizes from Core's <see cref="VertexCacheBudget"/>) and dispatches
+    /// <c>CacheTileFactors</c> then <c>CacheTileVertices</c> of <c>Shaders/Cache/TerrainCache.compute</c>
+    /// only when something the kernels read differs from the last dispatch. What the kernels do not
+    /// compare per tile (origin, lattice, grid, noise, colour, transform, effects, snow map, new
+    /// buffers) makes this class zero the tiles' keys first, so everything is evaluated again
+    /// (internals.md, "Vertex cache"). The renderer decides whether the pass runs at all.
     /// </summary>
     sealed class VertexCachePass
     {
@@ -89,9 +79,8 @@ namespace GregoryTerrain
 
         /// <summary>
         /// Allocates both buffers for M = <paramref name="tiles"/>, L = <paramref name="factorLimit"/>
-        /// and the snow record, releasing the old ones, only when one of the three changed. Call
-        /// <see cref="VertexCacheBudget.CheckFits"/> first: this allocates whatever it is asked.
-        /// Returns true when it allocated (the buffers must be bound again).
+        /// and the snow record when one of them changed (call <see cref="VertexCacheBudget.CheckFits"/>
+        /// first). Returns true when it allocated (the buffers must be bound again).
         /// </summary>
         public bool EnsureBuffers(int tiles, int factorLimit, bool snow)
         {
@@ -111,8 +100,7 @@ namespace GregoryTerrain
 
         /// <summary>
         /// Dispatches both kernels when <paramref name="inputs"/> differ from the last dispatch's (or
-        /// nothing was dispatched into these buffers yet). Returns true when it dispatched. Needs
-        /// <see cref="FindKernels"/> and <see cref="EnsureBuffers"/> first.
+        /// none yet); true when it did. Needs <see cref="FindKernels"/> and <see cref="EnsureBuffers"/> first.
         /// </summary>
         public bool Update(ComputeShader shader, in Inputs inputs)
         {
@@ -132,9 +120,7 @@ namespace GregoryTerrain
             SetKeyword(shader, ShaderIds.SnowKeyword, snow);
             if (snow) shader.SetVector(ShaderIds.SnowMapSize, inputs.snowMapSize);
 
-            // Kernel 1 writes the factors (u2, _TileFactorsRW); kernel 2 reads them read-only (t5,
-            // _TileFactors: FXC refuses its loop on a UAV read) and writes the records (u3,
-            // _VertexCacheRW). Both sample the surface: the patch buffers (and the noise table).
+            // Kernel 2 reads the factors as t5, not the UAV: FXC refuses its loop on a UAV read.
             BindPatchBuffers(shader, _factorsKernel, inputs, snow);
             shader.SetBuffer(_factorsKernel, ShaderIds.TileFactorsRW, _factors);
             BindPatchBuffers(shader, _verticesKernel, inputs, snow);
@@ -150,9 +136,8 @@ namespace GregoryTerrain
             return true;
         }
 
-        // Zero the keys (the slots' and the cells', adjacent): the kernels then see every tile and
-        // every cell as moved. Only that part of _TileFactors is uploaded (the snow path comes here
-        // every simulation step).
+        // Zero the keys (slots' and cells', adjacent): every tile reads as moved. Only that part is
+        // uploaded (the snow path comes here every step).
         void ForgetEvaluatedTiles()
         {
             int count = GregoryTerrain.VertexCache.KeyFloat4sPerTile * _tiles * _tiles;
@@ -189,19 +174,12 @@ namespace GregoryTerrain
             if (on) shader.EnableKeyword(keyword); else shader.DisableKeyword(keyword);
         }
 
-        /// <summary>
-        /// The rest of what the kernels read: the range (anchored, only its first cells: a pan inside
-        /// them dispatches nothing, ClippedCell), the pixel target, the uniform factor, the LOD camera.
-        /// </summary>
+        /// <summary>The rest of what the kernels read: the range (anchored, only its first cells), pixel target, uniform factor, LOD camera.</summary>
         bool SameFactorInputs(in Inputs i) =>
             SameParams(WithKernelRange(i.parameters), WithKernelRange(_last.parameters)) &&
             SameMatrix(i.objectToClip, _last.objectToClip) && SameVector(i.screenSize, _last.screenSize);
 
-        /// <summary>
-        /// Everything a tile's records depend on besides its factors and <c>_Range</c> (the kernels
-        /// compare those per tile): the camera, the pixel target and the uniform factor only move
-        /// factors (a new factor limit L reallocates, which forgets everything anyway).
-        /// </summary>
+        /// <summary>Everything a tile's records depend on besides what the kernels compare per tile (factors, <c>_Range</c>).</summary>
         bool SameRecordInputs(in Inputs i)
         {
             if (!SameParams(WithoutPerTileInputs(i.parameters), WithoutPerTileInputs(_last.parameters))) return false;
@@ -214,8 +192,7 @@ namespace GregoryTerrain
             return true;
         }
 
-        // _Range (the kernels compare it, or the anchored tile's span, per tile) and _Tess.zw (pixel
-        // target, uniform factor) zeroed. _TileLattice stays: a new lattice forgets every tile.
+        // _Range and _Tess.zw zeroed (compared per tile); a new _TileLattice forgets every tile.
         static TerrainParams WithoutPerTileInputs(TerrainParams p)
         {
             p.range = default;

@@ -11,36 +11,22 @@ namespace GregoryTerrain
     /// <c>(c/(W-1), r/(H-1))</c>) in the space of <see cref="GregoryNet"/>: minimises
     /// <c>sum_s w_s (S x - z)_s^2 + mu |x - x0|^2</c> by conjugate gradients on the normal equations
     /// (all weights w_s 1 unless <see cref="Reweight"/> raised some).
-    /// <para><b>Normal matrix without storing it.</b> A patch's heights depend on its 20 local
-    /// unknowns, so <c>A = sum over patches of E_p^T G_p E_p</c> with a 20 x 20 patch Gram matrix
-    /// G_p. G_p depends only on where the samples fall inside the patch, and on a uniform grid that
-    /// repeats: a column of patches is identified by its first sample's offset and its sample count,
-    /// and when P divides W - 1 (8193 into 256) every patch has the same offsets. So the fitter keeps
-    /// one Gram matrix per distinct (column class, row class), at most
-    /// <c>(P / gcd(P, W-1)) (Q / gcd(Q, H-1))</c> of them, and A p costs 400 multiply-adds a patch.
-    /// A patch with reweighted samples gets its own Gram matrix (its class's plus the extra weights).</para>
-    /// <para><b>Passes over the samples, separable.</b> A Gregory patch's height is the bicubic
-    /// tensor product of its 16 grid slots (the interior slots holding the second point of each pair)
-    /// plus, per pair, <c>B_a(u) B_b(v) t(u, v) (first - second)</c>. So S^T z and the error need 4
-    /// Bernstein weights per column (a table per column class), per row 16 multiply-adds, and per
-    /// sample 4 tensor and 4 rational weights: 8 multiply-adds a sample instead of 20, and a table of
-    /// 4 doubles a sample (the rational weights) per class instead of 20.</para>
-    /// <para><b>Portable sums.</b> Every sum runs in a fixed order that does not depend on the
-    /// machine's SIMD width: the passes over the samples are scalar, in sample order, with a fixed
-    /// set of accumulators; the Gram matrices and A p use <c>Vector&lt;double&gt;</c> only lane by
-    /// lane (each lane one matrix entry, summed in sample or unknown order), never across lanes. So
-    /// the fit is the same to the bit on 2-, 4- or 8-wide SIMD (given IEEE double arithmetic without
-    /// fused multiply-adds, which neither .NET's JIT nor Mono's contracts on its own).</para>
+    /// <para><b>Normal matrix without storing it.</b> <c>A = sum over patches of E_p^T G_p E_p</c>
+    /// with a 20 x 20 patch Gram matrix G_p that depends only on where the samples fall in the patch;
+    /// on a uniform grid that repeats, so one Gram is kept per (column class, row class), at most
+    /// <c>(P / gcd(P, W-1)) (Q / gcd(Q, H-1))</c>. A reweighted patch gets its own.</para>
+    /// <para><b>Separable passes.</b> A patch's height is the bicubic tensor product of its 16 grid
+    /// slots plus, per pair, <c>B_a(u) B_b(v) t(u, v) (first - second)</c>: 8 multiply-adds a sample
+    /// instead of 20, and 4 rational weights a sample per class.</para>
+    /// <para><b>Portable sums.</b> Every sum runs in a fixed order independent of the SIMD width
+    /// (scalar sample passes; <c>Vector&lt;double&gt;</c> lane by lane, never across lanes), so the
+    /// fit is the same to the bit on 2-, 4- or 8-wide SIMD (IEEE double without fused multiply-adds).</para>
     /// <para><b>The ridge.</b> mu (<see cref="RidgeWeight"/> of the mean diagonal) pulls toward x0,
-    /// the C1 spline fit, only where the samples leave unknowns open (patches with fewer samples than
-    /// unknowns, interior offsets whose weight is 0 at every sample): there the fit keeps the spline's
-    /// values, which its own smoothing term chose. Elsewhere it moves the optimum by about mu.</para>
-    /// <para><b>Preconditioner and stop.</b> Block Jacobi: the inverse of each vertex's 3 x 3 and each
-    /// edge's 2 x 2 diagonal block (a height and the offsets next to it are strongly coupled). From x0
-    /// (already the best C1 net) CG runs until the residual is <see cref="Tolerance"/> of the initial
-    /// one. With very few samples a patch (2 to 4 a side) the data barely tell some unknowns apart
-    /// and CG would need hundreds of iterations; it stops at <see cref="MaxIterations"/>, and since
-    /// every CG step lowers the objective the result still fits at least as well as its start.</para>
+    /// the C1 spline fit, only where the samples leave unknowns open; elsewhere it moves the optimum by about mu.</para>
+    /// <para><b>Preconditioner and stop.</b> Block Jacobi over each vertex's 3 x 3 and each edge's
+    /// 2 x 2 diagonal block. CG runs from x0 until the residual is <see cref="Tolerance"/> of the initial
+    /// one, or <see cref="MaxIterations"/> (few samples a patch leave some unknowns barely determined);
+    /// every CG step lowers the objective, so the result fits at least as well as its start.</para>
     /// </summary>
     internal sealed class GregoryLeastSquares
     {
@@ -48,18 +34,16 @@ namespace GregoryTerrain
         public const double RidgeWeight = 1e-6;
         /// <summary>
         /// CG stops when the residual's norm is this fraction of the first solve's initial one (or at
-        /// <see cref="MaxIterations"/>). Looser (3e-3) kept the SRTM tiles' RMS within 2e-7 of itself
-        /// but moved the demo grid's control points by up to 3.8e-4 (0.2% of its relief): the data
-        /// barely determine some directions of the net, and those move first.
+        /// <see cref="MaxIterations"/>). Looser moves the weakly determined directions of the net first.
         /// </summary>
         public const double Tolerance = 1e-4;
-        /// <summary>The most CG iterations: bounds the time where the data barely determine the net (see the class comment).</summary>
+        /// <summary>The most CG iterations: bounds the time where the data barely determine the net.</summary>
         public const int MaxIterations = 200;
         /// <summary>Rational-weight tables are cached up to this many doubles (32 MiB); beyond, recomputed per patch.</summary>
         const long TableCacheDoubles = 4L << 20;
 
         const int L = GregoryNet.LocalCount;
-        // Gram rows are Stride doubles (20 rounded up to the SIMD width) so A p runs lane by lane.
+        // Gram rows are Stride doubles (20 rounded up to the SIMD width).
         static readonly int Lanes = Vector<double>.Count;
         static readonly int Stride = (L + Lanes - 1) / Lanes * Lanes;
         // The pairs' slots: first point (grid slot 4 a + b) and second point (16 + ...), pair p = 0..3.
@@ -85,10 +69,9 @@ namespace GregoryTerrain
         public int ReweightedSamples { get; private set; }
 
         /// <summary>
-        /// Where one axis's samples fall: per patch its first sample and class; per class the
-        /// offsets and Bernstein weights. Classes with the same first offset differ only in count,
-        /// so one's offsets are a prefix of the other's: a group, whose longest class's rational-weight
-        /// table serves all (read with its count as the row stride).
+        /// Where one axis's samples fall: per patch its first sample and class; per class the offsets
+        /// and Bernstein weights. Classes with the same first offset form a group sharing the longest
+        /// class's rational-weight table.
         /// </summary>
         sealed class Axis
         {
@@ -174,10 +157,9 @@ namespace GregoryTerrain
         }
 
         /// <summary>
-        /// The rational weights <c>B_a(u) B_b(v) t(u, v)</c> of the 4 pairs' first points at every
-        /// sample of patch (i, j), [4 (b stride + a) + p]; and, the first time a class is seen, its
-        /// Gram matrix (from the full 20 local weights, summed in sample order). The table is its
-        /// group's (<see cref="Axis"/>): a quarter of the memory where P divides W - 1.
+        /// The rational weights of the 4 pairs' first points at every sample of patch (i, j),
+        /// [4 (b stride + a) + p] (the group's table, <see cref="Axis"/>); builds the class's Gram
+        /// matrix the first time it is seen.
         /// </summary>
         double[] Rational(int i, int j, out int stride)
         {
@@ -209,10 +191,7 @@ namespace GregoryTerrain
             return t;
         }
 
-        /// <summary>
-        /// The Gram matrix of one class, row k at k Stride: each entry summed over the samples in
-        /// row-major order, lane by lane (an entry per lane), so the SIMD width does not change it.
-        /// </summary>
+        /// <summary>One class's Gram matrix, row k at k Stride, summed in sample order lane by lane.</summary>
         static double[] BuildGram(double[] us, double[] vs)
         {
             var g = new double[L * Stride];
@@ -232,8 +211,8 @@ namespace GregoryTerrain
         }
 
         /// <summary>
-        /// <c>S^T z</c> in one pass over the samples (8 multiply-adds each, fixed order), building the
-        /// Gram matrices on the way. Progress runs from <paramref name="p0"/> to <paramref name="p1"/>.
+        /// <c>S^T z</c> in one pass over the samples, building the Gram matrices on the way. Progress
+        /// runs from <paramref name="p0"/> to <paramref name="p1"/>.
         /// </summary>
         public double[] RightHandSide(double[] heights, IProgress<float> progress, float p0, float p1, CancellationToken ct)
         {
@@ -293,9 +272,8 @@ namespace GregoryTerrain
         }
 
         /// <summary>
-        /// y = A p (the data's normal matrix only): per patch, gather 20, multiply by its Gram,
-        /// scatter, in row-major order. The 20 local unknowns are five runs of consecutive indices
-        /// (<see cref="GregoryNet.LocalUnknowns"/>): slices, not an index table.
+        /// y = A p (the data's normal matrix only): per patch, gather 20, multiply by its Gram, scatter.
+        /// The local unknowns are five runs of consecutive indices (<see cref="GregoryNet.LocalUnknowns"/>).
         /// </summary>
         void Multiply(double[] p, double[] y)
         {
@@ -320,9 +298,7 @@ namespace GregoryTerrain
                     p.AsSpan(e, 4).CopyTo(local.Slice(16));
                     if (Stride == 5 * Lanes)
                     {
-                        // 4 lanes: five accumulators in registers; lane q is entry q of G p, summed
-                        // over k in order. The Gram as a span of vectors halves A p's time (one
-                        // bounds check a load, not the array constructor's).
+                        // 4 lanes: five accumulators in registers; lane q is entry q of G p, summed over k in order.
                         ReadOnlySpan<Vector<double>> gv = MemoryMarshal.Cast<double, Vector<double>>(new ReadOnlySpan<double>(g, 0, L * Stride));
                         Vector<double> a0 = Vector<double>.Zero, a1 = a0, a2 = a0, a3 = a0, a4 = a0;
                         for (int k = 0; k < L; k++)
@@ -358,10 +334,8 @@ namespace GregoryTerrain
             }
         }
 
-        // The preconditioner's blocks: a vertex's 3 unknowns and an edge's 2 are strongly coupled (a
-        // height and the offsets next to it), so the diagonal alone (Jacobi) needs hundreds of CG
-        // iterations; the inverses of these small diagonal blocks of A + mu I bring it to tens.
-        // Local unknowns 0..11 are 4 vertices of 3, 12..19 four edges of 2 (GregoryNet.LocalUnknowns).
+        // Preconditioner blocks: local unknowns 0..11 are 4 vertices of 3, 12..19 four edges of 2
+        // (GregoryNet.LocalUnknowns); plain Jacobi would need hundreds of iterations.
         static readonly int[] BlockStart = { 0, 3, 6, 9, 12, 14, 16, 18 };
         static readonly int[] BlockSize = { 3, 3, 3, 3, 2, 2, 2, 2 };
 
@@ -432,26 +406,16 @@ namespace GregoryTerrain
         double mu = -1;
         // The first solve's initial residual norm: what every solve's stop is relative to.
         double firstResidual = -1;
-        // CG's vectors (4 doubles an unknown) and the preconditioner's blocks (2.4): allocated by
-        // the first solve, reused by the reweighting rounds' (a round allocates none of them).
+        // CG's vectors and the blocks: allocated by the first solve, reused by reweighting rounds.
         double[] cgR, cgQ, cgZ, cgP, blockStore;
 
-        /// <summary>
-        /// Drops CG's vectors and blocks. The fitter drops them as soon as no round follows: the
-        /// later a large net's vectors become garbage, the less of them the grid reuses (8193^2 into
-        /// 256 x 256: 52 MiB peak dropped after the solve, 66 just before the grid).
-        /// </summary>
+        /// <summary>Drops CG's vectors and blocks, so the grid that follows can reuse the memory.</summary>
         public void ReleaseWorkspace() => cgR = cgQ = cgZ = cgP = blockStore = null;
 
         /// <summary>
         /// One CG update in one sweep, block by block: x += alpha p, r -= alpha q, z = B^-1 r (0 on
-        /// fixed unknowns), the sums r.r and r.z in unknown order. One sweep, not four: at 256 x 256
-        /// patches a vector is 3.7 MB and the sweeps are bound by memory traffic.
+        /// fixed unknowns), the sums r.r and r.z in unknown order. One sweep, not four: memory bound.
         /// </summary>
-        /// <remarks>
-        /// A second level through the C1 splines (z += T (G_y kron G_x)^-1 T^T r) was tried: 5 to
-        /// 15% fewer iterations for the cost of a product with A each. What CG spends them on is local.
-        /// </remarks>
         void Step(double[] blocks, double alpha, double[] x, double[] p, double[] q, double[] r, double[] z, bool[] fixedMask,
             out double rr, out double rz)
         {
@@ -497,18 +461,16 @@ namespace GregoryTerrain
         }
 
         /// <summary>
-        /// Solves <c>(A + mu I) x = rhs + mu prior</c> by block-Jacobi-preconditioned CG, starting from
-        /// <paramref name="x"/> (overwritten with the solution and returned). Unknowns with
-        /// <paramref name="fixedMask"/> set keep their start values (a neighbour's seam). prior may be
-        /// x itself (the first solve: start at the prior).
+        /// Solves <c>(A + mu I) x = rhs + mu prior</c> by preconditioned CG from <paramref name="x"/>
+        /// (overwritten and returned). Unknowns with <paramref name="fixedMask"/> set keep their start
+        /// values. prior may be x itself.
         /// </summary>
         public double[] Solve(double[] rhs, double[] x, double[] prior, bool[] fixedMask, IProgress<float> progress, float p0, float p1, CancellationToken ct)
         {
             int n = net.Count;
             if (mu < 0)
             {
-                // Mean diagonal of the unweighted A (every global unknown appears at most once in a
-                // patch's local list) sets mu, once: reweighting does not move the ridge.
+                // Mean diagonal of the unweighted A sets mu, once: reweighting does not move the ridge.
                 double trace = 0;
                 for (int j = 0; j < net.Rows; j++)
                     for (int i = 0; i < net.Columns; i++)
@@ -529,15 +491,12 @@ namespace GregoryTerrain
             Multiply(x, q);
             // r = rhs + mu prior - (A + mu) x.
             for (int k = 0; k < n; k++) r[k] = fixedMask != null && fixedMask[k] ? 0 : rhs[k] - q[k] + mu * (prior[k] - x[k]);
-            // z = B^-1 r (a step of 0 leaves x and r as they are), p = z. p is cleared first: it may
-            // hold the last solve's direction, NaN once that solve's residual reached exactly 0, and
-            // 0 * NaN is NaN.
+            // z = B^-1 r, p = z. p is cleared first: the last solve's p may hold NaN, and 0 * NaN is NaN.
             Array.Clear(p, 0, n);
             Step(blocks, 0, x, p, q, r, z, fixedMask, out double r0, out double rz);
             Array.Copy(z, p, n);
             r0 = Math.Sqrt(r0);
-            // Relative to the first solve's initial residual: a reweighting round starts from the
-            // last net, with about 1% of it; Tolerance of its own would ask 100 times the accuracy.
+            // Relative to the first solve's residual: a reweighting round starts near the answer.
             if (firstResidual < 0) firstResidual = r0;
             double stop = Tolerance * Math.Max(r0, firstResidual);
             int it = 0;
@@ -575,9 +534,8 @@ namespace GregoryTerrain
 
         /// <summary>
         /// The error of the net x at every sample: max, RMS, and the binned picture (none when
-        /// <paramref name="map"/> is null: it costs as much as the rest); samples whose |error| exceeds
-        /// <paramref name="collectAbove"/> are added to <paramref name="collected"/> (patch, sample
-        /// within the patch row-major, |error|). 10 multiply-adds a sample, fixed order.
+        /// <paramref name="map"/> is null); samples whose |error| exceeds <paramref name="collectAbove"/>
+        /// go to <paramref name="collected"/> (patch, sample within the patch row-major, |error|).
         /// </summary>
         public void Errors(double[] heights, double[] x, FitErrorMap map, out double max, out double rms,
             double collectAbove, List<(int patch, int sample, double error)> collected,
@@ -612,8 +570,7 @@ namespace GregoryTerrain
                     net.LocalUnknowns(i, j, index);
                     for (int k = 0; k < L; k++) local[k] = x[index[k]];
                     GregoryNet.SlotHeights(local, slot);
-                    // The tensor product takes the second points in the interior slots; each pair
-                    // adds B B t (first - second).
+                    // The tensor product takes the second points; each pair adds B B t (first - second).
                     for (int p = 0; p < 4; p++)
                     {
                         d[p] = slot[FirstSlot[p]] - slot[SecondSlot[p]];
@@ -657,12 +614,10 @@ namespace GregoryTerrain
         }
 
         /// <summary>
-        /// Raises the weights of the given samples (multiplied by <c>(error / tau)^2</c>, Lawson's
-        /// rule toward the min-max fit, squared to get there in fewer rounds) and writes the weighted
-        /// right-hand side into <paramref name="weighted"/> (<paramref name="rhs"/>, the unweighted
-        /// one, plus the extra weights' terms).
-        /// Each patch with a raised weight gets its own Gram matrix: its class's plus
-        /// <c>sum (w - 1) l l^T</c> over its raised samples' local weights l.
+        /// Raises the given samples' weights by <c>(error / tau)^2</c> (Lawson's rule toward the min-max
+        /// fit, squared for fewer rounds) and writes the weighted right-hand side into
+        /// <paramref name="weighted"/> (<paramref name="rhs"/> plus the extra terms). Each patch with a
+        /// raised weight gets its own Gram matrix: its class's plus <c>sum (w - 1) l l^T</c>.
         /// </summary>
         public void Reweight(double[] heights, double[] rhs, List<(int patch, int sample, double error)> samples, double tau, double[] weighted)
         {

@@ -55,9 +55,8 @@ namespace GregoryTerrain
     internal enum FitObjective
     {
         /// <summary>
-        /// Least squares, then, where its max error is above the bilinear baseline's
-        /// (<see cref="BilinearBaseline"/>), reweighted rounds that lower the max until it is at or
-        /// below the baseline's, as long as the RMS stays at or below the baseline's too.
+        /// Least squares, then reweighted rounds that lower the max toward the bilinear baseline's
+        /// (<see cref="BilinearBaseline"/>) while the RMS stays at or below the baseline's.
         /// </summary>
         BoundedMax,
         /// <summary>The least-squares optimum alone.</summary>
@@ -76,28 +75,16 @@ namespace GregoryTerrain
     /// <summary>
     /// Fits an n x m G1 grid of Gregory patches to a height array (W x H doubles, row-major, sample
     /// (c, r) at <c>(c/(W-1), r/(H-1))</c> of the unit square) by linear least squares over every
-    /// sample, in the space of G1 Gregory nets on the grid's lines (<see cref="GregoryNet"/>: per
-    /// vertex a height and two slopes, per edge two cross-boundary slopes, about 7 unknowns a patch):
-    /// <list type="number">
-    /// <item>the least-squares C1 spline (<see cref="SplineSurface.Fit"/>, separable, one pass) gives
-    /// the starting net x0, a C1 net being a Gregory net whose pairs coincide;</item>
-    /// <item>one pass over the samples builds <c>S^T z</c> and the patch Gram matrices
-    /// (<see cref="GregoryLeastSquares"/>), then Jacobi-preconditioned conjugate gradients from x0
-    /// solve the normal equations, with a tiny ridge toward x0 for what the samples leave open;</item>
-    /// <item>the net's 20 points per patch are the grid: G1 by construction (equal cross-boundary
-    /// derivatives on both sides of every edge, one tangent plane at every vertex);</item>
-    /// <item>a last pass measures the error at every sample and bins it into <see cref="FitErrorMap"/>.</item>
-    /// </list>
-    /// Why Gregory nets and not the C1 splines alone: the pairs free each edge's cross-boundary slope
-    /// from the twists at its ends, 7 unknowns a patch against 4, in a space that contains the C1
-    /// splines, so the fit can only get closer to the samples.
+    /// sample, in the space of G1 Gregory nets (<see cref="GregoryNet"/>): the C1 spline
+    /// (<see cref="SplineSurface.Fit"/>) starts CG (<see cref="GregoryLeastSquares"/>), and the net's
+    /// 20 points a patch are the grid, G1 by construction. The pairs free each edge's cross slope from
+    /// the twists, so the fit is never worse than the spline (fitting.md, "What the fit is").
     /// </summary>
     internal static class HeightmapFitter
     {
         /// <summary>
         /// Fits the grid; reports progress in [0, 1] and honours cancellation (throws
-        /// OperationCanceledException and returns nothing half-built). The one entry point that
-        /// checks its inputs first (<see cref="CheckInputs"/>).
+        /// OperationCanceledException, nothing half-built). Checks its inputs first (<see cref="CheckInputs"/>).
         /// </summary>
         public static HeightmapFit Fit(double[] heights, int width, int height, int columns, int rows,
             IProgress<float> progress = null, CancellationToken cancellationToken = default, FitObjective objective = FitObjective.BoundedMax)
@@ -107,11 +94,9 @@ namespace GregoryTerrain
         }
 
         /// <summary>
-        /// Fits a heightmap that continues <paramref name="west"/> eastwards: its first column of
-        /// samples is the west fit's last one, rows are the same rows, and samples are as far apart.
-        /// The east net's first grid line (its vertices' heights and slopes, its edges' cross
-        /// slopes) is held at the west net's last one, so the two grids joined side by side
-        /// (<see cref="PatchGridJoin.WestEast"/>) are G1 across the seam. Its rows must equal west's.
+        /// Fits a heightmap that continues <paramref name="west"/> eastwards (its first sample column is
+        /// west's last, same rows and spacing). The first grid line is held at west's last, so the grids
+        /// joined by <see cref="PatchGridJoin.WestEast"/> are G1 across the seam.
         /// </summary>
         public static HeightmapFit FitEastOf(HeightmapFit west, double[] heights, int width, int height, int columns,
             IProgress<float> progress = null, CancellationToken cancellationToken = default, FitObjective objective = FitObjective.BoundedMax)
@@ -124,12 +109,8 @@ namespace GregoryTerrain
         }
 
         /// <summary>
-        /// Fits a heightmap that continues <paramref name="south"/> northwards: the mirror of
-        /// <see cref="FitEastOf"/> across the diagonal. Its first row of samples is the south fit's
-        /// last one, columns are the same columns, and samples are as far apart. The north net's first
-        /// grid line (heights and slopes along it as they are, slopes across it rescaled) is held at the
-        /// south net's last one, so the grids joined one above the other
-        /// (<see cref="PatchGridJoin.SouthNorth"/>) are G1 across the seam. Its columns equal south's.
+        /// Fits a heightmap that continues <paramref name="south"/> northwards: <see cref="FitEastOf"/>
+        /// mirrored across the diagonal, joined by <see cref="PatchGridJoin.SouthNorth"/>.
         /// </summary>
         public static HeightmapFit FitNorthOf(HeightmapFit south, double[] heights, int width, int height, int rows,
             IProgress<float> progress = null, CancellationToken cancellationToken = default, FitObjective objective = FitObjective.BoundedMax)
@@ -142,15 +123,11 @@ namespace GregoryTerrain
         }
 
         /// <summary>
-        /// Fits the north-east tile of a 2 x 2 block fitted tile by tile: its first column is held at
-        /// <paramref name="west"/>'s last (the north-west tile, rows from it) and its first row at
-        /// <paramref name="south"/>'s last (the south-east tile, columns from it). With the south-west
-        /// tile fitted first, south-east by <see cref="FitEastOf"/> and north-west by
-        /// <see cref="FitNorthOf"/>, the four grids joined (two <see cref="PatchGridJoin.WestEast"/>,
-        /// one <see cref="PatchGridJoin.SouthNorth"/>) are G1 across every seam and at the corner
-        /// where the four meet. The corner vertex is held by both neighbours, so they must agree on it
-        /// (its height and both slopes): they do when both continue the same south-west tile, and a
-        /// pair that does not is refused.
+        /// Fits the north-east tile of a 2 x 2 block: its first column held at <paramref name="west"/>'s
+        /// last and its first row at <paramref name="south"/>'s last, after <see cref="FitEastOf"/> and
+        /// <see cref="FitNorthOf"/>, so the four grids (<see cref="PatchGridJoin.WestEast"/>,
+        /// <see cref="PatchGridJoin.SouthNorth"/>) are G1 at every seam and the corner. Both neighbours
+        /// hold the corner vertex; a pair that disagrees on it is refused.
         /// </summary>
         public static HeightmapFit FitNorthEastOf(HeightmapFit west, HeightmapFit south, double[] heights, int width, int height,
             IProgress<float> progress = null, CancellationToken cancellationToken = default, FitObjective objective = FitObjective.BoundedMax)
@@ -165,7 +142,7 @@ namespace GregoryTerrain
             return FitChecked(heights, width, height, columns, rows, west, south, progress, cancellationToken, objective);
         }
 
-        /// <summary>A neighbour fit must carry its net, consistent with its grid (a fit from <see cref="Fit"/> or its kin does).</summary>
+        /// <summary>A neighbour fit must carry its net, consistent with its grid.</summary>
         static void CheckNeighbour(HeightmapFit fit, string name)
         {
             if (fit == null) throw new ArgumentNullException(name);
@@ -182,13 +159,10 @@ namespace GregoryTerrain
                 throw new ArgumentException($"{field} = {value} samples, the {neighbour} fit has {neighbours}: the tiles must share their {what}.", field);
         }
 
-        /// <summary>Relative tolerance on the corner vertex's slopes the two neighbours of a north-east tile both hold.</summary>
+        /// <summary>Relative tolerance on the corner vertex's slopes both neighbours of a north-east tile hold.</summary>
         const double CornerTolerance = 1e-9;
 
-        /// <summary>
-        /// The north-east tile's corner vertex as each neighbour would hold it (z, dx, dy in this
-        /// tile's units) must agree: else no net can be G1 with both. Checked before any work.
-        /// </summary>
+        /// <summary>The corner vertex as each neighbour holds it (z, dx, dy) must agree, else no net is G1 with both.</summary>
         static void CheckCorner(HeightmapFit west, HeightmapFit south, int width, int height, int columns, int rows)
         {
             int wv = west.Net.Vertex(west.Net.Columns, 0), sv = south.Net.Vertex(0, south.Net.Rows);
@@ -214,9 +188,8 @@ namespace GregoryTerrain
 
         /// <summary>
         /// Fits with the fewest patches that bring the chosen error to <paramref name="target"/> or
-        /// below: columns double from 1 until the target is met (or <paramref name="maxColumns"/> is
-        /// reached), then bisect; rows follow the heightmap's aspect. Returns the last fit tried that
-        /// met the target, or the one at maxColumns if none did (its error then says so).
+        /// below: columns double, then bisect, up to <paramref name="maxColumns"/>; rows follow the
+        /// aspect. Returns the last fit that met the target, else the one at maxColumns.
         /// </summary>
         public static HeightmapFit FitToTarget(double[] heights, int width, int height, double target, FitErrorKind kind, int maxColumns,
             IProgress<float> progress = null, CancellationToken cancellationToken = default)
@@ -253,10 +226,7 @@ namespace GregoryTerrain
         public static int RowsFor(int columns, int width, int height) =>
             Math.Max(1, (int)Math.Round(columns * (double)(height - 1) / (width - 1)));
 
-        /// <summary>
-        /// The fitter's input checks, all before any work: a W x H array of finite samples and a
-        /// grid shape the GPU buffers can hold (<see cref="GpuLayout.CheckSize"/>).
-        /// </summary>
+        /// <summary>Input checks before any work: W x H finite samples, a grid the GPU can hold (<see cref="GpuLayout.CheckSize"/>).</summary>
         public static void CheckInputs(double[] heights, int width, int height, int columns, int rows)
         {
             CheckHeights(heights, width, height);
@@ -271,9 +241,9 @@ namespace GregoryTerrain
         public const double RmsAllowance = 0.02;
         /// <summary>Samples reweighted in one round at most (bounds the memory of the lists).</summary>
         const int MaxCollected = 1 << 16;
-        /// <summary>What one solve allocates per unknown: x, the right-hand side, CG's r, q, z, p, and the block inverses (2.4 doubles an unknown).</summary>
+        /// <summary>Doubles one solve allocates per unknown: x, the right-hand side, CG's r, q, z, p, the block inverses.</summary>
         const long SolverBytesPerUnknown = 9 * sizeof(double);
-        /// <summary>Garbage from the solve above which the fit collects it before allocating the grid (see step 6).</summary>
+        /// <summary>Garbage from the solve above which the fit collects it before allocating the grid (step 6).</summary>
         const long CollectAboveBytes = 4L << 20;
 
         static HeightmapFit FitChecked(double[] heights, int width, int height, int columns, int rows, HeightmapFit west,
@@ -284,8 +254,7 @@ namespace GregoryTerrain
             var ls = new GregoryLeastSquares(net, width, height);
             double[] rhs = ls.RightHandSide(heights, progress, 0f, 0.3f, ct);
 
-            // 2. The C1 spline from the same pass (its right-hand side is T^T S^T z): the starting
-            // net and the ridge's prior.
+            // 2. The C1 spline from the same pass: the starting net and the ridge's prior.
             C1SplineBasis bx = new C1SplineBasis(columns), by = new C1SplineBasis(rows);
             BandedCholesky gy = by.NormalMatrix(height), gx = bx.NormalMatrix(width);
             SplineSurface surface = SplineSurface.Solve(bx, by, net.SplineRightHandSide(rhs), gy, gx);
@@ -297,8 +266,7 @@ namespace GregoryTerrain
             ls.Solve(rhs, x, x, fixedMask, progress, 0.3f, 0.5f, ct);
             int iterations = ls.Iterations;
 
-            // 4. Error at every sample, from the same weights the grid's patches evaluate; with the
-            // bounded max, the baseline to hold it to and the samples above ReweightThreshold of it.
+            // 4. Error at every sample, the baseline and the samples above ReweightThreshold of it.
             double bMax = double.NaN, bRms = double.NaN;
             bool bounded = objective == FitObjective.BoundedMax && BilinearBaseline.Measure(heights, width, height, columns, rows, out bMax, out bRms);
             double tau = bounded ? ReweightThreshold * bMax : double.PositiveInfinity;
@@ -308,10 +276,8 @@ namespace GregoryTerrain
             double lsMax = max, lsRms = rms;
             if (collected.Count > MaxCollected) collected.RemoveRange(MaxCollected, collected.Count - MaxCollected);
 
-            // 5. Lawson-style reweighting toward the min-max fit, while the max is above the
-            // baseline's and the RMS stays at or below the baseline's (or, where least squares
-            // itself is above it, within RmsAllowance of least squares): each round raises the
-            // weights of the samples above tau and re-solves from the last net.
+            // 5. Lawson-style reweighting while the max is above the baseline's and the RMS holds
+            // (or stays within RmsAllowance where least squares is already above it).
             int rounds = 0;
             double rmsCap = rms <= bRms ? bRms : rms * (1 + RmsAllowance);
             if (!(bounded && max > bMax)) ls.ReleaseWorkspace();
@@ -320,11 +286,8 @@ namespace GregoryTerrain
                 double[] prior = new double[net.Count];
                 net.FromSpline(surface.Coefficients, prior);
                 Hold(west, south, net, prior, width, height);
-                // One candidate net and list, reused round after round (swapped with the kept ones
-                // when a round lowers the max): a round allocates nothing the size of the net, so
-                // the rounds add a fixed few vectors to the fit's peak memory. The rounds measure
-                // max, RMS and the samples above tau without the error map (half a pass's time);
-                // the kept net's map is drawn once after the last round.
+                // One candidate net and list, swapped with the kept ones when a round lowers the max: rounds
+                // allocate nothing net-sized. Rounds skip the error map; the kept net's is drawn once at the end.
                 double[] weighted = new double[net.Count], next = new double[net.Count];
                 var nextCollected = new List<(int patch, int sample, double error)>();
                 for (int round = 1; round <= MaxReweightRounds && max > bMax && collected.Count > 0; round++)
@@ -354,13 +317,8 @@ namespace GregoryTerrain
                 }
             }
 
-            // 6. The grid: the net's points, G1 by construction. The solves' vectors (CG's four, the
-            // block inverses, the right-hand sides: about 9 doubles an unknown, 12 with rounds) and the
-            // spline's are garbage now, in the large-object heap a gen-0 collection leaves alone;
-            // on a large net they are collected before the grid's patches (20 points each, the
-            // largest single allocation of the fit) are allocated, so that the fit's peak memory is
-            // the larger of the solve's and the grid's rather than their sum (at 256 x 256 patches
-            // 30 MiB of garbage against a 34 MiB grid). One blocking collection, a few ms.
+            // 6. The grid. The solves' vectors are large-object-heap garbage a gen-0 collection leaves;
+            // collecting them first makes peak memory the larger of solve and grid, not their sum.
             rhs = null;
             collected = null;
             ls = null;
@@ -376,11 +334,7 @@ namespace GregoryTerrain
 
         /// <summary>
         /// Holds the neighbours' edges in x0 and returns the mask of held unknowns (null: none held).
-        /// West: its last x line becomes this net's first; south: its last y line this net's first.
-        /// Along the line, heights and slopes are copied as they are (the tiles share that axis's
-        /// samples and patch count, so an offset means the same slope); across it, slopes (vertex
-        /// offsets and edge offsets) are rescaled from the neighbour's patch size to this one's. The
-        /// corner both hold (north-east tile) is written by both; CheckCorner has made sure they agree.
+        /// Along the line values are copied; slopes across it are rescaled to this tile's patch size.
         /// </summary>
         static bool[] Hold(HeightmapFit west, HeightmapFit south, GregoryNet net, double[] x0, int width, int height)
         {

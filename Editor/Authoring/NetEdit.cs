@@ -6,21 +6,15 @@ namespace GregoryTerrain
 {
     /// <summary>
     /// The engine under <see cref="PatchBrush"/> and <see cref="PatchRegionFit"/>: a window of a grid's
-    /// patches, copied, edited as the height net of their control points, then made G1 again around
-    /// what changed, and handed back as a <see cref="PatchEdit"/> (the grid itself is never written).
-    ///
-    /// <para><b>The net.</b> Node (a, b), a in 0..3n, b in 0..3m, is slot <c>(a - 3i, b - 3j)</c> of
-    /// patch (i, j); a node on a shared line is one point stored in every patch sharing it, and
-    /// <see cref="SetNodeZ"/> writes all copies with the same bits, so shared edges stay identical.
-    /// Interior slots 5, 6, 9, 10 are nodes too; the second points of the pairs (16..19) are not and
-    /// are set per patch (<see cref="SetZ"/>). Edits change heights (z) only.</para>
-    ///
-    /// <para><b>G1 again, locally.</b> Two things can break: (1) at a grid vertex the tangent plane
-    /// is spanned by the two boundary points either side along x and along y, which must stay on one
-    /// line with the vertex (<see cref="RepairCorners"/> moves them, in z, by the least change, or only
-    /// the editable one); (2) each shared edge's interior points (<see cref="JoinEdges"/>, Core's
-    /// G1Builder on those edges only). Only edges whose inputs changed are rejoined, so patches
-    /// beyond the edited ones and their neighbours keep every bit.</para>
+    /// patches, copied, edited as the height net of their control points, made G1 again around what
+    /// changed, and handed back as a <see cref="PatchEdit"/> (the grid itself is never written).
+    /// <para><b>The net.</b> Node (a, b) is slot <c>(a - 3i, b - 3j)</c> of patch (i, j); a shared
+    /// node is stored in every patch sharing it and <see cref="SetNodeZ"/> writes all copies with the
+    /// same bits. The pairs' second points (16..19) are set per patch (<see cref="SetZ"/>). Edits
+    /// change z only.</para>
+    /// <para><b>G1 again, locally.</b> <see cref="RepairCorners"/> puts each vertex back on one line
+    /// with its boundary neighbours; <see cref="JoinEdges"/> rejoins only the edges whose inputs
+    /// changed, so patches further out keep every bit.</para>
     /// </summary>
     internal sealed class NetEdit
     {
@@ -112,14 +106,9 @@ namespace GregoryTerrain
 
         /// <summary>
         /// At each grid vertex (I, J) of the range whose star (the vertex and the four boundary points
-        /// next to it) changed, puts the star back on two lines: along x when the vertex is on an
-        /// interior vertical line (the vertex between its x neighbours), along y when on an interior
-        /// horizontal one. The heights of the editable star points move by the least change (in the
-        /// sum of squares) that meets both conditions at once; points that are not editable stay.
-        /// Keeping the vertex fixed instead would hold every peak on a vertex for ever (its arms
-        /// would be pulled up to it): a smoothing brush could not lower it. Distances are in x, y,
-        /// so the lines are exact when the three points line up in x, y (straight grid lines, as
-        /// the fitter and flat grids make them).
+        /// next to it) changed, puts the star back on two lines (x on an interior vertical line, y on an
+        /// interior horizontal one) by the least change, in the sum of squares, of the editable points'
+        /// heights. The vertex moves too: held fixed, a peak on a vertex could never be smoothed down.
         /// </summary>
         public void RepairCorners(int vi0, int vj0, int vi1, int vj1, Func<int, int, bool> editable)
         {
@@ -136,11 +125,9 @@ namespace GregoryTerrain
         }
 
         /// <summary>
-        /// Star nodes 0..4 = centre, -x, +x, -y, +y. Constraint c (0: x line, 1: y line) is
-        /// <c>g_c . z = 0</c> with <c>g = (-1, tr/(tl+tr), tl/(tl+tr))</c> on (centre, one side, other
-        /// side); the weighted projection <c>z -= W G^T (G W G^T)^-1 G z</c> with W = 1 on editable
-        /// nodes, 0 on fixed ones. A constraint with no editable node is left as it is (G1Builder's
-        /// corner check then reports it if it does not hold).
+        /// Star nodes 0..4 = centre, -x, +x, -y, +y. Constraint c is <c>g_c . z = 0</c> with
+        /// <c>g = (-1, tr/(tl+tr), tl/(tl+tr))</c>; the weighted projection <c>z -= W G^T (G W G^T)^-1 G z</c>,
+        /// W = 1 on editable nodes, 0 on fixed. A constraint with no editable node is left as it is.
         /// </summary>
         void Straighten(int a, int b, bool alongX, bool alongY, Func<int, int, bool> editable)
         {
@@ -188,8 +175,7 @@ namespace GregoryTerrain
                 double det = m00 * m11 - m01 * m01;
                 if (!(Math.Abs(det) > 1e-12 * m00 * m11))
                 {
-                    // Both lines hang on the same single editable point (the centre): one line's
-                    // condition fixes it; the other holds only if it held before.
+                    // Both lines hang on the centre alone: one fixes it; the other holds only if it held before.
                     l0 = r0 / m00; l1 = 0;
                 }
                 else { l0 = (r0 * m11 - r1 * m01) / det; l1 = (r1 * m00 - r0 * m01) / det; }
@@ -203,10 +189,9 @@ namespace GregoryTerrain
         }
 
         /// <summary>
-        /// Rejoins G1 every shared edge whose inputs (its boundary points and the points next to its
-        /// ends) changed, with <paramref name="rule"/>(i, j, vertical) choosing which side keeps its
-        /// interior points; (i, j) is the low patch. Throws InvalidOperationException if such an edge
-        /// reaches outside the window (the window was cut too small: a bug, not bad input).
+        /// Rejoins G1 every shared edge whose inputs changed, <paramref name="rule"/>(i, j, vertical)
+        /// choosing which side keeps its interior points ((i, j) the low patch). Throws
+        /// InvalidOperationException if such an edge reaches outside the window (a bug, not bad input).
         /// </summary>
         public void JoinEdges(Func<int, int, bool, EdgeRule> rule, double relativeTolerance = 1e-9)
         {

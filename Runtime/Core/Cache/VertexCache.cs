@@ -24,10 +24,8 @@ namespace GregoryTerrain
 
     /// <summary>
     /// The vertex cache's layout (GT_VERTEX_CACHE; internals.md, "Vertex cache"), name for name as
-    /// <c>Shaders/Cache/VertexCache.hlsl</c>: a compute pass evaluates every vertex the tessellator will make
-    /// at a tile's integer factors into a fixed slot, and the domain stage reads it back by index.
-    /// With "integer" partitioning a factor-F edge's vertices sit at exactly k / F and the inside grid
-    /// at (i / Iu, j / Iv), which is what makes the slots known in advance.
+    /// <c>Shaders/Cache/VertexCache.hlsl</c>: a compute pass evaluates every vertex the tessellator will
+    /// make at a tile's integer factors into a fixed slot; the domain stage reads it back by index.
     /// </summary>
     internal static class VertexCache
     {
@@ -38,11 +36,9 @@ namespace GregoryTerrain
         public static int Uint4sPerRecord(bool snow) => snow ? 2 : 1;
 
         /// <summary>
-        /// L from the <c>_Tess</c> float4 the GPU gets (<see cref="TessellationSettings.ToFloat4"/>:
-        /// (tiles, maxFactor, targetPixels, uniformFactor)): the uniform factor when set, else the
-        /// maximum factor, rounded up, in [1, 64]: the largest integer factor CacheTileFactors can give
-        /// a tile. Throws ArgumentException naming the component when the value it reads is not
-        /// finite (or w is negative).
+        /// L from the <c>_Tess</c> float4 (<see cref="TessellationSettings.ToFloat4"/>): the uniform factor
+        /// when set, else the maximum factor, rounded up, in [1, 64]. Throws ArgumentException naming the
+        /// component when it is not finite (or w is negative).
         /// </summary>
         public static int FactorLimit(Float4 tess)
         {
@@ -51,8 +47,7 @@ namespace GregoryTerrain
             float f = tess.w > 0f ? tess.w : tess.y;
             if (!GMath.isfinite(f))
                 throw new ArgumentException(FormattableString.Invariant($"_Tess.y (maxFactor, {tess.y:R}) must be finite"), nameof(tess));
-            // The kernel rounds every factor up (63.2 -> 64 segments) and never below 1; ceil and the
-            // clamp commute, so the largest factor it can give is this.
+            // The kernel rounds every factor up and clamps to [1, 64]; ceil and the clamp commute.
             return (int)GMath.clamp(MathF.Ceiling(f), 1f, MaxFactor);
         }
 
@@ -78,9 +73,8 @@ namespace GregoryTerrain
         public const int VertexThreadsPerGroup = 128;
 
         /// <summary>
-        /// The surface samples of a tile's adaptive factors (HLSL <c>GT_TILE_FACTOR_SAMPLES</c>): 4 corners,
-        /// 7 inner points on each of 6 lines, the 2 midlines' 4 end points, the centre. CacheTileFactors
-        /// runs one group a tile (dispatch (T, T, 1), T the tiles per axis) and one sample a lane, so they must fit a group.
+        /// The surface samples of a tile's adaptive factors (HLSL <c>GT_TILE_FACTOR_SAMPLES</c>).
+        /// CacheTileFactors runs one group a tile and one sample a lane, so they must fit a group.
         /// </summary>
         public const int FactorSamplesPerTile = 4 + 6 * 7 + 4 + 1;
 
@@ -89,7 +83,7 @@ namespace GregoryTerrain
 
         /// <summary>
         /// The most points a tile at factors up to L has: anchored, its cell's whole (L + 1)^2 grid
-        /// (the border too: <see cref="ClippedCell"/> blends a clipped tile's edge from it) and 4 edges of L + 1.
+        /// (<see cref="ClippedCell"/> blends a clipped tile's edge from it) and 4 edges of L + 1.
         /// </summary>
         public static int MaxTilePoints(int limit)
         {
@@ -98,9 +92,8 @@ namespace GregoryTerrain
         }
 
         /// <summary>
-        /// G, the CacheTileVertices groups that share one tile (dispatch (T, T, G)), so that no group
-        /// makes more than <see cref="PassesPerGroup"/> passes: one group a tile made the pass wait on
-        /// its largest tile. HLSL <c>VertexCacheGroupsPerTile</c>.
+        /// G, the CacheTileVertices groups sharing one tile (dispatch (T, T, G)), so that no group makes
+        /// more than <see cref="PassesPerGroup"/> passes. HLSL <c>VertexCacheGroupsPerTile</c>.
         /// </summary>
         public static int GroupsPerTile(int limit)
         {
@@ -115,51 +108,36 @@ namespace GregoryTerrain
         public static long FactorIndex(int tile) => 2L * tile;
 
         /// <summary>
-        /// Index in <c>_TileFactors</c> of the key tile t's slots were last evaluated at (the
-        /// <c>_Range</c>, or anchored the tile's span): after the T^2 factor records (T tiles per axis). HLSL
-        /// <c>VertexCacheEvaluatedRangeIndex</c>.
+        /// Index in <c>_TileFactors</c> of the key tile t's slots were last evaluated at, after the T^2
+        /// factor records. HLSL <c>VertexCacheEvaluatedRangeIndex</c>.
         /// </summary>
         public static long EvaluatedRangeIndex(int tile, int tiles) => 2L * tiles * tiles + tile;
 
         /// <summary>
-        /// Index in <c>_TileFactors</c> of the key of the cell whose samples and factors tile t keeps
-        /// (the <c>_Range</c>, or anchored the cell's span): right after the slots' keys, so that one
-        /// upload of 2 T^2 zeros forgets both. HLSL <c>VertexCacheCellKeyIndex</c>.
+        /// Index in <c>_TileFactors</c> of the key of tile t's cell, right after the slots' keys (one upload
+        /// of 2 T^2 zeros forgets both). HLSL <c>VertexCacheCellKeyIndex</c>.
         /// </summary>
         public static long CellKeyIndex(int tile, int tiles) => 3L * tiles * tiles + tile;
 
         /// <summary>float4 of keys per tile that a renderer zeroes to make the kernels evaluate the tile afresh: the slots' and the cell's.</summary>
         public const int KeyFloat4sPerTile = 2;
 
-        /// <summary>
-        /// Index in <c>_TileFactors</c> of factor sample s of tile t (its object position, w = 1 once
-        /// written): after the keys. HLSL <c>VertexCacheFactorSampleIndex</c>.
-        /// </summary>
+        /// <summary>Index in <c>_TileFactors</c> of factor sample s of tile t, after the keys. HLSL <c>VertexCacheFactorSampleIndex</c>.</summary>
         public static long FactorSampleIndex(int tile, int s, int tiles) => 4L * tiles * tiles + (long)tile * FactorSamplesPerTile + s;
 
-        /// <summary>
-        /// Index in <c>_TileFactors</c> of tile t's cell factors (the float factors its cell's samples
-        /// gave, before rounding): 2 float4, after the
-        /// samples. HLSL <c>VertexCacheCellFactorIndex</c>.
-        /// </summary>
+        /// <summary>Index in <c>_TileFactors</c> of tile t's cell factors (2 float4, before rounding). HLSL <c>VertexCacheCellFactorIndex</c>.</summary>
         public static long CellFactorIndex(int tile, int tiles) => (4L + FactorSamplesPerTile) * tiles * tiles + 2L * tile;
 
         /// <summary>
         /// Index in <c>_TileFactors</c> of the inputs tile t's cell factors were computed with
-        /// (<see cref="FactorInputsFloat4s"/> float4: the camera's object-to-clip rows, then screen
-        /// width and height, max factor and target): after the cell factors. HLSL
-        /// <c>VertexCacheFactorInputsIndex</c>.
+        /// (<see cref="FactorInputsFloat4s"/> float4). HLSL <c>VertexCacheFactorInputsIndex</c>.
         /// </summary>
         public static long FactorInputsIndex(int tile, int tiles) => (6L + FactorSamplesPerTile) * tiles * tiles + (long)FactorInputsFloat4s * tile;
 
         /// <summary>float4 per tile of <see cref="FactorInputsIndex"/>.</summary>
         public const int FactorInputsFloat4s = 5;
 
-        /// <summary>
-        /// How the last pass decided a tile's cell factors (z of the cell record's second float4; HLSL
-        /// <c>GT_CELL_FACTORS_*</c>): from the surface (the cell moved, or its key was zeroed), from
-        /// the kept samples (the camera or the knob moved), or held as they were.
-        /// </summary>
+        /// <summary>How the last pass decided a tile's cell factors (HLSL <c>GT_CELL_FACTORS_*</c>).</summary>
         public const float CellFactorsSampled = 0f, CellFactorsRescaled = 1f, CellFactorsHeld = 2f;
 
         /// <summary>Inside grid point (i, j) of a tile whose inside factor along u is <paramref name="insideU"/>.</summary>
@@ -192,10 +170,8 @@ namespace GregoryTerrain
         }
 
         /// <summary>
-        /// HLSL <c>VertexCacheIntegerFactors</c>: each factor rounded up to an integer in [1, 64] (the
-        /// segments of "integer" partitioning; rounding up keeps the fractional factor's error bound),
-        /// as drawn (<see cref="DrawnFactors"/>: the tessellator treats a lone inside 1 as 2, Vulkan
-        /// spec, quad tessellation; D3D11 likewise). Culled stays all zero.
+        /// HLSL <c>VertexCacheIntegerFactors</c>: each factor rounded up to an integer in [1, 64] (keeps
+        /// the fractional factor's error bound), as drawn (<see cref="DrawnFactors"/>). Culled stays zero.
         /// </summary>
         public static TileFactorSet IntegerFactors(TileFactorSet f)
         {
@@ -220,10 +196,9 @@ namespace GregoryTerrain
         internal static float RoundToPoint(float x) => MathF.Round(x, MidpointRounding.AwayFromZero);
 
         /// <summary>
-        /// The points the kernel CacheTileVertices writes for one tile, in its order ("inside points,
-        /// then edge 0, 1, 2, 3"; HLSL <c>VertexCachePoint</c>): tess coordinate and slot. Inside points
-        /// are the (Iu - 1) x (Iv - 1) interior of the grid (its border is the edges'), or with
-        /// <paramref name="anchored"/> tiles the whole (Iu + 1) x (Iv + 1) grid (HLSL <c>VertexCacheGridPoints</c>).
+        /// The points CacheTileVertices writes for one tile, in its order (HLSL <c>VertexCachePoint</c>):
+        /// tess coordinate and slot; inside points are the grid's interior, or with <paramref name="anchored"/>
+        /// the whole grid (HLSL <c>VertexCacheGridPoints</c>).
         /// </summary>
         public static IEnumerable<(Float2 tess, int slot)> TilePoints(TileFactorSet f, int limit, bool anchored = false)
         {
@@ -245,11 +220,9 @@ namespace GregoryTerrain
         }
 
         /// <summary>
-        /// HLSL <c>PackCachedVaryings</c>: the fragment's three numbers (Lambert-encoded world normal
-        /// e, |e| &lt;= 2; height weight s in [0, 1]) in one uint: e.x and e.y in 11 bits each, steps of
-        /// 2 / 1023 with 0 exact, s in the top 10 bits, steps of 1 / 1023. Out-of-range values clamp.
-        /// Rounds half to even (MathF.Round); HLSL's round may not on ties, which only the unlikely
-        /// exact halves reach: compare packed words to one step.
+        /// HLSL <c>PackCachedVaryings</c>: the Lambert-encoded world normal e (|e| &lt;= 2) and height weight
+        /// s in [0, 1] in one uint: e.x, e.y in 11 bits (0 exact), s in the top 10. Out-of-range values
+        /// clamp. Rounds half to even; HLSL's round may not on ties: compare packed words to one step.
         /// </summary>
         public static uint PackCachedVaryings(Float3 normalAndHeightWeight)
         {
@@ -267,9 +240,8 @@ namespace GregoryTerrain
         }
 
         /// <summary>
-        /// The record of a vertex (HLSL <c>VertexCacheRecordPart</c>), as 4 R words, for an identity
-        /// object-to-world (the rig's): the GPU encodes the world normal, which is then the object
-        /// normal. <paramref name="heightWeight"/>: <see cref="TerrainVertex.HeightWeight"/>.
+        /// The record of a vertex (HLSL <c>VertexCacheRecordPart</c>) as 4 R words, for an identity
+        /// object-to-world. <paramref name="heightWeight"/>: <see cref="TerrainVertex.HeightWeight"/>.
         /// </summary>
         public static uint[] Record(TerrainVertexOutput v, float heightWeight, bool snow)
         {

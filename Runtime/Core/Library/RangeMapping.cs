@@ -32,9 +32,8 @@ namespace GregoryTerrain
         }
 
         /// <summary>
-        /// Eq. 10 as printed: <c>u = (c - a)/(e - a) + o (1 - (g - e)/(a - e))</c>. Kept only so tests can
-        /// show its error: at o = 1 it gives <c>(c + g - 2a)/(e - a)</c> instead of <c>(g - a)/(e - a)</c>,
-        /// so it is right only when <c>c == a</c>. Use <see cref="LocalCoordinate(double, double, double)"/>.
+        /// Eq. 10 as printed, kept only so tests can show its error: right only when <c>c == a</c>.
+        /// Use <see cref="LocalCoordinate(double, double, double)"/>.
         /// </summary>
         public static double PrintedEq10(double c, double g, double a, double e, double o)
         {
@@ -46,9 +45,8 @@ namespace GregoryTerrain
 
         /// <summary>
         /// The range coordinate <c>o = ((ti + s) / M, (tj + t) / M)</c> of tess coordinate (s, t) in tile
-        /// (ti, tj) of an M x M tiling. <c>ti + s</c> is formed first: on a shared edge one tile has
-        /// s = 1 and its neighbour ti + 1 and s = 0, and both sums are the same small integer, exactly,
-        /// so the two tiles divide the same float by the same M and get bit-identical o.
+        /// (ti, tj) of an M x M tiling. <c>ti + s</c> is formed first: on a shared edge both tiles' sums are
+        /// the same small integer, exactly, so they get bit-identical o.
         /// </summary>
         public static Float2 RangeCoordinate(int ti, int tj, float s, float t, int tiles)
         {
@@ -73,9 +71,8 @@ namespace GregoryTerrain
         }
 
         /// <summary>
-        /// The paper's float path, <c>q = c + o (g - c)</c> with a plain float4 range (what
-        /// <see cref="ToTerrainPoint"/> reduces to with origin 0). Near q ~ 0.7 it cannot resolve
-        /// less than ~6e-8: at a range width of 1e-6 vertices snap to that grid and jitter.
+        /// The paper's float path, <c>q = c + o (g - c)</c> with a plain float4 range (<see cref="ToTerrainPoint"/>
+        /// with origin 0): it jitters at deep zoom (precision.md, "What breaks").
         /// </summary>
         public static Float2 PlainGlobalPoint(Float4 range, int tiles, int ti, int tj, float s, float t)
         {
@@ -86,9 +83,8 @@ namespace GregoryTerrain
         // ---------------------------------------------------------------- range origin (deep zoom)
 
         /// <summary>
-        /// The two constants the GPU gets: <c>_Range = (c - O.x, d - O.y, g - O.x, h - O.y)</c> rounded to
-        /// float (the differences are formed in double, so only the final rounding is lost, relative to
-        /// the small local size) and <c>_RangeOrigin = (hi.x, hi.y, lo.x, lo.y)</c>.
+        /// The two constants the GPU gets: <c>_Range = (c - O.x, d - O.y, g - O.x, h - O.y)</c> formed in
+        /// double, rounded to float once, and <c>_RangeOrigin = (hi.x, hi.y, lo.x, lo.y)</c>.
         /// </summary>
         public static void EncodeRange(TerrainRange range, RangeOrigin origin, out Float4 rangeF, out Float4 rangeOriginF)
         {
@@ -106,9 +102,8 @@ namespace GregoryTerrain
 
         /// <summary>
         /// The domain shader's global point as a <see cref="TerrainPoint"/>:
-        /// <c>local = originLo + (range.xy + o (range.zw - range.xy))</c> in float, <c>originHi</c> passed on.
-        /// Every term of <c>local</c> is of the size of the local range, so float keeps ~1e-13 absolute
-        /// at width 1e-6. With origin 0 it is the plain <c>c + o (g - c)</c> bit for bit (0 + x == x).
+        /// <c>local = originLo + (range.xy + o (range.zw - range.xy))</c> in float, <c>originHi</c> passed on;
+        /// every term is of the local range's size. With origin 0 it is the plain <c>c + o (g - c)</c> bit for bit.
         /// </summary>
         public static TerrainPoint ToTerrainPoint(Float4 rangeF, Float4 rangeOriginF, int tiles, int ti, int tj, float s, float t)
         {
@@ -120,20 +115,16 @@ namespace GregoryTerrain
         }
 
         /// <summary>
-        /// <c>q</c> rounded to float, <c>originHi + local</c>: good enough to find the patch that holds q
-        /// (a point within ~6e-8 of a grid line may pick either neighbour, and both agree there because
-        /// the surface is continuous), not for the local coordinate: use <see cref="PatchLocalUV(TerrainPoint, Float4, Float4)"/>.
+        /// <c>q</c> rounded to float, <c>originHi + local</c>: good enough to find the patch (neighbours
+        /// agree near a line), not for the local coordinate: use <see cref="PatchLocalUV(TerrainPoint, Float4, Float4)"/>.
         /// </summary>
         public static Float2 Approximate(TerrainPoint p) => p.originHi + p.local;
 
         /// <summary>
         /// The corrected eq. 10 in float for a <see cref="TerrainPoint"/> and a float region (a, b, e, f):
-        /// <c>u = ((originHi.x - a) + local.x) / (e - a)</c>.
-        /// The trap: forming <c>q = originHi + local</c> first and then <c>q - a</c> rounds q to ~6e-8 near
-        /// 0.7 and throws the fine local offset away. Instead the difference of the two large floats
-        /// is taken exactly as a pair (TwoSum: <c>originHi - a = d + err</c>), the small parts are added
-        /// together (<c>err + local</c>, both tiny, nearly exact) and only the final sum is rounded,
-        /// once, to the precision of u itself.
+        /// <c>u = ((originHi.x - a) + local.x) / (e - a)</c>. The trap: forming <c>q = originHi + local</c>
+        /// first rounds away the fine offset. Instead <c>originHi - a = d + err</c> exactly (TwoSum), the
+        /// small parts are added together and only the final sum is rounded.
         /// </summary>
         public static Float2 PatchLocalUV(TerrainPoint p, Float4 region)
         {
@@ -144,11 +135,9 @@ namespace GregoryTerrain
         }
 
         /// <summary>
-        /// <see cref="PatchLocalUV(TerrainPoint, Float4)"/> for a region given as hi/lo pairs (the grid
-        /// lines as <c>_GridLines</c> holds them): <c>u = (q - a) / (e - a)</c> with <c>q - a</c> formed as
-        /// <c>(originHi - a.hi) + (local - a.lo)</c> and the width by <see cref="RegionSize"/>. With the
-        /// one-float region, a line like 0.13 is off by 4.8e-9 and so is u's origin (9% of a range 1e-7
-        /// wide); with the pair, by ~1e-16.
+        /// <see cref="PatchLocalUV(TerrainPoint, Float4)"/> for a hi/lo region (as <c>_GridLines</c> holds
+        /// it): <c>q - a</c> formed as <c>(originHi - a.hi) + (local - a.lo)</c>, the width by
+        /// <see cref="RegionSize"/>; a one-float line is off by up to half a float step.
         /// </summary>
         public static Float2 PatchLocalUV(TerrainPoint p, Float4 region, Float4 regionLo)
         {
@@ -161,9 +150,8 @@ namespace GregoryTerrain
 
         /// <summary>
         /// The width and height <c>(e - a, f - b)</c> of a hi/lo region: <c>(e.hi - a.hi) + (e.lo - a.lo)</c>.
-        /// The hi difference is exact for neighbouring lines (Sterbenz) and otherwise rounds at float's
-        /// relative precision of the width itself; the one-float <c>e - a</c> of a patch 1e-6 wide is off
-        /// by up to 6e-8 / 1e-6 = 6% (the scale of every local coordinate and of the normal's slope).
+        /// The hi difference is exact for neighbouring lines (Sterbenz), else rounds relative to the width;
+        /// a one-float <c>e - a</c> of a tiny patch is off by a large fraction of it.
         /// </summary>
         public static Float2 RegionSize(Float4 region, Float4 regionLo) =>
             new Float2((region.z - region.x) + (regionLo.z - regionLo.x), (region.w - region.y) + (regionLo.w - regionLo.y));

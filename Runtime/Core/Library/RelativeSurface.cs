@@ -3,27 +3,17 @@ using System;
 namespace GregoryTerrain
 {
     /// <summary>
-    /// The deep-zoom vertex position (precision.md): the surface point relative to the surface at
-    /// the range origin, <c>S(q) - S(O)</c>, computed from precise local differences instead of two
-    /// absolute floats. The shaders output it as the object position whenever <c>_RangeOrigin</c> is
-    /// not zero; the renderer adds <see cref="ReferencePoint"/> (double, on the CPU) in the
-    /// object-to-world transform, where it cancels against the camera's own large translation.
-    /// Mirrors Shaders/Library/RelativeSurface.hlsl (float path); <see cref="FromOrigin(PatchGrid, Double2, Double2)"/>
-    /// is the double reference.
-    ///
-    /// <para>Why: at a range width w = 1e-6 a plain float q ~ 0.5 resolves 6e-8 (0.06 w) and a
-    /// float height ~0.1 resolves 7e-9 (0.007 w, ~6 pixels of an 800-pixel view). Differences from O
-    /// are ~w in size, so float keeps ~1e-13 of them.</para>
-    ///
-    /// <para>How: q lies in patch p. <c>r1</c> = O clamped into p's region (O itself when O is in p);
-    /// <c>S(q) - S(O) = [S_p(q) - S_p(r1)] + [S_p0(r1) - S_p0(O)]</c>, p0 = O's patch, each bracket a
-    /// <see cref="GregoryDifference"/> within one patch (the second is 0 when r1 = O). r1 lies on the
-    /// boundary shared by p and p0 (an edge or a corner) as long as p and p0 are neighbours, i.e. the
-    /// range is narrower than the narrowest patch; there the two patches agree (shared boundary
-    /// control points are bit-identical). A q farther away (the levels of detail reach the whole
-    /// terrain) walks patch by patch from r1 to O, each step a difference within one patch; one loop
-    /// takes every step, the first from q. Everything depends only on q and per-frame constants, so
-    /// shared tile edges stay bit-identical.</para>
+    /// The deep-zoom vertex position: the surface point relative to the surface at the range origin,
+    /// <c>S(q) - S(O)</c>, from precise local differences instead of two absolute floats (precision.md,
+    /// "What the shaders do"). The shaders output it as the object position whenever <c>_RangeOrigin</c>
+    /// is not zero; the renderer adds <see cref="ReferencePoint"/> (double) in the object-to-world
+    /// transform. Mirrors Shaders/Library/RelativeSurface.hlsl (float path);
+    /// <see cref="FromOrigin(PatchGrid, Double2, Double2)"/> is the double reference.
+    /// <para>How: with q in patch p, r1 = O clamped into p's region and p0 = O's patch,
+    /// <c>S(q) - S(O) = [S_p(q) - S_p(r1)] + [S_p0(r1) - S_p0(O)]</c>, each bracket a
+    /// <see cref="GregoryDifference"/> within one patch; r1 lies on the boundary p and p0 share, where
+    /// they agree bit for bit. A q farther away walks patch by patch to O. Everything depends only on
+    /// q and per-frame constants, so shared tile edges stay bit-identical.</para>
     /// </summary>
     internal static class RelativeSurface
     {
@@ -47,23 +37,17 @@ namespace GregoryTerrain
             rangeOriginF.x != 0f || rangeOriginF.y != 0f || rangeOriginF.z != 0f || rangeOriginF.w != 0f;
 
         /// <summary>
-        /// Whether a tessellated draw needs the shaders' <c>GT_RANGE_ORIGIN</c> keyword: exactly while
-        /// the origin is set (<see cref="IsActive"/>), except under the levels (<c>GT_LOD</c>) or the
-        /// vertex cache (<c>GT_VERTEX_CACHE</c>), which compile the same code: the four are one keyword
-        /// set, so at most one is on and no combination is compiled that is never drawn. Without any
-        /// of them the stages compile no range-origin code and read the origin as 0, so a set origin
-        /// would be drawn at the wrong place; with one and no origin they take the plain path at run time.
+        /// Whether a tessellated draw needs the <c>GT_RANGE_ORIGIN</c> keyword: while the origin is set
+        /// (<see cref="IsActive"/>), except under <c>GT_LOD</c> or <c>GT_VERTEX_CACHE</c>, which compile the
+        /// same code (one keyword set, at most one on). Without any of them a set origin is drawn wrong.
         /// </summary>
         public static bool NeedsRangeOriginKeyword(Float4 rangeOriginF, bool levels, bool cache) => !levels && !cache && IsActive(rangeOriginF);
 
         /// <summary>
         /// The patch that holds the hi/lo point <paramref name="q"/> by the FindPatch rule, decided on the
-        /// precise point: FindPatch on the rounded <c>hi + local</c> can be one patch off within a float
-        /// step (~6e-8) of a grid line, where u or v would then be slightly outside [0, 1] and get
-        /// clamped, a flat strip 0.05 range widths wide at w = 1e-6. One step to the neighbour fixes it.
-        /// The lines are the hi/lo pairs of <c>_GridLines</c>, so the decision is right to ~1e-16 (with
-        /// one float per line, 0.13 is off by 4.8e-9 and the normal came from the neighbour there).
-        /// The tile path uses it while a range origin is set (<see cref="FindPatchAt"/>).
+        /// precise point against the hi/lo <c>_GridLines</c>: FindPatch on the rounded <c>hi + local</c> can
+        /// be one patch off within a float step of a line, clamping u or v into a flat strip. One step to
+        /// the neighbour fixes it. Used by the tile path while a range origin is set (<see cref="FindPatchAt"/>).
         /// </summary>
         public static int FindPatchPrecise(TerrainInputs grid, TerrainPoint q)
         {
@@ -91,10 +75,8 @@ namespace GregoryTerrain
 
         /// <summary>
         /// The tile path's lookup (HLSL <c>FindPatchAt</c>): <see cref="FindPatchPrecise"/> while
-        /// <paramref name="q"/> has a hi part (a range origin is set; every point of a frame carries the
-        /// origin's), else FindPatch on the plain float point. Without an origin q is one float, and a
-        /// point within a float step of a line is one rounding from either patch, whose surfaces meet
-        /// there: the correction bought nothing visible and cost a fifth of the GPU's domain stage.
+        /// <paramref name="q"/> has a hi part (a range origin is set), else FindPatch on the plain float
+        /// point, where the patches meet within a rounding and the correction would cost domain-stage time.
         /// </summary>
         public static int FindPatchAt(TerrainInputs grid, TerrainPoint q)
         {
@@ -133,10 +115,8 @@ namespace GregoryTerrain
             Float2 d = Difference(x, r);
             Float2 size = RangeMapping.RegionSize(region, regionLo);
             float du = d.x / size.x, dv = d.y / size.y;
-            // Not clamped to u0 + du in [0, 1]: u0 itself is rounded (~6e-8 near 1), and clamping
-            // against it would freeze vertices within that of a patch edge (whole pixels at deep zoom).
-            // q is in the patch to the precision of the point (FindPatchPrecise), so u0 + du leaves
-            // [0, 1] only by rounding; the pair guard keeps that finite (the weight there is ~1e-15).
+            // Not clamped to u0 + du in [0, 1]: u0 is rounded, and clamping against it would freeze
+            // vertices near a patch edge; the pair guard keeps the rounding overshoot finite.
             du = GMath.clamp(du, -1f, 1f);
             dv = GMath.clamp(dv, -1f, 1f);
             return GregoryDifference.Evaluate(cp, u0, v0, du, dv);

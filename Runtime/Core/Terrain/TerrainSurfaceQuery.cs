@@ -39,21 +39,11 @@ namespace GregoryTerrain
 
     /// <summary>
     /// Height, normal and ray queries on the surface the GPU draws at full detail: the Gregory patches
-    /// of a <see cref="PatchGrid"/> plus, when noise is on, every octave the settings allow
-    /// (<c>settings.octaves</c>, the count the shaders reach where the range is narrow enough), with the
-    /// shaders' noise functions (same hash, gradients, octave frequencies as the float sequence
-    /// <c>f_{k+1} = f_k alpha</c>, offsets). Evaluated in double: this is <see cref="TerrainVertex.Reference"/>,
-    /// the exact surface the GPU's float path approximates (to ~3e-7 of the terrain's extent today), so a
-    /// 100 km terrain's heights hold to well under a micrometre at the feet, where the GPU's absolute
-    /// float path does not. Snow (GT_SNOW) lives on the GPU and is not included.
-    /// <para>Terrain space: <c>(x, y)</c> is the global point q of the unit square, z the height. The
-    /// surface is taken as a height field over q: the height at (x, y) is S(q).z + p(q) at q = (x, y).
-    /// The drawn vertex for q sits exactly at (x, y) when each patch's x, y are affine in (u, v) (control
-    /// points on the thirds of the region: every grid the heightmap fitter and the G1 builder make,
-    /// <see cref="AffinePatches"/>); a grid whose x, y were moved by hand is queried at q.</para>
-    /// <para>Allocation-free after construction and thread-safe: every field is read-only and no call
-    /// keeps state, so any number of threads may query one instance. The grid must not be changed
-    /// while it is queried (the renderer hands it a grid of its own).</para>
+    /// of a <see cref="PatchGrid"/> plus every noise octave the settings allow, with the shaders' noise
+    /// functions, in double: <see cref="TerrainVertex.Reference"/>, the exact surface the GPU's float
+    /// path approximates. Snow is not included. Terrain space: (x, y) is the global point q, z the
+    /// height S(q).z + p(q); exact at (x, y) when <see cref="AffinePatches"/>. Allocation-free and
+    /// thread-safe; the grid must not change while queried (internals.md, "CPU queries").
     /// </summary>
     internal sealed class TerrainSurfaceQuery
     {
@@ -91,10 +81,7 @@ namespace GregoryTerrain
         public double MaxControlHeight { get; }
         /// <summary>Most the noise can move a height: |amplitude| sum_k beta^-k.</summary>
         public double NoiseAmplitudeBound => _amplitudeTail[0];
-        /// <summary>
-        /// Largest |grad z| of the Gregory patches over q, terrain units per unit (see
-        /// <see cref="PatchSlopeBound"/>), over all patches.
-        /// </summary>
+        /// <summary>Largest |grad z| of the Gregory patches over q, terrain units per unit (<see cref="PatchSlopeBound"/>).</summary>
         public double SurfaceSlopeBound { get; }
         /// <summary>Slope bound of all the noise octaves together: |amplitude| sum_k beta^-k f_k <see cref="NoiseSlopeBound"/>.</summary>
         public double NoiseSlopeBoundTotal => _slopeHead[_slopeHead.Length - 1];
@@ -103,7 +90,7 @@ namespace GregoryTerrain
 
         /// <summary>
         /// A query over <paramref name="grid"/> (validated), with <paramref name="noise"/> (validated;
-        /// null: no noise; <paramref name="tiledNoise"/>: the tiled noise of GT_NOISE_TABLE). Precomputes the bounds the ray march needs; nothing is allocated later.
+        /// null: no noise; <paramref name="tiledNoise"/>: the tiled noise of GT_NOISE_TABLE). Precomputes the ray march's bounds.
         /// </summary>
         public TerrainSurfaceQuery(PatchGrid grid, NoiseSettings? noise, bool tiledNoise = false)
         {
@@ -154,10 +141,8 @@ namespace GregoryTerrain
 
         /// <summary>
         /// This query's noise over <paramref name="grid"/>, which differs from <see cref="Grid"/> in
-        /// <paramref name="changed"/> patches only (a brush dab: PatchChangeLog.Update validated them).
-        /// The bounds are widened by the changed patches, never narrowed: still bounds, so rays and
-        /// samples stay exact, at the cost of the changed patches rather than the grid's. This query is
-        /// not changed (another thread may be using it).
+        /// <paramref name="changed"/> patches only (validated). The bounds are widened by the changed
+        /// patches, never narrowed, so still bounds. This query is not changed (another thread may use it).
         /// </summary>
         public TerrainSurfaceQuery WithPatches(PatchGrid grid, IReadOnlyList<int> changed) => new TerrainSurfaceQuery(this, grid, changed);
 
@@ -244,7 +229,7 @@ namespace GregoryTerrain
 
         /// <summary>
         /// p(x, y) with every octave and its gradient d p / d q: <see cref="OctaveNoise.Evaluate(double, double, NoiseSettings, double, out Double2, bool)"/>
-        /// at the full count, step for step (same sums in the same order), from precomputed octave constants.
+        /// at the full count, same sums in the same order, from precomputed octave constants.
         /// </summary>
         double NoiseHeight(double x, double y, out Double2 gradient)
         {
@@ -289,19 +274,15 @@ namespace GregoryTerrain
         // ---------------------------------------------------------------- rays
 
         /// <summary>
-        /// The ray's first crossing of the surface from above, within its length. Robust by
-        /// construction (internals.md, "CPU queries"): the ray is clipped to the terrain's box (the unit
-        /// square, heights within the control points' range widened by the noise bound); then it marches
-        /// with steps that cannot pass a crossing: with <c>g_k = ray z - S - p_{&lt;k}</c> (octaves below k
-        /// evaluated, the rest bounded by their amplitude <c>A_k</c>) and <c>L_k</c> the slope bound of
-        /// S plus those octaves, the surface stays below the ray for
-        /// <c>s &lt; (g_k - A_k) / (|d_z| + L_k |d_xy|)</c>, and the step is the largest such s over k, at
-        /// least <c>tolerance / (|d_z| + L_N |d_xy|)</c>. So any part of the surface that rises more than
-        /// <paramref name="tolerance"/> (terrain units, vertically) above the ray is found, at any
-        /// grazing angle; thinner slivers may be stepped over. A crossing is then refined by regula falsi
-        /// (Illinois) with bisection to about 1e-13 of the distance. A ray that starts below the surface
-        /// first marches up out of it (the surface is one-sided, as a TerrainCollider is).
-        /// At most <paramref name="maxSteps"/> march steps (then <see cref="TerrainRayStatus.StepLimit"/>).
+        /// The ray's first crossing of the surface from above, within its length: clipped to the
+        /// terrain's box, then marched with steps that cannot pass a crossing: with <c>g_k = ray z - S - p_{&lt;k}</c>,
+        /// <c>A_k</c> the amplitude of octaves k and up and <c>L_k</c> the slope bound of S and octaves below k,
+        /// the surface stays below the ray for <c>s &lt; (g_k - A_k) / (|d_z| + L_k |d_xy|)</c>; the step is the
+        /// largest such s, at least <c>tolerance / (|d_z| + L_N |d_xy|)</c>. Anything rising more than
+        /// <paramref name="tolerance"/> (terrain units, vertically) above the ray is found, at any angle;
+        /// crossings are refined by Illinois regula falsi. A ray starting below first marches up (one-sided
+        /// surface). At most <paramref name="maxSteps"/> steps (then <see cref="TerrainRayStatus.StepLimit"/>);
+        /// internals.md, "Raycast".
         /// </summary>
         public TerrainRayStatus Raycast(TerrainRay ray, out TerrainRayHit hit, double tolerance = 1e-9, int maxSteps = 1 << 20)
         {
