@@ -42,6 +42,7 @@ namespace GregoryTerrain
         /// </summary>
         public void Validate(string name = "range")
         {
+            if (IsValid) return;   // builds no field names: the renderer checks every level of every camera every frame
             CheckUnit(name + ".c", c);
             CheckUnit(name + ".d", d);
             CheckUnit(name + ".g", g);
@@ -55,6 +56,11 @@ namespace GregoryTerrain
             CheckSize(name + " width (g - c)", g - c);
             CheckSize(name + " height (h - d)", h - d);
         }
+
+        /// <summary>Whether <see cref="Validate"/> passes (a value in [0, 1] is finite).</summary>
+        bool IsValid => InUnit(c) && InUnit(d) && InUnit(g) && InUnit(h) && g > c && h > d && g - c >= MinSize && h - d >= MinSize;
+
+        static bool InUnit(double value) => value >= 0.0 && value <= 1.0;
 
         /// <summary>Throws ArgumentException naming <paramref name="field"/> unless <paramref name="size"/> is at least <see cref="MinSize"/>.</summary>
         public static void CheckSize(string field, double size)
