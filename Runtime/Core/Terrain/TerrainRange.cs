@@ -42,7 +42,7 @@ namespace GregoryTerrain
         /// </summary>
         public void Validate(string name = "range")
         {
-            if (IsValid) return;   // builds no field names: the renderer checks every level of every camera every frame
+            if (IsValid) return;   // no field-name strings: the renderer checks every level every frame
             CheckUnit(name + ".c", c);
             CheckUnit(name + ".d", d);
             CheckUnit(name + ".g", g);
