@@ -69,5 +69,36 @@ namespace GregoryTerrain.Tests
             StringAssert.Contains("finestExponent (-1)", Assert.Throws<ArgumentException>(() => LodLevels.LevelCount(-1)).Message);
             StringAssert.Contains("terrainMeters (0)", Assert.Throws<ArgumentException>(() => LodLevels.FinestExponent(0, 1)).Message);
         }
+
+        /// <summary>A camera's frame of the levels as the renderer runs it (layout, origin, PushLevels) allocates nothing.</summary>
+        [Test]
+        public void AFrameOfTheLevelsAllocatesNothing()
+        {
+            const int tiles = 16, n = 16;   // 1,000 km: 16 levels
+            var ranges = new TerrainRange[LodTiles.MaxLevels];
+            var vectors = new Float4[LodTiles.MaxLevels];
+            var origin = new RangeOriginTracker();
+            void Frame(double y)
+            {
+                int count = LodLevels.Layout(new Double2(0.37, y), n, tiles, ranges);
+                origin.Update(ranges[0]);
+                for (int k = 0; k < count; k++)
+                {
+                    RangeMapping.EncodeRange(ranges[k], origin.Origin, out Float4 r, out _);
+                    vectors[k] = r;
+                }
+            }
+            Frame(0.52);   // warm up (JIT)
+            // The fewest of three frames: the runtime's one-off work (tiered JIT) shows in one.
+            long allocated = long.MaxValue;
+            for (int i = 1; i <= 3; i++)
+            {
+                long before = GC.GetAllocatedBytesForCurrentThread();
+                Frame(0.52 + i * 1e-6);
+                allocated = Math.Min(allocated, GC.GetAllocatedBytesForCurrentThread() - before);
+            }
+            Assert.That(allocated, Is.EqualTo(0), "bytes allocated by one frame of 16 levels");
+            Assert.That(vectors[15], Is.Not.EqualTo(default(Float4)));
+        }
     }
 }

@@ -169,5 +169,22 @@ namespace GregoryTerrain.Rig.Tests
             Assert.That(motion[0][7], Is.EqualTo("4"), "the camera follows the range: the kernels run in all 4 frames");
             Assert.That(_output, Does.Not.Contain("| compute cache, panning (anchored tiles) | - |"), "the headline's first row ran");
         }
+
+        [Test]
+        public void HorizonLevelsRowRanBesideItsFloors()
+        {
+            // The walking ground view (camera and levels moving every frame), the levels' own floor
+            // and the tessellator's floor at the triangles the levels drew.
+            var rows = Rows("100 km, walk");
+            Assert.That(rows.Length, Is.EqualTo(1), "the 100 km walking row of ## Horizon levels");
+            var r = rows[0];
+            double triangles = D(r[1].Replace(",", ""));
+            Assert.That(triangles, Is.GreaterThan(0), "levels' triangles");
+            foreach (int k in new[] { 2, 3 }) Assert.That(D(r[k]), Is.GreaterThan(0), $"column {k}: GPU ms");
+            var floor = System.Text.RegularExpressions.Regex.Match(r[4], @"^([0-9.]+) \((\d+) x (\d+), ([0-9,]+)\)$");
+            Assert.That(floor.Success, $"floor cell '{r[4]}': ms (tiles x F, triangles)");
+            Assert.That(D(floor.Groups[4].Value.Replace(",", "")), Is.EqualTo(triangles).Within(5).Percent, "the floor's triangles match the levels'");
+            Assert.That(r[5], Does.Match(@"^[0-9.]+x$"), "levels / floor");
+        }
     }
 }

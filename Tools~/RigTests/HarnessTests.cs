@@ -897,6 +897,23 @@ namespace GregoryTerrain.Rig.Tests
                 Assert.That(r.Stderr, Does.Contain(word));
         }
 
+        /// <summary>A levels' tail path (--params-tail-path) needs --params-tail and must be whole records of its size.</summary>
+        [TestCase(0, true)]
+        [TestCase(48, true)]
+        [TestCase(64, false)]
+        public void ParamsTailPathOfPartRecords_Exit1NamingTheFileAndItsSize(int bytes, bool withTail)
+        {
+            string dir = MakeInputs("in_4x4_f8", 4, 8, new[] { 0f, 0, 1, 1 });
+            string tail = Path.Combine(dir, "tail_32.f32"), path = Path.Combine(dir, "tail_path_" + bytes + ".f32");
+            File.WriteAllBytes(tail, new byte[32]);
+            File.WriteAllBytes(path, new byte[bytes]);
+            var extra = withTail ? new[] { "--params-tail", tail, "--params-tail-path", path } : new[] { "--params-tail-path", path };
+            HarnessRun r = HarnessRun.Harness(TessArgs(dir, 4, 8, null).Concat(extra).ToArray());
+            Assert.That(r.ExitCode, Is.EqualTo(1), r.Stdout + r.Stderr);
+            if (withTail) Assert.That(r.Stderr, Does.Contain(path).And.Contain(bytes + " bytes").And.Contain("multiple of 32"));
+            else Assert.That(r.Stderr, Does.Contain("--params-tail-path needs --params-tail"));
+        }
+
         /// <summary>A camera path must be whole RigCamera blocks (176 bytes each), at least one.</summary>
         [TestCase(0)]
         [TestCase(100)]

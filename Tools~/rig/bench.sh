@@ -37,7 +37,7 @@ make_plan() {  # make_plan DIR
   # The vertex cache's variants (GT_VERTEX_CACHE) carry their two compute kernels (internals.md, "Vertex cache").
   local cache=(vertex_cache noise+vertex_cache noise+height_color+vertex_cache)
   local drawn=(base noise noise+height_color paper_mode paper_mode+noise factor_readback factor_readback+noise
-               readback+noise noise+height_color+noise_table "${cache[@]}")
+               readback+noise noise+height_color+noise_table lod+noise+height_color "${cache[@]}")
   # Always compiled afresh, the variants the plan draws only: a plan carried to the GPU with SPIR-V
   # older than Shaders/ times the old kernels under the new dispatch sizes, and nothing would say so.
   local only=()
@@ -58,6 +58,10 @@ make_plan() {  # make_plan DIR
   # The tessellator's floor (rig only): the fair variant's tiles with a domain stage that evaluates nothing.
   glslangValidator -D -V -S tese -e domain_floor --hlsl-iomap --shift-cbuffer-binding 0 --shift-texture-binding 2 \
     --shift-UAV-binding 5 -DGT_NOISE -DGT_HEIGHT_COLOR -o "$dir/spirv/floor.spv" "$RIG_DIR/bench_floor.hlsl" >/dev/null
+  # The levels' own floor (rig only): the levels' vert and hull (GT_LOD) with the same flat domain stage.
+  glslangValidator -D -V -S tese -e domain_floor --hlsl-iomap --shift-cbuffer-binding 0 --shift-texture-binding 2 \
+    --shift-UAV-binding 5 -DGT_LOD -DGT_NOISE -DGT_HEIGHT_COLOR -o "$dir/spirv/floor_lod.spv" "$RIG_DIR/bench_floor.hlsl" >/dev/null \
+    || die "glslang failed on bench_floor.hlsl with GT_LOD"
   # The domain-stage breakdown (rig only): one domain stage per part the plan names, -DPART_<NAME>.
   mkdir -p "$dir/spirv/parts"
   for part in $(grep -o '@SPV@/parts/[a-z_]*\.spv' "$dir/plan.tsv" | sed 's|.*/||; s|\.spv$||' | sort -u); do

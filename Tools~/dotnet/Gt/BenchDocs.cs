@@ -26,6 +26,8 @@ namespace GregoryTerrain.Rig
             ["accuracy"] = t => Select(FirstTable(t, "# gt bench"),
                 r => r["max F"] == "64" && (r["tiles"] == "16" || r["method"] == "paper"),
                 "max F", "max err (terrain units)"),
+            // The Horizon levels' ground views against the tessellator's floor, less the goal (in the text) and a derived column.
+            ["levels"] = t => Select(FirstTable(t, "## Horizon levels"), r => true, "goal", "levels' floor / floor"),
             // The tile count at a fixed triangle count, verbatim.
             ["tilecount"] = t => FirstTable(t, "### The tile count at a fixed triangle count"),
         };

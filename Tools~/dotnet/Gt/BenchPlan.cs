@@ -105,6 +105,7 @@ namespace GregoryTerrain.Rig
             var targets = new Dictionary<string, double>();
             FairStatic(grid, dir, plan, meta, quick, width, height, targets);
             Motion(grid, dir, plan, meta, quick, width, height, targets);
+            Levels(grid, dir, plan, meta, quick, width, height);
             var path = quick ? new[] { CameraPath[0], CameraPath[2] } : CameraPath;
             foreach (var cfg in Sweep(quick))
                 foreach (var (cam, range) in path)

@@ -143,6 +143,7 @@ namespace GregoryTerrain.Rig
             AnchoredPan(o, jobs, quick, rbDir);
             TileCount(o, jobs, quick, planned, grid, width, height);
             MotionTable(o, jobs, quick, planDir);
+            LevelsTable(o, jobs, quick);
             RangeOnlyWithEffects(o, jobs, quick);
             Goals(o, tsv.ToString());
             Console.Write(o.ToString());
@@ -460,6 +461,8 @@ namespace GregoryTerrain.Rig
                 if (cur == null) continue;
                 if (w[0] == "skipped:") cur.Skipped = string.Join(" ", w.Skip(1));
                 if (w[0] == "stat" && w.Length >= 3) cur.Stat[w[1]] = w[2];
+                else if (w[0] == "floor" && w.Length >= 7 && w[1] == "tiles")   // bench_run.sh's floor-match line
+                { cur.Stat["floor_tiles"] = w[2]; cur.Stat["floor_factor"] = w[4]; cur.Stat["floor_triangles"] = w[6]; }
                 else if (w[0] == "device" && w.Length >= 3 && w[1] == "name") cur.Stat["name"] = string.Join(" ", w.Skip(2));
                 else if (w[0] == "time" && w.Length >= 3 && w[1] == "frame_ms_median") cur.GpuMs = D(w[2]);
                 else if (w[0] == "time" && w.Length >= 3 && w[1] == "frame_ms_mean") cur.GpuMeanMs = D(w[2]);

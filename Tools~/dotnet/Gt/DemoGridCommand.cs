@@ -46,5 +46,8 @@ namespace GregoryTerrain.Rig
 
         /// <summary>The demo's heightmap (<see cref="DemoHeightmap.Heights"/>).</summary>
         public static double[] Heightmap(int samples) => DemoHeightmap.Heights(samples);
+
+        /// <summary>The ground views' grid (gt-cli lod-scene, the bench's Horizon levels): the demo's terrain fitted to 129 x 129 samples, 5 x 5 patches.</summary>
+        public static PatchGrid GroundViewGrid() => HeightmapFitter.Fit(Heightmap(129), 129, 129, 5, 5).Grid;
     }
 }

@@ -22,7 +22,7 @@ namespace GregoryTerrain.Rig
         {
             string dir = a.String("out");
             PatchGrid grid = a.Flag("grid") ? PatchGridJson.ReadFile(a.String("grid"))
-                : HeightmapFitter.Fit(DemoGridCommand.Heightmap(129), 129, 129, 5, 5).Grid;   // the demo's terrain
+                : DemoGridCommand.GroundViewGrid();
             var s = new LodScene
             {
                 TerrainMeters = a.Double("terrain-m", 100000),

@@ -175,6 +175,8 @@ namespace GregoryTerrain.Rig
                 NumericOption.Int("tiles", 2, 64), NumericOption.Int("factor", 0, 64), TargetPixels, NumericOption.Above("segment-pixels", 0, MaxPixels),
                 Width, Height, NumericOption.Numbers("ground", Bounds.Real(0, 1, "x"), Bounds.Real(0, 1, "y")), MaxCells,
                 NumericOption.Real("relief-m", 0, MaxMetres));   // relief-m 0: the grid stretched to --terrain-m
+            Add("lod-cpu-bench", "the Horizon levels' CPU work a frame per camera: microseconds, bytes allocated, bytes sent (prints; asserts nothing)", LodCpuBenchCommand.Run,
+                "", NumericOption.Int("frames", 1, 100000000), NumericOption.Int("rounds", 1, 1000));
             Add("snow-scene", "write a snow run's inputs: ridge grid, harness buffers, field/snow params per R (--out DIR [--cpu])", SnowSceneCommand.Run,
                 "cpu grid no-noise out",
                 NumericOption.Above("cap", 0, 1000), NumericOption.Above("dt", 0, 3600), Xyz("eye"), NumericOption.Real("factor", 0, TessellationSettings.HardwareMaxFactor),

@@ -198,6 +198,8 @@ const char* usageText() {
                                  (16 bytes) appended to TerrainParams at binding 0
   --params-tail F                GT_LOD: F's bytes (a multiple of 16, at most 1024) appended to
                                  TerrainParams at binding 0 (_LodLevels, _Ranges[])
+  --params-tail-path F           GT_LOD moving: F holds N records of --params-tail's size; frame f
+                                 writes record f mod N after TerrainParams (the levels following a camera)
   --patches N                    patches drawn (tessellated mode)
   --control-points K             control points per patch (default 4)
   --grid-factor F --instances N  fallback mode: (F+1)^2-vertex grid, N instances
@@ -291,6 +293,7 @@ Options parseOptions(int argc, char** argv) {
         else if (a == "--snow-depth") o.snowDepthPath = value();
         else if (a == "--snow-params") o.snowParamsPath = value();
         else if (a == "--params-tail") o.paramsTailPath = value();
+        else if (a == "--params-tail-path") o.movingTailPath = value();
         else if (a == "--patches") o.patches = u32();
         else if (a == "--control-points") o.controlPoints = u32(32);
         else if (a == "--grid-factor") o.gridFactor = u32(4096);
@@ -353,6 +356,7 @@ Options parseOptions(int argc, char** argv) {
     if (!o.readbackPath.empty() && o.readbackFloats == 0) fail("--readback needs --readback-floats K (K > 0)");
     if (o.readbackPath.empty() && o.readbackFloats != 0) fail("--readback-floats needs --readback FILE");
     if (o.computeOnce && o.computes.empty()) fail("--compute-once needs at least one --compute SPV:GX,GY,GZ");
+    if (!o.movingTailPath.empty() && o.paramsTailPath.empty()) fail("--params-tail-path needs --params-tail (its first record's size)");
     if (!o.paramsPath.empty() && o.updateRangePerFrame) fail("--params-path writes the whole TerrainParams every frame: drop --update-range-per-frame");
     if (!o.paramsPath.empty() && o.computeOnce) fail("--params-path decides per frame whether the --compute passes run: drop --compute-once");
     if (o.rangePan > 0.0f && !o.updateRangePerFrame) fail("--range-pan needs --update-range-per-frame");
@@ -365,6 +369,7 @@ Options parseOptions(int argc, char** argv) {
         if (!o.readbackPath.empty()) fail("--in-flight " + std::to_string(o.inFlight) + " cannot be combined with --readback");
         if (!o.cameraPath.empty()) fail("--in-flight " + std::to_string(o.inFlight) + " cannot be combined with --camera-path");
         if (!o.paramsPath.empty()) fail("--in-flight " + std::to_string(o.inFlight) + " cannot be combined with --params-path");
+        if (!o.movingTailPath.empty()) fail("--in-flight " + std::to_string(o.inFlight) + " cannot be combined with --params-tail-path");
     }
     if (o.asyncCompute && o.computes.empty()) fail("--async-compute needs at least one --compute SPV:GX,GY,GZ");
     if (o.asyncCompute && o.inFlight < 2)

@@ -85,6 +85,7 @@ struct Options {
     float rangePan = 0.0f;      // --range-pan FRACTION (with --update-range-per-frame)
     std::string cameraPath;      // --camera-path FILE: N RigCamera blocks, frame f draws with block f mod N
     std::string paramsPath;      // --params-path FILE: N (TerrainParams, dispatch flag) records, frame f draws record f mod N
+    std::string movingTailPath; // --params-tail-path FILE: N --params-tail records, frame f draws record f mod N
     bool computeOnce = false;
     bool computeTimestamp = true;  // --no-compute-timestamp: frame timestamps only
     uint64_t resendBytes = 0;

@@ -115,6 +115,7 @@ FrameResults runFrames(const Gpu& gpu, const RenderTarget& target, const Pipelin
         const auto t0 = std::chrono::steady_clock::now();
         if (s.updateRange) writeRange(inputs, frameRange(baseRange, f, total, s.rangePan));
         if (!s.cameraPath.empty()) writeCamera(inputs, s.cameraPath, f);
+        if (!s.paramsTailPath.empty()) writeParamsTail(inputs, s.paramsTailPath, f);
         bool dispatch = !s.computeOnce || f == 0;
         if (!s.paramsPath.empty()) dispatch = writeParams(inputs, s.paramsPath, f) || f == 0;
         if (dispatch && f >= s.warmup) ++results.dispatchedFrames;

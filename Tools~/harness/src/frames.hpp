@@ -34,6 +34,7 @@ struct FrameSettings {
     float rangePan = 0.0f;  // --range-pan: amplitude of the range's pan, a fraction of its size (0: the tiny shifts)
     std::vector<uint8_t> paramsPath;  // --params-path: (TerrainParams, dispatch flag) records, frame f draws record f mod N
     std::vector<uint8_t> cameraPath;  // --camera-path: RigCamera blocks, frame f draws with block f mod N
+    std::vector<uint8_t> paramsTailPath;  // --params-tail-path: GT_LOD tails, frame f draws record f mod N
     // --compute-once: the pre-pass runs in the first frame only; later frames reuse what it wrote
     // (the vertex cache of a frame where nothing changed).
     bool computeOnce = false;

@@ -70,6 +70,7 @@ Inputs loadInputs(const Gpu& gpu, const std::string& dir, const std::optional<st
     std::memcpy(in.bindings[kBindingParams].mapped, in.params.data(), kParamsBytes);
     if (in.snow)
         std::memcpy(static_cast<uint8_t*>(in.bindings[kBindingParams].mapped) + kParamsBytes, snowSize.data(), kSnowParamsBytes);
+    in.tailBytes = tail.size();
     if (!tail.empty())
         std::memcpy(static_cast<uint8_t*>(in.bindings[kBindingParams].mapped) + kParamsBytes, tail.data(), tail.size());
     in.bindings[kBindingCamera] = createDeviceBuffer(gpu, camera, kUniformBlockUsage);
@@ -150,6 +151,19 @@ bool writeParams(Inputs& inputs, const std::vector<uint8_t>& path, uint32_t fram
     float flag;
     std::memcpy(&flag, p + kParamsBytes, 4);
     return flag != 0.0f;
+}
+
+std::vector<uint8_t> loadParamsTailPath(Inputs& inputs, const std::string& path) {
+    if (inputs.tailBytes == 0) fail("--params-tail-path '" + path + "' needs --params-tail");
+    std::vector<uint8_t> records = readSized(path, 0, inputs.tailBytes);
+    writeParamsTail(inputs, records, 0);
+    return records;
+}
+
+void writeParamsTail(Inputs& inputs, const std::vector<uint8_t>& path, uint32_t frame) {
+    const size_t record = frame % (path.size() / inputs.tailBytes);
+    std::memcpy(static_cast<uint8_t*>(inputs.bindings[kBindingParams].mapped) + kParamsBytes,
+                path.data() + record * inputs.tailBytes, inputs.tailBytes);
 }
 
 }  // namespace gt

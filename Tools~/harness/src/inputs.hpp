@@ -31,6 +31,7 @@ struct Inputs {
     uint32_t gregoryPatches = 0;                    // control_points.f32 / 320 bytes
     bool snow = false;                              // --snow-depth given: binding 6 exists, params + 16 bytes
     uint32_t snowResolution = 0;                    // R of the snow map
+    size_t tailBytes = 0;                           // --params-tail's bytes after TerrainParams (GT_LOD)
     uint32_t bindingCount() const { return snow ? kBindingCountSnow : kBindingCount; }
 };
 
@@ -77,5 +78,11 @@ std::vector<uint8_t> loadParamsPath(Inputs& inputs, const std::string& path);
 
 // Copies record (frame mod N)'s TerrainParams into binding 0 (and the CPU copy); returns its flag.
 bool writeParams(Inputs& inputs, const std::vector<uint8_t>& path, uint32_t frame);
+
+// --params-tail-path: reads records of inputs.tailBytes each (a non-zero multiple) and writes the first.
+std::vector<uint8_t> loadParamsTailPath(Inputs& inputs, const std::string& path);
+
+// Copies record (frame mod N) of a --params-tail-path after TerrainParams in binding 0.
+void writeParamsTail(Inputs& inputs, const std::vector<uint8_t>& path, uint32_t frame);
 
 }  // namespace gt

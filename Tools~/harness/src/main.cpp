@@ -171,6 +171,11 @@ int run(const Options& o) {
         paramsPath = loadParamsPath(inputs, o.paramsPath);
         std::printf("inputs params_path %zu\n", paramsPath.size() / paramsRecordBytes(inputs));
     }
+    std::vector<uint8_t> paramsTailPath;
+    if (!o.movingTailPath.empty()) {
+        paramsTailPath = loadParamsTailPath(inputs, o.movingTailPath);
+        std::printf("inputs params_tail_path %zu\n", paramsTailPath.size() / inputs.tailBytes);
+    }
     std::printf("inputs gregory_patches %u\n", inputs.gregoryPatches);
     if (inputs.snow) std::printf("inputs snow_resolution %u\n", inputs.snowResolution);
     std::printf("inputs range %.9g %.9g %.9g %.9g\n", inputs.params[0], inputs.params[1], inputs.params[2], inputs.params[3]);
@@ -204,6 +209,7 @@ int run(const Options& o) {
     fs.updateRange = o.updateRangePerFrame;
     fs.cameraPath = std::move(cameraPath);
     fs.paramsPath = std::move(paramsPath);
+    fs.paramsTailPath = std::move(paramsTailPath);
     fs.computeOnce = o.computeOnce;
     fs.computeTimestamp = o.computeTimestamp;
     fs.rangePan = o.rangePan;
