@@ -244,9 +244,9 @@ namespace GregoryTerrain
         internal int PatchUploadCount { get; private set; }
 
         /// <summary>The query brought to the grid's version at the cost of the patches edited since; null when only a rebuild can tell.</summary>
-        TerrainSurfaceQuery EditedQuery(NoiseSettings? noise, bool tiled)
+        TerrainSurfaceQuery EditedQuery(NoiseSettings? noise, TerrainKeywords keywords)
         {
-            if (_query == null || _queryAsset != grid || !Nullable.Equals(_queryNoise, noise) || _queryTiledNoise != tiled) return null;
+            if (_query == null || _queryAsset != grid || !Nullable.Equals(_queryNoise, noise) || _queryKeywords != keywords) return null;
             PatchGrid g = grid.UpdatedPatchGrid(_query.Grid, _queryVersion, out int[] changed);
             return g == null ? null : _query.WithPatches(g, changed);
         }

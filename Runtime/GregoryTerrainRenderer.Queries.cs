@@ -15,7 +15,7 @@ namespace GregoryTerrain
         PatchGridAsset _queryAsset;
         int _queryVersion;
         NoiseSettings? _queryNoise;
-        bool _queryTiledNoise;
+        TerrainKeywords _queryKeywords;
 
         /// <summary>
         /// The Core query for the current grid and noise (GT_NOISE on the material: the renderer's noise
@@ -30,10 +30,10 @@ namespace GregoryTerrain
                 NoiseSettings? noise = material != null && material.IsKeywordEnabled(ShaderIds.NoiseKeyword)
                     ? new NoiseSettings(noiseAmplitude, noiseFrequency, noiseAlpha, noiseBeta, noiseOctaves)
                     : (NoiseSettings?)null;
-                bool tiled = (NoiseKeywords() & TerrainKeywords.NoiseTable) != 0;
-                if (_queryAsset == grid && _queryVersion == grid.Version && Nullable.Equals(_queryNoise, noise) && _queryTiledNoise == tiled)
+                TerrainKeywords keywords = NoiseKeywords();
+                if (_queryAsset == grid && _queryVersion == grid.Version && Nullable.Equals(_queryNoise, noise) && _queryKeywords == keywords)
                     return _query;
-                try { _query = EditedQuery(noise, tiled) ?? new TerrainSurfaceQuery(grid.ToPatchGrid(), noise, tiledNoise: tiled); }
+                try { _query = EditedQuery(noise, keywords) ?? new TerrainSurfaceQuery(grid.ToPatchGrid(), noise, keywords); }
                 catch (ArgumentException e)
                 {
                     Debug.LogError($"{name}: cannot answer height queries: {e.Message}", this);
@@ -44,7 +44,7 @@ namespace GregoryTerrain
                 _queryAsset = grid;
                 _queryVersion = grid.Version;
                 _queryNoise = noise;
-                _queryTiledNoise = tiled;
+                _queryKeywords = keywords;
                 return _query;
             }
         }

@@ -8,6 +8,7 @@ namespace GregoryTerrain.Tests
     public class GradientNoiseTableTests
     {
         static readonly NoiseSettings Settings = new NoiseSettings(0.02f, 8f, 2f, 2f, 12);
+        const TerrainKeywords Tiled = TerrainKeywords.NoiseTable;
 
         [Test]
         public void InsideTheTableItIsTheHashedNoise()
@@ -20,11 +21,11 @@ namespace GregoryTerrain.Tests
             {
                 int ix = rng.Next(0, 255), iy = rng.Next(0, 255);
                 float fx = (float)rng.NextDouble(), fy = (float)rng.NextDouble();
-                float t = GradientNoise.EvaluateCell(ix, iy, fx, fy, out Float2 gt, tiled: true);
+                float t = GradientNoise.EvaluateCell(ix, iy, fx, fy, out Float2 gt, Tiled);
                 float h = GradientNoise.EvaluateCell(ix, iy, fx, fy, out Float2 gh);
                 worst = Math.Max(worst, Math.Abs(t - h));
                 worstGradient = Math.Max(worstGradient, Math.Max(Math.Abs(gt.x - gh.x), Math.Abs(gt.y - gh.y)));
-                Assert.That(GradientNoise.Evaluate(ix + (double)fx, iy + (double)fy, out _, tiled: true),
+                Assert.That(GradientNoise.Evaluate(ix + (double)fx, iy + (double)fy, out _, Tiled),
                             Is.EqualTo(GradientNoise.Evaluate(ix + (double)fx, iy + (double)fy, out _)), "double reference inside the table");
             }
             TestContext.Out.WriteLine($"tiled against hashed inside [0, 255]^2: value {worst:E2}, gradient {worstGradient:E2}");
@@ -41,12 +42,12 @@ namespace GregoryTerrain.Tests
             {
                 double x = rng.NextDouble() * 256, y = rng.NextDouble() * 256;
                 int sx = rng.Next(-40, 40) * 256, sy = rng.Next(-40, 40) * 256;
-                double a = GradientNoise.Evaluate(x, y, out Double2 ga, tiled: true);
-                double b = GradientNoise.Evaluate(x + sx, y + sy, out Double2 gb, tiled: true);
+                double a = GradientNoise.Evaluate(x, y, out Double2 ga, Tiled);
+                double b = GradientNoise.Evaluate(x + sx, y + sy, out Double2 gb, Tiled);
                 Assert.That(b, Is.EqualTo(a).Within(1e-9), $"period at ({x:R}, {y:R}) + ({sx}, {sy})");
                 Assert.That(gb.x, Is.EqualTo(ga.x).Within(1e-9));
-                float fa = GradientNoise.EvaluateCell((int)Math.Floor(x), (int)Math.Floor(y), (float)(x - Math.Floor(x)), (float)(y - Math.Floor(y)), out _, tiled: true);
-                float fb = GradientNoise.EvaluateCell((int)Math.Floor(x) + sx, (int)Math.Floor(y) + sy, (float)(x - Math.Floor(x)), (float)(y - Math.Floor(y)), out _, tiled: true);
+                float fa = GradientNoise.EvaluateCell((int)Math.Floor(x), (int)Math.Floor(y), (float)(x - Math.Floor(x)), (float)(y - Math.Floor(y)), out _, Tiled);
+                float fb = GradientNoise.EvaluateCell((int)Math.Floor(x) + sx, (int)Math.Floor(y) + sy, (float)(x - Math.Floor(x)), (float)(y - Math.Floor(y)), out _, Tiled);
                 Assert.That(fb, Is.EqualTo(fa), "float: the same table row");
                 if (Math.Abs(GradientNoise.Evaluate(x + sx, y + sy, out _) - b) > 1e-3) differ++;
             }
@@ -63,12 +64,12 @@ namespace GregoryTerrain.Tests
             {
                 double y = rng.NextDouble() * 1024 - 512;
                 const double e = 1e-9;
-                double left = GradientNoise.Evaluate(256 - e, y, out Double2 gl, tiled: true);
-                double right = GradientNoise.Evaluate(256 + e, y, out Double2 gr, tiled: true);
+                double left = GradientNoise.Evaluate(256 - e, y, out Double2 gl, Tiled);
+                double right = GradientNoise.Evaluate(256 + e, y, out Double2 gr, Tiled);
                 Assert.That(right, Is.EqualTo(left).Within(1e-7), $"value across x = 256 at y {y:R}");
                 Assert.That(gr.x, Is.EqualTo(gl.x).Within(1e-6), $"d/dx across x = 256 at y {y:R}");
                 Assert.That(gr.y, Is.EqualTo(gl.y).Within(1e-6), $"d/dy across x = 256 at y {y:R}");
-                double below = GradientNoise.Evaluate(y, -e, out _, tiled: true), above = GradientNoise.Evaluate(y, e, out _, tiled: true);
+                double below = GradientNoise.Evaluate(y, -e, out _, Tiled), above = GradientNoise.Evaluate(y, e, out _, Tiled);
                 Assert.That(above, Is.EqualTo(below).Within(1e-7), $"value across y = 0 at x {y:R}");
             }
         }
@@ -83,14 +84,14 @@ namespace GregoryTerrain.Tests
                 double x = rng.NextDouble(), y = rng.NextDouble();
                 var q = new Float2((float)x, (float)y);
                 float count = (float)(rng.NextDouble() * Settings.octaves);
-                float f = OctaveNoise.Evaluate(TerrainPoint.FromFloat(q), Settings, count, out Float2 gf, tiled: true);
-                double d = OctaveNoise.Evaluate(q.x, q.y, Settings, count, out Double2 gd, tiled: true);
+                float f = OctaveNoise.Evaluate(TerrainPoint.FromFloat(q), Settings, count, out Float2 gf, Tiled);
+                double d = OctaveNoise.Evaluate(q.x, q.y, Settings, count, out Double2 gd, Tiled);
                 worst = Math.Max(worst, Math.Abs(f - d));
                 Assert.That(gf.x, Is.EqualTo(gd.x).Within(2e-3 * (1 + Math.Abs(gd.x))), $"d/dx at {q}");
                 Assert.That(gf.y, Is.EqualTo(gd.y).Within(2e-3 * (1 + Math.Abs(gd.y))), $"d/dy at {q}");
                 const double h = 1e-7;
-                double gx = (OctaveNoise.Evaluate(x + h, y, Settings, count, out _, true) - OctaveNoise.Evaluate(x - h, y, Settings, count, out _, true)) / (2 * h);
-                Assert.That(OctaveNoise.Evaluate(x, y, Settings, count, out Double2 g, true), Is.Not.NaN);
+                double gx = (OctaveNoise.Evaluate(x + h, y, Settings, count, out _, Tiled) - OctaveNoise.Evaluate(x - h, y, Settings, count, out _, Tiled)) / (2 * h);
+                Assert.That(OctaveNoise.Evaluate(x, y, Settings, count, out Double2 g, Tiled), Is.Not.NaN);
                 Assert.That(g.x, Is.EqualTo(gx).Within(1e-4 * (1 + Math.Abs(gx))), "double gradient against finite differences");
             }
             TestContext.Out.WriteLine($"tiled octave noise: max |float - double| = {worst:E3}");
@@ -108,9 +109,9 @@ namespace GregoryTerrain.Tests
             for (int y = 0; y < 256; y += 5)
                 for (int x = 0; x < 256; x += 3)
                 {
-                    double reference = GradientNoise.Evaluate(x + 0.375, y + 0.625, out _, tiled: true);
-                    Assert.That(GradientNoise.EvaluateCell(x, y, 0.375f, 0.625f, out _, tiled: true), Is.EqualTo(reference).Within(2e-6), $"cell ({x}, {y})");
-                    if (Math.Abs(GradientNoise.EvaluateCell(x + 1, y, 0.375f, 0.625f, out _, tiled: true) - reference) > 1e-4) mismatched++;
+                    double reference = GradientNoise.Evaluate(x + 0.375, y + 0.625, out _, Tiled);
+                    Assert.That(GradientNoise.EvaluateCell(x, y, 0.375f, 0.625f, out _, Tiled), Is.EqualTo(reference).Within(2e-6), $"cell ({x}, {y})");
+                    if (Math.Abs(GradientNoise.EvaluateCell(x + 1, y, 0.375f, 0.625f, out _, Tiled) - reference) > 1e-4) mismatched++;
                 }
             Assert.That(mismatched, Is.GreaterThan(1000), "a neighbouring cell's row is told apart");
         }

@@ -299,7 +299,7 @@ namespace GregoryTerrain.Rig.Tests
                                         "internal PatchGrid ToPatchGrid()\n{\n string error = CheckSerializedData();\n return null;\n}\n" +
                                         "internal void ApplyEdit(PatchEdit edit)\n{\n _version = s_NextVersion++;\n _fingerprint = Fingerprint();\n}",
                 ["GregoryTerrainRenderer.Buffers.cs"] = "bool EnsureUploaded()\n{\n if (_uploadedVersion == grid.Version) return true;\n ReleaseGpuResources();\n return true;\n}",
-                ["GregoryTerrainRenderer.Queries.cs"] = "try { _query = new TerrainSurfaceQuery(grid.ToPatchGrid(), noise, tiledNoise: tiled); }",
+                ["GregoryTerrainRenderer.Queries.cs"] = "try { _query = new TerrainSurfaceQuery(grid.ToPatchGrid(), noise, keywords); }",
                 ["PatchGridAssetUndo.cs"] = "public static void SetGrid(PatchGridAsset asset, PatchGrid grid, string undoName)\n{\n Undo.RecordObject(asset, undoName);\n" +
                                             " PatchGridBlock[] existing = asset.Blocks;\n if (existing.Length > 0) Undo.RecordObjects(existing, undoName);\n}",
             };

@@ -80,7 +80,7 @@ namespace GregoryTerrain.Rig.Tests
             Assert.That(Field(renderer, "material"), Does.Contain(Guid(Sample("Gregory Terrain.mat.meta"))), "the renderer draws the sample's material");
             Assert.That(Field(renderer, "grid"), Does.Contain(Guid(Sample("PatchGrid.asset.meta"))), "the renderer draws the sample's grid");
             bool noise = Regex.IsMatch(material, @"^  - GT_NOISE$", RegexOptions.Multiline);
-            bool tiled = Regex.IsMatch(material, @"^  - GT_NOISE_TABLE$", RegexOptions.Multiline);
+            TerrainKeywords tiled = Regex.IsMatch(material, @"^  - GT_NOISE_TABLE$", RegexOptions.Multiline) ? TerrainKeywords.NoiseTable : TerrainKeywords.None;
             NoiseSettings? settings = noise
                 ? new NoiseSettings((float)Number(renderer, "noiseAmplitude"), (float)Number(renderer, "noiseFrequency"),
                                     (float)Number(renderer, "noiseAlpha"), (float)Number(renderer, "noiseBeta"), (int)Number(renderer, "noiseOctaves"))
@@ -95,7 +95,7 @@ namespace GregoryTerrain.Rig.Tests
                 BaseY = Component(transform, "m_LocalPosition", "y"),
                 ScaleY = Component(transform, "m_LocalScale", "y"),
                 HeightScale = Number(renderer, "heightScale"),
-                Surface = new TerrainSurfaceQuery(grid, settings, tiledNoise: tiled),
+                Surface = new TerrainSurfaceQuery(grid, settings, tiled),
             };
         }
 

@@ -393,8 +393,7 @@ namespace GregoryTerrain.Rig.Tests
                 c.MaxPosition = Math.Max(c.MaxPosition, Distance(gp, cp));
                 c.MaxNormal = Math.Max(c.MaxNormal, Distance(gn, cn));
                 // And the float path against the double reference at the same exact point.
-                TerrainVertex.Reference(Grid, core.surface.q.ToDouble(), Noise, octaves, out Double3 rp, out _,
-                                        (Keywords & TerrainKeywords.NoiseTable) != 0);
+                TerrainVertex.Reference(Grid, core.surface.q.ToDouble(), Noise, octaves, out Double3 rp, out _, Keywords);
                 rp -= offset;
                 c.MaxReference = Math.Max(c.MaxReference, GMath.length(new Double3(core.position.x, core.position.y, core.position.z) - rp));
             }

@@ -81,21 +81,21 @@ namespace GregoryTerrain
         /// 1/16, so the fraction has 4 bits and the noise is blocky but finite; a far coordinate
         /// should come through <see cref="AtPoint"/>, which keeps the fraction separate.
         /// </summary>
-        public static float Evaluate(float x, float y, out Float2 gradient)
+        public static float Evaluate(float x, float y, out Float2 gradient, TerrainKeywords keywords = TerrainKeywords.None)
         {
             float fx = GMath.floor(x), fy = GMath.floor(y);
-            return EvaluateCell((int)fx, (int)fy, x - fx, y - fy, out gradient);
+            return EvaluateCell((int)fx, (int)fy, x - fx, y - fy, out gradient, keywords);
         }
 
         /// <summary>
         /// Noise in cell <c>(ix, iy)</c> at fraction <c>(fx, fy)</c> (normally in [0, 1]); the core every
         /// float path shares. Its gradient is with respect to the lattice coordinate.
-        /// <paramref name="tiled"/>: the tiled noise (<see cref="GradientNoiseTable"/>, GT_NOISE_TABLE).
+        /// <see cref="TerrainKeywords.NoiseTable"/> in <paramref name="keywords"/>: the tiled noise (<see cref="GradientNoiseTable"/>).
         /// </summary>
-        public static float EvaluateCell(int ix, int iy, float fx, float fy, out Float2 gradient, bool tiled = false)
+        public static float EvaluateCell(int ix, int iy, float fx, float fy, out Float2 gradient, TerrainKeywords keywords = TerrainKeywords.None)
         {
-            if (tiled) return GradientNoiseTable.EvaluateCell(ix, iy, fx, fy, out gradient);
-            CornerGradients(ix, iy, false, out Float2 g00, out Float2 g10, out Float2 g01, out Float2 g11);
+            if ((keywords & TerrainKeywords.NoiseTable) != 0) return GradientNoiseTable.EvaluateCell(ix, iy, fx, fy, out gradient);
+            CornerGradients(ix, iy, keywords, out Float2 g00, out Float2 g10, out Float2 g01, out Float2 g11);
             return EvaluateCorners(g00, g10, g01, g11, fx, fy, out gradient);
         }
 
@@ -136,10 +136,10 @@ namespace GregoryTerrain
             return s * (f1 + s * (f2 + s * (f3 + s * (f4 + s * 6f))));
         }
 
-        /// <summary>The four corner gradients of cell (ix, iy): hashed, or wrapped modulo 256 when <paramref name="tiled"/>.</summary>
-        static void CornerGradients(int ix, int iy, bool tiled, out Float2 g00, out Float2 g10, out Float2 g01, out Float2 g11)
+        /// <summary>The four corner gradients of cell (ix, iy): hashed, or wrapped modulo 256 with <see cref="TerrainKeywords.NoiseTable"/>.</summary>
+        static void CornerGradients(int ix, int iy, TerrainKeywords keywords, out Float2 g00, out Float2 g10, out Float2 g01, out Float2 g11)
         {
-            if (tiled) { GradientNoiseTable.CornerGradients(ix, iy, out g00, out g10, out g01, out g11); return; }
+            if ((keywords & TerrainKeywords.NoiseTable) != 0) { GradientNoiseTable.CornerGradients(ix, iy, out g00, out g10, out g01, out g11); return; }
             g00 = Gradient(Hash(ix, iy));
             g10 = Gradient(Hash(unchecked(ix + 1), iy));
             g01 = Gradient(Hash(ix, unchecked(iy + 1)));
@@ -156,9 +156,9 @@ namespace GregoryTerrain
         /// wrapped corners' gradients here (not its table: the steps need the gradients themselves).
         /// </summary>
         public static float CellDifference(int ix, int iy, float fx, float fy, float sx, float sy, out Float2 gradient, out float baseValue,
-                                           bool tiled = false)
+                                           TerrainKeywords keywords = TerrainKeywords.None)
         {
-            CornerGradients(ix, iy, tiled, out Float2 g00, out Float2 g10, out Float2 g01, out Float2 g11);
+            CornerGradients(ix, iy, keywords, out Float2 g00, out Float2 g10, out Float2 g01, out Float2 g11);
             float gx = fx - 1f, gy = fy - 1f;
             float n00 = g00.x * fx + g00.y * fy;
             float n10 = g10.x * gx + g10.y * fy;
@@ -181,17 +181,17 @@ namespace GregoryTerrain
 
         /// <summary>
         /// The double reference: same hash, same gradients (the float constants, widened), same
-        /// formula, double arithmetic. Coordinates must be below 2^31 in magnitude. <paramref name="tiled"/>:
+        /// formula, double arithmetic. Coordinates must be below 2^31 in magnitude. <see cref="TerrainKeywords.NoiseTable"/>:
         /// the tiled noise's reference, the corners wrapped modulo 256 (its table's values unrounded).
         /// </summary>
-        public static double Evaluate(double x, double y, out Double2 gradient, bool tiled = false)
+        public static double Evaluate(double x, double y, out Double2 gradient, TerrainKeywords keywords = TerrainKeywords.None)
         {
             double flx = Math.Floor(x), fly = Math.Floor(y);
             if (!(Math.Abs(flx) < 2147483647.0 && Math.Abs(fly) < 2147483647.0))
                 throw new ArgumentException(FormattableString.Invariant($"noise coordinate ({x:R}, {y:R}) must be finite and below 2^31"), nameof(x));
             int ix = (int)flx, iy = (int)fly;
             double fx = x - flx, fy = y - fly;
-            CornerGradients(ix, iy, tiled, out Float2 f00, out Float2 f10, out Float2 f01, out Float2 f11);
+            CornerGradients(ix, iy, keywords, out Float2 f00, out Float2 f10, out Float2 f01, out Float2 f11);
             Double2 g00 = f00, g10 = f10, g01 = f01, g11 = f11;
             double gx = fx - 1.0, gy = fy - 1.0;
             double n00 = g00.x * fx + g00.y * fy;
@@ -220,11 +220,11 @@ namespace GregoryTerrain
         /// offset's fraction, are added in float. The cell is then renormalised so the fraction lies in
         /// [0, 1]. With origin 0 this is <c>Evaluate(frequency * q + offset)</c> up to one rounding.
         /// </summary>
-        public static float AtPoint(TerrainPoint p, float frequency, Float2 offset, out Float2 gradient, bool tiled = false)
+        public static float AtPoint(TerrainPoint p, float frequency, Float2 offset, out Float2 gradient, TerrainKeywords keywords = TerrainKeywords.None)
         {
             SplitLattice(p.originHi.x, p.local.x, frequency, offset.x, out int ix, out float fx);
             SplitLattice(p.originHi.y, p.local.y, frequency, offset.y, out int iy, out float fy);
-            return EvaluateCell(ix, iy, fx, fy, out gradient, tiled);
+            return EvaluateCell(ix, iy, fx, fy, out gradient, keywords);
         }
 
         /// <summary>One axis of <see cref="AtPoint"/>: <c>frequency * (hi + local) + offset = cell + fraction</c>.</summary>
@@ -254,11 +254,11 @@ namespace GregoryTerrain
         }
 
         /// <summary>HLSL <c>GradientNoiseAtLocal</c>: <see cref="AtPoint"/> of a point whose originHi is 0, bit for bit.</summary>
-        public static float AtLocal(Float2 local, float frequency, Float2 offset, out Float2 gradient, bool tiled = false)
+        public static float AtLocal(Float2 local, float frequency, Float2 offset, out Float2 gradient, TerrainKeywords keywords = TerrainKeywords.None)
         {
             SplitLocal(local.x, frequency, offset.x, out int ix, out float fx);
             SplitLocal(local.y, frequency, offset.y, out int iy, out float fy);
-            return EvaluateCell(ix, iy, fx, fy, out gradient, tiled);
+            return EvaluateCell(ix, iy, fx, fy, out gradient, keywords);
         }
 
         /// <summary>

@@ -4,7 +4,7 @@ namespace GregoryTerrain
 {
     /// <summary>
     /// Height colour, eq. 14-15: <c>s = saturate(l + z / gamma)</c>, <c>colour = high * s + low * (1 - s)</c>
-    /// (B and C of the paper, linear RGB), with l the colour noise from <see cref="ColorNoise(TerrainPoint, HeightColorSettings, bool)"/>.
+    /// (B and C of the paper, linear RGB), with l the colour noise from <see cref="ColorNoise(TerrainPoint, HeightColorSettings, TerrainKeywords)"/>.
     /// Mirrored by Shaders/Library/HeightColor.hlsl (<c>HeightColor.Weight</c> is HLSL <c>HeightColorWeight</c>, etc.).
     /// </summary>
     internal static class HeightColor
@@ -38,30 +38,30 @@ namespace GregoryTerrain
         /// The colour noise l: one octave of <see cref="GradientNoise"/> at its own frequency and offset,
         /// times its own amplitude (internals.md <c>_HeightColor</c>). Deep-zoom safe like the height noise.
         /// </summary>
-        public static float ColorNoise(TerrainPoint p, HeightColorSettings settings, bool tiled = false)
+        public static float ColorNoise(TerrainPoint p, HeightColorSettings settings, TerrainKeywords keywords = TerrainKeywords.None)
         {
             settings.Validate(nameof(settings));
-            return settings.noiseAmplitude * GradientNoise.AtPoint(p, settings.noiseFrequency, GradientNoise.StreamOffset(ColorStream), out _, tiled);
+            return settings.noiseAmplitude * GradientNoise.AtPoint(p, settings.noiseFrequency, GradientNoise.StreamOffset(ColorStream), out _, keywords);
         }
 
         /// <summary>
-        /// HLSL <c>HeightColorNoiseAtLocal</c>: <see cref="ColorNoise(TerrainPoint, HeightColorSettings, bool)"/>
+        /// HLSL <c>HeightColorNoiseAtLocal</c>: <see cref="ColorNoise(TerrainPoint, HeightColorSettings, TerrainKeywords)"/>
         /// of a point whose originHi is 0, bit for bit, without TwoProduct (what the tessellated stages
         /// draw without the range origin's code).
         /// </summary>
-        public static float ColorNoiseAtLocal(Float2 local, HeightColorSettings settings, bool tiled = false)
+        public static float ColorNoiseAtLocal(Float2 local, HeightColorSettings settings, TerrainKeywords keywords = TerrainKeywords.None)
         {
             settings.Validate(nameof(settings));
-            return settings.noiseAmplitude * GradientNoise.AtLocal(local, settings.noiseFrequency, GradientNoise.StreamOffset(ColorStream), out _, tiled);
+            return settings.noiseAmplitude * GradientNoise.AtLocal(local, settings.noiseFrequency, GradientNoise.StreamOffset(ColorStream), out _, keywords);
         }
 
-        /// <summary>The double reference of <see cref="ColorNoise(TerrainPoint, HeightColorSettings, bool)"/>.</summary>
-        public static double ColorNoise(double x, double y, HeightColorSettings settings, bool tiled = false)
+        /// <summary>The double reference of <see cref="ColorNoise(TerrainPoint, HeightColorSettings, TerrainKeywords)"/>.</summary>
+        public static double ColorNoise(double x, double y, HeightColorSettings settings, TerrainKeywords keywords = TerrainKeywords.None)
         {
             settings.Validate(nameof(settings));
             Double2 off = GradientNoise.StreamOffset(ColorStream);
             double f = settings.noiseFrequency;
-            return settings.noiseAmplitude * GradientNoise.Evaluate(f * x + off.x, f * y + off.y, out _, tiled);
+            return settings.noiseAmplitude * GradientNoise.Evaluate(f * x + off.x, f * y + off.y, out _, keywords);
         }
 
         static void CheckGamma(float gamma)

@@ -17,9 +17,9 @@ namespace GregoryTerrain
         /// Float evaluation at a <see cref="TerrainPoint"/> (deep-zoom safe, see <see cref="GradientNoise.AtPoint"/>).
         /// <paramref name="gradient"/> is d p / d q (terrain units), for the normal.
         /// <paramref name="octaveCount"/> is clamped to [0, settings.octaves].
-        /// <paramref name="tiled"/>: every octave is the tiled noise (<see cref="GradientNoiseTable"/>, GT_NOISE_TABLE).
+        /// <see cref="TerrainKeywords.NoiseTable"/> in <paramref name="keywords"/>: every octave is the tiled noise (<see cref="GradientNoiseTable"/>).
         /// </summary>
-        public static float Evaluate(TerrainPoint p, NoiseSettings settings, float octaveCount, out Float2 gradient, bool tiled = false)
+        public static float Evaluate(TerrainPoint p, NoiseSettings settings, float octaveCount, out Float2 gradient, TerrainKeywords keywords = TerrainKeywords.None)
         {
             float count = ClampedCount(settings, octaveCount);
             var sum = new OctaveSum(settings);
@@ -31,8 +31,8 @@ namespace GregoryTerrain
                 float fade = GMath.saturate(count - k);   // 1 for whole octaves, the fraction for the last
                 if (fade <= 0f) break;
                 Float2 offset = GradientNoise.StreamOffset((uint)k);
-                float nk = local ? GradientNoise.AtLocal(p.local, sum.frequency, offset, out Float2 gk, tiled)
-                                 : GradientNoise.AtPoint(p, sum.frequency, offset, out gk, tiled);
+                float nk = local ? GradientNoise.AtLocal(p.local, sum.frequency, offset, out Float2 gk, keywords)
+                                 : GradientNoise.AtPoint(p, sum.frequency, offset, out gk, keywords);
                 sum.Add(fade, nk, gk, settings.alpha);
             }
             return sum.Result(settings.amplitude, out gradient);
@@ -99,11 +99,11 @@ namespace GregoryTerrain
         /// and with beta = alpha its weight makes the rounding as small in pixels as the cells are).</item>
         /// </list>
         /// Depends on q and per-frame constants only (shared tile edges stay bit-identical).
-        /// <paramref name="gradient"/> is d p / d q at q, as from <see cref="Evaluate(TerrainPoint, NoiseSettings, float, out Float2, bool)"/>.
+        /// <paramref name="gradient"/> is d p / d q at q, as from <see cref="Evaluate(TerrainPoint, NoiseSettings, float, out Float2, TerrainKeywords)"/>.
         /// Mirrors HLSL <c>OctaveNoiseRelative</c>; the renderer adds p(O) (double) back.
         /// </summary>
         public static float Relative(TerrainPoint q, TerrainPoint origin, Float2 qMinusOrigin, NoiseSettings settings, float octaveCount, out Float2 gradient,
-                                     bool tiled = false)
+                                     TerrainKeywords keywords = TerrainKeywords.None)
         {
             float count = ClampedCount(settings, octaveCount);
             var sum = new OctaveSum(settings);
@@ -111,7 +111,7 @@ namespace GregoryTerrain
             {
                 float fade = GMath.saturate(count - k);
                 if (fade <= 0f) break;
-                float nk = OctaveNoiseDifference(q, origin, qMinusOrigin, sum.frequency, GradientNoise.StreamOffset((uint)k), out Float2 gk, tiled);
+                float nk = OctaveNoiseDifference(q, origin, qMinusOrigin, sum.frequency, GradientNoise.StreamOffset((uint)k), out Float2 gk, keywords);
                 sum.Add(fade, nk, gk, settings.alpha);
             }
             return sum.Result(settings.amplitude, out gradient);
@@ -119,29 +119,29 @@ namespace GregoryTerrain
 
         /// <summary>One octave of <see cref="Relative"/>: <c>K(f q + offset) - K(f O + offset)</c>, gradient at q (lattice units).</summary>
         public static float OctaveNoiseDifference(TerrainPoint q, TerrainPoint origin, Float2 qMinusOrigin, float frequency, Float2 offset, out Float2 gradient,
-                                             bool tiled = false)
+                                             TerrainKeywords keywords = TerrainKeywords.None)
         {
             GradientNoise.SplitLattice(origin.originHi.x, origin.local.x, frequency, offset.x, out int cx, out float fx);
             GradientNoise.SplitLattice(origin.originHi.y, origin.local.y, frequency, offset.y, out int cy, out float fy);
             float sx = qMinusOrigin.x * frequency, sy = qMinusOrigin.y * frequency;   // the lattice step
             int mx = (int)GMath.floor(fx + sx), my = (int)GMath.floor(fy + sy);      // q's cell relative to O's
             if (mx == 0 && my == 0)
-                return GradientNoise.CellDifference(cx, cy, fx, fy, sx, sy, out gradient, out _, tiled);
+                return GradientNoise.CellDifference(cx, cy, fx, fy, sx, sy, out gradient, out _, keywords);
             if (Math.Abs(mx) <= 1 && Math.Abs(my) <= 1)
             {
                 // r1 = O clamped into q's cell, in O's cell frame: f0, or the line at 1 or 0.
                 float rx = mx == 0 ? fx : (mx > 0 ? 1f : 0f), ry = my == 0 ? fy : (my > 0 ? 1f : 0f);
                 float tx = rx - fx, ty = ry - fy;                                    // O -> r1
-                float toR1 = GradientNoise.CellDifference(cx, cy, fx, fy, tx, ty, out _, out _, tiled);
-                float fromR1 = GradientNoise.CellDifference(cx + mx, cy + my, rx - mx, ry - my, sx - tx, sy - ty, out gradient, out _, tiled);
+                float toR1 = GradientNoise.CellDifference(cx, cy, fx, fy, tx, ty, out _, out _, keywords);
+                float fromR1 = GradientNoise.CellDifference(cx + mx, cy + my, rx - mx, ry - my, sx - tx, sy - ty, out gradient, out _, keywords);
                 return fromR1 + toR1;
             }
-            float atQ = GradientNoise.AtPoint(q, frequency, offset, out gradient, tiled);
-            return atQ - GradientNoise.EvaluateCell(cx, cy, fx, fy, out _, tiled);
+            float atQ = GradientNoise.AtPoint(q, frequency, offset, out gradient, keywords);
+            return atQ - GradientNoise.EvaluateCell(cx, cy, fx, fy, out _, keywords);
         }
 
         /// <summary>The double reference at <c>(x, y)</c>, same octaves, frequencies and offsets.</summary>
-        public static double Evaluate(double x, double y, NoiseSettings settings, double octaveCount, out Double2 gradient, bool tiled = false)
+        public static double Evaluate(double x, double y, NoiseSettings settings, double octaveCount, out Double2 gradient, TerrainKeywords keywords = TerrainKeywords.None)
         {
             settings.Validate(nameof(settings));
             if (!GMath.isfinite(x) || !GMath.isfinite(y))
@@ -157,7 +157,7 @@ namespace GregoryTerrain
                 double fade = GMath.saturate(count - k);
                 if (fade <= 0.0) break;
                 Double2 off = GradientNoise.StreamOffset((uint)k);
-                double nk = GradientNoise.Evaluate(f * x + off.x, f * y + off.y, out Double2 gk, tiled);
+                double nk = GradientNoise.Evaluate(f * x + off.x, f * y + off.y, out Double2 gk, keywords);
                 double wk = w * fade;
                 n += wk * nk;
                 g += gk * (wk * f);

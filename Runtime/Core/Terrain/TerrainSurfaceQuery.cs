@@ -63,7 +63,7 @@ namespace GregoryTerrain
 
         readonly PatchGrid _grid;
         readonly bool _noiseOn;
-        readonly bool _tiled;     // the tiled noise (GT_NOISE_TABLE)
+        readonly TerrainKeywords _keywords;   // NoiseTable: the tiled noise (GT_NOISE_TABLE)
         readonly NoiseSettings _noise;
         readonly double[] _frequency;        // octave k's frequency (the float sequence, widened)
         readonly Double2[] _offset;          // octave k's stream offset
@@ -90,15 +90,15 @@ namespace GregoryTerrain
 
         /// <summary>
         /// A query over <paramref name="grid"/> (validated), with <paramref name="noise"/> (validated;
-        /// null: no noise; <paramref name="tiledNoise"/>: the tiled noise of GT_NOISE_TABLE). Precomputes the ray march's bounds.
+        /// null: no noise; <see cref="TerrainKeywords.NoiseTable"/> in <paramref name="keywords"/>: the tiled noise, the only keyword it reads). Precomputes the ray march's bounds.
         /// </summary>
-        public TerrainSurfaceQuery(PatchGrid grid, NoiseSettings? noise, bool tiledNoise = false)
+        public TerrainSurfaceQuery(PatchGrid grid, NoiseSettings? noise, TerrainKeywords keywords = TerrainKeywords.None)
         {
             if (grid == null) throw new ArgumentNullException(nameof(grid));
             grid.Validate();
             _grid = grid;
             _noiseOn = noise.HasValue;
-            _tiled = tiledNoise;
+            _keywords = keywords;
             int n = 0;
             if (_noiseOn)
             {
@@ -155,7 +155,7 @@ namespace GregoryTerrain
                 throw new ArgumentException($"grid is {grid.Columns} x {grid.Rows} patches, the query's {old.Columns} x {old.Rows}.", nameof(grid));
             _grid = grid;
             _noiseOn = previous._noiseOn;
-            _tiled = previous._tiled;
+            _keywords = previous._keywords;
             _noise = previous._noise;
             _frequency = previous._frequency;
             _offset = previous._offset;
@@ -228,7 +228,7 @@ namespace GregoryTerrain
         }
 
         /// <summary>
-        /// p(x, y) with every octave and its gradient d p / d q: <see cref="OctaveNoise.Evaluate(double, double, NoiseSettings, double, out Double2, bool)"/>
+        /// p(x, y) with every octave and its gradient d p / d q: <see cref="OctaveNoise.Evaluate(double, double, NoiseSettings, double, out Double2, TerrainKeywords)"/>
         /// at the full count, same sums in the same order, from precomputed octave constants.
         /// </summary>
         double NoiseHeight(double x, double y, out Double2 gradient)
@@ -238,7 +238,7 @@ namespace GregoryTerrain
             for (int k = 0; k < _frequency.Length; k++)
             {
                 double f = _frequency[k];
-                double nk = GradientNoise.Evaluate(f * x + _offset[k].x, f * y + _offset[k].y, out Double2 gk, _tiled);
+                double nk = GradientNoise.Evaluate(f * x + _offset[k].x, f * y + _offset[k].y, out Double2 gk, _keywords);
                 n += w * nk;
                 g += gk * (w * f);
                 w *= invBeta;
@@ -263,7 +263,7 @@ namespace GregoryTerrain
                 for (int k = 0; k < _frequency.Length; k++)
                 {
                     double f = _frequency[k];
-                    n += w * GradientNoise.Evaluate(f * x + _offset[k].x, f * y + _offset[k].y, out _, _tiled);
+                    n += w * GradientNoise.Evaluate(f * x + _offset[k].x, f * y + _offset[k].y, out _, _keywords);
                     w *= invBeta;
                     partial[k + 1] = _noise.amplitude * n;
                 }

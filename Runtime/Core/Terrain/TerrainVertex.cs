@@ -240,7 +240,7 @@ namespace GregoryTerrain
             {
                 Double2 o = origin.Value;
                 var noise = new NoiseSettings(p.noise.x, p.noise.y, p.noise.z, p.noise.w, (int)p.noiseOctaves.x);
-                s.z += OctaveNoise.Evaluate(o.x, o.y, noise, OutputOffsetOctaves(p), out _, (keywords & TerrainKeywords.NoiseTable) != 0);
+                s.z += OctaveNoise.Evaluate(o.x, o.y, noise, OutputOffsetOctaves(p), out _, keywords);
             }
             return s;
         }
@@ -262,7 +262,6 @@ namespace GregoryTerrain
         {
             Float3 position = OutputSurfacePosition(inputs, s, keywords), dPdu = s.dPdu, dPdv = s.dPdv;
             float noiseHeight = 0f;   // the absolute p(q)
-            bool tiled = (keywords & TerrainKeywords.NoiseTable) != 0;
             if ((keywords & TerrainKeywords.Noise) != 0)
             {
                 // Noise lives on the global point; in paper mode a clamped vertex takes the noise of
@@ -278,14 +277,14 @@ namespace GregoryTerrain
                     // Deep zoom: p(q) - p(O) from precise differences, like the surface (precision.md).
                     TerrainPoint origin = RelativeSurface.OriginPoint(originF);
                     position.z += OctaveNoise.Relative(s.q, origin, RelativeSurface.Difference(s.q, origin),
-                                                       inputs.NoiseSettingsStruct(), octaves, out gradient, tiled);
+                                                       inputs.NoiseSettingsStruct(), octaves, out gradient, keywords);
                     // The height colour needs the absolute p(q); HLSL evaluates it only with GT_HEIGHT_COLOR.
                     if ((keywords & TerrainKeywords.HeightColor) != 0)
-                        noiseHeight = OctaveNoise.Evaluate(noisePoint, inputs.NoiseSettingsStruct(), octaves, out _, tiled);
+                        noiseHeight = OctaveNoise.Evaluate(noisePoint, inputs.NoiseSettingsStruct(), octaves, out _, keywords);
                 }
                 else
                 {
-                    noiseHeight = OctaveNoise.Evaluate(noisePoint, inputs.NoiseSettingsStruct(), octaves, out gradient, tiled);
+                    noiseHeight = OctaveNoise.Evaluate(noisePoint, inputs.NoiseSettingsStruct(), octaves, out gradient, keywords);
                     position.z += noiseHeight;
                 }
                 // q = (a + u (e - a), b + v (f - b)): the chain rule scales the gradient by the region size.
@@ -315,8 +314,8 @@ namespace GregoryTerrain
                 // Without a hi part the HLSL splits without TwoProduct (HeightColorNoiseAtLocal): the
                 // same value bit for bit, mirrored here step for step.
                 bool local = s.q.originHi.x == 0f && s.q.originHi.y == 0f;
-                o.colorNoise = local ? HeightColor.ColorNoiseAtLocal(s.q.local, inputs.HeightColorSettings(), tiled)
-                                     : HeightColor.ColorNoise(s.q, inputs.HeightColorSettings(), tiled);
+                o.colorNoise = local ? HeightColor.ColorNoiseAtLocal(s.q.local, inputs.HeightColorSettings(), keywords)
+                                     : HeightColor.ColorNoise(s.q, inputs.HeightColorSettings(), keywords);
             }
             return o;
         }
@@ -344,10 +343,11 @@ namespace GregoryTerrain
         /// Gregory patch of the grid (double control points, double lines), plus, when
         /// <paramref name="noise"/> is given, its octave noise with <paramref name="octaveCount"/>
         /// octaves (pass the float path's <see cref="TerrainInputs.NoiseOctaveCount()"/> so the two
-        /// differ only in arithmetic). Position (x, y, z) and unit normal.
+        /// differ only in arithmetic); <see cref="TerrainKeywords.NoiseTable"/> in <paramref name="keywords"/> makes
+        /// it the tiled noise. Position (x, y, z) and unit normal.
         /// </summary>
         public static void Reference(PatchGrid grid, Double2 q, NoiseSettings? noise, double octaveCount,
-                                     out Double3 position, out Double3 normal, bool tiledNoise = false)
+                                     out Double3 position, out Double3 normal, TerrainKeywords keywords = TerrainKeywords.None)
         {
             if (grid == null) throw new ArgumentNullException(nameof(grid));
             if (!q.IsFinite) throw new ArgumentException($"q {q} must be finite", nameof(q));
@@ -357,7 +357,7 @@ namespace GregoryTerrain
             GregoryEval.Evaluate(grid.Patches[patch].Points, uv.x, uv.y, out position, out Double3 dPdu, out Double3 dPdv);
             if (noise.HasValue)
             {
-                position.z += OctaveNoise.Evaluate(q.x, q.y, noise.Value, octaveCount, out Double2 gradient, tiledNoise);
+                position.z += OctaveNoise.Evaluate(q.x, q.y, noise.Value, octaveCount, out Double2 gradient, keywords);
                 dPdu.z += gradient.x * (region.e - region.a);
                 dPdv.z += gradient.y * (region.f - region.b);
             }
