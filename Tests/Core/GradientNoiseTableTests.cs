@@ -21,8 +21,8 @@ namespace GregoryTerrain.Tests
             {
                 int ix = rng.Next(0, 255), iy = rng.Next(0, 255);
                 float fx = (float)rng.NextDouble(), fy = (float)rng.NextDouble();
-                float t = GradientNoise.EvaluateCell(ix, iy, fx, fy, out Float2 gt, Tiled);
-                float h = GradientNoise.EvaluateCell(ix, iy, fx, fy, out Float2 gh);
+                float t = GradientNoise.Cell(ix, iy, fx, fy, out Float2 gt, Tiled);
+                float h = GradientNoise.Cell(ix, iy, fx, fy, out Float2 gh);
                 worst = Math.Max(worst, Math.Abs(t - h));
                 worstGradient = Math.Max(worstGradient, Math.Max(Math.Abs(gt.x - gh.x), Math.Abs(gt.y - gh.y)));
                 Assert.That(GradientNoise.Evaluate(ix + (double)fx, iy + (double)fy, out _, Tiled),
@@ -46,8 +46,8 @@ namespace GregoryTerrain.Tests
                 double b = GradientNoise.Evaluate(x + sx, y + sy, out Double2 gb, Tiled);
                 Assert.That(b, Is.EqualTo(a).Within(1e-9), $"period at ({x:R}, {y:R}) + ({sx}, {sy})");
                 Assert.That(gb.x, Is.EqualTo(ga.x).Within(1e-9));
-                float fa = GradientNoise.EvaluateCell((int)Math.Floor(x), (int)Math.Floor(y), (float)(x - Math.Floor(x)), (float)(y - Math.Floor(y)), out _, Tiled);
-                float fb = GradientNoise.EvaluateCell((int)Math.Floor(x) + sx, (int)Math.Floor(y) + sy, (float)(x - Math.Floor(x)), (float)(y - Math.Floor(y)), out _, Tiled);
+                float fa = GradientNoise.Cell((int)Math.Floor(x), (int)Math.Floor(y), (float)(x - Math.Floor(x)), (float)(y - Math.Floor(y)), out _, Tiled);
+                float fb = GradientNoise.Cell((int)Math.Floor(x) + sx, (int)Math.Floor(y) + sy, (float)(x - Math.Floor(x)), (float)(y - Math.Floor(y)), out _, Tiled);
                 Assert.That(fb, Is.EqualTo(fa), "float: the same table row");
                 if (Math.Abs(GradientNoise.Evaluate(x + sx, y + sy, out _) - b) > 1e-3) differ++;
             }
@@ -110,8 +110,8 @@ namespace GregoryTerrain.Tests
                 for (int x = 0; x < 256; x += 3)
                 {
                     double reference = GradientNoise.Evaluate(x + 0.375, y + 0.625, out _, Tiled);
-                    Assert.That(GradientNoise.EvaluateCell(x, y, 0.375f, 0.625f, out _, Tiled), Is.EqualTo(reference).Within(2e-6), $"cell ({x}, {y})");
-                    if (Math.Abs(GradientNoise.EvaluateCell(x + 1, y, 0.375f, 0.625f, out _, Tiled) - reference) > 1e-4) mismatched++;
+                    Assert.That(GradientNoise.Cell(x, y, 0.375f, 0.625f, out _, Tiled), Is.EqualTo(reference).Within(2e-6), $"cell ({x}, {y})");
+                    if (Math.Abs(GradientNoise.Cell(x + 1, y, 0.375f, 0.625f, out _, Tiled) - reference) > 1e-4) mismatched++;
                 }
             Assert.That(mismatched, Is.GreaterThan(1000), "a neighbouring cell's row is told apart");
         }

@@ -84,7 +84,7 @@ namespace GregoryTerrain
         public static float Evaluate(float x, float y, out Float2 gradient, TerrainKeywords keywords = TerrainKeywords.None)
         {
             float fx = GMath.floor(x), fy = GMath.floor(y);
-            return EvaluateCell((int)fx, (int)fy, x - fx, y - fy, out gradient, keywords);
+            return Cell((int)fx, (int)fy, x - fx, y - fy, out gradient, keywords);
         }
 
         /// <summary>
@@ -92,14 +92,14 @@ namespace GregoryTerrain
         /// float path shares. Its gradient is with respect to the lattice coordinate.
         /// <see cref="TerrainKeywords.NoiseTable"/> in <paramref name="keywords"/>: the tiled noise (<see cref="GradientNoiseTable"/>).
         /// </summary>
-        public static float EvaluateCell(int ix, int iy, float fx, float fy, out Float2 gradient, TerrainKeywords keywords = TerrainKeywords.None)
+        public static float Cell(int ix, int iy, float fx, float fy, out Float2 gradient, TerrainKeywords keywords = TerrainKeywords.None)
         {
             if ((keywords & TerrainKeywords.NoiseTable) != 0) return GradientNoiseTable.EvaluateCell(ix, iy, fx, fy, out gradient);
             CornerGradients(ix, iy, keywords, out Float2 g00, out Float2 g10, out Float2 g01, out Float2 g11);
             return EvaluateCorners(g00, g10, g01, g11, fx, fy, out gradient);
         }
 
-        /// <summary><see cref="EvaluateCell"/> once the cell's four corner gradients are known.</summary>
+        /// <summary><see cref="Cell"/> once the cell's four corner gradients are known.</summary>
         static float EvaluateCorners(Float2 g00, Float2 g10, Float2 g01, Float2 g11, float fx, float fy, out Float2 gradient)
         {
             float gx = fx - 1f, gy = fy - 1f;
@@ -224,7 +224,7 @@ namespace GregoryTerrain
         {
             SplitLattice(p.originHi.x, p.local.x, frequency, offset.x, out int ix, out float fx);
             SplitLattice(p.originHi.y, p.local.y, frequency, offset.y, out int iy, out float fy);
-            return EvaluateCell(ix, iy, fx, fy, out gradient, keywords);
+            return Cell(ix, iy, fx, fy, out gradient, keywords);
         }
 
         /// <summary>One axis of <see cref="AtPoint"/>: <c>frequency * (hi + local) + offset = cell + fraction</c>.</summary>
@@ -258,7 +258,7 @@ namespace GregoryTerrain
         {
             SplitLocal(local.x, frequency, offset.x, out int ix, out float fx);
             SplitLocal(local.y, frequency, offset.y, out int iy, out float fy);
-            return EvaluateCell(ix, iy, fx, fy, out gradient, keywords);
+            return Cell(ix, iy, fx, fy, out gradient, keywords);
         }
 
         /// <summary>

@@ -66,7 +66,7 @@ namespace GregoryTerrain
         /// <summary>
         /// HLSL <c>GradientNoiseCell</c> under <c>GT_NOISE_TABLE</c>: the noise of cell (ix, iy) at fraction
         /// (fx, fy) from the cell's table rows, gradient with respect to the lattice coordinate. The
-        /// same polynomial as <see cref="GradientNoise.EvaluateCell"/> of the wrapped corners, its
+        /// same polynomial as <see cref="GradientNoise.Cell"/> of the wrapped corners, its
         /// coefficients rounded once into the table.
         /// </summary>
         public static float EvaluateCell(int ix, int iy, float fx, float fy, out Float2 gradient)

@@ -137,7 +137,7 @@ namespace GregoryTerrain
                 return fromR1 + toR1;
             }
             float atQ = GradientNoise.AtPoint(q, frequency, offset, out gradient, keywords);
-            return atQ - GradientNoise.EvaluateCell(cx, cy, fx, fy, out _, keywords);
+            return atQ - GradientNoise.Cell(cx, cy, fx, fy, out _, keywords);
         }
 
         /// <summary>The double reference at <c>(x, y)</c>, same octaves, frequencies and offsets.</summary>
