@@ -11,7 +11,7 @@
 //                       for the tiles whose factors or range changed since their last evaluation
 //
 // A frame dispatches both, in that order, then draws; the hull stage reads the factors and the
-// domain stage reads the records (TerrainStages.hlsl). Why: the per-vertex work (FindPatch, the 20
+// domain stage reads the records (VertexSource.Cache.hlsl). Why: the per-vertex work (FindPatch, the 20
 // control points, the rational Gregory evaluation, the noise octaves) runs on every compute unit
 // instead of the graphics stages (on NVIDIA's H100/H200 only a few units run those at all), and
 // each vertex of the tile is evaluated once, not once per triangle fan the tessellator emits.

@@ -3,11 +3,9 @@
 //
 //   vert           tile mode: one 4-control-point patch per tile, no vertex buffer:
 //                  tile = SV_VertexID / 4, corner = SV_VertexID % 4 (internals.md, "Shader stages")
-//   hull_const     edge factors from each tile edge's chord error in pixels, frustum culling
-//                  (TileFactors.hlsl); GT_VERTEX_CACHE: the factors the compute pass decided
+//   hull_const     the tile's factors from its vertex source (VertexSource.*.hlsl, one per mode)
 //   hull_shader    passes the 4 corners through
-//   domain_shader  tess coordinate -> TerrainVertex (TerrainVertex.hlsl); GT_VERTEX_CACHE: the
-//                  vertex the compute pass stored (VertexCacheKernels.hlsl), transformed
+//   domain_shader  tess coordinate -> the vertex source's TerrainVaryings
 //   vert_fallback  no tessellator: a (F+1)^2 UV grid per instance (= tile), same TerrainVertex
 //   frag           TerrainShading.hlsl: colour (forward), packed normal (GT_PASS_DEPTH_NORMALS),
 //                  depth (GT_PASS_DEPTH), nothing (GT_PASS_SHADOWCASTER), the editor's selection
@@ -30,23 +28,6 @@
 #include "../Terrain/TerrainVertex.hlsl"
 #include "../Terrain/TerrainShading.hlsl"
 #include "../Terrain/TileFactors.hlsl"
-#if defined(GT_VERTEX_CACHE)
-    #include "../Cache/ClippedCell.hlsl"
-    #if defined(GT_EXTEND_DRAW_PATCHES) || defined(GT_EXTEND_VERTEX) || defined(GT_EXTEND_TILE_FACTORS)
-        #error "GT_VERTEX_CACHE draws tiles from the cache: no other draw patches, and the cache holds the vertices and factors"
-    #endif
-#endif
-
-// The vertex cache (VertexCache.hlsl) stores vertices at k / F: only integer partitioning makes
-// those. Otherwise fractional_odd: factors change continuously with the view, so no popping.
-// The levels' seam rule (LodTiles.hlsl) needs integer factors too: 2g coarse segments meet g + g fine.
-#if !defined(GT_PARTITIONING)
-    #if defined(GT_VERTEX_CACHE) || defined(GT_LOD)
-        #define GT_PARTITIONING "integer"
-    #else
-        #define GT_PARTITIONING "fractional_odd"
-    #endif
-#endif
 
 // vert -> hull -> domain: one corner of a tile (or of an extension's draw patch).
 struct TileCorner
@@ -69,131 +50,6 @@ struct TileFactors
 #endif
 };
 
-// The layout draw patch `drawPatch` is drawn with and its tile (slot) there: the frame's layout, or
-// with GT_LOD its level's (draw patch p is tile p mod M^2 of level p / M^2, LodTiles.hlsl).
-TileLayout StageTileLayout(uint drawPatch, out uint slot)
-{
-#if defined(GT_LOD)
-    slot = LodSlotOfPatch(drawPatch, TileCountInt());
-    return LodLevelLayout(LodLevelOfPatch(drawPatch, TileCountInt()));
-#else
-    slot = drawPatch;
-    return FrameTileLayout();
-#endif
-}
-
-TileCorner vert(uint vertexID : SV_VertexID)
-{
-    TileCorner o;
-    o.drawPatch = vertexID / 4u;
-#if defined(GT_VERTEX_CACHE)
-    o.positionOS = float3(0.0, 0.0, 0.0);   // the factors come from the cache
-#else
-    uint slot;
-    TileLayout l = StageTileLayout(o.drawPatch, slot);
-    o.positionOS = CellCornerObjectPosition(l, slot, vertexID % 4u);
-#endif
-    return o;
-}
-
-#if defined(GT_EXTEND_TILE_FACTORS)
-// Extension point: the entry file sees the factors hull_const returns for each drawn patch; it
-// defines this after including the stages.
-void ExtensionTileFactors(uint drawPatch, TileFactors f);
-#endif
-
-#if defined(GT_LOD)
-// The seams of draw patch p's tile (LodTiles.hlsl): coarseMask, its edges on the rim of the finer
-// level (none on level 0), fineMask, its edges on its own level's boundary where a coarser level
-// lies beyond (none on the last level); inside: wholly inside the finer level (culled). ab: the
-// finer level's offset in this level's cells, abUp this level's in the coarser one's.
-void LodTileSeams(uint drawPatch, out uint coarseMask, out uint fineMask, out bool inside, out int2 ab, out int2 abUp)
-{
-    uint m = TileCountInt();
-    uint level = LodLevelOfPatch(drawPatch, m), slot = LodSlotOfPatch(drawPatch, m);
-    int2 tile = int2(slot % m, slot / m);
-    coarseMask = 0u;
-    fineMask = 0u;
-    inside = false;
-    ab = int2(0, 0);
-    abUp = int2(0, 0);
-    if (level > 0u)
-    {
-        ab = FinerOffsetCells(LodRange(level), LodRange(level - 1u), TileCount());
-        inside = TileInsideFiner(tile, ab, (int)m);
-        coarseMask = CoarseSeamEdges(tile, ab, (int)m);
-    }
-    if (level + 1u < LodLevelCount())
-    {
-        abUp = FinerOffsetCells(LodRange(level + 1u), LodRange(level), TileCount());
-        fineMask = FineSeamEdges(tile, abUp, (int)m);
-    }
-}
-
-// The factor of edge `edge` (0..3) of the coarse tile across a fine seam edge: what that coarse
-// tile's hull computes for it (the same function of the same inputs), uniform or adaptive.
-float CoarseSeamEdgeFactor(uint drawPatch, uint edgeBit, int2 abUp)
-{
-    if (UsesUniformTessFactor()) return UniformTessFactor();
-    uint m = TileCountInt();
-    uint level = LodLevelOfPatch(drawPatch, m), slot = LodSlotOfPatch(drawPatch, m);
-    uint coarseEdge;
-    int upperHalf;
-    int2 coarseTile = FineSeamCoarseTile(edgeBit, int2(slot % m, slot / m), abUp, coarseEdge, upperHalf);
-    uint coarseSlot = (uint)coarseTile.y * m + (uint)coarseTile.x;
-    TileLayout coarse = LodLevelLayout(level + 1u);
-    float3 cornerOS[4];
-    [unroll] for (uint c = 0; c < 4; c++)
-        cornerOS[c] = CellCornerObjectPosition(coarse, coarseSlot, c);
-    uint piece = coarseEdge == GT_EDGE_U0 ? 0u : (coarseEdge == GT_EDGE_V0 ? 1u : (coarseEdge == GT_EDGE_U1 ? 2u : 3u));
-    return max(TileFactorPiece(coarse, coarseSlot, piece, cornerOS), 1.0);
-}
-
-// The seam rule on a tile's factors: tiles inside the finer level culled; a coarse seam edge of
-// factor f draws 2g, each fine one g, g = SeamHalfFactor of the coarse edge's factor.
-TileFactorSet LodTileFactors(uint drawPatch, TileFactorSet set)
-{
-    uint coarseMask, fineMask;
-    bool inside;
-    int2 ab, abUp;
-    LodTileSeams(drawPatch, coarseMask, fineMask, inside, ab, abUp);
-    if (inside) return CulledTileFactors();
-    if (TileFactorsCulled(set)) return set;
-    float edge[4] = { set.edge.x, set.edge.y, set.edge.z, set.edge.w };
-    [unroll] for (uint i = 0u; i < 4u; i++)
-    {
-        uint bit = 1u << i;
-        if ((coarseMask & bit) != 0u) edge[i] = 2.0 * SeamHalfFactor(edge[i], MaxTessFactor());
-        else if ((fineMask & bit) != 0u) edge[i] = SeamHalfFactor(CoarseSeamEdgeFactor(drawPatch, bit, abUp), MaxTessFactor());
-    }
-    set.edge = float4(edge[0], edge[1], edge[2], edge[3]);
-    return set;
-}
-
-// The domain stage's vertex: a seam vertex's q is the coarse tile's point (SeamCoarsePoint), formed
-// alike on both sides; any other vertex its tile's own point.
-TerrainVaryings LodDomainVertex(uint drawPatch, float2 tess, float4 edgeFactors, float tessFactor)
-{
-    uint slot;
-    TileLayout l = StageTileLayout(drawPatch, slot);
-    uint m = TileCountInt();
-    uint level = LodLevelOfPatch(drawPatch, m);
-    int2 tile = int2(slot % m, slot / m);
-    uint coarseMask, fineMask;
-    bool inside;
-    int2 ab, abUp;
-    LodTileSeams(drawPatch, coarseMask, fineMask, inside, ab, abUp);
-    TerrainPoint q = TileToTerrainPoint(l, slot, tess);
-    uint coarseEdge = SeamEdgeAt(coarseMask, tess), fineEdge = SeamEdgeAt(fineMask, tess);
-    float factors[4] = { edgeFactors.x, edgeFactors.y, edgeFactors.z, edgeFactors.w };
-    if (coarseEdge != 0u)
-        q = SeamCoarsePoint(false, coarseEdge, tess, 0.5 * factors[firstbitlow(coarseEdge)], tile, l.range, l.range, ab, l.origin, TileCount());
-    else if (fineEdge != 0u)
-        q = SeamCoarsePoint(true, fineEdge, tess, factors[firstbitlow(fineEdge)], tile, l.range, LodRange(level + 1u), abUp, l.origin, TileCount());
-    return TerrainVertexAtPoint(l, drawPatch, tess, q, tessFactor);
-}
-#endif
-
 TileFactors ToTileFactors(TileFactorSet set)
 {
     TileFactors f;
@@ -206,50 +62,46 @@ TileFactors ToTileFactors(TileFactorSet set)
     return f;
 }
 
-#if defined(GT_VERTEX_CACHE)
-// The cell's factors, decided by CacheTileFactors, already integers (culled: all 0): what its
-// slots hold. hull_const clips them to the part of the cell the tile keeps; the domain stage reads
-// them again for a clipped tile's records.
-TileFactorSet CachedCellFactors(uint patch)
+// The factors of tile `slot` of layout l from its corners' surface points (vert).
+TileFactorSet CornerTileFactors(TileLayout l, uint slot, InputPatch<TileCorner, 4> corners)
 {
-    TileFactorSet set;
-    set.edge = _TileFactors[VertexCacheFactorIndex(patch)];
-    set.inside = _TileFactors[VertexCacheFactorIndex(patch) + 1u].xy;
-    return set;
-}
-#endif
-
-TileFactorSet TileFactorsOf(InputPatch<TileCorner, 4> corners)
-{
-    uint patch = corners[0].drawPatch;
-    TileFactorSet set;
-#if defined(GT_VERTEX_CACHE)
-    set = CachedCellFactors(patch);
-#else
     float3 cornerOS[4];
     [unroll] for (uint c = 0; c < 4; c++)
         cornerOS[c] = corners[c].positionOS;
-    uint slot;
-    TileLayout l = StageTileLayout(patch, slot);
-    set = ComputeTileFactors(l, slot, cornerOS);
-    #if defined(GT_LOD)
-    set = LodTileFactors(patch, set);
-    #endif
-#endif
-    return set;
+    return ComputeTileFactors(l, slot, cornerOS);
 }
+
+// Where a tile's factors and vertices come from: one file each, the same stage shape
+// (StageTileLayout, StageCornerPosition, StageTileFactors, StageDomainVertex; VertexSource.Domain.hlsl).
+#if defined(GT_VERTEX_CACHE)
+    #include "VertexSource.Cache.hlsl"
+#elif defined(GT_LOD)
+    #include "VertexSource.Levels.hlsl"
+#else
+    #include "VertexSource.Domain.hlsl"
+#endif
+
+#if !defined(GT_PARTITIONING)
+    #define GT_PARTITIONING GT_STAGE_PARTITIONING
+#endif
+
+TileCorner vert(uint vertexID : SV_VertexID)
+{
+    TileCorner o;
+    o.drawPatch = vertexID / 4u;
+    o.positionOS = StageCornerPosition(o.drawPatch, vertexID % 4u);
+    return o;
+}
+
+#if defined(GT_EXTEND_TILE_FACTORS)
+// Extension point: the entry file sees the factors hull_const returns for each drawn patch; it
+// defines this after including the stages.
+void ExtensionTileFactors(uint drawPatch, TileFactors f);
+#endif
 
 TileFactors hull_const(InputPatch<TileCorner, 4> corners)
 {
-#if defined(GT_VERTEX_CACHE)
-    // Anchored, the cache holds the tile's whole cell: draw the part of it the tile keeps
-    // (ClippedCell.hlsl), and tell the domain stage which part that is.
-    float4 kept = TileKeptCellSpan(FrameTileLayout(), corners[0].drawPatch);
-    TileFactors f = ToTileFactors(ClippedTileFactors(TileFactorsOf(corners), kept));
-    f.keptCellSpan = kept;
-#else
-    TileFactors f = ToTileFactors(TileFactorsOf(corners));
-#endif
+    TileFactors f = StageTileFactors(corners);
 #if defined(GT_EXTEND_TILE_FACTORS)
     ExtensionTileFactors(corners[0].drawPatch, f);
 #endif
@@ -277,26 +129,7 @@ TerrainVaryings domain_shader(TileFactors factors, const OutputPatch<TileCorner,
                               float2 tess : SV_DomainLocation)
 {
     float tessFactor = max(factors.inside[0], factors.inside[1]);
-#if defined(GT_VERTEX_CACHE)
-    // The compute pass evaluated this vertex into its slot: only the camera transform is left.
-    float4 edge = float4(factors.edge[0], factors.edge[1], factors.edge[2], factors.edge[3]);
-    float2 inside = float2(factors.inside[0], factors.inside[1]);
-    uint limit = VertexCacheFactorLimit();
-    uint base = corners[0].drawPatch * VertexCacheSlotsPerTile(limit);
-    if (!CellKeptWhole(factors.keptCellSpan))
-    {
-        TileFactorSet tile;
-        tile.edge = edge;
-        tile.inside = inside;
-        TileFactorSet cell = CachedCellFactors(corners[0].drawPatch);
-        return CachedCellPointVaryings(base, CellPoint(tess, tile, cell, factors.keptCellSpan, limit), tessFactor);
-    }
-    return CachedTerrainVaryings(base + VertexCacheSlot(tess, edge, inside, limit), tessFactor);
-#elif defined(GT_LOD)
-    return LodDomainVertex(corners[0].drawPatch, tess, float4(factors.edge[0], factors.edge[1], factors.edge[2], factors.edge[3]), tessFactor);
-#else
-    return TerrainVertex(FrameTileLayout(), corners[0].drawPatch, tess, tessFactor);
-#endif
+    return StageDomainVertex(factors, corners[0].drawPatch, tess, tessFactor);
 }
 
 // No tessellator: draw an index buffer over a (F+1) x (F+1) vertex grid, F = the uniform factor

@@ -1,7 +1,7 @@
 // Drawing the levels of detail (Documentation~/internals.md, "Levels of detail: from the feet to the
 // horizon"). Mirrors Runtime/Core/Terrain/LodTiles.cs, same names, step for step. Library: every
-// function takes what it needs as parameters; the stages (TerrainStages.hlsl, GT_LOD) read
-// _Ranges and pass them in.
+// function takes what it needs as parameters; the levels' vertex source (VertexSource.Levels.hlsl)
+// reads _Ranges and passes them in.
 //
 // One draw of L levels of M x M tiles laid on each level's range: draw patch p is tile p mod M^2 of
 // level p / M^2, finest first. A level's range is snapped to the coarser level's cells, so the finer

@@ -169,7 +169,7 @@ namespace GregoryTerrain
             return LodTiles.TileInsideFiner(ti, tj, a, b, levels[0].TileCountInt());
         }
 
-        /// <summary>HLSL <c>LodTileFactors</c> (TerrainStages.hlsl) of tile (ti, tj) of <paramref name="level"/>.</summary>
+        /// <summary>HLSL <c>LodTileFactors</c> (VertexSource.Levels.hlsl) of tile (ti, tj) of <paramref name="level"/>.</summary>
         public static TileFactorSet LodTileFactors(TerrainInputs[] levels, int level, int ti, int tj, Float4x4 objectToClip, Float2 screenSize, TerrainKeywords keywords)
         {
             if (InsideFiner(levels, level, ti, tj)) return TileFactors.CulledTileFactors();
