@@ -21,7 +21,7 @@
 //   GT_EXTEND_DRAW_PATCHES, GT_EXTEND_VERTEX    TerrainVertex.hlsl
 //   GT_EXTEND_TILE_FACTORS    hull_const hands each patch's factors to ExtensionTileFactors
 //   GT_PARTITIONING           defined before this file: the hull stage's partitioning
-//   GT_LOD                    levels of detail: L levels in one draw (LodTiles.hlsl)
+// GT_LOD and GT_VERTEX_CACHE are the package's keywords: they pick the vertex source below.
 #ifndef GT_TERRAIN_STAGES_INCLUDED
 #define GT_TERRAIN_STAGES_INCLUDED
 

@@ -227,8 +227,8 @@ namespace GregoryTerrain.Rig
         }
 
         /// <summary>
-        /// Null when the twins switch on the same keywords the same way: the HLSL with #if (in its body
-        /// or a function it calls), the C# through a TerrainKeywords parameter, never a bool.
+        /// Null when the twins switch on the same keywords the same way: the HLSL with #if (in its own body,
+        /// not in the functions it calls), the C# through a TerrainKeywords parameter, never a bool.
         /// </summary>
         static string KeywordMismatch(List<Function> variants, Function c)
         {
