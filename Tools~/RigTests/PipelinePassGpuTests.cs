@@ -1,8 +1,8 @@
 // URP's real passes of GregoryTerrain.shader, compiled against Unity's 2022.3 libraries and drawn by
 // the harness on lavapipe with every binding filled by name from one scene (Tools~/rig/pipeline_pass.py):
-// the sample grid, RigScene's zoom view, a sun 30 degrees up. One run draws three pictures (DepthOnly's
-// depth, ForwardLit's colour, ForwardLit's GT_DEBUG_NORMALS view of the same surface); the tests grade
-// them. They fail (never skip) when gt-cli, the harness, glslang, spirv-cross or lavapipe is missing.
+// the sample grid, RigScene's zoom view, a sun 30 degrees up. One run draws four pictures (DepthOnly's
+// depth, ForwardLit's colour, ForwardLit's GT_DEBUG_NORMALS view of the same surface, ForwardLit's
+// colour from DXC's SPIR-V); the tests grade them. They fail (never skip) when gt-cli, the harness, glslang, spirv-cross or lavapipe is missing.
 using System;
 using System.Collections.Generic;
 using System.Diagnostics;
@@ -26,7 +26,7 @@ namespace GregoryTerrain.Rig.Tests
         const double Quantum = 2.0 / 255.0;
 
         string _out, _log;
-        RigPng _depth, _lit, _normals;
+        RigPng _depth, _lit, _normals, _litDxc;
         JsonElement _litManifest;
         double[] _albedo, _sun, _light;
         double _ambient;
@@ -50,6 +50,7 @@ namespace GregoryTerrain.Rig.Tests
             _depth = RigPng.Read(Path.Combine(_out, "depth.png"));
             _lit = RigPng.Read(Path.Combine(_out, "lit.png"));
             _normals = RigPng.Read(Path.Combine(_out, "normals.png"));
+            _litDxc = RigPng.Read(Path.Combine(_out, "lit_dxc.png"));
             _litManifest = Manifest("lit");
             _sun = _litManifest.GetProperty("sun").EnumerateArray().Select(e => e.GetDouble()).ToArray();
             _light = _litManifest.GetProperty("light_color").EnumerateArray().Select(e => e.GetDouble()).ToArray();
@@ -85,7 +86,7 @@ namespace GregoryTerrain.Rig.Tests
         [Test]
         public void EveryMemberTheStagesRead_IsFilledByTheScene_AndEveryDefaultIsListed()
         {
-            foreach (string picture in new[] { "depth", "lit", "normals" })
+            foreach (string picture in new[] { "depth", "lit", "normals", "lit_dxc" })
             {
                 JsonElement m = Manifest(picture);
                 string[] defaults = Strings(m.GetProperty("defaults")), filled = Strings(m.GetProperty("filled"));
@@ -164,6 +165,17 @@ namespace GregoryTerrain.Rig.Tests
             Assert.That(lit.Average() - away.Average(), Is.GreaterThan(0.15), "sunlit minus turned-away mean brightness");
             // albedo ~0.53 times (0.2 + N.L): a sun 30 degrees up over gentle hills lights N.L ~0.5 on average.
             Assert.That(all, Is.InRange(0.25, 0.50), "mean brightness of the terrain");
+        }
+
+        [Test]
+        public void DxcsSpirv_DrawsTheSamePictureAsGlslangs()
+        {
+            // Two compilers of the same pass (Unity ships FXC; neither is it): their pictures may differ
+            // by float rounding, one 8-bit step at most.
+            int differing = _lit.PixelsDifferingFrom(_litDxc, 1);
+            int largest = Enumerable.Range(0, _lit.Rgba.Length).Max(i => Math.Abs(_lit.Rgba[i] - _litDxc.Rgba[i]));
+            TestContext.Out.WriteLine($"glslang vs DXC: largest channel difference {largest}/255, pixels differing by more than 1/255: {differing}");
+            Assert.That(differing, Is.Zero, "pixels whose glslang and DXC colours differ by more than 1/255");
         }
     }
 }

@@ -13,7 +13,8 @@ not set gets a named default: the run lists them ("defaults: ..."), the members 
 Writes OUT/buffers (gt-cli pack), OUT/<picture>.png and OUT/<picture>/: the stages (bindings
 rewritten), one file per binding, manifest.json (bindings, filled, defaults, reads, render state,
 harness arguments) and harness.log. Pictures: depth (DepthOnly: depth in R, ColorMask R), lit
-(ForwardLit, base variant), normals (ForwardLit with GT_DEBUG_NORMALS: world normal * 0.5 + 0.5).
+(ForwardLit, base variant), normals (ForwardLit with GT_DEBUG_NORMALS: world normal * 0.5 + 0.5),
+lit_dxc (ForwardLit base from DXC's SPIR-V, legalised at -O0, unreferenced resources dropped).
 Uniform blocks are bound as storage buffers (--uniform-blocks storage: the harness rewrites the
 blocks, same offsets): the rig's lavapipe rule (one compile per SPIR-V, whatever the values) on every device.
 
@@ -23,6 +24,7 @@ blocks, same offsets): the rig's lavapipe rule (one compile per SPIR-V, whatever
 its default, a member filled with another member's value.
 """
 import argparse
+import concurrent.futures
 import json
 import math
 import os
@@ -59,31 +61,51 @@ def find_pass(pipeline, name):
     raise SystemExit(f"pipeline-pass: error: no {pipeline} SubShader in GregoryTerrain.shader")
 
 
-def compile_pass(sub, pas, out, tmp, keywords=()):
+def compile_pass(sub, pas, out, tmp, keywords=(), compiler="glslang"):
     """{stage: spv path}: the pass's variant with exactly these keywords (none: the base variant),
-    preprocessed, emulated and compiled as shaderlab does."""
+    compiled as shaderlab does: glslang after its preprocessing and emulation, or DXC with its
+    defines (shaderlab's DXC_DEFINES, DXC_EMULATED) legalised at -O0 (shaderlab stops at -fcgl,
+    which no driver can run)."""
     lib = os.path.abspath(os.path.join(PKG_DIR, "..", "shared", "unity-shaderlib"))
     rig = shaderlab.Rig(PKG_DIR, lib, tmp, 1, None, None)
     includes = rig.include_root("urp", URP_PACKAGES)
-    spvs = {}
-    for case in shaderlab.shader_cases([sub], "Shaders/GregoryTerrain.shader", tmp, "pp", "all"):
-        if not case.label.startswith(f"{sub.pipeline} sub{sub.index} {pas.name} ") or sorted(case.keywords) != sorted(keywords):
-            continue
+    dxc = os.path.abspath(os.path.join(PKG_DIR, "..", "shared", "dxc", "bin", "dxc"))
+    cases = [c for c in shaderlab.shader_cases([sub], "Shaders/GregoryTerrain.shader", tmp, "pp", "all")
+             if c.label.startswith(f"{sub.pipeline} sub{sub.index} {pas.name} ") and sorted(c.keywords) == sorted(keywords)]
+
+    def one(case):
+        spv = os.path.join(out, f"{case.stage}.spv")
+        if compiler == "dxc":
+            c = subprocess.run([dxc, "-HV", "2018", "-spirv", "-T", shaderlab.DXC_PROFILES[case.stage], "-E", case.entry,
+                                "-O0", "-Fo", spv] + [f"-I{d}" for d in includes]
+                               + [f"-D{d}" for d in case.defines() + shaderlab.DXC_DEFINES + shaderlab.DXC_EMULATED]
+                               + [case.source], capture_output=True, text=True)
+            if c.returncode != 0:
+                raise SystemExit(f"pipeline-pass: error: DXC on {case.label} failed:\n{c.stdout}{c.stderr}")
+            # -O0 keeps every resource the headers declare (18 textures, 15 samplers in ForwardLit's
+            # fragment stage); this drops the ones no function refers to, and changes nothing else.
+            d = subprocess.run(["spirv-opt", "--eliminate-dead-variables", spv, "-o", spv], capture_output=True, text=True)
+            if d.returncode != 0:
+                raise SystemExit(f"pipeline-pass: error: spirv-opt on {spv} failed:\n{d.stdout}{d.stderr}")
+            return case.stage, spv
         pre = subprocess.run(["glslangValidator", "-D", "-E", "-S", case.stage, "-e", case.entry]
                              + [f"-I{d}" for d in includes] + [f"-D{d}" for d in case.defines()] + [case.source],
                              capture_output=True, text=True)
         if pre.returncode != 0:
             raise SystemExit(f"pipeline-pass: error: preprocessing {case.label} failed:\n{pre.stdout}{pre.stderr}")
         text, _ = shaderlab.emulate(pre.stdout)
-        src, spv = os.path.join(tmp, f"{case.stage}.hlsl"), os.path.join(out, f"{case.stage}.spv")
+        src = os.path.join(tmp, f"{case.stage}.hlsl")
         with open(src, "w", encoding="utf-8") as f:
             f.write(text)
         c = subprocess.run(["glslangValidator", "-D", "-V", "-S", case.stage, "-e", case.entry,
                             "--auto-map-bindings", "--hlsl-iomap", "-o", spv, src], capture_output=True, text=True)
         if c.returncode != 0:
             raise SystemExit(f"pipeline-pass: error: compiling {case.label} failed:\n{c.stdout}{c.stderr}")
-        spvs[case.stage] = spv
-    return spvs
+        return case.stage, spv
+
+    # Two at a time: the stages are independent compiles, and the rig's machines have two cores.
+    with concurrent.futures.ThreadPoolExecutor(max_workers=2) as pool:
+        return dict(pool.map(one, cases))
 
 
 def reflect(spv):
@@ -99,7 +121,8 @@ def resources(refl):
     for kind, key in (("uniform", "ubos"), ("storage", "ssbos")):
         for u in refl.get(key, []):
             t = refl["types"][u["type"]]
-            out.append((kind, u["name"], u["set"], u["binding"], t["members"], u.get("block_size", 0)))
+            name = u["name"][len("type."):] if u["name"].startswith("type.") else u["name"]   # DXC's block names
+            out.append((kind, name, u["set"], u["binding"], t["members"], u.get("block_size", 0)))
     for key in ("textures", "separate_images", "separate_samplers", "images"):
         for u in refl.get(key, []):
             out.append((key, u["name"], u["set"], u["binding"], None, 0))
@@ -296,6 +319,10 @@ def urp_globals(cam, o2w, o2c, sun, light_color):
         "_MainLightColor": light_color + [1.0],
         "_MainLightOcclusionProbes": [0.0, 0.0, 0.0, 0.0],
         "_MainLightLayerMask": 0xFFFFFFFF,               # every rendering layer (URP: light's layer mask)
+        # UnityInput.hlsl:117 (UnityPerDraw); RealtimeLights.hlsl:108: z is 1 when the light is not
+        # culled by the culling mask (GetMainLight's distanceAttenuation). DXC's SPIR-V loads it,
+        # glslang's drops the unused load.
+        "unity_LightData": [0.0, 0.0, 1.0, 0.0],
         "_GlobalMipBias": [0.0, 1.0],                    # Input.hlsl: (bias, 2^bias)
         # The package's own (UnityAdapterCommon.hlsl:17-29, GregoryTerrainRenderer sets them):
         # object <-> world of the renderer's Transform, the camera's object-to-clip and screen size
@@ -321,29 +348,36 @@ NAMED_DEFAULTS = {
 # Bytes
 
 
-def member_bytes(member, value):
-    """The member's bytes as its block lays them out (HLSL float4x4: column after column)."""
+SCALARS = {"float": "f", "vec2": "2f", "vec3": "3f", "vec4": "4f", "uint": "I", "int": "i", "uvec4": "4I", "ivec4": "4i"}
+
+
+def element_bytes(member, value):
+    """One element's bytes (HLSL float4x4: column after column, as its default column_major packing reads)."""
     t = member["type"]
     if t == "mat4":
         return struct.pack("<16f", *[value[r][c] for c in range(4) for r in range(4)])
-    scalar = {"float": "f", "vec2": "2f", "vec3": "3f", "vec4": "4f", "uint": "I", "int": "i"}
-    if t not in scalar:
+    if t not in SCALARS:
         raise SystemExit(f"pipeline-pass: error: member {member['name']} has type {t}, which the scene cannot write")
-    vals = value if isinstance(value, list) else [value]
-    if member.get("array"):
-        stride = member["array_stride"]
-        out = b""
-        for v in vals:
-            one = struct.pack("<" + scalar[t], *(v if isinstance(v, list) else [v]))
-            out += one + bytes(stride - len(one))
-        return out
-    return struct.pack("<" + scalar[t], *vals)
+    return struct.pack("<" + SCALARS[t], *(value if isinstance(value, list) else [value]))
+
+
+def member_bytes(member, value):
+    """The member's bytes as its block lays them out; an array's elements array_stride apart."""
+    if not member.get("array"):
+        return element_bytes(member, value)
+    out = b""
+    for v in value:
+        one = element_bytes(member, v)
+        out += one + bytes(member["array_stride"] - len(one))
+    return out
 
 
 def zero_value(member):
     t, count = member["type"], (member.get("array") or [1])[0]
-    one = {"mat4": [[0.0] * 4 for _ in range(4)], "float": 0.0, "uint": 0, "int": 0,
-           "vec2": [0.0] * 2, "vec3": [0.0] * 3, "vec4": [0.0] * 4}[t]
+    one = {"mat4": [[0.0] * 4 for _ in range(4)], "float": 0.0, "uint": 0, "int": 0, "vec2": [0.0] * 2,
+           "vec3": [0.0] * 3, "vec4": [0.0] * 4, "uvec4": [0] * 4, "ivec4": [0] * 4}.get(t)
+    if one is None:
+        raise SystemExit(f"pipeline-pass: error: member {member['name']} has type {t}, which the scene cannot write")
     return [one] * count if member.get("array") else one
 
 
@@ -388,7 +422,7 @@ def layout_key(layout):
                               str(m.get("array"))) for m in members)
 
 
-def prepare(a, pass_name, keywords, buffers, out):
+def prepare(a, pass_name, keywords, buffers, out, compiler="glslang"):
     """Compiles the pass's variant, fills its bindings from the scene, writes out/manifest.json and
     returns the harness arguments (stages, bindings, the pass's render state)."""
     os.makedirs(out, exist_ok=True)
@@ -396,7 +430,7 @@ def prepare(a, pass_name, keywords, buffers, out):
     subprocess.run(["rm", "-rf", tmp], check=True)
     os.makedirs(tmp)
     sub, pas = find_pass(a.pipeline, pass_name)
-    spvs = compile_pass(sub, pas, out, tmp, keywords)
+    spvs = compile_pass(sub, pas, out, tmp, keywords, compiler)
     if not spvs:
         raise SystemExit(f"pipeline-pass: error: {pass_name} has no variant with exactly the keywords {keywords}")
     cam, o2w, o2c = rig_camera(buffers)
@@ -465,13 +499,13 @@ def prepare(a, pass_name, keywords, buffers, out):
     read_all = sorted(set(x for r in reads.values() for x in r))
     defaulted_read = [d for d in report["defaults"] if any(r.endswith("." + d.split("=")[0]) for r in read_all)]
     variant = "+".join(keywords) or "base"
-    manifest = {"pipeline": a.pipeline, "pass": pas.name, "variant": variant, "bindings": bindings,
+    manifest = {"pipeline": a.pipeline, "pass": pas.name, "variant": variant, "compiler": compiler, "bindings": bindings,
                 "filled": report["filled"], "defaults": report["defaults"], "reads": reads,
                 "defaulted_read": defaulted_read, "state": state, "sun": sun_direction(a.sun_elevation, a.sun_azimuth),
                 "light_color": a.light_color, "harness_args": args}
     with open(os.path.join(out, "manifest.json"), "w") as f:
         json.dump(manifest, f, indent=1)
-    print(f"pass {a.pipeline} {pas.name} variant {variant} stages {','.join(s for s in STAGES if s in spvs)}")
+    print(f"pass {a.pipeline} {pas.name} variant {variant} compiler {compiler} stages {','.join(s for s in STAGES if s in spvs)}")
     for b in bindings:
         print(f"binding {b['binding']} {b['kind']} {b['name']} bytes {b['bytes']}")
     print(f"filled {len(report['filled'])}: {', '.join(report['filled'])}")
@@ -502,7 +536,9 @@ def pack_scene(out):
 TILES, WIDTH, HEIGHT = 16, 400, 300
 # (picture, pass, keywords): URP's depth prepass output (coverage: depth in R, ColorMask R), the lit
 # colour, and the same pass's normals debug view (world normals * 0.5 + 0.5) to grade the lighting.
-PICTURES = [("depth", "DepthOnly", []), ("lit", "ForwardLit", []), ("normals", "ForwardLit", ["GT_DEBUG_NORMALS"])]
+# lit_dxc: the lit picture from DXC's SPIR-V of the same pass.
+PICTURES = [("depth", "DepthOnly", [], "glslang"), ("lit", "ForwardLit", [], "glslang"),
+            ("normals", "ForwardLit", ["GT_DEBUG_NORMALS"], "glslang"), ("lit_dxc", "ForwardLit", [], "dxc")]
 
 
 def draw(args, buffers, png, log):
@@ -539,11 +575,11 @@ def main(argv=None):
         ap.error(f"argument --light-color: expected R,G,B, each 0..1000, got '{a.light_color}'")
     os.makedirs(a.out, exist_ok=True)
     buffers = pack_scene(a.out)
-    for picture, pass_name, keywords in PICTURES:
+    for picture, pass_name, keywords, compiler in PICTURES:
         if a.only and picture not in a.only:
             continue
         folder = os.path.join(a.out, picture)
-        args = prepare(a, pass_name, keywords, buffers, folder)
+        args = prepare(a, pass_name, keywords, buffers, folder, compiler)
         draw(args, buffers, os.path.join(a.out, picture + ".png"), os.path.join(folder, "harness.log"))
 
 
