@@ -26,6 +26,8 @@ RANGES = {
     "metres": (False, 0, 1e8, True),         # a terrain's width, as gt-cli lod-scene --terrain-m
     "resolution": (True, 64, 4096, False),   # a snow map's side (SnowSettings), as gt-cli snow-scene --resolutions
     "seconds": (False, 0, 3600, True),
+    "elevation": (False, -90, 90, False),    # a light's degrees above the horizon
+    "azimuth": (False, -360, 360, False),    # a light's compass degrees
 }
 MAX_LIST = 64  # as gt-cli's NumericOption.MaxListCount
 

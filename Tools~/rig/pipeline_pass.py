@@ -1,0 +1,587 @@
+#!/usr/bin/env python3
+"""gt pipeline_pass: draw a render pipeline's real passes of Shaders/GregoryTerrain.shader in the harness.
+
+Each pass (URP's DepthOnly and ForwardLit; a variant by its keywords) is compiled exactly as
+`gt shaderlab` compiles it (glslang, Unity's 2022.3 libraries in ../shared/unity-shaderlib,
+shaderlab.py's emulation). Each stage's SPIR-V is reflected (spirv-cross --reflect); every resource
+the pass declares gets one binding of set 0 from 16 up, by name, the same in every stage (glslang's
+--auto-map-bindings numbers each stage on its own), and every uniform-block member and buffer is
+filled BY NAME from the scene (the sample grid, RigScene's zoom view, a sun). A member the scene does
+not set gets a named default: the run lists them ("defaults: ..."), the members each stage reads
+(SPIR-V access chains: "reads ..."), and the defaulted members some stage reads ("defaulted_read").
+
+Writes OUT/buffers (gt-cli pack), OUT/<picture>.png and OUT/<picture>/: the stages (bindings
+rewritten), one file per binding, manifest.json (bindings, filled, defaults, reads, render state,
+harness arguments) and harness.log. Pictures: depth (DepthOnly: depth in R, ColorMask R), lit
+(ForwardLit, base variant), normals (ForwardLit with GT_DEBUG_NORMALS: world normal * 0.5 + 0.5),
+lit_dxc (ForwardLit base from DXC's SPIR-V, legalised at -O0, unreferenced resources dropped).
+Uniform blocks are bound as storage buffers (--uniform-blocks storage: the harness rewrites the
+blocks, same offsets): the rig's lavapipe rule (one compile per SPIR-V, whatever the values) on every device.
+
+  gt pipeline_pass [--out DIR] [--only depth|lit|normals]... [--sun-elevation DEG] [--sun-azimuth DEG]
+      [--light-color R,G,B] [--leave-default NAME]... [--fill-from NAME=OTHER]...
+--leave-default / --fill-from break the scene on purpose (the tests' broken inputs): a member left to
+its default, a member filled with another member's value.
+"""
+import argparse
+import concurrent.futures
+import json
+import math
+import os
+import re
+import struct
+import subprocess
+import sys
+
+RIG_DIR = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, RIG_DIR)
+import options  # noqa: E402
+import render_state  # noqa: E402
+import shaderlab  # noqa: E402
+
+PKG_DIR = os.path.dirname(os.path.dirname(RIG_DIR))
+URP_PACKAGES = ["com.unity.render-pipelines.core", "com.unity.render-pipelines.universal",
+                "com.unity.render-pipelines.universal-config"]
+FIRST_BINDING = 16          # above the rig's 0..6 and the vertex cache's 7..9
+STAGES = ("vert", "tesc", "tese", "frag")
+
+# ---------------------------------------------------------------------------------------------
+# Compile and reflect
+
+
+def find_pass(pipeline, name):
+    subs = shaderlab.parse_shader(os.path.join(PKG_DIR, "Shaders", "GregoryTerrain.shader"))
+    for s in subs:      # the first SubShader of the pipeline: the tessellated one, as Unity picks it
+        if s.pipeline == pipeline:
+            for p in s.passes:
+                if p.name == name:
+                    return s, p
+            raise SystemExit(f"pipeline-pass: error: {pipeline}'s first SubShader has no pass '{name}' "
+                             f"(it has {', '.join(p.name for p in s.passes)})")
+    raise SystemExit(f"pipeline-pass: error: no {pipeline} SubShader in GregoryTerrain.shader")
+
+
+def compile_pass(sub, pas, out, tmp, keywords=(), compiler="glslang"):
+    """{stage: spv path}: the pass's variant with exactly these keywords (none: the base variant),
+    compiled as shaderlab does: glslang after its preprocessing and emulation, or DXC with its
+    defines (shaderlab's DXC_DEFINES, DXC_EMULATED) legalised at -O0 (shaderlab stops at -fcgl,
+    which no driver can run)."""
+    lib = os.path.abspath(os.path.join(PKG_DIR, "..", "shared", "unity-shaderlib"))
+    rig = shaderlab.Rig(PKG_DIR, lib, tmp, 1, None, None)
+    includes = rig.include_root("urp", URP_PACKAGES)
+    dxc = os.path.abspath(os.path.join(PKG_DIR, "..", "shared", "dxc", "bin", "dxc"))
+    cases = [c for c in shaderlab.shader_cases([sub], "Shaders/GregoryTerrain.shader", tmp, "pp", "all")
+             if c.label.startswith(f"{sub.pipeline} sub{sub.index} {pas.name} ") and sorted(c.keywords) == sorted(keywords)]
+
+    def one(case):
+        spv = os.path.join(out, f"{case.stage}.spv")
+        if compiler == "dxc":
+            c = subprocess.run([dxc, "-HV", "2018", "-spirv", "-T", shaderlab.DXC_PROFILES[case.stage], "-E", case.entry,
+                                "-O0", "-Fo", spv] + [f"-I{d}" for d in includes]
+                               + [f"-D{d}" for d in case.defines() + shaderlab.DXC_DEFINES + shaderlab.DXC_EMULATED]
+                               + [case.source], capture_output=True, text=True)
+            if c.returncode != 0:
+                raise SystemExit(f"pipeline-pass: error: DXC on {case.label} failed:\n{c.stdout}{c.stderr}")
+            # -O0 keeps every resource the headers declare (18 textures, 15 samplers in ForwardLit's
+            # fragment stage); this drops the ones no function refers to, and changes nothing else.
+            d = subprocess.run(["spirv-opt", "--eliminate-dead-variables", spv, "-o", spv], capture_output=True, text=True)
+            if d.returncode != 0:
+                raise SystemExit(f"pipeline-pass: error: spirv-opt on {spv} failed:\n{d.stdout}{d.stderr}")
+            return case.stage, spv
+        pre = subprocess.run(["glslangValidator", "-D", "-E", "-S", case.stage, "-e", case.entry]
+                             + [f"-I{d}" for d in includes] + [f"-D{d}" for d in case.defines()] + [case.source],
+                             capture_output=True, text=True)
+        if pre.returncode != 0:
+            raise SystemExit(f"pipeline-pass: error: preprocessing {case.label} failed:\n{pre.stdout}{pre.stderr}")
+        text, _ = shaderlab.emulate(pre.stdout)
+        src = os.path.join(tmp, f"{case.stage}.hlsl")
+        with open(src, "w", encoding="utf-8") as f:
+            f.write(text)
+        c = subprocess.run(["glslangValidator", "-D", "-V", "-S", case.stage, "-e", case.entry,
+                            "--auto-map-bindings", "--hlsl-iomap", "-o", spv, src], capture_output=True, text=True)
+        if c.returncode != 0:
+            raise SystemExit(f"pipeline-pass: error: compiling {case.label} failed:\n{c.stdout}{c.stderr}")
+        return case.stage, spv
+
+    # Two at a time: the stages are independent compiles, and the rig's machines have two cores.
+    with concurrent.futures.ThreadPoolExecutor(max_workers=2) as pool:
+        return dict(pool.map(one, cases))
+
+
+def reflect(spv):
+    r = subprocess.run(["spirv-cross", spv, "--reflect"], capture_output=True, text=True)
+    if r.returncode != 0:
+        raise SystemExit(f"pipeline-pass: error: spirv-cross --reflect {spv}: {r.stderr}")
+    return json.loads(r.stdout)
+
+
+def resources(refl):
+    """[(kind, name, set, binding, members or None, size)] of one stage. kind: uniform | storage."""
+    out = []
+    for kind, key in (("uniform", "ubos"), ("storage", "ssbos")):
+        for u in refl.get(key, []):
+            t = refl["types"][u["type"]]
+            name = u["name"][len("type."):] if u["name"].startswith("type.") else u["name"]   # DXC's block names
+            out.append((kind, name, u["set"], u["binding"], t["members"], u.get("block_size", 0)))
+    for key in ("textures", "separate_images", "separate_samplers", "images"):
+        for u in refl.get(key, []):
+            out.append((key, u["name"], u["set"], u["binding"], None, 0))
+    return out
+
+
+# ---------------------------------------------------------------------------------------------
+# SPIR-V: rewrite bindings, find the members each stage reads
+
+OP_NAME, OP_DECORATE, OP_CONSTANT, OP_LOAD, OP_ACCESS_CHAIN, OP_IN_BOUNDS_ACCESS_CHAIN = 5, 71, 43, 61, 65, 66
+DEC_BINDING, DEC_SET = 33, 34
+
+
+def spirv_words(path):
+    with open(path, "rb") as f:
+        data = f.read()
+    return list(struct.unpack(f"<{len(data) // 4}I", data))
+
+
+def instructions(words):
+    i = 5
+    while i < len(words):
+        n, op = words[i] >> 16, words[i] & 0xFFFF
+        yield i, op, words[i + 1:i + n]
+        i += n
+
+
+def variable_bindings(words):
+    """{variable id: binding} from OpDecorate Binding."""
+    return {ops[0]: ops[2] for _, op, ops in instructions(words) if op == OP_DECORATE and ops[1] == DEC_BINDING}
+
+
+def rebind(path, mapping):
+    """Rewrites each Binding decoration old -> mapping[old] and every DescriptorSet to 0, in place."""
+    words = spirv_words(path)
+    for i, op, ops in instructions(words):
+        if op == OP_DECORATE and ops[1] == DEC_BINDING:
+            words[i + 3] = mapping[ops[2]]
+        elif op == OP_DECORATE and ops[1] == DEC_SET:
+            words[i + 3] = 0
+    with open(path, "wb") as f:
+        f.write(struct.pack(f"<{len(words)}I", *words))
+
+
+def members_read(words, binding, members):
+    """Names of the block's members some access chain of the module reads (all of them when the
+    whole block is loaded)."""
+    var = [v for v, b in variable_bindings(words).items() if b == binding]
+    constants = {ops[1]: ops[2] for _, op, ops in instructions(words) if op == OP_CONSTANT and len(ops) >= 3}
+    read = set()
+    for _, op, ops in instructions(words):
+        if op in (OP_ACCESS_CHAIN, OP_IN_BOUNDS_ACCESS_CHAIN) and ops[2] in var and len(ops) > 3:
+            read.add(members[constants[ops[3]]]["name"])
+        elif op == OP_LOAD and ops[2] in var:
+            read.update(m["name"] for m in members)
+    return read
+
+
+# ---------------------------------------------------------------------------------------------
+# The scene: a Unity camera and main light, in Unity's conventions
+
+
+def mat_mul(a, b):
+    return [[sum(a[i][k] * b[k][j] for k in range(4)) for j in range(4)] for i in range(4)]
+
+
+def affine_inverse(m):
+    """Inverse of an affine 4x4 (last row 0 0 0 1): the 3x3 by cofactors, then the translation."""
+    a = [row[:3] for row in m[:3]]
+    det = (a[0][0] * (a[1][1] * a[2][2] - a[1][2] * a[2][1]) - a[0][1] * (a[1][0] * a[2][2] - a[1][2] * a[2][0])
+           + a[0][2] * (a[1][0] * a[2][1] - a[1][1] * a[2][0]))
+    inv = [[(a[(j + 1) % 3][(i + 1) % 3] * a[(j + 2) % 3][(i + 2) % 3]
+             - a[(j + 1) % 3][(i + 2) % 3] * a[(j + 2) % 3][(i + 1) % 3]) / det for j in range(3)] for i in range(3)]
+    t = [-sum(inv[i][k] * m[k][3] for k in range(3)) for i in range(3)]
+    return [inv[0] + [t[0]], inv[1] + [t[1]], inv[2] + [t[2]], [0.0, 0.0, 0.0, 1.0]]
+
+
+def general_inverse(m):
+    """Gauss-Jordan with partial pivoting (projection matrices are not affine)."""
+    n = [row[:] + [1.0 if i == j else 0.0 for j in range(4)] for i, row in enumerate(m)]
+    for c in range(4):
+        p = max(range(c, 4), key=lambda r: abs(n[r][c]))
+        n[c], n[p] = n[p], n[c]
+        pivot = n[c][c]
+        n[c] = [x / pivot for x in n[c]]
+        for r in range(4):
+            if r != c:
+                f = n[r][c]
+                n[r] = [x - f * y for x, y in zip(n[r], n[c])]
+    return [row[4:] for row in n]
+
+
+def normalize(v):
+    s = math.sqrt(sum(x * x for x in v))
+    return [x / s for x in v]
+
+
+def cross(a, b):
+    return [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
+
+
+def dot(a, b):
+    return sum(x * y for x, y in zip(a, b))
+
+
+def read_floats(path):
+    with open(path, "rb") as f:
+        data = f.read()
+    return list(struct.unpack(f"<{len(data) // 4}f", data))
+
+
+def columns_to_matrix(f):
+    """HLSL's default column_major packing (RigCamera.WriteColumns): column after column."""
+    return [[f[col * 4 + row] for col in range(4)] for row in range(4)]
+
+
+class Camera:
+    """RigScene.ZoomViewCamera's view (eye, target, 50 degrees, near 0.01, far 20) as Unity's Camera
+    has it: worldToCameraMatrix looking down -z (right-handed camera space), and the GPU projection
+    Unity builds for Vulkan (GL.GetGPUProjectionMatrix): reversed depth, near 1, far 0 (UNITY_REVERSED_Z),
+    clip y up, not flipped (rendering to the camera's target: _ProjectionParams.x = 1; the harness's
+    negative viewport height shows it upright)."""
+
+    def __init__(self, eye, target, fov_y, width, height, near, far):
+        self.eye, self.width, self.height, self.near, self.far = eye, width, height, near, far
+        f = normalize([t - e for t, e in zip(target, eye)])
+        up = [0.0, 0.0, 1.0] if abs(f[1]) > 0.99 else [0.0, 1.0, 0.0]
+        r = normalize(cross(up, f))       # left-handed world: right = up x forward
+        u = cross(f, r)
+        self.view = [r + [-dot(r, eye)], u + [-dot(u, eye)], [-x for x in f] + [dot(f, eye)], [0.0, 0.0, 0.0, 1.0]]
+        t = 1.0 / math.tan(math.radians(fov_y) / 2.0)
+        zz, zw = near / (far - near), near * far / (far - near)
+        self.proj = [[t * height / width, 0, 0, 0], [0, t, 0, 0], [0, 0, zz, zw], [0, 0, -1, 0]]
+        self.view_proj = mat_mul(self.proj, self.view)
+
+
+def rig_camera(buffers):
+    """The zoom view of RigScene.ZoomViewCamera (Tools~/dotnet/Gt/RigScene.cs) and camera.f32's
+    object-to-world; checks that P V O2W equals camera.f32's object-to-clip, so both draw the same view."""
+    cam = read_floats(os.path.join(buffers, "camera.f32"))
+    o2c, o2w = columns_to_matrix(cam[0:16]), columns_to_matrix(cam[16:32])
+    width, height = int(round(cam[36])), int(round(cam[37]))
+    c = Camera([0.0, 0.75, -1.05], [0.0, -0.05, 0.0], 50.0, width, height, 0.01, 20.0)
+    mine = mat_mul(c.view_proj, o2w)
+    worst = max(abs(mine[i][j] - o2c[i][j]) / max(1.0, abs(o2c[i][j])) for i in range(4) for j in range(4))
+    if worst > 1e-5:
+        raise SystemExit(f"pipeline-pass: error: {buffers}/camera.f32 is not RigScene's zoom view "
+                         f"(object-to-clip differs by {worst:.3g}); pack it with gt-cli pack defaults")
+    return c, o2w, o2c
+
+
+def sun_direction(elevation, azimuth):
+    """Towards the sun, world space: elevation above the horizon, azimuth from +z towards +x."""
+    e, a = math.radians(elevation), math.radians(azimuth)
+    return [math.cos(e) * math.sin(a), math.sin(e), math.cos(e) * math.cos(a)]
+
+
+def urp_globals(cam, o2w, o2c, sun, light_color):
+    """$Global members by name, each with where its value and layout come from. Paths are under
+    ../shared/unity-shaderlib/srp-14.0.9/com.unity.render-pipelines.universal/ShaderLibrary/ unless named."""
+    w, h, n, f = cam.width, cam.height, cam.near, cam.far
+    inv_vp = general_inverse(cam.view_proj)
+    return {
+        # UnityInput.hlsl:217 unity_MatrixVP, used as UNITY_MATRIX_VP (Input.hlsl:194) by
+        # TransformWorldToHClip; URP sets it from the camera's GPU projection times its view.
+        "unity_MatrixVP": cam.view_proj,
+        "unity_MatrixV": cam.view,                       # UnityInput.hlsl: worldToCameraMatrix
+        "unity_MatrixInvV": affine_inverse(cam.view),
+        "unity_MatrixInvP": general_inverse(cam.proj),
+        "unity_MatrixInvVP": inv_vp,
+        "glstate_matrix_projection": cam.proj,           # UNITY_MATRIX_P (Input.hlsl)
+        "unity_CameraProjection": cam.proj,
+        "unity_CameraInvProjection": general_inverse(cam.proj),
+        "unity_WorldToCamera": cam.view,
+        "unity_CameraToWorld": affine_inverse(cam.view),
+        "_ViewProjMatrix": cam.view_proj, "_NonJitteredViewProjMatrix": cam.view_proj,
+        "_PrevViewProjMatrix": cam.view_proj, "_ViewMatrix": cam.view, "_ProjMatrix": cam.proj,
+        "_InvViewProjMatrix": inv_vp, "_InvViewMatrix": affine_inverse(cam.view),
+        "_InvProjMatrix": general_inverse(cam.proj),
+        "_WorldSpaceCameraPos": cam.eye,                 # UnityInput.hlsl:47
+        # UnityInput.hlsl:50-54: x = 1 (not flipped), near, far, 1/far.
+        "_ProjectionParams": [1.0, n, f, 1.0 / f],
+        # UnityInput.hlsl:56-60: width, height, 1 + 1/width, 1 + 1/height.
+        "_ScreenParams": [w, h, 1.0 + 1.0 / w, 1.0 + 1.0 / h],
+        "_ScaledScreenParams": [w, h, 1.0 + 1.0 / w, 1.0 + 1.0 / h],   # Input.hlsl: render scale 1
+        "_ScreenSize": [w, h, 1.0 / w, 1.0 / h],
+        # UnityInput.hlsl:62-72, reversed depth: (-1 + far/near, 1, x/far, 1/far).
+        "_ZBufferParams": [-1.0 + f / n, 1.0, (-1.0 + f / n) / f, 1.0 / f],
+        "unity_OrthoParams": [w / h, 1.0, 0.0, 0.0],     # UnityInput.hlsl:74-78: w = 0, perspective
+        # Input.hlsl:101-103; URP's ForwardLights.SetupMainLightConstants: a directional light's
+        # position is the direction towards it, w = 0; its colour is light.finalColor (linear colour
+        # times intensity).
+        "_MainLightPosition": sun + [0.0],
+        "_MainLightColor": light_color + [1.0],
+        "_MainLightOcclusionProbes": [0.0, 0.0, 0.0, 0.0],
+        "_MainLightLayerMask": 0xFFFFFFFF,               # every rendering layer (URP: light's layer mask)
+        # UnityInput.hlsl:117 (UnityPerDraw); RealtimeLights.hlsl:108: z is 1 when the light is not
+        # culled by the culling mask (GetMainLight's distanceAttenuation). DXC's SPIR-V loads it,
+        # glslang's drops the unused load.
+        "unity_LightData": [0.0, 0.0, 1.0, 0.0],
+        "_GlobalMipBias": [0.0, 1.0],                    # Input.hlsl: (bias, 2^bias)
+        # The package's own (UnityAdapterCommon.hlsl:17-29, GregoryTerrainRenderer sets them):
+        # object <-> world of the renderer's Transform, the camera's object-to-clip and screen size
+        # that choose tessellation factors.
+        "_GtObjectToWorld": o2w,
+        "_GtWorldToObject": affine_inverse(o2w),
+        "_GtTessObjectToClip": o2c,
+        "_GtTessScreenSize": [w, h, 1.0 / w, 1.0 / h],
+    }
+
+
+# Members the scene does not set, by name: what they hold instead. Everything else defaults to zero,
+# and every default is listed in the run's output.
+NAMED_DEFAULTS = {
+    "unity_StereoScaleOffset": [1.0, 1.0, 0.0, 0.0],
+    "_ScaleBias": [1.0, 0.0, 1.0, 0.0],
+    "_ScaleBiasRt": [1.0, 0.0, 1.0, 0.0],
+    "_ScreenCoordScaleBias": [1.0, 1.0, 0.0, 0.0],
+}
+
+
+# ---------------------------------------------------------------------------------------------
+# Bytes
+
+
+SCALARS = {"float": "f", "vec2": "2f", "vec3": "3f", "vec4": "4f", "uint": "I", "int": "i", "uvec4": "4I", "ivec4": "4i"}
+
+
+def element_bytes(member, value):
+    """One element's bytes (HLSL float4x4: column after column, as its default column_major packing reads)."""
+    t = member["type"]
+    if t == "mat4":
+        return struct.pack("<16f", *[value[r][c] for c in range(4) for r in range(4)])
+    if t not in SCALARS:
+        raise SystemExit(f"pipeline-pass: error: member {member['name']} has type {t}, which the scene cannot write")
+    return struct.pack("<" + SCALARS[t], *(value if isinstance(value, list) else [value]))
+
+
+def member_bytes(member, value):
+    """The member's bytes as its block lays them out; an array's elements array_stride apart."""
+    if not member.get("array"):
+        return element_bytes(member, value)
+    out = b""
+    for v in value:
+        one = element_bytes(member, v)
+        out += one + bytes(member["array_stride"] - len(one))
+    return out
+
+
+def zero_value(member):
+    t, count = member["type"], (member.get("array") or [1])[0]
+    one = {"mat4": [[0.0] * 4 for _ in range(4)], "float": 0.0, "uint": 0, "int": 0, "vec2": [0.0] * 2,
+           "vec3": [0.0] * 3, "vec4": [0.0] * 4, "uvec4": [0] * 4, "ivec4": [0] * 4}.get(t)
+    if one is None:
+        raise SystemExit(f"pipeline-pass: error: member {member['name']} has type {t}, which the scene cannot write")
+    return [one] * count if member.get("array") else one
+
+
+def show(value):
+    if isinstance(value, list) and value and isinstance(value[0], list):
+        return "0" if all(x == 0 for r in value for x in r) else "matrix"
+    if isinstance(value, list):
+        return "(" + ",".join(f"{x:g}" for x in value) + ")"
+    return f"{value:g}"
+
+
+def fill_block(name, members, size, values, report):
+    data = bytearray(size)
+    for m in members:
+        if m["name"] in values:
+            value = values[m["name"]]
+            report["filled"].append(f"{name}.{m['name']}")
+        else:
+            value = NAMED_DEFAULTS.get(m["name"], zero_value(m))
+            report["defaults"].append(f"{m['name']}={show(value)}")
+        b = member_bytes(m, value)
+        data[m["offset"]:m["offset"] + len(b)] = b
+    return bytes(data)
+
+
+def terrain_params(buffers, members):
+    """UnityPerMaterial holds TerrainParams (Shaders/Terrain/TerrainParams.cs.hlsl, the generated
+    contract): the rig's params.f32 in that order, one float4 per member."""
+    p = read_floats(os.path.join(buffers, "params.f32"))
+    return {m["name"]: p[m["offset"] // 4:m["offset"] // 4 + 4] for m in members}
+
+
+# The grid's structured buffers (TerrainInputs.hlsl; internals.md "GPU layout"), as the rig packs them.
+GRID_BUFFERS = {"_ControlPoints": "control_points.f32", "_Regions": "regions.f32", "_GridLines": "grid_lines.f32"}
+
+
+def layout_key(layout):
+    """What two stages must agree on: kind, size and each member's name, offset, type and array (a
+    struct member's type is a per-module id, so only its name counts)."""
+    kind, members, size = layout
+    return kind, size, tuple((m["name"], m.get("offset"), "struct" if m["type"].startswith("_") else m["type"],
+                              str(m.get("array"))) for m in members)
+
+
+def prepare(a, pass_name, keywords, buffers, out, compiler="glslang"):
+    """Compiles the pass's variant, fills its bindings from the scene, writes out/manifest.json and
+    returns the harness arguments (stages, bindings, the pass's render state)."""
+    os.makedirs(out, exist_ok=True)
+    tmp = os.path.join(out, "work")
+    subprocess.run(["rm", "-rf", tmp], check=True)
+    os.makedirs(tmp)
+    sub, pas = find_pass(a.pipeline, pass_name)
+    spvs = compile_pass(sub, pas, out, tmp, keywords, compiler)
+    if not spvs:
+        raise SystemExit(f"pipeline-pass: error: {pass_name} has no variant with exactly the keywords {keywords}")
+    cam, o2w, o2c = rig_camera(buffers)
+    values = urp_globals(cam, o2w, o2c, sun_direction(a.sun_elevation, a.sun_azimuth), a.light_color)
+    for name in a.leave_default:
+        if name not in values:
+            raise SystemExit(f"pipeline-pass: error: --leave-default {name}: the scene does not set it")
+        del values[name]
+    for pair in a.fill_from:
+        dst, _, src = pair.partition("=")
+        if dst not in values or src not in values:
+            raise SystemExit(f"pipeline-pass: error: --fill-from '{pair}': both names must be set by the scene")
+        values[dst] = values[src]
+
+    # One binding per resource name across the stages; a name whose layout differs between stages fails.
+    layouts, per_stage = {}, {}
+    for stage in STAGES:
+        if stage not in spvs:
+            continue
+        per_stage[stage] = resources(reflect(spvs[stage]))
+        for kind, name, _, _, members, size in per_stage[stage]:
+            if kind not in ("uniform", "storage"):
+                raise SystemExit(f"pipeline-pass: error: {stage} declares {kind} '{name}'; textures are not bound yet")
+            if name in layouts and layout_key(layouts[name]) != layout_key((kind, members, size)):
+                raise SystemExit(f"pipeline-pass: error: '{name}' has another layout in the {stage} stage")
+            layouts[name] = (kind, members, size)
+    binding_of = {name: FIRST_BINDING + i for i, name in enumerate(sorted(layouts))}
+    reads = {}
+    for stage, res in per_stage.items():
+        words = spirv_words(spvs[stage])
+        reads[stage] = sorted(f"{name}.{m}" for kind, name, _, b, members, _ in res if kind == "uniform"
+                              for m in members_read(words, b, members))
+        rebind(spvs[stage], {b: binding_of[name] for _, name, _, b, _, _ in res})
+        v = subprocess.run(["spirv-val", spvs[stage]], capture_output=True, text=True)
+        if v.returncode != 0:
+            raise SystemExit(f"pipeline-pass: error: {spvs[stage]} after rebinding: {v.stdout}{v.stderr}")
+
+    report = {"filled": [], "defaults": []}
+    bindings = []
+    for name in sorted(layouts):
+        kind, members, size = layouts[name]
+        path = os.path.join(out, f"binding_{binding_of[name]}_{re.sub(r'[^A-Za-z0-9_]', '', name)}.bin")
+        if kind == "uniform":
+            block_values = terrain_params(buffers, members) if name == "UnityPerMaterial" else values
+            data = fill_block(name, members, size, block_values, report)
+        elif name in GRID_BUFFERS:
+            with open(os.path.join(buffers, GRID_BUFFERS[name]), "rb") as f:
+                data = f.read()
+            report["filled"].append(name)
+        else:
+            raise SystemExit(f"pipeline-pass: error: the scene has nothing for the buffer '{name}'")
+        with open(path, "wb") as f:
+            f.write(data)
+        bindings.append({"name": name, "binding": binding_of[name], "kind": kind, "bytes": len(data), "file": path})
+
+    where = f"SubShader {sub.index} ({sub.pipeline}) Pass \"{pas.name}\""
+    st = render_state.pass_state(sub, pas, where)
+    state = [x for name in render_state.COMMANDS for x in (render_state.COMMANDS[name][0], st[name])]
+    args = []
+    for stage in STAGES:
+        if stage in spvs:
+            args += [f"--{stage}", spvs[stage]]
+    for b in bindings:
+        args += ["--storage-data", f"{b['binding']}:{b['file']}"]
+    args += ["--uniform-blocks", "storage"] + state
+    read_all = sorted(set(x for r in reads.values() for x in r))
+    defaulted_read = [d for d in report["defaults"] if any(r.endswith("." + d.split("=")[0]) for r in read_all)]
+    variant = "+".join(keywords) or "base"
+    manifest = {"pipeline": a.pipeline, "pass": pas.name, "variant": variant, "compiler": compiler, "bindings": bindings,
+                "filled": report["filled"], "defaults": report["defaults"], "reads": reads,
+                "defaulted_read": defaulted_read, "state": state, "sun": sun_direction(a.sun_elevation, a.sun_azimuth),
+                "light_color": a.light_color, "harness_args": args}
+    with open(os.path.join(out, "manifest.json"), "w") as f:
+        json.dump(manifest, f, indent=1)
+    print(f"pass {a.pipeline} {pas.name} variant {variant} compiler {compiler} stages {','.join(s for s in STAGES if s in spvs)}")
+    for b in bindings:
+        print(f"binding {b['binding']} {b['kind']} {b['name']} bytes {b['bytes']}")
+    print(f"filled {len(report['filled'])}: {', '.join(report['filled'])}")
+    print(f"defaults {len(report['defaults'])}: {', '.join(report['defaults'])}")
+    for stage, r in reads.items():
+        print(f"reads {stage} {len(r)}: {', '.join(r)}")
+    print(f"defaulted_read {len(defaulted_read)}: {', '.join(defaulted_read)}")
+    print(f"state {' '.join(state)}")
+    return args
+
+
+def pack_scene(out):
+    """The sample grid (gt-cli demo-grid) packed as the rig's buffers, RigScene's zoom view at 400 x 300."""
+    cli = os.path.join(PKG_DIR, ".build", "gt-cli", "gt-cli")
+    if not os.path.exists(cli):
+        raise SystemExit(f"pipeline-pass: error: {cli} is missing (run: gt setup)")
+    buffers = os.path.join(out, "buffers")
+    grid = os.path.join(out, "grid.json")
+    for cmd in ([cli, "demo-grid", "--out", grid],
+                [cli, "pack", "--grid", grid, "--range", "0,0,1,1", "--tiles", str(TILES), "--factor", "15",
+                 "--noise", "0,16,2,2", "--octaves", "1", "--width", str(WIDTH), "--height", str(HEIGHT), "--out", buffers]):
+        r = subprocess.run(cmd, capture_output=True, text=True)
+        if r.returncode != 0:
+            raise SystemExit(f"pipeline-pass: error: {' '.join(cmd)} failed:\n{r.stdout}{r.stderr}")
+    return buffers
+
+
+TILES, WIDTH, HEIGHT = 16, 400, 300
+# (picture, pass, keywords): URP's depth prepass output (coverage: depth in R, ColorMask R), the lit
+# colour, and the same pass's normals debug view (world normals * 0.5 + 0.5) to grade the lighting.
+# lit_dxc: the lit picture from DXC's SPIR-V of the same pass.
+PICTURES = [("depth", "DepthOnly", [], "glslang"), ("lit", "ForwardLit", [], "glslang"),
+            ("normals", "ForwardLit", ["GT_DEBUG_NORMALS"], "glslang"), ("lit_dxc", "ForwardLit", [], "dxc")]
+
+
+def draw(args, buffers, png, log):
+    harness = os.path.join(PKG_DIR, ".build", "harness", "gt-harness")
+    cmd = [harness] + args + ["--buffers", buffers, "--patches", str(TILES * TILES), "--width", str(WIDTH),
+                              "--height", str(HEIGHT), "--png", png]
+    r = subprocess.run(cmd, capture_output=True, text=True)
+    with open(log, "w") as f:
+        f.write(" ".join(cmd) + "\n" + r.stdout + r.stderr)
+    if r.returncode != 0:
+        raise SystemExit(f"pipeline-pass: error: the harness failed ({log}):\n{r.stdout[-2000:]}{r.stderr}")
+    print(f"picture {png} " + " ".join(l for l in r.stdout.splitlines() if l.startswith(("image ", "state "))))
+
+
+def main(argv=None):
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--out", default=os.path.join(PKG_DIR, ".build", "pipeline-pass"))
+    ap.add_argument("--pipeline", default="URP", choices=["URP"])
+    ap.add_argument("--only", choices=[p[0] for p in PICTURES], action="append",
+                    help="draw only these pictures (default: all)")
+    options.add_number(ap, "--sun-elevation", range="elevation", default=30.0,
+                       help="degrees above the horizon (default 30)")
+    options.add_number(ap, "--sun-azimuth", range="azimuth", default=-140.0,
+                       help="degrees from +z towards +x (default -140: from the camera's front left)")
+    ap.add_argument("--light-color", default="1,0.96,0.9", help="R,G,B: the main light's final colour (linear)")
+    ap.add_argument("--leave-default", action="append", default=[], help="NAME: leave a member to its default")
+    ap.add_argument("--fill-from", action="append", default=[], help="NAME=OTHER: fill NAME with OTHER's value")
+    a = ap.parse_args(argv)
+    try:
+        a.light_color = [float(x) for x in a.light_color.split(",")]
+        if len(a.light_color) != 3 or not all(math.isfinite(x) and 0 <= x <= 1000 for x in a.light_color):
+            raise ValueError
+    except ValueError:
+        ap.error(f"argument --light-color: expected R,G,B, each 0..1000, got '{a.light_color}'")
+    os.makedirs(a.out, exist_ok=True)
+    buffers = pack_scene(a.out)
+    for picture, pass_name, keywords, compiler in PICTURES:
+        if a.only and picture not in a.only:
+            continue
+        folder = os.path.join(a.out, picture)
+        args = prepare(a, pass_name, keywords, buffers, folder, compiler)
+        draw(args, buffers, os.path.join(a.out, picture + ".png"), os.path.join(folder, "harness.log"))
+
+
+if __name__ == "__main__":
+    main()
