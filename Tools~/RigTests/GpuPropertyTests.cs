@@ -12,7 +12,7 @@ using NUnit.Framework;
 
 namespace GregoryTerrain.Rig.Tests
 {
-    [TestFixture]
+    [TestFixture, Parallelizable(ParallelScope.Self)]
     public class GpuPropertyTests
     {
         /// <summary>The property test's random fitted grids and random ranges per grid (one readback draw each).</summary>

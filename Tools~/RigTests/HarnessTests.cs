@@ -107,7 +107,7 @@ namespace GregoryTerrain.Rig.Tests
         }
     }
 
-    [TestFixture]
+    [TestFixture, Parallelizable(ParallelScope.Self)]
     public class HarnessTests
     {
         const int Size = 128;  // render target width = height

@@ -81,7 +81,7 @@ namespace GregoryTerrain.Rig.Tests
 
     }
 
-    [TestFixture]
+    [TestFixture, Parallelizable(ParallelScope.Self)]
     public class LodEstimateGpuTests
     {
         /// <summary>

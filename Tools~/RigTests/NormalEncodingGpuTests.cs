@@ -11,7 +11,7 @@ namespace GregoryTerrain.Rig.Tests
     /// Shaders/Library/NormalEncoding.hlsl (the normal in the varyings) on lavapipe against Core's mirror
     /// NormalEncoding, through the probe kernel NormalEncodingProbe.hlsl run by gt-compute.
     /// </summary>
-    [TestFixture]
+    [TestFixture, Parallelizable(ParallelScope.Self)]
     public class NormalEncodingGpuTests
     {
         [Test]

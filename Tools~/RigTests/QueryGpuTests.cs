@@ -8,7 +8,7 @@ using NUnit.Framework;
 
 namespace GregoryTerrain.Rig.Tests
 {
-    [TestFixture]
+    [TestFixture, Parallelizable(ParallelScope.Self)]
     public class QueryGpuTests
     {
         const int Tiles = 8, Factor = 15;

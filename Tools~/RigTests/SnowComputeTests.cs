@@ -14,7 +14,7 @@ namespace GregoryTerrain.Rig.Tests
     /// glslang's HLSL front end, validated, cross-compiled, then run by gt-compute on lavapipe.
     /// Missing tools, runner or lavapipe make these tests fail (run <c>Tools~/gt setup</c>).
     /// </summary>
-    [TestFixture]
+    [TestFixture, Parallelizable(ParallelScope.Self)]
     public class SnowComputeTests
     {
         const string Lavapipe = "llvmpipe";

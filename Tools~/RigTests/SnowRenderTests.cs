@@ -13,7 +13,7 @@ using NUnit.Framework;
 
 namespace GregoryTerrain.Rig.Tests
 {
-    [TestFixture]
+    [TestFixture, Parallelizable(ParallelScope.Self)]
     public class SnowRenderTests
     {
         static readonly string[] Stages = { "vert", "tesc", "tese", "frag", "fallback" };

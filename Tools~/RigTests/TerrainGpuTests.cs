@@ -11,7 +11,7 @@ using NUnit.Framework;
 
 namespace GregoryTerrain.Rig.Tests
 {
-    [TestFixture]
+    [TestFixture, Parallelizable(ParallelScope.Self)]
     public class TerrainGpuTests
     {
         const int Tiles = 8;      // M: 8 x 8 tiles

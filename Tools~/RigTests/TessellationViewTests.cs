@@ -14,7 +14,7 @@ namespace GregoryTerrain.Rig.Tests
     /// culling stays in the pass's own view, or terrain off screen would cast no shadow into it.
     /// What a Unity editor would show (the shadow itself) is not drawn here.
     /// </summary>
-    [TestFixture]
+    [TestFixture, Parallelizable(ParallelScope.Self)]
     public class TessellationViewTests
     {
         /// <summary>What the camera's view is read from, per pipeline. URP and Built-in: the renderer's

@@ -11,7 +11,7 @@ using NUnit.Framework;
 
 namespace GregoryTerrain.Rig.Tests
 {
-    [TestFixture]
+    [TestFixture, Parallelizable(ParallelScope.Self)]
     public class TiledNoiseCacheGpuTests
     {
         const string Cached = "noise+noise_table+vertex_cache";

@@ -8,7 +8,7 @@ using NUnit.Framework;
 
 namespace GregoryTerrain.Rig.Tests
 {
-    [TestFixture]
+    [TestFixture, Parallelizable(ParallelScope.Self)]
     public class TiledNoiseGpuTests
     {
         const int Tiles = 8, Factor = 15;

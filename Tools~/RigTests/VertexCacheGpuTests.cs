@@ -11,7 +11,7 @@ using NUnit.Framework;
 
 namespace GregoryTerrain.Rig.Tests
 {
-    [TestFixture]
+    [TestFixture, Parallelizable(ParallelScope.Self)]
     public class VertexCacheGpuTests
     {
         const string Cached = "noise+height_color+vertex_cache";

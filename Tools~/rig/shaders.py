@@ -12,12 +12,16 @@ cache's compute kernels, for GT_VERTEX_CACHE variants):
   6. Microsoft's DXC (../shared/dxc) on the same source, stage and keywords at HLSL 2018 (FXC's
      language), front end and SPIR-V code generation only (-fcgl -Vd: the language errors FXC and
      DXC share; the module is neither legalised nor kept). Target "dxc".
+Step 1 is skipped when this build's shader cache (SHADER_CACHE) holds the SPIR-V of the same
+glslang, options, stage, entry point and preprocessed text (every file the stage includes, as
+glslang reads it): the many runs of one `gt test` (the full check, each GPU fixture's variants, the
+bench's plan) compile each distinct stage once. Steps 2 to 6 run on every stage, cached or not.
 Prints one line per variant and stage, then the counts. Exit status 1 on any error, and on any
 diagnostic line that ALLOWED_OUTPUT does not explain.
 
 Usage: shaders.py OUT_DIR [-j JOBS] [-I DIR]... [--only VARIANT]... [--dxc PATH] [--clean]
 """
-import argparse, json, os, re, shutil, subprocess, sys
+import argparse, hashlib, json, os, re, shutil, subprocess, sys, tempfile, threading
 from concurrent.futures import ThreadPoolExecutor
 
 RIG_DIR = os.path.dirname(os.path.abspath(__file__))
@@ -25,6 +29,8 @@ PKG_DIR = os.path.dirname(os.path.dirname(RIG_DIR))
 ENTRY_FILE = os.path.join(RIG_DIR, "TerrainRig.hlsl")
 VARIANTS_FILE = os.path.join(RIG_DIR, "shader_variants.txt")
 DXC = os.path.join(PKG_DIR, "..", "shared", "dxc", "bin", "dxc")
+# The package's own .build, not GT_BUILD_DIR: fixtures compile into folders of their own and share it.
+SHADER_CACHE = os.environ.get("GT_SHADER_CACHE") or os.path.join(PKG_DIR, ".build", "shader-cache")
 import options  # noqa: E402  (the rig's range check, beside this file)
 
 DXC_PROFILES = {"vert": "vs_6_0", "tesc": "hs_6_0", "tese": "ds_6_0", "frag": "ps_6_0", "comp": "cs_6_0"}
@@ -138,7 +144,46 @@ def check_bindings(spv, log, keywords=()):
     return errors
 
 
-def compile_one(out_dir, variant, stage, includes, dxc=DXC, spirv_only=False):
+class SpirvCache:
+    """glslang's SPIR-V by sha256 of (glslang's version, the command without its output path, the
+    stage's preprocessed text). A changed include, define or option is another key: a miss."""
+    def __init__(self, folder):
+        self.folder, self.lock, self.hits, self.misses = folder, threading.Lock(), 0, 0
+        self.version = subprocess.run(["glslangValidator", "--version"], capture_output=True, text=True).stdout
+
+    def key(self, cmd):
+        """None when glslang cannot preprocess the stage (the compile itself reports why)."""
+        i = cmd.index("-o")
+        options = cmd[:i] + cmd[i + 2:]
+        stage, entry = cmd[cmd.index("-S") + 1], cmd[cmd.index("-e") + 1]
+        pre = (["glslangValidator", "-D", "-E", "-S", stage, "-e", entry]
+               + [a for a in options if a.startswith(("-I", "-D")) and len(a) > 2] + [options[-1]])
+        p = subprocess.run(pre, capture_output=True, text=True)
+        if p.returncode != 0:
+            return None
+        return hashlib.sha256("\0".join([self.version] + options + [p.stdout]).encode()).hexdigest()
+
+    def fetch(self, key, spv):
+        path = os.path.join(self.folder, key + ".spv")
+        found = key is not None and os.path.isfile(path)
+        if found:
+            shutil.copyfile(path, spv)
+        with self.lock:
+            self.hits += found
+            self.misses += not found
+        return found
+
+    def store(self, key, spv):
+        if key is None:
+            return
+        os.makedirs(self.folder, exist_ok=True)
+        fd, tmp = tempfile.mkstemp(dir=self.folder, suffix=".tmp")
+        os.close(fd)
+        shutil.copyfile(spv, tmp)
+        os.replace(tmp, os.path.join(self.folder, key + ".spv"))   # atomic: parallel runs share the folder
+
+
+def compile_one(out_dir, variant, stage, includes, dxc=DXC, spirv_only=False, cache=None):
     name, keywords = variant
     sname, gstage, entry = stage
     vdir = os.path.join(out_dir, name)
@@ -152,10 +197,20 @@ def compile_one(out_dir, variant, stage, includes, dxc=DXC, spirv_only=False):
         problems.extend(f"{label}: {l}" for l in bad)
         return ok and not bad
 
+    def step_cached(label, cmd, spv):
+        key = cache.key(cmd) if cache else None
+        if cache and cache.fetch(key, spv):
+            log.append(f"{label}: {spv} from the shader cache ({key})")
+            return True
+        ok = step(label, cmd)
+        if ok and cache:
+            cache.store(key, spv)
+        return ok
+
     cmd = (["glslangValidator", "-D", "-V", "-S", gstage, "-e", entry, "--hlsl-iomap"]
            + REGISTER_SHIFTS + [f"-I{d}" for d in includes]
            + [f"-D{k}" for k in keywords] + STAGE_DEFINES.get(sname, []) + ["-o", spv, ENTRY_FILE])
-    if step("glslang", cmd) and step("spirv-val", ["spirv-val", spv]):
+    if step_cached("glslang", cmd, spv) and step("spirv-val", ["spirv-val", spv]):
         targets.append("spirv")
         problems.extend(check_bindings(spv, log, keywords))
     if "spirv" in targets and not spirv_only:
@@ -190,6 +245,7 @@ def main():
     ap.add_argument("--only", action="append", default=[], help="compile only this variant")
     ap.add_argument("--dxc", default=DXC, help="Microsoft's DXC (default: ../shared/dxc/bin/dxc beside the package)")
     ap.add_argument("--clean", action="store_true", help="empty OUT_DIR first (once the options are checked)")
+    ap.add_argument("--no-cache", action="store_true", help="compile every stage with glslang, ignoring the shader cache")
     ap.add_argument("--spirv-only", action="store_true",
                     help="SPIR-V, spirv-val and the binding check only (what a GPU test draws); no cross-compiles, no DXC")
     args = ap.parse_args()
@@ -208,8 +264,9 @@ def main():
         os.makedirs(os.path.join(args.out_dir, name), exist_ok=True)
 
     jobs = [(v, s) for v in variants for s in stages_of(v[1])]
+    cache = None if args.no_cache else SpirvCache(SHADER_CACHE)
     with ThreadPoolExecutor(max_workers=args.jobs) as pool:
-        results = list(pool.map(lambda j: compile_one(args.out_dir, j[0], j[1], args.includes, args.dxc, args.spirv_only), jobs))
+        results = list(pool.map(lambda j: compile_one(args.out_dir, j[0], j[1], args.includes, args.dxc, args.spirv_only, cache), jobs))
 
     failed = 0
     for name, sname, problems, targets in results:
@@ -222,6 +279,8 @@ def main():
             print(f"     log: {os.path.join(args.out_dir, name, sname + '.log')}")
     print(f"variants: {len(variants)}, stages: {len(STAGES)} (+{len(CACHE_STAGES)} with GT_VERTEX_CACHE), "
           f"compiled: {len(results)}, passed: {len(results) - failed}, failed: {failed}")
+    if cache:
+        print(f"shader cache: {cache.hits} stages reused, {cache.misses} compiled by glslang ({SHADER_CACHE})")
     return 1 if failed else 0
 
 

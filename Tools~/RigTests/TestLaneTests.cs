@@ -1,0 +1,49 @@
+// gt test runs the fixtures marked [Parallelizable(ParallelScope.Self)] two at a time (Tools~/development.md,
+// "Test command"). Two fixtures that share a work folder would delete or overwrite each other's files
+// only when NUnit happens to pair them: these checks read the fixtures' sources instead.
+using System.Collections.Generic;
+using System.IO;
+using System.Linq;
+using System.Text.RegularExpressions;
+using NUnit.Framework;
+
+namespace GregoryTerrain.Rig.Tests
+{
+    [TestFixture]
+    public class TestLaneTests
+    {
+        const string ParallelMark = "Parallelizable(ParallelScope.Self)";
+        // Folders under .build that fixtures only read (built by gt setup).
+        static readonly string[] ToolFolders = { "gt-cli", "harness", "computerig" };
+
+        static Dictionary<string, string> Sources() =>
+            Directory.GetFiles(PackageRoot.Combine("Tools~", "RigTests"), "*.cs", SearchOption.AllDirectories)
+                .ToDictionary(f => Path.GetFileName(f), File.ReadAllText);
+
+        /// <summary>The folders under .build a source names: ReadbackRun.PrepareWork("NAME") and ".build", "NAME".</summary>
+        static IEnumerable<string> BuildFolders(string source) =>
+            Regex.Matches(source, @"PrepareWork\(""([^""]+)""|""\.build"",\s*""([^""]+)""")
+                .Select(m => m.Groups[1].Success ? m.Groups[1].Value : m.Groups[2].Value);
+
+        [Test]
+        public void TheParallelLaneHoldsTheSlowFixtures()
+        {
+            var parallel = Sources().Where(s => s.Value.Contains(ParallelMark)).Select(s => s.Key).ToList();
+            Assert.That(parallel, Does.Contain("ShaderLibraryTests.cs").And.Contain("BenchSmokeTests.cs").And.Contain("GpuPropertyTests.cs"));
+        }
+
+        [Test]
+        public void EachParallelFixtureWritesInAFolderNoOtherFixtureNames()
+        {
+            var sources = Sources();
+            var shared = new List<string>();
+            foreach (var (file, source) in sources.Where(s => s.Value.Contains(ParallelMark)).Select(s => (s.Key, s.Value)))
+                foreach (string folder in BuildFolders(source).Distinct().Where(f => !ToolFolders.Contains(f)))
+                {
+                    var others = sources.Where(s => s.Key != file && BuildFolders(s.Value).Contains(folder)).Select(s => s.Key).ToList();
+                    if (others.Count > 0) shared.Add($"{file}: .build/{folder} is named by {string.Join(", ", others)} too");
+                }
+            Assert.That(shared, Is.Empty, "a fixture on the parallel lane shares its work folder");
+        }
+    }
+}
