@@ -1,8 +1,9 @@
 // URP's real passes of GregoryTerrain.shader, compiled against Unity's 2022.3 libraries and drawn by
 // the harness on lavapipe with every binding filled by name from one scene (Tools~/rig/pipeline_pass.py):
-// the sample grid, RigScene's zoom view, a sun 30 degrees up. One run draws four pictures (DepthOnly's
+// the sample grid, RigScene's zoom view, a sun 30 degrees up. One run draws five pictures (DepthOnly's
 // depth, ForwardLit's colour, ForwardLit's GT_DEBUG_NORMALS view of the same surface, ForwardLit's
-// colour from DXC's SPIR-V); the tests grade them. They fail (never skip) when gt-cli, the harness, glslang, spirv-cross or lavapipe is missing.
+// colour from DXC's SPIR-V, and Built-in's ForwardBase colour); the tests grade them (Built-in's
+// bindings here). They fail (never skip) when gt-cli, the harness, glslang, spirv-cross or lavapipe is missing.
 using System;
 using System.Collections.Generic;
 using System.Diagnostics;
@@ -27,7 +28,7 @@ namespace GregoryTerrain.Rig.Tests
 
         string _out, _log;
         RigPng _depth, _lit, _normals, _litDxc;
-        JsonElement _litManifest;
+        JsonElement _litManifest, _builtinManifest;
         double[] _albedo, _sun, _light;
         double _ambient;
         List<int> _covered;
@@ -52,6 +53,7 @@ namespace GregoryTerrain.Rig.Tests
             _normals = RigPng.Read(Path.Combine(_out, "normals.png"));
             _litDxc = RigPng.Read(Path.Combine(_out, "lit_dxc.png"));
             _litManifest = Manifest("lit");
+            _builtinManifest = Manifest("builtin_lit");
             _sun = _litManifest.GetProperty("sun").EnumerateArray().Select(e => e.GetDouble()).ToArray();
             _light = _litManifest.GetProperty("light_color").EnumerateArray().Select(e => e.GetDouble()).ToArray();
             string shading = File.ReadAllText(Path.Combine(root, "Shaders", "Terrain", "TerrainShading.hlsl"));
@@ -86,7 +88,7 @@ namespace GregoryTerrain.Rig.Tests
         [Test]
         public void EveryMemberTheStagesRead_IsFilledByTheScene_AndEveryDefaultIsListed()
         {
-            foreach (string picture in new[] { "depth", "lit", "normals", "lit_dxc" })
+            foreach (string picture in new[] { "depth", "lit", "normals", "lit_dxc", "builtin_lit" })
             {
                 JsonElement m = Manifest(picture);
                 string[] defaults = Strings(m.GetProperty("defaults")), filled = Strings(m.GetProperty("filled"));
@@ -100,6 +102,9 @@ namespace GregoryTerrain.Rig.Tests
             string[] frag = Strings(_litManifest.GetProperty("reads").GetProperty("frag"));
             Assert.That(frag, Does.Contain("$Global._MainLightColor").And.Contain("$Global._MainLightPosition"),
                 "ForwardLit's fragment stage reads URP's main light (GetMainLight)");
+            string[] builtinFrag = Strings(_builtinManifest.GetProperty("reads").GetProperty("frag"));
+            Assert.That(builtinFrag, Does.Contain("$Global._LightColor0").And.Contain("$Global._WorldSpaceLightPos0"),
+                "ForwardBase's fragment stage reads Built-in's main light");
         }
 
         [Test]
