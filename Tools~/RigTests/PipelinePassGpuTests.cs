@@ -1,8 +1,9 @@
 // URP's real passes of GregoryTerrain.shader, compiled against Unity's 2022.3 libraries and drawn by
 // the harness on lavapipe with every binding filled by name from one scene (Tools~/rig/pipeline_pass.py):
-// the sample grid, RigScene's zoom view, a sun 30 degrees up. One run draws four pictures (DepthOnly's
+// the sample grid, RigScene's zoom view, a sun 30 degrees up. One run draws five pictures (DepthOnly's
 // depth, ForwardLit's colour, ForwardLit's GT_DEBUG_NORMALS view of the same surface, ForwardLit's
-// colour from DXC's SPIR-V); the tests grade them. They fail (never skip) when gt-cli, the harness, glslang, spirv-cross or lavapipe is missing.
+// colour from DXC's SPIR-V, and Built-in's ForwardBase colour); the tests grade them, and compare the
+// two pipelines where their lighting models agree. They fail (never skip) when gt-cli, the harness, glslang, spirv-cross or lavapipe is missing.
 using System;
 using System.Collections.Generic;
 using System.Diagnostics;
@@ -26,8 +27,8 @@ namespace GregoryTerrain.Rig.Tests
         const double Quantum = 2.0 / 255.0;
 
         string _out, _log;
-        RigPng _depth, _lit, _normals, _litDxc;
-        JsonElement _litManifest;
+        RigPng _depth, _lit, _normals, _litDxc, _builtinLit;
+        JsonElement _litManifest, _builtinManifest;
         double[] _albedo, _sun, _light;
         double _ambient;
         List<int> _covered;
@@ -51,7 +52,9 @@ namespace GregoryTerrain.Rig.Tests
             _lit = RigPng.Read(Path.Combine(_out, "lit.png"));
             _normals = RigPng.Read(Path.Combine(_out, "normals.png"));
             _litDxc = RigPng.Read(Path.Combine(_out, "lit_dxc.png"));
+            _builtinLit = RigPng.Read(Path.Combine(_out, "builtin_lit.png"));
             _litManifest = Manifest("lit");
+            _builtinManifest = Manifest("builtin_lit");
             _sun = _litManifest.GetProperty("sun").EnumerateArray().Select(e => e.GetDouble()).ToArray();
             _light = _litManifest.GetProperty("light_color").EnumerateArray().Select(e => e.GetDouble()).ToArray();
             string shading = File.ReadAllText(Path.Combine(root, "Shaders", "Terrain", "TerrainShading.hlsl"));
@@ -86,7 +89,7 @@ namespace GregoryTerrain.Rig.Tests
         [Test]
         public void EveryMemberTheStagesRead_IsFilledByTheScene_AndEveryDefaultIsListed()
         {
-            foreach (string picture in new[] { "depth", "lit", "normals", "lit_dxc" })
+            foreach (string picture in new[] { "depth", "lit", "normals", "lit_dxc", "builtin_lit" })
             {
                 JsonElement m = Manifest(picture);
                 string[] defaults = Strings(m.GetProperty("defaults")), filled = Strings(m.GetProperty("filled"));
@@ -100,6 +103,9 @@ namespace GregoryTerrain.Rig.Tests
             string[] frag = Strings(_litManifest.GetProperty("reads").GetProperty("frag"));
             Assert.That(frag, Does.Contain("$Global._MainLightColor").And.Contain("$Global._MainLightPosition"),
                 "ForwardLit's fragment stage reads URP's main light (GetMainLight)");
+            string[] builtinFrag = Strings(_builtinManifest.GetProperty("reads").GetProperty("frag"));
+            Assert.That(builtinFrag, Does.Contain("$Global._LightColor0").And.Contain("$Global._WorldSpaceLightPos0"),
+                "ForwardBase's fragment stage reads Built-in's main light");
         }
 
         [Test]
@@ -176,6 +182,33 @@ namespace GregoryTerrain.Rig.Tests
             int largest = Enumerable.Range(0, _lit.Rgba.Length).Max(i => Math.Abs(_lit.Rgba[i] - _litDxc.Rgba[i]));
             TestContext.Out.WriteLine($"glslang vs DXC: largest channel difference {largest}/255, pixels differing by more than 1/255: {differing}");
             Assert.That(differing, Is.Zero, "pixels whose glslang and DXC colours differ by more than 1/255");
+        }
+
+        [Test]
+        public void BuiltinsForwardBase_DrawsUrpsForwardLitPicture_WhereTheirLightingAgrees()
+        {
+            // Both adapters light by Lambert with the package's constant ambient (GT_AMBIENT; neither
+            // defines GT_AMBIENT_PROBE), the same main light (URP's _MainLightPosition/_MainLightColor,
+            // Built-in's _WorldSpaceLightPos0/_LightColor0) and the same surface: the pictures differ by
+            // float rounding at most, one 8-bit step, and cover the same pixels.
+            int largest = 0, over = 0, firstBad = -1;
+            foreach (int p in _covered)
+                for (int c = 0; c < 3; c++)
+                {
+                    int d = Math.Abs(_lit.Rgba[4 * p + c] - _builtinLit.Rgba[4 * p + c]);
+                    largest = Math.Max(largest, d);
+                    if (d > 1) { over++; if (firstBad < 0) firstBad = p; }
+                }
+            var covered = new HashSet<int>(_covered);
+            int drawnOutside = Enumerable.Range(0, _lit.Width * _lit.Height)
+                .Count(p => !covered.Contains(p) && !Enumerable.Range(0, 3).All(c => IsSky(_builtinLit, p, c)));
+            string where = firstBad < 0 ? "" : $"; first at ({firstBad % _lit.Width}, {firstBad / _lit.Width}): URP " +
+                string.Join(",", Enumerable.Range(0, 3).Select(c => _lit.Rgba[4 * firstBad + c])) + ", Built-in " +
+                string.Join(",", Enumerable.Range(0, 3).Select(c => _builtinLit.Rgba[4 * firstBad + c]));
+            TestContext.Out.WriteLine($"URP vs Built-in over {_covered.Count} covered pixels: largest channel difference {largest}/255, " +
+                                      $"channels differing by more than 1/255: {over}, Built-in pixels outside URP's coverage: {drawnOutside}{where}");
+            Assert.That(over, Is.Zero, "covered channels whose URP and Built-in colours differ by more than 1/255" + where);
+            Assert.That(drawnOutside, Is.Zero, "Built-in drew pixels URP's DepthOnly did not cover");
         }
     }
 }

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """gt pipeline_pass: draw a render pipeline's real passes of Shaders/GregoryTerrain.shader in the harness.
 
-Each pass (URP's DepthOnly and ForwardLit; a variant by its keywords) is compiled exactly as
+Each pass (URP's DepthOnly and ForwardLit, Built-in's ForwardBase; a variant by its keywords) is compiled exactly as
 `gt shaderlab` compiles it (glslang, Unity's 2022.3 libraries in ../shared/unity-shaderlib,
 shaderlab.py's emulation). Each stage's SPIR-V is reflected (spirv-cross --reflect); every resource
 the pass declares gets one binding of set 0 from 16 up, by name, the same in every stage (glslang's
@@ -14,14 +14,15 @@ Writes OUT/buffers (gt-cli pack), OUT/<picture>.png and OUT/<picture>/: the stag
 rewritten), one file per binding, manifest.json (bindings, filled, defaults, reads, render state,
 harness arguments) and harness.log. Pictures: depth (DepthOnly: depth in R, ColorMask R), lit
 (ForwardLit, base variant), normals (ForwardLit with GT_DEBUG_NORMALS: world normal * 0.5 + 0.5),
-lit_dxc (ForwardLit base from DXC's SPIR-V, legalised at -O0, unreferenced resources dropped).
+lit_dxc (ForwardLit base from DXC's SPIR-V, legalised at -O0, unreferenced resources dropped),
+builtin_lit (Built-in's ForwardBase, tessellated SubShader, base variant: one directional light).
 Uniform blocks are bound as storage buffers (--uniform-blocks storage: the harness rewrites the
 blocks, same offsets): the rig's lavapipe rule (one compile per SPIR-V, whatever the values) on every device.
 
-  gt pipeline_pass [--out DIR] [--only depth|lit|normals]... [--sun-elevation DEG] [--sun-azimuth DEG]
+  gt pipeline_pass [--out DIR] [--only depth|lit|normals|lit_dxc|builtin_lit]... [--sun-elevation DEG] [--sun-azimuth DEG]
       [--light-color R,G,B] [--leave-default NAME]... [--fill-from NAME=OTHER]...
 --leave-default / --fill-from break the scene on purpose (the tests' broken inputs): a member left to
-its default, a member filled with another member's value.
+its default, a member filled with another member's value (in each pipeline whose scene sets the names).
 """
 import argparse
 import concurrent.futures
@@ -68,7 +69,7 @@ def compile_pass(sub, pas, out, tmp, keywords=(), compiler="glslang"):
     which no driver can run)."""
     lib = os.path.abspath(os.path.join(PKG_DIR, "..", "shared", "unity-shaderlib"))
     rig = shaderlab.Rig(PKG_DIR, lib, tmp, 1, None, None)
-    includes = rig.include_root("urp", URP_PACKAGES)
+    includes = rig.include_root(sub.pipeline.lower(), INCLUDE_PACKAGES[sub.pipeline])
     dxc = os.path.abspath(os.path.join(PKG_DIR, "..", "shared", "dxc", "bin", "dxc"))
     cases = [c for c in shaderlab.shader_cases([sub], "Shaders/GregoryTerrain.shader", tmp, "pp", "all")
              if c.label.startswith(f"{sub.pipeline} sub{sub.index} {pas.name} ") and sorted(c.keywords) == sorted(keywords)]
@@ -334,6 +335,55 @@ def urp_globals(cam, o2w, o2c, sun, light_color):
     }
 
 
+def builtin_globals(cam, o2w, o2c, sun, light_color):
+    """Built-in's members by name for ForwardBase with one directional light, each with where its
+    layout comes from. Paths are under ../shared/unity-shaderlib/builtin-2022.3.62f1/CGIncludes/."""
+    w, h, n, f = cam.width, cam.height, cam.near, cam.far
+    identity = [[1.0 if i == j else 0.0 for j in range(4)] for i in range(4)]
+    # Flat ambient of the package's constant (GT_AMBIENT, TerrainShading.hlsl) as an SH probe: only
+    # the L0 terms (w of unity_SHAr/g/b, UnityCG.cginc ShadeSHPerPixel's SHEvalLinearL0L1) are non-zero.
+    return {
+        # UnityShaderVariables.cginc:218-221 (UnityPerFrame): the camera's GPU projection, view and
+        # their product; UNITY_MATRIX_VP (line 32) is what UnityWorldToClipPos (UnityCG.cginc) uses.
+        "glstate_matrix_projection": cam.proj,
+        "unity_MatrixV": cam.view,
+        "unity_MatrixInvV": affine_inverse(cam.view),
+        "unity_MatrixVP": cam.view_proj,
+        # UnityShaderVariables.cginc:167-168 (UnityPerDraw): Graphics.RenderPrimitives draws without a
+        # renderer's Transform (BuiltinAdapter.hlsl), so Unity's per-draw matrices are the identity.
+        "unity_ObjectToWorld": identity,
+        "unity_WorldToObject": identity,
+        # UnityShaderVariables.cginc:48 (UnityPerCamera).
+        "_WorldSpaceCameraPos": cam.eye,
+        # UnityShaderVariables.cginc:51-55: x = 1 (not flipped), near, far, 1/far.
+        "_ProjectionParams": [1.0, n, f, 1.0 / f],
+        # UnityShaderVariables.cginc:57-61: width, height, 1 + 1/width, 1 + 1/height.
+        "_ScreenParams": [w, h, 1.0 + 1.0 / w, 1.0 + 1.0 / h],
+        # UnityShaderVariables.cginc:63-73, reversed depth (UNITY_REVERSED_Z on Vulkan): (-1 + far/near, 1, x/far, 1/far).
+        "_ZBufferParams": [-1.0 + f / n, 1.0, (-1.0 + f / n) / f, 1.0 / f],
+        "unity_OrthoParams": [w / h, 1.0, 0.0, 0.0],     # UnityShaderVariables.cginc:75-79: w = 0, perspective
+        # UnityShaderVariables.cginc:108-110 (UnityLighting): in ForwardBase the main directional
+        # light's direction towards it, w = 0 (a point or spot light would have its position, w = 1).
+        "_WorldSpaceLightPos0": sun + [0.0],
+        # UnityLightingCommon.cginc:6: the light's colour times its intensity (linear).
+        "_LightColor0": light_color + [1.0],
+        # UnityShaderVariables.cginc:133-139: the ambient probe's SH, Unity's packing (L0 in w of SHA*).
+        "unity_SHAr": [0.0, 0.0, 0.0, GT_AMBIENT_LEVEL], "unity_SHAg": [0.0, 0.0, 0.0, GT_AMBIENT_LEVEL],
+        "unity_SHAb": [0.0, 0.0, 0.0, GT_AMBIENT_LEVEL],
+        "unity_SHBr": [0.0] * 4, "unity_SHBg": [0.0] * 4, "unity_SHBb": [0.0] * 4, "unity_SHC": [0.0] * 4,
+        # The package's own (UnityAdapterCommon.hlsl, as for URP).
+        "_GtObjectToWorld": o2w,
+        "_GtWorldToObject": affine_inverse(o2w),
+        "_GtTessObjectToClip": o2c,
+        "_GtTessScreenSize": [w, h, 1.0 / w, 1.0 / h],
+    }
+
+
+GT_AMBIENT_LEVEL = 0.2      # TerrainShading.hlsl's GT_AMBIENT
+GLOBALS = {"URP": urp_globals, "Builtin": builtin_globals}
+INCLUDE_PACKAGES = {"URP": URP_PACKAGES, "Builtin": []}
+
+
 # Members the scene does not set, by name: what they hold instead. Everything else defaults to zero,
 # and every default is listed in the run's output.
 NAMED_DEFAULTS = {
@@ -403,11 +453,16 @@ def fill_block(name, members, size, values, report):
     return bytes(data)
 
 
-def terrain_params(buffers, members):
-    """UnityPerMaterial holds TerrainParams (Shaders/Terrain/TerrainParams.cs.hlsl, the generated
-    contract): the rig's params.f32 in that order, one float4 per member."""
+def terrain_params(buffers):
+    """TerrainParams by name (Shaders/Terrain/TerrainParams.cs.hlsl, the generated contract: one
+    float4 per member in field order): the rig's params.f32 in that order. URP's UnityPerMaterial
+    holds them; Built-in's CBUFFER_START declares no block, so there they are $Global members."""
+    with open(os.path.join(PKG_DIR, "Shaders", "Terrain", "TerrainParams.cs.hlsl"), encoding="utf-8") as f:
+        names = re.findall(r"^float4 (\w+);", f.read(), re.M)
     p = read_floats(os.path.join(buffers, "params.f32"))
-    return {m["name"]: p[m["offset"] // 4:m["offset"] // 4 + 4] for m in members}
+    if len(p) < 4 * len(names):
+        raise SystemExit(f"pipeline-pass: error: {buffers}/params.f32 has {len(p)} floats, TerrainParams needs {4 * len(names)}")
+    return {name: p[4 * i:4 * i + 4] for i, name in enumerate(names)}
 
 
 # The grid's structured buffers (TerrainInputs.hlsl; internals.md "GPU layout"), as the rig packs them.
@@ -422,28 +477,27 @@ def layout_key(layout):
                               str(m.get("array"))) for m in members)
 
 
-def prepare(a, pass_name, keywords, buffers, out, compiler="glslang"):
+def prepare(a, pipeline, pass_name, keywords, buffers, out, compiler="glslang"):
     """Compiles the pass's variant, fills its bindings from the scene, writes out/manifest.json and
     returns the harness arguments (stages, bindings, the pass's render state)."""
     os.makedirs(out, exist_ok=True)
     tmp = os.path.join(out, "work")
     subprocess.run(["rm", "-rf", tmp], check=True)
     os.makedirs(tmp)
-    sub, pas = find_pass(a.pipeline, pass_name)
+    sub, pas = find_pass(pipeline, pass_name)
     spvs = compile_pass(sub, pas, out, tmp, keywords, compiler)
     if not spvs:
         raise SystemExit(f"pipeline-pass: error: {pass_name} has no variant with exactly the keywords {keywords}")
     cam, o2w, o2c = rig_camera(buffers)
-    values = urp_globals(cam, o2w, o2c, sun_direction(a.sun_elevation, a.sun_azimuth), a.light_color)
+    values = GLOBALS[pipeline](cam, o2w, o2c, sun_direction(a.sun_elevation, a.sun_azimuth), a.light_color)
+    # A broken input applies to the pipelines whose scene sets the names (main() checks that one does).
     for name in a.leave_default:
-        if name not in values:
-            raise SystemExit(f"pipeline-pass: error: --leave-default {name}: the scene does not set it")
-        del values[name]
+        values.pop(name, None)
     for pair in a.fill_from:
         dst, _, src = pair.partition("=")
-        if dst not in values or src not in values:
-            raise SystemExit(f"pipeline-pass: error: --fill-from '{pair}': both names must be set by the scene")
-        values[dst] = values[src]
+        if dst in values and src in values:
+            values[dst] = values[src]
+    values.update(terrain_params(buffers))
 
     # One binding per resource name across the stages; a name whose layout differs between stages fails.
     layouts, per_stage = {}, {}
@@ -474,8 +528,7 @@ def prepare(a, pass_name, keywords, buffers, out, compiler="glslang"):
         kind, members, size = layouts[name]
         path = os.path.join(out, f"binding_{binding_of[name]}_{re.sub(r'[^A-Za-z0-9_]', '', name)}.bin")
         if kind == "uniform":
-            block_values = terrain_params(buffers, members) if name == "UnityPerMaterial" else values
-            data = fill_block(name, members, size, block_values, report)
+            data = fill_block(name, members, size, values, report)
         elif name in GRID_BUFFERS:
             with open(os.path.join(buffers, GRID_BUFFERS[name]), "rb") as f:
                 data = f.read()
@@ -499,13 +552,13 @@ def prepare(a, pass_name, keywords, buffers, out, compiler="glslang"):
     read_all = sorted(set(x for r in reads.values() for x in r))
     defaulted_read = [d for d in report["defaults"] if any(r.endswith("." + d.split("=")[0]) for r in read_all)]
     variant = "+".join(keywords) or "base"
-    manifest = {"pipeline": a.pipeline, "pass": pas.name, "variant": variant, "compiler": compiler, "bindings": bindings,
+    manifest = {"pipeline": pipeline, "pass": pas.name, "variant": variant, "compiler": compiler, "bindings": bindings,
                 "filled": report["filled"], "defaults": report["defaults"], "reads": reads,
                 "defaulted_read": defaulted_read, "state": state, "sun": sun_direction(a.sun_elevation, a.sun_azimuth),
                 "light_color": a.light_color, "harness_args": args}
     with open(os.path.join(out, "manifest.json"), "w") as f:
         json.dump(manifest, f, indent=1)
-    print(f"pass {a.pipeline} {pas.name} variant {variant} compiler {compiler} stages {','.join(s for s in STAGES if s in spvs)}")
+    print(f"pass {pipeline} {pas.name} variant {variant} compiler {compiler} stages {','.join(s for s in STAGES if s in spvs)}")
     for b in bindings:
         print(f"binding {b['binding']} {b['kind']} {b['name']} bytes {b['bytes']}")
     print(f"filled {len(report['filled'])}: {', '.join(report['filled'])}")
@@ -537,8 +590,10 @@ TILES, WIDTH, HEIGHT = 16, 400, 300
 # (picture, pass, keywords): URP's depth prepass output (coverage: depth in R, ColorMask R), the lit
 # colour, and the same pass's normals debug view (world normals * 0.5 + 0.5) to grade the lighting.
 # lit_dxc: the lit picture from DXC's SPIR-V of the same pass.
-PICTURES = [("depth", "DepthOnly", [], "glslang"), ("lit", "ForwardLit", [], "glslang"),
-            ("normals", "ForwardLit", ["GT_DEBUG_NORMALS"], "glslang"), ("lit_dxc", "ForwardLit", [], "dxc")]
+# builtin_lit: Built-in's ForwardBase (tessellated SubShader, base variant) on the same scene.
+PICTURES = [("depth", "URP", "DepthOnly", [], "glslang"), ("lit", "URP", "ForwardLit", [], "glslang"),
+            ("normals", "URP", "ForwardLit", ["GT_DEBUG_NORMALS"], "glslang"), ("lit_dxc", "URP", "ForwardLit", [], "dxc"),
+            ("builtin_lit", "Builtin", "ForwardBase", [], "glslang")]
 
 
 def draw(args, buffers, png, log):
@@ -556,7 +611,6 @@ def draw(args, buffers, png, log):
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--out", default=os.path.join(PKG_DIR, ".build", "pipeline-pass"))
-    ap.add_argument("--pipeline", default="URP", choices=["URP"])
     ap.add_argument("--only", choices=[p[0] for p in PICTURES], action="append",
                     help="draw only these pictures (default: all)")
     options.add_number(ap, "--sun-elevation", range="elevation", default=30.0,
@@ -573,13 +627,23 @@ def main(argv=None):
             raise ValueError
     except ValueError:
         ap.error(f"argument --light-color: expected R,G,B, each 0..1000, got '{a.light_color}'")
+    scene_names = [set(g(cam, identity, identity, [0.0, 1.0, 0.0], [1.0] * 3)) for g in GLOBALS.values()
+                   for cam, identity in [(Camera([0.0, 1.0, -1.0], [0.0] * 3, 50.0, 4, 3, 0.01, 20.0),
+                                          [[1.0 if i == j else 0.0 for j in range(4)] for i in range(4)])]]
+    for name in a.leave_default:
+        if not any(name in names for names in scene_names):
+            ap.error(f"argument --leave-default: no pipeline's scene sets '{name}'")
+    for pair in a.fill_from:
+        dst, _, src = pair.partition("=")
+        if not any(dst in names and src in names for names in scene_names):
+            ap.error(f"argument --fill-from: '{pair}': no pipeline's scene sets both names")
     os.makedirs(a.out, exist_ok=True)
     buffers = pack_scene(a.out)
-    for picture, pass_name, keywords, compiler in PICTURES:
+    for picture, pipeline, pass_name, keywords, compiler in PICTURES:
         if a.only and picture not in a.only:
             continue
         folder = os.path.join(a.out, picture)
-        args = prepare(a, pass_name, keywords, buffers, folder, compiler)
+        args = prepare(a, pipeline, pass_name, keywords, buffers, folder, compiler)
         draw(args, buffers, os.path.join(a.out, picture + ".png"), os.path.join(folder, "harness.log"))
 
 

@@ -1,4 +1,4 @@
-# gt pipeline_pass: URP's real DepthOnly and ForwardLit passes drawn by the harness, their bindings
+# gt pipeline_pass: URP's DepthOnly and ForwardLit, Built-in's ForwardBase drawn by the harness, their bindings
 # filled by name from a scene (Tools~/rig/pipeline_pass.py says how). Needs gt setup (gt-cli, harness).
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 python3 "$RIG_DIR/pipeline_pass.py" "$@"
