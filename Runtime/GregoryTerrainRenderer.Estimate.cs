@@ -18,7 +18,7 @@ namespace GregoryTerrain
         public TriangleEstimate? EstimateTrianglesInView(Camera cam, int maxTiles = 256)
         {
             if (cam == null) throw new ArgumentNullException(nameof(cam));
-            if (_uploadedPatchGrid == null || _settingsError != null || _drawFallback) return null;
+            if (_uploadedPatchGrid == null || _settingsError != null || _keys.LastDrawFallback) return null;
             int w = cam.pixelWidth, h = cam.pixelHeight;
             if (w <= 0 || h <= 0) return null;
             if (_estimateGrid != _uploadedPatchGrid)

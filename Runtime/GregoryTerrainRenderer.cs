@@ -109,9 +109,6 @@ namespace GregoryTerrain
         // ---- state ----------------------------------------------------------------------------------
         MaterialPropertyBlock _props;
         GraphicsBuffer _controlPoints, _regions, _gridLines, _fallbackIndices;
-        PatchGridAsset _uploadedGrid;
-        int _uploadedVersion;
-        int _fallbackIndexFactor;
         PatchGrid _uploadedPatchGrid;
         TerrainRange _range = TerrainRange.full;
         // What the property block holds and what it was made from (Core's FramePlanner plans each frame).
@@ -119,8 +116,6 @@ namespace GregoryTerrain
         TerrainParams _params => _state.parameters;
         string _settingsError => _state.error;
         float _gridMinZ, _gridMaxZ;
-        DrawModeKey _drawModeKey;         // what _drawFallback was read for
-        bool _drawFallback;
         static bool s_FallbackLogged;
         Double3 _worldOffset;                            // ShiftOrigin's sum, in double (floating origin)
         int _gridStamp;                                  // bumped on every upload: the cache sees new grid buffers
@@ -269,7 +264,7 @@ namespace GregoryTerrain
         }
 
         /// <summary>Why the terrain cannot be drawn: the device (no structured buffers), or the current settings (Core's message, naming field and value); else null.</summary>
-        public string SettingsError => s_DeviceError ?? _settingsError ?? _cacheError;
+        public string SettingsError => s_DeviceError ?? _settingsError ?? _keys.CacheError;
 
         /// <summary>
         /// Where the vertices are evaluated (<see cref="GregoryTerrain.VertexEvaluation"/>). Compute
@@ -305,7 +300,7 @@ namespace GregoryTerrain
         public bool UsesVertexCache => _usesCache;
 
         /// <summary>Why Compute cache is chosen but the domain stage draws (no compute shaders, cache shader, LOD camera...), or null.</summary>
-        public string VertexCacheFallbackReason => _cacheFallbackReason;
+        public string VertexCacheFallbackReason => _keys.CacheFallbackReason;
 
         /// <summary>
         /// GPU memory the vertex cache needs at the current settings, in bytes, whichever evaluation is
@@ -368,9 +363,6 @@ namespace GregoryTerrain
         // ---- Compute cache: when it runs, its size check; the pass is VertexCachePass
 
         readonly VertexCachePass _cache = new VertexCachePass();
-        string _cacheError;                              // the size check's message (not drawn until fixed)
-        (int tiles, int limit, bool snow, long deviceLimit) _cacheCheckedFor;   // what _cacheError is the verdict on
-        string _cacheFallbackReason;                     // why Compute cache is not used now, logged once per reason
         bool _usesCache;
 
         /// <summary>
@@ -386,8 +378,7 @@ namespace GregoryTerrain
             // The levels draw through the domain stage (the cache holds one range's tiles).
             if (vertexEvaluation != VertexEvaluation.ComputeCache || LevelsOn(fallback))
             {
-                _cacheFallbackReason = null;
-                ClearCacheCheck();
+                _keys.CacheNotUsed(null);
                 StopCache();
                 return true;
             }
@@ -397,14 +388,12 @@ namespace GregoryTerrain
             string reason = CacheUnavailableReason(fallback, cam, snow, snowSource);
             if (reason != null)
             {
-                if (reason != _cacheFallbackReason)
+                if (_keys.CacheNotUsed(reason))
                     Debug.LogWarning($"{name}: Vertex evaluation is Compute cache, but {reason}; evaluating in the domain stage instead.", this);
-                _cacheFallbackReason = reason;
-                ClearCacheCheck();
                 StopCache();
                 return true;
             }
-            _cacheFallbackReason = null;
+            _keys.CacheUsed();
 
             int limit = VertexCache.FactorLimit(_params.tess);
             if (!CacheFits(limit, snow)) return false;
@@ -445,26 +434,9 @@ namespace GregoryTerrain
         /// <summary>The size check, run when M, L, snow or the device's limit changed; logged once per failing setting.</summary>
         bool CacheFits(int limit, bool snow)
         {
-            long deviceLimit = SystemInfo.maxGraphicsBufferSize;
-            int across = CacheTilesAcross;
-            var key = (across, limit, snow, deviceLimit);
-            if (key.Equals(_cacheCheckedFor)) return _cacheError == null;
-            _cacheCheckedFor = key;
-            _cacheError = null;
-            try { VertexCacheBudget.CheckFits(across, limit, snow, deviceLimit > 0 ? deviceLimit : GpuLayout.MaxBufferBytes); }
-            catch (ArgumentException e)
-            {
-                _cacheError = $"vertexEvaluation = ComputeCache: {e.Message}";
-                Debug.LogError($"{name}: cannot draw with these settings: {_cacheError}", this);
-            }
-            return _cacheError == null;
-        }
-
-        /// <summary>Forgets the size check's verdict (the cache is not used now; checked afresh when it is).</summary>
-        void ClearCacheCheck()
-        {
-            _cacheError = null;
-            _cacheCheckedFor = default;
+            string error = _keys.CheckCacheFits(CacheTilesAcross, limit, snow, SystemInfo.maxGraphicsBufferSize, out bool fresh);
+            if (error != null && fresh) Debug.LogError($"{name}: cannot draw with these settings: {error}", this);
+            return error == null;
         }
 
         /// <summary>Why the compute cache cannot run, naming the setting or device flag, or null.</summary>
@@ -593,8 +565,9 @@ namespace GregoryTerrain
                 layer = gameObject.layer,
             };
             int across = TileLattice.TilesAcross(_params), tileCount = across * across;
-            if (LevelsOn(_drawFallback)) tileCount = _state.levelCount * tiles * tiles;   // L x M^2 tiles, laid out around cam by Prepare(cam)
-            if (_drawFallback)
+            bool fallback = _keys.LastDrawFallback;
+            if (LevelsOn(fallback)) tileCount = _state.levelCount * tiles * tiles;   // L x M^2 tiles, laid out around cam by Prepare(cam)
+            if (fallback)
                 Graphics.RenderPrimitivesIndexed(rp, MeshTopology.Triangles, _fallbackIndices,
                     _fallbackIndices.count, 0, tileCount);
             else
@@ -731,38 +704,20 @@ namespace GregoryTerrain
         /// <summary>The property ID of <c>_Range</c> (for the Unity-side tests).</summary>
         internal static int RangePropertyId => ShaderIds.Range;
 
-        /// <summary>What Unity picks the SubShader by, besides the device.</summary>
-        readonly struct DrawModeKey
-        {
-            readonly Material _material;
-            readonly Shader _shader;
-            readonly int _globalLod, _shaderLod;
-            readonly UnityEngine.Rendering.RenderPipelineAsset _pipeline;
-
-            public DrawModeKey(Material material)
-            {
-                _material = material;
-                _shader = material.shader;
-                _globalLod = Shader.globalMaximumLOD;
-                _shaderLod = _shader != null ? _shader.maximumLOD : 0;
-                _pipeline = UnityEngine.Rendering.GraphicsSettings.currentRenderPipeline;
-            }
-
-            public bool Matches(in DrawModeKey o) => _material == o._material && _shader == o._shader
-                && _globalLod == o._globalLod && _shaderLod == o._shaderLod && _pipeline == o._pipeline;
-        }
-
-        /// <summary>The SubShader's draw, read again when its <see cref="DrawModeKey"/> changes (GetTag allocates).</summary>
+        /// <summary>The SubShader's draw, read again when what Unity picks it by changes (<see cref="DrawModeKey"/>; GetTag allocates).</summary>
         bool ReadDrawMode()
         {
-            var key = new DrawModeKey(material);
-            if (key.Matches(_drawModeKey)) return _drawFallback;
+            Shader shader = material.shader;
+            var key = new DrawModeKey(material.GetInstanceID(), IdOf(shader), Shader.globalMaximumLOD, shader != null ? shader.maximumLOD : 0,
+                IdOf(GraphicsSettings.currentRenderPipeline));
+            if (_keys.TryDrawMode(key, out bool fallback)) return fallback;
             string tag = material.GetTag(DrawTag, false, "");
-            bool fallback = tag == "Fallback" || (tag.Length == 0 && UsesFallback);
-            _drawModeKey = key;
-            _drawFallback = fallback;
+            fallback = tag == "Fallback" || (tag.Length == 0 && UsesFallback);
+            _keys.DrawModeRead(key, fallback);
             return fallback;
         }
+
+        static int IdOf(UnityEngine.Object o) => o != null ? o.GetInstanceID() : 0;
 
         /// <summary>
         /// World bounds of the drawn range: height between the lowest and highest control point,
@@ -772,7 +727,7 @@ namespace GregoryTerrain
         {
             float noise = NoiseMargin();
             float snow = SnowDepthCap();   // the shader's tile culling raises a tile's box by it (TileCulled)
-            TerrainRange drawn = LevelsOn(_drawFallback) ? TerrainRange.full : _range;   // the levels end with the whole terrain
+            TerrainRange drawn = LevelsOn(_keys.LastDrawFallback) ? TerrainRange.full : _range;   // the levels end with the whole terrain
             Vector3 min = new Vector3((float)drawn.c, _gridMinZ - noise, (float)drawn.d);
             Vector3 max = new Vector3((float)drawn.g, _gridMaxZ + noise + snow, (float)drawn.h);
             Matrix4x4 m = ToMatrix4x4(_state.objectToWorld);   // size, height scale and offset included (t is added to the object points below)

@@ -263,7 +263,7 @@ namespace GregoryTerrain.Rig.Tests
             string apply = Body("PatchGridAsset.cs", "ApplyEdit");
             if (!Regex.IsMatch(apply, @"_changes\.Add\s*\(")) gaps.Add("PatchGridAsset.ApplyEdit does not log the patches it changed for readers to catch up");
             string upload = Body("GregoryTerrainRenderer.Buffers.cs", "EnsureUploaded");
-            int partial = upload.IndexOf("TryUploadEditedPatches()", System.StringComparison.Ordinal), release = upload.IndexOf("ReleaseGpuResources()", System.StringComparison.Ordinal);
+            int partial = upload.IndexOf("TryUploadEditedPatches(", System.StringComparison.Ordinal), release = upload.IndexOf("ReleaseGpuResources()", System.StringComparison.Ordinal);
             if (partial < 0 || release >= 0 && partial > release) gaps.Add("the renderer uploads the whole grid on an edit without first uploading the edited patches only");
             string queries = StripComments(files["GregoryTerrainRenderer.Queries.cs"]);
             int edited = queries.IndexOf("EditedQuery(", System.StringComparison.Ordinal), rebuilt = queries.IndexOf("new TerrainSurfaceQuery(", System.StringComparison.Ordinal);
