@@ -9,7 +9,8 @@ namespace GregoryTerrain
         // The tiled noise's cell table (GT_NOISE_TABLE), while the material's noise is tiled.
         GraphicsBuffer _noiseCells;
 
-        /// <summary>What the GPU objects and the draw material were made from: Core's rules (FrameResources).</summary>
+        /// <summary>What the GPU objects, the draw material and the surface's query were made from (Core).</summary>
+        internal FrameResources Resources => _state.resources;
         FrameResources _keys => _state.resources;
 
         /// <summary>Empties the property block and forgets what it held: the one place the block is cleared.</summary>
@@ -179,9 +180,7 @@ namespace GregoryTerrain
             ReleaseNoiseTable();
             _cache.Release();
             _uploadedPatchGrid = null;
-            _estimateInputs = null;   // the grid's CPU copy for the view estimate
-            _estimateGrid = null;
-            _keys.Released();   // uploaded again; the SubShader's tag read again (it may change with the shader)
+            _keys.Released();   // uploaded again, the estimate's CPU copy dropped, the SubShader's tag read again
             ClearPropertyBlock();
         }
 
@@ -227,13 +226,5 @@ namespace GregoryTerrain
 
         /// <summary>Uploads of edited patches only (the Unity-side tests).</summary>
         internal int PatchUploadCount { get; private set; }
-
-        /// <summary>The query brought to the grid's version at the cost of the patches edited since; null when only a rebuild can tell.</summary>
-        TerrainSurfaceQuery EditedQuery(NoiseSettings? noise, TerrainKeywords keywords)
-        {
-            if (_query == null || _queryAsset != grid || !Nullable.Equals(_queryNoise, noise) || _queryKeywords != keywords) return null;
-            PatchGrid g = grid.UpdatedPatchGrid(_query.Grid, _queryVersion, out int[] changed);
-            return g == null ? null : _query.WithPatches(g, changed);
-        }
     }
 }

@@ -9,7 +9,7 @@ namespace GregoryTerrain
     // before a domain reload; a renderer whose keywords equal the asset's draws the asset.
     public sealed partial class GregoryTerrainRenderer
     {
-        Material _drawMaterial;        // the runtime copy, or null while the asset itself is drawn; made from _keys' MaterialSourceKey
+        Material _drawMaterial;        // the runtime copy, or null while the asset itself is drawn
 
         /// <summary>
         /// The package's own material keywords. Their state on the asset is compared bit by bit as
@@ -50,10 +50,7 @@ namespace GregoryTerrain
                 ReleaseDrawMaterial();
                 return material;
             }
-            // In play mode the asset is compared (its CRC walks every property) once a frame, not once
-            // a camera: the copy synced for this frame's first camera serves the others. In edit mode
-            // every call compares, since an inspector edit must show at once and Time.frameCount
-            // does not advance between the editor's repaints as it does between player frames.
+            // Edit mode: every call compares (frameCount does not advance between the editor's repaints).
             int frame = Application.isPlaying ? Time.frameCount : -1;
             if (_drawMaterial != null && _keys.MaterialComparedThisFrame(material.GetInstanceID(), frame) && HasKeywords(_drawMaterial, keywords))
                 return _drawMaterial;

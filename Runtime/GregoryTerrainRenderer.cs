@@ -14,8 +14,8 @@ namespace GregoryTerrain
     /// (<c>beginCameraRendering</c> in URP/HDRP, <c>Camera.onPreCull</c> in Built-in; Edit Mode too):
     /// M x M tessellated tiles over <see cref="Range"/> or the Horizon levels. Only <c>_Range</c> is sent
     /// every frame (<see cref="PerFrameTrafficBytes"/>), the rest on change; keywords go on a runtime
-    /// copy of the material. Files: this, <c>.DrawMaterial</c>, <c>.Buffers</c>, <c>.Estimate</c>,
-    /// <c>.Queries</c>; Core's FramePlanner; internals.md.
+    /// copy of the material. Files: this, <c>.DrawMaterial</c>, <c>.Buffers</c>; queries on
+    /// <see cref="Surface"/>; Core's FramePlanner and FrameResources; internals.md.
     /// </summary>
     [ExecuteAlways]
     [DisallowMultipleComponent]
@@ -121,6 +121,7 @@ namespace GregoryTerrain
         int _gridStamp;                                  // bumped on every upload: the cache sees new grid buffers
         readonly System.Collections.Generic.List<int> _setLastPrepare = new System.Collections.Generic.List<int>(16);
         SnowSimulator _snow;                             // the enabled simulator attached to this renderer
+        GregoryTerrainSurface _surface;                  // made on first use
 
         /// <summary>
         /// SubShader tag of GregoryTerrain.shader: "Tessellated" or "Fallback", the draw the SubShader
@@ -129,6 +130,46 @@ namespace GregoryTerrain
         const string DrawTag = "GregoryTerrainDraw";
 
         // ---- public API -----------------------------------------------------------------------------
+
+        /// <summary>Height, normal, ray and triangle-count queries on the surface this renderer draws.</summary>
+        public GregoryTerrainSurface Surface => _surface ??= new GregoryTerrainSurface(this);
+
+        /// <inheritdoc cref="GregoryTerrainSurface.RaycastToleranceMeters"/>
+        public const float RaycastToleranceMeters = GregoryTerrainSurface.RaycastToleranceMeters;
+
+        /// <inheritdoc cref="GregoryTerrainSurface.SampleHeight"/>
+        public float SampleHeight(Vector3 worldPosition) => Surface.SampleHeight(worldPosition);
+
+        /// <inheritdoc cref="GregoryTerrainSurface.SampleNormal"/>
+        public Vector3 SampleNormal(Vector3 worldPosition) => Surface.SampleNormal(worldPosition);
+
+        /// <inheritdoc cref="GregoryTerrainSurface.TrySampleSurface"/>
+        public bool TrySampleSurface(Vector3 worldPosition, out Vector3 surfacePoint, out Vector3 surfaceNormal) =>
+            Surface.TrySampleSurface(worldPosition, out surfacePoint, out surfaceNormal);
+
+        /// <inheritdoc cref="GregoryTerrainSurface.SampleHeights"/>
+        public void SampleHeights(ReadOnlySpan<Vector3> worldPositions, Span<float> heights) => Surface.SampleHeights(worldPositions, heights);
+
+        /// <inheritdoc cref="GregoryTerrainSurface.Raycast"/>
+        public bool Raycast(Ray ray, float maxDistance, out Vector3 point, out Vector3 normal, out float distance) =>
+            Surface.Raycast(ray, maxDistance, out point, out normal, out distance);
+
+        /// <inheritdoc cref="GregoryTerrainSurface.EstimateTrianglesInView"/>
+        public TriangleEstimate? EstimateTrianglesInView(Camera cam, int maxTiles = 256) => Surface.EstimateTrianglesInView(cam, maxTiles);
+
+        /// <summary>The Core query behind <see cref="Surface"/> (GregoryTerrainCollider).</summary>
+        internal TerrainSurfaceQuery SurfaceQuery => Surface.Query;
+
+        /// <summary>The queries' noise: with GT_NOISE the noise settings, else null.</summary>
+        internal NoiseSettings? QueryNoise => material != null && material.IsKeywordEnabled(ShaderIds.NoiseKeyword)
+            ? new NoiseSettings(noiseAmplitude, noiseFrequency, noiseAlpha, noiseBeta, noiseOctaves) : (NoiseSettings?)null;
+
+        /// <summary>Whether a grid is uploaded with valid settings: <see cref="WorldBounds"/> holds the drawn terrain.</summary>
+        internal bool HasDrawn => _uploadedPatchGrid != null && _settingsError == null;
+
+        // The estimate's inputs.
+        internal PatchGrid UploadedPatchGrid => _uploadedPatchGrid;
+        internal FrameState State => _state;
 
         /// <summary>The patch grid drawn. Setting another asset releases and re-uploads on the next frame.</summary>
         public PatchGridAsset Grid { get => grid; set => grid = value; }
@@ -341,7 +382,7 @@ namespace GregoryTerrain
         bool LevelsOn(bool fallback) => horizonLevels && !fallback;
 
         /// <summary>The finest level's exponent for the terrain's width in world units.</summary>
-        int FinestExponent()
+        internal int FinestExponent()
         {
             double metres = WorldUnitsPerObjectUnit.x;   // world units across the terrain's x
             if (!(metres > 0.0) || double.IsInfinity(metres)) metres = 1.0;
@@ -428,7 +469,7 @@ namespace GregoryTerrain
         /// platform's depth range and orientation). A render-texture y flip changes no factor (screen
         /// lengths) nor the culling (symmetric in y): renderIntoTexture = false serves every target.
         /// </summary>
-        Matrix4x4 ObjectToClip(Camera cam) =>
+        internal Matrix4x4 ObjectToClip(Camera cam) =>
             GL.GetGPUProjectionMatrix(cam.projectionMatrix, false) * cam.worldToCameraMatrix * ToMatrix4x4(_state.objectToWorld);
 
         /// <summary>The size check, run when M, L, snow or the device's limit changed; logged once per failing setting.</summary>
@@ -744,6 +785,10 @@ namespace GregoryTerrain
             return new Bounds(c, 2f * we);
         }
 
+        internal static Float4x4 ToFloat4x4(Matrix4x4 m) => Float4x4.FromRows(
+            m.m00, m.m01, m.m02, m.m03, m.m10, m.m11, m.m12, m.m13,
+            m.m20, m.m21, m.m22, m.m23, m.m30, m.m31, m.m32, m.m33);
+
         static Matrix4x4 ToMatrix4x4(Float4x4 f) => new Matrix4x4
         {
             m00 = f.c0.x, m10 = f.c0.y, m20 = f.c0.z, m30 = f.c0.w,
@@ -756,7 +801,7 @@ namespace GregoryTerrain
         /// The material's keywords that change the height noise, as Core names them: GT_NOISE, and
         /// with it GT_NOISE_TABLE (tiled noise is another noise, so other heights and offsets).
         /// </summary>
-        TerrainKeywords NoiseKeywords()
+        internal TerrainKeywords NoiseKeywords()
         {
             if (material == null || !material.IsKeywordEnabled(ShaderIds.NoiseKeyword)) return TerrainKeywords.None;
             return material.IsKeywordEnabled(ShaderIds.NoiseTableKeyword) ? TerrainKeywords.Noise | TerrainKeywords.NoiseTable : TerrainKeywords.Noise;

@@ -1,4 +1,5 @@
 using NUnit.Framework;
+using GregoryTerrain.Tests;
 
 namespace GregoryTerrain.Rig.Tests
 {
@@ -137,6 +138,61 @@ namespace GregoryTerrain.Rig.Tests
             Assert.That(r.CacheNotUsed("no LOD camera"), Is.True, "told again after the cache ran");
             Assert.That(r.CacheNotUsed(null), Is.False);
             Assert.That(r.CacheFallbackReason, Is.Null, "chosen off: no reason");
+        }
+
+        static readonly PatchGrid Grid = HardCaseGrids.WithLines(new[] { 0.0, 0.5, 1.0 }, new[] { 0.0, 0.5, 1.0 });
+        static readonly NoiseSettings Noise = new NoiseSettings(0.02f, 16f, 2f, 2f, 6);
+
+        [Test]
+        public void AQueryIsRebuiltWhenItsGridVersionNoiseOrKeywordsChangeAndCatchesUpOnEdits()
+        {
+            var r = new FrameResources();
+            var v1 = new QuerySourceKey(GridV1, Noise, TerrainKeywords.Noise);
+            Assert.That(r.TryQuery(v1, out _), Is.False, "never built");
+            var q = new TerrainSurfaceQuery(Grid, Noise);
+            r.QueryBuilt(v1, q);
+            Assert.That(r.TryQuery(v1, out TerrainSurfaceQuery held), Is.True);
+            Assert.That(held, Is.SameAs(q));
+            Assert.That(r.TryQuery(new QuerySourceKey(GridV1, null, TerrainKeywords.None), out _), Is.False, "GT_NOISE off");
+            Assert.That(r.TryQuery(new QuerySourceKey(GridV1, Noise, TerrainKeywords.Noise | TerrainKeywords.NoiseTable), out _), Is.False, "tiled noise");
+            Assert.That(r.TryQuery(new QuerySourceKey(GridV1, new NoiseSettings(0.02f, 16f, 2f, 2f, 5), TerrainKeywords.Noise), out _), Is.False);
+
+            var v2 = new QuerySourceKey(GridV2, Noise, TerrainKeywords.Noise);
+            Assert.That(r.TryQuery(v2, out _), Is.False, "an edit");
+            Assert.That(r.QueryToCatchUp(v2, out int version), Is.SameAs(q), "same grid and noise: the edited patches only");
+            Assert.That(version, Is.EqualTo(1));
+            Assert.That(r.QueryToCatchUp(new QuerySourceKey(OtherGrid, Noise, TerrainKeywords.Noise), out _), Is.Null, "another grid: rebuilt");
+            Assert.That(r.QueryToCatchUp(new QuerySourceKey(GridV2, null, TerrainKeywords.None), out _), Is.Null, "other noise: rebuilt");
+        }
+
+        [Test]
+        public void AQueryThatFailedIsNotRebuiltUntilItsInputsChange()
+        {
+            var r = new FrameResources();
+            var v1 = new QuerySourceKey(GridV1, null, TerrainKeywords.None);
+            r.QueryBuilt(v1, null);
+            Assert.That(r.TryQuery(v1, out TerrainSurfaceQuery q), Is.True, "the collider asks every frame: logged once per version");
+            Assert.That(q, Is.Null);
+            Assert.That(r.QueryToCatchUp(new QuerySourceKey(GridV2, null, TerrainKeywords.None), out _), Is.Null, "nothing to catch up from");
+            r.Released();
+            Assert.That(r.TryQuery(v1, out _), Is.True, "the query does not hang on the GPU buffers");
+        }
+
+        [Test]
+        public void TheEstimatePacksTheGridOncePerGridAndUpload()
+        {
+            var r = new FrameResources();
+            var p = new TerrainParams { gridSize = new Float4(Grid.Columns, Grid.Rows, 0f, 0f) };
+            TerrainInputs first = r.EstimateInputs(Grid, p);
+            p.range = new Float4(0.1f, 0.1f, 0.5f, 0.5f);
+            TerrainInputs second = r.EstimateInputs(Grid, p);
+            Assert.That(second.ControlPoints, Is.SameAs(first.ControlPoints), "same grid: not packed again");
+            Assert.That(second.Params.range, Is.EqualTo(p.range), "the constants taken each time");
+            r.Released();
+            Assert.That(r.EstimateInputs(Grid, p).ControlPoints, Is.Not.SameAs(first.ControlPoints), "released: the CPU copy dropped");
+            PatchGrid other = HardCaseGrids.WithLines(new[] { 0.0, 1.0 }, new[] { 0.0, 1.0 });
+            var q = new TerrainParams { gridSize = new Float4(other.Columns, other.Rows, 0f, 0f) };
+            Assert.That(r.EstimateInputs(other, q).ControlPoints, Is.Not.SameAs(second.ControlPoints), "another grid");
         }
 
         [Test]

@@ -87,7 +87,7 @@ namespace GregoryTerrain
         public readonly TerrainRange[] levelRanges = new TerrainRange[LodTiles.MaxLevels];
         public readonly Float4[] levelVectors = new Float4[LodTiles.MaxLevels];   // relative to the camera's origin
         public int levelCount, sentLevelCount;
-        // The buffers bound on the block besides the grid's (opaque: GraphicsBuffer on the Unity side).
+        // Buffers bound besides the grid's (GraphicsBuffer, opaque here).
         object _sentNoiseCells, _sentSnowDepth;
         Float3 _sentSnowMapSize;
         /// <summary>What the GPU objects and the draw material were made from.</summary>
@@ -104,7 +104,7 @@ namespace GregoryTerrain
             _sentSnowMapSize = default;
         }
 
-        /// <summary>True when <paramref name="table"/> must be set on the block (new, or the block was cleared); then taken as set.</summary>
+        /// <summary>True when the noise table must be set on the block (then taken as set).</summary>
         public bool BindNoiseCells(object table)
         {
             if (table == null || table == _sentNoiseCells) return false;   // off: the variants drawn do not read it
@@ -112,7 +112,7 @@ namespace GregoryTerrain
             return true;
         }
 
-        /// <summary>True when the snow map (buffer, size in cells and depth cap) must be set on the block; then taken as set.</summary>
+        /// <summary>True when the snow map (buffer, cells, depth cap) must be set on the block (then taken as set).</summary>
         public bool BindSnow(object depth, Float3 mapSize)
         {
             if (depth == _sentSnowDepth && mapSize.Equals(_sentSnowMapSize)) return false;
