@@ -6,7 +6,8 @@ namespace GregoryTerrain
     /// <summary>
     /// CPU queries in world space on the surface a renderer draws at full detail (Core's TerrainSurfaceQuery
     /// through its Transform, size, height scale and origin offset), and the triangles a camera draws now.
-    /// From <see cref="GregoryTerrainRenderer.Surface"/>; main thread (the Core query is thread-safe).
+    /// From <see cref="GregoryTerrainRenderer.Surface"/>; main thread; valid while that renderer exists (a plain
+    /// object: it does not read as null after Destroy).
     /// </summary>
     public sealed class GregoryTerrainSurface
     {
@@ -20,7 +21,7 @@ namespace GregoryTerrain
 
         /// <summary>
         /// The Core query for the grid and noise (GT_NOISE: every octave; GT_NOISE_TABLE: tiled), rebuilt when
-        /// the grid's version, noise or keywords change; null without a valid grid. Usable from any thread.
+        /// the grid's version, noise or keywords change; null without a valid grid. Main thread; the query it returns may then be used from any thread.
         /// </summary>
         internal TerrainSurfaceQuery Query
         {

@@ -93,7 +93,7 @@ namespace GregoryTerrain
         /// <summary>What the GPU objects and the draw material were made from.</summary>
         public readonly FrameResources resources = new FrameResources();
 
-        /// <summary>The property block was cleared: the next plan sends everything.</summary>
+        /// <summary>The property block was cleared, or a plan's values never reached it: the next plan sends everything.</summary>
         public void Forget()
         {
             planned = false;
