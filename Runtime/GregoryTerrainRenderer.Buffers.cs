@@ -6,27 +6,18 @@ namespace GregoryTerrain
     // The renderer's GPU buffers: the grid uploaded once per asset version, the fallback's index grid.
     public sealed partial class GregoryTerrainRenderer
     {
-        // The grid version that failed to convert or pack: not tried again (nor logged) every camera
-        // of every frame. ReleaseGpuResources clears _uploadedGrid, so it cannot hold this.
-        PatchGridAsset _failedGrid;
-        int _failedVersion;
         // The tiled noise's cell table (GT_NOISE_TABLE), while the material's noise is tiled.
         GraphicsBuffer _noiseCells;
 
-        /// <summary>What the property block holds of the values set only on change; forgotten with the block.</summary>
-        struct BlockMemo
-        {
-            internal GraphicsBuffer snowDepth, noiseCells;
-            internal Vector4 snowMapSize;
-        }
-        BlockMemo _sent;
+        /// <summary>What the GPU objects, the draw material and the surface's query were made from (Core).</summary>
+        internal FrameResources Resources => _state.resources;
+        FrameResources _keys => _state.resources;
 
         /// <summary>Empties the property block and forgets what it held: the one place the block is cleared.</summary>
         void ClearPropertyBlock()
         {
             _props?.Clear();
-            _sent = default;
-            _state.Forget();
+            _state.Forget();   // the bindings set only on change too
         }
 
         static bool s_DeviceChecked;
@@ -53,16 +44,17 @@ namespace GregoryTerrain
         /// <summary>Uploads the grid when it is new or changed; false when it cannot be drawn.</summary>
         bool EnsureUploaded()
         {
-            if (_uploadedGrid == grid && _uploadedVersion == grid.Version && _controlPoints != null) return true;
-            if (_failedGrid == grid && _failedVersion == grid.Version) return false;   // logged once; retried on the next version
-            if (TryUploadEditedPatches()) return true;
+            var key = new GridVersionKey(grid.GetInstanceID(), grid.Version);
+            UploadAction action = _keys.Upload(key, _controlPoints != null);
+            if (action != UploadAction.Upload) return action == UploadAction.Keep;   // Skip: logged once; retried on the next version
+            if (TryUploadEditedPatches(key)) return true;
             ReleaseGpuResources();
             PatchGrid g;
             try { g = grid.ToPatchGrid(); }
             catch (ArgumentException e)
             {
                 Debug.LogError($"{name}: patch grid '{grid.name}' cannot be drawn: {e.Message}", this);
-                _failedGrid = grid; _failedVersion = grid.Version;   // do not retry every frame
+                _keys.UploadFailed(key);   // do not retry every frame
                 return false;
             }
             GregoryPatchRecord[] records;
@@ -77,7 +69,7 @@ namespace GregoryTerrain
             catch (ArgumentException e)
             {
                 Debug.LogError($"{name}: patch grid '{grid.name}' cannot be drawn: {e.Message}", this);
-                _failedGrid = grid; _failedVersion = grid.Version;   // do not retry every frame
+                _keys.UploadFailed(key);
                 return false;
             }
 
@@ -97,10 +89,8 @@ namespace GregoryTerrain
             // _GridSize is part of TerrainParams: the block was cleared above, so the next plan sends it.
             grid.GetHeightRange(out _gridMinZ, out _gridMaxZ);
 
-            _uploadedGrid = grid;
-            _failedGrid = null;
+            _keys.Uploaded(key);
             _uploadedPatchGrid = g;
-            _uploadedVersion = grid.Version;
             _gridStamp++;
             UploadCount++;
             _state.ResetOrigins();
@@ -118,7 +108,7 @@ namespace GregoryTerrain
                           "drawing the vertex-shader fallback (a fixed grid per tile).", this);
             }
             int f = fallbackGridFactor;
-            if (_fallbackIndices != null && _fallbackIndexFactor == f) return true;
+            if (!_keys.RebuildFallbackIndices(f, _fallbackIndices != null)) return true;
             _fallbackIndices?.Release();
             var indices = new int[6 * f * f];
             int k = 0, row = f + 1;
@@ -131,7 +121,6 @@ namespace GregoryTerrain
             }
             _fallbackIndices = new GraphicsBuffer(GraphicsBuffer.Target.Index, indices.Length, sizeof(int));
             _fallbackIndices.SetData(indices);
-            _fallbackIndexFactor = f;
             return true;
         }
 
@@ -167,9 +156,7 @@ namespace GregoryTerrain
         void UpdateNoiseTableBinding()
         {
             GraphicsBuffer table = EnsureNoiseTable();
-            if (table == null || table == _sent.noiseCells) return;   // off: the variants drawn do not read _NoiseCells
-            SetBuffer(ShaderIds.NoiseCells, table);
-            _sent.noiseCells = table;
+            if (_state.BindNoiseCells(table)) SetBuffer(ShaderIds.NoiseCells, table);
         }
 
         /// <summary>True while the tiled noise's table is held (the Unity-side tests).</summary>
@@ -192,12 +179,8 @@ namespace GregoryTerrain
             _fallbackIndices?.Release(); _fallbackIndices = null;
             ReleaseNoiseTable();
             _cache.Release();
-            _uploadedGrid = null;
             _uploadedPatchGrid = null;
-            _estimateInputs = null;   // the grid's CPU copy for the view estimate
-            _estimateGrid = null;
-            _uploadedVersion = 0;
-            _drawModeKey = default;   // read the SubShader's tag again (it may change with the shader)
+            _keys.Released();   // uploaded again, the estimate's CPU copy dropped, the SubShader's tag read again
             ClearPropertyBlock();
         }
 
@@ -211,10 +194,11 @@ namespace GregoryTerrain
         /// Uploads only the patches edited since the grid version in the buffers; false when that
         /// cannot be told (another grid, a whole-grid change, an undo): then the whole grid is uploaded.
         /// </summary>
-        bool TryUploadEditedPatches()
+        bool TryUploadEditedPatches(GridVersionKey key)
         {
-            if (_uploadedGrid != grid || _controlPoints == null) return false;
-            PatchGrid g = grid.UpdatedPatchGrid(_uploadedPatchGrid, _uploadedVersion, out int[] changed);
+            GridVersionKey held = _keys.HeldGrid;
+            if (held.grid != key.grid || _controlPoints == null) return false;
+            PatchGrid g = grid.UpdatedPatchGrid(_uploadedPatchGrid, held.version, out int[] changed);
             if (g == null) return false;
             var records = new GregoryPatchRecord[changed.Length];
             for (int k = 0; k < changed.Length; k++)
@@ -234,7 +218,7 @@ namespace GregoryTerrain
                 _controlPoints.SetData(records, start, changed[start], end - start);
             }
             _uploadedPatchGrid = g;
-            _uploadedVersion = grid.Version;
+            _keys.Uploaded(key);
             _gridStamp++;   // the vertex cache evaluates its tiles again; the settings block holds only the grid's size
             PatchUploadCount++;
             return true;
@@ -242,13 +226,5 @@ namespace GregoryTerrain
 
         /// <summary>Uploads of edited patches only (the Unity-side tests).</summary>
         internal int PatchUploadCount { get; private set; }
-
-        /// <summary>The query brought to the grid's version at the cost of the patches edited since; null when only a rebuild can tell.</summary>
-        TerrainSurfaceQuery EditedQuery(NoiseSettings? noise, TerrainKeywords keywords)
-        {
-            if (_query == null || _queryAsset != grid || !Nullable.Equals(_queryNoise, noise) || _queryKeywords != keywords) return null;
-            PatchGrid g = grid.UpdatedPatchGrid(_query.Grid, _queryVersion, out int[] changed);
-            return g == null ? null : _query.WithPatches(g, changed);
-        }
     }
 }

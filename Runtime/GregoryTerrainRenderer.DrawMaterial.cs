@@ -10,10 +10,6 @@ namespace GregoryTerrain
     public sealed partial class GregoryTerrainRenderer
     {
         Material _drawMaterial;        // the runtime copy, or null while the asset itself is drawn
-        Material _drawMaterialSource;  // the asset _drawMaterial was copied from
-        int _drawMaterialCrc;          // the asset's Material.ComputeCRC() at the last sync
-        int _drawMaterialKeywords;     // the asset's package keywords (AssetKeywordBits) at the last sync
-        int _drawMaterialCheckedFrame = -1;   // Time.frameCount when the asset was last compared (CRC, keywords)
 
         /// <summary>
         /// The package's own material keywords. Their state on the asset is compared bit by bit as
@@ -54,21 +50,17 @@ namespace GregoryTerrain
                 ReleaseDrawMaterial();
                 return material;
             }
-            // In play mode the asset is compared (its CRC walks every property) once a frame, not once
-            // a camera: the copy synced for this frame's first camera serves the others. In edit mode
-            // every call compares, since an inspector edit must show at once and Time.frameCount
-            // does not advance between the editor's repaints as it does between player frames.
+            // Edit mode: every call compares (frameCount does not advance between the editor's repaints).
             int frame = Application.isPlaying ? Time.frameCount : -1;
-            if (frame >= 0 && _drawMaterial != null && _drawMaterialSource == material && _drawMaterialCheckedFrame == frame
-                && HasKeywords(_drawMaterial, keywords))
+            if (_drawMaterial != null && _keys.MaterialComparedThisFrame(material.GetInstanceID(), frame) && HasKeywords(_drawMaterial, keywords))
                 return _drawMaterial;
-            _drawMaterialCheckedFrame = frame;
-            int crc = material.ComputeCRC(), assetKeywords = AssetKeywordBits();
+            var asset = new MaterialSourceKey(material.GetInstanceID(), material.ComputeCRC(), AssetKeywordBits());
+            bool stale = _keys.CopyStale(asset, frame);
             if (_drawMaterial == null)
             {
                 _drawMaterial = new Material(material) { name = material.name + " (Gregory Terrain runtime copy)", hideFlags = HideFlags.HideAndDontSave };
             }
-            else if (_drawMaterialSource != material || _drawMaterialCrc != crc || _drawMaterialKeywords != assetKeywords)
+            else if (stale)
             {
                 _drawMaterial.shader = material.shader;
                 _drawMaterial.CopyPropertiesFromMaterial(material);
@@ -76,9 +68,7 @@ namespace GregoryTerrain
             }
             else if (HasKeywords(_drawMaterial, keywords))
                 return _drawMaterial;   // steady state: nothing set
-            _drawMaterialSource = material;
-            _drawMaterialCrc = crc;
-            _drawMaterialKeywords = assetKeywords;
+            _keys.Copied(asset);
             for (int k = 0; k < RendererKeywords.Length; k++)
                 if ((keywords & (FrameKeywords)(1 << k)) != 0) _drawMaterial.EnableKeyword(RendererKeywords[k]);
                 else _drawMaterial.DisableKeyword(RendererKeywords[k]);
@@ -101,7 +91,7 @@ namespace GregoryTerrain
             if (_drawMaterial == null) return;
             if (Application.isPlaying) Destroy(_drawMaterial); else DestroyImmediate(_drawMaterial);
             _drawMaterial = null;
-            _drawMaterialSource = null;
+            _keys.CopyReleased();
         }
 
         // ---- snow -----------------------------------------------------------------------------------
@@ -151,11 +141,9 @@ namespace GregoryTerrain
             if (!SnowOn()) return;   // GT_SNOW off: whatever the block holds is not read
             GraphicsBuffer depth = _snow.DepthBuffer;
             Vector4 size = _snow.MapSize;
-            if (depth == _sent.snowDepth && size.x == _sent.snowMapSize.x && size.y == _sent.snowMapSize.y && size.z == _sent.snowMapSize.z) return;
+            if (!_state.BindSnow(depth, new Float3(size.x, size.y, size.z))) return;
             SetBuffer(ShaderIds.SnowDepth, depth);
             SetVector(ShaderIds.SnowMapSize, size);
-            _sent.snowDepth = depth;
-            _sent.snowMapSize = size;
         }
     }
 }

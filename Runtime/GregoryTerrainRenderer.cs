@@ -14,8 +14,8 @@ namespace GregoryTerrain
     /// (<c>beginCameraRendering</c> in URP/HDRP, <c>Camera.onPreCull</c> in Built-in; Edit Mode too):
     /// M x M tessellated tiles over <see cref="Range"/> or the Horizon levels. Only <c>_Range</c> is sent
     /// every frame (<see cref="PerFrameTrafficBytes"/>), the rest on change; keywords go on a runtime
-    /// copy of the material. Files: this, <c>.DrawMaterial</c>, <c>.Buffers</c>, <c>.Estimate</c>,
-    /// <c>.Queries</c>; Core's FramePlanner; internals.md.
+    /// copy of the material. Files: this, <c>.DrawMaterial</c>, <c>.Buffers</c>; queries on
+    /// <see cref="Surface"/>; Core's FramePlanner and FrameResources; internals.md.
     /// </summary>
     [ExecuteAlways]
     [DisallowMultipleComponent]
@@ -109,9 +109,6 @@ namespace GregoryTerrain
         // ---- state ----------------------------------------------------------------------------------
         MaterialPropertyBlock _props;
         GraphicsBuffer _controlPoints, _regions, _gridLines, _fallbackIndices;
-        PatchGridAsset _uploadedGrid;
-        int _uploadedVersion;
-        int _fallbackIndexFactor;
         PatchGrid _uploadedPatchGrid;
         TerrainRange _range = TerrainRange.full;
         // What the property block holds and what it was made from (Core's FramePlanner plans each frame).
@@ -119,13 +116,12 @@ namespace GregoryTerrain
         TerrainParams _params => _state.parameters;
         string _settingsError => _state.error;
         float _gridMinZ, _gridMaxZ;
-        DrawModeKey _drawModeKey;         // what _drawFallback was read for
-        bool _drawFallback;
         static bool s_FallbackLogged;
         Double3 _worldOffset;                            // ShiftOrigin's sum, in double (floating origin)
         int _gridStamp;                                  // bumped on every upload: the cache sees new grid buffers
         readonly System.Collections.Generic.List<int> _setLastPrepare = new System.Collections.Generic.List<int>(16);
         SnowSimulator _snow;                             // the enabled simulator attached to this renderer
+        GregoryTerrainSurface _surface;                  // made on first use
 
         /// <summary>
         /// SubShader tag of GregoryTerrain.shader: "Tessellated" or "Fallback", the draw the SubShader
@@ -134,6 +130,46 @@ namespace GregoryTerrain
         const string DrawTag = "GregoryTerrainDraw";
 
         // ---- public API -----------------------------------------------------------------------------
+
+        /// <summary>Height, normal, ray and triangle-count queries on the surface this renderer draws.</summary>
+        public GregoryTerrainSurface Surface => _surface ??= new GregoryTerrainSurface(this);
+
+        /// <inheritdoc cref="GregoryTerrainSurface.RaycastToleranceMeters"/>
+        public const float RaycastToleranceMeters = GregoryTerrainSurface.RaycastToleranceMeters;
+
+        /// <inheritdoc cref="GregoryTerrainSurface.SampleHeight"/>
+        public float SampleHeight(Vector3 worldPosition) => Surface.SampleHeight(worldPosition);
+
+        /// <inheritdoc cref="GregoryTerrainSurface.SampleNormal"/>
+        public Vector3 SampleNormal(Vector3 worldPosition) => Surface.SampleNormal(worldPosition);
+
+        /// <inheritdoc cref="GregoryTerrainSurface.TrySampleSurface"/>
+        public bool TrySampleSurface(Vector3 worldPosition, out Vector3 surfacePoint, out Vector3 surfaceNormal) =>
+            Surface.TrySampleSurface(worldPosition, out surfacePoint, out surfaceNormal);
+
+        /// <inheritdoc cref="GregoryTerrainSurface.SampleHeights"/>
+        public void SampleHeights(ReadOnlySpan<Vector3> worldPositions, Span<float> heights) => Surface.SampleHeights(worldPositions, heights);
+
+        /// <inheritdoc cref="GregoryTerrainSurface.Raycast"/>
+        public bool Raycast(Ray ray, float maxDistance, out Vector3 point, out Vector3 normal, out float distance) =>
+            Surface.Raycast(ray, maxDistance, out point, out normal, out distance);
+
+        /// <inheritdoc cref="GregoryTerrainSurface.EstimateTrianglesInView"/>
+        public TriangleEstimate? EstimateTrianglesInView(Camera cam, int maxTiles = 256) => Surface.EstimateTrianglesInView(cam, maxTiles);
+
+        /// <summary>The Core query behind <see cref="Surface"/> (GregoryTerrainCollider).</summary>
+        internal TerrainSurfaceQuery SurfaceQuery => Surface.Query;
+
+        /// <summary>The queries' noise: with GT_NOISE the noise settings, else null.</summary>
+        internal NoiseSettings? QueryNoise => material != null && material.IsKeywordEnabled(ShaderIds.NoiseKeyword)
+            ? new NoiseSettings(noiseAmplitude, noiseFrequency, noiseAlpha, noiseBeta, noiseOctaves) : (NoiseSettings?)null;
+
+        /// <summary>Whether a grid is uploaded with valid settings: <see cref="WorldBounds"/> holds the drawn terrain.</summary>
+        internal bool HasDrawn => _uploadedPatchGrid != null && _settingsError == null;
+
+        // The estimate's inputs.
+        internal PatchGrid UploadedPatchGrid => _uploadedPatchGrid;
+        internal FrameState State => _state;
 
         /// <summary>The patch grid drawn. Setting another asset releases and re-uploads on the next frame.</summary>
         public PatchGridAsset Grid { get => grid; set => grid = value; }
@@ -269,7 +305,7 @@ namespace GregoryTerrain
         }
 
         /// <summary>Why the terrain cannot be drawn: the device (no structured buffers), or the current settings (Core's message, naming field and value); else null.</summary>
-        public string SettingsError => s_DeviceError ?? _settingsError ?? _cacheError;
+        public string SettingsError => s_DeviceError ?? _settingsError ?? _keys.CacheError;
 
         /// <summary>
         /// Where the vertices are evaluated (<see cref="GregoryTerrain.VertexEvaluation"/>). Compute
@@ -305,7 +341,7 @@ namespace GregoryTerrain
         public bool UsesVertexCache => _usesCache;
 
         /// <summary>Why Compute cache is chosen but the domain stage draws (no compute shaders, cache shader, LOD camera...), or null.</summary>
-        public string VertexCacheFallbackReason => _cacheFallbackReason;
+        public string VertexCacheFallbackReason => _keys.CacheFallbackReason;
 
         /// <summary>
         /// GPU memory the vertex cache needs at the current settings, in bytes, whichever evaluation is
@@ -346,7 +382,7 @@ namespace GregoryTerrain
         bool LevelsOn(bool fallback) => horizonLevels && !fallback;
 
         /// <summary>The finest level's exponent for the terrain's width in world units.</summary>
-        int FinestExponent()
+        internal int FinestExponent()
         {
             double metres = WorldUnitsPerObjectUnit.x;   // world units across the terrain's x
             if (!(metres > 0.0) || double.IsInfinity(metres)) metres = 1.0;
@@ -368,9 +404,6 @@ namespace GregoryTerrain
         // ---- Compute cache: when it runs, its size check; the pass is VertexCachePass
 
         readonly VertexCachePass _cache = new VertexCachePass();
-        string _cacheError;                              // the size check's message (not drawn until fixed)
-        (int tiles, int limit, bool snow, long deviceLimit) _cacheCheckedFor;   // what _cacheError is the verdict on
-        string _cacheFallbackReason;                     // why Compute cache is not used now, logged once per reason
         bool _usesCache;
 
         /// <summary>
@@ -386,8 +419,7 @@ namespace GregoryTerrain
             // The levels draw through the domain stage (the cache holds one range's tiles).
             if (vertexEvaluation != VertexEvaluation.ComputeCache || LevelsOn(fallback))
             {
-                _cacheFallbackReason = null;
-                ClearCacheCheck();
+                _keys.CacheNotUsed(null);
                 StopCache();
                 return true;
             }
@@ -397,14 +429,12 @@ namespace GregoryTerrain
             string reason = CacheUnavailableReason(fallback, cam, snow, snowSource);
             if (reason != null)
             {
-                if (reason != _cacheFallbackReason)
+                if (_keys.CacheNotUsed(reason))
                     Debug.LogWarning($"{name}: Vertex evaluation is Compute cache, but {reason}; evaluating in the domain stage instead.", this);
-                _cacheFallbackReason = reason;
-                ClearCacheCheck();
                 StopCache();
                 return true;
             }
-            _cacheFallbackReason = null;
+            _keys.CacheUsed();
 
             int limit = VertexCache.FactorLimit(_params.tess);
             if (!CacheFits(limit, snow)) return false;
@@ -439,32 +469,15 @@ namespace GregoryTerrain
         /// platform's depth range and orientation). A render-texture y flip changes no factor (screen
         /// lengths) nor the culling (symmetric in y): renderIntoTexture = false serves every target.
         /// </summary>
-        Matrix4x4 ObjectToClip(Camera cam) =>
+        internal Matrix4x4 ObjectToClip(Camera cam) =>
             GL.GetGPUProjectionMatrix(cam.projectionMatrix, false) * cam.worldToCameraMatrix * ToMatrix4x4(_state.objectToWorld);
 
         /// <summary>The size check, run when M, L, snow or the device's limit changed; logged once per failing setting.</summary>
         bool CacheFits(int limit, bool snow)
         {
-            long deviceLimit = SystemInfo.maxGraphicsBufferSize;
-            int across = CacheTilesAcross;
-            var key = (across, limit, snow, deviceLimit);
-            if (key.Equals(_cacheCheckedFor)) return _cacheError == null;
-            _cacheCheckedFor = key;
-            _cacheError = null;
-            try { VertexCacheBudget.CheckFits(across, limit, snow, deviceLimit > 0 ? deviceLimit : GpuLayout.MaxBufferBytes); }
-            catch (ArgumentException e)
-            {
-                _cacheError = $"vertexEvaluation = ComputeCache: {e.Message}";
-                Debug.LogError($"{name}: cannot draw with these settings: {_cacheError}", this);
-            }
-            return _cacheError == null;
-        }
-
-        /// <summary>Forgets the size check's verdict (the cache is not used now; checked afresh when it is).</summary>
-        void ClearCacheCheck()
-        {
-            _cacheError = null;
-            _cacheCheckedFor = default;
+            string error = _keys.CheckCacheFits(CacheTilesAcross, limit, snow, SystemInfo.maxGraphicsBufferSize, out bool fresh);
+            if (error != null && fresh) Debug.LogError($"{name}: cannot draw with these settings: {error}", this);
+            return error == null;
         }
 
         /// <summary>Why the compute cache cannot run, naming the setting or device flag, or null.</summary>
@@ -593,8 +606,9 @@ namespace GregoryTerrain
                 layer = gameObject.layer,
             };
             int across = TileLattice.TilesAcross(_params), tileCount = across * across;
-            if (LevelsOn(_drawFallback)) tileCount = _state.levelCount * tiles * tiles;   // L x M^2 tiles, laid out around cam by Prepare(cam)
-            if (_drawFallback)
+            bool fallback = _keys.LastDrawFallback;
+            if (LevelsOn(fallback)) tileCount = _state.levelCount * tiles * tiles;   // L x M^2 tiles, laid out around cam by Prepare(cam)
+            if (fallback)
                 Graphics.RenderPrimitivesIndexed(rp, MeshTopology.Triangles, _fallbackIndices,
                     _fallbackIndices.count, 0, tileCount);
             else
@@ -731,38 +745,20 @@ namespace GregoryTerrain
         /// <summary>The property ID of <c>_Range</c> (for the Unity-side tests).</summary>
         internal static int RangePropertyId => ShaderIds.Range;
 
-        /// <summary>What Unity picks the SubShader by, besides the device.</summary>
-        readonly struct DrawModeKey
-        {
-            readonly Material _material;
-            readonly Shader _shader;
-            readonly int _globalLod, _shaderLod;
-            readonly UnityEngine.Rendering.RenderPipelineAsset _pipeline;
-
-            public DrawModeKey(Material material)
-            {
-                _material = material;
-                _shader = material.shader;
-                _globalLod = Shader.globalMaximumLOD;
-                _shaderLod = _shader != null ? _shader.maximumLOD : 0;
-                _pipeline = UnityEngine.Rendering.GraphicsSettings.currentRenderPipeline;
-            }
-
-            public bool Matches(in DrawModeKey o) => _material == o._material && _shader == o._shader
-                && _globalLod == o._globalLod && _shaderLod == o._shaderLod && _pipeline == o._pipeline;
-        }
-
-        /// <summary>The SubShader's draw, read again when its <see cref="DrawModeKey"/> changes (GetTag allocates).</summary>
+        /// <summary>The SubShader's draw, read again when what Unity picks it by changes (<see cref="DrawModeKey"/>; GetTag allocates).</summary>
         bool ReadDrawMode()
         {
-            var key = new DrawModeKey(material);
-            if (key.Matches(_drawModeKey)) return _drawFallback;
+            Shader shader = material.shader;
+            var key = new DrawModeKey(material.GetInstanceID(), IdOf(shader), Shader.globalMaximumLOD, shader != null ? shader.maximumLOD : 0,
+                IdOf(GraphicsSettings.currentRenderPipeline));
+            if (_keys.TryDrawMode(key, out bool fallback)) return fallback;
             string tag = material.GetTag(DrawTag, false, "");
-            bool fallback = tag == "Fallback" || (tag.Length == 0 && UsesFallback);
-            _drawModeKey = key;
-            _drawFallback = fallback;
+            fallback = tag == "Fallback" || (tag.Length == 0 && UsesFallback);
+            _keys.DrawModeRead(key, fallback);
             return fallback;
         }
+
+        static int IdOf(UnityEngine.Object o) => o != null ? o.GetInstanceID() : 0;
 
         /// <summary>
         /// World bounds of the drawn range: height between the lowest and highest control point,
@@ -772,7 +768,7 @@ namespace GregoryTerrain
         {
             float noise = NoiseMargin();
             float snow = SnowDepthCap();   // the shader's tile culling raises a tile's box by it (TileCulled)
-            TerrainRange drawn = LevelsOn(_drawFallback) ? TerrainRange.full : _range;   // the levels end with the whole terrain
+            TerrainRange drawn = LevelsOn(_keys.LastDrawFallback) ? TerrainRange.full : _range;   // the levels end with the whole terrain
             Vector3 min = new Vector3((float)drawn.c, _gridMinZ - noise, (float)drawn.d);
             Vector3 max = new Vector3((float)drawn.g, _gridMaxZ + noise + snow, (float)drawn.h);
             Matrix4x4 m = ToMatrix4x4(_state.objectToWorld);   // size, height scale and offset included (t is added to the object points below)
@@ -789,6 +785,10 @@ namespace GregoryTerrain
             return new Bounds(c, 2f * we);
         }
 
+        internal static Float4x4 ToFloat4x4(Matrix4x4 m) => Float4x4.FromRows(
+            m.m00, m.m01, m.m02, m.m03, m.m10, m.m11, m.m12, m.m13,
+            m.m20, m.m21, m.m22, m.m23, m.m30, m.m31, m.m32, m.m33);
+
         static Matrix4x4 ToMatrix4x4(Float4x4 f) => new Matrix4x4
         {
             m00 = f.c0.x, m10 = f.c0.y, m20 = f.c0.z, m30 = f.c0.w,
@@ -801,7 +801,7 @@ namespace GregoryTerrain
         /// The material's keywords that change the height noise, as Core names them: GT_NOISE, and
         /// with it GT_NOISE_TABLE (tiled noise is another noise, so other heights and offsets).
         /// </summary>
-        TerrainKeywords NoiseKeywords()
+        internal TerrainKeywords NoiseKeywords()
         {
             if (material == null || !material.IsKeywordEnabled(ShaderIds.NoiseKeyword)) return TerrainKeywords.None;
             return material.IsKeywordEnabled(ShaderIds.NoiseTableKeyword) ? TerrainKeywords.Noise | TerrainKeywords.NoiseTable : TerrainKeywords.Noise;

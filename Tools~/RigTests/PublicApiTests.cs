@@ -24,6 +24,7 @@ namespace GregoryTerrain.Rig.Tests
         {
             // Runtime: the components, the asset and the helpers users call.
             "GregoryTerrain.GregoryTerrainRenderer",
+            "GregoryTerrain.GregoryTerrainSurface",   // the renderer's queries (renderer.Surface)
             "GregoryTerrain.PatchGridAsset",
             "GregoryTerrain.CameraRangeController",
             "GregoryTerrain.ZoomRangeController",

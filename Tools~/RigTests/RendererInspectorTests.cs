@@ -125,9 +125,9 @@ namespace GregoryTerrain.Rig.Tests
         [Test]
         public void EstimateAndRangeSideSurviveEditsAndEmptyTargets()
         {
-            string estimate = File.ReadAllText(PackageRoot.Combine("Runtime/GregoryTerrainRenderer.Estimate.cs"));
-            Assert.That(estimate, Does.Contain("int uploadedTiles = _estimateInputs.TileCountInt();"));
-            Assert.That(estimate, Does.Not.Contain(", tiles, _estimateLevels)"));
+            string estimate = File.ReadAllText(PackageRoot.Combine("Runtime/GregoryTerrainSurface.cs"));
+            Assert.That(estimate, Does.Contain("int uploadedTiles = inputs.TileCountInt();"));
+            Assert.That(estimate, Does.Contain("LodLevels.Layout(new Double2(local.x, local.z), r.FinestExponent(), uploadedTiles, _levels)"));
             string side = File.ReadAllText(PackageRoot.Combine("Editor/CameraRangeControllerEditor.cs"));
             Assert.That(side, Does.Not.Contain("is GregoryTerrainRenderer o"));
             Assert.That(side, Does.Contain("a != null && a.WorldUnitsPerObjectUnit.Equals(b.WorldUnitsPerObjectUnit)"));

@@ -67,6 +67,9 @@ namespace GregoryTerrain.Rig.Tests
             foreach (string memo in memos)
                 if (!Regex.IsMatch(body, $@"\b{memo}\s*=(?!=)"))
                     problems.Add($"{memo} is not reset in {method}, which clears the property block");
+            // Bindings Core's FrameState remembers (BindNoiseCells, BindSnow) are reset by its Forget.
+            if (Regex.IsMatch(code, @"_state\.Bind\w+\s*\(") && !Regex.IsMatch(body, @"_state\.Forget\s*\(\s*\)"))
+                problems.Add($"{method} clears the property block without _state.Forget(), which resets the bindings FrameState remembers");
             return problems;
         }
 
@@ -87,6 +90,9 @@ namespace GregoryTerrain.Rig.Tests
             string twice = "void A() { _props.Clear(); _sent = default; } void B() { _props?.Clear(); }";
             Assert.That(MemosNotResetWithTheBlock(twice), Does.Contain("the property block is cleared in 2 places, not one"));
             Assert.That(MemosNotResetWithTheBlock("void ClearPropertyBlock() { _props?.Clear(); _sent = default; } void P() { if (_sent.levelCount != n) _sent.levelCount = n; }"), Is.Empty);
+            string unforgotten = "void ClearPropertyBlock() { _props?.Clear(); } void U() { if (_state.BindNoiseCells(table)) SetBuffer(id, table); }";
+            Assert.That(MemosNotResetWithTheBlock(unforgotten), Is.EqualTo(new[] { "ClearPropertyBlock clears the property block without _state.Forget(), which resets the bindings FrameState remembers" }));
+            Assert.That(MemosNotResetWithTheBlock(unforgotten.Replace("_props?.Clear();", "_props?.Clear(); _state.Forget();")), Is.Empty);
         }
 
         // ---- 2. The draw's bounds hold what the shader's tile culling keeps -----------------------

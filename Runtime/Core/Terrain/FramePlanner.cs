@@ -87,14 +87,37 @@ namespace GregoryTerrain
         public readonly TerrainRange[] levelRanges = new TerrainRange[LodTiles.MaxLevels];
         public readonly Float4[] levelVectors = new Float4[LodTiles.MaxLevels];   // relative to the camera's origin
         public int levelCount, sentLevelCount;
+        // Buffers bound besides the grid's (GraphicsBuffer, opaque here).
+        object _sentNoiseCells, _sentSnowDepth;
+        Float3 _sentSnowMapSize;
+        /// <summary>What the GPU objects and the draw material were made from.</summary>
+        public readonly FrameResources resources = new FrameResources();
 
-        /// <summary>The property block was cleared: the next plan sends everything.</summary>
+        /// <summary>The property block was cleared, or a plan's values never reached it: the next plan sends everything.</summary>
         public void Forget()
         {
             planned = false;
             sentOrigin = default;
             sentLevelCount = 0;
             offsetFor = offsetForBefore = default;   // nor hold the grids' CPU copies of a disabled renderer
+            _sentNoiseCells = _sentSnowDepth = null;
+            _sentSnowMapSize = default;
+        }
+
+        /// <summary>True when the noise table must be set on the block (then taken as set).</summary>
+        public bool BindNoiseCells(object table)
+        {
+            if (table == null || table == _sentNoiseCells) return false;   // off: the variants drawn do not read it
+            _sentNoiseCells = table;
+            return true;
+        }
+
+        /// <summary>True when the snow map (buffer, cells, depth cap) must be set on the block (then taken as set).</summary>
+        public bool BindSnow(object depth, Float3 mapSize)
+        {
+            if (depth == _sentSnowDepth && mapSize.Equals(_sentSnowMapSize)) return false;
+            (_sentSnowDepth, _sentSnowMapSize) = (depth, mapSize);
+            return true;
         }
 
         /// <summary>A new grid: the origins snap afresh.</summary>

@@ -271,7 +271,7 @@ namespace GregoryTerrain.Rig.Tests
             Assert.That(Regex.IsMatch(renderer, @"EstimatedTriangleCount\s*=>\s*DrawnTileCount\s*\*"), "Most triangles counts the tiles drawn");
             Assert.That(renderer, Does.Contain("LodLevels.DrawnTileCount(levels, tiles)"));
             // Triangles in view counts every level (Core's InLevels), and the inspector no longer says it is not estimated.
-            Assert.That(Source("Runtime", "GregoryTerrainRenderer.Estimate.cs"), Does.Contain("TerrainTriangleEstimate.InLevels(").And.Not.Contain("LevelsOn(_drawFallback)) return null"));
+            Assert.That(Source("Runtime", "GregoryTerrainSurface.cs"), Does.Contain("TerrainTriangleEstimate.InLevels(").And.Not.Contain("HorizonLevels) return null"));
             Assert.That(Source("Editor", "GregoryTerrainRendererEditor.cs"), Does.Not.Contain("not estimated"));
         }
 
