@@ -75,4 +75,7 @@ float GT_MainLightShadow(float3 positionWS, float4 positionSS, float3 normalWS)
 #endif
 }
 
+// The stages, after the interface above: a pass of GregoryTerrain.shader includes its adapter only.
+#include "TerrainStages.hlsl"
+
 #endif // GT_BUILTIN_ADAPTER_INCLUDED

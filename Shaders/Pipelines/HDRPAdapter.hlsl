@@ -169,4 +169,7 @@ float4 GT_EncodeDepthNormal(float3 normalWS)
 }
 #endif
 
+// The stages, after the interface above: a pass of GregoryTerrain.shader includes its adapter only.
+#include "TerrainStages.hlsl"
+
 #endif // GT_HDRP_ADAPTER_INCLUDED

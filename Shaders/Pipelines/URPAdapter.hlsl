@@ -20,8 +20,9 @@
 #define GT_ADAPTER_URP 1
 
 // The forward pass's effects that URP switches with its own keywords (declared by the pass):
-// received main-light shadows (shadow map or the screen-space shadows feature), fog (URP 14 always
-// evaluates it per pixel from the world position, _FOG_FRAGMENT) and screen-space ambient occlusion.
+// received main-light shadows (shadow map, cascades or the screen-space shadows feature; their
+// soft-shadow filter quality, _SHADOWS_SOFT*, is read by Shadows.hlsl), fog (all of URP 14's fog
+// modes, evaluated per pixel from the world position, _FOG_FRAGMENT) and screen-space ambient occlusion.
 #if defined(GT_PASS_FORWARD)
     #if defined(_MAIN_LIGHT_SHADOWS) || defined(_MAIN_LIGHT_SHADOWS_CASCADE) || defined(_MAIN_LIGHT_SHADOWS_SCREEN)
         #define GT_RECEIVE_SHADOWS 1
@@ -42,7 +43,8 @@
 #if defined(GT_PASS_SHADOWCASTER)
 // Set by URP for the light whose shadow map is being drawn (ShadowUtils.SetupShadowCasterConstantBuffer):
 // a directional light's direction towards the light, a spot or point light's position
-// (_CASTING_PUNCTUAL_LIGHT_SHADOW, URP's keyword for those).
+// (_CASTING_PUNCTUAL_LIGHT_SHADOW, URP's keyword for those: per vertex in the fallback, as URP's Lit;
+// for every stage when tessellated, since the hull and domain stages transform vertices too).
 float3 _LightDirection;
 float3 _LightPosition;
 #endif
@@ -159,5 +161,8 @@ float4 GT_EncodeDepthNormal(float3 normalWS)
     return float4(NormalizeNormalPerPixel(normalWS), 0.0);
 #endif
 }
+
+// The stages, after the interface above: a pass of GregoryTerrain.shader includes its adapter only.
+#include "TerrainStages.hlsl"
 
 #endif // GT_URP_ADAPTER_INCLUDED

@@ -1,6 +1,8 @@
 #ifndef GT_SNOW_EXPOSURE_INCLUDED
 #define GT_SNOW_EXPOSURE_INCLUDED
 
+#include "SnowCells.hlsl"
+
 // L(x, w) of the snow paper's eq. 1: exposure of a snow-map cell to the wind-driven snowfall.
 // Mirrors Runtime/Core/Snow/SnowExposure.cs (read its summary for the derivation).
 //   field: R x R cells, float4 (detail normal.xyz, height), cell (i, j) at j * R + i
@@ -23,15 +25,8 @@ float SnowExposureFromOcclusion(float occlusion, float softness)
 // Bilinear height at terrain point p between cell centres, edge cells repeated outside.
 float SnowExposureSampleHeight(StructuredBuffer<float4> field, float4 grid, float2 p)
 {
-    int r = (int)grid.x;
-    float2 uv = p * grid.x - 0.5;
-    float2 f = floor(uv);
-    float2 t = uv - f;
-    int2 c0 = clamp((int2)f, 0, r - 1);
-    int2 c1 = clamp((int2)f + 1, 0, r - 1);
-    float h00 = field[c0.y * r + c0.x].w, h10 = field[c0.y * r + c1.x].w;
-    float h01 = field[c1.y * r + c0.x].w, h11 = field[c1.y * r + c1.x].w;
-    return lerp(lerp(h00, h10, t.x), lerp(h01, h11, t.x), t.y);
+    SnowCellBlend b = SnowCellsBilinear(grid.x, p);
+    return SnowCellsBlend(b, field[b.c00].w, field[b.c10].w, field[b.c01].w, field[b.c11].w);
 }
 
 // L at cell (i, j): march upwind, keep the worst blocker, map it smoothly.

@@ -5,23 +5,18 @@
 #ifndef GT_SNOW_MAP_INCLUDED
 #define GT_SNOW_MAP_INCLUDED
 
+#include "SnowCells.hlsl"
+
 // Depth, as a fraction of the cap, at which the surface is fully white (SnowMap.FullCoverFraction).
 static const float GT_SNOW_FULL_COVER_FRACTION = 0.5;
 static const float3 GT_SNOW_ALBEDO = float3(0.92, 0.94, 0.98);
 
-// Depth at the global point q: bilinear between cell centres, edge cells repeated. A continuous
-// function of q, so vertices with bit-identical q (shared tile edges) get the same depth: watertight.
+// Depth at the global point q. A continuous function of q, so vertices with bit-identical q
+// (shared tile edges) get the same depth: watertight.
 float SnowMapSample(StructuredBuffer<float> depth, float4 mapSize, float2 q)
 {
-    int r = (int)mapSize.x;
-    float2 uv = q * mapSize.x - 0.5;
-    float2 f = floor(uv);
-    float2 t = uv - f;
-    int2 c0 = clamp((int2)f, 0, r - 1);
-    int2 c1 = clamp((int2)f + 1, 0, r - 1);
-    float d00 = depth[c0.y * r + c0.x], d10 = depth[c0.y * r + c1.x];
-    float d01 = depth[c1.y * r + c0.x], d11 = depth[c1.y * r + c1.x];
-    return lerp(lerp(d00, d10, t.x), lerp(d01, d11, t.x), t.y);
+    SnowCellBlend b = SnowCellsBilinear(mapSize.x, q);
+    return SnowCellsBlend(b, depth[b.c00], depth[b.c10], depth[b.c01], depth[b.c11]);
 }
 
 // How white the surface is: 0 (bare) to 1 (covered), a smoothstep up to half the cap.

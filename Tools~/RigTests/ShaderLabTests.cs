@@ -41,7 +41,8 @@ namespace GregoryTerrain.Rig.Tests
             public string Pipeline;   // "URP", "HDRP", "Builtin"
             public bool Tessellated;
             public string Body;
-            public string Shared;   // its HLSLINCLUDE blocks, which Unity pastes at the top of every pass's program
+            public string Shared;   // its HLSLINCLUDE blocks, which Unity pastes at the top of every pass's program, files read with #include_with_pragmas in place
+            public string SharedAsWritten;   // the same, as the .shader writes them
             public List<PassInfo> Passes;
             public override string ToString() => $"SubShader {Index} ({Pipeline}, {(Tessellated ? "tessellated" : "fallback")})";
         }
@@ -58,11 +59,12 @@ namespace GregoryTerrain.Rig.Tests
                 var info = new SubShaderInfo { Index = _subShaders.Count, Body = sub, Passes = new List<PassInfo>() };
                 string pipeline = Regex.Match(OuterPart(sub), "\"RenderPipeline\"\\s*=\\s*\"(\\w+)\"").Groups[1].Value;
                 info.Pipeline = pipeline == "UniversalPipeline" ? "URP" : pipeline == "HDRenderPipeline" ? "HDRP" : pipeline == "" ? "Builtin" : pipeline;
-                info.Shared = string.Concat(Regex.Matches(OuterPart(sub), @"\bHLSLINCLUDE\b(.*?)\bENDHLSL\b", RegexOptions.Singleline).Select(x => x.Groups[1].Value));
+                info.SharedAsWritten = string.Concat(Regex.Matches(OuterPart(sub), @"\bHLSLINCLUDE\b(.*?)\bENDHLSL\b", RegexOptions.Singleline).Select(x => x.Groups[1].Value));
+                info.Shared = WithIncludedPragmas(info.SharedAsWritten);
                 foreach (string pass in Blocks(sub, "Pass"))
                 {
                     var m = Regex.Match(pass, "HLSLPROGRAM(.*?)ENDHLSL", RegexOptions.Singleline);
-                    string own = m.Success ? m.Groups[1].Value : "";
+                    string own = m.Success ? WithIncludedPragmas(m.Groups[1].Value) : "";
                     string program = info.Shared + own;
                     var pragmas = program.Split('\n').Select(l => l.Trim()).Where(l => l.StartsWith("#pragma"))
                         .Select(l => l.Substring("#pragma".Length).Split(new[] { ' ', '\t' }, StringSplitOptions.RemoveEmptyEntries)).ToList();
@@ -182,10 +184,11 @@ namespace GregoryTerrain.Rig.Tests
         }
 
         /// <summary>
-        /// The package's keywords and the stage pragmas are written once per SubShader, in its
-        /// HLSLINCLUDE (Unity pastes it at the top of every HLSLPROGRAM of the SubShader); a pass's own
-        /// HLSLPROGRAM adds only what that pass alone reads (the forward passes' colour and debug
-        /// switches, the pipeline's keywords). The shared blocks of the same kind are the same text.
+        /// The package's keywords and the stage pragmas are written once, in
+        /// Pipelines/TessellatedSubShader.hlsl and FallbackSubShader.hlsl, which each SubShader's
+        /// HLSLINCLUDE (pasted at the top of every HLSLPROGRAM of the SubShader) reads with
+        /// #include_with_pragmas; a pass's own HLSLPROGRAM adds only what that pass alone reads (the
+        /// forward passes' colour and debug switches, the pipeline's keywords).
         /// </summary>
         [Test]
         public void ThePackageKeywordBlockIsWrittenOncePerSubShader()
@@ -205,9 +208,10 @@ namespace GregoryTerrain.Rig.Tests
                         $"{s} pass {p.Name}: a stage pragma in the pass, not once in the SubShader");
                 }
             }
-            foreach (bool tessellated in new[] { true, false })
-                Assert.That(_subShaders.Where(s => s.Tessellated == tessellated).Select(s => s.Shared.Trim()).Distinct().Count(), Is.EqualTo(1),
-                    (tessellated ? "tessellated" : "fallback") + " SubShaders: the same HLSLINCLUDE in every pipeline");
+            // Written once in the package: each SubShader's HLSLINCLUDE only reads its kind's file.
+            foreach (SubShaderInfo s in _subShaders)
+                Assert.That(s.SharedAsWritten.Trim(), Is.EqualTo($"#include_with_pragmas \"Packages/{PackageName}/Shaders/Pipelines/{(s.Tessellated ? "Tessellated" : "Fallback")}SubShader.hlsl\""),
+                    $"{s}: the HLSLINCLUDE reads the shared pragmas of its kind");
         }
 
         /// <summary>
@@ -451,11 +455,8 @@ namespace GregoryTerrain.Rig.Tests
                 {
                     var includes = Regex.Matches(p.Program, "#include\\s+\"([^\"]+)\"").Select(m => m.Groups[1].Value).ToList();
                     string adapter = s.Pipeline == "Builtin" ? "BuiltinAdapter" : s.Pipeline + "Adapter";
-                    Assert.That(includes, Is.EqualTo(new[]
-                    {
-                        $"Packages/{PackageName}/Shaders/Pipelines/{adapter}.hlsl",
-                        $"Packages/{PackageName}/Shaders/Pipelines/TerrainStages.hlsl",
-                    }), $"{s} pass {p.Name}: the adapter, then the stages");
+                    Assert.That(includes, Is.EqualTo(new[] { $"Packages/{PackageName}/Shaders/Pipelines/{adapter}.hlsl" }),
+                        $"{s} pass {p.Name}: its pipeline's adapter only");
                     foreach (string inc in includes)
                     {
                         string relative = inc.Substring($"Packages/{PackageName}/".Length);
@@ -464,6 +465,15 @@ namespace GregoryTerrain.Rig.Tests
                     }
                 }
             Assert.That(count, Is.GreaterThan(0));
+            // Each adapter brings the stages in itself, last, after the interface they call.
+            foreach (string adapter in new[] { "URPAdapter", "HDRPAdapter", "BuiltinAdapter" })
+            {
+                string text = StripComments(File.ReadAllText(PackageRoot.Combine("Shaders", "Pipelines", adapter + ".hlsl")));
+                var includes = Regex.Matches(text, "#include\\s+\"([^\"]+)\"").Select(m => m.Groups[1].Value).ToList();
+                Assert.That(includes.Last(), Is.EqualTo("TerrainStages.hlsl"), adapter + ": its last include is the stages");
+                Assert.That(text.Substring(text.LastIndexOf("TerrainStages.hlsl", StringComparison.Ordinal)).Trim(), Does.Match(@"^TerrainStages\.hlsl""\s*#endif\b[^#]*$"),
+                    adapter + ": the stages after everything else, before the include guard's #endif");
+            }
         }
 
         [TestCase("URP", new[] { "UniversalForwardOnly", "ShadowCaster", "DepthOnly", "DepthNormalsOnly", "SceneSelectionPass", "Picking" })]
@@ -503,6 +513,21 @@ namespace GregoryTerrain.Rig.Tests
         {
             var m = Regex.Match(PassBody(sub, name), @"\bStencil\s*\{([^}]*)\}");
             return m.Success ? Regex.Replace(m.Groups[1].Value.Trim(), @"\s+", " ") : "";
+        }
+
+        /// <summary>
+        /// Unity's #include_with_pragmas: the package's file in place (comments stripped), so its
+        /// pragmas and defines count as the program's own (what <c>gt shaderlab</c> emulates too).
+        /// </summary>
+        static string WithIncludedPragmas(string program, int depth = 0)
+        {
+            Assert.That(depth, Is.LessThan(8), "#include_with_pragmas nested too deep (a file including itself?)");
+            return Regex.Replace(program, "#[ \t]*include_with_pragmas[ \t]+\"Packages/" + PackageName + "/([^\"]+)\"", m =>
+            {
+                string path = PackageRoot.Combine(m.Groups[1].Value.Split('/'));
+                Assert.That(File.Exists(path), Is.True, m.Value + ": no such package file");
+                return WithIncludedPragmas(StripComments(File.ReadAllText(path)), depth + 1);
+            });
         }
 
         static bool HasPragma(PassInfo p, string name) => p.Pragmas.Any(a => a.Length > 0 && a[0] == name);

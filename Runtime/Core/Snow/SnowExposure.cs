@@ -37,15 +37,8 @@ namespace GregoryTerrain
         /// </summary>
         public static float SampleHeight(float[] field, Float4 grid, Float2 p)
         {
-            int r = (int)grid.x;
-            float u = p.x * grid.x - 0.5f, v = p.y * grid.x - 0.5f;
-            float fu = floor(u), fv = floor(v);
-            float tu = u - fu, tv = v - fv;
-            int i0 = Clamp((int)fu, r), i1 = Clamp((int)fu + 1, r);
-            int j0 = Clamp((int)fv, r), j1 = Clamp((int)fv + 1, r);
-            float h00 = field[4 * (j0 * r + i0) + 3], h10 = field[4 * (j0 * r + i1) + 3];
-            float h01 = field[4 * (j1 * r + i0) + 3], h11 = field[4 * (j1 * r + i1) + 3];
-            return lerp(lerp(h00, h10, tu), lerp(h01, h11, tu), tv);
+            SnowCellBlend b = SnowCells.Bilinear(grid.x, p);
+            return SnowCells.Blend(b, field[4 * b.c00 + 3], field[4 * b.c10 + 3], field[4 * b.c01 + 3], field[4 * b.c11 + 3]);
         }
 
         /// <summary>
@@ -78,7 +71,5 @@ namespace GregoryTerrain
             float t = saturate((x - a) / (b - a));
             return t * t * (3f - 2f * t);
         }
-
-        static int Clamp(int i, int r) => i < 0 ? 0 : (i >= r ? r - 1 : i);
     }
 }

@@ -64,20 +64,12 @@ namespace GregoryTerrain
 
         /// <summary>
         /// HLSL <c>SnowMapSample(depth, mapSize, q)</c>: bilinear between cell centres, edge cells
-        /// repeated; <paramref name="mapSize"/> is <c>_SnowMapSize</c>. The same float steps as the
-        /// shader (and as <see cref="SnowExposure.SampleHeight"/>): <c>q R - 0.5</c>, floor, clamp, lerp.
+        /// repeated; <paramref name="mapSize"/> is <c>_SnowMapSize</c>.
         /// </summary>
         public static float Sample(float[] depth, Float4 mapSize, Float2 q)
         {
-            int r = (int)mapSize.x;
-            float u = q.x * mapSize.x - 0.5f, v = q.y * mapSize.x - 0.5f;
-            float fu = floor(u), fv = floor(v);
-            float tu = u - fu, tv = v - fv;
-            int i0 = Clamp((int)fu, r), i1 = Clamp((int)fu + 1, r);
-            int j0 = Clamp((int)fv, r), j1 = Clamp((int)fv + 1, r);
-            float d00 = depth[j0 * r + i0], d10 = depth[j0 * r + i1];
-            float d01 = depth[j1 * r + i0], d11 = depth[j1 * r + i1];
-            return lerp(lerp(d00, d10, tu), lerp(d01, d11, tu), tv);
+            SnowCellBlend b = SnowCells.Bilinear(mapSize.x, q);
+            return SnowCells.Blend(b, depth[b.c00], depth[b.c10], depth[b.c01], depth[b.c11]);
         }
 
         /// <summary>
@@ -85,9 +77,5 @@ namespace GregoryTerrain
         /// (covered), a smoothstep up to <see cref="FullCoverFraction"/> of the cap.
         /// </summary>
         public static float Coverage(float depth, float depthCap) => SnowExposure.smoothstep(0f, FullCoverFraction * depthCap, depth);
-
-        // (int) of a float truncates towards 0; the floor above makes the two agree except below -1,
-        // where the clamp takes over anyway (HLSL: clamp((int2)f, 0, r - 1)).
-        static int Clamp(int i, int r) => i < 0 ? 0 : (i > r - 1 ? r - 1 : i);
     }
 }

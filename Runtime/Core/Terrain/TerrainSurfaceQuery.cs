@@ -125,18 +125,29 @@ namespace GregoryTerrain
             for (int k = n - 1; k >= 0; k--) _amplitudeTail[k] = _amplitudeTail[k + 1] + amplitude * weight[k] * NoiseValueBound;
             for (int k = 0; k < n; k++) _slopeHead[k + 1] = _slopeHead[k] + amplitude * weight[k] * _frequency[k] * NoiseSlopeBound;
 
-            double lo = double.MaxValue, hi = double.MinValue, slope = 0.0;
-            bool affine = true;
-            for (int p = 0; p < grid.PatchCount; p++)
+            (MinControlHeight, MaxControlHeight, SurfaceSlopeBound, AffinePatches) =
+                WidenedBounds(grid, AllPatches(grid.PatchCount), double.MaxValue, double.MinValue, 0.0, true);
+        }
+
+        static IEnumerable<int> AllPatches(int count)
+        {
+            for (int p = 0; p < count; p++) yield return p;
+        }
+
+        /// <summary>
+        /// The control-height range, the slope bound and whether every patch is affine, from the given
+        /// ones widened by <paramref name="patches"/> of <paramref name="grid"/>.
+        /// </summary>
+        static (double lo, double hi, double slope, bool affine) WidenedBounds(PatchGrid grid, IEnumerable<int> patches,
+            double lo, double hi, double slope, bool affine)
+        {
+            foreach (int p in patches)
             {
                 foreach (Double3 c in grid.Patches[p].Points) { lo = Math.Min(lo, c.z); hi = Math.Max(hi, c.z); }
                 slope = Math.Max(slope, PatchSlopeBound(grid.Patches[p], grid.RegionOf(p)));
                 affine &= IsAffine(grid.Patches[p], grid.RegionOf(p));
             }
-            MinControlHeight = lo;
-            MaxControlHeight = hi;
-            SurfaceSlopeBound = slope;
-            AffinePatches = affine;
+            return (lo, hi, slope, affine);
         }
 
         /// <summary>
@@ -161,18 +172,8 @@ namespace GregoryTerrain
             _offset = previous._offset;
             _amplitudeTail = previous._amplitudeTail;
             _slopeHead = previous._slopeHead;
-            double lo = previous.MinControlHeight, hi = previous.MaxControlHeight, slope = previous.SurfaceSlopeBound;
-            bool affine = previous.AffinePatches;
-            foreach (int p in changed)
-            {
-                foreach (Double3 c in grid.Patches[p].Points) { lo = Math.Min(lo, c.z); hi = Math.Max(hi, c.z); }
-                slope = Math.Max(slope, PatchSlopeBound(grid.Patches[p], grid.RegionOf(p)));
-                affine &= IsAffine(grid.Patches[p], grid.RegionOf(p));
-            }
-            MinControlHeight = lo;
-            MaxControlHeight = hi;
-            SurfaceSlopeBound = slope;
-            AffinePatches = affine;
+            (MinControlHeight, MaxControlHeight, SurfaceSlopeBound, AffinePatches) = WidenedBounds(grid, changed,
+                previous.MinControlHeight, previous.MaxControlHeight, previous.SurfaceSlopeBound, previous.AffinePatches);
         }
 
         // ---------------------------------------------------------------- heights and normals
