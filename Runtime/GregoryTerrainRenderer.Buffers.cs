@@ -162,9 +162,6 @@ namespace GregoryTerrain
         /// <summary>True while the tiled noise's table is held (the Unity-side tests).</summary>
         internal bool HasNoiseTable => _noiseCells != null;
 
-        /// <summary>The property ID of <c>_NoiseCells</c> (for the Unity-side tests).</summary>
-        internal static int NoiseCellsPropertyId => ShaderIds.NoiseCells;
-
         void ReleaseNoiseTable()
         {
             _noiseCells?.Release(); _noiseCells = null;

@@ -14,7 +14,7 @@ namespace GregoryTerrain
     /// (<c>beginCameraRendering</c> in URP/HDRP, <c>Camera.onPreCull</c> in Built-in; Edit Mode too):
     /// M x M tessellated tiles over <see cref="Range"/> or the Horizon levels. Only <c>_Range</c> is sent
     /// every frame (<see cref="PerFrameTrafficBytes"/>), the rest on change; keywords go on a runtime
-    /// copy of the material. Files: this, <c>.DrawMaterial</c>, <c>.Buffers</c>; queries on
+    /// copy of the material (DrawMaterialCopy). Files: this, <c>.Snow</c>, <c>.Buffers</c>; queries on
     /// <see cref="Surface"/>; Core's FramePlanner and FrameResources; internals.md.
     /// </summary>
     [ExecuteAlways]
@@ -375,9 +375,6 @@ namespace GregoryTerrain
 
         readonly Vector4[] _levelVectors = new Vector4[LodTiles.MaxLevels];   // SetVectorArray's copy of the plan's levels
 
-        /// <summary>The property ID of <c>_LodLevels</c> (for the Unity-side tests).</summary>
-        internal static int LodLevelsPropertyId => ShaderIds.LodLevels;
-
         /// <summary>The levels drawn: the setting, with the tessellator.</summary>
         bool LevelsOn(bool fallback) => horizonLevels && !fallback;
 
@@ -547,7 +544,7 @@ namespace GregoryTerrain
         internal void ReleaseAll()
         {
             ReleaseGpuResources();
-            ReleaseDrawMaterial();
+            _drawCopy.Release(_keys);
             _usesCache = false;
         }
 
@@ -596,7 +593,7 @@ namespace GregoryTerrain
                 prepared = Prepare(cam);
             if (!prepared) return;
 
-            var rp = new RenderParams(_drawMaterial != null ? _drawMaterial : material)
+            var rp = new RenderParams(DrawMaterial)
             {
                 camera = cam,
                 worldBounds = WorldBounds(),
@@ -741,9 +738,6 @@ namespace GregoryTerrain
 
         /// <summary>Property IDs the last preparation set, in order (cache buffers not listed).</summary>
         internal System.Collections.Generic.IReadOnlyList<int> PropertiesSetLastPrepare => _setLastPrepare;
-
-        /// <summary>The property ID of <c>_Range</c> (for the Unity-side tests).</summary>
-        internal static int RangePropertyId => ShaderIds.Range;
 
         /// <summary>The SubShader's draw, read again when what Unity picks it by changes (<see cref="DrawModeKey"/>; GetTag allocates).</summary>
         bool ReadDrawMode()
