@@ -2,20 +2,15 @@ using UnityEngine;
 
 namespace GregoryTerrain
 {
-    // Snow: a Snow Simulator attaches itself; the draw binds its depth map and reads the grid's buffers.
+    // The draw material (DrawMaterialCopy), and the Snow Simulator attached.
     public sealed partial class GregoryTerrainRenderer
     {
         readonly DrawMaterialCopy _drawCopy = new DrawMaterialCopy();
 
-        /// <summary>
-        /// The material this renderer draws with now: the asset, or its runtime copy when the
-        /// renderer's keywords differ from the asset's. Null before the first draw.
-        /// </summary>
+        /// <summary>The material drawn now: the asset, or its runtime copy while the keywords differ.</summary>
         internal Material DrawMaterial => _drawCopy.Current != null ? _drawCopy.Current : material;
 
         internal Material UpdateDrawMaterial(FrameKeywords keywords) => _drawCopy.Update(material, keywords, _keys);
-
-        // ---- snow -----------------------------------------------------------------------------------
 
         /// <summary>True while an enabled Snow Simulator is attached and holds a depth map: the draw has GT_SNOW.</summary>
         bool SnowOn() => _snow != null && _snow.DepthBuffer != null;
@@ -39,18 +34,16 @@ namespace GregoryTerrain
         }
 
         /// <summary>
-        /// What a Snow Simulator evaluates its field from: the uploaded grid's buffers (as GpuLayout
-        /// packs them), the constants last sent (any range: the simulator replaces it), whether the
-        /// material has GT_NOISE, and with tiled noise (GT_NOISE_TABLE) the noise table, else null.
-        /// False until a grid is uploaded with valid settings.
+        /// What a Snow Simulator evaluates its field from: the grid's buffers, the constants last
+        /// sent (any range: the simulator replaces it), whether the material has GT_NOISE, and with tiled
+        /// noise (GT_NOISE_TABLE) the noise table, else null. False until a grid is uploaded with valid settings.
         /// </summary>
-        internal bool TryGetSnowTerrain(out GraphicsBuffer controlPoints, out GraphicsBuffer regions, out GraphicsBuffer gridLines,
-            out TerrainParams parameters, out bool noise, out GraphicsBuffer noiseCells, out int gridStamp)
+        internal bool TryGetSnowTerrain(out TerrainGpuBuffers buffers, out TerrainParams parameters, out bool noise, out GraphicsBuffer noiseCells, out int gridStamp)
         {
-            controlPoints = _controlPoints; regions = _regions; gridLines = _gridLines;
+            buffers = _gpu;
             parameters = _params; gridStamp = _gridStamp;
             noise = material != null && material.IsKeywordEnabled(ShaderIds.NoiseKeyword);
-            bool ready = _controlPoints != null && _settingsError == null && _uploadedPatchGrid != null;
+            bool ready = _gpu.Grid != null && _settingsError == null;
             // The table the draw binds (made here if the simulator asks before the next draw does).
             noiseCells = ready && noise ? EnsureNoiseTable() : null;
             return ready;
