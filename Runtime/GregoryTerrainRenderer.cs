@@ -1,4 +1,5 @@
 using System;
+using System.Collections.Generic;
 using Unity.Profiling;
 using UnityEngine;
 using UnityEngine.Rendering;
@@ -14,7 +15,7 @@ namespace GregoryTerrain
     /// (<c>beginCameraRendering</c> in URP/HDRP, <c>Camera.onPreCull</c> in Built-in; Edit Mode too):
     /// M x M tessellated tiles over <see cref="Range"/> or the Horizon levels. Only <c>_Range</c> is sent
     /// every frame (<see cref="PerFrameTrafficBytes"/>), the rest on change; keywords go on a runtime
-    /// copy of the material. Files: this, <c>.DrawMaterial</c>, <c>.Buffers</c>; queries on
+    /// copy of the material (DrawMaterialCopy). Files: this, <c>.Snow</c>, <c>.Buffers</c>; queries on
     /// <see cref="Surface"/>; Core's FramePlanner and FrameResources; internals.md.
     /// </summary>
     [ExecuteAlways]
@@ -108,8 +109,6 @@ namespace GregoryTerrain
 
         // ---- state ----------------------------------------------------------------------------------
         MaterialPropertyBlock _props;
-        GraphicsBuffer _controlPoints, _regions, _gridLines, _fallbackIndices;
-        PatchGrid _uploadedPatchGrid;
         TerrainRange _range = TerrainRange.full;
         // What the property block holds and what it was made from (Core's FramePlanner plans each frame).
         readonly FrameState _state = new FrameState();
@@ -119,7 +118,7 @@ namespace GregoryTerrain
         static bool s_FallbackLogged;
         Double3 _worldOffset;                            // ShiftOrigin's sum, in double (floating origin)
         int _gridStamp;                                  // bumped on every upload: the cache sees new grid buffers
-        readonly System.Collections.Generic.List<int> _setLastPrepare = new System.Collections.Generic.List<int>(16);
+        readonly List<int> _setLastPrepare = new List<int>(16);
         SnowSimulator _snow;                             // the enabled simulator attached to this renderer
         GregoryTerrainSurface _surface;                  // made on first use
 
@@ -165,10 +164,10 @@ namespace GregoryTerrain
             ? new NoiseSettings(noiseAmplitude, noiseFrequency, noiseAlpha, noiseBeta, noiseOctaves) : (NoiseSettings?)null;
 
         /// <summary>Whether a grid is uploaded with valid settings: <see cref="WorldBounds"/> holds the drawn terrain.</summary>
-        internal bool HasDrawn => _uploadedPatchGrid != null && _settingsError == null;
+        internal bool HasDrawn => _gpu.Grid != null && _settingsError == null;
 
         // The estimate's inputs.
-        internal PatchGrid UploadedPatchGrid => _uploadedPatchGrid;
+        internal PatchGrid UploadedPatchGrid => _gpu.Grid;
         internal FrameState State => _state;
 
         /// <summary>The patch grid drawn. Setting another asset releases and re-uploads on the next frame.</summary>
@@ -366,7 +365,7 @@ namespace GregoryTerrain
         public long VertexCacheAllocatedBytes => _cache.AllocatedBytes;
 
         /// <summary>True while GPU buffers for a grid are held.</summary>
-        public bool HasGpuResources => _controlPoints != null;
+        public bool HasGpuResources => _gpu.ControlPoints != null;
 
         // ---- Horizon levels (internals.md), laid out by the planner
 
@@ -374,9 +373,6 @@ namespace GregoryTerrain
         internal const double FinestLevelMeters = 16.0;
 
         readonly Vector4[] _levelVectors = new Vector4[LodTiles.MaxLevels];   // SetVectorArray's copy of the plan's levels
-
-        /// <summary>The property ID of <c>_LodLevels</c> (for the Unity-side tests).</summary>
-        internal static int LodLevelsPropertyId => ShaderIds.LodLevels;
 
         /// <summary>The levels drawn: the setting, with the tessellator.</summary>
         bool LevelsOn(bool fallback) => horizonLevels && !fallback;
@@ -386,7 +382,7 @@ namespace GregoryTerrain
         {
             double metres = WorldUnitsPerObjectUnit.x;   // world units across the terrain's x
             if (!(metres > 0.0) || double.IsInfinity(metres)) metres = 1.0;
-            return System.Math.Min(LodLevels.FinestExponent(metres, FinestLevelMeters), LodTiles.MaxLevels - 1);
+            return Math.Min(LodLevels.FinestExponent(metres, FinestLevelMeters), LodTiles.MaxLevels - 1);
         }
 
         /// <summary>Horizon levels drawn (L), 0 for one range.</summary>
@@ -449,10 +445,10 @@ namespace GregoryTerrain
                     objectToClip = ObjectToClip(cam),
                     worldToObject = ToMatrix4x4(_state.worldToObject),
                     screenSize = new Vector4(w, h, 1f / w, 1f / h),
-                    controlPoints = _controlPoints, regions = _regions, gridLines = _gridLines,
+                    controlPoints = _gpu.ControlPoints, regions = _gpu.Regions, gridLines = _gpu.GridLines,
                     gridStamp = _gridStamp,
                     effects = Effects(snow),
-                    noiseCells = _noiseCells,
+                    noiseCells = _gpu.NoiseCells,
                     snowDepth = snowSource != null ? snowSource.DepthBuffer : null,
                     snowMapSize = snowSource != null ? snowSource.MapSize : default,
                     snowVersion = snowSource != null ? snowSource.DepthVersion : 0,
@@ -501,7 +497,7 @@ namespace GregoryTerrain
             var e = VertexCachePass.Effects.None;
             if (material.IsKeywordEnabled(ShaderIds.NoiseKeyword)) e |= VertexCachePass.Effects.Noise;
             if (material.IsKeywordEnabled(ShaderIds.HeightColorKeyword)) e |= VertexCachePass.Effects.HeightColor;
-            if (_noiseCells != null) e |= VertexCachePass.Effects.NoiseTable;   // made by UpdateNoiseTableBinding while the noise is tiled
+            if (_gpu.NoiseCells != null) e |= VertexCachePass.Effects.NoiseTable;   // made by UpdateNoiseTableBinding while the noise is tiled
             if (snow) e |= VertexCachePass.Effects.Snow;
             return e;
         }
@@ -547,7 +543,7 @@ namespace GregoryTerrain
         internal void ReleaseAll()
         {
             ReleaseGpuResources();
-            ReleaseDrawMaterial();
+            _drawCopy.Release(_keys);
             _usesCache = false;
         }
 
@@ -596,7 +592,7 @@ namespace GregoryTerrain
                 prepared = Prepare(cam);
             if (!prepared) return;
 
-            var rp = new RenderParams(_drawMaterial != null ? _drawMaterial : material)
+            var rp = new RenderParams(DrawMaterial)
             {
                 camera = cam,
                 worldBounds = WorldBounds(),
@@ -609,8 +605,8 @@ namespace GregoryTerrain
             bool fallback = _keys.LastDrawFallback;
             if (LevelsOn(fallback)) tileCount = _state.levelCount * tiles * tiles;   // L x M^2 tiles, laid out around cam by Prepare(cam)
             if (fallback)
-                Graphics.RenderPrimitivesIndexed(rp, MeshTopology.Triangles, _fallbackIndices,
-                    _fallbackIndices.count, 0, tileCount);
+                Graphics.RenderPrimitivesIndexed(rp, MeshTopology.Triangles, _gpu.FallbackIndices,
+                    _gpu.FallbackIndices.count, 0, tileCount);
             else
                 // One 4-control-point patch per tile; the vertex stage derives tile and corner from
                 // SV_VertexID, so there is no vertex buffer.
@@ -700,7 +696,7 @@ namespace GregoryTerrain
         {
             var f = new FrameInputs
             {
-                grid = _uploadedPatchGrid,
+                grid = _gpu.Grid,
                 settings = Settings(fallback),
                 range = _range,
                 noiseKeywords = NoiseKeywords(),
@@ -740,10 +736,7 @@ namespace GregoryTerrain
         void SetBuffer(int id, GraphicsBuffer b) { _props.SetBuffer(id, b); _setLastPrepare.Add(id); }
 
         /// <summary>Property IDs the last preparation set, in order (cache buffers not listed).</summary>
-        internal System.Collections.Generic.IReadOnlyList<int> PropertiesSetLastPrepare => _setLastPrepare;
-
-        /// <summary>The property ID of <c>_Range</c> (for the Unity-side tests).</summary>
-        internal static int RangePropertyId => ShaderIds.Range;
+        internal IReadOnlyList<int> PropertiesSetLastPrepare => _setLastPrepare;
 
         /// <summary>The SubShader's draw, read again when what Unity picks it by changes (<see cref="DrawModeKey"/>; GetTag allocates).</summary>
         bool ReadDrawMode()

@@ -30,7 +30,7 @@ namespace GregoryTerrain
                 PatchGridAsset grid = _renderer.Grid;
                 if (grid == null || !grid.IsValid) return null;
                 var key = new QuerySourceKey(new GridVersionKey(grid.GetInstanceID(), grid.Version), _renderer.QueryNoise, _renderer.NoiseKeywords());
-                FrameResources built = _renderer.Resources;
+                FrameResources built = _renderer.State.resources;
                 if (built.TryQuery(key, out TerrainSurfaceQuery query)) return query;
                 try { query = EditedQuery(grid, key) ?? new TerrainSurfaceQuery(grid.ToPatchGrid(), _renderer.QueryNoise, _renderer.NoiseKeywords()); }
                 catch (ArgumentException e)
@@ -46,7 +46,7 @@ namespace GregoryTerrain
         /// <summary>The query brought to the grid's version at the cost of the patches edited since; null when only a rebuild can tell.</summary>
         TerrainSurfaceQuery EditedQuery(PatchGridAsset grid, in QuerySourceKey key)
         {
-            TerrainSurfaceQuery old = _renderer.Resources.QueryToCatchUp(key, out int version);
+            TerrainSurfaceQuery old = _renderer.State.resources.QueryToCatchUp(key, out int version);
             if (old == null) return null;
             PatchGrid g = grid.UpdatedPatchGrid(old.Grid, version, out int[] changed);
             return g == null ? null : old.WithPatches(g, changed);
@@ -139,10 +139,10 @@ namespace GregoryTerrain
         {
             if (cam == null) throw new ArgumentNullException(nameof(cam));
             GregoryTerrainRenderer r = _renderer;
-            if (!r.HasDrawn || r.Resources.LastDrawFallback) return null;
+            if (!r.HasDrawn || r.State.resources.LastDrawFallback) return null;
             int w = cam.pixelWidth, h = cam.pixelHeight;
             if (w <= 0 || h <= 0) return null;
-            TerrainInputs inputs = r.Resources.EstimateInputs(r.UploadedPatchGrid, r.State.parameters);
+            TerrainInputs inputs = r.State.resources.EstimateInputs(r.UploadedPatchGrid, r.State.parameters);
             Float4x4 m = GregoryTerrainRenderer.ToFloat4x4(r.ObjectToClip(cam));
             var screen = new Float2(w, h);
             if (r.HorizonLevels)

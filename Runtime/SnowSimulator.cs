@@ -239,8 +239,8 @@ namespace GregoryTerrain
             if (UsesTerrainField)
             {
                 if (_fieldKernel < 0) return null;   // no SnowField.compute assigned
-                if (!terrain.TryGetSnowTerrain(out GraphicsBuffer cps, out GraphicsBuffer regions, out GraphicsBuffer lines,
-                        out TerrainParams parameters, out bool noise, out GraphicsBuffer noiseCells, out int gridStamp))
+                if (!terrain.TryGetSnowTerrain(out TerrainGpuBuffers buffers, out TerrainParams parameters, out bool noise,
+                        out GraphicsBuffer noiseCells, out int gridStamp))
                     return null;   // nothing uploaded yet, or settings the renderer cannot draw
                 TerrainParams p = SnowFieldTerrain.ParamsFor(parameters, Applied.resolution);
                 bool tiled = noiseCells != null;   // tiled noise is another height field
@@ -249,7 +249,7 @@ namespace GregoryTerrain
                     _fieldGridStamp = gridStamp; _fieldNoise = noise; _fieldNoiseTable = tiled; _fieldParams = p;
                     _terrainVersion++;
                 }
-                if (_fieldTerrainVersion != _terrainVersion) EvaluateField(cps, regions, lines, noiseCells);
+                if (_fieldTerrainVersion != _terrainVersion) EvaluateField(buffers, noiseCells);
                 return _field;
             }
             if (_cpuField == null) return null;
@@ -263,16 +263,16 @@ namespace GregoryTerrain
         }
 
         /// <summary>SnowFieldKernel over the R x R cells: the terrain's vertex path at every cell centre.</summary>
-        void EvaluateField(GraphicsBuffer controlPoints, GraphicsBuffer regions, GraphicsBuffer gridLines, GraphicsBuffer noiseCells)
+        void EvaluateField(TerrainGpuBuffers buffers, GraphicsBuffer noiseCells)
         {
             TerrainParams p = _fieldParams;
             ShaderIds.SetParams(fieldShader, p);
             if (_fieldNoise) fieldShader.EnableKeyword(ShaderIds.NoiseKeyword); else fieldShader.DisableKeyword(ShaderIds.NoiseKeyword);
             if (_fieldNoiseTable) fieldShader.EnableKeyword(ShaderIds.NoiseTableKeyword); else fieldShader.DisableKeyword(ShaderIds.NoiseTableKeyword);
             if (_fieldNoiseTable) fieldShader.SetBuffer(_fieldKernel, ShaderIds.NoiseCells, noiseCells);
-            fieldShader.SetBuffer(_fieldKernel, ShaderIds.ControlPoints, controlPoints);
-            fieldShader.SetBuffer(_fieldKernel, ShaderIds.Regions, regions);
-            fieldShader.SetBuffer(_fieldKernel, ShaderIds.GridLines, gridLines);
+            fieldShader.SetBuffer(_fieldKernel, ShaderIds.ControlPoints, buffers.ControlPoints);
+            fieldShader.SetBuffer(_fieldKernel, ShaderIds.Regions, buffers.Regions);
+            fieldShader.SetBuffer(_fieldKernel, ShaderIds.GridLines, buffers.GridLines);
             fieldShader.SetBuffer(_fieldKernel, ShaderIds.SnowField, _field);
             int groups = Applied.resolution / 8;
             fieldShader.Dispatch(_fieldKernel, groups, groups, 1);

@@ -40,12 +40,12 @@ namespace GregoryTerrain.Tests
             foreach (Camera cam in new[] { b, a, b })
             {
                 r.DrawFor(cam);
-                Assert.That(r.PropertiesSetLastPrepare, Is.EqualTo(new[] { GregoryTerrainRenderer.RangePropertyId }),
+                Assert.That(r.PropertiesSetLastPrepare, Is.EqualTo(new[] { ShaderIds.Range }),
                     $"properties set for camera {cam.name} in the steady state");
             }
             r.Range = new TerrainRange(0.25, 0.25, 0.5, 0.5);   // a pan and zoom: still _Range (+ lattice on a zoom), no upload
             r.DrawFor(a);
-            Assert.That(r.PropertiesSetLastPrepare, Does.Contain(GregoryTerrainRenderer.RangePropertyId));
+            Assert.That(r.PropertiesSetLastPrepare, Does.Contain(ShaderIds.Range));
             Assert.That(r.UploadCount, Is.EqualTo(1));
         }
 
@@ -58,8 +58,8 @@ namespace GregoryTerrain.Tests
             b.transform.position = new Vector3(0.5f, 2f, -3f);
             b.fieldOfView = 30f;
             Assert.That(a.pixelWidth, Is.GreaterThan(0), "cameras with pixels");
-            int[] range = { GregoryTerrainRenderer.RangePropertyId };
-            int[] rangeAndView = { GregoryTerrainRenderer.RangePropertyId, ShaderIds.TessObjectToClip, ShaderIds.TessScreenSize };
+            int[] range = { ShaderIds.Range };
+            int[] rangeAndView = { ShaderIds.Range, ShaderIds.TessObjectToClip, ShaderIds.TessScreenSize };
             r.DrawFor(a);
             Assert.That(r.PropertiesSetLastPrepare, Does.Contain(ShaderIds.TessObjectToClip).And.Contain(ShaderIds.TessScreenSize), "the first draw");
             r.DrawFor(a);
@@ -80,7 +80,7 @@ namespace GregoryTerrain.Tests
             var r = _t.Renderer("terrain");
             r.HorizonLevels = true;
             Camera a = _t.Camera("a");
-            int levels = GregoryTerrainRenderer.LodLevelsPropertyId;
+            int levels = ShaderIds.LodLevels;
             Assume.That(r.DrawsFallback, Is.False, "the levels need the tessellator");
             r.DrawFor(a);
             r.DrawFor(a);
@@ -137,14 +137,14 @@ namespace GregoryTerrain.Tests
             _t.Asset.DisableKeyword(ShaderIds.NoiseTableKeyword);
             r.DrawFor(a);
             Assert.That(r.HasNoiseTable, Is.False, "hashed noise (the default): no table");
-            Assert.That(r.PropertiesSetLastPrepare, Does.Not.Contain(GregoryTerrainRenderer.NoiseCellsPropertyId));
+            Assert.That(r.PropertiesSetLastPrepare, Does.Not.Contain(ShaderIds.NoiseCells));
 
             _t.Asset.EnableKeyword(ShaderIds.NoiseTableKeyword);   // the user switches Tiled noise on
             r.DrawFor(a);
             Assert.That(r.HasNoiseTable, Is.True, "tiled noise: the table is made");
-            Assert.That(r.PropertiesSetLastPrepare, Does.Contain(GregoryTerrainRenderer.NoiseCellsPropertyId), "and sent");
+            Assert.That(r.PropertiesSetLastPrepare, Does.Contain(ShaderIds.NoiseCells), "and sent");
             r.DrawFor(a);
-            Assert.That(r.PropertiesSetLastPrepare, Is.EqualTo(new[] { GregoryTerrainRenderer.RangePropertyId }), "sent once, not per frame");
+            Assert.That(r.PropertiesSetLastPrepare, Is.EqualTo(new[] { ShaderIds.Range }), "sent once, not per frame");
 
             _t.Asset.DisableKeyword(ShaderIds.NoiseKeyword);   // the table alone tiles nothing
             r.DrawFor(a);

@@ -7,7 +7,7 @@ using NUnit.Framework;
 namespace GregoryTerrain.Rig.Tests
 {
     /// <summary>
-    /// Static checks over the renderer's C# (Runtime/GregoryTerrainRenderer*.cs) for state that only a
+    /// Static checks over the renderer's C# (Runtime/GregoryTerrainRenderer*.cs and its owners) for state that only a
     /// Unity editor could show going wrong: what the property block is known to hold once it is
     /// cleared, the draw's bounds against the shader's tile culling, what the draw mode is cached
     /// against, the device check before any structured buffer, and the range origin per camera.
@@ -20,8 +20,10 @@ namespace GregoryTerrain.Rig.Tests
         static string StripComments(string code) =>
             Regex.Replace(code, @"//[^\n]*|/\*.*?\*/", "", RegexOptions.Singleline);
 
+        /// <summary>The component's files, then the owners it holds (its GPU buffers, its material copy).</summary>
         static string RendererCode() => string.Join("\n",
             Directory.GetFiles(PackageRoot.Combine("Runtime"), "GregoryTerrainRenderer*.cs").OrderBy(f => f)
+                .Concat(new[] { "TerrainGpuBuffers.cs", "DrawMaterialCopy.cs" }.Select(f => PackageRoot.Combine("Runtime", f)))
                 .Select(f => StripComments(File.ReadAllText(f))));
 
         /// <summary>The body (braces included) of the method or property declared as <paramref name="name"/>, or null.</summary>

@@ -28,7 +28,7 @@ namespace GregoryTerrain.Rig.Tests
         static readonly string[] MaterialSetters = { "shaderKeywords", "enabledKeywords", "renderQueue", "shader", "globalIlluminationFlags", "enableInstancing" };
 
         /// <summary>The one file and the names in it that may write a material: the renderer's runtime copy.</summary>
-        const string CopyFile = "GregoryTerrainRenderer.DrawMaterial.cs";
+        const string CopyFile = "DrawMaterialCopy.cs";
         static readonly string[] CopyNames = { "_drawMaterial", "copy" };
 
         static Dictionary<string, string> RuntimeSources() =>
