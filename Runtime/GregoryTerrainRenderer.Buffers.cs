@@ -51,7 +51,7 @@ namespace GregoryTerrain
             PatchGrid g = null;
             try { g = grid.ToPatchGrid(); }
             catch (ArgumentException e) { error = e.Message; }
-            error ??= _gpu.Upload(g);   // GraphicsBuffer's own exceptions are not caught
+            error ??= _gpu.Upload(g);
             if (error != null)
             {
                 Debug.LogError($"{name}: patch grid '{grid.name}' cannot be drawn: {error}", this);

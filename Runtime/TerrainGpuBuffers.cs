@@ -6,12 +6,17 @@ namespace GregoryTerrain
     // A renderer's GPU buffers, made, filled and released when it says (FrameResources decides).
     internal sealed class TerrainGpuBuffers
     {
-        internal GraphicsBuffer ControlPoints, Regions, GridLines, FallbackIndices, NoiseCells;
-        internal PatchGrid Grid;   // in the buffers, or null
+        internal GraphicsBuffer ControlPoints { get; private set; }
+        internal GraphicsBuffer Regions { get; private set; }
+        internal GraphicsBuffer GridLines { get; private set; }
+        internal GraphicsBuffer FallbackIndices { get; private set; }
+        internal GraphicsBuffer NoiseCells { get; private set; }
+        internal PatchGrid Grid { get; private set; }   // in the buffers, or null
 
-        /// <summary>Null, the buffers made; else why GpuLayout rejects the grid (nothing made).</summary>
+        /// <summary>Null, the buffers made; else why the grid cannot be uploaded (nothing held).</summary>
         internal string Upload(PatchGrid g)
         {
+            Release();   // never leave live buffers to the finalizer
             GregoryPatchRecord[] records;
             float[] regions, lines;
             // GpuLayout validates (bit-identical shared edges, float-representable lines) and packs.
@@ -19,12 +24,17 @@ namespace GregoryTerrain
             catch (ArgumentException e) { return e.Message; }
             // One 320-byte record a patch (StructuredBuffer<GregoryPatchRecord>); the regions a float array
             // of float4 elements: count = floats / 4, stride 16 (GpuLayout.Float4Stride).
-            ControlPoints = new GraphicsBuffer(GraphicsBuffer.Target.Structured, records.Length, GpuLayout.PatchRecordStride);
-            ControlPoints.SetData(records);
-            Regions = new GraphicsBuffer(GraphicsBuffer.Target.Structured, regions.Length / GpuLayout.Float4Size, GpuLayout.Float4Stride);
-            Regions.SetData(regions);
-            GridLines = new GraphicsBuffer(GraphicsBuffer.Target.Structured, lines.Length, GpuLayout.GridLineStride);
-            GridLines.SetData(lines);
+            try
+            {
+                ControlPoints = new GraphicsBuffer(GraphicsBuffer.Target.Structured, records.Length, GpuLayout.PatchRecordStride);
+                ControlPoints.SetData(records);
+                Regions = new GraphicsBuffer(GraphicsBuffer.Target.Structured, regions.Length / GpuLayout.Float4Size, GpuLayout.Float4Stride);
+                Regions.SetData(regions);
+                GridLines = new GraphicsBuffer(GraphicsBuffer.Target.Structured, lines.Length, GpuLayout.GridLineStride);
+                GridLines.SetData(lines);
+            }
+            // GraphicsBuffer refuses a size over SystemInfo.maxGraphicsBufferSize: told once, not thrown every frame.
+            catch (ArgumentException e) { Release(); return e.Message; }
             Grid = g;
             return null;
         }

@@ -1,3 +1,4 @@
+using System;
 using System.Collections.Generic;
 using System.IO;
 using System.Linq;
@@ -257,6 +258,30 @@ namespace GregoryTerrain.Rig.Tests
             string code = RendererCode();
             Assert.That(code, Does.Contain("GraphicsBuffer.Target.Structured"), "the renderer makes structured buffers");
             Assert.That(DeviceCheckProblems(code), Is.Empty);
+        }
+
+        /// <summary>
+        /// GraphicsBuffer's constructor throws ArgumentException over SystemInfo.maxGraphicsBufferSize (2022.3,
+        /// GraphicsBuffer.bindings.cs): the upload turns it into its error, logged once, not an exception every frame.
+        /// </summary>
+        [Test]
+        public void AGridTooLargeForTheDeviceIsToldNotThrown()
+        {
+            string upload = File.ReadAllText(PackageRoot.Combine("Runtime", "TerrainGpuBuffers.cs"));
+            Assert.That(UncaughtBufferCreation(upload), Is.False, "TerrainGpuBuffers.Upload");
+            string old = "internal string Upload(PatchGrid g) { try { records = Pack(g); } catch (ArgumentException e) { return e.Message; }\n" +
+                         "ControlPoints = new GraphicsBuffer(GraphicsBuffer.Target.Structured, n, 320); ControlPoints.SetData(records); return null; }";
+            Assert.That(UncaughtBufferCreation(old), Is.True, "the unfixed upload");
+        }
+
+        static bool UncaughtBufferCreation(string code)
+        {
+            string body = code.Substring(code.IndexOf("string Upload(", StringComparison.Ordinal));
+            int end = body.IndexOf("\n        }", StringComparison.Ordinal);   // the method's closing brace
+            if (end > 0) body = body.Substring(0, end);
+            int made = body.LastIndexOf("new GraphicsBuffer(", StringComparison.Ordinal);
+            int caught = body.IndexOf("catch (ArgumentException e) { Release(); return e.Message; }", Math.Max(made, 0), StringComparison.Ordinal);
+            return made < 0 || caught < 0;
         }
 
         [Test]

@@ -244,7 +244,8 @@ namespace GregoryTerrain.Rig.Tests
                 Assert.That(_guidToFile.TryGetValue(shaderRef.Groups[1].Value, out string shaderFile), Is.True, mat + ": shader guid");
                 Assert.That(Path.GetFileName(shaderFile), Is.EqualTo("GregoryTerrain.shader"), mat.ToString());
 
-                string shader = Regex.Replace(File.ReadAllText(shaderFile), @"//[^\n]*", "");
+                // Keywords of #include_with_pragmas files are the shader's own (Unity's caching preprocessor).
+                string shader = ShaderLabTests.WithIncludedPragmas(Regex.Replace(File.ReadAllText(shaderFile), @"//[^\n]*", ""));
                 int open = shader.IndexOf("Properties", StringComparison.Ordinal);
                 string properties = shader.Substring(open, shader.IndexOf("SubShader", open, StringComparison.Ordinal) - open);
                 var declaredProps = new HashSet<string>(Regex.Matches(properties, @"^\s*(?:\[[^\]]*\]\s*)*(\w+)\s*\(""", RegexOptions.Multiline).Select(m => m.Groups[1].Value));

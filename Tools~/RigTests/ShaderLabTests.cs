@@ -519,14 +519,18 @@ namespace GregoryTerrain.Rig.Tests
         /// Unity's #include_with_pragmas: the package's file in place (comments stripped), so its
         /// pragmas and defines count as the program's own (what <c>gt shaderlab</c> emulates too).
         /// </summary>
-        static string WithIncludedPragmas(string program, int depth = 0)
+        internal static string WithIncludedPragmas(string program, int depth = 0)
         {
             Assert.That(depth, Is.LessThan(8), "#include_with_pragmas nested too deep (a file including itself?)");
             return Regex.Replace(program, "#[ \t]*include_with_pragmas[ \t]+\"Packages/" + PackageName + "/([^\"]+)\"", m =>
             {
                 string path = PackageRoot.Combine(m.Groups[1].Value.Split('/'));
                 Assert.That(File.Exists(path), Is.True, m.Value + ": no such package file");
-                return WithIncludedPragmas(StripComments(File.ReadAllText(path)), depth + 1);
+                string text = StripComments(File.ReadAllText(path));
+                // Unity evaluates #if around such pragmas; gt shaderlab and these tests lift every one.
+                Assert.That(Regex.IsMatch(text, @"^[ \t]*#[ \t]*(if|ifdef|ifndef|elif)\b", RegexOptions.Multiline), Is.False,
+                    m.Groups[1].Value + ": a file read with #include_with_pragmas holds a conditional, which the rig would not evaluate");
+                return WithIncludedPragmas(text, depth + 1);
             });
         }
 
