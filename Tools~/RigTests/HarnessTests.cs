@@ -108,7 +108,7 @@ namespace GregoryTerrain.Rig.Tests
     }
 
     [TestFixture, Parallelizable(ParallelScope.Self)]
-    public class HarnessTests
+    public partial class HarnessTests
     {
         const int Size = 128;  // render target width = height
         string _work;

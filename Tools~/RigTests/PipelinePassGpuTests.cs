@@ -174,6 +174,27 @@ namespace GregoryTerrain.Rig.Tests
         }
 
         [Test]
+        public void MainLightShadowsVariant_BindsItsShadowMapAndComparisonSamplerByName_WithListedDefaults()
+        {
+            // The scene sets no shadow yet: the map is a 1x1 D32 at reversed depth's far plane, the
+            // sampler compares as Unity does under reversed depth, and the shadow block's members the
+            // stages read are listed as defaulted (strength 0), so the picture is the base one.
+            JsonElement m = Manifest("lit_shadows");
+            var kinds = m.GetProperty("bindings").EnumerateArray()
+                .ToDictionary(b => b.GetProperty("name").GetString(), b => b.GetProperty("kind").GetString());
+            Assert.That(kinds["_MainLightShadowmapTexture"], Is.EqualTo("separate_images"));
+            Assert.That(kinds["sampler_LinearClampCompare"], Is.EqualTo("separate_samplers"));
+            Assert.That(Strings(m.GetProperty("defaults")), Does.Contain("_MainLightShadowmapTexture=D32(0)")
+                .And.Contain("sampler_LinearClampCompare=point:clamp:compare-gequal"));
+            string args = string.Join(" ", Strings(m.GetProperty("harness_args")));
+            Assert.That(args, Does.Contain(":D32:1:1").And.Contain("--sampler"));
+            Assert.That(Strings(m.GetProperty("defaulted_read")),
+                Is.EquivalentTo(new[] { "_MainLightWorldToShadow=matrix", "_MainLightShadowParams=(0,0,0,0)" }));
+            RigPng shadows = RigPng.Read(Path.Combine(_out, "lit_shadows.png"));
+            Assert.That(_lit.PixelsDifferingFrom(shadows, 0), Is.Zero, "shadow strength 0 over an empty map: ForwardLit's base picture");
+        }
+
+        [Test]
         public void DxcsSpirv_DrawsTheSamePictureAsGlslangs()
         {
             // Two compilers of the same pass (Unity ships FXC; neither is it): their pictures may differ

@@ -117,7 +117,8 @@ def reflect(spv):
 
 
 def resources(refl):
-    """[(kind, name, set, binding, members or None, size)] of one stage. kind: uniform | storage."""
+    """[(kind, name, set, binding, members or None, size)] of one stage. kind: uniform | storage, or
+    the reflection's key for images and samplers, whose size is then their type (texture2DArray, ...)."""
     out = []
     for kind, key in (("uniform", "ubos"), ("storage", "ssbos")):
         for u in refl.get(key, []):
@@ -126,7 +127,7 @@ def resources(refl):
             out.append((kind, name, u["set"], u["binding"], t["members"], u.get("block_size", 0)))
     for key in ("textures", "separate_images", "separate_samplers", "images"):
         for u in refl.get(key, []):
-            out.append((key, u["name"], u["set"], u["binding"], None, 0))
+            out.append((key, u["name"], u["set"], u["binding"], None, u.get("type", "")))
     return out
 
 
@@ -469,10 +470,52 @@ def terrain_params(buffers):
 GRID_BUFFERS = {"_ControlPoints": "control_points.f32", "_Regions": "regions.f32", "_GridLines": "grid_lines.f32"}
 
 
+# The scene sets no texture yet: each separate image a pass declares gets a 1x1 named default, listed
+# with the defaults. Shadow maps hold reversed depth's far plane (0: nothing occludes, all lit);
+# HDRP's exposure texture the multiplier 1 (x) as its RG32 texel (y: 1 as well).
+SHADOW_MAP = re.compile(r"[Ss]hadow[Mm]ap|ShadowmapCascadeAtlas|ShadowAtlas")
+IMAGE_DEFAULTS = {"_ExposureTexture": ("R32G32_SFLOAT", [1.0, 1.0])}
+
+
+def image_default(name):
+    """(FORMAT, texel floats) of the 1x1 image that stands for the texture NAME."""
+    if name in IMAGE_DEFAULTS:
+        return IMAGE_DEFAULTS[name]
+    if SHADOW_MAP.search(name):
+        return "D32", [0.0]
+    return "R32G32B32A32_SFLOAT", [0.0, 0.0, 0.0, 0.0]
+
+
+def sampler_default(name):
+    """--sampler's value for NAME, read from Unity's naming (sampler_LinearClampCompare,
+    s_point_repeat_sampler, ...): compare -> compare-gequal, Unity's shadow test under reversed depth,
+    through point filtering (lavapipe lists no linear filtering of D32); else linear unless named point."""
+    low = name.lower()
+    wrap = "repeat" if "repeat" in low else "clamp"
+    if "compare" in low:
+        return f"point:{wrap}:compare-gequal"
+    return ("point" if "point" in low else "linear") + ":" + wrap
+
+
+def default_image_or_sampler(name, kind, type_name, binding, path, report):
+    if kind == "separate_samplers":
+        value = sampler_default(name)
+        report["defaults"].append(f"{name}={value}")
+        return {"name": name, "binding": binding, "kind": kind, "sampler": value, "bytes": 0}
+    fmt, texel = image_default(name)
+    with open(path, "wb") as f:
+        f.write(struct.pack(f"<{len(texel)}f", *texel))
+    report["defaults"].append(f"{name}={fmt}({','.join(show(x) for x in texel)})")
+    return {"name": name, "binding": binding, "kind": kind, "format": fmt, "file": path, "bytes": 4 * len(texel),
+            "arrayed": "Array" in type_name}
+
+
 def layout_key(layout):
     """What two stages must agree on: kind, size and each member's name, offset, type and array (a
     struct member's type is a per-module id, so only its name counts)."""
     kind, members, size = layout
+    if members is None:
+        return kind, size
     return kind, size, tuple((m["name"], m.get("offset"), "struct" if m["type"].startswith("_") else m["type"],
                               str(m.get("array"))) for m in members)
 
@@ -506,8 +549,9 @@ def prepare(a, pipeline, pass_name, keywords, buffers, out, compiler="glslang"):
             continue
         per_stage[stage] = resources(reflect(spvs[stage]))
         for kind, name, _, _, members, size in per_stage[stage]:
-            if kind not in ("uniform", "storage"):
-                raise SystemExit(f"pipeline-pass: error: {stage} declares {kind} '{name}'; textures are not bound yet")
+            if kind not in ("uniform", "storage", "separate_images", "separate_samplers"):
+                raise SystemExit(f"pipeline-pass: error: {stage} declares {kind} '{name}'; only separate "
+                                 "images and samplers are bound (as HLSL compiles Texture2D and SamplerState)")
             if name in layouts and layout_key(layouts[name]) != layout_key((kind, members, size)):
                 raise SystemExit(f"pipeline-pass: error: '{name}' has another layout in the {stage} stage")
             layouts[name] = (kind, members, size)
@@ -527,6 +571,9 @@ def prepare(a, pipeline, pass_name, keywords, buffers, out, compiler="glslang"):
     for name in sorted(layouts):
         kind, members, size = layouts[name]
         path = os.path.join(out, f"binding_{binding_of[name]}_{re.sub(r'[^A-Za-z0-9_]', '', name)}.bin")
+        if kind in ("separate_images", "separate_samplers"):
+            bindings.append(default_image_or_sampler(name, kind, size, binding_of[name], path, report))
+            continue
         if kind == "uniform":
             data = fill_block(name, members, size, values, report)
         elif name in GRID_BUFFERS:
@@ -547,7 +594,12 @@ def prepare(a, pipeline, pass_name, keywords, buffers, out, compiler="glslang"):
         if stage in spvs:
             args += [f"--{stage}", spvs[stage]]
     for b in bindings:
-        args += ["--storage-data", f"{b['binding']}:{b['file']}"]
+        if b["kind"] == "separate_images":
+            args += ["--image", f"{b['binding']}:{b['file']}:{b['format']}:1:1" + (":1" if b["arrayed"] else "")]
+        elif b["kind"] == "separate_samplers":
+            args += ["--sampler", f"{b['binding']}:{b['sampler']}"]
+        else:
+            args += ["--storage-data", f"{b['binding']}:{b['file']}"]
     args += ["--uniform-blocks", "storage"] + state
     read_all = sorted(set(x for r in reads.values() for x in r))
     defaulted_read = [d for d in report["defaults"] if any(r.endswith("." + d.split("=")[0]) for r in read_all)]
@@ -593,7 +645,8 @@ TILES, WIDTH, HEIGHT = 16, 400, 300
 # builtin_lit: Built-in's ForwardBase (tessellated SubShader, base variant) on the same scene.
 PICTURES = [("depth", "URP", "DepthOnly", [], "glslang"), ("lit", "URP", "ForwardLit", [], "glslang"),
             ("normals", "URP", "ForwardLit", ["GT_DEBUG_NORMALS"], "glslang"), ("lit_dxc", "URP", "ForwardLit", [], "dxc"),
-            ("builtin_lit", "Builtin", "ForwardBase", [], "glslang")]
+            ("builtin_lit", "Builtin", "ForwardBase", [], "glslang"),
+            ("lit_shadows", "URP", "ForwardLit", ["_MAIN_LIGHT_SHADOWS"], "glslang")]
 
 
 def draw(args, buffers, png, log):

@@ -63,6 +63,8 @@ std::pair<std::string, std::string> splitAtColon(const std::string& option, cons
     return {value.substr(0, colon), value.substr(colon + 1)};
 }
 
+}  // namespace
+
 // One numeric field of a compound value; the error names the option, the field and the whole value.
 uint64_t parseField(const std::string& option, const std::string& value, const std::string& field,
                     const std::string& text, uint64_t minValue, uint64_t maxValue) {
@@ -76,10 +78,12 @@ uint64_t parseField(const std::string& option, const std::string& value, const s
     return v;
 }
 
+namespace {
 constexpr uint64_t kMaxStorageBinding = 1023;        // far above any real layout; catches typos
 constexpr uint64_t kMaxStorageBytes = 0xffffffffull;  // maxStorageBufferRange is a uint32_t
+}  // namespace
 
-// The BINDING of a --storage or --storage-data value: a number that is not one of the rig's own.
+// The BINDING of a --storage, --storage-data, --image or --sampler value: not one of the rig's own.
 uint32_t parseStorageBinding(const std::string& option, const std::string& value, const std::string& bindingText) {
     const auto binding = static_cast<uint32_t>(parseField(option, value, "BINDING", bindingText, 0, kMaxStorageBinding));
     if (const char* taken = rigBindingName(binding))
@@ -87,6 +91,8 @@ uint32_t parseStorageBinding(const std::string& option, const std::string& value
              " (bindings 0.." + std::to_string(kBindingCountSnow - 1) + " are taken)");
     return binding;
 }
+
+namespace {
 
 StorageOption parseStorage(const std::string& value) {
     const std::string option = "--storage";
@@ -219,6 +225,13 @@ const char* usageText() {
                                  the camera's projection must use the same one
   --storage BINDING:BYTES        zero-filled device-local storage buffer at BINDING (>= 7), repeatable
   --storage-data BINDING:FILE    the same holding FILE's bytes (e.g. the tiled noise's table at 9)
+  --image BINDING:FILE:FORMAT:W:H[:LAYERS]   a sampled 2D image (2D array with LAYERS) at BINDING,
+                                 uploaded from FILE's raw texels; FORMAT R32_SFLOAT, R32G32_SFLOAT,
+                                 R32G32B32A32_SFLOAT, R16G16B16A16_SFLOAT, R8G8B8A8_UNORM, R8G8B8A8_SRGB,
+                                 D32 (a depth map, for comparison samplers); repeatable
+  --sampler BINDING:linear|point[:clamp|repeat][:compare-OP]   a separate sampler at BINDING
+                                 (default clamp); compare-less|lequal|greater|gequal|equal|notequal|
+                                 always|never: a comparison sampler, passing when (reference OP texel)
   --compute SPV:GX[,GY[,GZ]]     each frame, before the render pass, dispatch the module's compute
                                  entry point over GX x GY x GZ groups; repeatable, run in order
   --dump-storage BINDING:FILE    write that storage buffer's bytes after the last frame, repeatable
@@ -314,6 +327,8 @@ Options parseOptions(int argc, char** argv) {
         else if (a == "--depth") o.state.depth = parseDepth(a, value());
         else if (a == "--storage") addStorage(o, value());
         else if (a == "--storage-data") addStorage(o, value(), true);
+        else if (a == "--image") o.images.push_back(parseImageOption(value()));
+        else if (a == "--sampler") o.samplers.push_back(parseSamplerOption(value()));
         else if (a == "--compute") o.computes.push_back(parseCompute(value()));
         else if (a == "--dump-storage") o.dumps.push_back(parseDump(value()));
         else if (a == "--dump-storage-prefix") o.dumps.push_back(parseDumpPrefix(value()));
@@ -362,6 +377,9 @@ Options parseOptions(int argc, char** argv) {
     if (o.rangePan > 0.0f && !o.updateRangePerFrame) fail("--range-pan needs --update-range-per-frame");
     if (!o.computeTimestamp && o.inFlight > 1) fail("--no-compute-timestamp is for one frame in flight (--in-flight " + std::to_string(o.inFlight) + " given)");
     checkDumps(o);
+    std::vector<uint32_t> storageBindings;
+    for (const StorageOption& s : o.storage) storageBindings.push_back(s.binding);
+    checkImageBindings(o.images, o.samplers, storageBindings);
     if (o.inFlight == 0) fail("--in-flight: must be at least 1");
     if (o.inFlight > 1) {
         // Each of these has one buffer that every frame would write or read at once.

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "images.hpp"
 #include "render_state.hpp"
 
 namespace gt {
@@ -73,6 +74,8 @@ struct Options {
     std::vector<StorageOption> storage;  // in command-line order
     std::vector<ComputeOption> computes; // dispatched in command-line order before the render pass
     std::vector<StorageDump> dumps;
+    std::vector<ImageOption> images;     // --image, in command-line order (images.hpp)
+    std::vector<SamplerOption> samplers; // --sampler
 
     std::string readbackPath;
     uint64_t readbackFloats = 0;
@@ -96,6 +99,15 @@ struct Options {
     std::optional<uint64_t> maxVerticesPerDraw;  // unset: 65,536 on lavapipe, no limit elsewhere
     std::optional<uint32_t> maxFactor;            // unset: the device's maxTessellationGenerationLevel
 };
+
+// One numeric field of a compound value in [minValue, maxValue]; the error names the option, the
+// field and the whole value.
+uint64_t parseField(const std::string& option, const std::string& value, const std::string& field,
+                    const std::string& text, uint64_t minValue, uint64_t maxValue);
+
+// The BINDING field of a compound value (--storage, --image, --sampler, ...): at most 1023 and not
+// one of the rig's own bindings.
+uint32_t parseStorageBinding(const std::string& option, const std::string& value, const std::string& bindingText);
 
 // Parses argv; throws gt::Error with the offending flag/value on bad input.
 Options parseOptions(int argc, char** argv);

@@ -14,6 +14,7 @@
 #include "device.hpp"
 #include "draw_split.hpp"
 #include "frames.hpp"
+#include "images.hpp"
 #include "inflight.hpp"
 #include "inputs.hpp"
 #include "pipeline.hpp"
@@ -180,6 +181,11 @@ int run(const Options& o) {
     if (inputs.snow) std::printf("inputs snow_resolution %u\n", inputs.snowResolution);
     std::printf("inputs range %.9g %.9g %.9g %.9g\n", inputs.params[0], inputs.params[1], inputs.params[2], inputs.params[3]);
     std::vector<StorageBuffer> storage = createStorageBuffers(gpu, o.storage);
+    SampledImages sampled = createSampledImages(gpu, o.images, o.samplers);
+    for (const ImageOption& i : o.images)
+        std::printf("inputs image %u %s %ux%u layers %u\n", i.binding, i.formatName.c_str(), i.width, i.height, i.layers);
+    for (const SamplerOption& s : o.samplers)
+        std::printf("inputs sampler %u %s\n", s.binding, s.compare ? "compare" : "plain");
 
     PipelineDesc desc;
     desc.mode = o.mode;
@@ -197,7 +203,7 @@ int run(const Options& o) {
     desc.frag = loadShader(gpu, o.fragPath, 4, o.fragEntry, "frag");
 
     RenderTarget target = createRenderTarget(gpu, o.width, o.height, depthClearValue(o.state.depth));
-    Pipeline pipeline = createPipeline(gpu, desc, target, inputs, storage);
+    Pipeline pipeline = createPipeline(gpu, desc, target, inputs, storage, sampled.descriptors);
     std::vector<ComputePass> compute = createComputePasses(gpu, o.computes, pipeline);
     DrawWork work = prepareWork(o, gpu);
 
@@ -261,6 +267,7 @@ int run(const Options& o) {
     destroyShader(gpu, desc.tese);
     destroyShader(gpu, desc.frag);
     destroyStorageBuffers(gpu, storage);
+    destroySampledImages(gpu, sampled);
     destroyInputs(gpu, inputs);
     destroyBuffer(gpu, placementPad);
     destroyGpu(gpu);

@@ -40,7 +40,7 @@ VkDescriptorSet allocateSet(const Gpu& gpu, const Pipeline& p) {
 }
 
 void createDescriptors(const Gpu& gpu, Pipeline& p, uint32_t sets, const Inputs& inputs,
-                       const std::vector<StorageBuffer>& storage) {
+                       const std::vector<StorageBuffer>& storage, const std::vector<ImageDescriptor>& images) {
     const std::vector<DescriptorEntry> entries = descriptorEntries(gpu, inputs, storage);
     const uint32_t uniforms = countOf(entries, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER);
     const uint32_t storages = countOf(entries, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER);
@@ -52,14 +52,16 @@ void createDescriptors(const Gpu& gpu, Pipeline& p, uint32_t sets, const Inputs&
              std::to_string(limit));
 
     // Compute included: the --compute kernels share this layout and read the rig's bindings too.
-    std::vector<VkDescriptorSetLayoutBinding> b(entries.size());
-    for (size_t i = 0; i < entries.size(); ++i) {
-        b[i].binding = entries[i].binding;
-        b[i].descriptorType = entries[i].type;
+    std::vector<VkDescriptorSetLayoutBinding> b(entries.size() + images.size());
+    for (size_t i = 0; i < b.size(); ++i) {
+        const bool buffer = i < entries.size();
+        b[i].binding = buffer ? entries[i].binding : images[i - entries.size()].binding;
+        b[i].descriptorType = buffer ? entries[i].type : images[i - entries.size()].type;
         b[i].descriptorCount = 1;
         b[i].stageFlags = VK_SHADER_STAGE_ALL_GRAPHICS | VK_SHADER_STAGE_COMPUTE_BIT;
+        p.bindings.push_back(b[i].binding);
     }
-    for (const DescriptorEntry& e : entries) p.bindings.push_back(e.binding);
+    p.images = images;
     std::sort(p.bindings.begin(), p.bindings.end());
     VkDescriptorSetLayoutCreateInfo li{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
     li.bindingCount = static_cast<uint32_t>(b.size());
@@ -67,15 +69,17 @@ void createDescriptors(const Gpu& gpu, Pipeline& p, uint32_t sets, const Inputs&
     GT_VK(vkCreateDescriptorSetLayout(gpu.device, &li, nullptr, &p.setLayout));
 
     // Room for the frames-in-flight sets too (addFrameSet): same layout, other buffers.
-    VkDescriptorPoolSize sizes[2] = {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, std::max(uniforms, 1u) * sets},
-                                     {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, storages * sets}};
+    std::vector<VkDescriptorPoolSize> sizes = {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, std::max(uniforms, 1u) * sets},
+                                               {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, storages * sets}};
+    for (const ImageDescriptor& d : images) sizes.push_back({d.type, sets});
     VkDescriptorPoolCreateInfo pi{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
     pi.maxSets = sets;
-    pi.poolSizeCount = 2;
-    pi.pPoolSizes = sizes;
+    pi.poolSizeCount = static_cast<uint32_t>(sizes.size());
+    pi.pPoolSizes = sizes.data();
     GT_VK(vkCreateDescriptorPool(gpu.device, &pi, nullptr, &p.pool));
     p.set = allocateSet(gpu, p);
     writeBufferDescriptors(gpu.device, p.set, entries);
+    writeImageDescriptors(gpu.device, p.set, images);
 }
 
 VkPipelineShaderStageCreateInfo stage(VkShaderStageFlagBits s, const ShaderModule& m) {
@@ -96,16 +100,18 @@ void checkShaderDescriptors(const ShaderModule& shader, const std::string& optio
         for (uint32_t b : pipeline.bindings) have += (have.empty() ? "" : " ") + std::to_string(b);
         const std::string hint = d.set != 0 ? "the harness binds set 0 only"
                                  : d.binding == kBindingSnowDepth ? "give --snow-depth and --snow-params"
-                                 : "give --storage " + std::to_string(d.binding) + ":BYTES";
+                                 : "give --storage " + std::to_string(d.binding) + ":BYTES (a buffer), --image " +
+                                       std::to_string(d.binding) + ":... (a texture) or --sampler " +
+                                       std::to_string(d.binding) + ":... (a sampler)";
         fail(option + " '" + shader.path + "' uses set " + std::to_string(d.set) + " binding " + std::to_string(d.binding) +
              ", which this run does not bind (set 0 has " + have + "): " + hint);
     }
 }
 
 Pipeline createPipeline(const Gpu& gpu, const PipelineDesc& d, const RenderTarget& target, const Inputs& inputs,
-                        const std::vector<StorageBuffer>& storage) {
+                        const std::vector<StorageBuffer>& storage, const std::vector<ImageDescriptor>& images) {
     Pipeline p;
-    createDescriptors(gpu, p, d.descriptorSets, inputs, storage);
+    createDescriptors(gpu, p, d.descriptorSets, inputs, storage, images);
     checkShaderDescriptors(d.vert, "--vert", p);
     if (d.mode == Mode::Tessellated) {
         checkShaderDescriptors(d.tesc, "--tesc", p);
@@ -196,10 +202,12 @@ VkDescriptorSet addFrameSet(const Gpu& gpu, const Pipeline& pipeline, const Inpu
     const std::vector<DescriptorEntry> entries = descriptorEntries(gpu, inputs, storage);
     std::vector<uint32_t> bindings;
     for (const DescriptorEntry& e : entries) bindings.push_back(e.binding);
+    for (const ImageDescriptor& d : pipeline.images) bindings.push_back(d.binding);
     std::sort(bindings.begin(), bindings.end());
     if (bindings != pipeline.bindings) fail("addFrameSet: the frame's buffers do not match set 0's bindings");
     VkDescriptorSet set = allocateSet(gpu, pipeline);
     writeBufferDescriptors(gpu.device, set, entries);
+    writeImageDescriptors(gpu.device, set, pipeline.images);
     return set;
 }
 

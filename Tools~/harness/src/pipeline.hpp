@@ -1,10 +1,11 @@
 // The graphics pipeline and its one descriptor set: set 0 with the rig's bindings 0..5 (6 with
-// snow) of internals.md plus the --storage buffers at their bindings; the compute pre-pass
-// (compute.hpp) uses the same layout and set.
+// snow) of internals.md plus the --storage buffers and the --image / --sampler descriptors at their
+// bindings; the compute pre-pass (compute.hpp) uses the same layout and set.
 #pragma once
 #include <vector>
 
 #include "cli.hpp"
+#include "images.hpp"
 #include "inputs.hpp"
 #include "spirv.hpp"
 #include "storage.hpp"
@@ -28,10 +29,11 @@ struct Pipeline {
     VkPipelineLayout layout = VK_NULL_HANDLE;
     VkPipeline pipeline = VK_NULL_HANDLE;
     std::vector<uint32_t> bindings;  // of set 0, ascending
+    std::vector<ImageDescriptor> images;  // --image / --sampler: the same in every frame's set
 };
 
 Pipeline createPipeline(const Gpu& gpu, const PipelineDesc& desc, const RenderTarget& target, const Inputs& inputs,
-                        const std::vector<StorageBuffer>& storage);
+                        const std::vector<StorageBuffer>& storage, const std::vector<ImageDescriptor>& images = {});
 void destroyPipeline(const Gpu& gpu, Pipeline& pipeline);
 
 // Another set 0 of the same layout over another frame's buffers (frames in flight: each has its

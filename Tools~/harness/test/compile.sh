@@ -28,6 +28,7 @@ c frag frag tiles.hlsl tiles.frag.spv
 c tese domain_shader tiles.hlsl tiles_storage.tese.spv -DGT_STORAGE_TEST
 c vert vert_fallback tiles.hlsl fallback_storage.vert.spv -DGT_STORAGE_TEST
 c comp pattern storage_pattern.hlsl pattern.comp.spv
+c comp probe sampling.hlsl sampling.comp.spv
 c comp tile_flags tile_scale.hlsl tile_flags.comp.spv
 c comp tile_scale tile_scale.hlsl tile_scale.comp.spv
 c vert vert mesh.hlsl mesh.vert.spv

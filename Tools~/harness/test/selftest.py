@@ -11,6 +11,8 @@ Runs gt-harness with the test shaders of this folder and checks what it must pro
   - the compute pre-pass (--storage/--compute/--dump-storage): a kernel's pattern dumped byte for
     byte, two chained kernels whose output the domain (or fallback vertex) stage reads, in order,
     with split draws, and its own timestamps;
+  - sampled images and separate samplers (--image/--sampler): sampling.hlsl's probes of a texel
+    fetch, a bilinear midpoint, a repeat wrap, an array layer and a comparison sampler, exactly;
   - bad input fails with a non-zero exit code and a message (exit code 1 and the option and value
     named for the compute options).
 Prints one "PASS name" / "FAIL name: why" line per check; exit 1 if any failed.
@@ -277,6 +279,44 @@ def compute_checks(lavapipe):
     check("unbound storage binding fails", p.returncode == 1 and "--tese" in p.stderr and "binding 8" in p.stderr, p.stderr)
 
 
+def image_checks():
+    """10. --image / --sampler: sampling.hlsl's probes (HarnessImageTests checks the same)."""
+    d = make_inputs(WORK + "/in_4x4_f8", 4, 8)
+    mesh = WORK + "/mesh"
+    values, depth, layers, dump = (WORK + "/" + n for n in ("values.f32", "depth.f32", "layers.u8", "probes.bin"))
+    write_f32(values, [v for i in range(16) for v in (i % 4 + 4 * (i // 4), 1000 - (i % 4) * (i // 4))])
+    write_f32(depth, [0.25, 0.75, 0.25, 0.75])
+    with open(layers, "wb") as f:
+        f.write(bytes([0, 0, 0, 0, 255, 0, 51, 102]))
+
+    def probes(op):
+        p, l = run(["--static-mesh", "--mesh", mesh + "/positions.f32", mesh + "/indices.u32", "--vert", SPV + "/mesh.vert.spv",
+                    "--frag", SPV + "/mesh.frag.spv", "--buffers", d, "--storage", "8:80",
+                    "--compute", SPV + "/sampling.comp.spv:1", "--dump-storage", "8:" + dump,
+                    "--image", "10:%s:R32G32_SFLOAT:4:4" % values, "--image", "11:%s:D32:2:2" % depth,
+                    "--image", "15:%s:R8G8B8A8_UNORM:1:1:2" % layers, "--sampler", "12:linear:clamp",
+                    "--sampler", "13:point:repeat", "--sampler", "14:point:clamp:" + op])
+        check("images and samplers run (%s)" % op, p.returncode == 0, p.stderr.strip())
+        if p.returncode != 0:
+            return None
+        with open(dump, "rb") as f:
+            return struct.unpack("<20f", f.read())
+
+    got = probes("compare-gequal")
+    if got:
+        check("texel fetch (3, 1)", got[0:2] == (7.0, 997.0), str(got[0:2]))
+        check("bilinear midpoint", got[4:6] == (7.5, 997.75), str(got[4:6]))
+        check("point repeat wraps to texel (1, 2)", got[8:10] == (9.0, 998.0), str(got[8:10]))
+        check("array layer 1", all(abs(a - b) < 1e-6 for a, b in zip(got[16:20], (1, 0, 51 / 255, 102 / 255))), str(got[16:20]))
+        check("compare-gequal (Unity's reversed depth)", got[12:16] == (1.0, 0.0, 1.0, 1.0), str(got[12:16]))
+    got = probes("compare-less")
+    if got:
+        check("compare-less inverts the probes", got[12:16] == (0.0, 1.0, 0.0, 0.0), str(got[12:16]))
+    p, _ = run(["--static-mesh", "--mesh", mesh + "/positions.f32", mesh + "/indices.u32", "--vert", SPV + "/mesh.vert.spv",
+                "--frag", SPV + "/mesh.frag.spv", "--buffers", d, "--sampler", "12:cubic"])
+    check("bad --sampler fails naming it", p.returncode == 1 and "--sampler" in p.stderr and "'cubic'" in p.stderr, p.stderr)
+
+
 def main():
     os.makedirs(WORK, exist_ok=True)
     p, l = run(["--list-devices"])
@@ -404,6 +444,7 @@ def main():
     check("unsplittable patch fails", p.returncode != 0 and "per-draw limit" in p.stderr, p.stderr)
 
     compute_checks(lavapipe)
+    image_checks()
 
     print("selftest %s (%d failed)" % ("PASSED" if failures == 0 else "FAILED", failures))
     sys.exit(1 if failures else 0)
