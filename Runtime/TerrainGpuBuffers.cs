@@ -16,7 +16,7 @@ namespace GregoryTerrain
         /// <summary>Null, the buffers made; else why the grid cannot be uploaded (nothing held).</summary>
         internal string Upload(PatchGrid g)
         {
-            Release();   // never leave live buffers to the finalizer
+            ReleaseGrid();   // never leave live buffers to the finalizer
             GregoryPatchRecord[] records;
             float[] regions, lines;
             // GpuLayout validates (bit-identical shared edges, float-representable lines) and packs.
@@ -34,7 +34,7 @@ namespace GregoryTerrain
                 GridLines.SetData(lines);
             }
             // GraphicsBuffer refuses a size over SystemInfo.maxGraphicsBufferSize: told once, not thrown every frame.
-            catch (ArgumentException e) { Release(); return e.Message; }
+            catch (ArgumentException e) { ReleaseGrid(); return e.Message; }
             Grid = g;
             return null;
         }
@@ -97,11 +97,16 @@ namespace GregoryTerrain
 
         internal void Release()
         {
+            ReleaseGrid();
+            FallbackIndices?.Release(); FallbackIndices = null;
+            ReleaseNoiseTable();
+        }
+
+        void ReleaseGrid()
+        {
             ControlPoints?.Release(); ControlPoints = null;
             Regions?.Release(); Regions = null;
             GridLines?.Release(); GridLines = null;
-            FallbackIndices?.Release(); FallbackIndices = null;
-            ReleaseNoiseTable();
             Grid = null;
         }
     }

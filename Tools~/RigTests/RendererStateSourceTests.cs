@@ -280,7 +280,7 @@ namespace GregoryTerrain.Rig.Tests
             int end = body.IndexOf("\n        }", StringComparison.Ordinal);   // the method's closing brace
             if (end > 0) body = body.Substring(0, end);
             int made = body.LastIndexOf("new GraphicsBuffer(", StringComparison.Ordinal);
-            int caught = body.IndexOf("catch (ArgumentException e) { Release(); return e.Message; }", Math.Max(made, 0), StringComparison.Ordinal);
+            int caught = body.IndexOf("catch (ArgumentException e) { ReleaseGrid(); return e.Message; }", Math.Max(made, 0), StringComparison.Ordinal);
             return made < 0 || caught < 0;
         }
 

@@ -50,7 +50,7 @@ namespace GregoryTerrain.Rig.Tests
         public void Read()
         {
             _guidToFile = new Dictionary<string, string>();
-            foreach (string meta in Directory.GetFiles(PackageRoot.Path, "*.meta", SearchOption.AllDirectories))
+            foreach (string meta in PackageRoot.FilesUnityImports("*.meta"))
             {
                 var m = MetaGuid.Match(File.ReadAllText(meta));
                 if (m.Success) _guidToFile[m.Groups[1].Value] = meta.Substring(0, meta.Length - ".meta".Length);

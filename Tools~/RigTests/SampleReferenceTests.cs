@@ -37,7 +37,7 @@ namespace GregoryTerrain.Rig.Tests
         static HashSet<string> PackageGuids()
         {
             var guids = new HashSet<string>();
-            foreach (var meta in Directory.GetFiles(PackageRoot.Path, "*.meta", SearchOption.AllDirectories))
+            foreach (var meta in PackageRoot.FilesUnityImports("*.meta"))
             {
                 if (meta.Contains(Path.DirectorySeparatorChar + ".")) continue;
                 var m = MetaGuid.Match(File.ReadAllText(meta));

@@ -95,7 +95,7 @@ namespace GregoryTerrain.Rig.Tests
         /// <summary>The serialized fields of a package script, in declaration order (SampleConsistencyTests' rule).</summary>
         static List<string> ScriptFields(string guid)
         {
-            string meta = Directory.GetFiles(PackageRoot.Path, "*.cs.meta", SearchOption.AllDirectories)
+            string meta = PackageRoot.FilesUnityImports("*.cs.meta")
                 .Single(m => File.ReadAllText(m).Contains("guid: " + guid));
             return SerializedPaths(File.ReadAllText(meta.Substring(0, meta.Length - ".meta".Length)), "");
         }

@@ -31,6 +31,7 @@ import math
 import os
 import re
 import struct
+import shutil
 import subprocess
 import sys
 
@@ -529,6 +530,10 @@ def prepare(a, pipeline, pass_name, keywords, buffers, out, compiler="glslang"):
     os.makedirs(tmp)
     sub, pas = find_pass(pipeline, pass_name)
     spvs = compile_pass(sub, pas, out, tmp, keywords, compiler)
+    # The include roots link back to the repository: left in .build, a walk of the package would loop.
+    for name in os.listdir(tmp):
+        if name.startswith("root-"):
+            shutil.rmtree(os.path.join(tmp, name))
     if not spvs:
         raise SystemExit(f"pipeline-pass: error: {pass_name} has no variant with exactly the keywords {keywords}")
     cam, o2w, o2c = rig_camera(buffers)
