@@ -1,9 +1,10 @@
 // URP's real passes of GregoryTerrain.shader, compiled against Unity's 2022.3 libraries and drawn by
 // the harness on lavapipe with every binding filled by name from one scene (Tools~/rig/pipeline_pass.py):
-// the sample grid, RigScene's zoom view, a sun 30 degrees up. One run draws five pictures (DepthOnly's
-// depth, ForwardLit's colour, ForwardLit's GT_DEBUG_NORMALS view of the same surface, ForwardLit's
-// colour from DXC's SPIR-V, and Built-in's ForwardBase colour); the tests grade them, and compare the
-// two pipelines where their lighting models agree. They fail (never skip) when gt-cli, the harness, glslang, spirv-cross or lavapipe is missing.
+// the sample grid, RigScene's zoom view, a sun 30 degrees up. One run draws DepthOnly's depth,
+// ForwardLit's colour, ForwardLit's GT_DEBUG_NORMALS view of the same surface, ForwardLit's colour from
+// DXC's SPIR-V, Built-in's ForwardBase colour, and URP's shadowed frame (ShadowCaster's map from the
+// sun, ForwardLit's _MAIN_LIGHT_SHADOWS variant: PipelinePassShadowTests.cs); the tests grade them, and
+// compare the two pipelines where their lighting models agree. They fail (never skip) when gt-cli, the harness, glslang, spirv-cross or lavapipe is missing.
 using System;
 using System.Collections.Generic;
 using System.Diagnostics;
@@ -17,10 +18,11 @@ using NUnit.Framework;
 namespace GregoryTerrain.Rig.Tests
 {
     [TestFixture]
-    public class PipelinePassGpuTests
+    public partial class PipelinePassGpuTests
     {
         /// <summary>The scene's arguments (pipeline_pass.py's defaults, written out so a reader sees them).</summary>
-        static readonly string[] Scene = { "--sun-elevation", "30", "--sun-azimuth", "-140", "--light-color", "1,0.96,0.9" };
+        static readonly string[] Scene = { "--sun-elevation", "30", "--sun-azimuth", "-140", "--light-color", "1,0.96,0.9",
+                                             "--shadow-sun-elevation", "12", "--shadow-sun-azimuth", "90" };
 
         // The harness's clear colour (sky, Tools~/harness/README.md), and what an 8-bit channel may round by.
         static readonly double[] Sky = { 0.55, 0.70, 0.90 };
@@ -89,7 +91,7 @@ namespace GregoryTerrain.Rig.Tests
         [Test]
         public void EveryMemberTheStagesRead_IsFilledByTheScene_AndEveryDefaultIsListed()
         {
-            foreach (string picture in new[] { "depth", "lit", "normals", "lit_dxc", "builtin_lit" })
+            foreach (string picture in new[] { "depth", "lit", "normals", "lit_dxc", "builtin_lit", "shadow_map", "lit_shadows" })
             {
                 JsonElement m = Manifest(picture);
                 string[] defaults = Strings(m.GetProperty("defaults")), filled = Strings(m.GetProperty("filled"));
@@ -171,27 +173,6 @@ namespace GregoryTerrain.Rig.Tests
             Assert.That(lit.Average() - away.Average(), Is.GreaterThan(0.15), "sunlit minus turned-away mean brightness");
             // albedo ~0.53 times (0.2 + N.L): a sun 30 degrees up over gentle hills lights N.L ~0.5 on average.
             Assert.That(all, Is.InRange(0.25, 0.50), "mean brightness of the terrain");
-        }
-
-        [Test]
-        public void MainLightShadowsVariant_BindsItsShadowMapAndComparisonSamplerByName_WithListedDefaults()
-        {
-            // The scene sets no shadow yet: the map is a 1x1 D32 at reversed depth's far plane, the
-            // sampler compares as Unity does under reversed depth, and the shadow block's members the
-            // stages read are listed as defaulted (strength 0), so the picture is the base one.
-            JsonElement m = Manifest("lit_shadows");
-            var kinds = m.GetProperty("bindings").EnumerateArray()
-                .ToDictionary(b => b.GetProperty("name").GetString(), b => b.GetProperty("kind").GetString());
-            Assert.That(kinds["_MainLightShadowmapTexture"], Is.EqualTo("separate_images"));
-            Assert.That(kinds["sampler_LinearClampCompare"], Is.EqualTo("separate_samplers"));
-            Assert.That(Strings(m.GetProperty("defaults")), Does.Contain("_MainLightShadowmapTexture=D32(0)")
-                .And.Contain("sampler_LinearClampCompare=point:clamp:compare-gequal"));
-            string args = string.Join(" ", Strings(m.GetProperty("harness_args")));
-            Assert.That(args, Does.Contain(":D32:1:1").And.Contain("--sampler"));
-            Assert.That(Strings(m.GetProperty("defaulted_read")),
-                Is.EquivalentTo(new[] { "_MainLightWorldToShadow=matrix", "_MainLightShadowParams=(0,0,0,0)" }));
-            RigPng shadows = RigPng.Read(Path.Combine(_out, "lit_shadows.png"));
-            Assert.That(_lit.PixelsDifferingFrom(shadows, 0), Is.Zero, "shadow strength 0 over an empty map: ForwardLit's base picture");
         }
 
         [Test]

@@ -15,14 +15,19 @@ rewritten), one file per binding, manifest.json (bindings, filled, defaults, rea
 harness arguments) and harness.log. Pictures: depth (DepthOnly: depth in R, ColorMask R), lit
 (ForwardLit, base variant), normals (ForwardLit with GT_DEBUG_NORMALS: world normal * 0.5 + 0.5),
 lit_dxc (ForwardLit base from DXC's SPIR-V, legalised at -O0, unreferenced resources dropped),
-builtin_lit (Built-in's ForwardBase, tessellated SubShader, base variant: one directional light).
+builtin_lit (Built-in's ForwardBase, tessellated SubShader, base variant: one directional light),
+shadow_map (URP's ShadowCaster drawn from the sun: OUT/shadow_map.f32, no PNG) and lit_shadows (ForwardLit
+_MAIN_LIGHT_SHADOWS sampling it; OUT/lit_shadows_depth.f32 its camera depth; OUT/shadow.json the
+light's matrices), both under --shadow-sun-elevation/--shadow-sun-azimuth.
 Uniform blocks are bound as storage buffers (--uniform-blocks storage: the harness rewrites the
 blocks, same offsets): the rig's lavapipe rule (one compile per SPIR-V, whatever the values) on every device.
 
-  gt pipeline_pass [--out DIR] [--only depth|lit|normals|lit_dxc|builtin_lit]... [--sun-elevation DEG] [--sun-azimuth DEG]
-      [--light-color R,G,B] [--leave-default NAME]... [--fill-from NAME=OTHER]...
---leave-default / --fill-from break the scene on purpose (the tests' broken inputs): a member left to
-its default, a member filled with another member's value (in each pipeline whose scene sets the names).
+  gt pipeline_pass [--out DIR] [--only depth|lit|normals|lit_dxc|builtin_lit|shadow_map|lit_shadows]...
+      [--sun-elevation DEG] [--sun-azimuth DEG] [--shadow-sun-elevation DEG] [--shadow-sun-azimuth DEG] [--light-color R,G,B]
+      [--leave-default NAME]... [--fill-from NAME=OTHER]... [--transpose NAME]...
+--leave-default / --fill-from / --transpose break the scene on purpose (the tests' broken inputs): a
+member left to its default, a member filled with another member's value, a matrix transposed (in each
+pipeline whose scene sets the names).
 """
 import argparse
 import concurrent.futures
@@ -251,15 +256,21 @@ class Camera:
 
     def __init__(self, eye, target, fov_y, width, height, near, far):
         self.eye, self.width, self.height, self.near, self.far = eye, width, height, near, far
-        f = normalize([t - e for t, e in zip(target, eye)])
-        up = [0.0, 0.0, 1.0] if abs(f[1]) > 0.99 else [0.0, 1.0, 0.0]
-        r = normalize(cross(up, f))       # left-handed world: right = up x forward
-        u = cross(f, r)
-        self.view = [r + [-dot(r, eye)], u + [-dot(u, eye)], [-x for x in f] + [dot(f, eye)], [0.0, 0.0, 0.0, 1.0]]
+        self.target, self.fov_y = target, fov_y
+        self.view = Camera.look_along(eye, normalize([t - e for t, e in zip(target, eye)]))
         t = 1.0 / math.tan(math.radians(fov_y) / 2.0)
         zz, zw = near / (far - near), near * far / (far - near)
         self.proj = [[t * height / width, 0, 0, 0], [0, t, 0, 0], [0, 0, zz, zw], [0, 0, -1, 0]]
         self.view_proj = mat_mul(self.proj, self.view)
+
+    @staticmethod
+    def look_along(eye, f):
+        """Unity's worldToCameraMatrix of a camera at eye looking along the unit vector f (camera space
+        right-handed, looking down -z)."""
+        up = [0.0, 0.0, 1.0] if abs(f[1]) > 0.99 else [0.0, 1.0, 0.0]
+        r = normalize(cross(up, f))       # left-handed world: right = up x forward
+        u = cross(f, r)
+        return [r + [-dot(r, eye)], u + [-dot(u, eye)], [-x for x in f] + [dot(f, eye)], [0.0, 0.0, 0.0, 1.0]]
 
 
 def rig_camera(buffers):
@@ -337,6 +348,93 @@ def urp_globals(cam, o2w, o2c, sun, light_color):
     }
 
 
+# URP's main-light shadow, one cascade, as URP 14 sets it. C# under
+# com.unity.render-pipelines.universal/Runtime/ (read through the code search; not in ../shared):
+# ShadowUtils.cs ExtractDirectionalLightMatrix, GetShadowTransform, GetShadowBias,
+# SetupShadowCasterConstantBuffer, RenderShadowSlice; Passes/MainLightShadowCasterPass.cs
+# RenderMainLightCascadeShadowmap, SetupMainLightShadowReceiverConstants.
+SHADOW_RESOLUTION = 2048     # the URP asset's default main-light shadow resolution
+SHADOW_DISTANCE = 3.0        # max shadow distance (world units): the zoom view's terrain is within 1.8 of the eye
+SHADOW_DEPTH_BIAS = 1.0      # the URP asset's default Depth Bias and Normal Bias, in shadow-map texels
+SHADOW_NORMAL_BIAS = 1.0
+SHADOW_NEAR_PLANE = 0.2      # Light.shadowNearPlane's default: how far the light's near plane is pulled back
+CASCADE_BORDER = 0.2         # the URP asset's default cascade border (the last cascade's fade), a fraction
+
+
+class MainLightShadow:
+    """The shadow slice Unity's CullingResults.ComputeDirectionalShadowMatricesAndCullingPrimitives
+    returns for one cascade (native code, not public: its documented behaviour) and what URP makes of it.
+    The culling sphere encloses the camera's frustum from near to the shadow distance: the rig takes the
+    smallest sphere centred on the view axis through the slice's far corners. view: the light's
+    world-to-camera (right-handed, looking down -z along the light's forward, -sun); proj: an
+    OpenGL-style orthographic projection of the sphere (z_gl -1 at near; Unity leaves it unreversed,
+    GetShadowTransform says so), its depth from the sphere's far side to SHADOW_NEAR_PLANE beyond its near side."""
+
+    def __init__(self, cam, sun, resolution=SHADOW_RESOLUTION, distance=SHADOW_DISTANCE):
+        self.resolution, self.distance = resolution, distance
+        t = math.tan(math.radians(cam.fov_y) / 2.0)
+        half_diagonal = distance * t * math.sqrt(1.0 + (cam.width / cam.height) ** 2)
+        along = (distance ** 2 + half_diagonal ** 2) / (2.0 * distance)     # equidistant from eye and far corners
+        forward = normalize([x - e for x, e in zip(cam.target, cam.eye)])
+        self.center = [e + along * f for e, f in zip(cam.eye, forward)]
+        self.radius = r = along
+        light_forward = [-x for x in sun]
+        eye = [c - (r + SHADOW_NEAR_PLANE) * f for c, f in zip(self.center, light_forward)]
+        self.view = Camera.look_along(eye, light_forward)
+        near, far = 0.0, 2.0 * r + SHADOW_NEAR_PLANE
+        self.proj = [[1.0 / r, 0, 0, 0], [0, 1.0 / r, 0, 0], [0, 0, -2.0 / (far - near), -(far + near) / (far - near)],
+                     [0, 0, 0, 1.0]]
+        # What the ShadowCaster pass draws with: Unity's GPU projection of proj on Vulkan (reversed depth:
+        # z = (w - z_gl) / 2, near 1, far 0). Unity renders into the shadow texture with clip y flipped
+        # and culling inverted; the rig draws y unflipped (same faces kept) and flips the map's rows
+        # instead (shadow_map_texels), so texture row 0 is v = 0 as GetShadowTransform's 0.5 y + 0.5 expects.
+        gpu = [row[:] for row in self.proj]
+        gpu[2] = [0.5 * w - 0.5 * z for z, w in zip(self.proj[2], self.proj[3])]
+        self.gpu_proj = gpu
+        self.view_proj = mat_mul(gpu, self.view)
+        # GetShadowTransform: z row negated under reversed depth, then x, y, z mapped from [-1, 1] to [0, 1].
+        reversed_proj = [row[:] for row in self.proj]
+        reversed_proj[2] = [-x for x in self.proj[2]]
+        scale_bias = [[0.5, 0, 0, 0.5], [0, 0.5, 0, 0.5], [0, 0, 0.5, 0.5], [0, 0, 0, 1.0]]
+        self.world_to_shadow = mat_mul(scale_bias, mat_mul(reversed_proj, self.view))
+        # GetShadowBias, directional: frustum size 2 / proj.m00, one texel = size / resolution; both
+        # biases negative (casters pushed away from the light and into their surface). Hard shadows:
+        # no soft-shadow kernel factor.
+        self.texel = 2.0 / self.proj[0][0] / resolution
+        self.bias = [-SHADOW_DEPTH_BIAS * self.texel, -SHADOW_NORMAL_BIAS * self.texel, 0.0, 0.0]
+        self.sun, self.eye = sun, eye
+
+    def fade(self):
+        """ShadowUtils.GetScaleAndBiasForLinearDistanceFade(maxShadowDistance^2, border): a linear fade
+        of the squared camera distance over the last (1 - (1 - border)^2) of it."""
+        d2 = self.distance ** 2
+        near = (1.0 - CASCADE_BORDER) ** 2 * d2
+        return 1.0 / (d2 - near), -near / (d2 - near)
+
+    def caster_values(self):
+        """ShadowUtils.SetupShadowCasterConstantBuffer and RenderShadowSlice's SetViewProjectionMatrices(view, proj)."""
+        return {"_ShadowBias": self.bias,
+                "_LightDirection": self.sun,                 # -localToWorld column 2: towards the light
+                "_LightPosition": self.eye + [1.0],          # localToWorld column 3 (read by punctual lights only)
+                "unity_MatrixVP": self.view_proj, "unity_MatrixV": self.view, "glstate_matrix_projection": self.gpu_proj,
+                "unity_MatrixInvV": affine_inverse(self.view), "unity_MatrixInvP": general_inverse(self.gpu_proj),
+                "unity_MatrixInvVP": general_inverse(self.view_proj)}
+
+    def receiver_values(self):
+        """MainLightShadowCasterPass.SetupMainLightShadowReceiverConstants with one cascade."""
+        n = self.resolution
+        no_op = [[0.0] * 4 for _ in range(4)]
+        no_op[2][2] = 1.0                                    # the unused cascades' no-op (reversed depth: z = 1)
+        fade_scale, fade_bias = self.fade()
+        return {"_MainLightWorldToShadow": [self.world_to_shadow] + [no_op] * 4,
+                # (shadowStrength 1: the Light's default, soft shadows 0: hard, fade scale, fade bias)
+                "_MainLightShadowParams": [1.0, 0.0, fade_scale, fade_bias],
+                # set when the asset supports soft shadows (its default): half-texel offsets and the size
+                "_MainLightShadowOffset0": [-0.5 / n, -0.5 / n, 0.5 / n, -0.5 / n],
+                "_MainLightShadowOffset1": [-0.5 / n, 0.5 / n, 0.5 / n, 0.5 / n],
+                "_MainLightShadowmapSize": [1.0 / n, 1.0 / n, float(n), float(n)]}
+
+
 def builtin_globals(cam, o2w, o2c, sun, light_color):
     """Built-in's members by name for ForwardBase with one directional light, each with where its
     layout comes from. Paths are under ../shared/unity-shaderlib/builtin-2022.3.62f1/CGIncludes/."""
@@ -410,7 +508,9 @@ def element_bytes(member, value):
         return struct.pack("<16f", *[value[r][c] for c in range(4) for r in range(4)])
     if t not in SCALARS:
         raise SystemExit(f"pipeline-pass: error: member {member['name']} has type {t}, which the scene cannot write")
-    return struct.pack("<" + SCALARS[t], *(value if isinstance(value, list) else [value]))
+    values = value if isinstance(value, list) else [value]
+    # A float4 Unity sets with SetGlobalVector fills a float2/float3 the shader declares with its first components.
+    return struct.pack("<" + SCALARS[t], *values[:struct.calcsize("<" + SCALARS[t]) // 4])
 
 
 def member_bytes(member, value):
@@ -439,6 +539,13 @@ def show(value):
     if isinstance(value, list):
         return "(" + ",".join(f"{x:g}" for x in value) + ")"
     return f"{value:g}"
+
+
+def transposed(value):
+    """A matrix transposed, or each matrix of an array (--transpose: a broken input)."""
+    if value and isinstance(value[0], list) and value[0] and isinstance(value[0][0], list):
+        return [transposed(m) for m in value]
+    return [[value[c][r] for c in range(4)] for r in range(4)]
 
 
 def fill_block(name, members, size, values, report):
@@ -498,7 +605,12 @@ def sampler_default(name):
     return ("point" if "point" in low else "linear") + ":" + wrap
 
 
-def default_image_or_sampler(name, kind, type_name, binding, path, report):
+def default_image_or_sampler(name, kind, type_name, binding, path, report, images):
+    if kind == "separate_images" and name in images:      # an image the frame drew (the shadow map)
+        fmt, file, w, h = images[name]
+        report["filled"].append(name)
+        return {"name": name, "binding": binding, "kind": kind, "format": fmt, "file": file, "bytes": 4 * w * h,
+                "arrayed": "Array" in type_name, "size": [w, h]}
     if kind == "separate_samplers":
         value = sampler_default(name)
         report["defaults"].append(f"{name}={value}")
@@ -508,7 +620,7 @@ def default_image_or_sampler(name, kind, type_name, binding, path, report):
         f.write(struct.pack(f"<{len(texel)}f", *texel))
     report["defaults"].append(f"{name}={fmt}({','.join(show(x) for x in texel)})")
     return {"name": name, "binding": binding, "kind": kind, "format": fmt, "file": path, "bytes": 4 * len(texel),
-            "arrayed": "Array" in type_name}
+            "arrayed": "Array" in type_name, "size": [1, 1]}
 
 
 def layout_key(layout):
@@ -521,9 +633,13 @@ def layout_key(layout):
                               str(m.get("array"))) for m in members)
 
 
-def prepare(a, pipeline, pass_name, keywords, buffers, out, compiler="glslang"):
-    """Compiles the pass's variant, fills its bindings from the scene, writes out/manifest.json and
-    returns the harness arguments (stages, bindings, the pass's render state)."""
+def prepare(a, pipeline, pass_name, keywords, buffers, out, compiler="glslang", scene=None, images=None, sun=None):
+    """Compiles the pass's variant, fills its bindings from the scene (scene: values that replace or
+    add to the pipeline's, e.g. the light's view in a shadow pass; images: textures the frame drew,
+    name -> (FORMAT, file, W, H); sun: towards the main light, default --sun-elevation/--sun-azimuth's),
+    writes out/manifest.json and returns the harness arguments (stages, bindings, the pass's render state)."""
+    images = images or {}
+    sun = sun or sun_direction(a.sun_elevation, a.sun_azimuth)
     os.makedirs(out, exist_ok=True)
     tmp = os.path.join(out, "work")
     subprocess.run(["rm", "-rf", tmp], check=True)
@@ -537,7 +653,8 @@ def prepare(a, pipeline, pass_name, keywords, buffers, out, compiler="glslang"):
     if not spvs:
         raise SystemExit(f"pipeline-pass: error: {pass_name} has no variant with exactly the keywords {keywords}")
     cam, o2w, o2c = rig_camera(buffers)
-    values = GLOBALS[pipeline](cam, o2w, o2c, sun_direction(a.sun_elevation, a.sun_azimuth), a.light_color)
+    values = GLOBALS[pipeline](cam, o2w, o2c, sun, a.light_color)
+    values.update(scene or {})
     # A broken input applies to the pipelines whose scene sets the names (main() checks that one does).
     for name in a.leave_default:
         values.pop(name, None)
@@ -545,6 +662,9 @@ def prepare(a, pipeline, pass_name, keywords, buffers, out, compiler="glslang"):
         dst, _, src = pair.partition("=")
         if dst in values and src in values:
             values[dst] = values[src]
+    for name in a.transpose:
+        if name in values:
+            values[name] = transposed(values[name])
     values.update(terrain_params(buffers))
 
     # One binding per resource name across the stages; a name whose layout differs between stages fails.
@@ -577,7 +697,7 @@ def prepare(a, pipeline, pass_name, keywords, buffers, out, compiler="glslang"):
         kind, members, size = layouts[name]
         path = os.path.join(out, f"binding_{binding_of[name]}_{re.sub(r'[^A-Za-z0-9_]', '', name)}.bin")
         if kind in ("separate_images", "separate_samplers"):
-            bindings.append(default_image_or_sampler(name, kind, size, binding_of[name], path, report))
+            bindings.append(default_image_or_sampler(name, kind, size, binding_of[name], path, report, images))
             continue
         if kind == "uniform":
             data = fill_block(name, members, size, values, report)
@@ -600,7 +720,8 @@ def prepare(a, pipeline, pass_name, keywords, buffers, out, compiler="glslang"):
             args += [f"--{stage}", spvs[stage]]
     for b in bindings:
         if b["kind"] == "separate_images":
-            args += ["--image", f"{b['binding']}:{b['file']}:{b['format']}:1:1" + (":1" if b["arrayed"] else "")]
+            args += ["--image", f"{b['binding']}:{b['file']}:{b['format']}:{b['size'][0]}:{b['size'][1]}"
+                     + (":1" if b["arrayed"] else "")]
         elif b["kind"] == "separate_samplers":
             args += ["--sampler", f"{b['binding']}:{b['sampler']}"]
         else:
@@ -611,7 +732,7 @@ def prepare(a, pipeline, pass_name, keywords, buffers, out, compiler="glslang"):
     variant = "+".join(keywords) or "base"
     manifest = {"pipeline": pipeline, "pass": pas.name, "variant": variant, "compiler": compiler, "bindings": bindings,
                 "filled": report["filled"], "defaults": report["defaults"], "reads": reads,
-                "defaulted_read": defaulted_read, "state": state, "sun": sun_direction(a.sun_elevation, a.sun_azimuth),
+                "defaulted_read": defaulted_read, "state": state, "sun": sun,
                 "light_color": a.light_color, "harness_args": args}
     with open(os.path.join(out, "manifest.json"), "w") as f:
         json.dump(manifest, f, indent=1)
@@ -651,19 +772,40 @@ TILES, WIDTH, HEIGHT = 16, 400, 300
 PICTURES = [("depth", "URP", "DepthOnly", [], "glslang"), ("lit", "URP", "ForwardLit", [], "glslang"),
             ("normals", "URP", "ForwardLit", ["GT_DEBUG_NORMALS"], "glslang"), ("lit_dxc", "URP", "ForwardLit", [], "dxc"),
             ("builtin_lit", "Builtin", "ForwardBase", [], "glslang"),
+            ("shadow_map", "URP", "ShadowCaster", [], "glslang"),
             ("lit_shadows", "URP", "ForwardLit", ["_MAIN_LIGHT_SHADOWS"], "glslang")]
+# shadow_map: URP's ShadowCaster (base variant: a directional light) drawn from the main light into a
+# SHADOW_RESOLUTION^2 depth map (--depth-out; no colour, ColorMask 0); lit_shadows: ForwardLit's
+# _MAIN_LIGHT_SHADOWS variant sampling it, its LightShadows block filled as URP does, and its camera
+# depth written too (lit_shadows_depth.f32: the tests recover each pixel's world position from it).
+SHADOW_PICTURES = {"shadow_map": "lit_shadows"}
 
 
-def draw(args, buffers, png, log):
+def draw(args, buffers, png, log, size=(WIDTH, HEIGHT), depth_out=None):
     harness = os.path.join(PKG_DIR, ".build", "harness", "gt-harness")
-    cmd = [harness] + args + ["--buffers", buffers, "--patches", str(TILES * TILES), "--width", str(WIDTH),
-                              "--height", str(HEIGHT), "--png", png]
+    cmd = [harness] + args + ["--buffers", buffers, "--patches", str(TILES * TILES), "--width", str(size[0]),
+                              "--height", str(size[1])]
+    cmd += ["--png", png] if png else []
+    cmd += ["--depth-out", depth_out] if depth_out else []
     r = subprocess.run(cmd, capture_output=True, text=True)
     with open(log, "w") as f:
         f.write(" ".join(cmd) + "\n" + r.stdout + r.stderr)
     if r.returncode != 0:
         raise SystemExit(f"pipeline-pass: error: the harness failed ({log}):\n{r.stdout[-2000:]}{r.stderr}")
-    print(f"picture {png} " + " ".join(l for l in r.stdout.splitlines() if l.startswith(("image ", "state "))))
+    print(f"picture {png or depth_out} " + " ".join(l for l in r.stdout.splitlines()
+                                                    if l.startswith(("image ", "state ", "depth_out "))))
+
+
+def shadow_map_texels(depth_out, texels, n):
+    """The harness's depth (top row first: clip y = +1, the light's up) as the shadow texture's rows
+    (row 0 at v = 0, where GetShadowTransform puts the light's y = -1): the rows reversed."""
+    with open(depth_out, "rb") as f:
+        data = f.read()
+    row = 4 * n
+    if len(data) != row * n:
+        raise SystemExit(f"pipeline-pass: error: {depth_out} has {len(data)} bytes, expected {row * n}")
+    with open(texels, "wb") as f:
+        f.write(b"".join(data[(n - 1 - j) * row:(n - j) * row] for j in range(n)))
 
 
 def main(argv=None):
@@ -675,9 +817,16 @@ def main(argv=None):
                        help="degrees above the horizon (default 30)")
     options.add_number(ap, "--sun-azimuth", range="azimuth", default=-140.0,
                        help="degrees from +z towards +x (default -140: from the camera's front left)")
+    options.add_number(ap, "--shadow-sun-elevation", range="elevation", default=12.0,
+                       help="the shadowed frame's sun (shadow_map, lit_shadows): degrees above the horizon (default 12: "
+                            "the sample grid's hills cast a large shadow only under a low sun)")
+    options.add_number(ap, "--shadow-sun-azimuth", range="azimuth", default=90.0,
+                       help="the shadowed frame's sun: degrees from +z towards +x (default 90: from the right, across "
+                            "the ridges; 12% of the sunlit terrain in their shadow)")
     ap.add_argument("--light-color", default="1,0.96,0.9", help="R,G,B: the main light's final colour (linear)")
     ap.add_argument("--leave-default", action="append", default=[], help="NAME: leave a member to its default")
     ap.add_argument("--fill-from", action="append", default=[], help="NAME=OTHER: fill NAME with OTHER's value")
+    ap.add_argument("--transpose", action="append", default=[], help="NAME: fill the matrix NAME (each, for an array) transposed")
     a = ap.parse_args(argv)
     try:
         a.light_color = [float(x) for x in a.light_color.split(",")]
@@ -685,9 +834,11 @@ def main(argv=None):
             raise ValueError
     except ValueError:
         ap.error(f"argument --light-color: expected R,G,B, each 0..1000, got '{a.light_color}'")
-    scene_names = [set(g(cam, identity, identity, [0.0, 1.0, 0.0], [1.0] * 3)) for g in GLOBALS.values()
-                   for cam, identity in [(Camera([0.0, 1.0, -1.0], [0.0] * 3, 50.0, 4, 3, 0.01, 20.0),
-                                          [[1.0 if i == j else 0.0 for j in range(4)] for i in range(4)])]]
+    probe = Camera([0.0, 1.0, -1.0], [0.0] * 3, 50.0, 4, 3, 0.01, 20.0)
+    identity = [[1.0 if i == j else 0.0 for j in range(4)] for i in range(4)]
+    scene_names = [set(g(probe, identity, identity, [0.0, 1.0, 0.0], [1.0] * 3)) for g in GLOBALS.values()]
+    shadow = MainLightShadow(probe, normalize([0.3, 0.5, 0.2]))
+    scene_names.append(set(shadow.caster_values()) | set(shadow.receiver_values()))
     for name in a.leave_default:
         if not any(name in names for names in scene_names):
             ap.error(f"argument --leave-default: no pipeline's scene sets '{name}'")
@@ -695,14 +846,43 @@ def main(argv=None):
         dst, _, src = pair.partition("=")
         if not any(dst in names and src in names for names in scene_names):
             ap.error(f"argument --fill-from: '{pair}': no pipeline's scene sets both names")
+    for name in a.transpose:
+        if not any(isinstance(v, list) and v and isinstance(v[0], list)
+                   for names in [{**g(probe, identity, identity, [0.0, 1.0, 0.0], [1.0] * 3), **shadow.receiver_values(),
+                                  **shadow.caster_values()} for g in GLOBALS.values()] for k, v in names.items() if k == name):
+            ap.error(f"argument --transpose: no pipeline's scene sets a matrix '{name}'")
     os.makedirs(a.out, exist_ok=True)
     buffers = pack_scene(a.out)
+    cam, _, _ = rig_camera(buffers)
+    shadow = MainLightShadow(cam, sun_direction(a.shadow_sun_elevation, a.shadow_sun_azimuth))
+    texels = os.path.join(a.out, "shadow_map_texels.f32")
+    wanted = set(a.only or [p[0] for p in PICTURES])
+    wanted |= {m for m, receiver in SHADOW_PICTURES.items() if receiver in wanted}   # a receiver needs its map
     for picture, pipeline, pass_name, keywords, compiler in PICTURES:
-        if a.only and picture not in a.only:
+        if picture not in wanted:
             continue
         folder = os.path.join(a.out, picture)
-        args = prepare(a, pipeline, pass_name, keywords, buffers, folder, compiler)
-        draw(args, buffers, os.path.join(a.out, picture + ".png"), os.path.join(folder, "harness.log"))
+        log = os.path.join(folder, "harness.log")
+        if picture in SHADOW_PICTURES:
+            args = prepare(a, pipeline, pass_name, keywords, buffers, folder, compiler, scene=shadow.caster_values(),
+                           sun=shadow.sun)
+            depth = os.path.join(a.out, picture + ".f32")
+            draw(args, buffers, None, log, (shadow.resolution, shadow.resolution), depth)
+            shadow_map_texels(depth, texels, shadow.resolution)
+        elif picture in SHADOW_PICTURES.values():
+            args = prepare(a, pipeline, pass_name, keywords, buffers, folder, compiler, scene=shadow.receiver_values(),
+                           images={"_MainLightShadowmapTexture": ("D32", texels, shadow.resolution, shadow.resolution)},
+                           sun=shadow.sun)
+            draw(args, buffers, os.path.join(a.out, picture + ".png"), log,
+                 depth_out=os.path.join(a.out, picture + "_depth.f32"))
+        else:
+            args = prepare(a, pipeline, pass_name, keywords, buffers, folder, compiler)
+            draw(args, buffers, os.path.join(a.out, picture + ".png"), log)
+    with open(os.path.join(a.out, "shadow.json"), "w") as f:
+        json.dump({"resolution": shadow.resolution, "distance": shadow.distance, "texel": shadow.texel,
+                   "bias": shadow.bias, "radius": shadow.radius, "center": shadow.center,
+                   "world_to_shadow": shadow.world_to_shadow, "camera_view_proj": cam.view_proj,
+                   "object_to_world": rig_camera(buffers)[1], "sun": shadow.sun}, f, indent=1)
 
 
 if __name__ == "__main__":

@@ -214,6 +214,8 @@ const char* usageText() {
   --static-mesh --mesh P.f32 I.u32   draw a static float3/uint32 mesh with --vert/--frag
   --width W --height H           render target size (default 256x256)
   --png FILE                     write the colour image as PNG
+  --depth-out FILE               write the depth attachment after the last frame: W*H float32,
+                                 row-major, top row first (the PNG's order)
   --wireframe                    polygonMode LINE (needs fillModeNonSolid)
   --cull back|front|off          the drawn pass's render state, in ShaderLab's words (any case);
   --ztest less|lequal|equal|gequal|greater|notequal|always|never
@@ -318,6 +320,7 @@ Options parseOptions(int argc, char** argv) {
         else if (a == "--width") o.width = u32(16384);
         else if (a == "--height") o.height = u32(16384);
         else if (a == "--png") o.pngPath = value();
+        else if (a == "--depth-out") o.depthOutPath = value();
         else if (a == "--wireframe") o.wireframe = true;
         else if (a == "--cull") o.state.cull = parseCull(a, value());
         else if (a == "--ztest") o.state.zTest = parseZTest(a, value());
@@ -377,6 +380,8 @@ Options parseOptions(int argc, char** argv) {
     if (o.rangePan > 0.0f && !o.updateRangePerFrame) fail("--range-pan needs --update-range-per-frame");
     if (!o.computeTimestamp && o.inFlight > 1) fail("--no-compute-timestamp is for one frame in flight (--in-flight " + std::to_string(o.inFlight) + " given)");
     checkDumps(o);
+    if (!o.depthOutPath.empty() && o.depthOutPath == o.pngPath)
+        fail("--depth-out '" + o.depthOutPath + "' is also the --png file: give them different names");
     std::vector<uint32_t> storageBindings;
     for (const StorageOption& s : o.storage) storageBindings.push_back(s.binding);
     checkImageBindings(o.images, o.samplers, storageBindings);

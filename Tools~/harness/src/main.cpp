@@ -132,6 +132,15 @@ void printTimes(const char* key, std::vector<double> ms) {
     std::printf("time %s_mean %.6f\n", key, mean);
 }
 
+// --depth-out: the depth attachment's floats, raw, in the PNG's row order; prints where and how
+// many of them differ from the clear value (the pixels some draw wrote).
+void writeDepthOut(const Gpu& gpu, const RenderTarget& target, const std::string& path) {
+    const std::vector<float> depth = readDepth(gpu, target);
+    writeFile(path, depth.data(), depth.size() * 4);
+    const auto written = std::count_if(depth.begin(), depth.end(), [&](float d) { return d != target.depthClear; });
+    std::printf("depth_out %s %u %u written %lld\n", path.c_str(), target.width, target.height, static_cast<long long>(written));
+}
+
 int run(const Options& o) {
     if (o.listDevices) {
         listDevices();
@@ -202,7 +211,7 @@ int run(const Options& o) {
     }
     desc.frag = loadShader(gpu, o.fragPath, 4, o.fragEntry, "frag");
 
-    RenderTarget target = createRenderTarget(gpu, o.width, o.height, depthClearValue(o.state.depth));
+    RenderTarget target = createRenderTarget(gpu, o.width, o.height, depthClearValue(o.state.depth), !o.depthOutPath.empty());
     Pipeline pipeline = createPipeline(gpu, desc, target, inputs, storage, sampled.descriptors);
     std::vector<ComputePass> compute = createComputePasses(gpu, o.computes, pipeline);
     DrawWork work = prepareWork(o, gpu);
@@ -245,6 +254,7 @@ int run(const Options& o) {
         writePng(o.pngPath, rgba.data(), o.width, o.height);
         std::printf("png %s %u %u\n", o.pngPath.c_str(), o.width, o.height);
     }
+    if (!o.depthOutPath.empty()) writeDepthOut(gpu, target, o.depthOutPath);
     if (!o.readbackPath.empty()) {
         const uint64_t nan = dumpReadback(inputs.bindings[kBindingReadback], o.readbackFloats, o.readbackPath);
         std::printf("readback %s floats %llu nan %llu\n", o.readbackPath.c_str(),

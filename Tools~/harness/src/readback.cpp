@@ -3,6 +3,8 @@
 #include <cmath>
 #include <cstdlib>
 
+#include "check.hpp"
+
 namespace gt {
 
 std::vector<uint8_t> readColor(const Gpu& gpu, const RenderTarget& t) {
@@ -23,6 +25,38 @@ std::vector<uint8_t> readColor(const Gpu& gpu, const RenderTarget& t) {
     std::vector<uint8_t> rgba(p, p + size);
     destroyBuffer(gpu, host);
     return rgba;
+}
+
+std::vector<float> readDepth(const Gpu& gpu, const RenderTarget& t) {
+    if (!t.depthReadable) fail("readDepth: the render target was created without a readable depth attachment");
+    const VkDeviceSize size = static_cast<VkDeviceSize>(t.width) * t.height * 4;
+    Buffer host = createHostBuffer(gpu, size, VK_BUFFER_USAGE_TRANSFER_DST_BIT);
+    submitOnce(gpu, [&](VkCommandBuffer cmd) {
+        // The render pass leaves depth in DEPTH_STENCIL_ATTACHMENT_OPTIMAL, stored.
+        VkImageMemoryBarrier toCopy{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER};
+        toCopy.srcAccessMask = VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT;
+        toCopy.dstAccessMask = VK_ACCESS_TRANSFER_READ_BIT;
+        toCopy.oldLayout = VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL;
+        toCopy.newLayout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
+        toCopy.srcQueueFamilyIndex = toCopy.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+        toCopy.image = t.depth.image;
+        toCopy.subresourceRange = {VK_IMAGE_ASPECT_DEPTH_BIT, 0, 1, 0, 1};
+        vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 0, nullptr,
+                             0, nullptr, 1, &toCopy);
+        VkBufferImageCopy region{};
+        region.imageSubresource = {VK_IMAGE_ASPECT_DEPTH_BIT, 0, 0, 1};
+        region.imageExtent = {t.width, t.height, 1};
+        vkCmdCopyImageToBuffer(cmd, t.depth.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, host.buffer, 1, &region);
+        VkMemoryBarrier toHost{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+        toHost.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
+        toHost.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
+        vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 1, &toHost, 0, nullptr, 0,
+                             nullptr);
+    });
+    const float* p = static_cast<const float*>(host.mapped);
+    std::vector<float> depth(p, p + static_cast<size_t>(t.width) * t.height);
+    destroyBuffer(gpu, host);
+    return depth;
 }
 
 uint64_t countNonSkyPixels(const std::vector<uint8_t>& rgba) {

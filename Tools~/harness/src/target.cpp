@@ -59,14 +59,16 @@ void destroyImage(const Gpu& gpu, Image& img) {
 
 }  // namespace
 
-RenderTarget createRenderTarget(const Gpu& gpu, uint32_t width, uint32_t height, float depthClear) {
+RenderTarget createRenderTarget(const Gpu& gpu, uint32_t width, uint32_t height, float depthClear, bool depthReadable) {
     RenderTarget t;
+    t.depthReadable = depthReadable;
     t.width = width;
     t.height = height;
     t.depthClear = depthClear;
     t.color = createImage(gpu, width, height, kColorFormat,
                           VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT, VK_IMAGE_ASPECT_COLOR_BIT);
-    t.depth = createImage(gpu, width, height, kDepthFormat, VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT,
+    t.depth = createImage(gpu, width, height, kDepthFormat,
+                          VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | (depthReadable ? VK_IMAGE_USAGE_TRANSFER_SRC_BIT : 0),
                           VK_IMAGE_ASPECT_DEPTH_BIT);
 
     VkAttachmentDescription att[2]{};
@@ -80,7 +82,7 @@ RenderTarget createRenderTarget(const Gpu& gpu, uint32_t width, uint32_t height,
     att[0].finalLayout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
     att[1] = att[0];
     att[1].format = kDepthFormat;
-    att[1].storeOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
+    att[1].storeOp = depthReadable ? VK_ATTACHMENT_STORE_OP_STORE : VK_ATTACHMENT_STORE_OP_DONT_CARE;
     att[1].finalLayout = VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL;
     VkAttachmentReference colorRef{0, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
     VkAttachmentReference depthRef{1, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL};

@@ -1,0 +1,218 @@
+// URP's main-light shadow in the rig's frame (pipeline_pass.py: ShadowCaster drawn from the sun into a
+// 2048^2 map, ForwardLit's _MAIN_LIGHT_SHADOWS variant sampling it with the LightShadows block URP
+// fills). The shadow's place is checked against Core: each covered pixel's world position, recovered
+// from the forward pass's own depth, casts a ray toward the sun on TerrainSurfaceQuery's exact surface.
+using System;
+using System.Collections.Generic;
+using System.IO;
+using System.Linq;
+using System.Text.Json;
+using System.Threading.Tasks;
+using NUnit.Framework;
+
+namespace GregoryTerrain.Rig.Tests
+{
+    public partial class PipelinePassGpuTests
+    {
+        /// <summary>One covered pixel's verdicts: the GPU's (from the pictures) and the CPU ray test's.</summary>
+        struct ShadowSample
+        {
+            public int Pixel;
+            public bool Gpu, Cpu, NearEdge;
+        }
+
+        RigPng _litShadows;
+        JsonElement _shadow;
+        double[] _shadowSun;     // the shadowed frame's sun (Scene: 12 degrees up, from +x)
+        const double MinNDotL = 0.25;   // the sunlit pixels graded: N.L at least this
+        List<ShadowSample> _samples;
+        double _edgeTolerance;   // world units
+
+        static double[] Doubles(JsonElement e) => e.EnumerateArray().Select(x => x.GetDouble()).ToArray();
+
+        static double[,] Matrix(JsonElement e)
+        {
+            var rows = e.EnumerateArray().Select(Doubles).ToArray();
+            var m = new double[4, 4];
+            for (int r = 0; r < 4; r++) for (int c = 0; c < 4; c++) m[r, c] = rows[r][c];
+            return m;
+        }
+
+        static double[,] Inverse(double[,] m)
+        {
+            var a = new double[4, 8];
+            for (int r = 0; r < 4; r++) for (int c = 0; c < 4; c++) { a[r, c] = m[r, c]; a[r, 4 + c] = r == c ? 1 : 0; }
+            for (int c = 0; c < 4; c++)
+            {
+                int p = Enumerable.Range(c, 4 - c).OrderByDescending(r => Math.Abs(a[r, c])).First();
+                for (int k = 0; k < 8; k++) (a[c, k], a[p, k]) = (a[p, k], a[c, k]);
+                double pivot = a[c, c];
+                for (int k = 0; k < 8; k++) a[c, k] /= pivot;
+                for (int r = 0; r < 4; r++)
+                    if (r != c) { double f = a[r, c]; for (int k = 0; k < 8; k++) a[r, k] -= f * a[c, k]; }
+            }
+            var inv = new double[4, 4];
+            for (int r = 0; r < 4; r++) for (int c = 0; c < 4; c++) inv[r, c] = a[r, 4 + c];
+            return inv;
+        }
+
+        static double[] Mul(double[,] m, double[] v) =>
+            Enumerable.Range(0, 4).Select(r => Enumerable.Range(0, 4).Sum(c => m[r, c] * v[c])).ToArray();
+
+        /// <summary>The picture's colour above the ambient term, averaged over the channels: the light's share.</summary>
+        double DirectShare(RigPng png, int p) => Enumerable.Range(0, 3).Average(c => Channel(png, p, c) - _albedo[c] * _ambient);
+
+        /// <summary>N.L of the shadowed frame's sun, N from the normals view (the same surface).</summary>
+        double ShadowNDotL(int p)
+        {
+            var n = Enumerable.Range(0, 3).Select(c => Channel(_normals, p, c) * 2 - 1).ToArray();
+            double len = Math.Sqrt(n.Sum(x => x * x));
+            return Enumerable.Range(0, 3).Sum(c => n[c] / len * _shadowSun[c]);
+        }
+
+        /// <summary>Lambert's colour channel without a shadow (TheLitPicture_IsLambertOfThePassesOwnNormals holds it within 3/255).</summary>
+        double Unshadowed(int p, int c) => _albedo[c] * (_ambient + _light[c] * Math.Max(0, ShadowNDotL(p)));
+
+        /// <summary>
+        /// Draws nothing: reads what the fixture's run drew and classifies every third covered pixel in x
+        /// and y (about 9,000) by the GPU's verdict and the CPU ray test's, in parallel.
+        /// </summary>
+        void LoadShadowSamples()
+        {
+            if (_samples != null) return;
+            _litShadows = RigPng.Read(Path.Combine(_out, "lit_shadows.png"));
+            _shadow = JsonDocument.Parse(File.ReadAllText(Path.Combine(_out, "shadow.json"))).RootElement;
+            _shadowSun = Doubles(Manifest("lit_shadows").GetProperty("sun"));
+            byte[] depthBytes = File.ReadAllBytes(Path.Combine(_out, "lit_shadows_depth.f32"));
+            int w = _lit.Width, h = _lit.Height;
+            Assert.That(depthBytes.Length, Is.EqualTo(4 * w * h), "lit_shadows_depth.f32: the forward pass's W * H depth");
+            double[,] clipToWorld = Inverse(Matrix(_shadow.GetProperty("camera_view_proj")));
+            double[,] worldToObject = Inverse(Matrix(_shadow.GetProperty("object_to_world")));
+            double[] sun = _shadowSun;
+            double texel = _shadow.GetProperty("texel").GetDouble();
+            // Object space is (x, height, y) of terrain space; the object-to-world scale is uniform.
+            double[] sunObject = Mul(worldToObject, new[] { sun[0], sun[1], sun[2], 0.0 });
+            var sunTerrain = new Double3(sunObject[0], sunObject[2], sunObject[1]);
+            double worldPerTerrain = 1.0 / Math.Sqrt(sunObject.Take(3).Sum(x => x * x));
+            var query = new TerrainSurfaceQuery(PatchGridJson.ReadFile(Path.Combine(_out, "grid.json")), null);
+
+            // How far the map may move an edge on the receiver (world units): point sampling (half a texel
+            // either way, 1) and URP's depth and normal bias (1 texel each along the light and the
+            // normal, 2), across the light; on a receiver lit at N.L that stretches by 1 / N.L, at most
+            // 1 / MinNDotL = 4: (1 + 2) * 4 = 12 texels. Pixels whose CPU verdict changes within that
+            // distance are edge pixels, left out of the agreement.
+            _edgeTolerance = 3 * texel / MinNDotL;
+            double start = 2 * texel / worldPerTerrain;   // rays start past URP's bias (terrain units)
+            double reach = _edgeTolerance / worldPerTerrain;
+
+            bool Shadowed(double x, double y, double z) =>
+                query.Raycast(new TerrainRay(new Double3(x, y, z) + sunTerrain * (start / GMath.length(sunTerrain)), sunTerrain, 10.0),
+                              out _, 1e-7) == TerrainRayStatus.Hit;
+
+            var chosen = _covered.Where(p => p % w % 3 == 0 && p / w % 3 == 0).ToArray();
+            var samples = new ShadowSample?[chosen.Length];
+            Parallel.For(0, chosen.Length, new ParallelOptions { MaxDegreeOfParallelism = 2 }, k =>
+            {
+                int p = chosen[k];
+                float d = BitConverter.ToSingle(depthBytes, 4 * p);
+                // Only pixels the sun lights without the map (N.L >= MinNDotL), where a shadow is a clear step.
+                if (!(d > 0) || ShadowNDotL(p) < MinNDotL) return;
+                double[] world = Mul(clipToWorld, new[] { (p % w + 0.5) / w * 2 - 1, 1 - (p / w + 0.5) / h * 2, d, 1.0 });
+                double[] o = Mul(worldToObject, world.Select(x => x / world[3]).ToArray());
+                double x0 = o[0], y0 = o[2], z0 = o[1];
+                bool cpu = Shadowed(x0, y0, z0);
+                bool near = false;
+                foreach (var (dx, dy) in new[] { (1, 0), (-1, 0), (0, 1), (0, -1) })
+                {
+                    double x = x0 + dx * reach, y = y0 + dy * reach, z = query.SampleHeight(x, y);
+                    if (double.IsNaN(z)) { near = true; break; }
+                    if (Shadowed(x, y, z) != cpu) { near = true; break; }
+                }
+                bool gpu = DirectShare(_litShadows, p) < 0.5 * Enumerable.Range(0, 3).Average(c => Unshadowed(p, c) - _albedo[c] * _ambient);
+                samples[k] = new ShadowSample { Pixel = p, Gpu = gpu, Cpu = cpu, NearEdge = near };
+            });
+            _samples = samples.Where(s => s.HasValue).Select(s => s.Value).ToList();
+        }
+
+        [Test]
+        public void TheShadowMap_IsTheShadowCastersDepthFromTheSun_BoundByName()
+        {
+            LoadShadowSamples();
+            int n = _shadow.GetProperty("resolution").GetInt32();
+            byte[] map = File.ReadAllBytes(Path.Combine(_out, "shadow_map.f32"));
+            Assert.That(map.Length, Is.EqualTo(4 * n * n));
+            var depth = Enumerable.Range(0, n * n).Select(i => BitConverter.ToSingle(map, 4 * i)).ToArray();
+            int written = depth.Count(x => x != 0), outside = depth.Count(x => !(x >= 0 && x <= 1));
+            TestContext.Out.WriteLine($"shadow map {n}x{n}: {written} texels written ({100.0 * written / (n * n):F1}%), depth {depth.Where(x => x != 0).DefaultIfEmpty().Min():F4}..{depth.Max():F4}; texel {_shadow.GetProperty("texel").GetDouble():G3} world units");
+            Assert.That(outside, Is.Zero, "depth outside [0, 1]");
+            // The culling sphere holds the camera's frustum to the shadow distance (3 world units), the
+            // terrain is 1 across and seen from 12 degrees: about 1% of the map.
+            Assert.That(written, Is.GreaterThan(n * n / 200), "the terrain covers half a percent of the light's view or more");
+            JsonElement m = Manifest("lit_shadows");
+            JsonElement image = m.GetProperty("bindings").EnumerateArray().Single(b => b.GetProperty("name").GetString() == "_MainLightShadowmapTexture");
+            Assert.That(image.GetProperty("file").GetString(), Does.EndWith("shadow_map_texels.f32"), "the map the ShadowCaster drew, rows in texture order");
+            Assert.That(Strings(m.GetProperty("filled")), Does.Contain("_MainLightShadowmapTexture")
+                .And.Contain("LightShadows._MainLightWorldToShadow").And.Contain("LightShadows._MainLightShadowParams"));
+            // URP's sampler_LinearClampCompare: a comparison under reversed depth (lit when the receiver's
+            // depth is at or above the map's), point-filtered (lavapipe lists no linear filtering of D32).
+            Assert.That(Strings(m.GetProperty("defaults")), Does.Contain("sampler_LinearClampCompare=point:clamp:compare-gequal"));
+            Assert.That(Strings(Manifest("shadow_map").GetProperty("state")), Does.Contain("--color-mask").And.Contain("0"),
+                "ShadowCaster's ColorMask 0, read from the ShaderLab pass");
+        }
+
+        [Test]
+        public void NoShadowedPixelIsNaNOrInf_AndShadowRemovesTheLightsShareOnly()
+        {
+            LoadShadowSamples();
+            // Lambert's bounds on every covered pixel (a NaN reads 0, an Inf 1), nothing drawn outside.
+            var covered = new HashSet<int>(_covered);
+            int outOfBounds = 0, drawnOutside = 0;
+            for (int p = 0; p < _litShadows.Width * _litShadows.Height; p++)
+            {
+                if (!covered.Contains(p)) { drawnOutside += Enumerable.Range(0, 3).All(c => IsSky(_litShadows, p, c)) ? 0 : 1; continue; }
+                for (int c = 0; c < 3; c++)
+                {
+                    double v = Channel(_litShadows, p, c);
+                    if (v < _albedo[c] * _ambient - Quantum || v > _albedo[c] * (_ambient + _light[c]) + Quantum) outOfBounds++;
+                }
+            }
+            // Where the GPU shadows a pixel, what is left is the ambient term (hard shadow, strength 1):
+            // Lambert's colour minus the light's share albedo * light * N.L.
+            var shadowed = _samples.Where(s => s.Gpu).ToList();
+            double worstAmbient = shadowed.Select(s => Enumerable.Range(0, 3).Max(c => Math.Abs(Channel(_litShadows, s.Pixel, c) - _albedo[c] * _ambient)))
+                .DefaultIfEmpty(double.NaN).Max();
+            // and elsewhere the picture is Lambert's (3/255: the normals view's and the colour's 8 bits).
+            int litChanged = _samples.Where(s => !s.Gpu).Count(s => Enumerable.Range(0, 3).Any(c => Math.Abs(Channel(_litShadows, s.Pixel, c) - Unshadowed(s.Pixel, c)) > 3.0 / 255));
+            TestContext.Out.WriteLine($"lit_shadows: channels outside Lambert's bounds {outOfBounds}, drawn outside {drawnOutside}; " +
+                                      $"{shadowed.Count} of {_samples.Count} sampled sunlit pixels shadowed, largest |shadowed - albedo * ambient| {worstAmbient * 255:F2}/255; " +
+                                      $"unshadowed pixels off Lambert by more than 3/255: {litChanged}");
+            Assert.That(outOfBounds, Is.Zero, "channels outside albedo * ambient .. albedo * (ambient + light)");
+            Assert.That(drawnOutside, Is.Zero);
+            Assert.That(shadowed.Count, Is.GreaterThan(_samples.Count / 20), "the ridges shadow 5% of the sunlit terrain or more");
+            Assert.That(worstAmbient, Is.LessThanOrEqualTo(Quantum), "a shadowed pixel keeps the ambient term only");
+            Assert.That(litChanged, Is.Zero, "a pixel the map does not shadow is Lambert's, unshadowed");
+        }
+
+        [Test]
+        public void TheRidgesShadow_FallsWhereACpuRayTowardTheSunSays()
+        {
+            LoadShadowSamples();
+            var away = _samples.Where(s => !s.NearEdge).ToList();
+            int agree = away.Count(s => s.Gpu == s.Cpu), cpuShadowed = away.Count(s => s.Cpu);
+            int gpuOnly = away.Count(s => s.Gpu && !s.Cpu), cpuOnly = away.Count(s => s.Cpu && !s.Gpu);
+            double fraction = away.Count > 0 ? (double)agree / away.Count : 0;
+            TestContext.Out.WriteLine($"shadow vs CPU ray test: {_samples.Count} sampled sunlit pixels, {away.Count} farther than " +
+                                      $"{_edgeTolerance:G3} world units ({_edgeTolerance / _shadow.GetProperty("texel").GetDouble():F0} texels) from a CPU shadow edge; " +
+                                      $"CPU shadowed {cpuShadowed}; agree {agree} ({100 * fraction:F2}%), GPU-only {gpuOnly}, CPU-only {cpuOnly}; " +
+                                      $"near edges (left out) {_samples.Count - away.Count}");
+            Assert.That(cpuShadowed, Is.GreaterThan(away.Count / 33), "the CPU puts 3% or more of the sunlit terrain away from edges in the ridges' shadow");
+            Assert.That(away.Count, Is.GreaterThan(_samples.Count / 2), "most sampled pixels are away from edges");
+            // Away from edges both verdicts are unambiguous; the rest (tessellation vs the exact surface,
+            // grazing slopes) is allowed 1% of all, 5% of either side's shadowed pixels (most pixels are
+            // sunlit, so the overall figure alone would pass a map that shadows nothing: 96%).
+            Assert.That(fraction, Is.GreaterThanOrEqualTo(0.99), "pixels away from shadow edges where the GPU's shadow and the CPU ray test agree");
+            Assert.That(cpuOnly, Is.LessThanOrEqualTo(cpuShadowed / 20), "pixels the CPU shadows and the GPU lights");
+            Assert.That(gpuOnly, Is.LessThanOrEqualTo(away.Count(s => s.Gpu) / 20), "pixels the GPU shadows and the CPU lights");
+        }
+    }
+}
