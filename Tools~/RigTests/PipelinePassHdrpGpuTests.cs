@@ -2,9 +2,10 @@
 // ForwardOnly), compiled against HDRP 14.0.12's includes and drawn by the harness on lavapipe with every
 // binding filled by name from URP's scene in HDRP's units (Tools~/rig/pipeline_pass_hdrp.py): a sun of
 // 100,000 lux through a fixed exposure of 15 EV100 (the samples' SampleSun), a sky ambient probe of 0.2
-// times the sun's lux / pi, the cascade data over an atlas at the far plane. One run draws three pictures
-// (URP's ForwardLit, HDRP's normal buffer, HDRP's lit colour); the tests grade HDRP's against URP's and
-// against Lambert of its own normal buffer. They fail (never skip) when a tool or lavapipe is missing.
+// times the sun's lux / pi, the cascade data over an atlas at the far plane. One run draws five pictures
+// (URP's ForwardLit, HDRP's normal buffer, HDRP's lit colour, and that 50 km from the origin and at the
+// origin with the same float32 rounding); the tests grade HDRP's against URP's, against Lambert of its
+// own normal buffer, and its camera-relative precision. They fail (never skip) when a tool or lavapipe is missing.
 using System;
 using System.Collections.Generic;
 using System.Diagnostics;
@@ -177,6 +178,22 @@ namespace GregoryTerrain.Rig.Tests
             Assert.That(mean, Is.LessThan(1.0 / 255), "mean error against Lambert of the normal buffer");
             Assert.That(p99, Is.LessThan(2.0 / 255), "99th percentile error");
             Assert.That(max, Is.LessThan(3.0 / 255), "largest error");
+        }
+
+        [Test]
+        public void FiftyKilometresFromTheOrigin_TheCameraRelativePictureIsTheOriginsWithTheSameRounding()
+        {
+            // hdrp_lit_far: the scene moved 50 km along x and z (float32 positions there step by 4 mm);
+            // hdrp_lit_near: at the origin with the object's and camera's positions as float32 rounds them
+            // 50 km away. HDRPAdapter's GT_ObjectToWorld subtracts the camera from the translation before
+            // adding the rotated position, and both differences are exact (Sterbenz), so the pictures are
+            // the same to the bit; mul(M, p) first rounds each vertex at 50 km (measured: 3,813 pixels differ).
+            RigPng far = RigPng.Read(Path.Combine(_out, "hdrp_lit_far.png")), near = RigPng.Read(Path.Combine(_out, "hdrp_lit_near.png"));
+            int differing = far.PixelsDifferingFrom(near, 1);
+            TestContext.Out.WriteLine($"50 km vs origin with the same rounding: pixels differing by more than 1/255: {differing}; " +
+                                      $"vs the unrounded origin: {_hdrp.PixelsDifferingFrom(far, 1)}");
+            Assert.That(far.PixelsDifferingFrom(_hdrp, 40), Is.LessThan(far.Width * far.Height / 100), "the far picture is the scene's");
+            Assert.That(differing, Is.Zero, "pixels of the 50 km picture differing from the origin's with the same rounding");
         }
 
         [Test]

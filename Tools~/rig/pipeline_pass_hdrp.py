@@ -15,8 +15,10 @@ Pictures (OUT/<picture>.png, OUT/<picture>/manifest.json as pipeline_pass.py wri
   hdrp_depth   HDRP's DepthForwardOnly, base variant: the normal buffer (EncodeIntoNormalBuffer:
                octahedral normal in RGB 8:8:8, perceptual roughness 1 in A)
   hdrp_lit     HDRP's ForwardOnly, base variant (SHADOW_LOW: its multi_compile_fragment set has no '_')
+  hdrp_lit_far the same, the whole scene 50 km from the world's origin (camera-relative rendering)
+  hdrp_lit_near the same at the origin, positions rounded as float32 rounds them 50 km away
 
-  gt pipeline_pass_hdrp [--out DIR] [--only lit|hdrp_depth|hdrp_lit]... [--sun-elevation DEG] [--sun-azimuth DEG]
+  gt pipeline_pass_hdrp [--out DIR] [--only PICTURE]... [--sun-elevation DEG] [--sun-azimuth DEG]
       [--light-color R,G,B] [--leave-default NAME]... [--flip-light-forward]
 --leave-default NAME leaves a member, buffer or image of HDRP's scene to its default (_ExposureTexture:
 pipeline_pass.py's 1x1 texel of multiplier 1); --flip-light-forward writes the light's forward with the
@@ -61,6 +63,20 @@ def exposure_multiplier(ev100):
 def float_bits(u):
     """A uint's bits read as the float member that carries them (asuint in the shader)."""
     return struct.unpack("<f", struct.pack("<I", u))[0]
+
+
+def f32(x):
+    return struct.unpack("<f", struct.pack("<f", x))[0]
+
+
+def moved(v):
+    """A world position as the scene writes it: moved by Setting.world_offset, or with Setting.rounded_at
+    the float32 rounding of v + rounded_at, moved back to the origin (exact: the difference of two
+    float32 values near the offset is one, Sterbenz), so the camera-relative differences are the far
+    scene's to the bit."""
+    if Setting.rounded_at:
+        return [f32(x + d) - d for x, d in zip(v, Setting.rounded_at)]
+    return [x + d for x, d in zip(v, Setting.world_offset or [0.0] * 3)]
 
 
 def without_translation(m):
@@ -150,6 +166,8 @@ class Setting:
     """The sun's HDRP units, and what main() sets before drawing (the scene functions have
     pipeline_pass.py's signature)."""
     lux, ev100, flip_forward = SUN_LUX, SUN_EV100, False
+    world_offset = None     # the scene moved by this (hdrp_lit_far); camera-relative values stay
+    rounded_at = None       # the scene at the origin as float32 holds it moved by this (hdrp_lit_near)
 
 
 def light_view(sun, center_rws):
@@ -169,6 +187,9 @@ def hdrp_globals(cam, o2w, o2c, sun, light_color):
     samplers by name, each with where its value and layout come from. Paths are under HDRP (above)
     unless named; ShaderVariablesGlobal.cs.hlsl is Runtime/ShaderLibrary/ShaderVariablesGlobal.cs.hlsl."""
     w, h, n, f = cam.width, cam.height, cam.near, cam.far
+    t = moved([row[3] for row in o2w[:3]])
+    o2w = [row[:3] + [t[i]] for i, row in enumerate(o2w[:3])] + [o2w[3]]
+    eye = moved(cam.eye)
     # SHADEROPTIONS_CAMERA_RELATIVE_RENDERING is 1 (high-definition-config ShaderConfig.cs.hlsl:11):
     # HDCamera's view matrices drop the camera's translation, and the shader's world space has the
     # camera at the origin (ShaderVariables.hlsl:23 _WorldSpaceCameraPos = _WorldSpaceCameraPos_Internal.xyz,
@@ -191,7 +212,7 @@ def hdrp_globals(cam, o2w, o2c, sun, light_color):
         "_NonJitteredViewProjMatrix": view_proj, "_PrevViewProjMatrix": view_proj, "_PrevInvViewProjMatrix": inv_view_proj,
         # ShaderVariablesGlobal.cs.hlsl:31-32: the camera's absolute position; the previous frame's,
         # camera-relative, is the same place (a still camera): 0.
-        "_WorldSpaceCameraPos_Internal": cam.eye + [0.0], "_PrevCamPosRWS_Internal": [0.0, 0.0, 0.0, 0.0],
+        "_WorldSpaceCameraPos_Internal": eye + [0.0], "_PrevCamPosRWS_Internal": [0.0, 0.0, 0.0, 0.0],
         # ShaderVariablesGlobal.cs.hlsl:33-: width, height, 1/width, 1/height; RTHandle scales 1
         # (the target is the camera's size); the same projection and z parameters as URP's scene.
         "_ScreenSize": [w, h, 1.0 / w, 1.0 / h], "_PostProcessScreenSize": [w, h, 1.0 / w, 1.0 / h],
@@ -280,7 +301,27 @@ def hdrp_globals(cam, o2w, o2c, sun, light_color):
     return values
 
 
+def compile_once(compile_pass):
+    """pipeline_pass.compile_pass, compiled once per pass, variant and compiler in a run: a later
+    picture of the same variant gets copies of the first one's SPIR-V, taken before its rebinding."""
+    done = {}
+
+    def compile(sub, pas, out, tmp, keywords=(), compiler="glslang"):
+        key = (sub.index, pas.name, tuple(sorted(keywords)), compiler)
+        if key not in done:
+            spvs = compile_pass(sub, pas, out, tmp, keywords, compiler)
+            done[key] = {stage: open(spv, "rb").read() for stage, spv in spvs.items()}
+        paths = {}
+        for stage, data in done[key].items():
+            paths[stage] = os.path.join(out, f"{stage}.spv")
+            with open(paths[stage], "wb") as f:
+                f.write(data)
+        return paths
+    return compile
+
+
 pp.GLOBALS["HDRP"] = hdrp_globals
+pp.compile_pass = compile_once(pp.compile_pass)
 pp.INCLUDE_PACKAGES["HDRP"] = HDRP_PACKAGES
 
 # ---------------------------------------------------------------------------------------------
@@ -337,8 +378,15 @@ def stencil(pass_name):
 
 # ---------------------------------------------------------------------------------------------
 
-PICTURES = [("lit", "URP", "ForwardLit", []), ("hdrp_depth", "HDRP", "DepthForwardOnly", []),
-            ("hdrp_lit", "HDRP", "ForwardOnly", ["SHADOW_LOW"])]
+# (picture, pipeline, pass, keywords, world offset, rounded at). hdrp_lit_far: the same view 50 km from the
+# world's origin along x and z, where float32 positions step by 4 mm; hdrp_lit_near: at the origin with
+# the object's and the camera's positions as float32 rounds them there. Camera-relative rendering that
+# subtracts the camera from the translation before adding the rotated position draws the two alike.
+FAR = [50000.0, 0.0, 50000.0]
+PICTURES = [("lit", "URP", "ForwardLit", [], None, None), ("hdrp_depth", "HDRP", "DepthForwardOnly", [], None, None),
+            ("hdrp_lit", "HDRP", "ForwardOnly", ["SHADOW_LOW"], None, None),
+            ("hdrp_lit_far", "HDRP", "ForwardOnly", ["SHADOW_LOW"], FAR, None),
+            ("hdrp_lit_near", "HDRP", "ForwardOnly", ["SHADOW_LOW"], None, FAR)]
 
 
 def main(argv=None):
@@ -368,9 +416,10 @@ def main(argv=None):
                                   leave_default=a.leave_default, fill_from=[])
     os.makedirs(a.out, exist_ok=True)
     buffers = pp.pack_scene(a.out)
-    for picture, pipeline, pass_name, keywords in PICTURES:
+    for picture, pipeline, pass_name, keywords, offset, rounded_at in PICTURES:
         if a.only and picture not in a.only:
             continue
+        Setting.world_offset, Setting.rounded_at = offset, rounded_at
         folder = os.path.join(a.out, picture)
         args = pp.prepare(scene, pipeline, pass_name, keywords, buffers, folder)
         if pipeline == "HDRP":
