@@ -8,12 +8,9 @@
 // own normal buffer, and its camera-relative precision. They fail (never skip) when a tool or lavapipe is missing.
 using System;
 using System.Collections.Generic;
-using System.Diagnostics;
-using System.Globalization;
 using System.IO;
 using System.Linq;
 using System.Text.Json;
-using System.Text.RegularExpressions;
 using NUnit.Framework;
 
 namespace GregoryTerrain.Rig.Tests
@@ -29,7 +26,7 @@ namespace GregoryTerrain.Rig.Tests
         static readonly double[] Sky = { 0.55, 0.70, 0.90 };
         const double Quantum = 2.0 / 255.0;
 
-        string _out, _log;
+        string _out;
         RigPng _urp, _normalBuffer, _hdrp;
         double[] _albedo, _sun, _light;
         double _scale;              // HDRP's picture over URP's where the models agree: lux / pi x exposure
@@ -38,28 +35,14 @@ namespace GregoryTerrain.Rig.Tests
         [OneTimeSetUp]
         public void Draw()
         {
-            string root = HarnessRun.PackageRoot();
-            Assert.That(File.Exists(HarnessRun.HarnessPath()), Is.True, "gt-harness not built (run Tools~/gt setup)");
-            Assert.That(File.Exists(HarnessRun.LavapipeIcd), Is.True, "lavapipe is not installed");
-            _out = Path.Combine(root, ".build", "rigtests-pipeline-pass-hdrp");
-            var args = new List<string> { Path.Combine(root, "Tools~", "rig", "pipeline_pass_hdrp.py"), "--out", _out };
-            args.AddRange(Scene);
-            var clock = Stopwatch.StartNew();
-            HarnessRun r = HarnessRun.Start("python3", args,
-                new Dictionary<string, string> { ["MESA_SHADER_CACHE_DIR"] = Path.Combine(root, ".build", "mesa-shader-cache") });
-            _log = r.Stdout + r.Stderr;
-            TestContext.Progress.WriteLine($"pipeline_pass_hdrp.py: {clock.Elapsed.TotalSeconds:F1} s");
-            Assert.That(r.ExitCode, Is.EqualTo(0), "pipeline_pass_hdrp.py failed:\n" + _log);
+            (_out, _) = PipelinePassRun.Draw("pipeline_pass_hdrp.py", "rigtests-pipeline-pass-hdrp", Scene);
             _urp = RigPng.Read(Path.Combine(_out, "lit.png"));
             _normalBuffer = RigPng.Read(Path.Combine(_out, "hdrp_depth.png"));
             _hdrp = RigPng.Read(Path.Combine(_out, "hdrp_lit.png"));
             JsonElement urp = Manifest("lit");
             _sun = urp.GetProperty("sun").EnumerateArray().Select(e => e.GetDouble()).ToArray();
             _light = urp.GetProperty("light_color").EnumerateArray().Select(e => e.GetDouble()).ToArray();
-            string shading = File.ReadAllText(Path.Combine(root, "Shaders", "Terrain", "TerrainShading.hlsl"));
-            _albedo = Regex.Match(shading, @"GT_DEFAULT_ALBEDO = float3\(([^)]*)\)").Groups[1].Value.Split(',')
-                .Select(s => double.Parse(s, CultureInfo.InvariantCulture)).ToArray();
-            Assert.That(_albedo.Length, Is.EqualTo(3), "GT_DEFAULT_ALBEDO in TerrainShading.hlsl");
+            _albedo = PipelinePassRun.Shading().Albedo;
             // HDRP's fixed exposure (PhysicalCamera.hlsl ConvertEV100ToExposure, scale 1.2) times the
             // sun's lux through Lambert's 1/pi: 0.8095 for the samples' sun.
             _scale = Lux / Math.PI / (1.2 * Math.Pow(2, Ev100));
@@ -71,10 +54,9 @@ namespace GregoryTerrain.Rig.Tests
 
         static bool IsSky(RigPng png, int p) => Enumerable.Range(0, 3).All(c => Math.Abs(png.Rgba[4 * p + c] - Sky[c] * 255) <= 1);
 
-        JsonElement Manifest(string picture) =>
-            JsonDocument.Parse(File.ReadAllText(Path.Combine(_out, picture, "manifest.json"))).RootElement;
+        JsonElement Manifest(string picture) => PipelinePassRun.Manifest(_out, picture);
 
-        static string[] Strings(JsonElement e) => e.EnumerateArray().Select(x => x.GetString()).ToArray();
+        static string[] Strings(JsonElement e) => PipelinePassRun.Strings(e);
 
         double Channel(RigPng png, int p, int c) => png.Rgba[4 * p + c] / 255.0;
 
@@ -120,27 +102,11 @@ namespace GregoryTerrain.Rig.Tests
         [Test]
         public void NoPixelIsNaNOrInf_AndEveryCoveredPixelIsWithinLambertsBounds_AfterHdrpsExposure()
         {
-            // scale x albedo x (sky .. sky + light): a NaN stores 0 and an Inf 1 in UNORM8, both outside.
-            int below = 0, above = 0, drawnOutside = 0, firstBad = -1;
-            var covered = new HashSet<int>(_covered);
-            for (int p = 0; p < _hdrp.Width * _hdrp.Height; p++)
-            {
-                if (!covered.Contains(p)) { drawnOutside += IsSky(_hdrp, p) ? 0 : 1; continue; }
-                for (int c = 0; c < 3; c++)
-                {
-                    double v = Channel(_hdrp, p, c);
-                    bool lo = v < _scale * _albedo[c] * SkyShare - Quantum, hi = v > _scale * _albedo[c] * (SkyShare + _light[c]) + Quantum;
-                    below += lo ? 1 : 0;
-                    above += hi ? 1 : 0;
-                    if ((lo || hi) && firstBad < 0) firstBad = p;
-                }
-            }
-            string where = firstBad < 0 ? "" : $"; first at ({firstBad % _hdrp.Width}, {firstBad / _hdrp.Width}) = " +
-                                                 string.Join(",", Enumerable.Range(0, 3).Select(c => _hdrp.Rgba[4 * firstBad + c]));
-            TestContext.Out.WriteLine($"scale {_scale:F4}; covered {_covered.Count}; channels below {below}, above {above}, drawn outside {drawnOutside}{where}");
-            Assert.That(below, Is.Zero, "channels below scale x albedo x sky (a NaN reads 0)" + where);
-            Assert.That(above, Is.Zero, "channels above scale x albedo x (sky + light) (an Inf reads 1)" + where);
-            Assert.That(drawnOutside, Is.Zero, "ForwardOnly drew pixels URP's ForwardLit did not cover");
+            // scale x albedo x (sky .. sky + light), one 8-bit step either side.
+            double[] lo = Enumerable.Range(0, 3).Select(c => _scale * _albedo[c] * SkyShare - Quantum).ToArray();
+            double[] hi = Enumerable.Range(0, 3).Select(c => _scale * _albedo[c] * (SkyShare + _light[c]) + Quantum).ToArray();
+            TestContext.Out.WriteLine($"scale {_scale:F4}");
+            PipelinePassRun.AssertWithinBounds(_hdrp, _covered, lo, hi, IsSky, "scale x albedo x (sky .. sky + light)");
         }
 
         [Test]
@@ -165,19 +131,8 @@ namespace GregoryTerrain.Rig.Tests
         {
             // Per pixel: scale x albedo x (sky + light x saturate(N.L)), N decoded from DepthForwardOnly's
             // normal buffer (12-bit octahedral: N.L within ~0.002), colour 8-bit: 3/255 bounds one pixel.
-            var errors = new List<double>();
-            foreach (int p in _covered)
-            {
-                double nl = Math.Max(0, NDotL(p));
-                for (int c = 0; c < 3; c++)
-                    errors.Add(Math.Abs(Channel(_hdrp, p, c) - _scale * _albedo[c] * (SkyShare + _light[c] * nl)));
-            }
-            errors.Sort();
-            double mean = errors.Average(), p99 = errors[(int)(0.99 * (errors.Count - 1))], max = errors.Last();
-            TestContext.Out.WriteLine($"|HDRP - Lambert(normal buffer)|: mean {mean * 255:F2}/255, 99th percentile {p99 * 255:F2}/255, max {max * 255:F2}/255");
-            Assert.That(mean, Is.LessThan(1.0 / 255), "mean error against Lambert of the normal buffer");
-            Assert.That(p99, Is.LessThan(2.0 / 255), "99th percentile error");
-            Assert.That(max, Is.LessThan(3.0 / 255), "largest error");
+            PipelinePassRun.AssertWithinEightBitSteps(
+                PipelinePassRun.LambertErrors(_hdrp, _covered, NDotL, _scale, _albedo, SkyShare, _light), "|HDRP - Lambert(normal buffer)|");
         }
 
         [Test]
@@ -202,21 +157,10 @@ namespace GregoryTerrain.Rig.Tests
             // Same surface, same sun direction and colour; HDRP's light is lux / pi x exposure (= scale) and
             // its sky probe scale x 0.2 (URP's GT_AMBIENT): HDRP / scale = URP, each 8-bit (HDRP's step is
             // 1/255 / 0.81 after the division), so 2/255 bounds a pixel. HDRP's two passes cover URP's pixels and no others.
-            int over = 0, firstBad = -1;
-            double largest = 0;
-            foreach (int p in _covered)
-                for (int c = 0; c < 3; c++)
-                {
-                    double d = Math.Abs(Channel(_hdrp, p, c) / _scale - Channel(_urp, p, c));
-                    largest = Math.Max(largest, d);
-                    if (d > 2.0 / 255) { over++; if (firstBad < 0) firstBad = p; }
-                }
+            var (largest, over, where) = PipelinePassRun.Difference(_hdrp, _scale, _urp, _covered, 2.0 / 255, "HDRP", "URP");
             var covered = new HashSet<int>(_covered);
             int otherCoverage = _covered.Count(p => IsSky(_hdrp, p)) + Enumerable.Range(0, _urp.Width * _urp.Height)
                 .Count(p => !covered.Contains(p) && (!IsSky(_hdrp, p) || !IsSky(_normalBuffer, p)));
-            string where = firstBad < 0 ? "" : $"; first at ({firstBad % _hdrp.Width}, {firstBad / _hdrp.Width}): HDRP " +
-                string.Join(",", Enumerable.Range(0, 3).Select(c => _hdrp.Rgba[4 * firstBad + c])) + ", URP " +
-                string.Join(",", Enumerable.Range(0, 3).Select(c => _urp.Rgba[4 * firstBad + c]));
             TestContext.Out.WriteLine($"HDRP / {_scale:F4} vs URP over {_covered.Count} pixels: largest {largest * 255:F2}/255, " +
                                       $"channels over 2/255: {over}, coverage differing: {otherCoverage}{where}");
             Assert.That(over, Is.Zero, "channels whose HDRP / scale and URP colours differ by more than 2/255" + where);
