@@ -696,6 +696,11 @@ def prepare(a, pipeline, pass_name, keywords, buffers, out, compiler="glslang", 
     for name in sorted(layouts):
         kind, members, size = layouts[name]
         path = os.path.join(out, f"binding_{binding_of[name]}_{re.sub(r'[^A-Za-z0-9_]', '', name)}.bin")
+        if kind != "uniform" and callable(values.get(name)):
+            # A buffer, image or sampler the pipeline's scene fills itself (pipeline_pass_hdrp.py): the
+            # function writes path and returns the binding as below, adding to report's lists.
+            bindings.append(values[name](name, kind, size, binding_of[name], path, spvs, report))
+            continue
         if kind in ("separate_images", "separate_samplers"):
             bindings.append(default_image_or_sampler(name, kind, size, binding_of[name], path, report, images))
             continue

@@ -1,0 +1,432 @@
+#!/usr/bin/env python3
+"""gt pipeline_pass_hdrp: HDRP's DepthForwardOnly and ForwardOnly of Shaders/GregoryTerrain.shader in the harness.
+
+The tessellated HDRP SubShader's two passes, compiled as `gt shaderlab` compiles them (glslang against
+../shared/unity-shaderlib/hdrp-14.0.12) and drawn by pipeline_pass.py's machinery: every binding from
+spirv-cross --reflect, filled by name from the scene URP's pictures use (the sample grid, RigScene's zoom
+view, a sun 30 degrees up) in HDRP's units and conventions: camera-relative matrices, the sun in lux
+through a fixed exposure, the ambient probe as HDRP's SH buffer, one directional light with its
+cascade shadow data over an atlas at the far plane (nothing occludes). The structured buffers are
+filled member by member at glslang's offsets, their unset members listed as named defaults, and the
+members the stages read (access chains) checked like the uniform blocks' ("defaulted_read").
+
+Pictures (OUT/<picture>.png, OUT/<picture>/manifest.json as pipeline_pass.py writes them):
+  lit          URP's ForwardLit, base variant (pipeline_pass.py's), to compare with
+  hdrp_depth   HDRP's DepthForwardOnly, base variant: the normal buffer (EncodeIntoNormalBuffer:
+               octahedral normal in RGB 8:8:8, perceptual roughness 1 in A)
+  hdrp_lit     HDRP's ForwardOnly, base variant (SHADOW_LOW: its multi_compile_fragment set has no '_')
+  hdrp_lit_far the same, the whole scene 50 km from the world's origin (camera-relative rendering)
+  hdrp_lit_near the same at the origin, positions rounded as float32 rounds them 50 km away
+
+  gt pipeline_pass_hdrp [--out DIR] [--only PICTURE]... [--sun-elevation DEG] [--sun-azimuth DEG]
+      [--light-color R,G,B] [--leave-default NAME]... [--flip-light-forward]
+--leave-default NAME leaves a member, buffer or image of HDRP's scene to its default (_ExposureTexture:
+pipeline_pass.py's 1x1 texel of multiplier 1); --flip-light-forward writes the light's forward with the
+wrong sign (towards the sun): the tests' broken inputs.
+"""
+import argparse
+import json
+import math
+import os
+import re
+import struct
+import sys
+import types
+
+RIG_DIR = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, RIG_DIR)
+import options  # noqa: E402
+import pipeline_pass as pp  # noqa: E402
+
+HDRP_PACKAGES = ["com.unity.render-pipelines.core", "com.unity.render-pipelines.high-definition",
+                 "com.unity.render-pipelines.high-definition-config"]
+HDRP = "../shared/unity-shaderlib/hdrp-14.0.12/com.unity.render-pipelines.high-definition/"
+
+# The samples' HDRP sun (Samples~/TerrainFlyover/SampleSun.cs: hdrpLux 100000, hdrpExposure 15 EV100).
+SUN_LUX = 100000.0
+SUN_EV100 = 15.0
+# The sky's share of the sun in the ambient probe: the package's GT_AMBIENT against a light of 1, so
+# the picture is URP's scaled by one number where the models agree (a clear sky's diffuse light is
+# 10-25 % of the direct sun's).
+SKY_SHARE = pp.GT_AMBIENT_LEVEL
+CASCADE_RADIUS = 3.0         # the one cascade's sphere around the camera's target: all the visible terrain
+SHADOW_DEPTH = 10.0          # the cascade's ortho depth range along the light, metres of the rig's units
+
+
+def exposure_multiplier(ev100):
+    """GetCurrentExposureMultiplier's texel: HDRP's fixed exposure (Exposure.compute KFixedExposure writes
+    float2(ConvertEV100ToExposure(ev100 - compensation, LensImperfectionExposureScale), ev100) to the
+    exposure texture); PhysicalCamera.hlsl:42-58: 1 / (scale * 2^EV100), scale 1.2 (78 / (100 * 0.65))."""
+    return 1.0 / (1.2 * 2.0 ** ev100)
+
+
+def float_bits(u):
+    """A uint's bits read as the float member that carries them (asuint in the shader)."""
+    return struct.unpack("<f", struct.pack("<I", u))[0]
+
+
+def f32(x):
+    return struct.unpack("<f", struct.pack("<f", x))[0]
+
+
+def moved(v):
+    """A world position as the scene writes it: moved by Setting.world_offset, or with Setting.rounded_at
+    the float32 rounding of v + rounded_at, moved back to the origin (exact: the difference of two
+    float32 values near the offset is one, Sterbenz), so the camera-relative differences are the far
+    scene's to the bit."""
+    if Setting.rounded_at:
+        return [f32(x + d) - d for x, d in zip(v, Setting.rounded_at)]
+    return [x + d for x, d in zip(v, Setting.world_offset or [0.0] * 3)]
+
+
+def without_translation(m):
+    return [m[0][:3] + [0.0], m[1][:3] + [0.0], m[2][:3] + [0.0], [0.0, 0.0, 0.0, 1.0]]
+
+
+# ---------------------------------------------------------------------------------------------
+# Structured buffers, images and samplers filled by the scene (pipeline_pass.prepare's hook)
+
+
+def struct_layout(name, spvs):
+    """(element members or None for a vector buffer, element type, stride) of the structured buffer
+    NAME as the stages that declare it lay it out (spirv-cross --reflect; every stage must agree)."""
+    found = None
+    for stage, spv in spvs.items():
+        refl = pp.reflect(spv)
+        for u in refl.get("ssbos", []):
+            if u["name"] != name:
+                continue
+            data = refl["types"][u["type"]]["members"][0]          # the runtime array ("@data")
+            members = refl["types"][data["type"]]["members"] if data["type"].startswith("_") else None
+            layout = ([{k: m.get(k) for k in ("name", "type", "offset", "array", "array_stride")} for m in members]
+                      if members else None, data["type"] if not members else "struct", data["array_stride"])
+            if found is not None and found != layout:
+                raise SystemExit(f"pipeline-pass-hdrp: error: '{name}' has another element layout in the {stage} stage")
+            found = layout
+    if found is None:
+        raise SystemExit(f"pipeline-pass-hdrp: error: no stage declares the structured buffer '{name}'")
+    return found
+
+
+def structured_buffer(elements, defaults=None):
+    """The hook for a StructuredBuffer: ELEMENTS is a list of {member: value} (structs) or of values
+    (a vector buffer); unset struct members get DEFAULTS[member] or zero, each listed."""
+    def fill(name, kind, size, binding, path, spvs, report):
+        members, elem_type, stride = struct_layout(name, spvs)
+        data = bytearray()
+        for i, element in enumerate(elements):
+            one = bytearray(stride)
+            if members is None:
+                b = pp.element_bytes({"name": name, "type": elem_type}, element)
+                one[:len(b)] = b
+            else:
+                for m in members:
+                    label = f"{name}[{i}].{m['name']}"
+                    if m["name"] in element:
+                        value = element[m["name"]]
+                        report["filled"].append(label)
+                    else:
+                        value = (defaults or {}).get(m["name"], pp.zero_value(m))
+                        report["defaults"].append(f"{label}={pp.show(value)}")
+                    b = pp.member_bytes(m, value)
+                    one[m["offset"]:m["offset"] + len(b)] = b
+            data += one
+        if members is None:
+            report["filled"].append(f"{name}[0..{len(elements) - 1}]")
+        with open(path, "wb") as f:
+            f.write(data)
+        return {"name": name, "binding": binding, "kind": kind, "bytes": len(data), "file": path,
+                "stride": stride, "members": [m["name"] for m in members] if members else None}
+    return fill
+
+
+def image(fmt, texel, why):
+    """The hook for a 1x1 image of the scene (pipeline_pass.py binds 1x1 images)."""
+    def fill(name, kind, size, binding, path, spvs, report):
+        with open(path, "wb") as f:
+            f.write(struct.pack(f"<{len(texel)}f", *texel))
+        report["filled"].append(f"{name}={fmt}({','.join(pp.show(x) for x in texel)}) ({why})")
+        return {"name": name, "binding": binding, "kind": kind, "format": fmt, "file": path,
+                "bytes": 4 * len(texel), "arrayed": "Array" in size}
+    return fill
+
+
+def sampler(value, why):
+    def fill(name, kind, size, binding, path, spvs, report):
+        report["filled"].append(f"{name}={value} ({why})")
+        return {"name": name, "binding": binding, "kind": kind, "sampler": value, "bytes": 0}
+    return fill
+
+
+# ---------------------------------------------------------------------------------------------
+# The scene in HDRP's terms
+
+
+class Setting:
+    """The sun's HDRP units, and what main() sets before drawing (the scene functions have
+    pipeline_pass.py's signature)."""
+    lux, ev100, flip_forward = SUN_LUX, SUN_EV100, False
+    world_offset = None     # the scene moved by this (hdrp_lit_far); camera-relative values stay
+    rounded_at = None       # the scene at the origin as float32 holds it moved by this (hdrp_lit_near)
+
+
+def light_view(sun, center_rws):
+    """The directional light's shadow view, camera-relative, as a Unity camera looking along the
+    light (forward = -sun) from SHADOW_DEPTH / 2 before the cascade's centre: rows right, up, -forward
+    and the translation column (HDShadowAlgorithms.hlsl:57-93 reads them as rot0..2 and pos)."""
+    f = [-x for x in sun]
+    up = [0.0, 0.0, 1.0] if abs(f[1]) > 0.99 else [0.0, 1.0, 0.0]
+    r = pp.normalize(pp.cross(up, f))
+    u = pp.cross(f, r)
+    eye = [c - SHADOW_DEPTH / 2 * x for c, x in zip(center_rws, f)]
+    return f, r, u, [r + [-pp.dot(r, eye)], u + [-pp.dot(u, eye)], [-x for x in f] + [pp.dot(f, eye)], [0.0, 0.0, 0.0, 1.0]]
+
+
+def hdrp_globals(cam, o2w, o2c, sun, light_color):
+    """ShaderVariablesGlobal, UnityPerDraw, $Global members and the light loop's buffers, images and
+    samplers by name, each with where its value and layout come from. Paths are under HDRP (above)
+    unless named; ShaderVariablesGlobal.cs.hlsl is Runtime/ShaderLibrary/ShaderVariablesGlobal.cs.hlsl."""
+    w, h, n, f = cam.width, cam.height, cam.near, cam.far
+    t = moved([row[3] for row in o2w[:3]])
+    o2w = [row[:3] + [t[i]] for i, row in enumerate(o2w[:3])] + [o2w[3]]
+    eye = moved(cam.eye)
+    # SHADEROPTIONS_CAMERA_RELATIVE_RENDERING is 1 (high-definition-config ShaderConfig.cs.hlsl:11):
+    # HDCamera's view matrices drop the camera's translation, and the shader's world space has the
+    # camera at the origin (ShaderVariables.hlsl:23 _WorldSpaceCameraPos = _WorldSpaceCameraPos_Internal.xyz,
+    # GetCameraRelativePositionWS subtracts it).
+    view = without_translation(cam.view)
+    view_proj = pp.mat_mul(cam.proj, view)
+    inv_view_proj = pp.general_inverse(view_proj)
+    target = [0.0, -0.05, 0.0]                                    # pipeline_pass.rig_camera's target
+    center = [t - e for t, e in zip(target, cam.eye)]             # camera-relative
+    forward, right, up, lview = light_view(sun, center)
+    exposure = exposure_multiplier(Setting.ev100)
+    sky = SKY_SHARE * Setting.lux / math.pi
+    res = 1.0                                                     # the atlas pipeline_pass.py binds is 1x1
+    values = {
+        # ShaderVariablesGlobal.cs.hlsl:20-30; UNITY_MATRIX_V/VP are _ViewMatrix/_ViewProjMatrix
+        # (ShaderVariablesMatrixDefsHDCamera.hlsl:22-26): the GPU projection (reversed depth, as URP's scene).
+        "_ViewMatrix": view, "_CameraViewMatrix": view, "_InvViewMatrix": pp.affine_inverse(view),
+        "_ProjMatrix": cam.proj, "_InvProjMatrix": pp.general_inverse(cam.proj),
+        "_ViewProjMatrix": view_proj, "_CameraViewProjMatrix": view_proj, "_InvViewProjMatrix": inv_view_proj,
+        "_NonJitteredViewProjMatrix": view_proj, "_PrevViewProjMatrix": view_proj, "_PrevInvViewProjMatrix": inv_view_proj,
+        # ShaderVariablesGlobal.cs.hlsl:31-32: the camera's absolute position; the previous frame's,
+        # camera-relative, is the same place (a still camera): 0.
+        "_WorldSpaceCameraPos_Internal": eye + [0.0], "_PrevCamPosRWS_Internal": [0.0, 0.0, 0.0, 0.0],
+        # ShaderVariablesGlobal.cs.hlsl:33-: width, height, 1/width, 1/height; RTHandle scales 1
+        # (the target is the camera's size); the same projection and z parameters as URP's scene.
+        "_ScreenSize": [w, h, 1.0 / w, 1.0 / h], "_PostProcessScreenSize": [w, h, 1.0 / w, 1.0 / h],
+        "_RTHandleScale": [1.0] * 4, "_RTHandleScaleHistory": [1.0] * 4,
+        "_RTHandlePostProcessScale": [1.0] * 4, "_RTHandlePostProcessScaleHistory": [1.0] * 4,
+        "_DynamicResolutionFullscreenScale": [1.0] * 4,
+        "_ZBufferParams": [-1.0 + f / n, 1.0, (-1.0 + f / n) / f, 1.0 / f],
+        "_ProjectionParams": [1.0, n, f, 1.0 / f],
+        "unity_OrthoParams": [w / h, 1.0, 0.0, 0.0],
+        "_ScreenParams": [w, h, 1.0 + 1.0 / w, 1.0 + 1.0 / h],
+        "_GlobalMipBias": 0.0, "_GlobalMipBiasPow2": 1.0,
+        # ShaderVariablesGlobal.cs.hlsl:46 (sharpen strength, unused, frame index, TAA on): no TAA, frame
+        # 0 (the cascade dither's noise, InterleavedGradientNoise(positionSS, _TaaFrameInfo.z), reads it).
+        "_TaaFrameInfo": [0.0, 0.0, 0.0, 0.0],
+        # ShaderVariablesLightLoop: one directional light, the one that casts the cascades
+        # (_DirectionalShadowIndex: its index; HDRPAdapter.hlsl's MainDirectionalLightIndex takes it).
+        "_DirectionalLightCount": 1, "_DirectionalShadowIndex": 0, "_CascadeShadowCount": 1,
+        # ShaderVariablesGlobal.cs.hlsl:81-82: (w, h, 1/w, 1/h) of the 1x1 atlas bound below.
+        "_CascadeShadowAtlasSize": [res, res, 1.0 / res, 1.0 / res], "_ShadowAtlasSize": [res, res, 1.0 / res, 1.0 / res],
+        # ShaderVariables.hlsl:386-392: exposure texel * _ProbeExposureScale, 1 when not rendering a probe.
+        "_ProbeExposureScale": 1.0,
+        # ShaderVariables.hlsl:419-422 GetIndirectDiffuseMultiplier: the Indirect Lighting Controller's
+        # defaults (multiplier 1 on every light layer); light layers off (the HDRP asset's default), so
+        # GetMeshRenderingLightLayer (ShaderVariablesFunctions.hlsl:11-14) is DEFAULT_LIGHT_LAYERS.
+        "_IndirectDiffuseLightingMultiplier": 1.0, "_IndirectDiffuseLightingLayers": 0xFF, "_EnableLightLayers": 0,
+        # UnityPerDraw (ShaderVariables.hlsl:65): the draw's rendering layer mask, asuint'ed;
+        # RenderParams' default is the project's default rendering layer mask, layer 0 (1).
+        "unity_RenderingLayer": [float_bits(1), 0.0, 0.0, 0.0],
+        # The package's own (UnityAdapterCommon.hlsl; GregoryTerrainRenderer sets them), absolute world.
+        "_GtObjectToWorld": o2w, "_GtWorldToObject": pp.affine_inverse(o2w),
+        # LightDefinition.cs.hlsl:81-117 DirectionalLightData, one light as HDRP's LightLoop
+        # (GetDirectionalLightData) packs a sun: forward the direction it travels, color its linear
+        # colour times its intensity in lux, dimmers 1 (it lights diffuse and specular), shadowIndex
+        # the first HDShadowData of its cascades, no cookie, contact or screen-space shadow (-1).
+        "_DirectionalLightDatas": structured_buffer([{
+            "positionRWS": [0.0, 0.0, 0.0], "lightLayers": 0xFF, "lightDimmer": 1.0, "volumetricLightDimmer": 1.0,
+            "forward": [-x for x in forward] if Setting.flip_forward else forward,
+            "cookieMode": 0, "right": right, "up": up, "shadowIndex": 0, "contactShadowIndex": -1,
+            "color": [c * Setting.lux for c in light_color], "contactShadowMask": 0,
+            "shadowTint": [0.0, 0.0, 0.0], "shadowDimmer": 1.0, "volumetricShadowDimmer": 1.0, "nonLightMappedOnly": 0,
+            "minRoughness": 0.0, "screenSpaceShadowIndex": -1, "shadowMaskSelector": [0.0] * 4,
+            "diffuseDimmer": 1.0, "specularDimmer": 1.0, "penumbraTint": 0.0, "isRayTracedContactShadow": 0.0,
+            "distanceFromCamera": -1.0, "angularDiameter": math.radians(0.53),
+            # The adapter loads the struct whole (glslang reads every member): the rest are a sun's
+            # without cookie, lens flare or celestial-body surface (surface tint white).
+            "cookieScaleOffset": [0.0] * 4, "flareFalloff": 0.0, "flareCosInner": 0.0, "flareCosOuter": 0.0,
+            "__unused__": 0.0, "flareTint": [0.0] * 3, "flareSize": 0.0, "surfaceTint": [1.0] * 3,
+            "surfaceTextureScaleOffset": [0.0] * 4,
+        }]),
+        # Shadow/HDShadowManager.cs.hlsl:20- HDShadowData for the one cascade: the light's view (rows, camera-
+        # relative) and HDRP's orthographic reversed-depth projection (sx, sy, sz, tz): near 1, far 0.
+        "_HDShadowDatas": structured_buffer([{
+            "rot0": lview[0][:3], "rot1": lview[1][:3], "rot2": lview[2][:3], "pos": [lview[0][3], lview[1][3], lview[2][3]],
+            "proj": [1.0 / CASCADE_RADIUS, 1.0 / CASCADE_RADIUS, 1.0 / SHADOW_DEPTH, 1.0],
+            "atlasOffset": [0.0, 0.0], "worldTexelSize": 2.0 * CASCADE_RADIUS / res,
+            "normalBias": 0.75,                                    # HDAdditionalLightData's default normal bias
+            "shadowMapSize": [res, res, 1.0 / res, 1.0 / res],
+            # DIRECTIONAL_FILTER_ALGORITHM (HDShadowAlgorithms.hlsl:21-33) is PCSS only under SHADOW_HIGH;
+            # SHADOW_LOW (line 26: PCF tent 5x5) reads neither: PCSS off (kernel 0), no blocker depth range.
+            "zBufferParam": [0.0] * 4, "shadowFilterParams0": [0.0] * 4,
+            "cacheTranslationDelta": [0.0, 0.0, 0.0], "isInCachedAtlas": 0.0,
+            "shadowToWorld": pp.general_inverse(pp.mat_mul([[1.0 / CASCADE_RADIUS, 0, 0, 0], [0, 1.0 / CASCADE_RADIUS, 0, 0],
+                                                            [0, 0, 1.0 / SHADOW_DEPTH, 1.0], [0, 0, 0, 1.0]], lview)),
+        }]),
+        # Shadow/HDShadowManager.cs.hlsl:9- HDDirectionalShadowData: the cascade spheres (centre camera-relative,
+        # w radius squared: EvalShadow_GetSplitIndex, HDShadowAlgorithms.hlsl:198-), the cascade count in
+        # cascadeDirection.w, no border (no blend between cascades).
+        "_HDDirectionalShadowData": structured_buffer([{
+            "sphereCascades": [center + [CASCADE_RADIUS ** 2]] + [[0.0] * 4] * 3,
+            "cascadeDirection": forward + [1.0], "cascadeBorders": [0.0] * 4,
+            # Loaded with the struct; no function of this pass uses the fade: none (scale 0, bias 1).
+            "fadeScale": 0.0, "fadeBias": 1.0,
+        }]),
+        # core SphericalHarmonics.hlsl:113 SampleSH9(StructuredBuffer<float4>): SHAr, SHAg, SHAb, SHBr, SHBg,
+        # SHBb, SHC (Unity's packing: L0 in w of SHA*). HDRP's sky ambient probe, already divided by pi
+        # (Lit adds it to the diffuse without INV_PI): a uniform sky of SKY_SHARE times the sun's lux / pi.
+        "_AmbientProbeData": structured_buffer([[0.0, 0.0, 0.0, sky]] * 3 + [[0.0] * 4] * 4),
+        # ShaderVariables.hlsl:160, 390: the exposure texture's texel (multiplier, EV100).
+        "_ExposureTexture": image("R32G32_SFLOAT", [exposure, Setting.ev100], f"fixed exposure {Setting.ev100:g} EV100"),
+        # HDShadowContext.hlsl:26: the cascade atlas, reversed depth's far plane everywhere: nothing occludes.
+        "_ShadowmapCascadeAtlas": image("D32", [0.0], "far plane: no occluder"),
+        # ShaderVariables.hlsl:120: HDRP's global comparison sampler, linear clamp; Unity compares
+        # GreaterEqual under reversed depth (lavapipe lists no linear filtering of D32: point).
+        "s_linear_clamp_compare_sampler": sampler("point:clamp:compare-gequal", "linear clamp compare, reversed depth"),
+    }
+    return values
+
+
+def compile_once(compile_pass):
+    """pipeline_pass.compile_pass, compiled once per pass, variant and compiler in a run: a later
+    picture of the same variant gets copies of the first one's SPIR-V, taken before its rebinding."""
+    done = {}
+
+    def compile(sub, pas, out, tmp, keywords=(), compiler="glslang"):
+        key = (sub.index, pas.name, tuple(sorted(keywords)), compiler)
+        if key not in done:
+            spvs = compile_pass(sub, pas, out, tmp, keywords, compiler)
+            done[key] = {stage: open(spv, "rb").read() for stage, spv in spvs.items()}
+        paths = {}
+        for stage, data in done[key].items():
+            paths[stage] = os.path.join(out, f"{stage}.spv")
+            with open(paths[stage], "wb") as f:
+                f.write(data)
+        return paths
+    return compile
+
+
+pp.GLOBALS["HDRP"] = hdrp_globals
+pp.compile_pass = compile_once(pp.compile_pass)
+pp.INCLUDE_PACKAGES["HDRP"] = HDRP_PACKAGES
+
+# ---------------------------------------------------------------------------------------------
+# Reads of the structured buffers' members
+
+
+def buffer_reads(spv, binding, members):
+    """Member names of the structured buffer at BINDING that the module reads: an access chain
+    (@data, element, member) names one; a chain that stops at the element loads all of them."""
+    words = pp.spirv_words(spv)
+    var = [v for v, b in pp.variable_bindings(words).items() if b == binding]
+    constants = {ops[1]: ops[2] for _, op, ops in pp.instructions(words) if op == pp.OP_CONSTANT and len(ops) >= 3}
+    read = set()
+    for _, op, ops in pp.instructions(words):
+        if op in (pp.OP_ACCESS_CHAIN, pp.OP_IN_BOUNDS_ACCESS_CHAIN) and ops[2] in var:
+            if len(ops) > 5:
+                read.add(members[constants[ops[5]]])
+            else:
+                read.update(members)
+    return read
+
+
+def check_buffer_reads(out):
+    """Adds the structured buffers' members each stage reads to OUT/manifest.json's reads, and the
+    defaulted ones among them to its defaulted_read; prints both."""
+    path = os.path.join(out, "manifest.json")
+    with open(path) as f:
+        manifest = json.load(f)
+    for stage in pp.STAGES:
+        spv = os.path.join(out, f"{stage}.spv")
+        if not os.path.exists(spv):
+            continue
+        found = []
+        for b in manifest["bindings"]:
+            if b.get("members"):
+                found += [f"{b['name']}[0].{m}" for m in sorted(buffer_reads(spv, b["binding"], b["members"]))]
+        manifest["reads"][stage] = sorted(manifest["reads"].get(stage, []) + found)
+        if found:
+            print(f"reads {stage} buffers {len(found)}: {', '.join(found)}")
+    read = set(x for r in manifest["reads"].values() for x in r)
+    extra = [d for d in manifest["defaults"] if d.split("=")[0] in read and d not in manifest["defaulted_read"]]
+    manifest["defaulted_read"] += extra
+    print(f"defaulted_read buffers {len(extra)}: {', '.join(extra)}")
+    with open(path, "w") as f:
+        json.dump(manifest, f, indent=1)
+
+
+def stencil(pass_name):
+    """The pass's Stencil block in one line: HDRP's stencil bits, which the harness does not draw."""
+    _, pas = pp.find_pass("HDRP", pass_name)
+    m = re.search(r"\bStencil\s*\{([^}]*)\}", pas.shaderlab)
+    return "Stencil { " + " ".join(m.group(1).split()) + " }" if m else "no Stencil"
+
+
+# ---------------------------------------------------------------------------------------------
+
+# (picture, pipeline, pass, keywords, world offset, rounded at). hdrp_lit_far: the same view 50 km from the
+# world's origin along x and z, where float32 positions step by 4 mm; hdrp_lit_near: at the origin with
+# the object's and the camera's positions as float32 rounds them there. Camera-relative rendering that
+# subtracts the camera from the translation before adding the rotated position draws the two alike.
+FAR = [50000.0, 0.0, 50000.0]
+PICTURES = [("lit", "URP", "ForwardLit", [], None, None), ("hdrp_depth", "HDRP", "DepthForwardOnly", [], None, None),
+            ("hdrp_lit", "HDRP", "ForwardOnly", ["SHADOW_LOW"], None, None),
+            ("hdrp_lit_far", "HDRP", "ForwardOnly", ["SHADOW_LOW"], FAR, None),
+            ("hdrp_lit_near", "HDRP", "ForwardOnly", ["SHADOW_LOW"], None, FAR)]
+
+
+def main(argv=None):
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--out", default=os.path.join(pp.PKG_DIR, ".build", "pipeline-pass-hdrp"))
+    ap.add_argument("--only", choices=[p[0] for p in PICTURES], action="append", help="draw only these pictures")
+    options.add_number(ap, "--sun-elevation", range="elevation", default=30.0, help="degrees above the horizon (default 30)")
+    options.add_number(ap, "--sun-azimuth", range="azimuth", default=-140.0, help="degrees from +z towards +x (default -140)")
+    ap.add_argument("--light-color", default="1,0.96,0.9", help="R,G,B: the sun's linear colour (URP: its final colour)")
+    ap.add_argument("--leave-default", action="append", default=[], help="NAME: leave a member, buffer or image to its default")
+    ap.add_argument("--flip-light-forward", action="store_true", help="HDRP: the light's forward towards the sun (broken)")
+    a = ap.parse_args(argv)
+    try:
+        color = [float(x) for x in a.light_color.split(",")]
+        if len(color) != 3 or not all(math.isfinite(x) and 0 <= x <= 1000 for x in color):
+            raise ValueError
+    except ValueError:
+        ap.error(f"argument --light-color: expected R,G,B, each 0..1000, got '{a.light_color}'")
+    Setting.flip_forward = a.flip_light_forward
+    cam = pp.Camera([0.0, 1.0, -1.0], [0.0] * 3, 50.0, 4, 3, 0.01, 20.0)
+    identity = [[1.0 if i == j else 0.0 for j in range(4)] for i in range(4)]
+    names = set(hdrp_globals(cam, identity, identity, [0.0, 1.0, 0.0], [1.0] * 3))
+    for name in a.leave_default:
+        if name not in names:
+            ap.error(f"argument --leave-default: HDRP's scene does not set '{name}'")
+    scene = types.SimpleNamespace(sun_elevation=a.sun_elevation, sun_azimuth=a.sun_azimuth, light_color=color,
+                                  leave_default=a.leave_default, fill_from=[])
+    os.makedirs(a.out, exist_ok=True)
+    buffers = pp.pack_scene(a.out)
+    for picture, pipeline, pass_name, keywords, offset, rounded_at in PICTURES:
+        if a.only and picture not in a.only:
+            continue
+        Setting.world_offset, Setting.rounded_at = offset, rounded_at
+        folder = os.path.join(a.out, picture)
+        args = pp.prepare(scene, pipeline, pass_name, keywords, buffers, folder)
+        if pipeline == "HDRP":
+            check_buffer_reads(folder)
+            print(f"not reproduced: {pass_name} {stencil(pass_name)} (the harness has no stencil)")
+        pp.draw(args, buffers, os.path.join(a.out, picture + ".png"), os.path.join(folder, "harness.log"))
+
+
+if __name__ == "__main__":
+    main()
