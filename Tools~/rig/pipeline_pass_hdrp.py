@@ -147,7 +147,7 @@ def image(fmt, texel, why):
             f.write(struct.pack(f"<{len(texel)}f", *texel))
         report["filled"].append(f"{name}={fmt}({','.join(pp.show(x) for x in texel)}) ({why})")
         return {"name": name, "binding": binding, "kind": kind, "format": fmt, "file": path,
-                "bytes": 4 * len(texel), "arrayed": "Array" in size}
+                "bytes": 4 * len(texel), "arrayed": "Array" in size, "size": [1, 1]}
     return fill
 
 
@@ -413,7 +413,7 @@ def main(argv=None):
         if name not in names:
             ap.error(f"argument --leave-default: HDRP's scene does not set '{name}'")
     scene = types.SimpleNamespace(sun_elevation=a.sun_elevation, sun_azimuth=a.sun_azimuth, light_color=color,
-                                  leave_default=a.leave_default, fill_from=[])
+                                  leave_default=a.leave_default, fill_from=[], transpose=[])
     os.makedirs(a.out, exist_ok=True)
     buffers = pp.pack_scene(a.out)
     for picture, pipeline, pass_name, keywords, offset, rounded_at in PICTURES:
