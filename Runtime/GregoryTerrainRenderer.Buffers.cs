@@ -64,9 +64,9 @@ namespace GregoryTerrain
             SetBuffer(ShaderIds.Regions, _gpu.Regions);
             SetBuffer(ShaderIds.GridLines, _gpu.GridLines);
             // _GridSize is part of TerrainParams: the block was cleared above, so the next plan sends it.
-            grid.GetHeightRange(out _gridMinZ, out _gridMaxZ);
+            grid.GetHeightRange(out float minZ, out float maxZ);
 
-            _keys.Uploaded(key);
+            _keys.Uploaded(key, minZ, maxZ);
             _gridStamp++;
             UploadCount++;
             _state.ResetOrigins();
@@ -136,8 +136,8 @@ namespace GregoryTerrain
             if (held.grid != key.grid || _gpu.ControlPoints == null) return false;
             PatchGrid g = grid.UpdatedPatchGrid(_gpu.Grid, held.version, out int[] changed);
             if (g == null) return false;
-            _gpu.UploadPatches(g, changed, ref _gridMinZ, ref _gridMaxZ);
-            _keys.Uploaded(key);
+            _gpu.UploadPatches(g, changed);
+            _keys.PatchesUploaded(key, g, changed);   // the height range widens by the edited patches
             _gridStamp++;   // the vertex cache evaluates its tiles again; the settings block holds only the grid's size
             return true;
         }

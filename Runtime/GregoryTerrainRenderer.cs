@@ -3,6 +3,7 @@ using System.Collections.Generic;
 using Unity.Profiling;
 using UnityEngine;
 using UnityEngine.Rendering;
+using static GregoryTerrain.UnityConversions;
 #if UNITY_EDITOR
 using UnityEditor;
 using UnityEditor.SceneManagement;
@@ -114,7 +115,6 @@ namespace GregoryTerrain
         readonly FrameState _state = new FrameState();
         TerrainParams _params => _state.parameters;
         string _settingsError => _state.error;
-        float _gridMinZ, _gridMaxZ;
         static bool s_FallbackLogged;
         Double3 _worldOffset;                            // ShiftOrigin's sum, in double (floating origin)
         int _gridStamp;                                  // bumped on every upload: the cache sees new grid buffers
@@ -337,7 +337,7 @@ namespace GregoryTerrain
         public SnowSimulator SnowSimulator => _snow;
 
         /// <summary>True when the last frame drew from the vertex cache (GT_VERTEX_CACHE on).</summary>
-        public bool UsesVertexCache => _usesCache;
+        public bool UsesVertexCache => _keys.UsesCache;
 
         /// <summary>Why Compute cache is chosen but the domain stage draws (no compute shaders, cache shader, LOD camera...), or null.</summary>
         public string VertexCacheFallbackReason => _keys.CacheFallbackReason;
@@ -397,116 +397,25 @@ namespace GregoryTerrain
             if (count) SetVector(ShaderIds.LodLevels, new Vector4(_state.levelCount, 0f, 0f, 0f));
         }
 
-        // ---- Compute cache: when it runs, its size check; the pass is VertexCachePass
+        // ---- Compute cache: the pass is VertexCachePass, its frame VertexCacheDriver
 
-        readonly VertexCachePass _cache = new VertexCachePass();
-        bool _usesCache;
+        readonly VertexCacheDriver _cache = new VertexCacheDriver();
 
-        /// <summary>
-        /// This frame's part of the compute cache, after the constants: whether it runs (else the domain
-        /// stage draws, buffers released), the size check before touching anything, buffers made when M, L
-        /// or snow changed, a dispatch when the pass's inputs changed (<see cref="VertexCachePass.Update"/>).
-        /// False when nothing may be drawn: the size check failed (logged once, <see cref="SettingsError"/>;
-        /// the old buffers and keyword kept), or the cache was never filled (an LOD camera without pixels).
-        /// </summary>
+        /// <summary>This frame's part of the compute cache, after the constants (<see cref="VertexCacheDriver.Update"/>).</summary>
         bool UpdateVertexCache(bool fallback)
         {
-            _usesCache = false;
-            // The levels draw through the domain stage (the cache holds one range's tiles).
-            if (vertexEvaluation != VertexEvaluation.ComputeCache || LevelsOn(fallback))
+            var inputs = new VertexCacheDriver.Inputs
             {
-                _keys.CacheNotUsed(null);
-                StopCache();
-                return true;
-            }
-            bool snow = SnowOn();
-            Camera cam = EffectiveLodCamera;
-            SnowSimulator snowSource = snow ? _snow : null;
-            string reason = CacheUnavailableReason(fallback, cam, snow, snowSource);
-            if (reason != null)
-            {
-                if (_keys.CacheNotUsed(reason))
-                    Debug.LogWarning($"{name}: Vertex evaluation is Compute cache, but {reason}; evaluating in the domain stage instead.", this);
-                StopCache();
-                return true;
-            }
-            _keys.CacheUsed();
-
-            int limit = VertexCache.FactorLimit(_params.tess);
-            if (!CacheFits(limit, snow)) return false;
-
-            _cache.EnsureBuffers(CacheTilesAcross, limit, snow);
-            int w = cam.pixelWidth, h = cam.pixelHeight;
-            if (w > 0 && h > 0)
-            {
-                var inputs = new VertexCachePass.Inputs
-                {
-                    parameters = _params,
-                    objectToClip = ObjectToClip(cam),
-                    worldToObject = ToMatrix4x4(_state.worldToObject),
-                    screenSize = new Vector4(w, h, 1f / w, 1f / h),
-                    controlPoints = _gpu.ControlPoints, regions = _gpu.Regions, gridLines = _gpu.GridLines,
-                    gridStamp = _gridStamp,
-                    effects = Effects(snow),
-                    noiseCells = _gpu.NoiseCells,
-                    snowDepth = snowSource != null ? snowSource.DepthBuffer : null,
-                    snowMapSize = snowSource != null ? snowSource.MapSize : default,
-                    snowVersion = snowSource != null ? snowSource.DepthVersion : 0,
-                };
-                if (_cache.Update(cacheShader, inputs)) _cache.BindTo(_props);
-            }
-            if (!_cache.HasContent) return false;   // nothing evaluated yet (a camera without pixels)
-            _usesCache = true;   // the draw material gets GT_VERTEX_CACHE
-            return true;
+                chosen = vertexEvaluation == VertexEvaluation.ComputeCache && !LevelsOn(fallback),
+                fallback = fallback, shader = cacheShader, lodCamera = EffectiveLodCamera, material = material,
+                snow = SnowOn() ? _snow : null, tilesAcross = CacheTilesAcross, gridStamp = _gridStamp,
+                parameters = _params, objectToWorld = _state.objectToWorld, worldToObject = _state.worldToObject, gpu = _gpu,
+            };
+            return _cache.Update(inputs, _keys, _props, this);
         }
 
-        /// <summary>
-        /// The terrain's object -> clip transform as the graphics stages get it (GT_ObjectToClip: the
-        /// platform's depth range and orientation). A render-texture y flip changes no factor (screen
-        /// lengths) nor the culling (symmetric in y): renderIntoTexture = false serves every target.
-        /// </summary>
-        internal Matrix4x4 ObjectToClip(Camera cam) =>
-            GL.GetGPUProjectionMatrix(cam.projectionMatrix, false) * cam.worldToCameraMatrix * ToMatrix4x4(_state.objectToWorld);
-
-        /// <summary>The size check, run when M, L, snow or the device's limit changed; logged once per failing setting.</summary>
-        bool CacheFits(int limit, bool snow)
-        {
-            string error = _keys.CheckCacheFits(CacheTilesAcross, limit, snow, SystemInfo.maxGraphicsBufferSize, out bool fresh);
-            if (error != null && fresh) Debug.LogError($"{name}: cannot draw with these settings: {error}", this);
-            return error == null;
-        }
-
-        /// <summary>Why the compute cache cannot run, naming the setting or device flag, or null.</summary>
-        string CacheUnavailableReason(bool fallback, Camera cam, bool snow, SnowSimulator snowSource)
-        {
-            if (fallback)
-                return "the material draws its no-tessellator fallback SubShader (there is no domain stage to feed)";
-            if (!SystemInfo.supportsComputeShaders)
-                return "this device has no compute shaders (SystemInfo.supportsComputeShaders = false)";
-            if (cacheShader == null)
-                return "no compute shader is assigned to Cache Shader (Shaders/Cache/TerrainCache.compute)";
-            if (!_cache.FindKernels(cacheShader, out string missing))
-                return $"the Cache Shader '{cacheShader.name}' has no kernel '{missing}'";
-            if (cam == null)
-                return "there is no LOD camera (LOD Camera is empty and no camera is tagged MainCamera)";
-            return null;
-        }
-
-        VertexCachePass.Effects Effects(bool snow)
-        {
-            var e = VertexCachePass.Effects.None;
-            if (material.IsKeywordEnabled(ShaderIds.NoiseKeyword)) e |= VertexCachePass.Effects.Noise;
-            if (material.IsKeywordEnabled(ShaderIds.HeightColorKeyword)) e |= VertexCachePass.Effects.HeightColor;
-            if (_gpu.NoiseCells != null) e |= VertexCachePass.Effects.NoiseTable;   // made by UpdateNoiseTableBinding while the noise is tiled
-            if (snow) e |= VertexCachePass.Effects.Snow;
-            return e;
-        }
-
-        /// <summary>The domain stage draws: the cache's memory given back (the draw material drops GT_VERTEX_CACHE).</summary>
-        void StopCache()
-        {
-            if (_cache.IsAllocated) _cache.Release();
-        }
+        /// <summary>The terrain's object -> clip transform as the graphics stages get it (<see cref="UnityConversions.ObjectToClip"/>).</summary>
+        internal Matrix4x4 ObjectToClip(Camera cam) => UnityConversions.ObjectToClip(cam, _state.objectToWorld);
 
         // ---- Unity messages -------------------------------------------------------------------------
 
@@ -544,7 +453,6 @@ namespace GregoryTerrain
         {
             ReleaseGpuResources();
             _drawCopy.Release(_keys);
-            _usesCache = false;
         }
 
         // ---- drawing --------------------------------------------------------------------------------
@@ -674,7 +582,7 @@ namespace GregoryTerrain
                 cacheReady = UpdateVertexCache(fallback);
             if (!cacheReady) return false;
             UpdateSnowBinding();
-            return UpdateDrawMaterial(FramePlanner.Keywords(_state, _usesCache, SnowOn())) != null;
+            return UpdateDrawMaterial(FramePlanner.Keywords(_state, _keys.UsesCache, SnowOn())) != null;
         }
 
         /// <summary>The serialized settings as Core values.</summary>
@@ -728,8 +636,6 @@ namespace GregoryTerrain
             if ((change & FrameChange.Levels) != 0) SendLevels((change & FrameChange.LevelCount) != 0);
         }
 
-        static Vector4 ToVector(Float4 v) => new Vector4(v.x, v.y, v.z, v.w);
-
         // Every value put on the property block goes through these: PropertiesSetLastPrepare.
         void SetVector(int id, Vector4 v) { _props.SetVector(id, v); _setLastPrepare.Add(id); }
         void SetMatrix(int id, Matrix4x4 m) { _props.SetMatrix(id, m); _setLastPrepare.Add(id); }
@@ -762,8 +668,8 @@ namespace GregoryTerrain
             float noise = NoiseMargin();
             float snow = SnowDepthCap();   // the shader's tile culling raises a tile's box by it (TileCulled)
             TerrainRange drawn = LevelsOn(_keys.LastDrawFallback) ? TerrainRange.full : _range;   // the levels end with the whole terrain
-            Vector3 min = new Vector3((float)drawn.c, _gridMinZ - noise, (float)drawn.d);
-            Vector3 max = new Vector3((float)drawn.g, _gridMaxZ + noise + snow, (float)drawn.h);
+            Vector3 min = new Vector3((float)drawn.c, _keys.GridMinZ - noise, (float)drawn.d);
+            Vector3 max = new Vector3((float)drawn.g, _keys.GridMaxZ + noise + snow, (float)drawn.h);
             Matrix4x4 m = ToMatrix4x4(_state.objectToWorld);   // size, height scale and offset included (t is added to the object points below)
             Double3 t = TerrainVertex.TerrainToObject(_state.outputOffset);
             min -= new Vector3((float)t.x, (float)t.y, (float)t.z);
@@ -777,18 +683,6 @@ namespace GregoryTerrain
                 Mathf.Abs(m.m20) * e.x + Mathf.Abs(m.m21) * e.y + Mathf.Abs(m.m22) * e.z);
             return new Bounds(c, 2f * we);
         }
-
-        internal static Float4x4 ToFloat4x4(Matrix4x4 m) => Float4x4.FromRows(
-            m.m00, m.m01, m.m02, m.m03, m.m10, m.m11, m.m12, m.m13,
-            m.m20, m.m21, m.m22, m.m23, m.m30, m.m31, m.m32, m.m33);
-
-        static Matrix4x4 ToMatrix4x4(Float4x4 f) => new Matrix4x4
-        {
-            m00 = f.c0.x, m10 = f.c0.y, m20 = f.c0.z, m30 = f.c0.w,
-            m01 = f.c1.x, m11 = f.c1.y, m21 = f.c1.z, m31 = f.c1.w,
-            m02 = f.c2.x, m12 = f.c2.y, m22 = f.c2.z, m32 = f.c2.w,
-            m03 = f.c3.x, m13 = f.c3.y, m23 = f.c3.z, m33 = f.c3.w,
-        };
 
         /// <summary>
         /// The material's keywords that change the height noise, as Core names them: GT_NOISE, and
