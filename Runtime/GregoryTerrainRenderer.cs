@@ -1,11 +1,10 @@
 using System;
 using System.Collections.Generic;
-using Unity.Profiling;
 using UnityEngine;
 using UnityEngine.Rendering;
+using static GregoryTerrain.UnityConversions;
 #if UNITY_EDITOR
 using UnityEditor;
-using UnityEditor.SceneManagement;
 #endif
 
 namespace GregoryTerrain
@@ -15,13 +14,13 @@ namespace GregoryTerrain
     /// (<c>beginCameraRendering</c> in URP/HDRP, <c>Camera.onPreCull</c> in Built-in; Edit Mode too):
     /// M x M tessellated tiles over <see cref="Range"/> or the Horizon levels. Only <c>_Range</c> is sent
     /// every frame (<see cref="PerFrameTrafficBytes"/>), the rest on change; keywords go on a runtime
-    /// copy of the material (DrawMaterialCopy). Files: this, <c>.Snow</c>, <c>.Buffers</c>; queries on
-    /// <see cref="Surface"/>; Core's FramePlanner and FrameResources; internals.md.
+    /// copy of the material (DrawMaterialCopy). The frame: TerrainFrameDriver; queries on <see cref="Surface"/>;
+    /// Core's FramePlanner and FrameResources; internals.md.
     /// </summary>
     [ExecuteAlways]
     [DisallowMultipleComponent]
     [AddComponentMenu("Gregory Terrain/Gregory Terrain Renderer")]
-    public sealed partial class GregoryTerrainRenderer : MonoBehaviour
+    public sealed class GregoryTerrainRenderer : MonoBehaviour
     {
         /// <summary>
         /// Bytes set per camera in the steady state: <c>_Range</c>, one float4 (Compute cache too);
@@ -107,26 +106,16 @@ namespace GregoryTerrain
         [Tooltip("Draw the patch boundaries in the Scene view (shortcut Shift+G in the Scene view by default).")]
         public bool debugShowPatchWireframe;
 
-        // ---- state ----------------------------------------------------------------------------------
-        MaterialPropertyBlock _props;
-        TerrainRange _range = TerrainRange.full;
-        // What the property block holds and what it was made from (Core's FramePlanner plans each frame).
-        readonly FrameState _state = new FrameState();
-        TerrainParams _params => _state.parameters;
-        string _settingsError => _state.error;
-        float _gridMinZ, _gridMaxZ;
-        static bool s_FallbackLogged;
+        // ---- state: the inputs set through the API, and the owners ------------------------------------
+        TerrainRange _range = TerrainRange.full;         // the drawn range (SetDrawnRange leaves the saved one alone)
         Double3 _worldOffset;                            // ShiftOrigin's sum, in double (floating origin)
-        int _gridStamp;                                  // bumped on every upload: the cache sees new grid buffers
-        readonly List<int> _setLastPrepare = new List<int>(16);
         SnowSimulator _snow;                             // the enabled simulator attached to this renderer
+        TerrainFrameDriver _frameDriver;                 // the per-camera frame: GPU objects, Core's FrameState
         GregoryTerrainSurface _surface;                  // made on first use
 
-        /// <summary>
-        /// SubShader tag of GregoryTerrain.shader: "Tessellated" or "Fallback", the draw the SubShader
-        /// expects (4-control-point tile patches, or the instanced vertex grid).
-        /// </summary>
-        const string DrawTag = "GregoryTerrainDraw";
+        TerrainFrameDriver Frame => _frameDriver ??= new TerrainFrameDriver(this);
+        FrameState _state => Frame.State;
+        FrameResources _keys => _state.resources;
 
         // ---- public API -----------------------------------------------------------------------------
 
@@ -164,10 +153,10 @@ namespace GregoryTerrain
             ? new NoiseSettings(noiseAmplitude, noiseFrequency, noiseAlpha, noiseBeta, noiseOctaves) : (NoiseSettings?)null;
 
         /// <summary>Whether a grid is uploaded with valid settings: <see cref="WorldBounds"/> holds the drawn terrain.</summary>
-        internal bool HasDrawn => _gpu.Grid != null && _settingsError == null;
+        internal bool HasDrawn => Frame.Gpu.Grid != null && _state.error == null;
 
         // The estimate's inputs.
-        internal PatchGrid UploadedPatchGrid => _gpu.Grid;
+        internal PatchGrid UploadedPatchGrid => Frame.Gpu.Grid;
         internal FrameState State => _state;
 
         /// <summary>The patch grid drawn. Setting another asset releases and re-uploads on the next frame.</summary>
@@ -242,9 +231,9 @@ namespace GregoryTerrain
 
         // The serialized values can be anything the Inspector or a scene file holds: a bad one draws
         // at 1 (logged by OnValidate) rather than throwing from every frame.
-        Double2 ValidSize() => terrainSize.x > 0f && terrainSize.y > 0f && float.IsFinite(terrainSize.x) && float.IsFinite(terrainSize.y)
+        internal Double2 ValidSize() => terrainSize.x > 0f && terrainSize.y > 0f && float.IsFinite(terrainSize.x) && float.IsFinite(terrainSize.y)
             ? new Double2(terrainSize.x, terrainSize.y) : new Double2(1.0, 1.0);
-        double ValidHeightScale() => heightScale > 0f && float.IsFinite(heightScale) ? heightScale : 1.0;
+        internal double ValidHeightScale() => heightScale > 0f && float.IsFinite(heightScale) ? heightScale : 1.0;
 
         /// <summary>Tiles per side M.</summary>
         public int Tiles { get => tiles; set => tiles = Mathf.Clamp(value, 1, 64); }
@@ -285,7 +274,7 @@ namespace GregoryTerrain
         public static bool UsesFallback => !SystemInfo.supportsTessellationShaders;
 
         /// <summary>True when the vertex-shader fallback draws: the SubShader's "GregoryTerrainDraw" tag (Material.GetTag), else no tessellation on the device.</summary>
-        public bool DrawsFallback => material != null ? ReadDrawMode() : UsesFallback;
+        public bool DrawsFallback => material != null ? Frame.ReadDrawMode() : UsesFallback;
 
         /// <summary>The most triangles these settings draw: 2 F^2 per tile, F the uniform factor, else maxFactor (fallback: its grid's). A view's: <see cref="EstimateTrianglesInView"/>.</summary>
         public double EstimatedTriangleCount => DrawnTileCount * TessellationPolicy.EstimateTriangleCount(1,
@@ -304,7 +293,7 @@ namespace GregoryTerrain
         }
 
         /// <summary>Why the terrain cannot be drawn: the device (no structured buffers), or the current settings (Core's message, naming field and value); else null.</summary>
-        public string SettingsError => s_DeviceError ?? _settingsError ?? _keys.CacheError;
+        public string SettingsError => TerrainFrameDriver.DeviceError ?? _state.error ?? _keys.CacheError;
 
         /// <summary>
         /// Where the vertices are evaluated (<see cref="GregoryTerrain.VertexEvaluation"/>). Compute
@@ -322,7 +311,7 @@ namespace GregoryTerrain
         }
 
         /// <summary>Shaders/Cache/TerrainCache.compute, for <see cref="VertexEvaluation.ComputeCache"/>.</summary>
-        public ComputeShader CacheShader { get => cacheShader; set { cacheShader = value; _cache.Invalidate(); } }
+        public ComputeShader CacheShader { get => cacheShader; set { cacheShader = value; Frame.InvalidateCache(); } }
 
         /// <summary>The camera whose view sets the cached tessellation (null: Camera.main).</summary>
         public Camera LodCamera { get => lodCamera; set => lodCamera = value; }
@@ -337,7 +326,7 @@ namespace GregoryTerrain
         public SnowSimulator SnowSimulator => _snow;
 
         /// <summary>True when the last frame drew from the vertex cache (GT_VERTEX_CACHE on).</summary>
-        public bool UsesVertexCache => _usesCache;
+        public bool UsesVertexCache => _keys.UsesCache;
 
         /// <summary>Why Compute cache is chosen but the domain stage draws (no compute shaders, cache shader, LOD camera...), or null.</summary>
         public string VertexCacheFallbackReason => _keys.CacheFallbackReason;
@@ -359,23 +348,21 @@ namespace GregoryTerrain
         int TilesAcross(bool fallback) => tiles + (Settings(fallback).AnchorsTiles ? 1 : 0);
 
         /// <summary>Tiles per axis the cache holds (it never runs with the fallback grid).</summary>
-        int CacheTilesAcross => TilesAcross(false);
+        internal int CacheTilesAcross => TilesAcross(false);
 
         /// <summary>GPU memory the vertex cache holds now (0 while it is not allocated).</summary>
-        public long VertexCacheAllocatedBytes => _cache.AllocatedBytes;
+        public long VertexCacheAllocatedBytes => Frame.CacheAllocatedBytes;
 
         /// <summary>True while GPU buffers for a grid are held.</summary>
-        public bool HasGpuResources => _gpu.ControlPoints != null;
+        public bool HasGpuResources => Frame.Gpu.ControlPoints != null;
 
         // ---- Horizon levels (internals.md), laid out by the planner
 
         /// <summary>Narrowest level, in metres: the feet's level is the first power-of-two part at least this wide.</summary>
         internal const double FinestLevelMeters = 16.0;
 
-        readonly Vector4[] _levelVectors = new Vector4[LodTiles.MaxLevels];   // SetVectorArray's copy of the plan's levels
-
         /// <summary>The levels drawn: the setting, with the tessellator.</summary>
-        bool LevelsOn(bool fallback) => horizonLevels && !fallback;
+        internal bool LevelsOn(bool fallback) => horizonLevels && !fallback;
 
         /// <summary>The finest level's exponent for the terrain's width in world units.</summary>
         internal int FinestExponent()
@@ -388,124 +375,56 @@ namespace GregoryTerrain
         /// <summary>Horizon levels drawn (L), 0 for one range.</summary>
         internal int LevelCount => LevelsOn(DrawsFallback) ? LodLevels.LevelCount(FinestExponent()) : 0;
 
-        /// <summary>The plan's levels, one float4 each; <c>_LodLevels</c> when the count changed.</summary>
-        void SendLevels(bool count)
+        internal Matrix4x4 ObjectToClip(Camera cam) => UnityConversions.ObjectToClip(cam, _state.objectToWorld);
+
+        // ---- the draw material and the Snow Simulator attached
+
+        /// <summary>The material drawn now: the asset, or its runtime copy while the keywords differ.</summary>
+        internal Material DrawMaterial => Frame.DrawMaterial;
+
+        internal Material UpdateDrawMaterial(FrameKeywords keywords) => Frame.UpdateDrawMaterial(keywords);
+
+        /// <summary>True while the tiled noise's table is held (the Unity-side tests).</summary>
+        internal bool HasNoiseTable => Frame.Gpu.NoiseCells != null;
+
+        /// <summary>Whole grid uploads (the Unity-side tests).</summary>
+        internal int UploadCount => Frame.UploadCount;
+
+        /// <summary>True while an enabled Snow Simulator is attached and holds a depth map: the draw has GT_SNOW.</summary>
+        internal bool SnowOn() => _snow != null && _snow.DepthBuffer != null;
+
+        /// <summary>HLSL <c>SnowDepthCap()</c>: the deepest snow drawn, in terrain height units (0 without snow).</summary>
+        internal float SnowDepthCap() => SnowOn() ? _snow.MapSize.z : 0f;
+
+        /// <summary>Called by a Snow Simulator whose Terrain is this renderer, when it is enabled.</summary>
+        internal void AttachSnow(SnowSimulator simulator)
         {
-            for (int k = 0; k < _state.levelCount; k++) _levelVectors[k] = ToVector(_state.levelVectors[k]);
-            _props.SetVectorArray(ShaderIds.Ranges, _levelVectors);
-            _setLastPrepare.Add(ShaderIds.Ranges);
-            if (count) SetVector(ShaderIds.LodLevels, new Vector4(_state.levelCount, 0f, 0f, 0f));
+            if (_snow != null && _snow != simulator)
+                Debug.LogWarning($"{name}: Snow Simulator '{simulator.name}' replaces '{_snow.name}'; one simulator per terrain.", this);
+            _snow = simulator;
         }
 
-        // ---- Compute cache: when it runs, its size check; the pass is VertexCachePass
-
-        readonly VertexCachePass _cache = new VertexCachePass();
-        bool _usesCache;
-
-        /// <summary>
-        /// This frame's part of the compute cache, after the constants: whether it runs (else the domain
-        /// stage draws, buffers released), the size check before touching anything, buffers made when M, L
-        /// or snow changed, a dispatch when the pass's inputs changed (<see cref="VertexCachePass.Update"/>).
-        /// False when nothing may be drawn: the size check failed (logged once, <see cref="SettingsError"/>;
-        /// the old buffers and keyword kept), or the cache was never filled (an LOD camera without pixels).
-        /// </summary>
-        bool UpdateVertexCache(bool fallback)
+        /// <summary>Called by the attached Snow Simulator when it is disabled or retargeted.</summary>
+        internal void DetachSnow(SnowSimulator simulator)
         {
-            _usesCache = false;
-            // The levels draw through the domain stage (the cache holds one range's tiles).
-            if (vertexEvaluation != VertexEvaluation.ComputeCache || LevelsOn(fallback))
-            {
-                _keys.CacheNotUsed(null);
-                StopCache();
-                return true;
-            }
-            bool snow = SnowOn();
-            Camera cam = EffectiveLodCamera;
-            SnowSimulator snowSource = snow ? _snow : null;
-            string reason = CacheUnavailableReason(fallback, cam, snow, snowSource);
-            if (reason != null)
-            {
-                if (_keys.CacheNotUsed(reason))
-                    Debug.LogWarning($"{name}: Vertex evaluation is Compute cache, but {reason}; evaluating in the domain stage instead.", this);
-                StopCache();
-                return true;
-            }
-            _keys.CacheUsed();
-
-            int limit = VertexCache.FactorLimit(_params.tess);
-            if (!CacheFits(limit, snow)) return false;
-
-            _cache.EnsureBuffers(CacheTilesAcross, limit, snow);
-            int w = cam.pixelWidth, h = cam.pixelHeight;
-            if (w > 0 && h > 0)
-            {
-                var inputs = new VertexCachePass.Inputs
-                {
-                    parameters = _params,
-                    objectToClip = ObjectToClip(cam),
-                    worldToObject = ToMatrix4x4(_state.worldToObject),
-                    screenSize = new Vector4(w, h, 1f / w, 1f / h),
-                    controlPoints = _gpu.ControlPoints, regions = _gpu.Regions, gridLines = _gpu.GridLines,
-                    gridStamp = _gridStamp,
-                    effects = Effects(snow),
-                    noiseCells = _gpu.NoiseCells,
-                    snowDepth = snowSource != null ? snowSource.DepthBuffer : null,
-                    snowMapSize = snowSource != null ? snowSource.MapSize : default,
-                    snowVersion = snowSource != null ? snowSource.DepthVersion : 0,
-                };
-                if (_cache.Update(cacheShader, inputs)) _cache.BindTo(_props);
-            }
-            if (!_cache.HasContent) return false;   // nothing evaluated yet (a camera without pixels)
-            _usesCache = true;   // the draw material gets GT_VERTEX_CACHE
-            return true;
+            if (_snow != simulator) return;
+            _snow = null;
         }
 
         /// <summary>
-        /// The terrain's object -> clip transform as the graphics stages get it (GT_ObjectToClip: the
-        /// platform's depth range and orientation). A render-texture y flip changes no factor (screen
-        /// lengths) nor the culling (symmetric in y): renderIntoTexture = false serves every target.
+        /// What a Snow Simulator evaluates its field from: the grid's buffers, the constants last
+        /// sent (any range: the simulator replaces it), whether the material has GT_NOISE, and with tiled
+        /// noise (GT_NOISE_TABLE) the noise table, else null. False until a grid is uploaded with valid settings.
         /// </summary>
-        internal Matrix4x4 ObjectToClip(Camera cam) =>
-            GL.GetGPUProjectionMatrix(cam.projectionMatrix, false) * cam.worldToCameraMatrix * ToMatrix4x4(_state.objectToWorld);
-
-        /// <summary>The size check, run when M, L, snow or the device's limit changed; logged once per failing setting.</summary>
-        bool CacheFits(int limit, bool snow)
+        internal bool TryGetSnowTerrain(out TerrainGpuBuffers buffers, out TerrainParams parameters, out bool noise, out GraphicsBuffer noiseCells, out int gridStamp)
         {
-            string error = _keys.CheckCacheFits(CacheTilesAcross, limit, snow, SystemInfo.maxGraphicsBufferSize, out bool fresh);
-            if (error != null && fresh) Debug.LogError($"{name}: cannot draw with these settings: {error}", this);
-            return error == null;
-        }
-
-        /// <summary>Why the compute cache cannot run, naming the setting or device flag, or null.</summary>
-        string CacheUnavailableReason(bool fallback, Camera cam, bool snow, SnowSimulator snowSource)
-        {
-            if (fallback)
-                return "the material draws its no-tessellator fallback SubShader (there is no domain stage to feed)";
-            if (!SystemInfo.supportsComputeShaders)
-                return "this device has no compute shaders (SystemInfo.supportsComputeShaders = false)";
-            if (cacheShader == null)
-                return "no compute shader is assigned to Cache Shader (Shaders/Cache/TerrainCache.compute)";
-            if (!_cache.FindKernels(cacheShader, out string missing))
-                return $"the Cache Shader '{cacheShader.name}' has no kernel '{missing}'";
-            if (cam == null)
-                return "there is no LOD camera (LOD Camera is empty and no camera is tagged MainCamera)";
-            return null;
-        }
-
-        VertexCachePass.Effects Effects(bool snow)
-        {
-            var e = VertexCachePass.Effects.None;
-            if (material.IsKeywordEnabled(ShaderIds.NoiseKeyword)) e |= VertexCachePass.Effects.Noise;
-            if (material.IsKeywordEnabled(ShaderIds.HeightColorKeyword)) e |= VertexCachePass.Effects.HeightColor;
-            if (_gpu.NoiseCells != null) e |= VertexCachePass.Effects.NoiseTable;   // made by UpdateNoiseTableBinding while the noise is tiled
-            if (snow) e |= VertexCachePass.Effects.Snow;
-            return e;
-        }
-
-        /// <summary>The domain stage draws: the cache's memory given back (the draw material drops GT_VERTEX_CACHE).</summary>
-        void StopCache()
-        {
-            if (_cache.IsAllocated) _cache.Release();
+            buffers = Frame.Gpu;
+            parameters = _state.parameters; gridStamp = Frame.GridStamp;
+            noise = material != null && material.IsKeywordEnabled(ShaderIds.NoiseKeyword);
+            bool ready = HasDrawn;
+            // The table the draw binds (made here if the simulator asks before the next draw does).
+            noiseCells = ready && noise ? Frame.EnsureNoiseTable() : null;
+            return ready;
         }
 
         // ---- Unity messages -------------------------------------------------------------------------
@@ -540,12 +459,10 @@ namespace GregoryTerrain
         }
 
         /// <summary>What OnDisable and a domain reload free.</summary>
-        internal void ReleaseAll()
-        {
-            ReleaseGpuResources();
-            _drawCopy.Release(_keys);
-            _usesCache = false;
-        }
+        internal void ReleaseAll() => _frameDriver?.ReleaseAll();
+
+        /// <summary>Releases every GPU buffer this renderer holds. Safe to call twice.</summary>
+        public void ReleaseGpuResources() => _frameDriver?.ReleaseGpuResources();
 
         // ---- drawing --------------------------------------------------------------------------------
 
@@ -569,116 +486,15 @@ namespace GregoryTerrain
 
         void OnCameraPreCull(Camera cam) => DrawFor(cam);
 
-        /// <summary>
-        /// One draw for one camera: <c>_Range</c> and, on change only, the rest (<see cref="Prepare"/>),
-        /// then one Graphics.RenderPrimitives call that only <paramref name="cam"/> renders.
-        /// </summary>
-        internal void DrawFor(Camera cam)
-        {
-            if (cam == null || !DrawsIn(cam)) return;
-            using (s_DrawMarker.Auto())
-                Draw(cam);
-        }
+        internal void DrawFor(Camera cam) => Frame.DrawFor(cam);
 
-        // The Profiler's names for the per-camera work (a struct scope: nothing allocated).
-        static readonly ProfilerMarker s_DrawMarker = new ProfilerMarker("GregoryTerrainRenderer.Draw");
-        static readonly ProfilerMarker s_PrepareMarker = new ProfilerMarker("GregoryTerrainRenderer.Prepare");
-        static readonly ProfilerMarker s_VertexCacheMarker = new ProfilerMarker("GregoryTerrainRenderer.VertexCache");
+        /// <summary>Property IDs the last preparation set, in order (cache buffers not listed).</summary>
+        internal IReadOnlyList<int> PropertiesSetLastPrepare => Frame.PropertiesSetLastPrepare;
 
-        void Draw(Camera cam)
-        {
-            bool prepared;
-            using (s_PrepareMarker.Auto())
-                prepared = Prepare(cam);
-            if (!prepared) return;
-
-            var rp = new RenderParams(DrawMaterial)
-            {
-                camera = cam,
-                worldBounds = WorldBounds(),
-                matProps = _props,
-                shadowCastingMode = shadowCasting,
-                receiveShadows = receiveShadows,
-                layer = gameObject.layer,
-            };
-            int across = TileLattice.TilesAcross(_params), tileCount = across * across;
-            bool fallback = _keys.LastDrawFallback;
-            if (LevelsOn(fallback)) tileCount = _state.levelCount * tiles * tiles;   // L x M^2 tiles, laid out around cam by Prepare(cam)
-            if (fallback)
-                Graphics.RenderPrimitivesIndexed(rp, MeshTopology.Triangles, _gpu.FallbackIndices,
-                    _gpu.FallbackIndices.count, 0, tileCount);
-            else
-                // One 4-control-point patch per tile; the vertex stage derives tile and corner from
-                // SV_VertexID, so there is no vertex buffer.
-                Graphics.RenderPrimitives(rp, MeshTopology.Quads, 4 * tileCount, 1);
-        }
-
-        /// <summary>Never a preview camera; in the editor one whose scene culling mask shares a bit with ours (Prefab stages).</summary>
-        bool DrawsIn(Camera cam)
-        {
-            if (cam.cameraType == CameraType.Preview) return false;
-#if UNITY_EDITOR
-            return CameraSceneFilter.Draws(gameObject.sceneCullingMask, SceneCullingMaskOf(cam));
-#else
-            return true;
-#endif
-        }
-
-        /// <summary>
-        /// <paramref name="cam"/>'s object -> clip and pixel size, from which every pass of its draw takes
-        /// the factors; set only when they differ from what the property block holds.
-        /// </summary>
-        void PushTessellationView(Camera cam)
-        {
-            if (cam == null) return;
-            int w = cam.pixelWidth, h = cam.pixelHeight;
-            if (w <= 0 || h <= 0) return;   // renders nothing
-            Matrix4x4 m = ObjectToClip(cam);
-            var size = new Vector4(w, h, 1f / w, 1f / h);
-            if (_props.HasMatrix(ShaderIds.TessObjectToClip) && VertexCachePass.SameMatrix(m, _props.GetMatrix(ShaderIds.TessObjectToClip))
-                && VertexCachePass.SameVector(size, _props.GetVector(ShaderIds.TessScreenSize)))
-                return;
-            SetMatrix(ShaderIds.TessObjectToClip, m);
-            SetVector(ShaderIds.TessScreenSize, size);
-        }
-
-#if UNITY_EDITOR
-        static ulong SceneCullingMaskOf(Camera cam)
-        {
-            bool hasScene = cam.scene.IsValid();
-            return CameraSceneFilter.CameraMask(cam.overrideSceneCullingMask, hasScene,
-                hasScene ? EditorSceneManager.GetSceneCullingMask(cam.scene) : 0UL,
-                cam.cameraType == CameraType.SceneView);
-        }
-#endif
-
-        /// <summary>Uploads, the plan sent, the vertex cache, the material. False when nothing can be drawn.</summary>
-        bool Prepare(Camera cam = null)
-        {
-            _setLastPrepare.Clear();
-            if (material == null || grid == null || !grid.IsValid) return false;
-            if (!DeviceCanDraw()) return false;
-            if (!EnsureUploaded()) return false;
-
-            bool fallback = ReadDrawMode();
-            if (fallback && !EnsureFallbackIndices()) return false;
-
-            FrameChange change = FramePlanner.Plan(_state, FrameInputsFor(cam, fallback));
-            if ((change & FrameChange.Error) != 0) Debug.LogError($"{name}: cannot draw with these settings: {_settingsError}", this);
-            if (_settingsError != null) return false;   // logged once; drawn again after the next valid change
-            Send(change);
-            PushTessellationView(cam);
-            UpdateNoiseTableBinding();   // before the cache: its kernels read the same table
-            bool cacheReady;
-            using (s_VertexCacheMarker.Auto())
-                cacheReady = UpdateVertexCache(fallback);
-            if (!cacheReady) return false;
-            UpdateSnowBinding();
-            return UpdateDrawMaterial(FramePlanner.Keywords(_state, _usesCache, SnowOn())) != null;
-        }
+        internal Bounds WorldBounds() => Frame.WorldBounds();
 
         /// <summary>The serialized settings as Core values.</summary>
-        FrameSettings Settings(bool fallback)
+        internal FrameSettings Settings(bool fallback)
         {
             Color low = colorLow.linear, high = colorHigh.linear;
             return new FrameSettings
@@ -691,104 +507,11 @@ namespace GregoryTerrain
             };
         }
 
-        /// <summary>What the planner reads this frame.</summary>
-        FrameInputs FrameInputsFor(Camera cam, bool fallback)
-        {
-            var f = new FrameInputs
-            {
-                grid = _gpu.Grid,
-                settings = Settings(fallback),
-                range = _range,
-                noiseKeywords = NoiseKeywords(),
-                localToWorld = ToFloat4x4(transform.localToWorldMatrix), terrainSize = ValidSize(), heightScale = ValidHeightScale(), worldOffset = _worldOffset,
-                hasCamera = cam != null,
-            };
-            if (cam == null || !f.settings.levels) return f;
-            f.camera = cam.GetInstanceID();   // each camera keeps its own range origin
-            Double3 local = WorldToTerrainObject(cam.transform.position);   // object space: (x, height, y)
-            f.ground = new Double2(local.x, local.z);
-            f.finestExponent = FinestExponent();
-            return f;
-        }
-
-        /// <summary>Sets what the plan changed: steady, <c>_Range</c> alone (and the levels' <c>_Ranges</c>).</summary>
-        void Send(FrameChange change)
-        {
-            TerrainParams p = _params;
-            if ((change & FrameChange.Params) != 0)
-                for (int k = 0; k < TerrainParams.Float4Count; k++) SetVector(ShaderIds.Params[k], ToVector(p[k]));
-            if ((change & (FrameChange.Params | FrameChange.Range)) == FrameChange.Range) SetVector(ShaderIds.Range, ToVector(p.range));
-            if ((change & (FrameChange.Params | FrameChange.RangeOrigin)) == FrameChange.RangeOrigin) SetVector(ShaderIds.RangeOrigin, ToVector(p.rangeOrigin));
-            if ((change & FrameChange.TileLattice) != 0) SetVector(ShaderIds.TileLattice, ToVector(p.tileLattice));
-            if ((change & FrameChange.Matrices) != 0)
-            {
-                SetMatrix(ShaderIds.ObjectToWorld, ToMatrix4x4(_state.objectToWorld));
-                SetMatrix(ShaderIds.WorldToObject, ToMatrix4x4(_state.worldToObject));
-            }
-            if ((change & FrameChange.Levels) != 0) SendLevels((change & FrameChange.LevelCount) != 0);
-        }
-
-        static Vector4 ToVector(Float4 v) => new Vector4(v.x, v.y, v.z, v.w);
-
-        // Every value put on the property block goes through these: PropertiesSetLastPrepare.
-        void SetVector(int id, Vector4 v) { _props.SetVector(id, v); _setLastPrepare.Add(id); }
-        void SetMatrix(int id, Matrix4x4 m) { _props.SetMatrix(id, m); _setLastPrepare.Add(id); }
-        void SetBuffer(int id, GraphicsBuffer b) { _props.SetBuffer(id, b); _setLastPrepare.Add(id); }
-
-        /// <summary>Property IDs the last preparation set, in order (cache buffers not listed).</summary>
-        internal IReadOnlyList<int> PropertiesSetLastPrepare => _setLastPrepare;
-
-        /// <summary>The SubShader's draw, read again when what Unity picks it by changes (<see cref="DrawModeKey"/>; GetTag allocates).</summary>
-        bool ReadDrawMode()
-        {
-            Shader shader = material.shader;
-            var key = new DrawModeKey(material.GetInstanceID(), IdOf(shader), Shader.globalMaximumLOD, shader != null ? shader.maximumLOD : 0,
-                IdOf(GraphicsSettings.currentRenderPipeline));
-            if (_keys.TryDrawMode(key, out bool fallback)) return fallback;
-            string tag = material.GetTag(DrawTag, false, "");
-            fallback = tag == "Fallback" || (tag.Length == 0 && UsesFallback);
-            _keys.DrawModeRead(key, fallback);
-            return fallback;
-        }
-
-        static int IdOf(UnityEngine.Object o) => o != null ? o.GetInstanceID() : 0;
-
-        /// <summary>
-        /// World bounds of the drawn range: height between the lowest and highest control point,
-        /// widened by the largest noise and raised by the snow cap (what the shader's culling keeps).
-        /// </summary>
-        internal Bounds WorldBounds()
-        {
-            float noise = NoiseMargin();
-            float snow = SnowDepthCap();   // the shader's tile culling raises a tile's box by it (TileCulled)
-            TerrainRange drawn = LevelsOn(_keys.LastDrawFallback) ? TerrainRange.full : _range;   // the levels end with the whole terrain
-            Vector3 min = new Vector3((float)drawn.c, _gridMinZ - noise, (float)drawn.d);
-            Vector3 max = new Vector3((float)drawn.g, _gridMaxZ + noise + snow, (float)drawn.h);
-            Matrix4x4 m = ToMatrix4x4(_state.objectToWorld);   // size, height scale and offset included (t is added to the object points below)
-            Double3 t = TerrainVertex.TerrainToObject(_state.outputOffset);
-            min -= new Vector3((float)t.x, (float)t.y, (float)t.z);
-            max -= new Vector3((float)t.x, (float)t.y, (float)t.z);
-            Vector3 c = m.MultiplyPoint3x4(0.5f * (min + max));
-            Vector3 e = 0.5f * (max - min);
-            // Extents of a transformed box: |M| applied to the half sizes.
-            Vector3 we = new Vector3(
-                Mathf.Abs(m.m00) * e.x + Mathf.Abs(m.m01) * e.y + Mathf.Abs(m.m02) * e.z,
-                Mathf.Abs(m.m10) * e.x + Mathf.Abs(m.m11) * e.y + Mathf.Abs(m.m12) * e.z,
-                Mathf.Abs(m.m20) * e.x + Mathf.Abs(m.m21) * e.y + Mathf.Abs(m.m22) * e.z);
-            return new Bounds(c, 2f * we);
-        }
-
-        internal static Float4x4 ToFloat4x4(Matrix4x4 m) => Float4x4.FromRows(
-            m.m00, m.m01, m.m02, m.m03, m.m10, m.m11, m.m12, m.m13,
-            m.m20, m.m21, m.m22, m.m23, m.m30, m.m31, m.m32, m.m33);
-
-        static Matrix4x4 ToMatrix4x4(Float4x4 f) => new Matrix4x4
-        {
-            m00 = f.c0.x, m10 = f.c0.y, m20 = f.c0.z, m30 = f.c0.w,
-            m01 = f.c1.x, m11 = f.c1.y, m21 = f.c1.z, m31 = f.c1.w,
-            m02 = f.c2.x, m12 = f.c2.y, m22 = f.c2.z, m32 = f.c2.w,
-            m03 = f.c3.x, m13 = f.c3.y, m23 = f.c3.z, m33 = f.c3.w,
-        };
+        // What the frame reads besides the public settings.
+        internal ShadowCastingMode ShadowCasting => shadowCasting;
+        internal bool ReceivesShadows => receiveShadows;
+        internal int FallbackGridFactor => fallbackGridFactor;
+        internal Double3 WorldOffset => _worldOffset;
 
         /// <summary>
         /// The material's keywords that change the height noise, as Core names them: GT_NOISE, and
@@ -801,7 +524,7 @@ namespace GregoryTerrain
         }
 
         /// <summary>sum_k amplitude / beta^k over the octaves: the most noise can move a point.</summary>
-        float NoiseMargin()
+        internal float NoiseMargin()
         {
             float sum = 0f, a = noiseAmplitude;
             for (int k = 0; k < noiseOctaves; k++) { sum += a; a /= noiseBeta; }

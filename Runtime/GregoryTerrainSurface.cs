@@ -143,7 +143,7 @@ namespace GregoryTerrain
             int w = cam.pixelWidth, h = cam.pixelHeight;
             if (w <= 0 || h <= 0) return null;
             TerrainInputs inputs = r.State.resources.EstimateInputs(r.UploadedPatchGrid, r.State.parameters);
-            Float4x4 m = GregoryTerrainRenderer.ToFloat4x4(r.ObjectToClip(cam));
+            Float4x4 m = UnityConversions.ToFloat4x4(r.ObjectToClip(cam));
             var screen = new Float2(w, h);
             if (r.HorizonLevels)
             {

@@ -40,20 +40,11 @@ namespace GregoryTerrain
         }
 
         /// <summary>Only the <paramref name="changed"/> patches (ascending).</summary>
-        internal void UploadPatches(PatchGrid g, int[] changed, ref float minZ, ref float maxZ)
+        internal void UploadPatches(PatchGrid g, int[] changed)
         {
             var records = new GregoryPatchRecord[changed.Length];
             for (int k = 0; k < changed.Length; k++)
-            {
-                GregoryPatch p = g.Patches[changed[k]];
-                records[k] = GpuLayout.PackPatchRecord(p);
-                // The height range only widens (the draw bounds stay bounds); a whole upload tightens it.
-                foreach (Double3 c in p.Points)
-                {
-                    minZ = Mathf.Min(minZ, (float)c.z);
-                    maxZ = Mathf.Max(maxZ, (float)c.z);
-                }
-            }
+                records[k] = GpuLayout.PackPatchRecord(g.Patches[changed[k]]);
             for (int start = 0, end; start < changed.Length; start = end)   // one SetData per run of consecutive patches
             {
                 for (end = start + 1; end < changed.Length && changed[end] == changed[end - 1] + 1; end++) { }

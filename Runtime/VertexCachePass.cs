@@ -10,7 +10,7 @@ namespace GregoryTerrain
     /// only when something the kernels read differs from the last dispatch. What the kernels do not
     /// compare per tile (origin, lattice, grid, noise, colour, transform, effects, snow map, new
     /// buffers) makes this class zero the tiles' keys first, so everything is evaluated again
-    /// (internals.md, "Vertex cache"). The renderer decides whether the pass runs at all.
+    /// (internals.md, "Vertex cache"). <see cref="UpdateFrame"/>: whether it runs in a renderer's frame.
     /// </summary>
     sealed class VertexCachePass
     {
@@ -77,6 +77,95 @@ namespace GregoryTerrain
             return true;
         }
 
+        /// <summary>
+        /// A renderer's frame: runs, or stops (the domain stage draws). False when nothing may be drawn: the size
+        /// check failed (logged once), or nothing evaluated yet. FrameResources.UsesCache: the draw reads it.
+        /// </summary>
+        public bool UpdateFrame(GregoryTerrainRenderer r, bool fallback, FrameState state, TerrainGpuBuffers gpu, int gridStamp, MaterialPropertyBlock props)
+        {
+            FrameResources keys = state.resources;
+            // The levels draw through the domain stage (the cache holds one range's tiles).
+            if (r.VertexEvaluation != VertexEvaluation.ComputeCache || r.LevelsOn(fallback))
+            {
+                keys.CacheNotUsed(null);
+                Stop();
+                return true;
+            }
+            ComputeShader shader = r.CacheShader;
+            Camera cam = r.EffectiveLodCamera;
+            string reason = UnavailableReason(fallback, shader, cam);
+            if (reason != null)
+            {
+                if (keys.CacheNotUsed(reason))
+                    Debug.LogWarning($"{r.name}: Vertex evaluation is Compute cache, but {reason}; evaluating in the domain stage instead.", r);
+                Stop();
+                return true;
+            }
+            keys.CacheUsed();
+
+            SnowSimulator snow = r.SnowOn() ? r.SnowSimulator : null;
+            int tiles = r.CacheTilesAcross, limit = GregoryTerrain.VertexCache.FactorLimit(state.parameters.tess);
+            string error = keys.CheckCacheFits(tiles, limit, snow != null, SystemInfo.maxGraphicsBufferSize, out bool fresh);
+            if (error != null)
+            {
+                if (fresh) Debug.LogError($"{r.name}: cannot draw with these settings: {error}", r);
+                return false;
+            }
+
+            EnsureBuffers(tiles, limit, snow != null);
+            int w = cam.pixelWidth, h = cam.pixelHeight;
+            if (w > 0 && h > 0)
+            {
+                var inputs = new VertexCachePass.Inputs
+                {
+                    parameters = state.parameters,
+                    objectToClip = UnityConversions.ObjectToClip(cam, state.objectToWorld),
+                    worldToObject = UnityConversions.ToMatrix4x4(state.worldToObject),
+                    screenSize = new Vector4(w, h, 1f / w, 1f / h),
+                    controlPoints = gpu.ControlPoints, regions = gpu.Regions, gridLines = gpu.GridLines,
+                    gridStamp = gridStamp,
+                    effects = EffectsOf(r.Material, gpu, snow != null),
+                    noiseCells = gpu.NoiseCells,
+                    snowDepth = snow != null ? snow.DepthBuffer : null,
+                    snowMapSize = snow != null ? snow.MapSize : default,
+                    snowVersion = snow != null ? snow.DepthVersion : 0,
+                };
+                if (Update(shader, inputs)) BindTo(props);
+            }
+            return keys.CacheFilled(HasContent);   // false: nothing evaluated yet (a camera without pixels)
+        }
+
+        /// <summary>Why the compute cache cannot run, naming the setting or device flag, or null.</summary>
+        string UnavailableReason(bool fallback, ComputeShader shader, Camera cam)
+        {
+            if (fallback)
+                return "the material draws its no-tessellator fallback SubShader (there is no domain stage to feed)";
+            if (!SystemInfo.supportsComputeShaders)
+                return "this device has no compute shaders (SystemInfo.supportsComputeShaders = false)";
+            if (shader == null)
+                return "no compute shader is assigned to Cache Shader (Shaders/Cache/TerrainCache.compute)";
+            if (!FindKernels(shader, out string missing))
+                return $"the Cache Shader '{shader.name}' has no kernel '{missing}'";
+            if (cam == null)
+                return "there is no LOD camera (LOD Camera is empty and no camera is tagged MainCamera)";
+            return null;
+        }
+
+        static Effects EffectsOf(Material material, TerrainGpuBuffers gpu, bool snow)
+        {
+            var e = Effects.None;
+            if (material.IsKeywordEnabled(ShaderIds.NoiseKeyword)) e |= Effects.Noise;
+            if (material.IsKeywordEnabled(ShaderIds.HeightColorKeyword)) e |= Effects.HeightColor;
+            if (gpu.NoiseCells != null) e |= Effects.NoiseTable;   // made by the noise table's binding while the noise is tiled
+            if (snow) e |= Effects.Snow;
+            return e;
+        }
+
+        /// <summary>The domain stage draws: the cache's memory given back (the draw material drops GT_VERTEX_CACHE).</summary>
+        void Stop()
+        {
+            if (IsAllocated) Release();
+        }
         /// <summary>
         /// Allocates both buffers for M = <paramref name="tiles"/>, L = <paramref name="factorLimit"/>
         /// and the snow record when one of them changed (call <see cref="VertexCacheBudget.CheckFits"/>

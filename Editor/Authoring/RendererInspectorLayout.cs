@@ -62,7 +62,7 @@ namespace GregoryTerrain
             ("Debug", false, new[] { "debugShowControlPoints", "debugShowPatchWireframe" }),
         };
 
-        /// <summary>Whether <paramref name="field"/> changes what is drawn (the renderer's LevelsOn, AnchorsTiles, UpdateVertexCache).</summary>
+        /// <summary>Whether <paramref name="field"/> changes what is drawn (the renderer's LevelsOn, AnchorsTiles, VertexCachePass.UpdateFrame).</summary>
         public static bool Shows(string field, InspectorContext c)
         {
             bool tessellates = !c.fallback, levels = c.mode == TerrainViewMode.OpenWorld && tessellates;

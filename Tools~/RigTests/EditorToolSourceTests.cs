@@ -262,7 +262,7 @@ namespace GregoryTerrain.Rig.Tests
                     gaps.Add($"PatchGridAsset.{name} validates the whole grid again instead of using the verdict kept since the last change");
             string apply = Body("PatchGridAsset.cs", "ApplyEdit");
             if (!Regex.IsMatch(apply, @"_changes\.Add\s*\(")) gaps.Add("PatchGridAsset.ApplyEdit does not log the patches it changed for readers to catch up");
-            string upload = Body("GregoryTerrainRenderer.Buffers.cs", "EnsureUploaded");
+            string upload = Body("TerrainFrameDriver.cs", "EnsureUploaded");
             int partial = upload.IndexOf("TryUploadEditedPatches(", System.StringComparison.Ordinal), release = upload.IndexOf("ReleaseGpuResources()", System.StringComparison.Ordinal);
             if (partial < 0 || release >= 0 && partial > release) gaps.Add("the renderer uploads the whole grid on an edit without first uploading the edited patches only");
             string queries = StripComments(files["GregoryTerrainSurface.cs"]);
@@ -278,7 +278,7 @@ namespace GregoryTerrain.Rig.Tests
         static Dictionary<string, string> AuthoringSources()
         {
             var files = new Dictionary<string, string>();
-            foreach (string name in new[] { "PatchGridAsset.cs", "GregoryTerrainRenderer.Buffers.cs", "GregoryTerrainSurface.cs" })
+            foreach (string name in new[] { "PatchGridAsset.cs", "TerrainFrameDriver.cs", "GregoryTerrainSurface.cs" })
                 files[name] = File.ReadAllText(PackageRoot.Combine("Runtime", name));
             files["PatchGridAssetUndo.cs"] = File.ReadAllText(PackageRoot.Combine("Editor", "PatchGridAssetUndo.cs"));
             return files;
@@ -298,7 +298,7 @@ namespace GregoryTerrain.Rig.Tests
                 ["PatchGridAsset.cs"] = "void OnEnable() => MarkChanged();\npublic void MarkChanged() { _error = CheckSerializedData(); }\n" +
                                         "internal PatchGrid ToPatchGrid()\n{\n string error = CheckSerializedData();\n return null;\n}\n" +
                                         "internal void ApplyEdit(PatchEdit edit)\n{\n _version = s_NextVersion++;\n _fingerprint = Fingerprint();\n}",
-                ["GregoryTerrainRenderer.Buffers.cs"] = "bool EnsureUploaded()\n{\n if (_uploadedVersion == grid.Version) return true;\n ReleaseGpuResources();\n return true;\n}",
+                ["TerrainFrameDriver.cs"] = "bool EnsureUploaded()\n{\n if (_uploadedVersion == grid.Version) return true;\n ReleaseGpuResources();\n return true;\n}",
                 ["GregoryTerrainSurface.cs"] = "try { _query = new TerrainSurfaceQuery(grid.ToPatchGrid(), noise, keywords); }",
                 ["PatchGridAssetUndo.cs"] = "public static void SetGrid(PatchGridAsset asset, PatchGrid grid, string undoName)\n{\n Undo.RecordObject(asset, undoName);\n" +
                                             " PatchGridBlock[] existing = asset.Blocks;\n if (existing.Length > 0) Undo.RecordObjects(existing, undoName);\n}",

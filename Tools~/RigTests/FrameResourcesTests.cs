@@ -1,3 +1,4 @@
+using System;
 using NUnit.Framework;
 using GregoryTerrain.Tests;
 
@@ -18,7 +19,7 @@ namespace GregoryTerrain.Rig.Tests
         {
             var r = new FrameResources();
             Assert.That(r.Upload(GridV1, buffersHeld: false), Is.EqualTo(UploadAction.Upload));
-            r.Uploaded(GridV1);
+            r.Uploaded(GridV1, 0f, 1f);
             Assert.That(r.Upload(GridV1, buffersHeld: true), Is.EqualTo(UploadAction.Keep));
             Assert.That(r.Upload(GridV1, buffersHeld: false), Is.EqualTo(UploadAction.Upload), "buffers freed: upload again");
             Assert.That(r.Upload(GridV2, buffersHeld: true), Is.EqualTo(UploadAction.Upload));
@@ -38,9 +39,33 @@ namespace GregoryTerrain.Rig.Tests
             Assert.That(r.Upload(GridV1, false), Is.EqualTo(UploadAction.Skip));
             Assert.That(r.Upload(GridV2, false), Is.EqualTo(UploadAction.Upload), "the fixed version is tried");
             Assert.That(r.Upload(OtherGrid, false), Is.EqualTo(UploadAction.Upload));
-            r.Uploaded(GridV2);
+            r.Uploaded(GridV2, 0f, 1f);
             Assert.That(r.Upload(GridV1, false), Is.EqualTo(UploadAction.Upload), "an upload forgets the failure");
         }
+
+        /// <summary>The draw's bounds hold the grid: a whole upload sets the height range, an edit only widens it.</summary>
+        [Test]
+        public void AnEditWidensTheGridsHeightRangeAndAWholeUploadSetsIt()
+        {
+            var r = new FrameResources();
+            r.Uploaded(GridV1, -5f, 5f);
+            Assert.That((r.GridMinZ, r.GridMaxZ), Is.EqualTo((-5f, 5f)));
+            GregoryPatch edited = EditedGrid.Patches[0];
+            float lo = float.MaxValue, hi = float.MinValue;
+            foreach (Double3 c in edited.Points) { lo = Math.Min(lo, (float)c.z); hi = Math.Max(hi, (float)c.z); }
+            Assert.That(lo > -5f && hi < 5f && hi > lo, "the edited patch lies inside the first range");
+            r.PatchesUploaded(GridV2, EditedGrid, new[] { 0 });
+            Assert.That((r.GridMinZ, r.GridMaxZ), Is.EqualTo((-5f, 5f)), "an edit inside the range keeps it: other patches may still reach it");
+            Assert.That(r.HeldGrid, Is.EqualTo(GridV2));
+            float mid = 0.5f * (lo + hi);
+            r.Uploaded(GridV1, mid, mid);
+            r.PatchesUploaded(GridV2, EditedGrid, new[] { 0 });
+            Assert.That((r.GridMinZ, r.GridMaxZ), Is.EqualTo((lo, hi)), "the edited patch's points widen the range both ways");
+            r.Uploaded(OtherGrid, 0.25f, 0.5f);
+            Assert.That((r.GridMinZ, r.GridMaxZ), Is.EqualTo((0.25f, 0.5f)), "a whole upload tightens it");
+        }
+
+        static readonly PatchGrid EditedGrid = HardCaseGrids.Fitted(3, 3, seed: 2, samples: 17);
 
         [Test]
         public void TheFallbackIndexGridIsBuiltOncePerFactor()
@@ -138,6 +163,31 @@ namespace GregoryTerrain.Rig.Tests
             Assert.That(r.CacheNotUsed("no LOD camera"), Is.True, "told again after the cache ran");
             Assert.That(r.CacheNotUsed(null), Is.False);
             Assert.That(r.CacheFallbackReason, Is.Null, "chosen off: no reason");
+        }
+
+        /// <summary>The draw reads the cache only once a dispatch filled it this frame; every other verdict turns it off.</summary>
+        [Test]
+        public void TheCacheIsDrawnOnlyWhenUsedAndFilled()
+        {
+            var r = new FrameResources();
+            Assert.That(r.UsesCache, Is.False);
+            r.CacheUsed();
+            Assert.That(r.UsesCache, Is.False, "not filled yet: GT_VERTEX_CACHE would read empty buffers");
+            Assert.That(r.CacheFilled(true), Is.True);
+            Assert.That(r.UsesCache, Is.True);
+            r.CacheUsed();
+            Assert.That(r.UsesCache, Is.False, "a new frame: on again only once filled (the size check may fail first)");
+            Assert.That(r.CacheFilled(false), Is.False, "an LOD camera without pixels: nothing evaluated");
+            Assert.That(r.UsesCache, Is.False);
+            r.CacheUsed(); r.CacheFilled(true);
+            r.CacheNotUsed("no LOD camera");
+            Assert.That(r.UsesCache, Is.False, "the domain stage draws");
+            r.CacheUsed(); r.CacheFilled(true);
+            r.CacheNotUsed(null);
+            Assert.That(r.UsesCache, Is.False, "chosen off");
+            r.CacheUsed(); r.CacheFilled(true);
+            r.Released();
+            Assert.That(r.UsesCache, Is.False, "the buffers freed");
         }
 
         static readonly PatchGrid Grid = HardCaseGrids.WithLines(new[] { 0.0, 0.5, 1.0 }, new[] { 0.0, 0.5, 1.0 });

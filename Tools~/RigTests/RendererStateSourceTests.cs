@@ -21,10 +21,10 @@ namespace GregoryTerrain.Rig.Tests
         static string StripComments(string code) =>
             Regex.Replace(code, @"//[^\n]*|/\*.*?\*/", "", RegexOptions.Singleline);
 
-        /// <summary>The component's files, then the owners it holds (its GPU buffers, its material copy).</summary>
+        /// <summary>The component's files, then the owners it holds (its per-camera frame, its cache's frame, its GPU buffers, its material copy).</summary>
         static string RendererCode() => string.Join("\n",
             Directory.GetFiles(PackageRoot.Combine("Runtime"), "GregoryTerrainRenderer*.cs").OrderBy(f => f)
-                .Concat(new[] { "TerrainGpuBuffers.cs", "DrawMaterialCopy.cs" }.Select(f => PackageRoot.Combine("Runtime", f)))
+                .Concat(new[] { "TerrainFrameDriver.cs", "VertexCachePass.cs", "TerrainGpuBuffers.cs", "DrawMaterialCopy.cs" }.Select(f => PackageRoot.Combine("Runtime", f)))
                 .Select(f => StripComments(File.ReadAllText(f))));
 
         /// <summary>The body (braces included) of the method or property declared as <paramref name="name"/>, or null.</summary>

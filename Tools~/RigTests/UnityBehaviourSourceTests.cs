@@ -115,11 +115,12 @@ namespace GregoryTerrain.Rig.Tests
         [Test]
         public void RendererDrawsPerCameraFromBothPipelinesCallbacks()
         {
-            var renderer = RuntimeSources().Where(f => f.Key.StartsWith("GregoryTerrainRenderer")).ToDictionary(f => f.Key, f => f.Value);
+            var renderer = RuntimeSources().Where(f => f.Key.StartsWith("GregoryTerrainRenderer") || f.Key == "TerrainFrameDriver.cs").ToDictionary(f => f.Key, f => f.Value);
             string code = string.Join("\n", renderer.Values.Select(StripComments));
             Assert.That(code, Does.Match(@"RenderPipelineManager\.beginCameraRendering\s*\+="), "SRP camera callback registered");
             Assert.That(code, Does.Match(@"Camera\.onPreCull\s*\+="), "Built-in camera callback registered");
             Assert.That(code, Does.Not.Match(@"void\s+(Late)?Update\s*\("), "no per-frame Update draws (Edit Mode runs Update only on changes)");
+            Assert.That(code, Does.Match(@"new\s+RenderParams\s*\("), "the draw is in these files");
             Assert.That(DrawsWithoutCamera(code), Is.Empty, "every RenderParams names the camera it draws for");
             Assert.That(UnbalancedSubscriptions(RuntimeSources()), Is.Empty, "every callback registered is removed again");
         }

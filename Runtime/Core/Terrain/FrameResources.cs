@@ -69,6 +69,13 @@ namespace GregoryTerrain
 
         public GridVersionKey HeldGrid => _uploaded;
 
+        /// <summary>The uploaded grid's lowest and highest control point, in terrain height units (the draw's bounds).</summary>
+        public float GridMinZ { get; private set; }
+        public float GridMaxZ { get; private set; }
+
+        /// <summary>True while the draw reads the vertex cache (GT_VERTEX_CACHE): only after <see cref="CacheFilled"/> this frame.</summary>
+        public bool UsesCache { get; private set; }
+
         /// <summary>The vertex cache's size check verdict, or null.</summary>
         public string CacheError { get; private set; }
 
@@ -80,7 +87,21 @@ namespace GregoryTerrain
             return grid.Equals(_failed) ? UploadAction.Skip : UploadAction.Upload;
         }
 
-        public void Uploaded(GridVersionKey grid) => (_uploaded, _failed) = (grid, default);
+        /// <summary>The whole grid uploaded, its height range as it is now.</summary>
+        public void Uploaded(GridVersionKey grid, float minZ, float maxZ) =>
+            (_uploaded, _failed, GridMinZ, GridMaxZ) = (grid, default, minZ, maxZ);
+
+        /// <summary>Only the edited patches uploaded: the height range only widens (the bounds stay bounds; a whole upload tightens it).</summary>
+        public void PatchesUploaded(GridVersionKey grid, PatchGrid g, int[] changed)
+        {
+            (_uploaded, _failed) = (grid, default);
+            foreach (int k in changed)
+                foreach (Double3 c in g.Patches[k].Points)
+                {
+                    GridMinZ = Math.Min(GridMinZ, (float)c.z);
+                    GridMaxZ = Math.Max(GridMaxZ, (float)c.z);
+                }
+        }
 
         public void UploadFailed(GridVersionKey grid) => _failed = grid;
 
@@ -90,6 +111,7 @@ namespace GregoryTerrain
             _uploaded = default;
             _fallbackFactor = 0;
             _drawMode = default;
+            UsesCache = false;
             (_estimateInputs, _estimateGrid) = (null, null);   // the grid's CPU copy
         }
 
@@ -143,13 +165,17 @@ namespace GregoryTerrain
         /// <summary>The cache not used (for reason, or off): the size check forgotten; true for a new reason (to log once).</summary>
         public bool CacheNotUsed(string reason)
         {
-            (CacheError, _cacheCheckedFor) = (null, default);
+            (CacheError, _cacheCheckedFor, UsesCache) = (null, default, false);
             bool fresh = reason != null && reason != _cacheFallbackReason;
             _cacheFallbackReason = reason;
             return fresh;
         }
 
-        public void CacheUsed() => _cacheFallbackReason = null;
+        /// <summary>The cache runs this frame: no reason stands, and it is not drawn until <see cref="CacheFilled"/>.</summary>
+        public void CacheUsed() => (_cacheFallbackReason, UsesCache) = (null, false);
+
+        /// <summary>The pass holds a dispatch's result (else nothing may draw: a camera without pixels); returns it.</summary>
+        public bool CacheFilled(bool filled) => UsesCache = filled;
 
         /// <summary>The query built for key (null: that failed), if one was.</summary>
         public bool TryQuery(in QuerySourceKey key, out TerrainSurfaceQuery query)

@@ -26,7 +26,8 @@ namespace GregoryTerrain.Rig.Tests
 
         static string Source(params string[] path) => File.ReadAllText(PackageRoot.Combine(path));
 
-        static string RendererSources() => string.Concat(Directory.GetFiles(PackageRoot.Combine("Runtime"), "GregoryTerrainRenderer*.cs").OrderBy(p => p, StringComparer.Ordinal).Select(File.ReadAllText));
+        static string RendererSources() => string.Concat(Directory.GetFiles(PackageRoot.Combine("Runtime"), "GregoryTerrainRenderer*.cs").OrderBy(p => p, StringComparer.Ordinal)
+            .Append(PackageRoot.Combine("Runtime", "TerrainFrameDriver.cs")).Select(File.ReadAllText));
 
         /// <summary>
         /// The inspector before issue 40 (its DrawSettings): every field, less Cache shader and LOD
@@ -291,7 +292,7 @@ namespace GregoryTerrain.Rig.Tests
             Assert.That(Regex.Matches(all, @"new ProfilerMarker\(").Count, Is.EqualTo(declared.Count), "a marker made outside a static readonly field");
             Assert.That(Regex.IsMatch(all, @"using \(s_DrawMarker\.Auto\(\)\)\s*Draw\(cam\);"), "DrawFor's work inside the Draw marker");
             Assert.That(Regex.IsMatch(all, @"using \(s_PrepareMarker\.Auto\(\)\)\s*prepared = Prepare\(cam\);"));
-            Assert.That(Regex.IsMatch(all, @"using \(s_VertexCacheMarker\.Auto\(\)\)\s*cacheReady = UpdateVertexCache\(fallback\);"));
+            Assert.That(Regex.IsMatch(all, @"using \(s_VertexCacheMarker\.Auto\(\)\)\s*cacheReady = _cache\.UpdateFrame\(_r, fallback,"));
             string stub = Source("Tools~", "UnityApiCheck", "Stubs", "UnityEngine", "UnityEngine.Physics.cs");
             Assert.That(stub, Does.Contain("public struct ProfilerMarker").And.Contain("public AutoScope Auto()").And.Contain("public struct AutoScope : IDisposable"));
         }
