@@ -435,7 +435,7 @@ namespace GregoryTerrain
             RegisterCameraCallbacks();
 #if UNITY_EDITOR
             // Buffers and the runtime material are native objects: free them before scripts reload,
-            // or they leak (Unity warns); OnDisable does not run on a reload.
+            // or they leak (Unity warns), whether or not OnDisable runs first (releasing twice is safe).
             AssemblyReloadEvents.beforeAssemblyReload += ReleaseAll;
 #endif
         }

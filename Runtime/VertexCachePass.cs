@@ -145,10 +145,22 @@ namespace GregoryTerrain
             if (shader == null)
                 return "no compute shader is assigned to Cache Shader (Shaders/Cache/TerrainCache.compute)";
             if (!FindKernels(shader, out string missing))
-                return $"the Cache Shader '{shader.name}' has no kernel '{missing}'";
+                return MissingKernelReason(shader, missing);
             if (cam == null)
                 return "there is no LOD camera (LOD Camera is empty and no camera is tagged MainCamera)";
             return null;
+        }
+
+        // Built once per refused shader: Object.name makes a new string on every call, and this runs
+        // for every camera of every frame while the setting stays wrong.
+        ComputeShader _refusedShader;
+        string _refusedKernel, _refusedReason;
+
+        string MissingKernelReason(ComputeShader shader, string missing)
+        {
+            if (shader != _refusedShader || !ReferenceEquals(missing, _refusedKernel))
+                (_refusedShader, _refusedKernel, _refusedReason) = (shader, missing, $"the Cache Shader '{shader.name}' has no kernel '{missing}'");
+            return _refusedReason;
         }
 
         static Effects EffectsOf(Material material, TerrainGpuBuffers gpu, bool snow)

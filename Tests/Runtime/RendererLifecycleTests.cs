@@ -161,7 +161,7 @@ namespace GregoryTerrain.Tests
         public void DomainReloadHandlerReleasesEverything()
         {
             // ReleaseAll is what the renderer registers with AssemblyReloadEvents.beforeAssemblyReload
-            // (OnDisable does not run before a reload); the rig checks that registration statically.
+            // (whether or not OnDisable runs first); the rig checks that registration statically.
             var r = _t.Renderer("terrain");
             r.DrawFor(_t.Camera("a"));
             Material copy = r.UpdateDrawMaterial(FrameKeywords.Snow);

@@ -284,6 +284,22 @@ namespace GregoryTerrain.Rig.Tests
             return made < 0 || caught < 0;
         }
 
+        /// <summary>
+        /// The cache's verdict runs for every camera every frame; with a Cache Shader that lacks a kernel its
+        /// reason names the shader, and Object.name makes a new string on each call (2022.3,
+        /// UnityEngineObject.bindings.cs): the reason is built once per refused shader, not per frame.
+        /// </summary>
+        [Test]
+        public void TheMissingKernelReasonIsNotBuiltEveryFrame()
+        {
+            string code = StripComments(File.ReadAllText(PackageRoot.Combine("Runtime", "VertexCachePass.cs")));
+            Assert.That(BuildsNamedStringEachCall(Body(code, "UnavailableReason")), Is.False, "VertexCachePass.UnavailableReason");
+            string old = "{ if (!FindKernels(shader, out string missing)) return $\"the Cache Shader '{shader.name}' has no kernel '{missing}'\"; return null; }";
+            Assert.That(BuildsNamedStringEachCall(old), Is.True, "the unfixed verdict");
+        }
+
+        static bool BuildsNamedStringEachCall(string body) => body == null || Regex.IsMatch(body, @"\$""[^""]*\{\w+\.name\}");
+
         [Test]
         public void DeviceCheckRejectsAnUncheckedUpload()
         {

@@ -28,7 +28,7 @@ namespace gt {
 namespace {
 
 // Indices of the two triangles of each cell of a (F+1) x (F+1) vertex grid, row-major vertices:
-// the renderer's fallback index buffer (GregoryTerrainRenderer.EnsureFallbackIndices), cell split
+// the renderer's fallback index buffer (TerrainFrameDriver.EnsureFallbackIndices), cell split
 // along its (v + 1, v + row) diagonal, clockwise seen from above (col -> x, row -> z, Unity's front).
 std::vector<uint32_t> rowMajorGrid(uint32_t f) {
     std::vector<uint32_t> idx;
