@@ -1,13 +1,13 @@
 // Deep-zoom vertex jitter on the GPU (lavapipe, readback variant), the definition of Core's ZoomJitter
 // (precision.md): 4 x 4 tiles at factor 8, 8 frames panned by (k, k/2) * 0.25 px of an 800-pixel
-// view, the frame-0 origin kept; one harness run per frame with --range encoded against it. Plain
-// float32 (RangeOrigin.zero) against the shipped path, noise off and on.
+// view, the frame-0 origin kept; one harness run per frame with --range encoded against it, the
+// frames of a path in one batch process. Plain float32 (RangeOrigin.zero) against the shipped path,
+// noise off and on.
 using System;
 using System.Collections.Generic;
 using System.Globalization;
 using System.IO;
 using System.Linq;
-using System.Threading.Tasks;
 using NUnit.Framework;
 
 namespace GregoryTerrain.Rig.Tests
@@ -49,18 +49,24 @@ namespace GregoryTerrain.Rig.Tests
             string name = FormattableString.Invariant($"{(shipped ? "shipped" : "plain")}-{width:G3}{(noise ? "-noise" : "")}");
             var frames = new ReadbackRun[ZoomJitter.Frames + 1];
             var ranges = new TerrainRange[frames.Length];
-            Parallel.For(0, frames.Length, new ParallelOptions { MaxDegreeOfParallelism = 2 }, k =>
+            var args = new string[frames.Length][];
+            for (int k = 0; k < frames.Length; k++)
             {
                 ranges[k] = Square(Center, width, k * pan, 0.5 * k * pan);
                 // the frame-0 buffers (origin kept), this frame's _Range encoded against that origin
                 RangeMapping.EncodeRange(ranges[k], origin, out Float4 rf, out _);
                 var p = ReadbackRun.UniformParams(_grid, range0, origin, Tiles, Factor, Noise);
-                frames[k] = ReadbackRun.Draw(Path.Combine(_work, name + "-f" + k), _spirv, _grid, p, n,
-                    "--range", string.Join(",", R(rf.x), R(rf.y), R(rf.z), R(rf.w)));
+                frames[k] = ReadbackRun.Prepare(Path.Combine(_work, name + "-f" + k), _spirv, _grid, p, n, false,
+                    new[] { "--range", string.Join(",", R(rf.x), R(rf.y), R(rf.z), R(rf.w)) }, out args[k]);
+            }
+            HarnessRun[] runs = HarnessBatch.Run(_work, args, 1);   // one pipeline: one process draws every frame
+            for (int k = 0; k < frames.Length; k++)
+            {
+                frames[k].Finish(runs[k]);
                 frames[k].Inputs = frames[k].Inputs.WithParams(TerrainParams.Create(_grid, ranges[k], origin,
                     TessellationSettings.Uniform(Tiles, Factor), Noise, new HeightColorSettings(0.25f, 0.15f, 24f),
                     new Float3(0.2f, 0.3f, 0.1f), new Float3(0.8f, 0.8f, 0.8f)));
-            });
+            }
             int across = Factor + 1, perFrame = Tiles * Tiles * across * across;
             var first = new Double3[perFrame];
             double jitter = 0;

@@ -1,12 +1,11 @@
 // Random scenes on the GPU (lavapipe, readback variant), fixed seeds: watertightness under random
 // integer factors and ranges, and a property test (random ranges and fitted grids: no NaN, GPU
-// equals Core's float mirror within tolerance). Harness runs go two at a time (each is a process).
+// equals Core's float mirror within tolerance). The scenes go through two batch harness processes.
 using System;
 using System.Collections.Generic;
 using System.Diagnostics;
 using System.IO;
 using System.Linq;
-using System.Threading.Tasks;
 using GregoryTerrain.Tests;
 using NUnit.Framework;
 
@@ -44,15 +43,19 @@ namespace GregoryTerrain.Rig.Tests
             public ReadbackRun Run;
         }
 
-        /// <summary>Draws every scene, two harness processes at a time.</summary>
+        /// <summary>Draws every scene: two batch harness processes (HarnessBatch), one pipeline compile per variant each.</summary>
         void DrawAll(IList<Scene> scenes, string name)
         {
-            Parallel.For(0, scenes.Count, new ParallelOptions { MaxDegreeOfParallelism = 2 }, i =>
+            var args = new string[scenes.Count][];
+            for (int i = 0; i < scenes.Count; i++)
             {
                 Scene s = scenes[i];
                 var p = ReadbackRun.UniformParams(s.Grid, s.Range, RangeOrigin.For(s.Range), s.Tiles, s.Factor, Noise);
-                s.Run = ReadbackRun.Draw(Path.Combine(_work, name + i.ToString("D3")), _spirv, s.Grid, p, s.Noise ? Noise : (NoiseSettings?)null);
-            });
+                s.Run = ReadbackRun.Prepare(Path.Combine(_work, name + i.ToString("D3")), _spirv, s.Grid, p,
+                                            s.Noise ? Noise : (NoiseSettings?)null, false, new string[0], out args[i]);
+            }
+            HarnessRun[] runs = HarnessBatch.Run(_work, args);
+            for (int i = 0; i < scenes.Count; i++) scenes[i].Run.Finish(runs[i]);
         }
 
         [Test]

@@ -283,6 +283,19 @@ namespace GregoryTerrain.Rig.Tests
         public static ReadbackRun Draw(string dir, string spirv, PatchGrid grid, TerrainParams p, NoiseSettings? noise,
                                        bool tiledNoise, params string[] extra)
         {
+            ReadbackRun run = Prepare(dir, spirv, grid, p, noise, tiledNoise, extra, out string[] args);
+            run.Finish(HarnessRun.Harness(args));
+            return run;
+        }
+
+        /// <summary>
+        /// A draw's inputs written to <paramref name="dir"/> and its harness options in <paramref name="args"/>;
+        /// <see cref="Finish"/> reads the run back (<see cref="Draw(string, string, PatchGrid, TerrainParams, NoiseSettings?, bool, string[])"/>
+        /// in two steps, so many draws can go through one <see cref="HarnessBatch"/>).
+        /// </summary>
+        public static ReadbackRun Prepare(string dir, string spirv, PatchGrid grid, TerrainParams p, NoiseSettings? noise,
+                                          bool tiledNoise, string[] extra, out string[] args)
+        {
             Assert.That(!tiledNoise || noise.HasValue, Is.True, "the tiled noise needs noise");
             var inputs = TerrainInputs.Create(grid, p);
             int tiles = inputs.TilesAcross(), factor = (int)inputs.UniformTessFactor();
@@ -292,24 +305,32 @@ namespace GregoryTerrain.Rig.Tests
             var run = new ReadbackRun { Grid = grid, Inputs = inputs, Noise = noise, Tiles = tiles, Factor = factor,
                                         Keywords = !noise.HasValue ? TerrainKeywords.None
                                                  : tiledNoise ? TerrainKeywords.Noise | TerrainKeywords.NoiseTable : TerrainKeywords.Noise };
-            string readback = Path.Combine(dir, "readback.f32");
+            run._readbackPath = Path.Combine(dir, "readback.f32");
             string variant = !noise.HasValue ? "readback" : tiledNoise ? "readback+noise+noise_table" : "readback+noise";
-            var args = new List<string>(Stages(spirv, ForOrigin(variant, p.rangeOrigin)));
+            var list = new List<string>(Stages(spirv, ForOrigin(variant, p.rangeOrigin)));
             if (tiledNoise)
             {
                 string table = Path.Combine(dir, "noise_cells.f32");
                 WriteFloats(table, GradientNoiseTable.Floats);
-                args.AddRange(new[] { "--storage-data", "9:" + table });
+                list.AddRange(new[] { "--storage-data", "9:" + table });
             }
-            args.AddRange(new[] { "--buffers", dir, "--patches", (tiles * tiles).ToString(), "--width", "64", "--height", "64",
-                                  "--device", "llvmpipe", "--stats", "--readback", readback, "--readback-floats", (12 * run.VertexCount).ToString() });
-            args.AddRange(extra);
-            run.Harness = HarnessRun.Harness(args.ToArray());
-            run.Harness.AssertSucceeded();
-            Assert.That(run.Harness.Value("readback", readback), Is.Not.Null, "no readback line:\n" + run.Harness.Stdout);
-            run.Readback = ReadFloats(readback);
-            Assert.That(run.Readback.Length, Is.EqualTo(12 * run.VertexCount));
+            list.AddRange(new[] { "--buffers", dir, "--patches", (tiles * tiles).ToString(), "--width", "64", "--height", "64",
+                                  "--device", "llvmpipe", "--stats", "--readback", run._readbackPath, "--readback-floats", (12 * run.VertexCount).ToString() });
+            list.AddRange(extra);
+            args = list.ToArray();
             return run;
+        }
+
+        string _readbackPath;
+
+        /// <summary>Reads back the draw <see cref="Prepare"/> set up, from its harness run.</summary>
+        public void Finish(HarnessRun harness)
+        {
+            Harness = harness;
+            Harness.AssertSucceeded();
+            Assert.That(Harness.Value("readback", _readbackPath), Is.Not.Null, "no readback line:\n" + Harness.Stdout);
+            Readback = ReadFloats(_readbackPath);
+            Assert.That(Readback.Length, Is.EqualTo(12 * VertexCount));
         }
 
         /// <summary>Uniform tessellation settings: M x M tiles at integer factor F.</summary>

@@ -188,6 +188,8 @@ void checkDumps(const Options& o) {
 const char* usageText() {
     return R"(gt-harness: run SPIR-V terrain shaders headless on a Vulkan device.
 
+  --batch FILE                   (alone) one run per line of FILE, options tab-separated, over one
+                                 device, each distinct pipeline created once (README.md)
   --list-devices                 list physical devices and exit
   --device SUBSTR                pick the device whose name contains SUBSTR (case-insensitive)
   --uniform-blocks auto|uniform|storage   bind TerrainParams (b0) and the camera (b1) as compiled

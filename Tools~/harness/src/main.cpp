@@ -8,6 +8,7 @@
 #include <utility>
 #include <vector>
 
+#include "batch.hpp"
 #include "check.hpp"
 #include "cli.hpp"
 #include "compute.hpp"
@@ -155,7 +156,7 @@ int run(const Options& o) {
     request.compute = !o.computes.empty();
     request.timeline = o.inFlight > 1;
     request.asyncCompute = o.asyncCompute;
-    Gpu gpu = createGpu(o.deviceSubstring, request);
+    Gpu gpu = acquireGpu(o.deviceSubstring, request);
     gpu.uniformBlocksAsStorage = o.uniformBlocks == UniformBlocks::Storage ||
                                  (o.uniformBlocks == UniformBlocks::Auto && gpu.isLavapipe);
     printDevice(gpu);
@@ -280,7 +281,7 @@ int run(const Options& o) {
     destroySampledImages(gpu, sampled);
     destroyInputs(gpu, inputs);
     destroyBuffer(gpu, placementPad);
-    destroyGpu(gpu);
+    releaseGpu(gpu);
     return 0;
 }
 
@@ -290,6 +291,7 @@ int run(const Options& o) {
 int main(int argc, char** argv) {
     std::setvbuf(stdout, nullptr, _IOLBF, 0);
     try {
+        if (argc == 3 && std::strcmp(argv[1], "--batch") == 0) return gt::runBatch(argv[2], gt::run);
         return gt::run(gt::parseOptions(argc, argv));
     } catch (const gt::Error& e) {
         std::fflush(stdout);

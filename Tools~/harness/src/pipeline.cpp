@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <vector>
 
+#include "batch.hpp"
 #include "check.hpp"
 #include "vkcommon.hpp"
 
@@ -192,8 +193,11 @@ Pipeline createPipeline(const Gpu& gpu, const PipelineDesc& d, const RenderTarge
     info.pColorBlendState = &cb;
     info.layout = p.layout;
     info.renderPass = target.renderPass;
+    const std::string key = pipelineKey(gpu, d, target, p);
+    if ((p.pipeline = keptPipeline(key))) return p;
     VkResult r = vkCreateGraphicsPipelines(gpu.device, VK_NULL_HANDLE, 1, &info, nullptr, &p.pipeline);
     if (r != VK_SUCCESS) fail("vkCreateGraphicsPipelines failed (" + resultName(r) + "): check the SPIR-V stages and entry points");
+    keepPipeline(key, p);
     return p;
 }
 
@@ -212,10 +216,10 @@ VkDescriptorSet addFrameSet(const Gpu& gpu, const Pipeline& pipeline, const Inpu
 }
 
 void destroyPipeline(const Gpu& gpu, Pipeline& p) {
-    if (p.pipeline) vkDestroyPipeline(gpu.device, p.pipeline, nullptr);
-    if (p.layout) vkDestroyPipelineLayout(gpu.device, p.layout, nullptr);
+    if (p.pipeline && !keptByBatch(p.pipeline)) vkDestroyPipeline(gpu.device, p.pipeline, nullptr);
+    if (p.layout && !keptByBatch(p.layout)) vkDestroyPipelineLayout(gpu.device, p.layout, nullptr);
     if (p.pool) vkDestroyDescriptorPool(gpu.device, p.pool, nullptr);
-    if (p.setLayout) vkDestroyDescriptorSetLayout(gpu.device, p.setLayout, nullptr);
+    if (p.setLayout && !keptByBatch(p.setLayout)) vkDestroyDescriptorSetLayout(gpu.device, p.setLayout, nullptr);
     p = Pipeline{};
 }
 
