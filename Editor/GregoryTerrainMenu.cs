@@ -23,10 +23,9 @@ namespace GregoryTerrain.EditorTools
         static void CreateTerrainWithCollider(MenuCommand command) => Create(command.context as GameObject, true);
 
         /// <summary>
-        /// The assets first (grid, material), then the GameObject: one undo step removes the object;
-        /// the assets stay, as Unity Terrain's TerrainData does. Placed at the Scene view's pivot, or
-        /// at the origin with Preferences &gt; Scene View &gt; Create Objects at Origin, or under
-        /// <paramref name="parent"/> (the Hierarchy's context menu), and selected.
+        /// The assets (grid, material), then the GameObject: one undo step removes the object; the
+        /// assets stay, as Unity Terrain's TerrainData does. Placed as Unity places its 3D objects
+        /// (Scene view pivot; origin with Create Objects at Origin; under <paramref name="parent"/>), selected.
         /// </summary>
         static void Create(GameObject parent, bool withCollider)
         {
@@ -47,8 +46,7 @@ namespace GregoryTerrain.EditorTools
 
         /// <summary>
         /// A GameObject of its own (the collider moves its Transform) with a Gregory Terrain Collider
-        /// around the main camera, beside the placed terrain (same parent, scene or prefab stage); a
-        /// warning when the scene has none.
+        /// around the main camera (a warning if none), beside the terrain (same parent, scene or stage).
         /// </summary>
         static void AddColliderFollowingMainCamera(GregoryTerrainRenderer renderer)
         {

@@ -5,10 +5,9 @@ using UnityEngine;
 namespace GregoryTerrain.EditorTools
 {
     /// <summary>
-    /// Scene-view clicks select a Gregory terrain as they select a mesh or a Unity Terrain. The terrain
-    /// is drawn procedurally, without a Renderer Unity could pick, so the click that picked nothing
-    /// else is cast as a ray against every enabled terrain's surface (the renderer's CPU Raycast) and
-    /// the nearest hit's GameObject is selected.
+    /// Scene-view clicks select a Gregory terrain as they select a mesh. Drawn procedurally, it has no
+    /// Renderer Unity could pick, so a click that picked nothing else is cast against every enabled
+    /// terrain (the renderer's CPU Raycast) and the nearest hit's GameObject is selected.
     /// </summary>
     [InitializeOnLoad]
     static class GregoryTerrainPicking

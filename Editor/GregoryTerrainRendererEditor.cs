@@ -8,9 +8,9 @@ using UnityEngine;
 namespace GregoryTerrain.EditorTools
 {
     /// <summary>
-    /// Renderer inspector: readouts, help boxes, then the settings in foldouts (open state kept in
-    /// EditorPrefs), each field where it has an effect. Scene view: control points and patch wireframe
-    /// (Handles), points moved with position handles (undoable); keys in GregoryTerrainShortcuts.
+    /// Renderer inspector: readouts, help boxes, then the settings in foldouts (open state in
+    /// EditorPrefs), each field where it acts. Scene view: control points and patch wireframe, points
+    /// moved with undoable position handles; keys in GregoryTerrainShortcuts.
     /// </summary>
     [CustomEditor(typeof(GregoryTerrainRenderer)), CanEditMultipleObjects]
     internal sealed class GregoryTerrainRendererEditor : Editor
@@ -290,8 +290,8 @@ namespace GregoryTerrain.EditorTools
         static string FormatBytes(long bytes) =>
             bytes.ToString("N0") + " bytes (" + (bytes / (1024.0 * 1024.0)).ToString("0.0") + " MiB)";
 
-        // F frames the drawn terrain (Unity calls these by name; a MonoBehaviour has no bounds of its own):
-        // every selected renderer that has drawn; none drawn, Unity frames the selection itself.
+        // F frames the drawn terrain (Unity calls these by name; a MonoBehaviour has no bounds): every
+        // selected renderer that has drawn; if none has, Unity frames the selection itself.
         bool HasFrameBounds() => targets.Any(t => Drawn(t as GregoryTerrainRenderer));
 
         Bounds OnGetFrameBounds()

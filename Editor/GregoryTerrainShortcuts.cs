@@ -7,10 +7,10 @@ using UnityEngine;
 namespace GregoryTerrain.EditorTools
 {
     /// <summary>
-    /// The Scene view's Gregory Terrain keys, through Unity's Shortcut Manager (Edit > Shortcuts,
-    /// category "Gregory Terrain"), so users can rebind them. Active while a Scene view has focus; they
-    /// act on the selected terrains and do nothing when none is selected. The default keys clash with
-    /// no Unity 2022.3 default in the Scene view or global contexts (ShortcutClashTests checks it).
+    /// The Scene view's Gregory Terrain keys, rebindable in Unity's Shortcut Manager (Edit > Shortcuts,
+    /// "Gregory Terrain"). Active while a Scene view has focus, on the selected terrains (none: nothing).
+    /// The defaults clash with no Unity 2022.3 default in the Scene view or global contexts
+    /// (ShortcutClashTests).
     /// </summary>
     static class GregoryTerrainShortcuts
     {
@@ -42,9 +42,8 @@ namespace GregoryTerrain.EditorTools
         }
 
         /// <summary>
-        /// Whether Unity has made the sculpt tool for the selection: it makes a component tool for the
-        /// components the Inspector shows, which with several GameObjects selected are only those every
-        /// one of them has.
+        /// Whether Unity has made the sculpt tool for the selection: only for components the Inspector
+        /// shows, which with several GameObjects selected are those all of them have.
         /// </summary>
         static bool SculptToolAvailable()
         {

@@ -7,19 +7,18 @@ using Object = UnityEngine.Object;
 namespace GregoryTerrain.EditorTools
 {
     /// <summary>
-    /// Every editor change to a <see cref="PatchGridAsset"/> goes through here: one undo step each,
-    /// recording only what the change touches. A control point move records the blocks (64 patches,
-    /// 30,720 bytes of doubles each) holding the point and its shared copies, not the grid; a whole-grid
-    /// change (fit, flat, G1, import) records the asset and the blocks whose bits change, and creates or
-    /// destroys block sub-assets with Undo when the patch count changes.
+    /// Every editor change to a <see cref="PatchGridAsset"/>: one undo step each, recording only what
+    /// it touches. A point move records the blocks (64 patches, 30,720 bytes of doubles each) holding
+    /// the point and its shared copies; a whole-grid change (fit, flat, G1, import) the asset and the
+    /// blocks whose bits change, creating or destroying block sub-assets with Undo as the count changes.
     /// </summary>
     [InitializeOnLoad]
     internal static class PatchGridAssetUndo
     {
-        // Undo and redo restore grid data behind the assets' backs: mark every loaded grid so its next
-        // read compares a fingerprint of its data with the last one checked (PatchGridBlock.OnValidate
-        // does it too, where Unity calls it after an undo). Only a grid whose data differs gets a new
-        // version (and is uploaded again): an undo of something else costs one hash per grid.
+        // Undo and redo restore grid data behind the assets' backs: every loaded grid's next read
+        // compares a fingerprint of its data with the last one checked (PatchGridBlock.OnValidate too,
+        // after an undo). Only a changed grid gets a new version (and is uploaded again): an undo of
+        // something else costs one hash per grid.
         static PatchGridAssetUndo() => Undo.undoRedoPerformed += MarkLoadedGridsChanged;
 
         static void MarkLoadedGridsChanged()
@@ -41,9 +40,9 @@ namespace GregoryTerrain.EditorTools
         }
 
         /// <summary>
-        /// Replaces the whole grid: one undo step named <paramref name="undoName"/> that records the
-        /// asset (shape, lines, block list) and only the blocks whose bits change; blocks the new grid
-        /// no longer needs are destroyed with Undo, new ones created with it.
+        /// Replaces the whole grid: one undo step named <paramref name="undoName"/> recording the asset
+        /// (shape, lines, block list) and only the blocks whose bits change; blocks are created and
+        /// destroyed with Undo.
         /// </summary>
         public static void SetGrid(PatchGridAsset asset, PatchGrid grid, string undoName)
         {

@@ -23,10 +23,10 @@ namespace GregoryTerrain.EditorTools
     }
 
     /// <summary>
-    /// The Scene-view sculpt tool of a Gregory terrain, as Unity's Terrain tools work: the brush disc
-    /// follows the surface under the mouse, a left drag paints a stroke of dabs (Core's PatchBrush, G1
-    /// kept), and each stroke is one undo step. SelectPatches drags a patch rectangle that confines the
-    /// brush and that "Refit selection" refits. Settings live in the renderer's inspector.
+    /// The Scene-view sculpt tool, as Unity's Terrain tools work: the brush disc follows the surface,
+    /// a left drag paints a stroke of dabs (Core's PatchBrush, G1 kept), one undo step a stroke.
+    /// SelectPatches drags a patch rectangle that confines the brush and that "Refit selection" refits.
+    /// Settings live in the renderer's inspector.
     /// </summary>
     [EditorTool("Sculpt Gregory Terrain", typeof(GregoryTerrainRenderer))]
     internal sealed class PatchGridSculptTool : EditorTool
@@ -55,8 +55,8 @@ namespace GregoryTerrain.EditorTools
         const string StrokeName = "Sculpt Gregory terrain";
         int _undoGroup = -1;
         bool _stroking;
-        // The grid as Core sees it, kept between strokes while the asset's version matches (no whole-grid
-        // copy a stroke); its patches are its own, never shared with the renderer's grids.
+        // Core's grid, kept between strokes while the asset's version matches (no whole-grid copy a
+        // stroke); its patches are never shared with the renderer's grids.
         PatchGrid _strokeGrid;
         PatchGridAsset _strokeAsset;
         int _strokeVersion;
@@ -123,8 +123,8 @@ namespace GregoryTerrain.EditorTools
         }
 
         /// <summary>
-        /// Replaces the grid with <paramref name="side"/> x <paramref name="side"/> patches fitted to its
-        /// surface, with a progress bar and Cancel; one undo step; a cancel or an error leaves the grid as it was.
+        /// Refits the grid to <paramref name="side"/> x <paramref name="side"/> patches of its own surface,
+        /// with progress and Cancel; one undo step; a cancel or an error leaves the grid as it was.
         /// </summary>
         static void Resample(GregoryTerrainRenderer renderer, int side)
         {
@@ -168,7 +168,7 @@ namespace GregoryTerrain.EditorTools
         {
             Event e = Event.current;
             int id = GUIUtility.GetControlID(ControlHint, FocusType.Passive);
-            // While the tool holds the hot control, Unity sends it the drag and release outside the Scene view too.
+            // Holding the hot control, the tool gets the drag and release outside the Scene view too.
             EventType type = e.GetTypeForControl(id);
             if (type == EventType.MouseUp && GUIUtility.hotControl == id && e.button == 0)
             {

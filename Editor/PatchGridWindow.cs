@@ -12,13 +12,12 @@ using UnityEngine.Serialization;
 namespace GregoryTerrain.EditorTools
 {
     /// <summary>
-    /// Makes an n x m grid or fits one to a heightmap (readable Texture2D, full precision for 16-bit and
-    /// float, or RAW), cancellable, optionally from a target error; heat map of the error; G1 by
-    /// G1Builder. Each change to the asset is one Undo step.
+    /// Makes an n x m grid or fits one to a heightmap (Texture2D at full precision, or RAW),
+    /// cancellable, optionally from a target error; error heat map; G1 by G1Builder. One Undo step a change.
     /// </summary>
     internal sealed class PatchGridWindow : EditorWindow
     {
-        /// <summary>Patches a side the window offers; GpuLayout.CheckSize holds the GPU's own limit (documented in the manual).</summary>
+        /// <summary>Patches a side the window offers; GpuLayout.CheckSize holds the GPU's own limit.</summary>
         internal const int MaxSide = 1024;
         /// <summary>The largest Max Size a texture import offers.</summary>
         const int MaxImportSize = 16384;
@@ -135,7 +134,7 @@ namespace GregoryTerrain.EditorTools
             rawHeight = Mathf.Max(0, EditorGUILayout.IntField(" ", rawHeight));
             rawRowOrder = (RawRowOrder)EditorGUILayout.EnumPopup(RawRowsLabel, rawRowOrder);
             rawVoids = EditorGUILayout.Toggle(RawVoidLabel, rawVoids);
-            // The RAW buttons open a modal file dialog, which leaves this GUI pass's layout stale: exit it, as Unity's windows do.
+            // A RAW button's modal file dialog leaves this GUI pass's layout stale: exit it, as Unity's windows do.
             if (GUILayout.Button(new GUIContent("Fit to RAW file...", "Least-squares fit to a headerless RAW heightmap in the format above."))) { FitRaw(); GUIUtility.ExitGUI(); }
 
             EditorGUILayout.Space();
@@ -243,11 +242,10 @@ namespace GregoryTerrain.EditorTools
         }
 
         /// <summary>
-        /// The platform settings beside the default ones the fix writes: a 32-bit EXR gets RFloat on the
-        /// Default tab (Unity's default import is half: 11 significant bits). An override for the
-        /// editor's active platform wins over the Default tab: it is dropped when it compresses the
-        /// heights or would not read such an EXR at 32 bits, else kept (a chosen R16, say) with its Max
-        /// Size raised to the file's.
+        /// The platform settings the fix writes besides the default ones: a 32-bit EXR gets RFloat on the
+        /// Default tab (Unity's default import is half: 11 significant bits). An active-platform
+        /// override wins over the Default tab: dropped when it compresses the heights or would not read
+        /// such an EXR at 32 bits, else kept (a chosen R16, say) with Max Size raised to the file's.
         /// </summary>
         void FixPlatformSettings(TextureImporter importer, bool compressed, int side)
         {
@@ -334,9 +332,8 @@ namespace GregoryTerrain.EditorTools
         }
 
         /// <summary>
-        /// Refits the Scene view's patch selection to a heightmap covering the whole terrain, with a
-        /// cancellable progress bar; a cancel or an error leaves the asset as it was. One undo step
-        /// that records only the blocks of the patches it changed.
+        /// Refits the Scene view's patch selection to a heightmap of the whole terrain, cancellable; a
+        /// cancel or an error leaves the asset as it was. One undo step of the changed blocks only.
         /// </summary>
         void Refit(double[] heights, int width, int height, string source)
         {

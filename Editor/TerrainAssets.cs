@@ -32,10 +32,10 @@ namespace GregoryTerrain.EditorTools
         }
 
         /// <summary>
-        /// A new material asset with every package toggle set explicitly, property and keyword alike
-        /// (a material made from script gets the properties' defaults but none of their keywords):
-        /// height colour on, noise as asked, tiled noise and debug views off. Null, with a warning
-        /// naming <paramref name="context"/>, when the shader is missing.
+        /// A new material with every package toggle set, property and keyword alike (a material made
+        /// from script gets the properties' defaults but not their keywords): height colour on, noise
+        /// as asked, tiled noise and debug views off. Null, warning with <paramref name="context"/>,
+        /// when the shader is missing.
         /// </summary>
         public static Material CreateMaterial(Object context, bool noise)
         {

@@ -5,10 +5,10 @@ using UnityEngine;
 namespace GregoryTerrain.EditorTools
 {
     /// <summary>
-    /// Where the Scene view draws a control point and where a handle drag puts it back: through the
-    /// renderer's <see cref="GregoryTerrainRenderer.WorldFrame"/> (the Transform, Terrain Size, Height
-    /// Scale and the floating-origin offset), the frame its draw matrices come from, not the
-    /// Transform's matrix alone. Draw with <c>Handles.matrix</c> left at identity: positions are world.
+    /// Where the Scene view draws a control point and a handle drag puts it back: through the
+    /// renderer's <see cref="GregoryTerrainRenderer.WorldFrame"/> (Transform, Terrain Size, Height
+    /// Scale, floating-origin offset), as its draw matrices, not the Transform alone. Positions are
+    /// world: leave <c>Handles.matrix</c> at identity.
     /// </summary>
     internal readonly struct TerrainScenePoints
     {

@@ -6,7 +6,7 @@ namespace GregoryTerrain.Rig.Tests
 {
     /// <summary>
     /// The renderer's per-frame rules (Core's <see cref="FramePlanner"/>), each as the mask of what a
-    /// frame sends: the steady state sends only the range (README, "What is sent per frame"), nothing
+    /// frame sends: the steady state sends only the range (index.md, "What is sent per frame"), nothing
     /// is allocated per planned frame, and each change sends what it changed. Kept with the rig's
     /// tests, out of the shipped package (its size limit).
     /// </summary>
@@ -34,7 +34,7 @@ namespace GregoryTerrain.Rig.Tests
             finestExponent = LodLevels.FinestExponent(100000.0, 16.0),
         };
 
-        /// <summary>Bytes a mask sends (the README's table): the block 160, a float4 16, the matrices 128, the levels 320.</summary>
+        /// <summary>Bytes a mask sends (index.md's tables): the block 160, a float4 16, the matrices 128, the levels 320.</summary>
         static int Bytes(FrameChange c)
         {
             if ((c & FrameChange.Params) != 0) c &= ~(FrameChange.Range | FrameChange.RangeOrigin);
@@ -57,7 +57,7 @@ namespace GregoryTerrain.Rig.Tests
             Assert.That(s.parameters.tess.x, Is.EqualTo(16f));
         }
 
-        // The README's modes (the Compute cache plans as the domain stage: its pass is VertexCachePass's).
+        // The manual's modes (the Compute cache plans as the domain stage: its pass is VertexCachePass's).
         [TestCase(false, false, 16)]
         [TestCase(true, false, 16 + 16 * LodTiles.MaxLevels)]
         [TestCase(false, true, 16)]
@@ -72,7 +72,7 @@ namespace GregoryTerrain.Rig.Tests
             {
                 FrameChange c = FramePlanner.Plan(s, f);
                 Assert.That(c, Is.EqualTo(levels ? FrameChange.Range | FrameChange.Levels : FrameChange.Range), $"frame {frame}");
-                Assert.That(Bytes(c), Is.EqualTo(bytes), "bytes per frame (README)");
+                Assert.That(Bytes(c), Is.EqualTo(bytes), "bytes per frame (index.md)");
             }
         }
 
