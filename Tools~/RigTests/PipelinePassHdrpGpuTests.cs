@@ -60,18 +60,9 @@ namespace GregoryTerrain.Rig.Tests
 
         double Channel(RigPng png, int p, int c) => png.Rgba[4 * p + c] / 255.0;
 
-        /// <summary>The world normal HDRP's normal buffer holds at the pixel: two 12-bit octahedral
-        /// coordinates in RGB 8:8:8 (Packing.hlsl PackFloat2To888, PackNormalOctQuadEncode), decoded.</summary>
-        double[] NormalBufferNormal(int p)
-        {
-            int r = _normalBuffer.Rgba[4 * p], g = _normalBuffer.Rgba[4 * p + 1], b = _normalBuffer.Rgba[4 * p + 2];
-            double x = ((b & 15) << 8 | r) / 4095.0 * 2 - 1, y = ((b >> 4) << 8 | g) / 4095.0 * 2 - 1;
-            double z = 1 - Math.Abs(x) - Math.Abs(y), t = Math.Max(-z, 0);
-            x += x >= 0 ? -t : t;
-            y += y >= 0 ? -t : t;
-            double len = Math.Sqrt(x * x + y * y + z * z);
-            return new[] { x / len, y / len, z / len };
-        }
+        /// <summary>The world normal HDRP's normal buffer holds at the pixel (EncodeIntoNormalBuffer: Packing.hlsl's
+        /// PackNormalOctQuadEncode and PackFloat2To888, two 12-bit octahedral coordinates in RGB 8:8:8), decoded.</summary>
+        double[] NormalBufferNormal(int p) => PipelinePassRun.OctahedralNormal(_normalBuffer, p);
 
         double NDotL(int p) => NormalBufferNormal(p).Select((n, c) => n * _sun[c]).Sum();
 
@@ -133,6 +124,22 @@ namespace GregoryTerrain.Rig.Tests
             // normal buffer (12-bit octahedral: N.L within ~0.002), colour 8-bit: 3/255 bounds one pixel.
             PipelinePassRun.AssertWithinEightBitSteps(
                 PipelinePassRun.LambertErrors(_hdrp, _covered, NDotL, _scale, _albedo, SkyShare, _light), "|HDRP - Lambert(normal buffer)|");
+        }
+
+        [Test]
+        public void TheNormalBuffer_HoldsCoresNormals_AtThePixelsDepth()
+        {
+            // As PipelinePassDepthNormalsTests grades URP's octahedral target (the same packing): DepthForwardOnly's
+            // normal buffer decoded the HDRP way (NormalBuffer.hlsl:38-44 DecodeFromNormalBuffer: Unpack888ToFloat2, * 2 - 1,
+            // UnpackNormalOctQuadEncode) against Core's normal at the position its depth gives, every 2nd pixel.
+            var (angles, outside, worst) = PipelinePassRun.NormalAngles(_out, "hdrp_depth_depth.f32", "hdrp_depth_view.json", _normalBuffer,
+                                                                 NormalBufferNormal, 2);
+            var (mean, p99, max) = PipelinePassRun.AngleFigures(angles, "HDRP normal buffer vs Core");
+            TestContext.Out.WriteLine($"sampled pixels off the terrain: {outside}; {worst}");
+            Assert.That(outside, Is.LessThan(angles.Count / 100), "sampled pixels whose depth puts them off the terrain");
+            Assert.That(mean, Is.LessThan(PipelinePassDepthNormalsTests.MeanDegrees), "mean angle (degrees)");
+            Assert.That(p99, Is.LessThan(PipelinePassDepthNormalsTests.P99Degrees), "99th percentile angle (degrees)");
+            Assert.That(max, Is.LessThan(PipelinePassDepthNormalsTests.MaxDegrees), "largest angle (degrees)");
         }
 
         [Test]

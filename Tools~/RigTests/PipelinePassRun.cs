@@ -113,6 +113,114 @@ namespace GregoryTerrain.Rig.Tests
             Assert.That(max, Is.LessThan(3.0 / 255), what + ": largest error");
         }
 
+        public static double[] Doubles(JsonElement e) => e.EnumerateArray().Select(x => x.GetDouble()).ToArray();
+
+        /// <summary>A 4x4 matrix written by the scripts as four rows.</summary>
+        public static double[,] Matrix(JsonElement e)
+        {
+            var rows = e.EnumerateArray().Select(Doubles).ToArray();
+            var m = new double[4, 4];
+            for (int r = 0; r < 4; r++) for (int c = 0; c < 4; c++) m[r, c] = rows[r][c];
+            return m;
+        }
+
+        public static double[,] Inverse(double[,] m)
+        {
+            var a = new double[4, 8];
+            for (int r = 0; r < 4; r++) for (int c = 0; c < 4; c++) { a[r, c] = m[r, c]; a[r, 4 + c] = r == c ? 1 : 0; }
+            for (int c = 0; c < 4; c++)
+            {
+                int p = Enumerable.Range(c, 4 - c).OrderByDescending(r => Math.Abs(a[r, c])).First();
+                for (int k = 0; k < 8; k++) (a[c, k], a[p, k]) = (a[p, k], a[c, k]);
+                double pivot = a[c, c];
+                for (int k = 0; k < 8; k++) a[c, k] /= pivot;
+                for (int r = 0; r < 4; r++)
+                    if (r != c) { double f = a[r, c]; for (int k = 0; k < 8; k++) a[r, k] -= f * a[c, k]; }
+            }
+            var inv = new double[4, 4];
+            for (int r = 0; r < 4; r++) for (int c = 0; c < 4; c++) inv[r, c] = a[r, 4 + c];
+            return inv;
+        }
+
+        public static double[] Mul(double[,] m, double[] v) =>
+            Enumerable.Range(0, 4).Select(r => Enumerable.Range(0, 4).Sum(c => m[r, c] * v[c])).ToArray();
+
+        /// <summary>The world normal an octahedral normal texel holds (URP's _GBUFFER_NORMALS_OCT target and HDRP's
+        /// normal buffer pack it alike): two 12-bit coordinates in RGB 8:8:8, decoded as SRP Core's Packing.hlsl does
+        /// (Packing.hlsl:560-575 Unpack888ToFloat2: R and B's low 4 bits the first, G and B's high 4 bits the second, / 4095;
+        /// then * 2 - 1 and UnpackNormalOctQuadEncode, lines 71-83; URP: DeclareNormalsTexture.hlsl:25-28).</summary>
+        public static double[] OctahedralNormal(RigPng png, int p)
+        {
+            int r = png.Rgba[4 * p], g = png.Rgba[4 * p + 1], b = png.Rgba[4 * p + 2];
+            double x = ((b & 15) << 8 | r) / 4095.0 * 2 - 1, y = ((b >> 4) << 8 | g) / 4095.0 * 2 - 1;
+            double z = 1 - Math.Abs(x) - Math.Abs(y), t = Math.Max(-z, 0);
+            x += x >= 0 ? -t : t;
+            y += y >= 0 ? -t : t;
+            double len = Math.Sqrt(x * x + y * y + z * z);
+            return new[] { x / len, y / len, z / len };
+        }
+
+        /// <summary>
+        /// Angles in degrees between the normal a pass wrote (decoded) and Core's at the same place, at every
+        /// step-th covered pixel in x and y: the pixel's world position from the pass's own depth (DEPTH: the
+        /// harness's --depth-out, W x H float32, top row first) through the inverse of the camera's
+        /// view-projection (VIEW: camera_view_proj, object_to_world), then terrain (x, y) = object (x, z);
+        /// Core's unit normal there (TerrainSurfaceQuery.SampleNormal on grid.json, no noise: the scene packs
+        /// amplitude 0) taken to world space as the shaders take it (GT_ObjectToWorldNormal: n times the
+        /// world-to-object matrix's 3x3). Pixels whose position lies outside the unit square are counted apart.
+        /// </summary>
+        public static (List<double> Angles, int Outside, string Worst) NormalAngles(string output, string depthFile, string viewFile, RigPng png,
+                                                                      Func<int, double[]> decoded, int step)
+        {
+            byte[] depth = File.ReadAllBytes(Path.Combine(output, depthFile));
+            int w = png.Width, h = png.Height;
+            Assert.That(depth.Length, Is.EqualTo(4 * w * h), depthFile + ": the pass's W * H depth");
+            JsonElement view = JsonDocument.Parse(File.ReadAllText(Path.Combine(output, viewFile))).RootElement;
+            double[,] clipToWorld = Inverse(Matrix(view.GetProperty("camera_view_proj")));
+            double[,] worldToObject = Inverse(Matrix(view.GetProperty("object_to_world")));
+            var query = new TerrainSurfaceQuery(PatchGridJson.ReadFile(Path.Combine(output, "grid.json")), null);
+            var angles = new List<double>();
+            int outside = 0;
+            string worst = "";
+            double worstAngle = -1;
+            for (int py = 0; py < h; py += step)
+                for (int px = 0; px < w; px += step)
+                {
+                    int p = py * w + px;
+                    float d = BitConverter.ToSingle(depth, 4 * p);
+                    if (!(d > 0)) continue;                       // reversed depth's clear: nothing drawn
+                    double[] world = Mul(clipToWorld, new[] { (px + 0.5) / w * 2 - 1, 1 - (py + 0.5) / h * 2, d, 1.0 });
+                    double[] o = Mul(worldToObject, world.Select(x => x / world[3]).ToArray());
+                    Double3 n = query.SampleNormal(o[0], o[2]);
+                    if (n.x == 0 && n.y == 0 && n.z == 0) { outside++; continue; }
+                    double[] nObject = { n.x, n.z, n.y };         // terrain (x, y, z up) -> object (x, height, y)
+                    double[] core = Enumerable.Range(0, 3).Select(j => Enumerable.Range(0, 3).Sum(i => nObject[i] * worldToObject[i, j])).ToArray();
+                    double coreLength = Math.Sqrt(core.Sum(x => x * x));
+                    double[] gpu = decoded(p);
+                    double cos = Enumerable.Range(0, 3).Sum(c => gpu[c] * core[c] / coreLength);
+                    double angle = double.IsNaN(cos) ? double.NaN : Math.Acos(Math.Clamp(cos, -1, 1)) * 180 / Math.PI;
+                    angles.Add(angle);
+                    if (!(angle <= worstAngle))
+                    {
+                        worstAngle = double.IsNaN(angle) ? double.PositiveInfinity : angle;
+                        worst = $"worst {angle:F3} deg at pixel ({px}, {py}), terrain ({o[0]:F4}, {o[2]:F4}), " +
+                                $"GPU ({string.Join(", ", gpu.Select(x => x.ToString("F4")))}), Core ({string.Join(", ", core.Select(x => (x / coreLength).ToString("F4")))})";
+                    }
+                }
+            return (angles, outside, worst);
+        }
+
+        /// <summary>Mean, 99th percentile and largest of the angles (a NaN counts as 180 degrees), printed.</summary>
+        public static (double Mean, double P99, double Max) AngleFigures(List<double> angles, string what)
+        {
+            var sorted = angles.Select(a => double.IsNaN(a) ? 180 : a).OrderBy(a => a).ToList();
+            Assert.That(sorted, Is.Not.Empty, what + ": no covered pixel sampled");
+            double mean = sorted.Average(), p99 = sorted[(int)(0.99 * (sorted.Count - 1))], max = sorted.Last();
+            TestContext.Out.WriteLine($"{what}: {sorted.Count} pixels, angle to Core's normal mean {mean:F3} deg, 99th percentile {p99:F3} deg, " +
+                                      $"max {max:F3} deg, NaN {angles.Count(double.IsNaN)}");
+            return (mean, p99, max);
+        }
+
         /// <summary>TerrainShading.hlsl's GT_DEFAULT_ALBEDO and GT_AMBIENT, as the shader has them.</summary>
         public static (double[] Albedo, double Ambient) Shading()
         {

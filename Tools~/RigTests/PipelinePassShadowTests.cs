@@ -28,37 +28,6 @@ namespace GregoryTerrain.Rig.Tests
         List<ShadowSample> _samples;
         double _edgeTolerance;   // world units
 
-        static double[] Doubles(JsonElement e) => e.EnumerateArray().Select(x => x.GetDouble()).ToArray();
-
-        static double[,] Matrix(JsonElement e)
-        {
-            var rows = e.EnumerateArray().Select(Doubles).ToArray();
-            var m = new double[4, 4];
-            for (int r = 0; r < 4; r++) for (int c = 0; c < 4; c++) m[r, c] = rows[r][c];
-            return m;
-        }
-
-        static double[,] Inverse(double[,] m)
-        {
-            var a = new double[4, 8];
-            for (int r = 0; r < 4; r++) for (int c = 0; c < 4; c++) { a[r, c] = m[r, c]; a[r, 4 + c] = r == c ? 1 : 0; }
-            for (int c = 0; c < 4; c++)
-            {
-                int p = Enumerable.Range(c, 4 - c).OrderByDescending(r => Math.Abs(a[r, c])).First();
-                for (int k = 0; k < 8; k++) (a[c, k], a[p, k]) = (a[p, k], a[c, k]);
-                double pivot = a[c, c];
-                for (int k = 0; k < 8; k++) a[c, k] /= pivot;
-                for (int r = 0; r < 4; r++)
-                    if (r != c) { double f = a[r, c]; for (int k = 0; k < 8; k++) a[r, k] -= f * a[c, k]; }
-            }
-            var inv = new double[4, 4];
-            for (int r = 0; r < 4; r++) for (int c = 0; c < 4; c++) inv[r, c] = a[r, 4 + c];
-            return inv;
-        }
-
-        static double[] Mul(double[,] m, double[] v) =>
-            Enumerable.Range(0, 4).Select(r => Enumerable.Range(0, 4).Sum(c => m[r, c] * v[c])).ToArray();
-
         /// <summary>The picture's colour above the ambient term, averaged over the channels: the light's share.</summary>
         double DirectShare(RigPng png, int p) => Enumerable.Range(0, 3).Average(c => Channel(png, p, c) - _albedo[c] * _ambient);
 
@@ -82,16 +51,16 @@ namespace GregoryTerrain.Rig.Tests
             if (_samples != null) return;
             _litShadows = RigPng.Read(Path.Combine(_out, "lit_shadows.png"));
             _shadow = JsonDocument.Parse(File.ReadAllText(Path.Combine(_out, "shadow.json"))).RootElement;
-            _shadowSun = Doubles(Manifest("lit_shadows").GetProperty("sun"));
+            _shadowSun = PipelinePassRun.Doubles(Manifest("lit_shadows").GetProperty("sun"));
             byte[] depthBytes = File.ReadAllBytes(Path.Combine(_out, "lit_shadows_depth.f32"));
             int w = _lit.Width, h = _lit.Height;
             Assert.That(depthBytes.Length, Is.EqualTo(4 * w * h), "lit_shadows_depth.f32: the forward pass's W * H depth");
-            double[,] clipToWorld = Inverse(Matrix(_shadow.GetProperty("camera_view_proj")));
-            double[,] worldToObject = Inverse(Matrix(_shadow.GetProperty("object_to_world")));
+            double[,] clipToWorld = PipelinePassRun.Inverse(PipelinePassRun.Matrix(_shadow.GetProperty("camera_view_proj")));
+            double[,] worldToObject = PipelinePassRun.Inverse(PipelinePassRun.Matrix(_shadow.GetProperty("object_to_world")));
             double[] sun = _shadowSun;
             double texel = _shadow.GetProperty("texel").GetDouble();
             // Object space is (x, height, y) of terrain space; the object-to-world scale is uniform.
-            double[] sunObject = Mul(worldToObject, new[] { sun[0], sun[1], sun[2], 0.0 });
+            double[] sunObject = PipelinePassRun.Mul(worldToObject, new[] { sun[0], sun[1], sun[2], 0.0 });
             var sunTerrain = new Double3(sunObject[0], sunObject[2], sunObject[1]);
             double worldPerTerrain = 1.0 / Math.Sqrt(sunObject.Take(3).Sum(x => x * x));
             var query = new TerrainSurfaceQuery(PatchGridJson.ReadFile(Path.Combine(_out, "grid.json")), null);
@@ -117,8 +86,8 @@ namespace GregoryTerrain.Rig.Tests
                 float d = BitConverter.ToSingle(depthBytes, 4 * p);
                 // Only pixels the sun lights without the map (N.L >= MinNDotL), where a shadow is a clear step.
                 if (!(d > 0) || ShadowNDotL(p) < MinNDotL) return;
-                double[] world = Mul(clipToWorld, new[] { (p % w + 0.5) / w * 2 - 1, 1 - (p / w + 0.5) / h * 2, d, 1.0 });
-                double[] o = Mul(worldToObject, world.Select(x => x / world[3]).ToArray());
+                double[] world = PipelinePassRun.Mul(clipToWorld, new[] { (p % w + 0.5) / w * 2 - 1, 1 - (p / w + 0.5) / h * 2, d, 1.0 });
+                double[] o = PipelinePassRun.Mul(worldToObject, world.Select(x => x / world[3]).ToArray());
                 double x0 = o[0], y0 = o[2], z0 = o[1];
                 bool cpu = Shadowed(x0, y0, z0);
                 bool near = false;

@@ -121,6 +121,7 @@ namespace GregoryTerrain.Rig.Tests
             Gt("shaders", "jobs", "int 1..256"), Gt("shaderlab", "jobs", "int 1..256"),
             Gt("pipeline_pass", "sun-elevation", "-90..90"), Gt("pipeline_pass", "sun-azimuth", "-360..360"),
             Gt("pipeline_pass", "shadow-sun-elevation", "-90..90"), Gt("pipeline_pass", "shadow-sun-azimuth", "-360..360"),
+            Gt("pipeline_pass", "object-yaw", "-360..360"),
             Gt("pipeline_pass_hdrp", "sun-elevation", "-90..90"), Gt("pipeline_pass_hdrp", "sun-azimuth", "-360..360"),
         }.Concat(Scene("pack")).Concat(Scene("error")).ToArray();
 

@@ -18,13 +18,15 @@ lit_dxc (ForwardLit base from DXC's SPIR-V, legalised at -O0, unreferenced resou
 builtin_lit (Built-in's ForwardBase, tessellated SubShader, base variant: one directional light),
 shadow_map (URP's ShadowCaster drawn from the sun: OUT/shadow_map.f32, no PNG) and lit_shadows (ForwardLit
 _MAIN_LIGHT_SHADOWS sampling it; OUT/lit_shadows_depth.f32 its camera depth; OUT/shadow.json the
-light's matrices), both under --shadow-sun-elevation/--shadow-sun-azimuth.
+light's matrices), both under --shadow-sun-elevation/--shadow-sun-azimuth; depth_normals (only with --only:
+URP's DepthNormalsOnly, _GBUFFER_NORMALS_OCT, its depth in OUT/depth_normals_depth.f32, its view in
+OUT/depth_normals_view.json), under --object-yaw.
 Uniform blocks are bound as storage buffers (--uniform-blocks storage: the harness rewrites the
 blocks, same offsets): the rig's lavapipe rule (one compile per SPIR-V, whatever the values) on every device.
 
-  gt pipeline_pass [--out DIR] [--only depth|lit|normals|lit_dxc|builtin_lit|shadow_map|lit_shadows]...
+  gt pipeline_pass [--out DIR] [--only depth|lit|normals|lit_dxc|builtin_lit|shadow_map|lit_shadows|depth_normals]...
       [--sun-elevation DEG] [--sun-azimuth DEG] [--shadow-sun-elevation DEG] [--shadow-sun-azimuth DEG] [--light-color R,G,B]
-      [--leave-default NAME]... [--fill-from NAME=OTHER]... [--transpose NAME]...
+      [--object-yaw DEG] [--leave-default NAME]... [--fill-from NAME=OTHER]... [--transpose NAME]...
 --leave-default / --fill-from / --transpose break the scene on purpose (the tests' broken inputs): a
 member left to its default, a member filled with another member's value, a matrix transposed (in each
 pipeline whose scene sets the names).
@@ -652,7 +654,7 @@ def prepare(a, pipeline, pass_name, keywords, buffers, out, compiler="glslang", 
             shutil.rmtree(os.path.join(tmp, name))
     if not spvs:
         raise SystemExit(f"pipeline-pass: error: {pass_name} has no variant with exactly the keywords {keywords}")
-    cam, o2w, o2c = rig_camera(buffers)
+    cam, o2w, o2c = yawed(a, *rig_camera(buffers))
     values = GLOBALS[pipeline](cam, o2w, o2c, sun, a.light_color)
     values.update(scene or {})
     # A broken input applies to the pipelines whose scene sets the names (main() checks that one does).
@@ -753,6 +755,24 @@ def prepare(a, pipeline, pass_name, keywords, buffers, out, compiler="glslang", 
     return args
 
 
+def yawed(a, cam, o2w, o2c):
+    """The renderer's Transform turned --object-yaw degrees about the world's y axis (the terrain is centred
+    on it): object-to-world, and the object-to-clip that chooses tessellation, as the renderer would set them."""
+    yaw = math.radians(getattr(a, "object_yaw", 0.0))
+    if yaw == 0.0:
+        return cam, o2w, o2c
+    c, s = math.cos(yaw), math.sin(yaw)
+    o2w = mat_mul([[c, 0.0, s, 0.0], [0.0, 1.0, 0.0, 0.0], [-s, 0.0, c, 0.0], [0.0, 0.0, 0.0, 1.0]], o2w)
+    return cam, o2w, mat_mul(cam.view_proj, o2w)
+
+
+def write_view(a, buffers, path):
+    """The camera's view-projection and the renderer's object-to-world a picture was drawn with."""
+    cam, o2w, _ = yawed(a, *rig_camera(buffers))
+    with open(path, "w") as f:
+        json.dump({"camera_view_proj": cam.view_proj, "object_to_world": o2w, "object_yaw": getattr(a, "object_yaw", 0.0)}, f, indent=1)
+
+
 def pack_scene(out):
     """The sample grid (gt-cli demo-grid) packed as the rig's buffers, RigScene's zoom view at 400 x 300."""
     cli = os.path.join(PKG_DIR, ".build", "gt-cli", "gt-cli")
@@ -778,7 +798,16 @@ PICTURES = [("depth", "URP", "DepthOnly", [], "glslang"), ("lit", "URP", "Forwar
             ("normals", "URP", "ForwardLit", ["GT_DEBUG_NORMALS"], "glslang"), ("lit_dxc", "URP", "ForwardLit", [], "dxc"),
             ("builtin_lit", "Builtin", "ForwardBase", [], "glslang"),
             ("shadow_map", "URP", "ShadowCaster", [], "glslang"),
-            ("lit_shadows", "URP", "ForwardLit", ["_MAIN_LIGHT_SHADOWS"], "glslang")]
+            ("lit_shadows", "URP", "ForwardLit", ["_MAIN_LIGHT_SHADOWS"], "glslang"),
+            ("depth_normals", "URP", "DepthNormalsOnly", ["_GBUFFER_NORMALS_OCT"], "glslang")]
+# depth_normals: URP's DepthNormalsOnly with _GBUFFER_NORMALS_OCT, the variant whose output fits the harness's
+# RGBA8 UNORM target as it fits URP's (UniversalRendererData's Accurate G-buffer Normals: R8G8B8A8_UNorm, the
+# octahedral normal's two 12-bit coordinates in RGB 8:8:8). URP's default (Forward, that option off) draws the
+# base variant into R8G8B8A8_SNorm (DepthNormalOnlyPass.GetGraphicsFormat): signed, which the harness cannot
+# hold. Its camera depth goes to depth_normals_depth.f32 and the view to depth_normals_view.json (the test
+# recovers each pixel's world position). Drawn only when named (--only depth_normals): its own fixture.
+ON_REQUEST = {"depth_normals"}
+DEPTH_PICTURES = {"depth_normals"}
 # shadow_map: URP's ShadowCaster (base variant: a directional light) drawn from the main light into a
 # SHADOW_RESOLUTION^2 depth map (--depth-out; no colour, ColorMask 0); lit_shadows: ForwardLit's
 # _MAIN_LIGHT_SHADOWS variant sampling it, its LightShadows block filled as URP does, and its camera
@@ -829,6 +858,9 @@ def main(argv=None):
                        help="the shadowed frame's sun: degrees from +z towards +x (default 90: from the right, across "
                             "the ridges; 12% of the sunlit terrain in their shadow)")
     ap.add_argument("--light-color", default="1,0.96,0.9", help="R,G,B: the main light's final colour (linear)")
+    options.add_number(ap, "--object-yaw", range="azimuth", default=0.0,
+                       help="degrees the renderer's Transform turns about the world's y axis (default 0; depth_normals' "
+                            "fixture turns it so normals left in object space differ from world normals)")
     ap.add_argument("--leave-default", action="append", default=[], help="NAME: leave a member to its default")
     ap.add_argument("--fill-from", action="append", default=[], help="NAME=OTHER: fill NAME with OTHER's value")
     ap.add_argument("--transpose", action="append", default=[], help="NAME: fill the matrix NAME (each, for an array) transposed")
@@ -861,7 +893,7 @@ def main(argv=None):
     cam, _, _ = rig_camera(buffers)
     shadow = MainLightShadow(cam, sun_direction(a.shadow_sun_elevation, a.shadow_sun_azimuth))
     texels = os.path.join(a.out, "shadow_map_texels.f32")
-    wanted = set(a.only or [p[0] for p in PICTURES])
+    wanted = set(a.only or [p[0] for p in PICTURES if p[0] not in ON_REQUEST])
     wanted |= {m for m, receiver in SHADOW_PICTURES.items() if receiver in wanted}   # a receiver needs its map
     for picture, pipeline, pass_name, keywords, compiler in PICTURES:
         if picture not in wanted:
@@ -880,6 +912,10 @@ def main(argv=None):
                            sun=shadow.sun)
             draw(args, buffers, os.path.join(a.out, picture + ".png"), log,
                  depth_out=os.path.join(a.out, picture + "_depth.f32"))
+        elif picture in DEPTH_PICTURES:
+            args = prepare(a, pipeline, pass_name, keywords, buffers, folder, compiler)
+            draw(args, buffers, os.path.join(a.out, picture + ".png"), log, depth_out=os.path.join(a.out, picture + "_depth.f32"))
+            write_view(a, buffers, os.path.join(a.out, picture + "_view.json"))
         else:
             args = prepare(a, pipeline, pass_name, keywords, buffers, folder, compiler)
             draw(args, buffers, os.path.join(a.out, picture + ".png"), log)

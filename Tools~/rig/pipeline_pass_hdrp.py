@@ -13,7 +13,8 @@ members the stages read (access chains) checked like the uniform blocks' ("defau
 Pictures (OUT/<picture>.png, OUT/<picture>/manifest.json as pipeline_pass.py writes them):
   lit          URP's ForwardLit, base variant (pipeline_pass.py's), to compare with
   hdrp_depth   HDRP's DepthForwardOnly, base variant: the normal buffer (EncodeIntoNormalBuffer:
-               octahedral normal in RGB 8:8:8, perceptual roughness 1 in A)
+               octahedral normal in RGB 8:8:8, perceptual roughness 1 in A); its depth in
+               OUT/hdrp_depth_depth.f32 and its view in OUT/hdrp_depth_view.json
   hdrp_lit     HDRP's ForwardOnly, base variant (SHADOW_LOW: its multi_compile_fragment set has no '_')
   hdrp_lit_far the same, the whole scene 50 km from the world's origin (camera-relative rendering)
   hdrp_lit_near the same at the origin, positions rounded as float32 rounds them 50 km away
@@ -425,7 +426,11 @@ def main(argv=None):
         if pipeline == "HDRP":
             check_buffer_reads(folder)
             print(f"not reproduced: {pass_name} {stencil(pass_name)} (the harness has no stencil)")
-        pp.draw(args, buffers, os.path.join(a.out, picture + ".png"), os.path.join(folder, "harness.log"))
+        # The normal buffer's depth and view, for the test that recovers each pixel's position (as pipeline_pass.py's depth_normals).
+        depth = os.path.join(a.out, picture + "_depth.f32") if picture == "hdrp_depth" else None
+        pp.draw(args, buffers, os.path.join(a.out, picture + ".png"), os.path.join(folder, "harness.log"), depth_out=depth)
+        if depth:
+            pp.write_view(scene, buffers, os.path.join(a.out, picture + "_view.json"))
 
 
 if __name__ == "__main__":
