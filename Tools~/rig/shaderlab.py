@@ -63,6 +63,7 @@ bad input (missing libraries or DXC, a PackageRequirements block Unity would rej
 """
 import argparse
 import concurrent.futures
+import functools
 import glob
 import hashlib
 import os
@@ -543,8 +544,10 @@ def _split_params(params):
     return out
 
 
+@functools.lru_cache(maxsize=None)
 def _signature(head):
-    """(name, raw parameter types, return type) of a function head, or None."""
+    """(name, raw parameter types, return type) of a function head, or None. Memoized: every case
+    of a run includes the same library functions, so most heads were parsed for an earlier case."""
     head = re.sub(r"\[[^\]]*\]", " ", head)   # attributes: [domain("quad")] ...
     m = re.search(r"([\w:]+)\s*\((.*)\)\s*(:\s*\w+\s*)?$", head, flags=re.S)
     if not m:
@@ -561,6 +564,7 @@ def _signature(head):
     return m.group(1), tuple(types), " ".join(ret)
 
 
+@functools.lru_cache(maxsize=None)
 def _fold_half(t):
     return re.sub(r"\b(?:half|min16float|min10float)(\d(?:x\d)?)?\b", lambda m: "float" + (m.group(1) or ""), t)
 
