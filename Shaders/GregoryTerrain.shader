@@ -32,6 +32,7 @@ Shader "GregoryTerrain/Terrain"
         [HideInInspector] _RangeOrigin ("Range origin (hi.x, hi.y, lo.x, lo.y)", Vector) = (0, 0, 0, 0)
         [HideInInspector] _GridSize ("Grid size (n, m, 0, 0)", Vector) = (1, 1, 0, 0)
         [HideInInspector] _TileLattice ("Tile lattice: 0 (tiles on the range) or the range the tiles were anchored at", Vector) = (0, 0, 0, 0)
+        [HideInInspector] _OriginSurface ("Horizon levels: S(O), p(O) in float", Vector) = (0, 0, 0, 0)
     }
 
     // Universal Render Pipeline, tessellated (a project without URP skips it: PackageRequirements).

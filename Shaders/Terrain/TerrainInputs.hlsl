@@ -45,7 +45,7 @@ StructuredBuffer<float4> _Regions GT_REGISTER(t1);
 // xLines[0..n] then yLines[0..m], each strictly increasing from 0 to 1.
 StructuredBuffer<float> _GridLines GT_REGISTER(t2);
 
-// Core's TerrainParams (10 float4, 160 bytes) is the one declaration of these constants: its fields,
+// Core's TerrainParams (11 float4, 176 bytes) is the one declaration of these constants: its fields,
 // in order, are the generated members below (gt generate; ShaderContractTests compares the compiled
 // offsets). Named float4s, not one struct member: Unity sets them by name (internals.md, "One
 // contract to the GPU"). The variants' own constants follow, always last.
@@ -154,6 +154,10 @@ float4 NoiseSettings() { return _Noise; }
 // _NoiseOctaves.z: the on-screen length (pixels) a segment may have under the continuous octave rule
 // of the levels of detail (OctaveCountAtPixelScale); 0 keeps the single-range rule bit for bit.
 float NoiseSegmentPixels() { return _NoiseOctaves.z; }
+// _NoiseOctaves.w: the levels' plain-path error bound (terrain units; TerrainVertex.PlainPathError),
+// 0: every vertex of the levels on the precise path. _OriginSurface: S(O) and p(O) in float.
+float PlainPathError() { return _NoiseOctaves.w; }
+float4 LevelsOriginSurface() { return _OriginSurface; }
 float NoiseAmplitude() { return _Noise.x; }
 float MaxNoiseOctaves() { return _NoiseOctaves.x; }
 // Vertices across the range that the octave count is budgeted for: the override when set, else the

@@ -19,7 +19,9 @@
 #include "../Library/RelativeSurface.hlsl"
 #if defined(GT_NOISE)
     #include "../Library/OctaveNoise.hlsl"
-    #include "TessellationFactors.hlsl"   // PixelsPerUnit, for the continuous octave rule
+#endif
+#if defined(GT_NOISE) || defined(GT_LOD)
+    #include "TessellationFactors.hlsl"   // PixelsPerUnit: the continuous octave rule, the levels' plain path
 #endif
 #if defined(GT_HEIGHT_COLOR)
     #include "../Library/HeightColor.hlsl"
@@ -147,6 +149,17 @@ struct TerrainVertexAttributes
     uint patch;              // the Gregory patch that was evaluated
 };
 
+#if !defined(GT_EXTEND_DRAW_PATCHES) && defined(GT_RANGE_ORIGIN_CODE) && (defined(GT_NOISE) || defined(GT_LOD))
+// Pixels per object unit where a vertex outputs surfaceOutput (terrain space).
+float SurfacePixelScale(float3 surfaceOutput)
+{
+    float3 p = TerrainToObject(surfaceOutput);
+    return PixelsPerUnit(GT_TessObjectToClip(p), GT_TessObjectToClip(p + float3(1.0, 0.0, 0.0)),
+                         GT_TessObjectToClip(p + float3(0.0, 1.0, 0.0)), GT_TessObjectToClip(p + float3(0.0, 0.0, 1.0)),
+                         GT_TessScreenSize());
+}
+#endif
+
 #if defined(GT_NOISE)
 // The octaves a vertex draws, from its surface position before noise (OutputSurfacePosition). The
 // single-range rule (one count a frame, from the layout's width) unless NoiseSegmentPixels() > 0
@@ -156,19 +169,29 @@ struct TerrainVertexAttributes
 // The renderer sends NoiseSegmentPixels() only with its levels on, which draw with GT_LOD, so the
 // continuous rule is compiled with the origin's code (GT_RANGE_ORIGIN_CODE, which GT_LOD sets):
 // elsewhere the untaken branch kept registers (performance.md, "Choices in the shaders, measured").
-float VertexOctaveCount(TileLayout l, TerrainSurfacePoint s)
+float VertexOctaveCountAt(TileLayout l, float3 surfaceOutput)
 {
 #if !defined(GT_EXTEND_DRAW_PATCHES) && defined(GT_RANGE_ORIGIN_CODE)
     [branch] if (NoiseSegmentPixels() > 0.0)
-    {
-        float3 p = TerrainToObject(OutputSurfacePosition(l, s));   // what the vertex outputs before noise
-        float k = PixelsPerUnit(GT_TessObjectToClip(p), GT_TessObjectToClip(p + float3(1.0, 0.0, 0.0)),
-                                GT_TessObjectToClip(p + float3(0.0, 1.0, 0.0)), GT_TessObjectToClip(p + float3(0.0, 0.0, 1.0)),
-                                GT_TessScreenSize());
-        return OctaveCountAtPixelScale(k, NoiseSegmentPixels(), NoiseSettings(), MaxNoiseOctaves());
-    }
+        return OctaveCountAtPixelScale(SurfacePixelScale(surfaceOutput), NoiseSegmentPixels(), NoiseSettings(), MaxNoiseOctaves());
 #endif
     return OctaveCount(LayoutWidth(l), NoiseVerticesAcross(), NoiseSettings(), MaxNoiseOctaves());
+}
+
+float VertexOctaveCount(TileLayout l, TerrainSurfacePoint s)
+{
+    return VertexOctaveCountAt(l, OutputSurfacePosition(l, s));
+}
+#endif
+
+#if defined(GT_LOD)
+// The levels' plain path (internals.md): where k e <= 1/4 px, k the pixel scale at the plain
+// S(q) - S(O), e the bound PlainPathError. Mirrors Core TerrainVertex.UsesPlainPath.
+#define GT_PLAIN_PATH_PIXELS 0.25
+bool UsesPlainPath(float pixelScale)
+{
+    float e = PlainPathError();
+    return e > 0.0 && NoiseSegmentPixels() > 0.0 && pixelScale * e <= GT_PLAIN_PATH_PIXELS;
 }
 #endif
 
@@ -187,10 +210,51 @@ TerrainVertexAttributes FinishTerrainVertex(TileLayout l, TerrainSurfacePoint s)
     #else
     TerrainPoint noisePoint = s.q;
     #endif
-    float octaves = VertexOctaveCount(l, s);
     float2 gradient;   // d(noise)/dq
 #endif
-#if !defined(GT_EXTEND_DRAW_PATCHES) && defined(GT_RANGE_ORIGIN_CODE)
+    bool plainColor = false;   // the levels' plain path: the colour noise from the float point
+#if defined(GT_LOD)
+    [branch] if (RelativeSurfaceIsActive(l.origin))
+    {
+        float4 o = LevelsOriginSurface();
+        float3 plainSurface = s.position - o.xyz;
+        float k = SurfacePixelScale(plainSurface);
+        [branch] if (UsesPlainPath(k))
+        {
+            position = plainSurface;
+            plainColor = true;
+    #if defined(GT_NOISE)
+            float octaves = OctaveCountAtPixelScale(k, NoiseSegmentPixels(), NoiseSettings(), MaxNoiseOctaves());
+            noiseHeight = OctaveNoise(MakeTerrainPoint(float2(0.0, 0.0), TerrainPointApprox(s.q)), NoiseSettings(), octaves, gradient);
+            position.z += noiseHeight - o.w;
+    #endif
+        }
+        else
+        {
+            position = RelativeSurfaceFromOrigin(s.q, l.origin);
+    #if defined(GT_NOISE)
+            float octaves = VertexOctaveCountAt(l, position);
+            TerrainPoint origin = MakeTerrainPoint(l.origin.xy, l.origin.zw);
+            float relative = OctaveNoiseRelative(s.q, origin, TerrainPointDifference(s.q, origin), NoiseSettings(), octaves, gradient);
+            position.z += relative;
+            noiseHeight = relative + o.w;   // for the colour: no precision needed
+    #endif
+        }
+    }
+    else
+    {
+        position = s.position;
+    #if defined(GT_NOISE)
+        noiseHeight = OctaveNoise(noisePoint, NoiseSettings(), VertexOctaveCount(l, s), gradient);
+        position.z += noiseHeight;
+    #endif
+    }
+#else
+    #if defined(GT_NOISE)
+    float octaves = VertexOctaveCount(l, s);
+    #endif
+#endif
+#if !defined(GT_LOD) && !defined(GT_EXTEND_DRAW_PATCHES) && defined(GT_RANGE_ORIGIN_CODE)
     // Deep zoom (a range origin set): S(q) - S(O) and p(q) - p(O) from precise differences, which
     // the renderer adds back (OutputSurfacePosition's rule). Compiled only with the origin's
     // keywords (GT_RANGE_ORIGIN_CODE, TerrainInputs.hlsl): even untaken, this branch cost the plain
@@ -210,13 +274,15 @@ TerrainVertexAttributes FinishTerrainVertex(TileLayout l, TerrainSurfacePoint s)
     }
     else
 #endif
+#if !defined(GT_LOD)
     {
         position = s.position;   // absolute: no origin, or the extension's draw patches
-#if defined(GT_NOISE)
+    #if defined(GT_NOISE)
         noiseHeight = OctaveNoise(noisePoint, NoiseSettings(), octaves, gradient);
         position.z += noiseHeight;
-#endif
+    #endif
     }
+#endif
 #if defined(GT_NOISE)
     // q = (a + u (e - a), b + v (f - b)), so the chain rule scales the gradient by the region size.
     float2 regionSize = RegionSize(s.region, s.regionLo);
@@ -246,7 +312,8 @@ TerrainVertexAttributes FinishTerrainVertex(TileLayout l, TerrainSurfacePoint s)
     a.colorNoise = 0.0;
 #if defined(GT_HEIGHT_COLOR)
     #if defined(GT_RANGE_ORIGIN_CODE) || defined(GT_EXTEND_DRAW_PATCHES)
-    a.colorNoise = HeightColorNoise(s.q, HeightColorSettings());
+    a.colorNoise = plainColor ? HeightColorNoiseAtLocal(TerrainPointApprox(s.q), HeightColorSettings())
+                              : HeightColorNoise(s.q, HeightColorSettings());
     #else
     // Without the origin's code q's hi part is the constant 0: the same value without TwoProduct.
     a.colorNoise = HeightColorNoiseAtLocal(s.q.local, HeightColorSettings());

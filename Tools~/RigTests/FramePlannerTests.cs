@@ -169,8 +169,9 @@ namespace GregoryTerrain.Rig.Tests
             Assert.That(FramePlanner.Plan(s, a), Is.EqualTo(FrameChange.Params | FrameChange.Matrices | FrameChange.Levels | FrameChange.LevelCount));
             RangeOrigin originA = s.origin;
             Assert.That(originA, Is.EqualTo(RangeOrigin.For(s.levelRanges[0])), "the finest level's origin on a 100 km terrain");
-            Assert.That(FramePlanner.Plan(s, b), Is.EqualTo(FrameChange.Range | FrameChange.RangeOrigin | FrameChange.Matrices | FrameChange.Levels), "another camera's origin");
-            Assert.That(FramePlanner.Plan(s, a), Is.EqualTo(FrameChange.Range | FrameChange.RangeOrigin | FrameChange.Matrices | FrameChange.Levels), "back");
+            // Each camera's origin has its own _OriginSurface (the levels' plain path): the block goes again.
+            Assert.That(FramePlanner.Plan(s, b), Is.EqualTo(FrameChange.Params | FrameChange.Range | FrameChange.RangeOrigin | FrameChange.Matrices | FrameChange.Levels), "another camera's origin");
+            Assert.That(FramePlanner.Plan(s, a), Is.EqualTo(FrameChange.Params | FrameChange.Range | FrameChange.RangeOrigin | FrameChange.Matrices | FrameChange.Levels), "back");
             Assert.That(s.origin, Is.EqualTo(originA), "camera 1 kept its origin");
             Assert.That(FramePlanner.Keywords(s, cache: false, snow: false), Is.EqualTo(FrameKeywords.Levels));
             s.Forget();   // the property block cleared

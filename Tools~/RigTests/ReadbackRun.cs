@@ -149,7 +149,7 @@ namespace GregoryTerrain.Rig.Tests
             return u;
         }
 
-        /// <summary>A params.f32 written by gt-cli pack, back as the TerrainParams it packed (the 10 float4 of TerrainParams.Pack).</summary>
+        /// <summary>A params.f32 written by gt-cli pack, back as the TerrainParams it packed (the 11 float4 of TerrainParams.Pack).</summary>
         public static TerrainParams ReadParams(string path)
         {
             float[] f = ReadFloats(path);

@@ -12,6 +12,7 @@
 # --per-level: with --error, one "lod level k triangles T max_px X rms_px Y ..." line per level instead
 # (LodError.MeasureLevels: each level's triangles and screen error, the other levels left out).
 # --no-origin: the levels without a range origin (the plain absolute path, for comparison).
+# --no-plain: every vertex on the precise path (the levels' plain path off, for comparison).
 # Measures only: no bound is asserted here (LodGpuTests asserts the seams, the camera step, the error).
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 device=(); frames=1; png=(); scene=(); error=0; levels_error=()
@@ -23,6 +24,7 @@ while [ $# -gt 0 ]; do
     --error) error=1; shift; continue ;;
     --per-level) levels_error=(--per-level); shift; continue ;;
     --no-origin) scene+=(--no-origin); shift; continue ;;
+    --no-plain) scene+=(--no-plain); shift; continue ;;
     --*) scene+=("$1" "${2:?$1 needs a value}"); shift ;;
     *) usage_error lod-bench "unknown argument '$1'" ;;
   esac

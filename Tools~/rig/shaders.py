@@ -68,7 +68,7 @@ EXPECTED_BINDINGS = {
     "_TileFactors": 7, "_TileFactorsRW": 7, "_VertexCache": 8, "_VertexCacheRW": 8,
     "_NoiseCells": 9,
 }
-TERRAIN_PARAMS_BYTES = 160   # 10 float4
+TERRAIN_PARAMS_BYTES = 176   # 11 float4
 SNOW_PARAMS_BYTES = 16       # GT_SNOW appends _SnowMapSize to TerrainParams
 LOD_PARAMS_BYTES = 16 + 20 * 16   # GT_LOD appends _LodLevels and _Ranges[GT_MAX_LOD_LEVELS = 20]
 RIG_CAMERA_BYTES = 176       # 2 float4x4 + 3 float4

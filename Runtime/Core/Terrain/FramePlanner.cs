@@ -78,7 +78,7 @@ namespace GregoryTerrain
         // Terrain space: what a deep-zoom vertex leaves out (a double Gregory evaluation plus the octaves),
         // its inputs, and the one before: two cameras with origins of their own switch without recomputing.
         public Double3 outputOffset, outputOffsetBefore;
-        internal OffsetInputs offsetFor, offsetForBefore;
+        internal OffsetInputs offsetFor, offsetForBefore, originSurfaceFor;
         public Float4x4 frameMatrix;
         public Double2 frameSize;
         public double frameHeight;
@@ -99,7 +99,7 @@ namespace GregoryTerrain
             planned = false;
             sentOrigin = default;
             sentLevelCount = 0;
-            offsetFor = offsetForBefore = default;   // nor hold the grids' CPU copies of a disabled renderer
+            offsetFor = offsetForBefore = originSurfaceFor = default;   // nor hold the grids' CPU copies of a disabled renderer
             _sentNoiseCells = _sentSnowDepth = null;
             _sentSnowMapSize = default;
         }
@@ -175,6 +175,7 @@ namespace GregoryTerrain
                 string error = TryCreateParams(f, s.origin, out TerrainParams p);
                 if (error != null) return SetError(s, error);
                 s.parameters = p;
+                s.originSurfaceFor = default;   // p's _OriginSurface is 0: made again below
                 s.sentOrigin = s.origin;
                 c |= FrameChange.Params | FrameChange.Matrices;
             }
@@ -183,6 +184,7 @@ namespace GregoryTerrain
 
             c |= FollowLattice(s);
             if (UpdateOutputOffset(s, f.grid, f.noiseKeywords) | FrameMoved(s, f)) c |= FrameChange.Matrices;
+            if (UpdateOriginSurface(s, f.grid, f.noiseKeywords)) c |= FrameChange.Params;
             if ((c & FrameChange.Matrices) != 0)
             {
                 string frameError = TryDrawMatrices(s, f);
@@ -229,7 +231,8 @@ namespace GregoryTerrain
                 p = TerrainParams.Create(f.grid, f.range, origin, st.tess, st.noise, st.heightColor, st.colorLow, st.colorHigh, st.noiseVerticesAcross);
                 if (!LevelsValid(st)) throw new ArgumentException(LevelsError(st), "tiles");
                 // The continuous octave rule: both sides of a level seam draw the same noise.
-                if (st.levels) p.noiseOctaves = new Float4(p.noiseOctaves.x, p.noiseOctaves.y, LevelSegmentPixels, 0f);
+                if (st.levels) p.noiseOctaves = new Float4(p.noiseOctaves.x, p.noiseOctaves.y, LevelSegmentPixels,
+                                                           TerrainVertex.PlainPathError(f.grid, p, f.noiseKeywords));
                 return null;
             }
             catch (ArgumentException e) { return e.Message; }
@@ -273,6 +276,17 @@ namespace GregoryTerrain
             s.offsetFor = inputs;
             if (offset.Equals(s.outputOffset)) return false;
             s.outputOffset = offset;
+            return true;
+        }
+
+        /// <summary>The levels' <c>_OriginSurface</c>, made again with the output offset's inputs; true when it changed.</summary>
+        static bool UpdateOriginSurface(FrameState s, PatchGrid grid, TerrainKeywords keywords)
+        {
+            if (s.originSurfaceFor.Same(s.offsetFor)) return false;
+            s.originSurfaceFor = s.offsetFor;
+            Float4 o = s.settings.levels && grid != null ? TerrainVertex.OriginSurface(grid, s.parameters, keywords) : default;
+            if (o.Equals(s.parameters.originSurface)) return false;
+            s.parameters.originSurface = o;
             return true;
         }
 

@@ -18,7 +18,7 @@ namespace GregoryTerrain
         public float[] Regions { get; }
         /// <summary>_GridLines: hi parts xLines[0..n], yLines[0..m], then the lo parts in the same order.</summary>
         public float[] GridLines { get; }
-        /// <summary>The ten float4 constants (binding 0).</summary>
+        /// <summary>The eleven float4 constants (binding 0).</summary>
         public TerrainParams Params { get; }
 
         /// <summary>
@@ -145,6 +145,10 @@ namespace GregoryTerrain
         /// the single-range rule (<see cref="NoiseOctaveCount()"/>) bit for bit.
         /// </summary>
         public float NoiseSegmentPixels() => Params.noiseOctaves.z;
+        /// <summary>HLSL <c>PlainPathError</c>: <c>_NoiseOctaves.w</c>, 0: every vertex precise.</summary>
+        public float PlainPathError() => Params.noiseOctaves.w;
+        /// <summary>HLSL <c>LevelsOriginSurface</c>: <c>_OriginSurface</c>.</summary>
+        public Float4 LevelsOriginSurface() => Params.originSurface;
 
         /// <summary>
         /// The continuous rule as the vertex stage forms it in float (HLSL <c>OctaveCountAtPixelScale</c>,

@@ -4,7 +4,7 @@ namespace GregoryTerrain
     partial struct TerrainParams
     {
         /// <summary>The float4 fields, each a constant of the cbuffer.</summary>
-        public const int Float4Count = 10;
+        public const int Float4Count = 11;
 
         /// <summary>The shader names of the fields, in field (and cbuffer) order.</summary>
         public static readonly string[] PropertyNames =
@@ -19,6 +19,7 @@ namespace GregoryTerrain
             "_ColorLow",
             "_ColorHigh",
             "_TileLattice",
+            "_OriginSurface",
         };
     }
 }

@@ -5,7 +5,7 @@ namespace GregoryTerrain
 {
     /// <summary>
     /// The <c>TerrainParams</c> constants every stage reads (internals.md, "One contract to the
-    /// GPU"): ten float4, 160 bytes, blittable, declared here once. <c>gt generate</c> writes the HLSL
+    /// GPU"): eleven float4, 176 bytes, blittable, declared here once. <c>gt generate</c> writes the HLSL
     /// members (Shaders/Terrain/TerrainParams.cs.hlsl, inside TerrainInputs.hlsl's cbuffer) and
     /// TerrainParams.Generated.cs (<see cref="PropertyNames"/>, <see cref="Float4Count"/>) from
     /// these fields, in their order. The rig uploads <see cref="Pack"/> as one block;
@@ -32,7 +32,7 @@ namespace GregoryTerrain
         public Float4 tess;
         [HlslComment("(amplitude, frequency, alpha, beta)               on change")]
         public Float4 noise;
-        [HlslComment("(octaves N, verticesAcross override or 0, LOD segment pixels or 0, 0)")]
+        [HlslComment("(octaves N, verticesAcross override or 0, LOD segment pixels or 0, LOD plain-path error or 0)")]
         public Float4 noiseOctaves;
         [HlslComment("(gamma, colorNoiseAmplitude, colorNoiseFrequency, 0)")]
         public Float4 heightColor;
@@ -50,6 +50,10 @@ namespace GregoryTerrain
         /// </summary>
         [HlslComment("0, or the range the tiles were anchored at (TileLattice.hlsl)  on anchoring")]
         public Float4 tileLattice;
+
+        /// <summary><c>_OriginSurface</c>: the levels' S(O) and p(O) in float (<see cref="TerrainVertex.OriginSurface"/>), else 0.</summary>
+        [HlslComment("levels: (S(O), p(O)) in float, the plain path's origin  on re-snap")]
+        public Float4 originSurface;
 
         /// <summary>
         /// The renderer settings' one validation: throws ArgumentException naming the field, the value

@@ -254,6 +254,58 @@ namespace GregoryTerrain
         public static float OutputOffsetOctaves(TerrainParams p) =>
             p.noiseOctaves.z > 0f ? GMath.clamp(p.noiseOctaves.x, 0f, NoiseSettings.MaxOctaves) : TerrainInputs.NoiseOctaveCount(p);
 
+        /// <summary>HLSL <c>UsesPlainPath</c>: the levels' plain path where k e &lt;= 1/4 px (internals.md, "The levels' plain path").</summary>
+        public const float PlainPathPixels = 0.25f;   // HLSL GT_PLAIN_PATH_PIXELS
+
+        public static bool UsesPlainPath(TerrainParams p, float pixelScale)
+        {
+            float e = p.noiseOctaves.w;
+            return e > 0f && p.noiseOctaves.z > 0f && pixelScale * e <= PlainPathPixels;
+        }
+
+        /// <summary><c>_OriginSurface</c>: S(O) and p(O) (<see cref="OutputOffsetOctaves"/>) rounded to float; 0 without an origin.</summary>
+        public static Float4 OriginSurface(PatchGrid grid, TerrainParams p, TerrainKeywords keywords)
+        {
+            if (grid == null) throw new ArgumentNullException(nameof(grid));
+            Float4 o = p.rangeOrigin;
+            if ((keywords & TerrainKeywords.PaperMode) != 0 || !RelativeSurface.IsActive(o)) return default;
+            var origin = new RangeOrigin { hi = new Float2(o.x, o.y), lo = new Float2(o.z, o.w) };
+            Double3 s = RelativeSurface.ReferencePoint(grid, origin);
+            double n = 0.0;
+            if ((keywords & TerrainKeywords.Noise) != 0)
+            {
+                var noise = new NoiseSettings(p.noise.x, p.noise.y, p.noise.z, p.noise.w, (int)p.noiseOctaves.x);
+                n = OctaveNoise.Evaluate(origin.Value.x, origin.Value.y, noise, OutputOffsetOctaves(p), out _, keywords);
+            }
+            return new Float4((float)s.x, (float)s.y, (float)s.z, (float)n);
+        }
+
+        /// <summary><c>_NoiseOctaves.w</c>: the plain path's error bound e, terrain units (internals.md, "The levels' plain path").</summary>
+        public static float PlainPathError(PatchGrid grid, TerrainParams p, TerrainKeywords keywords)
+        {
+            if (grid == null) throw new ArgumentNullException(nameof(grid));
+            const double u = 1.0 / (1 << 24), slope = 4.0;   // float's unit roundoff; G
+            double x = 0.0, z = 0.0, sum = 0.0;
+            for (int i = 0; i < grid.PatchCount; i++)
+                for (int c = 0; c < GregoryPatch.SlotCount; c++)
+                {
+                    Double3 v = grid.Patches[i][c];
+                    x = Math.Max(x, Math.Max(Math.Abs(v.x), Math.Abs(v.y)));
+                    z = Math.Max(z, Math.Abs(v.z));
+                }
+            if ((keywords & TerrainKeywords.Noise) != 0)
+            {
+                double a = Math.Abs(p.noise.x), beta = Math.Max(p.noise.w, 1f);
+                for (int k = 0; k < (int)Math.Ceiling(GMath.clamp(p.noiseOctaves.x, 0f, NoiseSettings.MaxOctaves)); k++)
+                {
+                    sum += Math.Pow(beta, -k) * (p.noise.y * Math.Pow(p.noise.z, k) * x + 1.0);
+                    z += a * Math.Pow(beta, -k);
+                }
+                sum *= 2.0 * slope * u * a;
+            }
+            return (float)(Math.Sqrt(3.0) * (3.0 * u * (x + z) + sum));
+        }
+
         // HLSL FinishTerrainVertex: everything TerrainVertex computes from the surface point on, before the camera.
         // The HLSL takes the deep-zoom surface and noise in one branch (the untaken code of two branches
         // cost the plain path measurably); the values are these, step for step.
@@ -262,6 +314,14 @@ namespace GregoryTerrain
         {
             Float3 position = OutputSurfacePosition(inputs, s, keywords), dPdu = s.dPdu, dPdv = s.dPdv;
             float noiseHeight = 0f;   // the absolute p(q)
+            // HLSL's GT_LOD branch: the levels (_NoiseOctaves.z > 0, sent only with them), an origin, a camera.
+            bool levels = camera != null && (keywords & TerrainKeywords.PaperMode) == 0 && inputs.NoiseSegmentPixels() > 0f
+                          && RelativeSurface.IsActive(inputs.Params.rangeOrigin);
+            Float4 os = inputs.Params.originSurface;
+            Float3 plainSurface = s.position - new Float3(os.x, os.y, os.z);
+            float k = levels ? TessellationPolicy.PixelsPerUnit(camera.Value.objectToClip, TerrainToObject(plainSurface), camera.Value.screenSize) : 0f;
+            bool plainColor = levels && UsesPlainPath(inputs.Params, k);   // the colour noise from the float point too
+            if (plainColor) position = plainSurface;
             if ((keywords & TerrainKeywords.Noise) != 0)
             {
                 // Noise lives on the global point; in paper mode a clamped vertex takes the noise of
@@ -269,12 +329,30 @@ namespace GregoryTerrain
                 TerrainPoint noisePoint = s.q;
                 if ((keywords & TerrainKeywords.PaperMode) != 0 && !s.uv.Equals(RangeMapping.PatchLocalUV(s.q, s.region, s.regionLo)))
                     noisePoint = new TerrainPoint(default, new Float2(GMath.lerp(s.region.x, s.region.z, s.uv.x), GMath.lerp(s.region.y, s.region.w, s.uv.y)));
-                float octaves = VertexOctaveCount(inputs, position, keywords, camera);
                 Float4 originF = inputs.Params.rangeOrigin;
                 Float2 gradient;
-                if ((keywords & TerrainKeywords.PaperMode) == 0 && RelativeSurface.IsActive(originF))
+                if (levels)
+                {
+                    if (plainColor)
+                    {
+                        float count = TerrainInputs.NoiseOctaveCountAt(inputs.Params, k);
+                        noiseHeight = OctaveNoise.Evaluate(new TerrainPoint(default, RangeMapping.Approximate(s.q)), inputs.NoiseSettingsStruct(), count, out gradient, keywords);
+                        position.z += noiseHeight - os.w;
+                    }
+                    else
+                    {
+                        float count = VertexOctaveCount(inputs, position, keywords, camera);
+                        TerrainPoint origin = RelativeSurface.OriginPoint(originF);
+                        float relative = OctaveNoise.Relative(s.q, origin, RelativeSurface.Difference(s.q, origin),
+                                                              inputs.NoiseSettingsStruct(), count, out gradient, keywords);
+                        position.z += relative;
+                        noiseHeight = relative + os.w;   // for the colour: no precision needed
+                    }
+                }
+                else if ((keywords & TerrainKeywords.PaperMode) == 0 && RelativeSurface.IsActive(originF))
                 {
                     // Deep zoom: p(q) - p(O) from precise differences, like the surface (precision.md).
+                    float octaves = VertexOctaveCount(inputs, position, keywords, camera);
                     TerrainPoint origin = RelativeSurface.OriginPoint(originF);
                     position.z += OctaveNoise.Relative(s.q, origin, RelativeSurface.Difference(s.q, origin),
                                                        inputs.NoiseSettingsStruct(), octaves, out gradient, keywords);
@@ -284,6 +362,7 @@ namespace GregoryTerrain
                 }
                 else
                 {
+                    float octaves = VertexOctaveCount(inputs, position, keywords, camera);
                     noiseHeight = OctaveNoise.Evaluate(noisePoint, inputs.NoiseSettingsStruct(), octaves, out gradient, keywords);
                     position.z += noiseHeight;
                 }
@@ -314,7 +393,8 @@ namespace GregoryTerrain
                 // Without a hi part the HLSL splits without TwoProduct (HeightColorNoiseAtLocal): the
                 // same value bit for bit, mirrored here step for step.
                 bool local = s.q.originHi.x == 0f && s.q.originHi.y == 0f;
-                o.colorNoise = local ? HeightColor.ColorNoiseAtLocal(s.q.local, inputs.HeightColorSettings(), keywords)
+                o.colorNoise = plainColor ? HeightColor.ColorNoiseAtLocal(RangeMapping.Approximate(s.q), inputs.HeightColorSettings(), keywords)
+                             : local ? HeightColor.ColorNoiseAtLocal(s.q.local, inputs.HeightColorSettings(), keywords)
                                      : HeightColor.ColorNoise(s.q, inputs.HeightColorSettings(), keywords);
             }
             return o;

@@ -39,6 +39,8 @@ namespace GregoryTerrain.Rig
         /// differences and the camera sits near 0 (precision.md). False: the plain absolute path.
         /// </summary>
         public bool UseOrigin = true;
+        /// <summary>Whether far vertices take the levels' plain path (<see cref="TerrainVertex.UsesPlainPath"/>), as the renderer sends it; false: every vertex precise.</summary>
+        public bool PlainPath = true;
         /// <summary>The origin in use; <see cref="Build"/> picks one when unset, <see cref="Stepped"/> keeps it (as the renderer's tracker does for a small move).</summary>
         public RangeOrigin? Origin;
 
@@ -76,7 +78,10 @@ namespace GregoryTerrain.Rig
             RangeOrigin origin = Origin.Value;
             TerrainParams p = TerrainParams.Create(grid, TerrainRange.full, origin, tess, DrawnNoise,
                 new HeightColorSettings(0.25f, 0.15f, 24f), new Float3(0.2f, 0.3f, 0.1f), new Float3(0.8f, 0.8f, 0.8f));
-            p.noiseOctaves = new Float4(p.noiseOctaves.x, p.noiseOctaves.y, SegmentPixels, 0f);
+            // The levels' plain path, as FramePlanner sends it (TerrainVertex.PlainPathError, OriginSurface).
+            p.noiseOctaves = new Float4(p.noiseOctaves.x, p.noiseOctaves.y, SegmentPixels,
+                                        PlainPath ? TerrainVertex.PlainPathError(grid, p, TerrainKeywords.Noise) : 0f);
+            p.originSurface = TerrainVertex.OriginSurface(grid, p, TerrainKeywords.Noise);
             Inputs = TerrainInputs.Create(grid, p);
             Tail = new float[4 * (1 + LodTiles.MaxLevels)];
             Tail[0] = count;

@@ -12,7 +12,8 @@ namespace GregoryTerrain.Rig
     /// relief in metres of a --relief-m wide terrain (default 100 km; 0: the grid stretched to --terrain-m).
     /// Writes the --buffers folder and lod_tail.f32 (--params-tail) into --out, and prints
     /// "levels L", "patches N" and "ranges ..." for Tools~/rig/lod-bench.sh. --no-origin: the levels
-    /// absolute (no range origin; the renderer always sets one near the camera). With --factors FILE
+    /// absolute (no range origin; the renderer always sets one near the camera); --no-plain: every vertex
+    /// on the precise path (no levels' plain path). With --factors FILE
     /// (the GPU's GT_FACTOR_READBACK of that draw) it also prints one "lod_error ..." line: the drawn
     /// triangles against the double full-detail surface (LodError, internals.md "Levels of detail").
     /// </summary>
@@ -36,6 +37,7 @@ namespace GregoryTerrain.Rig
                 Height = a.Int("height", 1080),
                 ReliefMeters = a.Double("relief-m", 100000),
                 UseOrigin = !a.Flag("no-origin"),
+                PlainPath = !a.Flag("no-plain"),
             };
             double[] ground = a.Doubles("ground", 2, "0.37,0.52");
             s.Ground = new Double2(ground[0], ground[1]);

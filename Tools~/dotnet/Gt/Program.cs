@@ -170,7 +170,7 @@ namespace GregoryTerrain.Rig
             Add("bench-report", "tables of a gt bench run (--plan DIR --raw DIR --grid FILE)", BenchReport.Run, "grid plan raw tsv");
             Add("bench-docs", "rewrite the summary tables of a performance page from a run's full table (--table bench_table.md --page performance.md)", a => BenchDocs.Run(a.String("table"), a.String("page")), "page table");
             Add("lod-scene", "write a ground-level levels-of-detail view for the harness: buffers and --params-tail (--out DIR)", LodSceneCommand.Run,
-                "out grid no-origin factors per-level",
+                "out grid no-origin no-plain factors per-level",
                 NumericOption.Above("terrain-m", 0, MaxMetres), NumericOption.Above("eye-m", 0, MaxMetres), NumericOption.Above("finest-m", 0, MaxMetres),
                 NumericOption.Int("tiles", 2, 64), NumericOption.Int("factor", 0, 64), TargetPixels, NumericOption.Above("segment-pixels", 0, MaxPixels),
                 Width, Height, NumericOption.Numbers("ground", Bounds.Real(0, 1, "x"), Bounds.Real(0, 1, "y")), MaxCells,

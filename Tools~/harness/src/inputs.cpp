@@ -44,7 +44,7 @@ Inputs loadInputs(const Gpu& gpu, const std::string& dir, const std::optional<st
     std::memcpy(in.params.data(), params.data(), kParamsBytes);
     if (range) std::copy(range->begin(), range->end(), in.params.begin());
 
-    // GT_SNOW: _SnowMapSize follows TerrainParams' ten float4 in the same cbuffer.
+    // GT_SNOW: _SnowMapSize follows TerrainParams' eleven float4 in the same cbuffer.
     std::vector<uint8_t> snowSize, depth;
     if (!snowParams.empty()) {
         snowSize = readSized(snowParams, kSnowParamsBytes, 0);
@@ -56,7 +56,7 @@ Inputs loadInputs(const Gpu& gpu, const std::string& dir, const std::optional<st
         in.snowResolution = static_cast<uint32_t>(r);
         depth = readSized(snowDepth, size_t(in.snowResolution) * in.snowResolution * 4, 0);
     }
-    // GT_LOD: _LodLevels and _Ranges[] follow TerrainParams' ten float4 in the same cbuffer.
+    // GT_LOD: _LodLevels and _Ranges[] follow TerrainParams' eleven float4 in the same cbuffer.
     std::vector<uint8_t> tail;
     if (!paramsTail.empty()) {
         tail = readSized(paramsTail, 0, 16);

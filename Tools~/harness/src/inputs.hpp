@@ -20,7 +20,7 @@ constexpr uint32_t kBindingSnowDepth = 6;      // t4 StructuredBuffer<float> (GT
 constexpr uint32_t kBindingCount = 6;          // without snow
 constexpr uint32_t kBindingCountSnow = 7;      // with --snow-depth
 
-constexpr size_t kParamsBytes = 10 * 16;            // _Range .. _TileLattice
+constexpr size_t kParamsBytes = 11 * 16;            // _Range .. _OriginSurface
 constexpr size_t kCameraBytes = 2 * 64 + 3 * 16;    // two float4x4 + three float4
 constexpr size_t kPatchBytes = 20 * 16;             // 20 float4 control points
 constexpr size_t kSnowParamsBytes = 16;             // _SnowMapSize = (R, 1/R, depthCap, 0)
@@ -39,7 +39,7 @@ struct Inputs {
 // _Range, uploads. params is host-visible (the per-frame range goes there); the readback
 // buffer (binding 5) holds readbackFloats floats (a 16-byte dummy when 0), pre-filled.
 // With snowDepth/snowParams (both or neither, GT_SNOW variants): snowParams' 16 bytes are appended
-// to TerrainParams (binding 0 grows to 160 bytes) and snowDepth (R*R floats, R = its first float)
+// to TerrainParams (binding 0 grows to 192 bytes) and snowDepth (R*R floats, R = its first float)
 // goes to binding 6.
 Inputs loadInputs(const Gpu& gpu, const std::string& dir, const std::optional<std::array<float, 4>>& range,
                   uint64_t readbackFloats, bool fillNan, const std::string& snowDepth = "",

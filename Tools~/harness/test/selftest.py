@@ -437,7 +437,7 @@ def main():
     bad = make_inputs(WORK + "/in_bad", 4, 8)
     write_f32(bad + "/params.f32", [0] * 39)
     p, l = run(tess_args(bad, 4))
-    check("bad params size fails", p.returncode != 0 and "params.f32" in p.stderr and "160" in p.stderr, p.stderr)
+    check("bad params size fails", p.returncode != 0 and "params.f32" in p.stderr and "176" in p.stderr, p.stderr)
     p, l = run(tess_args(d, 4, extra=["--device", "no-such-gpu-anywhere"]))
     check("unknown device fails", p.returncode != 0 and "no-such-gpu-anywhere" in p.stderr, p.stderr)
     p, l = run(tess_args(d, 4, extra=["--max-vertices-per-draw", "100", "--max-factor", "63"]))
