@@ -155,7 +155,7 @@ namespace GregoryTerrain.Rig.Tests
             string dir = Path.Combine(_work, name);
             Directory.CreateDirectory(dir);
             var p = new List<float>(range) { 0, 0, 0, 0, 8, 8, 0, 0, tiles, factor, 1, factor };
-            while (p.Count < 40) p.Add(0);
+            while (p.Count < 44) p.Add(0);
             WriteFloats(Path.Combine(dir, "params.f32"), p);
             // clip = M * (x, y, z, 1) with rows (2,0,0,-1) (0,0,2,-1) (0,0,0,0.5) (0,0,0,1); stored column after column.
             float[,] m = { { 2, 0, 0, -1 }, { 0, 0, 2, -1 }, { 0, 0, 0, 0.5f }, { 0, 0, 0, 1 } };
@@ -385,7 +385,7 @@ namespace GregoryTerrain.Rig.Tests
         }
 
         [TestCase(0.5f, "dispatch flag 0.5")]
-        [TestCase(-1f, "multiple of 176")]
+        [TestCase(-1f, "multiple of 192")]
         public void ParamsPath_BadRecords_Exit1NamingTheFile(float flag, string expected)
         {
             string dir = MakeInputs("in_4x4_f8", 4, 8, new[] { 0f, 0, 1, 1 });
@@ -623,7 +623,7 @@ namespace GregoryTerrain.Rig.Tests
             if (channelsChanged == 1) Assert.That(changed[0], Is.True, "R only");
         }
 
-        [TestCase("params.f32", 39, "160")]
+        [TestCase("params.f32", 43, "176")]
         [TestCase("camera.f32", 10, "176")]
         [TestCase("control_points.f32", 81, "320")]
         public void BadFileSize_FailsNamingTheFile(string file, int floats, string expectedBytes)
