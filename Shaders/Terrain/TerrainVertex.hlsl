@@ -312,8 +312,11 @@ TerrainVertexAttributes FinishTerrainVertex(TileLayout l, TerrainSurfacePoint s)
     a.colorNoise = 0.0;
 #if defined(GT_HEIGHT_COLOR)
     #if defined(GT_RANGE_ORIGIN_CODE) || defined(GT_EXTEND_DRAW_PATCHES)
-    a.colorNoise = plainColor ? HeightColorNoiseAtLocal(TerrainPointApprox(s.q), HeightColorSettings())
-                              : HeightColorNoise(s.q, HeightColorSettings());
+    // A branch, not ?:, which evaluates both noises in HLSL 2018 (FXC).
+    [branch] if (plainColor)
+        a.colorNoise = HeightColorNoiseAtLocal(TerrainPointApprox(s.q), HeightColorSettings());
+    else
+        a.colorNoise = HeightColorNoise(s.q, HeightColorSettings());
     #else
     // Without the origin's code q's hi part is the constant 0: the same value without TwoProduct.
     a.colorNoise = HeightColorNoiseAtLocal(s.q.local, HeightColorSettings());

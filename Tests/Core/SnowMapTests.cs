@@ -134,6 +134,18 @@ namespace GregoryTerrain.Tests
                     }
         }
 
+        /// <summary>
+        /// The field is the whole terrain without an origin: the levels' per-camera <c>_OriginSurface</c> must not
+        /// reach its parameters, or every origin re-snap (or camera switch) would run the field again.
+        /// </summary>
+        [Test]
+        public void TheFieldsParamsDoNotFollowTheLevelsOrigin()
+        {
+            TerrainParams drawn = Inputs(new TerrainRange(0.4, 0.4, 0.5, 0.5)).Params, moved = drawn;
+            moved.originSurface = new Float4(0.25f, 0.5f, 0.125f, 0.01f);
+            Assert.That(SnowFieldTerrain.ParamsFor(moved, 64).Pack(), Is.EqualTo(SnowFieldTerrain.ParamsFor(drawn, 64).Pack()));
+        }
+
         [TestCase(false)]
         [TestCase(true)]
         public void FieldCellsAreTheTerrainAtTheCellCentres(bool noise)

@@ -16,7 +16,8 @@ namespace GregoryTerrain.Tests
         {
             var p = Make(new TerrainRange(0.25, 0.125, 0.75, 0.5), TessellationSettings.Uniform(8, 16f));
             float[] f = p.Pack();
-            Assert.That(f.Length, Is.EqualTo(40));
+            Assert.That(f.Length, Is.EqualTo(44), "11 float4");
+            Assert.That(TerrainParams.PropertyNames[10], Is.EqualTo("_OriginSurface"), "the levels' S(O), p(O) last");
             Assert.That(TerrainParams.PropertyNames[0], Is.EqualTo("_Range"));
             // _Range with a zero origin is the paper's (c, d, g, h).
             Assert.That(new[] { f[0], f[1], f[2], f[3] }, Is.EqualTo(new[] { 0.25f, 0.125f, 0.75f, 0.5f }));

@@ -179,6 +179,27 @@ namespace GregoryTerrain.Rig.Tests
         }
 
         /// <summary>
+        /// Review finding: the levels' plain-path bound (<c>_NoiseOctaves.w</c>) was made only with the settings, but
+        /// GT_NOISE is the material's: noise turned on later kept the no-noise bound, about 6x too small, so vertices
+        /// 6x nearer took the plain path. The bound follows the keywords, and it is not made again when the origin moves.
+        /// </summary>
+        [Test]
+        public void TheLevelsPlainPathBoundFollowsTheMaterialsNoise()
+        {
+            var s = new FrameState();
+            FrameInputs plain = Inputs(Wide, Settings(levels: true));
+            FramePlanner.Plan(s, plain);
+            float quiet = s.parameters.noiseOctaves.w;
+            Assert.That(quiet, Is.EqualTo(TerrainVertex.PlainPathError(Grid, s.parameters, TerrainKeywords.None)).And.GreaterThan(0f));
+            FrameInputs noisy = plain;
+            noisy.noiseKeywords = TerrainKeywords.Noise;
+            Assert.That(FramePlanner.Plan(s, noisy) & FrameChange.Params, Is.EqualTo(FrameChange.Params), "the block with the new bound");
+            Assert.That(s.parameters.noiseOctaves.w, Is.EqualTo(TerrainVertex.PlainPathError(Grid, s.parameters, TerrainKeywords.Noise)));
+            Assert.That(s.parameters.noiseOctaves.w, Is.GreaterThan(2f * quiet), "noise widens the bound");
+            Assert.That(FramePlanner.Plan(s, noisy), Is.EqualTo(FrameChange.Range | FrameChange.Levels), "steady: not made again");
+        }
+
+        /// <summary>
         /// Review finding: a Transform of scale 0 threw after the plan had marked the block as sent, so once
         /// the scale was fixed the terrain drew without its TerrainParams until a setting changed.
         /// </summary>

@@ -39,6 +39,7 @@ namespace GregoryTerrain
             p.tess = new Float4(resolution, terrain.tess.y, terrain.tess.z, 1f);
             p.noiseOctaves = new Float4(terrain.noiseOctaves.x, resolution, 0f, 0f);
             p.tileLattice = new Float4(0f, 0f, 0f, 0f);
+            p.originSurface = default;   // the levels' origin, per camera: the field has none (a change would re-run it)
             return p;
         }
 

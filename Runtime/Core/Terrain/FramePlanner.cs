@@ -78,7 +78,7 @@ namespace GregoryTerrain
         // Terrain space: what a deep-zoom vertex leaves out (a double Gregory evaluation plus the octaves),
         // its inputs, and the one before: two cameras with origins of their own switch without recomputing.
         public Double3 outputOffset, outputOffsetBefore;
-        internal OffsetInputs offsetFor, offsetForBefore, originSurfaceFor;
+        internal OffsetInputs offsetFor, offsetForBefore, originSurfaceFor, plainPathErrorFor;
         public Float4x4 frameMatrix;
         public Double2 frameSize;
         public double frameHeight;
@@ -99,7 +99,7 @@ namespace GregoryTerrain
             planned = false;
             sentOrigin = default;
             sentLevelCount = 0;
-            offsetFor = offsetForBefore = originSurfaceFor = default;   // nor hold the grids' CPU copies of a disabled renderer
+            offsetFor = offsetForBefore = originSurfaceFor = plainPathErrorFor = default;   // nor hold the grids' CPU copies of a disabled renderer
             _sentNoiseCells = _sentSnowDepth = null;
             _sentSnowMapSize = default;
         }
@@ -175,7 +175,7 @@ namespace GregoryTerrain
                 string error = TryCreateParams(f, s.origin, out TerrainParams p);
                 if (error != null) return SetError(s, error);
                 s.parameters = p;
-                s.originSurfaceFor = default;   // p's _OriginSurface is 0: made again below
+                s.originSurfaceFor = s.plainPathErrorFor = default;   // p's _OriginSurface and bound are 0: made again below
                 s.sentOrigin = s.origin;
                 c |= FrameChange.Params | FrameChange.Matrices;
             }
@@ -184,7 +184,7 @@ namespace GregoryTerrain
 
             c |= FollowLattice(s);
             if (UpdateOutputOffset(s, f.grid, f.noiseKeywords) | FrameMoved(s, f)) c |= FrameChange.Matrices;
-            if (UpdateOriginSurface(s, f.grid, f.noiseKeywords)) c |= FrameChange.Params;
+            if (UpdateOriginSurface(s, f.grid, f.noiseKeywords) | UpdatePlainPathError(s, f.grid, f.noiseKeywords)) c |= FrameChange.Params;
             if ((c & FrameChange.Matrices) != 0)
             {
                 string frameError = TryDrawMatrices(s, f);
@@ -231,8 +231,7 @@ namespace GregoryTerrain
                 p = TerrainParams.Create(f.grid, f.range, origin, st.tess, st.noise, st.heightColor, st.colorLow, st.colorHigh, st.noiseVerticesAcross);
                 if (!LevelsValid(st)) throw new ArgumentException(LevelsError(st), "tiles");
                 // The continuous octave rule: both sides of a level seam draw the same noise.
-                if (st.levels) p.noiseOctaves = new Float4(p.noiseOctaves.x, p.noiseOctaves.y, LevelSegmentPixels,
-                                                           TerrainVertex.PlainPathError(f.grid, p, f.noiseKeywords));
+                if (st.levels) p.noiseOctaves = new Float4(p.noiseOctaves.x, p.noiseOctaves.y, LevelSegmentPixels, 0f);
                 return null;
             }
             catch (ArgumentException e) { return e.Message; }
@@ -287,6 +286,26 @@ namespace GregoryTerrain
             Float4 o = s.settings.levels && grid != null ? TerrainVertex.OriginSurface(grid, s.parameters, keywords) : default;
             if (o.Equals(s.parameters.originSurface)) return false;
             s.parameters.originSurface = o;
+            return true;
+        }
+
+        /// <summary>
+        /// The levels' plain-path bound (<c>_NoiseOctaves.w</c>), made again when the grid, the noise keywords
+        /// (the material's, not the settings) or the noise change, not when the origin moves: it reads every
+        /// control point. True when it changed.
+        /// </summary>
+        static bool UpdatePlainPathError(FrameState s, PatchGrid grid, TerrainKeywords keywords)
+        {
+            if (!s.settings.levels || grid == null) return false;
+            TerrainParams p = s.parameters;
+            p.rangeOrigin = default;
+            var inputs = new FrameState.OffsetInputs(grid, keywords, p);
+            if (inputs.Same(s.plainPathErrorFor)) return false;
+            s.plainPathErrorFor = inputs;
+            float e = TerrainVertex.PlainPathError(grid, p, keywords);
+            Float4 o = s.parameters.noiseOctaves;
+            if (e.Equals(o.w)) return false;
+            s.parameters.noiseOctaves = new Float4(o.x, o.y, o.z, e);
             return true;
         }
 
