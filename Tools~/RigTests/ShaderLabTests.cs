@@ -441,9 +441,10 @@ namespace GregoryTerrain.Rig.Tests
                 string tag = Regex.Match(OuterPart(s.Body), "\"GregoryTerrainDraw\"\\s*=\\s*\"(\\w+)\"").Groups[1].Value;
                 Assert.That(tag, Is.EqualTo(s.Tessellated ? "Tessellated" : "Fallback"), s.ToString());
             }
-            string renderer = File.ReadAllText(PackageRoot.Combine("Runtime", "GregoryTerrainRenderer.cs"));
-            Assert.That(renderer, Does.Contain("\"GregoryTerrainDraw\"").And.Contain("GetTag("), "the renderer reads the tag");
-            Assert.That(renderer, Does.Contain("\"Fallback\""));
+            // The renderer's per-camera frame (TerrainFrameDriver.ReadDrawMode) reads it.
+            string frame = File.ReadAllText(PackageRoot.Combine("Runtime", "TerrainFrameDriver.cs"));
+            Assert.That(frame, Does.Contain("\"GregoryTerrainDraw\"").And.Contain("GetTag("), "the renderer's frame reads the tag");
+            Assert.That(frame, Does.Contain("\"Fallback\""));
         }
 
         [Test]
