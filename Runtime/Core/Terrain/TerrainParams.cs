@@ -117,7 +117,7 @@ namespace GregoryTerrain
             return p;
         }
 
-        /// <summary>The 40 floats of the cbuffer, in order: the struct's own bytes, so Pack cannot disagree with the layout.</summary>
+        /// <summary>The 4 x Float4Count floats of the cbuffer, in order: the struct's own bytes, so Pack cannot disagree with the layout.</summary>
         public float[] Pack() => Float4Block.Pack(this);
     }
 }
