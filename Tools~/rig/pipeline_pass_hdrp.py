@@ -15,21 +15,27 @@ Pictures (OUT/<picture>.png, OUT/<picture>/manifest.json as pipeline_pass.py wri
   hdrp_depth   HDRP's DepthForwardOnly, base variant: the normal buffer (EncodeIntoNormalBuffer:
                octahedral normal in RGB 8:8:8, perceptual roughness 1 in A); its depth in
                OUT/hdrp_depth_depth.f32 and its view in OUT/hdrp_depth_view.json
-  hdrp_lit     HDRP's ForwardOnly, base variant (SHADOW_LOW: its multi_compile_fragment set has no '_')
-  hdrp_lit_far the same, the whole scene 50 km from the world's origin (camera-relative rendering)
+  hdrp_lit     HDRP's ForwardOnly, base variant (SHADOW_LOW: its multi_compile_fragment set has no '_'),
+               drawn as HDRP draws it: over DepthForwardOnly's depth (--depth-in hdrp_depth_depth.f32;
+               its own depth after the pass in OUT/hdrp_lit_depth.f32), with the pass's ZTest and ZWrite
+  hdrp_lit_far the same pass on a cleared depth, the whole scene 50 km from the world's origin
   hdrp_lit_near the same at the origin, positions rounded as float32 rounds them 50 km away
 
   gt pipeline_pass_hdrp [--out DIR] [--only PICTURE]... [--sun-elevation DEG] [--sun-azimuth DEG]
       [--light-color R,G,B] [--leave-default NAME]... [--flip-light-forward]
+      [--depth-nudge-ulps N] [--depth-pass-factor F]
 --leave-default NAME leaves a member, buffer or image of HDRP's scene to its default (_ExposureTexture:
 pipeline_pass.py's 1x1 texel of multiplier 1); --flip-light-forward writes the light's forward with the
-wrong sign (towards the sun): the tests' broken inputs.
+wrong sign (towards the sun); --depth-nudge-ulps moves every written depth of the prepass N float32 steps
+(positive: nearer, under reversed depth) before ForwardOnly loads it; --depth-pass-factor draws
+DepthForwardOnly with the uniform tessellation factor F instead of the scene's: the tests' broken inputs.
 """
 import argparse
 import json
 import math
 import os
 import re
+import shutil
 import struct
 import sys
 import types
@@ -370,6 +376,35 @@ def check_buffer_reads(out):
         json.dump(manifest, f, indent=1)
 
 
+def with_factor(buffers, factor):
+    """A copy of the packed BUFFERS whose TerrainParams (params.f32) has the uniform tessellation factor FACTOR
+    (_Tess.w): a pass tessellated unlike the others."""
+    names = list(pp.terrain_params(buffers))
+    other = buffers + f"-factor{factor}"
+    shutil.rmtree(other, ignore_errors=True)
+    shutil.copytree(buffers, other)
+    path = os.path.join(other, "params.f32")
+    p = pp.read_floats(path)
+    p[4 * names.index("_Tess") + 3] = float(factor)
+    with open(path, "wb") as f:
+        f.write(struct.pack(f"<{len(p)}f", *p))
+    return other
+
+
+def nudged(depth, out, ulps, clear=0.0):
+    """DEPTH's float32 pixels (a --depth-out file), each written one moved ULPS float32 steps (positive:
+    larger, nearer under reversed depth), kept in [0, 1], to OUT: a prepass whose depth is not the forward pass's."""
+    with open(depth, "rb") as f:
+        data = f.read()
+    words = list(struct.unpack(f"<{len(data) // 4}I", data))
+    clear_bits = struct.unpack("<I", struct.pack("<f", clear))[0]
+    one = struct.unpack("<I", struct.pack("<f", 1.0))[0]
+    words = [w if w == clear_bits else min(one, max(1, w + ulps)) for w in words]
+    with open(out, "wb") as f:
+        f.write(struct.pack(f"<{len(words)}I", *words))
+    return out
+
+
 def stencil(pass_name):
     """The pass's Stencil block in one line: HDRP's stencil bits, which the harness does not draw."""
     _, pas = pp.find_pass("HDRP", pass_name)
@@ -399,7 +434,13 @@ def main(argv=None):
     ap.add_argument("--light-color", default="1,0.96,0.9", help="R,G,B: the sun's linear colour (URP: its final colour)")
     ap.add_argument("--leave-default", action="append", default=[], help="NAME: leave a member, buffer or image to its default")
     ap.add_argument("--flip-light-forward", action="store_true", help="HDRP: the light's forward towards the sun (broken)")
+    ap.add_argument("--depth-nudge-ulps", type=int, default=0,
+                    help="N: the prepass's depth moved N float32 steps before ForwardOnly loads it (broken; -8..8)")
+    options.add_number(ap, "--depth-pass-factor", range="factor", default=0,
+                       help="F: DepthForwardOnly's uniform tessellation factor instead of the scene's (broken; default 0: the scene's)")
     a = ap.parse_args(argv)
+    if not -8 <= a.depth_nudge_ulps <= 8:
+        ap.error(f"argument --depth-nudge-ulps: expected -8..8, got {a.depth_nudge_ulps}")
     try:
         color = [float(x) for x in a.light_color.split(",")]
         if len(color) != 3 or not all(math.isfinite(x) and 0 <= x <= 1000 for x in color):
@@ -417,19 +458,26 @@ def main(argv=None):
                                   leave_default=a.leave_default, fill_from=[], transpose=[])
     os.makedirs(a.out, exist_ok=True)
     buffers = pp.pack_scene(a.out)
+    wanted = set(a.only or [p[0] for p in PICTURES]) | ({"hdrp_depth"} if a.only and "hdrp_lit" in a.only else set())
+    prepass = os.path.join(a.out, "hdrp_depth_depth.f32")
     for picture, pipeline, pass_name, keywords, offset, rounded_at in PICTURES:
-        if a.only and picture not in a.only:
+        if picture not in wanted:
             continue
         Setting.world_offset, Setting.rounded_at = offset, rounded_at
         folder = os.path.join(a.out, picture)
-        args = pp.prepare(scene, pipeline, pass_name, keywords, buffers, folder)
+        drawn = with_factor(buffers, a.depth_pass_factor) if picture == "hdrp_depth" and a.depth_pass_factor else buffers
+        args = pp.prepare(scene, pipeline, pass_name, keywords, drawn, folder)
         if pipeline == "HDRP":
             check_buffer_reads(folder)
             print(f"not reproduced: {pass_name} {stencil(pass_name)} (the harness has no stencil)")
-        # The normal buffer's depth and view, for the test that recovers each pixel's position (as pipeline_pass.py's depth_normals).
-        depth = os.path.join(a.out, picture + "_depth.f32") if picture == "hdrp_depth" else None
-        pp.draw(args, buffers, os.path.join(a.out, picture + ".png"), os.path.join(folder, "harness.log"), depth_out=depth)
-        if depth:
+        # The normal buffer's depth and view (the test recovers each pixel's position, as pipeline_pass.py's
+        # depth_normals); hdrp_lit keeps that depth target, as HDRP's frame does, and writes it back after its pass.
+        depth = os.path.join(a.out, picture + "_depth.f32") if picture in ("hdrp_depth", "hdrp_lit") else None
+        if picture == "hdrp_lit":       # what it loads, also kept as OUT/hdrp_lit_depth_in.f32 for the tests
+            args = args + ["--depth-in", nudged(prepass, os.path.join(a.out, "hdrp_lit_depth_in.f32"), a.depth_nudge_ulps)]
+        pp.draw(args, drawn if picture == "hdrp_depth" else buffers, os.path.join(a.out, picture + ".png"),
+                os.path.join(folder, "harness.log"), depth_out=depth)
+        if picture == "hdrp_depth":
             pp.write_view(scene, buffers, os.path.join(a.out, picture + "_view.json"))
 
 

@@ -218,6 +218,8 @@ const char* usageText() {
   --png FILE                     write the colour image as PNG
   --depth-out FILE               write the depth attachment after the last frame: W*H float32,
                                  row-major, top row first (the PNG's order)
+  --depth-in FILE                the depth attachment starts as FILE (--depth-out's layout) instead
+                                 of the clear: a depth prepass's depth kept for the next pass (one frame)
   --wireframe                    polygonMode LINE (needs fillModeNonSolid)
   --cull back|front|off          the drawn pass's render state, in ShaderLab's words (any case);
   --ztest less|lequal|equal|gequal|greater|notequal|always|never
@@ -323,6 +325,7 @@ Options parseOptions(int argc, char** argv) {
         else if (a == "--height") o.height = u32(16384);
         else if (a == "--png") o.pngPath = value();
         else if (a == "--depth-out") o.depthOutPath = value();
+        else if (a == "--depth-in") o.depthInPath = value();
         else if (a == "--wireframe") o.wireframe = true;
         else if (a == "--cull") o.state.cull = parseCull(a, value());
         else if (a == "--ztest") o.state.zTest = parseZTest(a, value());
@@ -384,6 +387,8 @@ Options parseOptions(int argc, char** argv) {
     checkDumps(o);
     if (!o.depthOutPath.empty() && o.depthOutPath == o.pngPath)
         fail("--depth-out '" + o.depthOutPath + "' is also the --png file: give them different names");
+    if (!o.depthInPath.empty() && o.frames != 1)
+        fail("--depth-in loads the depth once: --frames must be 1 (" + std::to_string(o.frames) + " given)");
     std::vector<uint32_t> storageBindings;
     for (const StorageOption& s : o.storage) storageBindings.push_back(s.binding);
     checkImageBindings(o.images, o.samplers, storageBindings);
