@@ -226,6 +226,8 @@ const char* usageText() {
   --zwrite on|off  --zclip on|off   defaults: ShaderLab's, Cull Back, ZTest LEqual, ZWrite On,
   --color-mask 0|RGBA|RGB|R|...  ZClip On, ColorMask RGBA. Front faces are clockwise in the
                                  (upright) image, as in Unity; ZClip off clamps depth
+  --depth-bias UNITS,SLOPE       Unity's depth bias (SetGlobalDepthBias(bias, slopeBias); ShaderLab's
+                                 Offset SLOPE, UNITS): away from the viewer, negated when reversed
   --depth reversed|forward       depth convention (default reversed, as Unity on Vulkan: near 1,
                                  far 0, cleared to 0, ZTest turned around: LEqual draws GEQUAL);
                                  the camera's projection must use the same one
@@ -331,6 +333,7 @@ Options parseOptions(int argc, char** argv) {
         else if (a == "--ztest") o.state.zTest = parseZTest(a, value());
         else if (a == "--zwrite") o.state.zWrite = parseOnOff(a, value());
         else if (a == "--zclip") o.state.zClip = parseOnOff(a, value());
+        else if (a == "--depth-bias") parseDepthBias(a, value(), o.state);
         else if (a == "--color-mask") o.state.colorMask = parseColorMask(a, value());
         else if (a == "--depth") o.state.depth = parseDepth(a, value());
         else if (a == "--storage") addStorage(o, value());
