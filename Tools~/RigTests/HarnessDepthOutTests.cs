@@ -1,6 +1,6 @@
 // --depth-out through the harness on lavapipe: a quad on a known depth plane, its D32 values read
 // back exactly in the PNG's row order (the order --image uploads them, so a ShadowCaster pass's map
-// feeds the next pass as is).
+// feeds the next pass as is); --depth-in: a pass drawn over a depth target it loads, as a prepass leaves it.
 using System;
 using System.Collections.Generic;
 using System.IO;
@@ -68,6 +68,47 @@ namespace GregoryTerrain.Rig.Tests
             Assert.That(clearOutside, Is.EqualTo(outside), "pixels outside the quad hold reversed depth's clear, 0");
             Assert.That(r.Value("depth_out", depth), Is.EqualTo(new[] { Size.ToString(), Size.ToString(), "written", (Size * Size / 4).ToString() }),
                 "the run names the file, its size and the pixels written (the quad: a quarter of the target)");
+        }
+
+        [Test]
+        public void DepthIn_IsTheTargetThePassTestsAgainst_AndKeepsWhatItDoesNotDraw()
+        {
+            // Loaded: 0.6 on the left half (nearer than the quad's 0.34..0.53 under reversed depth), the clear (0) on
+            // the right. ZTest LEqual (reversed: GREATER_OR_EQUAL) draws the quad on the right half only, and the depth
+            // after the pass is the loaded 0.6 on the left, the plane's where the quad drew.
+            string dir = MakeDepthPlaneInputs("in_depth_in");
+            var (pos, idx) = WriteQuadMesh("depth_in");
+            string loaded = Path.Combine(_work, "depth_in.f32"), after = Path.Combine(_work, "depth_in_after.f32");
+            WriteFloats(loaded, Enumerable.Range(0, Size * Size).Select(p => p % Size < Size / 2 ? 0.6f : 0f));
+            HarnessRun r = HarnessRun.Harness("--static-mesh", "--mesh", pos, idx, "--vert", Spv("mesh.vert.spv"),
+                "--frag", Spv("mesh.frag.spv"), "--buffers", dir, "--width", Size.ToString(), "--height", Size.ToString(),
+                "--device", "llvmpipe", "--cull", "off", "--depth-in", loaded, "--depth-out", after);
+            r.AssertSucceeded();
+            byte[] bytes = File.ReadAllBytes(after);
+            float[] d = Enumerable.Range(0, Size * Size).Select(i => BitConverter.ToSingle(bytes, 4 * i)).ToArray();
+            int leftKept = Enumerable.Range(0, Size * Size).Count(p => p % Size < Size / 2 && d[p] == 0.6f);
+            Assert.That(r.Value("depth_in", loaded), Is.EqualTo(new[] { Size.ToString(), Size.ToString(), "written", (Size * Size / 2).ToString() }),
+                "the run names the loaded file and its pixels that differ from the clear (the left half)");
+            Assert.That(leftKept, Is.EqualTo(Size * Size / 2), "the left half keeps the loaded depth: the quad failed the test there");
+            Assert.That(r.Value("image", "nonsky_pixels")[0], Is.EqualTo((Size * Size / 8).ToString()), "the quad drew its right half only");
+            Assert.That(r.Value("depth_out", after)[3], Is.EqualTo((Size * Size / 2 + Size * Size / 8).ToString()), "loaded plus drawn pixels");
+        }
+
+        [Test]
+        public void DepthInOfAnotherSizeOrOutsideZeroToOneOrOverManyFrames_IsRefused()
+        {
+            string dir = MakeInputs("in_depth_in_bad", 4, 8, new[] { 0f, 0, 1, 1 });
+            var (pos, idx) = WriteQuadMesh("depth_in_bad");
+            string small = Path.Combine(_work, "depth_in_small.f32"), far = Path.Combine(_work, "depth_in_far.f32");
+            WriteFloats(small, Enumerable.Repeat(0f, Size));
+            WriteFloats(far, Enumerable.Range(0, Size * Size).Select(p => p == 5 ? 1.5f : 0f));
+            foreach (var (file, frames, says) in new[] { (small, "1", "bytes; expected"), (far, "1", "pixel 5 is 1.5"), (far, "2", "--frames must be 1") })
+            {
+                HarnessRun r = HarnessRun.Harness("--static-mesh", "--mesh", pos, idx, "--vert", Spv("mesh.vert.spv"), "--frag", Spv("mesh.frag.spv"),
+                    "--buffers", dir, "--width", Size.ToString(), "--height", Size.ToString(), "--device", "llvmpipe", "--frames", frames, "--depth-in", file);
+                Assert.That(r.ExitCode, Is.EqualTo(1), r.Stdout + r.Stderr);
+                Assert.That(r.Stderr, Does.Contain("--depth-in").And.Contain(says));
+            }
         }
 
         [Test]

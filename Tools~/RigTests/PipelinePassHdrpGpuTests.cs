@@ -143,6 +143,53 @@ namespace GregoryTerrain.Rig.Tests
         }
 
         [Test]
+        public void ForwardOnlyOverThePrepassDepth_ShadesEveryPixelTheDepthPassCovered_AndNoOther()
+        {
+            // HDRP's frame: DepthForwardOnly writes the depth, ForwardOnly draws over that same target with the state
+            // ShaderLab gives it (ZTest LEqual, ZWrite On: reversed, GREATER_OR_EQUAL). Both passes tessellate alike
+            // (the same stages, _ScreenSize and matrices), so every pixel the prepass covered is shaded (a forward depth
+            // one float32 step farther would fail the test: a hole), none outside it, and the depth ForwardOnly leaves
+            // is the prepass's to the bit (one step nearer would pass and write it). Holes nil and depth unchanged is
+            // exactly what ZTest Equal (HDRP's own opaque forward materials) needs to draw the same pixels.
+            JsonElement state = Manifest("hdrp_lit").GetProperty("state");
+            Assert.That(string.Join(" ", Strings(state)), Does.Contain("--ztest lequal").And.Contain("--zwrite on"), "ForwardOnly's ShaderLab state");
+            string log = File.ReadAllText(Path.Combine(_out, "hdrp_lit", "harness.log"));
+            Assert.That(log, Does.Contain("--depth-in"), "ForwardOnly loads the prepass's depth target");
+            var (holes, outside, changed, covered) = FrameCoverage(_out, _hdrp);
+            TestContext.Out.WriteLine($"prepass covered {covered}; holes {holes}; shaded outside the prepass {outside}; depth changed by ForwardOnly {changed}");
+            Assert.That(covered, Is.GreaterThan(_hdrp.Width * _hdrp.Height / 5), "pixels the prepass covered");
+            Assert.That(holes, Is.Zero, "pixels the prepass covered that ForwardOnly left unshaded (holes)");
+            Assert.That(outside, Is.Zero, "pixels ForwardOnly shaded that the prepass did not cover");
+            Assert.That(changed, Is.Zero, "pixels whose depth ForwardOnly changed (its depth is not the prepass's)");
+        }
+
+        /// <summary>Over the frame: pixels the prepass covered that the forward picture leaves sky (holes), pixels it shades
+        /// outside them, pixels whose depth after the forward pass differs from the one it loaded (bits), and the covered count.</summary>
+        public static (int Holes, int Outside, int Changed, int Covered) FrameCoverage(string output, RigPng forward)
+        {
+            float[] prepass = Floats(Path.Combine(output, "hdrp_lit_depth_in.f32")), after = Floats(Path.Combine(output, "hdrp_lit_depth.f32"));
+            Assert.That(prepass.Length, Is.EqualTo(forward.Width * forward.Height), "the prepass's depth has one float per pixel");
+            int holes = 0, outside = 0, changed = 0, covered = 0;
+            for (int p = 0; p < prepass.Length; p++)
+            {
+                bool depth = prepass[p] != 0f, shaded = !IsSky(forward, p);   // reversed depth: cleared to 0
+                covered += depth ? 1 : 0;
+                holes += depth && !shaded ? 1 : 0;
+                outside += !depth && shaded ? 1 : 0;
+                changed += BitConverter.SingleToInt32Bits(prepass[p]) != BitConverter.SingleToInt32Bits(after[p]) ? 1 : 0;
+            }
+            return (holes, outside, changed, covered);
+        }
+
+        static float[] Floats(string path)
+        {
+            byte[] bytes = File.ReadAllBytes(path);
+            var f = new float[bytes.Length / 4];
+            Buffer.BlockCopy(bytes, 0, f, 0, f.Length * 4);
+            return f;
+        }
+
+        [Test]
         public void FiftyKilometresFromTheOrigin_TheCameraRelativePictureIsTheOriginsWithTheSameRounding()
         {
             // hdrp_lit_far: the scene moved 50 km along x and z (float32 positions there step by 4 mm);

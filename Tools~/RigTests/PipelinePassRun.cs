@@ -8,6 +8,7 @@ using System.IO;
 using System.Linq;
 using System.Text.Json;
 using System.Text.RegularExpressions;
+using System.Threading.Tasks;
 using NUnit.Framework;
 
 namespace GregoryTerrain.Rig.Tests
@@ -208,6 +209,81 @@ namespace GregoryTerrain.Rig.Tests
                     }
                 }
             return (angles, outside, worst);
+        }
+
+        /// <summary>One sampled pixel's shadow verdicts: the GPU's (from the picture) and the CPU ray test's, and whether
+        /// the CPU's verdict changes within the edge margin (such pixels are left out of the agreement).</summary>
+        public struct ShadowSample
+        {
+            public int Pixel;
+            public bool Gpu, Cpu, NearEdge;
+        }
+
+        /// <summary>
+        /// Classifies the pixels by the GPU's verdict (gpuShadowed) and the CPU ray test's, in parallel: each pixel's world
+        /// position from the forward pass's depth (DEPTH: W x H float32, top row first) through the inverse of VIEW's
+        /// camera_view_proj, then a ray toward the sun on TerrainSurfaceQuery's exact surface (grid.json), starting
+        /// startWorld past the surface (beyond the pipeline's bias); a pixel whose verdict changes within edgeWorld
+        /// (world units, terrain (x, y) steps either way) is NearEdge. Pixels with no depth are skipped.
+        /// </summary>
+        public static List<ShadowSample> ShadowSamples(string output, string depthFile, JsonElement view, double[] sun, int width, int height,
+                                                       IEnumerable<int> pixels, double startWorld, double edgeWorld, Func<int, bool> gpuShadowed)
+        {
+            byte[] depthBytes = File.ReadAllBytes(Path.Combine(output, depthFile));
+            Assert.That(depthBytes.Length, Is.EqualTo(4 * width * height), depthFile + ": the forward pass's W * H depth");
+            double[,] clipToWorld = Inverse(Matrix(view.GetProperty("camera_view_proj")));
+            double[,] worldToObject = Inverse(Matrix(view.GetProperty("object_to_world")));
+            // Object space is (x, height, y) of terrain space; the object-to-world scale is uniform.
+            double[] sunObject = Mul(worldToObject, new[] { sun[0], sun[1], sun[2], 0.0 });
+            var sunTerrain = new Double3(sunObject[0], sunObject[2], sunObject[1]);
+            double worldPerTerrain = 1.0 / Math.Sqrt(sunObject.Take(3).Sum(x => x * x));
+            var query = new TerrainSurfaceQuery(PatchGridJson.ReadFile(Path.Combine(output, "grid.json")), null);
+            double start = startWorld / worldPerTerrain, reach = edgeWorld / worldPerTerrain;   // terrain units
+
+            bool Shadowed(double x, double y, double z) =>
+                query.Raycast(new TerrainRay(new Double3(x, y, z) + sunTerrain * (start / GMath.length(sunTerrain)), sunTerrain, 10.0),
+                              out _, 1e-7) == TerrainRayStatus.Hit;
+
+            int[] chosen = pixels.ToArray();
+            var samples = new ShadowSample?[chosen.Length];
+            Parallel.For(0, chosen.Length, new ParallelOptions { MaxDegreeOfParallelism = 2 }, k =>
+            {
+                int p = chosen[k];
+                float d = BitConverter.ToSingle(depthBytes, 4 * p);
+                if (!(d > 0)) return;
+                double[] world = Mul(clipToWorld, new[] { (p % width + 0.5) / width * 2 - 1, 1 - (p / width + 0.5) / height * 2, d, 1.0 });
+                double[] o = Mul(worldToObject, world.Select(x => x / world[3]).ToArray());
+                double x0 = o[0], y0 = o[2], z0 = o[1];
+                bool cpu = Shadowed(x0, y0, z0);
+                bool near = false;
+                foreach (var (dx, dy) in new[] { (1, 0), (-1, 0), (0, 1), (0, -1) })
+                {
+                    double x = x0 + dx * reach, y = y0 + dy * reach, z = query.SampleHeight(x, y);
+                    if (double.IsNaN(z) || Shadowed(x, y, z) != cpu) { near = true; break; }
+                }
+                samples[k] = new ShadowSample { Pixel = p, Gpu = gpuShadowed(p), Cpu = cpu, NearEdge = near };
+            });
+            return samples.Where(s => s.HasValue).Select(s => s.Value).ToList();
+        }
+
+        /// <summary>Away from shadow edges, the GPU's shadow and the CPU ray test agree at 99% of the samples or more, and
+        /// neither side's shadow has more than 5% the other lacks (most pixels are sunlit, so the overall figure alone would
+        /// pass a map that shadows nothing); the CPU shadows 3% or more, most samples are away from edges. Printed, then asserted.</summary>
+        public static void AssertShadowAgreement(List<ShadowSample> samples, double edgeWorld, double texel, string what)
+        {
+            var away = samples.Where(s => !s.NearEdge).ToList();
+            int agree = away.Count(s => s.Gpu == s.Cpu), cpuShadowed = away.Count(s => s.Cpu);
+            int gpuOnly = away.Count(s => s.Gpu && !s.Cpu), cpuOnly = away.Count(s => s.Cpu && !s.Gpu);
+            double fraction = away.Count > 0 ? (double)agree / away.Count : 0;
+            TestContext.Out.WriteLine($"{what} vs CPU ray test: {samples.Count} sampled sunlit pixels, {away.Count} farther than " +
+                                      $"{edgeWorld:G3} world units ({edgeWorld / texel:F0} texels) from a CPU shadow edge; " +
+                                      $"CPU shadowed {cpuShadowed}; agree {agree} ({100 * fraction:F2}%), GPU-only {gpuOnly}, CPU-only {cpuOnly}; " +
+                                      $"near edges (left out) {samples.Count - away.Count}");
+            Assert.That(cpuShadowed, Is.GreaterThan(away.Count / 33), "the CPU puts 3% or more of the sunlit terrain away from edges in the ridges' shadow");
+            Assert.That(away.Count, Is.GreaterThan(samples.Count / 2), "most sampled pixels are away from edges");
+            Assert.That(fraction, Is.GreaterThanOrEqualTo(0.99), "pixels away from shadow edges where the GPU's shadow and the CPU ray test agree");
+            Assert.That(cpuOnly, Is.LessThanOrEqualTo(cpuShadowed / 20), "pixels the CPU shadows and the GPU lights");
+            Assert.That(gpuOnly, Is.LessThanOrEqualTo(away.Count(s => s.Gpu) / 20), "pixels the GPU shadows and the CPU lights");
         }
 
         /// <summary>Mean, 99th percentile and largest of the angles (a NaN counts as 180 degrees), printed.</summary>

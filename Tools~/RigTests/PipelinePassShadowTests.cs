@@ -14,18 +14,11 @@ namespace GregoryTerrain.Rig.Tests
 {
     public partial class PipelinePassGpuTests
     {
-        /// <summary>One covered pixel's verdicts: the GPU's (from the pictures) and the CPU ray test's.</summary>
-        struct ShadowSample
-        {
-            public int Pixel;
-            public bool Gpu, Cpu, NearEdge;
-        }
-
         RigPng _litShadows;
         JsonElement _shadow;
         double[] _shadowSun;     // the shadowed frame's sun (Scene: 12 degrees up, from +x)
         const double MinNDotL = 0.25;   // the sunlit pixels graded: N.L at least this
-        List<ShadowSample> _samples;
+        List<PipelinePassRun.ShadowSample> _samples;
         double _edgeTolerance;   // world units
 
         /// <summary>The picture's colour above the ambient term, averaged over the channels: the light's share.</summary>
@@ -42,65 +35,26 @@ namespace GregoryTerrain.Rig.Tests
         /// <summary>Lambert's colour channel without a shadow (TheLitPicture_IsLambertOfThePassesOwnNormals holds it within 3/255).</summary>
         double Unshadowed(int p, int c) => _albedo[c] * (_ambient + _light[c] * Math.Max(0, ShadowNDotL(p)));
 
-        /// <summary>
-        /// Draws nothing: reads what the fixture's run drew and classifies every third covered pixel in x
-        /// and y (about 9,000) by the GPU's verdict and the CPU ray test's, in parallel.
-        /// </summary>
+        /// <summary>Draws nothing: reads what the fixture's run drew and classifies the sampled pixels (PipelinePassRun.ShadowSamples).</summary>
         void LoadShadowSamples()
         {
             if (_samples != null) return;
             _litShadows = RigPng.Read(Path.Combine(_out, "lit_shadows.png"));
             _shadow = JsonDocument.Parse(File.ReadAllText(Path.Combine(_out, "shadow.json"))).RootElement;
             _shadowSun = PipelinePassRun.Doubles(Manifest("lit_shadows").GetProperty("sun"));
-            byte[] depthBytes = File.ReadAllBytes(Path.Combine(_out, "lit_shadows_depth.f32"));
-            int w = _lit.Width, h = _lit.Height;
-            Assert.That(depthBytes.Length, Is.EqualTo(4 * w * h), "lit_shadows_depth.f32: the forward pass's W * H depth");
-            double[,] clipToWorld = PipelinePassRun.Inverse(PipelinePassRun.Matrix(_shadow.GetProperty("camera_view_proj")));
-            double[,] worldToObject = PipelinePassRun.Inverse(PipelinePassRun.Matrix(_shadow.GetProperty("object_to_world")));
-            double[] sun = _shadowSun;
             double texel = _shadow.GetProperty("texel").GetDouble();
-            // Object space is (x, height, y) of terrain space; the object-to-world scale is uniform.
-            double[] sunObject = PipelinePassRun.Mul(worldToObject, new[] { sun[0], sun[1], sun[2], 0.0 });
-            var sunTerrain = new Double3(sunObject[0], sunObject[2], sunObject[1]);
-            double worldPerTerrain = 1.0 / Math.Sqrt(sunObject.Take(3).Sum(x => x * x));
-            var query = new TerrainSurfaceQuery(PatchGridJson.ReadFile(Path.Combine(_out, "grid.json")), null);
-
             // How far the map may move an edge on the receiver (world units): point sampling (half a texel
             // either way, 1) and URP's depth and normal bias (1 texel each along the light and the
             // normal, 2), across the light; on a receiver lit at N.L that stretches by 1 / N.L, at most
             // 1 / MinNDotL = 4: (1 + 2) * 4 = 12 texels. Pixels whose CPU verdict changes within that
-            // distance are edge pixels, left out of the agreement.
+            // distance are edge pixels, left out of the agreement. Rays start 2 texels out, past URP's bias.
             _edgeTolerance = 3 * texel / MinNDotL;
-            double start = 2 * texel / worldPerTerrain;   // rays start past URP's bias (terrain units)
-            double reach = _edgeTolerance / worldPerTerrain;
-
-            bool Shadowed(double x, double y, double z) =>
-                query.Raycast(new TerrainRay(new Double3(x, y, z) + sunTerrain * (start / GMath.length(sunTerrain)), sunTerrain, 10.0),
-                              out _, 1e-7) == TerrainRayStatus.Hit;
-
-            var chosen = _covered.Where(p => p % w % 3 == 0 && p / w % 3 == 0).ToArray();
-            var samples = new ShadowSample?[chosen.Length];
-            Parallel.For(0, chosen.Length, new ParallelOptions { MaxDegreeOfParallelism = 2 }, k =>
-            {
-                int p = chosen[k];
-                float d = BitConverter.ToSingle(depthBytes, 4 * p);
-                // Only pixels the sun lights without the map (N.L >= MinNDotL), where a shadow is a clear step.
-                if (!(d > 0) || ShadowNDotL(p) < MinNDotL) return;
-                double[] world = PipelinePassRun.Mul(clipToWorld, new[] { (p % w + 0.5) / w * 2 - 1, 1 - (p / w + 0.5) / h * 2, d, 1.0 });
-                double[] o = PipelinePassRun.Mul(worldToObject, world.Select(x => x / world[3]).ToArray());
-                double x0 = o[0], y0 = o[2], z0 = o[1];
-                bool cpu = Shadowed(x0, y0, z0);
-                bool near = false;
-                foreach (var (dx, dy) in new[] { (1, 0), (-1, 0), (0, 1), (0, -1) })
-                {
-                    double x = x0 + dx * reach, y = y0 + dy * reach, z = query.SampleHeight(x, y);
-                    if (double.IsNaN(z)) { near = true; break; }
-                    if (Shadowed(x, y, z) != cpu) { near = true; break; }
-                }
-                bool gpu = DirectShare(_litShadows, p) < 0.5 * Enumerable.Range(0, 3).Average(c => Unshadowed(p, c) - _albedo[c] * _ambient);
-                samples[k] = new ShadowSample { Pixel = p, Gpu = gpu, Cpu = cpu, NearEdge = near };
-            });
-            _samples = samples.Where(s => s.HasValue).Select(s => s.Value).ToList();
+            // Every third covered pixel in x and y (about 9,000), those the sun lights without the map (N.L >= MinNDotL).
+            int w = _lit.Width;
+            var chosen = _covered.Where(p => p % w % 3 == 0 && p / w % 3 == 0 && ShadowNDotL(p) >= MinNDotL);
+            _samples = PipelinePassRun.ShadowSamples(_out, "lit_shadows_depth.f32", _shadow, _shadowSun, _lit.Width, _lit.Height, chosen,
+                2 * texel, _edgeTolerance,
+                p => DirectShare(_litShadows, p) < 0.5 * Enumerable.Range(0, 3).Average(c => Unshadowed(p, c) - _albedo[c] * _ambient));
         }
 
         [Test]
@@ -166,22 +120,7 @@ namespace GregoryTerrain.Rig.Tests
         public void TheRidgesShadow_FallsWhereACpuRayTowardTheSunSays()
         {
             LoadShadowSamples();
-            var away = _samples.Where(s => !s.NearEdge).ToList();
-            int agree = away.Count(s => s.Gpu == s.Cpu), cpuShadowed = away.Count(s => s.Cpu);
-            int gpuOnly = away.Count(s => s.Gpu && !s.Cpu), cpuOnly = away.Count(s => s.Cpu && !s.Gpu);
-            double fraction = away.Count > 0 ? (double)agree / away.Count : 0;
-            TestContext.Out.WriteLine($"shadow vs CPU ray test: {_samples.Count} sampled sunlit pixels, {away.Count} farther than " +
-                                      $"{_edgeTolerance:G3} world units ({_edgeTolerance / _shadow.GetProperty("texel").GetDouble():F0} texels) from a CPU shadow edge; " +
-                                      $"CPU shadowed {cpuShadowed}; agree {agree} ({100 * fraction:F2}%), GPU-only {gpuOnly}, CPU-only {cpuOnly}; " +
-                                      $"near edges (left out) {_samples.Count - away.Count}");
-            Assert.That(cpuShadowed, Is.GreaterThan(away.Count / 33), "the CPU puts 3% or more of the sunlit terrain away from edges in the ridges' shadow");
-            Assert.That(away.Count, Is.GreaterThan(_samples.Count / 2), "most sampled pixels are away from edges");
-            // Away from edges both verdicts are unambiguous; the rest (tessellation vs the exact surface,
-            // grazing slopes) is allowed 1% of all, 5% of either side's shadowed pixels (most pixels are
-            // sunlit, so the overall figure alone would pass a map that shadows nothing: 96%).
-            Assert.That(fraction, Is.GreaterThanOrEqualTo(0.99), "pixels away from shadow edges where the GPU's shadow and the CPU ray test agree");
-            Assert.That(cpuOnly, Is.LessThanOrEqualTo(cpuShadowed / 20), "pixels the CPU shadows and the GPU lights");
-            Assert.That(gpuOnly, Is.LessThanOrEqualTo(away.Count(s => s.Gpu) / 20), "pixels the GPU shadows and the CPU lights");
+            PipelinePassRun.AssertShadowAgreement(_samples, _edgeTolerance, _shadow.GetProperty("texel").GetDouble(), "URP's shadow");
         }
     }
 }

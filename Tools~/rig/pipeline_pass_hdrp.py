@@ -15,21 +15,27 @@ Pictures (OUT/<picture>.png, OUT/<picture>/manifest.json as pipeline_pass.py wri
   hdrp_depth   HDRP's DepthForwardOnly, base variant: the normal buffer (EncodeIntoNormalBuffer:
                octahedral normal in RGB 8:8:8, perceptual roughness 1 in A); its depth in
                OUT/hdrp_depth_depth.f32 and its view in OUT/hdrp_depth_view.json
-  hdrp_lit     HDRP's ForwardOnly, base variant (SHADOW_LOW: its multi_compile_fragment set has no '_')
-  hdrp_lit_far the same, the whole scene 50 km from the world's origin (camera-relative rendering)
+  hdrp_lit     HDRP's ForwardOnly, base variant (SHADOW_LOW: its multi_compile_fragment set has no '_'),
+               drawn as HDRP draws it: over DepthForwardOnly's depth (--depth-in hdrp_depth_depth.f32;
+               its own depth after the pass in OUT/hdrp_lit_depth.f32), with the pass's ZTest and ZWrite
+  hdrp_lit_far the same pass on a cleared depth, the whole scene 50 km from the world's origin
   hdrp_lit_near the same at the origin, positions rounded as float32 rounds them 50 km away
 
   gt pipeline_pass_hdrp [--out DIR] [--only PICTURE]... [--sun-elevation DEG] [--sun-azimuth DEG]
       [--light-color R,G,B] [--leave-default NAME]... [--flip-light-forward]
+      [--depth-nudge-ulps N] [--depth-pass-factor F]
 --leave-default NAME leaves a member, buffer or image of HDRP's scene to its default (_ExposureTexture:
 pipeline_pass.py's 1x1 texel of multiplier 1); --flip-light-forward writes the light's forward with the
-wrong sign (towards the sun): the tests' broken inputs.
+wrong sign (towards the sun); --depth-nudge-ulps moves every written depth of the prepass N float32 steps
+(positive: nearer, under reversed depth) before ForwardOnly loads it; --depth-pass-factor draws
+DepthForwardOnly with the uniform tessellation factor F instead of the scene's: the tests' broken inputs.
 """
 import argparse
 import json
 import math
 import os
 import re
+import shutil
 import struct
 import sys
 import types
@@ -38,6 +44,7 @@ RIG_DIR = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, RIG_DIR)
 import options  # noqa: E402
 import pipeline_pass as pp  # noqa: E402
+import render_state  # noqa: E402
 
 HDRP_PACKAGES = ["com.unity.render-pipelines.core", "com.unity.render-pipelines.high-definition",
                  "com.unity.render-pipelines.high-definition-config"]
@@ -168,6 +175,8 @@ class Setting:
     pipeline_pass.py's signature)."""
     lux, ev100, flip_forward = SUN_LUX, SUN_EV100, False
     world_offset = None     # the scene moved by this (hdrp_lit_far); camera-relative values stay
+    shadow = None           # an HdrpCascade: the shadowed frame's cascade (hdrp_shadow_map, hdrp_lit_shadows)
+    atlas = None            # the cascade atlas's texels (rows in texture order) hdrp_lit_shadows samples
     rounded_at = None       # the scene at the origin as float32 holds it moved by this (hdrp_lit_near)
 
 
@@ -181,6 +190,56 @@ def light_view(sun, center_rws):
     u = pp.cross(f, r)
     eye = [c - SHADOW_DEPTH / 2 * x for c, x in zip(center_rws, f)]
     return f, r, u, [r + [-pp.dot(r, eye)], u + [-pp.dot(u, eye)], [-x for x in f] + [pp.dot(f, eye)], [0.0, 0.0, 0.0, 1.0]]
+
+
+# HDRP's directional cascade, as HDRP 14's C# sets it up (Runtime/Lighting/Shadow/HDShadowUtils.cs
+# ExtractDirectionalLightData; Runtime/Lighting/Light/HDAdditionalLightData.cs UpdateShadowRequest;
+# Runtime/Lighting/Shadow/HDShadowAtlas.cs RenderShadows; HDShadowManager.cs CreateShadowData):
+# - the light's view and orthographic projection come from Unity's
+#   CullingResults.ComputeDirectionalShadowMatricesAndCullingPrimitives, the call URP makes:
+#   pipeline_pass.MainLightShadow's sphere and matrices, one cascade over the shadow distance;
+# - deviceProjection = GL.GetGPUProjectionMatrix(projection, false) (reversed depth); the atlas is rendered
+#   with deviceProjectionYFlip (the rig draws y unflipped and reverses the rows, as for URP);
+# - RenderShadows: cmd.SetGlobalDepthBias(1.0f, shadowRequest.slopeBias) with slopeBias =
+#   HDShadowUtils.GetSlopeBias(baseBias 5 (not High filtering), light.slopeBias 0.5) = 2.5; cmd.SetGlobalFloat(
+#   _ZClip, shadowRequest.zClip ? 1 : 0) with zClip false for a directional light; _ViewMatrix, _ProjMatrix,
+#   _ViewProjMatrix and their inverses replaced in the camera's ShaderVariablesGlobal, the rest (_CameraViewProjMatrix,
+#   _ScreenSize: the adapter's tessellation) kept;
+# - HDShadowData: rot0..2 and pos the view's rows (camera-relative), proj (m00, m11, m22, m23) of deviceProjection,
+#   worldTexelSize = 2 / deviceProjectionYFlip.m00 / resolution x sqrt(2), normalBias the light's 0.75.
+HDRP_SHADOW_RESOLUTION = 2048   # the HDRP asset's directional shadow resolution, Ultra tier (URP's map: the same)
+HDRP_DEPTH_BIAS = (1.0, 5.0 * 0.5)
+HDRP_NORMAL_BIAS = 0.75
+
+
+class HdrpCascade:
+    """One cascade of the sun's shadow in HDRP's camera-relative terms (see above)."""
+
+    def __init__(self, cam, sun, resolution=HDRP_SHADOW_RESOLUTION):
+        unity = pp.MainLightShadow(cam, sun, resolution)
+        self.resolution, self.sun, self.distance = resolution, sun, unity.distance
+        translate = [[1.0, 0, 0, cam.eye[0]], [0, 1.0, 0, cam.eye[1]], [0, 0, 1.0, cam.eye[2]], [0, 0, 0, 1.0]]
+        self.view = pp.mat_mul(unity.view, translate)          # camera-relative positions in
+        self.proj = unity.gpu_proj                             # deviceProjection (reversed depth)
+        self.view_proj = pp.mat_mul(self.proj, self.view)
+        self.center = [c - e for c, e in zip(unity.center, cam.eye)]
+        self.radius = unity.radius
+        self.world_texel = 2.0 / self.proj[0][0] / resolution * math.sqrt(2.0)
+        self.texel = 2.0 / self.proj[0][0] / resolution        # one texel across, world units
+
+    def caster_values(self):
+        return {"_ViewMatrix": self.view, "_InvViewMatrix": pp.affine_inverse(self.view), "_ProjMatrix": self.proj,
+                "_InvProjMatrix": pp.general_inverse(self.proj), "_ViewProjMatrix": self.view_proj,
+                "_InvViewProjMatrix": pp.general_inverse(self.view_proj)}
+
+
+def atlas_image(path, n):
+    """The hook for the cascade atlas the ShadowCaster pass drew: N x N D32, rows in texture order."""
+    def fill(name, kind, size, binding, out, spvs, report):
+        report["filled"].append(f"{name}=D32 {n}x{n} (the ShadowCaster pass's depth from the sun)")
+        return {"name": name, "binding": binding, "kind": kind, "format": "D32", "file": path,
+                "bytes": 4 * n * n, "arrayed": "Array" in size, "size": [n, n]}
+    return fill
 
 
 def hdrp_globals(cam, o2w, o2c, sun, light_color):
@@ -204,6 +263,12 @@ def hdrp_globals(cam, o2w, o2c, sun, light_color):
     exposure = exposure_multiplier(Setting.ev100)
     sky = SKY_SHARE * Setting.lux / math.pi
     res = 1.0                                                     # the atlas pipeline_pass.py binds is 1x1
+    radius, proj, texel, normal_bias = CASCADE_RADIUS, [1.0 / CASCADE_RADIUS, 1.0 / CASCADE_RADIUS, 1.0 / SHADOW_DEPTH, 1.0], 2.0 * CASCADE_RADIUS / res, 0.75
+    cascade = Setting.shadow
+    if cascade:
+        res, lview, center, radius = float(cascade.resolution), cascade.view, cascade.center, cascade.radius
+        proj = [cascade.proj[0][0], cascade.proj[1][1], cascade.proj[2][2], cascade.proj[2][3]]
+        texel, normal_bias = cascade.world_texel, HDRP_NORMAL_BIAS
     values = {
         # ShaderVariablesGlobal.cs.hlsl:20-30; UNITY_MATRIX_V/VP are _ViewMatrix/_ViewProjMatrix
         # (ShaderVariablesMatrixDefsHDCamera.hlsl:22-26): the GPU projection (reversed depth, as URP's scene).
@@ -267,22 +332,21 @@ def hdrp_globals(cam, o2w, o2c, sun, light_color):
         # relative) and HDRP's orthographic reversed-depth projection (sx, sy, sz, tz): near 1, far 0.
         "_HDShadowDatas": structured_buffer([{
             "rot0": lview[0][:3], "rot1": lview[1][:3], "rot2": lview[2][:3], "pos": [lview[0][3], lview[1][3], lview[2][3]],
-            "proj": [1.0 / CASCADE_RADIUS, 1.0 / CASCADE_RADIUS, 1.0 / SHADOW_DEPTH, 1.0],
-            "atlasOffset": [0.0, 0.0], "worldTexelSize": 2.0 * CASCADE_RADIUS / res,
-            "normalBias": 0.75,                                    # HDAdditionalLightData's default normal bias
+            "proj": proj, "atlasOffset": [0.0, 0.0], "worldTexelSize": texel,
+            "normalBias": normal_bias,                             # HDAdditionalLightData's default normal bias
             "shadowMapSize": [res, res, 1.0 / res, 1.0 / res],
             # DIRECTIONAL_FILTER_ALGORITHM (HDShadowAlgorithms.hlsl:21-33) is PCSS only under SHADOW_HIGH;
             # SHADOW_LOW (line 26: PCF tent 5x5) reads neither: PCSS off (kernel 0), no blocker depth range.
             "zBufferParam": [0.0] * 4, "shadowFilterParams0": [0.0] * 4,
             "cacheTranslationDelta": [0.0, 0.0, 0.0], "isInCachedAtlas": 0.0,
-            "shadowToWorld": pp.general_inverse(pp.mat_mul([[1.0 / CASCADE_RADIUS, 0, 0, 0], [0, 1.0 / CASCADE_RADIUS, 0, 0],
-                                                            [0, 0, 1.0 / SHADOW_DEPTH, 1.0], [0, 0, 0, 1.0]], lview)),
+            "shadowToWorld": pp.general_inverse(pp.mat_mul([[proj[0], 0, 0, 0], [0, proj[1], 0, 0],
+                                                            [0, 0, proj[2], proj[3]], [0, 0, 0, 1.0]], lview)),
         }]),
         # Shadow/HDShadowManager.cs.hlsl:9- HDDirectionalShadowData: the cascade spheres (centre camera-relative,
         # w radius squared: EvalShadow_GetSplitIndex, HDShadowAlgorithms.hlsl:198-), the cascade count in
         # cascadeDirection.w, no border (no blend between cascades).
         "_HDDirectionalShadowData": structured_buffer([{
-            "sphereCascades": [center + [CASCADE_RADIUS ** 2]] + [[0.0] * 4] * 3,
+            "sphereCascades": [center + [radius ** 2]] + [[0.0] * 4] * 3,
             "cascadeDirection": forward + [1.0], "cascadeBorders": [0.0] * 4,
             # Loaded with the struct; no function of this pass uses the fade: none (scale 0, bias 1).
             "fadeScale": 0.0, "fadeBias": 1.0,
@@ -294,7 +358,8 @@ def hdrp_globals(cam, o2w, o2c, sun, light_color):
         # ShaderVariables.hlsl:160, 390: the exposure texture's texel (multiplier, EV100).
         "_ExposureTexture": image("R32G32_SFLOAT", [exposure, Setting.ev100], f"fixed exposure {Setting.ev100:g} EV100"),
         # HDShadowContext.hlsl:26: the cascade atlas, reversed depth's far plane everywhere: nothing occludes.
-        "_ShadowmapCascadeAtlas": image("D32", [0.0], "far plane: no occluder"),
+        "_ShadowmapCascadeAtlas": (atlas_image(Setting.atlas, cascade.resolution) if cascade and Setting.atlas
+                                   else image("D32", [0.0], "far plane: no occluder")),
         # ShaderVariables.hlsl:120: HDRP's global comparison sampler, linear clamp; Unity compares
         # GreaterEqual under reversed depth (lavapipe lists no linear filtering of D32: point).
         "s_linear_clamp_compare_sampler": sampler("point:clamp:compare-gequal", "linear clamp compare, reversed depth"),
@@ -370,6 +435,35 @@ def check_buffer_reads(out):
         json.dump(manifest, f, indent=1)
 
 
+def with_factor(buffers, factor):
+    """A copy of the packed BUFFERS whose TerrainParams (params.f32) has the uniform tessellation factor FACTOR
+    (_Tess.w): a pass tessellated unlike the others."""
+    names = list(pp.terrain_params(buffers))
+    other = buffers + f"-factor{factor}"
+    shutil.rmtree(other, ignore_errors=True)
+    shutil.copytree(buffers, other)
+    path = os.path.join(other, "params.f32")
+    p = pp.read_floats(path)
+    p[4 * names.index("_Tess") + 3] = float(factor)
+    with open(path, "wb") as f:
+        f.write(struct.pack(f"<{len(p)}f", *p))
+    return other
+
+
+def nudged(depth, out, ulps, clear=0.0):
+    """DEPTH's float32 pixels (a --depth-out file), each written one moved ULPS float32 steps (positive:
+    larger, nearer under reversed depth), kept in [0, 1], to OUT: a prepass whose depth is not the forward pass's."""
+    with open(depth, "rb") as f:
+        data = f.read()
+    words = list(struct.unpack(f"<{len(data) // 4}I", data))
+    clear_bits = struct.unpack("<I", struct.pack("<f", clear))[0]
+    one = struct.unpack("<I", struct.pack("<f", 1.0))[0]
+    words = [w if w == clear_bits else min(one, max(1, w + ulps)) for w in words]
+    with open(out, "wb") as f:
+        f.write(struct.pack(f"<{len(words)}I", *words))
+    return out
+
+
 def stencil(pass_name):
     """The pass's Stencil block in one line: HDRP's stencil bits, which the harness does not draw."""
     _, pas = pp.find_pass("HDRP", pass_name)
@@ -387,7 +481,13 @@ FAR = [50000.0, 0.0, 50000.0]
 PICTURES = [("lit", "URP", "ForwardLit", [], None, None), ("hdrp_depth", "HDRP", "DepthForwardOnly", [], None, None),
             ("hdrp_lit", "HDRP", "ForwardOnly", ["SHADOW_LOW"], None, None),
             ("hdrp_lit_far", "HDRP", "ForwardOnly", ["SHADOW_LOW"], FAR, None),
-            ("hdrp_lit_near", "HDRP", "ForwardOnly", ["SHADOW_LOW"], None, FAR)]
+            ("hdrp_lit_near", "HDRP", "ForwardOnly", ["SHADOW_LOW"], None, FAR),
+            ("hdrp_shadow_map", "HDRP", "ShadowCaster", [], None, None),
+            ("hdrp_lit_shadows", "HDRP", "ForwardOnly", ["SHADOW_LOW"], None, None)]
+# hdrp_shadow_map: the ShadowCaster pass from the shadowed frame's sun into the cascade atlas (OUT/hdrp_shadow_map.f32,
+# no PNG); hdrp_lit_shadows: ForwardOnly under that sun sampling it, over the prepass's depth (its depth in
+# OUT/hdrp_lit_shadows_depth.f32, the cascade in OUT/hdrp_shadow.json). Drawn only when named (their own fixture).
+ON_REQUEST = {"hdrp_shadow_map", "hdrp_lit_shadows"}
 
 
 def main(argv=None):
@@ -399,7 +499,19 @@ def main(argv=None):
     ap.add_argument("--light-color", default="1,0.96,0.9", help="R,G,B: the sun's linear colour (URP: its final colour)")
     ap.add_argument("--leave-default", action="append", default=[], help="NAME: leave a member, buffer or image to its default")
     ap.add_argument("--flip-light-forward", action="store_true", help="HDRP: the light's forward towards the sun (broken)")
+    options.add_number(ap, "--shadow-sun-elevation", range="elevation", default=12.0,
+                       help="the shadowed frame's sun (hdrp_shadow_map, hdrp_lit_shadows): degrees above the horizon (default 12)")
+    options.add_number(ap, "--shadow-sun-azimuth", range="azimuth", default=90.0,
+                       help="the shadowed frame's sun: degrees from +z towards +x (default 90, as gt pipeline_pass's)")
+    ap.add_argument("--flip-depth-bias", action="store_true", help="the ShadowCaster's depth bias towards the light (broken)")
+    ap.add_argument("--transpose-atlas", action="store_true", help="the cascade atlas sampled transposed (broken)")
+    ap.add_argument("--depth-nudge-ulps", type=int, default=0,
+                    help="N: the prepass's depth moved N float32 steps before ForwardOnly loads it (broken; -8..8)")
+    options.add_number(ap, "--depth-pass-factor", range="factor", default=0,
+                       help="F: DepthForwardOnly's uniform tessellation factor instead of the scene's (broken; default 0: the scene's)")
     a = ap.parse_args(argv)
+    if not -8 <= a.depth_nudge_ulps <= 8:
+        ap.error(f"argument --depth-nudge-ulps: expected -8..8, got {a.depth_nudge_ulps}")
     try:
         color = [float(x) for x in a.light_color.split(",")]
         if len(color) != 3 or not all(math.isfinite(x) and 0 <= x <= 1000 for x in color):
@@ -417,20 +529,67 @@ def main(argv=None):
                                   leave_default=a.leave_default, fill_from=[], transpose=[])
     os.makedirs(a.out, exist_ok=True)
     buffers = pp.pack_scene(a.out)
+    wanted = set(a.only or [p[0] for p in PICTURES if p[0] not in ON_REQUEST])
+    wanted |= {"hdrp_depth"} if wanted & {"hdrp_lit", "hdrp_lit_shadows"} else set()
+    wanted |= {"hdrp_shadow_map"} if "hdrp_lit_shadows" in wanted else set()
+    prepass = os.path.join(a.out, "hdrp_depth_depth.f32")
+    cam, o2w, _ = pp.rig_camera(buffers)
+    shadow_sun = pp.sun_direction(a.shadow_sun_elevation, a.shadow_sun_azimuth)
+    cascade = HdrpCascade(cam, shadow_sun)
+    render_state.GLOBAL_PROPERTIES["_ZClip"] = "off"     # HDRP's _ZClip 0 for a directional light's cascades
     for picture, pipeline, pass_name, keywords, offset, rounded_at in PICTURES:
-        if a.only and picture not in a.only:
+        if picture not in wanted:
+            continue
+        if picture in ON_REQUEST:
+            draw_shadowed(a, scene, picture, buffers, cascade, prepass, cam, o2w)
             continue
         Setting.world_offset, Setting.rounded_at = offset, rounded_at
         folder = os.path.join(a.out, picture)
-        args = pp.prepare(scene, pipeline, pass_name, keywords, buffers, folder)
+        drawn = with_factor(buffers, a.depth_pass_factor) if picture == "hdrp_depth" and a.depth_pass_factor else buffers
+        args = pp.prepare(scene, pipeline, pass_name, keywords, drawn, folder)
         if pipeline == "HDRP":
             check_buffer_reads(folder)
             print(f"not reproduced: {pass_name} {stencil(pass_name)} (the harness has no stencil)")
-        # The normal buffer's depth and view, for the test that recovers each pixel's position (as pipeline_pass.py's depth_normals).
-        depth = os.path.join(a.out, picture + "_depth.f32") if picture == "hdrp_depth" else None
-        pp.draw(args, buffers, os.path.join(a.out, picture + ".png"), os.path.join(folder, "harness.log"), depth_out=depth)
-        if depth:
+        # The normal buffer's depth and view (the test recovers each pixel's position, as pipeline_pass.py's
+        # depth_normals); hdrp_lit keeps that depth target, as HDRP's frame does, and writes it back after its pass.
+        depth = os.path.join(a.out, picture + "_depth.f32") if picture in ("hdrp_depth", "hdrp_lit") else None
+        if picture == "hdrp_lit":       # what it loads, also kept as OUT/hdrp_lit_depth_in.f32 for the tests
+            args = args + ["--depth-in", nudged(prepass, os.path.join(a.out, "hdrp_lit_depth_in.f32"), a.depth_nudge_ulps)]
+        pp.draw(args, drawn if picture == "hdrp_depth" else buffers, os.path.join(a.out, picture + ".png"),
+                os.path.join(folder, "harness.log"), depth_out=depth)
+        if picture == "hdrp_depth":
             pp.write_view(scene, buffers, os.path.join(a.out, picture + "_view.json"))
+
+
+def draw_shadowed(a, scene, picture, buffers, cascade, prepass, cam, o2w):
+    """hdrp_shadow_map (the ShadowCaster into the atlas, with HDRP's depth bias) or hdrp_lit_shadows (ForwardOnly
+    sampling it over the prepass's depth), under the shadowed frame's sun."""
+    folder, n = os.path.join(a.out, picture), cascade.resolution
+    texels = os.path.join(a.out, "hdrp_shadow_atlas.f32")
+    Setting.world_offset = Setting.rounded_at = None
+    Setting.shadow, Setting.atlas = cascade, (texels if picture == "hdrp_lit_shadows" else None)
+    log = os.path.join(folder, "harness.log")
+    if picture == "hdrp_shadow_map":
+        args = pp.prepare(scene, "HDRP", "ShadowCaster", [], buffers, folder, scene=cascade.caster_values(), sun=cascade.sun)
+        units, slope = HDRP_DEPTH_BIAS
+        sign = -1.0 if a.flip_depth_bias else 1.0
+        depth = os.path.join(a.out, picture + ".f32")
+        pp.draw(args + ["--depth-bias", f"{sign * units:g},{sign * slope:g}"], buffers, None, log, (n, n), depth)
+        pp.shadow_map_texels(depth, texels, n)
+        if a.transpose_atlas:
+            t = pp.read_floats(texels)
+            with open(texels, "wb") as f:
+                f.write(struct.pack(f"<{n * n}f", *[t[c * n + r] for r in range(n) for c in range(n)]))
+    else:
+        args = pp.prepare(scene, "HDRP", "ForwardOnly", ["SHADOW_LOW"], buffers, folder, sun=cascade.sun)
+        check_buffer_reads(folder)
+        pp.draw(args + ["--depth-in", prepass], buffers, os.path.join(a.out, picture + ".png"), log,
+                depth_out=os.path.join(a.out, picture + "_depth.f32"))
+        with open(os.path.join(a.out, "hdrp_shadow.json"), "w") as f:
+            json.dump({"resolution": n, "texel": cascade.texel, "world_texel": cascade.world_texel, "depth_bias": HDRP_DEPTH_BIAS,
+                       "normal_bias": HDRP_NORMAL_BIAS, "radius": cascade.radius, "camera_view_proj": cam.view_proj,
+                       "object_to_world": o2w, "sun": cascade.sun}, f, indent=1)
+    Setting.shadow = Setting.atlas = None
 
 
 if __name__ == "__main__":

@@ -33,6 +33,9 @@ COMMANDS = {
     "ColorMask": ("--color-mask", "rgba", None),
 }
 COLOR_MASK = re.compile(r"^(0|r?g?b?a?)$")
+# A property a command reads ("ZClip [_ZClip]") that the drawing pipeline sets globally (CommandBuffer.SetGlobalFloat),
+# as a ShaderLab value: a caller that draws such a pass sets it here (pipeline_pass_hdrp.py: HDRP's _ZClip).
+GLOBAL_PROPERTIES = {}
 
 
 class RenderStateError(Exception):
@@ -56,6 +59,8 @@ def commands(text, where):
         if word not in COMMANDS:
             continue
         value = words[i + 1]
+        if value.startswith("[") and value[1:-1] in GLOBAL_PROPERTIES:
+            value = GLOBAL_PROPERTIES[value[1:-1]]
         if value.startswith("["):
             raise RenderStateError(f"{where}: {word} {value} reads a material property, which has no value here")
         accepted = COMMANDS[word][2]

@@ -218,12 +218,16 @@ const char* usageText() {
   --png FILE                     write the colour image as PNG
   --depth-out FILE               write the depth attachment after the last frame: W*H float32,
                                  row-major, top row first (the PNG's order)
+  --depth-in FILE                the depth attachment starts as FILE (--depth-out's layout) instead
+                                 of the clear: a depth prepass's depth kept for the next pass (one frame)
   --wireframe                    polygonMode LINE (needs fillModeNonSolid)
   --cull back|front|off          the drawn pass's render state, in ShaderLab's words (any case);
   --ztest less|lequal|equal|gequal|greater|notequal|always|never
   --zwrite on|off  --zclip on|off   defaults: ShaderLab's, Cull Back, ZTest LEqual, ZWrite On,
   --color-mask 0|RGBA|RGB|R|...  ZClip On, ColorMask RGBA. Front faces are clockwise in the
                                  (upright) image, as in Unity; ZClip off clamps depth
+  --depth-bias UNITS,SLOPE       Unity's depth bias (SetGlobalDepthBias(bias, slopeBias); ShaderLab's
+                                 Offset SLOPE, UNITS): away from the viewer, negated when reversed
   --depth reversed|forward       depth convention (default reversed, as Unity on Vulkan: near 1,
                                  far 0, cleared to 0, ZTest turned around: LEqual draws GEQUAL);
                                  the camera's projection must use the same one
@@ -323,11 +327,13 @@ Options parseOptions(int argc, char** argv) {
         else if (a == "--height") o.height = u32(16384);
         else if (a == "--png") o.pngPath = value();
         else if (a == "--depth-out") o.depthOutPath = value();
+        else if (a == "--depth-in") o.depthInPath = value();
         else if (a == "--wireframe") o.wireframe = true;
         else if (a == "--cull") o.state.cull = parseCull(a, value());
         else if (a == "--ztest") o.state.zTest = parseZTest(a, value());
         else if (a == "--zwrite") o.state.zWrite = parseOnOff(a, value());
         else if (a == "--zclip") o.state.zClip = parseOnOff(a, value());
+        else if (a == "--depth-bias") parseDepthBias(a, value(), o.state);
         else if (a == "--color-mask") o.state.colorMask = parseColorMask(a, value());
         else if (a == "--depth") o.state.depth = parseDepth(a, value());
         else if (a == "--storage") addStorage(o, value());
@@ -384,6 +390,8 @@ Options parseOptions(int argc, char** argv) {
     checkDumps(o);
     if (!o.depthOutPath.empty() && o.depthOutPath == o.pngPath)
         fail("--depth-out '" + o.depthOutPath + "' is also the --png file: give them different names");
+    if (!o.depthInPath.empty() && o.frames != 1)
+        fail("--depth-in loads the depth once: --frames must be 1 (" + std::to_string(o.frames) + " given)");
     std::vector<uint32_t> storageBindings;
     for (const StorageOption& s : o.storage) storageBindings.push_back(s.binding);
     checkImageBindings(o.images, o.samplers, storageBindings);

@@ -142,6 +142,25 @@ void writeDepthOut(const Gpu& gpu, const RenderTarget& target, const std::string
     std::printf("depth_out %s %u %u written %lld\n", path.c_str(), target.width, target.height, static_cast<long long>(written));
 }
 
+// --depth-in: the depth a previous pass wrote (--depth-out's file), checked and uploaded; prints how
+// many of its pixels differ from the clear.
+void loadDepthIn(const Gpu& gpu, const RenderTarget& target, const std::string& path) {
+    const std::vector<uint8_t> bytes = readFile(path);
+    const size_t count = static_cast<size_t>(target.width) * target.height;
+    if (bytes.size() != count * 4)
+        fail("--depth-in '" + path + "' has " + std::to_string(bytes.size()) + " bytes; expected " + std::to_string(count * 4) +
+             " (W*H float32 for " + std::to_string(target.width) + "x" + std::to_string(target.height) + ")");
+    std::vector<float> depth(count);
+    std::memcpy(depth.data(), bytes.data(), bytes.size());
+    for (size_t i = 0; i < count; ++i)
+        if (!(depth[i] >= 0.0f && depth[i] <= 1.0f))
+            fail("--depth-in '" + path + "': pixel " + std::to_string(i) + " is " + std::to_string(depth[i]) +
+                 ", outside a depth attachment's [0, 1]");
+    uploadDepth(gpu, target, depth);
+    const auto written = std::count_if(depth.begin(), depth.end(), [&](float d) { return d != target.depthClear; });
+    std::printf("depth_in %s %u %u written %lld\n", path.c_str(), target.width, target.height, static_cast<long long>(written));
+}
+
 int run(const Options& o) {
     if (o.listDevices) {
         listDevices();
@@ -212,7 +231,9 @@ int run(const Options& o) {
     }
     desc.frag = loadShader(gpu, o.fragPath, 4, o.fragEntry, "frag");
 
-    RenderTarget target = createRenderTarget(gpu, o.width, o.height, depthClearValue(o.state.depth), !o.depthOutPath.empty());
+    RenderTarget target = createRenderTarget(gpu, o.width, o.height, depthClearValue(o.state.depth), !o.depthOutPath.empty(),
+                                             !o.depthInPath.empty());
+    if (!o.depthInPath.empty()) loadDepthIn(gpu, target, o.depthInPath);
     Pipeline pipeline = createPipeline(gpu, desc, target, inputs, storage, sampled.descriptors);
     std::vector<ComputePass> compute = createComputePasses(gpu, o.computes, pipeline);
     DrawWork work = prepareWork(o, gpu);

@@ -167,6 +167,9 @@ Pipeline createPipeline(const Gpu& gpu, const PipelineDesc& d, const RenderTarge
     rs.cullMode = vulkanCullMode(d.state.cull);
     rs.frontFace = VK_FRONT_FACE_CLOCKWISE;   // Unity's front faces: clockwise in the upright image
     rs.depthClampEnable = d.state.zClip ? VK_FALSE : VK_TRUE;
+    rs.depthBiasEnable = d.state.depthBiasUnits != 0.0f || d.state.depthBiasSlope != 0.0f;
+    rs.depthBiasConstantFactor = vulkanDepthBias(d.state.depthBiasUnits, d.state.depth);
+    rs.depthBiasSlopeFactor = vulkanDepthBias(d.state.depthBiasSlope, d.state.depth);
     rs.lineWidth = 1.0f;
     VkPipelineMultisampleStateCreateInfo ms{VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO};
     ms.rasterizationSamples = VK_SAMPLE_COUNT_1_BIT;

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
+#include <cstdlib>
 #include <utility>
 #include <vector>
 
@@ -94,6 +96,25 @@ VkCompareOp vulkanCompareOp(ZTest test, DepthConvention depth) {
 
 float depthClearValue(DepthConvention depth) { return depth == DepthConvention::Reversed ? 0.0f : 1.0f; }
 
+void parseDepthBias(const std::string& option, const std::string& value, RenderState& state) {
+    const size_t comma = value.find(',');
+    float v[2] = {0.0f, 0.0f};
+    bool ok = comma != std::string::npos;
+    for (int i = 0; i < 2 && ok; ++i) {
+        const std::string part = i == 0 ? value.substr(0, comma) : value.substr(comma + 1);
+        char* end = nullptr;
+        v[i] = std::strtof(part.c_str(), &end);
+        ok = !part.empty() && end == part.c_str() + part.size() && std::isfinite(v[i]) && std::fabs(v[i]) <= 1000.0f;
+    }
+    if (!ok) fail(option + ": expected UNITS,SLOPE (finite, each within -1000..1000), got '" + value + "'");
+    state.depthBiasUnits = v[0];
+    state.depthBiasSlope = v[1];
+}
+
+float vulkanDepthBias(float unityBias, DepthConvention depth) {
+    return depth == DepthConvention::Reversed ? -unityBias : unityBias;
+}
+
 std::string describeRenderState(const RenderState& s) {
     static const char* culls[] = {"off", "front", "back"};
     static const char* compares[] = {"never", "less", "equal", "less_or_equal", "greater", "not_equal", "greater_or_equal", "always"};
@@ -110,6 +131,8 @@ std::string describeRenderState(const RenderState& s) {
     line += std::string(" zclip ") + (s.zClip ? "on" : "off");
     line += " color_mask " + (mask.empty() ? std::string("0") : mask);
     line += std::string(" depth ") + (s.depth == DepthConvention::Reversed ? "reversed" : "forward");
+    if (s.depthBiasUnits != 0.0f || s.depthBiasSlope != 0.0f)
+        line += " depth_bias " + std::to_string(s.depthBiasUnits) + " " + std::to_string(s.depthBiasSlope);
     return line;
 }
 

@@ -29,6 +29,9 @@ struct RenderState {
     bool zClip = true;       // false: depth clamp instead of clipping at near/far (ZClip False)
     uint32_t colorMask = VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT | VK_COLOR_COMPONENT_B_BIT | VK_COLOR_COMPONENT_A_BIT;
     DepthConvention depth = DepthConvention::Reversed;
+    // Unity's depth bias (CommandBuffer.SetGlobalDepthBias(bias, slopeBias), ShaderLab's Offset slope, units):
+    // positive moves depth away from the viewer, so it is negated under reversed depth, as Unity does.
+    float depthBiasUnits = 0.0f, depthBiasSlope = 0.0f;
 };
 
 // Each parses one option's value (ShaderLab's words, any case); a bad value throws gt::Error
@@ -38,6 +41,10 @@ ZTest parseZTest(const std::string& option, const std::string& value);
 bool parseOnOff(const std::string& option, const std::string& value);
 uint32_t parseColorMask(const std::string& option, const std::string& value);
 DepthConvention parseDepth(const std::string& option, const std::string& value);
+// "UNITS,SLOPE", each finite, |x| <= 1000, into state.depthBiasUnits / depthBiasSlope.
+void parseDepthBias(const std::string& option, const std::string& value, RenderState& state);
+// Vulkan's depthBiasConstantFactor / depthBiasSlopeFactor for the state (its convention's sign).
+float vulkanDepthBias(float unityBias, DepthConvention depth);
 
 VkCullModeFlags vulkanCullMode(CullMode cull);
 // ZTest in the run's depth convention (reversed: Less <-> Greater, LEqual <-> GEqual).

@@ -1,5 +1,9 @@
 #include "target.hpp"
 
+#include <cstring>
+#include <string>
+
+#include "buffers.hpp"
 #include "check.hpp"
 
 namespace gt {
@@ -59,16 +63,19 @@ void destroyImage(const Gpu& gpu, Image& img) {
 
 }  // namespace
 
-RenderTarget createRenderTarget(const Gpu& gpu, uint32_t width, uint32_t height, float depthClear, bool depthReadable) {
+RenderTarget createRenderTarget(const Gpu& gpu, uint32_t width, uint32_t height, float depthClear, bool depthReadable,
+                                bool depthLoaded) {
     RenderTarget t;
     t.depthReadable = depthReadable;
+    t.depthLoaded = depthLoaded;
     t.width = width;
     t.height = height;
     t.depthClear = depthClear;
     t.color = createImage(gpu, width, height, kColorFormat,
                           VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT, VK_IMAGE_ASPECT_COLOR_BIT);
     t.depth = createImage(gpu, width, height, kDepthFormat,
-                          VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | (depthReadable ? VK_IMAGE_USAGE_TRANSFER_SRC_BIT : 0),
+                          VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | (depthReadable ? VK_IMAGE_USAGE_TRANSFER_SRC_BIT : 0) |
+                              (depthLoaded ? VK_IMAGE_USAGE_TRANSFER_DST_BIT : 0),
                           VK_IMAGE_ASPECT_DEPTH_BIT);
 
     VkAttachmentDescription att[2]{};
@@ -83,6 +90,10 @@ RenderTarget createRenderTarget(const Gpu& gpu, uint32_t width, uint32_t height,
     att[1] = att[0];
     att[1].format = kDepthFormat;
     att[1].storeOp = depthReadable ? VK_ATTACHMENT_STORE_OP_STORE : VK_ATTACHMENT_STORE_OP_DONT_CARE;
+    if (depthLoaded) {  // uploadDepth leaves it in the attachment layout
+        att[1].loadOp = VK_ATTACHMENT_LOAD_OP_LOAD;
+        att[1].initialLayout = VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL;
+    }
     att[1].finalLayout = VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL;
     VkAttachmentReference colorRef{0, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
     VkAttachmentReference depthRef{1, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL};
@@ -128,6 +139,41 @@ RenderTarget createRenderTarget(const Gpu& gpu, uint32_t width, uint32_t height,
     fb.layers = 1;
     GT_VK(vkCreateFramebuffer(gpu.device, &fb, nullptr, &t.framebuffer));
     return t;
+}
+
+void depthBarrier(VkCommandBuffer cmd, const RenderTarget& t, VkImageLayout from, VkImageLayout to, VkAccessFlags srcAccess,
+                  VkAccessFlags dstAccess, VkPipelineStageFlags srcStage, VkPipelineStageFlags dstStage) {
+    VkImageMemoryBarrier b{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER};
+    b.srcAccessMask = srcAccess;
+    b.dstAccessMask = dstAccess;
+    b.oldLayout = from;
+    b.newLayout = to;
+    b.srcQueueFamilyIndex = b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+    b.image = t.depth.image;
+    b.subresourceRange = {VK_IMAGE_ASPECT_DEPTH_BIT, 0, 1, 0, 1};
+    vkCmdPipelineBarrier(cmd, srcStage, dstStage, 0, 0, nullptr, 0, nullptr, 1, &b);
+}
+
+void uploadDepth(const Gpu& gpu, const RenderTarget& t, const std::vector<float>& depth) {
+    if (!t.depthLoaded) fail("uploadDepth: the render target was created to clear its depth");
+    const VkDeviceSize size = static_cast<VkDeviceSize>(t.width) * t.height * 4;
+    if (depth.size() * 4 != size) fail("uploadDepth: " + std::to_string(depth.size()) + " floats for a " +
+                                       std::to_string(t.width) + "x" + std::to_string(t.height) + " target");
+    Buffer host = createHostBuffer(gpu, size, VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
+    std::memcpy(host.mapped, depth.data(), size);
+    submitOnce(gpu, [&](VkCommandBuffer cmd) {
+        depthBarrier(cmd, t, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_ACCESS_HOST_WRITE_BIT,
+                     VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_HOST_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT);
+        VkBufferImageCopy region{};
+        region.imageSubresource = {VK_IMAGE_ASPECT_DEPTH_BIT, 0, 0, 1};
+        region.imageExtent = {t.width, t.height, 1};
+        vkCmdCopyBufferToImage(cmd, host.buffer, t.depth.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
+        depthBarrier(cmd, t, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL,
+                     VK_ACCESS_TRANSFER_WRITE_BIT,
+                     VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT,
+                     VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT);
+    });
+    destroyBuffer(gpu, host);
 }
 
 void destroyRenderTarget(const Gpu& gpu, RenderTarget& t) {

@@ -1,6 +1,8 @@
 // The offscreen render target: RGBA8 colour + D32 depth, one render pass that clears both to
 // the sky colour / far plane and leaves the colour image ready to be copied out.
 #pragma once
+#include <vector>
+
 #include "device.hpp"
 
 namespace gt {
@@ -21,13 +23,20 @@ struct RenderTarget {
     Image color, depth;
     float depthClear = 1.0f;  // 0 with reversed depth (near 1, far 0)
     bool depthReadable = false;  // --depth-out: depth stored after the pass and copyable (readDepth)
+    bool depthLoaded = false;    // --depth-in: the pass loads depth (uploadDepth) instead of clearing it
     VkRenderPass renderPass = VK_NULL_HANDLE;
     VkFramebuffer framebuffer = VK_NULL_HANDLE;
 };
 
 // depthReadable: the depth attachment is stored and can be copied out after the pass (--depth-out).
+// depthLoaded: the render pass loads depth instead of clearing it; fill it first with uploadDepth.
 RenderTarget createRenderTarget(const Gpu& gpu, uint32_t width, uint32_t height, float depthClear,
-                                bool depthReadable = false);
+                                bool depthReadable = false, bool depthLoaded = false);
+// The depth attachment's layout change from -> to, ordered by the access and stage masks.
+void depthBarrier(VkCommandBuffer cmd, const RenderTarget& target, VkImageLayout from, VkImageLayout to,
+                  VkAccessFlags srcAccess, VkAccessFlags dstAccess, VkPipelineStageFlags srcStage, VkPipelineStageFlags dstStage);
+// --depth-in: copies W*H depth floats (rows as readDepth returns them) into the depth attachment.
+void uploadDepth(const Gpu& gpu, const RenderTarget& target, const std::vector<float>& depth);
 void destroyRenderTarget(const Gpu& gpu, RenderTarget& target);
 
 // Begins the render pass with the clears (sky colour, depth 1, or 0 when reversed).
