@@ -20,11 +20,12 @@ shadow_map (URP's ShadowCaster drawn from the sun: OUT/shadow_map.f32, no PNG) a
 _MAIN_LIGHT_SHADOWS sampling it; OUT/lit_shadows_depth.f32 its camera depth; OUT/shadow.json the
 light's matrices), both under --shadow-sun-elevation/--shadow-sun-azimuth; depth_normals (only with --only:
 URP's DepthNormalsOnly, _GBUFFER_NORMALS_OCT, its depth in OUT/depth_normals_depth.f32, its view in
-OUT/depth_normals_view.json), under --object-yaw.
+OUT/depth_normals_view.json) and depth_normals_snorm (only with --only: the base variant into R8G8B8A8_SNorm, the
+PNG's bytes signed; _depth.f32, _view.json likewise), under --object-yaw.
 Uniform blocks are bound as storage buffers (--uniform-blocks storage: the harness rewrites the
 blocks, same offsets): the rig's lavapipe rule (one compile per SPIR-V, whatever the values) on every device.
 
-  gt pipeline_pass [--out DIR] [--only depth|lit|normals|lit_dxc|builtin_lit|shadow_map|lit_shadows|depth_normals]...
+  gt pipeline_pass [--out DIR] [--only depth|lit|normals|lit_dxc|builtin_lit|shadow_map|lit_shadows|depth_normals|depth_normals_snorm]...
       [--sun-elevation DEG] [--sun-azimuth DEG] [--shadow-sun-elevation DEG] [--shadow-sun-azimuth DEG] [--light-color R,G,B]
       [--object-yaw DEG] [--leave-default NAME]... [--fill-from NAME=OTHER]... [--transpose NAME]...
 --leave-default / --fill-from / --transpose break the scene on purpose (the tests' broken inputs): a
@@ -799,15 +800,21 @@ PICTURES = [("depth", "URP", "DepthOnly", [], "glslang"), ("lit", "URP", "Forwar
             ("builtin_lit", "Builtin", "ForwardBase", [], "glslang"),
             ("shadow_map", "URP", "ShadowCaster", [], "glslang"),
             ("lit_shadows", "URP", "ForwardLit", ["_MAIN_LIGHT_SHADOWS"], "glslang"),
-            ("depth_normals", "URP", "DepthNormalsOnly", ["_GBUFFER_NORMALS_OCT"], "glslang")]
+            ("depth_normals", "URP", "DepthNormalsOnly", ["_GBUFFER_NORMALS_OCT"], "glslang"),
+            ("depth_normals_snorm", "URP", "DepthNormalsOnly", [], "glslang")]
 # depth_normals: URP's DepthNormalsOnly with _GBUFFER_NORMALS_OCT, the variant whose output fits the harness's
 # RGBA8 UNORM target as it fits URP's (UniversalRendererData's Accurate G-buffer Normals: R8G8B8A8_UNorm, the
 # octahedral normal's two 12-bit coordinates in RGB 8:8:8). URP's default (Forward, that option off) draws the
 # base variant into R8G8B8A8_SNorm (DepthNormalOnlyPass.GetGraphicsFormat): signed, which the harness cannot
 # hold. Its camera depth goes to depth_normals_depth.f32 and the view to depth_normals_view.json (the test
 # recovers each pixel's world position). Drawn only when named (--only depth_normals): its own fixture.
-ON_REQUEST = {"depth_normals"}
-DEPTH_PICTURES = {"depth_normals"}
+# depth_normals_snorm: the base variant, which a default asset draws, into the target URP 14 gives it
+# (UniversalRenderer, not deferred: normalDescriptor.graphicsFormat = DepthNormalOnlyPass.GetGraphicsFormat(),
+# R8G8B8A8_SNorm where the device renders it, as every Vulkan device does): the normal's [-1, 1] as signed
+# bytes, which DeclareNormalsTexture's LoadSceneNormals returns as they are (no decode, no normalize).
+ON_REQUEST = {"depth_normals", "depth_normals_snorm"}
+DEPTH_PICTURES = {"depth_normals", "depth_normals_snorm"}
+COLOR_FORMATS = {"depth_normals_snorm": "R8G8B8A8_SNORM"}
 # shadow_map: URP's ShadowCaster (base variant: a directional light) drawn from the main light into a
 # SHADOW_RESOLUTION^2 depth map (--depth-out; no colour, ColorMask 0); lit_shadows: ForwardLit's
 # _MAIN_LIGHT_SHADOWS variant sampling it, its LightShadows block filled as URP does, and its camera
@@ -815,10 +822,11 @@ DEPTH_PICTURES = {"depth_normals"}
 SHADOW_PICTURES = {"shadow_map": "lit_shadows"}
 
 
-def draw(args, buffers, png, log, size=(WIDTH, HEIGHT), depth_out=None):
+def draw(args, buffers, png, log, size=(WIDTH, HEIGHT), depth_out=None, color_format=None):
     harness = os.path.join(PKG_DIR, ".build", "harness", "gt-harness")
     cmd = [harness] + args + ["--buffers", buffers, "--patches", str(TILES * TILES), "--width", str(size[0]),
                               "--height", str(size[1])]
+    cmd += ["--color-format", color_format] if color_format else []
     cmd += ["--png", png] if png else []
     cmd += ["--depth-out", depth_out] if depth_out else []
     r = subprocess.run(cmd, capture_output=True, text=True)
@@ -914,7 +922,8 @@ def main(argv=None):
                  depth_out=os.path.join(a.out, picture + "_depth.f32"))
         elif picture in DEPTH_PICTURES:
             args = prepare(a, pipeline, pass_name, keywords, buffers, folder, compiler)
-            draw(args, buffers, os.path.join(a.out, picture + ".png"), log, depth_out=os.path.join(a.out, picture + "_depth.f32"))
+            draw(args, buffers, os.path.join(a.out, picture + ".png"), log, depth_out=os.path.join(a.out, picture + "_depth.f32"),
+                 color_format=COLOR_FORMATS.get(picture))
             write_view(a, buffers, os.path.join(a.out, picture + "_view.json"))
         else:
             args = prepare(a, pipeline, pass_name, keywords, buffers, folder, compiler)

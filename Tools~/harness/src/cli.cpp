@@ -218,6 +218,8 @@ const char* usageText() {
   --png FILE                     write the colour image as PNG
   --depth-out FILE               write the depth attachment after the last frame: W*H float32,
                                  row-major, top row first (the PNG's order)
+  --color-format R8G8B8A8_UNORM|R8G8B8A8_SNORM   the colour attachment (default UNORM); --png
+                                 writes its bytes as stored (SNORM: two's complement)
   --wireframe                    polygonMode LINE (needs fillModeNonSolid)
   --cull back|front|off          the drawn pass's render state, in ShaderLab's words (any case);
   --ztest less|lequal|equal|gequal|greater|notequal|always|never
@@ -280,6 +282,13 @@ UniformBlocks parseUniformBlocks(const std::string& option, const std::string& v
     if (v == "storage") return UniformBlocks::Storage;
     fail(option + " '" + v + "': expected auto, uniform or storage");
 }
+
+// The colour attachments a pipeline's pass draws into that the rig reads back (4 bytes a texel).
+VkFormat parseColorFormat(const std::string& option, const std::string& v) {
+    if (v == "R8G8B8A8_UNORM") return VK_FORMAT_R8G8B8A8_UNORM;
+    if (v == "R8G8B8A8_SNORM") return VK_FORMAT_R8G8B8A8_SNORM;
+    fail(option + ": expected R8G8B8A8_UNORM or R8G8B8A8_SNORM, got '" + v + "'");
+}
 }  // namespace
 
 Options parseOptions(int argc, char** argv) {
@@ -323,6 +332,7 @@ Options parseOptions(int argc, char** argv) {
         else if (a == "--height") o.height = u32(16384);
         else if (a == "--png") o.pngPath = value();
         else if (a == "--depth-out") o.depthOutPath = value();
+        else if (a == "--color-format") o.colorFormat = parseColorFormat(a, value());
         else if (a == "--wireframe") o.wireframe = true;
         else if (a == "--cull") o.state.cull = parseCull(a, value());
         else if (a == "--ztest") o.state.zTest = parseZTest(a, value());

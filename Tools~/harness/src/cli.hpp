@@ -69,6 +69,7 @@ struct Options {
     uint32_t width = 256, height = 256;
     std::string pngPath;
     std::string depthOutPath;  // --depth-out FILE: the depth attachment's D32 floats after the last frame
+    VkFormat colorFormat = VK_FORMAT_R8G8B8A8_UNORM;  // --color-format: the colour attachment (4 bytes a texel)
     bool wireframe = false;
     RenderState state;  // --cull --ztest --zwrite --zclip --color-mask --depth (render_state.hpp)
 

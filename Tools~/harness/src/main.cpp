@@ -212,7 +212,8 @@ int run(const Options& o) {
     }
     desc.frag = loadShader(gpu, o.fragPath, 4, o.fragEntry, "frag");
 
-    RenderTarget target = createRenderTarget(gpu, o.width, o.height, depthClearValue(o.state.depth), !o.depthOutPath.empty());
+    RenderTarget target = createRenderTarget(gpu, o.width, o.height, depthClearValue(o.state.depth), !o.depthOutPath.empty(),
+                                             o.colorFormat);
     Pipeline pipeline = createPipeline(gpu, desc, target, inputs, storage, sampled.descriptors);
     std::vector<ComputePass> compute = createComputePasses(gpu, o.computes, pipeline);
     DrawWork work = prepareWork(o, gpu);

@@ -59,20 +59,22 @@ void destroyImage(const Gpu& gpu, Image& img) {
 
 }  // namespace
 
-RenderTarget createRenderTarget(const Gpu& gpu, uint32_t width, uint32_t height, float depthClear, bool depthReadable) {
+RenderTarget createRenderTarget(const Gpu& gpu, uint32_t width, uint32_t height, float depthClear, bool depthReadable,
+                                VkFormat colorFormat) {
     RenderTarget t;
+    t.colorFormat = colorFormat;
     t.depthReadable = depthReadable;
     t.width = width;
     t.height = height;
     t.depthClear = depthClear;
-    t.color = createImage(gpu, width, height, kColorFormat,
+    t.color = createImage(gpu, width, height, colorFormat,
                           VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT, VK_IMAGE_ASPECT_COLOR_BIT);
     t.depth = createImage(gpu, width, height, kDepthFormat,
                           VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | (depthReadable ? VK_IMAGE_USAGE_TRANSFER_SRC_BIT : 0),
                           VK_IMAGE_ASPECT_DEPTH_BIT);
 
     VkAttachmentDescription att[2]{};
-    att[0].format = kColorFormat;
+    att[0].format = colorFormat;
     att[0].samples = VK_SAMPLE_COUNT_1_BIT;
     att[0].loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
     att[0].storeOp = VK_ATTACHMENT_STORE_OP_STORE;

@@ -5,7 +5,7 @@
 
 namespace gt {
 
-constexpr VkFormat kColorFormat = VK_FORMAT_R8G8B8A8_UNORM;
+constexpr VkFormat kColorFormat = VK_FORMAT_R8G8B8A8_UNORM;  // the default; --color-format picks another of 4 bytes
 constexpr VkFormat kDepthFormat = VK_FORMAT_D32_SFLOAT;
 // Sky colour of the clear, also used to tell drawn pixels from background (0..255 per channel).
 constexpr float kSky[4] = {0.55f, 0.70f, 0.90f, 1.0f};
@@ -19,6 +19,7 @@ struct Image {
 struct RenderTarget {
     uint32_t width = 0, height = 0;
     Image color, depth;
+    VkFormat colorFormat = kColorFormat;
     float depthClear = 1.0f;  // 0 with reversed depth (near 1, far 0)
     bool depthReadable = false;  // --depth-out: depth stored after the pass and copyable (readDepth)
     VkRenderPass renderPass = VK_NULL_HANDLE;
@@ -27,7 +28,7 @@ struct RenderTarget {
 
 // depthReadable: the depth attachment is stored and can be copied out after the pass (--depth-out).
 RenderTarget createRenderTarget(const Gpu& gpu, uint32_t width, uint32_t height, float depthClear,
-                                bool depthReadable = false);
+                                bool depthReadable = false, VkFormat colorFormat = kColorFormat);
 void destroyRenderTarget(const Gpu& gpu, RenderTarget& target);
 
 // Begins the render pass with the clears (sky colour, depth 1, or 0 when reversed).
