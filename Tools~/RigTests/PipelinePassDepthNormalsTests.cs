@@ -4,7 +4,11 @@
 // is not the world normal. Its output is decoded as URP decodes _CameraNormalsTexture and compared with
 // Core's normal (TerrainSurfaceQuery) at the world position the pass's own depth gives. The base variant, which a
 // default (Forward) asset draws, goes into the R8G8B8A8_SNorm target URP gives it and is read back as URP reads it.
+// The _WRITE_RENDERING_LAYERS variants of DepthNormalsOnly and ForwardLit write the draw's rendering layers into
+// the second target URP binds with decal layers on, and their first target as the plain variants do.
 using System;
+using System.Globalization;
+using System.Text.RegularExpressions;
 using System.IO;
 using System.Linq;
 using System.Text.Json;
@@ -15,7 +19,8 @@ namespace GregoryTerrain.Rig.Tests
     [TestFixture]
     public class PipelinePassDepthNormalsTests
     {
-        static readonly string[] Scene = { "--only", "depth_normals", "--only", "depth_normals_snorm", "--object-yaw", "30" };
+        static readonly string[] Scene = { "--only", "depth_normals", "--only", "depth_normals_snorm", "--only", "depth_normals_layers",
+                                           "--only", "lit", "--only", "lit_layers", "--object-yaw", "30" };
 
         // The bounds, in degrees. Encoding: two 12-bit octahedral coordinates, a step of 2/4095 in [-1, 1]: at most
         // ~0.06 degrees where the octahedron stretches most, ~0.03 on average. Position from depth: float32 reversed
@@ -120,6 +125,55 @@ namespace GregoryTerrain.Rig.Tests
             Assert.That(mean, Is.LessThan(SignedMeanDegrees), "mean angle (degrees)");
             Assert.That(p99, Is.LessThan(SignedP99Degrees), "99th percentile angle (degrees)");
             Assert.That(max, Is.LessThan(MaxDegrees), "largest angle (degrees)");
+        }
+
+        /// <summary>The byte URP's R8_UNorm rendering-layers target holds for the scene's mask: EncodeMeshRenderingLayer
+        /// (ShaderVariablesFunctions.hlsl: mask AND _RenderingLayerMaxInt, times its reciprocal) stored as UNORM8, from
+        /// pipeline_pass.py's RENDERING_LAYER_MASK and RENDERING_LAYER_BITS.</summary>
+        static int ExpectedLayersByte()
+        {
+            string script = File.ReadAllText(Path.Combine(HarnessRun.PackageRoot(), "Tools~", "rig", "pipeline_pass.py"));
+            uint mask = uint.Parse(Regex.Match(script, @"^RENDERING_LAYER_MASK = 0x([0-9A-Fa-f]+)", RegexOptions.Multiline).Groups[1].Value, NumberStyles.HexNumber);
+            int bits = int.Parse(Regex.Match(script, @"^RENDERING_LAYER_BITS = (\d+)", RegexOptions.Multiline).Groups[1].Value);
+            uint max = (1u << bits) - 1;
+            Assert.That(bits, Is.EqualTo(8), "the scene's R8_UNorm target holds 8 layers");
+            return (int)Math.Round((mask & max) / (double)max * 255);
+        }
+
+        [TestCase("depth_normals_layers", "depth_normals_snorm")]
+        [TestCase("lit_layers", "lit")]
+        public void TheRenderingLayersVariant_WritesTheDrawsLayersInTheSecondTarget_AndTheFirstAsThePlainVariant(string picture, string plain)
+        {
+            JsonElement m = PipelinePassRun.Manifest(_out, picture);
+            Assert.That(m.GetProperty("variant").GetString(), Is.EqualTo("_WRITE_RENDERING_LAYERS"));
+            Assert.That(PipelinePassRun.Strings(m.GetProperty("defaulted_read")), Is.Empty, "a member some stage reads was left to its default");
+            Assert.That(PipelinePassRun.Strings(m.GetProperty("reads").GetProperty("frag")),
+                Is.SupersetOf(new[] { "UnityPerDraw.unity_RenderingLayer", "$Global._RenderingLayerMaxInt", "$Global._RenderingLayerRcpMaxInt" }),
+                "EncodeMeshRenderingLayer(GetMeshRenderingLayer()) reads the draw's mask and the target's range");
+            Assert.That(File.ReadLines(Path.Combine(_out, picture, "harness.log")).First(), Does.Contain("--target1 R8_UNORM:"),
+                        "RenderingLayerUtils.GetFormat(Bits8)'s target");
+
+            byte[] layers = File.ReadAllBytes(Path.Combine(_out, picture + "_target1.bin"));
+            byte[] depth = File.ReadAllBytes(Path.Combine(_out, "depth_normals_snorm_depth.f32"));   // the same view and geometry
+            Assert.That(layers.Length, Is.EqualTo(depth.Length / 4), "one byte per pixel");
+            int expected = ExpectedLayersByte(), covered = 0, wrongInside = 0, writtenOutside = 0, first = -1;
+            for (int p = 0; p < layers.Length; p++)
+            {
+                bool inside = BitConverter.ToSingle(depth, 4 * p) > 0;
+                covered += inside ? 1 : 0;
+                bool bad = inside ? layers[p] != expected : layers[p] != 0;
+                wrongInside += inside && bad ? 1 : 0;
+                writtenOutside += !inside && bad ? 1 : 0;
+                if (bad && first < 0) first = p;
+            }
+            string where = first < 0 ? "" : $"; first at ({first % _signed.Width}, {first / _signed.Width}) = {layers[first]}";
+            TestContext.Out.WriteLine($"{picture}: second target {expected} expected at {covered} covered pixels: {wrongInside} differ, {writtenOutside} written outside{where}");
+            Assert.That(covered, Is.GreaterThan(layers.Length / 5), "the terrain covers a fifth of the picture or more");
+            Assert.That(wrongInside, Is.Zero, $"covered pixels whose rendering layers are not {expected}{where}");
+            Assert.That(writtenOutside, Is.Zero, "pixels written outside the terrain (the target is cleared to 0)");
+
+            RigPng withLayers = RigPng.Read(Path.Combine(_out, picture + ".png")), without = RigPng.Read(Path.Combine(_out, plain + ".png"));
+            Assert.That(withLayers.Rgba, Is.EqualTo(without.Rgba), $"{picture}'s first target equals {plain}'s");
         }
     }
 }

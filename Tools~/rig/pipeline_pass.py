@@ -21,11 +21,12 @@ _MAIN_LIGHT_SHADOWS sampling it; OUT/lit_shadows_depth.f32 its camera depth; OUT
 light's matrices), both under --shadow-sun-elevation/--shadow-sun-azimuth; depth_normals (only with --only:
 URP's DepthNormalsOnly, _GBUFFER_NORMALS_OCT, its depth in OUT/depth_normals_depth.f32, its view in
 OUT/depth_normals_view.json) and depth_normals_snorm (only with --only: the base variant into R8G8B8A8_SNorm, the
-PNG's bytes signed; _depth.f32, _view.json likewise), under --object-yaw.
+PNG's bytes signed; _depth.f32, _view.json likewise), depth_normals_layers and lit_layers (only with --only: the
+_WRITE_RENDERING_LAYERS variants, their second target's R8 bytes in OUT/<picture>_target1.bin), under --object-yaw.
 Uniform blocks are bound as storage buffers (--uniform-blocks storage: the harness rewrites the
 blocks, same offsets): the rig's lavapipe rule (one compile per SPIR-V, whatever the values) on every device.
 
-  gt pipeline_pass [--out DIR] [--only depth|lit|normals|lit_dxc|builtin_lit|shadow_map|lit_shadows|depth_normals|depth_normals_snorm]...
+  gt pipeline_pass [--out DIR] [--only depth|lit|normals|lit_dxc|builtin_lit|shadow_map|lit_shadows|depth_normals|depth_normals_snorm|depth_normals_layers|lit_layers]...
       [--sun-elevation DEG] [--sun-azimuth DEG] [--shadow-sun-elevation DEG] [--shadow-sun-azimuth DEG] [--light-color R,G,B]
       [--object-yaw DEG] [--leave-default NAME]... [--fill-from NAME=OTHER]... [--transpose NAME]...
 --leave-default / --fill-from / --transpose break the scene on purpose (the tests' broken inputs): a
@@ -341,6 +342,13 @@ def urp_globals(cam, o2w, o2c, sun, light_color):
         # glslang's drops the unused load.
         "unity_LightData": [0.0, 0.0, 1.0, 0.0],
         "_GlobalMipBias": [0.0, 1.0],                    # Input.hlsl: (bias, 2^bias)
+        # UnityInput.hlsl (UnityPerDraw): x holds the draw's rendering layer mask as bits (GetMeshRenderingLayer:
+        # asuint(unity_RenderingLayer.x)), from RenderParams.renderingLayerMask for Graphics.RenderPrimitives.
+        "unity_RenderingLayer": [uint_bits_as_float(RENDERING_LAYER_MASK), 0.0, 0.0, 0.0],
+        # Input.hlsl:112-113, RenderingLayerUtils.SetupProperties(maskSize) before the passes that write the
+        # rendering-layers target: 2^bits - 1 and its reciprocal (8 bits: the default 8 layers' R8_UNorm target).
+        "_RenderingLayerMaxInt": (1 << RENDERING_LAYER_BITS) - 1,
+        "_RenderingLayerRcpMaxInt": 1.0 / ((1 << RENDERING_LAYER_BITS) - 1),
         # The package's own (UnityAdapterCommon.hlsl:17-29, GregoryTerrainRenderer sets them):
         # object <-> world of the renderer's Transform, the camera's object-to-clip and screen size
         # that choose tessellation factors.
@@ -349,6 +357,17 @@ def urp_globals(cam, o2w, o2c, sun, light_color):
         "_GtTessObjectToClip": o2c,
         "_GtTessScreenSize": [w, h, 1.0 / w, 1.0 / h],
     }
+
+
+# The draw's rendering layers: layers 0, 2, 5 and 7, and bit 8, which an 8-bit target drops
+# (EncodeMeshRenderingLayer masks with _RenderingLayerMaxInt). Unity's default mask is 1 (layer 0).
+RENDERING_LAYER_MASK = 0x1A5
+RENDERING_LAYER_BITS = 8     # RenderingLayerUtils.MaskSize.Bits8: R8_UNorm (GetFormat), up to 8 layers defined
+
+
+def uint_bits_as_float(u):
+    """The float whose bits are u (Unity stores unity_RenderingLayer's mask so; small masks are denormals)."""
+    return struct.unpack("<f", struct.pack("<I", u))[0]
 
 
 # URP's main-light shadow, one cascade, as URP 14 sets it. C# under
@@ -801,7 +820,9 @@ PICTURES = [("depth", "URP", "DepthOnly", [], "glslang"), ("lit", "URP", "Forwar
             ("shadow_map", "URP", "ShadowCaster", [], "glslang"),
             ("lit_shadows", "URP", "ForwardLit", ["_MAIN_LIGHT_SHADOWS"], "glslang"),
             ("depth_normals", "URP", "DepthNormalsOnly", ["_GBUFFER_NORMALS_OCT"], "glslang"),
-            ("depth_normals_snorm", "URP", "DepthNormalsOnly", [], "glslang")]
+            ("depth_normals_snorm", "URP", "DepthNormalsOnly", [], "glslang"),
+            ("depth_normals_layers", "URP", "DepthNormalsOnly", ["_WRITE_RENDERING_LAYERS"], "glslang"),
+            ("lit_layers", "URP", "ForwardLit", ["_WRITE_RENDERING_LAYERS"], "glslang")]
 # depth_normals: URP's DepthNormalsOnly with _GBUFFER_NORMALS_OCT, the variant whose output fits the harness's
 # RGBA8 UNORM target as it fits URP's (UniversalRendererData's Accurate G-buffer Normals: R8G8B8A8_UNorm, the
 # octahedral normal's two 12-bit coordinates in RGB 8:8:8). URP's default (Forward, that option off) draws the
@@ -812,9 +833,14 @@ PICTURES = [("depth", "URP", "DepthOnly", [], "glslang"), ("lit", "URP", "Forwar
 # (UniversalRenderer, not deferred: normalDescriptor.graphicsFormat = DepthNormalOnlyPass.GetGraphicsFormat(),
 # R8G8B8A8_SNorm where the device renders it, as every Vulkan device does): the normal's [-1, 1] as signed
 # bytes, which DeclareNormalsTexture's LoadSceneNormals returns as they are (no decode, no normalize).
-ON_REQUEST = {"depth_normals", "depth_normals_snorm"}
-DEPTH_PICTURES = {"depth_normals", "depth_normals_snorm"}
-COLOR_FORMATS = {"depth_normals_snorm": "R8G8B8A8_SNORM"}
+# depth_normals_layers, lit_layers: the _WRITE_RENDERING_LAYERS variants, drawn as URP 14 draws them with decal
+# layers on (DepthNormalOnlyPass.Setup(depth, normal, decalLayer) / DrawObjectsWithRenderingLayersPass: the
+# keyword on and a second colour target, RenderingLayerUtils.GetFormat(Bits8) = R8_UNorm, cleared to 0); the
+# second target's bytes go to OUT/<picture>_target1.bin.
+ON_REQUEST = {"depth_normals", "depth_normals_snorm", "depth_normals_layers", "lit_layers"}
+DEPTH_PICTURES = {"depth_normals", "depth_normals_snorm", "depth_normals_layers"}
+COLOR_FORMATS = {"depth_normals_snorm": "R8G8B8A8_SNORM", "depth_normals_layers": "R8G8B8A8_SNORM"}
+TARGET1 = {"depth_normals_layers": "R8_UNORM", "lit_layers": "R8_UNORM"}
 # shadow_map: URP's ShadowCaster (base variant: a directional light) drawn from the main light into a
 # SHADOW_RESOLUTION^2 depth map (--depth-out; no colour, ColorMask 0); lit_shadows: ForwardLit's
 # _MAIN_LIGHT_SHADOWS variant sampling it, its LightShadows block filled as URP does, and its camera
@@ -822,11 +848,12 @@ COLOR_FORMATS = {"depth_normals_snorm": "R8G8B8A8_SNORM"}
 SHADOW_PICTURES = {"shadow_map": "lit_shadows"}
 
 
-def draw(args, buffers, png, log, size=(WIDTH, HEIGHT), depth_out=None, color_format=None):
+def draw(args, buffers, png, log, size=(WIDTH, HEIGHT), depth_out=None, color_format=None, target1=None):
     harness = os.path.join(PKG_DIR, ".build", "harness", "gt-harness")
     cmd = [harness] + args + ["--buffers", buffers, "--patches", str(TILES * TILES), "--width", str(size[0]),
                               "--height", str(size[1])]
     cmd += ["--color-format", color_format] if color_format else []
+    cmd += ["--target1", target1] if target1 else []
     cmd += ["--png", png] if png else []
     cmd += ["--depth-out", depth_out] if depth_out else []
     r = subprocess.run(cmd, capture_output=True, text=True)
@@ -835,7 +862,7 @@ def draw(args, buffers, png, log, size=(WIDTH, HEIGHT), depth_out=None, color_fo
     if r.returncode != 0:
         raise SystemExit(f"pipeline-pass: error: the harness failed ({log}):\n{r.stdout[-2000:]}{r.stderr}")
     print(f"picture {png or depth_out} " + " ".join(l for l in r.stdout.splitlines()
-                                                    if l.startswith(("image ", "state ", "depth_out "))))
+                                                    if l.startswith(("image ", "state ", "depth_out ", "target1 "))))
 
 
 def shadow_map_texels(depth_out, texels, n):
@@ -908,6 +935,7 @@ def main(argv=None):
             continue
         folder = os.path.join(a.out, picture)
         log = os.path.join(folder, "harness.log")
+        target1 = f"{TARGET1[picture]}:{os.path.join(a.out, picture + '_target1.bin')}" if picture in TARGET1 else None
         if picture in SHADOW_PICTURES:
             args = prepare(a, pipeline, pass_name, keywords, buffers, folder, compiler, scene=shadow.caster_values(),
                            sun=shadow.sun)
@@ -923,11 +951,11 @@ def main(argv=None):
         elif picture in DEPTH_PICTURES:
             args = prepare(a, pipeline, pass_name, keywords, buffers, folder, compiler)
             draw(args, buffers, os.path.join(a.out, picture + ".png"), log, depth_out=os.path.join(a.out, picture + "_depth.f32"),
-                 color_format=COLOR_FORMATS.get(picture))
+                 color_format=COLOR_FORMATS.get(picture), target1=target1)
             write_view(a, buffers, os.path.join(a.out, picture + "_view.json"))
         else:
             args = prepare(a, pipeline, pass_name, keywords, buffers, folder, compiler)
-            draw(args, buffers, os.path.join(a.out, picture + ".png"), log)
+            draw(args, buffers, os.path.join(a.out, picture + ".png"), log, target1=target1)
     with open(os.path.join(a.out, "shadow.json"), "w") as f:
         json.dump({"resolution": shadow.resolution, "distance": shadow.distance, "texel": shadow.texel,
                    "bias": shadow.bias, "radius": shadow.radius, "center": shadow.center,

@@ -20,6 +20,8 @@ struct RenderTarget {
     uint32_t width = 0, height = 0;
     Image color, depth;
     VkFormat colorFormat = kColorFormat;
+    Image color1;                                   // a second colour attachment, when color1Format is set
+    VkFormat color1Format = VK_FORMAT_UNDEFINED;
     float depthClear = 1.0f;  // 0 with reversed depth (near 1, far 0)
     bool depthReadable = false;  // --depth-out: depth stored after the pass and copyable (readDepth)
     VkRenderPass renderPass = VK_NULL_HANDLE;
@@ -28,7 +30,8 @@ struct RenderTarget {
 
 // depthReadable: the depth attachment is stored and can be copied out after the pass (--depth-out).
 RenderTarget createRenderTarget(const Gpu& gpu, uint32_t width, uint32_t height, float depthClear,
-                                bool depthReadable = false, VkFormat colorFormat = kColorFormat);
+                                bool depthReadable = false, VkFormat colorFormat = kColorFormat,
+                                VkFormat color1Format = VK_FORMAT_UNDEFINED);
 void destroyRenderTarget(const Gpu& gpu, RenderTarget& target);
 
 // Begins the render pass with the clears (sky colour, depth 1, or 0 when reversed).
