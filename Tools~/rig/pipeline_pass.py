@@ -501,6 +501,23 @@ def builtin_globals(cam, o2w, o2c, sun, light_color):
     }
 
 
+# The fog Unity sets from RenderSettings (Lighting window: mode, start and end, density, colour) for every pass
+# that declares it; URP's C# sets neither. UnityInput.hlsl:209-210 (Built-in: UnityShaderVariables.cginc:231-237,
+# whose comment gives the packing): unity_FogParams = (density / sqrt(ln 2), density / ln 2, -1 / (end - start),
+# end / (end - start)); unity_FogColor the linear colour. The distances and density are chosen so the fog varies
+# across the zoom view's terrain (0.5 to 1.8 units from the eye).
+FOG_START, FOG_END, FOG_DENSITY, FOG_COLOR = 0.4, 2.4, 0.9, [0.5, 0.6, 0.7, 1.0]
+
+
+def fog_values(picture):
+    """unity_FogParams and unity_FogColor for a fog picture (each mode sets all four components), else {}."""
+    if picture not in FOG_PICTURES:
+        return {}
+    return {"unity_FogParams": [FOG_DENSITY / math.sqrt(math.log(2.0)), FOG_DENSITY / math.log(2.0),
+                                -1.0 / (FOG_END - FOG_START), FOG_END / (FOG_END - FOG_START)],
+            "unity_FogColor": FOG_COLOR}
+
+
 GT_AMBIENT_LEVEL = 0.2      # TerrainShading.hlsl's GT_AMBIENT
 GLOBALS = {"URP": urp_globals, "Builtin": builtin_globals}
 INCLUDE_PACKAGES = {"URP": URP_PACKAGES, "Builtin": []}
@@ -790,7 +807,9 @@ def write_view(a, buffers, path):
     """The camera's view-projection and the renderer's object-to-world a picture was drawn with."""
     cam, o2w, _ = yawed(a, *rig_camera(buffers))
     with open(path, "w") as f:
-        json.dump({"camera_view_proj": cam.view_proj, "object_to_world": o2w, "object_yaw": getattr(a, "object_yaw", 0.0)}, f, indent=1)
+        json.dump({"camera_view_proj": cam.view_proj, "camera_view": cam.view, "near": cam.near, "object_to_world": o2w,
+                   "object_yaw": getattr(a, "object_yaw", 0.0), "fog": fog_values(os.path.basename(path)[:-len("_view.json")])},
+                  f, indent=1)
 
 
 def pack_scene(out):
@@ -822,7 +841,10 @@ PICTURES = [("depth", "URP", "DepthOnly", [], "glslang"), ("lit", "URP", "Forwar
             ("depth_normals", "URP", "DepthNormalsOnly", ["_GBUFFER_NORMALS_OCT"], "glslang"),
             ("depth_normals_snorm", "URP", "DepthNormalsOnly", [], "glslang"),
             ("depth_normals_layers", "URP", "DepthNormalsOnly", ["_WRITE_RENDERING_LAYERS"], "glslang"),
-            ("lit_layers", "URP", "ForwardLit", ["_WRITE_RENDERING_LAYERS"], "glslang")]
+            ("lit_layers", "URP", "ForwardLit", ["_WRITE_RENDERING_LAYERS"], "glslang"),
+            ("lit_fog_linear", "URP", "ForwardLit", ["FOG_LINEAR"], "glslang"),
+            ("lit_fog_exp", "URP", "ForwardLit", ["FOG_EXP"], "glslang"),
+            ("lit_fog_exp2", "URP", "ForwardLit", ["FOG_EXP2"], "glslang")]
 # depth_normals: URP's DepthNormalsOnly with _GBUFFER_NORMALS_OCT, the variant whose output fits the harness's
 # RGBA8 UNORM target as it fits URP's (UniversalRendererData's Accurate G-buffer Normals: R8G8B8A8_UNorm, the
 # octahedral normal's two 12-bit coordinates in RGB 8:8:8). URP's default (Forward, that option off) draws the
@@ -837,8 +859,11 @@ PICTURES = [("depth", "URP", "DepthOnly", [], "glslang"), ("lit", "URP", "Forwar
 # layers on (DepthNormalOnlyPass.Setup(depth, normal, decalLayer) / DrawObjectsWithRenderingLayersPass: the
 # keyword on and a second colour target, RenderingLayerUtils.GetFormat(Bits8) = R8_UNorm, cleared to 0); the
 # second target's bytes go to OUT/<picture>_target1.bin.
-ON_REQUEST = {"depth_normals", "depth_normals_snorm", "depth_normals_layers", "lit_layers"}
-DEPTH_PICTURES = {"depth_normals", "depth_normals_snorm", "depth_normals_layers"}
+# lit_fog_*: ForwardLit's multi_compile_fog variants under the scene's fog (FOG_SCENES), depth and view written
+# (the test recomputes each pixel's fog from its view depth).
+FOG_PICTURES = {"lit_fog_linear", "lit_fog_exp", "lit_fog_exp2"}
+ON_REQUEST = {"depth_normals", "depth_normals_snorm", "depth_normals_layers", "lit_layers"} | FOG_PICTURES
+DEPTH_PICTURES = {"depth_normals", "depth_normals_snorm", "depth_normals_layers"} | FOG_PICTURES
 COLOR_FORMATS = {"depth_normals_snorm": "R8G8B8A8_SNORM", "depth_normals_layers": "R8G8B8A8_SNORM"}
 TARGET1 = {"depth_normals_layers": "R8_UNORM", "lit_layers": "R8_UNORM"}
 # shadow_map: URP's ShadowCaster (base variant: a directional light) drawn from the main light into a
@@ -911,6 +936,7 @@ def main(argv=None):
     scene_names = [set(g(probe, identity, identity, [0.0, 1.0, 0.0], [1.0] * 3)) for g in GLOBALS.values()]
     shadow = MainLightShadow(probe, normalize([0.3, 0.5, 0.2]))
     scene_names.append(set(shadow.caster_values()) | set(shadow.receiver_values()))
+    scene_names.append(set(fog_values("lit_fog_linear")))
     for name in a.leave_default:
         if not any(name in names for names in scene_names):
             ap.error(f"argument --leave-default: no pipeline's scene sets '{name}'")
@@ -949,7 +975,7 @@ def main(argv=None):
             draw(args, buffers, os.path.join(a.out, picture + ".png"), log,
                  depth_out=os.path.join(a.out, picture + "_depth.f32"))
         elif picture in DEPTH_PICTURES:
-            args = prepare(a, pipeline, pass_name, keywords, buffers, folder, compiler)
+            args = prepare(a, pipeline, pass_name, keywords, buffers, folder, compiler, scene=fog_values(picture))
             draw(args, buffers, os.path.join(a.out, picture + ".png"), log, depth_out=os.path.join(a.out, picture + "_depth.f32"),
                  color_format=COLOR_FORMATS.get(picture), target1=target1)
             write_view(a, buffers, os.path.join(a.out, picture + "_view.json"))
