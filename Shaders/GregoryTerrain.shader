@@ -57,6 +57,7 @@ Shader "GregoryTerrain/Terrain"
             #pragma multi_compile_fragment _ _SHADOWS_SOFT _SHADOWS_SOFT_LOW _SHADOWS_SOFT_MEDIUM _SHADOWS_SOFT_HIGH
             #pragma multi_compile_fragment _ _SCREEN_SPACE_OCCLUSION
             #pragma multi_compile_fog
+            #pragma multi_compile_fragment _ _WRITE_RENDERING_LAYERS
             #define GT_PASS_FORWARD 1
             #include "Packages/com.gregoryterrain.tessellation/Shaders/Pipelines/URPAdapter.hlsl"
             ENDHLSL
@@ -91,6 +92,7 @@ Shader "GregoryTerrain/Terrain"
             Tags { "LightMode" = "DepthNormalsOnly" }
             HLSLPROGRAM
             #pragma multi_compile_fragment _ _GBUFFER_NORMALS_OCT
+            #pragma multi_compile_fragment _ _WRITE_RENDERING_LAYERS
             #define GT_PASS_DEPTH_NORMALS 1
             #include "Packages/com.gregoryterrain.tessellation/Shaders/Pipelines/URPAdapter.hlsl"
             ENDHLSL
@@ -142,6 +144,7 @@ Shader "GregoryTerrain/Terrain"
             #pragma multi_compile_fragment _ _SHADOWS_SOFT _SHADOWS_SOFT_LOW _SHADOWS_SOFT_MEDIUM _SHADOWS_SOFT_HIGH
             #pragma multi_compile_fragment _ _SCREEN_SPACE_OCCLUSION
             #pragma multi_compile_fog
+            #pragma multi_compile_fragment _ _WRITE_RENDERING_LAYERS
             #define GT_PASS_FORWARD 1
             #include "Packages/com.gregoryterrain.tessellation/Shaders/Pipelines/URPAdapter.hlsl"
             ENDHLSL
@@ -176,6 +179,7 @@ Shader "GregoryTerrain/Terrain"
             Tags { "LightMode" = "DepthNormalsOnly" }
             HLSLPROGRAM
             #pragma multi_compile_fragment _ _GBUFFER_NORMALS_OCT
+            #pragma multi_compile_fragment _ _WRITE_RENDERING_LAYERS
             #define GT_PASS_DEPTH_NORMALS 1
             #include "Packages/com.gregoryterrain.tessellation/Shaders/Pipelines/URPAdapter.hlsl"
             ENDHLSL

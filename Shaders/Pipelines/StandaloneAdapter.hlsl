@@ -33,6 +33,8 @@
 //   float4 GT_EncodeDepthNormal(float3 normalWS)   the depth-normals output of a world normal
 //                                                  (the pipeline's packing), in GT_PASS_DEPTH_NORMALS
 //   GT_WRITE_DEPTH_COLOR      the depth-normals pass writes the depth as colour first (HDRP MSAA)
+//   float4 GT_RenderingLayers()  with GT_WRITE_RENDERING_LAYERS: the forward or depth-normals pass's
+//                             second target, the draw's rendering layers (URP's decal layers)
 //   float4 GT_EditorSelectionColor()               GT_PASS_SCENE_SELECTION / GT_PASS_SCENE_PICKING
 //   float4 GT_ObjectToShadowClip(float3 positionOS, float3 normalWS)
 //                             with GT_SHADOW_CASTER_NORMAL_BIAS: the shadow caster's vertex

@@ -166,6 +166,12 @@ void frag(TerrainVaryings i, out float4 depthColor : SV_Target0, out float4 norm
     depthColor = float4(i.positionCS.zzz, 1.0);
     normal = TerrainDepthNormal(i);
 }
+#elif defined(GT_PASS_DEPTH_NORMALS) && defined(GT_WRITE_RENDERING_LAYERS)
+void frag(TerrainVaryings i, out float4 normal : SV_Target0, out float4 renderingLayers : SV_Target1)
+{
+    normal = TerrainDepthNormal(i);
+    renderingLayers = GT_RenderingLayers();
+}
 #elif defined(GT_PASS_DEPTH_NORMALS)
 float4 frag(TerrainVaryings i) : SV_Target
 {
@@ -176,6 +182,13 @@ float4 frag(TerrainVaryings i) : SV_Target
 float4 frag(TerrainVaryings i) : SV_Target
 {
     return GT_EditorSelectionColor();
+}
+#elif defined(GT_WRITE_RENDERING_LAYERS)
+// The colour, and the rendering layers in the pipeline's second target.
+void frag(TerrainVaryings i, out float4 color : SV_Target0, out float4 renderingLayers : SV_Target1)
+{
+    color = TerrainFragmentColor(i);
+    renderingLayers = GT_RenderingLayers();
 }
 #else
 float4 frag(TerrainVaryings i) : SV_Target

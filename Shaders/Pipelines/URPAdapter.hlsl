@@ -34,6 +34,11 @@
         #define GT_AMBIENT_OCCLUSION 1
     #endif
 #endif
+// URP's rendering-layers target (decal layers): with _WRITE_RENDERING_LAYERS URP binds a second colour
+// target to the forward pass (DrawObjectsWithRenderingLayersPass) or the depth-normals pass (DepthNormalOnlyPass).
+#if defined(_WRITE_RENDERING_LAYERS) && (defined(GT_PASS_FORWARD) || defined(GT_PASS_DEPTH_NORMALS))
+    #define GT_WRITE_RENDERING_LAYERS 1
+#endif
 #if defined(GT_RECEIVE_SHADOWS) || defined(GT_FOG)
     #define GT_VARYINGS_POSITION_WS 1
 #endif
@@ -161,6 +166,15 @@ float4 GT_EncodeDepthNormal(float3 normalWS)
     return float4(NormalizeNormalPerPixel(normalWS), 0.0);
 #endif
 }
+
+#if defined(GT_WRITE_RENDERING_LAYERS)
+// The draw's rendering layer mask (unity_RenderingLayer, from RenderParams.renderingLayerMask), encoded
+// for the target's format as URP's own passes write it (_RenderingLayerMaxInt, _RenderingLayerRcpMaxInt).
+float4 GT_RenderingLayers()
+{
+    return float4(EncodeMeshRenderingLayer(GetMeshRenderingLayer()), 0.0, 0.0, 0.0);
+}
+#endif
 
 // The stages, after the interface above: a pass of GregoryTerrain.shader includes its adapter only.
 #include "TerrainStages.hlsl"

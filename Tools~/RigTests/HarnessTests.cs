@@ -527,6 +527,8 @@ namespace GregoryTerrain.Rig.Tests
         [TestCase("--color-mask", "AR", "R, G, B, A in that order")]
         [TestCase("--color-mask", "", "R, G, B, A in that order")]
         [TestCase("--depth", "inverted", "reversed, forward")]
+        [TestCase("--color-format", "R8G8B8A8_SRGB", "R8G8B8A8_UNORM or R8G8B8A8_SNORM")]
+        [TestCase("--target1", "R8G8_UNORM:layers.bin", "R8_UNORM, R16_UNORM or R32_SFLOAT")]
         public void RenderStateOptions_BadValue_Exit1NamingTheOptionAndValue(string option, string value, string expected)
         {
             string dir = MakeInputs("in_4x4_f8", 4, 8, new[] { 0f, 0, 1, 1 });

@@ -268,7 +268,8 @@ namespace GregoryTerrain.Rig.Tests
         /// Unity's keywords are compiled only where a pass reads them (each would double the pass's
         /// variants for nothing elsewhere): URP's received shadows (shadow map, cascades, the
         /// screen-space shadows feature), soft-shadow qualities, SSAO and fog on its forward pass, the
-        /// punctual-light caster keyword on its ShadowCaster, the normal packing on DepthNormalsOnly;
+        /// punctual-light caster keyword on its ShadowCaster, the normal packing on DepthNormalsOnly, the
+        /// rendering-layers target (decal layers) on both the forward pass and DepthNormalsOnly, as URP 14's Lit;
         /// HDRP's shadow filter quality on ForwardOnly and MSAA depth on DepthForwardOnly; Built-in's
         /// screen shadows on ForwardBase. Keywords that change only the fragment stage are
         /// multi_compile_fragment; one that the hull or domain stage reads must not be _vertex.
@@ -281,9 +282,9 @@ namespace GregoryTerrain.Rig.Tests
                 {
                     string[] expected =
                         s.Pipeline == "URP" && p.LightMode == "UniversalForwardOnly" ? new[] { "_MAIN_LIGHT_SHADOWS", "_MAIN_LIGHT_SHADOWS_CASCADE", "_MAIN_LIGHT_SHADOWS_SCREEN",
-                            "_SHADOWS_SOFT", "_SHADOWS_SOFT_LOW", "_SHADOWS_SOFT_MEDIUM", "_SHADOWS_SOFT_HIGH", "_SCREEN_SPACE_OCCLUSION" } :
+                            "_SHADOWS_SOFT", "_SHADOWS_SOFT_LOW", "_SHADOWS_SOFT_MEDIUM", "_SHADOWS_SOFT_HIGH", "_SCREEN_SPACE_OCCLUSION", "_WRITE_RENDERING_LAYERS" } :
                         s.Pipeline == "URP" && p.LightMode == "ShadowCaster" ? new[] { "_CASTING_PUNCTUAL_LIGHT_SHADOW" } :
-                        s.Pipeline == "URP" && p.LightMode == "DepthNormalsOnly" ? new[] { "_GBUFFER_NORMALS_OCT" } :
+                        s.Pipeline == "URP" && p.LightMode == "DepthNormalsOnly" ? new[] { "_GBUFFER_NORMALS_OCT", "_WRITE_RENDERING_LAYERS" } :
                         s.Pipeline == "HDRP" && p.LightMode == "ForwardOnly" ? new[] { "SHADOW_LOW", "SHADOW_MEDIUM", "SHADOW_HIGH" } :
                         s.Pipeline == "HDRP" && p.LightMode == "DepthForwardOnly" ? new[] { "WRITE_MSAA_DEPTH" } :
                         s.Pipeline == "Builtin" && p.LightMode == "ForwardBase" ? new[] { "SHADOWS_SCREEN" } :

@@ -20,11 +20,13 @@ shadow_map (URP's ShadowCaster drawn from the sun: OUT/shadow_map.f32, no PNG) a
 _MAIN_LIGHT_SHADOWS sampling it; OUT/lit_shadows_depth.f32 its camera depth; OUT/shadow.json the
 light's matrices), both under --shadow-sun-elevation/--shadow-sun-azimuth; depth_normals (only with --only:
 URP's DepthNormalsOnly, _GBUFFER_NORMALS_OCT, its depth in OUT/depth_normals_depth.f32, its view in
-OUT/depth_normals_view.json), under --object-yaw.
+OUT/depth_normals_view.json) and depth_normals_snorm (only with --only: the base variant into R8G8B8A8_SNorm, the
+PNG's bytes signed; _depth.f32, _view.json likewise), depth_normals_layers and lit_layers (only with --only: the
+_WRITE_RENDERING_LAYERS variants, their second target's R8 bytes in OUT/<picture>_target1.bin), under --object-yaw.
 Uniform blocks are bound as storage buffers (--uniform-blocks storage: the harness rewrites the
 blocks, same offsets): the rig's lavapipe rule (one compile per SPIR-V, whatever the values) on every device.
 
-  gt pipeline_pass [--out DIR] [--only depth|lit|normals|lit_dxc|builtin_lit|shadow_map|lit_shadows|depth_normals]...
+  gt pipeline_pass [--out DIR] [--only depth|lit|normals|lit_dxc|builtin_lit|shadow_map|lit_shadows|depth_normals|depth_normals_snorm|depth_normals_layers|lit_layers]...
       [--sun-elevation DEG] [--sun-azimuth DEG] [--shadow-sun-elevation DEG] [--shadow-sun-azimuth DEG] [--light-color R,G,B]
       [--object-yaw DEG] [--leave-default NAME]... [--fill-from NAME=OTHER]... [--transpose NAME]...
 --leave-default / --fill-from / --transpose break the scene on purpose (the tests' broken inputs): a
@@ -340,6 +342,13 @@ def urp_globals(cam, o2w, o2c, sun, light_color):
         # glslang's drops the unused load.
         "unity_LightData": [0.0, 0.0, 1.0, 0.0],
         "_GlobalMipBias": [0.0, 1.0],                    # Input.hlsl: (bias, 2^bias)
+        # UnityInput.hlsl (UnityPerDraw): x holds the draw's rendering layer mask as bits (GetMeshRenderingLayer:
+        # asuint(unity_RenderingLayer.x)), from RenderParams.renderingLayerMask for Graphics.RenderPrimitives.
+        "unity_RenderingLayer": [uint_bits_as_float(RENDERING_LAYER_MASK), 0.0, 0.0, 0.0],
+        # Input.hlsl:112-113, RenderingLayerUtils.SetupProperties(maskSize) before the passes that write the
+        # rendering-layers target: 2^bits - 1 and its reciprocal (8 bits: the default 8 layers' R8_UNorm target).
+        "_RenderingLayerMaxInt": (1 << RENDERING_LAYER_BITS) - 1,
+        "_RenderingLayerRcpMaxInt": 1.0 / ((1 << RENDERING_LAYER_BITS) - 1),
         # The package's own (UnityAdapterCommon.hlsl:17-29, GregoryTerrainRenderer sets them):
         # object <-> world of the renderer's Transform, the camera's object-to-clip and screen size
         # that choose tessellation factors.
@@ -348,6 +357,17 @@ def urp_globals(cam, o2w, o2c, sun, light_color):
         "_GtTessObjectToClip": o2c,
         "_GtTessScreenSize": [w, h, 1.0 / w, 1.0 / h],
     }
+
+
+# The draw's rendering layers: layers 0, 2, 5 and 7, and bit 8, which an 8-bit target drops
+# (EncodeMeshRenderingLayer masks with _RenderingLayerMaxInt). Unity's default mask is 1 (layer 0).
+RENDERING_LAYER_MASK = 0x1A5
+RENDERING_LAYER_BITS = 8     # RenderingLayerUtils.MaskSize.Bits8: R8_UNorm (GetFormat), up to 8 layers defined
+
+
+def uint_bits_as_float(u):
+    """The float whose bits are u (Unity stores unity_RenderingLayer's mask so; small masks are denormals)."""
+    return struct.unpack("<f", struct.pack("<I", u))[0]
 
 
 # URP's main-light shadow, one cascade, as URP 14 sets it. C# under
@@ -479,6 +499,23 @@ def builtin_globals(cam, o2w, o2c, sun, light_color):
         "_GtTessObjectToClip": o2c,
         "_GtTessScreenSize": [w, h, 1.0 / w, 1.0 / h],
     }
+
+
+# The fog Unity sets from RenderSettings (Lighting window: mode, start and end, density, colour) for every pass
+# that declares it; URP's C# sets neither. UnityInput.hlsl:209-210 (Built-in: UnityShaderVariables.cginc:231-237,
+# whose comment gives the packing): unity_FogParams = (density / sqrt(ln 2), density / ln 2, -1 / (end - start),
+# end / (end - start)); unity_FogColor the linear colour. The distances and density are chosen so the fog varies
+# across the zoom view's terrain (0.5 to 1.8 units from the eye).
+FOG_START, FOG_END, FOG_DENSITY, FOG_COLOR = 0.4, 2.4, 0.9, [0.5, 0.6, 0.7, 1.0]
+
+
+def fog_values(picture):
+    """unity_FogParams and unity_FogColor for a fog picture (each mode sets all four components), else {}."""
+    if picture not in FOG_PICTURES:
+        return {}
+    return {"unity_FogParams": [FOG_DENSITY / math.sqrt(math.log(2.0)), FOG_DENSITY / math.log(2.0),
+                                -1.0 / (FOG_END - FOG_START), FOG_END / (FOG_END - FOG_START)],
+            "unity_FogColor": FOG_COLOR}
 
 
 GT_AMBIENT_LEVEL = 0.2      # TerrainShading.hlsl's GT_AMBIENT
@@ -770,7 +807,9 @@ def write_view(a, buffers, path):
     """The camera's view-projection and the renderer's object-to-world a picture was drawn with."""
     cam, o2w, _ = yawed(a, *rig_camera(buffers))
     with open(path, "w") as f:
-        json.dump({"camera_view_proj": cam.view_proj, "object_to_world": o2w, "object_yaw": getattr(a, "object_yaw", 0.0)}, f, indent=1)
+        json.dump({"camera_view_proj": cam.view_proj, "camera_view": cam.view, "near": cam.near, "object_to_world": o2w,
+                   "object_yaw": getattr(a, "object_yaw", 0.0), "fog": fog_values(os.path.basename(path)[:-len("_view.json")])},
+                  f, indent=1)
 
 
 def pack_scene(out):
@@ -799,15 +838,34 @@ PICTURES = [("depth", "URP", "DepthOnly", [], "glslang"), ("lit", "URP", "Forwar
             ("builtin_lit", "Builtin", "ForwardBase", [], "glslang"),
             ("shadow_map", "URP", "ShadowCaster", [], "glslang"),
             ("lit_shadows", "URP", "ForwardLit", ["_MAIN_LIGHT_SHADOWS"], "glslang"),
-            ("depth_normals", "URP", "DepthNormalsOnly", ["_GBUFFER_NORMALS_OCT"], "glslang")]
+            ("depth_normals", "URP", "DepthNormalsOnly", ["_GBUFFER_NORMALS_OCT"], "glslang"),
+            ("depth_normals_snorm", "URP", "DepthNormalsOnly", [], "glslang"),
+            ("depth_normals_layers", "URP", "DepthNormalsOnly", ["_WRITE_RENDERING_LAYERS"], "glslang"),
+            ("lit_layers", "URP", "ForwardLit", ["_WRITE_RENDERING_LAYERS"], "glslang"),
+            ("lit_fog_linear", "URP", "ForwardLit", ["FOG_LINEAR"], "glslang"),
+            ("lit_fog_exp", "URP", "ForwardLit", ["FOG_EXP"], "glslang"),
+            ("lit_fog_exp2", "URP", "ForwardLit", ["FOG_EXP2"], "glslang")]
 # depth_normals: URP's DepthNormalsOnly with _GBUFFER_NORMALS_OCT, the variant whose output fits the harness's
 # RGBA8 UNORM target as it fits URP's (UniversalRendererData's Accurate G-buffer Normals: R8G8B8A8_UNorm, the
 # octahedral normal's two 12-bit coordinates in RGB 8:8:8). URP's default (Forward, that option off) draws the
 # base variant into R8G8B8A8_SNorm (DepthNormalOnlyPass.GetGraphicsFormat): signed, which the harness cannot
 # hold. Its camera depth goes to depth_normals_depth.f32 and the view to depth_normals_view.json (the test
 # recovers each pixel's world position). Drawn only when named (--only depth_normals): its own fixture.
-ON_REQUEST = {"depth_normals"}
-DEPTH_PICTURES = {"depth_normals"}
+# depth_normals_snorm: the base variant, which a default asset draws, into the target URP 14 gives it
+# (UniversalRenderer, not deferred: normalDescriptor.graphicsFormat = DepthNormalOnlyPass.GetGraphicsFormat(),
+# R8G8B8A8_SNorm where the device renders it, as every Vulkan device does): the normal's [-1, 1] as signed
+# bytes, which DeclareNormalsTexture's LoadSceneNormals returns as they are (no decode, no normalize).
+# depth_normals_layers, lit_layers: the _WRITE_RENDERING_LAYERS variants, drawn as URP 14 draws them with decal
+# layers on (DepthNormalOnlyPass.Setup(depth, normal, decalLayer) / DrawObjectsWithRenderingLayersPass: the
+# keyword on and a second colour target, RenderingLayerUtils.GetFormat(Bits8) = R8_UNorm, cleared to 0); the
+# second target's bytes go to OUT/<picture>_target1.bin.
+# lit_fog_*: ForwardLit's multi_compile_fog variants under the scene's fog (FOG_SCENES), depth and view written
+# (the test recomputes each pixel's fog from its view depth).
+FOG_PICTURES = {"lit_fog_linear", "lit_fog_exp", "lit_fog_exp2"}
+ON_REQUEST = {"depth_normals", "depth_normals_snorm", "depth_normals_layers", "lit_layers"} | FOG_PICTURES
+DEPTH_PICTURES = {"depth_normals", "depth_normals_snorm", "depth_normals_layers"} | FOG_PICTURES
+COLOR_FORMATS = {"depth_normals_snorm": "R8G8B8A8_SNORM", "depth_normals_layers": "R8G8B8A8_SNORM"}
+TARGET1 = {"depth_normals_layers": "R8_UNORM", "lit_layers": "R8_UNORM"}
 # shadow_map: URP's ShadowCaster (base variant: a directional light) drawn from the main light into a
 # SHADOW_RESOLUTION^2 depth map (--depth-out; no colour, ColorMask 0); lit_shadows: ForwardLit's
 # _MAIN_LIGHT_SHADOWS variant sampling it, its LightShadows block filled as URP does, and its camera
@@ -815,10 +873,12 @@ DEPTH_PICTURES = {"depth_normals"}
 SHADOW_PICTURES = {"shadow_map": "lit_shadows"}
 
 
-def draw(args, buffers, png, log, size=(WIDTH, HEIGHT), depth_out=None):
+def draw(args, buffers, png, log, size=(WIDTH, HEIGHT), depth_out=None, color_format=None, target1=None):
     harness = os.path.join(PKG_DIR, ".build", "harness", "gt-harness")
     cmd = [harness] + args + ["--buffers", buffers, "--patches", str(TILES * TILES), "--width", str(size[0]),
                               "--height", str(size[1])]
+    cmd += ["--color-format", color_format] if color_format else []
+    cmd += ["--target1", target1] if target1 else []
     cmd += ["--png", png] if png else []
     cmd += ["--depth-out", depth_out] if depth_out else []
     r = subprocess.run(cmd, capture_output=True, text=True)
@@ -827,7 +887,7 @@ def draw(args, buffers, png, log, size=(WIDTH, HEIGHT), depth_out=None):
     if r.returncode != 0:
         raise SystemExit(f"pipeline-pass: error: the harness failed ({log}):\n{r.stdout[-2000:]}{r.stderr}")
     print(f"picture {png or depth_out} " + " ".join(l for l in r.stdout.splitlines()
-                                                    if l.startswith(("image ", "state ", "depth_out "))))
+                                                    if l.startswith(("image ", "state ", "depth_out ", "target1 "))))
 
 
 def shadow_map_texels(depth_out, texels, n):
@@ -876,6 +936,7 @@ def main(argv=None):
     scene_names = [set(g(probe, identity, identity, [0.0, 1.0, 0.0], [1.0] * 3)) for g in GLOBALS.values()]
     shadow = MainLightShadow(probe, normalize([0.3, 0.5, 0.2]))
     scene_names.append(set(shadow.caster_values()) | set(shadow.receiver_values()))
+    scene_names.append(set(fog_values("lit_fog_linear")))
     for name in a.leave_default:
         if not any(name in names for names in scene_names):
             ap.error(f"argument --leave-default: no pipeline's scene sets '{name}'")
@@ -900,6 +961,7 @@ def main(argv=None):
             continue
         folder = os.path.join(a.out, picture)
         log = os.path.join(folder, "harness.log")
+        target1 = f"{TARGET1[picture]}:{os.path.join(a.out, picture + '_target1.bin')}" if picture in TARGET1 else None
         if picture in SHADOW_PICTURES:
             args = prepare(a, pipeline, pass_name, keywords, buffers, folder, compiler, scene=shadow.caster_values(),
                            sun=shadow.sun)
@@ -913,12 +975,13 @@ def main(argv=None):
             draw(args, buffers, os.path.join(a.out, picture + ".png"), log,
                  depth_out=os.path.join(a.out, picture + "_depth.f32"))
         elif picture in DEPTH_PICTURES:
-            args = prepare(a, pipeline, pass_name, keywords, buffers, folder, compiler)
-            draw(args, buffers, os.path.join(a.out, picture + ".png"), log, depth_out=os.path.join(a.out, picture + "_depth.f32"))
+            args = prepare(a, pipeline, pass_name, keywords, buffers, folder, compiler, scene=fog_values(picture))
+            draw(args, buffers, os.path.join(a.out, picture + ".png"), log, depth_out=os.path.join(a.out, picture + "_depth.f32"),
+                 color_format=COLOR_FORMATS.get(picture), target1=target1)
             write_view(a, buffers, os.path.join(a.out, picture + "_view.json"))
         else:
             args = prepare(a, pipeline, pass_name, keywords, buffers, folder, compiler)
-            draw(args, buffers, os.path.join(a.out, picture + ".png"), log)
+            draw(args, buffers, os.path.join(a.out, picture + ".png"), log, target1=target1)
     with open(os.path.join(a.out, "shadow.json"), "w") as f:
         json.dump({"resolution": shadow.resolution, "distance": shadow.distance, "texel": shadow.texel,
                    "bias": shadow.bias, "radius": shadow.radius, "center": shadow.center,

@@ -96,7 +96,8 @@ std::string pipelineKey(const Gpu& gpu, const PipelineDesc& d, const RenderTarge
     if (!batch.active) return "";
     std::string key = std::to_string(static_cast<int>(d.mode)) + ' ' + std::to_string(d.controlPoints) + ' ' +
                       std::to_string(d.wireframe) + ' ' + describeRenderState(d.state) + ' ' +
-                      std::to_string(target.width) + 'x' + std::to_string(target.height) + " blocks " +
+                      std::to_string(target.width) + 'x' + std::to_string(target.height) + " colour " +
+                      std::to_string(target.colorFormat) + ' ' + std::to_string(target.color1Format) + " blocks " +
                       std::to_string(gpu.uniformBlocksAsStorage) + " set0";
     for (uint32_t b : p.bindings) key += ' ' + std::to_string(b);
     for (const ImageDescriptor& i : p.images) key += " image " + std::to_string(i.binding) + ':' + std::to_string(i.type);

@@ -220,6 +220,10 @@ const char* usageText() {
                                  row-major, top row first (the PNG's order)
   --depth-in FILE                the depth attachment starts as FILE (--depth-out's layout) instead
                                  of the clear: a depth prepass's depth kept for the next pass (one frame)
+  --color-format R8G8B8A8_UNORM|R8G8B8A8_SNORM   the colour attachment (default UNORM); --png
+                                 writes its bytes as stored (SNORM: two's complement)
+  --target1 R8_UNORM|R16_UNORM|R32_SFLOAT:FILE   a second colour attachment (SV_Target1), cleared
+                                 to 0, its raw texels written to FILE after the last frame
   --wireframe                    polygonMode LINE (needs fillModeNonSolid)
   --cull back|front|off          the drawn pass's render state, in ShaderLab's words (any case);
   --ztest less|lequal|equal|gequal|greater|notequal|always|never
@@ -284,6 +288,26 @@ UniformBlocks parseUniformBlocks(const std::string& option, const std::string& v
     if (v == "storage") return UniformBlocks::Storage;
     fail(option + " '" + v + "': expected auto, uniform or storage");
 }
+
+// The colour attachments a pipeline's pass draws into that the rig reads back (4 bytes a texel).
+VkFormat parseColorFormat(const std::string& option, const std::string& v) {
+    if (v == "R8G8B8A8_UNORM") return VK_FORMAT_R8G8B8A8_UNORM;
+    if (v == "R8G8B8A8_SNORM") return VK_FORMAT_R8G8B8A8_SNORM;
+    fail(option + ": expected R8G8B8A8_UNORM or R8G8B8A8_SNORM, got '" + v + "'");
+}
+
+// --target1 FORMAT:FILE: the single-channel formats URP 14 gives its rendering-layers texture
+// (RenderingLayerUtils.GetFormat: 8, 16, 24/32 bits).
+void parseTarget1(Options& o, const std::string& option, const std::string& v) {
+    const size_t colon = v.find(':');
+    const std::string format = v.substr(0, colon);
+    if (format == "R8_UNORM") o.target1Format = VK_FORMAT_R8_UNORM;
+    else if (format == "R16_UNORM") o.target1Format = VK_FORMAT_R16_UNORM;
+    else if (format == "R32_SFLOAT") o.target1Format = VK_FORMAT_R32_SFLOAT;
+    else fail(option + ": expected R8_UNORM, R16_UNORM or R32_SFLOAT before ':FILE', got '" + v + "'");
+    if (colon == std::string::npos || colon + 1 == v.size()) fail(option + ": expected FORMAT:FILE, got '" + v + "'");
+    o.target1Path = v.substr(colon + 1);
+}
 }  // namespace
 
 Options parseOptions(int argc, char** argv) {
@@ -328,6 +352,8 @@ Options parseOptions(int argc, char** argv) {
         else if (a == "--png") o.pngPath = value();
         else if (a == "--depth-out") o.depthOutPath = value();
         else if (a == "--depth-in") o.depthInPath = value();
+        else if (a == "--color-format") o.colorFormat = parseColorFormat(a, value());
+        else if (a == "--target1") parseTarget1(o, a, value());
         else if (a == "--wireframe") o.wireframe = true;
         else if (a == "--cull") o.state.cull = parseCull(a, value());
         else if (a == "--ztest") o.state.zTest = parseZTest(a, value());

@@ -70,6 +70,9 @@ struct Options {
     std::string pngPath;
     std::string depthOutPath;  // --depth-out FILE: the depth attachment's D32 floats after the last frame
     std::string depthInPath;   // --depth-in FILE: the depth attachment's D32 floats before the frame
+    VkFormat colorFormat = VK_FORMAT_R8G8B8A8_UNORM;  // --color-format: the colour attachment (4 bytes a texel)
+    VkFormat target1Format = VK_FORMAT_UNDEFINED;     // --target1 FORMAT:FILE: a second colour attachment (SV_Target1)
+    std::string target1Path;
     bool wireframe = false;
     RenderState state;  // --cull --ztest --zwrite --zclip --color-mask --depth (render_state.hpp)
 

@@ -232,7 +232,7 @@ int run(const Options& o) {
     desc.frag = loadShader(gpu, o.fragPath, 4, o.fragEntry, "frag");
 
     RenderTarget target = createRenderTarget(gpu, o.width, o.height, depthClearValue(o.state.depth), !o.depthOutPath.empty(),
-                                             !o.depthInPath.empty());
+                                             !o.depthInPath.empty(), o.colorFormat, o.target1Format);
     if (!o.depthInPath.empty()) loadDepthIn(gpu, target, o.depthInPath);
     Pipeline pipeline = createPipeline(gpu, desc, target, inputs, storage, sampled.descriptors);
     std::vector<ComputePass> compute = createComputePasses(gpu, o.computes, pipeline);
@@ -277,6 +277,11 @@ int run(const Options& o) {
         std::printf("png %s %u %u\n", o.pngPath.c_str(), o.width, o.height);
     }
     if (!o.depthOutPath.empty()) writeDepthOut(gpu, target, o.depthOutPath);
+    if (!o.target1Path.empty()) {
+        const std::vector<uint8_t> texels = readTarget1(gpu, target);
+        writeFile(o.target1Path, texels.data(), texels.size());
+        std::printf("target1 %s %u %u bytes %zu\n", o.target1Path.c_str(), o.width, o.height, texels.size());
+    }
     if (!o.readbackPath.empty()) {
         const uint64_t nan = dumpReadback(inputs.bindings[kBindingReadback], o.readbackFloats, o.readbackPath);
         std::printf("readback %s floats %llu nan %llu\n", o.readbackPath.c_str(),

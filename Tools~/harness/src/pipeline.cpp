@@ -177,11 +177,11 @@ Pipeline createPipeline(const Gpu& gpu, const PipelineDesc& d, const RenderTarge
     ds.depthTestEnable = VK_TRUE;
     ds.depthWriteEnable = d.state.zWrite ? VK_TRUE : VK_FALSE;
     ds.depthCompareOp = vulkanCompareOp(d.state.zTest, d.state.depth);
-    VkPipelineColorBlendAttachmentState blend{};
-    blend.colorWriteMask = d.state.colorMask;
+    VkPipelineColorBlendAttachmentState blend[2]{};
+    blend[0].colorWriteMask = blend[1].colorWriteMask = d.state.colorMask;   // ShaderLab's ColorMask: every target
     VkPipelineColorBlendStateCreateInfo cb{VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO};
-    cb.attachmentCount = 1;
-    cb.pAttachments = &blend;
+    cb.attachmentCount = target.color1Format != VK_FORMAT_UNDEFINED ? 2 : 1;
+    cb.pAttachments = blend;
 
     VkGraphicsPipelineCreateInfo info{VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO};
     info.stageCount = static_cast<uint32_t>(stages.size());

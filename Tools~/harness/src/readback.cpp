@@ -7,14 +7,16 @@
 
 namespace gt {
 
-std::vector<uint8_t> readColor(const Gpu& gpu, const RenderTarget& t) {
-    const VkDeviceSize size = static_cast<VkDeviceSize>(t.width) * t.height * 4;
+namespace {
+
+std::vector<uint8_t> readImage(const Gpu& gpu, const RenderTarget& t, VkImage image, uint32_t texelBytes) {
+    const VkDeviceSize size = static_cast<VkDeviceSize>(t.width) * t.height * texelBytes;
     Buffer host = createHostBuffer(gpu, size, VK_BUFFER_USAGE_TRANSFER_DST_BIT);
     submitOnce(gpu, [&](VkCommandBuffer cmd) {
         VkBufferImageCopy region{};
         region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
         region.imageExtent = {t.width, t.height, 1};
-        vkCmdCopyImageToBuffer(cmd, t.color.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, host.buffer, 1, &region);
+        vkCmdCopyImageToBuffer(cmd, image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, host.buffer, 1, &region);
         VkMemoryBarrier toHost{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
         toHost.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
         toHost.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
@@ -25,6 +27,16 @@ std::vector<uint8_t> readColor(const Gpu& gpu, const RenderTarget& t) {
     std::vector<uint8_t> rgba(p, p + size);
     destroyBuffer(gpu, host);
     return rgba;
+}
+
+}  // namespace
+
+std::vector<uint8_t> readColor(const Gpu& gpu, const RenderTarget& t) { return readImage(gpu, t, t.color.image, 4); }
+
+std::vector<uint8_t> readTarget1(const Gpu& gpu, const RenderTarget& t) {
+    if (t.color1Format == VK_FORMAT_UNDEFINED) fail("readTarget1: the render target has no second colour attachment");
+    const uint32_t bytes = t.color1Format == VK_FORMAT_R8_UNORM ? 1 : t.color1Format == VK_FORMAT_R16_UNORM ? 2 : 4;
+    return readImage(gpu, t, t.color1.image, bytes);
 }
 
 std::vector<float> readDepth(const Gpu& gpu, const RenderTarget& t) {

@@ -12,6 +12,9 @@ namespace gt {
 // Copies the colour attachment (in TRANSFER_SRC layout after the render pass) to host memory.
 std::vector<uint8_t> readColor(const Gpu& gpu, const RenderTarget& target);
 
+// The second colour attachment's texels (--target1), raw, top row first.
+std::vector<uint8_t> readTarget1(const Gpu& gpu, const RenderTarget& target);
+
 // The depth attachment's D32 values after the last frame (target created depthReadable), rows in
 // framebuffer order: row 0 is the picture's top row, as in the colour image and the PNG.
 std::vector<float> readDepth(const Gpu& gpu, const RenderTarget& target);

@@ -64,22 +64,29 @@ void destroyImage(const Gpu& gpu, Image& img) {
 }  // namespace
 
 RenderTarget createRenderTarget(const Gpu& gpu, uint32_t width, uint32_t height, float depthClear, bool depthReadable,
-                                bool depthLoaded) {
+                                bool depthLoaded, VkFormat colorFormat, VkFormat color1Format) {
     RenderTarget t;
+    t.colorFormat = colorFormat;
+    t.color1Format = color1Format;
+    const bool second = color1Format != VK_FORMAT_UNDEFINED;
     t.depthReadable = depthReadable;
     t.depthLoaded = depthLoaded;
     t.width = width;
     t.height = height;
     t.depthClear = depthClear;
-    t.color = createImage(gpu, width, height, kColorFormat,
+    t.color = createImage(gpu, width, height, colorFormat,
                           VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT, VK_IMAGE_ASPECT_COLOR_BIT);
     t.depth = createImage(gpu, width, height, kDepthFormat,
                           VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | (depthReadable ? VK_IMAGE_USAGE_TRANSFER_SRC_BIT : 0) |
                               (depthLoaded ? VK_IMAGE_USAGE_TRANSFER_DST_BIT : 0),
                           VK_IMAGE_ASPECT_DEPTH_BIT);
 
-    VkAttachmentDescription att[2]{};
-    att[0].format = kColorFormat;
+    if (second)
+        t.color1 = createImage(gpu, width, height, color1Format,
+                               VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT, VK_IMAGE_ASPECT_COLOR_BIT);
+
+    VkAttachmentDescription att[3]{};
+    att[0].format = colorFormat;
     att[0].samples = VK_SAMPLE_COUNT_1_BIT;
     att[0].loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
     att[0].storeOp = VK_ATTACHMENT_STORE_OP_STORE;
@@ -95,12 +102,14 @@ RenderTarget createRenderTarget(const Gpu& gpu, uint32_t width, uint32_t height,
         att[1].initialLayout = VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL;
     }
     att[1].finalLayout = VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL;
-    VkAttachmentReference colorRef{0, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
+    att[2] = att[0];
+    att[2].format = color1Format;
+    VkAttachmentReference colorRef[2] = {{0, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL}, {2, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL}};
     VkAttachmentReference depthRef{1, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL};
     VkSubpassDescription sub{};
     sub.pipelineBindPoint = VK_PIPELINE_BIND_POINT_GRAPHICS;
-    sub.colorAttachmentCount = 1;
-    sub.pColorAttachments = &colorRef;
+    sub.colorAttachmentCount = second ? 2 : 1;
+    sub.pColorAttachments = colorRef;
     sub.pDepthStencilAttachment = &depthRef;
     // The pass may run many times from one command buffer: order against the previous frame's
     // copy-out (colour) and depth writes, and make this frame's colour visible to the copy.
@@ -121,7 +130,7 @@ RenderTarget createRenderTarget(const Gpu& gpu, uint32_t width, uint32_t height,
     deps[1].srcAccessMask = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
     deps[1].dstAccessMask = VK_ACCESS_TRANSFER_READ_BIT;
     VkRenderPassCreateInfo rp{VK_STRUCTURE_TYPE_RENDER_PASS_CREATE_INFO};
-    rp.attachmentCount = 2;
+    rp.attachmentCount = second ? 3 : 2;
     rp.pAttachments = att;
     rp.subpassCount = 1;
     rp.pSubpasses = &sub;
@@ -129,10 +138,10 @@ RenderTarget createRenderTarget(const Gpu& gpu, uint32_t width, uint32_t height,
     rp.pDependencies = deps;
     GT_VK(vkCreateRenderPass(gpu.device, &rp, nullptr, &t.renderPass));
 
-    VkImageView views[2] = {t.color.view, t.depth.view};
+    VkImageView views[3] = {t.color.view, t.depth.view, t.color1.view};
     VkFramebufferCreateInfo fb{VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO};
     fb.renderPass = t.renderPass;
-    fb.attachmentCount = 2;
+    fb.attachmentCount = rp.attachmentCount;
     fb.pAttachments = views;
     fb.width = width;
     fb.height = height;
@@ -181,18 +190,19 @@ void destroyRenderTarget(const Gpu& gpu, RenderTarget& t) {
     if (t.renderPass) vkDestroyRenderPass(gpu.device, t.renderPass, nullptr);
     destroyImage(gpu, t.color);
     destroyImage(gpu, t.depth);
+    destroyImage(gpu, t.color1);
     t = RenderTarget{};
 }
 
 void beginRenderPass(VkCommandBuffer cmd, const RenderTarget& t) {
-    VkClearValue clears[2]{};
+    VkClearValue clears[3]{};   // the second colour target: 0
     for (int i = 0; i < 4; ++i) clears[0].color.float32[i] = kSky[i];
     clears[1].depthStencil = {t.depthClear, 0};
     VkRenderPassBeginInfo info{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
     info.renderPass = t.renderPass;
     info.framebuffer = t.framebuffer;
     info.renderArea = {{0, 0}, {t.width, t.height}};
-    info.clearValueCount = 2;
+    info.clearValueCount = t.color1Format != VK_FORMAT_UNDEFINED ? 3 : 2;
     info.pClearValues = clears;
     vkCmdBeginRenderPass(cmd, &info, VK_SUBPASS_CONTENTS_INLINE);
 }

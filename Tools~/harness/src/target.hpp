@@ -7,7 +7,7 @@
 
 namespace gt {
 
-constexpr VkFormat kColorFormat = VK_FORMAT_R8G8B8A8_UNORM;
+constexpr VkFormat kColorFormat = VK_FORMAT_R8G8B8A8_UNORM;  // the default; --color-format picks another of 4 bytes
 constexpr VkFormat kDepthFormat = VK_FORMAT_D32_SFLOAT;
 // Sky colour of the clear, also used to tell drawn pixels from background (0..255 per channel).
 constexpr float kSky[4] = {0.55f, 0.70f, 0.90f, 1.0f};
@@ -21,6 +21,9 @@ struct Image {
 struct RenderTarget {
     uint32_t width = 0, height = 0;
     Image color, depth;
+    VkFormat colorFormat = kColorFormat;
+    Image color1;                                   // a second colour attachment, when color1Format is set
+    VkFormat color1Format = VK_FORMAT_UNDEFINED;
     float depthClear = 1.0f;  // 0 with reversed depth (near 1, far 0)
     bool depthReadable = false;  // --depth-out: depth stored after the pass and copyable (readDepth)
     bool depthLoaded = false;    // --depth-in: the pass loads depth (uploadDepth) instead of clearing it
@@ -31,7 +34,8 @@ struct RenderTarget {
 // depthReadable: the depth attachment is stored and can be copied out after the pass (--depth-out).
 // depthLoaded: the render pass loads depth instead of clearing it; fill it first with uploadDepth.
 RenderTarget createRenderTarget(const Gpu& gpu, uint32_t width, uint32_t height, float depthClear,
-                                bool depthReadable = false, bool depthLoaded = false);
+                                bool depthReadable = false, bool depthLoaded = false,
+                                VkFormat colorFormat = kColorFormat, VkFormat color1Format = VK_FORMAT_UNDEFINED);
 // The depth attachment's layout change from -> to, ordered by the access and stage masks.
 void depthBarrier(VkCommandBuffer cmd, const RenderTarget& target, VkImageLayout from, VkImageLayout to,
                   VkAccessFlags srcAccess, VkAccessFlags dstAccess, VkPipelineStageFlags srcStage, VkPipelineStageFlags dstStage);
