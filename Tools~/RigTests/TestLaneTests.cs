@@ -55,6 +55,19 @@ namespace GregoryTerrain.Rig.Tests
             Assert.That(ordered.Select(o => o.order), Is.Unique, "two fixtures share a place");
         }
 
+        /// <summary>
+        /// A dotnet build writes the obj and bin folders of every project it references (Core's among them):
+        /// two at once on the lane would race for them, so at most one parallel fixture starts one
+        /// (UnityApiCheckTests, once per run; PublicApiTests reads what that build wrote).
+        /// </summary>
+        [Test]
+        public void AtMostOneParallelFixtureStartsADotnetBuild()
+        {
+            var building = Sources().Where(s => s.Value.Contains(ParallelMark) && Regex.IsMatch(s.Value, @"""dotnet"",\s*\$?""build\b"))
+                .Select(s => s.Key).ToList();
+            Assert.That(building, Has.Count.LessThanOrEqualTo(1), "parallel fixtures that start a dotnet build: " + string.Join(", ", building));
+        }
+
         [Test]
         public void EachParallelFixtureWritesInAFolderNoOtherFixtureNames()
         {
