@@ -9,7 +9,7 @@ using NUnit.Framework;
 
 namespace GregoryTerrain.Rig.Tests
 {
-    [TestFixture, Parallelizable(ParallelScope.Self)]
+    [TestFixture, Parallelizable(ParallelScope.Self), Order(2)]
     public class BenchSmokeTests
     {
         string _output;

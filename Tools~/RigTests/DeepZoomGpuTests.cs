@@ -12,7 +12,7 @@ using NUnit.Framework;
 
 namespace GregoryTerrain.Rig.Tests
 {
-    [TestFixture, Parallelizable(ParallelScope.Self)]
+    [TestFixture, Parallelizable(ParallelScope.Self), Order(11)]
     public class DeepZoomGpuTests
     {
         const int Tiles = 4, Factor = 8;   // k / 8 is exact in lavapipe's 16.16 tess coordinates

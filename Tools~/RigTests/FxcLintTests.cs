@@ -13,7 +13,7 @@ namespace GregoryTerrain.Rig.Tests
     /// form (and code that only looks alike) gives no finding. `gt shaderlab` runs the same rules on
     /// every case of the package (ShaderLibraryTests.TheLintFindsNothing).
     /// </summary>
-    [TestFixture]
+    [TestFixture, Parallelizable(ParallelScope.Self)]
     public class FxcLintTests
     {
         const string Kernel = @"

@@ -20,7 +20,7 @@ namespace GregoryTerrain.Rig.Tests
     /// <summary>gt-cli ended any other way, or printed a stack trace: a crash.</summary>
     public sealed class CliCrash : Exception { public CliCrash(string m) : base(m) { } }
 
-    [TestFixture]
+    [TestFixture, Parallelizable(ParallelScope.Self)]
     public class HostileCliTests
     {
         const int TimeoutMs = 30000;

@@ -81,7 +81,7 @@ namespace GregoryTerrain.Rig.Tests
 
     }
 
-    [TestFixture, Parallelizable(ParallelScope.Self)]
+    [TestFixture, Parallelizable(ParallelScope.Self), Order(4)]
     public class LodEstimateGpuTests
     {
         /// <summary>

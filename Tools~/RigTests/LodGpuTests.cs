@@ -13,7 +13,7 @@ using NUnit.Framework;
 
 namespace GregoryTerrain.Rig.Tests
 {
-    [TestFixture, Parallelizable(ParallelScope.Self)]
+    [TestFixture, Parallelizable(ParallelScope.Self), Order(5)]
     public class LodGpuTests
     {
         // Per run: M x M tiles a level, uniform even factor F (fine seam edges draw F / 2).

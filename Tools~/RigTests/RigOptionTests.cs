@@ -14,8 +14,9 @@ using NUnit.Framework;
 
 namespace GregoryTerrain.Rig.Tests
 {
-    // Each probe is its own process in its own folder: two at a time keep both cores busy.
-    [TestFixture, Parallelizable(ParallelScope.Children)]
+    // Each probe is its own process in its own folder: two at a time keep both cores busy, and the
+    // fixture shares the lane with the other slow ones (.build/rig-options is its own).
+    [TestFixture, Parallelizable(ParallelScope.Self | ParallelScope.Children), Order(9)]
     public class RigOptionTests
     {
         /// <summary>One number of an option: [Lo, Hi] (above Lo when Open), integers when Whole, 0 refused when NotZero.</summary>

@@ -13,7 +13,7 @@ namespace GregoryTerrain.Rig.Tests
     /// variant listed in Tools~/rig/shader_variants.txt compiled, validated and cross-compiled, and
     /// that an effect which is off leaves no code behind.
     /// </summary>
-    [TestFixture, Parallelizable(ParallelScope.Self)]
+    [TestFixture, Parallelizable(ParallelScope.Self), Order(3)]
     public class ShaderCompileTests
     {
         static readonly string[] Stages = { "vert", "tesc", "tese", "frag", "fallback" };

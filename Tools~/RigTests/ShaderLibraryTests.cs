@@ -16,7 +16,7 @@ namespace GregoryTerrain.Rig.Tests
     /// URP-only and an HDRP-only project would import it. Also shows the check failing on broken
     /// copies of the package, and the PackageRequirements selection on a copy with known blocks.
     /// </summary>
-    [TestFixture, Parallelizable(ParallelScope.Self)]
+    [TestFixture, Parallelizable(ParallelScope.Self), Order(1)]
     public class ShaderLibraryTests
     {
         static readonly string[] Emulations = { "half-twins", "texture-types", "hdrp-matrix-swizzle", "hdrp-shadow-context-buffer" };
@@ -294,7 +294,7 @@ namespace GregoryTerrain.Rig.Tests
     /// missing libraries; and the project kinds' SubShader selection on a copy with known blocks.
     /// Apart from ShaderLibraryTests so that running these does not run the whole check.
     /// </summary>
-    [TestFixture, Parallelizable(ParallelScope.Self)]
+    [TestFixture, Parallelizable(ParallelScope.Self), Order(6)]
     public class ShaderLibraryCheckTests
     {
         static string ShaderLib => ShaderLibraryTests.ShaderLib;

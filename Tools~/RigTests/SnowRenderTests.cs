@@ -13,7 +13,7 @@ using NUnit.Framework;
 
 namespace GregoryTerrain.Rig.Tests
 {
-    [TestFixture, Parallelizable(ParallelScope.Self)]
+    [TestFixture, Parallelizable(ParallelScope.Self), Order(8)]
     public class SnowRenderTests
     {
         static readonly string[] Stages = { "vert", "tesc", "tese", "frag", "fallback" };

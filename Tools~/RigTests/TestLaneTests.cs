@@ -1,5 +1,5 @@
 // gt test runs the fixtures marked [Parallelizable(ParallelScope.Self)] two at a time (Tools~/development.md,
-// "Test command"). Two fixtures that share a work folder would delete or overwrite each other's files
+// "Test command"), the slowest first ([Order]). Two fixtures that share a work folder would delete or overwrite each other's files
 // only when NUnit happens to pair them: these checks read the fixtures' sources instead.
 using System.Collections.Generic;
 using System.IO;
@@ -12,7 +12,7 @@ namespace GregoryTerrain.Rig.Tests
     [TestFixture]
     public class TestLaneTests
     {
-        const string ParallelMark = "Parallelizable(ParallelScope.Self)";
+        const string ParallelMark = "Parallelizable(ParallelScope.Self";   // Self, or Self | Children
         // Folders under .build that fixtures only read (built by gt setup).
         static readonly string[] ToolFolders = { "gt-cli", "harness", "computerig" };
 
@@ -30,6 +30,42 @@ namespace GregoryTerrain.Rig.Tests
         {
             var parallel = Sources().Where(s => s.Value.Contains(ParallelMark)).Select(s => s.Key).ToList();
             Assert.That(parallel, Does.Contain("ShaderLibraryTests.cs").And.Contain("BenchSmokeTests.cs").And.Contain("GpuPropertyTests.cs"));
+        }
+
+        /// <summary>
+        /// The fixtures given an [Order] start before the others, in that order: the slowest first, so that the
+        /// last minutes do not leave a core idle behind one long fixture. Each is on the parallel lane (an ordered
+        /// fixture that runs alone gains nothing) and no two share a place.
+        /// </summary>
+        [Test]
+        public void TheSlowestFixturesStartFirst()
+        {
+            var ordered = new List<(int order, string fixture, bool parallel)>();
+            foreach (string source in Sources().Values)
+                foreach (Match m in Regex.Matches(source, @"\[TestFixture(?<attrs>[^\]]*)\]\s+public class (?<name>\w+)"))
+                {
+                    var order = Regex.Match(m.Groups["attrs"].Value, @"\bOrder\((\d+)\)");
+                    if (order.Success) ordered.Add((int.Parse(order.Groups[1].Value), m.Groups["name"].Value, m.Groups["attrs"].Value.Contains(ParallelMark)));
+                }
+            ordered.Sort();
+            TestContext.Out.WriteLine(string.Join(", ", ordered.Select(o => $"{o.order} {o.fixture}")));
+            Assert.That(ordered.Select(o => o.fixture).Take(3), Is.EqualTo(new[] { "ShaderLibraryTests", "BenchSmokeTests", "ShaderCompileTests" }),
+                "the three longest (the shaderlab check ~600 CPU s, the bench smoke ~150, gt shaders ~150) start first");
+            Assert.That(ordered.Where(o => !o.parallel).Select(o => o.fixture), Is.Empty, "ordered fixtures not on the parallel lane");
+            Assert.That(ordered.Select(o => o.order), Is.Unique, "two fixtures share a place");
+        }
+
+        /// <summary>
+        /// A dotnet build writes the obj and bin folders of every project it references (Core's among them):
+        /// two at once on the lane would race for them, so at most one parallel fixture starts one
+        /// (UnityApiCheckTests, once per run; PublicApiTests reads what that build wrote).
+        /// </summary>
+        [Test]
+        public void AtMostOneParallelFixtureStartsADotnetBuild()
+        {
+            var building = Sources().Where(s => s.Value.Contains(ParallelMark) && Regex.IsMatch(s.Value, @"""dotnet"",\s*\$?""build\b"))
+                .Select(s => s.Key).ToList();
+            Assert.That(building, Has.Count.LessThanOrEqualTo(1), "parallel fixtures that start a dotnet build: " + string.Join(", ", building));
         }
 
         [Test]

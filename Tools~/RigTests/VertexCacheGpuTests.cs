@@ -11,7 +11,7 @@ using NUnit.Framework;
 
 namespace GregoryTerrain.Rig.Tests
 {
-    [TestFixture, Parallelizable(ParallelScope.Self)]
+    [TestFixture, Parallelizable(ParallelScope.Self), Order(7)]
     public class VertexCacheGpuTests
     {
         const string Cached = "noise+height_color+vertex_cache";
