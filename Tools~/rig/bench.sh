@@ -89,7 +89,7 @@ if [ -n "$docs" ]; then
   img="$PKG_DIR/Documentation~/images/accuracy_vs_time.png"
   py=python3; [ -x /usr/bin/python3 ] && /usr/bin/python3 -c "import matplotlib" 2>/dev/null && py=/usr/bin/python3   # the distribution's matplotlib
   "$py" "$RIG_DIR/bench_plot.py" "$docs/bench_table.tsv" "$img"
-  "$py" "$RIG_DIR/png_palette.py" "$img" "$img" 32   # the manual's pictures stay small
+  "$py" "$RIG_DIR/png_palette.py" "$img" "$img" 16   # a plot's few line colours; the manual's pictures stay small
   cat "$docs/bench_table.md"
   exit 0
 fi

@@ -91,7 +91,7 @@ if [ "$dem" = 1 ]; then
   if [ "$docs" = 1 ]; then
     mkdir -p "$PKG_DIR/Documentation~/images"
     # 32 colours: the noisy ground looks the same as at 64, 5 KB smaller
-    python3 "$RIG_DIR/png_palette.py" "$out/demo_dem.png" "$PKG_DIR/Documentation~/images/demo_dem.png" 32
+    python3 "$RIG_DIR/png_palette.py" "$out/demo_dem.png" "$PKG_DIR/Documentation~/images/demo_dem.png" 16
   fi
   exit 0
 fi

@@ -28,6 +28,6 @@ EXPOSURE_REPEAT=$([ $quick = 1 ] && echo 2 || echo 5) OUT="$run/out" bash "$run/
 if [ $docs = 1 ]; then
   top=$(sed -n 's/^resolutions //p' "$run/snow/run.txt" | tr ' ' '\n' | sort -n | tail -1)
   # 32 colours: fine-grained snow compresses poorly, and at 32 it looks the same as at 64, 9 KB smaller
-  python3 "$RIG_DIR/png_palette.py" "$run/out/snow_$top.png" "$PKG_DIR/Documentation~/images/snow_ridge.png" 32
+  python3 "$RIG_DIR/png_palette.py" "$run/out/snow_$top.png" "$PKG_DIR/Documentation~/images/snow_ridge.png" 16
   say "wrote Documentation~/images/snow_ridge.png (R $top)"
 fi
