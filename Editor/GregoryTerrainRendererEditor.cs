@@ -63,7 +63,8 @@ namespace GregoryTerrain.EditorTools
                 EditorGUILayout.HelpBox("Assign a material that uses GregoryTerrain/Terrain.", MessageType.Warning);
         }
 
-        // The serialized field names are the scenes' data: never rename them. What shows where: RendererInspectorLayout.
+        // The serialized field paths are the scenes' data: a rename keeps the old field hidden and maps it in
+        // FlatSettingsUpgrade.Paths (the load's move, the prefab override upgrade). What shows where: RendererInspectorLayout.
         void DrawSettings()
         {
             var contexts = targets.Select(t => ContextOf((GregoryTerrainRenderer)t)).ToList();

@@ -1,3 +1,4 @@
+using System.Linq;
 using UnityEditor;
 using UnityEngine;
 
@@ -11,13 +12,15 @@ namespace GregoryTerrain.EditorTools
         static float Line => EditorGUIUtility.singleLineHeight + EditorGUIUtility.standardVerticalSpacing;
 
         readonly SettingField[] _fields;
+        string _problem;   // this GUI event's, found in GetPropertyHeight (Unity asks it before OnGUI)
 
         protected SettingsDrawer(SettingField[] fields) => _fields = fields;
 
         public override float GetPropertyHeight(SerializedProperty property, GUIContent label)
         {
             if (!property.isExpanded) return EditorGUIUtility.singleLineHeight;
-            int lines = 1 + _fields.Length + (SettingFields.Problem(property.boxedValue) != null ? HelpBoxLines : 0);
+            _problem = SettingFields.Problem(Selected(property));
+            int lines = 1 + _fields.Length + (_problem != null ? HelpBoxLines : 0);
             return lines * Line - EditorGUIUtility.standardVerticalSpacing;
         }
 
@@ -34,10 +37,20 @@ namespace GregoryTerrain.EditorTools
                 row.y += Line;
                 DrawField(row, property.FindPropertyRelative(f.name), f);
             }
-            string problem = SettingFields.Problem(property.boxedValue);
-            if (problem != null)
-                EditorGUI.HelpBox(new Rect(row.x, row.y + Line, row.width, HelpBoxLines * Line - EditorGUIUtility.standardVerticalSpacing), problem, MessageType.Error);
+            if (_problem != null)
+                EditorGUI.HelpBox(new Rect(row.x, row.y + Line, row.width, HelpBoxLines * Line - EditorGUIUtility.standardVerticalSpacing), _problem, MessageType.Error);
             EditorGUI.indentLevel--;
+        }
+
+        /// <summary>
+        /// Each selected object's struct: a field of the object itself is read from each target (the
+        /// property's boxedValue holds the first selected only); a struct nested deeper, the first selected's.
+        /// </summary>
+        (string, object)[] Selected(SerializedProperty property)
+        {
+            Object[] targets = property.serializedObject.targetObjects;
+            if (property.propertyPath != fieldInfo.Name) return new (string, object)[] { (targets[0].name, property.boxedValue) };
+            return targets.Select(t => (t.name, fieldInfo.GetValue(t))).ToArray();
         }
 
         /// <summary>One field's slider (the renderer inspector's too); mixed values and overrides as Unity shows them.</summary>

@@ -1,4 +1,5 @@
 using System;
+using System.Collections.Generic;
 
 namespace GregoryTerrain
 {
@@ -43,6 +44,14 @@ namespace GregoryTerrain
             new SettingField("noiseAmplitude", "Color Noise Amplitude", "How strongly noise breaks up the boundary between the low and high colours.", 0f, 1f),
             new SettingField("noiseFrequency", "Color Noise Frequency", "Noise cells across the whole terrain for the colour noise (the inspector shows one cell's width in metres).", 0.5f, 4096f),
         };
+
+        /// <summary>The first selected object's whose settings Validate refuses, named when more than one is selected; null when all are valid.</summary>
+        public static string Problem(IReadOnlyList<(string name, object settings)> selected)
+        {
+            foreach (var (name, settings) in selected)
+                if (Problem(settings) is string problem) return selected.Count > 1 ? $"{name}: {problem}" : problem;
+            return null;
+        }
 
         /// <summary>Validate's message for a settings struct (naming field and value), or null when valid or another type.</summary>
         public static string Problem(object settings)

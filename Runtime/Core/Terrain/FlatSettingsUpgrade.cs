@@ -12,6 +12,25 @@ namespace GregoryTerrain
         public const int UnsetInt = int.MinValue;
         public const float UnsetFloat = float.MinValue;
 
+        /// <summary>Each old field's serialized name and its path now, in <see cref="Move"/>'s order: the load and the editor's prefab override upgrade both read it.</summary>
+        public static readonly (string old, string now)[] Paths =
+        {
+            ("tiles", "tessellation.tiles"), ("maxFactor", "tessellation.maxFactor"),
+            ("targetPixelError", "tessellation.targetPixels"), ("uniformFactor", "tessellation.uniformFactor"),
+            ("noiseAmplitude", "noise.amplitude"), ("noiseFrequency", "noise.frequency"),
+            ("noiseAlpha", "noise.alpha"), ("noiseBeta", "noise.beta"), ("noiseOctaves", "noise.octaves"),
+            ("colorGamma", "heightColor.gamma"), ("colorNoiseAmplitude", "heightColor.noiseAmplitude"),
+            ("colorNoiseFrequency", "heightColor.noiseFrequency"),
+        };
+
+        /// <summary>The path now of an old field's serialized <paramref name="path"/>, or null when it is not an old field.</summary>
+        public static string PathNow(string path)
+        {
+            foreach (var (old, now) in Paths)
+                if (old == path) return now;
+            return null;
+        }
+
         /// <summary>Moves each set old field (named as it was serialized) into its struct field and unsets it; true when any moved.</summary>
         public static bool Move(ref TessellationSettings tessellation, ref NoiseSettings noise, ref HeightColorSettings heightColor,
             ref int tiles, ref float maxFactor, ref float targetPixelError, ref int uniformFactor,

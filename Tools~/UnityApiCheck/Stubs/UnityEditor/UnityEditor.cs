@@ -51,7 +51,7 @@ namespace UnityEditor
         public void Dispose() { }                                                            // SR:SerializedObject.Dispose
     }
 
-    public class SerializedProperty : IDisposable                                            // SR:SerializedProperty
+    public partial class SerializedProperty : IDisposable                                           // SR:SerializedProperty
     {
         public bool hasMultipleDifferentValues => false;                                     // SR:SerializedProperty-hasMultipleDifferentValues (get only)
         public SerializedProperty FindPropertyRelative(string relativePropertyPath) => null; // SR:SerializedProperty.FindPropertyRelative
@@ -72,7 +72,7 @@ namespace UnityEditor
 
     // Editor/Mono/ScriptAttributeGUI/GUIDrawer.cs, PropertyDrawer.cs, CustomPropertyDrawerAttribute.cs in 2022.3.
     public abstract class GUIDrawer { }                                                      // SR:GUIDrawer
-    public abstract class PropertyDrawer : GUIDrawer                                         // SR:PropertyDrawer
+    public abstract partial class PropertyDrawer : GUIDrawer                                       // SR:PropertyDrawer
     {
         public virtual void OnGUI(Rect position, SerializedProperty property, GUIContent label) { }          // SR:PropertyDrawer.OnGUI
         public virtual float GetPropertyHeight(SerializedProperty property, GUIContent label) => 18f;        // SR:PropertyDrawer.GetPropertyHeight
@@ -151,6 +151,7 @@ namespace UnityEditor
         public static string OpenFilePanel(string title, string directory, string extension) => null;                     // SR:EditorUtility.OpenFilePanel
         public static void SetDirty(Object target) { }                                                                    // SR:EditorUtility.SetDirty
         public static bool DisplayDialog(string title, string message, string ok) => true;                                // SR:EditorUtility.DisplayDialog
+        public static bool DisplayDialog(string title, string message, string ok, string cancel) => true;                 // SR:EditorUtility.DisplayDialog
         public static bool DisplayCancelableProgressBar(string title, string info, float progress) => false;              // SR:EditorUtility.DisplayCancelableProgressBar
         public static void ClearProgressBar() { }                                                                         // SR:EditorUtility.ClearProgressBar
         public static bool IsPersistent(Object target) => false;                                                          // SR:EditorUtility.IsPersistent
