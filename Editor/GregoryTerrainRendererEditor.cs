@@ -63,7 +63,8 @@ namespace GregoryTerrain.EditorTools
                 EditorGUILayout.HelpBox("Assign a material that uses GregoryTerrain/Terrain.", MessageType.Warning);
         }
 
-        // The serialized field names are the scenes' data: never rename them. What shows where: RendererInspectorLayout.
+        // The serialized field paths are the scenes' data: a rename keeps the old field hidden and maps it in
+        // FlatSettingsUpgrade.Paths (the load's move, the prefab override upgrade). What shows where: RendererInspectorLayout.
         void DrawSettings()
         {
             var contexts = targets.Select(t => ContextOf((GregoryTerrainRenderer)t)).ToList();
@@ -74,7 +75,7 @@ namespace GregoryTerrain.EditorTools
                     foreach (string name in fields)
                     {
                         if (!RendererInspectorLayout.ShowsForAny(name, contexts)) continue;
-                        if (name == "colorGamma") KeywordOffNote(ShaderIds.HeightColorKeyword, "Height colour");
+                        if (name == "heightColor.gamma") KeywordOffNote(ShaderIds.HeightColorKeyword, "Height colour");
                         DrawField(name);
                     }
                 });
@@ -88,7 +89,8 @@ namespace GregoryTerrain.EditorTools
             if (name == RendererInspectorLayout.ViewModeField) { DrawViewMode(); DrawQuality(); return; }
             foreach (var m in RendererInspectorLayout.MetreFields)
                 if (m.field == name && MetresField(m.field, m.kind, m.label, m.min, m.max)) return;
-            EditorGUILayout.PropertyField(serializedObject.FindProperty(name));
+            if (RendererInspectorLayout.Find(name) is SettingField f) SettingsDrawer.DrawField(EditorGUILayout.GetControlRect(), P(name), f);
+            else EditorGUILayout.PropertyField(P(name));
         }
 
         static readonly GUIContent ViewModeLabel = new GUIContent("View mode", "Open world: from each camera's feet to the horizon (Horizon levels). " +
@@ -139,7 +141,7 @@ namespace GregoryTerrain.EditorTools
         static void MakeTilesOpenWorld(UnityEngine.Object renderer)
         {
             using var so = new SerializedObject(renderer);
-            SerializedProperty tiles = so.FindProperty("tiles");
+            SerializedProperty tiles = so.FindProperty("tessellation.tiles");
             int open = RendererInspectorLayout.TilesForOpenWorld(tiles.intValue);
             if (open == tiles.intValue) return;
             tiles.intValue = open;
@@ -180,7 +182,7 @@ namespace GregoryTerrain.EditorTools
 
         void DrawQuality()
         {
-            SerializedProperty[] p = { P("targetPixelError"), P("maxFactor"), P("tiles"), P("noiseOctaves"), P("vertexEvaluation") };
+            SerializedProperty[] p = { P("tessellation.targetPixels"), P("tessellation.maxFactor"), P("tessellation.tiles"), P("noise.octaves"), P("vertexEvaluation") };
             QualityPreset? now = RendererInspectorLayout.PresetOf(new QualityValues(p[0].floatValue, p[1].floatValue, p[2].intValue, p[3].intValue, p[4].intValue));
             EditorGUI.showMixedValue = p.Any(x => x.hasMultipleDifferentValues);
             EditorGUI.BeginChangeCheck();
@@ -212,15 +214,16 @@ namespace GregoryTerrain.EditorTools
         {
             Double3 unit = ((GregoryTerrainRenderer)target).WorldUnitsPerObjectUnit;
             if (targets.Any(t => !((GregoryTerrainRenderer)t).WorldUnitsPerObjectUnit.Equals(unit))) return false;
-            DrawMetresField(P(name), name, unit, kind, text, min, max, _refused);
+            DrawMetresField(P(name), name, unit, kind, text, min, max, _refused, RendererInspectorLayout.Find(name)?.tooltip);
             return true;
         }
 
-        /// <summary><paramref name="p"/> in metres of a terrain of <paramref name="unit"/> (x: width, y: height scale); a refused value's note kept in <paramref name="refused"/>.</summary>
-        internal static void DrawMetresField(SerializedProperty p, string name, Double3 unit, TerrainLength kind, string text, float min, float max, Dictionary<string, string> refused)
+        /// <summary><paramref name="p"/> in metres of a terrain of <paramref name="unit"/> (x: width, y: height scale); a refused value's note kept in <paramref name="refused"/>; <paramref name="tooltip"/>: a settings struct field's (Core has no [Tooltip]), else the field's own.</summary>
+        internal static void DrawMetresField(SerializedProperty p, string name, Double3 unit, TerrainLength kind, string text, float min, float max,
+            Dictionary<string, string> refused, string tooltip = null)
         {
             Rect rect = EditorGUILayout.GetControlRect();
-            GUIContent label = EditorGUI.BeginProperty(rect, new GUIContent(text, $"{p.tooltip} Stored: {p.floatValue:G4}; it scales with the terrain."), p);
+            GUIContent label = EditorGUI.BeginProperty(rect, new GUIContent(text, $"{tooltip ?? p.tooltip} Stored: {p.floatValue:G4}; it scales with the terrain."), p);
             EditorGUI.showMixedValue = p.hasMultipleDifferentValues;
             EditorGUI.BeginChangeCheck();
             float metres = (float)RendererInspectorLayout.ToMetres(kind, p.floatValue, unit.y, unit.x);

@@ -2,6 +2,7 @@ using System;
 using System.Collections.Generic;
 using UnityEngine;
 using UnityEngine.Rendering;
+using static GregoryTerrain.FlatSettingsUpgrade;
 using static GregoryTerrain.UnityConversions;
 #if UNITY_EDITOR
 using UnityEditor;
@@ -20,7 +21,7 @@ namespace GregoryTerrain
     [ExecuteAlways]
     [DisallowMultipleComponent]
     [AddComponentMenu("Gregory Terrain/Gregory Terrain Renderer")]
-    public sealed class GregoryTerrainRenderer : MonoBehaviour
+    public sealed class GregoryTerrainRenderer : MonoBehaviour, ISerializationCallbackReceiver
     {
         /// <summary>
         /// Bytes set per camera in the steady state: <c>_Range</c>, one float4 (Compute cache too);
@@ -34,17 +35,7 @@ namespace GregoryTerrain
         [Tooltip("A material using the GregoryTerrain/Terrain shader. Noise, height colour and debug views are toggles on the material.")]
         [SerializeField] Material material;
 
-        [Tooltip("Tiles per side of the drawn area. More tiles draw more detail at the same max factor; fewer, larger tiles draw the same triangles faster.")]
-        [SerializeField, Range(1, 64)] int tiles = 16;
-
-        [Tooltip("Most subdivisions of a tile edge (at most 64). Caps the triangle count.")]
-        [SerializeField, Range(1f, 64f)] float maxFactor = 64f;
-
-        [Tooltip("How far, in pixels, the drawn triangles may stray from the surface (like Unity Terrain's Pixel Error). Halving it about doubles the triangles.")]
-        [SerializeField, Range(0.25f, 64f)] float targetPixelError = 8f;
-
-        [Tooltip("0: subdivide each tile edge by its size on screen. Above 0: subdivide every edge this many times (for testing and measuring).")]
-        [SerializeField, Range(0, 64)] int uniformFactor;
+        [SerializeField] TessellationSettings tessellation = TessellationSettings.Default;
 
         [Tooltip("Keep the tiles fixed on the terrain while the view pans, so vertices don't swim and the Compute cache updates only the tiles a pan brings in.")]
         [SerializeField] bool anchorTiles = true;
@@ -70,25 +61,11 @@ namespace GregoryTerrain
         [Tooltip("The part of the terrain drawn, as min x, min y, max x, max y inside 0..1. Range controllers set it every frame.")]
         [SerializeField] Vector4 range = new Vector4(0f, 0f, 1f, 1f);
 
-        [Tooltip("Height of the largest noise layer, in terrain height units (the inspector shows metres: times Height Scale).")]
-        [SerializeField, Range(0f, 0.5f)] float noiseAmplitude = 0.02f;
-        [Tooltip("Noise cells across the whole terrain in the largest noise layer (the inspector shows one cell's width in metres).")]
-        [SerializeField, Range(0.5f, 4096f)] float noiseFrequency = 16f;
-        [Tooltip("How much finer each noise layer is than the one before it (2: twice as fine).")]
-        [SerializeField, Range(1.1f, 8f)] float noiseAlpha = 2f;
-        [Tooltip("How much weaker each noise layer is than the one before it (2: half the height).")]
-        [SerializeField, Range(1.1f, 8f)] float noiseBeta = 2f;
-        [Tooltip("Most noise layers added. Layers finer than the mesh can show are left out.")]
-        [SerializeField, Range(0, 16)] int noiseOctaves = 6;
+        [SerializeField] NoiseSettings noise = new NoiseSettings(0.02f, 16f, 2f, 2f, 6);
         [Tooltip("0: the mesh detail decides how many noise layers show. Above 0: assume this many vertices across the drawn area instead.")]
         [SerializeField, Min(0f)] float noiseVerticesAcross = 0f;
 
-        [Tooltip("Height over which the colour blends from the low colour to the high colour, in terrain height units (the inspector shows metres).")]
-        [SerializeField, Range(0.001f, 4f)] float colorGamma = 0.5f;
-        [Tooltip("How strongly noise breaks up the boundary between the low and high colours.")]
-        [SerializeField, Range(0f, 1f)] float colorNoiseAmplitude = 0.1f;
-        [Tooltip("Noise cells across the whole terrain for the colour noise (the inspector shows one cell's width in metres).")]
-        [SerializeField, Range(0.5f, 4096f)] float colorNoiseFrequency = 64f;
+        [SerializeField] HeightColorSettings heightColor = new HeightColorSettings(0.5f, 0.1f, 64f);
         [Tooltip("Colour of the low ground.")]
         [SerializeField] Color colorLow = new Color(0.22f, 0.33f, 0.14f);
         [Tooltip("Colour of the high ground.")]
@@ -98,6 +75,21 @@ namespace GregoryTerrain
         [SerializeField] ShadowCastingMode shadowCasting = ShadowCastingMode.On;
         [Tooltip("Whether the terrain receives shadows.")]
         [SerializeField] bool receiveShadows = true;
+
+        // The old flat layout, unset unless old data wrote it (FlatSettingsUpgrade).
+        const string MovedIntoStructs = "moved into tessellation, noise and heightColor";
+        [SerializeField, HideInInspector, Obsolete(MovedIntoStructs)] int tiles = UnsetInt;
+        [SerializeField, HideInInspector, Obsolete(MovedIntoStructs)] float maxFactor = UnsetFloat;
+        [SerializeField, HideInInspector, Obsolete(MovedIntoStructs)] float targetPixelError = UnsetFloat;
+        [SerializeField, HideInInspector, Obsolete(MovedIntoStructs)] int uniformFactor = UnsetInt;
+        [SerializeField, HideInInspector, Obsolete(MovedIntoStructs)] float noiseAmplitude = UnsetFloat;
+        [SerializeField, HideInInspector, Obsolete(MovedIntoStructs)] float noiseFrequency = UnsetFloat;
+        [SerializeField, HideInInspector, Obsolete(MovedIntoStructs)] float noiseAlpha = UnsetFloat;
+        [SerializeField, HideInInspector, Obsolete(MovedIntoStructs)] float noiseBeta = UnsetFloat;
+        [SerializeField, HideInInspector, Obsolete(MovedIntoStructs)] int noiseOctaves = UnsetInt;
+        [SerializeField, HideInInspector, Obsolete(MovedIntoStructs)] float colorGamma = UnsetFloat;
+        [SerializeField, HideInInspector, Obsolete(MovedIntoStructs)] float colorNoiseAmplitude = UnsetFloat;
+        [SerializeField, HideInInspector, Obsolete(MovedIntoStructs)] float colorNoiseFrequency = UnsetFloat;
 
         /// <summary>Draws the patches' control points in the Scene view (editor only).</summary>
         [Tooltip("Draw the control points in the Scene view, to move them with handles (shortcut G in the Scene view by default).")]
@@ -150,7 +142,7 @@ namespace GregoryTerrain
 
         /// <summary>The queries' noise: with GT_NOISE the noise settings, else null.</summary>
         internal NoiseSettings? QueryNoise => material != null && material.IsKeywordEnabled(ShaderIds.NoiseKeyword)
-            ? new NoiseSettings(noiseAmplitude, noiseFrequency, noiseAlpha, noiseBeta, noiseOctaves) : (NoiseSettings?)null;
+            ? noise : (NoiseSettings?)null;
 
         /// <summary>Whether a grid is uploaded with valid settings: <see cref="WorldBounds"/> holds the drawn terrain.</summary>
         internal bool HasDrawn => Frame.Gpu.Grid != null && _state.error == null;
@@ -236,7 +228,7 @@ namespace GregoryTerrain
         internal double ValidHeightScale() => heightScale > 0f && float.IsFinite(heightScale) ? heightScale : 1.0;
 
         /// <summary>Tiles per side M.</summary>
-        public int Tiles { get => tiles; set => tiles = Mathf.Clamp(value, 1, 64); }
+        public int Tiles { get => tessellation.tiles; set => tessellation.tiles = Mathf.Clamp(value, 1, 64); }
 
         /// <summary>
         /// The view: false draws one range (<c>Range</c> or a range controller's, the paper's view);
@@ -246,7 +238,7 @@ namespace GregoryTerrain
         public bool HorizonLevels { get => horizonLevels; set => horizonLevels = value; }
 
         /// <summary>Uniform factor (0 = adaptive); the Scene view's Uniform Factor Down / Up shortcuts (U / I by default) change it.</summary>
-        public int UniformFactor { get => uniformFactor; set => uniformFactor = Mathf.Clamp(value, 0, 64); }
+        public int UniformFactor { get => (int)tessellation.uniformFactor; set => tessellation.uniformFactor = Mathf.Clamp(value, 0, 64); }
 
         /// <summary>The drawn range. Throws ArgumentException (field and value) unless finite, non-empty and in the unit square; the old one is kept.</summary>
         public TerrainRange Range
@@ -278,7 +270,7 @@ namespace GregoryTerrain
 
         /// <summary>The most triangles these settings draw: 2 F^2 per tile, F the uniform factor, else maxFactor (fallback: its grid's). A view's: <see cref="EstimateTrianglesInView"/>.</summary>
         public double EstimatedTriangleCount => DrawnTileCount * TessellationPolicy.EstimateTriangleCount(1,
-            DrawsFallback ? fallbackGridFactor : uniformFactor > 0 ? uniformFactor : maxFactor);
+            DrawsFallback ? fallbackGridFactor : tessellation.IsUniform ? tessellation.uniformFactor : tessellation.maxFactor);
 
         /// <summary>Tiles drawn: M^2 ((M + 1)^2 anchored), or the Horizon levels' (<see cref="LodLevels.DrawnTileCount"/>).</summary>
         internal int DrawnTileCount
@@ -286,7 +278,7 @@ namespace GregoryTerrain
             get
             {
                 int levels = LevelCount;
-                if (levels > 0) return LodLevels.DrawnTileCount(levels, tiles);
+                if (levels > 0) return LodLevels.DrawnTileCount(levels, tessellation.tiles);
                 int across = TilesAcross(DrawsFallback);
                 return across * across;
             }
@@ -345,7 +337,7 @@ namespace GregoryTerrain
         }
 
         /// <summary>Tiles per axis the draw makes: M + 1 anchored, else M.</summary>
-        int TilesAcross(bool fallback) => tiles + (Settings(fallback).AnchorsTiles ? 1 : 0);
+        int TilesAcross(bool fallback) => tessellation.tiles + (Settings(fallback).AnchorsTiles ? 1 : 0);
 
         /// <summary>Tiles per axis the cache holds (it never runs with the fallback grid).</summary>
         internal int CacheTilesAcross => TilesAcross(false);
@@ -493,15 +485,15 @@ namespace GregoryTerrain
 
         internal Bounds WorldBounds() => Frame.WorldBounds();
 
-        /// <summary>The serialized settings as Core values.</summary>
+        /// <summary>The serialized settings as Core values; the fallback draws its grid's factor as the uniform factor.</summary>
         internal FrameSettings Settings(bool fallback)
         {
             Color low = colorLow.linear, high = colorHigh.linear;
+            TessellationSettings tess = tessellation;
+            if (fallback) tess.uniformFactor = fallbackGridFactor;
             return new FrameSettings
             {
-                tess = new TessellationSettings(tiles, maxFactor, targetPixelError, fallback ? fallbackGridFactor : uniformFactor),
-                noise = new NoiseSettings(noiseAmplitude, noiseFrequency, noiseAlpha, noiseBeta, noiseOctaves),
-                heightColor = new HeightColorSettings(colorGamma, colorNoiseAmplitude, colorNoiseFrequency),
+                tess = tess, noise = noise, heightColor = heightColor,
                 colorLow = new Float3(low.r, low.g, low.b), colorHigh = new Float3(high.r, high.g, high.b),
                 noiseVerticesAcross = noiseVerticesAcross, anchorTiles = anchorTiles, levels = LevelsOn(fallback), fallback = fallback,
             };
@@ -526,10 +518,20 @@ namespace GregoryTerrain
         /// <summary>sum_k amplitude / beta^k over the octaves: the most noise can move a point.</summary>
         internal float NoiseMargin()
         {
-            float sum = 0f, a = noiseAmplitude;
-            for (int k = 0; k < noiseOctaves; k++) { sum += a; a /= noiseBeta; }
+            float sum = 0f, a = noise.amplitude;
+            for (int k = 0; k < noise.octaves; k++) { sum += a; a /= noise.beta; }
             return sum;
         }
+
+        void ISerializationCallbackReceiver.OnBeforeSerialize() { }
+
+#pragma warning disable CS0618
+        void ISerializationCallbackReceiver.OnAfterDeserialize() => Move(ref tessellation, ref noise, ref heightColor,
+            tiles: ref tiles, maxFactor: ref maxFactor, targetPixelError: ref targetPixelError, uniformFactor: ref uniformFactor,
+            noiseAmplitude: ref noiseAmplitude, noiseFrequency: ref noiseFrequency, noiseAlpha: ref noiseAlpha, noiseBeta: ref noiseBeta,
+            noiseOctaves: ref noiseOctaves, colorGamma: ref colorGamma, colorNoiseAmplitude: ref colorNoiseAmplitude,
+            colorNoiseFrequency: ref colorNoiseFrequency);
+#pragma warning restore CS0618
 
         internal void SyncRangeFromSerialized()
         {

@@ -54,13 +54,32 @@ namespace GregoryTerrain
         public static readonly (string title, bool open, string[] fields)[] Sections =
         {
             ("Content", true, new[] { "grid", "material", "terrainSize", "heightScale", "range" }),
-            ("Tessellation", true, new[] { ViewModeField, "tiles", "uniformFactor", "maxFactor", "targetPixelError", "anchorTiles", "fallbackGridFactor" }),
+            ("Tessellation", true, new[] { ViewModeField, "tessellation.tiles", "tessellation.uniformFactor", "tessellation.maxFactor", "tessellation.targetPixels", "anchorTiles", "fallbackGridFactor" }),
             ("Vertex evaluation", true, new[] { "vertexEvaluation", "cacheShader", "lodCamera" }),
-            ("Noise and colour", false, new[] { "noiseAmplitude", "noiseFrequency", "noiseAlpha", "noiseBeta", "noiseOctaves", "noiseVerticesAcross",
-                                                "colorGamma", "colorNoiseAmplitude", "colorNoiseFrequency", "colorLow", "colorHigh" }),
+            ("Noise and colour", false, new[] { "noise.amplitude", "noise.frequency", "noise.alpha", "noise.beta", "noise.octaves", "noiseVerticesAcross",
+                                                "heightColor.gamma", "heightColor.noiseAmplitude", "heightColor.noiseFrequency", "colorLow", "colorHigh" }),
             ("Lighting", false, new[] { "shadowCasting", "receiveShadows" }),
             ("Debug", false, new[] { "debugShowControlPoints", "debugShowPatchWireframe" }),
         };
+
+        /// <summary>The renderer's settings structs: its field name, the struct's fields (a section lists them as "field.name").</summary>
+        public static readonly (string field, SettingField[] fields)[] Structs =
+        {
+            ("tessellation", SettingFields.Tessellation), ("noise", SettingFields.Noise), ("heightColor", SettingFields.HeightColor),
+        };
+
+        /// <summary>The struct field a path such as "tessellation.tiles" names, or null for a plain renderer field.</summary>
+        public static SettingField? Find(string path)
+        {
+            int dot = path.IndexOf('.');
+            if (dot < 0) return null;
+            string head = path.Substring(0, dot), tail = path.Substring(dot + 1);
+            foreach (var (field, fields) in Structs)
+                if (field == head)
+                    foreach (SettingField f in fields)
+                        if (f.name == tail) return f;
+            return null;
+        }
 
         /// <summary>Whether <paramref name="field"/> changes what is drawn (the renderer's LevelsOn, AnchorsTiles, VertexCachePass.UpdateFrame).</summary>
         public static bool Shows(string field, InspectorContext c)
@@ -69,8 +88,8 @@ namespace GregoryTerrain
             switch (field)
             {
                 case "range": return c.mode == TerrainViewMode.SingleRange || (c.mode == TerrainViewMode.OpenWorld && c.fallback);
-                case "uniformFactor": return tessellates;
-                case "maxFactor": case "targetPixelError": return tessellates && c.adaptive;
+                case "tessellation.uniformFactor": return tessellates;
+                case "tessellation.maxFactor": case "tessellation.targetPixels": return tessellates && c.adaptive;
                 case "anchorTiles": return tessellates && c.adaptive && !levels;
                 case "fallbackGridFactor": return c.fallback;
                 case "vertexEvaluation": return tessellates && !levels;
@@ -141,14 +160,20 @@ namespace GregoryTerrain
         /// <summary>Open world's tiles: even and at least <see cref="LodLevels.MinTiles"/>.</summary>
         public static int TilesForOpenWorld(int tiles) => Math.Max(LodLevels.MinTiles, tiles + (tiles & 1));
 
-        /// <summary>Terrain-unit lengths, their labels in metres and their stored [Range].</summary>
+        /// <summary>Terrain-unit lengths, their labels in metres and their stored slider limits (SettingFields).</summary>
         public static readonly (string field, TerrainLength kind, string label, float min, float max)[] MetreFields =
         {
-            ("noiseAmplitude", TerrainLength.Height, "Noise amplitude (m)", 0f, 0.5f),
-            ("noiseFrequency", TerrainLength.CellsAcross, "Noise cell size (m)", 0.5f, 4096f),
-            ("colorGamma", TerrainLength.Height, "Colour blend height (m)", 0.001f, 4f),
-            ("colorNoiseFrequency", TerrainLength.CellsAcross, "Colour noise cell size (m)", 0.5f, 4096f),
+            Metres("noise.amplitude", TerrainLength.Height, "Noise amplitude (m)"),
+            Metres("noise.frequency", TerrainLength.CellsAcross, "Noise cell size (m)"),
+            Metres("heightColor.gamma", TerrainLength.Height, "Colour blend height (m)"),
+            Metres("heightColor.noiseFrequency", TerrainLength.CellsAcross, "Colour noise cell size (m)"),
         };
+
+        static (string, TerrainLength, string, float, float) Metres(string path, TerrainLength kind, string label)
+        {
+            SettingField f = Find(path) ?? throw new ArgumentException($"{path} is no settings struct field", nameof(path));
+            return (path, kind, label, f.min, f.max);
+        }
 
         /// <summary>Camera Range Controller's side of the square: a part of the terrain's width, shown in metres.</summary>
         public static readonly (string field, TerrainLength kind, string label, float min, float max) ViewDistanceField =

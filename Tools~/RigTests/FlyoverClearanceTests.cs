@@ -32,9 +32,12 @@ namespace GregoryTerrain.Rig.Tests
                         .ToDictionary(x => x.Item1, x => x.Item2);
         }
 
+        /// <summary>A field's value; "noise.amplitude" is the field of a struct written as a block under its name.</summary>
         static string Field(string obj, string name)
         {
-            var m = Regex.Match(obj, "^  " + name + @": (.*)$", RegexOptions.Multiline);
+            int dot = name.IndexOf('.');
+            var m = dot < 0 ? Regex.Match(obj, "^  " + name + @": (.*)$", RegexOptions.Multiline)
+                : Regex.Match(obj, "^  " + name.Substring(0, dot) + @":\n(?:    [^\n]*\n)*?    " + name.Substring(dot + 1) + @": (.*)$", RegexOptions.Multiline);
             Assert.That(m.Success, name + " not in the object:\n" + obj.Substring(0, Math.Min(obj.Length, 300)));
             return m.Groups[1].Value.Trim();
         }
@@ -82,8 +85,8 @@ namespace GregoryTerrain.Rig.Tests
             bool noise = Regex.IsMatch(material, @"^  - GT_NOISE$", RegexOptions.Multiline);
             TerrainKeywords tiled = Regex.IsMatch(material, @"^  - GT_NOISE_TABLE$", RegexOptions.Multiline) ? TerrainKeywords.NoiseTable : TerrainKeywords.None;
             NoiseSettings? settings = noise
-                ? new NoiseSettings((float)Number(renderer, "noiseAmplitude"), (float)Number(renderer, "noiseFrequency"),
-                                    (float)Number(renderer, "noiseAlpha"), (float)Number(renderer, "noiseBeta"), (int)Number(renderer, "noiseOctaves"))
+                ? new NoiseSettings((float)Number(renderer, "noise.amplitude"), (float)Number(renderer, "noise.frequency"),
+                                    (float)Number(renderer, "noise.alpha"), (float)Number(renderer, "noise.beta"), (int)Number(renderer, "noise.octaves"))
                 : (NoiseSettings?)null;
             PatchGrid grid = SampleGridAssetTests.ReadAsset(File.ReadAllText(Sample("PatchGrid.asset")));
             return new Flight

@@ -26,29 +26,33 @@ namespace GregoryTerrain.Rig.Tests
         }
 
         const string Renderer = "Runtime/GregoryTerrainRenderer.cs";
+        const string Fields = "Editor/Authoring/SettingFields.cs";   // the settings structs' sliders
+        static string Slider(string field, string bound) => @"new SettingField\(""" + field + @""", ""[^""]*"", ""[^""]*"", " + bound + ", " + bound + @"\b";
         const string Number = @"(-?\d+(?:\.\d+)?)";
         const string Float = @"(-?\d+(?:\.\d+)?)f";
 
         internal static readonly Quote[] Quotes =
         {
             new Quote { Name = "Tiles range (api.md)", Page = "Documentation~/api.md", PagePattern = @"\| `Tiles` \| Tiles per side M \(" + Number + " to " + Number + @"\)",
-                        Source = Renderer, SourcePattern = @"Range\(" + Number + ", " + Number + @"\)\] int tiles\b" },
+                        Source = Fields, SourcePattern = Slider("tiles", Number) },
             new Quote { Name = "Tiles setter clamp (api.md)", Page = "Documentation~/api.md", PagePattern = @"\| `Tiles` \| Tiles per side M \(" + Number + " to " + Number + @"\)",
                         Source = Renderer, SourcePattern = @"public int Tiles \{[^\n]*Mathf\.Clamp\(value, " + Number + ", " + Number + @"\)" },
             new Quote { Name = "Tiles range (troubleshooting.md)", Page = "Documentation~/troubleshooting.md", PagePattern = @"\| renderer settings \| tiles " + Number + @"\.\." + Number,
-                        Source = Renderer, SourcePattern = @"Range\(" + Number + ", " + Number + @"\)\] int tiles\b" },
+                        Source = Fields, SourcePattern = Slider("tiles", Number) },
             new Quote { Name = "Uniform factor range (api.md)", Page = "Documentation~/api.md", PagePattern = @"\| `UniformFactor` \| [^|\n]*\(" + Number + " to " + Number + @"\)",
-                        Source = Renderer, SourcePattern = @"Range\(" + Number + ", " + Number + @"\)\] int uniformFactor\b" },
+                        Source = Fields, SourcePattern = Slider("uniformFactor", Number) },
             new Quote { Name = "Max factor range (index.md)", Page = "Documentation~/index.md", PagePattern = @"cap on a tile edge's tessellation factor \(" + Number + "-" + Number + @"\)",
-                        Source = Renderer, SourcePattern = @"Range\(" + Float + ", " + Float + @"\)\] float maxFactor\b" },
-            new Quote { Name = "Target pixel error range and default (index.md)", Page = "Documentation~/index.md", PagePattern = @"\| Target pixel error \| [^|\n]*?, " + Number + " to " + Number + ", default " + Number + ";",
-                        Source = Renderer, SourcePattern = @"Range\(" + Float + ", " + Float + @"\)\] float targetPixelError = " + Float + ";" },
+                        Source = Fields, SourcePattern = Slider("maxFactor", Float) },
+            new Quote { Name = "Target pixel error range (index.md)", Page = "Documentation~/index.md", PagePattern = @"\| Target pixel error \| [^|\n]*?, " + Number + " to " + Number + ", default [-0-9.]+;",
+                        Source = Fields, SourcePattern = Slider("targetPixels", Float) },
+            new Quote { Name = "Target pixel error default (index.md)", Page = "Documentation~/index.md", PagePattern = @"\| Target pixel error \| [^|\n]*?, [-0-9.]+ to [-0-9.]+, default " + Number + ";",
+                        Source = "Runtime/Core/Terrain/TessellationSettings.cs", SourcePattern = @"TessellationSettings Default => new TessellationSettings\([^,]+, [^,]+, " + Float + ", " },
             new Quote { Name = "Terrain Size default (index.md)", Page = "Documentation~/index.md", PagePattern = @"\| Content \| Terrain Size \| [^|\n]*Default \(" + Number + ", " + Number + @"\)",
                         Source = Renderer, SourcePattern = @"Vector2 terrainSize = new Vector2\(" + Float + ", " + Float + @"\);" },
             new Quote { Name = "Height Scale default (index.md)", Page = "Documentation~/index.md", PagePattern = @"\| Content \| Height Scale \| metres per terrain height unit \(Unity y\); default " + Number,
                         Source = Renderer, SourcePattern = @"float heightScale = " + Float + ";" },
             new Quote { Name = "Noise first octave default (index.md)", Page = "Documentation~/index.md", PagePattern = @"the renderer's default first octave, " + Number + " cells across",
-                        Source = Renderer, SourcePattern = @"float noiseFrequency = " + Float + ";" },
+                        Source = Renderer, SourcePattern = @"NoiseSettings noise = new NoiseSettings\([^,]+, " + Float + ", " },
             new Quote { Name = "Collider samples range and default (api.md)", Page = "Documentation~/api.md", PagePattern = @"\| `Samples` \| Samples per side, " + Number + " to " + Number + @" \(default " + Number + @"\)",
                         Source = "Runtime/GregoryTerrainCollider.cs", SourcePattern = @"Range\(" + Number + ", " + Number + @"\)\] int samples = " + Number + ";" },
             new Quote { Name = "Collider spacing minimum and default (api.md)", Page = "Documentation~/api.md", PagePattern = @"\| `Spacing` \| [^|\n]*\(at least " + Number + "; default " + Number + @"\)",
@@ -117,7 +121,7 @@ namespace GregoryTerrain.Rig.Tests
             Quote tiles = Quotes[0];
             string page = "| `Tiles` | Tiles per side M (1 to 1024). |";
             Assert.That(Values(page, tiles.PagePattern, "edited"), Is.EqualTo(new[] { "1", "1024" }));
-            Assert.That(Values("[SerializeField, Range(1, 64)] int tiles = 16;", tiles.SourcePattern, "edited"), Is.EqualTo(new[] { "1", "64" }));
+            Assert.That(Values("new SettingField(\"tiles\", \"Tiles\", \"Tiles per side.\", 1, 64, whole: true),", tiles.SourcePattern, "edited"), Is.EqualTo(new[] { "1", "64" }));
             Assert.That(Normalise("0.25"), Is.EqualTo(Normalise("0.250")));
             Assert.That(Normalise("Domain stage"), Is.EqualTo(Normalise("DomainStage")));
             Assert.That(Regex.Matches("| `Tiles` | Tiles per side M. |", tiles.PagePattern).Count, Is.EqualTo(0), "a reworded quote matches nothing (Values then fails)");

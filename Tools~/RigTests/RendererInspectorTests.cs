@@ -16,7 +16,7 @@ namespace GregoryTerrain.Rig.Tests
     [TestFixture]
     public class RendererInspectorTests
     {
-        static readonly Regex SerializedField = new Regex(@"\[SerializeField[^\]]*\]\s*[\w<>\[\].]+\s+(\w+)\s*[=;]");
+        static readonly Regex SerializedField = new Regex(@"\[SerializeField(?<attrs>[^\]]*)\]\s*(?<type>[\w<>\[\].]+)\s+(?<name>\w+)\s*[=;]");
         static readonly Regex PublicField = new Regex(@"^\s*public\s+(?!static\b|const\b|readonly\b|event\b)[\w<>\[\].]+\s+(\w+)\s*(?:=[^;>]*)?;", RegexOptions.Multiline);
 
         internal static List<string> RendererFields()
@@ -25,7 +25,14 @@ namespace GregoryTerrain.Rig.Tests
             foreach (string path in Directory.GetFiles(PackageRoot.Combine("Runtime"), "GregoryTerrainRenderer*.cs"))
             {
                 string code = File.ReadAllText(path);
-                names.AddRange(SerializedField.Matches(code).Select(m => m.Groups[1].Value));
+                // Hidden fields are not drawn (the old flat layout); a settings struct is drawn field by field.
+                foreach (Match m in SerializedField.Matches(code).Cast<Match>().Where(m => !m.Groups["attrs"].Value.Contains("HideInInspector")))
+                {
+                    string name = m.Groups["name"].Value;
+                    var (_, fields) = RendererInspectorLayout.Structs.FirstOrDefault(s => s.field == name);
+                    if (fields == null) names.Add(name);
+                    else names.AddRange(fields.Select(f => name + "." + f.name));
+                }
                 names.AddRange(PublicField.Matches(code).Select(m => m.Groups[1].Value));
             }
             return names;
@@ -62,21 +69,21 @@ namespace GregoryTerrain.Rig.Tests
 
         /// <summary>Field names the editor passes as literals, to FindProperty or its shorthand P.</summary>
         internal static IEnumerable<string> NamedFields(string source) =>
-            Regex.Matches(source, @"\b(?:FindProperty|P)\(""(\w+)""\)").Select(m => m.Groups[1].Value);
+            Regex.Matches(source, @"\b(?:FindProperty|P)\(""([\w.]+)""\)").Select(m => m.Groups[1].Value);
 
         [Test]
         public void AFieldNamedThroughTheShorthandIsChecked() =>
-            Assert.That(NamedFields("SerializedProperty[] p = { P(\"targetPixelErr\"), FindProperty(\"tiles\") };"),
-                Is.EquivalentTo(new[] { "targetPixelErr", "tiles" }));
+            Assert.That(NamedFields("SerializedProperty[] p = { P(\"tessellation.targetPixelErr\"), FindProperty(\"tiles\") };"),
+                Is.EquivalentTo(new[] { "tessellation.targetPixelErr", "tiles" }));
 
         [Test]
         public void AMisspeltOrMissingFieldIsCaught()
         {
             var fields = RendererFields();
             var listed = Listed();
-            Assert.That(listed, Does.Contain("targetPixelError"));
-            Assert.That(Problems(fields, listed.Select(f => f == "targetPixelError" ? "targetPixelErr" : f).ToList()),
-                Is.EquivalentTo(new[] { "field targetPixelError is not drawn", "\"targetPixelErr\" is drawn but is no serialized field" }));
+            Assert.That(listed, Does.Contain("tessellation.targetPixels"));
+            Assert.That(Problems(fields, listed.Select(f => f == "tessellation.targetPixels" ? "tessellation.targetPixel" : f).ToList()),
+                Is.EquivalentTo(new[] { "field tessellation.targetPixels is not drawn", "\"tessellation.targetPixel\" is drawn but is no serialized field" }));
             Assert.That(Problems(fields, listed.Where(f => f != "cacheShader").ToList()), Is.EquivalentTo(new[] { "field cacheShader is not drawn" }));
             Assert.That(Problems(fields, listed.Append("grid").ToList()), Is.EquivalentTo(new[] { "\"grid\" is drawn 2 times" }));
         }

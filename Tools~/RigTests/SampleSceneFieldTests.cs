@@ -220,7 +220,8 @@ namespace GregoryTerrain.Rig.Tests
                 double Number(string key) => double.Parse(Regex.Match(renderer.Text, @"\n  " + key + @": ([-\d.eE+]+)").Groups[1].Value, System.Globalization.CultureInfo.InvariantCulture);
                 Assert.That(Regex.Match(renderer.Text, @"terrainSize: \{x: (\d+)").Groups[1].Value, Is.EqualTo(s[0] == "GroundWalk" ? "20000" : "1000"), s[1]);
                 Assert.That(Number("heightScale"), Is.GreaterThanOrEqualTo(100), s[1] + ": Height Scale in metres");
-                noiseMetres.Add(Number("noiseAmplitude") * Number("heightScale"));
+                double amplitude = double.Parse(Regex.Match(renderer.Text, @"\n  noise:\n    amplitude: ([-\d.eE+]+)").Groups[1].Value, System.Globalization.CultureInfo.InvariantCulture);
+                noiseMetres.Add(amplitude * Number("heightScale"));
             }
             TestContext.Out.WriteLine("noise amplitude: " + string.Join(", ", noiseMetres.Select(m => m.ToString("0.###") + " m")));
             Assert.That(noiseMetres[1], Is.EqualTo(noiseMetres[0]).Within(0.01), "the same noise height in metres in both samples");

@@ -55,12 +55,12 @@ namespace GregoryTerrain.Rig.Tests
                 zoom = RendererInspectorLayout.FieldsShown(Views[2]), fb = RendererInspectorLayout.FieldsShown(fallback);
             // Horizon levels ignore the range, anchoring and the vertex cache (the renderer's LevelsOn checks).
             Assert.That(open, Has.None.AnyOf("range", "anchorTiles", "vertexEvaluation", "cacheShader", "lodCamera", "fallbackGridFactor"));
-            Assert.That(open, Does.Contain("tiles").And.Contain("targetPixelError").And.Contain(RendererInspectorLayout.ViewModeField));
+            Assert.That(open, Does.Contain("tessellation.tiles").And.Contain("tessellation.targetPixels").And.Contain(RendererInspectorLayout.ViewModeField));
             Assert.That(single, Does.Contain("range").And.Contain("anchorTiles").And.Contain("vertexEvaluation"));
             Assert.That(single, Has.No.Member("fallbackGridFactor"), "a GPU that tessellates never draws the fallback grid");
             Assert.That(zoom, Has.No.Member("range"), "the Zoom Range Controller sets the range every frame");
             Assert.That(fb, Does.Contain("fallbackGridFactor").And.Contain("range"));
-            Assert.That(fb, Has.None.AnyOf("uniformFactor", "maxFactor", "targetPixelError", "anchorTiles", "vertexEvaluation"));
+            Assert.That(fb, Has.None.AnyOf("tessellation.uniformFactor", "tessellation.maxFactor", "tessellation.targetPixels", "anchorTiles", "vertexEvaluation"));
             Assert.That(RendererInspectorLayout.FieldsShown(new InspectorContext(TerrainViewMode.SingleRange, true, true, false)),
                 Does.Contain("cacheShader").And.Contain("lodCamera"));
             // Several renderers selected: a field shows where any of them uses it.
@@ -74,19 +74,15 @@ namespace GregoryTerrain.Rig.Tests
                 Is.EqualTo(new[] { RendererInspectorLayout.Sections.Sum(s => s.fields.Length), open.Count, single.Count, zoom.Count, ShownBefore(Views[0]) }));
         }
 
-        static float RendererDefault(string type, string field)
+        /// <summary>A new renderer's noise octaves: the last argument of its NoiseSettings initialiser.</summary>
+        static int RendererNoiseOctaves()
         {
-            Match m = Regex.Match(RendererSources(), @"\b" + type + @"\s+" + field + @"\s*=\s*([-0-9.]+)f?;");
-            Assert.That(m.Success, $"no default for {field}");
-            return float.Parse(m.Groups[1].Value, CultureInfo.InvariantCulture);
+            Match m = Regex.Match(RendererSources(), @"NoiseSettings noise = new NoiseSettings\([^)]*,\s*(\d+)\);");
+            Assert.That(m.Success, "no default for noise");
+            return int.Parse(m.Groups[1].Value, CultureInfo.InvariantCulture);
         }
 
-        static (float min, float max) RendererRange(string field)
-        {
-            Match m = Regex.Match(RendererSources(), @"Range\(([-0-9.]+)f?,\s*([-0-9.]+)f?\)\]\s*\w+\s+" + field + @"\b");
-            Assert.That(m.Success, $"no [Range] on {field}");
-            return (float.Parse(m.Groups[1].Value, CultureInfo.InvariantCulture), float.Parse(m.Groups[2].Value, CultureInfo.InvariantCulture));
-        }
+        static SettingField Slider(string path) => RendererInspectorLayout.Find(path) ?? throw new AssertionException($"no slider for {path}");
 
         [Test]
         public void PresetsAreValidOrderedAndMediumIsANewRenderer()
@@ -108,16 +104,17 @@ namespace GregoryTerrain.Rig.Tests
                 }
             }
             QualityValues medium = RendererInspectorLayout.Preset(QualityPreset.Medium);
-            Assert.That(medium.targetPixelError, Is.EqualTo(RendererDefault("float", "targetPixelError")));
-            Assert.That(medium.maxFactor, Is.EqualTo(RendererDefault("float", "maxFactor")));
-            Assert.That(medium.tiles, Is.EqualTo((int)RendererDefault("int", "tiles")));
-            Assert.That(medium.noiseOctaves, Is.EqualTo((int)RendererDefault("int", "noiseOctaves")));
+            Assert.That(RendererSources(), Does.Contain("TessellationSettings tessellation = TessellationSettings.Default;"));
+            Assert.That(medium.targetPixelError, Is.EqualTo(TessellationSettings.Default.targetPixels));
+            Assert.That(medium.maxFactor, Is.EqualTo(TessellationSettings.Default.maxFactor));
+            Assert.That(medium.tiles, Is.EqualTo(TessellationSettings.Default.tiles));
+            Assert.That(medium.noiseOctaves, Is.EqualTo(RendererNoiseOctaves()));
             Assert.That(RendererSources(), Does.Contain("VertexEvaluation vertexEvaluation = VertexEvaluation.DomainStage;"));
             Assert.That(medium.vertexEvaluation, Is.EqualTo(0));
             // Ultra reaches the manual's advice (0.5 px for a largest error of about 1 px), within the slider.
             Assert.That(Source("Documentation~", "index.md"), Does.Contain("0.5 px about 1 px"));
             Assert.That(RendererInspectorLayout.Preset(QualityPreset.Ultra).targetPixelError, Is.EqualTo(0.5f));
-            Assert.That(RendererRange("targetPixelError").min, Is.LessThanOrEqualTo(0.5f));
+            Assert.That(Slider("tessellation.targetPixels").min, Is.LessThanOrEqualTo(0.5f));
             Assert.That(RendererInspectorLayout.PresetOf(new QualityValues(3f, 64f, 16, 6, 0)), Is.Null, "custom values");
             Assert.That(RendererInspectorLayout.TilesForOpenWorld(5), Is.EqualTo(8));
             Assert.That(RendererInspectorLayout.TilesForOpenWorld(17), Is.EqualTo(18));
@@ -164,22 +161,25 @@ namespace GregoryTerrain.Rig.Tests
         }
 
         /// <summary>
-        /// One unit: every renderer field whose tooltip speaks of terrain units or cells across the
-        /// terrain is typed and read in metres, within the stored field's own [Range].
+        /// One unit: every renderer field or settings struct field whose tooltip speaks of terrain units
+        /// or cells across the terrain is typed and read in metres, within the field's own slider.
         /// </summary>
         [Test]
         public void TerrainUnitFieldsAreShownInMetres()
         {
+            const string TerrainUnits = "terrain (height )?units|across the whole terrain";
             var tooltipped = Regex.Matches(RendererSources(), @"\[Tooltip\(""([^""]*)""\)\]\s*\[SerializeField[^\]]*\]\s*\w+\s+(\w+)")
-                .Cast<Match>().Where(m => Regex.IsMatch(m.Groups[1].Value, "terrain (height )?units|across the whole terrain"))
+                .Cast<Match>().Where(m => Regex.IsMatch(m.Groups[1].Value, TerrainUnits))
                 .Select(m => m.Groups[2].Value).ToList();
+            foreach (var (field, fields) in RendererInspectorLayout.Structs)
+                tooltipped.AddRange(fields.Where(f => Regex.IsMatch(f.tooltip, TerrainUnits)).Select(f => field + "." + f.name));
             var metres = RendererInspectorLayout.MetreFields.Select(m => m.field).ToList();
             Assert.That(tooltipped, Is.Not.Empty);
             Assert.That(tooltipped, Is.SubsetOf(metres), "a terrain-unit field without its metres in the inspector");
             foreach (var m in RendererInspectorLayout.MetreFields)
             {
                 Assert.That(m.label, Does.EndWith("(m)"));
-                Assert.That((m.min, m.max), Is.EqualTo(RendererRange(m.field)), m.field);
+                Assert.That((m.min, m.max), Is.EqualTo((Slider(m.field).min, Slider(m.field).max)), m.field);
             }
             Assert.That(Source("Editor", "GregoryTerrainRendererEditor.cs"), Does.Contain("RendererInspectorLayout.MetreFields"));
 
@@ -270,7 +270,7 @@ namespace GregoryTerrain.Rig.Tests
 
             string renderer = Source("Runtime", "GregoryTerrainRenderer.cs");
             Assert.That(Regex.IsMatch(renderer, @"EstimatedTriangleCount\s*=>\s*DrawnTileCount\s*\*"), "Most triangles counts the tiles drawn");
-            Assert.That(renderer, Does.Contain("LodLevels.DrawnTileCount(levels, tiles)"));
+            Assert.That(renderer, Does.Contain("LodLevels.DrawnTileCount(levels, tessellation.tiles)"));
             // Triangles in view counts every level (Core's InLevels), and the inspector no longer says it is not estimated.
             Assert.That(Source("Runtime", "GregoryTerrainSurface.cs"), Does.Contain("TerrainTriangleEstimate.InLevels(").And.Not.Contain("HorizonLevels) return null"));
             Assert.That(Source("Editor", "GregoryTerrainRendererEditor.cs"), Does.Not.Contain("not estimated"));

@@ -6,7 +6,7 @@ using UnityEngine.SceneManagement;
 
 namespace UnityEditor.SceneManagement
 {
-    public sealed class EditorSceneManager : SceneManager                                    // SR:SceneManagement.EditorSceneManager
+    public sealed partial class EditorSceneManager : SceneManager                                    // SR:SceneManagement.EditorSceneManager
     {
         public static ulong GetSceneCullingMask(Scene scene) => 0;                          // SR:SceneManagement.EditorSceneManager.GetSceneCullingMask
         public static bool IsPreviewScene(Scene scene) => false;                            // SR:SceneManagement.EditorSceneManager.IsPreviewScene

@@ -51,9 +51,13 @@ namespace UnityEditor
         public void Dispose() { }                                                            // SR:SerializedObject.Dispose
     }
 
-    public class SerializedProperty : IDisposable                                            // SR:SerializedProperty
+    public partial class SerializedProperty : IDisposable                                           // SR:SerializedProperty
     {
         public bool hasMultipleDifferentValues => false;                                     // SR:SerializedProperty-hasMultipleDifferentValues (get only)
+        public SerializedProperty FindPropertyRelative(string relativePropertyPath) => null; // SR:SerializedProperty.FindPropertyRelative
+        public bool isExpanded { get => false; set { } }                                     // SR:SerializedProperty-isExpanded
+        public SerializedPropertyType propertyType => SerializedPropertyType.Integer;        // SR:SerializedProperty-propertyType (get only)
+        public object boxedValue { get => null; set { } }                                    // SR:SerializedProperty-boxedValue (2022.1+)
         public int intValue { get => 0; set { } }                                            // SR:SerializedProperty-intValue
         public float floatValue { get => 0f; set { } }                                       // SR:SerializedProperty-floatValue
         public bool boolValue { get => false; set { } }                                      // SR:SerializedProperty-boolValue
@@ -61,6 +65,28 @@ namespace UnityEditor
         public int enumValueIndex { get => 0; set { } }                                      // SR:SerializedProperty-enumValueIndex
         public string tooltip => null;                                                       // SR:SerializedProperty-tooltip (get only)
         public void Dispose() { }                                                            // SR:SerializedProperty.Dispose
+    }
+
+    // SR:SerializedPropertyType (the members the package names; values as in SerializedProperty.bindings.cs)
+    public enum SerializedPropertyType { Generic = -1, Integer = 0, Float = 2 }
+
+    // Editor/Mono/ScriptAttributeGUI/GUIDrawer.cs, PropertyDrawer.cs, CustomPropertyDrawerAttribute.cs in 2022.3.
+    public abstract class GUIDrawer { }                                                      // SR:GUIDrawer
+    public abstract partial class PropertyDrawer : GUIDrawer                                       // SR:PropertyDrawer
+    {
+        public virtual void OnGUI(Rect position, SerializedProperty property, GUIContent label) { }          // SR:PropertyDrawer.OnGUI
+        public virtual float GetPropertyHeight(SerializedProperty property, GUIContent label) => 18f;        // SR:PropertyDrawer.GetPropertyHeight
+    }
+    [AttributeUsage(AttributeTargets.Class, Inherited = false, AllowMultiple = true)]
+    public sealed class CustomPropertyDrawer : Attribute                                     // SR:CustomPropertyDrawer
+    {
+        public CustomPropertyDrawer(Type type) { }                                           // SR:CustomPropertyDrawer-ctor
+    }
+
+    public sealed partial class EditorGUIUtility : GUIUtility                                // SR:EditorGUIUtility (sealed partial in 2022.3)
+    {
+        public static float singleLineHeight => 18f;                                         // SR:EditorGUIUtility-singleLineHeight (get only)
+        public static float standardVerticalSpacing => 2f;                                   // SR:EditorGUIUtility-standardVerticalSpacing (get only)
     }
 
     public sealed class EditorPrefs                                                          // SR:EditorPrefs
@@ -95,6 +121,11 @@ namespace UnityEditor
         public static int Popup(Rect position, GUIContent label, int selectedIndex, GUIContent[] displayedOptions) => selectedIndex; // SR:EditorGUI.Popup
         public static void DrawPreviewTexture(Rect position, Texture image) { }              // SR:EditorGUI.DrawPreviewTexture
         public static int indentLevel { get => 0; set { } }                                  // SR:EditorGUI-indentLevel
+        public static bool Foldout(Rect position, bool foldout, GUIContent content, bool toggleOnLabelClick) => foldout; // SR:EditorGUI.Foldout
+        public static void Slider(Rect position, SerializedProperty property, float leftValue, float rightValue, GUIContent label) { } // SR:EditorGUI.Slider
+        public static void IntSlider(Rect position, SerializedProperty property, int leftValue, int rightValue, GUIContent label) { }   // SR:EditorGUI.IntSlider
+        public static int IntSlider(Rect position, GUIContent label, int value, int leftValue, int rightValue) => value; // SR:EditorGUI.IntSlider
+        public static void HelpBox(Rect position, string message, MessageType type) { }      // SR:EditorGUI.HelpBox
     }
 
     public sealed partial class EditorGUILayout                                              // SR:EditorGUILayout (sealed partial in 2022.3)
@@ -120,6 +151,7 @@ namespace UnityEditor
         public static string OpenFilePanel(string title, string directory, string extension) => null;                     // SR:EditorUtility.OpenFilePanel
         public static void SetDirty(Object target) { }                                                                    // SR:EditorUtility.SetDirty
         public static bool DisplayDialog(string title, string message, string ok) => true;                                // SR:EditorUtility.DisplayDialog
+        public static bool DisplayDialog(string title, string message, string ok, string cancel) => true;                 // SR:EditorUtility.DisplayDialog
         public static bool DisplayCancelableProgressBar(string title, string info, float progress) => false;              // SR:EditorUtility.DisplayCancelableProgressBar
         public static void ClearProgressBar() { }                                                                         // SR:EditorUtility.ClearProgressBar
         public static bool IsPersistent(Object target) => false;                                                          // SR:EditorUtility.IsPersistent

@@ -65,7 +65,7 @@ namespace UnityEngine
 
 namespace UnityEngine.SceneManagement
 {
-    public struct Scene                                                               // SR:SceneManagement.Scene
+    public partial struct Scene                                                       // SR:SceneManagement.Scene
     {
         public bool IsValid() => false;                                               // SR:SceneManagement.Scene.IsValid
         public static bool operator ==(Scene lhs, Scene rhs) => true;                 // SR:SceneManagement.Scene-operator_eq
@@ -76,6 +76,7 @@ namespace UnityEngine.SceneManagement
     public class SceneManager                                                         // SR:SceneManagement.SceneManager
     {
         public static void MoveGameObjectToScene(GameObject go, Scene scene) { }      // SR:SceneManagement.SceneManager.MoveGameObjectToScene
+        public static Scene GetSceneByPath(string scenePath) => default;              // SR:SceneManagement.SceneManager.GetSceneByPath
     }
 }
 

@@ -110,6 +110,7 @@ namespace UnityEngine
         public static float Clamp(float value, float min, float max) => value;        // SR:Mathf.Clamp
         public static float Log(float f, float p) => f;                               // SR:Mathf.Log
         public static int Clamp(int value, int min, int max) => value;                // SR:Mathf.Clamp
+        public static int RoundToInt(float f) => (int)f;                              // SR:Mathf.RoundToInt
         public static float Clamp01(float value) => value;                            // SR:Mathf.Clamp01
         public static float Abs(float f) => f;                                        // SR:Mathf.Abs
         public static float Max(float a, float b) => a;                               // SR:Mathf.Max
@@ -235,7 +236,20 @@ namespace UnityEngine
         public Vector3 size { get; set; }                                             // SR:TerrainData-size
         public float[,] GetHeights(int xBase, int yBase, int width, int height) => null; // SR:TerrainData.GetHeights
     }
-    public struct Rect { }                                                            // SR:Rect (passed through only)
+    public struct Rect                                                                // SR:Rect (a partial struct in 2022.3; the members used)
+    {
+        public Rect(float x, float y, float width, float height) { }                  // SR:Rect-ctor
+        public float x { get => 0f; set { } }                                         // SR:Rect-x
+        public float y { get => 0f; set { } }                                         // SR:Rect-y
+        public float width { get => 0f; set { } }                                     // SR:Rect-width
+        public float height { get => 0f; set { } }                                    // SR:Rect-height
+    }
+    // Runtime/Export/Serialization/Serialization.cs in 2022.3: Unity calls these around (de)serializing the object.
+    public interface ISerializationCallbackReceiver                                   // SR:ISerializationCallbackReceiver
+    {
+        void OnBeforeSerialize();                                                     // SR:ISerializationCallbackReceiver.OnBeforeSerialize
+        void OnAfterDeserialize();                                                    // SR:ISerializationCallbackReceiver.OnAfterDeserialize
+    }
     public class GUILayoutUtility                                                     // SR:GUILayoutUtility
     {
         public static Rect GetRect(float minWidth, float maxWidth, float minHeight, float maxHeight) => default; // SR:GUILayoutUtility.GetRect
