@@ -30,7 +30,10 @@ namespace GregoryTerrain.Rig.Tests
 
         static readonly Regex TooltipAttribute = new Regex(@"\[\s*(?:[\w.]+(?:\([^)]*\))?\s*,\s*)*Tooltip\s*\(\s*""((?:[^""\\]|\\.)*)""\s*\)");
 
-        /// <summary>Every [Tooltip("...")] text in Runtime/ and Editor/, with its file.</summary>
+        /// <summary>The tooltip of a Core settings struct's field (Editor/Authoring/SettingFields.cs: Core cannot name [Tooltip]).</summary>
+        static readonly Regex SettingFieldTooltip = new Regex(@"new\s+SettingField\(\s*""[^""]*""\s*,\s*""[^""]*""\s*,\s*""((?:[^""\\]|\\.)*)""");
+
+        /// <summary>Every [Tooltip("...")] text and SettingField tooltip in Runtime/ and Editor/, with its file.</summary>
         static List<(string file, string text)> PackageTooltips()
         {
             var found = new List<(string, string)>();
@@ -42,7 +45,10 @@ namespace GregoryTerrain.Rig.Tests
                 // Every Tooltip attribute must be read: one written another way would escape the checks.
                 int written = Regex.Matches(code, @"\bTooltip\s*\(").Count;
                 Assert.That(texts.Count, Is.EqualTo(written), $"{path}: {written} Tooltip attributes, {texts.Count} read as a plain string");
-                found.AddRange(texts.Select(t => (Path.GetRelativePath(PackageRoot.Path, path), t)));
+                var fieldTexts = SettingFieldTooltip.Matches(code).Select(m => m.Groups[1].Value).ToList();
+                int fieldsWritten = Regex.Matches(code, @"\bnew\s+SettingField\(").Count;
+                Assert.That(fieldTexts.Count, Is.EqualTo(fieldsWritten), $"{path}: {fieldsWritten} SettingFields, {fieldTexts.Count} tooltips read as a plain string");
+                found.AddRange(texts.Concat(fieldTexts).Select(t => (Path.GetRelativePath(PackageRoot.Path, path), t)));
             }
             return found;
         }
