@@ -2,8 +2,7 @@
 // Unity API names used: HLSLSupport.cginc (CBUFFER_START/CBUFFER_END), UnityCG.cginc
 // (UnityWorldToClipPos, UnityApplyLinearShadowBias, _WorldSpaceCameraPos, _ScreenParams,
 // _WorldSpaceLightPos0, unity_WorldToShadow), UnityLightingCommon.cginc (_LightColor0) and
-// AutoLight.cginc (unitySampleShadow, the SHADOWS_SCREEN keyword); fog: UnityCG.cginc's
-// UNITY_CALC_FOG_FACTOR, UNITY_FOG_LERP_COLOR with unity_FogParams / unity_FogColor. Use it in a pass with
+// AutoLight.cginc (unitySampleShadow, the SHADOWS_SCREEN keyword). Use it in a pass with
 // Tags { "LightMode" = "ForwardBase" } so Unity fills the main directional light.
 // Compiled against the real 2022.3 CGIncludes off Unity by the rig (Tools~/rig/shaderlab.py).
 //
@@ -28,12 +27,11 @@
 #if defined(GT_PASS_FORWARD) && defined(SHADOWS_SCREEN)
     #define GT_RECEIVE_SHADOWS 1
 #endif
-// Fog from the Lighting window (multi_compile_fog; UnityCG.cginc undefines the keywords in other passes).
 #if defined(GT_PASS_FORWARD) && (defined(FOG_LINEAR) || defined(FOG_EXP) || defined(FOG_EXP2))
     #define GT_FOG 1
 #endif
 #if defined(GT_RECEIVE_SHADOWS) || defined(GT_FOG)
-    #define GT_VARYINGS_POSITION_WS 1   // shadows' mobile path and the fog's depth read the world position
+    #define GT_VARYINGS_POSITION_WS 1   // read by shadows' mobile path and the fog
 #endif
 // Material constants, the object matrices, normals, the editor's selection passes.
 #include "UnityAdapterCommon.hlsl"
