@@ -397,6 +397,7 @@ Shader "GregoryTerrain/Terrain"
             #pragma shader_feature_local GT_HEIGHT_COLOR
             #pragma shader_feature_local _ GT_DEBUG_NORMALS GT_DEBUG_PATCH_ID GT_DEBUG_TESS_FACTOR
             #pragma multi_compile _ SHADOWS_SCREEN
+            #pragma multi_compile_fog
             #define GT_PASS_FORWARD 1
             #include "Packages/com.gregoryterrain.tessellation/Shaders/Pipelines/BuiltinAdapter.hlsl"
             ENDHLSL
@@ -432,6 +433,7 @@ Shader "GregoryTerrain/Terrain"
             #pragma shader_feature_local GT_HEIGHT_COLOR
             #pragma shader_feature_local _ GT_DEBUG_NORMALS GT_DEBUG_PATCH_ID GT_DEBUG_TESS_FACTOR
             #pragma multi_compile _ SHADOWS_SCREEN
+            #pragma multi_compile_fog
             #define GT_PASS_FORWARD 1
             #include "Packages/com.gregoryterrain.tessellation/Shaders/Pipelines/BuiltinAdapter.hlsl"
             ENDHLSL

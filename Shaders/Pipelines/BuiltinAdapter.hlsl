@@ -26,7 +26,12 @@
 // lightmap and vertex-light variants the terrain does not use).
 #if defined(GT_PASS_FORWARD) && defined(SHADOWS_SCREEN)
     #define GT_RECEIVE_SHADOWS 1
-    #define GT_VARYINGS_POSITION_WS 1   // the mobile path reads the shadow map at the world position
+#endif
+#if defined(GT_PASS_FORWARD) && (defined(FOG_LINEAR) || defined(FOG_EXP) || defined(FOG_EXP2))
+    #define GT_FOG 1
+#endif
+#if defined(GT_RECEIVE_SHADOWS) || defined(GT_FOG)
+    #define GT_VARYINGS_POSITION_WS 1   // read by shadows' mobile path and the fog
 #endif
 // Material constants, the object matrices, normals, the editor's selection passes.
 #include "UnityAdapterCommon.hlsl"
@@ -74,6 +79,18 @@ float GT_MainLightShadow(float3 positionWS, float4 positionSS, float3 normalWS)
     return 1.0;
 #endif
 }
+
+#if defined(GT_FOG)
+// Built-in's fog (UNITY_TRANSFER_FOG + UNITY_APPLY_FOG): the factor from the clip-space depth, per pixel as on
+// desktop, lerped towards unity_FogColor (ForwardBase's colour; ForwardAdd would use black).
+float3 GT_ApplyFog(float3 color, float3 positionWS)
+{
+    UNITY_CALC_FOG_FACTOR(UnityWorldToClipPos(positionWS).z);
+    float4 fogged = float4(color, 1.0);
+    UNITY_FOG_LERP_COLOR(fogged, unity_FogColor, unityFogFactor);
+    return fogged.rgb;
+}
+#endif
 
 // The stages, after the interface above: a pass of GregoryTerrain.shader includes its adapter only.
 #include "TerrainStages.hlsl"

@@ -271,7 +271,7 @@ namespace GregoryTerrain.Rig.Tests
         /// punctual-light caster keyword on its ShadowCaster, the normal packing on DepthNormalsOnly, the
         /// rendering-layers target (decal layers) on both the forward pass and DepthNormalsOnly, as URP 14's Lit;
         /// HDRP's shadow filter quality on ForwardOnly and MSAA depth on DepthForwardOnly; Built-in's
-        /// screen shadows on ForwardBase. Keywords that change only the fragment stage are
+        /// screen shadows and fog on ForwardBase. Keywords that change only the fragment stage are
         /// multi_compile_fragment; one that the hull or domain stage reads must not be _vertex.
         /// </summary>
         [Test]
@@ -292,7 +292,8 @@ namespace GregoryTerrain.Rig.Tests
                     string where = $"{s} pass {p.Name}";
                     Assert.That(p.PipelineKeywords, Is.EquivalentTo(expected), where);
                     bool fog = p.Pragmas.Any(a => a.SequenceEqual(new[] { "multi_compile_fog" }));
-                    Assert.That(fog, Is.EqualTo(s.Pipeline == "URP" && p.LightMode == "UniversalForwardOnly"), where + ": multi_compile_fog (URP forward only; HDRP fogs opaques itself)");
+                    Assert.That(fog, Is.EqualTo(s.Pipeline == "URP" && p.LightMode == "UniversalForwardOnly" || s.Pipeline == "Builtin" && p.LightMode == "ForwardBase"),
+                        where + ": multi_compile_fog (URP forward and Built-in ForwardBase only, as Lit and Standard; HDRP fogs opaques itself)");
                     // The hull and domain stages run GT_ObjectToClip too: a keyword it reads must reach them.
                     if (s.Tessellated)
                         Assert.That(p.Pragmas.Where(a => a[0] == "multi_compile_vertex"), Is.Empty, where + ": multi_compile_vertex in a tessellated pass");

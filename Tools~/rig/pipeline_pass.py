@@ -22,11 +22,12 @@ light's matrices), both under --shadow-sun-elevation/--shadow-sun-azimuth; depth
 URP's DepthNormalsOnly, _GBUFFER_NORMALS_OCT, its depth in OUT/depth_normals_depth.f32, its view in
 OUT/depth_normals_view.json) and depth_normals_snorm (only with --only: the base variant into R8G8B8A8_SNorm, the
 PNG's bytes signed; _depth.f32, _view.json likewise), depth_normals_layers and lit_layers (only with --only: the
-_WRITE_RENDERING_LAYERS variants, their second target's R8 bytes in OUT/<picture>_target1.bin), under --object-yaw.
+_WRITE_RENDERING_LAYERS variants, their second target's R8 bytes in OUT/<picture>_target1.bin), under --object-yaw;
+lit_fog_* and builtin_fog_* (only with --only: the fog variants, linear/exp/exp2; _depth.f32, _view.json likewise).
 Uniform blocks are bound as storage buffers (--uniform-blocks storage: the harness rewrites the
 blocks, same offsets): the rig's lavapipe rule (one compile per SPIR-V, whatever the values) on every device.
 
-  gt pipeline_pass [--out DIR] [--only depth|lit|normals|lit_dxc|builtin_lit|shadow_map|lit_shadows|depth_normals|depth_normals_snorm|depth_normals_layers|lit_layers]...
+  gt pipeline_pass [--out DIR] [--only depth|lit|normals|lit_dxc|builtin_lit|shadow_map|lit_shadows|depth_normals|depth_normals_snorm|depth_normals_layers|lit_layers|lit_fog_*|builtin_fog_*]...
       [--sun-elevation DEG] [--sun-azimuth DEG] [--shadow-sun-elevation DEG] [--shadow-sun-azimuth DEG] [--light-color R,G,B]
       [--object-yaw DEG] [--leave-default NAME]... [--fill-from NAME=OTHER]... [--transpose NAME]...
 --leave-default / --fill-from / --transpose break the scene on purpose (the tests' broken inputs): a
@@ -504,7 +505,8 @@ def builtin_globals(cam, o2w, o2c, sun, light_color):
 # The fog Unity sets from RenderSettings (Lighting window: mode, start and end, density, colour) for every pass
 # that declares it; URP's C# sets neither. UnityInput.hlsl:209-210 (Built-in: UnityShaderVariables.cginc:231-237,
 # whose comment gives the packing): unity_FogParams = (density / sqrt(ln 2), density / ln 2, -1 / (end - start),
-# end / (end - start)); unity_FogColor the linear colour. The distances and density are chosen so the fog varies
+# end / (end - start)); unity_FogColor the linear colour. Built-in reads x (EXP2), y (EXP), z and w (LINEAR) at clip z
+# remapped by _ProjectionParams (UnityCG.cginc:1020-1050), ForwardBase lerping to unity_FogColor (1101-1105). The distances and density are chosen so the fog varies
 # across the zoom view's terrain (0.5 to 1.8 units from the eye).
 FOG_START, FOG_END, FOG_DENSITY, FOG_COLOR = 0.4, 2.4, 0.9, [0.5, 0.6, 0.7, 1.0]
 
@@ -807,7 +809,7 @@ def write_view(a, buffers, path):
     """The camera's view-projection and the renderer's object-to-world a picture was drawn with."""
     cam, o2w, _ = yawed(a, *rig_camera(buffers))
     with open(path, "w") as f:
-        json.dump({"camera_view_proj": cam.view_proj, "camera_view": cam.view, "near": cam.near, "object_to_world": o2w,
+        json.dump({"camera_view_proj": cam.view_proj, "camera_view": cam.view, "near": cam.near, "far": cam.far, "object_to_world": o2w,
                    "object_yaw": getattr(a, "object_yaw", 0.0), "fog": fog_values(os.path.basename(path)[:-len("_view.json")])},
                   f, indent=1)
 
@@ -844,7 +846,10 @@ PICTURES = [("depth", "URP", "DepthOnly", [], "glslang"), ("lit", "URP", "Forwar
             ("lit_layers", "URP", "ForwardLit", ["_WRITE_RENDERING_LAYERS"], "glslang"),
             ("lit_fog_linear", "URP", "ForwardLit", ["FOG_LINEAR"], "glslang"),
             ("lit_fog_exp", "URP", "ForwardLit", ["FOG_EXP"], "glslang"),
-            ("lit_fog_exp2", "URP", "ForwardLit", ["FOG_EXP2"], "glslang")]
+            ("lit_fog_exp2", "URP", "ForwardLit", ["FOG_EXP2"], "glslang"),
+            ("builtin_fog_linear", "Builtin", "ForwardBase", ["FOG_LINEAR"], "glslang"),
+            ("builtin_fog_exp", "Builtin", "ForwardBase", ["FOG_EXP"], "glslang"),
+            ("builtin_fog_exp2", "Builtin", "ForwardBase", ["FOG_EXP2"], "glslang")]
 # depth_normals: URP's DepthNormalsOnly with _GBUFFER_NORMALS_OCT, the variant whose output fits the harness's
 # RGBA8 UNORM target as it fits URP's (UniversalRendererData's Accurate G-buffer Normals: R8G8B8A8_UNorm, the
 # octahedral normal's two 12-bit coordinates in RGB 8:8:8). URP's default (Forward, that option off) draws the
@@ -859,9 +864,9 @@ PICTURES = [("depth", "URP", "DepthOnly", [], "glslang"), ("lit", "URP", "Forwar
 # layers on (DepthNormalOnlyPass.Setup(depth, normal, decalLayer) / DrawObjectsWithRenderingLayersPass: the
 # keyword on and a second colour target, RenderingLayerUtils.GetFormat(Bits8) = R8_UNorm, cleared to 0); the
 # second target's bytes go to OUT/<picture>_target1.bin.
-# lit_fog_*: ForwardLit's multi_compile_fog variants under the scene's fog (FOG_SCENES), depth and view written
-# (the test recomputes each pixel's fog from its view depth).
-FOG_PICTURES = {"lit_fog_linear", "lit_fog_exp", "lit_fog_exp2"}
+# lit_fog_*, builtin_fog_*: ForwardLit's and ForwardBase's multi_compile_fog variants under the scene's fog
+# (fog_values), depth and view written (the test recomputes each pixel's fog from its depth).
+FOG_PICTURES = {"lit_fog_linear", "lit_fog_exp", "lit_fog_exp2", "builtin_fog_linear", "builtin_fog_exp", "builtin_fog_exp2"}
 ON_REQUEST = {"depth_normals", "depth_normals_snorm", "depth_normals_layers", "lit_layers"} | FOG_PICTURES
 DEPTH_PICTURES = {"depth_normals", "depth_normals_snorm", "depth_normals_layers"} | FOG_PICTURES
 COLOR_FORMATS = {"depth_normals_snorm": "R8G8B8A8_SNORM", "depth_normals_layers": "R8G8B8A8_SNORM"}
