@@ -1,3 +1,4 @@
+using System;
 using System.Collections.Generic;
 using System.Linq;
 using UnityEditor;
@@ -9,88 +10,115 @@ namespace GregoryTerrain.EditorTools
 {
     /// <summary>
     /// Renames prefab overrides of the renderer's old flat settings to the struct paths
-    /// (OverridePathUpgrade): for the instances in a scene when it opens, in a prefab when Prefab Mode
-    /// opens it (both as undoable edits, saved with the scene or prefab), and in every scene and prefab
-    /// of the project from the menu.
+    /// (OverridePathUpgrade) in every scene and prefab under Assets/, from the menu: an explicit pass,
+    /// so that opening a scene never modifies it (read-only or locked files, Auto Save in Prefab Mode).
     /// </summary>
-    [InitializeOnLoad]
     internal static class FlatSettingsOverrideUpgrader
     {
         const string Title = "Upgrade Gregory Terrain overrides";
-
-        static bool _projectPass;   // the menu opens scenes itself, saves them, and records no undo for files it closes
-
-        static FlatSettingsOverrideUpgrader()
-        {
-            EditorSceneManager.sceneOpened += (scene, mode) => { if (!_projectPass) UpgradeAll(scene.GetRootGameObjects(), true); };
-            PrefabStage.prefabStageOpened += stage => UpgradeAll(new[] { stage.prefabContentsRoot }, true);
-        }
+        const string MenuPath = "Tools/Gregory Terrain/" + Title;
 
         /// <summary>Each prefab instance under <paramref name="roots"/> holding a renderer, once; true when any changed.</summary>
-        static bool UpgradeAll(IEnumerable<GameObject> roots, bool undoable)
+        static bool UpgradeAll(IEnumerable<GameObject> roots)
         {
             bool changed = false;
             foreach (GameObject instance in roots.SelectMany(r => r.GetComponentsInChildren<GregoryTerrainRenderer>(true))
                          .Where(PrefabUtility.IsPartOfPrefabInstance).Select(PrefabUtility.GetOutermostPrefabInstanceRoot).Distinct())
-                changed |= Upgrade(instance, undoable);
+                changed |= Upgrade(instance);
             return changed;
         }
 
-        static bool Upgrade(GameObject instance, bool undoable)
+        static bool Upgrade(GameObject instance)
         {
             PropertyModification[] mods = PrefabUtility.GetPropertyModifications(instance);
             if (mods == null) return false;
             List<PropertyModification> now = OverridePathUpgrade.Rewrite(mods, m => m.target as GregoryTerrainRenderer, m => m.propertyPath,
                 (m, path) => new PropertyModification { target = m.target, propertyPath = path, value = m.value, objectReference = m.objectReference });
             if (now == null) return false;
-            if (undoable) Undo.RegisterCompleteObjectUndo(PrefabUtility.GetPrefabInstanceHandle(instance), Title);
             PrefabUtility.SetPropertyModifications(instance, now.ToArray());
             return true;
         }
 
-        [MenuItem("Tools/Gregory Terrain/" + Title)]
+        [MenuItem(MenuPath, true)]
+        static bool CanUpgradeProject() => !EditorApplication.isPlayingOrWillChangePlaymode;
+
+        [MenuItem(MenuPath)]
         static void UpgradeProject()
         {
+            if (PrefabStageUtility.GetCurrentPrefabStage() != null)
+            {
+                EditorUtility.DisplayDialog(Title, "Close Prefab Mode first: the pass rewrites prefab files, and the open prefab's unsaved edits would be lost.", "OK");
+                return;
+            }
             if (!EditorUtility.DisplayDialog(Title, "Rename the old Gregory Terrain settings overrides (tiles, noiseAmplitude, ...) in every scene and prefab under Assets, "
                     + "and save the files changed. This cannot be undone: commit or back up the project first.", "Upgrade", "Cancel")) return;
             if (!EditorSceneManager.SaveCurrentModifiedScenesIfUserWantsTo()) return;
             string[] paths = AssetDatabase.FindAssets("t:Prefab t:Scene").Select(AssetDatabase.GUIDToAssetPath)
-                .Where(p => p.StartsWith("Assets/")).Distinct().ToArray();
-            int upgraded = 0, done = 0;
-            _projectPass = true;
+                .Where(p => p.StartsWith("Assets/") && (p.EndsWith(".prefab") || p.EndsWith(".unity"))).Distinct().ToArray();
+            var upgraded = new List<string>();
+            var failed = new List<string>();
+            int done = 0;
             try
             {
                 for (; done < paths.Length; done++)
                 {
                     if (EditorUtility.DisplayCancelableProgressBar(Title, paths[done], (float)done / paths.Length)) break;
-                    if (paths[done].EndsWith(".unity") ? UpgradeSceneFile(paths[done]) : UpgradePrefabFile(paths[done])) upgraded++;
+                    try
+                    {
+                        string problem = paths[done].EndsWith(".unity") ? UpgradeSceneFile(paths[done], out bool changed) : UpgradePrefabFile(paths[done], out changed);
+                        if (problem != null) failed.Add($"{paths[done]}: {problem}");
+                        else if (changed) upgraded.Add(paths[done]);
+                    }
+                    catch (Exception e)
+                    {
+                        failed.Add($"{paths[done]}: {e.Message}");
+                        Debug.LogException(e);
+                    }
                 }
             }
-            finally { _projectPass = false; EditorUtility.ClearProgressBar(); }
-            string stopped = done < paths.Length ? $" Cancelled after {done} of {paths.Length}; the rest are unchanged." : "";
-            EditorUtility.DisplayDialog(Title, $"Rewrote the overrides in {upgraded} scene(s) and prefab(s) and saved them.{stopped}", "OK");
+            finally { EditorUtility.ClearProgressBar(); }
+            EditorUtility.DisplayDialog(Title, Summary(upgraded.Count, failed, done, paths.Length), "OK");
         }
 
-        /// <summary>An open scene is upgraded in place and saved; another is opened beside it and closed again.</summary>
-        static bool UpgradeSceneFile(string path)
+        static string Summary(int upgraded, List<string> failed, int done, int total)
         {
-            Scene scene = SceneManager.GetSceneByPath(path);
-            bool wasOpen = scene.IsValid() && scene.isLoaded;
-            if (!wasOpen) scene = EditorSceneManager.OpenScene(path, OpenSceneMode.Additive);
-            bool changed = UpgradeAll(scene.GetRootGameObjects(), wasOpen);
-            if (changed) EditorSceneManager.SaveScene(scene);
-            if (!wasOpen) EditorSceneManager.CloseScene(scene, true);
-            return changed;
+            string text = $"Rewrote and saved the overrides in {upgraded} scene(s) and prefab(s).";
+            if (done < total) text += $" Cancelled after {done} of {total}; the rest are unchanged.";
+            if (failed.Count > 0) text += $"\n\nNot upgraded ({failed.Count}):\n" + string.Join("\n", failed.Take(10)) + (failed.Count > 10 ? "\n..." : "");
+            return text;
         }
 
-        static bool UpgradePrefabFile(string path)
+        /// <summary>
+        /// A loaded scene is upgraded in place and saved; a scene not loaded is opened beside the others and
+        /// closed again, kept in the Hierarchy if it was there (unloaded). Null, or why the file was left.
+        /// </summary>
+        static string UpgradeSceneFile(string path, out bool changed)
+        {
+            changed = false;
+            Scene scene = SceneManager.GetSceneByPath(path);
+            bool wasLoaded = scene.IsValid() && scene.isLoaded, wasListed = scene.IsValid();
+            if (wasLoaded && scene.isDirty) return "has unsaved changes (not saved when asked)";
+            if (!wasLoaded) scene = EditorSceneManager.OpenScene(path, OpenSceneMode.Additive);
+            try
+            {
+                changed = UpgradeAll(scene.GetRootGameObjects());
+                return changed && !EditorSceneManager.SaveScene(scene) ? "could not be saved (read-only or locked?)" : null;
+            }
+            finally
+            {
+                if (!wasLoaded) EditorSceneManager.CloseScene(scene, !wasListed);
+            }
+        }
+
+        static string UpgradePrefabFile(string path, out bool changed)
         {
             GameObject root = PrefabUtility.LoadPrefabContents(path);
             try
             {
-                bool changed = UpgradeAll(new[] { root }, false);
-                if (changed) PrefabUtility.SaveAsPrefabAsset(root, path);
-                return changed;
+                changed = UpgradeAll(new[] { root });
+                if (!changed) return null;
+                PrefabUtility.SaveAsPrefabAsset(root, path, out bool saved);
+                return saved ? null : "could not be saved (read-only or locked?)";
             }
             finally { PrefabUtility.UnloadPrefabContents(root); }
         }

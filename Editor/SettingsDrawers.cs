@@ -11,16 +11,16 @@ namespace GregoryTerrain.EditorTools
 
         static float Line => EditorGUIUtility.singleLineHeight + EditorGUIUtility.standardVerticalSpacing;
 
+        // No per-property state: Unity shares one drawer among an array's elements and may ask the
+        // heights of all of them before drawing any (ReorderableList), so each call validates its own.
         readonly SettingField[] _fields;
-        string _problem;   // this GUI event's, found in GetPropertyHeight (Unity asks it before OnGUI)
 
         protected SettingsDrawer(SettingField[] fields) => _fields = fields;
 
         public override float GetPropertyHeight(SerializedProperty property, GUIContent label)
         {
             if (!property.isExpanded) return EditorGUIUtility.singleLineHeight;
-            _problem = SettingFields.Problem(Selected(property));
-            int lines = 1 + _fields.Length + (_problem != null ? HelpBoxLines : 0);
+            int lines = 1 + _fields.Length + (Problem(property) != null ? HelpBoxLines : 0);
             return lines * Line - EditorGUIUtility.standardVerticalSpacing;
         }
 
@@ -37,10 +37,13 @@ namespace GregoryTerrain.EditorTools
                 row.y += Line;
                 DrawField(row, property.FindPropertyRelative(f.name), f);
             }
-            if (_problem != null)
-                EditorGUI.HelpBox(new Rect(row.x, row.y + Line, row.width, HelpBoxLines * Line - EditorGUIUtility.standardVerticalSpacing), _problem, MessageType.Error);
+            string problem = Problem(property);
+            if (problem != null)
+                EditorGUI.HelpBox(new Rect(row.x, row.y + Line, row.width, HelpBoxLines * Line - EditorGUIUtility.standardVerticalSpacing), problem, MessageType.Error);
             EditorGUI.indentLevel--;
         }
+
+        string Problem(SerializedProperty property) => SettingFields.Problem(Selected(property));
 
         /// <summary>
         /// Each selected object's struct: a field of the object itself is read from each target (the

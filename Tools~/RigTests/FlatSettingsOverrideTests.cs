@@ -102,20 +102,22 @@ namespace GregoryTerrain.Rig.Tests
 
         /// <summary>Unity runs the upgrader; its source is checked for where it runs and how it edits (editor-only behaviour).</summary>
         [Test]
-        public void TheUpgraderRunsOnSceneOpenPrefabModeAndTheMenu()
+        public void TheUpgraderIsAnExplicitProjectPassThatLeavesNothingHalfDone()
         {
             string path = PackageRoot.Combine("Editor", "FlatSettingsOverrideUpgrader.cs");
             Assert.That(File.Exists(path), "Editor/FlatSettingsOverrideUpgrader.cs renames old prefab overrides");
             string s = File.ReadAllText(path);
-            Assert.That(s, Does.Contain("[InitializeOnLoad]"));
-            Assert.That(s, Does.Contain("EditorSceneManager.sceneOpened += "), "instances in a scene when it opens");
-            Assert.That(s, Does.Contain("PrefabStage.prefabStageOpened += "), "a prefab or variant when Prefab Mode opens it");
-            Assert.That(s, Does.Match(@"\[MenuItem\(""Tools/Gregory Terrain/"" \+ Title\)\]"), "the whole project from the menu");
+            Assert.That(s, Does.Not.Contain("sceneOpened").And.Not.Contain("prefabStageOpened").And.Not.Contain("[InitializeOnLoad]"),
+                "opening a scene or a prefab never modifies it (read-only files, Prefab Mode's Auto Save)");
+            Assert.That(s, Does.Contain("[MenuItem(MenuPath)]").And.Contain("[MenuItem(MenuPath, true)]"), "the menu item, refused in Play Mode");
             Assert.That(s, Does.Contain("const string Title = \"Upgrade Gregory Terrain overrides\";"));
             Assert.That(s, Does.Contain("EditorUtility.DisplayCancelableProgressBar(").And.Contain("EditorUtility.ClearProgressBar()"), "progress with Cancel");
             Assert.That(s, Does.Contain("OverridePathUpgrade.Rewrite(mods, m => m.target as GregoryTerrainRenderer,"), "the renderer's modifications only");
-            int undo = s.IndexOf("Undo.RegisterCompleteObjectUndo(PrefabUtility.GetPrefabInstanceHandle(instance)", StringComparison.Ordinal);
-            Assert.That(undo, Is.GreaterThan(0).And.LessThan(s.IndexOf("PrefabUtility.SetPropertyModifications(instance", StringComparison.Ordinal)), "undoable: recorded before the change");
+            Assert.That(s, Does.Contain(@"p.EndsWith("".prefab"") || p.EndsWith("".unity"")"), "model files match t:Prefab; LoadPrefabContents throws on them");
+            Assert.That(s, Does.Contain("PrefabStageUtility.GetCurrentPrefabStage() != null"), "an open Prefab Mode's unsaved edits are not overwritten");
+            Assert.That(s, Does.Contain("scene.isDirty"), "a scene the user chose not to save is left alone");
+            Assert.That(s, Does.Contain("!EditorSceneManager.SaveScene(scene)").And.Contain("out bool saved"), "a file that could not be saved is reported, not counted");
+            Assert.That(s, Does.Contain("catch (Exception e)"), "one file's failure does not end the pass");
         }
 
         [Test]
@@ -127,7 +129,8 @@ namespace GregoryTerrain.Rig.Tests
             Assert.That(SettingFields.Problem(new (string, object)[] { ("A", TessellationSettings.Default), ("B", TessellationSettings.Default) }), Is.Null);
             string drawer = Read("Editor", "SettingsDrawers.cs");
             Assert.That(drawer, Does.Contain("property.serializedObject.targetObjects").And.Contain("fieldInfo.GetValue(t)"), "each selected object's own value");
-            Assert.That(Matches(drawer, @"SettingFields\.Problem\(").Count, Is.EqualTo(1), "validated once per GUI event (GetPropertyHeight), reused by OnGUI");
+            Assert.That(Matches(drawer, @"SettingFields\.Problem\(").Count, Is.EqualTo(1), "one validation helper, called by GetPropertyHeight and OnGUI");
+            Assert.That(drawer, Does.Not.Match(@"\n\s*(string|object|bool)\s+_\w+\s*;"), "no per-property state: Unity shares one drawer among an array's elements");
         }
     }
 }

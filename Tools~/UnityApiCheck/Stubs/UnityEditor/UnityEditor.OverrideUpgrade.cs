@@ -35,6 +35,7 @@ namespace UnityEditor
         public static GameObject LoadPrefabContents(string assetPath) => null;                                     // SR:PrefabUtility.LoadPrefabContents
         public static void UnloadPrefabContents(GameObject contentsRoot) { }                                       // SR:PrefabUtility.UnloadPrefabContents
         public static GameObject SaveAsPrefabAsset(GameObject instanceRoot, string assetPath) => null;             // SR:PrefabUtility.SaveAsPrefabAsset
+        public static GameObject SaveAsPrefabAsset(GameObject instanceRoot, string assetPath, out bool success) { success = false; return null; } // SR:PrefabUtility.SaveAsPrefabAsset
     }
 
     public partial class Undo
@@ -85,5 +86,10 @@ namespace UnityEditor.SceneManagement
     {
         public static event Action<PrefabStage> prefabStageOpened;                           // SR:SceneManagement.PrefabStage-prefabStageOpened
         public GameObject prefabContentsRoot => null;                                        // SR:SceneManagement.PrefabStage-prefabContentsRoot (get only)
+    }
+
+    public static class PrefabStageUtility                                                   // SR:SceneManagement.PrefabStageUtility (PrefabStageUtility.cs:20)
+    {
+        public static PrefabStage GetCurrentPrefabStage() => null;                           // SR:SceneManagement.PrefabStageUtility.GetCurrentPrefabStage (:252)
     }
 }

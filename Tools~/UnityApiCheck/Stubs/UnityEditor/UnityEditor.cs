@@ -25,6 +25,7 @@ namespace UnityEditor
     public sealed class MenuItem : Attribute                                                 // SR:MenuItem-ctor
     {
         public MenuItem(string itemName) { }                                              // SR:MenuItem-ctor
+        public MenuItem(string itemName, bool isValidateFunction) { }                     // SR:MenuItem-ctor
         public MenuItem(string itemName, bool isValidateFunction, int priority) { }       // SR:MenuItem-ctor
     }
 
@@ -185,6 +186,7 @@ namespace UnityEditor
     public sealed class EditorApplication                                                    // SR:EditorApplication
     {
         public static double timeSinceStartup => 0.0;                                        // SR:EditorApplication-timeSinceStartup
+        public static bool isPlayingOrWillChangePlaymode => false;                           // SR:EditorApplication-isPlayingOrWillChangePlaymode (get only)
         public static event Action hierarchyChanged;                                         // SR:EditorApplication-hierarchyChanged
     }
 

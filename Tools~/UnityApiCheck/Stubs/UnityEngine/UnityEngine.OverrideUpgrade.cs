@@ -17,6 +17,7 @@ namespace UnityEngine.SceneManagement
     public partial struct Scene
     {
         public bool isLoaded => false;                                                // SR:SceneManagement.Scene-isLoaded (get only)
+        public bool isDirty => false;                                                 // SR:SceneManagement.Scene-isDirty (get only; Scene.cs:64)
         public GameObject[] GetRootGameObjects() => null;                             // SR:SceneManagement.Scene.GetRootGameObjects
     }
 }

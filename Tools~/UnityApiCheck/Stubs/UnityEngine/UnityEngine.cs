@@ -96,6 +96,7 @@ namespace UnityEngine
         public static void LogWarning(object message, Object context) { }             // SR:Debug.LogWarning
         public static void LogError(object message, Object context) { }               // SR:Debug.LogError
         public static void LogError(object message) { }                               // SR:Debug.LogError
+        public static void LogException(System.Exception exception) { }               // SR:Debug.LogException
     }
 
     public class Application { public static bool isPlaying => false; }              // SR:Application-isPlaying (plain class)
