@@ -18,24 +18,27 @@ namespace GregoryTerrain.EditorTools
         const string Title = "Upgrade Gregory Terrain overrides";
         const string MenuPath = "Tools/Gregory Terrain/" + Title;
 
-        /// <summary>Each prefab instance under <paramref name="roots"/> holding a renderer, once; true when any changed.</summary>
-        static bool UpgradeAll(IEnumerable<GameObject> roots)
+        /// <summary>
+        /// Each prefab instance under <paramref name="roots"/> holding a renderer, once; true when any has
+        /// old overrides (renamed unless <paramref name="apply"/> is false: a dry run).
+        /// </summary>
+        static bool UpgradeAll(IEnumerable<GameObject> roots, bool apply = true)
         {
             bool changed = false;
             foreach (GameObject instance in roots.SelectMany(r => r.GetComponentsInChildren<GregoryTerrainRenderer>(true))
                          .Where(PrefabUtility.IsPartOfPrefabInstance).Select(PrefabUtility.GetOutermostPrefabInstanceRoot).Distinct())
-                changed |= Upgrade(instance);
+                changed |= Upgrade(instance, apply);
             return changed;
         }
 
-        static bool Upgrade(GameObject instance)
+        static bool Upgrade(GameObject instance, bool apply)
         {
             PropertyModification[] mods = PrefabUtility.GetPropertyModifications(instance);
             if (mods == null) return false;
             List<PropertyModification> now = OverridePathUpgrade.Rewrite(mods, m => m.target as GregoryTerrainRenderer, m => m.propertyPath,
                 (m, path) => new PropertyModification { target = m.target, propertyPath = path, value = m.value, objectReference = m.objectReference });
             if (now == null) return false;
-            PrefabUtility.SetPropertyModifications(instance, now.ToArray());
+            if (apply) PrefabUtility.SetPropertyModifications(instance, now.ToArray());
             return true;
         }
 
@@ -97,12 +100,14 @@ namespace GregoryTerrain.EditorTools
             changed = false;
             Scene scene = SceneManager.GetSceneByPath(path);
             bool wasLoaded = scene.IsValid() && scene.isLoaded, wasListed = scene.IsValid();
-            if (wasLoaded && scene.isDirty) return "has unsaved changes (not saved when asked)";
+            if (wasLoaded && scene.isDirty)
+                return UpgradeAll(scene.GetRootGameObjects(), apply: false) ? "has unsaved changes (not saved when asked)" : null;
             if (!wasLoaded) scene = EditorSceneManager.OpenScene(path, OpenSceneMode.Additive);
             try
             {
                 changed = UpgradeAll(scene.GetRootGameObjects());
-                return changed && !EditorSceneManager.SaveScene(scene) ? "could not be saved (read-only or locked?)" : null;
+                if (!changed || EditorSceneManager.SaveScene(scene)) return null;
+                return wasLoaded ? "renamed in the open scene, not saved (read-only or locked?)" : "could not be saved (read-only or locked?)";
             }
             finally
             {
