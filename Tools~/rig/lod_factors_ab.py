@@ -9,6 +9,7 @@
         levels              today: factors in the hull stage, every vertex through the domain stage
         levels-cf           the factors from two compute kernels every frame, the hull reads them
                             (vert_light: the domain stage reads no corner)
+        levels-cf-vert      the same with today's vert (each corner evaluated, walking to the origin)
         levels-floor        today's hull with bench_floor.hlsl's flat domain stage
         levels-floor-cf     the kernels every frame, the hull reads the factors, the flat domain
         levels-floor-const  the same, the kernels in the first frame only (--compute-once): the
@@ -38,7 +39,7 @@ def patches_of(args):
 
 def with_kernels(args, vert, tese, once):
     p = patches_of(args)
-    a = re.sub(r"--vert \S+", f"--vert {LODF}{vert}.spv", args)
+    a = args if vert is None else re.sub(r"--vert \S+", f"--vert {LODF}{vert}.spv", args)
     a = re.sub(r"--tesc \S+", f"--tesc {LODF}hull_buffered.spv", a)
     a = re.sub(r"--tese \S+", f"--tese {tese}", a)
     a += (f" --storage 7:{32 * p} --storage 8:{32 * p} --storage 9:{64 * p}"
@@ -69,6 +70,7 @@ def prepare(plan, rounds):
             floor_args = lv[3].replace(f"--tese {lod_tese}", f"--tese {floor_tese}")
             jobs = [("levels", lv[3]),
                     ("levels-cf", with_kernels(lv[3], "vert_light", lod_tese, False)),
+                    ("levels-cf-vert", with_kernels(lv[3], None, lod_tese, False)),
                     ("levels-floor", floor_args),
                     ("levels-floor-cf", with_kernels(lv[3], "vert_buffered", floor_tese, False)),
                     ("levels-floor-const", with_kernels(lv[3], "vert_buffered", floor_tese, True))]
@@ -87,7 +89,7 @@ def prepare(plan, rounds):
     print(f"lod_factors_ab: {len(out)} jobs, {len(order)} views x {rounds} rounds")
 
 
-KINDS = ["levels", "levels-cf", "levels-floor", "levels-floor-cf", "levels-floor-const", "floor"]
+KINDS = ["levels", "levels-cf", "levels-cf-vert", "levels-floor", "levels-floor-cf", "levels-floor-const", "floor"]
 
 
 def report(results):
@@ -120,14 +122,14 @@ def report(results):
         xs = [d[key] for k, d in vals.items() if re.match(rf"^{re.escape(v)}(-r\d+)?:{kind}$", k) and key in d]
         return statistics.median(xs) if xs else float("nan")
 
-    print("| ground view | triangles today / cf | domain invocations today / cf | hull invocations | levels ms | levels-cf ms (kernels) | levels' floor ms | floor-cf ms | floor-const ms | floor ms | levels / floor | levels-cf / floor | cf / today |")
-    print("| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |")
+    print("| ground view | triangles today / cf | domain invocations today / cf | hull invocations | levels ms | levels-cf ms (kernels) | levels-cf-vert ms | levels' floor ms | floor-cf ms | floor-const ms | floor ms | levels / floor | levels-cf / floor | cf / today |")
+    print("| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |")
     for v in views:
         ms = {k: med(v, k) for k in KINDS}
         fl = ms["floor"]
         print(f"| {v} | {med(v, 'levels', 'tris'):,.0f} / {med(v, 'levels-cf', 'tris'):,.0f}"
               f" | {med(v, 'levels', 'tese'):,.0f} / {med(v, 'levels-cf', 'tese'):,.0f} | {med(v, 'levels', 'hull'):,.0f}"
-              f" | {ms['levels']:.2f} | {ms['levels-cf']:.2f} ({med(v, 'levels-cf', 'cms'):.2f}) | {ms['levels-floor']:.2f}"
+              f" | {ms['levels']:.2f} | {ms['levels-cf']:.2f} ({med(v, 'levels-cf', 'cms'):.2f}) | {ms['levels-cf-vert']:.2f} | {ms['levels-floor']:.2f}"
               f" | {ms['levels-floor-cf']:.2f} | {ms['levels-floor-const']:.2f} | {fl:.2f}"
               f" | {ms['levels'] / fl:.2f}x | {ms['levels-cf'] / fl:.2f}x | {ms['levels-cf'] / ms['levels']:.3f}x |")
 
