@@ -48,18 +48,8 @@ def with_kernels(args, vert, tese, once):
 
 
 def prepare(plan, rounds):
-    rows, order = {}, []
-    with open(os.path.join(plan, "plan.tsv")) as f:
-        for line in f:
-            parts = line.rstrip("\n").split("\t")
-            m = VIEWS.match(parts[0])
-            if not m:
-                continue
-            view, kind = m.group(1), m.group(4)
-            if view not in rows:
-                rows[view] = {}
-                order.append(view)
-            rows[view][kind] = parts
+    from lod_plain_ab import view_jobs   # beside this script; `report` runs without it
+    rows, order = view_jobs(plan, VIEWS)
     out = []
     for r in range(1, rounds + 1):
         tag = "" if r == 1 else f"-r{r}"
