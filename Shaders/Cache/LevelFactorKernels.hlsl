@@ -1,18 +1,14 @@
-// The Horizon levels' tile factors in two compute kernels (GT_LOD; Documentation~/internals.md,
-// "Levels of detail"), which the renderer dispatches before the levels' draw where compute runs; the
-// hull stage then reads each draw patch's record (_LodLevels.y = 1: LodKernelTileFactors) instead of
-// evaluating 51 surface samples per patch, each on the precise path to the range origin. Include a
-// pipeline adapter first (Unity: TerrainCache.compute with LodCameraComputeAdapter.hlsl; the rig:
-// Tools~/rig/TerrainRig.hlsl): the factors need the drawing camera's GT_TessObjectToClip.
+// The Horizon levels' tile factors in two compute kernels (GT_LOD; internals.md, "Levels of detail"),
+// dispatched before the levels' draw; the hull then reads each draw patch's record (_LodLevels.y = 1)
+// instead of evaluating 51 surface samples per invocation. Include a pipeline adapter first (Unity:
+// TerrainCache.compute; the rig: Tools~/rig/TerrainRig.hlsl).
 //
 //   LodFactorPieces   a group per draw patch, dispatch (M^2, L, 1): the tile's samples one a lane,
 //                     its seven pieces one a lane, culling on lane 0 (CacheTileFactors' split)
 //   LodFactorSeams    a thread per draw patch, dispatch (ceil(L M^2 / 64), 1, 1): the tile's factors
 //                     from its pieces, then the seam rule (LodSeamFactors), the coarse edge across a
 //                     fine seam read from the coarse tile's pieces, not computed again
-//
-// Every frame, in that order: nothing is kept across frames, so a moving camera and moving levels
-// cost the same as a still one.
+// Every frame, in that order: nothing is kept, so moving costs what still does.
 #ifndef GT_LEVEL_FACTOR_KERNELS_INCLUDED
 #define GT_LEVEL_FACTOR_KERNELS_INCLUDED
 

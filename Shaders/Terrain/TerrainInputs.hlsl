@@ -63,9 +63,8 @@ GT_CBUFFER_START(TerrainParams)
 GT_CBUFFER_END
 
 #if defined(GT_LOD)
-// The levels' tile factors, written this frame by the factor kernels (Shaders/Cache/
-// LevelFactorKernels.hlsl: _LodFactorsRW, the same buffer) where the renderer dispatches them: then
-// _LodLevels.y is 1 and the hull reads them (LevelTiles.hlsl, LodKernelTileFactors).
+// The levels' tile factors the factor kernels wrote this frame (LevelFactorKernels.hlsl), read
+// while _LodLevels.y is 1 (LodKernelTileFactors).
 StructuredBuffer<float4> _LodFactors GT_REGISTER(t5);
 #endif
 
