@@ -57,9 +57,12 @@ namespace GregoryTerrain
         public static readonly int SnowExposure = Shader.PropertyToID("_SnowExposure");
         public static readonly int SnowDepth = Shader.PropertyToID("_SnowDepth");
         public static readonly int SnowMapSize = Shader.PropertyToID("_SnowMapSize");
-        /// <summary>Horizon levels (GT_LOD): <c>(L, 0, 0, 0)</c>, and level k's range, sent per camera.</summary>
+        /// <summary>Horizon levels (GT_LOD): <c>(L, kernel factors 0/1, 0, 0)</c>, and level k's range, sent per camera.</summary>
         public static readonly int LodLevels = Shader.PropertyToID("_LodLevels");
         public static readonly int Ranges = Shader.PropertyToID("_Ranges");
+        /// <summary>The levels' factor kernels' records (LevelFactorKernels.hlsl): the hull's <c>_LodFactors</c>, the kernels' <c>_LodFactorsRW</c>.</summary>
+        public static readonly int LodFactors = Shader.PropertyToID("_LodFactors");
+        public static readonly int LodFactorsRW = Shader.PropertyToID("_LodFactorsRW");
         public const string SnowExposureKernel = "SnowExposureKernel";
         public const string SnowAccumulateKernel = "SnowAccumulateKernel";
         public const string SnowFieldKernel = "SnowFieldKernel";

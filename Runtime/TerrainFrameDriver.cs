@@ -21,6 +21,7 @@ namespace GregoryTerrain
         readonly FrameState _state = new FrameState();
         readonly TerrainGpuBuffers _gpu = new TerrainGpuBuffers();
         readonly VertexCachePass _cache = new VertexCachePass();
+        readonly LevelFactorPass _levelFactors = new LevelFactorPass();
         readonly DrawMaterialCopy _drawCopy = new DrawMaterialCopy();
         readonly List<int> _setLastPrepare = new List<int>(16);
         readonly Vector4[] _levelVectors = new Vector4[LodTiles.MaxLevels];   // SetVectorArray's copy of the plan's levels
@@ -64,6 +65,7 @@ namespace GregoryTerrain
         {
             _gpu.Release();
             _cache.Release();
+            _levelFactors.Release();
             _keys.Released();   // uploaded again, the estimate's CPU copy dropped, the SubShader's tag read again, the cache off
             ClearPropertyBlock();
         }
@@ -174,9 +176,11 @@ namespace GregoryTerrain
             FrameChange change = FramePlanner.Plan(_state, FrameInputsFor(cam, fallback));
             if ((change & FrameChange.Error) != 0) Debug.LogError($"{_r.name}: cannot draw with these settings: {_state.error}", _r);
             if (_state.error != null) return false;   // logged once; drawn again after the next valid change
+            UpdateNoiseTableBinding();   // before the kernels: they read the same table
+            if (_levelFactors.UpdateFrame(_r, cam, fallback, _state, _gpu, _props))
+                change |= FrameChange.Levels | FrameChange.LevelCount;   // the hull's switch in _LodLevels.y changed
             Send(change);
             PushTessellationView(cam);
-            UpdateNoiseTableBinding();   // before the cache: its kernels read the same table
             bool cacheReady;
             using (s_VertexCacheMarker.Auto())
                 cacheReady = _cache.UpdateFrame(_r, fallback, _state, _gpu, _gridStamp, _props);
@@ -229,7 +233,7 @@ namespace GregoryTerrain
             for (int k = 0; k < _state.levelCount; k++) _levelVectors[k] = ToVector(_state.levelVectors[k]);
             _props.SetVectorArray(ShaderIds.Ranges, _levelVectors);
             _setLastPrepare.Add(ShaderIds.Ranges);
-            if (count) SetVector(ShaderIds.LodLevels, new Vector4(_state.levelCount, 0f, 0f, 0f));
+            if (count) SetVector(ShaderIds.LodLevels, new Vector4(_state.levelCount, _keys.UsesLevelKernels ? 1f : 0f, 0f, 0f));
         }
 
         // Every value put on the property block goes through these: PropertiesSetLastPrepare.

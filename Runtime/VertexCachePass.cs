@@ -163,7 +163,7 @@ namespace GregoryTerrain
             return _refusedReason;
         }
 
-        static Effects EffectsOf(Material material, TerrainGpuBuffers gpu, bool snow)
+        internal static Effects EffectsOf(Material material, TerrainGpuBuffers gpu, bool snow)
         {
             var e = Effects.None;
             if (material.IsKeywordEnabled(ShaderIds.NoiseKeyword)) e |= Effects.Noise;
@@ -214,11 +214,8 @@ namespace GregoryTerrain
             shader.SetMatrix(ShaderIds.LodObjectToClip, inputs.objectToClip);
             shader.SetMatrix(ShaderIds.WorldToObject, inputs.worldToObject);
             shader.SetVector(ShaderIds.LodScreenSize, inputs.screenSize);
-            SetKeyword(shader, ShaderIds.NoiseKeyword, (inputs.effects & Effects.Noise) != 0);
-            SetKeyword(shader, ShaderIds.HeightColorKeyword, (inputs.effects & Effects.HeightColor) != 0);
-            SetKeyword(shader, ShaderIds.NoiseTableKeyword, (inputs.effects & Effects.NoiseTable) != 0);
+            SetEffectKeywords(shader, inputs.effects);
             bool snow = (inputs.effects & Effects.Snow) != 0;
-            SetKeyword(shader, ShaderIds.SnowKeyword, snow);
             if (snow) shader.SetVector(ShaderIds.SnowMapSize, inputs.snowMapSize);
 
             // Kernel 2 reads the factors as t5, not the UAV: FXC refuses its loop on a UAV read.
@@ -268,6 +265,15 @@ namespace GregoryTerrain
             shader.SetBuffer(kernel, ShaderIds.GridLines, inputs.gridLines);
             if (snow) shader.SetBuffer(kernel, ShaderIds.SnowDepth, inputs.snowDepth);
             if ((inputs.effects & Effects.NoiseTable) != 0) shader.SetBuffer(kernel, ShaderIds.NoiseCells, inputs.noiseCells);
+        }
+
+        /// <summary>The material's effects as the kernels' keywords (TerrainCache.compute: the cache's and the levels' kernels).</summary>
+        internal static void SetEffectKeywords(ComputeShader shader, Effects effects)
+        {
+            SetKeyword(shader, ShaderIds.NoiseKeyword, (effects & Effects.Noise) != 0);
+            SetKeyword(shader, ShaderIds.HeightColorKeyword, (effects & Effects.HeightColor) != 0);
+            SetKeyword(shader, ShaderIds.NoiseTableKeyword, (effects & Effects.NoiseTable) != 0);
+            SetKeyword(shader, ShaderIds.SnowKeyword, (effects & Effects.Snow) != 0);
         }
 
         static void SetKeyword(ComputeShader shader, string keyword, bool on)

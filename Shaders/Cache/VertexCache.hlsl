@@ -35,7 +35,7 @@ uint VertexCacheSlotsPerTile(uint limit) { return (limit + 1u) * (limit + 1u) + 
 // Lanes of a CacheTileFactors group (a group a tile, a lane for each of its GT_TILE_FACTOR_SAMPLES);
 // lanes of a CacheTileVertices group, and the most passes it makes over its tile's points. Why
 // 128 x 4: fewer groups than 64 x 4 for the same lanes, which costs less where most find nothing to
-// do (a camera move, many tiles) and no more elsewhere (performance.md, "Choices in the shaders, measured").
+// do (a camera move, many tiles) and no more elsewhere (Tools~/bench/records.md, "Choices in the shaders, measured").
 #define GT_VERTEX_CACHE_GROUP 64u
 #define GT_VERTEX_CACHE_VERTEX_GROUP 128u
 #define GT_VERTEX_CACHE_PASSES 4u
@@ -46,7 +46,7 @@ uint VertexCacheMaxTilePoints(uint limit) { return (limit + 1u) * (limit + 1u) +
 
 // Groups that share one tile's points (dispatch z). Why not one group a tile: the pass then lasts
 // as long as its largest tile, 4,229 points at L = 64 = 67 passes of one group while most units
-// idle (performance.md, "Choices in the shaders, measured").
+// idle (Tools~/bench/records.md, "Choices in the shaders, measured").
 uint VertexCacheGroupsPerTile(uint limit)
 {
     uint perGroup = GT_VERTEX_CACHE_VERTEX_GROUP * GT_VERTEX_CACHE_PASSES;
@@ -160,7 +160,7 @@ float3 UnpackCachedVaryings(uint bits)
 // projects the position. uint4, not float4: the packed word is any bit pattern, NaNs included, and
 // integer loads and stores keep every bit. Why 16 bytes: the cached draw's cost is its reads, and
 // a 16-byte record drew faster than a 32-byte one, while reading half of a 32-byte record did not
-// (performance.md, "Choices in the shaders, measured"). The patch index is not kept
+// (Tools~/bench/records.md, "Choices in the shaders, measured"). The patch index is not kept
 // (GT_DEBUG_PATCH_ID reads 0).
 uint4 VertexCacheRecordPart(TerrainVertexAttributes a, uint part)
 {

@@ -144,8 +144,8 @@ float4 CachedTileFactorSample(uint tile, uint s, bool cellMoved)
 //     slots hold the whole cell and the hull clips it (ClippedCell.hlsl).
 // Why so wide: the factors are a chain of surface evaluations, and the chain's length is the pass's.
 // One lane a tile: a chain of ~50 evaluations; one lane a piece: ~11; one sample a lane: 1, the
-// shortest pass (performance.md, "Choices in the shaders, measured"). Why the held way: that one
-// evaluation is still most of a pan's pre-pass (performance.md, "Choices in the shaders, measured").
+// shortest pass (Tools~/bench/records.md, "Choices in the shaders, measured"). Why the held way: that one
+// evaluation is still most of a pan's pre-pass (Tools~/bench/records.md, "Choices in the shaders, measured").
 // Every lane of the group reaches both barriers: whether the cell is held is read from the records (a
 // UAV), which FXC takes for non-uniform, and it refuses a barrier after a return on such a value
 // (error X3663); so the held way guards the work, not the barriers.

@@ -15,7 +15,7 @@
 // The largest i in [0, count - 1] with _GridLines[first + i] <= x (0 if none): the interval a uniform
 // grid would give when its lines bracket x (one multiply, two reads), else a binary search over the
 // interior lines; the same answer either way, the lines increase. The guess made the domain stage
-// measurably cheaper than the search's dependent reads (performance.md, "Where the domain stage's
+// measurably cheaper than the search's dependent reads (Tools~/bench/records.md, "Where the domain stage's
 // time goes"). count = number of intervals (n or m). A point on a shared line goes to the
 // higher-index interval; x = 1 (the last line) stays in the last one; outside [0, 1] clamps.
 uint PatchGridFindInterval(uint first, uint count, float x)

@@ -35,7 +35,7 @@ uint GradientNoiseHash2(int2 cell)
 float2 GradientNoiseGradient(uint h)
 {
     // A table, not arithmetic: selects computing the same directions made the domain stage
-    // measurably slower (performance.md, "Where the domain stage's time goes").
+    // measurably slower (Tools~/bench/records.md, "Where the domain stage's time goes").
     return kGradientNoiseDirections[h & 7u];
 }
 

@@ -39,7 +39,7 @@ float3 GregoryBaseCorner(float3 cp[20], float u, float v)
 // wide at coordinates near 0.5 the points' terms are ~1e6 times the derivatives and float kept only
 // ~5% of them (normals off by 0.04); the differences are exact there (Sterbenz). The position is
 // base + its sum, so one set of row sums serves the position and dP/dv: a second set over the points
-// themselves made the domain stage measurably slower (performance.md, "Where the domain stage's
+// themselves made the domain stage measurably slower (Tools~/bench/records.md, "Where the domain stage's
 // time goes"). The base is the corner of uv's quadrant, so the patch passes through
 // each corner exactly: there the sum is 1 * (base - base) = 0 and the other weights exactly 0.
 void GregoryEvaluate(float3 cp[20], float2 uv, out float3 position, out float3 dPdu, out float3 dPdv)

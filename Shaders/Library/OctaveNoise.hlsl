@@ -56,7 +56,7 @@ float OctaveNoise(TerrainPoint p, float4 noise, float octaveCount, out float2 gr
     OctaveSum sum = OctaveSumStart(noise);
     // Without a hi part (no range origin: uniform over a frame) the lattice split needs no
     // TwoProduct (GradientNoiseAtLocal): the same values bit for bit, measurably cheaper
-    // (performance.md, "Where the domain stage's time goes"). Core's OctaveNoise.Evaluate mirrors it.
+    // (Tools~/bench/records.md, "Where the domain stage's time goes"). Core's OctaveNoise.Evaluate mirrors it.
     [branch] if (all(p.originHi == 0.0))
     {
         [unroll] for (uint k = 0u; k < GT_MAX_OCTAVES; ++k)
@@ -71,7 +71,7 @@ float OctaveNoise(TerrainPoint p, float4 noise, float octaveCount, out float2 gr
     }
     // [unroll], not [loop]: unrolled, each octave's stream offset is a constant (two hashes of k
     // per octave folded away) and the early-out is a uniform branch. Same arithmetic in the same
-    // order, so the C# mirror is unchanged. It made the noise measurably cheaper (performance.md,
+    // order, so the C# mirror is unchanged. It made the noise measurably cheaper (Tools~/bench/records.md,
     // "Choices in the shaders, measured").
     [unroll] for (uint k = 0u; k < GT_MAX_OCTAVES; ++k)
     {

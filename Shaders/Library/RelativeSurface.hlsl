@@ -62,7 +62,7 @@ uint FindPatchPrecise(TerrainPoint q)
 // only, TerrainInputs.hlsl), else FindPatch on the plain float
 // point. Without an origin q is one float: a point within a float step of a line is one rounding
 // from either patch, whose surfaces meet there, so the correction buys nothing visible and cost a
-// fifth of the domain stage (performance.md, "Where the domain stage's time goes").
+// fifth of the domain stage (Tools~/bench/records.md, "Where the domain stage's time goes").
 uint FindPatchAt(TerrainPoint q)
 {
     uint patch = FindPatch(TerrainPointApprox(q));

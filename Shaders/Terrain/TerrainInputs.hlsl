@@ -57,10 +57,16 @@ GT_CBUFFER_START(TerrainParams)
 #if defined(GT_LOD)
     // Levels of detail only (internals.md, "Levels of detail"), always last: the level count, then
     // one range per level relative to the origin, finest first (LodLevels.Layout).
-    float4 _LodLevels;                       // (levels L, 0, 0, 0)                   on change
+    float4 _LodLevels;                       // (levels L, kernel factors 0/1, 0, 0)  on change
     float4 _Ranges[GT_MAX_LOD_LEVELS];       // level k's (c, d, g, h)                per frame
 #endif
 GT_CBUFFER_END
+
+#if defined(GT_LOD)
+// The levels' tile factors the factor kernels wrote this frame (LevelFactorKernels.hlsl), read
+// while _LodLevels.y is 1 (LodKernelTileFactors).
+StructuredBuffer<float4> _LodFactors GT_REGISTER(t5);
+#endif
 
 #if defined(GT_SNOW)
 // The snow depth map (internals.md, "Snow"): R x R floats over the unit square, written by the snow
@@ -131,6 +137,8 @@ uint LodLevelCount() { return (uint)_LodLevels.x; }
 // Level k's range relative to the origin (k clamped into the array: an out-of-range read would be
 // undefined on some APIs).
 float4 LodRange(uint level) { return _Ranges[min(level, (uint)GT_MAX_LOD_LEVELS - 1u)]; }
+// Whether the factor kernels ran this frame and the hull reads their factors (_LodFactors).
+bool LodKernelFactorsOn() { return _LodLevels.y != 0.0; }
 // Level k's tiles: M x M laid on its range (no anchoring: the range itself is snapped to the
 // coarser level's cells), the frame's origin.
 TileLayout LodLevelLayout(uint level) { return MakeTileLayout(LodRange(level), float4(0.0, 0.0, 0.0, 0.0), FrameRangeOrigin(), TileCount()); }

@@ -38,7 +38,7 @@ struct TerrainVaryings
     // xy: the world normal, Lambert-encoded (NormalEncoding.hlsl); z: the height colour's weight s
     // of eq. 14 (GT_HEIGHT_COLOR, else 0), computed per vertex. Read them with VaryingsNormalWS and
     // VaryingsHeightWeight. One interpolant of three numbers: a second interpolant, or a fourth
-    // number, made the tessellated draw measurably slower (performance.md, "Choices in the shaders,
+    // number, made the tessellated draw measurably slower (Tools~/bench/records.md, "Choices in the shaders,
     // measured"; internals.md, "Varyings").
     float3 normalAndHeightWeight : TEXCOORD0;
 #if defined(GT_VARYINGS_POSITION_WS)
@@ -168,7 +168,7 @@ float SurfacePixelScale(float3 surfaceOutput)
 // single-range rule. Mirrors Core TerrainVertex.VertexOctaveCount.
 // The renderer sends NoiseSegmentPixels() only with its levels on, which draw with GT_LOD, so the
 // continuous rule is compiled with the origin's code (GT_RANGE_ORIGIN_CODE, which GT_LOD sets):
-// elsewhere the untaken branch kept registers (performance.md, "Choices in the shaders, measured").
+// elsewhere the untaken branch kept registers (Tools~/bench/records.md, "Choices in the shaders, measured").
 float VertexOctaveCountAt(TileLayout l, float3 surfaceOutput)
 {
 #if !defined(GT_EXTEND_DRAW_PATCHES) && defined(GT_RANGE_ORIGIN_CODE)
@@ -258,7 +258,7 @@ TerrainVertexAttributes FinishTerrainVertex(TileLayout l, TerrainSurfacePoint s)
     // Deep zoom (a range origin set): S(q) - S(O) and p(q) - p(O) from precise differences, which
     // the renderer adds back (OutputSurfacePosition's rule). Compiled only with the origin's
     // keywords (GT_RANGE_ORIGIN_CODE, TerrainInputs.hlsl): even untaken, this branch cost the plain
-    // path measurably (performance.md, "Where the domain stage's time goes"). One branch for the
+    // path measurably (Tools~/bench/records.md, "Where the domain stage's time goes"). One branch for the
     // surface and the noise: two cost more still.
     [branch] if (RelativeSurfaceIsActive(l.origin))
     {

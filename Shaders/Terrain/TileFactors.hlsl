@@ -269,7 +269,7 @@ float CentreErrorTessFactor(float3 cornerOS[4], float4 centre)
 
 // One piece, its samples evaluated in turn: the hull stage's path (the kernel spreads the same
 // samples over its lanes). Not through TileFactorSamplePosition, whose branches on the sample number
-// slow the hull stage down (performance.md, "Choices in the shaders, measured"); the samples are the
+// slow the hull stage down (Tools~/bench/records.md, "Choices in the shaders, measured"); the samples are the
 // same functions.
 float TileFactorPiece(TileLayout l, uint patch, uint piece, float3 cornerOS[4])
 {

@@ -165,6 +165,29 @@ namespace GregoryTerrain.Rig.Tests
             Assert.That(r.CacheFallbackReason, Is.Null, "chosen off: no reason");
         }
 
+        /// <summary>
+        /// The levels' factor kernels: the hull reads their records only in a frame that dispatched them
+        /// (LevelKernelsUsed); a reason they cannot run is warned once, again after they ran; a release
+        /// turns the hull's switch off.
+        /// </summary>
+        [Test]
+        public void TheLevelKernelsSwitchAndTheirReasonFollowTheLastVerdict()
+        {
+            var r = new FrameResources();
+            Assert.That(r.UsesLevelKernels, Is.False, "nothing dispatched yet");
+            r.LevelKernelsUsed();
+            Assert.That(r.UsesLevelKernels, Is.True);
+            Assert.That(r.LevelKernelsNotUsed("no kernels"), Is.True);
+            Assert.That(r.UsesLevelKernels, Is.False, "the hull computes the factors again");
+            Assert.That(r.LevelKernelsNotUsed("no kernels"), Is.False, "warned once");
+            r.LevelKernelsUsed();
+            Assert.That(r.LevelKernelsNotUsed("no kernels"), Is.True, "warned again after the kernels ran");
+            Assert.That(r.LevelKernelsNotUsed(null), Is.False, "levels off: nothing to warn");
+            r.LevelKernelsUsed();
+            r.Released();
+            Assert.That(r.UsesLevelKernels, Is.False, "a release drops the buffer the hull would read");
+        }
+
         /// <summary>The draw reads the cache only once a dispatch filled it this frame; every other verdict turns it off.</summary>
         [Test]
         public void TheCacheIsDrawnOnlyWhenUsedAndFilled()

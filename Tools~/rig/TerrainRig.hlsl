@@ -33,6 +33,8 @@
 #include "../../Shaders/Pipelines/TerrainStages.hlsl"
 #if defined(GT_VERTEX_CACHE)
     #include "../../Shaders/Cache/VertexCacheKernels.hlsl"   // entry points CacheTileFactors, CacheTileVertices
+#elif defined(GT_LOD)
+    #include "../../Shaders/Cache/LevelFactorKernels.hlsl"   // entry points LodFactorPieces, LodFactorSeams
 #endif
 
 #if defined(GT_READBACK) || defined(GT_FACTOR_READBACK)

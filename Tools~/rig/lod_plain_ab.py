@@ -22,23 +22,29 @@ VIEWS = re.compile(r"^(lod_t\d+_(still|walk|fly)):(levels|levels-floor|floor)$")
 OLD_PARAMS = 160   # TerrainParams before _OriginSurface
 
 
-def prepare(plan, before_spv, rounds):
-    spv_before = os.path.join(plan, "spirv", "before")
-    shutil.rmtree(spv_before, ignore_errors=True)
-    shutil.copytree(before_spv, spv_before)
-    rows = {}
-    order = []
+def view_jobs(plan, views):
+    """The plan's jobs whose id `views` matches (group 1 the view, the last group the job's kind):
+    {view: {kind: the plan.tsv fields}}, and the views in plan order."""
+    rows, order = {}, []
     with open(os.path.join(plan, "plan.tsv")) as f:
         for line in f:
             parts = line.rstrip("\n").split("\t")
-            m = VIEWS.match(parts[0])
+            m = views.match(parts[0])
             if not m:
                 continue
-            view, kind = m.group(1), m.group(3)
+            view, kind = m.group(1), m.group(m.lastindex)
             if view not in rows:
                 rows[view] = {}
                 order.append(view)
             rows[view][kind] = parts
+    return rows, order
+
+
+def prepare(plan, before_spv, rounds):
+    spv_before = os.path.join(plan, "spirv", "before")
+    shutil.rmtree(spv_before, ignore_errors=True)
+    shutil.copytree(before_spv, spv_before)
+    rows, order = view_jobs(plan, VIEWS)
     out = []
     for r in range(1, rounds + 1):
         for view in order:

@@ -478,12 +478,13 @@ def compute_cases(pkg, which="all"):
     for path in sorted(glob.glob(os.path.join(pkg, "Shaders", "**", "*.compute"), recursive=True)):
         program = strip_comments(open(path, encoding="utf-8").read())
         rel = os.path.relpath(path, pkg)
-        kernels = [a[1] for a in pragmas(program) if len(a) >= 2 and a[0] == "kernel"]
+        # "#pragma kernel NAME DEFINE...": Unity compiles that kernel alone with those defines.
+        kernels = [(a[1], a[2:]) for a in pragmas(program) if len(a) >= 2 and a[0] == "kernel"]
         target = shader_target(program, COMPUTE_TARGET)
         for keywords in select(variants(program), which):
-            for k in kernels:
+            for k, defines in kernels:
                 label = f"Compute {rel} variant {variant_name(keywords)} kernel {k}"
-                cases.append(Case("Compute", label, path, "comp", k, keywords, target, ("Compute", "Compute " + rel)))
+                cases.append(Case("Compute", label, path, "comp", k, keywords + defines, target, ("Compute", "Compute " + rel)))
     return cases
 
 

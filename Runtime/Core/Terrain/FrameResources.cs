@@ -61,7 +61,7 @@ namespace GregoryTerrain
         MaterialSourceKey _copiedFrom;
         int _materialCheckedFrame = -1;
         (int tiles, int limit, bool snow, long deviceLimit) _cacheCheckedFor;
-        string _cacheFallbackReason;
+        string _cacheFallbackReason, _levelKernelsReason;
         TerrainSurfaceQuery _query;           // null after a failure too
         QuerySourceKey _queryFrom;
         TerrainInputs _estimateInputs;
@@ -80,6 +80,9 @@ namespace GregoryTerrain
         public string CacheError { get; private set; }
 
         public string CacheFallbackReason => _cacheFallbackReason;
+
+        /// <summary>True while the levels' hull reads the factor kernels' records (<c>_LodLevels.y</c> = 1).</summary>
+        public bool UsesLevelKernels { get; private set; }
 
         public UploadAction Upload(GridVersionKey grid, bool buffersHeld)
         {
@@ -112,6 +115,7 @@ namespace GregoryTerrain
             _fallbackFactor = 0;
             _drawMode = default;
             UsesCache = false;
+            UsesLevelKernels = false;
             (_estimateInputs, _estimateGrid) = (null, null);   // the grid's CPU copy
         }
 
@@ -176,6 +180,18 @@ namespace GregoryTerrain
 
         /// <summary>The pass holds a dispatch's result (else nothing may draw: a camera without pixels); returns it.</summary>
         public bool CacheFilled(bool filled) => UsesCache = filled;
+
+        /// <summary>The levels' factor kernels not run (for reason, or levels off: null); true for a new reason (to warn once).</summary>
+        public bool LevelKernelsNotUsed(string reason)
+        {
+            UsesLevelKernels = false;
+            bool fresh = reason != null && reason != _levelKernelsReason;
+            _levelKernelsReason = reason;
+            return fresh;
+        }
+
+        /// <summary>The kernels run this frame before the draw: the hull reads their records.</summary>
+        public void LevelKernelsUsed() => (_levelKernelsReason, UsesLevelKernels) = (null, true);
 
         /// <summary>The query built for key (null: that failed), if one was.</summary>
         public bool TryQuery(in QuerySourceKey key, out TerrainSurfaceQuery query)

@@ -214,7 +214,7 @@ namespace GregoryTerrain
 
         /// <summary>
         /// Segments per tile edge the adaptive estimate samples (HLSL <c>GT_EDGE_SEGMENTS</c>) at its
-        /// <c>EdgeSegments - 1</c> inner points (performance.md, "Choices in the shaders, measured").
+        /// <c>EdgeSegments - 1</c> inner points (Tools~/bench/records.md, "Choices in the shaders, measured").
         /// </summary>
         public const int EdgeSegments = 8;
 

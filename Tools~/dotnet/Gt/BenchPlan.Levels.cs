@@ -59,7 +59,7 @@ namespace GregoryTerrain.Rig
                 foreach (var (name, eye, speed, _) in LevelPathsOf(quick))
                 {
                     string id = LevelsId(m, name), jobDir = Path.Combine(dir, "jobs", id);
-                    var scene = new LodScene { TerrainMeters = m, EyeMeters = eye, Width = width, Height = height }.Build(lodGrid);
+                    var scene = new LodScene { TerrainMeters = m, EyeMeters = eye, Width = width, Height = height, KernelFactors = true }.Build(lodGrid);
                     scene.Write(jobDir);
                     string moving = "";
                     if (speed > 0)
@@ -77,7 +77,7 @@ namespace GregoryTerrain.Rig
                         BufferFiles.Write(Path.Combine(jobDir, LevelsTailPathFile), tails.ToArray());
                         moving = $" --camera-path @JOB@/{id}/{PackCommand.CameraPathFile} --params-tail-path @JOB@/{id}/{LevelsTailPathFile}";
                     }
-                    string input = $"--patches {scene.Patches} --buffers @JOB@/{id} --params-tail @JOB@/{id}/lod_tail.f32{moving} {view} {t}";
+                    string input = $"--patches {scene.Patches} --buffers @JOB@/{id} --params-tail @JOB@/{id}/lod_tail.f32{moving} {LevelsKernels(scene)} {view} {t}";
                     plan.Append($"{id}:levels\trun\t-\t{Stages(LevelsVariant, false)} {input}\n");
                     plan.Append($"{id}:levels-floor\trun\t-\t{LevelsFloorStages} {input}\n");
                     plan.Append($"{id}:floor\tfloor-match\t{id}:levels\t{FloorStages} --buffers @FLOOR@ {view} {t}\n");
@@ -91,10 +91,10 @@ namespace GregoryTerrain.Rig
                 foreach (var (split, _) in LevelSplits)
                 {
                     string id = LevelsId(m, "still") + "-" + split, jobDir = Path.Combine(dir, "jobs", id);
-                    var scene = new LodScene { TerrainMeters = m, Width = width, Height = height };
+                    var scene = new LodScene { TerrainMeters = m, Width = width, Height = height, KernelFactors = true };
                     if (split == "no_origin") scene.UseOrigin = false; else scene.SegmentPixels = 64f;
                     scene.Build(lodGrid).Write(jobDir);
-                    plan.Append($"{id}:levels\trun\t-\t{Stages(LevelsVariant, false)} --patches {scene.Patches} --buffers @JOB@/{id} --params-tail @JOB@/{id}/lod_tail.f32 {view} {t}\n");
+                    plan.Append($"{id}:levels\trun\t-\t{Stages(LevelsVariant, false)} --patches {scene.Patches} --buffers @JOB@/{id} --params-tail @JOB@/{id}/lod_tail.f32 {LevelsKernels(scene)} {view} {t}\n");
                 }
         }
 
@@ -104,6 +104,10 @@ namespace GregoryTerrain.Rig
             ("no_origin", "no range origin: every vertex in plain absolute float (not stable at 1,000 km; the precise path's cost)"),
             ("octaves_64px", "the continuous octave rule at 64 px segments instead of 2 (fewer octaves near the feet; the octave loop's cost)"),
         };
+
+        /// <summary>The shipped path: the factor kernels every frame before the draw, the hull reading their records (binding 7).</summary>
+        static string LevelsKernels(LodScene scene) =>
+            $"--storage {scene.FactorStorage} " + string.Join(" ", scene.KernelArgs($"@SPV@/{LevelsVariant}/lod_pieces.spv", $"@SPV@/{LevelsVariant}/lod_seams.spv"));
 
         /// <summary>The levels' tails a frame (--params-tail-path), beside the job's camera path.</summary>
         public const string LevelsTailPathFile = "lod_tail_path.f32";

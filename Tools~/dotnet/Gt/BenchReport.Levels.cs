@@ -17,7 +17,7 @@ namespace GregoryTerrain.Rig
         {
             o.AppendLine("## Horizon levels");
             o.AppendLine();
-            o.AppendLine(Inv($"Ground views drawn with the levels (`{BenchPlan.LevelsVariant}`, M = 16 tiles a level, 1 px target, the continuous octave rule at 2 px), the domain-stage path. Levels' floor: the same vert, hull and frag with `bench_floor.hlsl`'s flat domain stage. Floor: the headline table's (the fair variant's uniform tile grid, flat domain stage), M x M tiles at odd F with 2 (M F)^2 nearest the levels' triangles. Domain stage: levels - levels' floor."));
+            o.AppendLine(Inv($"Ground views drawn with the levels (`{BenchPlan.LevelsVariant}`, M = 16 tiles a level, 1 px target, the continuous octave rule at 2 px), the domain-stage path with the tile factors from the factor kernels every frame (LodFactorPieces, LodFactorSeams: what the renderer dispatches where compute runs; frame time includes them). Levels' floor: the same vert, hull and frag with `bench_floor.hlsl`'s flat domain stage. Floor: the headline table's (the fair variant's uniform tile grid, flat domain stage), M x M tiles at odd F with 2 (M F)^2 nearest the levels' triangles. Domain stage: levels - levels' floor."));
             o.AppendLine();
             o.AppendLine("| ground view | triangles | levels ms | levels' floor ms | floor ms (tiles x F, triangles) | levels / floor | goal | levels' floor / floor | domain stage ms |");
             o.AppendLine("| --- | ---: | ---: | ---: | --- | ---: | ---: | ---: | ---: |");
@@ -50,7 +50,7 @@ namespace GregoryTerrain.Rig
                     }
             }
             o.AppendLine();
-            o.AppendLine("The compute cache path: none for the levels (GT_LOD and GT_VERTEX_CACHE are never on together; the renderer draws the levels with the domain stage wherever compute shaders run).");
+            o.AppendLine("The compute cache path: none for the levels (GT_LOD and GT_VERTEX_CACHE are never on together; the renderer draws the levels with the domain stage, their factors from the kernels, wherever compute shaders run).");
             o.AppendLine();
         }
     }

@@ -41,6 +41,12 @@ namespace GregoryTerrain.Rig
         public bool UseOrigin = true;
         /// <summary>Whether far vertices take the levels' plain path (<see cref="TerrainVertex.UsesPlainPath"/>), as the renderer sends it; false: every vertex precise.</summary>
         public bool PlainPath = true;
+        /// <summary>
+        /// Whether the hull reads the factor kernels' records (<c>_LodLevels.y</c> = 1, the kernels
+        /// dispatched by <see cref="KernelArgs"/>), as the renderer draws where compute runs; false:
+        /// the hull computes the factors itself (the renderer's path without the kernels).
+        /// </summary>
+        public bool KernelFactors;
         /// <summary>The origin in use; <see cref="Build"/> picks one when unset, <see cref="Stepped"/> keeps it (as the renderer's tracker does for a small move).</summary>
         public RangeOrigin? Origin;
 
@@ -85,6 +91,7 @@ namespace GregoryTerrain.Rig
             Inputs = TerrainInputs.Create(grid, p);
             Tail = new float[4 * (1 + LodTiles.MaxLevels)];
             Tail[0] = count;
+            Tail[1] = KernelFactors ? 1f : 0f;
             for (int k = 0; k < count; k++)   // relative to the origin, as the renderer sends them
             {
                 RangeMapping.EncodeRange(levels[k], origin, out Float4 r, out _);
@@ -187,6 +194,20 @@ namespace GregoryTerrain.Rig
         public List<string> HarnessArgs(string dir) => new List<string>
         {
             "--buffers", dir, "--params-tail", Path.Combine(dir, "lod_tail.f32"), "--patches", Patches.ToString(),
+            "--storage", FactorStorage,
+        };
+
+        /// <summary>The hull's <c>_LodFactors</c> (binding 7): "7:BYTES", read only with <see cref="KernelFactors"/>, declared either way.</summary>
+        public string FactorStorage => FormattableString.Invariant($"7:{16 * LodTiles.FactorFloat4sPerPatch * Patches}");
+
+        /// <summary>
+        /// The factor kernels as the renderer dispatches them before the draw, every frame: harness
+        /// --compute options for the SPIR-V of LodFactorPieces (a group a draw patch) and LodFactorSeams.
+        /// </summary>
+        public string[] KernelArgs(string pieces, string seams) => new[]
+        {
+            "--compute", FormattableString.Invariant($"{pieces}:{LodTiles.TilesPerLevel(Tiles)},{LevelCount},1"),
+            "--compute", FormattableString.Invariant($"{seams}:{(Patches + 63) / 64},1,1"),
         };
     }
 }

@@ -296,6 +296,7 @@ namespace UnityEngine
         public void SetBuffer(int kernelIndex, int nameID, GraphicsBuffer buffer) { } // SR:ComputeShader.SetBuffer
         public void SetVector(int nameID, Vector4 val) { }                            // SR:ComputeShader.SetVector
         public void SetMatrix(int nameID, Matrix4x4 val) { }                          // SR:ComputeShader.SetMatrix
+        public void SetVectorArray(int nameID, Vector4[] values) { }                  // SR:ComputeShader.SetVectorArray
         public void EnableKeyword(string keyword) { }                                 // SR:ComputeShader.EnableKeyword (2020.2+)
         public void DisableKeyword(string keyword) { }                                // SR:ComputeShader.DisableKeyword (2020.2+)
         public void Dispatch(int kernelIndex, int threadGroupsX, int threadGroupsY, int threadGroupsZ) { } // SR:ComputeShader.Dispatch
