@@ -1,3 +1,4 @@
+using System.Collections.Generic;
 using UnityEngine;
 
 namespace GregoryTerrain
@@ -5,12 +6,21 @@ namespace GregoryTerrain
     /// <summary>
     /// The Horizon levels' factor kernels of TerrainCache.compute, dispatched per camera before the
     /// levels' draw, every frame, where they run; else the hull computes the factors (internals.md,
-    /// "Levels of detail"). Without levels: no dispatch, no buffer.
+    /// "Levels of detail"). Without levels: no dispatch, no buffer. A buffer per camera: HDRP raises
+    /// every camera's callback before it executes any camera's draws, so one shared buffer would hold
+    /// the last camera's factors when the first one draws.
     /// </summary>
     sealed class LevelFactorPass
     {
-        GraphicsBuffer _factors;   // LodTiles.FactorFloat4sPerPatch float4 a draw patch, sized on a level-layout change
-        int _patches;
+        sealed class CameraFactors
+        {
+            public GraphicsBuffer buffer;   // LodTiles.FactorFloat4sPerPatch float4 a draw patch, sized on a level-layout change
+            public int patches;
+        }
+
+        readonly Dictionary<int, CameraFactors> _byCamera = new Dictionary<int, CameraFactors>();
+        GraphicsBuffer _bound;     // what the property block's _LodFactors names now
+        GraphicsBuffer _unused;    // one float4 bound while the hull computes the factors: every declared buffer is bound (Metal)
         ComputeShader _kernelShader;
         int _piecesKernel = -1, _seamsKernel = -1;
         readonly Vector4[] _ranges = new Vector4[LodTiles.MaxLevels];   // SetVectorArray's copy of the plan's levels
@@ -18,7 +28,15 @@ namespace GregoryTerrain
         public const string PiecesKernel = "LodFactorPieces", SeamsKernel = "LodFactorSeams";
 
         /// <summary>GPU memory held now (0 when released).</summary>
-        public long AllocatedBytes => _factors != null ? (long)_patches * LodTiles.FactorFloat4sPerPatch * GpuLayout.Float4Stride : 0;
+        public long AllocatedBytes
+        {
+            get
+            {
+                long patches = _unused != null ? 1 : 0;
+                foreach (CameraFactors f in _byCamera.Values) patches += f.patches;
+                return patches * LodTiles.FactorFloat4sPerPatch * GpuLayout.Float4Stride;
+            }
+        }
 
         /// <summary>A camera's frame, after the plan: dispatches or stops. True when the hull's switch changed (<c>_LodLevels</c> to send).</summary>
         public bool UpdateFrame(GregoryTerrainRenderer r, Camera cam, bool fallback, FrameState state, TerrainGpuBuffers gpu, MaterialPropertyBlock props)
@@ -31,13 +49,17 @@ namespace GregoryTerrain
             {
                 if (keys.LevelKernelsNotUsed(reason))
                     Debug.LogWarning($"{r.name}: the Horizon levels' factor kernels do not run ({reason}); the hull stage computes the factors instead (slower).", r);
-                Release();
+                ReleaseCameraBuffers();
+                if (!r.LevelsOn(fallback)) { Release(); return was; }
+                _unused ??= new GraphicsBuffer(GraphicsBuffer.Target.Structured, LodTiles.FactorFloat4sPerPatch, GpuLayout.Float4Stride);
+                Bind(props, _unused);
                 return was;
             }
             keys.LevelKernelsUsed();
             int tiles = r.Tiles, patches = state.levelCount * LodTiles.TilesPerLevel(tiles);
-            if (EnsureBuffer(patches) || !props.HasBuffer(ShaderIds.LodFactors)) props.SetBuffer(ShaderIds.LodFactors, _factors);
-            Dispatch(r, cam, state, gpu, tiles);
+            CameraFactors f = FactorsOf(cam.GetInstanceID(), patches);
+            Bind(props, f.buffer);
+            Dispatch(r, cam, state, gpu, tiles, f);
             return !was;
         }
 
@@ -46,7 +68,7 @@ namespace GregoryTerrain
         {
             if (!SystemInfo.supportsComputeShaders) return "this device has no compute shaders (SystemInfo.supportsComputeShaders = false)";
             if (shader == null) return "no compute shader is assigned to Cache Shader (Shaders/Cache/TerrainCache.compute)";
-            if (!FindKernels(shader)) return "the Cache Shader has no kernels LodFactorPieces and LodFactorSeams";
+            if (!FindKernels(shader)) return "the Cache Shader has no kernels LodFactorPieces and LodFactorSeams that this device runs";
             return null;
         }
 
@@ -57,21 +79,36 @@ namespace GregoryTerrain
             bool found = shader.HasKernel(PiecesKernel) && shader.HasKernel(SeamsKernel);
             _piecesKernel = found ? shader.FindKernel(PiecesKernel) : -1;
             _seamsKernel = found ? shader.FindKernel(SeamsKernel) : -1;
-            return found;
+            // A kernel that did not compile for this platform is found but cannot dispatch.
+            if (found && !(shader.IsSupported(_piecesKernel) && shader.IsSupported(_seamsKernel))) _piecesKernel = _seamsKernel = -1;
+            return _piecesKernel >= 0;
         }
 
-        /// <summary>Made again only when the level layout's size changes; true when made.</summary>
-        bool EnsureBuffer(int patches)
+        /// <summary>Camera <paramref name="cameraId"/>'s buffer, made again only when the level layout's size changes.</summary>
+        CameraFactors FactorsOf(int cameraId, int patches)
         {
-            if (_factors != null && patches == _patches) return false;
-            Release();
-            _factors = new GraphicsBuffer(GraphicsBuffer.Target.Structured, patches * LodTiles.FactorFloat4sPerPatch, GpuLayout.Float4Stride);
-            _patches = patches;
-            return true;
+            if (_unused != null) { if (_unused == _bound) _bound = null; _unused.Release(); _unused = null; }
+            if (!_byCamera.TryGetValue(cameraId, out CameraFactors f))
+            {
+                if (_byCamera.Count >= CameraRangeOrigins.MaxCameras) ReleaseCameraBuffers();
+                _byCamera.Add(cameraId, f = new CameraFactors());
+            }
+            if (f.buffer != null && f.patches == patches) return f;
+            f.buffer?.Release();
+            f.buffer = new GraphicsBuffer(GraphicsBuffer.Target.Structured, patches * LodTiles.FactorFloat4sPerPatch, GpuLayout.Float4Stride);
+            f.patches = patches;
+            return f;
+        }
+
+        void Bind(MaterialPropertyBlock props, GraphicsBuffer buffer)
+        {
+            if (buffer == _bound && props.HasBuffer(ShaderIds.LodFactors)) return;
+            props.SetBuffer(ShaderIds.LodFactors, buffer);
+            _bound = buffer;
         }
 
         // What the hull would read: the params, levels, the camera's object-to-clip and pixels, the effects.
-        void Dispatch(GregoryTerrainRenderer r, Camera cam, FrameState state, TerrainGpuBuffers gpu, int tiles)
+        void Dispatch(GregoryTerrainRenderer r, Camera cam, FrameState state, TerrainGpuBuffers gpu, int tiles, CameraFactors f)
         {
             ComputeShader shader = _kernelShader;
             ShaderIds.SetParams(shader, state.parameters);
@@ -84,29 +121,41 @@ namespace GregoryTerrain
             SnowSimulator snow = r.SnowOn() ? r.SnowSimulator : null;
             VertexCachePass.SetEffectKeywords(shader, VertexCachePass.EffectsOf(r.Material, gpu, snow != null));
             if (snow != null) shader.SetVector(ShaderIds.SnowMapSize, snow.MapSize);
-            BindBuffers(shader, _piecesKernel, gpu, snow);
-            BindBuffers(shader, _seamsKernel, gpu, snow);
+            BindBuffers(shader, _piecesKernel, gpu, snow, f.buffer);
+            BindBuffers(shader, _seamsKernel, gpu, snow, f.buffer);
             // A group a draw patch (M^2 x L: no axis above 65,535), then a thread a draw patch.
             shader.Dispatch(_piecesKernel, LodTiles.TilesPerLevel(tiles), state.levelCount, 1);
-            shader.Dispatch(_seamsKernel, (_patches + 63) / 64, 1, 1);
+            shader.Dispatch(_seamsKernel, (f.patches + 63) / 64, 1, 1);
         }
 
-        void BindBuffers(ComputeShader shader, int kernel, TerrainGpuBuffers gpu, SnowSimulator snow)
+        void BindBuffers(ComputeShader shader, int kernel, TerrainGpuBuffers gpu, SnowSimulator snow, GraphicsBuffer factors)
         {
             shader.SetBuffer(kernel, ShaderIds.ControlPoints, gpu.ControlPoints);
             shader.SetBuffer(kernel, ShaderIds.Regions, gpu.Regions);
             shader.SetBuffer(kernel, ShaderIds.GridLines, gpu.GridLines);
             if (snow != null) shader.SetBuffer(kernel, ShaderIds.SnowDepth, snow.DepthBuffer);
             if (gpu.NoiseCells != null) shader.SetBuffer(kernel, ShaderIds.NoiseCells, gpu.NoiseCells);
-            shader.SetBuffer(kernel, ShaderIds.LodFactorsRW, _factors);
+            shader.SetBuffer(kernel, ShaderIds.LodFactorsRW, factors);
         }
 
-        /// <summary>Releases the buffer. Safe to call twice.</summary>
+        /// <summary>Releases every buffer. Safe to call twice.</summary>
         public void Release()
         {
-            _factors?.Release();
-            _factors = null;
-            _patches = 0;
+            ReleaseCameraBuffers();
+            if (_unused == _bound) _bound = null;
+            _unused?.Release();
+            _unused = null;
+        }
+
+        void ReleaseCameraBuffers()
+        {
+            if (_byCamera.Count == 0) return;
+            foreach (CameraFactors f in _byCamera.Values)
+            {
+                if (f.buffer == _bound) _bound = null;
+                f.buffer?.Release();
+            }
+            _byCamera.Clear();
         }
     }
 }

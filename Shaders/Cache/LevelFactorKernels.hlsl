@@ -4,7 +4,8 @@
 // TerrainCache.compute; the rig: Tools~/rig/TerrainRig.hlsl).
 //
 //   LodFactorPieces   a group per draw patch, dispatch (M^2, L, 1): the tile's samples one a lane,
-//                     its seven pieces one a lane, culling on lane 0 (CacheTileFactors' split)
+//                     its seven pieces one a lane (CacheTileFactors' split); no culling: each pass
+//                     culls in its own view in the hull (StageTileFactors), shadow maps included
 //   LodFactorSeams    a thread per draw patch, dispatch (ceil(L M^2 / 64), 1, 1): the tile's factors
 //                     from its pieces, then the seam rule (LodSeamFactors), the coarse edge across a
 //                     fine seam read from the coarse tile's pieces, not computed again
@@ -51,10 +52,9 @@ void LodFactorPieces(uint3 group : SV_GroupID, uint lane : SV_GroupIndex)
     }
     GroupMemoryBarrierWithGroupSync();
     if (lane != 0u || patch >= LodDrawPatches()) return;
-    bool culled = TileCulled(cornerOS, TileNoiseMargin(l, slot));
     uint i = LodPieceIndex(patch);
     _LodFactorsRW[i] = float4(gtLodFactorPieces[0], gtLodFactorPieces[1], gtLodFactorPieces[2], gtLodFactorPieces[3]);
-    _LodFactorsRW[i + 1u] = float4(gtLodFactorPieces[4], gtLodFactorPieces[5], gtLodFactorPieces[6], culled ? 1.0 : 0.0);
+    _LodFactorsRW[i + 1u] = float4(gtLodFactorPieces[4], gtLodFactorPieces[5], gtLodFactorPieces[6], 0.0);
 }
 
 // ComputeTileFactors from the pieces LodFactorPieces wrote.
@@ -64,7 +64,6 @@ TileFactorSet KernelCellFactors(TileLayout l, uint slot, uint drawPatch)
     if (TileEmpty(l, slot)) return CulledTileFactors();
     if (UniformTileFactors(f)) return f;
     float4 a = _LodFactorsRW[LodPieceIndex(drawPatch)], b = _LodFactorsRW[LodPieceIndex(drawPatch) + 1u];
-    if (b.w != 0.0) return CulledTileFactors();
     float piece[GT_TILE_FACTOR_PIECES] = { a.x, a.y, a.z, a.w, b.x, b.y, b.z };
     return TileFactorsOfCell(TileFactorsOfPieces(piece), TileKeptFraction(l, slot));
 }

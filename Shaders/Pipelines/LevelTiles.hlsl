@@ -13,7 +13,7 @@ TileLayout StageTileLayout(uint drawPatch, out uint slot)
 }
 
 // The factor kernels' record of a draw patch in _LodFactors (GT_LOD_FACTOR_FLOAT4S float4): its
-// factors, seam rule applied (edge; inside, 0, 0), then its seven pieces (0-3; 4-6, culled).
+// factors, seam rule applied (edge; inside, 0, 0), then its seven pieces (0-3; 4-6, 0), in no view culled.
 #define GT_LOD_FACTOR_FLOAT4S 4u
 uint LodFactorIndex(uint drawPatch) { return GT_LOD_FACTOR_FLOAT4S * drawPatch; }
 uint LodPieceIndex(uint drawPatch) { return LodFactorIndex(drawPatch) + 2u; }

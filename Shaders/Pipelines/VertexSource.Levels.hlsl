@@ -17,12 +17,21 @@ float3 StageCornerPosition(uint drawPatch, uint corner)
 }
 
 // The tile's factors: the factor kernels' record while the renderer dispatched them this frame
-// (LodKernelFactorsOn, a uniform), else computed here from the corners.
+// (LodKernelFactorsOn, a uniform), else computed here from the corners. The record is the camera's
+// factors for every tile, culled in no view: each pass culls in its own (a shadow map's view keeps the
+// tiles off screen that cast into it), after the uniform factor as ComputeTileFactors does.
 TileFactors StageTileFactors(InputPatch<TileCorner, 4> corners)
 {
     uint patch = corners[0].drawPatch, slot;
-    [branch] if (LodKernelFactorsOn()) return ToTileFactors(LodKernelTileFactors(patch));
     TileLayout l = StageTileLayout(patch, slot);
+    [branch] if (LodKernelFactorsOn())
+    {
+        float3 cornerOS[4];
+        [unroll] for (uint c = 0; c < 4; c++)
+            cornerOS[c] = corners[c].positionOS;
+        bool culled = !UsesUniformTessFactor() && TileCulled(cornerOS, TileNoiseMargin(l, slot));
+        return ToTileFactors(culled ? CulledTileFactors() : LodKernelTileFactors(patch));
+    }
     return ToTileFactors(LodTileFactors(patch, CornerTileFactors(l, slot, corners)));
 }
 

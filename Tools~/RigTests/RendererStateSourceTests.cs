@@ -298,6 +298,24 @@ namespace GregoryTerrain.Rig.Tests
             Assert.That(BuildsNamedStringEachCall(old), Is.True, "the unfixed verdict");
         }
 
+        /// <summary>
+        /// The levels' factor kernels write a buffer per camera: HDRP raises every camera's
+        /// beginCameraRendering (where the renderer dispatches and draws) before it executes any camera's
+        /// draws (HDRenderPipeline.Render: the culling loop, then the render requests), so one shared buffer
+        /// would hold the last camera's factors when the first draws. Each camera binds its own buffer, and
+        /// the kernels must be supported on this device, not only present (ComputeShader.IsSupported).
+        /// </summary>
+        [Test]
+        public void TheLevelsFactorKernelsWriteABufferPerCamera()
+        {
+            string code = StripComments(File.ReadAllText(PackageRoot.Combine("Runtime", "LevelFactorPass.cs")));
+            string update = Body(code, "UpdateFrame");
+            Assert.That(update, Does.Contain("FactorsOf(cam.GetInstanceID(), patches)"), "the camera's own buffer");
+            Assert.That(update, Does.Contain("Bind(props, f.buffer)").And.Contain("Dispatch(r, cam, state, gpu, tiles, f)"), "bound and written: the same camera's buffer");
+            Assert.That(code, Does.Not.Match(@"\bGraphicsBuffer\s+_factors\b"), "no buffer shared by every camera");
+            Assert.That(Body(code, "FindKernels"), Does.Contain("IsSupported(_piecesKernel)").And.Contain("IsSupported(_seamsKernel)"), "a kernel that did not compile for the platform is not dispatched");
+        }
+
         static bool BuildsNamedStringEachCall(string body) => body == null || Regex.IsMatch(body, @"\$""[^""]*\{\w+\.name\}");
 
         [Test]

@@ -112,7 +112,7 @@ for g in 1.0 0.5 0.2 0.1 0.02; do
     # g < 1 only appears in the development page's row of five, where half size is what shows: 200 x 150.
     half=() images="$PKG_DIR/Documentation~/images"; [ "$g" = 1.0 ] || { half=(--half); images="$PKG_DIR/Tools~/images"; }
     mkdir -p "$images"
-    python3 "$RIG_DIR/png_palette.py" "$out/demo_g$g.png" "$images/demo_g$g.png" 32 "${half[@]}"
+    python3 "$RIG_DIR/png_palette.py" "$out/demo_g$g.png" "$images/demo_g$g.png" 24 "${half[@]}"
   fi
 done
 say "images: $out/demo_g*.png$([ "$docs" = 1 ] && echo " and Documentation~/images/demo_g1.0.png, Tools~/images/demo_g0.*.png")"

@@ -291,6 +291,7 @@ namespace UnityEngine
     public sealed class ComputeShader : Object                                        // SR:ComputeShader
     {
         public int FindKernel(string name) => 0;                                      // SR:ComputeShader.FindKernel
+        public bool IsSupported(int kernelIndex) => false;                           // SR:ComputeShader.IsSupported (ComputeShader.bindings.cs:109)
         public bool HasKernel(string name) => false;                                  // SR:ComputeShader.HasKernel
         public void SetBuffer(int kernelIndex, int nameID, ComputeBuffer buffer) { }  // SR:ComputeShader.SetBuffer
         public void SetBuffer(int kernelIndex, int nameID, GraphicsBuffer buffer) { } // SR:ComputeShader.SetBuffer
