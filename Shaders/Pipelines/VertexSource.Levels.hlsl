@@ -29,8 +29,8 @@ TileFactors StageTileFactors(InputPatch<TileCorner, 4> corners)
         float3 cornerOS[4];
         [unroll] for (uint c = 0; c < 4; c++)
             cornerOS[c] = corners[c].positionOS;
-        bool culled = !UsesUniformTessFactor() && TileCulled(cornerOS, TileNoiseMargin(l, slot));
-        return ToTileFactors(culled ? CulledTileFactors() : LodKernelTileFactors(patch));
+        if (!UsesUniformTessFactor() && TileCulled(cornerOS, TileNoiseMargin(l, slot))) return ToTileFactors(CulledTileFactors());
+        return ToTileFactors(LodKernelTileFactors(patch));
     }
     return ToTileFactors(LodTileFactors(patch, CornerTileFactors(l, slot, corners)));
 }
