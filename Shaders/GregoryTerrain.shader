@@ -1,8 +1,6 @@
-// Gregory Terrain: the terrain surface, drawn by GregoryTerrainRenderer (tile patches, or the instanced
-// fallback), which sets every value below; the material owns the effect switches. Per pipeline a
-// tessellated SubShader, then its fallback. Each pass defines its GT_PASS_* and includes its pipeline's
-// adapter, which says what the pass's own keywords change. Render state not written is ShaderLab's
-// default (Cull Back, ZWrite On, ZTest LEqual). Why: Documentation~/internals.md, "Unity side".
+// Gregory Terrain: the terrain surface, drawn by GregoryTerrainRenderer, which sets every value below; the material owns
+// the effect switches. Per pipeline a tessellated SubShader, then its fallback; each pass defines its GT_PASS_* and includes
+// its pipeline's adapter. Unwritten render state is ShaderLab's default (Cull Back, ZWrite On, ZTest LEqual): internals.md, "Unity side".
 Shader "GregoryTerrain/Terrain"
 {
     Properties
@@ -12,10 +10,8 @@ Shader "GregoryTerrain/Terrain"
         [Toggle(GT_HEIGHT_COLOR)] _GtHeightColor ("Height colour", Float) = 1
         [Toggle(GT_NOISE_TABLE)] _GtNoiseTable ("Tiled noise (faster; repeats every 256 noise cells)", Float) = 0
 
-        // One popup for the debug views, as they replace each other: KeywordEnum enables
-        // GT_DEBUG_<ENTRY> (the property name, '_', the entry upper-cased), which matches the one
-        // `shader_feature_local _ GT_DEBUG_NORMALS GT_DEBUG_PATCH_ID GT_DEBUG_TESS_FACTOR` set of
-        // the forward passes; None enables GT_DEBUG_NONE, which no pass declares (the '_' variant).
+        // One popup for the debug views, which replace each other: KeywordEnum enables GT_DEBUG_<ENTRY>, one of the
+        // forward passes' `shader_feature_local _ GT_DEBUG_...` set; None's GT_DEBUG_NONE no pass declares ('_').
         [Header(Debug view)]
         [KeywordEnum(None, Normals, Patch_Id, Tess_Factor)] GT_DEBUG ("Debug view (replaces the lit colour)", Float) = 0
 
@@ -26,7 +22,6 @@ Shader "GregoryTerrain/Terrain"
         _HeightColor ("Height colour: gamma (> 0), colour-noise amplitude, colour-noise frequency, unused", Vector) = (0.5, 0.1, 64, 0)
         _ColorLow ("Low colour", Color) = (0.22, 0.33, 0.14, 1)
         _ColorHigh ("High colour", Color) = (0.9, 0.9, 0.92, 1)
-
         // Written by the renderer only.
         [HideInInspector] _Range ("Range (c, d, g, h) relative to the origin", Vector) = (0, 0, 1, 1)
         [HideInInspector] _RangeOrigin ("Range origin (hi.x, hi.y, lo.x, lo.y)", Vector) = (0, 0, 0, 0)
