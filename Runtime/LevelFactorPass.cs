@@ -14,11 +14,13 @@ namespace GregoryTerrain
     {
         sealed class CameraFactors
         {
+            public Camera camera;
             public GraphicsBuffer buffer;   // LodTiles.FactorFloat4sPerPatch float4 a draw patch, sized on a level-layout change
-            public int patches;
+            public int patches, frame;      // frame: Time.frameCount when last dispatched
         }
 
         readonly Dictionary<int, CameraFactors> _byCamera = new Dictionary<int, CameraFactors>();
+        readonly List<int> _evicted = new List<int>();
         GraphicsBuffer _bound;     // what the property block's _LodFactors names now
         GraphicsBuffer _unused;    // one float4 bound while the hull computes the factors: every declared buffer is bound (Metal)
         ComputeShader _kernelShader;
@@ -32,9 +34,9 @@ namespace GregoryTerrain
         {
             get
             {
-                long patches = _unused != null ? 1 : 0;
-                foreach (CameraFactors f in _byCamera.Values) patches += f.patches;
-                return patches * LodTiles.FactorFloat4sPerPatch * GpuLayout.Float4Stride;
+                long float4s = _unused != null ? 1 : 0;
+                foreach (CameraFactors f in _byCamera.Values) float4s += (long)f.patches * LodTiles.FactorFloat4sPerPatch;
+                return float4s * GpuLayout.Float4Stride;
             }
         }
 
@@ -51,13 +53,13 @@ namespace GregoryTerrain
                     Debug.LogWarning($"{r.name}: the Horizon levels' factor kernels do not run ({reason}); the hull stage computes the factors instead (slower).", r);
                 ReleaseCameraBuffers();
                 if (!r.LevelsOn(fallback)) { Release(); return was; }
-                _unused ??= new GraphicsBuffer(GraphicsBuffer.Target.Structured, LodTiles.FactorFloat4sPerPatch, GpuLayout.Float4Stride);
+                _unused ??= new GraphicsBuffer(GraphicsBuffer.Target.Structured, 1, GpuLayout.Float4Stride);
                 Bind(props, _unused);
                 return was;
             }
             keys.LevelKernelsUsed();
             int tiles = r.Tiles, patches = state.levelCount * LodTiles.TilesPerLevel(tiles);
-            CameraFactors f = FactorsOf(cam.GetInstanceID(), patches);
+            CameraFactors f = FactorsOf(cam, patches);
             Bind(props, f.buffer);
             Dispatch(r, cam, state, gpu, tiles, f);
             return !was;
@@ -84,15 +86,17 @@ namespace GregoryTerrain
             return _piecesKernel >= 0;
         }
 
-        /// <summary>Camera <paramref name="cameraId"/>'s buffer, made again only when the level layout's size changes.</summary>
-        CameraFactors FactorsOf(int cameraId, int patches)
+        /// <summary>The camera's buffer, made again only when the level layout's size changes.</summary>
+        CameraFactors FactorsOf(Camera cam, int patches)
         {
             if (_unused != null) { if (_unused == _bound) _bound = null; _unused.Release(); _unused = null; }
-            if (!_byCamera.TryGetValue(cameraId, out CameraFactors f))
+            int id = cam.GetInstanceID();
+            if (!_byCamera.TryGetValue(id, out CameraFactors f))
             {
-                if (_byCamera.Count >= CameraRangeOrigins.MaxCameras) ReleaseCameraBuffers();
-                _byCamera.Add(cameraId, f = new CameraFactors());
+                if (_byCamera.Count >= CameraRangeOrigins.MaxCameras) EvictIdle();
+                _byCamera.Add(id, f = new CameraFactors { camera = cam });
             }
+            f.frame = Time.frameCount;
             if (f.buffer != null && f.patches == patches) return f;
             f.buffer?.Release();
             f.buffer = new GraphicsBuffer(GraphicsBuffer.Target.Structured, patches * LodTiles.FactorFloat4sPerPatch, GpuLayout.Float4Stride);
@@ -145,6 +149,22 @@ namespace GregoryTerrain
             if (_unused == _bound) _bound = null;
             _unused?.Release();
             _unused = null;
+        }
+
+        // Buffers of destroyed cameras and of cameras not drawn this frame: a buffer a camera drew with
+        // this frame may still be read by a draw HDRP has not executed yet, so those stay.
+        void EvictIdle()
+        {
+            _evicted.Clear();
+            foreach (KeyValuePair<int, CameraFactors> e in _byCamera)
+                if (e.Value.camera == null || e.Value.frame != Time.frameCount) _evicted.Add(e.Key);
+            foreach (int id in _evicted)
+            {
+                CameraFactors f = _byCamera[id];
+                if (f.buffer == _bound) _bound = null;
+                f.buffer?.Release();
+                _byCamera.Remove(id);
+            }
         }
 
         void ReleaseCameraBuffers()

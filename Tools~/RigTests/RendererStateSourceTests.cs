@@ -310,7 +310,9 @@ namespace GregoryTerrain.Rig.Tests
         {
             string code = StripComments(File.ReadAllText(PackageRoot.Combine("Runtime", "LevelFactorPass.cs")));
             string update = Body(code, "UpdateFrame");
-            Assert.That(update, Does.Contain("FactorsOf(cam.GetInstanceID(), patches)"), "the camera's own buffer");
+            Assert.That(update, Does.Contain("FactorsOf(cam, patches)"), "the camera's own buffer");
+            Assert.That(Body(code, "FactorsOf"), Does.Contain("EvictIdle()").And.Not.Contain("ReleaseCameraBuffers()"),
+                "past the camera limit only idle cameras' buffers go: one a camera drew with this frame may still be read by a queued draw");
             Assert.That(update, Does.Contain("Bind(props, f.buffer)").And.Contain("Dispatch(r, cam, state, gpu, tiles, f)"), "bound and written: the same camera's buffer");
             Assert.That(code, Does.Not.Match(@"\bGraphicsBuffer\s+_factors\b"), "no buffer shared by every camera");
             Assert.That(Body(code, "FindKernels"), Does.Contain("IsSupported(_piecesKernel)").And.Contain("IsSupported(_seamsKernel)"), "a kernel that did not compile for the platform is not dispatched");
