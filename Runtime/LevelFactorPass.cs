@@ -27,8 +27,6 @@ namespace GregoryTerrain
         int _piecesKernel = -1, _seamsKernel = -1;
         readonly Vector4[] _ranges = new Vector4[LodTiles.MaxLevels];   // SetVectorArray's copy of the plan's levels
 
-        public const string PiecesKernel = "LodFactorPieces", SeamsKernel = "LodFactorSeams";
-
         /// <summary>GPU memory held now (0 when released).</summary>
         public long AllocatedBytes
         {
@@ -78,9 +76,9 @@ namespace GregoryTerrain
         {
             if (shader == _kernelShader) return _piecesKernel >= 0;
             _kernelShader = shader;
-            bool found = shader.HasKernel(PiecesKernel) && shader.HasKernel(SeamsKernel);
-            _piecesKernel = found ? shader.FindKernel(PiecesKernel) : -1;
-            _seamsKernel = found ? shader.FindKernel(SeamsKernel) : -1;
+            bool found = shader.HasKernel(ShaderIds.LodFactorPiecesKernel) && shader.HasKernel(ShaderIds.LodFactorSeamsKernel);
+            _piecesKernel = found ? shader.FindKernel(ShaderIds.LodFactorPiecesKernel) : -1;
+            _seamsKernel = found ? shader.FindKernel(ShaderIds.LodFactorSeamsKernel) : -1;
             // A kernel that did not compile for this platform is found but cannot dispatch.
             if (found && !(shader.IsSupported(_piecesKernel) && shader.IsSupported(_seamsKernel))) _piecesKernel = _seamsKernel = -1;
             return _piecesKernel >= 0;

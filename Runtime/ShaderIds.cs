@@ -63,6 +63,8 @@ namespace GregoryTerrain
         /// <summary>The levels' factor kernels' records (LevelFactorKernels.hlsl): the hull's <c>_LodFactors</c>, the kernels' <c>_LodFactorsRW</c>.</summary>
         public static readonly int LodFactors = Shader.PropertyToID("_LodFactors");
         public static readonly int LodFactorsRW = Shader.PropertyToID("_LodFactorsRW");
+        public const string LodFactorPiecesKernel = "LodFactorPieces";
+        public const string LodFactorSeamsKernel = "LodFactorSeams";
         public const string SnowExposureKernel = "SnowExposureKernel";
         public const string SnowAccumulateKernel = "SnowAccumulateKernel";
         public const string SnowFieldKernel = "SnowFieldKernel";

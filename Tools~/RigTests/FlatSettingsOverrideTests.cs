@@ -116,7 +116,7 @@ namespace GregoryTerrain.Rig.Tests
             Assert.That(s, Does.Contain(@"p.EndsWith("".prefab"") || p.EndsWith("".unity"")"), "model files match t:Prefab; LoadPrefabContents throws on them");
             Assert.That(s, Does.Contain("PrefabStageUtility.GetCurrentPrefabStage() != null"), "an open Prefab Mode's unsaved edits are not overwritten");
             Assert.That(s, Does.Contain("scene.isDirty"), "a scene the user chose not to save is left alone");
-            Assert.That(s, Does.Contain("!EditorSceneManager.SaveScene(scene)").And.Contain("out bool saved"), "a file that could not be saved is reported, not counted");
+            Assert.That(s, Does.Contain("EditorSceneManager.SaveScene(scene)) return null;").And.Contain("out bool saved"), "a file that could not be saved is reported, not counted");
             Assert.That(s, Does.Contain("catch (Exception e)"), "one file's failure does not end the pass");
         }
 

@@ -124,6 +124,8 @@ namespace GregoryTerrain.Rig.Tests
             Gt("pipeline_pass", "shadow-sun-elevation", "-90..90"), Gt("pipeline_pass", "shadow-sun-azimuth", "-360..360"),
             Gt("pipeline_pass", "object-yaw", "-360..360"),
             Gt("pipeline_pass_hdrp", "sun-elevation", "-90..90"), Gt("pipeline_pass_hdrp", "sun-azimuth", "-360..360"),
+            Gt("pipeline_pass_hdrp", "shadow-sun-elevation", "-90..90"), Gt("pipeline_pass_hdrp", "shadow-sun-azimuth", "-360..360"),
+            Gt("pipeline_pass_hdrp", "depth-pass-factor", "0..64"), Gt("pipeline_pass_hdrp", "depth-nudge-ulps", "int -8..8"),
         }.Concat(Scene("pack")).Concat(Scene("error")).ToArray();
 
         /// <summary>Options of gt scripts that take a value that is not a number (Coverage: every other valued option must be in Options).</summary>

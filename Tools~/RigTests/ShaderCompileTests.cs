@@ -20,8 +20,11 @@ namespace GregoryTerrain.Rig.Tests
         // The vertex cache's compute kernels, compiled for GT_VERTEX_CACHE variants only.
         static readonly string[] CacheStages = { "cache_factors", "cache_vertices" };
 
+        static readonly string[] LodStages = { "lod_pieces", "lod_seams" };   // the levels' factor kernels
+
         static string[] StagesOf(string[] keywords) =>
-            keywords.Contains("GT_VERTEX_CACHE") ? Stages.Concat(CacheStages).ToArray() : Stages;
+            keywords.Contains("GT_VERTEX_CACHE") ? Stages.Concat(CacheStages).ToArray()
+            : keywords.Contains("GT_LOD") ? Stages.Concat(LodStages).ToArray() : Stages;
         static readonly string[] Targets = { "spirv", "glsl450", "essl320", "msl21", "dxc" };
 
         string packageRoot;

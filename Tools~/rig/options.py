@@ -28,6 +28,7 @@ RANGES = {
     "seconds": (False, 0, 3600, True),
     "elevation": (False, -90, 90, False),    # a light's degrees above the horizon
     "azimuth": (False, -360, 360, False),    # a light's compass degrees
+    "ulps": (True, -8, 8, False),            # float32 steps a broken-input option nudges a depth by
 }
 MAX_LIST = 64  # as gt-cli's NumericOption.MaxListCount
 

@@ -505,13 +505,11 @@ def main(argv=None):
                        help="the shadowed frame's sun: degrees from +z towards +x (default 90, as gt pipeline_pass's)")
     ap.add_argument("--flip-depth-bias", action="store_true", help="the ShadowCaster's depth bias towards the light (broken)")
     ap.add_argument("--transpose-atlas", action="store_true", help="the cascade atlas sampled transposed (broken)")
-    ap.add_argument("--depth-nudge-ulps", type=int, default=0,
+    options.add_number(ap, "--depth-nudge-ulps", range="ulps", default=0,
                     help="N: the prepass's depth moved N float32 steps before ForwardOnly loads it (broken; -8..8)")
     options.add_number(ap, "--depth-pass-factor", range="factor", default=0,
                        help="F: DepthForwardOnly's uniform tessellation factor instead of the scene's (broken; default 0: the scene's)")
     a = ap.parse_args(argv)
-    if not -8 <= a.depth_nudge_ulps <= 8:
-        ap.error(f"argument --depth-nudge-ulps: expected -8..8, got {a.depth_nudge_ulps}")
     try:
         color = [float(x) for x in a.light_color.split(",")]
         if len(color) != 3 or not all(math.isfinite(x) and 0 <= x <= 1000 for x in color):
