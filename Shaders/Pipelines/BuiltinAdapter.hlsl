@@ -1,8 +1,7 @@
 // Built-in render pipeline adapter (interface: see StandaloneAdapter.hlsl).
 // Unity API names used: HLSLSupport.cginc (CBUFFER_START/CBUFFER_END), UnityCG.cginc
-// (UnityWorldToClipPos, UnityApplyLinearShadowBias, UnityWorldSpaceLightDir, unity_LightShadowBias,
-// _WorldSpaceCameraPos, _ScreenParams, _WorldSpaceLightPos0, unity_WorldToShadow),
-// UnityLightingCommon.cginc (_LightColor0) and
+// (UnityWorldToClipPos, UnityApplyLinearShadowBias, _WorldSpaceCameraPos, _ScreenParams,
+// _WorldSpaceLightPos0, unity_WorldToShadow), UnityLightingCommon.cginc (_LightColor0) and
 // AutoLight.cginc (unitySampleShadow, the SHADOWS_SCREEN keyword). Use it in a pass with
 // Tags { "LightMode" = "ForwardBase" } so Unity fills the main directional light.
 // Compiled against the real 2022.3 CGIncludes off Unity by the rig (Tools~/rig/shaderlab.py).
@@ -51,16 +50,14 @@ float4 GT_ObjectToClip(float3 positionOS)
 }
 
 #if defined(GT_PASS_SHADOWCASTER)
-// The vertices in the shadow map as Built-in's TRANSFER_SHADOW_CASTER_NORMALOFFSET places them
-// (UnityClipSpaceShadowCasterPos, which reads unity_ObjectToWorld, so its steps are taken here in world
-// space): inset along the unit normal by unity_LightShadowBias.z (the light's Normal Bias in world units)
-// times the sine between normal and light, then the depth bias. saturate: a cosine rounded past 1 is no NaN.
+// Built-in's normal offset (UnityClipSpaceShadowCasterPos, in world space: it reads unity_ObjectToWorld),
+// then the depth bias. saturate: a cosine rounded past 1 gives no NaN.
 #define GT_SHADOW_CASTER_NORMAL_BIAS 1
 float4 GT_ObjectToShadowClip(float3 positionOS, float3 normalWS)
 {
     float3 positionWS = GT_ObjectToWorld(positionOS);
-    float shadowCos = dot(normalWS, normalize(UnityWorldSpaceLightDir(positionWS)));
-    positionWS -= normalWS * (unity_LightShadowBias.z * sqrt(saturate(1.0 - shadowCos * shadowCos)));
+    float c = dot(normalWS, normalize(UnityWorldSpaceLightDir(positionWS)));
+    positionWS -= normalWS * (unity_LightShadowBias.z * sqrt(saturate(1.0 - c * c)));
     return UnityApplyLinearShadowBias(UnityWorldToClipPos(positionWS));
 }
 #endif

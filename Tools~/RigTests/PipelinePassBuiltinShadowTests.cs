@@ -71,14 +71,7 @@ namespace GregoryTerrain.Rig.Tests
         [Test]
         public void TheScreenSpaceShadow_IsCollectedFromTheCastersMapAndTheCamerasDepth_ForwardBaseFromDxc()
         {
-            int n = _shadow.GetProperty("resolution").GetInt32();
-            byte[] map = File.ReadAllBytes(Path.Combine(_out, "builtin_shadow_map.f32"));
-            Assert.That(map.Length, Is.EqualTo(4 * n * n));
-            var depth = Enumerable.Range(0, n * n).Select(i => BitConverter.ToSingle(map, 4 * i)).ToArray();
-            int written = depth.Count(x => x != 0), outside = depth.Count(x => !(x >= 0 && x <= 1));
-            TestContext.Out.WriteLine($"shadow map {n}x{n}: {written} texels written ({100.0 * written / (n * n):F2}%); texel {_texel:G3} world units");
-            Assert.That(outside, Is.Zero, "depth outside [0, 1]");
-            Assert.That(written, Is.GreaterThan(n * n / 200), "the terrain covers half a percent of the light's view or more");
+            PipelinePassRun.AssertShadowMapWritten(_out, "builtin_shadow_map.f32", _shadow.GetProperty("resolution").GetInt32(), _texel, "shadow map");
             // The depth texture pass (glslang's SPIR-V) and ForwardBase (DXC's) tessellate and place the same surface: the
             // collect reads the receiver's own depth, to float rounding (the two compilers order the arithmetic apart).
             byte[] cameraDepth = File.ReadAllBytes(Path.Combine(_out, "builtin_camera_depth.f32"));
