@@ -490,9 +490,12 @@ def builtin_camera_depth_values():
 
 
 def builtin_collect_values(shadow):
-    """What the collect step reads (UnityShaderVariables.cginc:159-160): unity_WorldToShadow[0] and _LightShadowData.x,
-    1 - the light's shadow strength (1: the Light's default), the shadowed value lerp(x, 1, lit) reaches."""
-    return {"unity_WorldToShadow": shadow.world_to_shadow, "_LightShadowData": [0.0, 0.0, 0.0, 0.0]}
+    """What the collect step reads (UnityShaderVariables.cginc:159-160): unity_WorldToShadow[0] (one cascade: the
+    others the no-op URP sets, z = 1) and _LightShadowData.x, 1 - the light's shadow strength (1: the Light's
+    default), the shadowed value lerp(x, 1, lit) reaches."""
+    no_op = [[0.0] * 4 for _ in range(4)]
+    no_op[2][2] = 1.0
+    return {"unity_WorldToShadow": [shadow.world_to_shadow] + [no_op] * 3, "_LightShadowData": [0.0, 0.0, 0.0, 0.0]}
 
 
 def collect_screen_shadows(camera_depth, map_texels, cam, shadow, values, out_path):
@@ -508,7 +511,7 @@ def collect_screen_shadows(camera_depth, map_texels, cam, shadow, values, out_pa
     depth, texels = read_floats(camera_depth), read_floats(map_texels)
     if len(depth) != w * h or len(texels) != n * n:
         raise SystemExit(f"pipeline-pass: error: {camera_depth} or {map_texels} has the wrong size for {w}x{h} and {n}^2")
-    clip_to_world, to_shadow = general_inverse(cam.view_proj), values["unity_WorldToShadow"]
+    clip_to_world, to_shadow = general_inverse(cam.view_proj), values["unity_WorldToShadow"][0]
     strength_floor = values["_LightShadowData"][0]
     out, drawn, shadowed = [1.0] * (w * h), 0, 0
     for p, d in enumerate(depth):

@@ -16,7 +16,7 @@ as 0; an Inf saturates like a bright pixel, so only NaN is seen in colour). Prin
 variants drawn per pipeline and per variant set, bindings filled and defaulted, and every failure; exits 1 if any.
 Not part of gt test (Tools~/rig/README.md gives its time); the PipelinePass* fixtures draw a representative subset.
 
-  gt pipeline_pass_all [--out DIR] [--list] [--pipeline URP,HDRP,Builtin]... [--pass NAME]...
+  gt pipeline_pass_all [--out DIR] [--list] [--pipeline URP|HDRP|Builtin]... [--pass NAME]... [--keyword KEYWORD]...
 --list prints the variants it would draw (pipeline, SubShader, pass, keywords; tab-separated) and draws nothing.
 """
 import argparse
@@ -130,10 +130,12 @@ def main(argv=None):
     ap.add_argument("--list", action="store_true", help="print the variants (tab-separated) and draw nothing")
     ap.add_argument("--pipeline", action="append", choices=PIPELINES, help="only these pipelines (default: all three)")
     ap.add_argument("--pass", dest="passes", action="append", default=[], help="NAME: only passes of this name")
+    ap.add_argument("--keyword", action="append", default=[], help="KEYWORD: only variants that have it")
     a = ap.parse_args(argv)
     shader = os.path.join(pp.PKG_DIR, "Shaders", "GregoryTerrain.shader")
     todo = [v for v in tessellated_variants(shader)
-            if (not a.pipeline or v[0] in a.pipeline) and (not a.passes or v[2] in a.passes)]
+            if (not a.pipeline or v[0] in a.pipeline) and (not a.passes or v[2] in a.passes)
+            and all(k in v[3] for k in a.keyword)]
     if a.list:
         for pipeline, sub, name, keywords in todo:
             print(f"{pipeline}\t{sub}\t{name}\t{' '.join(keywords) or '-'}")
@@ -164,6 +166,8 @@ def main(argv=None):
         folder = os.path.join(a.out, f"{i:03d}")
         compiler = compiler_for(pipeline, keywords)
         values = dict(pipeline_scene[pipeline], **pass_scene.get((pipeline, name), {}))
+        if set(keywords) & set(shaderlab.FOG_KEYWORDS):     # the fog pictures' RenderSettings fog
+            values.update(pp.fog_values("lit_fog_linear"))
         args = pp.prepare(scene, pipeline, name, keywords, buffers, folder, compiler, scene=values, sun=sun)
         frag = args[args.index("--frag") + 1]
         outputs = pp.reflect(frag).get("outputs", [])
@@ -178,7 +182,8 @@ def main(argv=None):
             failures = [f for f in failures if not f.startswith("defaulted reads")]
         print(f"variant {label} compiler {compiler}: covered {covered}, filled {len(manifest['filled'])}, "
               f"defaulted {len(manifest['defaults'])}, defaulted_read {len(manifest['defaulted_read'])}"
-              + (f" (the scene has no {', no '.join(lacking)}: {', '.join(manifest['defaulted_read'])})" if lacking else "")
+              + (f" (the scene has no {', no '.join(lacking)}" + "".join(f": {r}" for r in [', '.join(manifest['defaulted_read'])] if r)
+                 + ")" if lacking else "")
               + ("; FAILED: " + "; ".join(failures) if failures else ""), flush=True)
         rows.append({"pipeline": pipeline, "pass": name, "keywords": keywords, "compiler": compiler, "covered": covered,
                      "filled": len(manifest["filled"]), "defaulted": len(manifest["defaults"]), "failures": failures})
