@@ -23,14 +23,16 @@ URP's DepthNormalsOnly, _GBUFFER_NORMALS_OCT, its depth in OUT/depth_normals_dep
 OUT/depth_normals_view.json) and depth_normals_snorm (only with --only: the base variant into R8G8B8A8_SNorm, the
 PNG's bytes signed; _depth.f32, _view.json likewise), depth_normals_layers and lit_layers (only with --only: the
 _WRITE_RENDERING_LAYERS variants, their second target's R8 bytes in OUT/<picture>_target1.bin), under --object-yaw;
-lit_fog_* and builtin_fog_* (only with --only: the fog variants, linear/exp/exp2; _depth.f32, _view.json likewise).
+lit_fog_* and builtin_fog_* (only with --only: the fog variants, linear/exp/exp2; _depth.f32, _view.json likewise);
+builtin_lit_shadows (only with --only; draws builtin_shadow_map and builtin_camera_depth first): Built-in's screen-space
+shadow (OUT/builtin_screen_shadow.f32 the collected texture, OUT/builtin_lit_shadows_depth.f32 ForwardBase's depth).
 Uniform blocks are bound as storage buffers (--uniform-blocks storage: the harness rewrites the
 blocks, same offsets): the rig's lavapipe rule (one compile per SPIR-V, whatever the values) on every device.
 
-  gt pipeline_pass [--out DIR] [--only depth|lit|normals|lit_dxc|builtin_lit|shadow_map|lit_shadows|depth_normals|depth_normals_snorm|depth_normals_layers|lit_layers|lit_fog_*|builtin_fog_*]...
+  gt pipeline_pass [--out DIR] [--only depth|lit|normals|lit_dxc|builtin_lit|shadow_map|lit_shadows|depth_normals|depth_normals_snorm|depth_normals_layers|lit_layers|lit_fog_*|builtin_fog_*|builtin_lit_shadows]...
       [--sun-elevation DEG] [--sun-azimuth DEG] [--shadow-sun-elevation DEG] [--shadow-sun-azimuth DEG] [--light-color R,G,B]
-      [--object-yaw DEG] [--leave-default NAME]... [--fill-from NAME=OTHER]... [--transpose NAME]...
---leave-default / --fill-from / --transpose break the scene on purpose (the tests' broken inputs): a
+      [--object-yaw DEG] [--leave-default NAME]... [--fill-from NAME=OTHER]... [--transpose NAME]... [--flip-shadow-bias]
+--leave-default / --fill-from / --transpose / --flip-shadow-bias break the scene on purpose (the tests' broken inputs): a
 member left to its default, a member filled with another member's value, a matrix transposed (in each
 pipeline whose scene sets the names).
 """
