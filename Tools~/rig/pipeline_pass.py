@@ -1020,7 +1020,7 @@ def main(argv=None):
                             "the sample grid's hills cast a large shadow only under a low sun)")
     options.add_number(ap, "--shadow-sun-azimuth", range="azimuth", default=90.0,
                        help="the shadowed frame's sun: degrees from +z towards +x (default 90: from the right, across "
-                            "the ridges; 12% of the sunlit terrain in their shadow)")
+                            "the ridges; 12%% of the sunlit terrain in their shadow)")
     ap.add_argument("--light-color", default="1,0.96,0.9", help="R,G,B: the main light's final colour (linear)")
     options.add_number(ap, "--object-yaw", range="azimuth", default=0.0,
                        help="degrees the renderer's Transform turns about the world's y axis (default 0; depth_normals' "
