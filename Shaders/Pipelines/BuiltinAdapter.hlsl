@@ -49,6 +49,19 @@ float4 GT_ObjectToClip(float3 positionOS)
     return positionCS;
 }
 
+#if defined(GT_PASS_SHADOWCASTER)
+// Built-in's normal offset (UnityClipSpaceShadowCasterPos, in world space: it reads unity_ObjectToWorld),
+// then the depth bias. saturate: a cosine rounded past 1 gives no NaN.
+#define GT_SHADOW_CASTER_NORMAL_BIAS 1
+float4 GT_ObjectToShadowClip(float3 positionOS, float3 normalWS)
+{
+    float3 positionWS = GT_ObjectToWorld(positionOS);
+    float c = dot(normalWS, normalize(UnityWorldSpaceLightDir(positionWS)));
+    positionWS -= normalWS * (unity_LightShadowBias.z * sqrt(saturate(1.0 - c * c)));
+    return UnityApplyLinearShadowBias(UnityWorldToClipPos(positionWS));
+}
+#endif
+
 float3 GT_CameraPositionWS() { return _WorldSpaceCameraPos; }
 float2 GT_ScreenSize() { return _ScreenParams.xy; }
 

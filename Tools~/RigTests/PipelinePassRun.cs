@@ -286,6 +286,20 @@ namespace GregoryTerrain.Rig.Tests
             Assert.That(gpuOnly, Is.LessThanOrEqualTo(away.Count(s => s.Gpu) / 20), "pixels the GPU shadows and the CPU lights");
         }
 
+        /// <summary>A shadow caster's N x N map (FILE: the harness's --depth-out): every depth within [0, 1] and the terrain
+        /// covering half a percent of the light's view or more (printed, then asserted; what: the map's name).</summary>
+        public static void AssertShadowMapWritten(string output, string file, int n, double texel, string what)
+        {
+            byte[] map = File.ReadAllBytes(Path.Combine(output, file));
+            Assert.That(map.Length, Is.EqualTo(4 * n * n), file);
+            var depth = Enumerable.Range(0, n * n).Select(i => BitConverter.ToSingle(map, 4 * i)).ToArray();
+            int written = depth.Count(x => x != 0), outside = depth.Count(x => !(x >= 0 && x <= 1));
+            TestContext.Out.WriteLine($"{what} {n}x{n}: {written} texels written ({100.0 * written / (n * n):F2}%), depth " +
+                                      $"{depth.Where(x => x != 0).DefaultIfEmpty().Min():F4}..{depth.Max():F4}; texel {texel:G3} world units");
+            Assert.That(outside, Is.Zero, "depth outside [0, 1]");
+            Assert.That(written, Is.GreaterThan(n * n / 200), "the terrain covers half a percent of the light's view or more");
+        }
+
         /// <summary>Mean, 99th percentile and largest of the angles (a NaN counts as 180 degrees), printed.</summary>
         public static (double Mean, double P99, double Max) AngleFigures(List<double> angles, string what)
         {

@@ -23,14 +23,16 @@ URP's DepthNormalsOnly, _GBUFFER_NORMALS_OCT, its depth in OUT/depth_normals_dep
 OUT/depth_normals_view.json) and depth_normals_snorm (only with --only: the base variant into R8G8B8A8_SNorm, the
 PNG's bytes signed; _depth.f32, _view.json likewise), depth_normals_layers and lit_layers (only with --only: the
 _WRITE_RENDERING_LAYERS variants, their second target's R8 bytes in OUT/<picture>_target1.bin), under --object-yaw;
-lit_fog_* and builtin_fog_* (only with --only: the fog variants, linear/exp/exp2; _depth.f32, _view.json likewise).
+lit_fog_* and builtin_fog_* (only with --only: the fog variants, linear/exp/exp2; _depth.f32, _view.json likewise);
+builtin_lit_shadows (only with --only; draws builtin_shadow_map and builtin_camera_depth first): Built-in's screen-space
+shadow (OUT/builtin_screen_shadow.f32 the collected texture, OUT/builtin_lit_shadows_depth.f32 ForwardBase's depth).
 Uniform blocks are bound as storage buffers (--uniform-blocks storage: the harness rewrites the
 blocks, same offsets): the rig's lavapipe rule (one compile per SPIR-V, whatever the values) on every device.
 
-  gt pipeline_pass [--out DIR] [--only depth|lit|normals|lit_dxc|builtin_lit|shadow_map|lit_shadows|depth_normals|depth_normals_snorm|depth_normals_layers|lit_layers|lit_fog_*|builtin_fog_*]...
+  gt pipeline_pass [--out DIR] [--only depth|lit|normals|lit_dxc|builtin_lit|shadow_map|lit_shadows|depth_normals|depth_normals_snorm|depth_normals_layers|lit_layers|lit_fog_*|builtin_fog_*|builtin_lit_shadows]...
       [--sun-elevation DEG] [--sun-azimuth DEG] [--shadow-sun-elevation DEG] [--shadow-sun-azimuth DEG] [--light-color R,G,B]
-      [--object-yaw DEG] [--leave-default NAME]... [--fill-from NAME=OTHER]... [--transpose NAME]...
---leave-default / --fill-from / --transpose break the scene on purpose (the tests' broken inputs): a
+      [--object-yaw DEG] [--leave-default NAME]... [--fill-from NAME=OTHER]... [--transpose NAME]... [--flip-shadow-bias]
+--leave-default / --fill-from / --transpose / --flip-shadow-bias break the scene on purpose (the tests' broken inputs): a
 member left to its default, a member filled with another member's value, a matrix transposed (in each
 pipeline whose scene sets the names).
 """
@@ -458,6 +460,81 @@ class MainLightShadow:
                 "_MainLightShadowmapSize": [1.0 / n, 1.0 / n, float(n), float(n)]}
 
 
+# Built-in's main directional light shadow as Built-in draws it in Forward on desktop (screen-space shadows): the
+# scene's ShadowCaster pass from the light into the shadow map, the same pass from the camera into
+# _CameraDepthTexture, a collect step that writes the screen-space shadow texture, and ForwardBase's SHADOWS_SCREEN
+# variant sampling it at the pixel (AutoLight.cginc:40-49: UNITY_DECLARE_SCREENSPACE_SHADOWMAP(_ShadowMapTexture),
+# unitySampleShadow's UNITY_SAMPLE_SCREEN_SHADOW). The light's view, projection and world-to-shadow are
+# MainLightShadow's (one cascade: the culling sphere's orthographic view, unity_WorldToShadow[0] with z reversed).
+BUILTIN_SHADOW_DEPTH_BIAS = 1.0     # texels; Unity scales Light.shadowBias natively (not public): one texel, as URP's
+BUILTIN_SHADOW_NORMAL_BIAS = 0.4    # texels: Light.shadowNormalBias's default (the scripting reference: in shadow-map texels)
+
+
+def builtin_caster_values(shadow, flip_bias=False):
+    """The ShadowCaster pass from the light (UnityShaderVariables.cginc:156 unity_LightShadowBias, read by
+    UnityApplyLinearShadowBias, UnityCG.cginc:936-959): x the depth bias in clip z (reversed depth: negative moves
+    the caster away from the light; the orthographic clip z spans the light's depth range once), y 1 for a
+    directional light (casters nearer than the near plane clamped onto it), z the normal bias in world units
+    ("scaled by world space texel size", UnityCG.cginc:917-918; UnityClipSpaceShadowCasterPos, 904-928, which the
+    adapter's GT_ObjectToShadowClip follows). flip_bias: the depth bias's sign flipped (a broken input)."""
+    depth_range = -2.0 / shadow.proj[2][2]
+    x = -BUILTIN_SHADOW_DEPTH_BIAS * shadow.texel / depth_range
+    return {"unity_MatrixVP": shadow.view_proj, "unity_MatrixV": shadow.view, "glstate_matrix_projection": shadow.gpu_proj,
+            "unity_MatrixInvV": affine_inverse(shadow.view),
+            "unity_LightShadowBias": [-x if flip_bias else x, 1.0, BUILTIN_SHADOW_NORMAL_BIAS * shadow.texel, 0.0],
+            "_WorldSpaceLightPos0": shadow.sun + [0.0]}
+
+
+def builtin_camera_depth_values():
+    """The ShadowCaster pass from the camera into _CameraDepthTexture: the camera's matrices (builtin_globals), no
+    light, so no shadow bias (x 0 adds nothing, y 0 leaves z unclamped: UnityCG.cginc:946, 957)."""
+    return {"unity_LightShadowBias": [0.0, 0.0, 0.0, 0.0]}
+
+
+def builtin_collect_values(shadow):
+    """What the collect step reads (UnityShaderVariables.cginc:159-160): unity_WorldToShadow[0] (one cascade: the
+    others the no-op URP sets, z = 1) and _LightShadowData.x, 1 - the light's shadow strength (1: the Light's
+    default), the shadowed value lerp(x, 1, lit) reaches."""
+    no_op = [[0.0] * 4 for _ in range(4)]
+    no_op[2][2] = 1.0
+    return {"unity_WorldToShadow": [shadow.world_to_shadow] + [no_op] * 3, "_LightShadowData": [0.0, 0.0, 0.0, 0.0]}
+
+
+def collect_screen_shadows(camera_depth, map_texels, cam, shadow, values, out_path):
+    """Unity's screen-space shadow collect (Internal-ScreenSpaceShadows, one cascade, hard shadows; not in the
+    CGIncludes: written from what they sample and the manual's description): per screen pixel, the world position
+    of _CameraDepthTexture's depth through the inverse of the camera's view-projection, its shadow coordinate
+    unity_WorldToShadow[0] x world, the map's texel there compared as UNITY_SAMPLE_SHADOW's comparison sampler
+    compares under reversed depth (lit when the receiver's z is at or above the map's; point, as the rig's other
+    maps), then lerp(_LightShadowData.x, 1, lit). Pixels with no depth (the far plane) and pixels past the shadow
+    distance are lit. Writes W x H float32, top row first (the screen's rows as the harness draws them); returns
+    (pixels with depth, pixels shadowed)."""
+    w, h, n = cam.width, cam.height, shadow.resolution
+    depth, texels = read_floats(camera_depth), read_floats(map_texels)
+    if len(depth) != w * h or len(texels) != n * n:
+        raise SystemExit(f"pipeline-pass: error: {camera_depth} or {map_texels} has the wrong size for {w}x{h} and {n}^2")
+    clip_to_world, to_shadow = general_inverse(cam.view_proj), values["unity_WorldToShadow"][0]
+    strength_floor = values["_LightShadowData"][0]
+    out, drawn, shadowed = [1.0] * (w * h), 0, 0
+    for p, d in enumerate(depth):
+        if not d > 0.0:
+            continue
+        ndc = [(p % w + 0.5) / w * 2.0 - 1.0, 1.0 - (p // w + 0.5) / h * 2.0, d, 1.0]
+        world = [sum(clip_to_world[r][c] * ndc[c] for c in range(4)) for r in range(4)]
+        world = [x / world[3] for x in world]
+        drawn += 1
+        if math.dist(world[:3], cam.eye) > shadow.distance:
+            continue
+        s = [sum(to_shadow[r][c] * world[c] for c in range(4)) for r in range(3)]
+        tx, ty = min(max(int(s[0] * n), 0), n - 1), min(max(int(s[1] * n), 0), n - 1)
+        if s[2] < texels[ty * n + tx]:
+            out[p] = strength_floor
+            shadowed += 1
+    with open(out_path, "wb") as f:
+        f.write(struct.pack(f"<{w * h}f", *out))
+    return drawn, shadowed
+
+
 def builtin_globals(cam, o2w, o2c, sun, light_color):
     """Built-in's members by name for ForwardBase with one directional light, each with where its
     layout comes from. Paths are under ../shared/unity-shaderlib/builtin-2022.3.62f1/CGIncludes/."""
@@ -615,6 +692,9 @@ def terrain_params(buffers):
     return {name: p[4 * i:4 * i + 4] for i, name in enumerate(names)}
 
 
+# A buffer the scene has nothing for stops the run, unless a caller (gt pipeline_pass_all) sets this hook, called as
+# the scene's own buffer functions are (name, kind, size, binding, path, spvs, report) to write a listed default.
+MISSING_BUFFER = None
 # The grid's structured buffers (TerrainInputs.hlsl; internals.md "GPU layout"), as the rig packs them.
 GRID_BUFFERS = {"_ControlPoints": "control_points.f32", "_Regions": "regions.f32", "_GridLines": "grid_lines.f32"}
 
@@ -696,16 +776,7 @@ def prepare(a, pipeline, pass_name, keywords, buffers, out, compiler="glslang", 
     cam, o2w, o2c = yawed(a, *rig_camera(buffers))
     values = GLOBALS[pipeline](cam, o2w, o2c, sun, a.light_color)
     values.update(scene or {})
-    # A broken input applies to the pipelines whose scene sets the names (main() checks that one does).
-    for name in a.leave_default:
-        values.pop(name, None)
-    for pair in a.fill_from:
-        dst, _, src = pair.partition("=")
-        if dst in values and src in values:
-            values[dst] = values[src]
-    for name in a.transpose:
-        if name in values:
-            values[name] = transposed(values[name])
+    broken_inputs(a, values)
     values.update(terrain_params(buffers))
 
     # One binding per resource name across the stages; a name whose layout differs between stages fails.
@@ -751,6 +822,9 @@ def prepare(a, pipeline, pass_name, keywords, buffers, out, compiler="glslang", 
             with open(os.path.join(buffers, GRID_BUFFERS[name]), "rb") as f:
                 data = f.read()
             report["filled"].append(name)
+        elif MISSING_BUFFER is not None:
+            bindings.append(MISSING_BUFFER(name, kind, size, binding_of[name], path, spvs, report))
+            continue
         else:
             raise SystemExit(f"pipeline-pass: error: the scene has nothing for the buffer '{name}'")
         with open(path, "wb") as f:
@@ -792,6 +866,21 @@ def prepare(a, pipeline, pass_name, keywords, buffers, out, compiler="glslang", 
     print(f"defaulted_read {len(defaulted_read)}: {', '.join(defaulted_read)}")
     print(f"state {' '.join(state)}")
     return args
+
+
+def broken_inputs(a, values):
+    """--leave-default, --fill-from, --transpose applied to the names VALUES sets (main() checks that some scene
+    sets each name)."""
+    for name in a.leave_default:
+        values.pop(name, None)
+    for pair in a.fill_from:
+        dst, _, src = pair.partition("=")
+        if dst in values and src in values:
+            values[dst] = values[src]
+    for name in a.transpose:
+        if name in values:
+            values[name] = transposed(values[name])
+    return values
 
 
 def yawed(a, cam, o2w, o2c):
@@ -849,7 +938,10 @@ PICTURES = [("depth", "URP", "DepthOnly", [], "glslang"), ("lit", "URP", "Forwar
             ("lit_fog_exp2", "URP", "ForwardLit", ["FOG_EXP2"], "glslang"),
             ("builtin_fog_linear", "Builtin", "ForwardBase", ["FOG_LINEAR"], "glslang"),
             ("builtin_fog_exp", "Builtin", "ForwardBase", ["FOG_EXP"], "glslang"),
-            ("builtin_fog_exp2", "Builtin", "ForwardBase", ["FOG_EXP2"], "glslang")]
+            ("builtin_fog_exp2", "Builtin", "ForwardBase", ["FOG_EXP2"], "glslang"),
+            ("builtin_shadow_map", "Builtin", "ShadowCaster", [], "glslang"),
+            ("builtin_camera_depth", "Builtin", "ShadowCaster", [], "glslang"),
+            ("builtin_lit_shadows", "Builtin", "ForwardBase", ["SHADOWS_SCREEN"], "dxc")]
 # depth_normals: URP's DepthNormalsOnly with _GBUFFER_NORMALS_OCT, the variant whose output fits the harness's
 # RGBA8 UNORM target as it fits URP's (UniversalRendererData's Accurate G-buffer Normals: R8G8B8A8_UNorm, the
 # octahedral normal's two 12-bit coordinates in RGB 8:8:8). URP's default (Forward, that option off) draws the
@@ -867,7 +959,14 @@ PICTURES = [("depth", "URP", "DepthOnly", [], "glslang"), ("lit", "URP", "Forwar
 # lit_fog_*, builtin_fog_*: ForwardLit's and ForwardBase's multi_compile_fog variants under the scene's fog
 # (fog_values), depth and view written (the test recomputes each pixel's fog from its depth).
 FOG_PICTURES = {"lit_fog_linear", "lit_fog_exp", "lit_fog_exp2", "builtin_fog_linear", "builtin_fog_exp", "builtin_fog_exp2"}
-ON_REQUEST = {"depth_normals", "depth_normals_snorm", "depth_normals_layers", "lit_layers"} | FOG_PICTURES
+# builtin_shadow_map, builtin_camera_depth, builtin_lit_shadows (only with --only builtin_lit_shadows, which draws
+# the other two first): Built-in's screen-space directional shadow (builtin_caster_values .. collect_screen_shadows).
+# ForwardBase's SHADOWS_SCREEN variant from DXC's SPIR-V: glslang's HLSL front end declares a DX9 sampler2D as a bare
+# OpTypeSampler with no image, so AutoLight's tex2Dproj (and any tex2D) on it is an image operation on a sampler,
+# which spirv-val rejects; DXC under Unity's use_dxc defines takes HLSLSupport.cginc's emulated sampler2D (a
+# Texture2D and a SamplerState), as Unity's own DXC compile does.
+BUILTIN_SHADOW_PICTURES = {"builtin_shadow_map", "builtin_camera_depth", "builtin_lit_shadows"}
+ON_REQUEST = {"depth_normals", "depth_normals_snorm", "depth_normals_layers", "lit_layers"} | FOG_PICTURES | BUILTIN_SHADOW_PICTURES
 DEPTH_PICTURES = {"depth_normals", "depth_normals_snorm", "depth_normals_layers"} | FOG_PICTURES
 COLOR_FORMATS = {"depth_normals_snorm": "R8G8B8A8_SNORM", "depth_normals_layers": "R8G8B8A8_SNORM"}
 TARGET1 = {"depth_normals_layers": "R8_UNORM", "lit_layers": "R8_UNORM"}
@@ -921,7 +1020,7 @@ def main(argv=None):
                             "the sample grid's hills cast a large shadow only under a low sun)")
     options.add_number(ap, "--shadow-sun-azimuth", range="azimuth", default=90.0,
                        help="the shadowed frame's sun: degrees from +z towards +x (default 90: from the right, across "
-                            "the ridges; 12% of the sunlit terrain in their shadow)")
+                            "the ridges; 12%% of the sunlit terrain in their shadow)")
     ap.add_argument("--light-color", default="1,0.96,0.9", help="R,G,B: the main light's final colour (linear)")
     options.add_number(ap, "--object-yaw", range="azimuth", default=0.0,
                        help="degrees the renderer's Transform turns about the world's y axis (default 0; depth_normals' "
@@ -929,6 +1028,8 @@ def main(argv=None):
     ap.add_argument("--leave-default", action="append", default=[], help="NAME: leave a member to its default")
     ap.add_argument("--fill-from", action="append", default=[], help="NAME=OTHER: fill NAME with OTHER's value")
     ap.add_argument("--transpose", action="append", default=[], help="NAME: fill the matrix NAME (each, for an array) transposed")
+    ap.add_argument("--flip-shadow-bias", action="store_true",
+                    help="Built-in's shadow casters biased towards the light instead of away (a broken input: acne)")
     a = ap.parse_args(argv)
     try:
         a.light_color = [float(x) for x in a.light_color.split(",")]
@@ -941,6 +1042,7 @@ def main(argv=None):
     scene_names = [set(g(probe, identity, identity, [0.0, 1.0, 0.0], [1.0] * 3)) for g in GLOBALS.values()]
     shadow = MainLightShadow(probe, normalize([0.3, 0.5, 0.2]))
     scene_names.append(set(shadow.caster_values()) | set(shadow.receiver_values()))
+    scene_names.append(set(builtin_caster_values(shadow)) | set(builtin_collect_values(shadow)))
     scene_names.append(set(fog_values("lit_fog_linear")))
     for name in a.leave_default:
         if not any(name in names for names in scene_names):
@@ -952,7 +1054,8 @@ def main(argv=None):
     for name in a.transpose:
         if not any(isinstance(v, list) and v and isinstance(v[0], list)
                    for names in [{**g(probe, identity, identity, [0.0, 1.0, 0.0], [1.0] * 3), **shadow.receiver_values(),
-                                  **shadow.caster_values()} for g in GLOBALS.values()] for k, v in names.items() if k == name):
+                                  **shadow.caster_values(), **builtin_caster_values(shadow),
+                                  **builtin_collect_values(shadow)} for g in GLOBALS.values()] for k, v in names.items() if k == name):
             ap.error(f"argument --transpose: no pipeline's scene sets a matrix '{name}'")
     os.makedirs(a.out, exist_ok=True)
     buffers = pack_scene(a.out)
@@ -961,13 +1064,33 @@ def main(argv=None):
     texels = os.path.join(a.out, "shadow_map_texels.f32")
     wanted = set(a.only or [p[0] for p in PICTURES if p[0] not in ON_REQUEST])
     wanted |= {m for m, receiver in SHADOW_PICTURES.items() if receiver in wanted}   # a receiver needs its map
+    wanted |= BUILTIN_SHADOW_PICTURES if "builtin_lit_shadows" in wanted else set()
+    builtin_texels = os.path.join(a.out, "builtin_shadow_map_texels.f32")
+    screen_shadow = os.path.join(a.out, "builtin_screen_shadow.f32")
     for picture, pipeline, pass_name, keywords, compiler in PICTURES:
         if picture not in wanted:
             continue
         folder = os.path.join(a.out, picture)
         log = os.path.join(folder, "harness.log")
         target1 = f"{TARGET1[picture]}:{os.path.join(a.out, picture + '_target1.bin')}" if picture in TARGET1 else None
-        if picture in SHADOW_PICTURES:
+        if picture == "builtin_shadow_map":
+            args = prepare(a, pipeline, pass_name, keywords, buffers, folder, compiler,
+                           scene=builtin_caster_values(shadow, a.flip_shadow_bias), sun=shadow.sun)
+            depth = os.path.join(a.out, picture + ".f32")
+            draw(args, buffers, None, log, (shadow.resolution, shadow.resolution), depth)
+            shadow_map_texels(depth, builtin_texels, shadow.resolution)
+        elif picture == "builtin_camera_depth":
+            args = prepare(a, pipeline, pass_name, keywords, buffers, folder, compiler, scene=builtin_camera_depth_values(),
+                           sun=shadow.sun)
+            draw(args, buffers, None, log, depth_out=os.path.join(a.out, picture + ".f32"))
+            drawn, shadowed = collect_screen_shadows(os.path.join(a.out, picture + ".f32"), builtin_texels, cam, shadow,
+                                                     broken_inputs(a, builtin_collect_values(shadow)), screen_shadow)
+            print(f"collect {screen_shadow} {cam.width}x{cam.height}: {drawn} pixels with depth, {shadowed} shadowed")
+        elif picture == "builtin_lit_shadows":
+            args = prepare(a, pipeline, pass_name, keywords, buffers, folder, compiler, sun=shadow.sun,
+                           images={"_ShadowMapTexture.t": ("R32_SFLOAT", screen_shadow, cam.width, cam.height)})
+            draw(args, buffers, os.path.join(a.out, picture + ".png"), log, depth_out=os.path.join(a.out, picture + "_depth.f32"))
+        elif picture in SHADOW_PICTURES:
             args = prepare(a, pipeline, pass_name, keywords, buffers, folder, compiler, scene=shadow.caster_values(),
                            sun=shadow.sun)
             depth = os.path.join(a.out, picture + ".f32")

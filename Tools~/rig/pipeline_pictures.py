@@ -8,7 +8,9 @@ valley), each panel the pipeline's own passes as gt pipeline_pass / gt pipeline_
   URP         ForwardLit _MAIN_LIGHT_SHADOWS over its ShadowCaster's 2048^2 map (pipeline_pass.py lit_shadows)
   HDRP        ForwardOnly SHADOW_LOW over DepthForwardOnly's depth and its ShadowCaster's cascade, after HDRP's
               exposure (pipeline_pass_hdrp.py hdrp_lit_shadows: x 0.81 of URP's where their models agree)
-  Built-in    ForwardBase, base variant (no shadow: SHADOWS_SCREEN's path does not compile under glslang)
+  Built-in    ForwardBase SHADOWS_SCREEN (DXC's SPIR-V) over the screen-space shadow its ShadowCaster's 2048^2 map and
+              the camera's depth texture give (pipeline_pass.py builtin_lit_shadows); ForwardBase's base variant
+              (builtin_lit) is drawn too, for its agreement with the standalone panel
 Writes OUT/pipelines.png (4 x 200 px wide) and prints where the panels agree: per pair, the covered pixels
 whose channels differ by at most 2/255 (HDRP divided by its exposure scale first). --docs also writes the
 palette PNG to Documentation~/images/pipelines.png (png_palette.py; run with a python3 that has PIL).
@@ -85,22 +87,22 @@ def main(argv=None):
     os.makedirs(a.out, exist_ok=True)
     urp, hdrp = os.path.join(a.out, "urp"), os.path.join(a.out, "hdrp")
     scene = ["--light-color", LIGHT]
-    run([sys.executable, os.path.join(RIG_DIR, "pipeline_pass.py"), "--out", urp, "--only", "lit_shadows", "--only", "builtin_lit",
+    run([sys.executable, os.path.join(RIG_DIR, "pipeline_pass.py"), "--out", urp, "--only", "lit_shadows", "--only", "builtin_lit", "--only", "builtin_lit_shadows",
          "--sun-elevation", SUN[0], "--sun-azimuth", SUN[1], "--shadow-sun-elevation", SUN[0], "--shadow-sun-azimuth", SUN[1]] + scene,
         os.path.join(a.out, "urp.log"))
     run([sys.executable, os.path.join(RIG_DIR, "pipeline_pass_hdrp.py"), "--out", hdrp, "--only", "hdrp_lit_shadows",
          "--shadow-sun-elevation", SUN[0], "--shadow-sun-azimuth", SUN[1]] + scene, os.path.join(a.out, "hdrp.log"))
     sun = pp.sun_direction(float(SUN[0]), float(SUN[1]))
     files = [standalone(a.out, os.path.join(urp, "buffers"), sun), os.path.join(urp, "lit_shadows.png"),
-             os.path.join(hdrp, "hdrp_lit_shadows.png"), os.path.join(urp, "builtin_lit.png")]
+             os.path.join(hdrp, "hdrp_lit_shadows.png"), os.path.join(urp, "builtin_lit_shadows.png"), os.path.join(urp, "builtin_lit.png")]
     pictures = [Image.open(f).convert("RGB") for f in files]
     figures = {"HDRP / scale vs URP (both shadowed)": agreement(pictures[2], pictures[1], HDRP_SCALE),
-               "Built-in vs standalone (both unshadowed)": agreement(pictures[3], pictures[0]),
-               "Built-in vs URP (URP's shadow differs)": agreement(pictures[3], pictures[1])}
+               "Built-in (base variant) vs standalone (both unshadowed)": agreement(pictures[4], pictures[0]),
+               "Built-in vs URP (both shadowed)": agreement(pictures[3], pictures[1])}
     for what, (covered, same) in figures.items():
         print(f"agree {what}: {same} of {covered} covered pixels within 2/255 ({100.0 * same / max(covered, 1):.2f}%)")
     sheet = Image.new("RGB", (PANEL[0] * 4, PANEL[1]))
-    for i, p in enumerate(pictures):
+    for i, p in enumerate(pictures[:4]):
         sheet.paste(p.resize(PANEL, Image.LANCZOS), (PANEL[0] * i, 0))
     png = os.path.join(a.out, "pipelines.png")
     sheet.save(png)

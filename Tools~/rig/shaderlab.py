@@ -408,6 +408,13 @@ def variants(program):
     return out
 
 
+def pass_variants(shader_path):
+    """[(pipeline, SubShader index, pass name, keywords)]: every pass's variants as this module compiles them
+    (variants(); a pass without a program has none), SubShader after SubShader. gt pipeline_pass_all draws these."""
+    return [(s.pipeline, s.index, p.name, v) for s in parse_shader(shader_path) for p in s.passes if p.program is not None
+            for v in variants(p.program)]
+
+
 def variant_name(keywords):
     return "+".join(x.lower().replace("gt_", "") for x in keywords) or "base"
 
@@ -995,7 +1002,13 @@ def main(argv=None):
     ap.add_argument("--dxc", default=os.path.join(DEFAULT_PKG, "..", "shared", "dxc", "bin", "dxc"),
                     help="Microsoft's DXC (default: ../shared/dxc/bin/dxc beside this package)")
     ap.add_argument("--no-dxc", action="store_true", help="glslang only, for a quick look (the tests run both)")
+    ap.add_argument("--list-variants", action="store_true",
+                    help="print each pass's variants (pipeline, SubShader, pass, keywords; tab-separated), compile nothing")
     args = ap.parse_args(argv)
+    if args.list_variants:
+        for pipeline, sub, name, keywords in pass_variants(os.path.join(os.path.abspath(args.package), "Shaders", "GregoryTerrain.shader")):
+            print(f"{pipeline}\t{sub}\t{name}\t{' '.join(keywords) or '-'}")
+        return 0
 
     pkg = os.path.abspath(args.package)
     shader = os.path.join(pkg, "Shaders", "GregoryTerrain.shader")
