@@ -4,17 +4,17 @@
 // harness's zero-filled storage, so the picture is the flat floor's). Compiled with GT_LOD GT_NOISE
 // GT_HEIGHT_COLOR (Tools~/rig/lod_cache_ab.py says how), entry points:
 //   domain_cached        one 16-byte record a vertex (the single-range cache's: position bits, packed
-//                        normal and height weight) at the slot VertexCacheSlot gives, as
-//                        VertexSource.Cache.hlsl reads it
+//                        normal and height weight) at the record LevelVertexCacheRecord gives
+//                        (the tile's own slot rule), as VertexSource.Cache.hlsl reads it
 //   domain_cached_blend  two records a vertex: the first as above (the position with the octaves
 //                        every camera on the tile's key draws), the second the octave window's
 //                        heights and slopes (two octaves, as halves) faded in with the
 //                        continuous octave rule at the vertex's pixel scale, as a cache that keeps
 //                        the rule continuous would
 // The record is added to the floor's flat position, so the fetch stays in the program; the factors
-// are rounded up as the cache's integer factors are. Binding: t6 (rig binding 8), LOD_CACHE_LIMIT slots.
+// are rounded up as the cache's integer factors are. Binding: t6 (rig binding 8), S(LOD_CACHE_LIMIT) records a tile.
 #include "TerrainRig.hlsl"
-#include "../../Shaders/Cache/VertexCache.hlsl"
+#include "LevelVertexCache.hlsl"
 
 StructuredBuffer<uint4> _LevelCache GT_REGISTER(t6);
 
@@ -29,11 +29,14 @@ float3 FlatPosition(const OutputPatch<TileCorner, 4> corners, float2 tess)
     return lerp(low, high, tess.y);
 }
 
+// The single range's fixed S(L) a tile (the compact layout's largest block for every tile: its
+// records are spread no less than the compact layout's).
 uint LevelCacheSlot(TileFactors factors, uint drawPatch, float2 tess)
 {
-    float4 edge = ceil(float4(factors.edge[0], factors.edge[1], factors.edge[2], factors.edge[3]));
-    float2 inside = ceil(float2(factors.inside[0], factors.inside[1]));
-    return drawPatch * VertexCacheSlotsPerTile(LOD_CACHE_LIMIT) + VertexCacheSlot(tess, edge, inside, LOD_CACHE_LIMIT);
+    TileFactorSet f;
+    f.edge = ceil(float4(factors.edge[0], factors.edge[1], factors.edge[2], factors.edge[3]));
+    f.inside = ceil(float2(factors.inside[0], factors.inside[1]));
+    return LevelVertexCacheRecord(drawPatch * VertexCacheSlotsPerTile(LOD_CACHE_LIMIT), tess, f);
 }
 
 [domain("quad")]
