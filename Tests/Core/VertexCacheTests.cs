@@ -9,7 +9,7 @@ namespace GregoryTerrain.Tests
     [TestFixture]
     public class VertexCacheTests
     {
-        static TileFactorSet Set(float e0, float e1, float e2, float e3, float i0, float i1) =>
+        internal static TileFactorSet Set(float e0, float e1, float e2, float e3, float i0, float i1) =>
             new TileFactorSet(new Float4(e0, e1, e2, e3), new Float2(i0, i1));
 
         [Test]

@@ -104,6 +104,7 @@ namespace GregoryTerrain.Rig.Tests
             Cli("query-bench", "noise", Noise, NoiseValid), Cli("query-bench", "octaves", "int 0..16"), Cli("query-bench", "seconds", ">0..3600"),
             Cli("query-bench", "size", ">0..100000000"), Cli("query-bench", "threads", "int 1..1024"),
             Cli("lod-cpu-bench", "frames", "int 1..100000000"), Cli("lod-cpu-bench", "rounds", "int 1..1000"),
+            Cli("lod-cache-churn", "frames", "int 1..100000"),
             Cli("sculpt-bench", "dabs", "int 1..100000"), Cli("sculpt-bench", "patches", "int 2..1024"), Cli("sculpt-bench", "radius-patches", ">0..1024"),
             Cli("jitter", "center", "x 0..1; y 0..1", "0.5,0.5"), Cli("jitter", "factor", "int 1..64"), Cli("jitter", "noise", Noise, NoiseValid),
             Cli("jitter", "octaves", "int 0..16"), Cli("jitter", "pan", "-16384..16384"), Cli("jitter", "pixels", ">0..16384"),
@@ -234,7 +235,7 @@ namespace GregoryTerrain.Rig.Tests
 
         [Test]
         public void UnknownOptionIsRefused([Values("demo-grid", "eval", "error", "bench-plan", "lod-scene", "snow-scene", "pack", "estimate",
-            "fit-bench", "fit-reference", "query-bench", "lod-cpu-bench", "sculpt-bench", "jitter", "gt demo", "gt bench_patch_layout", "gt fit-bench",
+            "fit-bench", "fit-reference", "query-bench", "lod-cpu-bench", "lod-cache-churn", "sculpt-bench", "jitter", "gt demo", "gt bench_patch_layout", "gt fit-bench",
             "gt lod-carry", "gt snow-carry", "gt lod-device", "gt snow-device", "gt bench_patch_layout-device", "gt shaders", "gt shaderlab")] string command)
         {
             bool gt = command.StartsWith("gt ");
@@ -326,6 +327,7 @@ namespace GregoryTerrain.Rig.Tests
                 ["fit-reference"] = new[] { "--dem", _dem, "--patches", "2", "--crop", "33" },
                 ["query-bench"] = new[] { "--grid", _grid, "--seconds", "0.01", "--threads", "1" },
                 ["lod-cpu-bench"] = new[] { "--frames", "1", "--rounds", "1" },
+                ["lod-cache-churn"] = new[] { "--frames", "1" },
                 ["sculpt-bench"] = new[] { "--patches", "2", "--dabs", "1" },
                 ["jitter"] = new[] { "--widths", "0.5", "--tiles", "1", "--factor", "1" },
             };

@@ -82,31 +82,36 @@ def prepare(plan, rounds):
 KINDS = ["levels", "levels-cf", "levels-cf-vert", "levels-floor", "levels-floor-cf", "levels-floor-const", "floor"]
 
 
-def report(results):
+def parse_results(results):
+    """bench_run.sh's results.txt: {job id: {ms, cms, tris, hull, tese}} (those the job printed)."""
+    keys = {("time", "frame_ms_median"): "ms", ("time", "compute_ms_median"): "cms",
+            ("stat", "clipping_invocations"): "tris", ("stat", "tessellation_control_shader_patches"): "hull",
+            ("stat", "tessellation_evaluation_shader_invocations"): "tese"}
     cur, vals = None, {}
     for line in open(results):
         if line.startswith("== "):
             cur = line.split()[1]
             continue
         w = line.split()
-        if not cur or len(w) != 3:
-            continue
-        d = vals.setdefault(cur, {})
-        if w[0] == "time" and w[1] == "frame_ms_median":
-            d["ms"] = float(w[2])
-        elif w[0] == "time" and w[1] == "compute_ms_median":
-            d["cms"] = float(w[2])
-        elif w[0] == "stat" and w[1] == "clipping_invocations":
-            d["tris"] = int(w[2])
-        elif w[0] == "stat" and w[1] == "tessellation_control_shader_patches":
-            d["hull"] = int(w[2])
-        elif w[0] == "stat" and w[1] == "tessellation_evaluation_shader_invocations":
-            d["tese"] = int(w[2])
+        key = keys.get((w[0], w[1])) if cur and len(w) == 3 else None
+        if key:
+            vals.setdefault(cur, {})[key] = float(w[2]) if key in ("ms", "cms") else int(w[2])
+    return vals
+
+
+def views_of(vals):
+    """The ground views of parsed results (lod_t{metres}_{path}[-no_origin]), in run order; rounds (-rN) folded."""
     views = []
     for k in vals:
         m = re.match(r"^(lod_t\d+_[a-z]+(?:-no_origin)?)(-r\d+)?:(.*)$", k)
         if m and m.group(1) not in views:
             views.append(m.group(1))
+    return views
+
+
+def report(results):
+    vals = parse_results(results)
+    views = views_of(vals)
 
     def med(v, kind, key="ms"):
         xs = [d[key] for k, d in vals.items() if re.match(rf"^{re.escape(v)}(-r\d+)?:{kind}$", k) and key in d]

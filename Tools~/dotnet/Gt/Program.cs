@@ -177,6 +177,8 @@ namespace GregoryTerrain.Rig
                 NumericOption.Real("relief-m", 0, MaxMetres));   // relief-m 0: the grid stretched to --terrain-m
             Add("lod-cpu-bench", "the Horizon levels' CPU work a frame per camera: microseconds, bytes allocated, bytes sent (prints; asserts nothing)", LodCpuBenchCommand.Run,
                 "", NumericOption.Int("frames", 1, 100000000), NumericOption.Int("rounds", 1, 1000));
+            Add("lod-cache-churn", "what a clipmap-style vertex cache of the Horizon levels would evaluate again a frame along the bench's walking and flying paths (prints; asserts nothing)",
+                LodCacheChurnCommand.Run, "", NumericOption.Int("frames", 1, 100000));
             Add("snow-scene", "write a snow run's inputs: ridge grid, harness buffers, field/snow params per R (--out DIR [--cpu])", SnowSceneCommand.Run,
                 "cpu grid no-noise out",
                 NumericOption.Above("cap", 0, 1000), NumericOption.Above("dt", 0, 3600), Xyz("eye"), NumericOption.Real("factor", 0, TessellationSettings.HardwareMaxFactor),

@@ -1,0 +1,104 @@
+using System;
+using System.Collections.Generic;
+using GregoryTerrain.Tests;
+using NUnit.Framework;
+
+namespace GregoryTerrain.Rig.Tests
+{
+    /// <summary>
+    /// The Horizon levels' compact cache layout (<see cref="LevelVertexCache"/>): each drawn tile's
+    /// records lie in its own block, the block holds every record the draw reads for a vertex of the
+    /// tile and the kernel writes them, culled tiles take none, and bad input changes nothing.
+    /// </summary>
+    [TestFixture]
+    public class LevelVertexCacheTests
+    {
+        static TileFactorSet Set(float e0, float e1, float e2, float e3, float i0, float i1) => VertexCacheTests.Set(e0, e1, e2, e3, i0, i1);
+
+        /// <summary>Integer factors as the factor kernels leave them: a quarter culled, the rest in [1, 64], inside drawn >= 2 unless all are 1.</summary>
+        static TileFactorSet[] Frame(int patches, int seed)
+        {
+            var random = new Random(seed);
+            var f = new TileFactorSet[patches];
+            for (int p = 0; p < patches; p++)
+            {
+                if (random.Next(4) == 0) { f[p] = TileFactors.CulledTileFactors(); continue; }
+                float F() => random.Next(3) == 0 ? 1f + random.Next(64) : 1f + random.Next(12);
+                f[p] = VertexCache.IntegerFactors(Set(F(), F(), F(), F(), F(), F()));
+            }
+            f[1] = VertexCache.IntegerFactors(Set(1, 1, 1, 1, 1, 1));
+            f[2] = VertexCache.IntegerFactors(Set(64, 64, 64, 64, 64, 64));
+            return f;
+        }
+
+        [Test]
+        public void EveryVertexTheDrawReadsLiesInItsTilesBlockAndTheKernelWritesIt()
+        {
+            TileFactorSet[] f = Frame(3 * 64, 7);
+            var first = new long[f.Length];
+            long total = LevelVertexCache.TileFirstRecords(f, first);
+            var owner = new int[total];
+            Array.Fill(owner, -1);
+            for (int p = 0; p < f.Length; p++)
+            {
+                long end = first[p] + LevelVertexCache.TileSlots(f[p]);
+                var written = new HashSet<long>();
+                foreach (var (_, slot) in VertexCache.TilePoints(f[p], LevelVertexCache.TileFactorLimit(f[p])))
+                {
+                    long r = first[p] + slot;
+                    Assert.That(r, Is.GreaterThanOrEqualTo(first[p]).And.LessThan(end), $"patch {p} ({f[p]}): slot {slot} outside its block");
+                    Assert.That(owner[r], Is.EqualTo(-1).Or.EqualTo(p), $"record {r} written by patches {owner[r]} and {p}");
+                    owner[r] = p;
+                    written.Add(r);
+                }
+                foreach (var (tess, _) in VertexCache.TilePoints(f[p], LevelVertexCache.TileFactorLimit(f[p])))
+                    Assert.That(written, Does.Contain(LevelVertexCache.Record(first[p], tess, f[p])), $"patch {p} ({f[p]}): the draw reads tess {tess} from a record its kernel never wrote");
+            }
+        }
+
+        [Test]
+        public void CulledTilesTakeNoRecordsAndTheTotalIsTheBlocksSum()
+        {
+            TileFactorSet[] f = Frame(100, 11);
+            var first = new long[f.Length];
+            long total = LevelVertexCache.TileFirstRecords(f, first);
+            long sum = 0;
+            for (int p = 0; p < f.Length; p++)
+            {
+                Assert.That(first[p], Is.EqualTo(sum), $"patch {p} starts after the blocks before it");
+                int slots = LevelVertexCache.TileSlots(f[p]);
+                if (f[p].IsCulled) Assert.That(slots, Is.EqualTo(0), $"patch {p} is culled");
+                else Assert.That(slots, Is.EqualTo(VertexCache.SlotsPerTile(LevelVertexCache.TileFactorLimit(f[p]))));
+                sum += slots;
+            }
+            Assert.That(total, Is.EqualTo(sum));
+            Assert.That(LevelVertexCache.TileSlots(f[1]), Is.EqualTo(VertexCache.SlotsPerTile(1)), "all six factors 1: L = 1");
+            Assert.That(LevelVertexCache.TileSlots(f[2]), Is.EqualTo(VertexCache.SlotsPerTile(64)), "all 64: the single range's S(64)");
+        }
+
+        [Test]
+        public void ATilesLimitIsItsLargestFactor()
+        {
+            Assert.That(LevelVertexCache.TileFactorLimit(Set(3, 9, 2, 5, 4, 7)), Is.EqualTo(9));
+            Assert.That(LevelVertexCache.TileFactorLimit(Set(3, 1, 2, 5, 4, 17)), Is.EqualTo(17), "an inside factor");
+            Assert.That(LevelVertexCache.TileFactorLimit(TileFactors.CulledTileFactors()), Is.EqualTo(0));
+        }
+
+        [Test]
+        public void BadInputNamesTheFieldAndWritesNothing()
+        {
+            TileFactorSet[] f = Frame(8, 3);
+            var first = new long[7];
+            Array.Fill(first, -5L);
+            var e = Assert.Throws<ArgumentException>(() => LevelVertexCache.TileFirstRecords(f, first));
+            Assert.That(e.ParamName, Is.EqualTo("firstRecords"));
+            Assert.That(e.Message, Does.Contain("7").And.Contain("8"));
+            Assert.That(first, Is.All.EqualTo(-5L), "nothing written");
+            e = Assert.Throws<ArgumentException>(() => LevelVertexCache.TileSlots(Set(2.5f, 3, 3, 3, 3, 3)));
+            Assert.That(e.ParamName, Is.EqualTo("integerFactors"));
+            Assert.That(e.Message, Does.Contain("2.5"));
+            Assert.Throws<ArgumentException>(() => LevelVertexCache.TileSlots(Set(65, 3, 3, 3, 3, 3)));
+            Assert.Throws<ArgumentException>(() => LevelVertexCache.TileSlots(Set(float.NaN, 3, 3, 3, 3, 3)));
+        }
+    }
+}

@@ -1,0 +1,64 @@
+using System;
+
+namespace GregoryTerrain.Rig
+{
+    /// <summary>
+    /// The Horizon levels' vertex cache layout (Tools~/docs/design-notes.md, "Levels of detail through a
+    /// compute cache"), rig-side until the package has room for it (PackageSizeTests: 0.8 KB left), with
+    /// its HLSL twin Tools~/rig/LevelVertexCache.hlsl: every drawn tile of every level is evaluated again each frame the camera or the
+    /// levels move, so records need not persist and take a compact layout made again each frame. A
+    /// draw patch (<see cref="LodTiles"/>: tile <c>p mod M^2</c> of level <c>p / M^2</c>) at integer
+    /// factors f takes <see cref="VertexCache.SlotsPerTile"/> of its largest factor (its own L: the
+    /// single range's slot rule, <see cref="VertexCache.Slot"/>, unchanged), a culled one none, and
+    /// its records start at the exclusive prefix sum of the slots before it.
+    /// </summary>
+    internal static class LevelVertexCache
+    {
+        /// <summary>The largest of a tile's six integer factors: its slot rule's L. 0 when culled.</summary>
+        public static int TileFactorLimit(TileFactorSet integerFactors)
+        {
+            if (integerFactors.IsCulled) return 0;
+            Float4 e = integerFactors.edge;
+            Float2 i = integerFactors.inside;
+            return Math.Max(Math.Max(Math.Max(Factor(e.x, integerFactors), Factor(e.y, integerFactors)), Math.Max(Factor(e.z, integerFactors), Factor(e.w, integerFactors))),
+                            Math.Max(Factor(i.x, integerFactors), Factor(i.y, integerFactors)));
+        }
+
+        /// <summary>One integer factor of <paramref name="set"/>; throws naming the set unless it is an integer in [1, 64].</summary>
+        static int Factor(float f, TileFactorSet set)
+        {
+            if (!(f >= 1f && f <= VertexCache.MaxFactor) || f != MathF.Floor(f))
+                throw new ArgumentException(FormattableString.Invariant($"integerFactors ({set}) must be integers in [1, {VertexCache.MaxFactor}] (VertexCache.IntegerFactors) or culled"), "integerFactors");
+            return (int)f;
+        }
+
+        /// <summary>The slots a draw patch at <paramref name="integerFactors"/> takes: S(its own L), or 0 when culled.</summary>
+        public static int TileSlots(TileFactorSet integerFactors)
+        {
+            int limit = TileFactorLimit(integerFactors);
+            return limit == 0 ? 0 : VertexCache.SlotsPerTile(limit);
+        }
+
+        /// <summary>
+        /// Each draw patch's first record (the exclusive prefix sum of <see cref="TileSlots"/>) into
+        /// <paramref name="firstRecords"/>; returns the records the frame needs. Throws when the spans'
+        /// lengths differ; writes nothing then.
+        /// </summary>
+        public static long TileFirstRecords(ReadOnlySpan<TileFactorSet> integerFactors, Span<long> firstRecords)
+        {
+            if (firstRecords.Length != integerFactors.Length)
+                throw new ArgumentException(FormattableString.Invariant($"firstRecords.Length ({firstRecords.Length}) must equal integerFactors.Length ({integerFactors.Length}), one a draw patch"), nameof(firstRecords));
+            long next = 0;
+            for (int p = 0; p < integerFactors.Length; p++)
+            {
+                firstRecords[p] = next;
+                next += TileSlots(integerFactors[p]);
+            }
+            return next;
+        }
+
+        /// <summary>The record of the vertex the tessellator puts at <paramref name="tess"/> in a draw patch whose records start at <paramref name="firstRecord"/>.</summary>
+        public static long Record(long firstRecord, Float2 tess, TileFactorSet integerFactors) =>
+            firstRecord + VertexCache.Slot(tess, integerFactors, TileFactorLimit(integerFactors));
+    }
+}
