@@ -52,14 +52,21 @@ float2 GradientNoiseStreamOffset(uint stream)
 float GradientNoiseFade(float t) { return t * t * t * (t * (t * 6.0 - 15.0) + 10.0); }
 float GradientNoiseFadeDerivative(float t) { float k = t * (t - 1.0); return 30.0 * k * k; }
 
+// Each corner's linear ramp g . (f - corner) at the fraction f of the cell.
+void GradientNoiseCornerRamps(float2 g00, float2 g10, float2 g01, float2 g11, float2 f, out float n00, out float n10, out float n01, out float n11)
+{
+    float2 h = f - 1.0;
+    n00 = g00.x * f.x + g00.y * f.y;
+    n10 = g10.x * h.x + g10.y * f.y;
+    n01 = g01.x * f.x + g01.y * h.y;
+    n11 = g11.x * h.x + g11.y * h.y;
+}
+
 // GradientNoiseCell once the cell's four corner gradients are known.
 float GradientNoiseCorners(float2 g00, float2 g10, float2 g01, float2 g11, float2 f, out float2 gradient)
 {
-    float2 h = f - 1.0;
-    float n00 = g00.x * f.x + g00.y * f.y;
-    float n10 = g10.x * h.x + g10.y * f.y;
-    float n01 = g01.x * f.x + g01.y * h.y;
-    float n11 = g11.x * h.x + g11.y * h.y;
+    float n00, n10, n01, n11;
+    GradientNoiseCornerRamps(g00, g10, g01, g11, f, n00, n10, n01, n11);
     float u = GradientNoiseFade(f.x), v = GradientNoiseFade(f.y);
     float du = GradientNoiseFadeDerivative(f.x), dv = GradientNoiseFadeDerivative(f.y);
     float k1 = n10 - n00, k2 = n01 - n00, k3 = (n00 - n10) - (n01 - n11);
@@ -145,11 +152,8 @@ float GradientNoiseCellDifference(int2 cell, float2 f, float2 step, out float2 g
 {
     float2 g00, g10, g01, g11;
     GradientNoiseCornerGradients(cell, g00, g10, g01, g11);
-    float2 h = f - 1.0;
-    float n00 = g00.x * f.x + g00.y * f.y;
-    float n10 = g10.x * h.x + g10.y * f.y;
-    float n01 = g01.x * f.x + g01.y * h.y;
-    float n11 = g11.x * h.x + g11.y * h.y;
+    float n00, n10, n01, n11;
+    GradientNoiseCornerRamps(g00, g10, g01, g11, f, n00, n10, n01, n11);
     float d00 = g00.x * step.x + g00.y * step.y, d10 = g10.x * step.x + g10.y * step.y;
     float d01 = g01.x * step.x + g01.y * step.y, d11 = g11.x * step.x + g11.y * step.y;
     float k1 = n10 - n00, k2 = n01 - n00, k3 = (n00 - n10) - (n01 - n11);

@@ -10,23 +10,19 @@
 //  - pair ratios t = a / (a + b): t - t0 = (da b0 - a0 db) / ((a + b)(a0 + b0)), or plainly t - t0
 //    where a denominator is 0 (a pair's own corner, where its weight is 0).
 
-#include "GregoryPatch.hlsl"
+#include "GregoryBasis.hlsl"
 
 void GregoryBernsteinDifference(float t0, float dt, out float b[4], out float db[4])
 {
+    GregoryBasisBernstein(t0, b, db);
     float s = 1.0 - t0;
-    b[0] = s * s * s;
-    b[1] = 3.0 * t0 * s * s;
-    b[2] = 3.0 * t0 * t0 * s;
-    b[3] = t0 * t0 * t0;
-    db[0] = dt * (-3.0 * s * s + dt * (3.0 * s + dt * -1.0));
-    db[1] = dt * (3.0 * s * (s - 2.0 * t0) + dt * (3.0 * (t0 - 2.0 * s) + dt * 3.0));
-    db[2] = dt * (3.0 * t0 * (2.0 * s - t0) + dt * (3.0 * (s - 2.0 * t0) + dt * -3.0));
-    db[3] = dt * (3.0 * t0 * t0 + dt * (3.0 * t0 + dt * 1.0));
+    // db holds B' at t0; the inner terms are B''/2 and B'''/6 at t0.
+    db[0] = dt * (db[0] + dt * (3.0 * s + dt * -1.0));
+    db[1] = dt * (db[1] + dt * (3.0 * (t0 - 2.0 * s) + dt * 3.0));
+    db[2] = dt * (db[2] + dt * (3.0 * (s - 2.0 * t0) + dt * -3.0));
+    db[3] = dt * (db[3] + dt * (3.0 * t0 + dt * 1.0));
 }
 
-// Pair (i, j): d(W t) P_ij0 + d(W s) P_ij1, a0, b0 the distances from the pair's corner at the
-// reference, da, db their steps; d(W t) = dW t + W0 dt, d(W s) = dW s - W0 dt.
 float3 GregoryDifferencePair(float3 cp[20], uint i, uint j, float a0, float b0, float da, float db,
     float bu[4], float dbu[4], float bv[4], float dbv[4])
 {

@@ -13,12 +13,18 @@
 #define GT_CBUFFER_END };
 #define GT_REGISTER(r) : register(r)
 
-float3 GT_ObjectToWorld(float3 positionOS) { return positionOS; }
+// The camera: none here; LodCameraComputeAdapter.hlsl defines GT_COMPUTE_CAMERA and its own three
+// functions before it includes this file for the rest.
+#ifndef GT_COMPUTE_CAMERA
 float3 GT_ObjectToWorldNormal(float3 normalOS) { return normalOS; }
-float4 GT_WorldToClip(float3 positionWS) { return float4(positionWS, 1.0); }
 float4 GT_ObjectToClip(float3 positionOS) { return float4(positionOS, 1.0); }
-float3 GT_CameraPositionWS() { return float3(0.0, 0.0, 0.0); }
 float2 GT_ScreenSize() { return float2(1.0, 1.0); }
+#endif
+
+// World space is object space in a kernel: the terrain's transform belongs to the draw.
+float3 GT_ObjectToWorld(float3 positionOS) { return positionOS; }
+float4 GT_WorldToClip(float3 positionWS) { return GT_ObjectToClip(positionWS); }
+float3 GT_CameraPositionWS() { return float3(0.0, 0.0, 0.0); }
 float4 GT_TessObjectToClip(float3 positionOS) { return GT_ObjectToClip(positionOS); }
 float2 GT_TessScreenSize() { return GT_ScreenSize(); }
 void GT_MainLight(out float3 directionWS, out float3 color)

@@ -5,35 +5,24 @@
 //   _GT_LodScreenSize     (width, height, 1 / width, 1 / height) of that camera's target, in pixels
 //   _GtWorldToObject      the terrain's world-to-object (the draw's own, URPAdapter.hlsl): the cache
 //                         stores world normals, so the domain stage skips that transform
-// The rest of the adapter interface (StandaloneAdapter.hlsl lists it) is what the kernels never
-// call: lighting, shadows and world space belong to the draw, which reads the cached object-space
-// vertices. Material constants are a plain cbuffer (Unity sets its members by name).
+// The rest of the adapter interface (StandaloneAdapter.hlsl lists it) is ComputeAdapter.hlsl's, what
+// the kernels never call: lighting, shadows and world space belong to the draw, which reads the
+// cached object-space vertices. Material constants are a plain cbuffer (Unity sets its members by name).
 #ifndef GT_LOD_CAMERA_COMPUTE_ADAPTER_INCLUDED
 #define GT_LOD_CAMERA_COMPUTE_ADAPTER_INCLUDED
 
-#define GT_ADAPTER_COMPUTE 1
-#define GT_CBUFFER_START(name) cbuffer name : register(b0) {
-#define GT_CBUFFER_END };
-#define GT_REGISTER(r) : register(r)
+#define GT_COMPUTE_CAMERA 1
 
 float4x4 _GT_LodObjectToClip;
 float4 _GT_LodScreenSize;
 float4x4 _GtWorldToObject;
 
-float3 GT_ObjectToWorld(float3 positionOS) { return positionOS; }
 // Normals go with the inverse transpose: n^T W (W = world-to-object), as the graphics adapters do.
 float3 GT_ObjectToWorldNormal(float3 normalOS) { return normalize(mul(normalOS, (float3x3)_GtWorldToObject)); }
 float4x4 GT_ObjectToClipMatrix() { return _GT_LodObjectToClip; }
 float4 GT_ObjectToClip(float3 positionOS) { return mul(GT_ObjectToClipMatrix(), float4(positionOS, 1.0)); }
-float4 GT_WorldToClip(float3 positionWS) { return GT_ObjectToClip(positionWS); }
-float3 GT_CameraPositionWS() { return float3(0.0, 0.0, 0.0); }
 float2 GT_ScreenSize() { return _GT_LodScreenSize.xy; }
-float4 GT_TessObjectToClip(float3 positionOS) { return GT_ObjectToClip(positionOS); }
-float2 GT_TessScreenSize() { return GT_ScreenSize(); }
-void GT_MainLight(out float3 directionWS, out float3 color)
-{
-    directionWS = float3(0.0, 1.0, 0.0);
-    color = float3(1.0, 1.0, 1.0);
-}
+
+#include "ComputeAdapter.hlsl"
 
 #endif // GT_LOD_CAMERA_COMPUTE_ADAPTER_INCLUDED

@@ -77,11 +77,37 @@ def prepare(plan, rounds):
     print(f"lod_cache_ab: {len(out)} jobs, {len(order)} views and {len(single)} single-range jobs x {rounds} rounds")
 
 
+def parse_results(results):
+    """bench_run.sh's results.txt: {job id: {ms, cms, tris, hull, tese}} (those the job printed)."""
+    keys = {("time", "frame_ms_median"): "ms", ("time", "compute_ms_median"): "cms",
+            ("stat", "clipping_invocations"): "tris", ("stat", "tessellation_control_shader_patches"): "hull",
+            ("stat", "tessellation_evaluation_shader_invocations"): "tese"}
+    cur, vals = None, {}
+    for line in open(results):
+        if line.startswith("== "):
+            cur = line.split()[1]
+            continue
+        w = line.split()
+        key = keys.get((w[0], w[1])) if cur and len(w) == 3 else None
+        if key:
+            vals.setdefault(cur, {})[key] = float(w[2]) if key in ("ms", "cms") else int(w[2])
+    return vals
+
+
+def views_of(vals):
+    """The ground views of parsed results (lod_t{metres}_{path}[-no_origin]), in run order; rounds (-rN) folded."""
+    views = []
+    for k in vals:
+        m = re.match(r"^(lod_t\d+_[a-z]+(?:-no_origin)?)(-r\d+)?:(.*)$", k)
+        if m and m.group(1) not in views:
+            views.append(m.group(1))
+    return views
+
+
 KINDS = ["levels", "levels-floor", "levels-cached", "levels-cached-blend", "floor"]
 
 
 def report(results):
-    from lod_factors_ab import parse_results, views_of   # beside this script
     vals = parse_results(results)
 
     def med(pattern, key="ms"):

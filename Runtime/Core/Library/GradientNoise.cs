@@ -102,12 +102,7 @@ namespace GregoryTerrain
         /// <summary><see cref="Cell"/> once the cell's four corner gradients are known.</summary>
         static float EvaluateCorners(Float2 g00, Float2 g10, Float2 g01, Float2 g11, float fx, float fy, out Float2 gradient)
         {
-            float gx = fx - 1f, gy = fy - 1f;
-            // Each corner's linear ramp g . (x - corner).
-            float n00 = g00.x * fx + g00.y * fy;
-            float n10 = g10.x * gx + g10.y * fy;
-            float n01 = g01.x * fx + g01.y * gy;
-            float n11 = g11.x * gx + g11.y * gy;
+            CornerRamps(g00, g10, g01, g11, new Float2(fx, fy), out float n00, out float n10, out float n01, out float n11);
             float u = Fade(fx), v = Fade(fy);
             float du = FadeDerivative(fx), dv = FadeDerivative(fy);
             // Bilinear blend written as n00 + u k1 + v k2 + u v k3 so the gradient is its plain derivative.
@@ -119,6 +114,16 @@ namespace GregoryTerrain
                      + dv * (k2 + u * k3);
             gradient = new Float2(Scale * dx, Scale * dy);
             return Scale * n;
+        }
+
+        /// <summary>Each corner's linear ramp <c>g . (f - corner)</c> at the fraction f of the cell.</summary>
+        static void CornerRamps(Float2 g00, Float2 g10, Float2 g01, Float2 g11, Float2 f, out float n00, out float n10, out float n01, out float n11)
+        {
+            float gx = f.x - 1f, gy = f.y - 1f;
+            n00 = g00.x * f.x + g00.y * f.y;
+            n10 = g10.x * gx + g10.y * f.y;
+            n01 = g01.x * f.x + g01.y * gy;
+            n11 = g11.x * gx + g11.y * gy;
         }
 
         /// <summary>
@@ -159,11 +164,7 @@ namespace GregoryTerrain
                                            TerrainKeywords keywords = TerrainKeywords.None)
         {
             CornerGradients(ix, iy, keywords, out Float2 g00, out Float2 g10, out Float2 g01, out Float2 g11);
-            float gx = fx - 1f, gy = fy - 1f;
-            float n00 = g00.x * fx + g00.y * fy;
-            float n10 = g10.x * gx + g10.y * fy;
-            float n01 = g01.x * fx + g01.y * gy;
-            float n11 = g11.x * gx + g11.y * gy;
+            CornerRamps(g00, g10, g01, g11, new Float2(fx, fy), out float n00, out float n10, out float n01, out float n11);
             float d00 = g00.x * sx + g00.y * sy, d10 = g10.x * sx + g10.y * sy;
             float d01 = g01.x * sx + g01.y * sy, d11 = g11.x * sx + g11.y * sy;
             float k1 = n10 - n00, k2 = n01 - n00, k3 = (n00 - n10) - (n01 - n11);

@@ -77,34 +77,29 @@ namespace GregoryTerrain
 
         /// <summary>
         /// Cubic Bernstein values at t0 (<paramref name="b"/>) and their exact differences
-        /// <c>B_i(t0 + dt) - B_i(t0)</c> (<paramref name="db"/>) as Taylor polynomials in dt.
+        /// <c>B_i(t0 + dt) - B_i(t0)</c> (<paramref name="db"/>) as Taylor polynomials in dt, built on
+        /// <see cref="GregoryBasis.Bernstein(float, Span{float}, Span{float})"/> (values and B').
         /// </summary>
         public static void BernsteinDifference(float t0, float dt, Span<float> b, Span<float> db)
         {
+            GregoryBasis.Bernstein(t0, b, db);
             float s = 1f - t0;
-            b[0] = s * s * s;
-            b[1] = 3f * t0 * s * s;
-            b[2] = 3f * t0 * t0 * s;
-            b[3] = t0 * t0 * t0;
-            // B' / 1, B'' / 2, B''' / 6 at t0
-            db[0] = dt * (-3f * s * s + dt * (3f * s + dt * -1f));
-            db[1] = dt * (3f * s * (s - 2f * t0) + dt * (3f * (t0 - 2f * s) + dt * 3f));
-            db[2] = dt * (3f * t0 * (2f * s - t0) + dt * (3f * (s - 2f * t0) + dt * -3f));
-            db[3] = dt * (3f * t0 * t0 + dt * (3f * t0 + dt * 1f));
+            // db holds B' at t0; the inner terms are B''/2 and B'''/6 at t0.
+            db[0] = dt * (db[0] + dt * (3f * s + dt * -1f));
+            db[1] = dt * (db[1] + dt * (3f * (t0 - 2f * s) + dt * 3f));
+            db[2] = dt * (db[2] + dt * (3f * (s - 2f * t0) + dt * -3f));
+            db[3] = dt * (db[3] + dt * (3f * t0 + dt * 1f));
         }
 
         /// <summary>The double reference of <see cref="BernsteinDifference(float, float, Span{float}, Span{float})"/>.</summary>
         public static void BernsteinDifference(double t0, double dt, Span<double> b, Span<double> db)
         {
+            GregoryBasis.Bernstein(t0, b, db);
             double s = 1.0 - t0;
-            b[0] = s * s * s;
-            b[1] = 3.0 * t0 * s * s;
-            b[2] = 3.0 * t0 * t0 * s;
-            b[3] = t0 * t0 * t0;
-            db[0] = dt * (-3.0 * s * s + dt * (3.0 * s + dt * -1.0));
-            db[1] = dt * (3.0 * s * (s - 2.0 * t0) + dt * (3.0 * (t0 - 2.0 * s) + dt * 3.0));
-            db[2] = dt * (3.0 * t0 * (2.0 * s - t0) + dt * (3.0 * (s - 2.0 * t0) + dt * -3.0));
-            db[3] = dt * (3.0 * t0 * t0 + dt * (3.0 * t0 + dt * 1.0));
+            db[0] = dt * (db[0] + dt * (3.0 * s + dt * -1.0));
+            db[1] = dt * (db[1] + dt * (3.0 * (t0 - 2.0 * s) + dt * 3.0));
+            db[2] = dt * (db[2] + dt * (3.0 * (s - 2.0 * t0) + dt * -3.0));
+            db[3] = dt * (db[3] + dt * (3.0 * t0 + dt * 1.0));
         }
 
         /// <summary>
