@@ -1,7 +1,7 @@
 // Built-in render pipeline adapter (interface: see StandaloneAdapter.hlsl).
 // Unity API names used: HLSLSupport.cginc (CBUFFER_START/CBUFFER_END), UnityCG.cginc
-// (UnityWorldToClipPos, UnityApplyLinearShadowBias, _WorldSpaceCameraPos, _ScreenParams,
-// _WorldSpaceLightPos0, unity_WorldToShadow), UnityLightingCommon.cginc (_LightColor0) and
+// (UnityWorldToClipPos, UnityWorldSpaceLightDir, UnityApplyLinearShadowBias, _WorldSpaceCameraPos,
+// _ScreenParams, _WorldSpaceLightPos0, unity_LightShadowBias, unity_WorldToShadow), UnityLightingCommon.cginc (_LightColor0) and
 // AutoLight.cginc (unitySampleShadow, the SHADOWS_SCREEN keyword). Use it in a pass with
 // Tags { "LightMode" = "ForwardBase" } so Unity fills the main directional light.
 // Compiled against the real 2022.3 CGIncludes off Unity by the rig (Tools~/rig/shaderlab.py).
@@ -9,8 +9,7 @@
 // Object matrix: Graphics.RenderPrimitives gives the shader no object matrix (unity_ObjectToWorld
 // is not the renderer's Transform, so UnityObjectToClipPos and UnityObjectToWorldNormal cannot be
 // used), so GregoryTerrainRenderer sets _GtObjectToWorld / _GtWorldToObject.
-// Shadows: directional and spot lights (depth). Point-light shadows (SHADOWS_CUBE, distance
-// output) are not supported: the pass has no multi_compile_shadowcaster.
+// Shadows: no multi_compile_shadowcaster, so point lights' cube maps get the depth-biased variant.
 #ifndef GT_BUILTIN_ADAPTER_INCLUDED
 #define GT_BUILTIN_ADAPTER_INCLUDED
 
@@ -51,13 +50,16 @@ float4 GT_ObjectToClip(float3 positionOS)
 
 #if defined(GT_PASS_SHADOWCASTER)
 // Built-in's normal offset (UnityClipSpaceShadowCasterPos, in world space: it reads unity_ObjectToWorld),
-// then the depth bias. saturate: a cosine rounded past 1 gives no NaN.
+// then the depth bias. Only where z != 0, as Unity: the camera depth pass may have no light (NaN).
 #define GT_SHADOW_CASTER_NORMAL_BIAS 1
 float4 GT_ObjectToShadowClip(float3 positionOS, float3 normalWS)
 {
     float3 positionWS = GT_ObjectToWorld(positionOS);
-    float c = dot(normalWS, normalize(UnityWorldSpaceLightDir(positionWS)));
-    positionWS -= normalWS * (unity_LightShadowBias.z * sqrt(saturate(1.0 - c * c)));
+    if (unity_LightShadowBias.z != 0.0)
+    {
+        float c = dot(normalWS, normalize(UnityWorldSpaceLightDir(positionWS)));
+        positionWS -= normalWS * (unity_LightShadowBias.z * sqrt(saturate(1.0 - c * c)));
+    }
     return UnityApplyLinearShadowBias(UnityWorldToClipPos(positionWS));
 }
 #endif

@@ -38,7 +38,7 @@
 //   float4 GT_EditorSelectionColor()               GT_PASS_SCENE_SELECTION / GT_PASS_SCENE_PICKING
 //   float4 GT_ObjectToShadowClip(float3 positionOS, float3 normalWS)
 //                             with GT_SHADOW_CASTER_NORMAL_BIAS: the shadow caster's vertex
-//                             position with the pipeline's normal bias (URP)
+//                             position with the pipeline's normal bias (URP, Built-in)
 //
 // Here the camera comes from the cbuffer RigCamera at b1 (Tools~/rig/README.md, "Descriptor bindings").
 #ifndef GT_STANDALONE_ADAPTER_INCLUDED

@@ -379,7 +379,7 @@ TerrainVaryings TerrainVaryingsOf(float3 positionOS, float3 normalAndHeightWeigh
 {
     TerrainVaryings o;
 #if defined(GT_SHADOW_CASTER_NORMAL_BIAS)
-    // The adapter's shadow caster also offsets along the normal (URP's normal bias).
+    // The adapter's shadow caster also offsets along the normal (the pipeline's normal bias).
     o.positionCS = GT_ObjectToShadowClip(positionOS, LambertDecodeNormal(normalAndHeightWeight.xy));
 #else
     o.positionCS = GT_ObjectToClip(positionOS);

@@ -487,8 +487,9 @@ def builtin_caster_values(shadow, flip_bias=False):
 
 def builtin_camera_depth_values():
     """The ShadowCaster pass from the camera into _CameraDepthTexture: the camera's matrices (builtin_globals), no
-    light, so no shadow bias (x 0 adds nothing, y 0 leaves z unclamped: UnityCG.cginc:946, 957)."""
-    return {"unity_LightShadowBias": [0.0, 0.0, 0.0, 0.0]}
+    light, so no shadow bias (x 0 adds nothing, y 0 leaves z unclamped: UnityCG.cginc:946, 957) and no light
+    position (a caster that normalizes it regardless draws NaN: UnityCG.cginc:908 tests z first)."""
+    return {"unity_LightShadowBias": [0.0, 0.0, 0.0, 0.0], "_WorldSpaceLightPos0": [0.0, 0.0, 0.0, 0.0]}
 
 
 def builtin_collect_values(shadow):
