@@ -16,7 +16,7 @@ using NUnit.Framework;
 
 namespace GregoryTerrain.Rig.Tests
 {
-    [TestFixture]
+    [TestFixture, Parallelizable(ParallelScope.Self)]
     public class PipelinePassDepthNormalsTests
     {
         static readonly string[] Scene = { "--only", "depth_normals", "--only", "depth_normals_snorm", "--only", "depth_normals_layers",

@@ -11,7 +11,7 @@ using NUnit.Framework;
 
 namespace GregoryTerrain.Rig.Tests
 {
-    [TestFixture]
+    [TestFixture, Parallelizable(ParallelScope.Self)]
     public class PipelinePassFogTests
     {
         static readonly string[] Scene = { "--only", "lit", "--only", "lit_fog_linear", "--only", "lit_fog_exp", "--only", "lit_fog_exp2",

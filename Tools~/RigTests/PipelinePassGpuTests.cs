@@ -17,7 +17,7 @@ using NUnit.Framework;
 
 namespace GregoryTerrain.Rig.Tests
 {
-    [TestFixture]
+    [TestFixture, Parallelizable(ParallelScope.Self)]
     public partial class PipelinePassGpuTests
     {
         /// <summary>The scene's arguments (pipeline_pass.py's defaults, written out so a reader sees them).</summary>

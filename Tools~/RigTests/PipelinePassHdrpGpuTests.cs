@@ -15,7 +15,7 @@ using NUnit.Framework;
 
 namespace GregoryTerrain.Rig.Tests
 {
-    [TestFixture]
+    [TestFixture, Parallelizable(ParallelScope.Self)]
     public class PipelinePassHdrpGpuTests
     {
         /// <summary>The scene's arguments (pipeline_pass_hdrp.py's defaults, written out so a reader sees them).</summary>

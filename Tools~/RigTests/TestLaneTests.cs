@@ -15,21 +15,29 @@ namespace GregoryTerrain.Rig.Tests
         const string ParallelMark = "Parallelizable(ParallelScope.Self";   // Self, or Self | Children
         // Folders under .build that fixtures only read (built by gt setup).
         static readonly string[] ToolFolders = { "gt-cli", "harness", "computerig" };
+        // Mesa's disk cache, which every process of the run shares (Mesa writes its entries atomically).
+        const string MesaCache = "mesa-shader-cache";
 
         static Dictionary<string, string> Sources() =>
             Directory.GetFiles(PackageRoot.Combine("Tools~", "RigTests"), "*.cs", SearchOption.AllDirectories)
                 .ToDictionary(f => Path.GetFileName(f), File.ReadAllText);
 
-        /// <summary>The folders under .build a source names: ReadbackRun.PrepareWork("NAME") and ".build", "NAME".</summary>
+        /// <summary>The folders under .build a source names: ReadbackRun.PrepareWork("NAME"), ".build", "NAME" and
+        /// PipelinePassRun.Draw("SCRIPT", "NAME").</summary>
         static IEnumerable<string> BuildFolders(string source) =>
-            Regex.Matches(source, @"PrepareWork\(""([^""]+)""|""\.build"",\s*""([^""]+)""")
-                .Select(m => m.Groups[1].Success ? m.Groups[1].Value : m.Groups[2].Value);
+            Regex.Matches(source, @"PrepareWork\(""([^""]+)""|""\.build"",\s*""([^""]+)""|PipelinePassRun\.Draw\(""[^""]+"",\s*""([^""]+)""")
+                .Select(m => m.Groups.Cast<Group>().Skip(1).First(g => g.Success).Value);
 
         [Test]
         public void TheParallelLaneHoldsTheSlowFixtures()
         {
             var parallel = Sources().Where(s => s.Value.Contains(ParallelMark)).Select(s => s.Key).ToList();
             Assert.That(parallel, Does.Contain("ShaderLibraryTests.cs").And.Contain("BenchSmokeTests.cs").And.Contain("GpuPropertyTests.cs"));
+            // Each pipeline-pass fixture's setup is a script drawing on lavapipe (~20 CPU s): alone, they left a
+            // core idle for the last ~90 s of the run.
+            foreach (string f in new[] { "PipelinePassGpuTests.cs", "PipelinePassDepthNormalsTests.cs", "PipelinePassFogTests.cs",
+                                         "PipelinePassHdrpGpuTests.cs", "PipelinePassHdrpShadowTests.cs" })
+                Assert.That(parallel, Does.Contain(f), "a pipeline-pass fixture off the parallel lane");
         }
 
         /// <summary>
@@ -74,7 +82,7 @@ namespace GregoryTerrain.Rig.Tests
             var sources = Sources();
             var shared = new List<string>();
             foreach (var (file, source) in sources.Where(s => s.Value.Contains(ParallelMark)).Select(s => (s.Key, s.Value)))
-                foreach (string folder in BuildFolders(source).Distinct().Where(f => !ToolFolders.Contains(f)))
+                foreach (string folder in BuildFolders(source).Distinct().Where(f => !ToolFolders.Contains(f) && f != MesaCache))
                 {
                     var others = sources.Where(s => s.Key != file && BuildFolders(s.Value).Contains(folder)).Select(s => s.Key).ToList();
                     if (others.Count > 0) shared.Add($"{file}: .build/{folder} is named by {string.Join(", ", others)} too");

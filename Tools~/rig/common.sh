@@ -12,6 +12,14 @@ export DOTNET_CLI_TELEMETRY_OPTOUT=1 DOTNET_NOLOGO=1 DOTNET_SKIP_FIRST_TIME_EXPE
 # of this build's own keeps a checkout's compiles apart from other checkouts' (~/.cache held 4,700).
 export MESA_SHADER_CACHE_DIR="${MESA_SHADER_CACHE_DIR:-$BUILD_DIR/mesa-shader-cache}"
 
+# python3 on PATH may be a version manager's shim (pyenv's: a bash script and two more processes,
+# ~0.12 CPU s a call, three times python's own start-up); gt test resolves the interpreter once into
+# GT_PYTHON, which every script it starts (and their scripts) then calls directly.
+python3() {
+  if [ -n "${GT_PYTHON:-}" ]; then "$GT_PYTHON" "$@"; else command python3 "$@"; fi
+}
+resolve_python() { command python3 -c 'import sys; print(sys.executable)'; }
+
 say() { printf '[gt] %s\n' "$*" >&2; }
 die() { printf '[gt] error: %s\n' "$*" >&2; exit 1; }
 # A bad command line: "gt CMD: MESSAGE", exit 2 (gt-cli's exit code for bad usage).

@@ -3,6 +3,8 @@
 # only if a test was skipped).
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 started=$SECONDS
+GT_PYTHON="${GT_PYTHON:-$(resolve_python)}" || die "python3 did not start"
+export GT_PYTHON
 bash "$RIG_DIR/setup.sh"
 setup_s=$((SECONDS - started))
 
