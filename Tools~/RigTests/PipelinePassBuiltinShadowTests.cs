@@ -13,7 +13,7 @@ using NUnit.Framework;
 
 namespace GregoryTerrain.Rig.Tests
 {
-    [TestFixture]
+    [TestFixture, Parallelizable(ParallelScope.Self)]
     public class PipelinePassBuiltinShadowTests
     {
         /// <summary>The shadowed frame: gt pipeline_pass's shadow sun (12 degrees up, from +x), written out; normals: the

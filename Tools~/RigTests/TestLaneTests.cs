@@ -36,7 +36,7 @@ namespace GregoryTerrain.Rig.Tests
             // Each pipeline-pass fixture's setup is a script drawing on lavapipe (~20 CPU s): alone, they left a
             // core idle for the last ~90 s of the run.
             foreach (string f in new[] { "PipelinePassGpuTests.cs", "PipelinePassDepthNormalsTests.cs", "PipelinePassFogTests.cs",
-                                         "PipelinePassHdrpGpuTests.cs", "PipelinePassHdrpShadowTests.cs" })
+                                         "PipelinePassHdrpGpuTests.cs", "PipelinePassHdrpShadowTests.cs", "PipelinePassBuiltinShadowTests.cs" })
                 Assert.That(parallel, Does.Contain(f), "a pipeline-pass fixture off the parallel lane");
         }
 
