@@ -32,14 +32,13 @@ void LodFactorPieces(uint3 group : SV_GroupID, uint lane : SV_GroupIndex)
     if (lane < GT_TILE_FACTOR_SAMPLES) gtTileFactorSamples[lane] = TileFactorSampleAt(lane, TileFactorSamplePosition(l, slot, lane));
     GroupMemoryBarrierWithGroupSync();
     float3 cornerOS[4];
-    GroupTileCorners(cornerOS);
+    [unroll] for (uint c = 0u; c < 4u; c++)
+        cornerOS[c] = gtTileFactorSamples[c].xyz;
     WriteGroupTileFactorPiece(l, slot, lane, cornerOS);
     GroupMemoryBarrierWithGroupSync();
     if (lane != 0u || patch >= LodDrawPatches()) return;
-    float piece[GT_TILE_FACTOR_PIECES];
-    GroupTileFactorPieces(piece);
-    _LodFactorsRW[patch].pieces[0] = float4(piece[0], piece[1], piece[2], piece[3]);
-    _LodFactorsRW[patch].pieces[1] = float4(piece[4], piece[5], piece[6], 0.0);
+    _LodFactorsRW[patch].pieces[0] = float4(gtTileFactorPieces[0], gtTileFactorPieces[1], gtTileFactorPieces[2], gtTileFactorPieces[3]);
+    _LodFactorsRW[patch].pieces[1] = float4(gtTileFactorPieces[4], gtTileFactorPieces[5], gtTileFactorPieces[6], 0.0);
 }
 
 // ComputeTileFactors from the pieces LodFactorPieces wrote.

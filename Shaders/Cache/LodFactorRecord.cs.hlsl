@@ -4,8 +4,8 @@
 #define GT_LODFACTORRECORD_CS_HLSL
 struct LodFactorRecord
 {
-    float4 edge;       // edge factors, seam rule applied, in no view culled
-    float4 inside;     // (inside u, inside v, 0, 0)
-    float4 pieces[2];  // the tile's seven pieces (TileFactorPiece): 0-3, then (4-6, 0)
+    float4 edge;       // factors, seam rule applied, culled in no view
+    float4 inside;
+    float4 pieces[2];  // TileFactorPiece 0-3, then 4-6
 };
 #endif // GT_LODFACTORRECORD_CS_HLSL

@@ -4,9 +4,9 @@
 #define GT_TILECELLRECORD_CS_HLSL
 struct TileCellRecord
 {
-    float4 edge;         // the cell's float edge factors
-    float4 inside;       // (inside u, inside v, how they were decided: VertexCache.CellFactorsSampled.., 0)
-    float4 inputs[5];    // what the factors were computed with (FactorInput)
-    float4 samples[51];  // factor sample positions (object space), w = 1 once written
+    float4 edge;         // float factors before rounding
+    float4 inside;       // (inside u, v, VertexCache.CellFactors*, 0)
+    float4 inputs[5];    // FactorInput 0-4 they were computed with
+    float4 samples[51];  // object positions, w = 1 once written
 };
 #endif // GT_TILECELLRECORD_CS_HLSL

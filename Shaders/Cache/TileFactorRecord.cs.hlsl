@@ -4,9 +4,9 @@
 #define GT_TILEFACTORRECORD_CS_HLSL
 struct TileFactorRecord
 {
-    float4 edge;      // integer edge factors (u = 0, v = 0, u = 1, v = 1) the draw uses
-    float4 inside;    // (inside u, inside v, culled 1/0, evaluate 1/0: CacheTileVertices rewrites the slots)
-    float4 slotsKey;  // the key (CellRecordKey) the slots hold; all 0: never written
-    float4 cellKey;   // the key the cell's samples and factors (TileCellRecord) hold; all 0: never written
+    float4 edge;      // integer factors the draw uses
+    float4 inside;    // (inside u, v, culled 1/0, evaluate 1/0)
+    float4 slotsKey;  // CellRecordKey the slots hold; 0: none
+    float4 cellKey;   // CellRecordKey the TileCellRecord holds; 0: none
 };
 #endif // GT_TILEFACTORRECORD_CS_HLSL

@@ -53,16 +53,13 @@ uint VertexCacheGroupsPerTile(uint limit)
     return (VertexCacheMaxTilePoints(limit) + perGroup - 1u) / perGroup;
 }
 
-// _TileFactors holds a TileFactorRecord a tile (T x T tiles, T = TilesAcrossInt(): M, or M + 1
-// anchored): the factors the draw reads, and the keys of the tile's slots and of its cell (both
-// CellRecordKey: _Range, or anchored the cell's span, since the slots hold the whole cell:
-// ClippedCell.hlsl), so that one upload of zeros forgets both. _TileCells holds a TileCellRecord a
-// tile: the cell's factor samples (kept while its key holds: a camera move evaluates no surface)
-// and its float factors with what they were computed with (FactorInput): while those hold too, a
-// pass takes the factors as they are (an anchored pan, the camera still, evaluates nothing). Two
-// buffers, not one: the draw reads 64 bytes a tile, not 992, and the upload is the draw's part.
-// A tile whose factors and slot key are the ones its slots already hold keeps its slots (a camera
-// move that leaves its integer factors alone; anchored, a pan that leaves the tile whole).
+// _TileFactors: a TileFactorRecord a tile (T x T tiles, T = TilesAcrossInt(): M, or M + 1
+// anchored), the draw's factors and the keys its slots and cell were written at (CellRecordKey),
+// which the renderer zeroes together. _TileCells: a TileCellRecord a tile, the cell's samples (a
+// camera move evaluates no surface) and float factors with their FactorInput (an anchored pan, the
+// camera still, evaluates nothing). Two buffers: that upload is 64 bytes a tile, not 992. A tile
+// whose factors and slot key its slots hold keeps them (a camera move that leaves its integer
+// factors alone; anchored, a pan that leaves the tile whole).
 #define GT_FACTOR_INPUTS 5u
 
 // Inside grid point (i, j) of a tile whose inside factor along u is insideU.

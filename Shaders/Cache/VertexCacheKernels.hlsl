@@ -23,7 +23,7 @@
 #include "TileFactorGroup.hlsl"
 
 // The same bindings as the graphics stages' _TileFactors and _VertexCache (t5, t6): binding 7 and
-// 8 in the rig either way (TerrainInputs.hlsl); _TileCellsRW is the kernels' alone (binding 10).
+// 8 in the rig either way (TerrainInputs.hlsl); _TileCellsRW: binding 10.
 RWStructuredBuffer<TileFactorRecord> _TileFactorsRW GT_REGISTER(u2);
 RWStructuredBuffer<uint4> _VertexCacheRW GT_REGISTER(u3);
 RWStructuredBuffer<TileCellRecord> _TileCellsRW GT_REGISTER(u5);
@@ -160,7 +160,8 @@ void CacheTileFactors(uint3 group : SV_GroupID, uint lane : SV_GroupIndex)
     if (!held && lane < GT_TILE_FACTOR_SAMPLES) gtTileFactorSamples[lane] = CachedTileFactorSample(tile, lane, cellMoved);
     GroupMemoryBarrierWithGroupSync();
     float3 cornerOS[4];
-    GroupTileCorners(cornerOS);
+    [unroll] for (uint c = 0u; c < 4u; c++)
+        cornerOS[c] = gtTileFactorSamples[c].xyz;
     // The pieces of a cell sampled now and in view.
     bool pieces = false;
     if (!held) pieces = !TileCulled(cornerOS, TileNoiseMargin(FrameTileLayout(), tile));
@@ -176,7 +177,8 @@ void CacheTileFactors(uint3 group : SV_GroupID, uint lane : SV_GroupIndex)
         if (pieces)
         {
             float piece[GT_TILE_FACTOR_PIECES];
-            GroupTileFactorPieces(piece);
+            [unroll] for (uint k = 0u; k < GT_TILE_FACTOR_PIECES; k++)
+                piece[k] = gtTileFactorPieces[k];
             cell = TileFactorsOfPieces(piece);
         }
         KeepCellFactors(tile, cell, cellMoved);
