@@ -15,14 +15,14 @@ namespace GregoryTerrain
         sealed class CameraFactors
         {
             public Camera camera;
-            public GraphicsBuffer buffer;   // LodTiles.FactorFloat4sPerPatch float4 a draw patch, sized on a level-layout change
+            public GraphicsBuffer buffer;   // a LodFactorRecord a draw patch, sized on a level-layout change
             public int patches, frame;      // frame: Time.frameCount when last dispatched
         }
 
         readonly Dictionary<int, CameraFactors> _byCamera = new Dictionary<int, CameraFactors>();
         readonly List<int> _evicted = new List<int>();
         GraphicsBuffer _bound;     // what the property block's _LodFactors names now
-        GraphicsBuffer _unused;    // one float4 bound while the hull computes the factors: every declared buffer is bound (Metal)
+        GraphicsBuffer _unused;    // one record bound while the hull computes the factors: every declared buffer is bound (Metal)
         ComputeShader _kernelShader;
         int _piecesKernel = -1, _seamsKernel = -1;
         readonly Vector4[] _ranges = new Vector4[LodTiles.MaxLevels];   // SetVectorArray's copy of the plan's levels
@@ -32,9 +32,9 @@ namespace GregoryTerrain
         {
             get
             {
-                long float4s = _unused != null ? 1 : 0;
-                foreach (CameraFactors f in _byCamera.Values) float4s += (long)f.patches * LodTiles.FactorFloat4sPerPatch;
-                return float4s * GpuLayout.Float4Stride;
+                long records = _unused != null ? 1 : 0;
+                foreach (CameraFactors f in _byCamera.Values) records += f.patches;
+                return records * LodFactorRecord.Stride;
             }
         }
 
@@ -51,7 +51,7 @@ namespace GregoryTerrain
                     Debug.LogWarning($"{r.name}: the Horizon levels' factor kernels do not run ({reason}); the hull stage computes the factors instead (slower).", r);
                 ReleaseCameraBuffers();
                 if (!r.LevelsOn(fallback)) { Release(); return was; }
-                _unused ??= new GraphicsBuffer(GraphicsBuffer.Target.Structured, 1, GpuLayout.Float4Stride);
+                _unused ??= new GraphicsBuffer(GraphicsBuffer.Target.Structured, 1, LodFactorRecord.Stride);
                 Bind(props, _unused);
                 return was;
             }
@@ -97,7 +97,7 @@ namespace GregoryTerrain
             f.frame = Time.frameCount;
             if (f.buffer != null && f.patches == patches) return f;
             f.buffer?.Release();
-            f.buffer = new GraphicsBuffer(GraphicsBuffer.Target.Structured, patches * LodTiles.FactorFloat4sPerPatch, GpuLayout.Float4Stride);
+            f.buffer = new GraphicsBuffer(GraphicsBuffer.Target.Structured, patches, LodFactorRecord.Stride);
             f.patches = patches;
             return f;
         }

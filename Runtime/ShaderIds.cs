@@ -44,6 +44,7 @@ namespace GregoryTerrain
         public static readonly int VertexCache = Shader.PropertyToID("_VertexCache");
         public static readonly int TileFactorsRW = Shader.PropertyToID("_TileFactorsRW");
         public static readonly int VertexCacheRW = Shader.PropertyToID("_VertexCacheRW");
+        public static readonly int TileCellsRW = Shader.PropertyToID("_TileCellsRW");
         public static readonly int LodObjectToClip = Shader.PropertyToID("_GT_LodObjectToClip");
         public static readonly int LodScreenSize = Shader.PropertyToID("_GT_LodScreenSize");
         public const string CacheFactorsKernel = "CacheTileFactors";

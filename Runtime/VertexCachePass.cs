@@ -4,8 +4,8 @@ using UnityEngine;
 namespace GregoryTerrain
 {
     /// <summary>
-    /// The compute pre-pass of <see cref="VertexEvaluation.ComputeCache"/>: owns <c>_TileFactors</c>
-    /// and <c>_VertexCache</c> (sizes from Core's <see cref="VertexCacheBudget"/>) and dispatches
+    /// The compute pre-pass of <see cref="VertexEvaluation.ComputeCache"/>: owns <c>_TileFactors</c>,
+    /// <c>_TileCells</c> and <c>_VertexCache</c> (sizes from Core's <see cref="VertexCacheBudget"/>) and dispatches
     /// <c>CacheTileFactors</c> then <c>CacheTileVertices</c> of <c>Shaders/Cache/TerrainCache.compute</c>
     /// only when something the kernels read differs from the last dispatch. What the kernels do not
     /// compare per tile (origin, lattice, grid, noise, colour, transform, effects, snow map, new
@@ -40,7 +40,7 @@ namespace GregoryTerrain
             public GraphicsBuffer noiseCells;
         }
 
-        GraphicsBuffer _factors, _vertices;
+        GraphicsBuffer _factors, _cells, _vertices;
         int _tiles, _factorLimit;
         bool _snow;
 
@@ -49,7 +49,7 @@ namespace GregoryTerrain
 
         bool _valid;          // the buffers hold the result of _last
         Inputs _last;
-        Vector4[] _zeroRanges;   // 2 T^2 zero float4: the keys of "nothing evaluated yet"
+        TileFactorRecord[] _zeroRecords;   // T^2 records of zero keys: "nothing evaluated yet"
 
         public GraphicsBuffer TileFactors => _factors;
         public GraphicsBuffer VertexCache => _vertices;
@@ -179,17 +179,17 @@ namespace GregoryTerrain
             if (IsAllocated) Release();
         }
         /// <summary>
-        /// Allocates both buffers for M = <paramref name="tiles"/>, L = <paramref name="factorLimit"/>
+        /// Allocates the buffers for M = <paramref name="tiles"/>, L = <paramref name="factorLimit"/>
         /// and the snow record when one of them changed (call <see cref="VertexCacheBudget.CheckFits"/>
         /// first). Returns true when it allocated (the buffers must be bound again).
         /// </summary>
         public bool EnsureBuffers(int tiles, int factorLimit, bool snow)
         {
             if (IsAllocated && tiles == _tiles && factorLimit == _factorLimit && snow == _snow) return false;
-            long factorCount = VertexCacheBudget.TileFactorsFloat4s(tiles);
             long vertexCount = VertexCacheBudget.VertexCacheUint4s(tiles, factorLimit, snow);
             Release();
-            _factors = new GraphicsBuffer(GraphicsBuffer.Target.Structured, (int)factorCount, GpuLayout.Float4Stride);
+            _factors = new GraphicsBuffer(GraphicsBuffer.Target.Structured, tiles * tiles, TileFactorRecord.Stride);
+            _cells = new GraphicsBuffer(GraphicsBuffer.Target.Structured, tiles * tiles, TileCellRecord.Stride);
             _vertices = new GraphicsBuffer(GraphicsBuffer.Target.Structured, (int)vertexCount, GpuLayout.Uint4Stride);
             _tiles = tiles; _factorLimit = factorLimit; _snow = snow;
             _valid = false;
@@ -221,6 +221,7 @@ namespace GregoryTerrain
             // Kernel 2 reads the factors as t5, not the UAV: FXC refuses its loop on a UAV read.
             BindPatchBuffers(shader, _factorsKernel, inputs, snow);
             shader.SetBuffer(_factorsKernel, ShaderIds.TileFactorsRW, _factors);
+            shader.SetBuffer(_factorsKernel, ShaderIds.TileCellsRW, _cells);
             BindPatchBuffers(shader, _verticesKernel, inputs, snow);
             shader.SetBuffer(_verticesKernel, ShaderIds.TileFactors, _factors);
             shader.SetBuffer(_verticesKernel, ShaderIds.VertexCacheRW, _vertices);
@@ -234,13 +235,13 @@ namespace GregoryTerrain
             return true;
         }
 
-        // Zero the keys (slots' and cells', adjacent): every tile reads as moved. Only that part is
-        // uploaded (the snow path comes here every step).
+        // Zero the keys (slots' and cells'): every tile reads as moved. Only _TileFactors is uploaded,
+        // 64 bytes a tile (the snow path comes here every step); the dispatch that follows rewrites its factors.
         void ForgetEvaluatedTiles()
         {
-            int count = GregoryTerrain.VertexCache.KeyFloat4sPerTile * _tiles * _tiles;
-            if (_zeroRanges == null || _zeroRanges.Length != count) _zeroRanges = new Vector4[count];
-            _factors.SetData(_zeroRanges, 0, (int)GregoryTerrain.VertexCache.EvaluatedRangeIndex(0, _tiles), count);
+            int count = _tiles * _tiles;
+            if (_zeroRecords == null || _zeroRecords.Length != count) _zeroRecords = new TileFactorRecord[count];
+            _factors.SetData(_zeroRecords);
         }
 
         /// <summary>Binds the buffers on the draw's property block under the graphics stages' names.</summary>
@@ -250,10 +251,11 @@ namespace GregoryTerrain
             props.SetBuffer(ShaderIds.VertexCache, _vertices);
         }
 
-        /// <summary>Releases both buffers. Safe to call twice.</summary>
+        /// <summary>Releases the buffers. Safe to call twice.</summary>
         public void Release()
         {
             _factors?.Release(); _factors = null;
+            _cells?.Release(); _cells = null;
             _vertices?.Release(); _vertices = null;
             _valid = false;
         }

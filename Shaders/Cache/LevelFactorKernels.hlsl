@@ -16,12 +16,10 @@
 #include "../Terrain/TerrainVertex.hlsl"
 #include "../Terrain/TileFactors.hlsl"
 #include "../Pipelines/LevelTiles.hlsl"
+#include "TileFactorGroup.hlsl"
 
 // The same buffer as the hull's _LodFactors (t5): binding 7 in the rig either way.
-RWStructuredBuffer<float4> _LodFactorsRW GT_REGISTER(u2);
-
-groupshared float4 gtLodFactorSamples[GT_TILE_FACTOR_SAMPLES];
-groupshared float gtLodFactorPieces[GT_TILE_FACTOR_PIECES];
+RWStructuredBuffer<LodFactorRecord> _LodFactorsRW GT_REGISTER(u2);
 
 uint LodDrawPatches() { return LodLevelCount() * LodTilesPerLevel(TileCountInt()); }
 
@@ -31,30 +29,16 @@ void LodFactorPieces(uint3 group : SV_GroupID, uint lane : SV_GroupIndex)
 {
     uint patch = group.y * LodTilesPerLevel(TileCountInt()) + group.x, slot;
     TileLayout l = StageTileLayout(patch, slot);
-    if (lane < GT_TILE_FACTOR_SAMPLES) gtLodFactorSamples[lane] = TileFactorSampleAt(lane, TileFactorSamplePosition(l, slot, lane));
+    if (lane < GT_TILE_FACTOR_SAMPLES) gtTileFactorSamples[lane] = TileFactorSampleAt(lane, TileFactorSamplePosition(l, slot, lane));
     GroupMemoryBarrierWithGroupSync();
     float3 cornerOS[4];
     [unroll] for (uint c = 0u; c < 4u; c++)
-        cornerOS[c] = gtLodFactorSamples[c].xyz;
-    if (lane == 6u)
-        gtLodFactorPieces[lane] = CentreErrorTessFactor(cornerOS, gtLodFactorSamples[GT_TILE_CENTRE_SAMPLE]);
-    else if (lane < GT_TILE_FACTOR_PIECES)
-    {
-        float3 p[GT_EDGE_SEGMENTS + 1];
-        float k[GT_EDGE_SEGMENTS + 1];
-        [unroll] for (uint i = 0u; i <= GT_EDGE_SEGMENTS; i++)
-        {
-            float4 v = gtLodFactorSamples[TileLineSample(lane, i)];
-            p[i] = v.xyz;
-            k[i] = v.w;
-        }
-        gtLodFactorPieces[lane] = LineErrorTessFactor(l, slot, lane, p, k);
-    }
+        cornerOS[c] = gtTileFactorSamples[c].xyz;
+    WriteGroupTileFactorPiece(l, slot, lane, cornerOS);
     GroupMemoryBarrierWithGroupSync();
     if (lane != 0u || patch >= LodDrawPatches()) return;
-    uint i = LodPieceIndex(patch);
-    _LodFactorsRW[i] = float4(gtLodFactorPieces[0], gtLodFactorPieces[1], gtLodFactorPieces[2], gtLodFactorPieces[3]);
-    _LodFactorsRW[i + 1u] = float4(gtLodFactorPieces[4], gtLodFactorPieces[5], gtLodFactorPieces[6], 0.0);
+    _LodFactorsRW[patch].pieces[0] = float4(gtTileFactorPieces[0], gtTileFactorPieces[1], gtTileFactorPieces[2], gtTileFactorPieces[3]);
+    _LodFactorsRW[patch].pieces[1] = float4(gtTileFactorPieces[4], gtTileFactorPieces[5], gtTileFactorPieces[6], 0.0);
 }
 
 // ComputeTileFactors from the pieces LodFactorPieces wrote.
@@ -63,7 +47,7 @@ TileFactorSet KernelCellFactors(TileLayout l, uint slot, uint drawPatch)
     TileFactorSet f;
     if (TileEmpty(l, slot)) return CulledTileFactors();
     if (UniformTileFactors(f)) return f;
-    float4 a = _LodFactorsRW[LodPieceIndex(drawPatch)], b = _LodFactorsRW[LodPieceIndex(drawPatch) + 1u];
+    float4 a = _LodFactorsRW[drawPatch].pieces[0], b = _LodFactorsRW[drawPatch].pieces[1];
     float piece[GT_TILE_FACTOR_PIECES] = { a.x, a.y, a.z, a.w, b.x, b.y, b.z };
     return TileFactorsOfCell(TileFactorsOfPieces(piece), TileKeptFraction(l, slot));
 }
@@ -73,7 +57,7 @@ float KernelCoarseSeamEdgeFactor(uint drawPatch, uint edgeBit, int2 abUp)
 {
     if (UsesUniformTessFactor()) return UniformTessFactor();
     uint piece;
-    float4 edges = _LodFactorsRW[LodPieceIndex(FineSeamCoarsePatch(drawPatch, edgeBit, abUp, piece))];
+    float4 edges = _LodFactorsRW[FineSeamCoarsePatch(drawPatch, edgeBit, abUp, piece)].pieces[0];
     return max(edges[piece], 1.0);
 }
 
@@ -94,8 +78,8 @@ void LodFactorSeams(uint3 id : SV_DispatchThreadID)
         [unroll] for (uint i = 0u; i < 4u; i++)
             if ((fineMask & (1u << i)) != 0u) across[i] = KernelCoarseSeamEdgeFactor(patch, 1u << i, abUp);
     set = LodSeamFactors(set, coarseMask, fineMask, float4(across[0], across[1], across[2], across[3]));
-    _LodFactorsRW[LodFactorIndex(patch)] = set.edge;
-    _LodFactorsRW[LodFactorIndex(patch) + 1u] = float4(set.inside, 0.0, 0.0);
+    _LodFactorsRW[patch].edge = set.edge;
+    _LodFactorsRW[patch].inside = float4(set.inside, 0.0, 0.0);
 }
 
 #endif // GT_LEVEL_FACTOR_KERNELS_INCLUDED

@@ -53,33 +53,14 @@ uint VertexCacheGroupsPerTile(uint limit)
     return (VertexCacheMaxTilePoints(limit) + perGroup - 1u) / perGroup;
 }
 
-// _TileFactors, for T x T tiles (T = TilesAcrossInt(): M, or M + 1 anchored), in parts of T^2:
-//   factor records, 2 float4 a tile: (edge 0-3), (inside 0-1, culled 1/0, evaluate 1/0): what the
-//     draw reads; "evaluate" tells CacheTileVertices which tiles to (re)evaluate this pass;
-//   keys, 1 float4 a tile each, adjacent so that one upload of zeros forgets both: the key of the
-//     tile's slots, then of its cell's samples and factors (both CellRecordKey: _Range, or anchored
-//     the cell's span, since the slots hold the whole cell: ClippedCell.hlsl);
-//   factor samples, GT_TILE_FACTOR_SAMPLES float4 a tile: the cell's object positions (w = 1 once
-//     written), kept while the cell's key holds (a camera move evaluates no surface);
-//   cell factors, 2 float4 a tile: the float factors the cell's samples gave (before
-//     rounding), then GT_FACTOR_INPUTS float4: what they were computed with
-//     (FactorInputs). While the cell's key and those hold, a pass takes the factors as they are (an
-//     anchored pan, the camera still, evaluates no sample and no factor).
-// A tile whose factors and slot key are the ones its slots already hold keeps its slots (a camera
-// move that leaves its integer factors alone; anchored, a pan that leaves the tile whole).
+// _TileFactors: a TileFactorRecord a tile (T x T tiles, T = TilesAcrossInt(): M, or M + 1
+// anchored), the draw's factors and the keys its slots and cell were written at (CellRecordKey),
+// which the renderer zeroes together. _TileCells: a TileCellRecord a tile, the cell's samples (a
+// camera move evaluates no surface) and float factors with their FactorInput (an anchored pan, the
+// camera still, evaluates nothing). Two buffers: that upload is 64 bytes a tile, not 992. A tile
+// whose factors and slot key its slots hold keeps them (a camera move that leaves its integer
+// factors alone; anchored, a pan that leaves the tile whole).
 #define GT_FACTOR_INPUTS 5u
-uint VertexCacheFactorIndex(uint tile) { return 2u * tile; }
-uint VertexCacheEvaluatedRangeIndex(uint tile, uint tiles) { return 2u * tiles * tiles + tile; }
-uint VertexCacheCellKeyIndex(uint tile, uint tiles) { return 3u * tiles * tiles + tile; }
-uint VertexCacheFactorSampleIndex(uint tile, uint s, uint tiles)
-{
-    return 4u * tiles * tiles + tile * GT_TILE_FACTOR_SAMPLES + s;
-}
-uint VertexCacheCellFactorIndex(uint tile, uint tiles) { return (4u + GT_TILE_FACTOR_SAMPLES) * tiles * tiles + 2u * tile; }
-uint VertexCacheFactorInputsIndex(uint tile, uint tiles)
-{
-    return (6u + GT_TILE_FACTOR_SAMPLES) * tiles * tiles + GT_FACTOR_INPUTS * tile;
-}
 
 // Inside grid point (i, j) of a tile whose inside factor along u is insideU.
 uint VertexCacheInteriorSlot(uint2 ij, uint insideU) { return ij.x + ij.y * (insideU + 1u); }

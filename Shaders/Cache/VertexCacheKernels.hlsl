@@ -19,14 +19,14 @@
 #define GT_VERTEX_CACHE_KERNELS_INCLUDED
 
 #include "VertexCache.hlsl"
+#include "TileCellRecord.cs.hlsl"
+#include "TileFactorGroup.hlsl"
 
 // The same bindings as the graphics stages' _TileFactors and _VertexCache (t5, t6): binding 7 and
-// 8 in the rig either way (TerrainInputs.hlsl).
-RWStructuredBuffer<float4> _TileFactorsRW GT_REGISTER(u2);
+// 8 in the rig either way (TerrainInputs.hlsl); _TileCellsRW: binding 10.
+RWStructuredBuffer<TileFactorRecord> _TileFactorsRW GT_REGISTER(u2);
 RWStructuredBuffer<uint4> _VertexCacheRW GT_REGISTER(u3);
-
-groupshared float4 gtTileFactorSamples[GT_TILE_FACTOR_SAMPLES];
-groupshared float gtTileFactorPieces[GT_TILE_FACTOR_PIECES];
+RWStructuredBuffer<TileCellRecord> _TileCellsRW GT_REGISTER(u5);
 
 // What a tile's slots and its factor samples depend on (besides factors and camera): the range, or
 // anchored, only its cell (the slots hold the whole cell and the draw clips it, ClippedCell.hlsl; a
@@ -39,14 +39,10 @@ float4 CellRecordKey(uint tile) { return TilesAnchored() ? CellSpan(FrameTileLay
 // zeroes the keys to force a pass), so it always reads as moved, even for a key that happens to be
 // 0. Every lane reads both; only lane 0 acts on the slots' key, and the cell's key is written
 // after the group's barriers.
-bool KeyMoved(uint index, float4 key)
-{
-    float4 kept = _TileFactorsRW[index];
-    return all(kept == 0.0) || any(kept != key);
-}
+bool KeyMoved(float4 kept, float4 key) { return all(kept == 0.0) || any(kept != key); }
 
-bool TileRangeMoved(uint tile) { return KeyMoved(VertexCacheEvaluatedRangeIndex(tile, TilesAcrossInt()), CellRecordKey(tile)); }
-bool TileCellMoved(uint tile) { return KeyMoved(VertexCacheCellKeyIndex(tile, TilesAcrossInt()), CellRecordKey(tile)); }
+bool TileRangeMoved(uint tile) { return KeyMoved(_TileFactorsRW[tile].slotsKey, CellRecordKey(tile)); }
+bool TileCellMoved(uint tile) { return KeyMoved(_TileFactorsRW[tile].cellKey, CellRecordKey(tile)); }
 
 // The inputs of a cell's factors that the keys do not cover: the camera (its object-to-clip matrix,
 // the object transform included; its pixel size) and the knob (max factor, target). The rest (grid,
@@ -60,14 +56,13 @@ float4 FactorInput(uint k)
 
 bool FactorInputsHeld(uint tile)
 {
-    uint i = VertexCacheFactorInputsIndex(tile, TilesAcrossInt());
     bool held = true;
     [unroll] for (uint k = 0u; k < GT_FACTOR_INPUTS; k++)
-        held = held && all(_TileFactorsRW[i + k] == FactorInput(k));
+        held = held && all(_TileCellsRW[tile].inputs[k] == FactorInput(k));
     return held;
 }
 
-// How the last pass decided the cell's factors (the cell record's z; the rig's tests read it).
+// How the last pass decided the cell's factors (TileCellRecord.inside.z; the rig's tests read it).
 #define GT_CELL_FACTORS_SAMPLED 0.0       // from the surface: the cell moved (or its key was zeroed)
 #define GT_CELL_FACTORS_RESCALED 1.0      // from the kept samples: the camera or the knob moved
 #define GT_CELL_FACTORS_HELD 2.0          // as they were
@@ -76,24 +71,20 @@ bool FactorInputsHeld(uint tile)
 // with what they hold for (KeepCellFactors).
 TileFactorSet HeldCellFactors(uint tile)
 {
-    uint i = VertexCacheCellFactorIndex(tile, TilesAcrossInt());
     TileFactorSet f;
-    f.edge = _TileFactorsRW[i];
-    f.inside = _TileFactorsRW[i + 1u].xy;
-    _TileFactorsRW[i + 1u] = float4(f.inside, GT_CELL_FACTORS_HELD, 0.0);
+    f.edge = _TileCellsRW[tile].edge;
+    f.inside = _TileCellsRW[tile].inside.xy;
+    _TileCellsRW[tile].inside = float4(f.inside, GT_CELL_FACTORS_HELD, 0.0);
     return f;
 }
 
 void KeepCellFactors(uint tile, TileFactorSet cell, bool cellMoved)
 {
-    uint tiles = TilesAcrossInt();
-    uint i = VertexCacheCellFactorIndex(tile, tiles);
-    _TileFactorsRW[i] = cell.edge;
-    _TileFactorsRW[i + 1u] = float4(cell.inside, cellMoved ? GT_CELL_FACTORS_SAMPLED : GT_CELL_FACTORS_RESCALED, 0.0);
-    uint k0 = VertexCacheFactorInputsIndex(tile, tiles);
+    _TileCellsRW[tile].edge = cell.edge;
+    _TileCellsRW[tile].inside = float4(cell.inside, cellMoved ? GT_CELL_FACTORS_SAMPLED : GT_CELL_FACTORS_RESCALED, 0.0);
     [unroll] for (uint k = 0u; k < GT_FACTOR_INPUTS; k++)
-        _TileFactorsRW[k0 + k] = FactorInput(k);
-    _TileFactorsRW[VertexCacheCellKeyIndex(tile, tiles)] = CellRecordKey(tile);
+        _TileCellsRW[tile].inputs[k] = FactorInput(k);
+    _TileFactorsRW[tile].cellKey = CellRecordKey(tile);
 }
 
 // True when the tile's slots do not hold its vertices at factors f: the range moved, or last pass
@@ -102,9 +93,8 @@ void KeepCellFactors(uint tile, TileFactorSet cell, bool cellMoved)
 // changes, and a zero key always reads as moved (KeyMoved).
 bool TileSlotsOutdated(uint tile, TileFactorSet f, bool rangeMoved)
 {
-    uint i = VertexCacheFactorIndex(tile);
-    float4 edge = _TileFactorsRW[i];
-    float4 inside = _TileFactorsRW[i + 1u];
+    float4 edge = _TileFactorsRW[tile].edge;
+    float4 inside = _TileFactorsRW[tile].inside;
     return rangeMoved || inside.z != 0.0 || any(edge != f.edge) || any(inside.xy != f.inside);
 }
 
@@ -113,10 +103,9 @@ void WriteTileFactors(uint tile, TileFactorSet f, bool rangeMoved)
     f = VertexCacheIntegerFactors(f);
     bool culled = TileFactorsCulled(f);
     bool evaluate = !culled && TileSlotsOutdated(tile, f, rangeMoved);
-    uint i = VertexCacheFactorIndex(tile);
-    _TileFactorsRW[i] = f.edge;
-    _TileFactorsRW[i + 1u] = float4(f.inside, culled ? 1.0 : 0.0, evaluate ? 1.0 : 0.0);
-    if (rangeMoved) _TileFactorsRW[VertexCacheEvaluatedRangeIndex(tile, TilesAcrossInt())] = CellRecordKey(tile);
+    _TileFactorsRW[tile].edge = f.edge;
+    _TileFactorsRW[tile].inside = float4(f.inside, culled ? 1.0 : 0.0, evaluate ? 1.0 : 0.0);
+    if (rangeMoved) _TileFactorsRW[tile].slotsKey = CellRecordKey(tile);
 }
 
 // Sample s of the tile's cell: its position read back while the cell holds and the sample was
@@ -124,13 +113,12 @@ void WriteTileFactors(uint tile, TileFactorSet f, bool rangeMoved)
 // positions depend on the cell only, so a camera move costs no surface evaluation here.
 float4 CachedTileFactorSample(uint tile, uint s, bool cellMoved)
 {
-    uint k = VertexCacheFactorSampleIndex(tile, s, TilesAcrossInt());
-    float4 kept = _TileFactorsRW[k];
+    float4 kept = _TileCellsRW[tile].samples[s];
     float3 p = kept.xyz;
     if (cellMoved || kept.w != 1.0)
     {
         p = TileFactorSamplePosition(FrameTileLayout(), tile, s);
-        _TileFactorsRW[k] = float4(p, 1.0);
+        _TileCellsRW[tile].samples[s] = float4(p, 1.0);
     }
     return TileFactorSampleAt(s, p);
 }
@@ -177,23 +165,7 @@ void CacheTileFactors(uint3 group : SV_GroupID, uint lane : SV_GroupIndex)
     // The pieces of a cell sampled now and in view.
     bool pieces = false;
     if (!held) pieces = !TileCulled(cornerOS, TileNoiseMargin(FrameTileLayout(), tile));
-    if (pieces && lane < GT_TILE_FACTOR_PIECES)
-    {
-        if (lane == 6u)
-            gtTileFactorPieces[lane] = CentreErrorTessFactor(cornerOS, gtTileFactorSamples[GT_TILE_CENTRE_SAMPLE]);
-        else
-        {
-            float3 p[GT_EDGE_SEGMENTS + 1];
-            float k[GT_EDGE_SEGMENTS + 1];
-            [unroll] for (uint i = 0u; i <= GT_EDGE_SEGMENTS; i++)
-            {
-                float4 v = gtTileFactorSamples[TileLineSample(lane, i)];
-                p[i] = v.xyz;
-                k[i] = v.w;
-            }
-            gtTileFactorPieces[lane] = LineErrorTessFactor(FrameTileLayout(), tile, lane, p, k);
-        }
-    }
+    if (pieces) WriteGroupTileFactorPiece(FrameTileLayout(), tile, lane, cornerOS);
     GroupMemoryBarrierWithGroupSync();
     if (lane != 0u) return;
     TileFactorSet cell;
@@ -259,8 +231,8 @@ void CacheTileVertices(uint3 group : SV_GroupID, uint lane : SV_GroupIndex)
     uint tiles = TilesAcrossInt();
     if (group.x >= tiles || group.y >= tiles) return;
     uint tile = group.y * tiles + group.x;
-    float4 edge = _TileFactors[VertexCacheFactorIndex(tile)];
-    float4 inside = _TileFactors[VertexCacheFactorIndex(tile) + 1u];
+    float4 edge = _TileFactors[tile].edge;
+    float4 inside = _TileFactors[tile].inside;
     if (inside.w == 0.0) return;   // culled (the draw emits nothing), or its slots are up to date
     uint limit = VertexCacheFactorLimit();
     uint base = tile * VertexCacheSlotsPerTile(limit);

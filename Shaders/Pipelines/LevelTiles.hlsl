@@ -12,17 +12,12 @@ TileLayout StageTileLayout(uint drawPatch, out uint slot)
     return LodLevelLayout(LodLevelOfPatch(drawPatch, TileCountInt()));
 }
 
-// The factor kernels' record of a draw patch in _LodFactors (GT_LOD_FACTOR_FLOAT4S float4): its
-// factors, seam rule applied (edge; inside, 0, 0), then its seven pieces (0-3; 4-6, 0), in no view culled.
-#define GT_LOD_FACTOR_FLOAT4S 4u
-uint LodFactorIndex(uint drawPatch) { return GT_LOD_FACTOR_FLOAT4S * drawPatch; }
-uint LodPieceIndex(uint drawPatch) { return LodFactorIndex(drawPatch) + 2u; }
-
+// The factor kernels' factors of a draw patch (its LodFactorRecord in _LodFactors).
 TileFactorSet LodKernelTileFactors(uint drawPatch)
 {
     TileFactorSet f;
-    f.edge = _LodFactors[LodFactorIndex(drawPatch)];
-    f.inside = _LodFactors[LodFactorIndex(drawPatch) + 1u].xy;
+    f.edge = _LodFactors[drawPatch].edge;
+    f.inside = _LodFactors[drawPatch].inside.xy;
     return f;
 }
 

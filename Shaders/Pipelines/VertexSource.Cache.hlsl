@@ -29,8 +29,8 @@ float3 StageCornerPosition(uint drawPatch, uint corner)
 TileFactorSet CachedCellFactors(uint patch)
 {
     TileFactorSet set;
-    set.edge = _TileFactors[VertexCacheFactorIndex(patch)];
-    set.inside = _TileFactors[VertexCacheFactorIndex(patch) + 1u].xy;
+    set.edge = _TileFactors[patch].edge;
+    set.inside = _TileFactors[patch].inside.xy;
     return set;
 }
 

@@ -64,8 +64,9 @@ GT_CBUFFER_END
 
 #if defined(GT_LOD)
 // The levels' tile factors the factor kernels wrote this frame (LevelFactorKernels.hlsl), read
-// while _LodLevels.y is 1 (LodKernelTileFactors).
-StructuredBuffer<float4> _LodFactors GT_REGISTER(t5);
+// while _LodLevels.y is 1 (LodKernelTileFactors): a LodFactorRecord per draw patch.
+#include "../Cache/LodFactorRecord.cs.hlsl"
+StructuredBuffer<LodFactorRecord> _LodFactors GT_REGISTER(t5);
 #endif
 
 #if defined(GT_SNOW)
@@ -81,10 +82,10 @@ float SnowDepthCap() { return _SnowMapSize.z; }
 
 #if defined(GT_VERTEX_CACHE)
 // The vertex cache (internals.md, "Vertex cache"), written this frame by the compute pass
-// (VertexCacheKernels.hlsl: _TileFactorsRW, _VertexCacheRW, the same buffers): 2 float4 per tile
-// (the integer edge factors; inside factors, culled, evaluated) then one (the range the tile's slots
-// hold; VertexCache.hlsl), and GT_VERTEX_CACHE_RECORD_UINT4S uint4 per slot.
-StructuredBuffer<float4> _TileFactors GT_REGISTER(t5);
+// (VertexCacheKernels.hlsl: _TileFactorsRW, _VertexCacheRW, the same buffers): a TileFactorRecord
+// per tile (VertexCache.hlsl), and GT_VERTEX_CACHE_RECORD_UINT4S uint4 per slot.
+#include "../Cache/TileFactorRecord.cs.hlsl"
+StructuredBuffer<TileFactorRecord> _TileFactors GT_REGISTER(t5);
 StructuredBuffer<uint4> _VertexCache GT_REGISTER(t6);
 #endif
 

@@ -104,9 +104,9 @@ namespace GregoryTerrain.Tests
             // M = 16, L = 64: 65^2 + 4 * 65 = 4485 slots per tile, 256 tiles, one uint4: 1,148,160 uint4.
             Assert.That(VertexCacheBudget.VertexCacheUint4s(16, 64, false), Is.EqualTo(256L * 4485));
             Assert.That(VertexCacheBudget.VertexCacheBytes(16, 64, false), Is.EqualTo(18_370_560L));
-            // Tile factors: 62 float4 per tile (factor records, keys, factor samples, cell factors).
-            Assert.That(VertexCacheBudget.TileFactorsFloat4s(16), Is.EqualTo(256 * 62));
-            Assert.That(VertexCacheBudget.TileFactorsBytes(16), Is.EqualTo(253_952));
+            // A tile's records: 64 bytes of factors and keys, 928 of its cell (2 + 5 + 51 float4): 992 in all.
+            Assert.That(VertexCacheBudget.TileFactorsBytes(16), Is.EqualTo(256 * 64));
+            Assert.That(VertexCacheBudget.TileCellsBytes(16), Is.EqualTo(256 * 928));
             Assert.That(VertexCacheBudget.TotalBytes(16, 64, false), Is.EqualTo(18_370_560L + 253_952));
             TestContext.Out.WriteLine($"M = 16, L = 64: {VertexCacheBudget.TotalBytes(16, 64, false)} bytes, with snow {VertexCacheBudget.TotalBytes(16, 64, true)}; M = 64, L = 64, snow: {VertexCacheBudget.TotalBytes(64, 64, true)}");
         }

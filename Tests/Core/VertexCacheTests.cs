@@ -1,6 +1,7 @@
 using System;
 using System.Collections.Generic;
 using System.Linq;
+using System.Runtime.InteropServices;
 using NUnit.Framework;
 
 namespace GregoryTerrain.Tests
@@ -49,26 +50,19 @@ namespace GregoryTerrain.Tests
             Assert.That(VertexCache.SlotsPerTile(64), Is.EqualTo(65 * 65 + 4 * 65));
             Assert.That(VertexCacheBudget.VertexCacheBytes(32, 64, false), Is.EqualTo(32L * 32 * 4485 * 1 * 16));
             Assert.That(VertexCacheBudget.VertexCacheBytes(32, 64, true), Is.EqualTo(32L * 32 * 4485 * 2 * 16));
-            Assert.That(VertexCacheBudget.TileFactorsBytes(16), Is.EqualTo(16L * 16 * 62 * 16));
-            // The factor records, the keys, the factor samples, the cell factors and their inputs:
-            // every index of the parts inside the buffer, none shared; the two keys adjacent (one
-            // upload of zeros forgets them).
-            var used = new HashSet<long>();
-            for (int t = 0; t < 16 * 16; t++)
-            {
-                Assert.That(used.Add(VertexCache.FactorIndex(t)) && used.Add(VertexCache.FactorIndex(t) + 1) && used.Add(VertexCache.EvaluatedRangeIndex(t, 16)), Is.True, "tile " + t);
-                Assert.That(used.Add(VertexCache.CellKeyIndex(t, 16)) && used.Add(VertexCache.CellFactorIndex(t, 16)) && used.Add(VertexCache.CellFactorIndex(t, 16) + 1), Is.True, "tile " + t);
-                for (int k = 0; k < VertexCache.FactorInputsFloat4s; k++)
-                    Assert.That(used.Add(VertexCache.FactorInputsIndex(t, 16) + k), Is.True, "tile " + t + " factor input " + k);
-                for (int s = 0; s < VertexCache.FactorSamplesPerTile; s++)
-                    Assert.That(used.Add(VertexCache.FactorSampleIndex(t, s, 16)), Is.True, "tile " + t + " sample " + s);
-            }
-            Assert.That(used.Count, Is.EqualTo(VertexCacheBudget.TileFactorsFloat4s(16)));
-            Assert.That(used.Min(), Is.EqualTo(0));
-            Assert.That(used.Max(), Is.EqualTo(VertexCacheBudget.TileFactorsFloat4s(16) - 1));
-            Assert.That(VertexCache.CellKeyIndex(0, 16), Is.EqualTo(VertexCache.EvaluatedRangeIndex(0, 16) + 16 * 16));
+            Assert.That(VertexCacheBudget.TileFactorsBytes(16), Is.EqualTo(16L * 16 * 4 * 16));
+            Assert.That(VertexCacheBudget.TileCellsBytes(16), Is.EqualTo(16L * 16 * (2 + 5 + 51) * 16));
             Assert.That(() => VertexCache.SlotsPerTile(0), Throws.InstanceOf<ArgumentException>());
             Assert.That(() => VertexCache.SlotsPerTile(65), Throws.InstanceOf<ArgumentException>());
+        }
+
+        /// <summary>Each record's Stride, the GraphicsBuffer stride the renderer gives, is the struct's size.</summary>
+        [Test]
+        public void RecordStridesAreTheStructSizes()
+        {
+            Assert.That(TileFactorRecord.Stride, Is.EqualTo(Marshal.SizeOf<TileFactorRecord>()).And.EqualTo(64));
+            Assert.That(TileCellRecord.Stride, Is.EqualTo(Marshal.SizeOf<TileCellRecord>()).And.EqualTo(928));
+            Assert.That(LodFactorRecord.Stride, Is.EqualTo(Marshal.SizeOf<LodFactorRecord>()).And.EqualTo(64));
         }
 
         /// <summary>

@@ -119,7 +119,8 @@ namespace GregoryTerrain.Rig.Tests
         [Test]
         public void TileFactorsDumpIsReadAndItsIntegerContractChecked()
         {
-            float[] Dump(params float[][] tiles) => tiles.SelectMany(t => t).ToArray();
+            // Each tile's edge and inside float4, then its keys (zero here).
+            float[] Dump(params float[][] tiles) => tiles.SelectMany(t => t.Concat(new float[PatchFactors.TileRecordFloats - 8])).ToArray();
             float[] drawn = { 3, 4, 5, 6, 7, 8, 0, 1 }, ones = { 1, 1, 1, 1, 1, 1, 0, 0 }, culled = { 0, 0, 0, 0, 0, 0, 1, 0 };
             var f = PatchFactors.FromTileFactors(Dump(drawn, ones, culled), 3);
             Assert.That(new[] { f[0].e0, f[0].e1, f[0].e2, f[0].e3, f[0].i0, f[0].i1 }, Is.EqualTo(new[] { 3.0, 4, 5, 6, 7, 8 }));

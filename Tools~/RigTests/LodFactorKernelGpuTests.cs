@@ -44,7 +44,7 @@ namespace GregoryTerrain.Rig.Tests
             LodScene s = new LodScene { Tiles = Tiles, Factor = 0, Width = 1920, Height = 1080, TerrainMeters = terrainMeters }.Build(_grid);
             string dir = Path.Combine(_work, "t" + terrainMeters.ToString("0"));
             string hull = Path.Combine(dir, "hull.f32"), kernel = Path.Combine(dir, "kernel.f32"), read = Path.Combine(dir, "hull-read.f32");
-            int p = s.Patches, r = 4 * LodTiles.FactorFloat4sPerPatch;   // floats a kernel record
+            int p = s.Patches, r = LodFactorRecord.Stride / 4;   // floats a kernel record
             void Draw(LodScene scene, string readback, string dump)
             {
                 scene.Write(dir);

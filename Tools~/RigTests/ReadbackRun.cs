@@ -238,31 +238,34 @@ namespace GregoryTerrain.Rig.Tests
                            "--tese", Path.Combine(v, "tese.spv"), "--frag", Path.Combine(v, "frag.spv") };
         }
 
-        /// <summary>Tile t's integer factors in a <c>_TileFactors</c> dump (VertexCache.FactorIndex: edges, then inside).</summary>
+        /// <summary>Tile t's integer factors in a <c>_TileFactors</c> dump (its TileFactorRecord: edges, then inside).</summary>
         public static TileFactorSet CacheTileFactors(float[] dump, int tile)
         {
-            long i = 4 * VertexCache.FactorIndex(tile);
+            long i = (long)tile * TileFactorRecord.Stride / 4;
             return new TileFactorSet(new Float4(dump[i], dump[i + 1], dump[i + 2], dump[i + 3]), new Float2(dump[i + 4], dump[i + 5]));
         }
 
         /// <summary>
         /// The harness options of the vertex cache (GT_VERTEX_CACHE) for M = <paramref name="tiles"/>
-        /// and factor limit <paramref name="limit"/>: its two buffers (sized by Core's
+        /// and factor limit <paramref name="limit"/>: its three buffers (sized by Core's
         /// VertexCacheBudget), both kernels of <paramref name="variantDir"/> each frame
         /// (CacheTileFactors over M x M groups, CacheTileVertices over M x M x G), and dumps of both
         /// buffers after the last frame.
         /// </summary>
-        public static string[] VertexCacheArgs(string variantDir, int tiles, int limit, bool snow, string factorsDump, string recordsDump)
+        public static string[] VertexCacheArgs(string variantDir, int tiles, int limit, bool snow, string factorsDump, string recordsDump,
+                                               string cellsDump = null)
         {
             string m = tiles.ToString(CultureInfo.InvariantCulture);
+            string[] cells = cellsDump == null ? Array.Empty<string>() : new[] { "--dump-storage", "10:" + cellsDump };
             return new[]
             {
                 "--storage", "7:" + VertexCacheBudget.TileFactorsBytes(tiles).ToString(CultureInfo.InvariantCulture),
                 "--storage", "8:" + VertexCacheBudget.VertexCacheBytes(tiles, limit, snow).ToString(CultureInfo.InvariantCulture),
+                "--storage", "10:" + VertexCacheBudget.TileCellsBytes(tiles).ToString(CultureInfo.InvariantCulture),
                 "--compute", Path.Combine(variantDir, "cache_factors.spv") + ":" + m + "," + m + ",1",
                 "--compute", Path.Combine(variantDir, "cache_vertices.spv") + ":" + m + "," + m + "," + VertexCache.GroupsPerTile(limit).ToString(CultureInfo.InvariantCulture),
                 "--dump-storage", "7:" + factorsDump, "--dump-storage", "8:" + recordsDump,
-            };
+            }.Concat(cells).ToArray();
         }
 
         // ---- the draw -----------------------------------------------------------------------------

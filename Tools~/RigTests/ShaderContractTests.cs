@@ -276,6 +276,49 @@ namespace GregoryTerrain.Rig.Tests
             Assert.That(GpuLayout.PatchRecordStride, Is.EqualTo(compiled.recordStride), "GpuLayout.PatchRecordStride (the renderer's buffer stride)");
         }
 
+        /// <summary>
+        /// Core's cache records against the structs the compiler lays out for the kernels' buffers
+        /// (TerrainCache.compute): the stride the renderer gives each GraphicsBuffer, and every field
+        /// (an HlslArray field k at its array's element k) at its compiled byte.
+        /// </summary>
+        [TestCase("CacheTileFactors", null, "_TileFactorsRW", typeof(TileFactorRecord), TileFactorRecord.Stride)]
+        [TestCase("CacheTileFactors", null, "_TileCellsRW", typeof(TileCellRecord), TileCellRecord.Stride)]
+        [TestCase("LodFactorSeams", "GT_LOD", "_LodFactorsRW", typeof(LodFactorRecord), LodFactorRecord.Stride)]
+        public void CacheRecordsMatchTheCompiledStructs(string kernel, string keyword, string buffer, Type record, int stride)
+        {
+            string dir = Path.Combine(Path.GetTempPath(), "gt-contract-" + Guid.NewGuid().ToString("N"));
+            Directory.CreateDirectory(dir);
+            try
+            {
+                string spv = Path.Combine(dir, "kernel.spv");
+                var args = new List<string> { "-D", "-V", "-S", "comp", "-e", kernel, "-o", spv };
+                if (keyword != null) args.Add("-D" + keyword);
+                args.Add(PackageRoot.Combine("Shaders", "Cache", "TerrainCache.compute"));
+                ComputeRunner.Run("glslangValidator", args.ToArray());
+                using var doc = JsonDocument.Parse(ComputeRunner.Run("spirv-cross", spv, "--reflect"));
+                JsonElement types = doc.RootElement.GetProperty("types");
+                JsonElement ssbo = doc.RootElement.GetProperty("ssbos").EnumerateArray().Single(b => b.GetProperty("name").GetString() == buffer);
+                JsonElement data = types.GetProperty(ssbo.GetProperty("type").GetString()).GetProperty("members").EnumerateArray().Single();
+                JsonElement compiled = types.GetProperty(data.GetProperty("type").GetString());
+                Assert.That(compiled.GetProperty("name").GetString(), Is.EqualTo(record.Name), buffer + "'s element type");
+                Assert.That(data.GetProperty("array_stride").GetInt32(), Is.EqualTo(stride).And.EqualTo(Marshal.SizeOf(record)),
+                            $"{buffer}'s compiled stride vs {record.Name}.Stride and its C# size");
+                var offsets = new List<(string, int)>();
+                foreach (JsonElement m in compiled.GetProperty("members").EnumerateArray())
+                {
+                    int offset = m.GetProperty("offset").GetInt32();
+                    if (!m.TryGetProperty("array", out JsonElement array)) { offsets.Add((m.GetProperty("name").GetString(), offset)); continue; }
+                    for (int k = 0; k < array.EnumerateArray().Single().GetInt32(); k++)
+                        offsets.Add((m.GetProperty("name").GetString() + "[" + k + "]", offset + k * m.GetProperty("array_stride").GetInt32()));
+                }
+                var fields = record.GetFields(BindingFlags.Instance | BindingFlags.Public | BindingFlags.NonPublic)
+                    .Select(f => (int)Marshal.OffsetOf(record, f.Name)).OrderBy(o => o).ToList();
+                Assert.That(offsets.Select(o => o.Item2), Is.EqualTo(fields),
+                            $"{record.Name}: C# field offsets vs the compiled members ({string.Join(", ", offsets.Select(o => o.Item1 + " @" + o.Item2))})");
+            }
+            finally { Directory.Delete(dir, true); }
+        }
+
         /// <summary>The record comparison on a broken HLSL struct (19 points): it fails naming both sides.</summary>
         [Test]
         public void AShortHlslRecordFailsTheRecordComparison()

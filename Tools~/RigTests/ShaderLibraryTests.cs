@@ -349,7 +349,7 @@ namespace GregoryTerrain.Rig.Tests
             var lines = File.ReadAllLines(kernels).ToList();
             int barrier = lines.FindIndex(l => l.Trim() == "GroupMemoryBarrierWithGroupSync();");
             Assert.That(barrier, Is.GreaterThan(0), "no barrier in " + kernels);
-            lines.Insert(barrier, "    if (_TileFactorsRW[tile].x < 0.0) return;");
+            lines.Insert(barrier, "    if (_TileFactorsRW[tile].edge.x < 0.0) return;");
             File.WriteAllLines(kernels, lines);
             int line = barrier + 2;   // the barrier, 1-based, after the inserted line
             var (code, output) = RunScript("--package", copy.Root, "--shaderlib", ShaderLib, "--check", "pipelines",

@@ -37,12 +37,15 @@ namespace GregoryTerrain.Rig.Tests
         {
             public HarnessRun Run;
             public TerrainInputs Inputs;
-            public float[] Factors;
+            public float[] Factors, Cells;
             public uint[] Records;
             public int Tiles, Limit, Slots;
 
-            // The tile's factor record, float k of its two float4 (VertexCache.FactorIndex).
-            float Record(int tile, int k) => Factors[4 * VertexCache.FactorIndex(tile) + k];
+            // Float k of the tile's TileFactorRecord (edge, inside, slotsKey, cellKey).
+            float Record(int tile, int k) => Factors[tile * TileFactorRecord.Stride / 4 + k];
+
+            /// <summary>The key the tile's slots were last evaluated at (TileFactorRecord.slotsKey).</summary>
+            public Float4 SlotsKey(int tile) => new Float4(Record(tile, 8), Record(tile, 9), Record(tile, 10), Record(tile, 11));
 
             public TileFactorSet FactorsOf(int tile) => ReadbackRun.CacheTileFactors(Factors, tile);
 
@@ -52,7 +55,7 @@ namespace GregoryTerrain.Rig.Tests
             public bool Evaluated(int tile) => Record(tile, 7) != 0f;
 
             /// <summary>How the last frame decided the tile's cell factors (VertexCache.CellFactorsSampled, ...).</summary>
-            public float CellFactorsWay(int tile) => Factors[4 * (VertexCache.CellFactorIndex(tile, Tiles) + 1) + 2];
+            public float CellFactorsWay(int tile) => Cells[tile * TileCellRecord.Stride / 4 + 6];   // inside.z
 
             /// <summary>uint4 part of the record at a slot of a tile, as <see cref="VertexCache.Record"/> lays it out (no snow: one part).</summary>
             public (uint x, uint y, uint z, uint w) Part(int tile, int slot, int part)
@@ -86,7 +89,7 @@ namespace GregoryTerrain.Rig.Tests
             tiles = TileLattice.TilesAcross(p);   // M, or M + 1 with --anchor-at
             var frame = new CacheFrame { Tiles = tiles, Inputs = TerrainInputs.Create(_grid, p), Limit = VertexCache.FactorLimit(p.tess) };
             frame.Slots = VertexCache.SlotsPerTile(frame.Limit);
-            string factors = Path.Combine(dir, "tile_factors.f32"), records = Path.Combine(dir, "vertex_cache.u32");
+            string factors = Path.Combine(dir, "tile_factors.f32"), records = Path.Combine(dir, "vertex_cache.u32"), cells = Path.Combine(dir, "tile_cells.f32");
             var args = new List<string>(ReadbackRun.Stages(_spirv, Cached));
             args.AddRange(new[]
             {
@@ -94,13 +97,15 @@ namespace GregoryTerrain.Rig.Tests
                 "--width", width.ToString(CultureInfo.InvariantCulture), "--height", height.ToString(CultureInfo.InvariantCulture),
                 "--device", "llvmpipe", "--stats", "--png", Path.Combine(dir, "image.png"),
             });
-            args.AddRange(ReadbackRun.VertexCacheArgs(Path.Combine(_spirv, Cached), tiles, frame.Limit, false, factors, records));
+            args.AddRange(ReadbackRun.VertexCacheArgs(Path.Combine(_spirv, Cached), tiles, frame.Limit, false, factors, records, cells));
             args.AddRange(extra);
             frame.Run = HarnessRun.Harness(args.ToArray());
             frame.Run.AssertSucceeded();
             frame.Factors = ReadbackRun.ReadFloats(factors);
+            frame.Cells = ReadbackRun.ReadFloats(cells);
             frame.Records = ReadbackRun.ReadUints(records);
-            Assert.That(frame.Factors.Length, Is.EqualTo(4 * VertexCacheBudget.TileFactorsFloat4s(tiles)), "factors, range and factor samples of every tile");
+            Assert.That(frame.Factors.Length, Is.EqualTo(VertexCacheBudget.TileFactorsBytes(tiles) / 4), "factors and keys of every tile");
+            Assert.That(frame.Cells.Length, Is.EqualTo(VertexCacheBudget.TileCellsBytes(tiles) / 4), "cell factors, inputs and samples of every tile");
             Assert.That(frame.Records.Length, Is.EqualTo(4 * VertexCache.Uint4sPerRecord(false) * tiles * tiles * frame.Slots));
             return frame;
         }
@@ -262,8 +267,8 @@ namespace GregoryTerrain.Rig.Tests
         /// <summary>
         /// The layout the kernels and the domain stage address (Shaders/Cache/VertexCache.hlsl, the sample
         /// count of TileFactors.hlsl) is Core's, run on lavapipe through VertexCacheLayoutProbe.hlsl:
-        /// slots, groups and points a tile for every factor limit 1-64, the factor samples, the
-        /// factor-record and evaluated-range indices, the group's lanes and passes.
+        /// slots, groups and points a tile for every factor limit 1-64, the factor samples and inputs,
+        /// the group's lanes and passes (the records' layout: ShaderContractTests).
         /// </summary>
         [Test]
         public void ShaderLayoutIsCoresLayout()
@@ -288,16 +293,10 @@ namespace GregoryTerrain.Rig.Tests
                 Assert.That(U(lane, 1), Is.EqualTo(VertexCache.GroupsPerTile(limit)), at + ": groups a tile");
                 Assert.That(U(lane, 2), Is.EqualTo(VertexCache.MaxTilePoints(limit)), at + ": points a tile");
                 Assert.That(U(lane, 3), Is.EqualTo(VertexCache.FactorSamplesPerTile), "factor samples a tile");
-                Assert.That(U(lane, 4), Is.EqualTo(VertexCache.FactorIndex(lane)), at + ": factor record");
-                Assert.That(U(lane, 5), Is.EqualTo(VertexCache.EvaluatedRangeIndex(lane, 7)), at + ": evaluated range of 7 x 7 tiles");
-                Assert.That(U(lane, 8), Is.EqualTo(VertexCache.FactorSampleIndex(lane, lane % VertexCache.FactorSamplesPerTile, 7)), at + ": factor sample");
                 Assert.That(U(lane, 6), Is.EqualTo(VertexCache.FactorThreadsPerGroup), "lanes a factors group");
                 Assert.That(U(lane, 7), Is.EqualTo(VertexCache.PassesPerGroup), "passes a vertex group");
                 Assert.That(U(lane, 9), Is.EqualTo(VertexCache.VertexThreadsPerGroup), "lanes a vertex group");
-                Assert.That(U(lane, 10), Is.EqualTo(VertexCache.CellKeyIndex(lane, 7)), at + ": cell key");
-                Assert.That(U(lane, 11), Is.EqualTo(VertexCache.CellFactorIndex(lane, 7)), at + ": cell factors");
-                Assert.That(U(lane, 12), Is.EqualTo(VertexCache.FactorInputsIndex(lane, 7)), at + ": factor inputs");
-                Assert.That(U(lane, 13), Is.EqualTo(VertexCache.FactorInputsFloat4s), "float4 of factor inputs");
+                Assert.That(U(lane, 13), Is.EqualTo(TileCellRecord.InputCount), "float4 of factor inputs");
             }
         }
 
@@ -327,9 +326,8 @@ namespace GregoryTerrain.Rig.Tests
             for (int tile = 0; tile < tiles * tiles; tile++)
             {
                 Assert.That(moved.FactorsOf(tile), Is.EqualTo(fresh.FactorsOf(tile)), "tile " + tile);
-                long r = 4 * VertexCache.EvaluatedRangeIndex(tile, tiles);
                 if (!first.Culled(tile))
-                    Assert.That(new Float4(moved.Factors[r], moved.Factors[r + 1], moved.Factors[r + 2], moved.Factors[r + 3]), Is.EqualTo(planRange),
+                    Assert.That(moved.SlotsKey(tile), Is.EqualTo(planRange),
                                 "tile " + tile + ": the range its slots were evaluated at");
                 Assert.That(moved.Culled(tile), Is.EqualTo(fresh.Culled(tile)), "tile " + tile);
                 if (fresh.Culled(tile)) { Assert.That(moved.Evaluated(tile), Is.False, "culled tile " + tile); continue; }
@@ -408,8 +406,7 @@ namespace GregoryTerrain.Rig.Tests
                 if (!ClippedCell.CellKeptWhole(TileLattice.TileKeptCellSpan(shifted, tile))) clipped++;
                 Assert.That(panned.Evaluated(tile), Is.EqualTo(!sameCell), "tile " + tile + ": evaluated exactly when the pan brought its cell in");
                 if (!sameCell) evaluated++;
-                long r = 4 * VertexCache.EvaluatedRangeIndex(tile, panned.Tiles);
-                Assert.That(new Float4(panned.Factors[r], panned.Factors[r + 1], panned.Factors[r + 2], panned.Factors[r + 3]),
+                Assert.That(panned.SlotsKey(tile),
                             Is.EqualTo(TileLattice.CellSpan(p, tile)), "tile " + tile + ": its record holds the cell its slots hold");
                 foreach (var (_, slot) in VertexCache.TilePoints(fresh.FactorsOf(tile), fresh.Limit, anchored: true))
                     for (int part = 0; part < VertexCache.Uint4sPerRecord(false); part++, slots++)

@@ -64,7 +64,7 @@ def stages_of(keywords):
     return STAGES + (CACHE_STAGES if "GT_VERTEX_CACHE" in keywords else []) + (LOD_STAGES if "GT_LOD" in keywords else [])
 
 # HLSL register -> Vulkan binding (set 0): b0 -> 0, b1 -> 1 (no shift), t0..t2 -> 2..4 (+2),
-# u0 -> 5 (+5), t4 -> 6 (+2; GT_SNOW's _SnowDepth), t5/u2 -> 7 and t6/u3 -> 8 (GT_VERTEX_CACHE; GT_LOD's t5/u2 too), t7 -> 9 (GT_NOISE_TABLE's _NoiseCells). glslang applies the shift of each register class
+# u0 -> 5 (+5), t4 -> 6 (+2; GT_SNOW's _SnowDepth), t5/u2 -> 7 and t6/u3 -> 8 (GT_VERTEX_CACHE; GT_LOD's t5/u2 too), t7 -> 9 (GT_NOISE_TABLE's _NoiseCells), u5 -> 10 (the cache kernels' _TileCellsRW). glslang applies the shift of each register class
 # with --hlsl-iomap.
 REGISTER_SHIFTS = ["--shift-cbuffer-binding", "0", "--shift-texture-binding", "2",
                    "--shift-UAV-binding", "5"]
@@ -74,7 +74,7 @@ EXPECTED_BINDINGS = {
     "_SnowDepth": 6,
     "_TileFactors": 7, "_TileFactorsRW": 7, "_VertexCache": 8, "_VertexCacheRW": 8,
     "_LodFactors": 7, "_LodFactorsRW": 7,
-    "_NoiseCells": 9,
+    "_NoiseCells": 9, "_TileCellsRW": 10,
 }
 TERRAIN_PARAMS_BYTES = 176   # 11 float4
 SNOW_PARAMS_BYTES = 16       # GT_SNOW appends _SnowMapSize to TerrainParams

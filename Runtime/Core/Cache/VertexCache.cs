@@ -101,42 +101,6 @@ namespace GregoryTerrain
             return (MaxTilePoints(limit) + perGroup - 1) / perGroup;
         }
 
-        /// <summary>
-        /// Index of tile t's factor record in <c>_TileFactors</c>: float4 (edges), then (inside 0-1,
-        /// culled, evaluate). HLSL <c>VertexCacheFactorIndex</c>.
-        /// </summary>
-        public static long FactorIndex(int tile) => 2L * tile;
-
-        /// <summary>
-        /// Index in <c>_TileFactors</c> of the key tile t's slots were last evaluated at, after the T^2
-        /// factor records. HLSL <c>VertexCacheEvaluatedRangeIndex</c>.
-        /// </summary>
-        public static long EvaluatedRangeIndex(int tile, int tiles) => 2L * tiles * tiles + tile;
-
-        /// <summary>
-        /// Index in <c>_TileFactors</c> of the key of tile t's cell, right after the slots' keys (one upload
-        /// of 2 T^2 zeros forgets both). HLSL <c>VertexCacheCellKeyIndex</c>.
-        /// </summary>
-        public static long CellKeyIndex(int tile, int tiles) => 3L * tiles * tiles + tile;
-
-        /// <summary>float4 of keys per tile that a renderer zeroes to make the kernels evaluate the tile afresh: the slots' and the cell's.</summary>
-        public const int KeyFloat4sPerTile = 2;
-
-        /// <summary>Index in <c>_TileFactors</c> of factor sample s of tile t, after the keys. HLSL <c>VertexCacheFactorSampleIndex</c>.</summary>
-        public static long FactorSampleIndex(int tile, int s, int tiles) => 4L * tiles * tiles + (long)tile * FactorSamplesPerTile + s;
-
-        /// <summary>Index in <c>_TileFactors</c> of tile t's cell factors (2 float4, before rounding). HLSL <c>VertexCacheCellFactorIndex</c>.</summary>
-        public static long CellFactorIndex(int tile, int tiles) => (4L + FactorSamplesPerTile) * tiles * tiles + 2L * tile;
-
-        /// <summary>
-        /// Index in <c>_TileFactors</c> of the inputs tile t's cell factors were computed with
-        /// (<see cref="FactorInputsFloat4s"/> float4). HLSL <c>VertexCacheFactorInputsIndex</c>.
-        /// </summary>
-        public static long FactorInputsIndex(int tile, int tiles) => (6L + FactorSamplesPerTile) * tiles * tiles + (long)FactorInputsFloat4s * tile;
-
-        /// <summary>float4 per tile of <see cref="FactorInputsIndex"/>.</summary>
-        public const int FactorInputsFloat4s = 5;
-
         /// <summary>How the last pass decided a tile's cell factors (HLSL <c>GT_CELL_FACTORS_*</c>).</summary>
         public const float CellFactorsSampled = 0f, CellFactorsRescaled = 1f, CellFactorsHeld = 2f;
 

@@ -3,7 +3,7 @@ using System;
 namespace GregoryTerrain
 {
     /// <summary>
-    /// Sizes of the vertex cache's two buffers (GT_VERTEX_CACHE; internals.md, "Vertex cache"), for the
+    /// Sizes of the vertex cache's three buffers (GT_VERTEX_CACHE; internals.md, "Vertex cache"), for the
     /// Unity renderer and its inspector. Pure arithmetic from M, the factor limit L
     /// (<see cref="VertexCache.FactorLimit(Float4)"/>) and the snow flag; the slot layout itself is
     /// <see cref="VertexCache"/>'s, this class only counts.
@@ -14,51 +14,29 @@ namespace GregoryTerrain
     /// <item>Slots per tile <c>S(L) = (L+1)^2 + 4 (L+1)</c>: the inside grid of the largest inside
     /// factors, then each of the four edges' <c>L+1</c> points.</item>
     /// <item>uint4 per slot <c>R</c>: 1, or 2 with GT_SNOW.</item>
-    /// <item><c>_TileFactors</c>: <c>62 M^2</c> float4 (992 M^2 bytes); <c>_VertexCache</c>:
-    /// <c>M^2 S(L) R</c> uint4 (16 bytes each).</item>
+    /// <item><c>_TileFactors</c>: <c>M^2</c> <see cref="TileFactorRecord"/> (64 M^2 bytes); <c>_TileCells</c>:
+    /// <c>M^2</c> <see cref="TileCellRecord"/> (928 M^2 bytes); <c>_VertexCache</c>: <c>M^2 S(L) R</c> uint4 (16 bytes each).</item>
     /// </list>
     /// </summary>
     internal static class VertexCacheBudget
     {
-        /// <summary>float4 per tile in <c>_TileFactors</c>' first part: (edges 0-3), (inside 0-1, culled, evaluated).</summary>
-        public const int TileFactorFloat4s = 2;
+        /// <summary>Bytes of <c>_TileFactors</c>: 64 M^2.</summary>
+        public static long TileFactorsBytes(int tiles) => Tiles(tiles) * TileFactorRecord.Stride;
 
-        /// <summary>float4 per tile in its second part: the keys of the tile's slots and of its cell.</summary>
-        public const int KeyFloat4s = VertexCache.KeyFloat4sPerTile;
-
-        /// <summary>float4 per tile in its third part: the positions of its factor samples.</summary>
-        public const int FactorSampleFloat4s = VertexCache.FactorSamplesPerTile;
-
-        /// <summary>float4 per tile in its fourth part: its cell's factors and the inputs they were computed with.</summary>
-        public const int CellFactorFloat4s = 2 + VertexCache.FactorInputsFloat4s;
-
-        /// <summary>float4 per tile in all: 2 + 2 + 51 + 7 = 62.</summary>
-        public const int TileFactorsFloat4sPerTile = TileFactorFloat4s + KeyFloat4s + FactorSampleFloat4s + CellFactorFloat4s;
-
-        /// <summary>float4 elements of <c>_TileFactors</c>: 62 M^2 (factor records, keys, factor samples, cell factors).</summary>
-        public static long TileFactorsFloat4s(int tiles)
-        {
-            CheckTiles(tiles);
-            return TileFactorsFloat4sPerTile * (long)tiles * tiles;
-        }
-
-        /// <summary>Bytes of <c>_TileFactors</c>: 992 M^2.</summary>
-        public static long TileFactorsBytes(int tiles) => TileFactorsFloat4s(tiles) * GpuLayout.Float4Stride;
+        /// <summary>Bytes of <c>_TileCells</c>: 928 M^2.</summary>
+        public static long TileCellsBytes(int tiles) => Tiles(tiles) * TileCellRecord.Stride;
 
         /// <summary>uint4 elements of <c>_VertexCache</c>: M^2 S(L) R.</summary>
-        public static long VertexCacheUint4s(int tiles, int factorLimit, bool snow)
-        {
-            CheckTiles(tiles);
-            return (long)tiles * tiles * VertexCache.SlotsPerTile(factorLimit) * VertexCache.Uint4sPerRecord(snow);
-        }
+        public static long VertexCacheUint4s(int tiles, int factorLimit, bool snow) =>
+            Tiles(tiles) * VertexCache.SlotsPerTile(factorLimit) * VertexCache.Uint4sPerRecord(snow);
 
         /// <summary>Bytes of <c>_VertexCache</c>: 16 M^2 S(L) R.</summary>
         public static long VertexCacheBytes(int tiles, int factorLimit, bool snow) =>
             VertexCacheUint4s(tiles, factorLimit, snow) * GpuLayout.Uint4Stride;
 
-        /// <summary>GPU memory of both buffers together.</summary>
+        /// <summary>GPU memory of the three buffers together.</summary>
         public static long TotalBytes(int tiles, int factorLimit, bool snow) =>
-            TileFactorsBytes(tiles) + VertexCacheBytes(tiles, factorLimit, snow);
+            TileFactorsBytes(tiles) + TileCellsBytes(tiles) + VertexCacheBytes(tiles, factorLimit, snow);
 
         /// <summary>
         /// Throws ArgumentException, naming the settings and the bytes, when either buffer is larger
@@ -77,16 +55,18 @@ namespace GregoryTerrain
                 throw new ArgumentException(FormattableString.Invariant(
                     $"the vertex cache for tiles = {tiles}, factor limit {factorLimit}{(snow ? ", snow" : "")} needs {cache} bytes (_VertexCache = M^2 ((L+1)^2 + 4 (L+1)) x {VertexCache.Uint4sPerRecord(snow)} uint4), more than the largest buffer, {limit} bytes; lower tiles or the max/uniform factor, or evaluate in the domain stage"),
                     "tiles");
-            long factors = TileFactorsBytes(tiles);
-            if (factors > limit)
+            long cells = TileCellsBytes(tiles);
+            if (cells > limit)
                 throw new ArgumentException(FormattableString.Invariant(
-                    $"the tile factors for tiles = {tiles} need {factors} bytes (_TileFactors = 992 M^2), more than the largest buffer, {limit} bytes"), "tiles");
+                    $"the tile cells for tiles = {tiles} need {cells} bytes (_TileCells = 928 M^2), more than the largest buffer, {limit} bytes"), "tiles");
         }
 
-        static void CheckTiles(int tiles)
+        // M^2, the records of each per-tile buffer.
+        static long Tiles(int tiles)
         {
             if (tiles < 1 || tiles > 1024)
                 throw new ArgumentException(FormattableString.Invariant($"tiles ({tiles}) must lie in [1, 1024]"), nameof(tiles));
+            return (long)tiles * tiles;
         }
     }
 }

@@ -19,12 +19,6 @@ namespace GregoryTerrain
         /// <summary>Tiles a level draws: M x M on its range.</summary>
         public static int TilesPerLevel(int tiles) => tiles * tiles;
 
-        /// <summary>
-        /// The factor kernels' record of a draw patch in <c>_LodFactors</c>, in float4s (HLSL
-        /// <c>GT_LOD_FACTOR_FLOAT4S</c>, Shaders/Pipelines/LevelTiles.hlsl): factors, then pieces.
-        /// </summary>
-        public const int FactorFloat4sPerPatch = 4;
-
         /// <summary>The level draw patch <paramref name="drawPatch"/> belongs to. HLSL <c>LodLevelOfPatch</c>.</summary>
         public static int LevelOfPatch(int drawPatch, int tiles) => drawPatch / TilesPerLevel(tiles);
 

@@ -348,25 +348,21 @@ namespace GregoryTerrain.Rig
 
         /// <summary>
         /// The vertex cache's buffers and kernels for the harness (internals.md, "Vertex cache"): _TileFactors at
-        /// binding 7 (992 bytes a tile), _VertexCache at binding 8, CacheTileFactors over M x M
+        /// binding 7 (64 bytes a tile), _VertexCache at binding 8, _TileCells at binding 10 (928 bytes a tile), CacheTileFactors over M x M
         /// groups (one a tile), then CacheTileVertices over M x M x G groups (G = VertexCache.GroupsPerTile), each frame before the draw.
         /// </summary>
         public static string CacheArgs(string variant, TessellationSettings t) => CacheArgs(variant, t, t.tiles);
 
         /// <summary><see cref="CacheArgs(string, TessellationSettings)"/> for T x T tiles (anchored: M + 1).</summary>
         public static string CacheArgs(string variant, TessellationSettings t, int across) =>
-            Inv($"--storage 7:{TileFactorsBytes(across)} --storage 8:{VertexCacheBudget.VertexCacheBytes(across, VertexCache.FactorLimit(t), snow: false)} ")
+            Inv($"--storage 7:{TileFactorsBytes(across)} --storage 8:{VertexCacheBudget.VertexCacheBytes(across, VertexCache.FactorLimit(t), snow: false)} --storage 10:{VertexCacheBudget.TileCellsBytes(across)} ")
             + Inv($"--compute @SPV@/{variant}/cache_factors.spv:{across},{across},1 --compute @SPV@/{variant}/cache_vertices.spv:{across},{across},{VertexCache.GroupsPerTile(VertexCache.FactorLimit(t))}");
 
-        /// <summary>
-        /// The factor records of _TileFactors only (2 float4 a tile, what the report reads): the whole
-        /// buffer, with its ranges and factor samples, is 27 times that and would not come back from a
-        /// GPU machine in one piece at 64 tiles and more.
-        /// </summary>
+        /// <summary>The first M^2 records of _TileFactors, 64 bytes a tile: what the report reads.</summary>
         static string FactorRecordsDump(int tiles, string name) =>
-            Inv($"--dump-storage-prefix 7:{(long)VertexCacheBudget.TileFactorFloat4s * GpuLayout.Float4Stride * tiles * tiles}:@OUT@/readback/{name}.tiles.f32");
+            Inv($"--dump-storage-prefix 7:{VertexCacheBudget.TileFactorsBytes(tiles)}:@OUT@/readback/{name}.tiles.f32");
 
-        /// <summary>_TileFactors: 62 float4 a tile (Core's VertexCacheBudget, the shaders' layout).</summary>
+        /// <summary>_TileFactors: a TileFactorRecord a tile (Core's VertexCacheBudget).</summary>
         public static long TileFactorsBytes(int tiles) => VertexCacheBudget.TileFactorsBytes(tiles);
 
         /// <summary>_VertexCache: M^2 S(L) slots of one uint4 (no GT_SNOW in the bench), L = ceil(uniform F or max factor).</summary>

@@ -49,33 +49,36 @@ namespace GregoryTerrain.Rig
 
         /// <summary>
         /// Reads a dump of the vertex cache's <c>_TileFactors</c> (binding 7, harness --dump-storage):
-        /// 2 float4 per tile, (edge0..3), (inside0, inside1, culled 1/0, evaluated 1/0), and checks the
+        /// a TileFactorRecord per tile, (edge0..3), (inside0, inside1, culled 1/0, evaluated 1/0), keys, and checks the
         /// contract the domain stage's slot grid relies on: a culled tile is all 0 and not evaluated; a
         /// drawn one has six integers in
         /// [1, 64] and, unless all six are 1, inside factors of at least 2. A tile the kernel never
         /// wrote (the buffer starts zero-filled) reads as drawn with factor 0 and is refused.
         /// </summary>
-        /// <summary>The layout FromTileFactors reads (2 float4 a tile), e.g. for Core's prediction.</summary>
+        /// <summary>Floats of a tile's record in the dump (TileFactorRecord: edge, inside, keys).</summary>
+        public const int TileRecordFloats = TileFactorRecord.Stride / 4;
+
+        /// <summary>The layout FromTileFactors reads (a TileFactorRecord a tile, keys 0), e.g. for Core's prediction.</summary>
         public static float[] ToTileFactors(PatchFactors[] f)
         {
-            var r = new float[8 * f.Length];
+            var r = new float[TileRecordFloats * f.Length];
             for (int p = 0; p < f.Length; p++)
             {
-                if (f[p].culled) { r[8 * p + 6] = 1f; continue; }
+                if (f[p].culled) { r[TileRecordFloats * p + 6] = 1f; continue; }
                 var v = new[] { f[p].e0, f[p].e1, f[p].e2, f[p].e3, f[p].i0, f[p].i1 };
-                for (int k = 0; k < 6; k++) r[8 * p + k] = (float)v[k];
+                for (int k = 0; k < 6; k++) r[TileRecordFloats * p + k] = (float)v[k];
             }
             return r;
         }
 
         public static PatchFactors[] FromTileFactors(float[] r, int tiles)
         {
-            if (r.Length < 8 * tiles)
-                throw new FormatException($"_TileFactors dump holds {r.Length} floats, {8 * tiles} expected for {tiles} tiles");
+            if (r.Length < TileRecordFloats * tiles)
+                throw new FormatException($"_TileFactors dump holds {r.Length} floats, {TileRecordFloats * tiles} expected for {tiles} tiles");
             var f = new PatchFactors[tiles];
             for (int p = 0; p < tiles; p++)
             {
-                int o = 8 * p;
+                int o = TileRecordFloats * p;
                 string Where() => $"_TileFactors tile {p} ({string.Join(", ", Array.ConvertAll(r[o..(o + 8)], x => x.ToString("R", System.Globalization.CultureInfo.InvariantCulture)))})";
                 if (r[o + 7] != 0f && r[o + 7] != 1f) throw new FormatException($"{Where()}: the evaluated flag is neither 0 nor 1");
                 if (r[o + 6] == 1f)

@@ -198,7 +198,7 @@ namespace GregoryTerrain.Rig
         };
 
         /// <summary>The hull's <c>_LodFactors</c> (binding 7): "7:BYTES", read only with <see cref="KernelFactors"/>, declared either way.</summary>
-        public string FactorStorage => FormattableString.Invariant($"7:{16 * LodTiles.FactorFloat4sPerPatch * Patches}");
+        public string FactorStorage => FormattableString.Invariant($"7:{LodFactorRecord.Stride * Patches}");
 
         /// <summary>
         /// The factor kernels as the renderer dispatches them before the draw, every frame: harness
