@@ -163,6 +163,32 @@ namespace GregoryTerrain.Rig.Tests
             Assert.That(changed, Is.Zero, "pixels whose depth ForwardOnly changed (its depth is not the prepass's)");
         }
 
+        [Test]
+        public void TheFramesStencil_HoldsHdrpsIsUnlitBit_UnderTheTerrain_AfterBothPasses_AndZeroElsewhere()
+        {
+            // DepthForwardOnly: Stencil { WriteMask 9 Ref 1 Comp Always Pass Replace } over the clear (0) writes 1 & 9 = 1
+            // (HDStencilUsage.cs.hlsl: IsUnlit 1, TraceReflectionRay 8 cleared); ForwardOnly's { WriteMask 6 Ref 0 ... } clears
+            // RequiresDeferredLighting 2 and SubsurfaceScattering 4 only, so 1 stays. Covered: the prepass's depth is not the clear.
+            float[] prepass = Floats(Path.Combine(_out, "hdrp_lit_depth_in.f32"));
+            byte[] afterDepth = File.ReadAllBytes(Path.Combine(_out, "hdrp_depth_stencil.u8"));
+            byte[] afterForward = File.ReadAllBytes(Path.Combine(_out, "hdrp_lit_stencil.u8"));
+            Assert.That(afterDepth.Length, Is.EqualTo(prepass.Length), "one stencil byte per pixel");
+            Assert.That(afterForward.Length, Is.EqualTo(prepass.Length), "one stencil byte per pixel");
+            int covered = prepass.Count(d => d != 0f);
+            int wrongDepth = Enumerable.Range(0, prepass.Length).Count(p => afterDepth[p] != (prepass[p] != 0f ? 1 : 0));
+            int wrongForward = Enumerable.Range(0, prepass.Length).Count(p => afterForward[p] != (prepass[p] != 0f ? 1 : 0));
+            string values(byte[] s) => string.Join(", ", s.GroupBy(b => b).OrderBy(g => g.Key).Select(g => $"{g.Key}: {g.Count()}"));
+            TestContext.Out.WriteLine($"covered {covered}; stencil after DepthForwardOnly {{{values(afterDepth)}}}, after ForwardOnly {{{values(afterForward)}}}");
+            Assert.That(covered, Is.GreaterThan(prepass.Length / 5), "pixels the prepass covered");
+            Assert.That(wrongDepth, Is.Zero, "pixels whose stencil after DepthForwardOnly is not 1 under the terrain, 0 elsewhere");
+            Assert.That(wrongForward, Is.Zero, "pixels whose stencil after ForwardOnly is not 1 under the terrain, 0 elsewhere");
+            string depthLog = File.ReadAllText(Path.Combine(_out, "hdrp_depth", "harness.log"));
+            string litLog = File.ReadAllText(Path.Combine(_out, "hdrp_lit", "harness.log"));
+            Assert.That(depthLog, Does.Contain("--stencil WriteMask 9 Ref 1 Comp Always Pass Replace"), "DepthForwardOnly's ShaderLab Stencil block");
+            Assert.That(litLog, Does.Contain("--stencil WriteMask 6 Ref 0 Comp Always Pass Replace").And.Contain("--stencil-in"),
+                "ForwardOnly's block, over the prepass's stencil");
+        }
+
         /// <summary>Over the frame: pixels the prepass covered that the forward picture leaves sky (holes), pixels it shades
         /// outside them, pixels whose depth after the forward pass differs from the one it loaded (bits), and the covered count.</summary>
         public static (int Holes, int Outside, int Changed, int Covered) FrameCoverage(string output, RigPng forward)

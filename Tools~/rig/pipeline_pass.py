@@ -835,6 +835,7 @@ def prepare(a, pipeline, pass_name, keywords, buffers, out, compiler="glslang", 
     where = f"SubShader {sub.index} ({sub.pipeline}) Pass \"{pas.name}\""
     st = render_state.pass_state(sub, pas, where)
     state = [x for name in render_state.COMMANDS for x in (render_state.COMMANDS[name][0], st[name])]
+    state += render_state.stencil_options(sub, pas, where)
     args = []
     for stage in STAGES:
         if stage in spvs:
@@ -992,7 +993,7 @@ def draw(args, buffers, png, log, size=(WIDTH, HEIGHT), depth_out=None, color_fo
     if r.returncode != 0:
         raise SystemExit(f"pipeline-pass: error: the harness failed ({log}):\n{r.stdout[-2000:]}{r.stderr}")
     print(f"picture {png or depth_out} " + " ".join(l for l in r.stdout.splitlines()
-                                                    if l.startswith(("image ", "state ", "depth_out ", "target1 "))))
+                                                    if l.startswith(("image ", "state ", "depth_out ", "target1 ", "stencil_"))))
 
 
 def shadow_map_texels(depth_out, texels, n):

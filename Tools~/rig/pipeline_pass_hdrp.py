@@ -18,23 +18,25 @@ Pictures (OUT/<picture>.png, OUT/<picture>/manifest.json as pipeline_pass.py wri
   hdrp_lit     HDRP's ForwardOnly, base variant (SHADOW_LOW: its multi_compile_fragment set has no '_'),
                drawn as HDRP draws it: over DepthForwardOnly's depth (--depth-in hdrp_depth_depth.f32;
                its own depth after the pass in OUT/hdrp_lit_depth.f32), with the pass's ZTest and ZWrite
+               Each HDRP pass draws with its Stencil block; DepthForwardOnly's stencil (cleared to 0) is
+               OUT/hdrp_depth_stencil.u8, ForwardOnly starts from it and leaves OUT/hdrp_lit_stencil.u8
   hdrp_lit_far the same pass on a cleared depth, the whole scene 50 km from the world's origin
   hdrp_lit_near the same at the origin, positions rounded as float32 rounds them 50 km away
 
   gt pipeline_pass_hdrp [--out DIR] [--only PICTURE]... [--sun-elevation DEG] [--sun-azimuth DEG]
       [--light-color R,G,B] [--leave-default NAME]... [--flip-light-forward]
-      [--depth-nudge-ulps N] [--depth-pass-factor F]
+      [--depth-nudge-ulps N] [--depth-pass-factor F] [--break-stencil write-mask|pass-keep]
 --leave-default NAME leaves a member, buffer or image of HDRP's scene to its default (_ExposureTexture:
 pipeline_pass.py's 1x1 texel of multiplier 1); --flip-light-forward writes the light's forward with the
 wrong sign (towards the sun); --depth-nudge-ulps moves every written depth of the prepass N float32 steps
 (positive: nearer, under reversed depth) before ForwardOnly loads it; --depth-pass-factor draws
-DepthForwardOnly with the uniform tessellation factor F instead of the scene's: the tests' broken inputs.
+DepthForwardOnly with the uniform tessellation factor F instead of the scene's; --break-stencil draws both
+HDRP passes' Stencil blocks without their WriteMask, or with Pass Keep: the tests' broken inputs.
 """
 import argparse
 import json
 import math
 import os
-import re
 import shutil
 import struct
 import sys
@@ -464,11 +466,16 @@ def nudged(depth, out, ulps, clear=0.0):
     return out
 
 
-def stencil(pass_name):
-    """The pass's Stencil block in one line: HDRP's stencil bits, which the harness does not draw."""
-    _, pas = pp.find_pass("HDRP", pass_name)
-    m = re.search(r"\bStencil\s*\{([^}]*)\}", pas.shaderlab)
-    return "Stencil { " + " ".join(m.group(1).split()) + " }" if m else "no Stencil"
+def broken_stencil(args, how):
+    """args with the --stencil block broken as --break-stencil says (None: as ShaderLab writes it)."""
+    if not how or "--stencil" not in args:
+        return args
+    at = args.index("--stencil") + 1
+    words = args[at].split()
+    pairs = [(c, v) for c, v in zip(words[::2], words[1::2])
+             if not (how == "write-mask" and c.lower() == "writemask")]
+    pairs = [(c, "Keep" if how == "pass-keep" and c.lower() == "pass" else v) for c, v in pairs]
+    return args[:at] + [" ".join(f"{c} {v}" for c, v in pairs)] + args[at + 1:]
 
 
 # ---------------------------------------------------------------------------------------------
@@ -507,6 +514,8 @@ def main(argv=None):
     ap.add_argument("--transpose-atlas", action="store_true", help="the cascade atlas sampled transposed (broken)")
     options.add_number(ap, "--depth-nudge-ulps", range="ulps", default=0,
                     help="N: the prepass's depth moved N float32 steps before ForwardOnly loads it (broken; -8..8)")
+    ap.add_argument("--break-stencil", choices=["write-mask", "pass-keep"],
+                    help="both HDRP passes' Stencil blocks without WriteMask, or with Pass Keep (broken)")
     options.add_number(ap, "--depth-pass-factor", range="factor", default=0,
                        help="F: DepthForwardOnly's uniform tessellation factor instead of the scene's (broken; default 0: the scene's)")
     a = ap.parse_args(argv)
@@ -547,12 +556,15 @@ def main(argv=None):
         args = pp.prepare(scene, pipeline, pass_name, keywords, drawn, folder)
         if pipeline == "HDRP":
             check_buffer_reads(folder)
-            print(f"not reproduced: {pass_name} {stencil(pass_name)} (the harness has no stencil)")
+            args = broken_stencil(args, a.break_stencil)
         # The normal buffer's depth and view (the test recovers each pixel's position, as pipeline_pass.py's
         # depth_normals); hdrp_lit keeps that depth target, as HDRP's frame does, and writes it back after its pass.
         depth = os.path.join(a.out, picture + "_depth.f32") if picture in ("hdrp_depth", "hdrp_lit") else None
         if picture == "hdrp_lit":       # what it loads, also kept as OUT/hdrp_lit_depth_in.f32 for the tests
-            args = args + ["--depth-in", nudged(prepass, os.path.join(a.out, "hdrp_lit_depth_in.f32"), a.depth_nudge_ulps)]
+            args = args + ["--depth-in", nudged(prepass, os.path.join(a.out, "hdrp_lit_depth_in.f32"), a.depth_nudge_ulps),
+                           "--stencil-in", os.path.join(a.out, "hdrp_depth_stencil.u8")]
+        if picture in ("hdrp_depth", "hdrp_lit"):     # the frame's stencil, as DepthForwardOnly and ForwardOnly leave it
+            args = args + ["--stencil-out", os.path.join(a.out, picture + "_stencil.u8")]
         pp.draw(args, drawn if picture == "hdrp_depth" else buffers, os.path.join(a.out, picture + ".png"),
                 os.path.join(folder, "harness.log"), depth_out=depth)
         if picture == "hdrp_depth":

@@ -12,6 +12,9 @@ does not name takes the SubShader's, else ShaderLab's default (Cull Back, ZTest 
 ZClip True, ColorMask RGBA). A value read from a material property ("Cull [_Cull]") has no value
 here: it fails naming the pass and the command. Exit 0, or 2 with one "render_state: ..." line.
 
+The pass's Stencil block (stencil_options) is read apart: the rig's standalone target has no stencil,
+so this line leaves it out; pipeline_pass.py gives it to the harness as --stencil for the pass it draws.
+
 The SubShader and Pass blocks come from shaderlab.py's parser (parse_shader).
 """
 import argparse
@@ -36,6 +39,14 @@ COLOR_MASK = re.compile(r"^(0|r?g?b?a?)$")
 # A property a command reads ("ZClip [_ZClip]") that the drawing pipeline sets globally (CommandBuffer.SetGlobalFloat),
 # as a ShaderLab value: a caller that draws such a pass sets it here (pipeline_pass_hdrp.py: HDRP's _ZClip).
 GLOBAL_PROPERTIES = {}
+
+
+# ShaderLab's Stencil commands (lower case) -> the words they take; Ref and the masks take 0..255.
+STENCIL_COMPARE = {"never", "less", "equal", "lequal", "greater", "notequal", "gequal", "always"}
+STENCIL_OPS = {"keep", "zero", "replace", "incrsat", "decrsat", "invert", "incrwrap", "decrwrap"}
+STENCIL_COMMANDS = {"ref": None, "readmask": None, "writemask": None,
+                    **{stem + face: (STENCIL_COMPARE if stem == "comp" else STENCIL_OPS)
+                       for stem in ("comp", "pass", "fail", "zfail") for face in ("", "front", "back")}}
 
 
 class RenderStateError(Exception):
@@ -69,6 +80,44 @@ def commands(text, where):
             raise RenderStateError(f"{where}: {word} '{value}' is not a value ShaderLab takes")
         out[word] = {"true": "on", "false": "off"}.get(low, low)
     return out
+
+
+def stencil_block(text, where):
+    """The body of the Stencil block written directly in text (a pass's or SubShader's own part), its
+    commands checked and [_Property] values filled from GLOBAL_PROPERTIES, as one line; None without one."""
+    m = re.search(r"\bStencil\s*\{([^{}]*)\}", re.sub(r'"[^"]*"', " ", text))
+    if not m:
+        return None
+    words = m.group(1).split()
+    if not words or len(words) % 2:
+        raise RenderStateError(f"{where}: Stencil {{{m.group(1).strip()}}} is not command-value pairs")
+    out, seen = [], set()
+    for command, value in zip(words[::2], words[1::2]):
+        key = command.lower()
+        if key not in STENCIL_COMMANDS:
+            raise RenderStateError(f"{where}: Stencil command '{command}' is not one ShaderLab takes")
+        if key in seen:
+            raise RenderStateError(f"{where}: Stencil {command} is given twice")
+        seen.add(key)
+        if value.startswith("[") and value[1:-1] in GLOBAL_PROPERTIES:
+            value = GLOBAL_PROPERTIES[value[1:-1]]
+        if value.startswith("["):
+            raise RenderStateError(f"{where}: Stencil {command} {value} reads a material property, which has no value here")
+        words_taken = STENCIL_COMMANDS[key]
+        ok = value.isdigit() and int(value) <= 255 if words_taken is None else value.lower() in words_taken
+        if not ok:
+            raise RenderStateError(f"{where}: Stencil {command} '{value}' is not a value ShaderLab takes")
+        out.append(f"{command} {value}")
+    return " ".join(out)
+
+
+def stencil_options(sub, p, where):
+    """["--stencil", body] for the pass's Stencil block (else the SubShader's), or [] where neither has
+    one: Unity's default, the stencil test off."""
+    body = stencil_block(p.shaderlab, where)
+    if body is None:
+        body = stencil_block(re.sub(r"\bPass\s*\{.*", "", sub.outer, flags=re.S), f"{where} (SubShader)")
+    return [] if body is None else ["--stencil", body]
 
 
 def pass_state(sub, p, where):

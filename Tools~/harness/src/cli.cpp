@@ -232,6 +232,12 @@ const char* usageText() {
                                  (upright) image, as in Unity; ZClip off clamps depth
   --depth-bias UNITS,SLOPE       Unity's depth bias (SetGlobalDepthBias(bias, slopeBias); ShaderLab's
                                  Offset SLOPE, UNITS): away from the viewer, negated when reversed
+  --stencil "Ref 1 WriteMask 9 Comp Always Pass Replace"   the pass's ShaderLab Stencil block (its
+                                 body; Ref ReadMask WriteMask 0..255, Comp Pass Fail ZFail, each also
+                                 with Front or Back): a D32_SFLOAT_S8_UINT attachment, stencil cleared
+                                 to 0; without it D32 and no stencil test, as Unity's default
+  --stencil-out FILE             write the stencil after the last frame: W*H bytes, top row first
+  --stencil-in FILE              the stencil starts as FILE (--stencil-out's layout; one frame)
   --depth reversed|forward       depth convention (default reversed, as Unity on Vulkan: near 1,
                                  far 0, cleared to 0, ZTest turned around: LEqual draws GEQUAL);
                                  the camera's projection must use the same one
@@ -361,6 +367,9 @@ Options parseOptions(int argc, char** argv) {
         else if (a == "--zclip") o.state.zClip = parseOnOff(a, value());
         else if (a == "--depth-bias") parseDepthBias(a, value(), o.state);
         else if (a == "--color-mask") o.state.colorMask = parseColorMask(a, value());
+        else if (a == "--stencil") o.state.stencil = parseStencil(a, value());
+        else if (a == "--stencil-out") o.stencilOutPath = value();
+        else if (a == "--stencil-in") o.stencilInPath = value();
         else if (a == "--depth") o.state.depth = parseDepth(a, value());
         else if (a == "--storage") addStorage(o, value());
         else if (a == "--storage-data") addStorage(o, value(), true);
@@ -418,6 +427,14 @@ Options parseOptions(int argc, char** argv) {
         fail("--depth-out '" + o.depthOutPath + "' is also the --png file: give them different names");
     if (!o.depthInPath.empty() && o.frames != 1)
         fail("--depth-in loads the depth once: --frames must be 1 (" + std::to_string(o.frames) + " given)");
+    for (const auto& [name, path] : {std::pair<const char*, const std::string&>{"--stencil-out", o.stencilOutPath},
+                                     {"--stencil-in", o.stencilInPath}})
+        if (!path.empty() && !o.state.stencil.enabled)
+            fail(std::string(name) + " '" + path + "' needs the pass's stencil state: give --stencil");
+    if (!o.stencilOutPath.empty() && (o.stencilOutPath == o.pngPath || o.stencilOutPath == o.depthOutPath))
+        fail("--stencil-out '" + o.stencilOutPath + "' is also the --png or --depth-out file: give them different names");
+    if (!o.stencilInPath.empty() && o.frames != 1)
+        fail("--stencil-in loads the stencil once: --frames must be 1 (" + std::to_string(o.frames) + " given)");
     std::vector<uint32_t> storageBindings;
     for (const StorageOption& s : o.storage) storageBindings.push_back(s.binding);
     checkImageBindings(o.images, o.samplers, storageBindings);

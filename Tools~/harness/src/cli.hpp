@@ -70,11 +70,13 @@ struct Options {
     std::string pngPath;
     std::string depthOutPath;  // --depth-out FILE: the depth attachment's D32 floats after the last frame
     std::string depthInPath;   // --depth-in FILE: the depth attachment's D32 floats before the frame
+    std::string stencilOutPath;  // --stencil-out FILE: the stencil's bytes after the last frame (needs --stencil)
+    std::string stencilInPath;   // --stencil-in FILE: the stencil's bytes before the frame (needs --stencil)
     VkFormat colorFormat = VK_FORMAT_R8G8B8A8_UNORM;  // --color-format: the colour attachment (4 bytes a texel)
     VkFormat target1Format = VK_FORMAT_UNDEFINED;     // --target1 FORMAT:FILE: a second colour attachment (SV_Target1)
     std::string target1Path;
     bool wireframe = false;
-    RenderState state;  // --cull --ztest --zwrite --zclip --color-mask --depth (render_state.hpp)
+    RenderState state;  // --cull --ztest --zwrite --zclip --color-mask --depth --stencil (render_state.hpp)
 
     std::vector<StorageOption> storage;  // in command-line order
     std::vector<ComputeOption> computes; // dispatched in command-line order before the render pass

@@ -142,9 +142,9 @@ void writeDepthOut(const Gpu& gpu, const RenderTarget& target, const std::string
     std::printf("depth_out %s %u %u written %lld\n", path.c_str(), target.width, target.height, static_cast<long long>(written));
 }
 
-// --depth-in: the depth a previous pass wrote (--depth-out's file), checked and uploaded; prints how
-// many of its pixels differ from the clear.
-void loadDepthIn(const Gpu& gpu, const RenderTarget& target, const std::string& path) {
+// --depth-in: the depth a previous pass wrote (--depth-out's file), checked; prints how many of its
+// pixels differ from the clear.
+std::vector<float> readDepthIn(const RenderTarget& target, const std::string& path) {
     const std::vector<uint8_t> bytes = readFile(path);
     const size_t count = static_cast<size_t>(target.width) * target.height;
     if (bytes.size() != count * 4)
@@ -156,9 +156,39 @@ void loadDepthIn(const Gpu& gpu, const RenderTarget& target, const std::string& 
         if (!(depth[i] >= 0.0f && depth[i] <= 1.0f))
             fail("--depth-in '" + path + "': pixel " + std::to_string(i) + " is " + std::to_string(depth[i]) +
                  ", outside a depth attachment's [0, 1]");
-    uploadDepth(gpu, target, depth);
     const auto written = std::count_if(depth.begin(), depth.end(), [&](float d) { return d != target.depthClear; });
     std::printf("depth_in %s %u %u written %lld\n", path.c_str(), target.width, target.height, static_cast<long long>(written));
+    return depth;
+}
+
+// --stencil-in: a previous pass's stencil (--stencil-out's file), its size checked; prints how many are not 0.
+std::vector<uint8_t> readStencilIn(const RenderTarget& target, const std::string& path) {
+    std::vector<uint8_t> bytes = readFile(path);
+    const size_t count = static_cast<size_t>(target.width) * target.height;
+    if (bytes.size() != count)
+        fail("--stencil-in '" + path + "' has " + std::to_string(bytes.size()) + " bytes; expected " + std::to_string(count) +
+             " (W*H bytes for " + std::to_string(target.width) + "x" + std::to_string(target.height) + ")");
+    const auto set = std::count_if(bytes.begin(), bytes.end(), [](uint8_t s) { return s != 0; });
+    std::printf("stencil_in %s %u %u nonzero %lld\n", path.c_str(), target.width, target.height, static_cast<long long>(set));
+    return bytes;
+}
+
+// Both uploaded in one copy: uploading one aspect starts from an undefined layout, which would lose the other.
+void loadDepthStencilIn(const Gpu& gpu, const RenderTarget& target, const Options& o) {
+    if (o.depthInPath.empty() && o.stencilInPath.empty()) return;
+    std::vector<float> depth;
+    std::vector<uint8_t> stencil;
+    if (!o.depthInPath.empty()) depth = readDepthIn(target, o.depthInPath);
+    if (!o.stencilInPath.empty()) stencil = readStencilIn(target, o.stencilInPath);
+    uploadDepthStencil(gpu, target, o.depthInPath.empty() ? nullptr : &depth, o.stencilInPath.empty() ? nullptr : &stencil);
+}
+
+// --stencil-out: the stencil's bytes in the PNG's row order; prints how many are not 0.
+void writeStencilOut(const Gpu& gpu, const RenderTarget& target, const std::string& path) {
+    const std::vector<uint8_t> stencil = readStencil(gpu, target);
+    writeFile(path, stencil.data(), stencil.size());
+    const auto set = std::count_if(stencil.begin(), stencil.end(), [](uint8_t s) { return s != 0; });
+    std::printf("stencil_out %s %u %u nonzero %lld\n", path.c_str(), target.width, target.height, static_cast<long long>(set));
 }
 
 int run(const Options& o) {
@@ -232,8 +262,9 @@ int run(const Options& o) {
     desc.frag = loadShader(gpu, o.fragPath, 4, o.fragEntry, "frag");
 
     RenderTarget target = createRenderTarget(gpu, o.width, o.height, depthClearValue(o.state.depth), !o.depthOutPath.empty(),
-                                             !o.depthInPath.empty(), o.colorFormat, o.target1Format);
-    if (!o.depthInPath.empty()) loadDepthIn(gpu, target, o.depthInPath);
+                                             !o.depthInPath.empty(), o.colorFormat, o.target1Format,
+                                             {o.state.stencil.enabled, !o.stencilOutPath.empty(), !o.stencilInPath.empty()});
+    loadDepthStencilIn(gpu, target, o);
     Pipeline pipeline = createPipeline(gpu, desc, target, inputs, storage, sampled.descriptors);
     std::vector<ComputePass> compute = createComputePasses(gpu, o.computes, pipeline);
     DrawWork work = prepareWork(o, gpu);
@@ -277,6 +308,7 @@ int run(const Options& o) {
         std::printf("png %s %u %u\n", o.pngPath.c_str(), o.width, o.height);
     }
     if (!o.depthOutPath.empty()) writeDepthOut(gpu, target, o.depthOutPath);
+    if (!o.stencilOutPath.empty()) writeStencilOut(gpu, target, o.stencilOutPath);
     if (!o.target1Path.empty()) {
         const std::vector<uint8_t> texels = readTarget1(gpu, target);
         writeFile(o.target1Path, texels.data(), texels.size());

@@ -177,6 +177,9 @@ Pipeline createPipeline(const Gpu& gpu, const PipelineDesc& d, const RenderTarge
     ds.depthTestEnable = VK_TRUE;
     ds.depthWriteEnable = d.state.zWrite ? VK_TRUE : VK_FALSE;
     ds.depthCompareOp = vulkanCompareOp(d.state.zTest, d.state.depth);
+    ds.stencilTestEnable = d.state.stencil.enabled ? VK_TRUE : VK_FALSE;
+    ds.front = vulkanStencil(d.state.stencil, d.state.stencil.front);
+    ds.back = vulkanStencil(d.state.stencil, d.state.stencil.back);
     VkPipelineColorBlendAttachmentState blend[2]{};
     blend[0].colorWriteMask = blend[1].colorWriteMask = d.state.colorMask;   // ShaderLab's ColorMask: every target
     VkPipelineColorBlendStateCreateInfo cb{VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO};

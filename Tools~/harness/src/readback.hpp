@@ -18,6 +18,8 @@ std::vector<uint8_t> readTarget1(const Gpu& gpu, const RenderTarget& target);
 // The depth attachment's D32 values after the last frame (target created depthReadable), rows in
 // framebuffer order: row 0 is the picture's top row, as in the colour image and the PNG.
 std::vector<float> readDepth(const Gpu& gpu, const RenderTarget& target);
+// The stencil's bytes after the last frame (target created stencilReadable), rows as readDepth's.
+std::vector<uint8_t> readStencil(const Gpu& gpu, const RenderTarget& target);
 
 // Pixels whose colour differs from the sky clear colour by more than 2/255 in some channel.
 uint64_t countNonSkyPixels(const std::vector<uint8_t>& rgba);

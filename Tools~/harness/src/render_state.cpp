@@ -4,6 +4,8 @@
 #include <cctype>
 #include <cmath>
 #include <cstdlib>
+#include <cstring>
+#include <sstream>
 #include <utility>
 #include <vector>
 
@@ -34,6 +36,37 @@ const std::vector<std::pair<const char*, ZTest>> kZTests = {
     {"never", ZTest::Never},     {"less", ZTest::Less},         {"equal", ZTest::Equal},   {"lequal", ZTest::LEqual},
     {"greater", ZTest::Greater}, {"notequal", ZTest::NotEqual}, {"gequal", ZTest::GEqual}, {"always", ZTest::Always},
 };
+
+const std::vector<std::pair<const char*, StencilOp>> kStencilOps = {
+    {"keep", StencilOp::Keep},       {"zero", StencilOp::Zero},         {"replace", StencilOp::Replace},
+    {"incrsat", StencilOp::IncrSat}, {"decrsat", StencilOp::DecrSat},   {"invert", StencilOp::Invert},
+    {"incrwrap", StencilOp::IncrWrap}, {"decrwrap", StencilOp::DecrWrap},
+};
+
+uint32_t parseByte(const std::string& option, const std::string& command, const std::string& value) {
+    char* end = nullptr;
+    const long v = std::strtol(value.c_str(), &end, 10);
+    if (value.empty() || end != value.c_str() + value.size() || v < 0 || v > 255)
+        fail(option + ": " + command + " expects a whole number 0..255, got '" + value + "'");
+    return static_cast<uint32_t>(v);
+}
+
+// Sets one face's Comp/Pass/Fail/ZFail from its command's stem ("comp", "pass", "fail", "zfail").
+void setFace(const std::string& option, const std::string& command, const std::string& stem, const std::string& value,
+             StencilFace& face) {
+    const std::string what = option + " " + command;
+    if (stem == "comp") face.comp = pick<ZTest>(what, value, kZTests);
+    else if (stem == "pass") face.pass = pick<StencilOp>(what, value, kStencilOps);
+    else if (stem == "fail") face.fail = pick<StencilOp>(what, value, kStencilOps);
+    else face.zFail = pick<StencilOp>(what, value, kStencilOps);
+}
+
+VkStencilOp vulkanStencilOp(StencilOp op) {
+    static const VkStencilOp ops[] = {VK_STENCIL_OP_KEEP, VK_STENCIL_OP_ZERO, VK_STENCIL_OP_REPLACE,
+                                      VK_STENCIL_OP_INCREMENT_AND_CLAMP, VK_STENCIL_OP_DECREMENT_AND_CLAMP,
+                                      VK_STENCIL_OP_INVERT, VK_STENCIL_OP_INCREMENT_AND_WRAP, VK_STENCIL_OP_DECREMENT_AND_WRAP};
+    return ops[static_cast<int>(op)];
+}
 
 }  // namespace
 
@@ -111,6 +144,60 @@ void parseDepthBias(const std::string& option, const std::string& value, RenderS
     state.depthBiasSlope = v[1];
 }
 
+StencilState parseStencil(const std::string& option, const std::string& value) {
+    std::istringstream in(value);
+    std::vector<std::string> words;
+    for (std::string w; in >> w;) words.push_back(w);
+    if (words.empty() || words.size() % 2 != 0)
+        fail(option + ": expected a Stencil block's commands as pairs, e.g. 'Ref 1 WriteMask 9 Comp Always Pass Replace', got '" +
+             value + "'");
+    StencilState s;
+    s.enabled = true;
+    std::vector<std::string> seen;
+    // Two rounds: the two-face commands, then the one-face ones, which win whatever the order.
+    for (int round = 0; round < 2; ++round)
+        for (size_t i = 0; i < words.size(); i += 2) {
+            const std::string command = words[i], key = lower(command), v = words[i + 1];
+            std::string stem = key, face;
+            for (const char* f : {"front", "back"})
+                if (key.size() > std::strlen(f) && key.compare(key.size() - std::strlen(f), std::string::npos, f) == 0) {
+                    stem = key.substr(0, key.size() - std::strlen(f));
+                    face = f;
+                }
+            const bool faced = stem == "comp" || stem == "pass" || stem == "fail" || stem == "zfail";
+            const bool whole = key == "ref" || key == "readmask" || key == "writemask";
+            if (!faced && !whole)
+                fail(option + ": '" + command + "' is not a Stencil command (Ref, ReadMask, WriteMask, Comp, Pass, Fail, ZFail, "
+                     "or Comp/Pass/Fail/ZFail with Front or Back)");
+            if (round == 0) {
+                if (std::find(seen.begin(), seen.end(), key) != seen.end()) fail(option + ": " + command + " is given twice");
+                seen.push_back(key);
+            }
+            if (whole && round == 0) {
+                uint32_t& field = key == "ref" ? s.ref : key == "readmask" ? s.readMask : s.writeMask;
+                field = parseByte(option, command, v);
+            } else if (faced && face.empty() && round == 0) {
+                setFace(option, command, stem, v, s.front);
+                setFace(option, command, stem, v, s.back);
+            } else if (faced && !face.empty() && round == 1) {
+                setFace(option, command, stem, v, face == "front" ? s.front : s.back);
+            }
+        }
+    return s;
+}
+
+VkStencilOpState vulkanStencil(const StencilState& s, const StencilFace& face) {
+    VkStencilOpState v{};
+    v.failOp = vulkanStencilOp(face.fail);
+    v.passOp = vulkanStencilOp(face.pass);
+    v.depthFailOp = vulkanStencilOp(face.zFail);
+    v.compareOp = vulkanCompareOp(face.comp, DepthConvention::Forward);   // (Ref & ReadMask) comp (stored & ReadMask), as D3D
+    v.compareMask = s.readMask;
+    v.writeMask = s.writeMask;
+    v.reference = s.ref;
+    return v;
+}
+
 float vulkanDepthBias(float unityBias, DepthConvention depth) {
     return depth == DepthConvention::Reversed ? -unityBias : unityBias;
 }
@@ -133,6 +220,15 @@ std::string describeRenderState(const RenderState& s) {
     line += std::string(" depth ") + (s.depth == DepthConvention::Reversed ? "reversed" : "forward");
     if (s.depthBiasUnits != 0.0f || s.depthBiasSlope != 0.0f)
         line += " depth_bias " + std::to_string(s.depthBiasUnits) + " " + std::to_string(s.depthBiasSlope);
+    if (s.stencil.enabled) {
+        line += " stencil ref " + std::to_string(s.stencil.ref) + " read " + std::to_string(s.stencil.readMask) + " write " +
+                std::to_string(s.stencil.writeMask);
+        for (const StencilFace* f : {&s.stencil.front, &s.stencil.back}) {
+            line += f == &s.stencil.front ? " front " : " back ";
+            line += kZTests[static_cast<int>(f->comp)].first;
+            for (StencilOp op : {f->pass, f->fail, f->zFail}) line += std::string(" ") + kStencilOps[static_cast<int>(op)].first;
+        }
+    }
     return line;
 }
 

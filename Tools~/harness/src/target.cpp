@@ -14,7 +14,7 @@ Image createImage(const Gpu& gpu, uint32_t w, uint32_t h, VkFormat format, VkIma
                   VkImageAspectFlags aspect) {
     VkFormatProperties fp{};
     vkGetPhysicalDeviceFormatProperties(gpu.physical, format, &fp);
-    VkFormatFeatureFlags need = (aspect & VK_IMAGE_ASPECT_DEPTH_BIT) ? VK_FORMAT_FEATURE_DEPTH_STENCIL_ATTACHMENT_BIT
+    VkFormatFeatureFlags need = (aspect & (VK_IMAGE_ASPECT_DEPTH_BIT | VK_IMAGE_ASPECT_STENCIL_BIT)) ? VK_FORMAT_FEATURE_DEPTH_STENCIL_ATTACHMENT_BIT
                                                                      : VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BIT;
     if ((fp.optimalTilingFeatures & need) != need) fail("the device cannot render to format " + std::to_string(format));
 
@@ -64,8 +64,18 @@ void destroyImage(const Gpu& gpu, Image& img) {
 }  // namespace
 
 RenderTarget createRenderTarget(const Gpu& gpu, uint32_t width, uint32_t height, float depthClear, bool depthReadable,
-                                bool depthLoaded, VkFormat colorFormat, VkFormat color1Format) {
+                                bool depthLoaded, VkFormat colorFormat, VkFormat color1Format, StencilTarget stencil) {
     RenderTarget t;
+    t.stencil = stencil.on;
+    t.stencilReadable = stencil.on && stencil.readable;
+    t.stencilLoaded = stencil.on && stencil.loaded;
+    if (stencil.on) {
+        VkFormatProperties fp{};
+        vkGetPhysicalDeviceFormatProperties(gpu.physical, kDepthStencilFormat, &fp);
+        if (!(fp.optimalTilingFeatures & VK_FORMAT_FEATURE_DEPTH_STENCIL_ATTACHMENT_BIT))
+            fail("--stencil: the device cannot render to D32_SFLOAT_S8_UINT (the only depth-stencil format the harness draws)");
+    }
+    const bool loaded = depthLoaded || t.stencilLoaded;   // either aspect uploaded: the attachment starts in its layout
     t.colorFormat = colorFormat;
     t.color1Format = color1Format;
     const bool second = color1Format != VK_FORMAT_UNDEFINED;
@@ -76,10 +86,11 @@ RenderTarget createRenderTarget(const Gpu& gpu, uint32_t width, uint32_t height,
     t.depthClear = depthClear;
     t.color = createImage(gpu, width, height, colorFormat,
                           VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT, VK_IMAGE_ASPECT_COLOR_BIT);
-    t.depth = createImage(gpu, width, height, kDepthFormat,
-                          VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | (depthReadable ? VK_IMAGE_USAGE_TRANSFER_SRC_BIT : 0) |
-                              (depthLoaded ? VK_IMAGE_USAGE_TRANSFER_DST_BIT : 0),
-                          VK_IMAGE_ASPECT_DEPTH_BIT);
+    t.depth = createImage(gpu, width, height, t.stencil ? kDepthStencilFormat : kDepthFormat,
+                          VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT |
+                              (depthReadable || t.stencilReadable ? VK_IMAGE_USAGE_TRANSFER_SRC_BIT : 0) |
+                              (loaded ? VK_IMAGE_USAGE_TRANSFER_DST_BIT : 0),
+                          depthAspects(t));
 
     if (second)
         t.color1 = createImage(gpu, width, height, color1Format,
@@ -95,12 +106,14 @@ RenderTarget createRenderTarget(const Gpu& gpu, uint32_t width, uint32_t height,
     att[0].initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
     att[0].finalLayout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
     att[1] = att[0];
-    att[1].format = kDepthFormat;
+    att[1].format = t.stencil ? kDepthStencilFormat : kDepthFormat;
     att[1].storeOp = depthReadable ? VK_ATTACHMENT_STORE_OP_STORE : VK_ATTACHMENT_STORE_OP_DONT_CARE;
-    if (depthLoaded) {  // uploadDepth leaves it in the attachment layout
-        att[1].loadOp = VK_ATTACHMENT_LOAD_OP_LOAD;
-        att[1].initialLayout = VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL;
+    if (depthLoaded) att[1].loadOp = VK_ATTACHMENT_LOAD_OP_LOAD;
+    if (t.stencil) {
+        att[1].stencilLoadOp = t.stencilLoaded ? VK_ATTACHMENT_LOAD_OP_LOAD : VK_ATTACHMENT_LOAD_OP_CLEAR;
+        att[1].stencilStoreOp = t.stencilReadable ? VK_ATTACHMENT_STORE_OP_STORE : VK_ATTACHMENT_STORE_OP_DONT_CARE;
     }
+    if (loaded) att[1].initialLayout = VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL;   // uploadDepthStencil leaves it so
     att[1].finalLayout = VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL;
     att[2] = att[0];
     att[2].format = color1Format;
@@ -159,24 +172,42 @@ void depthBarrier(VkCommandBuffer cmd, const RenderTarget& t, VkImageLayout from
     b.newLayout = to;
     b.srcQueueFamilyIndex = b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
     b.image = t.depth.image;
-    b.subresourceRange = {VK_IMAGE_ASPECT_DEPTH_BIT, 0, 1, 0, 1};
+    b.subresourceRange = {depthAspects(t), 0, 1, 0, 1};
     vkCmdPipelineBarrier(cmd, srcStage, dstStage, 0, 0, nullptr, 0, nullptr, 1, &b);
 }
 
-void uploadDepth(const Gpu& gpu, const RenderTarget& t, const std::vector<float>& depth) {
-    if (!t.depthLoaded) fail("uploadDepth: the render target was created to clear its depth");
-    const VkDeviceSize size = static_cast<VkDeviceSize>(t.width) * t.height * 4;
-    if (depth.size() * 4 != size) fail("uploadDepth: " + std::to_string(depth.size()) + " floats for a " +
-                                       std::to_string(t.width) + "x" + std::to_string(t.height) + " target");
-    Buffer host = createHostBuffer(gpu, size, VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
-    std::memcpy(host.mapped, depth.data(), size);
+VkImageAspectFlags depthAspects(const RenderTarget& t) {
+    return VK_IMAGE_ASPECT_DEPTH_BIT | (t.stencil ? VK_IMAGE_ASPECT_STENCIL_BIT : 0);
+}
+
+void uploadDepthStencil(const Gpu& gpu, const RenderTarget& t, const std::vector<float>* depth, const std::vector<uint8_t>* stencil) {
+    if (depth && !t.depthLoaded) fail("uploadDepthStencil: the render target was created to clear its depth");
+    if (stencil && !t.stencilLoaded) fail("uploadDepthStencil: the render target was created to clear its stencil");
+    const VkDeviceSize texels = static_cast<VkDeviceSize>(t.width) * t.height;
+    const std::string target = " for a " + std::to_string(t.width) + "x" + std::to_string(t.height) + " target";
+    if (depth && depth->size() != texels) fail("uploadDepthStencil: " + std::to_string(depth->size()) + " floats" + target);
+    if (stencil && stencil->size() != texels) fail("uploadDepthStencil: " + std::to_string(stencil->size()) + " bytes" + target);
+    // Depth's floats first, then the stencil bytes (offset 4*W*H: a multiple of 4, as a copy's offset must be).
+    Buffer host = createHostBuffer(gpu, texels * 5, VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
+    std::vector<VkBufferImageCopy> regions;
+    VkBufferImageCopy region{};
+    region.imageExtent = {t.width, t.height, 1};
+    if (depth) {
+        std::memcpy(host.mapped, depth->data(), texels * 4);
+        region.imageSubresource = {VK_IMAGE_ASPECT_DEPTH_BIT, 0, 0, 1};
+        regions.push_back(region);
+    }
+    if (stencil) {
+        std::memcpy(static_cast<uint8_t*>(host.mapped) + texels * 4, stencil->data(), texels);
+        region.bufferOffset = texels * 4;
+        region.imageSubresource = {VK_IMAGE_ASPECT_STENCIL_BIT, 0, 0, 1};
+        regions.push_back(region);
+    }
     submitOnce(gpu, [&](VkCommandBuffer cmd) {
         depthBarrier(cmd, t, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_ACCESS_HOST_WRITE_BIT,
                      VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_HOST_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT);
-        VkBufferImageCopy region{};
-        region.imageSubresource = {VK_IMAGE_ASPECT_DEPTH_BIT, 0, 0, 1};
-        region.imageExtent = {t.width, t.height, 1};
-        vkCmdCopyBufferToImage(cmd, host.buffer, t.depth.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
+        vkCmdCopyBufferToImage(cmd, host.buffer, t.depth.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                               static_cast<uint32_t>(regions.size()), regions.data());
         depthBarrier(cmd, t, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL,
                      VK_ACCESS_TRANSFER_WRITE_BIT,
                      VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT,
