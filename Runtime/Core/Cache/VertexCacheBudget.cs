@@ -39,7 +39,7 @@ namespace GregoryTerrain
             TileFactorsBytes(tiles) + TileCellsBytes(tiles) + VertexCacheBytes(tiles, factorLimit, snow);
 
         /// <summary>
-        /// Throws ArgumentException, naming the settings and the bytes, when either buffer is larger
+        /// Throws ArgumentException, naming the settings and the bytes, when _VertexCache or _TileCells (_TileFactors is smaller) is larger
         /// than <paramref name="maxBufferBytes"/> (the device's largest buffer; Unity:
         /// <c>SystemInfo.maxGraphicsBufferSize</c>) or than <see cref="GpuLayout.MaxBufferBytes"/>
         /// (2 GiB, the most a GraphicsBuffer's int count of float4 safely addresses everywhere).
