@@ -57,7 +57,7 @@ uint VertexCacheGroupsPerTile(uint limit)
 // anchored), the draw's factors and the keys its slots and cell were written at (CellRecordKey),
 // which the renderer zeroes together. _TileCells: a TileCellRecord a tile, the cell's samples (a
 // camera move evaluates no surface) and float factors with their FactorInput (an anchored pan, the
-// camera still, evaluates nothing). Two buffers: that upload is 64 bytes a tile (a record; the keys alone were 32), not 992. A tile
+// camera still, evaluates nothing). Two buffers: that upload is 64 bytes a tile (a whole record; the keys alone would be 32), not 992. A tile
 // whose factors and slot key its slots hold keeps them (a camera move that leaves its integer
 // factors alone; anchored, a pan that leaves the tile whole).
 #define GT_FACTOR_INPUTS 5u

@@ -9,7 +9,8 @@
 // Object matrix: Graphics.RenderPrimitives gives the shader no object matrix (unity_ObjectToWorld
 // is not the renderer's Transform, so UnityObjectToClipPos and UnityObjectToWorldNormal cannot be
 // used), so GregoryTerrainRenderer sets _GtObjectToWorld / _GtWorldToObject.
-// Shadows: no multi_compile_shadowcaster, so point lights' cube maps get the depth-biased variant.
+// Shadows: no multi_compile_shadowcaster: a point light's cube map gets the non-cube caster, which
+// adds the light's depth bias that Unity's SHADOWS_CUBE caster leaves to the receiver (biased twice).
 #ifndef GT_BUILTIN_ADAPTER_INCLUDED
 #define GT_BUILTIN_ADAPTER_INCLUDED
 
