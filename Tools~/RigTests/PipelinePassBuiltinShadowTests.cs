@@ -21,7 +21,6 @@ namespace GregoryTerrain.Rig.Tests
         static readonly string[] Scene = { "--only", "builtin_lit_shadows", "--only", "normals", "--shadow-sun-elevation", "12",
                                            "--shadow-sun-azimuth", "90", "--light-color", "1,0.96,0.9" };
         const double MinNDotL = 0.25, Quantum = 2.0 / 255.0;
-        static readonly double[] Sky = { 0.55, 0.70, 0.90 };
 
         string _out;
         RigPng _lit, _normals;
@@ -42,7 +41,7 @@ namespace GregoryTerrain.Rig.Tests
             _sun = PipelinePassRun.Doubles(m.GetProperty("sun"));
             _light = PipelinePassRun.Doubles(m.GetProperty("light_color"));
             (_albedo, _ambient) = PipelinePassRun.Shading();
-            _covered = Enumerable.Range(0, _lit.Width * _lit.Height).Where(p => !IsSky(_lit, p)).ToList();
+            _covered = PipelinePassRun.Covered(_lit);
             _texel = _shadow.GetProperty("texel").GetDouble();
             // How far the map may move an edge on the receiver, across the light: point sampling (half a texel either way,
             // 1) and the casters' depth bias (1 texel along the light, which moves an edge by up to 1 / tan(12 degrees)
@@ -55,7 +54,6 @@ namespace GregoryTerrain.Rig.Tests
                 2 * _texel, _edge, p => DirectShare(p) < 0.5 * NDotL(p));
         }
 
-        static bool IsSky(RigPng png, int p) => Enumerable.Range(0, 3).All(c => Math.Abs(png.Rgba[4 * p + c] - Sky[c] * 255) <= 1);
 
         double NDotL(int p)
         {
@@ -103,7 +101,7 @@ namespace GregoryTerrain.Rig.Tests
         {
             double[] lo = Enumerable.Range(0, 3).Select(c => _albedo[c] * _ambient - Quantum).ToArray();
             double[] hi = Enumerable.Range(0, 3).Select(c => _albedo[c] * (_ambient + _light[c]) + Quantum).ToArray();
-            PipelinePassRun.AssertWithinBounds(_lit, _covered, lo, hi, IsSky, "albedo x (ambient .. ambient + light)");
+            PipelinePassRun.AssertWithinBounds(_lit, _covered, lo, hi, PipelinePassRun.IsSky, "albedo x (ambient .. ambient + light)");
             var shadowed = _samples.Where(s => s.Gpu).ToList();
             double worstShadowed = shadowed.Select(s => Enumerable.Range(0, 3).Max(c => Math.Abs(_lit.Rgba[4 * s.Pixel + c] / 255.0 - _albedo[c] * _ambient)))
                 .DefaultIfEmpty(double.NaN).Max();

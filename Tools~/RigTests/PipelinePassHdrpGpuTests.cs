@@ -23,7 +23,6 @@ namespace GregoryTerrain.Rig.Tests
         // pipeline_pass_hdrp.py's SUN_LUX, SUN_EV100 and SKY_SHARE: the samples' HDRP sun and exposure, the sky's share.
         const double Lux = 100000, Ev100 = 15, SkyShare = 0.2;
 
-        static readonly double[] Sky = { 0.55, 0.70, 0.90 };
         const double Quantum = 2.0 / 255.0;
 
         string _out;
@@ -48,11 +47,10 @@ namespace GregoryTerrain.Rig.Tests
             _scale = Lux / Math.PI / (1.2 * Math.Pow(2, Ev100));
             // Covered: what URP's ForwardLit drew (a grey terrain colour is never the sky's). The normal buffer
             // cannot say it: an encoded normal may be the sky's colour (measured: one pixel, (140, 178, 229)).
-            _covered = Enumerable.Range(0, _urp.Width * _urp.Height).Where(p => !IsSky(_urp, p)).ToList();
+            _covered = PipelinePassRun.Covered(_urp);
             Assert.That(_covered.Count, Is.GreaterThan(_hdrp.Width * _hdrp.Height / 5), "the terrain covers a fifth of the picture or more");
         }
 
-        static bool IsSky(RigPng png, int p) => Enumerable.Range(0, 3).All(c => Math.Abs(png.Rgba[4 * p + c] - Sky[c] * 255) <= 1);
 
         JsonElement Manifest(string picture) => PipelinePassRun.Manifest(_out, picture);
 
@@ -97,7 +95,7 @@ namespace GregoryTerrain.Rig.Tests
             double[] lo = Enumerable.Range(0, 3).Select(c => _scale * _albedo[c] * SkyShare - Quantum).ToArray();
             double[] hi = Enumerable.Range(0, 3).Select(c => _scale * _albedo[c] * (SkyShare + _light[c]) + Quantum).ToArray();
             TestContext.Out.WriteLine($"scale {_scale:F4}");
-            PipelinePassRun.AssertWithinBounds(_hdrp, _covered, lo, hi, IsSky, "scale x albedo x (sky .. sky + light)");
+            PipelinePassRun.AssertWithinBounds(_hdrp, _covered, lo, hi, PipelinePassRun.IsSky, "scale x albedo x (sky .. sky + light)");
         }
 
         [Test]
@@ -198,7 +196,7 @@ namespace GregoryTerrain.Rig.Tests
             int holes = 0, outside = 0, changed = 0, covered = 0;
             for (int p = 0; p < prepass.Length; p++)
             {
-                bool depth = prepass[p] != 0f, shaded = !IsSky(forward, p);   // reversed depth: cleared to 0
+                bool depth = prepass[p] != 0f, shaded = !PipelinePassRun.IsSky(forward, p);   // reversed depth: cleared to 0
                 covered += depth ? 1 : 0;
                 holes += depth && !shaded ? 1 : 0;
                 outside += !depth && shaded ? 1 : 0;
@@ -239,8 +237,8 @@ namespace GregoryTerrain.Rig.Tests
             // 1/255 / 0.81 after the division), so 2/255 bounds a pixel. HDRP's two passes cover URP's pixels and no others.
             var (largest, over, where) = PipelinePassRun.Difference(_hdrp, _scale, _urp, _covered, 2.0 / 255, "HDRP", "URP");
             var covered = new HashSet<int>(_covered);
-            int otherCoverage = _covered.Count(p => IsSky(_hdrp, p)) + Enumerable.Range(0, _urp.Width * _urp.Height)
-                .Count(p => !covered.Contains(p) && (!IsSky(_hdrp, p) || !IsSky(_normalBuffer, p)));
+            int otherCoverage = _covered.Count(p => PipelinePassRun.IsSky(_hdrp, p)) + Enumerable.Range(0, _urp.Width * _urp.Height)
+                .Count(p => !covered.Contains(p) && (!PipelinePassRun.IsSky(_hdrp, p) || !PipelinePassRun.IsSky(_normalBuffer, p)));
             TestContext.Out.WriteLine($"HDRP / {_scale:F4} vs URP over {_covered.Count} pixels: largest {largest * 255:F2}/255, " +
                                       $"channels over 2/255: {over}, coverage differing: {otherCoverage}{where}");
             Assert.That(over, Is.Zero, "channels whose HDRP / scale and URP colours differ by more than 2/255" + where);

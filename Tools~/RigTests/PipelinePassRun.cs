@@ -35,6 +35,15 @@ namespace GregoryTerrain.Rig.Tests
             return (output, log);
         }
 
+        /// <summary>The rig scene's sky colour (pipeline_pass.py's clear), 0-1 per channel.</summary>
+        public static readonly double[] Sky = { 0.55, 0.70, 0.90 };
+
+        /// <summary>Whether pixel p holds the sky's clear colour within one step in every channel.</summary>
+        public static bool IsSky(RigPng png, int p) => Enumerable.Range(0, 3).All(c => Math.Abs(png.Rgba[4 * p + c] - Sky[c] * 255) <= 1);
+
+        /// <summary>The pixels a picture covers: every one that is not the sky.</summary>
+        public static List<int> Covered(RigPng png) => Enumerable.Range(0, png.Width * png.Height).Where(p => !IsSky(png, p)).ToList();
+
         public static JsonElement Manifest(string output, string picture) =>
             JsonDocument.Parse(File.ReadAllText(Path.Combine(output, picture, "manifest.json"))).RootElement;
 
