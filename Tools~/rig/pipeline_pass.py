@@ -1172,7 +1172,7 @@ def shadow_map_texels(depth_out, texels, n):
 
 def draw_cascades(a, buffers, cam, sun):
     """lit_cascades: the casters per cascade, the atlas, the forward pass over it and the two cascade-index pictures."""
-    cascades = MainLightCascades(cam, sun, a.cascades)
+    cascades = MainLightCascades(cam, sun, int(a.cascades))
     tiles = []
     for i, sl in enumerate(cascades.slices):
         folder = os.path.join(a.out, f"cascade_map_{i}")
@@ -1236,7 +1236,7 @@ def main(argv=None):
     ap.add_argument("--leave-default", action="append", default=[], help="NAME: leave a member to its default")
     ap.add_argument("--fill-from", action="append", default=[], help="NAME=OTHER: fill NAME with OTHER's value")
     ap.add_argument("--transpose", action="append", default=[], help="NAME: fill the matrix NAME (each, for an array) transposed")
-    ap.add_argument("--cascades", type=int, choices=[2, 4], default=4,
+    ap.add_argument("--cascades", choices=["2", "4"], default="4",
                     help="lit_cascades: URP's main-light cascade count (default 4; the asset offers 2 or 4)")
     ap.add_argument("--swap-cascade-matrices", action="store_true",
                     help="lit_cascades: the matrices of the two cascades the terrain spans exchanged (4: [1] and [2]; 2: [0] and [1]; a broken input)")
