@@ -30,6 +30,8 @@ namespace GregoryTerrain.Rig.Tests
         double[] _albedo, _sun, _light;
         double _ambient;
         List<int> _chosen;
+        float[] _depth;     // ForwardLit's own depth (the world positions)
+        double[,] _clipToWorld;
 
         public PipelinePassCascadeTests(int count) => _count = count;
 
@@ -42,7 +44,9 @@ namespace GregoryTerrain.Rig.Tests
             _lit = RigPng.Read(Path.Combine(_out, "lit_cascades.png"));
             _normals = RigPng.Read(Path.Combine(_out, "normals.png"));
             _bits = new[] { 0, 1 }.Select(b => RigPng.Read(Path.Combine(_out, $"lit_cascades_bit{b}.png"))).ToArray();
+            _depth = PipelinePassRun.ReadDepth(_out, "lit_cascades_depth.f32");
             _cascades = JsonDocument.Parse(File.ReadAllText(Path.Combine(_out, "cascades.json"))).RootElement;
+            _clipToWorld = PipelinePassRun.Inverse(PipelinePassRun.Matrix(_cascades.GetProperty("camera_view_proj")));
             JsonElement m = PipelinePassRun.Manifest(_out, "lit_cascades");
             _sun = PipelinePassRun.Doubles(m.GetProperty("sun"));
             _light = PipelinePassRun.Doubles(m.GetProperty("light_color"));
@@ -52,12 +56,7 @@ namespace GregoryTerrain.Rig.Tests
             _chosen = PipelinePassRun.Covered(_lit).Where(p => p % w % 3 == 0 && p / w % 3 == 0 && NDotL(p) >= MinNDotL).ToList();
         }
 
-        double NDotL(int p)
-        {
-            var n = Enumerable.Range(0, 3).Select(c => _normals.Rgba[4 * p + c] / 255.0 * 2 - 1).ToArray();
-            double len = Math.Sqrt(n.Sum(x => x * x));
-            return Enumerable.Range(0, 3).Sum(c => n[c] / len * _sun[c]);
-        }
+        double NDotL(int p) => PipelinePassRun.NormalsViewDot(_normals, p, _sun);
 
         /// <summary>The light's share left at the pixel over albedo x light: N.L unshadowed, 0 in shadow.</summary>
         double DirectShare(RigPng png, int p) =>
@@ -82,24 +81,22 @@ namespace GregoryTerrain.Rig.Tests
             return (_count, margin);
         }
 
-        double[] WorldAt(int p, float[] depth)
+        double[] WorldAt(int p)
         {
-            double[] world = PipelinePassRun.Mul(PipelinePassRun.Inverse(PipelinePassRun.Matrix(_cascades.GetProperty("camera_view_proj"))),
-                new[] { (p % _lit.Width + 0.5) / _lit.Width * 2 - 1, 1 - (p / _lit.Width + 0.5) / _lit.Height * 2, depth[p], 1.0 });
+            double[] world = PipelinePassRun.Mul(_clipToWorld,
+                new[] { (p % _lit.Width + 0.5) / _lit.Width * 2 - 1, 1 - (p / _lit.Width + 0.5) / _lit.Height * 2, _depth[p], 1.0 });
             return world.Take(3).Select(x => x / world[3]).ToArray();
         }
 
         [Test]
         public void TheCascadeEachPixelSamples_IsUrpsComputeCascadeIndex()
         {
-            byte[] bytes = File.ReadAllBytes(Path.Combine(_out, "lit_cascades_depth.f32"));
-            float[] depth = Enumerable.Range(0, bytes.Length / 4).Select(i => BitConverter.ToSingle(bytes, 4 * i)).ToArray();
             var perCascade = new int[_count + 1];
             int compared = 0, differ = 0, nearSphere = 0;
             string first = null;
             foreach (int p in _chosen)
             {
-                var (cpu, margin) = CascadeIndex(WorldAt(p, depth));
+                var (cpu, margin) = CascadeIndex(WorldAt(p));
                 // A point within 1e-4 of a sphere's squared radius (about 0.15 mm at these radii) may fall either side
                 // after the depth's float32 rounding: left out.
                 if (margin < 1e-4) { nearSphere++; continue; }
@@ -122,9 +119,7 @@ namespace GregoryTerrain.Rig.Tests
             int tile = _cascades.GetProperty("tile").GetInt32();
             Assert.That((_cascades.GetProperty("width").GetInt32(), _cascades.GetProperty("height").GetInt32(), tile),
                 Is.EqualTo(_count == 2 ? (2048, 1024, 1024) : (2048, 2048, 1024)), "URP's atlas and tile for the cascade count");
-            byte[] bytes = File.ReadAllBytes(Path.Combine(_out, "lit_cascades_depth.f32"));
-            float[] depth = Enumerable.Range(0, bytes.Length / 4).Select(i => BitConverter.ToSingle(bytes, 4 * i)).ToArray();
-            var used = new HashSet<int>(_chosen.Select(p => CascadeIndex(WorldAt(p, depth)).Index));
+            var used = new HashSet<int>(_chosen.Select(p => CascadeIndex(WorldAt(p)).Index));
             foreach (int i in used)
                 PipelinePassRun.AssertShadowMapWritten(_out, $"cascade_map_{i}.f32", tile, _cascades.GetProperty("texels")[i].GetDouble(), $"cascade {i}'s tile");
             JsonElement m = PipelinePassRun.Manifest(_out, "lit_cascades");
@@ -140,11 +135,9 @@ namespace GregoryTerrain.Rig.Tests
         {
             // Each pixel's cascade sets its edge margin and its rays' start, as PipelinePassShadowTests sets them for one
             // cascade: 3 of that cascade's texels across the light, over N.L >= MinNDotL; rays start 2 texels out.
-            byte[] bytes = File.ReadAllBytes(Path.Combine(_out, "lit_cascades_depth.f32"));
-            float[] depth = Enumerable.Range(0, bytes.Length / 4).Select(i => BitConverter.ToSingle(bytes, 4 * i)).ToArray();
             var samples = new List<PipelinePassRun.ShadowSample>();
             double texel = 0, edge = 0;
-            foreach (var cascade in _chosen.GroupBy(p => CascadeIndex(WorldAt(p, depth)).Index))
+            foreach (var cascade in _chosen.GroupBy(p => CascadeIndex(WorldAt(p)).Index))
             {
                 double t = _cascades.GetProperty("texels")[cascade.Key].GetDouble();
                 samples.AddRange(PipelinePassRun.ShadowSamples(_out, "lit_cascades_depth.f32", _cascades, _sun, _lit.Width, _lit.Height,
