@@ -396,9 +396,11 @@ def culling_sphere(cam, near, far):
     """(centre, radius) of the smallest sphere centred on the view axis that holds the camera frustum's slice from
     view distance near to far (near 0: the eye): equidistant from the slice's near and far corners, or centred on the
     far plane when that sphere already holds the near corners."""
-    k2 = (math.tan(math.radians(cam.fov_y) / 2.0)) ** 2 * (1.0 + (cam.width / cam.height) ** 2)   # (half diagonal / d)^2
-    along = min((far * far - near * near) * (1.0 + k2) / (2.0 * (far - near)), far)
-    radius = math.sqrt((far - along) ** 2 + k2 * far * far)
+    per_distance = math.tan(math.radians(cam.fov_y) / 2.0) * math.sqrt(1.0 + (cam.width / cam.height) ** 2)
+    half_near, half_far = near * per_distance, far * per_distance      # the slice's half diagonals
+    along = min((far ** 2 + half_far ** 2 - near ** 2 - half_near ** 2) / (2.0 * (far - near)), far)
+    # From the eye (near 0) the distance is along itself; else to a far corner.
+    radius = along if near == 0.0 else math.sqrt((far - along) ** 2 + half_far ** 2)
     forward = normalize([x - e for x, e in zip(cam.target, cam.eye)])
     return [e + along * f for e, f in zip(cam.eye, forward)], radius
 
