@@ -27,9 +27,9 @@ namespace GregoryTerrain.Rig.Tests
         {
             ["_LightDirection"] = "URP sets it for its shadow caster pass",
             ["_LightPosition"] = "URP sets it for its shadow caster pass",
-            ["_ObjectId"] = "the editor's scene picking sets it",
-            ["_PassValue"] = "the editor's scene picking sets it",
-            ["_SelectionID"] = "the editor's selection outline sets it",
+            ["_ObjectId"] = "the editor's selection outline (SceneSelectionPass) sets it",
+            ["_PassValue"] = "the editor's selection outline (SceneSelectionPass) sets it",
+            ["_SelectionID"] = "the editor's scene picking (LightMode Picking) sets it",
             ["_Readback"] = "rig only (GT_READBACK, GT_FACTOR_READBACK): the harness binds it by register",
         };
 
