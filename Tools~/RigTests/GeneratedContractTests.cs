@@ -188,10 +188,23 @@ namespace GregoryTerrain.Rig.Tests
         static KeywordSet Set(KeywordPragma pragma, KeywordSwitch by, KeywordStages stages, KeywordScope scope, params (string, FrameKeywords)[] keywords) =>
             new KeywordSet(pragma, by, scope, stages, keywords);
 
+        /// <summary>Every flag the frame planner can raise switches exactly one declared keyword (a new flag without one would be ignored by the renderer).</summary>
+        [Test]
+        public void EveryFrameKeywordsFlagHasItsKeyword()
+        {
+            var switched = ShaderKeywords.SwitchedBy(KeywordSwitch.Renderer);
+            foreach (FrameKeywords flag in Enum.GetValues(typeof(FrameKeywords)))
+                if (flag != FrameKeywords.None)
+                    Assert.That(switched.Count(k => k.flag == flag), Is.EqualTo(1), $"FrameKeywords.{flag}: renderer keywords declared with it");
+        }
+
         /// <summary>A declaration Unity would misread, or the renderer could not switch, is refused naming the set and the value.</summary>
         [TestCase("renderer shader_feature", "Sets[1] (GT_SNOW): Pragma ShaderFeatureLocal for a set the renderer switches")]
         [TestCase("two stages", "Sets[1] (GT_SNOW): Stages Vertex, Fragment: Unity's keyword pragmas name every stage or exactly one")]
         [TestCase("hull in fallback", "Sets[1] (GT_SNOW): Stages Hull in a fallback SubShader")]
+        [TestCase("domain in colour", "Sets[1] (GT_SNOW): Stages Domain in a fallback SubShader's pass (the colour file")]
+        [TestCase("colour and subshader", "Sets[1] (GT_SNOW): Scope TessellatedSubShader, ColourPasses: one of")]
+        [TestCase("no scope", "Sets[1] (GT_SNOW): Scope 0: one of")]
         [TestCase("lower case", "Sets[1] (GT_snow): keyword 'GT_snow' is not GT_ and upper-case words joined by '_'")]
         [TestCase("renderer without flag", "Sets[1] (GT_SNOW): keyword GT_SNOW has flag None")]
         [TestCase("material with flag", "Sets[1] (GT_SNOW): keyword GT_SNOW has flag Snow")]
@@ -208,6 +221,9 @@ namespace GregoryTerrain.Rig.Tests
                 "renderer shader_feature" => Set(KeywordPragma.ShaderFeatureLocal, r, KeywordStages.All, all, ("GT_SNOW", FrameKeywords.Snow)),
                 "two stages" => Set(mc, r, KeywordStages.Vertex | KeywordStages.Fragment, all, ("GT_SNOW", FrameKeywords.Snow)),
                 "hull in fallback" => Set(mc, r, KeywordStages.Hull, all, ("GT_SNOW", FrameKeywords.Snow)),
+                "domain in colour" => Set(mc, r, KeywordStages.Domain, KeywordScope.ColourPasses, ("GT_SNOW", FrameKeywords.Snow)),
+                "colour and subshader" => Set(mc, r, KeywordStages.All, KeywordScope.TessellatedSubShader | KeywordScope.ColourPasses, ("GT_SNOW", FrameKeywords.Snow)),
+                "no scope" => Set(mc, r, KeywordStages.All, 0, ("GT_SNOW", FrameKeywords.Snow)),
                 "lower case" => Set(mc, r, KeywordStages.All, all, ("GT_snow", FrameKeywords.Snow)),
                 "renderer without flag" => Set(mc, r, KeywordStages.All, all, ("GT_SNOW", FrameKeywords.None)),
                 "material with flag" => Set(mc, KeywordSwitch.Material, KeywordStages.All, all, ("GT_SNOW", FrameKeywords.Snow)),

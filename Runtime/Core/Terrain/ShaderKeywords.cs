@@ -54,8 +54,10 @@ namespace GregoryTerrain
     /// </summary>
     internal static class ShaderKeywords
     {
-        public const string Noise = "GT_NOISE", NoiseTable = "GT_NOISE_TABLE", HeightColor = "GT_HEIGHT_COLOR";
-        public const string Snow = "GT_SNOW", RangeOrigin = "GT_RANGE_ORIGIN", Levels = "GT_LOD", VertexCache = "GT_VERTEX_CACHE";
+        public const string Noise = "GT_NOISE", HeightColor = "GT_HEIGHT_COLOR";
+        public const string NoiseTable = "GT_NOISE_TABLE";   // the tiled noise: repeats every 256 cells of each octave
+        public const string Snow = "GT_SNOW", Levels = "GT_LOD", VertexCache = "GT_VERTEX_CACHE";
+        public const string RangeOrigin = "GT_RANGE_ORIGIN";   // on while RelativeSurface.NeedsRangeOriginKeyword
         public const string DebugNormals = "GT_DEBUG_NORMALS", DebugPatchId = "GT_DEBUG_PATCH_ID", DebugTessFactor = "GT_DEBUG_TESS_FACTOR";
 
         const KeywordPragma Feature = KeywordPragma.ShaderFeatureLocal, MultiCompile = KeywordPragma.MultiCompileLocal;

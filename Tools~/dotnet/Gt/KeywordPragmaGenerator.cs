@@ -10,7 +10,7 @@ namespace GregoryTerrain.Rig
     /// gt generate, the keyword half: GregoryTerrain.shader's keyword pragmas from Core's one
     /// declaration (<see cref="ShaderKeywords.Sets"/>), a file per <see cref="KeywordScope"/> that the
     /// shader reads with #include_with_pragmas. Plain pragma lines under a header; no conditional (Unity
-    /// would not evaluate one around a pragma the way the rig does).
+    /// evaluates one around a pragma only on a few predefined macros: nothing here needs it).
     /// </summary>
     static class KeywordPragmaGenerator
     {
@@ -70,8 +70,11 @@ namespace GregoryTerrain.Rig
             if (set.Keywords.Length == 0) throw new ArgumentException($"{where}: a set needs a keyword");
             try { StageSuffix(set.Stages); }
             catch (ArgumentException e) { throw new ArgumentException($"{where}: {e.Message}"); }
-            if ((set.Scope & KeywordScope.FallbackSubShader) != 0 && (set.Stages & KeywordStages.All & ~(KeywordStages.Hull | KeywordStages.Domain)) == 0)
-                throw new ArgumentException($"{where}: Stages {set.Stages} in a fallback SubShader, which has no hull or domain stage");
+            bool colour = (set.Scope & KeywordScope.ColourPasses) != 0;
+            if (set.Scope == 0 || (set.Scope & ~(KeywordScope.EverySubShader | KeywordScope.ColourPasses)) != 0 || colour && set.Scope != KeywordScope.ColourPasses)
+                throw new ArgumentException($"{where}: Scope {set.Scope}: one of TessellatedSubShader, FallbackSubShader, EverySubShader or ColourPasses (a colour pass reads its SubShader's file too, so a set in both is declared twice there)");
+            if ((set.Scope & KeywordScope.FallbackSubShader) != 0 | colour && (set.Stages & KeywordStages.All & ~(KeywordStages.Hull | KeywordStages.Domain)) == 0)
+                throw new ArgumentException($"{where}: Stages {set.Stages} in a fallback SubShader's pass{(colour ? " (the colour file is read by the fallback's colour pass too)" : "")}, which has no hull or domain stage");
             if (set.SwitchedBy == KeywordSwitch.Renderer && set.Pragma != KeywordPragma.MultiCompileLocal)
                 throw new ArgumentException($"{where}: Pragma {set.Pragma} for a set the renderer switches (a build strips shader_feature variants no saved material uses; use MultiCompileLocal)");
             for (int k = 0; k < set.Keywords.Length; k++)
