@@ -1097,8 +1097,8 @@ PICTURES = [("depth", "URP", "DepthOnly", [], "glslang"), ("lit", "URP", "Forwar
             ("builtin_fog_linear", "Builtin", "ForwardBase", ["FOG_LINEAR"], "glslang"),
             ("builtin_fog_exp", "Builtin", "ForwardBase", ["FOG_EXP"], "glslang"),
             ("builtin_fog_exp2", "Builtin", "ForwardBase", ["FOG_EXP2"], "glslang"),
-            ("builtin_shadow_map", "Builtin", "ShadowCaster", [], "glslang"),
-            ("builtin_camera_depth", "Builtin", "ShadowCaster", [], "glslang"),
+            ("builtin_shadow_map", "Builtin", "ShadowCaster", ["SHADOWS_DEPTH"], "glslang"),
+            ("builtin_camera_depth", "Builtin", "ShadowCaster", ["SHADOWS_DEPTH"], "glslang"),
             ("builtin_lit_shadows", "Builtin", "ForwardBase", ["SHADOWS_SCREEN"], "dxc"),
             ("lit_cascades", "URP", "ForwardLit", ["_MAIN_LIGHT_SHADOWS_CASCADE"], "glslang")]
 # depth_normals: URP's DepthNormalsOnly with _GBUFFER_NORMALS_OCT, the variant whose output fits the harness's
