@@ -1,7 +1,8 @@
 // Built-in render pipeline adapter (interface: see StandaloneAdapter.hlsl).
 // Unity API names used: HLSLSupport.cginc (CBUFFER_START/CBUFFER_END), UnityCG.cginc
 // (UnityWorldToClipPos, UnityWorldSpaceLightDir, UnityApplyLinearShadowBias, _WorldSpaceCameraPos,
-// _ScreenParams, _WorldSpaceLightPos0, unity_LightShadowBias, unity_WorldToShadow), UnityLightingCommon.cginc (_LightColor0) and
+// _ScreenParams, _WorldSpaceLightPos0, unity_LightShadowBias, unity_WorldToShadow, _LightPositionRange,
+// UnityEncodeCubeShadowDepth), UnityLightingCommon.cginc (_LightColor0) and
 // AutoLight.cginc (unitySampleShadow, the SHADOWS_SCREEN keyword). Use it in a pass with
 // Tags { "LightMode" = "ForwardBase" } so Unity fills the main directional light.
 // Compiled against the real 2022.3 CGIncludes off Unity by the rig (Tools~/rig/shaderlab.py).
@@ -12,12 +13,13 @@
 // Shadows: the ShadowCaster pass declares multi_compile_shadowcaster and the caster does per variant what
 // UnityCG.cginc's TRANSFER_SHADOW_CASTER_NOPOS / SHADOW_CASTER_FRAGMENT do (UnityCG.cginc:962-982):
 //   SHADOWS_DEPTH (directional, spot), and SHADOWS_CUBE where the cube map is a depth texture
-//   (SHADOWS_CUBE_IN_DEPTH_TEX, UnityCG.cginc:48-51: every API a target 4.5 SubShader runs on): the normal
+//   (SHADOWS_CUBE_IN_DEPTH_TEX, UnityCG.cginc:48-51: D3D11/12, Metal, GL core, GLES3, Vulkan, PlayStation, Switch): the normal
 //   offset, then UnityApplyLinearShadowBias, which leaves a cube map's depth bias out (UnityCG.cginc:942): the
 //   receiver subtracts it from the distance (UnitySampleShadowmap, UnityShadowLibrary.cginc:113).
 //   SHADOWS_CUBE without a depth cube map (GLES2, ...; GT_SHADOW_CASTER_CUBE_DISTANCE): the plain clip position,
 //   and the fragment writes the biased distance to the light over its range (GT_ShadowCasterColor). The pass's
-//   ColorMask 0 masks that colour: a target 4.5 SubShader never runs where this variant is drawn.
+//   ColorMask 0 masks that colour: of 2022.3's APIs only GLES2 lacks the depth cube map, and it runs no
+//   target 4.5 SubShader (the ColorMask must go if one ever draws this variant).
 #ifndef GT_BUILTIN_ADAPTER_INCLUDED
 #define GT_BUILTIN_ADAPTER_INCLUDED
 
