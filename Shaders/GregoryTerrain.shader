@@ -403,6 +403,7 @@ Shader "GregoryTerrain/Terrain"
             Tags { "LightMode" = "ShadowCaster" }
             ColorMask 0
             HLSLPROGRAM
+            #pragma multi_compile_shadowcaster
             #define GT_PASS_SHADOWCASTER 1
             #include "Packages/com.gregoryterrain.tessellation/Shaders/Pipelines/BuiltinAdapter.hlsl"
             ENDHLSL
@@ -439,6 +440,7 @@ Shader "GregoryTerrain/Terrain"
             Tags { "LightMode" = "ShadowCaster" }
             ColorMask 0
             HLSLPROGRAM
+            #pragma multi_compile_shadowcaster
             #define GT_PASS_SHADOWCASTER 1
             #include "Packages/com.gregoryterrain.tessellation/Shaders/Pipelines/BuiltinAdapter.hlsl"
             ENDHLSL

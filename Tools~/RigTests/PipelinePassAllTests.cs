@@ -38,13 +38,14 @@ namespace GregoryTerrain.Rig.Tests
             Assert.That(all, Is.EqualTo(expected), "pipeline_pass_all draws exactly shaderlab's variants of the tessellated SubShaders");
 
             // Independently of shaderlab's enumeration: every keyword the shader's passes declare (and multi_compile_fog's
-            // three) is drawn by some variant.
+            // three, multi_compile_shadowcaster's two) is drawn by some variant.
             string rootDir = HarnessRun.PackageRoot();
             string text = File.ReadAllText(Path.Combine(rootDir, "Shaders", "GregoryTerrain.shader")) +
                           string.Concat(Directory.GetFiles(Path.Combine(rootDir, "Shaders", "Pipelines"), "ShaderKeywords.*.cs.hlsl").Select(File.ReadAllText));
             var declared = Regex.Matches(text, @"#pragma\s+(?:multi_compile|shader_feature)\w*([^\r\n]*)")
                 .SelectMany(m => m.Groups[1].Value.Split(' ', '\t')).Where(k => k.Length > 0 && !Regex.IsMatch(k, "^_+$")).ToHashSet();
             if (Regex.IsMatch(text, @"#pragma\s+multi_compile_fog")) declared.UnionWith(new[] { "FOG_LINEAR", "FOG_EXP", "FOG_EXP2" });
+            if (Regex.IsMatch(text, @"#pragma\s+multi_compile_shadowcaster")) declared.UnionWith(new[] { "SHADOWS_DEPTH", "SHADOWS_CUBE" });
             var drawn = all.SelectMany(l => l.Split('\t')[3].Split(' ')).ToHashSet();
             Assert.That(declared.Count, Is.GreaterThan(20), "keywords found in the shader's pragmas");
             Assert.That(declared.Where(k => !drawn.Contains(k)), Is.Empty, "declared keywords no variant draws");

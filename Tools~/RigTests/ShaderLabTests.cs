@@ -307,6 +307,9 @@ namespace GregoryTerrain.Rig.Tests
                     bool fog = p.Pragmas.Any(a => a.SequenceEqual(new[] { "multi_compile_fog" }));
                     Assert.That(fog, Is.EqualTo(s.Pipeline == "URP" && p.LightMode == "UniversalForwardOnly" || s.Pipeline == "Builtin" && p.LightMode == "ForwardBase"),
                         where + ": multi_compile_fog (URP forward and Built-in ForwardBase only, as Lit and Standard; HDRP fogs opaques itself)");
+                    bool caster = p.Pragmas.Any(a => a.SequenceEqual(new[] { "multi_compile_shadowcaster" }));
+                    Assert.That(caster, Is.EqualTo(s.Pipeline == "Builtin" && p.LightMode == "ShadowCaster"),
+                        where + ": multi_compile_shadowcaster (Built-in's casters only, as Standard: SHADOWS_CUBE draws a point light's cube map)");
                     // The hull and domain stages run GT_ObjectToClip too: a keyword it reads must reach them.
                     if (s.Tessellated)
                         Assert.That(p.Pragmas.Where(a => a[0] == "multi_compile_vertex"), Is.Empty, where + ": multi_compile_vertex in a tessellated pass");

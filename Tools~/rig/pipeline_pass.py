@@ -30,7 +30,7 @@ lit_cascades (only with --only): URP's cascaded shadow, --cascades of them (draw
 Uniform blocks are bound as storage buffers (--uniform-blocks storage: the harness rewrites the
 blocks, same offsets): the rig's lavapipe rule (one compile per SPIR-V, whatever the values) on every device.
 
-  gt pipeline_pass [--out DIR] [--only depth|lit|normals|lit_dxc|builtin_lit|shadow_map|lit_shadows|depth_normals|depth_normals_snorm|depth_normals_layers|lit_layers|lit_fog_*|builtin_fog_*|builtin_lit_shadows|lit_cascades]...
+  gt pipeline_pass [--out DIR] [--only depth|lit|normals|lit_dxc|builtin_lit|shadow_map|lit_shadows|depth_normals|depth_normals_snorm|depth_normals_layers|lit_layers|lit_fog_*|builtin_fog_*|builtin_lit_shadows|lit_cascades|builtin_point_cube]...
       [--sun-elevation DEG] [--sun-azimuth DEG] [--shadow-sun-elevation DEG] [--shadow-sun-azimuth DEG] [--light-color R,G,B]
       [--object-yaw DEG] [--cascades 2|4] [--leave-default NAME]... [--fill-from NAME=OTHER]... [--transpose NAME]...
       [--flip-shadow-bias] [--swap-cascade-matrices]
@@ -648,6 +648,42 @@ def builtin_camera_depth_values():
     return {"unity_LightShadowBias": [0.0, 0.0, 0.0, 0.0], "_WorldSpaceLightPos0": [0.0, 0.0, 0.0, 0.0]}
 
 
+# Built-in's point-light shadow: one face of the light's cube map, looking down from above the terrain. Unity's point
+# light draws each face as a 90-degree perspective view from the light (_LightProjectionParams, UnityShaderVariables.cginc:
+# 114: x = far / (near - far), y = near far / (near - far), the projection the receiver inverts in UnitySampleShadowmap,
+# UnityShadowLibrary.cginc:110-118); the face's orientation within its plane does not change a depth, so the rig's
+# look_along stands for Unity's face matrix. The bias is the rig's choice (Unity computes it natively from Light.shadowBias;
+# x < 0 moves a SHADOWS_DEPTH caster away from the light under reversed depth): the check relates the two casters' depths
+# whatever its value. y 0: no near-plane clamp (a directional light's), z 0: no normal offset.
+POINT_LIGHT_POSITION = [0.0, 0.6, 0.0]     # world units, above the rig's terrain (around the origin, heights near 0)
+POINT_LIGHT_NEAR, POINT_LIGHT_RANGE = 0.05, 3.0
+POINT_SHADOW_RESOLUTION = 256
+POINT_SHADOW_BIAS = -0.01                  # unity_LightShadowBias.x
+
+
+class PointLightFace:
+    """The -y face of the point light's cube shadow map: Camera's reversed-depth perspective (90 degrees, square)."""
+
+    def __init__(self):
+        target = [POINT_LIGHT_POSITION[0], POINT_LIGHT_POSITION[1] - 1.0, POINT_LIGHT_POSITION[2]]
+        self.cam = Camera(POINT_LIGHT_POSITION, target, 90.0, POINT_SHADOW_RESOLUTION, POINT_SHADOW_RESOLUTION,
+                          POINT_LIGHT_NEAR, POINT_LIGHT_RANGE)
+
+    def caster_values(self):
+        """What the ShadowCaster reads for the face: its matrices, unity_LightShadowBias, the light's position
+        (_WorldSpaceLightPos0, w 1: a local light) and _LightPositionRange (xyz the position, w 1 / range)."""
+        c = self.cam
+        return {"unity_MatrixVP": c.view_proj, "unity_MatrixV": c.view, "glstate_matrix_projection": c.proj,
+                "unity_MatrixInvV": affine_inverse(c.view), "unity_LightShadowBias": [POINT_SHADOW_BIAS, 0.0, 0.0, 0.0],
+                "_WorldSpaceLightPos0": POINT_LIGHT_POSITION + [1.0],
+                "_LightPositionRange": POINT_LIGHT_POSITION + [1.0 / POINT_LIGHT_RANGE]}
+
+    def describe(self, o2w):
+        return {"resolution": POINT_SHADOW_RESOLUTION, "near": POINT_LIGHT_NEAR, "far": POINT_LIGHT_RANGE,
+                "position": POINT_LIGHT_POSITION, "bias": POINT_SHADOW_BIAS, "view_proj": self.cam.view_proj,
+                "object_to_world": o2w}
+
+
 def builtin_collect_values(shadow):
     """What the collect step reads (UnityShaderVariables.cginc:159-160): unity_WorldToShadow[0] (one cascade: the
     others the no-op URP sets, z = 1) and _LightShadowData.x, 1 - the light's shadow strength (1: the Light's
@@ -1097,10 +1133,12 @@ PICTURES = [("depth", "URP", "DepthOnly", [], "glslang"), ("lit", "URP", "Forwar
             ("builtin_fog_linear", "Builtin", "ForwardBase", ["FOG_LINEAR"], "glslang"),
             ("builtin_fog_exp", "Builtin", "ForwardBase", ["FOG_EXP"], "glslang"),
             ("builtin_fog_exp2", "Builtin", "ForwardBase", ["FOG_EXP2"], "glslang"),
-            ("builtin_shadow_map", "Builtin", "ShadowCaster", [], "glslang"),
-            ("builtin_camera_depth", "Builtin", "ShadowCaster", [], "glslang"),
+            ("builtin_shadow_map", "Builtin", "ShadowCaster", ["SHADOWS_DEPTH"], "glslang"),
+            ("builtin_camera_depth", "Builtin", "ShadowCaster", ["SHADOWS_DEPTH"], "glslang"),
             ("builtin_lit_shadows", "Builtin", "ForwardBase", ["SHADOWS_SCREEN"], "dxc"),
-            ("lit_cascades", "URP", "ForwardLit", ["_MAIN_LIGHT_SHADOWS_CASCADE"], "glslang")]
+            ("lit_cascades", "URP", "ForwardLit", ["_MAIN_LIGHT_SHADOWS_CASCADE"], "glslang"),
+            ("builtin_point_depth", "Builtin", "ShadowCaster", ["SHADOWS_DEPTH"], "glslang"),
+            ("builtin_point_cube", "Builtin", "ShadowCaster", ["SHADOWS_CUBE"], "glslang")]
 # depth_normals: URP's DepthNormalsOnly with _GBUFFER_NORMALS_OCT, the variant whose output fits the harness's
 # RGBA8 UNORM target as it fits URP's (UniversalRendererData's Accurate G-buffer Normals: R8G8B8A8_UNorm, the
 # octahedral normal's two 12-bit coordinates in RGB 8:8:8). URP's default (Forward, that option off) draws the
@@ -1131,8 +1169,13 @@ BUILTIN_SHADOW_PICTURES = {"builtin_shadow_map", "builtin_camera_depth", "builti
 # the same variant twice more over atlases whose tiles are all occluding or all clear (OUT/lit_cascades_bit<b>.png:
 # tile i occludes when bit b of i is set), so each sunlit pixel's shadow in the two pictures spells the cascade the
 # GPU chose there; OUT/cascades.json the cascades' spheres, matrices and the camera.
+# builtin_point_depth, builtin_point_cube (only with --only builtin_point_cube, which draws the other first): Built-in's
+# ShadowCaster into one face of a point light's cube map (PointLightFace), as Unity drew it before multi_compile_shadowcaster
+# (the directional/spot variant, SHADOWS_DEPTH) and as it draws it now (SHADOWS_CUBE): OUT/<picture>.f32 (the face's
+# depth, top row first), OUT/point_light.json the face.
+BUILTIN_POINT_PICTURES = {"builtin_point_depth", "builtin_point_cube"}
 ON_REQUEST = ({"depth_normals", "depth_normals_snorm", "depth_normals_layers", "lit_layers", "lit_cascades"} | FOG_PICTURES
-              | BUILTIN_SHADOW_PICTURES)
+              | BUILTIN_SHADOW_PICTURES | BUILTIN_POINT_PICTURES)
 DEPTH_PICTURES = {"depth_normals", "depth_normals_snorm", "depth_normals_layers"} | FOG_PICTURES
 COLOR_FORMATS = {"depth_normals_snorm": "R8G8B8A8_SNORM", "depth_normals_layers": "R8G8B8A8_SNORM"}
 TARGET1 = {"depth_normals_layers": "R8_UNORM", "lit_layers": "R8_UNORM"}
@@ -1279,6 +1322,8 @@ def main(argv=None):
     wanted = set(a.only or [p[0] for p in PICTURES if p[0] not in ON_REQUEST])
     wanted |= {m for m, receiver in SHADOW_PICTURES.items() if receiver in wanted}   # a receiver needs its map
     wanted |= BUILTIN_SHADOW_PICTURES if "builtin_lit_shadows" in wanted else set()
+    wanted |= BUILTIN_POINT_PICTURES if "builtin_point_cube" in wanted else set()
+    point = PointLightFace()
     builtin_texels = os.path.join(a.out, "builtin_shadow_map_texels.f32")
     screen_shadow = os.path.join(a.out, "builtin_screen_shadow.f32")
     for picture, pipeline, pass_name, keywords, compiler in PICTURES:
@@ -1304,6 +1349,11 @@ def main(argv=None):
             args = prepare(a, pipeline, pass_name, keywords, buffers, folder, compiler, sun=shadow.sun,
                            images={"_ShadowMapTexture.t": ("R32_SFLOAT", screen_shadow, cam.width, cam.height)})
             draw(args, buffers, os.path.join(a.out, picture + ".png"), log, depth_out=os.path.join(a.out, picture + "_depth.f32"))
+        elif picture in BUILTIN_POINT_PICTURES:
+            args = prepare(a, pipeline, pass_name, keywords, buffers, folder, compiler, scene=point.caster_values(), sun=shadow.sun)
+            draw(args, buffers, None, log, (POINT_SHADOW_RESOLUTION, POINT_SHADOW_RESOLUTION), os.path.join(a.out, picture + ".f32"))
+            with open(os.path.join(a.out, "point_light.json"), "w") as f:
+                json.dump(point.describe(rig_camera(buffers)[1]), f, indent=1)
         elif picture == "lit_cascades":
             draw_cascades(a, buffers, cam, shadow.sun)
         elif picture in SHADOW_PICTURES:

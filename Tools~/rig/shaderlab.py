@@ -374,6 +374,9 @@ def is_placeholder(k):
 
 
 FOG_KEYWORDS = ["FOG_LINEAR", "FOG_EXP", "FOG_EXP2"]   # what Unity's multi_compile_fog declares
+# Built-in's shortcut pragmas and the keyword sets Unity declares for them (a set without "_": one keyword is always
+# on). multi_compile_shadowcaster: SHADOWS_DEPTH for directional and spot maps, SHADOWS_CUBE for a point light's.
+SHORTCUTS = {"multi_compile_fog": ["_"] + FOG_KEYWORDS, "multi_compile_shadowcaster": ["SHADOWS_DEPTH", "SHADOWS_CUBE"]}
 
 
 def variants(program):
@@ -382,8 +385,8 @@ def variants(program):
     the first keyword of every other set."""
     keywords, firsts, required_sets = [], [], []
     for p in pragmas(program):
-        if p and p[0] == "multi_compile_fog":
-            p = ["multi_compile", "_"] + FOG_KEYWORDS
+        if p and p[0] in SHORTCUTS:
+            p = ["multi_compile"] + SHORTCUTS[p[0]]
         if p and KEYWORD_PRAGMA.match(p[0]):
             declared = [k for k in p[1:] if not is_placeholder(k)]
             if not any(is_placeholder(k) for k in p[1:]) and len(declared) > 1:
