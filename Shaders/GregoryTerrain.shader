@@ -9,7 +9,6 @@ Shader "GregoryTerrain/Terrain"
         [Toggle(GT_NOISE)] _GtNoise ("Noise detail", Float) = 1
         [Toggle(GT_HEIGHT_COLOR)] _GtHeightColor ("Height colour", Float) = 1
         [Toggle(GT_NOISE_TABLE)] _GtNoiseTable ("Tiled noise (faster; repeats every 256 noise cells)", Float) = 0
-
         // The debug views replace each other: KeywordEnum enables GT_DEBUG_<ENTRY> (Core's ShaderKeywords); no pass declares GT_DEBUG_NONE.
         [Header(Debug view)]
         [KeywordEnum(None, Normals, Patch_Id, Tess_Factor)] GT_DEBUG ("Debug view (replaces the lit colour)", Float) = 0
