@@ -49,6 +49,15 @@ namespace GregoryTerrain.Rig.Tests
             var drawn = all.SelectMany(l => l.Split('\t')[3].Split(' ')).ToHashSet();
             Assert.That(declared.Count, Is.GreaterThan(20), "keywords found in the shader's pragmas");
             Assert.That(declared.Where(k => !drawn.Contains(k)), Is.Empty, "declared keywords no variant draws");
+            // A set without "_" is never off in a variant Unity builds: Built-in's casters always have SHADOWS_DEPTH or
+            // SHADOWS_CUBE (multi_compile_shadowcaster), HDRP's ForwardOnly a shadow quality.
+            foreach (string[] f in shaderlab.Select(l => l.Split('\t')))
+            {
+                string[] always = f[0] == "Builtin" && f[2] == "ShadowCaster" ? new[] { "SHADOWS_DEPTH", "SHADOWS_CUBE" } :
+                                  f[0] == "HDRP" && f[2] == "ForwardOnly" ? new[] { "SHADOW_LOW", "SHADOW_MEDIUM", "SHADOW_HIGH" } : null;
+                if (always != null)
+                    Assert.That(f[3].Split(' ').Intersect(always), Is.Not.Empty, $"{string.Join(" ", f)}: a variant Unity never builds");
+            }
             // Built-in's screen-space shadow and its mobile path are both drawn.
             Assert.That(all, Does.Contain("Builtin\t4\tForwardBase\tSHADOWS_SCREEN").And.Contain("Builtin\t4\tForwardBase\tSHADOWS_SCREEN UNITY_NO_SCREENSPACE_SHADOWS"));
         }

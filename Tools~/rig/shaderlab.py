@@ -396,11 +396,6 @@ def variants(program):
             if declared and not set(declared) & set(EFFECTS) and not declared[0].startswith("GT_DEBUG"):
                 firsts.append(declared[0])
     out = [[]] + [[k] for k in keywords]
-    # A set without "_" always has one of its keywords on: Unity never compiles the set's absence,
-    # so every variant gets the set's first keyword unless it already names one of them.
-    for required in required_sets:
-        out = [v if set(v) & set(required) else v + [required[0]] for v in out]
-    out = [v for i, v in enumerate(out) if v not in out[:i]]
     out += [[k] + PLATFORM_DEFINES[k] for k in keywords if k in PLATFORM_DEFINES]
     out += [[MODIFIERS[k], k] for k in keywords if k in MODIFIERS and MODIFIERS[k] in keywords]
     effects = [k for k in EFFECTS if k in keywords]
@@ -408,7 +403,11 @@ def variants(program):
         out.append(effects)
     if effects and firsts:
         out.append(effects + firsts)
-    return out
+    # A set without "_" always has one of its keywords on: Unity never compiles the set's absence,
+    # so every variant gets the set's first keyword unless it already names one of them.
+    for required in required_sets:
+        out = [v if set(v) & set(required) else v + [required[0]] for v in out]
+    return [v for i, v in enumerate(out) if v not in out[:i]]
 
 
 def pass_variants(shader_path):
