@@ -14,7 +14,7 @@
 // The record is added to the floor's flat position, so the fetch stays in the program; the factors
 // are rounded up as the cache's integer factors are. Binding: t6 (rig binding 8), S(LOD_CACHE_LIMIT) records a tile.
 #include "TerrainRig.hlsl"
-#include "LevelVertexCache.hlsl"
+#include "../../Shaders/Cache/LevelVertexCache.hlsl"
 
 StructuredBuffer<uint4> _LevelCache GT_REGISTER(t6);
 

@@ -1,9 +1,8 @@
 using System;
 using System.Collections.Generic;
-using GregoryTerrain.Tests;
 using NUnit.Framework;
 
-namespace GregoryTerrain.Rig.Tests
+namespace GregoryTerrain.Tests
 {
     /// <summary>
     /// The Horizon levels' compact cache layout (<see cref="LevelVertexCache"/>): each drawn tile's
@@ -54,6 +53,30 @@ namespace GregoryTerrain.Rig.Tests
                 foreach (var (tess, _) in VertexCache.TilePoints(f[p], LevelVertexCache.TileFactorLimit(f[p])))
                     Assert.That(written, Does.Contain(LevelVertexCache.Record(first[p], tess, f[p])), $"patch {p} ({f[p]}): the draw reads tess {tess} from a record its kernel never wrote");
             }
+        }
+
+        /// <summary>
+        /// A tile the domain stage evaluates itself while the cache is on (no records) evaluates each
+        /// vertex at the point the kernel used for it (<see cref="LevelVertexCache.PointTess"/>), so it
+        /// matches a cached neighbour bit for bit: the kernel's exact point from the tessellator's
+        /// coordinate off by a fixed-point error (lavapipe: 1.2e-4) either way, edges kept on the edge.
+        /// </summary>
+        [Test]
+        public void TheDomainStagesPointIsTheKernelsPoint()
+        {
+            TileFactorSet[] f = Frame(64, 5);
+            int points = 0;
+            foreach (TileFactorSet set in f)
+                foreach (var (tess, _) in VertexCache.TilePoints(set, LevelVertexCache.TileFactorLimit(set)))
+                    foreach (float d in new[] { 0f, 1.2e-4f, -1.2e-4f })
+                    {
+                        // The tessellator keeps an edge vertex's 0 or 1 exact; it errs along the edge.
+                        float Off(float x) => x == 0f || x == 1f ? x : x + d;
+                        var drawn = new Float2(Off(tess.x), Off(tess.y));
+                        Assert.That(LevelVertexCache.PointTess(drawn, set), Is.EqualTo(tess), $"{set}: tess {tess} drawn at {drawn}");
+                        points++;
+                    }
+            Assert.That(points, Is.GreaterThan(10000));
         }
 
         [Test]

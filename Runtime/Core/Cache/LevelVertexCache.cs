@@ -1,13 +1,12 @@
 using System;
 
-namespace GregoryTerrain.Rig
+namespace GregoryTerrain
 {
     /// <summary>
-    /// The Horizon levels' vertex cache layout (Tools~/docs/design-notes.md, "Levels of detail through a
-    /// compute cache"), rig-side until the package has room for it (PackageSizeTests: 0.8 KB left), with
-    /// its HLSL twin Tools~/rig/LevelVertexCache.hlsl: every drawn tile of every level is evaluated again each frame the camera or the
-    /// levels move, so records need not persist and take a compact layout made again each frame. A
-    /// draw patch (<see cref="LodTiles"/>: tile <c>p mod M^2</c> of level <c>p / M^2</c>) at integer
+    /// The Horizon levels' vertex cache layout (internals.md, "Levels of detail"), name for name as
+    /// <c>Shaders/Cache/LevelVertexCache.hlsl</c>: every drawn tile of every level is evaluated again
+    /// each frame the levels draw, so records need not persist and take a compact layout made again
+    /// each frame. A draw patch (<see cref="LodTiles"/>: tile <c>p mod M^2</c> of level <c>p / M^2</c>) at integer
     /// factors f takes <see cref="VertexCache.SlotsPerTile"/> of its largest factor (its own L: the
     /// single range's slot rule, <see cref="VertexCache.Slot"/>, unchanged), a culled one none, and
     /// its records start at the exclusive prefix sum of the slots before it.
@@ -20,12 +19,12 @@ namespace GregoryTerrain.Rig
             if (integerFactors.IsCulled) return 0;
             Float4 e = integerFactors.edge;
             Float2 i = integerFactors.inside;
-            return Math.Max(Math.Max(Math.Max(Factor(e.x, integerFactors), Factor(e.y, integerFactors)), Math.Max(Factor(e.z, integerFactors), Factor(e.w, integerFactors))),
-                            Math.Max(Factor(i.x, integerFactors), Factor(i.y, integerFactors)));
+            return Math.Max(Math.Max(Math.Max(CheckFactor(e.x, integerFactors), CheckFactor(e.y, integerFactors)), Math.Max(CheckFactor(e.z, integerFactors), CheckFactor(e.w, integerFactors))),
+                            Math.Max(CheckFactor(i.x, integerFactors), CheckFactor(i.y, integerFactors)));
         }
 
         /// <summary>One integer factor of <paramref name="set"/>; throws naming the set unless it is an integer in [1, 64].</summary>
-        static int Factor(float f, TileFactorSet set)
+        static int CheckFactor(float f, TileFactorSet set)
         {
             if (!(f >= 1f && f <= VertexCache.MaxFactor) || f != MathF.Floor(f))
                 throw new ArgumentException(FormattableString.Invariant($"integerFactors ({set}) must be integers in [1, {VertexCache.MaxFactor}] (VertexCache.IntegerFactors) or culled"), "integerFactors");
@@ -55,6 +54,22 @@ namespace GregoryTerrain.Rig
                 next += TileSlots(integerFactors[p]);
             }
             return next;
+        }
+
+        /// <summary>
+        /// HLSL <c>LevelVertexCachePointTess</c>: the tess coordinate the vertex kernel evaluated the
+        /// record of the vertex at <paramref name="tess"/> at (its slot's exact <c>k / F</c>, or
+        /// <c>(i / Iu, j / Iv)</c>), where the tessellator's coordinate carries its fixed-point error.
+        /// </summary>
+        public static Float2 PointTess(Float2 tess, TileFactorSet integerFactors)
+        {
+            Float4 e = integerFactors.edge;
+            if (tess.x == 0f) return VertexCache.EdgeTess(0, (int)VertexCache.RoundToPoint(tess.y * e.x), e.x);
+            if (tess.y == 0f) return VertexCache.EdgeTess(1, (int)VertexCache.RoundToPoint(tess.x * e.y), e.y);
+            if (tess.x == 1f) return VertexCache.EdgeTess(2, (int)VertexCache.RoundToPoint(tess.y * e.z), e.z);
+            if (tess.y == 1f) return VertexCache.EdgeTess(3, (int)VertexCache.RoundToPoint(tess.x * e.w), e.w);
+            Float2 i = integerFactors.inside;
+            return new Float2(VertexCache.RoundToPoint(tess.x * i.x) / i.x, VertexCache.RoundToPoint(tess.y * i.y) / i.y);
         }
 
         /// <summary>The record of the vertex the tessellator puts at <paramref name="tess"/> in a draw patch whose records start at <paramref name="firstRecord"/>.</summary>
