@@ -11,6 +11,9 @@
 //                        heights and slopes (two octaves, as halves) faded in with the
 //                        continuous octave rule at the vertex's pixel scale, as a cache that keeps
 //                        the rule continuous would
+//   domain_cached_switch domain_cached behind a uniform branch (levels L > 0, true in every levels job)
+//                        beside the levels' own full domain stage: what one GT_LOD variant holding both
+//                        paths costs (the unused path's registers) against a variant of its own
 // The record is added to the floor's flat position, so the fetch stays in the program; the factors
 // are rounded up as the cache's integer factors are. Binding: t6 (rig binding 8), S(LOD_CACHE_LIMIT) records a tile.
 #include "TerrainRig.hlsl"
@@ -39,13 +42,26 @@ uint LevelCacheSlot(TileFactors factors, uint drawPatch, float2 tess)
     return LevelVertexCacheRecord(drawPatch * VertexCacheSlotsPerTile(LOD_CACHE_LIMIT), tess, f);
 }
 
-[domain("quad")]
-TerrainVaryings domain_cached(TileFactors factors, const OutputPatch<TileCorner, 4> corners,
-                              float2 tess : SV_DomainLocation)
+TerrainVaryings CachedVaryings(TileFactors factors, const OutputPatch<TileCorner, 4> corners, float2 tess)
 {
     uint4 r = _LevelCache[LevelCacheSlot(factors, corners[0].drawPatch, tess)];
     float3 positionOS = FlatPosition(corners, tess) + asfloat(r.xyz);
     return TerrainVaryingsOf(positionOS, UnpackCachedVaryings(r.w), 0.0, 0u, max(factors.inside[0], factors.inside[1]));
+}
+
+[domain("quad")]
+TerrainVaryings domain_cached(TileFactors factors, const OutputPatch<TileCorner, 4> corners,
+                              float2 tess : SV_DomainLocation)
+{
+    return CachedVaryings(factors, corners, tess);
+}
+
+[domain("quad")]
+TerrainVaryings domain_cached_switch(TileFactors factors, const OutputPatch<TileCorner, 4> corners,
+                                     float2 tess : SV_DomainLocation)
+{
+    if (LodLevelCount() > 0u) return CachedVaryings(factors, corners, tess);
+    return domain_shader(factors, corners, tess);
 }
 
 [domain("quad")]

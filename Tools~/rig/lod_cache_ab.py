@@ -12,10 +12,11 @@
         levels-floor         the same vert and hull with bench_floor.hlsl's flat domain stage
         levels-cached        the same with a domain stage reading one 16-byte record a vertex
         levels-cached-blend  two records a vertex and the fading octaves blended at the vertex's pixel scale
+        levels-cached-switch levels-cached behind a uniform branch beside the full domain stage (one variant, both paths)
         floor                the tessellator's floor at the levels' triangles (bench_run.sh floor-match)
       The stages, from the repository's root (F = the glslang options of bench.sh's floor_lod.spv):
         glslangValidator $F -S tese -e domain_cached -o PLAN/spirv/lodc/domain_cached.spv Tools~/rig/bench_lod_cache.hlsl
-        (domain_cached_blend likewise)
+        (domain_cached_blend and domain_cached_switch likewise)
       Run: bash PLAN/bench_run.sh PLAN PLAN/gt-harness PLAN/spirv OUT --device NVIDIA
   lod_cache_ab.py report RESULTS
       Per view the medians over rounds: triangles, domain invocations, ms of each job and ratios to
@@ -60,7 +61,8 @@ def prepare(plan, rounds):
             lv = rows[view]["levels"]
             jobs = [("levels", lv[3]), ("levels-floor", rows[view]["levels-floor"][3]),
                     ("levels-cached", cached(lv[3], "domain_cached", 1)),
-                    ("levels-cached-blend", cached(lv[3], "domain_cached_blend", 2))]
+                    ("levels-cached-blend", cached(lv[3], "domain_cached_blend", 2)),
+                    ("levels-cached-switch", cached(lv[3], "domain_cached_switch", 1))]
             for kind, args in jobs:
                 out.append([f"{view}{tag}:{kind}", "run", "-", args])
             fm = rows[view]["floor"]
@@ -104,7 +106,7 @@ def views_of(vals):
     return views
 
 
-KINDS = ["levels", "levels-floor", "levels-cached", "levels-cached-blend", "floor"]
+KINDS = ["levels", "levels-floor", "levels-cached", "levels-cached-blend", "levels-cached-switch", "floor"]
 
 
 def report(results):
@@ -114,15 +116,16 @@ def report(results):
         xs = [d[key] for k, d in vals.items() if re.match(pattern, k) and key in d]
         return statistics.median(xs) if xs else float("nan")
 
-    print("| ground view | triangles | domain invocations | levels ms | levels' floor ms | cached ms | cached-blend ms | floor ms | levels / floor | cached / floor | cached-blend / floor | domain ns a vertex (levels - levels' floor) |")
-    print("| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |")
+    print("| ground view | triangles | domain invocations | levels ms | levels' floor ms | cached ms | cached-blend ms | cached-switch ms | floor ms | levels / floor | cached / floor | cached-blend / floor | cached-switch / floor | domain ns a vertex (levels - levels' floor) |")
+    print("| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |")
     for v in views_of(vals):
         p = lambda kind: rf"^{re.escape(v)}(-r\d+)?:{re.escape(kind)}$"
         ms = {k: med(p(k)) for k in KINDS}
         fl, tese = ms["floor"], med(p("levels"), "tese")
         print(f"| {v} | {med(p('levels'), 'tris'):,.0f} | {tese:,.0f} | {ms['levels']:.3f} | {ms['levels-floor']:.3f}"
-              f" | {ms['levels-cached']:.3f} | {ms['levels-cached-blend']:.3f} | {fl:.3f}"
+              f" | {ms['levels-cached']:.3f} | {ms['levels-cached-blend']:.3f} | {ms['levels-cached-switch']:.3f} | {fl:.3f}"
               f" | {ms['levels'] / fl:.2f}x | {ms['levels-cached'] / fl:.2f}x | {ms['levels-cached-blend'] / fl:.2f}x"
+              f" | {ms['levels-cached-switch'] / fl:.2f}x"
               f" | {(ms['levels'] - ms['levels-floor']) * 1e6 / tese:.2f} |")
     print()
     print("| single-range job | frame ms | compute ms | domain invocations | compute ns a drawn vertex |")
