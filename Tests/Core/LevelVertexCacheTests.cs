@@ -99,6 +99,26 @@ namespace GregoryTerrain.Tests
             Assert.That(LevelVertexCache.TileSlots(f[2]), Is.EqualTo(VertexCache.SlotsPerTile(64)), "all 64: the single range's S(64)");
         }
 
+        /// <summary>
+        /// The renderer's records buffer a camera: it starts at a 16th of the fixed layout, keeps its
+        /// size while a frame's records fit, grows a quarter above a frame that needed more, and never
+        /// past 2^24 records (the count and first records travel as floats, exact below that).
+        /// </summary>
+        [Test]
+        public void TheBufferStartsSmallGrowsPastWhatAFrameNeededAndStaysExactInFloat()
+        {
+            Assert.That(LevelVertexCache.FirstRecords(3840, 64), Is.EqualTo(3840 * VertexCache.SlotsPerTile(64) / 16));
+            Assert.That(LevelVertexCache.FirstRecords(0, 64), Is.EqualTo(1), "a buffer is never empty");
+            Assert.That(LevelVertexCache.GrownRecords(1000, 1000), Is.EqualTo(1000), "a frame that fits keeps the buffer");
+            Assert.That(LevelVertexCache.GrownRecords(400, 1000), Is.EqualTo(1000), "never shrinks");
+            Assert.That(LevelVertexCache.GrownRecords(1001, 1000), Is.EqualTo(1251));
+            Assert.That(LevelVertexCache.GrownRecords(1L << 30, 1000), Is.EqualTo(LevelVertexCache.MaxRecords));
+            Assert.That(LevelVertexCache.FirstRecords(1 << 20, 64), Is.EqualTo(LevelVertexCache.MaxRecords));
+            Assert.That((float)LevelVertexCache.MaxRecords - 1f, Is.Not.EqualTo((float)LevelVertexCache.MaxRecords), "every count below the bound is exact in float");
+            var e = Assert.Throws<ArgumentOutOfRangeException>(() => LevelVertexCache.FirstRecords(-1, 64));
+            Assert.That(e.ParamName, Is.EqualTo("drawnTiles"));
+        }
+
         [Test]
         public void ATilesLimitIsItsLargestFactor()
         {

@@ -107,7 +107,7 @@ namespace GregoryTerrain.Rig
 
         /// <summary>The shipped path: the factor kernels every frame before the draw, the hull reading their records (binding 7).</summary>
         static string LevelsKernels(LodScene scene) =>
-            $"--storage {scene.FactorStorage} " + string.Join(" ", scene.KernelArgs($"@SPV@/{LevelsVariant}/lod_pieces.spv", $"@SPV@/{LevelsVariant}/lod_seams.spv"));
+            $"--storage {scene.FactorStorage} --storage {scene.CacheStorage} " + string.Join(" ", scene.KernelArgs($"@SPV@/{LevelsVariant}/lod_pieces.spv", $"@SPV@/{LevelsVariant}/lod_seams.spv"));
 
         /// <summary>The levels' tails a frame (--params-tail-path), beside the job's camera path.</summary>
         public const string LevelsTailPathFile = "lod_tail_path.f32";
