@@ -11,7 +11,7 @@ using static GregoryTerrain.UnityConversions;
 namespace GregoryTerrain
 {
     /// <summary>
-    /// A renderer's per-camera frame (internals.md, "Renderer map"): uploads, Core's plan sent on the
+    /// A renderer's per-camera frame (Tools~/docs/design-notes.md, "Renderer map"): uploads, Core's plan sent on the
     /// property block, the vertex cache, the draw material, the draw. It reads the component's settings.
     /// </summary>
     sealed class TerrainFrameDriver

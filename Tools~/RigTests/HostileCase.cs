@@ -6,7 +6,7 @@ using NUnit.Framework;
 
 namespace GregoryTerrain.Tests
 {
-    /// <summary>How a hostile case ended (troubleshooting.md, "The hostile-input suite").</summary>
+    /// <summary>How a hostile case ended (Tools~/development.md, "The hostile-input suite").</summary>
     public enum HostileOutcome { Clear, Unclear, Crash, Hang, AcceptedGarbage, StateChanged, DocumentedAcceptance, RefusedGoodInput }
 
     /// <summary>
@@ -24,7 +24,7 @@ namespace GregoryTerrain.Tests
         public Func<string> State;
         public Type Refusal;          // null: a documented acceptance
         public string[] Mentions = new string[0];
-        public string Acceptance;     // why accepting is right (documented in troubleshooting.md)
+        public string Acceptance;     // why accepting is right (troubleshooting.md, "Accepted on purpose")
 
         /// <summary>Longest message accepted as clear: a user's huge value must be quoted short.</summary>
         public const int MaxMessageLength = 1000;

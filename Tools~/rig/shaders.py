@@ -129,7 +129,7 @@ def run(cmd, log):
 
 
 def check_bindings(spv, log, keywords=()):
-    """Every resource must sit in set 0 at the binding of internals.md."""
+    """Every resource must sit in set 0 at the binding of Tools~/rig/README.md, "Descriptor bindings (Vulkan rig) and registers"."""
     params_bytes = TERRAIN_PARAMS_BYTES + (SNOW_PARAMS_BYTES if "GT_SNOW" in keywords else 0) + (LOD_PARAMS_BYTES if "GT_LOD" in keywords else 0)
     p = subprocess.run(["spirv-cross", spv, "--reflect"], stdout=subprocess.PIPE,
                        stderr=subprocess.PIPE, text=True)

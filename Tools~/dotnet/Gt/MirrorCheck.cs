@@ -11,7 +11,7 @@ using System.Text.RegularExpressions;
 namespace GregoryTerrain.Rig
 {
     /// <summary>
-    /// gt mirror: Core's C# and the HLSL are twins file for file (internals.md, "The mirror"). Each
+    /// gt mirror: Core's C# and the HLSL are twins file for file (Tools~/development.md, "The mirror"). Each
     /// <c>Shaders/D/X.hlsl</c> of the mirrored folders is paired with <c>Runtime/Core/D/X.cs</c>; the
     /// HLSL's functions are read from its text (comments and preprocessor lines skipped, bodies
     /// skipped by brace depth), the C#'s by reflection over the built Core assembly, each method
