@@ -5,18 +5,12 @@ using UnityEngine.Rendering;
 namespace GregoryTerrain
 {
     /// <summary>
-    /// The Horizon levels' kernels of TerrainCache.compute, dispatched per camera before the levels'
-    /// draw, every frame, where they run; else the hull computes the factors and the domain stage the
-    /// vertices (internals.md, "Levels of detail"): the factor kernels, then the vertex cache's
-    /// (LodVertexSlots, LodCacheVertices) into the camera's records, which the domain stage reads
-    /// while <c>_LodLevels.z</c> (their count) is nonzero. Without levels: no dispatch, no buffer.
-    /// Buffers per camera: HDRP raises every camera's callback before it executes any camera's draws,
-    /// so one shared buffer would hold the last camera's factors when the first one draws. The
-    /// records buffer starts at <see cref="LevelVertexCache.FirstRecords"/>; the slot kernel reports
-    /// what each frame needed (draw patch 0's record), read back without waiting
-    /// (<see cref="AsyncGPUReadback"/>), and a frame that needed more grows it for a later frame
-    /// (<see cref="LevelVertexCache.GrownRecords"/>): until then the tiles past its end evaluate in
-    /// the domain stage, so every frame draws right.
+    /// The Horizon levels' kernels of TerrainCache.compute, per camera before its draw, every frame,
+    /// where they run (internals.md, "Levels of detail"): factors, then vertex records, read while
+    /// <c>_LodLevels.y</c> and <c>.z</c> say so; else the hull and domain stage compute them. Buffers
+    /// per camera: HDRP raises every camera's callback before it executes any camera's draws. The
+    /// records grow from each frame's report (<see cref="AsyncGPUReadback"/>); until then the tiles
+    /// past the end evaluate in the domain stage.
     /// </summary>
     sealed class LevelFactorPass
     {
@@ -103,11 +97,7 @@ namespace GregoryTerrain
             return changed;
         }
 
-        /// <summary>
-        /// The camera's records buffer: made at <see cref="LevelVertexCache.FirstRecords"/>, made again
-        /// larger after a frame reported more than it holds, or when snow changes the record's size.
-        /// False where the device cannot read the report back (no growth: the buffer would stay short).
-        /// </summary>
+        /// <summary>The camera's records buffer, made again when a frame needed more (or snow changes the record). False without buffer readback.</summary>
         bool EnsureRecords(CameraFactors f, FrameState state, bool snow, int tiles)
         {
             if (!SystemInfo.supportsAsyncGPUReadback) return false;
@@ -205,9 +195,7 @@ namespace GregoryTerrain
             shader.Dispatch(_seamsKernel, (f.patches + 63) / 64, 1, 1);
         }
 
-        // After the factor kernels, on the same shader and parameters (Unity orders a compute shader's
-        // dispatches as issued): the slots' scan over every draw patch in one group, then a few groups
-        // a draw patch for its vertices; then the report of what the frame needed, read back later.
+        // After the factor kernels, on the same parameters (dispatches run in the order issued).
         void DispatchCache(FrameState state, int tiles, CameraFactors f)
         {
             ComputeShader shader = _kernelShader;

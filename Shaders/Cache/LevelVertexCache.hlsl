@@ -29,11 +29,8 @@ uint LevelVertexCacheRecord(uint firstRecord, float2 tess, TileFactorSet integer
     return firstRecord + VertexCacheSlot(tess, integerFactors.edge, integerFactors.inside, LevelVertexCacheTileFactorLimit(integerFactors));
 }
 
-// The tess coordinate the vertex kernel evaluated the record of the vertex at tess at: the slot's
-// exact k / F (VertexCacheEdgeTess) or (i / Iu, j / Iv), where the tessellator's coordinate carries
-// its fixed-point error. A tile the domain stage evaluates itself while the cache is on (no records:
-// off the camera's screen, or past the buffer's end) evaluates there, so its edges match a
-// neighbour's records bit for bit.
+// The kernel's point for the vertex at tess: exact k / F or (i / Iu, j / Iv), where the tessellator's
+// coordinate carries its fixed-point error. A tile without records evaluates there: bit for bit.
 float2 LevelVertexCachePointTess(float2 tess, TileFactorSet integerFactors)
 {
     float4 e = integerFactors.edge;

@@ -1,24 +1,12 @@
-// The Horizon levels' vertex cache in two compute kernels (GT_LOD; internals.md, "Levels of
-// detail"), dispatched after the factor kernels (LevelFactorKernels.hlsl, whose records they read)
-// every frame the levels draw from it. The domain stage then reads one record a vertex
-// (VertexSource.Levels.hlsl, while _LodLevels.z = C, the records the buffer holds, is nonzero).
-//
-//   LodVertexSlots     one group, dispatch (1, 1, 1): each draw patch's slots (LodPatchSlots) and
-//                      their exclusive prefix sum, its first record (LevelVertexCache.hlsl's
-//                      layout), into its LodFactorRecord's inside.z: -1 for none, and for a block
-//                      that would end past C (the domain stage evaluates that tile itself); the
-//                      records the frame needed into draw patch 0's inside.w (the renderer grows the
-//                      buffer from it). Each of the GT_LEVEL_CACHE_SCAN_LANES lanes sums a run of
-//                      ceil(P / lanes) patches in turn, the lanes' sums are scanned in log2(lanes)
-//                      steps, and each lane writes its run's first records. Any P works; its cost
-//                      grows as P / lanes: the levels' P = L M^2 is 5,120 at L = 20, M = 16 (20 a
-//                      lane), 81,920 at M = 64 (320 a lane). C and the first records are floats:
-//                      exact below 2^24 records (the renderer's bound).
-//   LodCacheVertices   a few groups per draw patch, dispatch (M^2, L, G), G =
-//                      VertexCacheGroupsPerTile(VertexCacheFactorLimit()): every vertex the
-//                      tessellator makes at the patch's integer factors, evaluated by
-//                      EvaluateLodTerrainVertex (the domain stage's own path, at this frame's
-//                      camera and origin) into its record. Patches without records do nothing.
+// The levels' vertex cache kernels (GT_LOD; internals.md, "Vertex cache of the levels"), after the
+// factor kernels, whose records they read; the domain stage reads the records while _LodLevels.z = C.
+//   LodVertexSlots     dispatch (1, 1, 1): each draw patch's slots (LodPatchSlots), their exclusive
+//                      prefix sum into inside.z (-1: none, or past C), the total into patch 0's inside.w.
+//                      A lane sums ceil(P / 256) patches, the lanes' sums are scanned in 8 steps: any P
+//                      works, at a cost of P / 256 a lane (P = L M^2: 20 at L = 20, M = 16; 320 at M = 64).
+//                      Floats: exact below 2^24 records (LevelVertexCache.MaxRecords).
+//   LodCacheVertices   dispatch (M^2, L, VertexCacheGroupsPerTile(VertexCacheFactorLimit())): every
+//                      vertex at the patch's integer factors, by the domain stage's own path.
 #ifndef GT_LEVEL_VERTEX_CACHE_KERNELS_INCLUDED
 #define GT_LEVEL_VERTEX_CACHE_KERNELS_INCLUDED
 
@@ -29,9 +17,7 @@
 
 groupshared uint gtLevelCacheRunSums[GT_LEVEL_CACHE_SCAN_LANES];
 
-// The slots draw patch p takes this frame: S of its own largest integer factor
-// (LevelVertexCacheTileSlots); none when its record is culled or the camera's view culls it
-// (LodFactorPieces' flag: only the camera's pass draws from records, another evaluates such a tile).
+// Draw patch p's slots: none when culled in its record or in the camera's view (LodFactorPieces' flag).
 uint LodPatchSlots(uint patch)
 {
     if (_LodFactorsRW[patch].pieces[1].w != 0.0) return 0u;
@@ -70,8 +56,7 @@ void LodVertexSlots(uint lane : SV_GroupIndex)
     if (lane == GT_LEVEL_CACHE_SCAN_LANES - 1u) _LodFactorsRW[0].inside.w = (float)gtLevelCacheRunSums[lane];
 }
 
-// The factors and first record come through the read-only _LodFactors (the same buffer): FXC
-// refuses a compute loop whose end depends on a UAV read without [allow_uav_condition].
+// Reads through _LodFactors (the same buffer): FXC refuses a loop ending on a UAV read.
 [numthreads(GT_VERTEX_CACHE_VERTEX_GROUP, 1, 1)]
 void LodCacheVertices(uint3 group : SV_GroupID, uint lane : SV_GroupIndex)
 {

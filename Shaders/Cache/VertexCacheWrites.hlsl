@@ -1,7 +1,5 @@
-// What both vertex caches' kernels write (VertexCacheKernels.hlsl, the single range;
-// LevelVertexCacheKernels.hlsl, the levels): the records buffer, a record, and a tile's points in
-// the order the kernels visit them. Include after VertexCache.hlsl. Core's twin of the points:
-// VertexCache.TilePoints.
+// Both vertex caches' kernels' writes: the records, and a tile's points in order (Core:
+// VertexCache.TilePoints). Include after VertexCache.hlsl.
 #ifndef GT_VERTEX_CACHE_WRITES_INCLUDED
 #define GT_VERTEX_CACHE_WRITES_INCLUDED
 
@@ -14,9 +12,8 @@ void WriteVertexCacheRecord(uint slot, TerrainVertexAttributes a)
         _VertexCacheRW[GT_VERTEX_CACHE_RECORD_UINT4S * slot + part] = VertexCacheRecordPart(a, part);
 }
 
-// The inside points a tile's slots hold per axis: the (Iu - 1) x (Iv - 1) interior of the grid
-// (its border is the edges'), or with wholeGrid (the single range anchored) the whole
-// (Iu + 1) x (Iv + 1) grid (ClippedCell.hlsl blends a clipped tile's edge from the border too).
+// Inside points a tile's slots hold per axis: the grid's interior, or with wholeGrid (the single
+// range anchored) the whole grid (ClippedCell.hlsl blends a clipped tile's edge from the border).
 uint2 VertexCacheGridPoints(float2 inside, bool wholeGrid) { return wholeGrid ? (uint2)inside + 1u : (uint2)inside - 1u; }
 
 // The points a tile at integer factors (edge, inside) has: its inside points and 4 edges of F + 1.

@@ -21,8 +21,7 @@ TileFactorSet LodKernelTileFactors(uint drawPatch)
     return f;
 }
 
-// The first record of a draw patch's vertices in _VertexCache this frame (LodVertexSlots wrote it),
-// or -1: the vertex kernels gave it none (the camera's view culls it, its block lay past the end).
+// A draw patch's first record in _VertexCache (LodVertexSlots), or -1: none.
 int LodFirstRecord(uint drawPatch) { return (int)_LodFactors[drawPatch].inside.z; }
 
 // The seams of draw patch p's tile (LodTiles.hlsl): coarseMask, its edges on the rim of the finer
@@ -134,8 +133,7 @@ TerrainPoint LodVertexPoint(TileLayout l, uint slot, uint drawPatch, float2 tess
     return q;
 }
 
-// The levels' vertex at tess of draw patch p: what their domain stage draws
-// (VertexSource.Levels.hlsl) and their vertex kernel stores (LevelVertexCacheKernels.hlsl).
+// The levels' vertex: what the domain stage draws and the vertex kernel stores.
 TerrainVertexAttributes EvaluateLodTerrainVertex(uint drawPatch, float2 tess, float4 edgeFactors)
 {
     uint slot;

@@ -36,10 +36,8 @@ TileFactors StageTileFactors(InputPatch<TileCorner, 4> corners)
     return ToTileFactors(LodTileFactors(patch, CornerTileFactors(l, slot, corners)));
 }
 
-// The domain stage's vertex (LodVertexPoint; EvaluateLodTerrainVertex's path). While the renderer
-// dispatched the levels' vertex kernels this frame (LodVertexCacheOn, a uniform), a tile they gave
-// records reads its vertex from one (LevelVertexCacheRecord), and a tile without evaluates at the
-// point the kernel would have (LevelVertexCachePointTess), so its edges match a cached neighbour's.
+// While the vertex kernels ran (LodVertexCacheOn, a uniform) a tile reads its records, or without
+// any evaluates at the kernel's points (LevelVertexCachePointTess): its edges match a cached neighbour's.
 TerrainVaryings StageDomainVertex(TileFactors factors, uint drawPatch, float2 tess, float tessFactor)
 {
     float4 edge = float4(factors.edge[0], factors.edge[1], factors.edge[2], factors.edge[3]);

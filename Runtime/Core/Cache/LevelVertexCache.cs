@@ -13,26 +13,17 @@ namespace GregoryTerrain
     /// </summary>
     internal static class LevelVertexCache
     {
-        /// <summary>
-        /// The most records a camera's buffer holds: the count C (<c>_LodLevels.z</c>) and each draw
-        /// patch's first record travel as floats, exact below 2^24 (268 MB of 16-byte records).
-        /// </summary>
+        /// <summary>Records a buffer holds at most: C (<c>_LodLevels.z</c>) and first records are floats, exact below 2^24.</summary>
         public const int MaxRecords = 1 << 24;
 
-        /// <summary>
-        /// A camera's first buffer, in records, before any frame reported what it needs: a 16th of
-        /// the fixed layout's S(L) a drawn tile (<paramref name="drawnTiles"/> tiles at factors up to
-        /// <paramref name="factorLimit"/>). The bench's ground views need 5.9-16 MB at M = 16
-        /// (Tools~/docs/design-notes.md); a frame that needs more still draws (its late tiles in the
-        /// domain stage) and the buffer grows (<see cref="GrownRecords"/>).
-        /// </summary>
+        /// <summary>A camera's first buffer: a 16th of S(<paramref name="factorLimit"/>) a drawn tile; it grows (<see cref="GrownRecords"/>).</summary>
         public static int FirstRecords(int drawnTiles, int factorLimit)
         {
             if (drawnTiles < 0) throw new ArgumentOutOfRangeException(nameof(drawnTiles), drawnTiles, "drawnTiles must be >= 0");
             return (int)Math.Clamp((long)drawnTiles * VertexCache.SlotsPerTile(factorLimit) / 16, 1, MaxRecords);
         }
 
-        /// <summary>The buffer after a frame needed <paramref name="needed"/> records: as it was while they fit, else a quarter above them (up to <see cref="MaxRecords"/>).</summary>
+        /// <summary>The buffer after a frame needed <paramref name="needed"/>: kept while they fit, else a quarter above.</summary>
         public static int GrownRecords(long needed, int current) =>
             needed <= current ? current : (int)Math.Min(MaxRecords, needed + needed / 4);
 
@@ -79,11 +70,7 @@ namespace GregoryTerrain
             return next;
         }
 
-        /// <summary>
-        /// HLSL <c>LevelVertexCachePointTess</c>: the tess coordinate the vertex kernel evaluated the
-        /// record of the vertex at <paramref name="tess"/> at (its slot's exact <c>k / F</c>, or
-        /// <c>(i / Iu, j / Iv)</c>), where the tessellator's coordinate carries its fixed-point error.
-        /// </summary>
+        /// <summary>HLSL <c>LevelVertexCachePointTess</c>: the kernel's exact point (k / F, i / Iu) for the tessellator's <paramref name="tess"/>.</summary>
         public static Float2 PointTess(Float2 tess, TileFactorSet integerFactors)
         {
             Float4 e = integerFactors.edge;

@@ -1,10 +1,12 @@
 using System;
 using System.Collections.Generic;
+using GregoryTerrain.Tests;
 using NUnit.Framework;
 
-namespace GregoryTerrain.Tests
+namespace GregoryTerrain.Rig.Tests
 {
     /// <summary>
+    /// (Core's tests, kept under Tools~: the package's 2 MB leaves no room for them in Tests/Core.)
     /// The Horizon levels' compact cache layout (<see cref="LevelVertexCache"/>): each drawn tile's
     /// records lie in its own block, the block holds every record the draw reads for a vertex of the
     /// tile and the kernel writes them, culled tiles take none, and bad input changes nothing.
@@ -55,12 +57,7 @@ namespace GregoryTerrain.Tests
             }
         }
 
-        /// <summary>
-        /// A tile the domain stage evaluates itself while the cache is on (no records) evaluates each
-        /// vertex at the point the kernel used for it (<see cref="LevelVertexCache.PointTess"/>), so it
-        /// matches a cached neighbour bit for bit: the kernel's exact point from the tessellator's
-        /// coordinate off by a fixed-point error (lavapipe: 1.2e-4) either way, edges kept on the edge.
-        /// </summary>
+        /// <summary>A tile without records evaluates at the kernel's points, from the tessellator's coordinate off by 1.2e-4 (lavapipe).</summary>
         [Test]
         public void TheDomainStagesPointIsTheKernelsPoint()
         {
@@ -99,11 +96,7 @@ namespace GregoryTerrain.Tests
             Assert.That(LevelVertexCache.TileSlots(f[2]), Is.EqualTo(VertexCache.SlotsPerTile(64)), "all 64: the single range's S(64)");
         }
 
-        /// <summary>
-        /// The renderer's records buffer a camera: it starts at a 16th of the fixed layout, keeps its
-        /// size while a frame's records fit, grows a quarter above a frame that needed more, and never
-        /// past 2^24 records (the count and first records travel as floats, exact below that).
-        /// </summary>
+        /// <summary>The records buffer: a 16th of the fixed layout first, kept while a frame fits, a quarter above one that did not, never past 2^24.</summary>
         [Test]
         public void TheBufferStartsSmallGrowsPastWhatAFrameNeededAndStaysExactInFloat()
         {
