@@ -179,6 +179,14 @@ namespace GregoryTerrain.Rig
             return new double[] { v.x, v.y, v.z };
         }
 
+        /// <summary>The same scene drawn from a vertex cache of <paramref name="records"/> records (<see cref="CacheRecords"/>), laid out again.</summary>
+        public LodScene WithCacheRecords(int records)
+        {
+            var s = (LodScene)MemberwiseClone();
+            s.CacheRecords = records;
+            return s.Build(_source);
+        }
+
         /// <summary>The same scene with the camera moved <paramref name="meters"/> along +y (forward) and laid out again.</summary>
         public LodScene Stepped(double meters)
         {
