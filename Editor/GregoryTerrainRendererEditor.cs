@@ -71,11 +71,11 @@ namespace GregoryTerrain.EditorTools
             foreach (var (title, open, fields) in RendererInspectorLayout.Sections)
                 Section(title, open, () =>
                 {
-                    if (title == "Noise and colour") KeywordOffNote(ShaderIds.NoiseKeyword, "Noise detail");
+                    if (title == "Noise and colour") KeywordOffNote(ShaderKeywords.Noise, "Noise detail");
                     foreach (string name in fields)
                     {
                         if (!RendererInspectorLayout.ShowsForAny(name, contexts)) continue;
-                        if (name == "heightColor.gamma") KeywordOffNote(ShaderIds.HeightColorKeyword, "Height colour");
+                        if (name == "heightColor.gamma") KeywordOffNote(ShaderKeywords.HeightColor, "Height colour");
                         DrawField(name);
                     }
                 });

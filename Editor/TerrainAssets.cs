@@ -46,13 +46,13 @@ namespace GregoryTerrain.EditorTools
                 return null;
             }
             var material = new Material(shader);
-            SetToggle(material, "_GtHeightColor", ShaderIds.HeightColorKeyword, true);
-            SetToggle(material, "_GtNoise", ShaderIds.NoiseKeyword, noise);
-            SetToggle(material, "_GtNoiseTable", ShaderIds.NoiseTableKeyword, false);
+            SetToggle(material, "_GtHeightColor", ShaderKeywords.HeightColor, true);
+            SetToggle(material, "_GtNoise", ShaderKeywords.Noise, noise);
+            SetToggle(material, "_GtNoiseTable", ShaderKeywords.NoiseTable, false);
             // The debug view keeps its property's default, None, which is no keyword at all.
-            material.DisableKeyword(ShaderIds.DebugNormalsKeyword);
-            material.DisableKeyword(ShaderIds.DebugPatchIdKeyword);
-            material.DisableKeyword(ShaderIds.DebugTessFactorKeyword);
+            material.DisableKeyword(ShaderKeywords.DebugNormals);
+            material.DisableKeyword(ShaderKeywords.DebugPatchId);
+            material.DisableKeyword(ShaderKeywords.DebugTessFactor);
             AssetDatabase.CreateAsset(material, AssetDatabase.GenerateUniqueAssetPath("Assets/Gregory Terrain.mat"));
             return material;
         }

@@ -12,21 +12,17 @@ namespace GregoryTerrain
         internal Material Current => _drawMaterial;
 
         /// <summary>
-        /// The package's own material keywords. Their state on the asset is compared bit by bit as
-        /// well as the CRC, so a keyword toggled on the asset reaches the copy whether or not
-        /// Unity's CRC covers keywords; reading them allocates nothing (shaderKeywords would).
+        /// The keywords the material switches (Core's ShaderKeywords). Their state on the asset is
+        /// compared bit by bit as well as the CRC, so a keyword toggled on the asset reaches the copy
+        /// whether or not Unity's CRC covers keywords; reading them allocates nothing (shaderKeywords would).
         /// </summary>
-        static readonly string[] AssetKeywords =
-        {
-            ShaderIds.NoiseKeyword, ShaderIds.HeightColorKeyword, ShaderIds.NoiseTableKeyword,
-            ShaderIds.DebugNormalsKeyword, ShaderIds.DebugPatchIdKeyword, ShaderIds.DebugTessFactorKeyword,
-        };
+        static readonly (string name, FrameKeywords flag)[] AssetKeywords = ShaderKeywords.SwitchedBy(KeywordSwitch.Material);
 
         static int AssetKeywordBits(Material material)
         {
             int bits = 0;
             for (int k = 0; k < AssetKeywords.Length; k++)
-                if (material.IsKeywordEnabled(AssetKeywords[k])) bits |= 1 << k;
+                if (material.IsKeywordEnabled(AssetKeywords[k].name)) bits |= 1 << k;
             return bits;
         }
 
@@ -63,20 +59,19 @@ namespace GregoryTerrain
             else if (HasKeywords(_drawMaterial, keywords))
                 return _drawMaterial;   // steady state: nothing set
             keys.Copied(asset);
-            for (int k = 0; k < RendererKeywords.Length; k++)
-                if ((keywords & (FrameKeywords)(1 << k)) != 0) _drawMaterial.EnableKeyword(RendererKeywords[k]);
-                else _drawMaterial.DisableKeyword(RendererKeywords[k]);
+            foreach (var (name, flag) in RendererKeywords)
+                if ((keywords & flag) != 0) _drawMaterial.EnableKeyword(name);
+                else _drawMaterial.DisableKeyword(name);
             return _drawMaterial;
         }
 
-        /// <summary>The keywords a renderer chooses, in <see cref="FrameKeywords"/>' bit order.</summary>
-        static readonly string[] RendererKeywords =
-            { ShaderIds.VertexCacheKeyword, ShaderIds.SnowKeyword, ShaderIds.LevelsKeyword, ShaderIds.RangeOriginKeyword };
+        /// <summary>The keywords a renderer chooses, each with its <see cref="FrameKeywords"/> flag.</summary>
+        static readonly (string name, FrameKeywords flag)[] RendererKeywords = ShaderKeywords.SwitchedBy(KeywordSwitch.Renderer);
 
         static bool HasKeywords(Material m, FrameKeywords keywords)
         {
-            for (int k = 0; k < RendererKeywords.Length; k++)
-                if (m.IsKeywordEnabled(RendererKeywords[k]) != ((keywords & (FrameKeywords)(1 << k)) != 0)) return false;
+            foreach (var (name, flag) in RendererKeywords)
+                if (m.IsKeywordEnabled(name) != ((keywords & flag) != 0)) return false;
             return true;
         }
 

@@ -141,7 +141,7 @@ namespace GregoryTerrain
         internal TerrainSurfaceQuery SurfaceQuery => Surface.Query;
 
         /// <summary>The queries' noise: with GT_NOISE the noise settings, else null.</summary>
-        internal NoiseSettings? QueryNoise => material != null && material.IsKeywordEnabled(ShaderIds.NoiseKeyword)
+        internal NoiseSettings? QueryNoise => material != null && material.IsKeywordEnabled(ShaderKeywords.Noise)
             ? noise : (NoiseSettings?)null;
 
         /// <summary>Whether a grid is uploaded with valid settings: <see cref="WorldBounds"/> holds the drawn terrain.</summary>
@@ -412,7 +412,7 @@ namespace GregoryTerrain
         {
             buffers = Frame.Gpu;
             parameters = _state.parameters; gridStamp = Frame.GridStamp;
-            noise = material != null && material.IsKeywordEnabled(ShaderIds.NoiseKeyword);
+            noise = material != null && material.IsKeywordEnabled(ShaderKeywords.Noise);
             bool ready = HasDrawn;
             // The table the draw binds (made here if the simulator asks before the next draw does).
             noiseCells = ready && noise ? Frame.EnsureNoiseTable() : null;
@@ -511,8 +511,8 @@ namespace GregoryTerrain
         /// </summary>
         internal TerrainKeywords NoiseKeywords()
         {
-            if (material == null || !material.IsKeywordEnabled(ShaderIds.NoiseKeyword)) return TerrainKeywords.None;
-            return material.IsKeywordEnabled(ShaderIds.NoiseTableKeyword) ? TerrainKeywords.Noise | TerrainKeywords.NoiseTable : TerrainKeywords.Noise;
+            if (material == null || !material.IsKeywordEnabled(ShaderKeywords.Noise)) return TerrainKeywords.None;
+            return material.IsKeywordEnabled(ShaderKeywords.NoiseTable) ? TerrainKeywords.Noise | TerrainKeywords.NoiseTable : TerrainKeywords.Noise;
         }
 
         /// <summary>sum_k amplitude / beta^k over the octaves: the most noise can move a point.</summary>

@@ -5,13 +5,13 @@ namespace GregoryTerrain
 {
     /// <summary>
     /// Every name the package's C# shares with its shaders, written once: material and compute
-    /// properties (looked up once with Shader.PropertyToID, never a string per frame), buffers,
-    /// keywords and kernels. The TerrainParams constants are named by Core's
+    /// properties (looked up once with Shader.PropertyToID, never a string per frame), buffers and
+    /// kernels; the keywords are Core's <see cref="ShaderKeywords"/>. The TerrainParams constants are named by Core's
     /// <see cref="TerrainParams.PropertyNames"/>, generated with the HLSL cbuffer's members from the
     /// struct's one declaration (gt generate); everything else is named here. The HLSL declares each name once (Shaders/Terrain/TerrainInputs.hlsl, the compute
     /// files, the adapters' object matrices). Tools~/RigTests/ShaderContractTests checks both ways
     /// that this list and the shaders' declarations are the same names, and that no other Runtime or
-    /// Editor file spells a shader name.
+    /// Editor file spells a shader name (the keywords' names are ShaderKeywords').
     /// </summary>
     internal static class ShaderIds
     {
@@ -72,20 +72,6 @@ namespace GregoryTerrain
         public const string SnowExposureKernel = "SnowExposureKernel";
         public const string SnowAccumulateKernel = "SnowAccumulateKernel";
         public const string SnowFieldKernel = "SnowFieldKernel";
-
-        // ---- keywords (GregoryTerrain.shader, TerrainCache.compute, SnowField.compute) ---------------
-
-        /// <summary>Material toggles the user sets on the asset (Properties block), mirrored onto the compute kernels.</summary>
-        public const string NoiseKeyword = "GT_NOISE", HeightColorKeyword = "GT_HEIGHT_COLOR";
-        /// <summary>Tiled noise: both noises read each lattice cell from <c>_NoiseCells</c> (repeats every 256 cells).</summary>
-        public const string NoiseTableKeyword = "GT_NOISE_TABLE";
-        /// <summary>Keywords the renderer sets on its runtime copy of the material (multi_compile_local).</summary>
-        public const string VertexCacheKeyword = "GT_VERTEX_CACHE", SnowKeyword = "GT_SNOW", LevelsKeyword = "GT_LOD";
-        /// <summary>The range-origin (deep zoom) code of the tessellated passes, set with <c>_RangeOrigin</c> (RelativeSurface.NeedsRangeOriginKeyword).</summary>
-        public const string RangeOriginKeyword = "GT_RANGE_ORIGIN";
-        /// <summary>The material's debug view (KeywordEnum GT_DEBUG; None has no keyword of its own).</summary>
-        public const string DebugNormalsKeyword = "GT_DEBUG_NORMALS", DebugPatchIdKeyword = "GT_DEBUG_PATCH_ID",
-            DebugTessFactorKeyword = "GT_DEBUG_TESS_FACTOR";
 
         // A name of the TerrainParams block, checked against Core's list when this class loads.
         static int ParamId(string name)

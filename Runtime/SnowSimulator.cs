@@ -14,7 +14,7 @@ namespace GregoryTerrain
     public sealed class SnowSimulator : MonoBehaviour
     {
         /// <summary>The terrain material keyword this component turns on while it runs.</summary>
-        public const string Keyword = ShaderIds.SnowKeyword;
+        public const string Keyword = ShaderKeywords.Snow;
 
         [Tooltip("Shaders/Snow/SnowSimulation.compute")]
         [SerializeField] ComputeShader simulation;
@@ -267,8 +267,8 @@ namespace GregoryTerrain
         {
             TerrainParams p = _fieldParams;
             ShaderIds.SetParams(fieldShader, p);
-            if (_fieldNoise) fieldShader.EnableKeyword(ShaderIds.NoiseKeyword); else fieldShader.DisableKeyword(ShaderIds.NoiseKeyword);
-            if (_fieldNoiseTable) fieldShader.EnableKeyword(ShaderIds.NoiseTableKeyword); else fieldShader.DisableKeyword(ShaderIds.NoiseTableKeyword);
+            if (_fieldNoise) fieldShader.EnableKeyword(ShaderKeywords.Noise); else fieldShader.DisableKeyword(ShaderKeywords.Noise);
+            if (_fieldNoiseTable) fieldShader.EnableKeyword(ShaderKeywords.NoiseTable); else fieldShader.DisableKeyword(ShaderKeywords.NoiseTable);
             if (_fieldNoiseTable) fieldShader.SetBuffer(_fieldKernel, ShaderIds.NoiseCells, noiseCells);
             fieldShader.SetBuffer(_fieldKernel, ShaderIds.ControlPoints, buffers.ControlPoints);
             fieldShader.SetBuffer(_fieldKernel, ShaderIds.Regions, buffers.Regions);

@@ -374,8 +374,8 @@ namespace GregoryTerrain
         bool NoiseTableOn()
         {
             Material material = _r.Material;
-            return material != null && material.IsKeywordEnabled(ShaderIds.NoiseTableKeyword)
-                && (material.IsKeywordEnabled(ShaderIds.NoiseKeyword) || material.IsKeywordEnabled(ShaderIds.HeightColorKeyword));
+            return material != null && material.IsKeywordEnabled(ShaderKeywords.NoiseTable)
+                && (material.IsKeywordEnabled(ShaderKeywords.Noise) || material.IsKeywordEnabled(ShaderKeywords.HeightColor));
         }
 
         /// <summary>The table while the noise is tiled, else released and null: the default (hashed) noise holds none.</summary>

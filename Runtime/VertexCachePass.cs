@@ -166,8 +166,8 @@ namespace GregoryTerrain
         internal static Effects EffectsOf(Material material, TerrainGpuBuffers gpu, bool snow)
         {
             var e = Effects.None;
-            if (material.IsKeywordEnabled(ShaderIds.NoiseKeyword)) e |= Effects.Noise;
-            if (material.IsKeywordEnabled(ShaderIds.HeightColorKeyword)) e |= Effects.HeightColor;
+            if (material.IsKeywordEnabled(ShaderKeywords.Noise)) e |= Effects.Noise;
+            if (material.IsKeywordEnabled(ShaderKeywords.HeightColor)) e |= Effects.HeightColor;
             if (gpu.NoiseCells != null) e |= Effects.NoiseTable;   // made by the noise table's binding while the noise is tiled
             if (snow) e |= Effects.Snow;
             return e;
@@ -272,10 +272,10 @@ namespace GregoryTerrain
         /// <summary>The material's effects as the kernels' keywords (TerrainCache.compute: the cache's and the levels' kernels).</summary>
         internal static void SetEffectKeywords(ComputeShader shader, Effects effects)
         {
-            SetKeyword(shader, ShaderIds.NoiseKeyword, (effects & Effects.Noise) != 0);
-            SetKeyword(shader, ShaderIds.HeightColorKeyword, (effects & Effects.HeightColor) != 0);
-            SetKeyword(shader, ShaderIds.NoiseTableKeyword, (effects & Effects.NoiseTable) != 0);
-            SetKeyword(shader, ShaderIds.SnowKeyword, (effects & Effects.Snow) != 0);
+            SetKeyword(shader, ShaderKeywords.Noise, (effects & Effects.Noise) != 0);
+            SetKeyword(shader, ShaderKeywords.HeightColor, (effects & Effects.HeightColor) != 0);
+            SetKeyword(shader, ShaderKeywords.NoiseTable, (effects & Effects.NoiseTable) != 0);
+            SetKeyword(shader, ShaderKeywords.Snow, (effects & Effects.Snow) != 0);
         }
 
         static void SetKeyword(ComputeShader shader, string keyword, bool on)

@@ -10,8 +10,7 @@ Shader "GregoryTerrain/Terrain"
         [Toggle(GT_HEIGHT_COLOR)] _GtHeightColor ("Height colour", Float) = 1
         [Toggle(GT_NOISE_TABLE)] _GtNoiseTable ("Tiled noise (faster; repeats every 256 noise cells)", Float) = 0
 
-        // One popup for the debug views, which replace each other: KeywordEnum enables GT_DEBUG_<ENTRY>, one of the
-        // forward passes' `shader_feature_local _ GT_DEBUG_...` set; None's GT_DEBUG_NONE no pass declares ('_').
+        // The debug views replace each other: KeywordEnum enables GT_DEBUG_<ENTRY> (Core's ShaderKeywords); no pass declares GT_DEBUG_NONE.
         [Header(Debug view)]
         [KeywordEnum(None, Normals, Patch_Id, Tess_Factor)] GT_DEBUG ("Debug view (replaces the lit colour)", Float) = 0
 
@@ -39,6 +38,7 @@ Shader "GregoryTerrain/Terrain"
 
         HLSLINCLUDE
         #include_with_pragmas "Packages/com.gregoryterrain.tessellation/Shaders/Pipelines/TessellatedSubShader.hlsl"
+        #include_with_pragmas "Packages/com.gregoryterrain.tessellation/Shaders/Pipelines/ShaderKeywords.Tessellated.cs.hlsl"
         ENDHLSL
 
         Pass
@@ -46,8 +46,7 @@ Shader "GregoryTerrain/Terrain"
             Name "ForwardLit"
             Tags { "LightMode" = "UniversalForwardOnly" }
             HLSLPROGRAM
-            #pragma shader_feature_local GT_HEIGHT_COLOR
-            #pragma shader_feature_local _ GT_DEBUG_NORMALS GT_DEBUG_PATCH_ID GT_DEBUG_TESS_FACTOR
+            #include_with_pragmas "Packages/com.gregoryterrain.tessellation/Shaders/Pipelines/ShaderKeywords.Colour.cs.hlsl"
             #pragma multi_compile _ _MAIN_LIGHT_SHADOWS _MAIN_LIGHT_SHADOWS_CASCADE _MAIN_LIGHT_SHADOWS_SCREEN
             #pragma multi_compile_fragment _ _SHADOWS_SOFT _SHADOWS_SOFT_LOW _SHADOWS_SOFT_MEDIUM _SHADOWS_SOFT_HIGH
             #pragma multi_compile_fragment _ _SCREEN_SPACE_OCCLUSION
@@ -126,6 +125,7 @@ Shader "GregoryTerrain/Terrain"
 
         HLSLINCLUDE
         #include_with_pragmas "Packages/com.gregoryterrain.tessellation/Shaders/Pipelines/FallbackSubShader.hlsl"
+        #include_with_pragmas "Packages/com.gregoryterrain.tessellation/Shaders/Pipelines/ShaderKeywords.Fallback.cs.hlsl"
         ENDHLSL
 
         Pass
@@ -133,8 +133,7 @@ Shader "GregoryTerrain/Terrain"
             Name "ForwardLit"
             Tags { "LightMode" = "UniversalForwardOnly" }
             HLSLPROGRAM
-            #pragma shader_feature_local GT_HEIGHT_COLOR
-            #pragma shader_feature_local _ GT_DEBUG_NORMALS GT_DEBUG_PATCH_ID GT_DEBUG_TESS_FACTOR
+            #include_with_pragmas "Packages/com.gregoryterrain.tessellation/Shaders/Pipelines/ShaderKeywords.Colour.cs.hlsl"
             #pragma multi_compile _ _MAIN_LIGHT_SHADOWS _MAIN_LIGHT_SHADOWS_CASCADE _MAIN_LIGHT_SHADOWS_SCREEN
             #pragma multi_compile_fragment _ _SHADOWS_SOFT _SHADOWS_SOFT_LOW _SHADOWS_SOFT_MEDIUM _SHADOWS_SOFT_HIGH
             #pragma multi_compile_fragment _ _SCREEN_SPACE_OCCLUSION
@@ -213,6 +212,7 @@ Shader "GregoryTerrain/Terrain"
 
         HLSLINCLUDE
         #include_with_pragmas "Packages/com.gregoryterrain.tessellation/Shaders/Pipelines/TessellatedSubShader.hlsl"
+        #include_with_pragmas "Packages/com.gregoryterrain.tessellation/Shaders/Pipelines/ShaderKeywords.Tessellated.cs.hlsl"
         ENDHLSL
 
         Pass
@@ -268,8 +268,7 @@ Shader "GregoryTerrain/Terrain"
                 Pass Replace
             }
             HLSLPROGRAM
-            #pragma shader_feature_local GT_HEIGHT_COLOR
-            #pragma shader_feature_local _ GT_DEBUG_NORMALS GT_DEBUG_PATCH_ID GT_DEBUG_TESS_FACTOR
+            #include_with_pragmas "Packages/com.gregoryterrain.tessellation/Shaders/Pipelines/ShaderKeywords.Colour.cs.hlsl"
             #pragma multi_compile_fragment SHADOW_LOW SHADOW_MEDIUM SHADOW_HIGH
             #define GT_PASS_FORWARD 1
             #include "Packages/com.gregoryterrain.tessellation/Shaders/Pipelines/HDRPAdapter.hlsl"
@@ -298,6 +297,7 @@ Shader "GregoryTerrain/Terrain"
 
         HLSLINCLUDE
         #include_with_pragmas "Packages/com.gregoryterrain.tessellation/Shaders/Pipelines/FallbackSubShader.hlsl"
+        #include_with_pragmas "Packages/com.gregoryterrain.tessellation/Shaders/Pipelines/ShaderKeywords.Fallback.cs.hlsl"
         ENDHLSL
 
         Pass
@@ -353,8 +353,7 @@ Shader "GregoryTerrain/Terrain"
                 Pass Replace
             }
             HLSLPROGRAM
-            #pragma shader_feature_local GT_HEIGHT_COLOR
-            #pragma shader_feature_local _ GT_DEBUG_NORMALS GT_DEBUG_PATCH_ID GT_DEBUG_TESS_FACTOR
+            #include_with_pragmas "Packages/com.gregoryterrain.tessellation/Shaders/Pipelines/ShaderKeywords.Colour.cs.hlsl"
             #pragma multi_compile_fragment SHADOW_LOW SHADOW_MEDIUM SHADOW_HIGH
             #define GT_PASS_FORWARD 1
             #include "Packages/com.gregoryterrain.tessellation/Shaders/Pipelines/HDRPAdapter.hlsl"
@@ -382,6 +381,7 @@ Shader "GregoryTerrain/Terrain"
 
         HLSLINCLUDE
         #include_with_pragmas "Packages/com.gregoryterrain.tessellation/Shaders/Pipelines/TessellatedSubShader.hlsl"
+        #include_with_pragmas "Packages/com.gregoryterrain.tessellation/Shaders/Pipelines/ShaderKeywords.Tessellated.cs.hlsl"
         ENDHLSL
 
         Pass
@@ -389,8 +389,7 @@ Shader "GregoryTerrain/Terrain"
             Name "ForwardBase"
             Tags { "LightMode" = "ForwardBase" }
             HLSLPROGRAM
-            #pragma shader_feature_local GT_HEIGHT_COLOR
-            #pragma shader_feature_local _ GT_DEBUG_NORMALS GT_DEBUG_PATCH_ID GT_DEBUG_TESS_FACTOR
+            #include_with_pragmas "Packages/com.gregoryterrain.tessellation/Shaders/Pipelines/ShaderKeywords.Colour.cs.hlsl"
             #pragma multi_compile _ SHADOWS_SCREEN
             #pragma multi_compile_fog
             #define GT_PASS_FORWARD 1
@@ -418,6 +417,7 @@ Shader "GregoryTerrain/Terrain"
 
         HLSLINCLUDE
         #include_with_pragmas "Packages/com.gregoryterrain.tessellation/Shaders/Pipelines/FallbackSubShader.hlsl"
+        #include_with_pragmas "Packages/com.gregoryterrain.tessellation/Shaders/Pipelines/ShaderKeywords.Fallback.cs.hlsl"
         ENDHLSL
 
         Pass
@@ -425,8 +425,7 @@ Shader "GregoryTerrain/Terrain"
             Name "ForwardBase"
             Tags { "LightMode" = "ForwardBase" }
             HLSLPROGRAM
-            #pragma shader_feature_local GT_HEIGHT_COLOR
-            #pragma shader_feature_local _ GT_DEBUG_NORMALS GT_DEBUG_PATCH_ID GT_DEBUG_TESS_FACTOR
+            #include_with_pragmas "Packages/com.gregoryterrain.tessellation/Shaders/Pipelines/ShaderKeywords.Colour.cs.hlsl"
             #pragma multi_compile _ SHADOWS_SCREEN
             #pragma multi_compile_fog
             #define GT_PASS_FORWARD 1

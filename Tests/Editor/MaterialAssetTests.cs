@@ -18,7 +18,7 @@ namespace GregoryTerrain.Tests
         [Test]
         public void TwoRenderersWithDifferentSettingsLeaveTheAssetUntouched()
         {
-            _t.Asset.EnableKeyword(ShaderIds.NoiseKeyword);   // a keyword the user chose
+            _t.Asset.EnableKeyword(ShaderKeywords.Noise);   // a keyword the user chose
             string[] keywordsBefore = _t.Asset.shaderKeywords;
             int crcBefore = _t.Asset.ComputeCRC();
 
@@ -31,18 +31,18 @@ namespace GregoryTerrain.Tests
 
             Assert.That(_t.Asset.shaderKeywords, Is.EquivalentTo(keywordsBefore), "asset keywords");
             Assert.That(_t.Asset.ComputeCRC(), Is.EqualTo(crcBefore), "asset content (CRC)");
-            Assert.That(_t.Asset.IsKeywordEnabled(ShaderIds.VertexCacheKeyword), Is.False);
-            Assert.That(_t.Asset.IsKeywordEnabled(ShaderIds.SnowKeyword), Is.False);
+            Assert.That(_t.Asset.IsKeywordEnabled(ShaderKeywords.VertexCache), Is.False);
+            Assert.That(_t.Asset.IsKeywordEnabled(ShaderKeywords.Snow), Is.False);
 
             Assert.That(a, Is.Not.SameAs(_t.Asset));
-            Assert.That(a.IsKeywordEnabled(ShaderIds.VertexCacheKeyword), Is.True, "cached: GT_VERTEX_CACHE");
-            Assert.That(a.IsKeywordEnabled(ShaderIds.SnowKeyword), Is.False, "cached: no GT_SNOW");
-            Assert.That(b.IsKeywordEnabled(ShaderIds.SnowKeyword), Is.True, "snowy: GT_SNOW");
-            Assert.That(b.IsKeywordEnabled(ShaderIds.VertexCacheKeyword), Is.False, "snowy: no GT_VERTEX_CACHE");
+            Assert.That(a.IsKeywordEnabled(ShaderKeywords.VertexCache), Is.True, "cached: GT_VERTEX_CACHE");
+            Assert.That(a.IsKeywordEnabled(ShaderKeywords.Snow), Is.False, "cached: no GT_SNOW");
+            Assert.That(b.IsKeywordEnabled(ShaderKeywords.Snow), Is.True, "snowy: GT_SNOW");
+            Assert.That(b.IsKeywordEnabled(ShaderKeywords.VertexCache), Is.False, "snowy: no GT_VERTEX_CACHE");
             Assert.That(c, Is.SameAs(_t.Asset), "a renderer that adds no keyword draws the asset itself");
             foreach (Material m in new[] { a, b })
             {
-                Assert.That(m.IsKeywordEnabled(ShaderIds.NoiseKeyword), Is.True, "the asset's own keywords are kept");
+                Assert.That(m.IsKeywordEnabled(ShaderKeywords.Noise), Is.True, "the asset's own keywords are kept");
                 Assert.That((m.hideFlags & HideFlags.DontSaveInEditor) != 0, Is.True, "the copy is never saved");
             }
         }
@@ -53,12 +53,12 @@ namespace GregoryTerrain.Tests
             var r = _t.Renderer("cached");
             r.DrawFor(_t.Camera("cam"));
             Material copy = r.UpdateDrawMaterial(FrameKeywords.VertexCache);
-            Assert.That(copy.IsKeywordEnabled(ShaderIds.HeightColorKeyword), Is.False);
-            _t.Asset.EnableKeyword(ShaderIds.HeightColorKeyword);   // the user edits the asset
+            Assert.That(copy.IsKeywordEnabled(ShaderKeywords.HeightColor), Is.False);
+            _t.Asset.EnableKeyword(ShaderKeywords.HeightColor);   // the user edits the asset
             Assert.That(r.UpdateDrawMaterial(FrameKeywords.VertexCache), Is.SameAs(copy), "the same copy, synced");
-            Assert.That(copy.IsKeywordEnabled(ShaderIds.HeightColorKeyword), Is.True, "the asset's change reached the copy");
-            Assert.That(copy.IsKeywordEnabled(ShaderIds.VertexCacheKeyword), Is.True, "the renderer's keyword survives the sync");
-            Assert.That(_t.Asset.IsKeywordEnabled(ShaderIds.VertexCacheKeyword), Is.False);
+            Assert.That(copy.IsKeywordEnabled(ShaderKeywords.HeightColor), Is.True, "the asset's change reached the copy");
+            Assert.That(copy.IsKeywordEnabled(ShaderKeywords.VertexCache), Is.True, "the renderer's keyword survives the sync");
+            Assert.That(_t.Asset.IsKeywordEnabled(ShaderKeywords.VertexCache), Is.False);
         }
 
         /// <summary>Core's CameraSceneFilter restates Unity's scene culling bits: they must stay equal.</summary>

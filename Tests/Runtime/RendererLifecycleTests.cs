@@ -132,25 +132,25 @@ namespace GregoryTerrain.Tests
         {
             var r = _t.Renderer("terrain");
             Camera a = _t.Camera("a");
-            _t.Asset.EnableKeyword(ShaderIds.NoiseKeyword);
-            _t.Asset.DisableKeyword(ShaderIds.HeightColorKeyword);   // whatever the toggles' defaults did
-            _t.Asset.DisableKeyword(ShaderIds.NoiseTableKeyword);
+            _t.Asset.EnableKeyword(ShaderKeywords.Noise);
+            _t.Asset.DisableKeyword(ShaderKeywords.HeightColor);   // whatever the toggles' defaults did
+            _t.Asset.DisableKeyword(ShaderKeywords.NoiseTable);
             r.DrawFor(a);
             Assert.That(r.HasNoiseTable, Is.False, "hashed noise (the default): no table");
             Assert.That(r.PropertiesSetLastPrepare, Does.Not.Contain(ShaderIds.NoiseCells));
 
-            _t.Asset.EnableKeyword(ShaderIds.NoiseTableKeyword);   // the user switches Tiled noise on
+            _t.Asset.EnableKeyword(ShaderKeywords.NoiseTable);   // the user switches Tiled noise on
             r.DrawFor(a);
             Assert.That(r.HasNoiseTable, Is.True, "tiled noise: the table is made");
             Assert.That(r.PropertiesSetLastPrepare, Does.Contain(ShaderIds.NoiseCells), "and sent");
             r.DrawFor(a);
             Assert.That(r.PropertiesSetLastPrepare, Is.EqualTo(new[] { ShaderIds.Range }), "sent once, not per frame");
 
-            _t.Asset.DisableKeyword(ShaderIds.NoiseKeyword);   // the table alone tiles nothing
+            _t.Asset.DisableKeyword(ShaderKeywords.Noise);   // the table alone tiles nothing
             r.DrawFor(a);
             Assert.That(r.HasNoiseTable, Is.False, "GT_NOISE_TABLE without a noise: released");
 
-            _t.Asset.EnableKeyword(ShaderIds.NoiseKeyword);
+            _t.Asset.EnableKeyword(ShaderKeywords.Noise);
             r.DrawFor(a);
             Assert.That(r.HasNoiseTable, Is.True);
             r.enabled = false;

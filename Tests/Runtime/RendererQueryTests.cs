@@ -76,16 +76,16 @@ namespace GregoryTerrain.Tests
         [Test]
         public void QueryIsRebuiltWhenTheNoiseIsTiledOrNot()
         {
-            _t.Asset.EnableKeyword(ShaderIds.NoiseKeyword);
-            _t.Asset.DisableKeyword(ShaderIds.NoiseTableKeyword);
+            _t.Asset.EnableKeyword(ShaderKeywords.Noise);
+            _t.Asset.DisableKeyword(ShaderKeywords.NoiseTable);
             TerrainSurfaceQuery hashed = _r.SurfaceQuery;
             Assert.That(hashed, Is.Not.Null);
             Assert.That(_r.SurfaceQuery, Is.SameAs(hashed), "nothing changed: the same query");
-            _t.Asset.EnableKeyword(ShaderIds.NoiseTableKeyword);   // tiled noise is another surface
+            _t.Asset.EnableKeyword(ShaderKeywords.NoiseTable);   // tiled noise is another surface
             TerrainSurfaceQuery tiled = _r.SurfaceQuery;
             Assert.That(tiled, Is.Not.SameAs(hashed));
             Assert.That(_r.SurfaceQuery, Is.SameAs(tiled));
-            _t.Asset.DisableKeyword(ShaderIds.NoiseTableKeyword);
+            _t.Asset.DisableKeyword(ShaderKeywords.NoiseTable);
             Assert.That(_r.SurfaceQuery, Is.Not.SameAs(tiled));
         }
     }

@@ -41,7 +41,7 @@ namespace GregoryTerrain.Rig.Tests
             // three) is drawn by some variant.
             string rootDir = HarnessRun.PackageRoot();
             string text = File.ReadAllText(Path.Combine(rootDir, "Shaders", "GregoryTerrain.shader")) +
-                          File.ReadAllText(Path.Combine(rootDir, "Shaders", "Pipelines", "TessellatedSubShader.hlsl"));
+                          string.Concat(Directory.GetFiles(Path.Combine(rootDir, "Shaders", "Pipelines"), "ShaderKeywords.*.cs.hlsl").Select(File.ReadAllText));
             var declared = Regex.Matches(text, @"#pragma\s+(?:multi_compile|shader_feature)\w*([^\r\n]*)")
                 .SelectMany(m => m.Groups[1].Value.Split(' ', '\t')).Where(k => k.Length > 0 && !Regex.IsMatch(k, "^_+$")).ToHashSet();
             if (Regex.IsMatch(text, @"#pragma\s+multi_compile_fog")) declared.UnionWith(new[] { "FOG_LINEAR", "FOG_EXP", "FOG_EXP2" });

@@ -55,12 +55,7 @@ namespace GregoryTerrain.Rig.Tests
         }
 
 
-        double NDotL(int p)
-        {
-            var n = Enumerable.Range(0, 3).Select(c => _normals.Rgba[4 * p + c] / 255.0 * 2 - 1).ToArray();
-            double len = Math.Sqrt(n.Sum(x => x * x));
-            return Enumerable.Range(0, 3).Sum(c => n[c] / len * _sun[c]);
-        }
+        double NDotL(int p) => PipelinePassRun.NormalsViewDot(_normals, p, _sun);
 
         /// <summary>The light's share at the pixel over albedo x light: N.L unshadowed, 0 in shadow.</summary>
         double DirectShare(int p) =>

@@ -79,12 +79,7 @@ namespace GregoryTerrain.Rig.Tests
         double Channel(RigPng png, int pixel, int c) => png.Rgba[4 * pixel + c] / 255.0;
 
         /// <summary>Towards the sun dotted with the pixel's world normal, decoded from the normals view.</summary>
-        double NDotL(int p)
-        {
-            var n = Enumerable.Range(0, 3).Select(c => Channel(_normals, p, c) * 2 - 1).ToArray();
-            double len = Math.Sqrt(n.Sum(x => x * x));
-            return Enumerable.Range(0, 3).Sum(c => n[c] / len * _sun[c]);
-        }
+        double NDotL(int p) => PipelinePassRun.NormalsViewDot(_normals, p, _sun);
 
         double Luminance(int p) => (Channel(_lit, p, 0) + Channel(_lit, p, 1) + Channel(_lit, p, 2)) / 3;
 

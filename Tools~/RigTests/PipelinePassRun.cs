@@ -309,6 +309,22 @@ namespace GregoryTerrain.Rig.Tests
             Assert.That(written, Is.GreaterThan(n * n / 200), "the terrain covers half a percent of the light's view or more");
         }
 
+        /// <summary>A unit direction dotted with pixel p's world normal, decoded from a normals view (GT_DEBUG_NORMALS: the
+        /// normal x 0.5 + 0.5 in 8 bits, renormalized).</summary>
+        public static double NormalsViewDot(RigPng normals, int p, double[] direction)
+        {
+            var n = Enumerable.Range(0, 3).Select(c => normals.Rgba[4 * p + c] / 255.0 * 2 - 1).ToArray();
+            double len = Math.Sqrt(n.Sum(x => x * x));
+            return Enumerable.Range(0, 3).Sum(c => n[c] / len * direction[c]);
+        }
+
+        /// <summary>A W x H float32 depth file (the harness's --depth-out) under output.</summary>
+        public static float[] ReadDepth(string output, string file)
+        {
+            byte[] bytes = File.ReadAllBytes(Path.Combine(output, file));
+            return Enumerable.Range(0, bytes.Length / 4).Select(i => BitConverter.ToSingle(bytes, 4 * i)).ToArray();
+        }
+
         /// <summary>Mean, 99th percentile and largest of the angles (a NaN counts as 180 degrees), printed.</summary>
         public static (double Mean, double P99, double Max) AngleFigures(List<double> angles, string what)
         {

@@ -25,12 +25,7 @@ namespace GregoryTerrain.Rig.Tests
         double DirectShare(RigPng png, int p) => Enumerable.Range(0, 3).Average(c => Channel(png, p, c) - _albedo[c] * _ambient);
 
         /// <summary>N.L of the shadowed frame's sun, N from the normals view (the same surface).</summary>
-        double ShadowNDotL(int p)
-        {
-            var n = Enumerable.Range(0, 3).Select(c => Channel(_normals, p, c) * 2 - 1).ToArray();
-            double len = Math.Sqrt(n.Sum(x => x * x));
-            return Enumerable.Range(0, 3).Sum(c => n[c] / len * _shadowSun[c]);
-        }
+        double ShadowNDotL(int p) => PipelinePassRun.NormalsViewDot(_normals, p, _shadowSun);
 
         /// <summary>Lambert's colour channel without a shadow (TheLitPicture_IsLambertOfThePassesOwnNormals holds it within 3/255).</summary>
         double Unshadowed(int p, int c) => _albedo[c] * (_ambient + _light[c] * Math.Max(0, ShadowNDotL(p)));

@@ -27,9 +27,9 @@ namespace GregoryTerrain.Rig.Tests
         {
             ["_LightDirection"] = "URP sets it for its shadow caster pass",
             ["_LightPosition"] = "URP sets it for its shadow caster pass",
-            ["_ObjectId"] = "the editor's scene picking sets it",
-            ["_PassValue"] = "the editor's scene picking sets it",
-            ["_SelectionID"] = "the editor's selection outline sets it",
+            ["_ObjectId"] = "the editor's selection outline (SceneSelectionPass) sets it",
+            ["_PassValue"] = "the editor's selection outline (SceneSelectionPass) sets it",
+            ["_SelectionID"] = "the editor's scene picking (LightMode Picking) sets it",
             ["_Readback"] = "rig only (GT_READBACK, GT_FACTOR_READBACK): the harness binds it by register",
         };
 
@@ -66,7 +66,7 @@ namespace GregoryTerrain.Rig.Tests
                 }
             Assert.That(keywords.Count, Is.GreaterThanOrEqualTo(7), "GT_ keywords found in the pragmas");
             Assert.That(kernels.Count, Is.GreaterThanOrEqualTo(5), "kernels found");
-            Assert.That(named.keywords, Is.EquivalentTo(keywords), "keywords: ShaderIds vs the shaders' #pragma multi_compile/shader_feature");
+            Assert.That(named.keywords, Is.EquivalentTo(keywords), "keywords: Core's ShaderKeywords vs the shaders' #pragma multi_compile/shader_feature (the compute files' too)");
             Assert.That(named.kernels, Is.EquivalentTo(kernels), "kernels: ShaderIds vs the compute files' #pragma kernel");
         }
 
@@ -428,7 +428,8 @@ namespace GregoryTerrain.Rig.Tests
         static (SortedSet<string> properties, SortedSet<string> keywords, SortedSet<string> kernels) NamesInShaderIds(string source)
         {
             var properties = new SortedSet<string>(TerrainParams.PropertyNames.Concat(SnowParams.PropertyNames), StringComparer.Ordinal);
-            var keywords = new SortedSet<string>(StringComparer.Ordinal);
+            // The keywords are Core's one declaration (ShaderKeywords), which the .shader's pragmas are generated from.
+            var keywords = new SortedSet<string>(ShaderKeywords.Sets.SelectMany(s => s.Keywords.Select(k => k.name)), StringComparer.Ordinal);
             var kernels = new SortedSet<string>(StringComparer.Ordinal);
             foreach (string line in source.Split('\n').Select(StripComment))
                 foreach (Match m in Regex.Matches(line, "(?<![$\\w])\"([A-Za-z_]\\w*)\""))

@@ -18,7 +18,8 @@ namespace GregoryTerrain.Rig.Tests
     public class ShaderLabTests
     {
         const string PackageName = "com.gregoryterrain.tessellation";
-        static readonly string[] RuntimeToggledKeywords = { "GT_SNOW", "GT_VERTEX_CACHE", "GT_LOD", "GT_RANGE_ORIGIN" };
+        /// <summary>The keywords a script switches at run time, as Core declares them (ShaderKeywords).</summary>
+        static readonly string[] RuntimeToggledKeywords = ShaderKeywords.SwitchedBy(KeywordSwitch.Renderer).Select(k => k.name).ToArray();
         /// <summary>The renderer's Vertex evaluation switch: declared by the tessellated passes only.</summary>
         const string VertexCacheKeyword = "GT_VERTEX_CACHE";
         static readonly string[] VertexSourceSet = { "multi_compile_local", "_", "GT_RANGE_ORIGIN", "GT_LOD", VertexCacheKeyword };
@@ -30,6 +31,7 @@ namespace GregoryTerrain.Rig.Tests
         {
             public string Name, LightMode, Program;   // Program: the SubShader's HLSLINCLUDE, then the pass's HLSLPROGRAM
             public string OwnProgram;                 // the pass's HLSLPROGRAM alone
+            public string OwnAsWritten;               // the same, as the .shader writes it
             public List<string[]> Pragmas;
             public HashSet<string> Keywords;          // the package's: shader_feature*
             public HashSet<string> PipelineKeywords;  // Unity's: multi_compile*
@@ -74,6 +76,7 @@ namespace GregoryTerrain.Rig.Tests
                         LightMode = Regex.Match(pass, "\"LightMode\"\\s*=\\s*\"(\\w+)\"").Groups[1].Value,
                         Program = program,
                         OwnProgram = own,
+                        OwnAsWritten = m.Success ? m.Groups[1].Value : "",
                         Pragmas = pragmas,
                         Keywords = new HashSet<string>(pragmas.Where(p => p.Length > 1 && p[0].StartsWith("shader_feature"))
                             .SelectMany(p => p.Skip(1)).Where(k => k != "_")
@@ -208,10 +211,20 @@ namespace GregoryTerrain.Rig.Tests
                         $"{s} pass {p.Name}: a stage pragma in the pass, not once in the SubShader");
                 }
             }
-            // Written once in the package: each SubShader's HLSLINCLUDE only reads its kind's file.
+            // Written once in the package: each SubShader's HLSLINCLUDE only reads its kind's stages and its
+            // kind's generated keyword pragmas; a colour pass reads the generated colour keywords.
             foreach (SubShaderInfo s in _subShaders)
-                Assert.That(s.SharedAsWritten.Trim(), Is.EqualTo($"#include_with_pragmas \"Packages/{PackageName}/Shaders/Pipelines/{(s.Tessellated ? "Tessellated" : "Fallback")}SubShader.hlsl\""),
-                    $"{s}: the HLSLINCLUDE reads the shared pragmas of its kind");
+            {
+                string kind = s.Tessellated ? "Tessellated" : "Fallback";
+                Assert.That(Regex.Split(s.SharedAsWritten.Trim(), @"\s*\n\s*"), Is.EqualTo(new[]
+                    {
+                        $"#include_with_pragmas \"Packages/{PackageName}/Shaders/Pipelines/{kind}SubShader.hlsl\"",
+                        $"#include_with_pragmas \"Packages/{PackageName}/Shaders/Pipelines/ShaderKeywords.{kind}.cs.hlsl\"",
+                    }), $"{s}: the HLSLINCLUDE reads the shared pragmas of its kind");
+                foreach (PassInfo p in s.Passes)
+                    Assert.That(p.OwnAsWritten.Contains("ShaderKeywords.Colour.cs.hlsl"), Is.EqualTo(ForwardModes.Contains(p.LightMode)),
+                        $"{s} pass {p.Name}: the colour keywords exactly in the colour pass");
+            }
         }
 
         /// <summary>

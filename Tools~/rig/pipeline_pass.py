@@ -25,13 +25,15 @@ PNG's bytes signed; _depth.f32, _view.json likewise), depth_normals_layers and l
 _WRITE_RENDERING_LAYERS variants, their second target's R8 bytes in OUT/<picture>_target1.bin), under --object-yaw;
 lit_fog_* and builtin_fog_* (only with --only: the fog variants, linear/exp/exp2; _depth.f32, _view.json likewise);
 builtin_lit_shadows (only with --only; draws builtin_shadow_map and builtin_camera_depth first): Built-in's screen-space
-shadow (OUT/builtin_screen_shadow.f32 the collected texture, OUT/builtin_lit_shadows_depth.f32 ForwardBase's depth).
+shadow (OUT/builtin_screen_shadow.f32 the collected texture, OUT/builtin_lit_shadows_depth.f32 ForwardBase's depth);
+lit_cascades (only with --only): URP's cascaded shadow, --cascades of them (draw_cascades).
 Uniform blocks are bound as storage buffers (--uniform-blocks storage: the harness rewrites the
 blocks, same offsets): the rig's lavapipe rule (one compile per SPIR-V, whatever the values) on every device.
 
-  gt pipeline_pass [--out DIR] [--only depth|lit|normals|lit_dxc|builtin_lit|shadow_map|lit_shadows|depth_normals|depth_normals_snorm|depth_normals_layers|lit_layers|lit_fog_*|builtin_fog_*|builtin_lit_shadows]...
+  gt pipeline_pass [--out DIR] [--only depth|lit|normals|lit_dxc|builtin_lit|shadow_map|lit_shadows|depth_normals|depth_normals_snorm|depth_normals_layers|lit_layers|lit_fog_*|builtin_fog_*|builtin_lit_shadows|lit_cascades]...
       [--sun-elevation DEG] [--sun-azimuth DEG] [--shadow-sun-elevation DEG] [--shadow-sun-azimuth DEG] [--light-color R,G,B]
-      [--object-yaw DEG] [--leave-default NAME]... [--fill-from NAME=OTHER]... [--transpose NAME]... [--flip-shadow-bias]
+      [--object-yaw DEG] [--cascades 2|4] [--leave-default NAME]... [--fill-from NAME=OTHER]... [--transpose NAME]...
+      [--flip-shadow-bias] [--swap-cascade-matrices]
 --leave-default / --fill-from / --transpose / --flip-shadow-bias break the scene on purpose (the tests' broken inputs): a
 member left to its default, a member filled with another member's value, a matrix transposed (in each
 pipeline whose scene sets the names).
@@ -345,6 +347,10 @@ def urp_globals(cam, o2w, o2c, sun, light_color):
         # glslang's drops the unused load.
         "unity_LightData": [0.0, 0.0, 1.0, 0.0],
         "_GlobalMipBias": [0.0, 1.0],                    # Input.hlsl: (bias, 2^bias)
+        # UnityInput.hlsl:85, read by TransformScreenUV (ShaderVariablesFunctions.hlsl:433-437) under
+        # UNITY_UV_STARTS_AT_TOP. URP 14's DrawObjectsPass.Execute sets it before the opaque list from
+        # cameraData.IsCameraProjectionMatrixFlipped(): not flipped (the camera's target) -> (1, 0, 1, 1).
+        "_ScaleBiasRt": [1.0, 0.0, 1.0, 1.0],
         # UnityInput.hlsl (UnityPerDraw): x holds the draw's rendering layer mask as bits (GetMeshRenderingLayer:
         # asuint(unity_RenderingLayer.x)), from RenderParams.renderingLayerMask for Graphics.RenderPrimitives.
         "unity_RenderingLayer": [uint_bits_as_float(RENDERING_LAYER_MASK), 0.0, 0.0, 0.0],
@@ -386,6 +392,19 @@ SHADOW_NEAR_PLANE = 0.2      # Light.shadowNearPlane's default: how far the ligh
 CASCADE_BORDER = 0.2         # the URP asset's default cascade border (the last cascade's fade), a fraction
 
 
+def culling_sphere(cam, near, far):
+    """(centre, radius) of the smallest sphere centred on the view axis that holds the camera frustum's slice from
+    view distance near to far (near 0: the eye): equidistant from the slice's near and far corners, or centred on the
+    far plane when that sphere already holds the near corners."""
+    per_distance = math.tan(math.radians(cam.fov_y) / 2.0) * math.sqrt(1.0 + (cam.width / cam.height) ** 2)
+    half_near, half_far = near * per_distance, far * per_distance      # the slice's half diagonals
+    along = min((far ** 2 + half_far ** 2 - near ** 2 - half_near ** 2) / (2.0 * (far - near)), far)
+    # From the eye (near 0) the distance is along itself; else to a far corner.
+    radius = along if near == 0.0 else math.sqrt((far - along) ** 2 + half_far ** 2)
+    forward = normalize([x - e for x, e in zip(cam.target, cam.eye)])
+    return [e + along * f for e, f in zip(cam.eye, forward)], radius
+
+
 class MainLightShadow:
     """The shadow slice Unity's CullingResults.ComputeDirectionalShadowMatricesAndCullingPrimitives
     returns for one cascade (native code, not public: its documented behaviour) and what URP makes of it.
@@ -395,14 +414,10 @@ class MainLightShadow:
     OpenGL-style orthographic projection of the sphere (z_gl -1 at near; Unity leaves it unreversed,
     GetShadowTransform says so), its depth from the sphere's far side to SHADOW_NEAR_PLANE beyond its near side."""
 
-    def __init__(self, cam, sun, resolution=SHADOW_RESOLUTION, distance=SHADOW_DISTANCE):
+    def __init__(self, cam, sun, resolution=SHADOW_RESOLUTION, distance=SHADOW_DISTANCE, slice_near=0.0, slice_far=None):
         self.resolution, self.distance = resolution, distance
-        t = math.tan(math.radians(cam.fov_y) / 2.0)
-        half_diagonal = distance * t * math.sqrt(1.0 + (cam.width / cam.height) ** 2)
-        along = (distance ** 2 + half_diagonal ** 2) / (2.0 * distance)     # equidistant from eye and far corners
-        forward = normalize([x - e for x, e in zip(cam.target, cam.eye)])
-        self.center = [e + along * f for e, f in zip(cam.eye, forward)]
-        self.radius = r = along
+        self.center, self.radius = culling_sphere(cam, slice_near, distance if slice_far is None else slice_far)
+        r = self.radius
         light_forward = [-x for x in sun]
         eye = [c - (r + SHADOW_NEAR_PLANE) * f for c, f in zip(self.center, light_forward)]
         self.view = Camera.look_along(eye, light_forward)
@@ -458,6 +473,147 @@ class MainLightShadow:
                 "_MainLightShadowOffset0": [-0.5 / n, -0.5 / n, 0.5 / n, -0.5 / n],
                 "_MainLightShadowOffset1": [-0.5 / n, 0.5 / n, 0.5 / n, 0.5 / n],
                 "_MainLightShadowmapSize": [1.0 / n, 1.0 / n, float(n), float(n)]}
+
+
+# URP 14's main-light cascades (_MAIN_LIGHT_SHADOWS_CASCADE), as its C# sets them up (read through the code search):
+# UniversalRenderPipelineAsset's defaults m_Cascade2Split 0.25 and m_Cascade4Split (0.067, 0.2, 0.467), fractions of
+# the shadow distance where each cascade ends (the asset's default count is 1: choosing 2 or 4 takes these);
+# UniversalRenderPipeline.InitializeShadowData: the atlas is resolution^2, or resolution x resolution / 2 for 2 cascades;
+# MainLightShadowCasterPass.Setup: each cascade's tile ShadowUtils.GetMaxTileResolutionInAtlas(width, height, count);
+# ShadowUtils.ExtractDirectionalLightMatrix: cascade i's tile at ((i % 2) x tile, (i / 2) x tile), its
+# GetShadowTransform times ApplySliceTransform's scale and offset into the atlas; RenderMainLightCascadeShadowmap:
+# each cascade's ShadowCaster with GetShadowBias of its own projection and tile (RenderShadowSlice: viewport = the
+# tile); SetupMainLightShadowReceiverConstants: _MainLightWorldToShadow[i] per cascade, the no-op at [count] (the
+# others identity, as Clear() leaves them), _CascadeShadowSplitSpheres0..3 the culling spheres (centre, radius; zero
+# past count), _CascadeShadowSplitSphereRadii their squared radii, offsets and size of the whole atlas.
+CASCADE_SPLITS = {2: [0.25], 4: [0.067, 0.2, 0.467]}
+
+
+def max_tile_resolution(width, height, count):
+    """ShadowUtils.GetMaxTileResolutionInAtlas: halve the tile until count of them fit."""
+    tile = min(width, height)
+    while (width // tile) * (height // tile) < count:
+        tile //= 2
+    return tile
+
+
+class MainLightCascades:
+    """count (2 or 4) cascades of the main light: slices[i] is cascade i's MainLightShadow (its culling sphere around
+    the camera's frustum from the previous split to its own, its tile's resolution and bias); world_to_shadow[i] its
+    GetShadowTransform moved into its atlas tile."""
+
+    def __init__(self, cam, sun, count, resolution=SHADOW_RESOLUTION, distance=SHADOW_DISTANCE):
+        if count not in CASCADE_SPLITS:
+            raise SystemExit(f"pipeline-pass: error: cascade count {count}: URP's asset offers 2 or 4 (1 is MainLightShadow)")
+        self.count, self.distance, self.sun = count, distance, sun
+        self.width, self.height = resolution, resolution // 2 if count == 2 else resolution
+        self.tile = max_tile_resolution(self.width, self.height, count)
+        ends = [f * distance for f in CASCADE_SPLITS[count]] + [distance]
+        starts = [0.0] + ends[:-1]
+        self.slices = [MainLightShadow(cam, sun, self.tile, distance, a, b) for a, b in zip(starts, ends)]
+        self.offsets = [((i % 2) * self.tile, (i // 2) * self.tile) for i in range(count)]
+        self.world_to_shadow = [mat_mul(self.slice_transform(i), sl.world_to_shadow) for i, sl in enumerate(self.slices)]
+
+    def slice_transform(self, i):
+        """ShadowUtils.ApplySliceTransform: [0, 1] of the tile to its place in the atlas."""
+        (x, y), t = self.offsets[i], self.tile
+        return [[t / self.width, 0, 0, x / self.width], [0, t / self.height, 0, y / self.height], [0, 0, 1.0, 0],
+                [0, 0, 0, 1.0]]
+
+    def receiver_values(self, swap=None):
+        """SetupMainLightShadowReceiverConstants with count cascades; swap=(i, j) exchanges two cascades' matrices (a
+        broken input)."""
+        identity = [[1.0 if r == c else 0.0 for c in range(4)] for r in range(4)]
+        no_op = [[0.0] * 4 for _ in range(4)]
+        no_op[2][2] = 1.0
+        matrices = self.world_to_shadow + [no_op] + [identity] * (4 - self.count)
+        if swap:
+            matrices[swap[0]], matrices[swap[1]] = matrices[swap[1]], matrices[swap[0]]
+        spheres = [sl.center + [sl.radius] for sl in self.slices] + [[0.0] * 4] * (4 - self.count)
+        w, h = self.width, self.height
+        fade_scale, fade_bias = self.slices[-1].fade()
+        values = {"_MainLightWorldToShadow": matrices, "_MainLightShadowParams": [1.0, 0.0, fade_scale, fade_bias],
+                  "_CascadeShadowSplitSphereRadii": [sp[3] ** 2 for sp in spheres],
+                  "_MainLightShadowOffset0": [-0.5 / w, -0.5 / h, 0.5 / w, -0.5 / h],
+                  "_MainLightShadowOffset1": [-0.5 / w, 0.5 / h, 0.5 / w, 0.5 / h],
+                  "_MainLightShadowmapSize": [1.0 / w, 1.0 / h, float(w), float(h)]}
+        values.update({f"_CascadeShadowSplitSpheres{i}": spheres[i] for i in range(4)})
+        return values
+
+    def cascade_index(self, world):
+        """Shadows.hlsl's ComputeCascadeIndex: the first cascade whose sphere holds the point (squared distance below
+        the squared radius), count when none does."""
+        for i, sl in enumerate(self.slices):
+            if sum((a - b) ** 2 for a, b in zip(world, sl.center)) < sl.radius ** 2:
+                return i
+        return self.count
+
+    def atlas(self, tile_files, path):
+        """The atlas's texels (row 0 at v = 0) from each cascade's tile (shadow_map_texels' rows), cleared to 0 (URP
+        clears the map; reversed depth's far plane) where no tile lies."""
+        t, w = self.tile, self.width
+        texels = [0.0] * (w * self.height)
+        for (x, y), f in zip(self.offsets, tile_files):
+            tile = read_floats(f)
+            for row in range(t):
+                texels[(y + row) * w + x:(y + row) * w + x + t] = tile[row * t:(row + 1) * t]
+        with open(path, "wb") as f:
+            f.write(struct.pack(f"<{len(texels)}f", *texels))
+
+
+# The Scene view's selection outline (SceneSelectionPass) and picking (LightMode Picking): the editor sets their
+# values natively when it draws those passes; Unity 2022.3's C# reference holds neither. Picking: _SelectionID is the
+# picking index as 4 bytes / 255, low byte in x, as picking.cpp's PickingEncodeIndex writes it (mirrored in C# by
+# HandleUtility.EncodeSelectionId / DecodeSelectionId, Editor/Mono/Handles/HandleUtility.cs in Unity 6's reference;
+# the passes read it through URP's UniversalDOTSInstancing.hlsl:68 / HDRP's ShaderVariables.hlsl:666 as
+# unity_SelectionID). Selection: the shader writes (_ObjectId, _PassValue, 1, 1) (URP's SelectionPickingPass.hlsl:32,
+# HDRP's ShaderPassDepthOnly.hlsl:112): the rig's renderer is object 1 of the outline's first pass (0). Both chosen
+# so each byte of the target is distinct from the clear and from a default of zero.
+EDITOR_OBJECT_ID, EDITOR_PASS_VALUE = 1, 0
+PICKING_INDEX = 0x00A5C3
+
+
+def encode_selection_id(index):
+    """HandleUtility.EncodeSelectionId: the picking index's bytes, low first, each / 255."""
+    return [((index >> shift) & 0xFF) / 255.0 for shift in (0, 8, 16, 24)]
+
+
+def decode_selection_id(rgba):
+    """HandleUtility.DecodeSelectionId of a pixel's four 8-bit channels."""
+    return rgba[0] | rgba[1] << 8 | rgba[2] << 16 | rgba[3] << 24
+
+
+def editor_pass_values(pass_name):
+    """What the editor sets for its SceneSelectionPass / ScenePickingPass draw, else {}."""
+    if pass_name == "SceneSelectionPass":
+        return {"_ObjectId": EDITOR_OBJECT_ID, "_PassValue": EDITOR_PASS_VALUE}
+    if pass_name == "ScenePickingPass":
+        return {"_SelectionID": encode_selection_id(PICKING_INDEX)}
+    return {}
+
+
+# URP's screen-space textures that a frame draws before ForwardLit, given a content the checks can see: the left half
+# of the screen unoccluded, the right half at a known level (the rig has no depth texture pass for them to read).
+# _ScreenSpaceShadowmapTexture (ScreenSpaceShadows' R8_UNorm target, 1 = lit; Shadows.hlsl:181-195 samples it with
+# sampler_PointClamp at the pixel's normalized screen uv): right half 0, every pixel there in the main light's shadow.
+# _ScreenSpaceOcclusionTexture (the SSAO feature's result, 1 = unoccluded; AmbientOcclusion.hlsl:17-35): right half
+# SSAO_LEVEL; _AmbientOcclusionParam is what URP 14's ScreenSpaceAmbientOcclusionPass sets with the texture,
+# (0, 0, 0, DirectLightingStrength), its setting's default 0.25: direct light x lerp(1, ao, 0.25), ambient x ao.
+SCREEN_SHADOW_RIGHT = 0.0
+SSAO_LEVEL = 0.5
+SSAO_DIRECT_STRENGTH = 0.25
+
+
+def ssao_values():
+    return {"_AmbientOcclusionParam": [0.0, 0.0, 0.0, SSAO_DIRECT_STRENGTH]}
+
+
+def screen_halves(path, width, height, right):
+    """A width x height R32 texture (rows top first, as the harness's targets): 1 left of width / 2, right beyond."""
+    row = [1.0] * (width // 2) + [right] * (width - width // 2)
+    with open(path, "wb") as f:
+        f.write(struct.pack(f"<{width * height}f", *(row * height)))
+    return "R32_SFLOAT", path, width, height
 
 
 # Built-in's main directional light shadow as Built-in draws it in Forward on desktop (screen-space shadows): the
@@ -943,7 +1099,8 @@ PICTURES = [("depth", "URP", "DepthOnly", [], "glslang"), ("lit", "URP", "Forwar
             ("builtin_fog_exp2", "Builtin", "ForwardBase", ["FOG_EXP2"], "glslang"),
             ("builtin_shadow_map", "Builtin", "ShadowCaster", [], "glslang"),
             ("builtin_camera_depth", "Builtin", "ShadowCaster", [], "glslang"),
-            ("builtin_lit_shadows", "Builtin", "ForwardBase", ["SHADOWS_SCREEN"], "dxc")]
+            ("builtin_lit_shadows", "Builtin", "ForwardBase", ["SHADOWS_SCREEN"], "dxc"),
+            ("lit_cascades", "URP", "ForwardLit", ["_MAIN_LIGHT_SHADOWS_CASCADE"], "glslang")]
 # depth_normals: URP's DepthNormalsOnly with _GBUFFER_NORMALS_OCT, the variant whose output fits the harness's
 # RGBA8 UNORM target as it fits URP's (UniversalRendererData's Accurate G-buffer Normals: R8G8B8A8_UNorm, the
 # octahedral normal's two 12-bit coordinates in RGB 8:8:8). URP's default (Forward, that option off) draws the
@@ -968,7 +1125,14 @@ FOG_PICTURES = {"lit_fog_linear", "lit_fog_exp", "lit_fog_exp2", "builtin_fog_li
 # which spirv-val rejects; DXC under Unity's use_dxc defines takes HLSLSupport.cginc's emulated sampler2D (a
 # Texture2D and a SamplerState), as Unity's own DXC compile does.
 BUILTIN_SHADOW_PICTURES = {"builtin_shadow_map", "builtin_camera_depth", "builtin_lit_shadows"}
-ON_REQUEST = {"depth_normals", "depth_normals_snorm", "depth_normals_layers", "lit_layers"} | FOG_PICTURES | BUILTIN_SHADOW_PICTURES
+# lit_cascades (only with --only): URP's cascaded main-light shadow under the shadowed frame's sun (draw_cascades):
+# the ShadowCaster once per cascade into its tile (OUT/cascade_map_<i>.f32), the atlas (OUT/cascade_atlas.f32, rows in
+# texture order), ForwardLit's _MAIN_LIGHT_SHADOWS_CASCADE variant sampling it (OUT/lit_cascades.png, _depth.f32), and
+# the same variant twice more over atlases whose tiles are all occluding or all clear (OUT/lit_cascades_bit<b>.png:
+# tile i occludes when bit b of i is set), so each sunlit pixel's shadow in the two pictures spells the cascade the
+# GPU chose there; OUT/cascades.json the cascades' spheres, matrices and the camera.
+ON_REQUEST = ({"depth_normals", "depth_normals_snorm", "depth_normals_layers", "lit_layers", "lit_cascades"} | FOG_PICTURES
+              | BUILTIN_SHADOW_PICTURES)
 DEPTH_PICTURES = {"depth_normals", "depth_normals_snorm", "depth_normals_layers"} | FOG_PICTURES
 COLOR_FORMATS = {"depth_normals_snorm": "R8G8B8A8_SNORM", "depth_normals_layers": "R8G8B8A8_SNORM"}
 TARGET1 = {"depth_normals_layers": "R8_UNORM", "lit_layers": "R8_UNORM"}
@@ -1008,6 +1172,50 @@ def shadow_map_texels(depth_out, texels, n):
         f.write(b"".join(data[(n - 1 - j) * row:(n - j) * row] for j in range(n)))
 
 
+def draw_cascades(a, buffers, cam, sun):
+    """lit_cascades: the casters per cascade, the atlas, the forward pass over it and the two cascade-index pictures."""
+    cascades = MainLightCascades(cam, sun, int(a.cascades))
+    tiles = []
+    for i, sl in enumerate(cascades.slices):
+        folder = os.path.join(a.out, f"cascade_map_{i}")
+        args = prepare(a, "URP", "ShadowCaster", [], buffers, folder, scene=sl.caster_values(), sun=sun)
+        depth = os.path.join(a.out, f"cascade_map_{i}.f32")
+        draw(args, buffers, None, os.path.join(folder, "harness.log"), (cascades.tile, cascades.tile), depth)
+        tiles.append(os.path.join(a.out, f"cascade_map_{i}_texels.f32"))
+        shadow_map_texels(depth, tiles[-1], cascades.tile)
+    atlas = os.path.join(a.out, "cascade_atlas.f32")
+    cascades.atlas(tiles, atlas)
+    # The two cascades the rig's terrain spans (4 cascades: 1 and 2; 2: both), exchanged on request (a broken input).
+    swap = ((0, 1) if cascades.count == 2 else (1, 2)) if a.swap_cascade_matrices else None
+    folder = os.path.join(a.out, "lit_cascades")
+    args = prepare(a, "URP", "ForwardLit", ["_MAIN_LIGHT_SHADOWS_CASCADE"], buffers, folder, scene=cascades.receiver_values(swap),
+                   images={"_MainLightShadowmapTexture": ("D32", atlas, cascades.width, cascades.height)}, sun=sun)
+    draw(args, buffers, os.path.join(a.out, "lit_cascades.png"), os.path.join(folder, "harness.log"),
+         depth_out=os.path.join(a.out, "lit_cascades_depth.f32"))
+    n = cascades.width * cascades.height
+    for bit in (0, 1):
+        # Tile i at reversed depth's near plane (1: every receiver behind it, shadowed) when bit b of i is set, else
+        # at the far plane (0: lit); the same pass and bindings, only the atlas's file differs.
+        marks = [[1.0 if i >> bit & 1 else 0.0] * (cascades.tile ** 2) for i in range(cascades.count)]
+        files = []
+        for i, m in enumerate(marks):
+            files.append(os.path.join(a.out, f"cascade_mark_{i}_{bit}.f32"))
+            with open(files[-1], "wb") as f:
+                f.write(struct.pack(f"<{len(m)}f", *m))
+        marked = os.path.join(a.out, f"cascade_atlas_bit{bit}.f32")
+        cascades.atlas(files, marked)
+        if os.path.getsize(marked) != 4 * n:
+            raise SystemExit(f"pipeline-pass: error: {marked} is not the {cascades.width}x{cascades.height} atlas")
+        draw([x.replace(atlas, marked) if atlas in x else x for x in args], buffers, os.path.join(a.out, f"lit_cascades_bit{bit}.png"),
+             os.path.join(folder, f"harness_bit{bit}.log"))
+    with open(os.path.join(a.out, "cascades.json"), "w") as f:
+        json.dump({"count": cascades.count, "tile": cascades.tile, "width": cascades.width, "height": cascades.height,
+                   "distance": cascades.distance, "centers": [sl.center for sl in cascades.slices],
+                   "radii": [sl.radius for sl in cascades.slices], "texels": [sl.texel for sl in cascades.slices],
+                   "world_to_shadow": cascades.world_to_shadow, "swapped": list(swap or []), "camera_view_proj": cam.view_proj,
+                   "object_to_world": rig_camera(buffers)[1], "sun": sun}, f, indent=1)
+
+
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--out", default=os.path.join(PKG_DIR, ".build", "pipeline-pass"))
@@ -1030,6 +1238,10 @@ def main(argv=None):
     ap.add_argument("--leave-default", action="append", default=[], help="NAME: leave a member to its default")
     ap.add_argument("--fill-from", action="append", default=[], help="NAME=OTHER: fill NAME with OTHER's value")
     ap.add_argument("--transpose", action="append", default=[], help="NAME: fill the matrix NAME (each, for an array) transposed")
+    ap.add_argument("--cascades", choices=["2", "4"], default="4",
+                    help="lit_cascades: URP's main-light cascade count (default 4; the asset offers 2 or 4)")
+    ap.add_argument("--swap-cascade-matrices", action="store_true",
+                    help="lit_cascades: the matrices of the two cascades the terrain spans exchanged (4: [1] and [2]; 2: [0] and [1]; a broken input)")
     ap.add_argument("--flip-shadow-bias", action="store_true",
                     help="Built-in's shadow casters biased towards the light instead of away (a broken input: acne)")
     a = ap.parse_args(argv)
@@ -1092,6 +1304,8 @@ def main(argv=None):
             args = prepare(a, pipeline, pass_name, keywords, buffers, folder, compiler, sun=shadow.sun,
                            images={"_ShadowMapTexture.t": ("R32_SFLOAT", screen_shadow, cam.width, cam.height)})
             draw(args, buffers, os.path.join(a.out, picture + ".png"), log, depth_out=os.path.join(a.out, picture + "_depth.f32"))
+        elif picture == "lit_cascades":
+            draw_cascades(a, buffers, cam, shadow.sun)
         elif picture in SHADOW_PICTURES:
             args = prepare(a, pipeline, pass_name, keywords, buffers, folder, compiler, scene=shadow.caster_values(),
                            sun=shadow.sun)

@@ -6,13 +6,17 @@ defines, the effects together, the effects with the other sets' first keywords),
 compiles it (glslang; DXC's SPIR-V where glslang cannot: Built-in's screen-space SHADOWS_SCREEN path, see
 pipeline_pass.py) and drawn by the harness on gt pipeline_pass's scene (the sample grid, RigScene's zoom view, the sun
 30 degrees up), every binding filled by name from the pipeline's scene (pipeline_pass.py's URP and Built-in values,
-pipeline_pass_hdrp.py's HDRP values and buffers). Textures a frame would draw first (shadow maps, the screen-space
-shadow, HDRP's atlas) are their listed 1x1 defaults; buffers the scene has nothing for (the snow map's, the vertex
-cache's, the levels' factors) are zero-filled and listed as defaulted, so those variants draw what zero inputs give.
+pipeline_pass_hdrp.py's HDRP values and buffers; the editor's selection and picking values; URP's 4 cascades'
+constants). Shadow maps and HDRP's atlas are their listed 1x1 defaults; URP's screen-space shadow and SSAO textures
+hold 1 on the left half of the screen and a known level on the right (pipeline_pass.screen_halves); buffers the scene
+has nothing for (the snow map's, the vertex cache's, the levels' factors) are zero-filled and listed as defaulted, so
+those variants draw what zero inputs give.
 Checked per variant: no member a stage reads left to its default (the manifest's defaulted_read); every depth the pass
 writes finite and within [0, 1] (--depth-out: a NaN or Inf position shows there as it is); in the forward passes'
 colour variants (not the debug views) no covered pixel black in all three channels (an 8-bit UNORM target stores a NaN
-as 0; an Inf saturates like a bright pixel, so only NaN is seen in colour). Prints a line per variant, then passes and
+as 0; an Inf saturates like a bright pixel, so only NaN is seen in colour); the selection and picking passes' pixels
+hold the editor's values; URP's single-keyword screen-shadow and SSAO variants equal ForwardLit's base picture in the
+left half and what the texture's level gives in the right (screen_texture_failures). Prints a line per variant, then passes and
 variants drawn per pipeline and per variant set, bindings filled and defaulted, and every failure; exits 1 if any.
 Not part of gt test (Tools~/rig/README.md gives its time); the PipelinePass* fixtures draw a representative subset.
 
@@ -124,6 +128,39 @@ def check(picture_png, depth_file, pass_name, keywords, manifest):
     return len(covered), failures
 
 
+def editor_pass_failures(pass_name, rgba, covered):
+    """SceneSelectionPass writes (_ObjectId, _PassValue, 1, 1), ScenePickingPass _SelectionID: every covered pixel holds
+    those bytes (picking: decoding back to the picking index), or the failures."""
+    if pass_name == "SceneSelectionPass":
+        want = [min(255, pp.EDITOR_OBJECT_ID * 255), min(255, pp.EDITOR_PASS_VALUE * 255), 255, 255]
+        wrong = [i for i in covered if list(rgba[4 * i:4 * i + 4]) != want]
+        return [f"{len(wrong)} covered pixels not (_ObjectId, _PassValue, 1, 1) = {want}"] if wrong else []
+    wrong = [i for i in covered if pp.decode_selection_id(rgba[4 * i:4 * i + 4]) != pp.PICKING_INDEX]
+    return [f"{len(wrong)} covered pixels do not decode to the picking index {pp.PICKING_INDEX}"] if wrong else []
+
+
+def screen_texture_failures(keywords, rgba, base, shadowed, width, covered):
+    """The single-keyword screen-space variants against ForwardLit's base picture (BASE) and, for SSAO, the
+    _MAIN_LIGHT_SHADOWS_SCREEN picture (SHADOWED), whose right half keeps only the ambient term albedo x ambient.
+    Left of width / 2 the textures hold 1: the picture is the base one within 1/255. Right of it: screen shadows,
+    no channel above the base's; SSAO at SSAO_LEVEL with direct strength s: albedo x (ambient x ao + light x N.L x
+    lerp(1, ao, s)) = k B - (k - ao) S where k = lerp(1, ao, s), B the base and S the shadowed picture, within 2/255."""
+    k = 1.0 + (pp.SSAO_LEVEL - 1.0) * pp.SSAO_DIRECT_STRENGTH
+    left = off = 0
+    for i in covered:
+        for c in range(3):
+            v, b = rgba[4 * i + c], base[4 * i + c]
+            if i % width < width // 2:
+                left += abs(v - b) > 1
+            elif "_SCREEN_SPACE_OCCLUSION" in keywords:
+                off += abs(v - (k * b - (k - pp.SSAO_LEVEL) * shadowed[4 * i + c])) > 2
+            else:
+                off += v > b + 1
+    what = "SSAO's" if "_SCREEN_SPACE_OCCLUSION" in keywords else "the screen shadow's"
+    return ([f"{left} channels in the unoccluded half differ from the base picture by more than 1/255"] if left else []) + \
+        ([f"{off} channels in {what} half off its expected value"] if off else [])
+
+
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--out", default=os.path.join(pp.PKG_DIR, ".build", "pipeline-pass-all"))
@@ -156,19 +193,33 @@ def main(argv=None):
     pass_scene = {("URP", "ShadowCaster"): light.caster_values(), ("Builtin", "ShadowCaster"): pp.builtin_camera_depth_values(),
                   ("HDRP", "ShadowCaster"): pipeline_pass_hdrp.HdrpCascade(cam, sun).caster_values()}
     pipeline_scene = {"URP": light.receiver_values(), "Builtin": pp.builtin_collect_values(light), "HDRP": {}}
+    for pipeline in ("URP", "HDRP"):    # the editor's own passes: what it sets for them (pipeline_pass.editor_pass_values)
+        for editor_pass in ("SceneSelectionPass", "ScenePickingPass"):
+            pass_scene[(pipeline, editor_pass)] = pp.editor_pass_values(editor_pass)
+    # _MAIN_LIGHT_SHADOWS_CASCADE: URP's 4 cascades (their spheres and atlas matrices; the map stays the 1x1 default,
+    # gt pipeline_pass --only lit_cascades draws it); the screen-space textures: pipeline_pass.screen_halves.
+    cascades = pp.MainLightCascades(cam, sun, 4)
+    screen = {"_ScreenSpaceShadowmapTexture": pp.screen_halves(os.path.join(a.out, "screen_shadow.f32"), cam.width, cam.height,
+                                                               pp.SCREEN_SHADOW_RIGHT),
+              "_ScreenSpaceOcclusionTexture": pp.screen_halves(os.path.join(a.out, "ssao.f32"), cam.width, cam.height, pp.SSAO_LEVEL)}
+    pictures = {}   # (pipeline, pass, keywords) -> RGBA of a drawn variant, for the screen-space variants' references
     clock = time.time()
     rows, per_pipeline, per_set = [], collections.Counter(), collections.Counter()
     filled = collections.Counter()
     defaulted = collections.Counter()
     failed = []
-    for i, (pipeline, sub, name, keywords) in enumerate(todo):
-        label = f"{pipeline} {name} {'+'.join(keywords) or 'base'}"
-        folder = os.path.join(a.out, f"{i:03d}")
+    def draw_variant(folder, pipeline, name, keywords):
+        """Draws one variant into folder: (picture, depth file, manifest, compiler)."""
         compiler = compiler_for(pipeline, keywords)
         values = dict(pipeline_scene[pipeline], **pass_scene.get((pipeline, name), {}))
         if set(keywords) & set(shaderlab.FOG_KEYWORDS):     # the fog pictures' RenderSettings fog
             values.update(pp.fog_values("lit_fog_linear"))
-        args = pp.prepare(scene, pipeline, name, keywords, buffers, folder, compiler, scene=values, sun=sun)
+        if pipeline == "URP" and "_MAIN_LIGHT_SHADOWS_CASCADE" in keywords:
+            values.update(cascades.receiver_values())
+        if pipeline == "URP" and "_SCREEN_SPACE_OCCLUSION" in keywords:
+            values.update(pp.ssao_values())
+        args = pp.prepare(scene, pipeline, name, keywords, buffers, folder, compiler, scene=values, sun=sun,
+                          images=screen if pipeline == "URP" else None)
         frag = args[args.index("--frag") + 1]
         outputs = pp.reflect(frag).get("outputs", [])
         target1 = f"R8_UNORM:{os.path.join(folder, 'target1.bin')}" if any(o.get("location") == 1 for o in outputs) else None
@@ -176,7 +227,26 @@ def main(argv=None):
         pp.draw(args, buffers, png, os.path.join(folder, "harness.log"), depth_out=depth, target1=target1)
         with open(os.path.join(folder, "manifest.json")) as f:
             manifest = json.load(f)
+        pictures[(pipeline, name, tuple(keywords))] = png_rgba(png)[2]
+        return png, depth, manifest, compiler
+
+    def reference(keywords):
+        """URP ForwardLit's picture with exactly these keywords, drawn now if the run has not drawn it."""
+        key = ("URP", "ForwardLit", tuple(keywords))
+        if key not in pictures:
+            draw_variant(os.path.join(a.out, "reference-" + ("+".join(keywords) or "base")), "URP", "ForwardLit", keywords)
+        return pictures[key]
+
+    for i, (pipeline, sub, name, keywords) in enumerate(todo):
+        label = f"{pipeline} {name} {'+'.join(keywords) or 'base'}"
+        png, depth, manifest, compiler = draw_variant(os.path.join(a.out, f"{i:03d}"), pipeline, name, keywords)
         covered, failures = check(png, depth, name, keywords, manifest)
+        cover = [j for j, d in enumerate(pp.read_floats(depth)) if d != 0.0]
+        if name in ("SceneSelectionPass", "ScenePickingPass"):
+            failures += editor_pass_failures(name, pictures[(pipeline, name, tuple(keywords))], cover)
+        if pipeline == "URP" and keywords in (["_MAIN_LIGHT_SHADOWS_SCREEN"], ["_SCREEN_SPACE_OCCLUSION"]):
+            failures += screen_texture_failures(keywords, pictures[(pipeline, name, tuple(keywords))], reference([]),
+                                                reference(["_MAIN_LIGHT_SHADOWS_SCREEN"]), png_rgba(png)[0], cover)
         lacking = [SCENE_LACKS[k] for k in keywords if k in SCENE_LACKS]
         if lacking:     # zero inputs the scene cannot describe: their reads are listed, not failed
             failures = [f for f in failures if not f.startswith("defaulted reads")]
