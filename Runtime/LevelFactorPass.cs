@@ -1,14 +1,16 @@
 using System.Collections.Generic;
 using UnityEngine;
+using UnityEngine.Rendering;
 
 namespace GregoryTerrain
 {
     /// <summary>
-    /// The Horizon levels' factor kernels of TerrainCache.compute, dispatched per camera before the
-    /// levels' draw, every frame, where they run; else the hull computes the factors (internals.md,
-    /// "Levels of detail"). Without levels: no dispatch, no buffer. A buffer per camera: HDRP raises
-    /// every camera's callback before it executes any camera's draws, so one shared buffer would hold
-    /// the last camera's factors when the first one draws.
+    /// The Horizon levels' kernels of TerrainCache.compute, per camera before its draw, every frame,
+    /// where they run (internals.md, "Levels of detail"): factors, then vertex records, read while
+    /// <c>_LodLevels.y</c> and <c>.z</c> say so; else the hull and domain stage compute them. Buffers
+    /// per camera: HDRP raises every camera's callback before it executes any camera's draws. The
+    /// records grow from each frame's report (<see cref="AsyncGPUReadback"/>); until then the tiles
+    /// past the end evaluate in the domain stage.
     /// </summary>
     sealed class LevelFactorPass
     {
@@ -17,14 +19,27 @@ namespace GregoryTerrain
             public Camera camera;
             public GraphicsBuffer buffer;   // a LodFactorRecord a draw patch, sized on a level-layout change
             public int patches, frame;      // frame: Time.frameCount when last dispatched
+            public GraphicsBuffer records;  // the vertex cache: C records of R uint4 (R = 2 with snow)
+            public int capacity, uint4s;    // C, R
+            public long needed;             // the records the last read-back frame needed
+            public bool reading;            // a readback of draw patch 0's record is in flight
+            public System.Action<AsyncGPUReadbackRequest> onRead;   // made once a camera: no allocation a frame
+
+            // Draw patch 0's record: inside.w (float 7) holds the records the frame needed.
+            public void Read(AsyncGPUReadbackRequest request)
+            {
+                reading = false;
+                if (!request.hasError) needed = (long)request.GetData<float>()[7];
+            }
         }
 
         readonly Dictionary<int, CameraFactors> _byCamera = new Dictionary<int, CameraFactors>();
         readonly List<int> _evicted = new List<int>();
         GraphicsBuffer _bound;     // what the property block's _LodFactors names now
         GraphicsBuffer _unused;    // one record bound while the hull computes the factors: every declared buffer is bound (Metal)
+        GraphicsBuffer _noRecords; // one record bound while the domain stage evaluates every vertex
         ComputeShader _kernelShader;
-        int _piecesKernel = -1, _seamsKernel = -1;
+        int _piecesKernel = -1, _seamsKernel = -1, _slotsKernel = -1, _verticesKernel = -1;
         readonly Vector4[] _ranges = new Vector4[LodTiles.MaxLevels];   // SetVectorArray's copy of the plan's levels
 
         /// <summary>GPU memory held now (0 when released).</summary>
@@ -32,13 +47,18 @@ namespace GregoryTerrain
         {
             get
             {
-                long records = _unused != null ? 1 : 0;
-                foreach (CameraFactors f in _byCamera.Values) records += f.patches;
-                return records * LodFactorRecord.Stride;
+                long records = _unused != null ? 1 : 0, cache = _noRecords != null ? 2 : 0;
+                foreach (CameraFactors f in _byCamera.Values) { records += f.patches; cache += (long)f.capacity * f.uint4s; }
+                return records * LodFactorRecord.Stride + cache * CacheRecordPartBytes;
             }
         }
 
-        /// <summary>A camera's frame, after the plan: dispatches or stops. True when the hull's switch changed (<c>_LodLevels</c> to send).</summary>
+        const int CacheRecordPartBytes = 16;   // a uint4
+
+        /// <summary>The records the camera's draw reads from (<c>_LodLevels.z</c>), 0 when the domain stage evaluates every vertex.</summary>
+        public int CacheRecords { get; private set; }
+
+        /// <summary>A camera's frame, after the plan: dispatches or stops. True when the hull's switch or the records' count changed (<c>_LodLevels</c> to send).</summary>
         public bool UpdateFrame(GregoryTerrainRenderer r, Camera cam, bool fallback, FrameState state, TerrainGpuBuffers gpu, MaterialPropertyBlock props)
         {
             if (cam == null || cam.pixelWidth <= 0 || cam.pixelHeight <= 0) return false;   // draws nothing
@@ -53,14 +73,44 @@ namespace GregoryTerrain
                 if (!r.LevelsOn(fallback)) { Release(); return was; }
                 _unused ??= new GraphicsBuffer(GraphicsBuffer.Target.Structured, 1, LodFactorRecord.Stride);
                 Bind(props, _unused);
-                return was;
+                return BindRecords(props, NoRecords(), 0) || was;
             }
             keys.LevelKernelsUsed();
             int tiles = r.Tiles, patches = state.levelCount * LodTiles.TilesPerLevel(tiles);
             CameraFactors f = FactorsOf(cam, patches);
             Bind(props, f.buffer);
             Dispatch(r, cam, state, gpu, tiles, f);
-            return !was;
+            bool cache = _slotsKernel >= 0 && EnsureRecords(f, state, r.SnowOn(), tiles);
+            if (cache) DispatchCache(state, tiles, f);
+            bool changed = BindRecords(props, cache ? f.records : NoRecords(), cache ? f.capacity : 0);
+            return !was || changed;
+        }
+
+        GraphicsBuffer NoRecords() => _noRecords ??= new GraphicsBuffer(GraphicsBuffer.Target.Structured, 2, CacheRecordPartBytes);
+
+        /// <summary>Binds the draw's records and their count; true when the count changed (<c>_LodLevels</c> to send).</summary>
+        bool BindRecords(MaterialPropertyBlock props, GraphicsBuffer records, int count)
+        {
+            props.SetBuffer(ShaderIds.VertexCache, records);
+            bool changed = count != CacheRecords;
+            CacheRecords = count;
+            return changed;
+        }
+
+        /// <summary>The camera's records buffer, made again when a frame needed more (or snow changes the record). False without buffer readback.</summary>
+        bool EnsureRecords(CameraFactors f, FrameState state, bool snow, int tiles)
+        {
+            if (!SystemInfo.supportsAsyncGPUReadback) return false;
+            int uint4s = VertexCache.Uint4sPerRecord(snow);
+            int limit = VertexCache.FactorLimit(state.parameters.tess);
+            int capacity = f.records == null ? LevelVertexCache.FirstRecords(LodLevels.DrawnTileCount(state.levelCount, tiles), limit)
+                                             : LevelVertexCache.GrownRecords(f.needed, f.capacity);
+            if (f.records != null && capacity == f.capacity && uint4s == f.uint4s) return true;
+            f.records?.Release();
+            f.records = new GraphicsBuffer(GraphicsBuffer.Target.Structured, capacity * uint4s, CacheRecordPartBytes);
+            f.capacity = capacity;
+            f.uint4s = uint4s;
+            return true;
         }
 
         /// <summary>Why the kernels cannot run, naming the device flag or the asset, or null.</summary>
@@ -76,12 +126,22 @@ namespace GregoryTerrain
         {
             if (shader == _kernelShader) return _piecesKernel >= 0;
             _kernelShader = shader;
-            bool found = shader.HasKernel(ShaderIds.LodFactorPiecesKernel) && shader.HasKernel(ShaderIds.LodFactorSeamsKernel);
-            _piecesKernel = found ? shader.FindKernel(ShaderIds.LodFactorPiecesKernel) : -1;
-            _seamsKernel = found ? shader.FindKernel(ShaderIds.LodFactorSeamsKernel) : -1;
-            // A kernel that did not compile for this platform is found but cannot dispatch.
-            if (found && !(shader.IsSupported(_piecesKernel) && shader.IsSupported(_seamsKernel))) _piecesKernel = _seamsKernel = -1;
+            _piecesKernel = FindKernel(shader, ShaderIds.LodFactorPiecesKernel);
+            _seamsKernel = FindKernel(shader, ShaderIds.LodFactorSeamsKernel);
+            if (_piecesKernel < 0 || _seamsKernel < 0) _piecesKernel = _seamsKernel = -1;
+            // The vertex cache's kernels only with the factor kernels, whose records they read.
+            _slotsKernel = _piecesKernel >= 0 ? FindKernel(shader, ShaderIds.LodVertexSlotsKernel) : -1;
+            _verticesKernel = _slotsKernel >= 0 ? FindKernel(shader, ShaderIds.LodCacheVerticesKernel) : -1;
+            if (_verticesKernel < 0) _slotsKernel = -1;
             return _piecesKernel >= 0;
+        }
+
+        // A kernel that did not compile for this platform is found but cannot dispatch: -1 then.
+        static int FindKernel(ComputeShader shader, string name)
+        {
+            if (!shader.HasKernel(name)) return -1;
+            int kernel = shader.FindKernel(name);
+            return shader.IsSupported(kernel) ? kernel : -1;
         }
 
         /// <summary>The camera's buffer, made again only when the level layout's size changes.</summary>
@@ -125,9 +185,29 @@ namespace GregoryTerrain
             if (snow != null) shader.SetVector(ShaderIds.SnowMapSize, snow.MapSize);
             BindBuffers(shader, _piecesKernel, gpu, snow, f.buffer);
             BindBuffers(shader, _seamsKernel, gpu, snow, f.buffer);
+            if (_slotsKernel >= 0)
+            {
+                shader.SetBuffer(_slotsKernel, ShaderIds.LodFactorsRW, f.buffer);   // the scan reads and writes the records only
+                BindBuffers(shader, _verticesKernel, gpu, snow, null);                // reads them through _LodFactors (DispatchCache)
+            }
             // A group a draw patch (M^2 x L: no axis above 65,535), then a thread a draw patch.
             shader.Dispatch(_piecesKernel, LodTiles.TilesPerLevel(tiles), state.levelCount, 1);
             shader.Dispatch(_seamsKernel, (f.patches + 63) / 64, 1, 1);
+        }
+
+        // After the factor kernels, on the same parameters (dispatches run in the order issued).
+        void DispatchCache(FrameState state, int tiles, CameraFactors f)
+        {
+            ComputeShader shader = _kernelShader;
+            shader.SetVector(ShaderIds.LodLevels, new Vector4(state.levelCount, 1f, f.capacity, 0f));
+            shader.SetBuffer(_verticesKernel, ShaderIds.LodFactors, f.buffer);
+            shader.SetBuffer(_verticesKernel, ShaderIds.VertexCacheRW, f.records);
+            shader.Dispatch(_slotsKernel, 1, 1, 1);
+            int groups = VertexCache.GroupsPerTile(VertexCache.FactorLimit(state.parameters.tess));
+            shader.Dispatch(_verticesKernel, LodTiles.TilesPerLevel(tiles), state.levelCount, groups);
+            if (f.reading) return;
+            f.reading = true;
+            AsyncGPUReadback.Request(f.buffer, LodFactorRecord.Stride, 0, f.onRead ??= f.Read);
         }
 
         void BindBuffers(ComputeShader shader, int kernel, TerrainGpuBuffers gpu, SnowSimulator snow, GraphicsBuffer factors)
@@ -137,7 +217,7 @@ namespace GregoryTerrain
             shader.SetBuffer(kernel, ShaderIds.GridLines, gpu.GridLines);
             if (snow != null) shader.SetBuffer(kernel, ShaderIds.SnowDepth, snow.DepthBuffer);
             if (gpu.NoiseCells != null) shader.SetBuffer(kernel, ShaderIds.NoiseCells, gpu.NoiseCells);
-            shader.SetBuffer(kernel, ShaderIds.LodFactorsRW, factors);
+            if (factors != null) shader.SetBuffer(kernel, ShaderIds.LodFactorsRW, factors);
         }
 
         /// <summary>Releases every buffer. Safe to call twice.</summary>
@@ -147,6 +227,9 @@ namespace GregoryTerrain
             if (_unused == _bound) _bound = null;
             _unused?.Release();
             _unused = null;
+            _noRecords?.Release();
+            _noRecords = null;
+            CacheRecords = 0;
         }
 
         // Buffers of destroyed cameras and of cameras not drawn this frame: a buffer a camera drew with
@@ -161,6 +244,7 @@ namespace GregoryTerrain
                 CameraFactors f = _byCamera[id];
                 if (f.buffer == _bound) _bound = null;
                 f.buffer?.Release();
+                f.records?.Release();
                 _byCamera.Remove(id);
             }
         }
@@ -172,6 +256,7 @@ namespace GregoryTerrain
             {
                 if (f.buffer == _bound) _bound = null;
                 f.buffer?.Release();
+                f.records?.Release();
             }
             _byCamera.Clear();
         }

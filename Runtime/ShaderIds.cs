@@ -66,6 +66,9 @@ namespace GregoryTerrain
         public static readonly int LodFactorsRW = Shader.PropertyToID("_LodFactorsRW");
         public const string LodFactorPiecesKernel = "LodFactorPieces";
         public const string LodFactorSeamsKernel = "LodFactorSeams";
+        /// <summary>The levels' vertex cache kernels (LevelVertexCacheKernels.hlsl): records into <c>_VertexCacheRW</c>, the domain stage's <c>_VertexCache</c>.</summary>
+        public const string LodVertexSlotsKernel = "LodVertexSlots";
+        public const string LodCacheVerticesKernel = "LodCacheVertices";
         public const string SnowExposureKernel = "SnowExposureKernel";
         public const string SnowAccumulateKernel = "SnowAccumulateKernel";
         public const string SnowFieldKernel = "SnowFieldKernel";

@@ -178,7 +178,7 @@ namespace GregoryTerrain
             if (_state.error != null) return false;   // logged once; drawn again after the next valid change
             UpdateNoiseTableBinding();   // before the kernels: they read the same table
             if (_levelFactors.UpdateFrame(_r, cam, fallback, _state, _gpu, _props))
-                change |= FrameChange.Levels | FrameChange.LevelCount;   // the hull's switch in _LodLevels.y changed
+                change |= FrameChange.Levels | FrameChange.LevelCount;   // the hull's switch or the records' count in _LodLevels changed
             Send(change);
             PushTessellationView(cam);
             bool cacheReady;
@@ -233,7 +233,7 @@ namespace GregoryTerrain
             for (int k = 0; k < _state.levelCount; k++) _levelVectors[k] = ToVector(_state.levelVectors[k]);
             _props.SetVectorArray(ShaderIds.Ranges, _levelVectors);
             _setLastPrepare.Add(ShaderIds.Ranges);
-            if (count) SetVector(ShaderIds.LodLevels, new Vector4(_state.levelCount, _keys.UsesLevelKernels ? 1f : 0f, 0f, 0f));
+            if (count) SetVector(ShaderIds.LodLevels, new Vector4(_state.levelCount, _keys.UsesLevelKernels ? 1f : 0f, _levelFactors.CacheRecords, 0f));
         }
 
         // Every value put on the property block goes through these: PropertiesSetLastPrepare.

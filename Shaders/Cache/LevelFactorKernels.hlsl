@@ -9,7 +9,8 @@
 //   LodFactorSeams    a thread per draw patch, dispatch (ceil(L M^2 / 64), 1, 1): the tile's factors
 //                     from its pieces, then the seam rule (LodSeamFactors), the coarse edge across a
 //                     fine seam read from the coarse tile's pieces, not computed again
-// Every frame, in that order: nothing is kept, so moving costs what still does.
+// Every frame, in that order: nothing is kept, so moving costs what still does. The levels' vertex
+// cache's kernels (LevelVertexCacheKernels.hlsl) follow, when the renderer draws from it.
 #ifndef GT_LEVEL_FACTOR_KERNELS_INCLUDED
 #define GT_LEVEL_FACTOR_KERNELS_INCLUDED
 
@@ -22,6 +23,13 @@
 RWStructuredBuffer<LodFactorRecord> _LodFactorsRW GT_REGISTER(u2);
 
 uint LodDrawPatches() { return LodLevelCount() * LodTilesPerLevel(TileCountInt()); }
+
+// Whether the camera's hull culls the tile (StageTileFactors' test in the camera's view): the
+// levels' vertex cache gives it no records (LevelVertexCacheKernels.hlsl).
+bool CameraCullsTile(TileLayout l, uint slot, float3 cornerOS[4])
+{
+    return !UsesUniformTessFactor() && TileCulled(cornerOS, TileNoiseMargin(l, slot));
+}
 
 // Every lane reaches both barriers: nothing returns before them.
 [numthreads(64, 1, 1)]
@@ -38,7 +46,7 @@ void LodFactorPieces(uint3 group : SV_GroupID, uint lane : SV_GroupIndex)
     GroupMemoryBarrierWithGroupSync();
     if (lane != 0u || patch >= LodDrawPatches()) return;
     _LodFactorsRW[patch].pieces[0] = float4(gtTileFactorPieces[0], gtTileFactorPieces[1], gtTileFactorPieces[2], gtTileFactorPieces[3]);
-    _LodFactorsRW[patch].pieces[1] = float4(gtTileFactorPieces[4], gtTileFactorPieces[5], gtTileFactorPieces[6], 0.0);
+    _LodFactorsRW[patch].pieces[1] = float4(gtTileFactorPieces[4], gtTileFactorPieces[5], gtTileFactorPieces[6], CameraCullsTile(l, slot, cornerOS) ? 1.0 : 0.0);
 }
 
 // ComputeTileFactors from the pieces LodFactorPieces wrote.

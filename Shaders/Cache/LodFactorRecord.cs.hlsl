@@ -5,7 +5,7 @@
 struct LodFactorRecord
 {
     float4 edge;       // factors, seam rule applied, culled in no view
-    float4 inside;
-    float4 pieces[2];  // TileFactorPiece 0-3, then 4-6
+    float4 inside;     // xy factors; z first cache record, -1 none; w (patch 0) records needed
+    float4 pieces[2];  // TileFactorPiece 0-3, then 4-6, then camera culls 1/0
 };
 #endif // GT_LODFACTORRECORD_CS_HLSL

@@ -150,7 +150,7 @@ uint4 VertexCacheRecordPart(TerrainVertexAttributes a, uint part)
     return uint4(asuint(a.snowDepth), 0u, 0u, 0u);
 }
 
-#if defined(GT_VERTEX_CACHE)
+#if defined(GT_VERTEX_CACHE) || defined(GT_LOD)
 // The varyings of a slot's record (tile base included): what the domain stage returns.
 TerrainVaryings CachedTerrainVaryings(uint slot, float tessFactor)
 {

@@ -19,13 +19,13 @@
 #define GT_VERTEX_CACHE_KERNELS_INCLUDED
 
 #include "VertexCache.hlsl"
+#include "VertexCacheWrites.hlsl"
 #include "TileCellRecord.cs.hlsl"
 #include "TileFactorGroup.hlsl"
 
-// The same bindings as the graphics stages' _TileFactors and _VertexCache (t5, t6): binding 7 and
-// 8 in the rig either way (TerrainInputs.hlsl); _TileCellsRW: binding 10.
+// The same binding as the graphics stages' _TileFactors (t5): binding 7 in the rig either way
+// (TerrainInputs.hlsl); _VertexCacheRW: VertexCacheWrites.hlsl; _TileCellsRW: binding 10.
 RWStructuredBuffer<TileFactorRecord> _TileFactorsRW GT_REGISTER(u2);
-RWStructuredBuffer<uint4> _VertexCacheRW GT_REGISTER(u3);
 RWStructuredBuffer<TileCellRecord> _TileCellsRW GT_REGISTER(u5);
 
 // What a tile's slots and its factor samples depend on (besides factors and camera): the range, or
@@ -186,41 +186,6 @@ void CacheTileFactors(uint3 group : SV_GroupID, uint lane : SV_GroupIndex)
     WriteTileFactors(tile, cell, rangeMoved);
 }
 
-void WriteVertexCacheRecord(uint slot, TerrainVertexAttributes a)
-{
-    [unroll] for (uint part = 0u; part < GT_VERTEX_CACHE_RECORD_UINT4S; part++)
-        _VertexCacheRW[GT_VERTEX_CACHE_RECORD_UINT4S * slot + part] = VertexCacheRecordPart(a, part);
-}
-
-// The inside points a tile's slots hold per axis: the (Iu - 1) x (Iv - 1) interior of the grid
-// (its border is the edges'), or anchored the whole (Iu + 1) x (Iv + 1) grid (ClippedCell.hlsl
-// blends a clipped tile's edge from the border too).
-uint2 VertexCacheGridPoints(float2 inside) { return TilesAnchored() ? (uint2)inside + 1u : (uint2)inside - 1u; }
-
-// Point k of the tile's list "inside points, then edge 0, 1, 2, 3": its tess coordinate and slot.
-void VertexCachePoint(uint k, float4 edge, float2 inside, uint limit, out float2 tess, out uint slot)
-{
-    uint2 n = VertexCacheGridPoints(inside);
-    uint interior = n.x * n.y;
-    if (k < interior)
-    {
-        uint first = TilesAnchored() ? 0u : 1u;
-        uint2 ij = uint2(first + k % n.x, first + k / n.x);
-        tess = (float2)ij / inside;
-        slot = VertexCacheInteriorSlot(ij, (uint)inside.x);
-        return;
-    }
-    k -= interior;
-    uint e = 0u;
-    [unroll] for (uint i = 0u; i < 3u; i++)
-    {
-        uint count = (uint)edge[e] + 1u;
-        if (k >= count) { k -= count; e++; }
-    }
-    tess = VertexCacheEdgeTess(e, k, edge[e]);
-    slot = VertexCacheEdgeSlot(e, k, limit);
-}
-
 // Dispatch (T, T, G), G = VertexCacheGroupsPerTile(L): groups (x, y, 0 .. G - 1) share tile
 // y T + x, their G x GT_VERTEX_CACHE_VERTEX_GROUP lanes striding over its points (at most
 // GT_VERTEX_CACHE_PASSES each). The factors come through the read-only _TileFactors (the same
@@ -236,14 +201,13 @@ void CacheTileVertices(uint3 group : SV_GroupID, uint lane : SV_GroupIndex)
     if (inside.w == 0.0) return;   // culled (the draw emits nothing), or its slots are up to date
     uint limit = VertexCacheFactorLimit();
     uint base = tile * VertexCacheSlotsPerTile(limit);
-    uint2 n = VertexCacheGridPoints(inside.xy);
-    uint count = n.x * n.y + (uint)(edge.x + edge.y + edge.z + edge.w) + 4u;
+    uint count = VertexCacheTilePointCount(edge, inside.xy, TilesAnchored());
     uint stride = VertexCacheGroupsPerTile(limit) * GT_VERTEX_CACHE_VERTEX_GROUP;
     for (uint k = group.z * GT_VERTEX_CACHE_VERTEX_GROUP + lane; k < count; k += stride)
     {
         float2 tess;
         uint slot;
-        VertexCachePoint(k, edge, inside.xy, limit, tess, slot);
+        VertexCachePoint(k, edge, inside.xy, limit, TilesAnchored(), tess, slot);
         WriteVertexCacheRecord(base + slot, EvaluateCellTerrainVertex(FrameTileLayout(), tile, tess));
     }
 }

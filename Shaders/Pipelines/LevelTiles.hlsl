@@ -21,6 +21,9 @@ TileFactorSet LodKernelTileFactors(uint drawPatch)
     return f;
 }
 
+// A draw patch's first record in _VertexCache (LodVertexSlots), or -1: none.
+int LodFirstRecord(uint drawPatch) { return (int)_LodFactors[drawPatch].inside.z; }
+
 // The seams of draw patch p's tile (LodTiles.hlsl): coarseMask, its edges on the rim of the finer
 // level (none on level 0), fineMask, its edges on its own level's boundary where a coarser level
 // lies beyond (none on the last level); inside: wholly inside the finer level (culled). ab: the
@@ -106,6 +109,36 @@ TileFactorSet LodTileFactors(uint drawPatch, TileFactorSet set)
         [unroll] for (uint i = 0u; i < 4u; i++)
             if ((fineMask & (1u << i)) != 0u) across[i] = CoarseSeamEdgeFactor(drawPatch, 1u << i, abUp);
     return LodSeamFactors(set, coarseMask, fineMask, float4(across[0], across[1], across[2], across[3]));
+}
+
+// The terrain point of the vertex at tess of draw patch p (tile `slot` of layout l): a seam vertex's
+// q is the coarse tile's point (SeamCoarsePoint), formed alike on both sides; any other vertex its
+// tile's own point. edgeFactors: the tile's edge factors as the hull output them (the seam's g).
+TerrainPoint LodVertexPoint(TileLayout l, uint slot, uint drawPatch, float2 tess, float4 edgeFactors)
+{
+    uint m = TileCountInt();
+    uint level = LodLevelOfPatch(drawPatch, m);
+    int2 tile = int2(slot % m, slot / m);
+    uint coarseMask, fineMask;
+    bool inside;
+    int2 ab, abUp;
+    LodTileSeams(drawPatch, coarseMask, fineMask, inside, ab, abUp);
+    TerrainPoint q = TileToTerrainPoint(l, slot, tess);
+    uint coarseEdge = SeamEdgeAt(coarseMask, tess), fineEdge = SeamEdgeAt(fineMask, tess);
+    float factors[4] = { edgeFactors.x, edgeFactors.y, edgeFactors.z, edgeFactors.w };
+    if (coarseEdge != 0u)
+        q = SeamCoarsePoint(false, coarseEdge, tess, 0.5 * factors[firstbitlow(coarseEdge)], tile, l.range, l.range, ab, l.origin, TileCount());
+    else if (fineEdge != 0u)
+        q = SeamCoarsePoint(true, fineEdge, tess, factors[firstbitlow(fineEdge)], tile, l.range, LodRange(level + 1u), abUp, l.origin, TileCount());
+    return q;
+}
+
+// The levels' vertex: what the domain stage draws and the vertex kernel stores.
+TerrainVertexAttributes EvaluateLodTerrainVertex(uint drawPatch, float2 tess, float4 edgeFactors)
+{
+    uint slot;
+    TileLayout l = StageTileLayout(drawPatch, slot);
+    return EvaluatePointTerrainVertex(l, drawPatch, tess, LodVertexPoint(l, slot, drawPatch, tess, edgeFactors));
 }
 
 #endif // GT_LEVEL_TILES_INCLUDED

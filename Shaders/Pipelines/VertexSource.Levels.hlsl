@@ -8,6 +8,7 @@
 #define GT_STAGE_PARTITIONING "integer"
 
 #include "LevelTiles.hlsl"
+#include "../Cache/LevelVertexCache.hlsl"
 
 float3 StageCornerPosition(uint drawPatch, uint corner)
 {
@@ -35,32 +36,24 @@ TileFactors StageTileFactors(InputPatch<TileCorner, 4> corners)
     return ToTileFactors(LodTileFactors(patch, CornerTileFactors(l, slot, corners)));
 }
 
-// The domain stage's vertex: a seam vertex's q is the coarse tile's point (SeamCoarsePoint), formed
-// alike on both sides; any other vertex its tile's own point.
-TerrainVaryings LodDomainVertex(uint drawPatch, float2 tess, float4 edgeFactors, float tessFactor)
-{
-    uint slot;
-    TileLayout l = StageTileLayout(drawPatch, slot);
-    uint m = TileCountInt();
-    uint level = LodLevelOfPatch(drawPatch, m);
-    int2 tile = int2(slot % m, slot / m);
-    uint coarseMask, fineMask;
-    bool inside;
-    int2 ab, abUp;
-    LodTileSeams(drawPatch, coarseMask, fineMask, inside, ab, abUp);
-    TerrainPoint q = TileToTerrainPoint(l, slot, tess);
-    uint coarseEdge = SeamEdgeAt(coarseMask, tess), fineEdge = SeamEdgeAt(fineMask, tess);
-    float factors[4] = { edgeFactors.x, edgeFactors.y, edgeFactors.z, edgeFactors.w };
-    if (coarseEdge != 0u)
-        q = SeamCoarsePoint(false, coarseEdge, tess, 0.5 * factors[firstbitlow(coarseEdge)], tile, l.range, l.range, ab, l.origin, TileCount());
-    else if (fineEdge != 0u)
-        q = SeamCoarsePoint(true, fineEdge, tess, factors[firstbitlow(fineEdge)], tile, l.range, LodRange(level + 1u), abUp, l.origin, TileCount());
-    return TerrainVertexAtPoint(l, drawPatch, tess, q, tessFactor);
-}
-
+// While the vertex kernels ran (LodVertexCacheOn, a uniform) a tile reads its records, or without
+// any evaluates at the kernel's points (LevelVertexCachePointTess): its edges match a cached neighbour's.
 TerrainVaryings StageDomainVertex(TileFactors factors, uint drawPatch, float2 tess, float tessFactor)
 {
-    return LodDomainVertex(drawPatch, tess, float4(factors.edge[0], factors.edge[1], factors.edge[2], factors.edge[3]), tessFactor);
+    float4 edge = float4(factors.edge[0], factors.edge[1], factors.edge[2], factors.edge[3]);
+    [branch] if (LodVertexCacheOn())
+    {
+        TileFactorSet drawn;
+        drawn.edge = edge;
+        drawn.inside = float2(factors.inside[0], factors.inside[1]);
+        drawn = VertexCacheIntegerFactors(drawn);
+        int first = LodFirstRecord(drawPatch);
+        if (first >= 0) return CachedTerrainVaryings(LevelVertexCacheRecord((uint)first, tess, drawn), tessFactor);
+        tess = LevelVertexCachePointTess(tess, drawn);
+    }
+    uint slot;
+    TileLayout l = StageTileLayout(drawPatch, slot);
+    return TerrainVertexAtPoint(l, drawPatch, tess, LodVertexPoint(l, slot, drawPatch, tess, edge), tessFactor);
 }
 
 #endif // GT_VERTEX_SOURCE_LEVELS_INCLUDED

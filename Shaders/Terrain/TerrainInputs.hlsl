@@ -57,7 +57,7 @@ GT_CBUFFER_START(TerrainParams)
 #if defined(GT_LOD)
     // Levels of detail only (internals.md, "Levels of detail"), always last: the level count, then
     // one range per level relative to the origin, finest first (LodLevels.Layout).
-    float4 _LodLevels;                       // (levels L, kernel factors 0/1, 0, 0)  on change
+    float4 _LodLevels;                       // (levels L, kernel factors 0/1, cache records C, 0)  on change
     float4 _Ranges[GT_MAX_LOD_LEVELS];       // level k's (c, d, g, h)                per frame
 #endif
 GT_CBUFFER_END
@@ -86,6 +86,9 @@ float SnowDepthCap() { return _SnowMapSize.z; }
 // per tile (VertexCache.hlsl), and GT_VERTEX_CACHE_RECORD_UINT4S uint4 per slot.
 #include "../Cache/TileFactorRecord.cs.hlsl"
 StructuredBuffer<TileFactorRecord> _TileFactors GT_REGISTER(t5);
+#endif
+#if defined(GT_VERTEX_CACHE) || defined(GT_LOD)
+// GT_LOD: the levels' records (LevelVertexCacheKernels.hlsl), read while _LodLevels.z is nonzero.
 StructuredBuffer<uint4> _VertexCache GT_REGISTER(t6);
 #endif
 
@@ -140,6 +143,10 @@ uint LodLevelCount() { return (uint)_LodLevels.x; }
 float4 LodRange(uint level) { return _Ranges[min(level, (uint)GT_MAX_LOD_LEVELS - 1u)]; }
 // Whether the factor kernels ran this frame and the hull reads their factors (_LodFactors).
 bool LodKernelFactorsOn() { return _LodLevels.y != 0.0; }
+// C: the records the levels' vertex cache holds this frame (_VertexCache; LevelVertexCacheKernels.hlsl),
+// 0 when the renderer did not dispatch its kernels. A float: exact below 2^24 (the renderer's bound).
+uint LodVertexCacheRecords() { return (uint)_LodLevels.z; }
+bool LodVertexCacheOn() { return _LodLevels.z != 0.0; }
 // Level k's tiles: M x M laid on its range (no anchoring: the range itself is snapped to the
 // coarser level's cells), the frame's origin.
 TileLayout LodLevelLayout(uint level) { return MakeTileLayout(LodRange(level), float4(0.0, 0.0, 0.0, 0.0), FrameRangeOrigin(), TileCount()); }

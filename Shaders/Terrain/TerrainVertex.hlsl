@@ -408,13 +408,21 @@ float3 TerrainNormalAndHeightWeight(TerrainVertexAttributes a, float3 normalWS)
 
 // TerrainVertex at a global point the caller formed (the levels' seam vertices, LodTiles.hlsl):
 // drawPatch and tess only place the readback.
-TerrainVaryings TerrainVertexAtPoint(TileLayout l, uint drawPatch, float2 tess, TerrainPoint q, float tessFactor)
+// The vertex at terrain point q (a level's seam vertex forms q through the coarse tile): what the
+// levels' domain stage draws and their vertex kernel stores (LevelVertexCacheKernels.hlsl).
+TerrainVertexAttributes EvaluatePointTerrainVertex(TileLayout l, uint drawPatch, float2 tess, TerrainPoint q)
 {
     TerrainSurfacePoint s = EvaluateSurfaceAt(q);
     TerrainVertexAttributes a = FinishTerrainVertex(l, s);
 #if defined(GT_EXTEND_VERTEX)
     ExtensionVertex(drawPatch, tess, s, a);
 #endif
+    return a;
+}
+
+TerrainVaryings TerrainVertexAtPoint(TileLayout l, uint drawPatch, float2 tess, TerrainPoint q, float tessFactor)
+{
+    TerrainVertexAttributes a = EvaluatePointTerrainVertex(l, drawPatch, tess, q);
     float3 shading = TerrainNormalAndHeightWeight(a, GT_ObjectToWorldNormal(a.normalOS));
     return TerrainVaryingsOf(a.positionOS, shading, a.snowDepth, a.patch, tessFactor);
 }

@@ -6,6 +6,7 @@ using NUnit.Framework;
 namespace GregoryTerrain.Rig.Tests
 {
     /// <summary>
+    /// (Core's tests, kept under Tools~: the package's 2 MB leaves no room for them in Tests/Core.)
     /// The Horizon levels' compact cache layout (<see cref="LevelVertexCache"/>): each drawn tile's
     /// records lie in its own block, the block holds every record the draw reads for a vertex of the
     /// tile and the kernel writes them, culled tiles take none, and bad input changes nothing.
@@ -56,6 +57,25 @@ namespace GregoryTerrain.Rig.Tests
             }
         }
 
+        /// <summary>A tile without records evaluates at the kernel's points, from the tessellator's coordinate off by 1.2e-4 (lavapipe).</summary>
+        [Test]
+        public void TheDomainStagesPointIsTheKernelsPoint()
+        {
+            TileFactorSet[] f = Frame(64, 5);
+            int points = 0;
+            foreach (TileFactorSet set in f)
+                foreach (var (tess, _) in VertexCache.TilePoints(set, LevelVertexCache.TileFactorLimit(set)))
+                    foreach (float d in new[] { 0f, 1.2e-4f, -1.2e-4f })
+                    {
+                        // The tessellator keeps an edge vertex's 0 or 1 exact; it errs along the edge.
+                        float Off(float x) => x == 0f || x == 1f ? x : x + d;
+                        var drawn = new Float2(Off(tess.x), Off(tess.y));
+                        Assert.That(LevelVertexCache.PointTess(drawn, set), Is.EqualTo(tess), $"{set}: tess {tess} drawn at {drawn}");
+                        points++;
+                    }
+            Assert.That(points, Is.GreaterThan(10000));
+        }
+
         [Test]
         public void CulledTilesTakeNoRecordsAndTheTotalIsTheBlocksSum()
         {
@@ -74,6 +94,22 @@ namespace GregoryTerrain.Rig.Tests
             Assert.That(total, Is.EqualTo(sum));
             Assert.That(LevelVertexCache.TileSlots(f[1]), Is.EqualTo(VertexCache.SlotsPerTile(1)), "all six factors 1: L = 1");
             Assert.That(LevelVertexCache.TileSlots(f[2]), Is.EqualTo(VertexCache.SlotsPerTile(64)), "all 64: the single range's S(64)");
+        }
+
+        /// <summary>The records buffer: a 16th of the fixed layout first, kept while a frame fits, a quarter above one that did not, never past 2^24.</summary>
+        [Test]
+        public void TheBufferStartsSmallGrowsPastWhatAFrameNeededAndStaysExactInFloat()
+        {
+            Assert.That(LevelVertexCache.FirstRecords(3840, 64), Is.EqualTo(3840 * VertexCache.SlotsPerTile(64) / 16));
+            Assert.That(LevelVertexCache.FirstRecords(0, 64), Is.EqualTo(1), "a buffer is never empty");
+            Assert.That(LevelVertexCache.GrownRecords(1000, 1000), Is.EqualTo(1000), "a frame that fits keeps the buffer");
+            Assert.That(LevelVertexCache.GrownRecords(400, 1000), Is.EqualTo(1000), "never shrinks");
+            Assert.That(LevelVertexCache.GrownRecords(1001, 1000), Is.EqualTo(1251));
+            Assert.That(LevelVertexCache.GrownRecords(1L << 30, 1000), Is.EqualTo(LevelVertexCache.MaxRecords));
+            Assert.That(LevelVertexCache.FirstRecords(1 << 20, 64), Is.EqualTo(LevelVertexCache.MaxRecords));
+            Assert.That((float)LevelVertexCache.MaxRecords - 1f, Is.Not.EqualTo((float)LevelVertexCache.MaxRecords), "every count below the bound is exact in float");
+            var e = Assert.Throws<ArgumentOutOfRangeException>(() => LevelVertexCache.FirstRecords(-1, 64));
+            Assert.That(e.ParamName, Is.EqualTo("drawnTiles"));
         }
 
         [Test]

@@ -315,7 +315,13 @@ namespace GregoryTerrain.Rig.Tests
                 "past the camera limit only idle cameras' buffers go: one a camera drew with this frame may still be read by a queued draw");
             Assert.That(update, Does.Contain("Bind(props, f.buffer)").And.Contain("Dispatch(r, cam, state, gpu, tiles, f)"), "bound and written: the same camera's buffer");
             Assert.That(code, Does.Not.Match(@"\bGraphicsBuffer\s+_factors\b"), "no buffer shared by every camera");
-            Assert.That(Body(code, "FindKernels"), Does.Contain("IsSupported(_piecesKernel)").And.Contain("IsSupported(_seamsKernel)"), "a kernel that did not compile for the platform is not dispatched");
+            string find = Body(code, "FindKernels");
+            foreach (string kernel in new[] { "LodFactorPiecesKernel", "LodFactorSeamsKernel", "LodVertexSlotsKernel", "LodCacheVerticesKernel" })
+                Assert.That(find, Does.Contain($"FindKernel(shader, ShaderIds.{kernel})"), kernel + " found through FindKernel");
+            Assert.That(Body(code, "FindKernel"), Does.Contain("IsSupported(kernel) ? kernel : -1"), "a kernel that did not compile for the platform is not dispatched");
+            // The levels' vertex records: the camera's own buffer too, bound for its draw, its count sent.
+            Assert.That(update, Does.Contain("EnsureRecords(f, state").And.Contain("DispatchCache(state, tiles, f)").And.Contain("BindRecords(props, cache ? f.records"), "the camera's own records buffer");
+            Assert.That(code, Does.Not.Match(@"\bGraphicsBuffer\s+_records\b"), "no records buffer shared by every camera");
         }
 
         static bool BuildsNamedStringEachCall(string body) => body == null || Regex.IsMatch(body, @"\$""[^""]*\{\w+\.name\}");

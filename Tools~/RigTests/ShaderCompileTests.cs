@@ -20,7 +20,7 @@ namespace GregoryTerrain.Rig.Tests
         // The vertex cache's compute kernels, compiled for GT_VERTEX_CACHE variants only.
         static readonly string[] CacheStages = { "cache_factors", "cache_vertices" };
 
-        static readonly string[] LodStages = { "lod_pieces", "lod_seams" };   // the levels' factor kernels
+        static readonly string[] LodStages = { "lod_pieces", "lod_seams", "lod_slots", "lod_vertices" };   // the levels' factor and vertex cache kernels
 
         static string[] StagesOf(string[] keywords) =>
             keywords.Contains("GT_VERTEX_CACHE") ? Stages.Concat(CacheStages).ToArray()

@@ -35,6 +35,7 @@
     #include "../../Shaders/Cache/VertexCacheKernels.hlsl"   // entry points CacheTileFactors, CacheTileVertices
 #elif defined(GT_LOD)
     #include "../../Shaders/Cache/LevelFactorKernels.hlsl"   // entry points LodFactorPieces, LodFactorSeams
+    #include "../../Shaders/Cache/LevelVertexCacheKernels.hlsl"   // entry points LodVertexSlots, LodCacheVertices
 #endif
 
 #if defined(GT_READBACK) || defined(GT_FACTOR_READBACK)

@@ -17,9 +17,9 @@
 // The record is added to the floor's flat position, so the fetch stays in the program; the factors
 // are rounded up as the cache's integer factors are. Binding: t6 (rig binding 8), S(LOD_CACHE_LIMIT) records a tile.
 #include "TerrainRig.hlsl"
-#include "LevelVertexCache.hlsl"
+#include "../../Shaders/Cache/LevelVertexCache.hlsl"
 
-StructuredBuffer<uint4> _LevelCache GT_REGISTER(t6);
+// The records: the product's _VertexCache (t6), which GT_LOD declares for its own cache.
 
 #ifndef LOD_CACHE_LIMIT
     #define LOD_CACHE_LIMIT 64u   // slots for the largest factor (lod_cache_ab.py sizes the buffer for it)
@@ -44,7 +44,7 @@ uint LevelCacheSlot(TileFactors factors, uint drawPatch, float2 tess)
 
 TerrainVaryings CachedVaryings(TileFactors factors, const OutputPatch<TileCorner, 4> corners, float2 tess)
 {
-    uint4 r = _LevelCache[LevelCacheSlot(factors, corners[0].drawPatch, tess)];
+    uint4 r = _VertexCache[LevelCacheSlot(factors, corners[0].drawPatch, tess)];
     float3 positionOS = FlatPosition(corners, tess) + asfloat(r.xyz);
     return TerrainVaryingsOf(positionOS, UnpackCachedVaryings(r.w), 0.0, 0u, max(factors.inside[0], factors.inside[1]));
 }
@@ -69,8 +69,8 @@ TerrainVaryings domain_cached_blend(TileFactors factors, const OutputPatch<TileC
                                     float2 tess : SV_DomainLocation)
 {
     uint slot = 2u * LevelCacheSlot(factors, corners[0].drawPatch, tess);
-    uint4 r = _LevelCache[slot];
-    uint4 w = _LevelCache[slot + 1u];   // (the two window octaves' heights, slopes of the first, of the second, the first's index): halves
+    uint4 r = _VertexCache[slot];
+    uint4 w = _VertexCache[slot + 1u];   // (the two window octaves' heights, slopes of the first, of the second, the first's index): halves
     float3 positionOS = FlatPosition(corners, tess) + asfloat(r.xyz);
     float3 surface = TerrainToObject(positionOS);   // object (x, height, y) -> terrain space, as the rule reads it
     float count = OctaveCountAtPixelScale(SurfacePixelScale(surface), NoiseSegmentPixels(), NoiseSettings(), MaxNoiseOctaves());

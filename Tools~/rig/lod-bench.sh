@@ -50,7 +50,7 @@ done
 timing=(); [ "$frames" -gt 1 ] && timing=(--frames "$frames" --warmup 2 --timestamps)
 pass_state_args state tessellated   # the forward pass's Cull/ZTest/...; RigCamera draws reversed depth, the harness's default
 "$harness" --vert "$spv/vert.spv" --tesc "$spv/tesc.spv" --tese "$spv/tese.spv" --frag "$spv/frag.spv" \
-  --buffers "$run" --params-tail "$run/lod_tail.f32" --patches "$patches" --storage "7:$((64 * patches))" --width "$width" --height "$height" "${state[@]}" \
+  --buffers "$run" --params-tail "$run/lod_tail.f32" --patches "$patches" --storage "7:$((64 * patches))" --storage 8:16 --width "$width" --height "$height" "${state[@]}" \
   --stats "${timing[@]}" "${png[@]}" "${device[@]}" > "$run/harness.txt"
 stat() { awk -v k="$1" '$1 == "stat" && $2 == k { print $3 }' "$run/harness.txt"; }
 echo "lod levels $levels"
@@ -63,7 +63,7 @@ grep '^time ' "$run/harness.txt" || true
 if [ "$error" = 1 ]; then
   fr="$BUILD_DIR/spirv/factor_readback+lod+noise"
   "$harness" --vert "$fr/vert.spv" --tesc "$fr/tesc.spv" --tese "$fr/tese.spv" --frag "$fr/frag.spv" \
-    --buffers "$run" --params-tail "$run/lod_tail.f32" --patches "$patches" --storage "7:$((64 * patches))" --width "$width" --height "$height" "${state[@]}" \
+    --buffers "$run" --params-tail "$run/lod_tail.f32" --patches "$patches" --storage "7:$((64 * patches))" --storage 8:16 --width "$width" --height "$height" "${state[@]}" \
     --readback "$run/factors.f32" --readback-floats $((8 * patches)) "${device[@]}" > "$run/harness-factors.txt" \
     || die "factor readback draw failed ($run/harness-factors.txt)"
   [ -n "${GT_LOD_SKIP_ERROR:-}" ] || "$cli" lod-scene --out "$run/error-scene" "${scene[@]}" --factors "$run/factors.f32" "${levels_error[@]}" \

@@ -41,7 +41,7 @@ for m in "${list[@]}"; do
   patches=$(awk '$1 == "patches" { print $2 }' "$dest/$name/lod.txt")
   "$harness" --vert "$dest/spv/lod/vert.spv" --tesc "$dest/spv/lod/tesc.spv" --tese "$dest/spv/lod/tese.spv" \
     --frag "$dest/spv/lod/frag.spv" --buffers "$dest/$name/lod" --params-tail "$dest/$name/lod/lod_tail.f32" \
-    --patches "$patches" --storage "7:$((64 * patches))" --width 1920 --height 1080 "${state[@]}" --stats --device llvmpipe > "$dest/$name/lod-lavapipe.txt" \
+    --patches "$patches" --storage "7:$((64 * patches))" --storage 8:16 --width 1920 --height 1080 "${state[@]}" --stats --device llvmpipe > "$dest/$name/lod-lavapipe.txt" \
     || die "the levels' draw failed on lavapipe ($dest/$name/lod-lavapipe.txt)"
   tris=$(awk '$1 == "stat" && $2 == "clipping_invocations" { print $3 }' "$dest/$name/lod-lavapipe.txt")
   f=$(python3 -c "import math; print(max(1, min(64, round(math.sqrt($tris / (2 * 64 * 64))))))")

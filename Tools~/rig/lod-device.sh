@@ -39,7 +39,7 @@ dev=(); [ -n "$device" ] && dev=(--device "$device")
 median() { python3 -c "import sys, statistics; v = [float(x) for x in sys.stdin.read().split()]; print(f'{statistics.median(v):.4f}' if v else 'nan')"; }
 draw() {  # draw NAME KIND PATCHES LOG
   local v="$run/spv/$2" dir="$run/$1/$2" tail=()
-  [ "$2" = lod ] && tail=(--params-tail "$dir/lod_tail.f32" --storage "7:$((64 * $3))")
+  [ "$2" = lod ] && tail=(--params-tail "$dir/lod_tail.f32" --storage "7:$((64 * $3))" --storage 8:16)
   "$H" "${dev[@]}" --vert "$v/vert.spv" --tesc "$v/tesc.spv" --tese "$v/tese.spv" --frag "$v/frag.spv" \
     --buffers "$dir" "${tail[@]}" --patches "$3" --width 1920 --height 1080 "${state[@]}" --stats \
     --frames "$frames" --warmup 3 --timestamps >"$4" || { cat "$4"; exit 1; }

@@ -42,7 +42,7 @@ def patches_of(args):
 
 def cached(args, entry, uint4s):
     a = re.sub(r"--tese \S+", f"--tese {LODC}{entry}.spv", args)
-    return a + f" --storage 8:{16 * uint4s * SLOTS_64 * patches_of(args)}"
+    return re.sub(r"--storage 8:\d+", f"--storage 8:{16 * uint4s * SLOTS_64 * patches_of(args)}", a)
 
 
 def prepare(plan, rounds):

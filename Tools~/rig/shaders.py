@@ -53,10 +53,13 @@ CACHE_STAGES = [
 # Defines a stage gets whatever the variant, as GregoryTerrain.shader's passes have them: the
 # no-tessellator pass defines GT_FALLBACK (it keeps the range origin's run-time branch, TerrainInputs.hlsl).
 STAGE_DEFINES = {"fallback": ["-DGT_FALLBACK"]}
-# The Horizon levels' factor kernels (LevelFactorKernels.hlsl), compiled for GT_LOD variants only.
+# The Horizon levels' factor kernels (LevelFactorKernels.hlsl) and vertex cache kernels
+# (LevelVertexCacheKernels.hlsl), compiled for GT_LOD variants only.
 LOD_STAGES = [
     ("lod_pieces", "comp", "LodFactorPieces"),
     ("lod_seams", "comp", "LodFactorSeams"),
+    ("lod_slots", "comp", "LodVertexSlots"),
+    ("lod_vertices", "comp", "LodCacheVertices"),
 ]
 
 
@@ -64,7 +67,7 @@ def stages_of(keywords):
     return STAGES + (CACHE_STAGES if "GT_VERTEX_CACHE" in keywords else []) + (LOD_STAGES if "GT_LOD" in keywords else [])
 
 # HLSL register -> Vulkan binding (set 0): b0 -> 0, b1 -> 1 (no shift), t0..t2 -> 2..4 (+2),
-# u0 -> 5 (+5), t4 -> 6 (+2; GT_SNOW's _SnowDepth), t5/u2 -> 7 and t6/u3 -> 8 (GT_VERTEX_CACHE; GT_LOD's t5/u2 too), t7 -> 9 (GT_NOISE_TABLE's _NoiseCells), u5 -> 10 (the cache kernels' _TileCellsRW). glslang applies the shift of each register class
+# u0 -> 5 (+5), t4 -> 6 (+2; GT_SNOW's _SnowDepth), t5/u2 -> 7 and t6/u3 -> 8 (GT_VERTEX_CACHE; GT_LOD's too), t7 -> 9 (GT_NOISE_TABLE's _NoiseCells), u5 -> 10 (the cache kernels' _TileCellsRW). glslang applies the shift of each register class
 # with --hlsl-iomap.
 REGISTER_SHIFTS = ["--shift-cbuffer-binding", "0", "--shift-texture-binding", "2",
                    "--shift-UAV-binding", "5"]

@@ -53,8 +53,9 @@ namespace GregoryTerrain
 
         [HlslComment("factors, seam rule applied, culled in no view")]
         public Float4 edge;
+        [HlslComment("xy factors; z first cache record, -1 none; w (patch 0) records needed")]
         public Float4 inside;
-        [HlslArray("pieces", 2), HlslComment("TileFactorPiece 0-3, then 4-6")]
+        [HlslArray("pieces", 2), HlslComment("TileFactorPiece 0-3, then 4-6, then camera culls 1/0")]
         public Float4 piece0, piece1;
     }
 }

@@ -14,7 +14,10 @@ namespace GregoryTerrain.Rig
     /// the floor's domain stage (same hull, <c>floor_lod.spv</c>), and the tessellator's floor of the
     /// headline table (the fair variant's uniform tile grid with <c>floor.spv</c>) at the triangle
     /// count the levels drew, matched on the device (bench_run.sh's floor-match kind: M x M tiles at
-    /// odd F with 2 (M F)^2 nearest the count).
+    /// odd F with 2 (M F)^2 nearest the count). Each view twice: the domain-stage path
+    /// (<c>levels</c>) and the cached one (<c>levels-cached</c>: the vertex cache's kernels after the
+    /// factor kernels every frame, the domain stage reading the records; what the renderer draws where
+    /// compute runs), the same camera, tails and triangles.
     /// </summary>
     static partial class BenchPlan
     {
@@ -42,6 +45,15 @@ namespace GregoryTerrain.Rig
         /// <summary>Job id of a ground view: lod_t{metres}_{path}.</summary>
         public static string LevelsId(double terrainM, string path) => Inv($"lod_t{terrainM:F0}_{path}");
 
+        /// <summary>
+        /// The cached jobs' records (<c>_LodLevels.z</c>): 64 MB, above the ground views' 5.9-16 MB, so
+        /// no tile falls back to the domain stage (a short buffer draws right but times the fallback).
+        /// </summary>
+        public const int LevelsCacheRecords = LevelVertexCache.MaxRecords / 4;
+
+        /// <summary>The cached jobs' tail (<c>_LodLevels.z</c> set) and tail path, beside the domain-stage job's.</summary>
+        public const string LevelsCachedTailFile = "lod_tail_cached.f32", LevelsCachedTailPathFile = "lod_tail_path_cached.f32";
+
         /// <summary>Folder of jobs/ holding the uniform grid the floor-match jobs draw (params patched on the device).</summary>
         public const string LevelsFloorTemplate = "levels_floor";
 
@@ -61,24 +73,31 @@ namespace GregoryTerrain.Rig
                     string id = LevelsId(m, name), jobDir = Path.Combine(dir, "jobs", id);
                     var scene = new LodScene { TerrainMeters = m, EyeMeters = eye, Width = width, Height = height, KernelFactors = true }.Build(lodGrid);
                     scene.Write(jobDir);
-                    string moving = "";
+                    LodScene cached = scene.WithCacheRecords(LevelsCacheRecords);
+                    BufferFiles.Write(Path.Combine(jobDir, LevelsCachedTailFile), cached.Tail);
+                    string moving = "", movingCached = "";
                     if (speed > 0)
                     {
                         int n = warmup + frames;
                         var cameras = new List<float>(n * 44);
                         var tails = new List<float>(n * scene.Tail.Length);
+                        var cachedTails = new List<float>(n * scene.Tail.Length);
                         for (int f = 0; f < n; f++)
                         {
                             LodScene s = scene.Stepped(speed * f / FramesPerSecond);
                             cameras.AddRange(s.Camera.Pack());
                             tails.AddRange(s.Tail);
+                            cachedTails.AddRange(s.WithCacheRecords(LevelsCacheRecords).Tail);
                         }
                         BufferFiles.Write(Path.Combine(jobDir, PackCommand.CameraPathFile), cameras.ToArray());
                         BufferFiles.Write(Path.Combine(jobDir, LevelsTailPathFile), tails.ToArray());
+                        BufferFiles.Write(Path.Combine(jobDir, LevelsCachedTailPathFile), cachedTails.ToArray());
                         moving = $" --camera-path @JOB@/{id}/{PackCommand.CameraPathFile} --params-tail-path @JOB@/{id}/{LevelsTailPathFile}";
+                        movingCached = $" --camera-path @JOB@/{id}/{PackCommand.CameraPathFile} --params-tail-path @JOB@/{id}/{LevelsCachedTailPathFile}";
                     }
                     string input = $"--patches {scene.Patches} --buffers @JOB@/{id} --params-tail @JOB@/{id}/lod_tail.f32{moving} {LevelsKernels(scene)} {view} {t}";
                     plan.Append($"{id}:levels\trun\t-\t{Stages(LevelsVariant, false)} {input}\n");
+                    plan.Append($"{id}:levels-cached\trun\t-\t{Stages(LevelsVariant, false)} --patches {scene.Patches} --buffers @JOB@/{id} --params-tail @JOB@/{id}/{LevelsCachedTailFile}{movingCached} {LevelsKernels(cached)} {view} {t}\n");
                     plan.Append($"{id}:levels-floor\trun\t-\t{LevelsFloorStages} {input}\n");
                     plan.Append($"{id}:floor\tfloor-match\t{id}:levels\t{FloorStages} --buffers @FLOOR@ {view} {t}\n");
                     meta.Append(Inv($"{id}\tlevels\t{scene.Tiles}\t0\t{scene.TargetPixels}\t{scene.MaxFactor}\t{scene.Noise.octaves}\t{name}\t{scene.Patches}\n"));
@@ -105,9 +124,12 @@ namespace GregoryTerrain.Rig
             ("octaves_64px", "the continuous octave rule at 64 px segments instead of 2 (fewer octaves near the feet; the octave loop's cost)"),
         };
 
-        /// <summary>The shipped path: the factor kernels every frame before the draw, the hull reading their records (binding 7).</summary>
-        static string LevelsKernels(LodScene scene) =>
-            $"--storage {scene.FactorStorage} " + string.Join(" ", scene.KernelArgs($"@SPV@/{LevelsVariant}/lod_pieces.spv", $"@SPV@/{LevelsVariant}/lod_seams.spv"));
+        /// <summary>The factor kernels every frame before the draw, the hull reading their records (binding 7); with the scene's cache records, the vertex cache's kernels after them (binding 8).</summary>
+        static string LevelsKernels(LodScene scene)
+        {
+            string s = $"--storage {scene.FactorStorage} --storage {scene.CacheStorage} " + string.Join(" ", scene.KernelArgs($"@SPV@/{LevelsVariant}/lod_pieces.spv", $"@SPV@/{LevelsVariant}/lod_seams.spv"));
+            return scene.CacheRecords == 0 ? s : s + " " + string.Join(" ", scene.CacheKernelArgs($"@SPV@/{LevelsVariant}/lod_slots.spv", $"@SPV@/{LevelsVariant}/lod_vertices.spv"));
+        }
 
         /// <summary>The levels' tails a frame (--params-tail-path), beside the job's camera path.</summary>
         public const string LevelsTailPathFile = "lod_tail_path.f32";

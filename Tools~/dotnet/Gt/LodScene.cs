@@ -47,6 +47,12 @@ namespace GregoryTerrain.Rig
         /// the hull computes the factors itself (the renderer's path without the kernels).
         /// </summary>
         public bool KernelFactors;
+        /// <summary>
+        /// The records the levels' vertex cache holds (<c>_LodLevels.z</c>; LevelVertexCacheKernels.hlsl,
+        /// dispatched by <see cref="CacheKernelArgs"/> after the factor kernels, which it needs): the
+        /// domain stage reads a tile's vertices from them. 0: it evaluates every vertex itself.
+        /// </summary>
+        public int CacheRecords { get; set; }
         /// <summary>The origin in use; <see cref="Build"/> picks one when unset, <see cref="Stepped"/> keeps it (as the renderer's tracker does for a small move).</summary>
         public RangeOrigin? Origin;
 
@@ -92,6 +98,9 @@ namespace GregoryTerrain.Rig
             Tail = new float[4 * (1 + LodTiles.MaxLevels)];
             Tail[0] = count;
             Tail[1] = KernelFactors ? 1f : 0f;
+            if (CacheRecords < 0 || CacheRecords >= 1 << 24 || (CacheRecords > 0 && !KernelFactors))
+                throw new ArgumentException($"cache-records ({CacheRecords}) must lie in [0, 2^24) and needs the factor kernels", "cache-records");
+            Tail[2] = CacheRecords;
             for (int k = 0; k < count; k++)   // relative to the origin, as the renderer sends them
             {
                 RangeMapping.EncodeRange(levels[k], origin, out Float4 r, out _);
@@ -170,6 +179,14 @@ namespace GregoryTerrain.Rig
             return new double[] { v.x, v.y, v.z };
         }
 
+        /// <summary>The same scene drawn from a vertex cache of <paramref name="records"/> records (<see cref="CacheRecords"/>), laid out again.</summary>
+        public LodScene WithCacheRecords(int records)
+        {
+            var s = (LodScene)MemberwiseClone();
+            s.CacheRecords = records;
+            return s.Build(_source);
+        }
+
         /// <summary>The same scene with the camera moved <paramref name="meters"/> along +y (forward) and laid out again.</summary>
         public LodScene Stepped(double meters)
         {
@@ -194,7 +211,21 @@ namespace GregoryTerrain.Rig
         public List<string> HarnessArgs(string dir) => new List<string>
         {
             "--buffers", dir, "--params-tail", Path.Combine(dir, "lod_tail.f32"), "--patches", Patches.ToString(),
-            "--storage", FactorStorage,
+            "--storage", FactorStorage, "--storage", CacheStorage,
+        };
+
+        /// <summary>The levels' records <c>_VertexCache</c> (binding 8): "8:BYTES", 16 bytes a record (no snow), declared either way.</summary>
+        public string CacheStorage => FormattableString.Invariant($"8:{16 * Math.Max(1, CacheRecords)}");
+
+        /// <summary>
+        /// The levels' vertex cache kernels as the renderer dispatches them after the factor kernels:
+        /// harness --compute options for the SPIR-V of LodVertexSlots (one group) and LodCacheVertices
+        /// (M^2 x L x G groups, G for the largest factor the scene can draw).
+        /// </summary>
+        public string[] CacheKernelArgs(string slots, string vertices) => new[]
+        {
+            "--compute", FormattableString.Invariant($"{slots}:1,1,1"),
+            "--compute", FormattableString.Invariant($"{vertices}:{LodTiles.TilesPerLevel(Tiles)},{LevelCount},{VertexCache.GroupsPerTile(VertexCache.FactorLimit(Inputs.Params.tess))}"),
         };
 
         /// <summary>The hull's <c>_LodFactors</c> (binding 7): "7:BYTES", read only with <see cref="KernelFactors"/>, declared either way.</summary>

@@ -356,6 +356,7 @@ namespace UnityEngine
     {
         public static bool supportsTessellationShaders => false;                      // SR:SystemInfo-supportsTessellationShaders
         public static bool supportsComputeShaders => false;                           // SR:SystemInfo-supportsComputeShaders
+        public static bool supportsAsyncGPUReadback => false;                         // SR:SystemInfo-supportsAsyncGPUReadback
         public static long maxGraphicsBufferSize => 0;                                // SR:SystemInfo-maxGraphicsBufferSize
         public static bool supportsInstancing => false;                               // SR:SystemInfo-supportsInstancing
     }
@@ -402,6 +403,26 @@ namespace UnityEngine
 namespace UnityEngine.Rendering
 {
     public enum ShadowCastingMode { Off = 0, On = 1, TwoSided = 2, ShadowsOnly = 3 } // SR:Rendering.ShadowCastingMode
+
+    public struct AsyncGPUReadbackRequest                                             // SR:Rendering.AsyncGPUReadbackRequest
+    {
+        public bool hasError => false;                                                // SR:Rendering.AsyncGPUReadbackRequest-hasError
+        public Unity.Collections.NativeArray<T> GetData<T>(int layer = 0) where T : struct => default; // SR:Rendering.AsyncGPUReadbackRequest.GetData
+    }
+
+    public static class AsyncGPUReadback                                              // SR:Rendering.AsyncGPUReadback
+    {
+        // SR:Rendering.AsyncGPUReadback.Request (the GraphicsBuffer, size, offset overload; the callback runs on the main thread once the data is there)
+        public static AsyncGPUReadbackRequest Request(GraphicsBuffer src, int size, int offset, Action<AsyncGPUReadbackRequest> callback = null) => default;
+    }
+}
+
+namespace Unity.Collections
+{
+    public struct NativeArray<T> where T : struct                                    // SR:Unity.Collections.NativeArray_1
+    {
+        public T this[int index] { get => default; set { } }                          // SR:Unity.Collections.NativeArray_1-Item
+    }
 }
 
 namespace UnityEngine

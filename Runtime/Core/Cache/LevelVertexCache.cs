@@ -1,31 +1,44 @@
 using System;
 
-namespace GregoryTerrain.Rig
+namespace GregoryTerrain
 {
     /// <summary>
-    /// The Horizon levels' vertex cache layout (Tools~/docs/design-notes.md, "Levels of detail through a
-    /// compute cache"), rig-side until the package has room for it (PackageSizeTests: 0.8 KB left), with
-    /// its HLSL twin Tools~/rig/LevelVertexCache.hlsl: every drawn tile of every level is evaluated again each frame the camera or the
-    /// levels move, so records need not persist and take a compact layout made again each frame. A
-    /// draw patch (<see cref="LodTiles"/>: tile <c>p mod M^2</c> of level <c>p / M^2</c>) at integer
+    /// The Horizon levels' vertex cache layout (internals.md, "Levels of detail"), name for name as
+    /// <c>Shaders/Cache/LevelVertexCache.hlsl</c>: every drawn tile of every level is evaluated again
+    /// each frame the levels draw, so records need not persist and take a compact layout made again
+    /// each frame. A draw patch (<see cref="LodTiles"/>: tile <c>p mod M^2</c> of level <c>p / M^2</c>) at integer
     /// factors f takes <see cref="VertexCache.SlotsPerTile"/> of its largest factor (its own L: the
     /// single range's slot rule, <see cref="VertexCache.Slot"/>, unchanged), a culled one none, and
     /// its records start at the exclusive prefix sum of the slots before it.
     /// </summary>
     internal static class LevelVertexCache
     {
+        /// <summary>Records a buffer holds at most: C (<c>_LodLevels.z</c>) and first records are floats, exact below 2^24.</summary>
+        public const int MaxRecords = 1 << 24;
+
+        /// <summary>A camera's first buffer: a 16th of S(<paramref name="factorLimit"/>) a drawn tile; it grows (<see cref="GrownRecords"/>).</summary>
+        public static int FirstRecords(int drawnTiles, int factorLimit)
+        {
+            if (drawnTiles < 0) throw new ArgumentOutOfRangeException(nameof(drawnTiles), drawnTiles, "drawnTiles must be >= 0");
+            return (int)Math.Clamp((long)drawnTiles * VertexCache.SlotsPerTile(factorLimit) / 16, 1, MaxRecords);
+        }
+
+        /// <summary>The buffer after a frame needed <paramref name="needed"/>: kept while they fit, else a quarter above.</summary>
+        public static int GrownRecords(long needed, int current) =>
+            needed <= current ? current : (int)Math.Min(MaxRecords, needed + needed / 4);
+
         /// <summary>The largest of a tile's six integer factors: its slot rule's L. 0 when culled.</summary>
         public static int TileFactorLimit(TileFactorSet integerFactors)
         {
             if (integerFactors.IsCulled) return 0;
             Float4 e = integerFactors.edge;
             Float2 i = integerFactors.inside;
-            return Math.Max(Math.Max(Math.Max(Factor(e.x, integerFactors), Factor(e.y, integerFactors)), Math.Max(Factor(e.z, integerFactors), Factor(e.w, integerFactors))),
-                            Math.Max(Factor(i.x, integerFactors), Factor(i.y, integerFactors)));
+            return Math.Max(Math.Max(Math.Max(CheckFactor(e.x, integerFactors), CheckFactor(e.y, integerFactors)), Math.Max(CheckFactor(e.z, integerFactors), CheckFactor(e.w, integerFactors))),
+                            Math.Max(CheckFactor(i.x, integerFactors), CheckFactor(i.y, integerFactors)));
         }
 
         /// <summary>One integer factor of <paramref name="set"/>; throws naming the set unless it is an integer in [1, 64].</summary>
-        static int Factor(float f, TileFactorSet set)
+        static int CheckFactor(float f, TileFactorSet set)
         {
             if (!(f >= 1f && f <= VertexCache.MaxFactor) || f != MathF.Floor(f))
                 throw new ArgumentException(FormattableString.Invariant($"integerFactors ({set}) must be integers in [1, {VertexCache.MaxFactor}] (VertexCache.IntegerFactors) or culled"), "integerFactors");
@@ -55,6 +68,18 @@ namespace GregoryTerrain.Rig
                 next += TileSlots(integerFactors[p]);
             }
             return next;
+        }
+
+        /// <summary>HLSL <c>LevelVertexCachePointTess</c>: the kernel's exact point (k / F, i / Iu) for the tessellator's <paramref name="tess"/>.</summary>
+        public static Float2 PointTess(Float2 tess, TileFactorSet integerFactors)
+        {
+            Float4 e = integerFactors.edge;
+            if (tess.x == 0f) return VertexCache.EdgeTess(0, (int)VertexCache.RoundToPoint(tess.y * e.x), e.x);
+            if (tess.y == 0f) return VertexCache.EdgeTess(1, (int)VertexCache.RoundToPoint(tess.x * e.y), e.y);
+            if (tess.x == 1f) return VertexCache.EdgeTess(2, (int)VertexCache.RoundToPoint(tess.y * e.z), e.z);
+            if (tess.y == 1f) return VertexCache.EdgeTess(3, (int)VertexCache.RoundToPoint(tess.x * e.w), e.w);
+            Float2 i = integerFactors.inside;
+            return new Float2(VertexCache.RoundToPoint(tess.x * i.x) / i.x, VertexCache.RoundToPoint(tess.y * i.y) / i.y);
         }
 
         /// <summary>The record of the vertex the tessellator puts at <paramref name="tess"/> in a draw patch whose records start at <paramref name="firstRecord"/>.</summary>
