@@ -1,8 +1,7 @@
 // Built-in render pipeline adapter (interface: see StandaloneAdapter.hlsl).
 // Unity API names used: HLSLSupport.cginc (CBUFFER_START/CBUFFER_END), UnityCG.cginc
 // (UnityWorldToClipPos, UnityWorldSpaceLightDir, UnityApplyLinearShadowBias, _WorldSpaceCameraPos,
-// _ScreenParams, _WorldSpaceLightPos0, unity_LightShadowBias, unity_WorldToShadow, _LightPositionRange,
-// UnityEncodeCubeShadowDepth), UnityLightingCommon.cginc (_LightColor0) and
+// _ScreenParams, _WorldSpaceLightPos0, unity_LightShadowBias, unity_WorldToShadow), UnityLightingCommon.cginc (_LightColor0) and
 // AutoLight.cginc (unitySampleShadow, the SHADOWS_SCREEN keyword). Use it in a pass with
 // Tags { "LightMode" = "ForwardBase" } so Unity fills the main directional light.
 // Compiled against the real 2022.3 CGIncludes off Unity by the rig (Tools~/rig/shaderlab.py).
@@ -12,14 +11,11 @@
 // used), so GregoryTerrainRenderer sets _GtObjectToWorld / _GtWorldToObject.
 // Shadows: the ShadowCaster pass declares multi_compile_shadowcaster and the caster does per variant what
 // UnityCG.cginc's TRANSFER_SHADOW_CASTER_NOPOS / SHADOW_CASTER_FRAGMENT do (UnityCG.cginc:962-982):
-//   SHADOWS_DEPTH (directional, spot), and SHADOWS_CUBE where the cube map is a depth texture
-//   (SHADOWS_CUBE_IN_DEPTH_TEX, UnityCG.cginc:48-51: D3D11/12, Metal, GL core, GLES3, Vulkan, PlayStation, Switch): the normal
-//   offset, then UnityApplyLinearShadowBias, which leaves a cube map's depth bias out (UnityCG.cginc:942): the
-//   receiver subtracts it from the distance (UnitySampleShadowmap, UnityShadowLibrary.cginc:113).
-//   SHADOWS_CUBE without a depth cube map (GLES2, ...; GT_SHADOW_CASTER_CUBE_DISTANCE): the plain clip position,
-//   and the fragment writes the biased distance to the light over its range (GT_ShadowCasterColor). The pass's
-//   ColorMask 0 masks that colour: of 2022.3's APIs only GLES2 lacks the depth cube map, and it runs no
-//   target 4.5 SubShader (the ColorMask must go if one ever draws this variant).
+//   SHADOWS_DEPTH (directional, spot) and SHADOWS_CUBE (point) get the normal offset, then
+//   UnityApplyLinearShadowBias, which leaves a depth cube map's bias out (UnityCG.cginc:942): the receiver
+//   subtracts it from the distance (UnitySampleShadowmap, UnityShadowLibrary.cginc:113). Unity's colour-distance
+//   cube caster (no SHADOWS_CUBE_IN_DEPTH_TEX, UnityCG.cginc:48-51) is not written: every API whose list there
+//   lacks it is one that runs no target 4.5 SubShader (GLES2).
 #ifndef GT_BUILTIN_ADAPTER_INCLUDED
 #define GT_BUILTIN_ADAPTER_INCLUDED
 
@@ -39,12 +35,8 @@
 #if defined(GT_PASS_FORWARD) && (defined(FOG_LINEAR) || defined(FOG_EXP) || defined(FOG_EXP2))
     #define GT_FOG 1
 #endif
-#if defined(GT_PASS_SHADOWCASTER) && defined(SHADOWS_CUBE) && !defined(SHADOWS_CUBE_IN_DEPTH_TEX)
-    #define GT_SHADOW_CASTER_CUBE_DISTANCE 1
-    #define GT_SHADOW_CASTER_COLOR 1    // TerrainStages.hlsl's caster fragment returns GT_ShadowCasterColor
-#endif
-#if defined(GT_RECEIVE_SHADOWS) || defined(GT_FOG) || defined(GT_SHADOW_CASTER_CUBE_DISTANCE)
-    #define GT_VARYINGS_POSITION_WS 1   // read by shadows' mobile path, the fog and the cube distance
+#if defined(GT_RECEIVE_SHADOWS) || defined(GT_FOG)
+    #define GT_VARYINGS_POSITION_WS 1   // read by shadows' mobile path and the fog
 #endif
 // Material constants, the object matrices, normals, the editor's selection passes.
 #include "UnityAdapterCommon.hlsl"
@@ -55,7 +47,7 @@ float4 GT_WorldToClip(float3 positionWS) { return UnityWorldToClipPos(positionWS
 float4 GT_ObjectToClip(float3 positionOS)
 {
     float4 positionCS = UnityWorldToClipPos(GT_ObjectToWorld(positionOS));
-#if defined(GT_PASS_SHADOWCASTER) && !defined(GT_SHADOW_CASTER_CUBE_DISTANCE)
+#if defined(GT_PASS_SHADOWCASTER)
     // The light's depth bias (unity_LightShadowBias.x) in clip space, clamped to the near plane.
     positionCS = UnityApplyLinearShadowBias(positionCS);
 #endif
@@ -69,25 +61,12 @@ float4 GT_ObjectToClip(float3 positionOS)
 float4 GT_ObjectToShadowClip(float3 positionOS, float3 normalWS)
 {
     float3 positionWS = GT_ObjectToWorld(positionOS);
-#if defined(GT_SHADOW_CASTER_CUBE_DISTANCE)
-    return UnityWorldToClipPos(positionWS);   // no offset, no bias: the fragment's distance carries the bias
-#endif
     if (unity_LightShadowBias.z != 0.0)
     {
         float c = dot(normalWS, normalize(UnityWorldSpaceLightDir(positionWS)));
         positionWS -= normalWS * (unity_LightShadowBias.z * sqrt(saturate(1.0 - c * c)));
     }
     return UnityApplyLinearShadowBias(UnityWorldToClipPos(positionWS));
-}
-#endif
-
-#if defined(GT_SHADOW_CASTER_CUBE_DISTANCE)
-// The distance to the point light plus its depth bias (world units), over the light's range
-// (_LightPositionRange.w = 1 / range), encoded as the receiver's SampleCubeDistance decodes it.
-float4 GT_ShadowCasterColor(float3 positionWS)
-{
-    float3 fromLight = positionWS - _LightPositionRange.xyz;
-    return UnityEncodeCubeShadowDepth((length(fromLight) + unity_LightShadowBias.x) * _LightPositionRange.w);
 }
 #endif
 

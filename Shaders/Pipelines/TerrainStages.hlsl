@@ -151,11 +151,7 @@ TerrainVaryings vert_fallback(uint vertexID : SV_VertexID, uint instanceID : SV_
 #if defined(GT_PASS_SHADOWCASTER)
 float4 frag(TerrainVaryings i) : SV_Target
 {
-#if defined(GT_SHADOW_CASTER_COLOR)
-    return GT_ShadowCasterColor(i.positionWS);   // the adapter's colour shadow map (Built-in's cube distance)
-#else
-    return 0.0;   // depth only
-#endif
+    return 0.0;   // ColorMask 0: depth only
 }
 #elif defined(GT_PASS_DEPTH)
 // URP's DepthOnly convention: the depth also as colour (ColorMask R), for a colour depth target.
