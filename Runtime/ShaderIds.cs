@@ -7,11 +7,9 @@ namespace GregoryTerrain
     /// Every name the package's C# shares with its shaders, written once: material and compute
     /// properties (looked up once with Shader.PropertyToID, never a string per frame), buffers and
     /// kernels; the keywords are Core's <see cref="ShaderKeywords"/>. The TerrainParams constants are named by Core's
-    /// <see cref="TerrainParams.PropertyNames"/>, generated with the HLSL cbuffer's members from the
-    /// struct's one declaration (gt generate); everything else is named here. The HLSL declares each name once (Shaders/Terrain/TerrainInputs.hlsl, the compute
-    /// files, the adapters' object matrices). Tools~/RigTests/ShaderContractTests checks both ways
-    /// that this list and the shaders' declarations are the same names, and that no other Runtime or
-    /// Editor file spells a shader name (the keywords' names are ShaderKeywords').
+    /// <see cref="TerrainParams.PropertyNames"/> (generated); everything else is named here.
+    /// ShaderContractTests checks this list against the shaders' declarations, both ways, and that no
+    /// other Runtime or Editor file spells a shader name.
     /// </summary>
     internal static class ShaderIds
     {

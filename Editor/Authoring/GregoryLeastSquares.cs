@@ -11,22 +11,11 @@ namespace GregoryTerrain
     /// <c>(c/(W-1), r/(H-1))</c>) in the space of <see cref="GregoryNet"/>: minimises
     /// <c>sum_s w_s (S x - z)_s^2 + mu |x - x0|^2</c> by conjugate gradients on the normal equations
     /// (all weights w_s 1 unless <see cref="Reweight"/> raised some).
-    /// <para><b>Normal matrix without storing it.</b> <c>A = sum over patches of E_p^T G_p E_p</c>
-    /// with a 20 x 20 patch Gram matrix G_p that depends only on where the samples fall in the patch;
-    /// on a uniform grid that repeats, so one Gram is kept per (column class, row class), at most
-    /// <c>(P / gcd(P, W-1)) (Q / gcd(Q, H-1))</c>. A reweighted patch gets its own.</para>
-    /// <para><b>Separable passes.</b> A patch's height is the bicubic tensor product of its 16 grid
-    /// slots plus, per pair, <c>B_a(u) B_b(v) t(u, v) (first - second)</c>: 8 multiply-adds a sample
-    /// instead of 20, and 4 rational weights a sample per class.</para>
-    /// <para><b>Portable sums.</b> Every sum runs in a fixed order independent of the SIMD width
-    /// (scalar sample passes; <c>Vector&lt;double&gt;</c> lane by lane, never across lanes), so the
-    /// fit is the same to the bit on 2-, 4- or 8-wide SIMD (IEEE double without fused multiply-adds).</para>
-    /// <para><b>The ridge.</b> mu (<see cref="RidgeWeight"/> of the mean diagonal) pulls toward x0,
-    /// the C1 spline fit, only where the samples leave unknowns open; elsewhere it moves the optimum by about mu.</para>
-    /// <para><b>Preconditioner and stop.</b> Block Jacobi over each vertex's 3 x 3 and each edge's
-    /// 2 x 2 diagonal block. CG runs from x0 until the residual is <see cref="Tolerance"/> of the initial
-    /// one, or <see cref="MaxIterations"/> (few samples a patch leave some unknowns barely determined);
-    /// every CG step lowers the objective, so the result fits at least as well as its start.</para>
+    /// The matrix is never stored (one 20 x 20 Gram matrix per class of patches with the same sample
+    /// offsets; a reweighted patch gets its own), the passes are separable, block-Jacobi preconditioned
+    /// CG runs from x0, the C1 spline fit, and every sum runs in a fixed order whatever the SIMD width
+    /// (<c>Vector&lt;double&gt;</c> lane by lane, never across lanes), so the fit is the same to the
+    /// bit on any SIMD width: Tools~/docs/design-notes.md, "Fitting: how the solve runs" and "Fitting: the ridge and G1".
     /// </summary>
     internal sealed class GregoryLeastSquares
     {

@@ -33,9 +33,8 @@ uint VertexCacheFactorLimit()
 uint VertexCacheSlotsPerTile(uint limit) { return (limit + 1u) * (limit + 1u) + 4u * (limit + 1u); }
 
 // Lanes of a CacheTileFactors group (a group a tile, a lane for each of its GT_TILE_FACTOR_SAMPLES);
-// lanes of a CacheTileVertices group, and the most passes it makes over its tile's points. Why
-// 128 x 4: fewer groups than 64 x 4 for the same lanes, which costs less where most find nothing to
-// do (a camera move, many tiles) and no more elsewhere (Tools~/bench/records.md, "Choices in the shaders, measured").
+// lanes of a CacheTileVertices group, and the most passes it makes over its tile's points (why 128 x 4:
+// Tools~/bench/records.md, "Choices in the shaders, measured").
 #define GT_VERTEX_CACHE_GROUP 64u
 #define GT_VERTEX_CACHE_VERTEX_GROUP 128u
 #define GT_VERTEX_CACHE_PASSES 4u
@@ -44,9 +43,8 @@ uint VertexCacheSlotsPerTile(uint limit) { return (limit + 1u) * (limit + 1u) + 
 // border too: ClippedCell.hlsl blends a clipped tile's edge from it) and 4 edges of L + 1.
 uint VertexCacheMaxTilePoints(uint limit) { return (limit + 1u) * (limit + 1u) + 4u * (limit + 1u); }
 
-// Groups that share one tile's points (dispatch z). Why not one group a tile: the pass then lasts
-// as long as its largest tile, 4,229 points at L = 64 = 67 passes of one group while most units
-// idle (Tools~/bench/records.md, "Choices in the shaders, measured").
+// Groups that share one tile's points (dispatch z): with one group a tile the pass lasts as long as
+// its largest tile while most units idle.
 uint VertexCacheGroupsPerTile(uint limit)
 {
     uint perGroup = GT_VERTEX_CACHE_VERTEX_GROUP * GT_VERTEX_CACHE_PASSES;
@@ -83,8 +81,7 @@ float2 VertexCacheEdgeTess(uint edge, uint k, float f)
 
 // The slot (within its tile) of the vertex the tessellator put at tess. Edge vertices have a tess
 // coordinate of exactly 0 or 1 (the tessellator guarantees it: that is what keeps tiles watertight);
-// inside vertices never do. round() absorbs a fixed-point tessellator's error (lavapipe: 1.2e-4,
-// far below 1 / (2 * 64)).
+// inside vertices never do. round() absorbs a fixed-point tessellator's error (far below 1 / (2 * 64)).
 uint VertexCacheSlot(float2 tess, float4 edge, float2 inside, uint limit)
 {
     if (tess.x == 0.0) return VertexCacheEdgeSlot(0u, (uint)round(tess.y * edge.x), limit);
@@ -117,11 +114,8 @@ TileFactorSet VertexCacheIntegerFactors(TileFactorSet f)
 // The fragment's one interpolant (TerrainVaryings.normalAndHeightWeight: the Lambert-encoded world
 // normal e, |e| <= 2, and the height weight s in [0, 1]) in 32 bits: 11 bits for each of e.x and
 // e.y, in steps of 2 / 1023 with 0 exact (a flat terrain stays flat), and 10 bits for s, in steps of
-// 1 / 1023. Why: a 16-byte record instead of 32 (VertexCacheRecordPart). What it costs: at most a
-// half step on e, 0.105 degrees of normal over the upper hemisphere (Core's
-// PackedVaryingsStayWithinHalfAStep), and 1 / 2046 on s; both move a lit 8-bit colour by less than
-// half of one of its steps. Positions are never packed: shared edge vertices must stay
-// bit-identical (no cracks), and deep zoom needs their float.
+// 1 / 1023: a 16-byte record instead of 32 (the cost: internals.md, "Vertex cache"). Positions are
+// never packed: shared edge vertices must stay bit-identical (no cracks), and deep zoom needs their float.
 uint PackCachedVaryings(float3 normalAndHeightWeight)
 {
     float2 e = round(clamp(normalAndHeightWeight.xy, -2.0, 2.0) * 511.5) + 1023.0;   // 0 .. 2046
@@ -139,8 +133,7 @@ float3 UnpackCachedVaryings(uint bits)
 // (snowDepth bits, 0, 0, 0)]. The kernel computes what the fragment needs (the world normal through
 // the adapter's GT_ObjectToWorldNormal, encoded; the height weight), so the domain stage only
 // projects the position. uint4, not float4: the packed word is any bit pattern, NaNs included, and
-// integer loads and stores keep every bit. Why 16 bytes: the cached draw's cost is its reads, and
-// a 16-byte record drew faster than a 32-byte one, while reading half of a 32-byte record did not
+// integer loads and stores keep every bit. 16 bytes: the cached draw's cost is its reads
 // (Tools~/bench/records.md, "Choices in the shaders, measured"). The patch index is not kept
 // (GT_DEBUG_PATCH_ID reads 0).
 uint4 VertexCacheRecordPart(TerrainVertexAttributes a, uint part)

@@ -11,10 +11,9 @@
 //                       for the tiles whose factors or range changed since their last evaluation
 //
 // A frame dispatches both, in that order, then draws; the hull stage reads the factors and the
-// domain stage reads the records (VertexSource.Cache.hlsl). Why: the per-vertex work (FindPatch, the 20
-// control points, the rational Gregory evaluation, the noise octaves) runs on every compute unit
-// instead of the graphics stages (on NVIDIA's H100/H200 only a few units run those at all), and
-// each vertex of the tile is evaluated once, not once per triangle fan the tessellator emits.
+// domain stage reads the records (VertexSource.Cache.hlsl). Why: the per-vertex work runs on every
+// compute unit instead of the few that run the graphics stages, and once per vertex, not once per
+// triangle fan the tessellator emits.
 #ifndef GT_VERTEX_CACHE_KERNELS_INCLUDED
 #define GT_VERTEX_CACHE_KERNELS_INCLUDED
 
@@ -130,10 +129,9 @@ float4 CachedTileFactorSample(uint tile, uint s, bool cellMoved)
 //     cell holds; then its seven pieces (TileFactorPiece's arithmetic on the shared samples) one a
 //     lane; then lane 0 assembles, keeps the cell's factors and writes them rounded. Anchored, the
 //     slots hold the whole cell and the hull clips it (ClippedCell.hlsl).
-// Why so wide: the factors are a chain of surface evaluations, and the chain's length is the pass's.
-// One lane a tile: a chain of ~50 evaluations; one lane a piece: ~11; one sample a lane: 1, the
-// shortest pass (Tools~/bench/records.md, "Choices in the shaders, measured"). Why the held way: that one
-// evaluation is still most of a pan's pre-pass (Tools~/bench/records.md, "Choices in the shaders, measured").
+// Why so wide: the factors are a chain of surface evaluations, and the chain's length is the pass's
+// (one sample a lane: a chain of 1). Why the held way: that one evaluation is still most of a pan's
+// pre-pass (Tools~/bench/records.md, "Choices in the shaders, measured").
 // Every lane of the group reaches both barriers: whether the cell is held is read from the records (a
 // UAV), which FXC takes for non-uniform, and it refuses a barrier after a return on such a value
 // (error X3663); so the held way guards the work, not the barriers.

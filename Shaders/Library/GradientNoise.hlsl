@@ -81,9 +81,7 @@ float GradientNoiseCorners(float2 g00, float2 g10, float2 g01, float2 g11, float
 // The lattice wrapped modulo 256: the noise repeats every 256 cells. Each cell's polynomial comes
 // from two float4 rows of a table (32 bytes, one memory sector) instead of six hashes and four
 // gradient reads; the includer defines GradientNoiseTableRows(uint firstRow, out float4 r0,
-// out float4 r1), reading its buffer. Scaled by GT_NOISE_SCALE: r0 = (g00, A), r1 = (B, C) with
-// A = g10 - g00, B = g01 - g00, C = (g00 - g10) - (g01 - g11), so that with h = f - 1
-// k1 = A.(h.x, f.y) - g00.x, k2 = B.(f.x, h.y) - g00.y, k3 = C.h - (B.x + A.y).
+// out float4 r1), reading its buffer. The rows' layout: C# GradientNoiseTable.
 
 uint GradientNoiseTableFirstRow(int2 cell)
 {

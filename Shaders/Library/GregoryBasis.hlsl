@@ -2,14 +2,8 @@
 #define GT_GREGORY_BASIS_INCLUDED
 
 // The 20 Gregory basis weights and their u- and v-derivatives; mirrors GregoryBasis.cs (float
-// overload) line for line. See that file for the derivation; in short:
-//  - interior pair (i, j) blends P_ij0 with t = a / (a + b) and P_ij1 with s = b / (a + b), where
-//    a = u or 1 - u, b = v or 1 - v are the distances from the pair's corner; a + b == 0 only at that
-//    corner, where the pair's Bernstein weight is exactly 0, so t = s = 0.5 there;
-//  - derivatives by the quotient rule with the factor a b of the Bernstein weight cancelled
-//    against (a + b)^2: W dt/du = sigma_u K (a s) s, W dt/dv = -sigma_v K (b t) t, K = 9 R_u R_v.
-//    No small divisor, finite and continuous down to subnormal distances from the corners.
-//  - u, v are clamped to [0, 1] (the blend has poles outside).
+// overload) line for line. The derivation (no small divisors, t = 0.5 at a pair's own corner, u and v
+// clamped to [0, 1]): that file's summary.
 
 #include "GregoryPatch.hlsl"
 

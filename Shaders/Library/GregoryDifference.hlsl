@@ -3,12 +3,8 @@
 
 // S(u0 + du, v0 + dv) - S(u0, v0) of one Gregory patch from the reference (u0, v0) and the step
 // (du, dv) directly, never as the difference of two absolute evaluations; mirrors
-// GregoryDifference.cs (float overload), see there and Documentation~/precision.md. Every term is
-// proportional to the step, so the result keeps float's relative precision of the step itself.
-//  - Bernstein differences are exact Taylor polynomials: du (B' + du (B''/2 + du B'''/6));
-//  - products: A B - A0 B0 = dA B + A0 dB;
-//  - pair ratios t = a / (a + b): t - t0 = (da b0 - a0 db) / ((a + b)(a0 + b0)), or plainly t - t0
-//    where a denominator is 0 (a pair's own corner, where its weight is 0).
+// GregoryDifference.cs (float overload), whose summary gives the terms. Every term is proportional
+// to the step, so the result keeps float's relative precision of the step itself.
 
 #include "GregoryBasis.hlsl"
 

@@ -33,15 +33,11 @@ float3 GregoryBaseCorner(float3 cp[20], float u, float v)
 }
 
 // The patch as a bicubic tensor product once each interior pair is blended into one point: per row
-// j (slots 4 i + j, i along u) sums over i, then one over j. The same surface as the 20 weights of
-// GregoryBasisWeights (which stay the reference). Everything is summed from the differences to one
-// corner point, the base (the derivative weights sum to 0, the position's to 1): on a patch 1e-6
-// wide at coordinates near 0.5 the points' terms are ~1e6 times the derivatives and float kept only
-// ~5% of them (normals off by 0.04); the differences are exact there (Sterbenz). The position is
-// base + its sum, so one set of row sums serves the position and dP/dv: a second set over the points
-// themselves made the domain stage measurably slower (Tools~/bench/records.md, "Where the domain stage's
-// time goes"). The base is the corner of uv's quadrant, so the patch passes through
-// each corner exactly: there the sum is 1 * (base - base) = 0 and the other weights exactly 0.
+// j (slots 4 i + j, i along u) sums over i, then one over j; the same surface as GregoryBasisWeights.
+// Summed from the differences to the base corner (the derivative weights sum to 0, the position's
+// to 1): on a tiny patch far from 0 the points' terms would swamp the derivatives in float, while
+// the differences are exact (Sterbenz). The position is base + its sum (one set of row sums for the
+// position and dP/dv), exact at each corner, the base being the corner of uv's quadrant.
 void GregoryEvaluate(float3 cp[20], float2 uv, out float3 position, out float3 dPdu, out float3 dPdv)
 {
     float u = saturate(uv.x);
@@ -75,10 +71,8 @@ void GregoryEvaluate(float3 cp[20], float2 uv, out float3 position, out float3 d
     position += corner;
 }
 
-// Unit normal of a surface with these partial derivatives: cross(dPdu, dPdv) / length, zero where
-// they are parallel (a degenerate patch) instead of NaN. Takes derivatives, so a caller that has
-// added a detail term (the noise gradient) gets the normal of the sum. Mirrors
-// GregoryEval.NormalFromDerivatives.
+// Unit normal cross(dPdu, dPdv) / length, zero (not NaN) where they are parallel. Takes derivatives,
+// so a noise gradient added first counts. Mirrors GregoryEval.NormalFromDerivatives.
 float3 GregoryNormalFromDerivatives(float3 dPdu, float3 dPdv)
 {
     float3 n = cross(dPdu, dPdv);

@@ -55,8 +55,7 @@ float OctaveNoise(TerrainPoint p, float4 noise, float octaveCount, out float2 gr
 {
     OctaveSum sum = OctaveSumStart(noise);
     // Without a hi part (no range origin: uniform over a frame) the lattice split needs no
-    // TwoProduct (GradientNoiseAtLocal): the same values bit for bit, measurably cheaper
-    // (Tools~/bench/records.md, "Where the domain stage's time goes"). Core's OctaveNoise.Evaluate mirrors it.
+    // TwoProduct (GradientNoiseAtLocal): the same values bit for bit, cheaper. Core mirrors it.
     [branch] if (all(p.originHi == 0.0))
     {
         [unroll] for (uint k = 0u; k < GT_MAX_OCTAVES; ++k)
@@ -69,10 +68,8 @@ float OctaveNoise(TerrainPoint p, float4 noise, float octaveCount, out float2 gr
         }
         return OctaveSumResult(sum, noise, gradient);
     }
-    // [unroll], not [loop]: unrolled, each octave's stream offset is a constant (two hashes of k
-    // per octave folded away) and the early-out is a uniform branch. Same arithmetic in the same
-    // order, so the C# mirror is unchanged. It made the noise measurably cheaper (Tools~/bench/records.md,
-    // "Choices in the shaders, measured").
+    // [unroll], not [loop]: each octave's stream offset folds to a constant and the early-out is a
+    // uniform branch; the same arithmetic in the same order as the C# mirror.
     [unroll] for (uint k = 0u; k < GT_MAX_OCTAVES; ++k)
     {
         float fade = saturate(octaveCount - float(k));
@@ -85,9 +82,7 @@ float OctaveNoise(TerrainPoint p, float4 noise, float octaveCount, out float2 gr
 }
 
 // One octave of OctaveNoiseRelative: K(f q + offset) - K(f O + offset) from the precise q - O,
-// gradient at q (lattice units). O's cell and fraction are the same for every vertex; q in O's
-// cell: one precise cell difference; in a neighbouring cell: through r1 = O clamped into q's cell
-// (the noise is C2 across cell lines); farther: two absolute values (see the C#).
+// gradient at q (lattice units); the three cases: the C#'s OctaveNoise.Relative.
 float OctaveNoiseDifference(TerrainPoint q, TerrainPoint origin, float2 qMinusOrigin, float frequency, float2 offset, out float2 gradient)
 {
     int2 c0;
@@ -138,13 +133,10 @@ float OctaveCount(float rangeWidth, float verticesAcross, float4 noise, float ma
     return clamp(k, 0.0, maxOctaves);
 }
 
-// The continuous rule of the levels of detail (internals.md, "The continuous octave rule"): a
-// function of the vertex and the camera, not of a range's width. Where one object unit covers
-// pixelsPerUnit pixels (PixelsPerUnit at the surface point, no noise) and a segment may be
-// segmentPixels long on screen, the vertex spacing is segmentPixels / pixelsPerUnit: OctaveCount of
-// that spacing and one vertex. All octaves at an infinite scale (at or behind the eye plane), none
-// at 0; tested before dividing, so no inf or NaN reaches log2. Mirrors Core
-// TerrainInputs.NoiseOctaveCountAt (float) and OctaveNoise.OctaveCountAtPixelScale (double).
+// The continuous rule of the levels of detail: OctaveCount of the vertex spacing segmentPixels /
+// pixelsPerUnit and one vertex. Infinite and zero scales are tested before dividing, so no inf or
+// NaN reaches log2. Mirrors Core TerrainInputs.NoiseOctaveCountAt (float) and
+// OctaveNoise.OctaveCountAtPixelScale (double).
 float OctaveCountAtPixelScale(float pixelsPerUnit, float segmentPixels, float4 noise, float maxOctaves)
 {
     if (!(pixelsPerUnit < asfloat(0x7F800000u))) return maxOctaves;

@@ -2,10 +2,8 @@
 #define GT_RELATIVE_SURFACE_INCLUDED
 
 // The deep-zoom vertex position S(q) - S(O), O the range origin, from precise local differences;
-// mirrors RelativeSurface.cs (float path), see there and Documentation~/precision.md. Active when
-// _RangeOrigin is not zero (the renderer sets an origin only for narrow ranges and then adds S(O),
-// computed in double, in the object-to-world transform). Depends only on q and per-frame
-// constants, so shared tile edges stay bit-identical.
+// mirrors RelativeSurface.cs (float path), whose summary says how. Active when _RangeOrigin is not
+// zero; the renderer then adds S(O), in double, in the object-to-world transform.
 // Include TerrainInputs.hlsl (the buffers) before this file.
 
 #include "RangeMapping.hlsl"

@@ -6,9 +6,8 @@
 // Tags { "LightMode" = "ForwardBase" } so Unity fills the main directional light.
 // Compiled against the real 2022.3 CGIncludes off Unity by the rig (Tools~/rig/shaderlab.py).
 //
-// Object matrix: Graphics.RenderPrimitives gives the shader no object matrix (unity_ObjectToWorld
-// is not the renderer's Transform, so UnityObjectToClipPos and UnityObjectToWorldNormal cannot be
-// used), so GregoryTerrainRenderer sets _GtObjectToWorld / _GtWorldToObject.
+// Object matrix: _GtObjectToWorld / _GtWorldToObject (UnityAdapterCommon.hlsl says why), so never
+// UnityObjectToClipPos or UnityObjectToWorldNormal.
 // Shadows: the ShadowCaster pass declares multi_compile_shadowcaster and the caster does per variant what
 // UnityCG.cginc's TRANSFER_SHADOW_CASTER_NOPOS / SHADOW_CASTER_FRAGMENT do (UnityCG.cginc:962-982):
 //   SHADOWS_DEPTH (directional, spot) and SHADOWS_CUBE (point) get the normal offset, then

@@ -9,9 +9,8 @@
 //
 // HDRP renders camera-relative: its "world space" has the camera at the origin, and so does ours
 // here (GT_CameraPositionWS is the camera in that space, i.e. 0 when camera-relative is on).
-// Object matrix: Graphics.RenderPrimitives gives the shader no object matrix, so
-// GregoryTerrainRenderer sets _GtObjectToWorld / _GtWorldToObject (absolute world space, as
-// Transform.localToWorldMatrix is); GT_ObjectToWorld makes the result camera-relative.
+// Object matrix: _GtObjectToWorld (UnityAdapterCommon.hlsl) is absolute world space;
+// GT_ObjectToWorld makes the result camera-relative.
 // Shadow bias: HDRP applies it as rasterizer depth bias from the light's shadow settings, so the
 // ShadowCaster pass needs nothing here.
 #ifndef GT_HDRP_ADAPTER_INCLUDED

@@ -7,10 +7,8 @@
 // (_ShadowBias, ApplyShadowBias, TransformWorldToShadowCoord, the _MAIN_LIGHT_SHADOWS* and _SHADOWS_SOFT* keywords).
 // Compiled against URP 14's real ShaderLibrary off Unity by the rig (Tools~/rig/shaderlab.py).
 //
-// Object matrix: Graphics.RenderPrimitives gives the shader no object matrix (UNITY_MATRIX_M /
-// unity_ObjectToWorld are not the renderer's Transform), so GregoryTerrainRenderer sets
-// _GtObjectToWorld and _GtWorldToObject and every object-space transform here uses them
-// (internals.md, "Unity side").
+// Object matrix: _GtObjectToWorld / _GtWorldToObject (UnityAdapterCommon.hlsl says why), never
+// UNITY_MATRIX_M / unity_ObjectToWorld.
 #ifndef GT_URP_ADAPTER_INCLUDED
 #define GT_URP_ADAPTER_INCLUDED
 

@@ -5,8 +5,9 @@
 // material of this shader. Registers: Unity binds by name, so none are written.
 //
 // Object matrix: Graphics.RenderPrimitives gives the shader no object matrix of the renderer's
-// Transform, so GregoryTerrainRenderer sets these (MaterialPropertyBlock), only when its Transform
-// changes (deep-zoom offset included; C# names: ShaderIds.ObjectToWorld / WorldToObject).
+// Transform (the pipelines' unity_ObjectToWorld / UNITY_MATRIX_M are not it), so
+// GregoryTerrainRenderer sets these (MaterialPropertyBlock, absolute world space), only when its
+// Transform changes (deep-zoom offset included; C# names: ShaderIds.ObjectToWorld / WorldToObject).
 #ifndef GT_UNITY_ADAPTER_COMMON_INCLUDED
 #define GT_UNITY_ADAPTER_COMMON_INCLUDED
 

@@ -3,14 +3,11 @@
 // function takes what it needs as parameters; the levels' vertex source (VertexSource.Levels.hlsl)
 // reads _Ranges and passes them in.
 //
-// One draw of L levels of M x M tiles laid on each level's range: draw patch p is tile p mod M^2 of
-// level p / M^2, finest first. A level's range is snapped to the coarser level's cells, so the finer
-// level covers M/2 x M/2 coarse tiles at an integer offset (FinerOffsetCells): the coarse tiles
-// inside are culled (factor 0), and the seam between the two is decided on integers, not on float
-// lines. Seam edges take integer factors 2g (coarse) and g (each fine half), with integer
-// partitioning, and their vertices are formed on both sides as the coarse tile's point at tess
-// n / (2g) along the edge (SeamCoarsePoint): the same inputs to RangeToTerrainPoint, so the same q
-// and, with the continuous octave rule, the same vertex bit for bit (no T-junction, no crack).
+// Draw patch p is tile p mod M^2 of level p / M^2, finest first; the finer level covers M/2 x M/2
+// coarse tiles at an integer offset (FinerOffsetCells), which are culled, so the seam is decided on
+// integers, not on float lines. Seam vertices are formed on both sides as the coarse tile's point at
+// tess n / (2g) (SeamCoarsePoint): the same q, the same vertex bit for bit (internals.md, "Seams
+// without T-junctions").
 #ifndef GT_LOD_TILES_INCLUDED
 #define GT_LOD_TILES_INCLUDED
 

@@ -37,9 +37,7 @@ struct TerrainVaryings
     float4 positionCS : SV_Position;
     // xy: the world normal, Lambert-encoded (NormalEncoding.hlsl); z: the height colour's weight s
     // of eq. 14 (GT_HEIGHT_COLOR, else 0), computed per vertex. Read them with VaryingsNormalWS and
-    // VaryingsHeightWeight. One interpolant of three numbers: a second interpolant, or a fourth
-    // number, made the tessellated draw measurably slower (Tools~/bench/records.md, "Choices in the shaders,
-    // measured"; internals.md, "Varyings").
+    // VaryingsHeightWeight. One interpolant of three numbers, for speed (internals.md, "Varyings").
     float3 normalAndHeightWeight : TEXCOORD0;
 #if defined(GT_VARYINGS_POSITION_WS)
     float3 positionWS : TEXCOORD6;   // per-pixel shadow lookup and fog (adapter: GT_VARYINGS_POSITION_WS)
@@ -72,10 +70,9 @@ struct TerrainSurfacePoint
 // maps normals too.
 float3 TerrainToObject(float3 v) { return v.xzy; }
 
-// The tile path after the global point q is formed: FindPatchAt (on the hi/lo lines while a range
-// origin is set), PatchLocalUV, GregoryEval of the relative points plus the reference point (Core's
-// TerrainVertex.EvaluateSurfaceAt). The precise patch matters at deep zoom, where the normal of a
-// vertex beside a line otherwise came from the neighbour.
+// The tile path after the global point q is formed (Core's TerrainVertex.EvaluateSurfaceAt):
+// FindPatchAt on the hi/lo lines while a range origin is set, so at deep zoom a vertex beside a line
+// takes its own patch's normal.
 TerrainSurfacePoint EvaluateSurfaceAt(TerrainPoint q)
 {
     TerrainSurfacePoint s;
@@ -161,14 +158,10 @@ float SurfacePixelScale(float3 surfaceOutput)
 #endif
 
 #if defined(GT_NOISE)
-// The octaves a vertex draws, from its surface position before noise (OutputSurfacePosition). The
-// single-range rule (one count a frame, from the layout's width) unless NoiseSegmentPixels() > 0
-// (the levels of detail): then the continuous rule at the vertex's pixel scale, a function of q and
-// the camera only, so both sides of a level seam, which form the same q, agree. Paper mode keeps the
-// single-range rule. Mirrors Core TerrainVertex.VertexOctaveCount.
-// The renderer sends NoiseSegmentPixels() only with its levels on, which draw with GT_LOD, so the
-// continuous rule is compiled with the origin's code (GT_RANGE_ORIGIN_CODE, which GT_LOD sets):
-// elsewhere the untaken branch kept registers (Tools~/bench/records.md, "Choices in the shaders, measured").
+// The octaves a vertex draws, from its surface position before noise. Mirrors Core
+// TerrainVertex.VertexOctaveCount (the two rules). Paper mode keeps the single-range rule.
+// NoiseSegmentPixels() is sent only with the levels (GT_LOD), so the continuous rule is compiled with
+// the origin's code only: elsewhere its untaken branch kept registers.
 float VertexOctaveCountAt(TileLayout l, float3 surfaceOutput)
 {
 #if !defined(GT_EXTEND_DRAW_PATCHES) && defined(GT_RANGE_ORIGIN_CODE)
@@ -256,10 +249,9 @@ TerrainVertexAttributes FinishTerrainVertex(TileLayout l, TerrainSurfacePoint s)
 #endif
 #if !defined(GT_LOD) && !defined(GT_EXTEND_DRAW_PATCHES) && defined(GT_RANGE_ORIGIN_CODE)
     // Deep zoom (a range origin set): S(q) - S(O) and p(q) - p(O) from precise differences, which
-    // the renderer adds back (OutputSurfacePosition's rule). Compiled only with the origin's
-    // keywords (GT_RANGE_ORIGIN_CODE, TerrainInputs.hlsl): even untaken, this branch cost the plain
-    // path measurably (Tools~/bench/records.md, "Where the domain stage's time goes"). One branch for the
-    // surface and the noise: two cost more still.
+    // the renderer adds back. Compiled only with GT_RANGE_ORIGIN_CODE, in one branch for the surface
+    // and the noise: even untaken, branches slow the plain path (Tools~/bench/records.md, "Where the
+    // domain stage's time goes").
     [branch] if (RelativeSurfaceIsActive(l.origin))
     {
         position = RelativeSurfaceFromOrigin(s.q, l.origin);
@@ -351,8 +343,7 @@ TerrainVertexAttributes EvaluateCellTerrainVertex(TileLayout l, uint slot, float
 }
 
 // s = saturate(l + z / gamma) of eq. 14 for the absolute height z and colour noise l, 0 without
-// GT_HEIGHT_COLOR. Per vertex: s interpolated differs from s per fragment only inside a triangle
-// that crosses s = 0 or s = 1 (the clamp), by less than that triangle's change of s.
+// GT_HEIGHT_COLOR. Per vertex: interpolated, it differs from per fragment only where the clamp acts.
 float TerrainHeightWeight(float absoluteHeight, float colorNoise)
 {
 #if defined(GT_HEIGHT_COLOR)

@@ -34,10 +34,7 @@ float EdgeTessFactor(float4 clip0, float4 clip1, float2 screenSize, float target
 
 // --- Adaptive: target screen-space error (TessellationPolicy.PixelsPerUnit ... ErrorTessFactor) ---
 
-// Largest pixels one object unit covers at a point, in any direction: the largest singular value
-// of the Jacobian of clip -> pixels. clip: the point's clip position; clipX/Y/Z: the point moved by
-// one object unit along x, y, z (a linear map, so the differences are the matrix's columns).
-// +inf at or behind the eye plane.
+// Mirrors TessellationPolicy.PixelsPerUnit; clipX/Y/Z: the point moved one object unit along x, y, z.
 float PixelsPerUnit(float4 clip, float4 clipX, float4 clipY, float4 clipZ, float2 screenSize)
 {
     if (!(clip.w > 0.0)) return asfloat(0x7F800000u);
@@ -53,10 +50,8 @@ float PixelsPerUnit(float4 clip, float4 clipX, float4 clipY, float4 clipZ, float
     return sqrt(0.5 * (a + c) + sqrt(hd * hd + b * b));
 }
 
-// Chord error (pixels) of an edge drawn as one segment, from its points at edge parameter 0, 1/4,
-// 1/2, 3/4, 1 and the pixel scale at the three inner ones: the middle's deviation from the chord,
-// and four times each half's (the sagitta scales with the span squared); the largest also sees an
-// S-shaped edge. Same value whichever end comes first (shared edges agree: no cracks).
+// Chord error (pixels) of an edge drawn as one segment, from its points at 0, 1/4, 1/2, 3/4, 1.
+// Mirrors TessellationPolicy.EdgeSagittaPixels.
 float EdgeSagittaPixels(float3 p0, float3 pQuarter, float3 pMid, float3 pThreeQuarter, float3 p1,
                         float kQuarter, float kMid, float kThreeQuarter)
 {
@@ -70,11 +65,8 @@ float EdgeSagittaPixels(float3 p0, float3 pQuarter, float3 pMid, float3 pThreeQu
 // evaluated at the GT_EDGE_SEGMENTS - 1 inner points (the corners are known). A power of two.
 #define GT_EDGE_SEGMENTS 8
 
-// The general form of EdgeSagittaPixels over GT_EDGE_SEGMENTS + 1 points p[i] at edge parameter
-// i / n and the pixel scale k[i] at each (the ends' k are not used): at every level of the binary
-// hierarchy, point i's deviation from the chord of its neighbours at distance d measures the bend
-// over a span 2d/n, which counts (n / 2d)^2 times (the sagitta scales with the span squared); the
-// largest. With n = 4 this is EdgeSagittaPixels. Mirrors TessellationPolicy.EdgeSagittaPixels(points, scales).
+// EdgeSagittaPixels over GT_EDGE_SEGMENTS + 1 points p[i] at i / n with pixel scales k[i].
+// Mirrors TessellationPolicy.EdgeSagittaPixels(points, scales).
 float SampledEdgeSagittaPixels(float3 p[GT_EDGE_SEGMENTS + 1], float k[GT_EDGE_SEGMENTS + 1])
 {
     float s = 0.0;
@@ -90,8 +82,7 @@ float SampledEdgeSagittaPixels(float3 p[GT_EDGE_SEGMENTS + 1], float k[GT_EDGE_S
     return s;
 }
 
-// Largest |d^2 GradientNoise / dx^2| per unit lattice, found on a dense grid (11.26), rounded up
-// (TessellationPolicy.GradientNoiseCurvature).
+// Bound on |d^2 GradientNoise / dx^2| per unit lattice (TessellationPolicy.GradientNoiseCurvature).
 #define GT_GRADIENT_NOISE_CURVATURE 12.0
 
 // Bound on OctaveNoise's second derivative along x or y (terrain units per unit^2) for the octaves
@@ -111,14 +102,11 @@ float NoiseCurvatureBound(float4 noise, float octaveCount)
     return abs(noise.x) * GT_GRADIENT_NOISE_CURVATURE * sum;
 }
 
-// Largest |grad GradientNoise| per unit lattice, found on a dense grid (2.81), rounded up
-// (TessellationPolicy.GradientNoiseSlope).
+// Bound on |grad GradientNoise| per unit lattice (TessellationPolicy.GradientNoiseSlope).
 #define GT_GRADIENT_NOISE_SLOPE 3.0
 
-// Bound on |p(q) - p(O)| (terrain units) for q within `distance` (terrain units) of O, the noise a
-// vertex adds while a range origin is set: per octave the smaller of twice its amplitude and its slope
-// bound times the distance, over `octaves` octaves (noise = (amplitude, frequency, alpha, beta)).
-// Mirrors TessellationPolicy.NoiseDifferenceBound.
+// Bound on |p(q) - p(O)| (terrain units) for q within `distance` (terrain units) of the range
+// origin O. Mirrors TessellationPolicy.NoiseDifferenceBound.
 float NoiseDifferenceBound(float4 noise, float octaves, float distance)
 {
     float a = abs(noise.x), f = noise.y, invBeta = 1.0 / noise.w, sum = 0.0;
@@ -140,10 +128,8 @@ float NoiseSagittaPixels(float noiseCurvature, float edgeLength, float maxPixels
     return noiseCurvature * (edgeLength * edgeLength) * 0.125 * maxPixelsPerUnit;
 }
 
-// F segments leave sagitta / F^2 each; a cell's error at its centre is the sum of its two
-// directions' (quadratic surface), so each edge aims at half the target: F = sqrt(2 sagitta /
-// target), clamped to [1, maxFactor]; a non-finite sagitta (edge crossing the eye plane) gives
-// maxFactor. fractional_odd's longest segment is 1/F of the edge, so the bound holds for fractional F.
+// F = clamp(sqrt(2 sagitta / target), 1, maxFactor): half the target per direction of a cell
+// (TessellationPolicy.ErrorTessFactor).
 float ErrorTessFactor(float sagittaPixels, float targetPixelError, float maxFactor)
 {
     if (isinf(sagittaPixels) || isnan(sagittaPixels)) return maxFactor;
@@ -160,8 +146,7 @@ float DiagonalSagittaPixels(float3 p00, float3 p10, float3 p01, float3 p11, floa
     return max(d0, d1) * kCentre;
 }
 
-// A diagonal's error already holds both directions' bending: F = sqrt(s / target). Inside factors
-// match no neighbour, so they may look inside the tile.
+// A diagonal's error already holds both directions' bending: F = sqrt(s / target).
 float InsideErrorTessFactor(float diagonalSagittaPixels, float targetPixelError, float maxFactor)
 {
     if (isinf(diagonalSagittaPixels) || isnan(diagonalSagittaPixels)) return maxFactor;
@@ -169,9 +154,7 @@ float InsideErrorTessFactor(float diagonalSagittaPixels, float targetPixelError,
 }
 
 // Inside factors of a quad from its edge factors (e0: u = 0, e1: v = 0, e2: u = 1, e3: v = 1): each
-// follows the two edges running the same way, x (inside[0], along u) = max(e1, e3), y (inside[1],
-// along v) = max(e0, e2). The max of all four would over-tessellate long thin tiles in their short
-// direction.
+// the max of the two edges running the same way. Mirrors TessellationPolicy.InsideFactors.
 float2 TessInsideFactors(float e0, float e1, float e2, float e3)
 {
     return float2(max(e1, e3), max(e0, e2));

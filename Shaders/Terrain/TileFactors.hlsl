@@ -1,8 +1,6 @@
-// Per-tile tessellation factors: frustum culling and the adaptive factors from each edge's chord
-// error in pixels (Documentation~/performance.md, "The knob"). Used by the hull stage's
-// hull_const and by the vertex cache's CacheTileFactors kernel (VertexCacheKernels.hlsl), so both
-// decide identically. Mirrors Runtime/Core/Terrain/TileFactors.cs name for name (the pieces' arithmetic:
-// TessellationPolicy.cs). Needs the adapter's
+// Per-tile tessellation factors: frustum culling and the adaptive factors, for hull_const and the
+// vertex cache's CacheTileFactors kernel alike. Mirrors Runtime/Core/Terrain/TileFactors.cs name for
+// name (the arithmetic: TessellationPolicy.cs; the rule: internals.md, "Shader stages and compiled files"). Needs the adapter's
 // GT_ObjectToClip (the culling: the pass's view), GT_TessObjectToClip / GT_TessScreenSize (the pixel
 // scales: the camera's, also in a shadow pass) and TerrainVertex.hlsl's EvaluateCellSurface.
 //
@@ -60,10 +58,9 @@ float TileNoiseMargin(TileLayout l, uint slot)
 #endif
 }
 
-// True when the cell's box lies outside the view (so does the tile's part of it). The box is the corners' bounds, grown in height
-// by the noise margin (TileNoiseMargin) plus the corners' own height spread: a cheap allowance for the
-// surface rising between corners, which the corners alone cannot see. (Takes the corners as an
-// array, not the InputPatch: not every HLSL compiler accepts an InputPatch as a helper argument.)
+// True when the cell's box (corners' bounds grown in height by the noise margin plus their own
+// height spread) lies outside the view. Corners as an array: not every HLSL compiler accepts an
+// InputPatch as a helper argument.
 bool TileCulled(float3 cornerOS[4], float noiseMargin)
 {
     float3 lo = cornerOS[0], hi = lo;
@@ -233,14 +230,9 @@ float LineOctaveCount(TileLayout l, float maxPixelsPerUnit)
 }
 #endif
 
-// The knob is the target screen-space error in pixels (_Tess.z): each line gets the segment count
-// whose chord error is that many pixels (TessellationPolicy.ErrorTessFactor), from its points p
-// and their pixel scales k (TileLineSample): the chord error of the surface (no noise) plus the
-// bound of the noise the frame draws. An edge's factor depends only on that edge (end points and
-// seven points of the surface on it), taken lower tess coordinate first by both tiles that share
-// it, from the same global points bit for bit (RangeCoordinate adds the integer tile index first)
-// and the same edge length (its row's or column's):
-// their factors agree (no cracks).
+// A line's factor from its points p and pixel scales k: the surface's chord error plus the bound of
+// the noise the frame draws. Both tiles sharing an edge take it lower tess coordinate first from the
+// same global points and edge length, bit for bit: no cracks.
 float LineErrorTessFactor(TileLayout l, uint patch, uint piece, float3 p[GT_EDGE_SEGMENTS + 1], float k[GT_EDGE_SEGMENTS + 1])
 {
     float kMax = 0.0;
@@ -267,10 +259,8 @@ float CentreErrorTessFactor(float3 cornerOS[4], float4 centre)
                                  TargetPixelError(), MaxTessFactor());
 }
 
-// One piece, its samples evaluated in turn: the hull stage's path (the kernel spreads the same
-// samples over its lanes). Not through TileFactorSamplePosition, whose branches on the sample number
-// slow the hull stage down (Tools~/bench/records.md, "Choices in the shaders, measured"); the samples are the
-// same functions.
+// One piece, its samples evaluated in turn: the hull stage's path. Not through
+// TileFactorSamplePosition (Tools~/bench/records.md, "Choices in the shaders, measured").
 float TileFactorPiece(TileLayout l, uint patch, uint piece, float3 cornerOS[4])
 {
     if (piece == 6u) return CentreErrorTessFactor(cornerOS, TileCentreSample(l, patch));
@@ -304,9 +294,8 @@ TileFactorSet TileFactorsOfPieces(float piece[GT_TILE_FACTOR_PIECES])
 }
 
 // The factors of a tile that keeps the part `kept` (TileKeptFraction) of its cell along x and y:
-// each line's factor scaled by the part of it the tile keeps, at least 1. Its segments are then no
-// longer than the cell's, so the cell's error bound holds (a part of a line bends no more than the
-// line). Edges u = 0, 1 (edge.x, .z) run along v (y), edges v = 0, 1 along u (x); inside.x
+// each line's factor scaled by the part kept, at least 1, so its segments are no longer than the
+// cell's. Edges u = 0, 1 (edge.x, .z) run along v (y), edges v = 0, 1 along u (x); inside.x
 // subdivides along u. Tiles sharing an edge share the cell line and the row or column that scale
 // it: crack-free. Whole (kept = 1): the cell's factors bit for bit. Culled stays culled.
 TileFactorSet TileFactorsOfCell(TileFactorSet cell, float2 kept)

@@ -2,13 +2,9 @@
 // Runtime/Core/Terrain/TileLattice.cs, same names, step for step.
 //
 // _TileLattice = 0: the M x M tiles lie on the range (the paper's layout). Else it is the range the
-// tiles were anchored at: its M x M cells, repeated beyond it, form a lattice fixed in terrain space;
-// the current range (no wider) meets M + 1 cells per axis, and tile i is cell k0 + i clipped to the
-// range. A pan moves only the clipped cells, so whole cells keep their points bit for bit (no
-// swimming; the vertex cache keeps their vertices). Cell k sits in slot k mod (M + 1) per axis.
-// A clipped tile's factors come from its whole cell's (TileFactors.hlsl, TileFactorsOfCell; with
-// the vertex cache ClippedCell.hlsl, which also draws it from the whole cell's cached vertices), so
-// a pan with the camera held samples nothing, and one that keeps the first cells dispatches nothing.
+// tiles were anchored at, whose cells form a lattice fixed in terrain space; tile i is cell k0 + i
+// clipped to the range, so a pan moves only the clipped cells (no swimming). Cell k sits in slot
+// k mod (M + 1) per axis. A clipped tile's factors come from its whole cell's (TileFactorsOfCell).
 //
 // Every function takes the layout it works on (TileLayout) as a parameter and reads no global: the
 // stage entry points pass the frame's (FrameTileLayout, TerrainInputs.hlsl), and a level of detail

@@ -13,7 +13,7 @@ namespace GregoryTerrain.Tests
         static PatchGrid _grid;
         static PatchGrid Grid => _grid ??= HardCaseGrids.Fitted();
 
-        // The renderer's keyword rule (GT_RANGE_ORIGIN, issue 26): on exactly while the origin it sends
+        // The renderer's keyword rule (GT_RANGE_ORIGIN): on exactly while the origin it sends
         // is set, so the stages that compile no origin code never see one; under the levels or the vertex
         // cache off (GT_LOD and GT_VERTEX_CACHE compile that code; the three are one keyword set, so a
         // cache or levels variant with the origin's keyword would be compiled and never drawn).

@@ -183,7 +183,7 @@ namespace GregoryTerrain.Tests
             Assert.That(ex.Message, Does.Contain("patch (1, 0) slot 17").And.Contain("1E+39"));
 
             var h = PatchGrid.CreateFlat(3, 1, new[] { 0.0, 0.5, 0.5 + 1e-12, 1.0 }, new[] { 0.0, 1.0 });
-            // One rule for every entry point: Validate refuses what the GPU cannot hold (issue 25).
+            // One rule for every entry point: Validate refuses what the GPU cannot hold.
             ex = Assert.Throws<ArgumentException>(h.Validate);
             Assert.That(ex.Message, Does.Contain("xLines[2]").And.Contain("same float"));
             ex = Assert.Throws<ArgumentException>(() => GpuLayout.PackGridLines(h));

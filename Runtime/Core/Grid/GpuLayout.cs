@@ -18,12 +18,8 @@ namespace GregoryTerrain
     /// <item><c>_GridSize</c>: float4 (n, m, 0, 0).</item>
     /// </list>
     /// float4, never float3: a float3 StructuredBuffer has a 12-byte stride in D3D and 16 in Vulkan.
-    /// <para>Why relative points (internals.md, "Precision plan"): an absolute float point near 0.5
-    /// resolves 6e-8, 6% of a patch 1e-6 wide. <c>R_p</c> is slot 0 rounded to float, so it is exact on
-    /// the GPU, and <c>S = R_p + sum_k w_k (P_k - R_p)</c> exactly because the Gregory weights sum to 1;
-    /// the differences <c>P_k - R_p</c> are formed in double and keep float's precision of the patch's
-    /// own size. The reference rides in the w components, which the evaluation loads anyway: no byte
-    /// more per patch.</para>
+    /// <para>Why relative points: internals.md, "GPU layout", "Patch records (precision)". The
+    /// reference rides in the w components, which the evaluation loads anyway: no byte more per patch.</para>
     /// </summary>
     internal static class GpuLayout
     {

@@ -7,8 +7,7 @@ namespace GregoryTerrain
     /// Marks a Core struct as the one declaration of a CPU&lt;-&gt;GPU contract (internals.md, "One
     /// contract to the GPU"). The rig's <c>gt generate</c> reads it and writes the other sides, which
     /// are committed and never edited: the HLSL at <see cref="HlslPath"/> and the C# at
-    /// <see cref="CSharpPath"/> (the shader names and the field count). Its test fails when a
-    /// generated file differs from what the declaration gives. Every instance field is a
+    /// <see cref="CSharpPath"/> (the shader names and the field count). Every instance field is a
     /// <see cref="Float4"/> (a std140 float4 each: the C# and HLSL offsets agree) named as its
     /// constant without the '_' and with a small first letter (<c>rangeOrigin</c> is <c>_RangeOrigin</c>).
     /// Only the rig defines GT_CONTRACTS: Unity compiles every use of these attributes away.

@@ -5,10 +5,8 @@ namespace GregoryTerrain
     /// <summary>
     /// The difference <c>S(u0 + du, v0 + dv) - S(u0, v0)</c> of one Gregory patch, computed from the
     /// reference point (u0, v0) and the small step (du, dv) directly, never as the difference of two
-    /// absolute evaluations (precision.md). At a range width of 1e-6 the step is ~1e-6 while S is
-    /// ~0.1: two float evaluations differ by their rounding (~7e-9, six pixels at that zoom), whereas
-    /// every term here is proportional to the step, so the result carries float's relative precision
-    /// of the step itself (~1e-13 absolute). Mirrors <c>GregoryDifferenceEvaluate</c> in
+    /// absolute evaluations, whose rounding is pixels at deep zoom (precision.md): every term here is
+    /// proportional to the step, so the result carries float's relative precision of the step. Mirrors <c>GregoryDifferenceEvaluate</c> in
     /// Shaders/Library/GregoryDifference.hlsl (float overload); the double overload is the reference.
     ///
     /// <para><b>Bernstein differences</b> are exact Taylor polynomials (a cubic has three nonzero

@@ -86,19 +86,10 @@ namespace GregoryTerrain
         /// <summary>
         /// The deep-zoom noise height <c>p(q) - p(O)</c> (precision.md), O the range origin, from the
         /// precise difference <paramref name="qMinusOrigin"/> = q - O (<c>RelativeSurface.Difference</c>),
-        /// never as the difference of two absolute floats (those resolve only ~6e-8 of the amplitude,
-        /// 0.4 px at a range width of 1e-6). Per octave, O's lattice point is split into cell c0 and
-        /// fraction f0 (<see cref="GradientNoise.SplitLattice"/>, the same for every vertex of a frame)
-        /// and the lattice step is <c>delta = f_k (q - O)</c>:
-        /// <list type="bullet">
-        /// <item>q in O's cell: one <see cref="GradientNoise.CellDifference"/> from f0 by delta.</item>
-        /// <item>q in a neighbouring cell c0 + m (|m| &lt;= 1 per axis): through r1, O clamped into q's
-        /// cell: <c>[K_c(q) - K_c(r1)] + [K_c0(r1) - K_c0(O)]</c>; the two steps add up to delta, and the
-        /// noise is C2 across cell lines, so where exactly r1 sits on the line does not matter.</item>
-        /// <item>farther: the two absolute values (this octave's cells are then smaller than the range,
-        /// and with beta = alpha its weight makes the rounding as small in pixels as the cells are).</item>
-        /// </list>
-        /// Depends on q and per-frame constants only (shared tile edges stay bit-identical).
+        /// never as the difference of two absolute floats. Per octave: q in O's cell, one
+        /// <see cref="GradientNoise.CellDifference"/>; in a neighbouring cell, through r1 = O clamped into
+        /// q's cell; farther, the two absolute values (Tools~/docs/design-notes.md, "Precision: the noise
+        /// difference, term by term"). Depends on q and per-frame constants only (shared tile edges stay bit-identical).
         /// <paramref name="gradient"/> is d p / d q at q, as from <see cref="Evaluate(TerrainPoint, NoiseSettings, float, out Float2, TerrainKeywords)"/>.
         /// Mirrors HLSL <c>OctaveNoiseRelative</c>; the renderer adds p(O) (double) back.
         /// </summary>
@@ -171,12 +162,9 @@ namespace GregoryTerrain
         /// <summary>
         /// How many octaves are worth evaluating: octave k counts when its wavelength
         /// <c>1 / (frequency * alpha^k)</c> is at least two vertex spacings, <c>2 * rangeWidth / verticesAcross</c>
-        /// (finer detail falls between vertices and only aliases). So the count is
-        /// <c>1 + log_alpha(verticesAcross / (2 * rangeWidth * frequency))</c>, clamped to [0, octaves]; its
-        /// fraction fades octave <c>floor(count)</c> in: its weight rises from 0 to 1 while its wavelength
-        /// grows from <c>2 / alpha</c> to 2 vertex spacings as the range narrows. Fine octaves thus
-        /// appear only as the range narrows (the paper's intent for beta). It depends only on
-        /// per-frame values, so every vertex of a frame uses the same count.
+        /// (finer detail only aliases): <c>1 + log_alpha(verticesAcross / (2 * rangeWidth * frequency))</c>,
+        /// clamped to [0, octaves]; the fraction fades octave <c>floor(count)</c> in. Per-frame values only,
+        /// so every vertex of a frame uses the same count.
         /// </summary>
         public static double OctaveCount(double rangeWidth, double verticesAcross, NoiseSettings settings)
         {
@@ -191,14 +179,9 @@ namespace GregoryTerrain
 
         /// <summary>
         /// The continuous octave rule of the levels of detail (internals.md, "The continuous octave
-        /// rule"): the count as a function of a vertex's position and the camera, not of a range's
-        /// width, so both sides of a level seam agree and a camera step changes it continuously. A
-        /// segment may be <paramref name="segmentPixels"/> pixels long on screen; where one object
-        /// (terrain) unit covers <paramref name="pixelsPerUnit"/> pixels (TessellationPolicy.PixelsPerUnit
-        /// at the surface point, no noise), the vertex spacing is <c>segmentPixels / pixelsPerUnit</c>,
-        /// and the count is <see cref="OctaveCount"/> of that spacing and one vertex:
-        /// <c>1 + log_alpha(pixelsPerUnit / (2 * segmentPixels * frequency))</c>, clamped to [0, octaves].
-        /// An infinite scale (at or behind the eye plane) gives all octaves, zero gives none.
+        /// rule"): <see cref="OctaveCount"/> of the vertex spacing <c>segmentPixels / pixelsPerUnit</c>
+        /// and one vertex, <paramref name="pixelsPerUnit"/> being TessellationPolicy.PixelsPerUnit at the
+        /// surface point (no noise). An infinite scale (at or behind the eye plane) gives all octaves, zero none.
         /// </summary>
         public static double OctaveCountAtPixelScale(double pixelsPerUnit, double segmentPixels, NoiseSettings settings)
         {

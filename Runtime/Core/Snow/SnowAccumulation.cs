@@ -6,23 +6,10 @@ namespace GregoryTerrain
     /// <summary>
     /// Eq. 1's accumulation rate <c>D(x) = s L (N . Gn) max(1 - E, 0)</c> and the depth update.
     /// Mirrors Shaders/Snow/SnowAccumulation.hlsl.
-    /// <para>
-    /// <b>Catch, <c>saturate(dot(N, Gn))</c>.</b> Snow settles in proportion to how much the surface
-    /// faces up. A face turned away from the sky (an overhang, dot &lt; 0) gets nothing rather than a
-    /// negative rate that would eat snow: that is why it is saturated (clamped at 0; it never exceeds 1
-    /// for unit vectors). With the smooth surface normal a vertical face has dot = 0 and never catches
-    /// snow, the shortcoming the paper fixes: it replaces N by the detail normal N_m, whose small-scale
-    /// bumps tilt part of a wall's surface upwards. Here N is the field's detail normal (patch normal plus
-    /// noise detail). Whether a steep face is windward or lee is decided by the exposure L: the lee face
-    /// lies in the shadow of the fall line, the windward face does not.
-    /// </para>
-    /// <para>
-    /// <b>Edge term E.</b> Snow does not pile up to the sharp edge of a crest or a wall top; it rounds
-    /// off. E grows with the crest sharpness <c>c = (4 h - sum of the 4 neighbours) R</c>, which is
-    /// the drop in slope across the cell (dimensionless, about independent of R at a real edge and
-    /// tending to 0 on smooth ground as R grows): <c>E = edgeStrength * smoothstep(0, edgeWidth, c)</c>.
-    /// Concave cells (c &lt; 0) get E = 0.
-    /// </para>
+    /// Each term's why: snow.md, "What it computes". The catch is saturated (an overhang gets nothing,
+    /// never a negative rate that would eat snow); N is the field's detail normal, so walls catch snow.
+    /// The crest sharpness <c>c = (4 h - sum of the 4 neighbours) R</c> is the drop in slope across the
+    /// cell; concave cells (c &lt; 0) get E = 0.
     /// </summary>
     internal static class SnowAccumulation
     {

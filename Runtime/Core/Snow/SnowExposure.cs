@@ -6,20 +6,13 @@ namespace GregoryTerrain
     /// <summary>
     /// L(x, w) of eq. 1: how exposed cell x is to the wind-driven snowfall. Mirrors Shaders/Snow/SnowExposure.hlsl.
     /// <para>
-    /// The paper takes L from precomputed radiance transfer; a height field lets us do it directly.
-    /// Snow reaches x along the fall line, which rises upwind at the fall angle F. March from x
-    /// upwind over the height field; every sample at horizontal distance t and height difference
-    /// dz has an elevation angle H seen from x. The sample blocks the fall line when H &gt; F.
-    /// We keep <c>sin(H - F) = (dz cos F - t sin F) / sqrt(t^2 + dz^2)</c> (no trigonometry, bounded in
-    /// [-1, 1], and t &gt; 0 so the root is never 0), take its maximum over the march (the worst
-    /// blocker, "occlusion"), and map it smoothly: <c>L = 1 - smoothstep(0, softness, occlusion)</c>.
-    /// Level ground is fully exposed for any F &gt; 0 (its occlusion is -sin F &lt; 0); so is any point
-    /// when there is no horizontal wind (F = 90 degrees: we return 1 without marching).
-    /// </para>
-    /// <para>
-    /// Exposure depends only on the terrain and the snowfall direction (never on the snow depth), so
-    /// it is recomputed only when one of those changes (<see cref="SnowSimulation.NeedsExposureUpdate"/>).
-    /// Samples that leave the unit square end the march: beyond the terrain is open ground.
+    /// A march from x upwind over the height field (snow.md, "What it computes"): each sample at
+    /// horizontal distance t and height difference dz blocks the fall line (elevation F) by
+    /// <c>sin(H - F) = (dz cos F - t sin F) / sqrt(t^2 + dz^2)</c> (no trigonometry, bounded in
+    /// [-1, 1], and t &gt; 0 so the root is never 0); <c>L = 1 - smoothstep(0, softness, max)</c>.
+    /// Without horizontal wind (F = 90 degrees) it returns 1 without marching. Samples that leave the
+    /// unit square end the march: beyond the terrain is open ground. Recomputed only when the terrain
+    /// or the snowfall direction changes (<see cref="SnowSimulation.NeedsExposureUpdate"/>).
     /// </para>
     /// </summary>
     internal static class SnowExposure

@@ -7,17 +7,10 @@ namespace GregoryTerrain
     /// height per cell) evaluated from the terrain's own inputs by the terrain's own vertex path.
     /// Mirrors <c>Shaders/Snow/SnowField.compute</c> (kernel <c>SnowFieldKernel</c>).
     /// <para>
-    /// <b>How the cells become vertices.</b> With the range set to the whole unit square, no origin and
-    /// <c>M = R</c> tiles, tile <c>(i, j)</c> at tess coordinate <c>(0.5, 0.5)</c> is the global point
-    /// <c>(i + 0.5) / R</c>, <c>(j + 0.5) / R</c> exactly (R is a power of two), which is the centre of
-    /// cell (i, j). So the field is <see cref="TerrainVertex.Evaluate"/> of tile <c>j R + i</c> at
-    /// (0.5, 0.5) under <see cref="ParamsFor"/>: the same FindPatch, Gregory evaluation, noise and
-    /// normal as the drawn surface, with no second copy of the path to drift.
-    /// </para>
-    /// <para>
-    /// <b>Noise.</b> The octave count follows the cell spacing (<c>verticesAcross = R</c>): octaves
-    /// shorter than two cells are left out, as the drawn terrain leaves out those shorter than two
-    /// vertex spacings; the snow map could not resolve them anyway.
+    /// With the range the whole unit square, no origin and <c>M = R</c> tiles, tile <c>(i, j)</c> at
+    /// tess <c>(0.5, 0.5)</c> is exactly the centre of cell (i, j) (R is a power of two), so the field is
+    /// <see cref="TerrainVertex.Evaluate"/> of tile <c>j R + i</c> under <see cref="ParamsFor"/>: no
+    /// second copy of the path to drift. Octaves shorter than two cells are left out (<c>verticesAcross = R</c>).
     /// </para>
     /// </summary>
     internal static class SnowFieldTerrain

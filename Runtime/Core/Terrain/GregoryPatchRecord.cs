@@ -6,10 +6,9 @@ namespace GregoryTerrain
     /// <summary>
     /// One patch of <c>_ControlPoints</c> as the GPU reads it: the mirror of the HLSL
     /// <c>struct GregoryPatchRecord { float4 points[20]; }</c> (generated: Shaders/Terrain/GregoryPatchRecord.cs.hlsl),
-    /// 320 bytes, blittable, <c>point</c>k at byte 16 k (the array's stride). Point k is slot k of
-    /// <see cref="GregoryPatch"/>: xyz = <c>P_k - R_p</c>, the point relative to the patch's reference
-    /// point; w of points 0, 1, 2 = <c>R_p</c>.x, .y, .z, w of the others 0 (<see cref="GpuLayout"/>).
-    /// Tools~/RigTests/ShaderContractTests compares this layout with the one the shader compiler gives.
+    /// 320 bytes, blittable, <c>point</c>k at byte 16 k (the array's stride): slot k of
+    /// <see cref="GregoryPatch"/> as <see cref="GpuLayout"/> packs it. ShaderContractTests compares
+    /// this layout with the one the shader compiler gives.
     /// <para>Twenty named fields, not a fixed array: a fixed buffer needs unsafe code, and a managed
     /// array would not be blittable. The indexer is the HLSL's <c>points[k]</c>.</para>
     /// </summary>

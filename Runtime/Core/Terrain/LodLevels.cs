@@ -6,8 +6,7 @@ namespace GregoryTerrain
     /// <summary>
     /// The level layout of the horizon-to-feet LOD (internals.md, "Levels of detail: from the feet to
     /// the horizon"): nested ranges around the camera's ground point, level k of width
-    /// <c>W_k = 2^k W_0</c>, until one covers the terrain. Only the layout is built; the draw does not
-    /// use it yet (the single-range path is unchanged).
+    /// <c>W_k = 2^k W_0</c>, until one covers the terrain.
     /// <list type="bullet">
     /// <item><c>W_0 = 2^-n</c> of the terrain, so every level's cells (<c>W_k / M</c>) are dyadic and
     /// exact in float and double, and the terrain's far edge 1 lies on every lattice.</item>

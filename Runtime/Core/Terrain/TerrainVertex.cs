@@ -126,10 +126,9 @@ namespace GregoryTerrain
 
         /// <summary>
         /// The tile path of <see cref="EvaluateSurface"/> after the global point is formed:
-        /// <see cref="RelativeSurface.FindPatchAt"/> (on the hi/lo lines while a range origin is set: at
-        /// deep zoom the normal of a vertex beside a line otherwise came from the neighbour), PatchLocalUV, GregoryEval of the
-        /// relative points plus the patch's reference point. Use it with the q a GPU read back to
-        /// compare the rest of the path at exactly the point the GPU used.
+        /// <see cref="RelativeSurface.FindPatchAt"/> (on the hi/lo lines while a range origin is set),
+        /// PatchLocalUV, GregoryEval of the relative points plus the patch's reference point. Use it
+        /// with the q a GPU read back to compare the rest of the path at the GPU's point.
         /// </summary>
         public static TerrainSurfacePoint EvaluateSurfaceAt(TerrainInputs inputs, TerrainPoint q)
         {
@@ -175,11 +174,11 @@ namespace GregoryTerrain
 
         /// <summary>
         /// HLSL <c>VertexOctaveCount</c>: the octaves a vertex whose surface (no noise) outputs
-        /// <paramref name="surfacePosition"/> draws. The single-range rule (<see cref="TerrainInputs.NoiseOctaveCount()"/>,
-        /// one count a frame) unless <see cref="TerrainInputs.NoiseSegmentPixels"/> &gt; 0 (the levels
-        /// of detail, tile mode): then the continuous rule at the vertex's pixel scale
-        /// (<see cref="TerrainInputs.NoiseOctaveCountAt"/>), so both sides of a level seam, which form
-        /// the same q, agree. Throws when that rule is on and no camera is given.
+        /// <paramref name="surfacePosition"/> draws. The single-range rule (<see cref="TerrainInputs.NoiseOctaveCount()"/>)
+        /// unless <see cref="TerrainInputs.NoiseSegmentPixels"/> &gt; 0 (the levels, tile mode): then the
+        /// continuous rule at the vertex's pixel scale (<see cref="TerrainInputs.NoiseOctaveCountAt"/>),
+        /// a function of q and the camera only, so both sides of a level seam agree. Throws when that
+        /// rule is on and no camera is given.
         /// </summary>
         public static float VertexOctaveCount(TerrainInputs inputs, Float3 surfacePosition, TerrainKeywords keywords,
                                               (Float4x4 objectToClip, Float2 screenSize)? camera)
@@ -306,9 +305,7 @@ namespace GregoryTerrain
             return (float)(Math.Sqrt(3.0) * (3.0 * u * (x + z) + sum));
         }
 
-        // HLSL FinishTerrainVertex: everything TerrainVertex computes from the surface point on, before the camera.
-        // The HLSL takes the deep-zoom surface and noise in one branch (the untaken code of two branches
-        // cost the plain path measurably); the values are these, step for step.
+        // HLSL FinishTerrainVertex, step for step (the HLSL takes the deep-zoom surface and noise in one branch).
                 static TerrainVertexOutput FinishTerrainVertex(TerrainInputs inputs, TerrainSurfacePoint s, TerrainKeywords keywords,
                                                        (Float4x4 objectToClip, Float2 screenSize)? camera)
         {

@@ -6,11 +6,8 @@ namespace GregoryTerrain
     /// The hull constant function's decisions (internals.md, "The tile layout"), mirrored by
     /// Shaders/Terrain/TessellationFactors.hlsl: edge factors from the screen-space length of each tile edge,
     /// the inside factor, and frustum culling of a tile's bounding box.
-    /// <para>Crack-freedom: an edge's factor is computed only from that edge's two endpoints (their
-    /// clip positions), never from the tile it belongs to, so the two tiles sharing an edge compute the
-    /// same factor, provided they pass the same endpoints (the tile layout makes shared corners
-    /// bit-identical). The functions are also symmetric bit for bit in the two endpoints, because the
-    /// neighbour walks the shared edge the other way round.</para>
+    /// <para>Crack-freedom: an edge's factor depends only on its own endpoints, symmetrically bit for
+    /// bit (the neighbour walks the shared edge the other way round).</para>
     /// </summary>
     internal static class TessellationPolicy
     {
@@ -39,10 +36,8 @@ namespace GregoryTerrain
             new Float2(clip.x / clip.w * (0.5f * screenSize.x), clip.y / clip.w * (0.5f * screenSize.y));
 
         /// <summary>
-        /// Screen-space length in pixels of the edge between two clip positions. Symmetric bit for bit:
-        /// each endpoint is projected on its own, and <c>a - b == -(b - a)</c> exactly in IEEE arithmetic,
-        /// so the squares are equal. An endpoint at or behind the eye plane (<c>w &lt;= 0</c>) makes the
-        /// length +infinity (the edge crosses the camera plane; treated as "as fine as allowed").
+        /// Screen-space length in pixels of the edge between two clip positions; symmetric bit for bit
+        /// (<c>a - b == -(b - a)</c> in IEEE). +infinity when an endpoint has <c>w &lt;= 0</c>.
         /// </summary>
         public static float EdgeLengthPixels(Float4 clip0, Float4 clip1, Float2 screenSize)
         {
@@ -68,11 +63,9 @@ namespace GregoryTerrain
         }
 
         /// <summary>
-        /// The two inside factors of a quad tile from its edge factors, edge order of the quad domain
-        /// (e0: u = 0, e1: v = 0, e2: u = 1, e3: v = 1). Each inside factor follows the two edges that run
-        /// the same way: <c>x</c> (inside[0], subdivides along u) = <c>max(e1, e3)</c>, <c>y</c> (inside[1],
-        /// along v) = <c>max(e0, e2)</c>. The max of all four would over-tessellate a long thin tile in its
-        /// short direction. Mirrors HLSL <c>TessInsideFactors</c>.
+        /// The two inside factors of a quad tile from its edge factors (e0: u = 0, e1: v = 0, e2: u = 1,
+        /// e3: v = 1): each the max of the two edges running the same way, so a long thin tile is not
+        /// over-tessellated in its short direction. Mirrors HLSL <c>TessInsideFactors</c>.
         /// </summary>
         public static Float2 InsideFactors(float e0, float e1, float e2, float e3) =>
             new Float2(Math.Max(e1, e3), Math.Max(e0, e2));
@@ -80,13 +73,9 @@ namespace GregoryTerrain
         // ------------------------------------------------- adaptive: target screen-space error
 
         /// <summary>
-        /// The largest number of pixels one object-space unit can cover on screen at a point, in any
-        /// direction: the largest singular value of the Jacobian of (clip -> pixels) at the point.
-        /// Inputs are the clip positions of the point and of the point moved by one object unit along
-        /// x, y and z (the projection is linear in object space, so the differences are the matrix's
-        /// columns). A world distance d at the point is at most <c>d * PixelsPerUnit</c> pixels on
-        /// screen, whatever its direction: the pixel error of a deviation, seen from its worst side.
-        /// +infinity when the point is at or behind the eye plane.
+        /// The most pixels one object-space unit covers on screen at a point, in any direction: the
+        /// largest singular value of the (clip -> pixels) Jacobian, from the clip positions of the point
+        /// and of the point moved one unit along x, y and z. +infinity at or behind the eye plane.
         /// </summary>
         public static float PixelsPerUnit(Float4 clip, Float4 clipX, Float4 clipY, Float4 clipZ, Float2 screenSize)
         {
@@ -135,14 +124,9 @@ namespace GregoryTerrain
         }
 
         /// <summary>
-        /// The adaptive edge factor: the number of segments F whose chord error is half the target.
-        /// Splitting an edge of sagitta s (pixels) into F equal segments leaves <c>s / F^2</c> per segment
-        /// (the sagitta scales with the square of the span). A tessellation cell is bent along both
-        /// directions, and its triangles' error at the cell centre is the sum of the two directions'
-        /// chord errors (exact for a quadratic surface without twist), so each edge aims at half the
-        /// target: <c>F = sqrt(2 s / targetPixelError)</c>, clamped to [1, maxFactor]. With fractional_odd
-        /// partitioning the longest segment is 1/F of the edge, so the bound holds for fractional F too.
-        /// A non-finite sagitta (an edge crossing the eye plane) gives maxFactor.
+        /// The adaptive edge factor <c>F = clamp(sqrt(2 s / targetPixelError), 1, maxFactor)</c>: F segments
+        /// leave <c>s / F^2</c>, half the target per direction of a cell (internals.md, "Shader stages
+        /// and compiled files"). A non-finite sagitta gives maxFactor.
         /// </summary>
         public static float ErrorTessFactor(float sagittaPixels, float targetPixelError, float maxFactor)
         {
@@ -170,10 +154,8 @@ namespace GregoryTerrain
         }
 
         /// <summary>
-        /// The inside factor a diagonal sagitta asks for: a cell F times smaller has a diagonal error
-        /// <c>s / F^2</c>, which already holds both directions' bending, so <c>F = sqrt(s / target)</c>,
-        /// clamped to [1, maxFactor]. Inside factors need not match any neighbour, so they may use the
-        /// tile's interior; the hull takes the larger of this and the edges along the same direction.
+        /// The inside factor a diagonal sagitta asks for, <c>clamp(sqrt(s / target), 1, maxFactor)</c>:
+        /// the diagonal error already holds both directions' bending, so no factor 2.
         /// </summary>
         public static float InsideErrorTessFactor(float diagonalSagittaPixels, float targetPixelError, float maxFactor)
         {
@@ -247,7 +229,7 @@ namespace GregoryTerrain
         /// <summary>
         /// Bound on the second derivative of <see cref="GradientNoise"/> along a lattice axis, per unit
         /// lattice (|d^2 n / dx^2| and |d^2 n / dy^2| &lt;= this): the largest value found on a dense grid
-        /// of 256 x 256 lattice cells (Tests/Core/TessellationErrorTests.cs checks it), rounded up.
+        /// of 256 x 256 lattice cells (11.26; Tests/Core/TessellationErrorTests.cs checks it), rounded up.
         /// </summary>
         public const float GradientNoiseCurvature = 12f;
 
@@ -310,8 +292,7 @@ namespace GregoryTerrain
 
         /// <summary>
         /// True when the box whose 8 corners are <paramref name="clipCorners"/> lies entirely outside one
-        /// plane, so it can be culled (factor 0). A box straddling a plane, or outside different
-        /// planes with different corners, is kept: conservative, never culls anything visible.
+        /// plane (conservative: never culls anything visible).
         /// </summary>
         public static bool BoxOutsideFrustum(Float4[] clipCorners, float margin)
         {
@@ -357,7 +338,7 @@ namespace GregoryTerrain
         /// <summary>
         /// Bound on the gradient of <see cref="GradientNoise"/>, per unit lattice (|grad n| &lt;= this,
         /// Euclidean): the largest value found on a dense grid of 256 x 256 lattice cells
-        /// (Tests/Core/TessellationErrorTests.cs checks it), rounded up.
+        /// (2.81; Tests/Core/TessellationErrorTests.cs checks it), rounded up.
         /// </summary>
         public const float GradientNoiseSlope = 3f;
 
@@ -385,12 +366,9 @@ namespace GregoryTerrain
         }
 
         /// <summary>
-        /// The tile culling test of <c>hull_const</c> (HLSL <c>TileCulled</c>): the box of the tile's four
-        /// corner positions (object space, Unity's Y-up: height is y), grown in height by the corners'
-        /// own height spread (the surface may rise between corners) plus <paramref name="noiseHeightBound"/>
-        /// (0 without noise), and upwards only by <paramref name="raiseBound"/> (the snow cap with
-        /// GT_SNOW: snow only raises the surface), is outside the view. Noise that could reach into
-        /// the view keeps the tile.
+        /// The tile culling test of <c>hull_const</c> (HLSL <c>TileCulled</c>): the box of the four
+        /// corners (object space, y up), grown in height by their spread plus <paramref name="noiseHeightBound"/>
+        /// and upwards only by <paramref name="raiseBound"/> (snow only raises), is outside the view.
         /// </summary>
         public static bool TileCulled(Float4x4 objectToClip, Float3[] cornersOS, float noiseHeightBound, float raiseBound = 0f)
         {
