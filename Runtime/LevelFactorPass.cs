@@ -40,6 +40,7 @@ namespace GregoryTerrain
         GraphicsBuffer _noRecords; // one record bound while the domain stage evaluates every vertex
         ComputeShader _kernelShader;
         int _piecesKernel = -1, _seamsKernel = -1, _slotsKernel = -1, _verticesKernel = -1;
+        string _cacheOffReason;    // why the vertex cache did not run last frame (warned once a reason), or null
         readonly Vector4[] _ranges = new Vector4[LodTiles.MaxLevels];   // SetVectorArray's copy of the plan's levels
 
         /// <summary>GPU memory held now (0 when released).</summary>
@@ -80,8 +81,8 @@ namespace GregoryTerrain
             CameraFactors f = FactorsOf(cam, patches);
             Bind(props, f.buffer);
             Dispatch(r, cam, state, gpu, tiles, f);
-            bool cache = _slotsKernel >= 0 && EnsureRecords(f, state, r.SnowOn(), tiles);
-            if (cache) DispatchCache(state, tiles, f);
+            bool cache = CacheRuns(r);
+            if (cache) { EnsureRecords(f, state, r.SnowOn(), tiles); DispatchCache(state, tiles, f); }
             bool changed = BindRecords(props, cache ? f.records : NoRecords(), cache ? f.capacity : 0);
             return !was || changed;
         }
@@ -97,20 +98,29 @@ namespace GregoryTerrain
             return changed;
         }
 
-        /// <summary>The camera's records buffer, made again when a frame needed more (or snow changes the record). False without buffer readback.</summary>
-        bool EnsureRecords(CameraFactors f, FrameState state, bool snow, int tiles)
+        /// <summary>Whether the vertex cache's kernels run with the factor kernels; warns once a reason, naming it.</summary>
+        bool CacheRuns(GregoryTerrainRenderer r)
         {
-            if (!SystemInfo.supportsAsyncGPUReadback) return false;
+            string reason = _slotsKernel < 0 ? "the Cache Shader has no kernels LodVertexSlots and LodCacheVertices that this device runs"
+                          : !SystemInfo.supportsAsyncGPUReadback ? "this device has no buffer readback (SystemInfo.supportsAsyncGPUReadback = false)" : null;
+            if (reason != null && reason != _cacheOffReason)
+                Debug.LogWarning($"{r.name}: the Horizon levels' vertex cache does not run ({reason}); the domain stage evaluates the vertices instead (slower).", r);
+            _cacheOffReason = reason;
+            return reason == null;
+        }
+
+        /// <summary>The camera's records buffer, made again when a frame needed more (or snow changes the record).</summary>
+        void EnsureRecords(CameraFactors f, FrameState state, bool snow, int tiles)
+        {
             int uint4s = VertexCache.Uint4sPerRecord(snow);
             int limit = VertexCache.FactorLimit(state.parameters.tess);
             int capacity = f.records == null ? LevelVertexCache.FirstRecords(LodLevels.DrawnTileCount(state.levelCount, tiles), limit)
                                              : LevelVertexCache.GrownRecords(f.needed, f.capacity);
-            if (f.records != null && capacity == f.capacity && uint4s == f.uint4s) return true;
+            if (f.records != null && capacity == f.capacity && uint4s == f.uint4s) return;
             f.records?.Release();
             f.records = new GraphicsBuffer(GraphicsBuffer.Target.Structured, capacity * uint4s, CacheRecordPartBytes);
             f.capacity = capacity;
             f.uint4s = uint4s;
-            return true;
         }
 
         /// <summary>Why the kernels cannot run, naming the device flag or the asset, or null.</summary>
@@ -178,6 +188,7 @@ namespace GregoryTerrain
             for (int k = 0; k < state.levelCount; k++) _ranges[k] = UnityConversions.ToVector(state.levelVectors[k]);
             shader.SetVectorArray(ShaderIds.Ranges, _ranges);
             shader.SetMatrix(ShaderIds.LodObjectToClip, UnityConversions.ObjectToClip(cam, state.objectToWorld));
+            shader.SetMatrix(ShaderIds.WorldToObject, UnityConversions.ToMatrix4x4(state.worldToObject));   // the cached normals' transform
             int w = cam.pixelWidth, h = cam.pixelHeight;
             shader.SetVector(ShaderIds.LodScreenSize, new Vector4(w, h, 1f / w, 1f / h));
             SnowSimulator snow = r.SnowOn() ? r.SnowSimulator : null;

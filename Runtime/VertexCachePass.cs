@@ -84,7 +84,7 @@ namespace GregoryTerrain
         public bool UpdateFrame(GregoryTerrainRenderer r, bool fallback, FrameState state, TerrainGpuBuffers gpu, int gridStamp, MaterialPropertyBlock props)
         {
             FrameResources keys = state.resources;
-            // The levels draw through the domain stage (the cache holds one range's tiles).
+            // The levels have their own cache (LevelFactorPass): this one holds one range's tiles.
             if (r.VertexEvaluation != VertexEvaluation.ComputeCache || r.LevelsOn(fallback))
             {
                 keys.CacheNotUsed(null);

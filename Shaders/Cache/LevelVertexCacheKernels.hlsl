@@ -41,7 +41,8 @@ void LodVertexSlots(uint lane : SV_GroupIndex)
     [unroll] for (uint step = 1u; step < GT_LEVEL_CACHE_SCAN_LANES; step <<= 1u)
     {
         GroupMemoryBarrierWithGroupSync();
-        uint before = lane >= step ? gtLevelCacheRunSums[lane - step] : 0u;
+        // The index stays in range for every lane: ?: reads both sides, and an out-of-range groupshared read is undefined.
+        uint before = lane >= step ? gtLevelCacheRunSums[lane - min(step, lane)] : 0u;
         GroupMemoryBarrierWithGroupSync();
         gtLevelCacheRunSums[lane] += before;
     }

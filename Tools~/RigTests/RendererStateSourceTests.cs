@@ -324,6 +324,28 @@ namespace GregoryTerrain.Rig.Tests
             Assert.That(code, Does.Not.Match(@"\bGraphicsBuffer\s+_records\b"), "no records buffer shared by every camera");
         }
 
+        /// <summary>
+        /// Every global the levels' kernels read through LodCameraComputeAdapter.hlsl (the camera's
+        /// object-to-clip and pixels, the terrain's world-to-object for the cached normals) is set by
+        /// LevelFactorPass.Dispatch: Unity leaves an unset compute global at zero or at what another
+        /// renderer last set on the shared asset, which the rig (its own adapter) cannot show.
+        /// </summary>
+        [Test]
+        public void TheLevelsKernelsGetEveryCameraGlobalTheyRead()
+        {
+            string adapter = File.ReadAllText(PackageRoot.Combine("Shaders", "Pipelines", "LodCameraComputeAdapter.hlsl"));
+            var globals = Regex.Matches(adapter, @"(?m)^float4(?:x4)?\s+(_\w+)\s*;").Select(m => m.Groups[1].Value).ToList();
+            Assert.That(globals, Has.Count.GreaterThanOrEqualTo(3), "globals declared by the adapter");
+            string ids = File.ReadAllText(PackageRoot.Combine("Runtime", "ShaderIds.cs"));
+            string dispatch = Body(StripComments(File.ReadAllText(PackageRoot.Combine("Runtime", "LevelFactorPass.cs"))), "Dispatch");
+            foreach (string name in globals)
+            {
+                Match id = Regex.Match(ids, @"(\w+)\s*=\s*Shader\.PropertyToID\(""" + Regex.Escape(name) + @"""\)");
+                Assert.That(id.Success, Is.True, name + " has a ShaderIds field");
+                Assert.That(dispatch, Does.Match(@"shader\.Set\w+\(ShaderIds\." + id.Groups[1].Value + @"\b"), $"LevelFactorPass.Dispatch sets {name} (ShaderIds.{id.Groups[1].Value})");
+            }
+        }
+
         static bool BuildsNamedStringEachCall(string body) => body == null || Regex.IsMatch(body, @"\$""[^""]*\{\w+\.name\}");
 
         [Test]
