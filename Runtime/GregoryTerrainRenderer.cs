@@ -342,7 +342,7 @@ namespace GregoryTerrain
         /// <summary>Tiles per axis the cache holds (it never runs with the fallback grid).</summary>
         internal int CacheTilesAcross => TilesAcross(false);
 
-        /// <summary>GPU memory the vertex cache holds now (0 while it is not allocated).</summary>
+        /// <summary>GPU memory the vertex caches hold now: the single range's, or with Horizon levels every camera's factor and vertex buffers (0 while none is allocated).</summary>
         public long VertexCacheAllocatedBytes => Frame.CacheAllocatedBytes;
 
         /// <summary>True while GPU buffers for a grid are held.</summary>

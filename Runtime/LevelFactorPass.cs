@@ -116,6 +116,7 @@ namespace GregoryTerrain
             int limit = VertexCache.FactorLimit(state.parameters.tess);
             int capacity = f.records == null ? LevelVertexCache.FirstRecords(LodLevels.DrawnTileCount(state.levelCount, tiles), limit)
                                              : LevelVertexCache.GrownRecords(f.needed, f.capacity);
+            capacity = System.Math.Min(capacity, LevelVertexCache.RecordLimit(uint4s * CacheRecordPartBytes));   // past it, tiles draw through the domain stage
             if (f.records != null && capacity == f.capacity && uint4s == f.uint4s) return;
             f.records?.Release();
             f.records = new GraphicsBuffer(GraphicsBuffer.Target.Structured, capacity * uint4s, CacheRecordPartBytes);

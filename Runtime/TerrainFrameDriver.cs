@@ -46,7 +46,7 @@ namespace GregoryTerrain
         public FrameState State => _state;
         public TerrainGpuBuffers Gpu => _gpu;
         public int GridStamp => _gridStamp;
-        public long CacheAllocatedBytes => _cache.AllocatedBytes;
+        public long CacheAllocatedBytes => _cache.AllocatedBytes + _levelFactors.AllocatedBytes;
         public static string DeviceError => s_DeviceError;
         FrameResources _keys => _state.resources;
         TerrainParams _params => _state.parameters;

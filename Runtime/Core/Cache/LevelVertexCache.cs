@@ -16,6 +16,12 @@ namespace GregoryTerrain
         /// <summary>Records a buffer holds at most: C (<c>_LodLevels.z</c>) and first records are floats, exact below 2^24.</summary>
         public const int MaxRecords = 1 << 24;
 
+        /// <summary>A buffer's bytes at most: Vulkan guarantees a storage buffer range of 2^27 bytes (maxStorageBufferRange), no more.</summary>
+        public const int MaxBufferBytes = 1 << 27;
+
+        /// <summary>The records a buffer of <paramref name="recordBytes"/>-byte records can hold: <see cref="MaxRecords"/> and <see cref="MaxBufferBytes"/>.</summary>
+        public static int RecordLimit(int recordBytes) => Math.Min(MaxRecords, MaxBufferBytes / recordBytes);
+
         /// <summary>A camera's first buffer: a 16th of S(<paramref name="factorLimit"/>) a drawn tile; it grows (<see cref="GrownRecords"/>).</summary>
         public static int FirstRecords(int drawnTiles, int factorLimit)
         {
