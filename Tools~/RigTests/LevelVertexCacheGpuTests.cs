@@ -77,6 +77,82 @@ namespace GregoryTerrain.Rig.Tests
             return f;
         }
 
+        /// <summary>The levels at uniform factor F through the readback variant: 12 floats a vertex on the (F+1)^2 grid of each draw patch.</summary>
+        float[] ReadbackDraw(LodScene s, int factor, string name)
+        {
+            string dir = Path.Combine(_work, (_runs++).ToString("D2") + "-" + name), rb = Path.Combine(dir, "readback.f32");
+            s.Write(dir);
+            string v = Path.Combine(_spirv, Levels);
+            var args = new List<string>(ReadbackRun.Stages(_spirv, Readback));
+            args.AddRange(s.HarnessArgs(dir));
+            args.AddRange(s.KernelArgs(Path.Combine(v, "lod_pieces.spv"), Path.Combine(v, "lod_seams.spv")));
+            if (s.CacheRecords > 0) args.AddRange(s.CacheKernelArgs(Path.Combine(v, "lod_slots.spv"), Path.Combine(v, "lod_vertices.spv")));
+            args.AddRange(new[] { "--width", "192", "--height", "108", "--device", "llvmpipe", "--readback", rb, "--readback-floats", (12L * s.Patches * (factor + 1) * (factor + 1)).ToString() });
+            HarnessRun.Harness(args.ToArray()).AssertSucceeded();
+            return ReadbackRun.ReadFloats(rb);
+        }
+
+        /// <summary>
+        /// Core's float mirror of the precise path's height at draw patch p's tess (s, t) with the octave
+        /// sum cut after <paramref name="octaves"/> (OctaveNoise.Relative at that count), terrain units:
+        /// what lavapipe's lone last vertex of a tile outputs (its noise loop stops after octave 0).
+        /// </summary>
+        static float PreciseHeightAtOctaves(LodScene scene, int patch, float s, float t, float octaves)
+        {
+            int level = LodTiles.LevelOfPatch(patch, scene.Tiles), slot = LodTiles.SlotOfPatch(patch, scene.Tiles);
+            var r = new Float4(scene.Tail[4 + 4 * level], scene.Tail[5 + 4 * level], scene.Tail[6 + 4 * level], scene.Tail[7 + 4 * level]);
+            Float4 originF = scene.Inputs.Params.rangeOrigin;
+            TerrainPoint q = RangeMapping.ToTerrainPoint(r, originF, scene.Tiles, slot % scene.Tiles, slot / scene.Tiles, s, t);
+            Float3 surface = TerrainVertex.OutputSurfacePosition(scene.Inputs, TerrainVertex.EvaluateSurfaceAt(scene.Inputs, q), TerrainKeywords.Noise);
+            TerrainPoint origin = RelativeSurface.OriginPoint(originF);
+            return surface.z + OctaveNoise.Relative(q, origin, RelativeSurface.Difference(q, origin), scene.Inputs.NoiseSettingsStruct(), octaves, out _, TerrainKeywords.Noise);
+        }
+
+        /// <summary>
+        /// Today's path (no cache: the tessellator's own coordinates) against the kernel's points (the
+        /// cache on, its buffer holding no tile), at a uniform F = 8 whose k / 8 are exact in the
+        /// tessellator's fixed point: every vertex bit for bit, except on lavapipe the tile's centre
+        /// (F/2, F/2). That vertex is the last of the tile's (F+1)^2 = 81 = 10 x 8 + 1, which llvmpipe
+        /// runs alone in its last 8-lane batch of the domain stage, and there OctaveNoiseRelative's
+        /// [loop] stops after octave 0: its height is Core's with one octave (to 1e-8, a few float steps
+        /// of heights up to 0.03 units), x and z, q and the count it computed (6) are right; in one
+        /// level its x and z come out 0 instead. An NVIDIA H200 reads back both
+        /// paths bit-identical, the centre at every octave (Tools~/rig/README.md, "lavapipe's lone
+        /// domain-stage vertex"). Any other difference, or a centre unlike that signature, fails.
+        /// </summary>
+        [TestCase(1e5)]
+        [TestCase(1e6)]
+        public void TodaysPathIsTheKernelPointsButForLavapipesLoneCentreVertex(double terrainMeters)
+        {
+            const int F = 8, Centre = F / 2 * (F + 1) + F / 2;
+            int perTile = (F + 1) * (F + 1);
+            LodScene today = Scene(terrainMeters, F, 0), points = Scene(terrainMeters, F, DomainStageRecords);
+            float[] a = ReadbackDraw(today, F, "today-uniform" + terrainMeters.ToString("0")), b = ReadbackDraw(points, F, "points-uniform" + terrainMeters.ToString("0"));
+            int drawn = 0, other = 0, lone = 0, zeroed = 0, unlike = 0;
+            double worstLone = 0;
+            string first = null;
+            for (int p = 0; p < today.Patches; p++)
+                for (int k = 0; k < perTile; k++)
+                {
+                    int o = 12 * (p * perTile + k);
+                    if (!float.IsFinite(a[o])) continue;
+                    drawn++;
+                    bool xz = a[o] == b[o] && a[o + 2] == b[o + 2], y = a[o + 1] == b[o + 1];
+                    if (xz && y) continue;
+                    if (k == Centre && a[o] == 0f && a[o + 2] == 0f) { zeroed++; continue; }
+                    if (k != Centre || !xz) { other++; first ??= $"patch {p} vertex {k}: today ({a[o]}, {a[o + 1]}, {a[o + 2]}), kernel's point ({b[o]}, {b[o + 1]}, {b[o + 2]})"; continue; }
+                    lone++;
+                    float oneOctave = PreciseHeightAtOctaves(today, p, 0.5f, 0.5f, 1f);
+                    double d = Math.Abs(a[o + 1] - oneOctave);
+                    worstLone = Math.Max(worstLone, d);
+                    if (d > 1e-8) { unlike++; first ??= $"patch {p} centre: today's height {a[o + 1]}, Core's at one octave {oneOctave}"; }
+                }
+            TestContext.Out.WriteLine($"levels' today vs kernel points, {terrainMeters / 1000:0} km, F = {F}: {drawn} vertices, {other} differ elsewhere than the centre, {lone} centres at one octave and {zeroed} with x = z = 0 (lavapipe's lone vertex), largest |height - Core's at one octave| {worstLone:G3}{(first == null ? "" : "; first " + first)}");
+            Assert.That(drawn, Is.GreaterThan(10000));
+            Assert.That(other, Is.EqualTo(0), first);
+            Assert.That(unlike, Is.EqualTo(0), first);
+        }
+
         /// <summary>
         /// Core's layout of the frame (<see cref="LevelVertexCache.TileFirstRecords"/> over the tiles the
         /// camera draws) against the kernels' first records, a block ending past the buffer's C records
@@ -128,16 +204,7 @@ namespace GregoryTerrain.Rig.Tests
             const int F = 8;
             LodScene plain = Scene(terrainMeters, F, DomainStageRecords);
             int perTile = (F + 1) * (F + 1);
-            string dir = Path.Combine(_work, (_runs++).ToString("D2") + "-readback" + terrainMeters.ToString("0")), rb = Path.Combine(dir, "readback.f32");
-            plain.Write(dir);
-            string v = Path.Combine(_spirv, Levels);
-            var args = new List<string>(ReadbackRun.Stages(_spirv, Readback));
-            args.AddRange(plain.HarnessArgs(dir));
-            args.AddRange(plain.KernelArgs(Path.Combine(v, "lod_pieces.spv"), Path.Combine(v, "lod_seams.spv")));
-            if (plain.CacheRecords > 0) args.AddRange(plain.CacheKernelArgs(Path.Combine(v, "lod_slots.spv"), Path.Combine(v, "lod_vertices.spv")));
-            args.AddRange(new[] { "--width", "192", "--height", "108", "--device", "llvmpipe", "--readback", rb, "--readback-floats", (12L * plain.Patches * perTile).ToString() });
-            HarnessRun.Harness(args.ToArray()).AssertSucceeded();
-            float[] domain = ReadbackRun.ReadFloats(rb);
+            float[] domain = ReadbackDraw(plain, F, "readback" + terrainMeters.ToString("0"));
 
             Frame c = Draw(Scene(terrainMeters, F, plain.Patches * VertexCache.SlotsPerTile(F)), Levels, "uniform" + terrainMeters.ToString("0"));
             long total = AssertFirstRecordsAreCores(c, out int withRecords, out int cameraCulled);
