@@ -45,10 +45,13 @@ namespace GregoryTerrain.EditorTools
             if (_estimateCapped != null) EditorGUILayout.HelpBox(_estimateCapped, MessageType.Info);
             EditorGUILayout.LabelField(new GUIContent("Most triangles", "The most triangles these settings can draw, whatever the view (with Horizon levels, every level's tiles)."),
                 new GUIContent($"{r.EstimatedTriangleCount:N0} ({r.DrawnTileCount:N0} tiles{(r.LevelCount > 0 ? $" in {r.LevelCount} levels" : "")})"));
-            bool cache = r.VertexEvaluation == VertexEvaluation.ComputeCache && r.LevelCount == 0;   // the levels draw through the domain stage
+            bool cache = r.VertexEvaluation == VertexEvaluation.ComputeCache && r.LevelCount == 0;   // the levels keep their own cache a camera
             if (cache)
                 EditorGUILayout.LabelField(new GUIContent("Vertex cache memory", "GPU memory the Compute cache's buffers take at these settings."),
                     new GUIContent(FormatBytes(r.VertexCacheBytes)));
+            else if (r.LevelCount > 0)
+                EditorGUILayout.LabelField(new GUIContent("Levels' buffers now", "GPU memory the Horizon levels' factor and vertex buffers of every camera that drew take now; each grows to what its view needs."),
+                    new GUIContent(FormatBytes(r.VertexCacheAllocatedBytes)));
             if (cache && !SystemInfo.supportsComputeShaders)
                 EditorGUILayout.HelpBox("Vertex evaluation is Compute cache, but this GPU has no compute shaders (SystemInfo.supportsComputeShaders is false): the domain stage evaluates the vertices instead.", MessageType.Warning);
             else if (cache && r.VertexCacheFallbackReason != null)

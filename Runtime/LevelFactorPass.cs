@@ -180,7 +180,7 @@ namespace GregoryTerrain
             _bound = buffer;
         }
 
-        // What the hull would read: the params, levels, the camera's object-to-clip and pixels, the effects.
+        // What the hull would read (the params, levels, the camera's object-to-clip and pixels, the effects) and the cache's world-to-object.
         void Dispatch(GregoryTerrainRenderer r, Camera cam, FrameState state, TerrainGpuBuffers gpu, int tiles, CameraFactors f)
         {
             ComputeShader shader = _kernelShader;

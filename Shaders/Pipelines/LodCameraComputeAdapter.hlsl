@@ -3,7 +3,7 @@
 // factors are computed for (GregoryTerrainRenderer's LOD camera), set by the renderer as globals:
 //   _GT_LodObjectToClip   GPU projection * view * the terrain's object-to-world (what the draw uses)
 //   _GT_LodScreenSize     (width, height, 1 / width, 1 / height) of that camera's target, in pixels
-//   _GtWorldToObject      the terrain's world-to-object (the draw's own, URPAdapter.hlsl): the cache
+//   _GtWorldToObject      the terrain's world-to-object (the draw's own, UnityAdapterCommon.hlsl): the cache
 //                         stores world normals, so the domain stage skips that transform
 // The rest of the adapter interface (StandaloneAdapter.hlsl lists it) is ComputeAdapter.hlsl's, what
 // the kernels never call: lighting, shadows and world space belong to the draw, which reads the
