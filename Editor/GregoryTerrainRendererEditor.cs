@@ -25,6 +25,13 @@ namespace GregoryTerrain.EditorTools
 
         const string FoldoutKeyPrefix = "GregoryTerrain.RendererEditor.";
 
+        // In Play Mode the levels' buffers grow after a frame's readback: the memory readout follows them.
+        public override bool RequiresConstantRepaint()
+        {
+            var r = target as GregoryTerrainRenderer;
+            return Application.isPlaying && r != null && r.LevelCount > 0;
+        }
+
         public override void OnInspectorGUI()
         {
             serializedObject.UpdateIfRequiredOrScript();
@@ -45,12 +52,12 @@ namespace GregoryTerrain.EditorTools
             if (_estimateCapped != null) EditorGUILayout.HelpBox(_estimateCapped, MessageType.Info);
             EditorGUILayout.LabelField(new GUIContent("Most triangles", "The most triangles these settings can draw, whatever the view (with Horizon levels, every level's tiles)."),
                 new GUIContent($"{r.EstimatedTriangleCount:N0} ({r.DrawnTileCount:N0} tiles{(r.LevelCount > 0 ? $" in {r.LevelCount} levels" : "")})"));
-            bool cache = r.VertexEvaluation == VertexEvaluation.ComputeCache && r.LevelCount == 0;   // the levels keep their own cache a camera
+            bool cache = r.VertexEvaluation == VertexEvaluation.ComputeCache && r.LevelCount == 0;   // the levels keep their own cache per camera
             if (cache)
                 EditorGUILayout.LabelField(new GUIContent("Vertex cache memory", "GPU memory the Compute cache's buffers take at these settings."),
                     new GUIContent(FormatBytes(r.VertexCacheBytes)));
             else if (r.LevelCount > 0)
-                EditorGUILayout.LabelField(new GUIContent("Levels' buffers now", "GPU memory the Horizon levels' factor and vertex buffers of every camera that drew take now; each grows to what its view needs."),
+                EditorGUILayout.LabelField(new GUIContent("Levels' buffer memory", "GPU memory the Horizon levels' buffers use now, for every camera that has drawn them. A camera's vertex buffer grows with its view, up to 128 MiB."),
                     new GUIContent(FormatBytes(r.VertexCacheAllocatedBytes)));
             if (cache && !SystemInfo.supportsComputeShaders)
                 EditorGUILayout.HelpBox("Vertex evaluation is Compute cache, but this GPU has no compute shaders (SystemInfo.supportsComputeShaders is false): the domain stage evaluates the vertices instead.", MessageType.Warning);

@@ -35,6 +35,7 @@ namespace UnityEditor
         public Object target { get => null; set { } }                                       // SR:Editor-target
         public Object[] targets => null;                                                     // SR:Editor-targets (get only)
         public virtual void OnInspectorGUI() { }                                             // SR:Editor.OnInspectorGUI
+        public virtual bool RequiresConstantRepaint() => false;                              // SR:Editor.RequiresConstantRepaint
         public bool DrawDefaultInspector() => false;                                         // SR:Editor.DrawDefaultInspector
         public SerializedObject serializedObject => null;                                    // SR:Editor-serializedObject (get only)
     }
