@@ -38,6 +38,7 @@ namespace GregoryTerrain
         GraphicsBuffer _bound;     // what the property block's _LodFactors names now
         GraphicsBuffer _unused;    // one record bound while the hull computes the factors: every declared buffer is bound (Metal)
         GraphicsBuffer _noRecords; // one record bound while the domain stage evaluates every vertex
+        GraphicsBuffer _boundRecords;   // what the property block's _VertexCache names now
         ComputeShader _kernelShader;
         int _piecesKernel = -1, _seamsKernel = -1, _slotsKernel = -1, _verticesKernel = -1;
         string _cacheOffReason;    // why the vertex cache did not run last frame (warned once a reason), or null
@@ -92,7 +93,11 @@ namespace GregoryTerrain
         /// <summary>Binds the draw's records and their count; true when the count changed (<c>_LodLevels</c> to send).</summary>
         bool BindRecords(MaterialPropertyBlock props, GraphicsBuffer records, int count)
         {
-            props.SetBuffer(ShaderIds.VertexCache, records);
+            if (records != _boundRecords || !props.HasBuffer(ShaderIds.VertexCache))
+            {
+                props.SetBuffer(ShaderIds.VertexCache, records);
+                _boundRecords = records;
+            }
             bool changed = count != CacheRecords;
             CacheRecords = count;
             return changed;
@@ -118,7 +123,7 @@ namespace GregoryTerrain
                                              : LevelVertexCache.GrownRecords(f.needed, f.capacity);
             capacity = System.Math.Min(capacity, LevelVertexCache.RecordLimit(uint4s * CacheRecordPartBytes));   // past it, tiles draw through the domain stage
             if (f.records != null && capacity == f.capacity && uint4s == f.uint4s) return;
-            f.records?.Release();
+            ReleaseRecords(f);
             f.records = new GraphicsBuffer(GraphicsBuffer.Target.Structured, capacity * uint4s, CacheRecordPartBytes);
             f.capacity = capacity;
             f.uint4s = uint4s;
@@ -239,6 +244,7 @@ namespace GregoryTerrain
             if (_unused == _bound) _bound = null;
             _unused?.Release();
             _unused = null;
+            if (_noRecords == _boundRecords) _boundRecords = null;
             _noRecords?.Release();
             _noRecords = null;
             CacheRecords = 0;
@@ -253,10 +259,7 @@ namespace GregoryTerrain
                 if (e.Value.camera == null || e.Value.frame != Time.frameCount) _evicted.Add(e.Key);
             foreach (int id in _evicted)
             {
-                CameraFactors f = _byCamera[id];
-                if (f.buffer == _bound) _bound = null;
-                f.buffer?.Release();
-                f.records?.Release();
+                ReleaseCamera(_byCamera[id]);
                 _byCamera.Remove(id);
             }
         }
@@ -264,13 +267,22 @@ namespace GregoryTerrain
         void ReleaseCameraBuffers()
         {
             if (_byCamera.Count == 0) return;
-            foreach (CameraFactors f in _byCamera.Values)
-            {
-                if (f.buffer == _bound) _bound = null;
-                f.buffer?.Release();
-                f.records?.Release();
-            }
+            foreach (CameraFactors f in _byCamera.Values) ReleaseCamera(f);
             _byCamera.Clear();
+        }
+
+        void ReleaseCamera(CameraFactors f)
+        {
+            if (f.buffer == _bound) _bound = null;
+            f.buffer?.Release();
+            ReleaseRecords(f);
+        }
+
+        // A released buffer is never named again by the property block's memo (a new one may reuse nothing of it).
+        void ReleaseRecords(CameraFactors f)
+        {
+            if (f.records != null && f.records == _boundRecords) _boundRecords = null;
+            f.records?.Release();
         }
     }
 }

@@ -24,13 +24,6 @@ RWStructuredBuffer<LodFactorRecord> _LodFactorsRW GT_REGISTER(u2);
 
 uint LodDrawPatches() { return LodLevelCount() * LodTilesPerLevel(TileCountInt()); }
 
-// Whether the camera's hull culls the tile (StageTileFactors' test in the camera's view): the
-// levels' vertex cache gives it no records (LevelVertexCacheKernels.hlsl).
-bool CameraCullsTile(TileLayout l, uint slot, float3 cornerOS[4])
-{
-    return !UsesUniformTessFactor() && TileCulled(cornerOS, TileNoiseMargin(l, slot));
-}
-
 // Every lane reaches both barriers: nothing returns before them.
 [numthreads(64, 1, 1)]
 void LodFactorPieces(uint3 group : SV_GroupID, uint lane : SV_GroupIndex)

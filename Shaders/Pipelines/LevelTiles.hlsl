@@ -141,4 +141,11 @@ TerrainVertexAttributes EvaluateLodTerrainVertex(uint drawPatch, float2 tess, fl
     return EvaluatePointTerrainVertex(l, drawPatch, tess, LodVertexPoint(l, slot, drawPatch, tess, edgeFactors));
 }
 
+// Whether a pass's hull culls the tile in its view (StageTileFactors); the factor kernels ask it in the
+// camera's view, and the levels' vertex cache gives such a tile no records (LevelVertexCacheKernels.hlsl).
+bool CameraCullsTile(TileLayout l, uint slot, float3 cornerOS[4])
+{
+    return !UsesUniformTessFactor() && TileCulled(cornerOS, TileNoiseMargin(l, slot));
+}
+
 #endif // GT_LEVEL_TILES_INCLUDED

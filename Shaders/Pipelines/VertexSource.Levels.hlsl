@@ -30,7 +30,7 @@ TileFactors StageTileFactors(InputPatch<TileCorner, 4> corners)
         float3 cornerOS[4];
         [unroll] for (uint c = 0; c < 4; c++)
             cornerOS[c] = corners[c].positionOS;
-        if (!UsesUniformTessFactor() && TileCulled(cornerOS, TileNoiseMargin(l, slot))) return ToTileFactors(CulledTileFactors());
+        if (CameraCullsTile(l, slot, cornerOS)) return ToTileFactors(CulledTileFactors());
         return ToTileFactors(LodKernelTileFactors(patch));
     }
     return ToTileFactors(LodTileFactors(patch, CornerTileFactors(l, slot, corners)));
@@ -48,8 +48,19 @@ TerrainVaryings StageDomainVertex(TileFactors factors, uint drawPatch, float2 te
         drawn.inside = float2(factors.inside[0], factors.inside[1]);
         drawn = VertexCacheIntegerFactors(drawn);
         int first = LodFirstRecord(drawPatch);
-        if (first >= 0) return CachedTerrainVaryings(LevelVertexCacheRecord((uint)first, tess, drawn), tessFactor);
-        tess = LevelVertexCachePointTess(tess, drawn);
+        float2 kernelTess = LevelVertexCachePointTess(tess, drawn);
+        if (first >= 0)
+        {
+            TerrainVaryings v = CachedTerrainVaryings(LevelVertexCacheRecord((uint)first, tess, drawn), tessFactor);
+#if defined(GT_DEBUG_PATCH_ID)
+            // The record has no room for the patch index: the debug view finds it at the kernel's point.
+            uint s;
+            TileLayout t = StageTileLayout(drawPatch, s);
+            v.patch = FindPatchAt(LodVertexPoint(t, s, drawPatch, kernelTess, edge));
+#endif
+            return v;
+        }
+        tess = kernelTess;
     }
     uint slot;
     TileLayout l = StageTileLayout(drawPatch, slot);

@@ -20,7 +20,7 @@ namespace GregoryTerrain.Rig.Tests
     public class LevelVertexCacheGpuTests
     {
         const int Tiles = 8;
-        const string Levels = "lod+noise", Readback = "readback+lod+noise";
+        const string Levels = "lod+noise", Readback = "readback+lod+noise", PatchIdView = "lod+noise+debug_patch_id";
         const int RecordFloats = LodFactorRecord.Stride / 4;
         string _work, _spirv;
         PatchGrid _grid;
@@ -30,7 +30,7 @@ namespace GregoryTerrain.Rig.Tests
         public void CompileShaders()
         {
             _work = ReadbackRun.PrepareWork("rigtests-level-vertex-cache");
-            _spirv = ReadbackRun.CompileVariants(_work, Levels, Readback);
+            _spirv = ReadbackRun.CompileVariants(_work, Levels, Readback, PatchIdView);
             _grid = HardCaseGrids.Fitted();
         }
 
@@ -271,6 +271,22 @@ namespace GregoryTerrain.Rig.Tests
             Assert.That(today.Triangles, Is.EqualTo(domain.Triangles));
             Assert.That(fullDiffers, Is.EqualTo(0), "the cached picture is the domain stage's");
             Assert.That(halfDiffers, Is.EqualTo(0), "the tiles past the buffer's end draw as if cached");
+        }
+
+        /// <summary>
+        /// The Patch Id debug view shows the same colours from the cache as from the domain stage at the
+        /// same points: a record holds no patch index, so the domain stage finds it at the kernel's point.
+        /// </summary>
+        [Test]
+        public void ThePatchIdViewFromTheCacheIsTheDomainStages()
+        {
+            Frame domain = Draw(Scene(1e5, 0, DomainStageRecords), PatchIdView, "patch-id-domain");
+            Frame cached = Draw(Scene(1e5, 0, 1 << 22), PatchIdView, "patch-id-cached");
+            AssertFirstRecordsAreCores(cached, out int withRecords, out _);
+            int differs = cached.Image.PixelsDifferingFrom(domain.Image, 1);
+            TestContext.Out.WriteLine($"Patch Id view, 100 km: {withRecords} tiles with records; pixels differing by > 1/255 from the domain stage's: {differs} of {cached.Image.Width * cached.Image.Height}");
+            Assert.That(withRecords, Is.GreaterThan(Tiles * Tiles), "tiles of several levels drawn from records");
+            Assert.That(differs, Is.EqualTo(0), "every cached vertex carries its own patch's colour");
         }
     }
 }
