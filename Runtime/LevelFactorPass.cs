@@ -63,7 +63,8 @@ namespace GregoryTerrain
         /// <summary>A camera's frame, after the plan: dispatches or stops. True when the hull's switch or the records' count changed (<c>_LodLevels</c> to send).</summary>
         public bool UpdateFrame(GregoryTerrainRenderer r, Camera cam, bool fallback, FrameState state, TerrainGpuBuffers gpu, MaterialPropertyBlock props)
         {
-            if (cam == null || cam.pixelWidth <= 0 || cam.pixelHeight <= 0) return false;   // draws nothing
+            // Draws nothing; the single range's pass may bind _VertexCache meanwhile, so the records' memo goes.
+            if (cam == null || cam.pixelWidth <= 0 || cam.pixelHeight <= 0) { _boundRecords = null; return false; }
             FrameResources keys = state.resources;
             bool was = keys.UsesLevelKernels;
             string reason = r.LevelsOn(fallback) ? UnavailableReason(r.CacheShader) : null;

@@ -39,7 +39,7 @@ void LodFactorPieces(uint3 group : SV_GroupID, uint lane : SV_GroupIndex)
     GroupMemoryBarrierWithGroupSync();
     if (lane != 0u || patch >= LodDrawPatches()) return;
     _LodFactorsRW[patch].pieces[0] = float4(gtTileFactorPieces[0], gtTileFactorPieces[1], gtTileFactorPieces[2], gtTileFactorPieces[3]);
-    _LodFactorsRW[patch].pieces[1] = float4(gtTileFactorPieces[4], gtTileFactorPieces[5], gtTileFactorPieces[6], CameraCullsTile(l, slot, cornerOS) ? 1.0 : 0.0);
+    _LodFactorsRW[patch].pieces[1] = float4(gtTileFactorPieces[4], gtTileFactorPieces[5], gtTileFactorPieces[6], ViewCullsTile(l, slot, cornerOS) ? 1.0 : 0.0);
 }
 
 // ComputeTileFactors from the pieces LodFactorPieces wrote.

@@ -143,7 +143,7 @@ TerrainVertexAttributes EvaluateLodTerrainVertex(uint drawPatch, float2 tess, fl
 
 // Whether a pass's hull culls the tile in its view (StageTileFactors); the factor kernels ask it in the
 // camera's view, and the levels' vertex cache gives such a tile no records (LevelVertexCacheKernels.hlsl).
-bool CameraCullsTile(TileLayout l, uint slot, float3 cornerOS[4])
+bool ViewCullsTile(TileLayout l, uint slot, float3 cornerOS[4])
 {
     return !UsesUniformTessFactor() && TileCulled(cornerOS, TileNoiseMargin(l, slot));
 }

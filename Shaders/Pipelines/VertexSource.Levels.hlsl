@@ -30,7 +30,7 @@ TileFactors StageTileFactors(InputPatch<TileCorner, 4> corners)
         float3 cornerOS[4];
         [unroll] for (uint c = 0; c < 4; c++)
             cornerOS[c] = corners[c].positionOS;
-        if (CameraCullsTile(l, slot, cornerOS)) return ToTileFactors(CulledTileFactors());
+        if (ViewCullsTile(l, slot, cornerOS)) return ToTileFactors(CulledTileFactors());
         return ToTileFactors(LodKernelTileFactors(patch));
     }
     return ToTileFactors(LodTileFactors(patch, CornerTileFactors(l, slot, corners)));
