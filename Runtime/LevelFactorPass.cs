@@ -51,11 +51,9 @@ namespace GregoryTerrain
             {
                 long records = _unused != null ? 1 : 0, cache = _noRecords != null ? 2 : 0;
                 foreach (CameraFactors f in _byCamera.Values) { records += f.patches; cache += (long)f.capacity * f.uint4s; }
-                return records * LodFactorRecord.Stride + cache * CacheRecordPartBytes;
+                return records * LodFactorRecord.Stride + cache * GpuLayout.Uint4Stride;
             }
         }
-
-        const int CacheRecordPartBytes = 16;   // a uint4
 
         /// <summary>The records the camera's draw reads from (<c>_LodLevels.z</c>), 0 when the domain stage evaluates every vertex.</summary>
         public int CacheRecords { get; private set; }
@@ -89,7 +87,7 @@ namespace GregoryTerrain
             return !was || changed;
         }
 
-        GraphicsBuffer NoRecords() => _noRecords ??= new GraphicsBuffer(GraphicsBuffer.Target.Structured, 2, CacheRecordPartBytes);
+        GraphicsBuffer NoRecords() => _noRecords ??= new GraphicsBuffer(GraphicsBuffer.Target.Structured, 2, GpuLayout.Uint4Stride);
 
         /// <summary>Binds the draw's records and their count; true when the count changed (<c>_LodLevels</c> to send).</summary>
         bool BindRecords(MaterialPropertyBlock props, GraphicsBuffer records, int count)
@@ -122,10 +120,11 @@ namespace GregoryTerrain
             int limit = VertexCache.FactorLimit(state.parameters.tess);
             int capacity = f.records == null ? LevelVertexCache.FirstRecords(LodLevels.DrawnTileCount(state.levelCount, tiles), limit)
                                              : LevelVertexCache.GrownRecords(f.needed, f.capacity);
-            capacity = System.Math.Min(capacity, LevelVertexCache.RecordLimit(uint4s * CacheRecordPartBytes));   // past it, tiles draw through the domain stage
+            // Past the device's largest buffer, tiles draw through the domain stage.
+            capacity = System.Math.Min(capacity, LevelVertexCache.RecordLimit(uint4s * GpuLayout.Uint4Stride, SystemInfo.maxGraphicsBufferSize));
             if (f.records != null && capacity == f.capacity && uint4s == f.uint4s) return;
             ReleaseRecords(f);
-            f.records = new GraphicsBuffer(GraphicsBuffer.Target.Structured, capacity * uint4s, CacheRecordPartBytes);
+            f.records = new GraphicsBuffer(GraphicsBuffer.Target.Structured, capacity * uint4s, GpuLayout.Uint4Stride);
             f.capacity = capacity;
             f.uint4s = uint4s;
         }

@@ -108,10 +108,11 @@ namespace GregoryTerrain.Rig.Tests
             Assert.That(LevelVertexCache.GrownRecords(1L << 30, 1000), Is.EqualTo(LevelVertexCache.MaxRecords));
             Assert.That(LevelVertexCache.FirstRecords(1 << 20, 64), Is.EqualTo(LevelVertexCache.MaxRecords));
             Assert.That((float)LevelVertexCache.MaxRecords - 1f, Is.Not.EqualTo((float)LevelVertexCache.MaxRecords), "every count below the bound is exact in float");
-            // Vulkan's guaranteed storage buffer range (2^27 bytes): 16-byte records stop at 2^23, 32-byte (snow) at 2^22.
-            Assert.That(LevelVertexCache.RecordLimit(16), Is.EqualTo(1 << 23));
-            Assert.That(LevelVertexCache.RecordLimit(32), Is.EqualTo(1 << 22));
-            Assert.That(LevelVertexCache.RecordLimit(4), Is.EqualTo(LevelVertexCache.MaxRecords), "small records: the float bound first");
+            // The device's largest buffer: at 2^27 bytes 16-byte records stop at 2^23, 32-byte (snow) at 2^22.
+            Assert.That(LevelVertexCache.RecordLimit(16, 1L << 27), Is.EqualTo(1 << 23));
+            Assert.That(LevelVertexCache.RecordLimit(32, 1L << 27), Is.EqualTo(1 << 22));
+            Assert.That(LevelVertexCache.RecordLimit(16, 0), Is.EqualTo(LevelVertexCache.MaxRecords), "unknown device limit: the float bound");
+            Assert.That(LevelVertexCache.RecordLimit(4, 1L << 40), Is.EqualTo(LevelVertexCache.MaxRecords), "small records: the float bound first");
             var e = Assert.Throws<ArgumentOutOfRangeException>(() => LevelVertexCache.FirstRecords(-1, 64));
             Assert.That(e.ParamName, Is.EqualTo("drawnTiles"));
         }

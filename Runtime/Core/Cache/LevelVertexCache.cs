@@ -16,11 +16,16 @@ namespace GregoryTerrain
         /// <summary>Records a buffer holds at most: C (<c>_LodLevels.z</c>) and first records are floats, exact below 2^24.</summary>
         public const int MaxRecords = 1 << 24;
 
-        /// <summary>A buffer's bytes at most: Vulkan guarantees a storage buffer range of 2^27 bytes (maxStorageBufferRange), no more.</summary>
-        public const int MaxBufferBytes = 1 << 27;
-
-        /// <summary>The records a buffer of <paramref name="recordBytes"/>-byte records can hold: <see cref="MaxRecords"/> and <see cref="MaxBufferBytes"/>.</summary>
-        public static int RecordLimit(int recordBytes) => Math.Min(MaxRecords, MaxBufferBytes / recordBytes);
+        /// <summary>
+        /// The records a buffer of <paramref name="recordBytes"/>-byte records can hold: <see cref="MaxRecords"/>, the
+        /// device's largest buffer (<paramref name="maxBufferBytes"/>; Unity: <c>SystemInfo.maxGraphicsBufferSize</c>, 0 when
+        /// unknown) and <see cref="GpuLayout.MaxBufferBytes"/>, as the single range's cache (VertexCacheBudget.CheckFits).
+        /// </summary>
+        public static int RecordLimit(int recordBytes, long maxBufferBytes)
+        {
+            long bytes = maxBufferBytes > 0 ? Math.Min(maxBufferBytes, GpuLayout.MaxBufferBytes) : GpuLayout.MaxBufferBytes;
+            return (int)Math.Min(MaxRecords, bytes / recordBytes);
+        }
 
         /// <summary>A camera's first buffer: a 16th of S(<paramref name="factorLimit"/>) a drawn tile; it grows (<see cref="GrownRecords"/>).</summary>
         public static int FirstRecords(int drawnTiles, int factorLimit)
