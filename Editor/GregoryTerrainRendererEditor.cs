@@ -57,7 +57,7 @@ namespace GregoryTerrain.EditorTools
                 EditorGUILayout.LabelField(new GUIContent("Vertex cache memory", "GPU memory the Compute cache's buffers take at these settings."),
                     new GUIContent(FormatBytes(r.VertexCacheBytes)));
             else if (r.LevelCount > 0)
-                EditorGUILayout.LabelField(new GUIContent("Levels' buffer memory", "GPU memory the Horizon levels' buffers use now, for every camera that has drawn them. A camera's vertex buffer grows with its view, up to the GPU's largest buffer."),
+                EditorGUILayout.LabelField(new GUIContent("Levels' buffer memory", "GPU memory the Horizon levels' buffers use now, for every camera that has drawn them. Each camera has a buffer of tile factors and a vertex buffer that grows with its view, up to 128 MiB."),
                     new GUIContent(FormatBytes(r.VertexCacheAllocatedBytes)));
             if (cache && !SystemInfo.supportsComputeShaders)
                 EditorGUILayout.HelpBox("Vertex evaluation is Compute cache, but this GPU has no compute shaders (SystemInfo.supportsComputeShaders is false): the domain stage evaluates the vertices instead.", MessageType.Warning);

@@ -62,7 +62,8 @@ namespace GregoryTerrain
         public bool UpdateFrame(GregoryTerrainRenderer r, Camera cam, bool fallback, FrameState state, TerrainGpuBuffers gpu, MaterialPropertyBlock props)
         {
             // Draws nothing; the single range's pass may bind _VertexCache meanwhile, so the records' memo goes.
-            if (cam == null || cam.pixelWidth <= 0 || cam.pixelHeight <= 0) { _boundRecords = null; return false; }
+            // With the levels off the release below runs whatever the camera.
+            if ((cam == null || cam.pixelWidth <= 0 || cam.pixelHeight <= 0) && r.LevelsOn(fallback)) { _boundRecords = null; return false; }
             FrameResources keys = state.resources;
             bool was = keys.UsesLevelKernels;
             string reason = r.LevelsOn(fallback) ? UnavailableReason(r.CacheShader) : null;
@@ -120,7 +121,7 @@ namespace GregoryTerrain
             int limit = VertexCache.FactorLimit(state.parameters.tess);
             int capacity = f.records == null ? LevelVertexCache.FirstRecords(LodLevels.DrawnTileCount(state.levelCount, tiles), limit)
                                              : LevelVertexCache.GrownRecords(f.needed, f.capacity);
-            // Past the device's largest buffer, tiles draw through the domain stage.
+            // Past what a device binds or allocates, tiles draw through the domain stage.
             capacity = System.Math.Min(capacity, LevelVertexCache.RecordLimit(uint4s * GpuLayout.Uint4Stride, SystemInfo.maxGraphicsBufferSize));
             if (f.records != null && capacity == f.capacity && uint4s == f.uint4s) return;
             ReleaseRecords(f);

@@ -4,8 +4,10 @@
 // TerrainCache.compute; the rig: Tools~/rig/TerrainRig.hlsl).
 //
 //   LodFactorPieces   a group per draw patch, dispatch (M^2, L, 1): the tile's samples one a lane,
-//                     its seven pieces one a lane (CacheTileFactors' split); no culling: each pass
-//                     culls in its own view in the hull (StageTileFactors), shadow maps included
+//                     its seven pieces one a lane (CacheTileFactors' split); the factors are culled in
+//                     no view (each pass culls in its own in the hull, StageTileFactors, shadow maps
+//                     included); pieces[1].w flags a tile the camera's view culls (ViewCullsTile), which
+//                     the vertex cache gives no records
 //   LodFactorSeams    a thread per draw patch, dispatch (ceil(L M^2 / 64), 1, 1): the tile's factors
 //                     from its pieces, then the seam rule (LodSeamFactors), the coarse edge across a
 //                     fine seam read from the coarse tile's pieces, not computed again

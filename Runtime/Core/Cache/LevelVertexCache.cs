@@ -17,13 +17,19 @@ namespace GregoryTerrain
         public const int MaxRecords = 1 << 24;
 
         /// <summary>
-        /// The records a buffer of <paramref name="recordBytes"/>-byte records can hold: <see cref="MaxRecords"/>, the
-        /// device's largest buffer (<paramref name="maxBufferBytes"/>; Unity: <c>SystemInfo.maxGraphicsBufferSize</c>, 0 when
-        /// unknown) and <see cref="GpuLayout.MaxBufferBytes"/>, as the single range's cache (VertexCacheBudget.CheckFits).
+        /// The bytes a buffer bound whole may hold: Vulkan guarantees a storage buffer range of 2^27 bytes
+        /// (maxStorageBufferRange), which may be below the largest buffer a device allocates.
+        /// </summary>
+        public const long MaxBoundBytes = 1L << 27;
+
+        /// <summary>
+        /// The records a buffer of <paramref name="recordBytes"/>-byte records can hold: <see cref="MaxRecords"/>,
+        /// <see cref="MaxBoundBytes"/> and the device's largest buffer (<paramref name="maxBufferBytes"/>; Unity:
+        /// <c>SystemInfo.maxGraphicsBufferSize</c>, 0 when unknown; <see cref="GpuLayout.MaxBufferBytes"/> at most).
         /// </summary>
         public static int RecordLimit(int recordBytes, long maxBufferBytes)
         {
-            long bytes = maxBufferBytes > 0 ? Math.Min(maxBufferBytes, GpuLayout.MaxBufferBytes) : GpuLayout.MaxBufferBytes;
+            long bytes = Math.Min(MaxBoundBytes, maxBufferBytes > 0 ? Math.Min(maxBufferBytes, GpuLayout.MaxBufferBytes) : GpuLayout.MaxBufferBytes);
             return (int)Math.Min(MaxRecords, bytes / recordBytes);
         }
 
