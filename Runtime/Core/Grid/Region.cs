@@ -6,7 +6,6 @@ namespace GregoryTerrain
     /// The part <c>[a, e] x [b, f]</c> of the terrain's unit square that one patch covers
     /// (the paper's region info, sent to the GPU once as the float4 <c>(a, b, e, f)</c>).
     /// </summary>
-    [Serializable]
     internal struct Region : IEquatable<Region>
     {
         public double a, b, e, f;

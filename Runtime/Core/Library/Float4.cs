@@ -3,7 +3,6 @@ using System;
 namespace GregoryTerrain
 {
     /// <summary>Four floats, the GPU's float4: what a shader constant such as <c>_Range</c> holds.</summary>
-    [Serializable]
     internal struct Float4 : IEquatable<Float4>
     {
         public float x, y, z, w;

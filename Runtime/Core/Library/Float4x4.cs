@@ -6,7 +6,6 @@ namespace GregoryTerrain
     /// A 4x4 float matrix stored as four columns, used with column vectors (<c>clip = M * p</c>), the
     /// convention of Unity's <c>Matrix4x4</c> and of HLSL's <c>mul(M, v)</c> in Unity shaders.
     /// </summary>
-    [Serializable]
     internal struct Float4x4 : IEquatable<Float4x4>
     {
         public Float4 c0, c1, c2, c3;
