@@ -134,8 +134,8 @@ float3 UnpackCachedVaryings(uint bits)
 // the adapter's GT_ObjectToWorldNormal, encoded; the height weight), so the domain stage only
 // projects the position. uint4, not float4: the packed word is any bit pattern, NaNs included, and
 // integer loads and stores keep every bit. 16 bytes: the cached draw's cost is its reads
-// (Tools~/bench/records.md, "Choices in the shaders, measured"). The patch index is not kept
-// (GT_DEBUG_PATCH_ID reads 0).
+// (Tools~/bench/records.md, "Choices in the shaders, measured"). The patch index is not kept (the
+// GT_DEBUG_PATCH_ID view finds it in the domain stage).
 uint4 VertexCacheRecordPart(TerrainVertexAttributes a, uint part)
 {
     if (part == 0u)

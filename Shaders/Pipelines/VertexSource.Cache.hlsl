@@ -46,7 +46,7 @@ TileFactors StageTileFactors(InputPatch<TileCorner, 4> corners)
 }
 
 // The compute pass evaluated this vertex into its slot (a clipped tile's: from its cell's records).
-TerrainVaryings StageDomainVertex(TileFactors factors, uint drawPatch, float2 tess, float tessFactor)
+TerrainVaryings CachedTileVaryings(TileFactors factors, uint drawPatch, float2 tess, float tessFactor)
 {
     float4 edge = float4(factors.edge[0], factors.edge[1], factors.edge[2], factors.edge[3]);
     float2 inside = float2(factors.inside[0], factors.inside[1]);
@@ -61,6 +61,16 @@ TerrainVaryings StageDomainVertex(TileFactors factors, uint drawPatch, float2 te
         return CachedCellPointVaryings(base, CellPoint(tess, tile, cell, factors.keptCellSpan, limit), tessFactor);
     }
     return CachedTerrainVaryings(base + VertexCacheSlot(tess, edge, inside, limit), tessFactor);
+}
+
+TerrainVaryings StageDomainVertex(TileFactors factors, uint drawPatch, float2 tess, float tessFactor)
+{
+    TerrainVaryings v = CachedTileVaryings(factors, drawPatch, tess, tessFactor);
+#if defined(GT_DEBUG_PATCH_ID)
+    // A record has no room for the patch index: the debug view finds it at the vertex's point.
+    v.patch = FindPatchAt(TileToTerrainPoint(FrameTileLayout(), drawPatch, tess));
+#endif
+    return v;
 }
 
 #endif // GT_VERTEX_SOURCE_CACHE_INCLUDED

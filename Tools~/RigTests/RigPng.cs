@@ -60,6 +60,14 @@ namespace GregoryTerrain.Rig.Tests
             return n;
         }
 
+        /// <summary>How many different RGB values the image holds.</summary>
+        public int DistinctColours()
+        {
+            var seen = new System.Collections.Generic.HashSet<int>();
+            for (int p = 0; p < Width * Height; p++) seen.Add(Rgba[4 * p] << 16 | Rgba[4 * p + 1] << 8 | Rgba[4 * p + 2]);
+            return seen.Count;
+        }
+
         static uint BigEndian(byte[] b, int i) => (uint)(b[i] << 24 | b[i + 1] << 16 | b[i + 2] << 8 | b[i + 3]);
     }
 }

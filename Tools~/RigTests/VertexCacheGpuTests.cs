@@ -16,6 +16,7 @@ namespace GregoryTerrain.Rig.Tests
     {
         const string Cached = "noise+height_color+vertex_cache";
         const string Direct = "noise+height_color";
+        const string CachedPatchIdView = "debug_patch_id+vertex_cache", DirectPatchIdView = "debug_patch_id";
         // The domain-stage path's hull_const writing its factors (GT_FACTOR_READBACK), same noise.
         const string HullFactors = "factor_readback+noise";
         const TerrainKeywords Keywords = TerrainKeywords.Noise | TerrainKeywords.HeightColor;
@@ -29,7 +30,7 @@ namespace GregoryTerrain.Rig.Tests
             _work = ReadbackRun.PrepareWork("rigtests-vertexcache");
             _cli = ReadbackRun.Cli();
             _grid = ReadbackRun.DemoGrid(_work, out _gridPath);
-            _spirv = ReadbackRun.CompileVariants(_work, Cached, Direct, HullFactors);
+            _spirv = ReadbackRun.CompileVariants(_work, Cached, Direct, HullFactors, CachedPatchIdView, DirectPatchIdView);
         }
 
         /// <summary>What one cached frame left in the two cache buffers.</summary>
@@ -77,7 +78,10 @@ namespace GregoryTerrain.Rig.Tests
         /// both kernels, then the tile draw; dumps both cache buffers.
         /// </summary>
         CacheFrame DrawCached(string name, string range, int tiles, string[] tessArgs, int width, int height, float[] camera = null,
-                              params string[] extra)
+                              params string[] extra) => DrawCachedVariant(Cached, name, range, tiles, tessArgs, width, height, camera, extra);
+
+        CacheFrame DrawCachedVariant(string variant, string name, string range, int tiles, string[] tessArgs, int width, int height,
+                                     float[] camera, string[] extra)
         {
             string dir = Path.Combine(_work, name);
             var pack = new List<string> { "pack", "--grid", _gridPath, "--range", range, "--tiles", tiles.ToString(CultureInfo.InvariantCulture),
@@ -90,14 +94,14 @@ namespace GregoryTerrain.Rig.Tests
             var frame = new CacheFrame { Tiles = tiles, Inputs = TerrainInputs.Create(_grid, p), Limit = VertexCache.FactorLimit(p.tess) };
             frame.Slots = VertexCache.SlotsPerTile(frame.Limit);
             string factors = Path.Combine(dir, "tile_factors.f32"), records = Path.Combine(dir, "vertex_cache.u32"), cells = Path.Combine(dir, "tile_cells.f32");
-            var args = new List<string>(ReadbackRun.Stages(_spirv, Cached));
+            var args = new List<string>(ReadbackRun.Stages(_spirv, variant));
             args.AddRange(new[]
             {
                 "--buffers", dir, "--patches", (tiles * tiles).ToString(CultureInfo.InvariantCulture),
                 "--width", width.ToString(CultureInfo.InvariantCulture), "--height", height.ToString(CultureInfo.InvariantCulture),
                 "--device", "llvmpipe", "--stats", "--png", Path.Combine(dir, "image.png"),
             });
-            args.AddRange(ReadbackRun.VertexCacheArgs(Path.Combine(_spirv, Cached), tiles, frame.Limit, false, factors, records, cells));
+            args.AddRange(ReadbackRun.VertexCacheArgs(Path.Combine(_spirv, variant), tiles, frame.Limit, false, factors, records, cells));
             args.AddRange(extra);
             frame.Run = HarnessRun.Harness(args.ToArray());
             frame.Run.AssertSucceeded();
@@ -203,6 +207,34 @@ namespace GregoryTerrain.Rig.Tests
             Assert.That(nonsky, Is.GreaterThan(192 * 128 / 5), "the terrain fills the view");
             Assert.That(cached.Run.Long("stat", "clipping_invocations"), Is.EqualTo(direct.Long("stat", "clipping_invocations")), "same triangles");
             Assert.That(differing, Is.LessThan(192 * 128 / 200), "at most 0.5% of the pixels differ");
+        }
+
+        /// <summary>
+        /// The Patch Id debug view over the cache: a record holds no patch index, so the domain stage
+        /// finds it at the vertex's point, which must give the direct draw's colours (whole tiles and
+        /// tiles the anchored range clips). Before: patch 0 on every cached vertex.
+        /// </summary>
+        [TestCase("0,0,1,1", null)]
+        [TestCase("0.1,0.1,0.9,0.9", "0.155,0.135,0.955,0.935")]
+        public void ThePatchIdViewOverTheCacheIsTheDirectDraws(string range, string anchor)
+        {
+            string name = anchor == null ? "patch-id" : "patch-id-anchored";
+            string[] tess = anchor == null ? new[] { "--factor", "7" } : new[] { "--factor", "7", "--anchor-at", anchor };
+            CacheFrame cached = DrawCachedVariant(CachedPatchIdView, name, range, 8, tess, 192, 128, null, Array.Empty<string>());
+            string dir = Path.Combine(_work, name), png = Path.Combine(dir, "direct.png");
+            HarnessRun direct = HarnessRun.Harness(ReadbackRun.Stages(_spirv, DirectPatchIdView).Concat(new[]
+            {
+                "--buffers", dir, "--patches", (cached.Tiles * cached.Tiles).ToString(CultureInfo.InvariantCulture),
+                "--width", "192", "--height", "128", "--device", "llvmpipe", "--stats", "--png", png,
+            }).ToArray());
+            direct.AssertSucceeded();
+            RigPng a = RigPng.Read(Path.Combine(dir, "image.png")), b = RigPng.Read(png);
+            int differing = a.PixelsDifferingFrom(b, 8), colours = a.DistinctColours();
+            TestContext.Out.WriteLine("Patch Id view, cached vs direct ({0}): {1} of {2} pixels differ by more than 8/255; {3} colours in the cached picture",
+                                      name, differing, 192 * 128, colours);
+            Assert.That(direct.Long("image", "nonsky_pixels"), Is.GreaterThan(192 * 128 / 5), "the terrain fills the view");
+            Assert.That(colours, Is.GreaterThan(8), "many patches' colours in view");
+            Assert.That(differing, Is.LessThan(192 * 128 / 200), "at most 0.5% of the pixels (patch borders moved by sub-pixel shifts) differ");
         }
 
         /// <summary>
