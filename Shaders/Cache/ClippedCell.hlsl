@@ -134,6 +134,29 @@ CellPointBlend CellPoint(float2 tess, TileFactorSet tile, TileFactorSet cell, fl
                          KeptLinePosition(cell.inside.y, kept.z, kept.w, tile.inside.y, ij.y), cell.inside.x);
 }
 
+// Where the record in `slot` of a cell drawn at `cell` was evaluated, in the cell's tess
+// coordinates: the point the kernel (VertexCachePoint, whole grid) gave that slot.
+float2 CellSlotTess(uint slot, TileFactorSet cell, uint limit)
+{
+    uint grid = VertexCacheEdgeSlot(0u, 0u, limit);
+    if (slot < grid)
+    {
+        uint w = (uint)cell.inside.x + 1u;
+        return float2(slot % w, slot / w) / cell.inside;
+    }
+    uint e = (slot - grid) / (limit + 1u);
+    return VertexCacheEdgeTess(e, slot - VertexCacheEdgeSlot(e, 0u, limit), CellFactorOfEdge(cell.edge, e));
+}
+
+// Where the vertex that blends p lies in its cell, tess coordinates: its records' points blended as
+// their values are. The Patch Id view looks the patch up there (a record has no patch index).
+float2 CellPointTess(CellPointBlend p, TileFactorSet cell, uint limit)
+{
+    float2 ab = lerp(CellSlotTess(p.slots.x, cell, limit), CellSlotTess(p.slots.y, cell, limit), p.t.x);
+    float2 cd = lerp(CellSlotTess(p.slots.z, cell, limit), CellSlotTess(p.slots.w, cell, limit), p.t.x);
+    return lerp(ab, cd, p.t.y);
+}
+
 #if defined(GT_VERTEX_CACHE)
 // A record's position, fragment numbers and snow, unpacked for blending.
 struct CachedCellRecord

@@ -62,6 +62,14 @@ TileFactors ToTileFactors(TileFactorSet set)
     return f;
 }
 
+TileFactorSet FromTileFactors(TileFactors f)
+{
+    TileFactorSet set;
+    set.edge = float4(f.edge[0], f.edge[1], f.edge[2], f.edge[3]);
+    set.inside = float2(f.inside[0], f.inside[1]);
+    return set;
+}
+
 // The factors of tile `slot` of layout l from its corners' surface points (vert).
 TileFactorSet CornerTileFactors(TileLayout l, uint slot, InputPatch<TileCorner, 4> corners)
 {

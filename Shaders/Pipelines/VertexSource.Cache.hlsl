@@ -48,27 +48,31 @@ TileFactors StageTileFactors(InputPatch<TileCorner, 4> corners)
 // The compute pass evaluated this vertex into its slot (a clipped tile's: from its cell's records).
 TerrainVaryings CachedTileVaryings(TileFactors factors, uint drawPatch, float2 tess, float tessFactor)
 {
-    float4 edge = float4(factors.edge[0], factors.edge[1], factors.edge[2], factors.edge[3]);
-    float2 inside = float2(factors.inside[0], factors.inside[1]);
+    TileFactorSet tile = FromTileFactors(factors);
     uint limit = VertexCacheFactorLimit();
     uint base = drawPatch * VertexCacheSlotsPerTile(limit);
     if (!CellKeptWhole(factors.keptCellSpan))
-    {
-        TileFactorSet tile;
-        tile.edge = edge;
-        tile.inside = inside;
-        TileFactorSet cell = CachedCellFactors(drawPatch);
-        return CachedCellPointVaryings(base, CellPoint(tess, tile, cell, factors.keptCellSpan, limit), tessFactor);
-    }
-    return CachedTerrainVaryings(base + VertexCacheSlot(tess, edge, inside, limit), tessFactor);
+        return CachedCellPointVaryings(base, CellPoint(tess, tile, CachedCellFactors(drawPatch), factors.keptCellSpan, limit), tessFactor);
+    return CachedTerrainVaryings(base + VertexCacheSlot(tess, tile.edge, tile.inside, limit), tessFactor);
 }
+
+#if defined(GT_DEBUG_PATCH_ID)
+// A record has no room for the patch index: the Patch Id view looks it up where the kernel evaluated
+// the vertex's records (on a clipped tile, its cell's points, not the tile's evenly spread ones).
+uint CachedVertexPatch(TileFactors factors, uint drawPatch, float2 tess)
+{
+    TileFactorSet cell = CachedCellFactors(drawPatch);
+    uint limit = VertexCacheFactorLimit();
+    CellPointBlend p = CellPoint(tess, FromTileFactors(factors), cell, factors.keptCellSpan, limit);
+    return FindPatchAt(CellToTerrainPoint(FrameTileLayout(), drawPatch, CellPointTess(p, cell, limit)));
+}
+#endif
 
 TerrainVaryings StageDomainVertex(TileFactors factors, uint drawPatch, float2 tess, float tessFactor)
 {
     TerrainVaryings v = CachedTileVaryings(factors, drawPatch, tess, tessFactor);
 #if defined(GT_DEBUG_PATCH_ID)
-    // A record has no room for the patch index: the debug view finds it at the vertex's point.
-    v.patch = FindPatchAt(TileToTerrainPoint(FrameTileLayout(), drawPatch, tess));
+    v.patch = CachedVertexPatch(factors, drawPatch, tess);
 #endif
     return v;
 }

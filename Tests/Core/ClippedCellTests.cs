@@ -95,23 +95,10 @@ namespace GregoryTerrain.Tests
             return new Tile { slot = slot, cell = cell, kept = kept, drawn = ClippedCell.ClippedTileFactors(cell, kept) };
         }
 
-        // Where the kernel evaluates slot `s` of a tile's cell: a grid point (i / Iu, j / Iv) or an
-        // edge point, as a terrain point (equal bits: equal records).
+        // Where the kernel evaluates slot `s` of a tile's cell, as a terrain point (equal bits: equal records).
         static Float2 SlotPoint(TerrainParams p, Tile t, int s)
         {
-            int grid = (Limit + 1) * (Limit + 1);
-            Float2 tess;
-            if (s < grid)
-            {
-                int w = (int)t.cell.inside.x + 1;
-                tess = new Float2((s % w) / t.cell.inside.x, (s / w) / t.cell.inside.y);
-            }
-            else
-            {
-                int e = (s - grid) / (Limit + 1), k = (s - grid) % (Limit + 1);
-                float[] fe = { t.cell.edge.x, t.cell.edge.y, t.cell.edge.z, t.cell.edge.w };
-                tess = VertexCache.EdgeTess(e, k, fe[e]);
-            }
+            Float2 tess = ClippedCell.CellSlotTess(s, t.cell, Limit);
             return TileLattice.CellToTerrainPoint(p, t.slot, tess.x, tess.y).local;
         }
 
@@ -134,6 +121,8 @@ namespace GregoryTerrain.Tests
             Float2 cd = b.t.x > 0f ? L(SlotPoint(p, t, b.c), SlotPoint(p, t, b.d), b.t.x) : SlotPoint(p, t, b.c);
             return L(ab, cd, b.t.y);
         }
+
+        static float Distance(Float2 a, Float2 b) => MathF.Sqrt((a.x - b.x) * (a.x - b.x) + (a.y - b.y) * (a.y - b.y));
 
         static float Edge(TileFactorSet f, int e) => e == 0 ? f.edge.x : e == 1 ? f.edge.y : e == 2 ? f.edge.z : f.edge.w;
 
@@ -210,6 +199,54 @@ namespace GregoryTerrain.Tests
                         Assert.That(q.x > span.x && q.x < span.z && q.y > span.y && q.y < span.w, Is.True, $"{at}, inside ({gi}, {gj}): {q} in {span}");
                     }
             }
+        }
+
+        [Test]
+        public void CellSlotTessIsThePointTheKernelWroteEverySlotAt()
+        {
+            int checkedSlots = 0;
+            foreach (var f in new[] { new TileFactorSet(new Float4(5f, 6f, 7f, 8f), new Float2(9f, 10f)), CellFactors(3, 5), CellFactors(-2, 7),
+                                      new TileFactorSet(new Float4(1f, 64f, 13f, 2f), new Float2(64f, 2f)) })
+                foreach (var (tess, slot) in VertexCache.TilePoints(f, Limit, anchored: true))
+                {
+                    Assert.That(ClippedCell.CellSlotTess(slot, f, Limit), Is.EqualTo(tess), $"factors {f}, slot {slot}");
+                    checkedSlots++;
+                }
+            Assert.That(checkedSlots, Is.GreaterThan(4 * 4 * 10), "grid and edge slots");
+        }
+
+        /// <summary>
+        /// CellPointTess is where a vertex lies (its records' points blended as their values are), so
+        /// the Patch Id view over the cache finds the patch there: exactly a record's own point where
+        /// the vertex reads one record, else within a float step of the blended point. On a clipped
+        /// tile that is not the tile's evenly spread point (what the domain stage would evaluate).
+        /// </summary>
+        [Test]
+        public void CellPointTessIsWhereAClippedTilesVertexLies()
+        {
+            int vertices = 0, offTilePoint = 0;
+            foreach (var (p, _, _, t, at) in DrawnTiles())
+            {
+                void Check(Float2 tess, string which)
+                {
+                    CellPointBlend b = ClippedCell.CellPoint(tess, t.drawn, t.cell, t.kept, Limit);
+                    Float2 cellTess = ClippedCell.CellPointTess(b, t.cell, Limit);
+                    Float2 q = TileLattice.CellToTerrainPoint(p, t.slot, cellTess.x, cellTess.y).local, placed = Place(p, t, b);
+                    bool oneRecord = b.t.x == 0f && b.t.y == 0f;
+                    if (oneRecord) Assert.That(q, Is.EqualTo(SlotPoint(p, t, b.a)), $"{at}, {which}: the record's own point");
+                    Assert.That(Distance(q, placed), Is.LessThan(1e-6f), $"{at}, {which}: {q} against {placed}");
+                    if (Distance(q, TileLattice.TileToTerrainPoint(p, t.slot, tess.x, tess.y).local) > 1e-5f) offTilePoint++;
+                    vertices++;
+                }
+                for (int e = 0; e < 4; e++)
+                    for (int k = 0; k <= (int)Edge(t.drawn, e); k++)
+                        Check(VertexCache.EdgeTess(e, k, Edge(t.drawn, e)), $"edge {e} vertex {k}");
+                for (int gj = 1; gj < (int)t.drawn.inside.y; gj++)
+                    for (int gi = 1; gi < (int)t.drawn.inside.x; gi++)
+                        Check(new Float2(gi / t.drawn.inside.x, gj / t.drawn.inside.y), $"inside ({gi}, {gj})");
+            }
+            TestContext.Out.WriteLine($"{vertices} vertices, {offTilePoint} of them away from the tile's evenly spread point");
+            Assert.That(offTilePoint, Is.GreaterThan(0), "clipped tiles' vertices sit on their cells' points");
         }
 
         [Test]

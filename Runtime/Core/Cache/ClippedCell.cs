@@ -152,5 +152,34 @@ namespace GregoryTerrain
             return CellGridBlend(KeptLinePosition(cell.inside.x, kept.x, kept.y, tile.inside.x, i),
                                  KeptLinePosition(cell.inside.y, kept.z, kept.w, tile.inside.y, j), cell.inside.x);
         }
+
+        /// <summary>
+        /// Where the record in <paramref name="slot"/> of a cell drawn at <paramref name="cell"/> was
+        /// evaluated, in the cell's tess coordinates: the point <see cref="VertexCache.TilePoints"/>
+        /// (anchored) gives that slot. HLSL <c>CellSlotTess</c>.
+        /// </summary>
+        public static Float2 CellSlotTess(int slot, TileFactorSet cell, int limit)
+        {
+            int grid = VertexCache.EdgeSlot(0, 0, limit);
+            if (slot < grid)
+            {
+                int w = (int)cell.inside.x + 1;
+                return new Float2((slot % w) / cell.inside.x, (slot / w) / cell.inside.y);
+            }
+            int e = (slot - grid) / (limit + 1);
+            return VertexCache.EdgeTess(e, slot - VertexCache.EdgeSlot(e, 0, limit), CellFactorOfEdge(cell.edge, e));
+        }
+
+        /// <summary>
+        /// Where the vertex that blends <paramref name="p"/> lies in its cell, tess coordinates: its
+        /// records' points blended as their values are. The Patch Id view looks the patch up there
+        /// (a record has no patch index). HLSL <c>CellPointTess</c>.
+        /// </summary>
+        public static Float2 CellPointTess(CellPointBlend p, TileFactorSet cell, int limit)
+        {
+            Float2 ab = GMath.lerp(CellSlotTess(p.a, cell, limit), CellSlotTess(p.b, cell, limit), p.t.x);
+            Float2 cd = GMath.lerp(CellSlotTess(p.c, cell, limit), CellSlotTess(p.d, cell, limit), p.t.x);
+            return GMath.lerp(ab, cd, p.t.y);
+        }
     }
 }

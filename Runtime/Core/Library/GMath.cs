@@ -20,6 +20,7 @@ namespace GregoryTerrain
 
         public static float lerp(float a, float b, float t) => a + t * (b - a);
         public static double lerp(double a, double b, double t) => a + t * (b - a);
+        public static Float2 lerp(Float2 a, Float2 b, float t) => a + t * (b - a);
         public static Float3 lerp(Float3 a, Float3 b, float t) => a + t * (b - a);
         public static Double3 lerp(Double3 a, Double3 b, double t) => a + t * (b - a);
 
