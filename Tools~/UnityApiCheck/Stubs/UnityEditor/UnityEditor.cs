@@ -38,6 +38,7 @@ namespace UnityEditor
         public virtual bool RequiresConstantRepaint() => false;                              // SR:Editor.RequiresConstantRepaint
         public bool DrawDefaultInspector() => false;                                         // SR:Editor.DrawDefaultInspector
         public SerializedObject serializedObject => null;                                    // SR:Editor-serializedObject (get only)
+        public void Repaint() { }                                                            // SR:Editor.Repaint
     }
 
     // No AttributeUsage in 2022.3 (so: any target, not AllowMultiple, inherited).
@@ -189,6 +190,8 @@ namespace UnityEditor
         public static double timeSinceStartup => 0.0;                                        // SR:EditorApplication-timeSinceStartup
         public static bool isPlayingOrWillChangePlaymode => false;                           // SR:EditorApplication-isPlayingOrWillChangePlaymode (get only)
         public static event Action hierarchyChanged;                                         // SR:EditorApplication-hierarchyChanged
+        public delegate void CallbackFunction();                                             // SR:EditorApplication.CallbackFunction
+        public static CallbackFunction update;                                               // SR:EditorApplication-update (a field, not an event)
     }
 
     public sealed partial class Handles                                                      // SR:Handles (sealed partial in 2022.3)
