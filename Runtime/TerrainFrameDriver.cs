@@ -121,10 +121,10 @@ namespace GregoryTerrain
                 Graphics.RenderPrimitives(rp, MeshTopology.Quads, 4 * tileCount, 1);
         }
 
-        /// <summary>Never a preview camera or one whose culling mask leaves out our layer; in the editor one whose scene culling mask shares a bit with ours (Prefab stages).</summary>
+        /// <summary>Never a preview camera; in the editor one whose scene culling mask shares a bit with ours (Prefab stages).</summary>
         bool DrawsIn(Camera cam)
         {
-            if (cam.cameraType == CameraType.Preview || !CameraSceneFilter.RendersLayer(cam.cullingMask, _r.gameObject.layer)) return false;
+            if (cam.cameraType == CameraType.Preview) return false;
 #if UNITY_EDITOR
             return CameraSceneFilter.Draws(_r.gameObject.sceneCullingMask, SceneCullingMaskOf(cam));
 #else

@@ -23,17 +23,6 @@ namespace GregoryTerrain.Tests
         }
 
         [Test]
-        public void ACameraRendersTheLayersItsCullingMaskHolds()
-        {
-            Assert.That(CameraSceneFilter.RendersLayer(-1, 0), Is.True, "Everything, Default");
-            Assert.That(CameraSceneFilter.RendersLayer(-1, 31), Is.True, "Everything, layer 31");
-            Assert.That(CameraSceneFilter.RendersLayer(1 << 5, 5), Is.True, "UI only, on UI");
-            Assert.That(CameraSceneFilter.RendersLayer(1 << 5, 0), Is.False, "UI only, on Default");
-            Assert.That(CameraSceneFilter.RendersLayer(~(1 << 8), 8), Is.False, "all but layer 8, on 8");
-            Assert.That(CameraSceneFilter.RendersLayer(0, 0), Is.False, "Nothing");
-        }
-
-        [Test]
         public void PrefabStageIsolatesBothWays()
         {
             // Prefab Mode in isolation: the Scene view's override is 0 and its scene is the stage's.

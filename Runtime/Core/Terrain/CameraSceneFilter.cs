@@ -35,12 +35,5 @@ namespace GregoryTerrain
 
         /// <summary>True when a camera with <paramref name="cameraMask"/> draws an object with <paramref name="objectMask"/> (GameObject.sceneCullingMask).</summary>
         public static bool Draws(ulong objectMask, ulong cameraMask) => (objectMask & cameraMask) != 0;
-
-        /// <summary>
-        /// True when a camera with <paramref name="cullingMask"/> (Camera.cullingMask) renders objects on
-        /// <paramref name="layer"/> (0-31): Unity drops a scripted draw on another layer itself, so the
-        /// renderer skips that camera's frame work (range, levels' and cache kernels) too.
-        /// </summary>
-        public static bool RendersLayer(int cullingMask, int layer) => (cullingMask & (1 << layer)) != 0;
     }
 }

@@ -83,7 +83,6 @@ namespace UnityEngine
         public Matrix4x4 worldToCameraMatrix { get; set; }                            // SR:Camera-worldToCameraMatrix
         public int pixelWidth => 0;                                                   // SR:Camera-pixelWidth (read only)
         public int pixelHeight => 0;                                                  // SR:Camera-pixelHeight (read only)
-        public int cullingMask { get; set; }                                          // SR:Camera-cullingMask
     }
 
     public sealed class GL                                                            // SR:GL
