@@ -26,8 +26,9 @@ namespace GregoryTerrain.EditorTools
         const string FoldoutKeyPrefix = "GregoryTerrain.RendererEditor.";
 
         // The levels' buffers grow after a frame's readback, in Edit Mode too (the Scene view's
-        // cameras): the memory readout repaints when what it shows changed, not every frame.
-        long _shownLevelBytes = -1;
+        // cameras): the memory readout repaints once each time they change, not every frame. Noted
+        // when the repaint is asked for, so a folded or multi-object inspector never loops.
+        long _levelBytesAtRepaint;
 
         void OnEnable() => EditorApplication.update += RepaintWhenLevelMemoryChanges;
         void OnDisable() => EditorApplication.update -= RepaintWhenLevelMemoryChanges;
@@ -35,7 +36,11 @@ namespace GregoryTerrain.EditorTools
         void RepaintWhenLevelMemoryChanges()
         {
             var r = target as GregoryTerrainRenderer;
-            if (r != null && r.LevelCount > 0 && r.VertexCacheAllocatedBytes != _shownLevelBytes) Repaint();
+            if (r == null || r.LevelCount == 0) return;
+            long bytes = r.VertexCacheAllocatedBytes;
+            if (bytes == _levelBytesAtRepaint) return;
+            _levelBytesAtRepaint = bytes;
+            Repaint();
         }
 
         public override void OnInspectorGUI()
@@ -63,11 +68,8 @@ namespace GregoryTerrain.EditorTools
                 EditorGUILayout.LabelField(new GUIContent("Vertex cache memory", "GPU memory the Compute cache's buffers take at these settings."),
                     new GUIContent(FormatBytes(r.VertexCacheBytes)));
             else if (r.LevelCount > 0)
-            {
-                _shownLevelBytes = r.VertexCacheAllocatedBytes;
                 EditorGUILayout.LabelField(new GUIContent("Levels' buffer memory", "GPU memory the Horizon levels' buffers use now, for every camera that has drawn them. Each camera has a buffer of tile factors and a vertex buffer that grows with its view, up to 128 MiB."),
-                    new GUIContent(FormatBytes(_shownLevelBytes)));
-            }
+                    new GUIContent(FormatBytes(r.VertexCacheAllocatedBytes)));
             if (cache && !SystemInfo.supportsComputeShaders)
                 EditorGUILayout.HelpBox("Vertex evaluation is Compute cache, but this GPU has no compute shaders (SystemInfo.supportsComputeShaders is false): the domain stage evaluates the vertices instead.", MessageType.Warning);
             else if (cache && r.VertexCacheFallbackReason != null)
