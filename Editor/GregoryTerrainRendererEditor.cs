@@ -36,11 +36,11 @@ namespace GregoryTerrain.EditorTools
         void RepaintWhenLevelMemoryChanges()
         {
             var r = target as GregoryTerrainRenderer;
-            if (r == null || r.LevelCount == 0) return;
-            long bytes = r.VertexCacheAllocatedBytes;
+            if (r == null) return;
+            long bytes = r.VertexCacheAllocatedBytes;   // a plain sum; LevelCount asks the draw mode
             if (bytes == _levelBytesAtRepaint) return;
             _levelBytesAtRepaint = bytes;
-            Repaint();
+            if (r.LevelCount > 0) Repaint();
         }
 
         public override void OnInspectorGUI()
