@@ -168,7 +168,7 @@ namespace GregoryTerrain
             int id = cam.GetInstanceID();
             if (!_byCamera.TryGetValue(id, out CameraFactors f))
             {
-                if (_byCamera.Count >= CameraRangeOrigins.MaxCameras) EvictIdle();
+                EvictCameras(idleToo: _byCamera.Count >= CameraRangeOrigins.MaxCameras);
                 _byCamera.Add(id, f = new CameraFactors { camera = cam });
             }
             f.frame = Time.frameCount;
@@ -251,13 +251,14 @@ namespace GregoryTerrain
             CacheRecords = 0;
         }
 
-        // Buffers of destroyed cameras and of cameras not drawn this frame: a buffer a camera drew with
-        // this frame may still be read by a draw HDRP has not executed yet, so those stay.
-        void EvictIdle()
+        // When a camera is added: the buffers of destroyed cameras (records up to 128 MiB each), and at the
+        // camera limit those of cameras not drawn this frame too. A buffer a camera drew with this frame may
+        // still be read by a draw HDRP has not executed yet, so those stay.
+        void EvictCameras(bool idleToo)
         {
             _evicted.Clear();
             foreach (KeyValuePair<int, CameraFactors> e in _byCamera)
-                if (e.Value.camera == null || e.Value.frame != Time.frameCount) _evicted.Add(e.Key);
+                if (e.Value.camera == null || (idleToo && e.Value.frame != Time.frameCount)) _evicted.Add(e.Key);
             foreach (int id in _evicted)
             {
                 ReleaseCamera(_byCamera[id]);

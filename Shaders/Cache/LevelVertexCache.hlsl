@@ -11,7 +11,7 @@
 // The largest of a tile's six integer factors (VertexCacheIntegerFactors): its slot rule's L; 0 culled.
 uint LevelVertexCacheTileFactorLimit(TileFactorSet integerFactors)
 {
-    if (integerFactors.edge.x == 0.0) return 0u;
+    if (TileFactorsCulled(integerFactors)) return 0u;
     float4 e = integerFactors.edge;
     return (uint)max(max(max(e.x, e.y), max(e.z, e.w)), max(integerFactors.inside.x, integerFactors.inside.y));
 }

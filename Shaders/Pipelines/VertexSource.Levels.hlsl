@@ -43,10 +43,7 @@ TerrainVaryings StageDomainVertex(TileFactors factors, uint drawPatch, float2 te
     float4 edge = float4(factors.edge[0], factors.edge[1], factors.edge[2], factors.edge[3]);
     [branch] if (LodVertexCacheOn())
     {
-        TileFactorSet drawn;
-        drawn.edge = edge;
-        drawn.inside = float2(factors.inside[0], factors.inside[1]);
-        drawn = VertexCacheIntegerFactors(drawn);
+        TileFactorSet drawn = VertexCacheIntegerFactors(FromTileFactors(factors));
         int first = LodFirstRecord(drawPatch);
         float2 kernelTess = LevelVertexCachePointTess(tess, drawn);
         if (first >= 0)

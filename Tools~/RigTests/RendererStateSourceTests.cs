@@ -311,8 +311,10 @@ namespace GregoryTerrain.Rig.Tests
             string code = StripComments(File.ReadAllText(PackageRoot.Combine("Runtime", "LevelFactorPass.cs")));
             string update = Body(code, "UpdateFrame");
             Assert.That(update, Does.Contain("FactorsOf(cam, patches)"), "the camera's own buffer");
-            Assert.That(Body(code, "FactorsOf"), Does.Contain("EvictIdle()").And.Not.Contain("ReleaseCameraBuffers()"),
-                "past the camera limit only idle cameras' buffers go: one a camera drew with this frame may still be read by a queued draw");
+            Assert.That(Body(code, "FactorsOf"), Does.Contain("EvictCameras(idleToo: _byCamera.Count >= CameraRangeOrigins.MaxCameras)").And.Not.Contain("ReleaseCameraBuffers()"),
+                "a new camera evicts, live cameras only past the camera limit and only idle ones: one a camera drew with this frame may still be read by a queued draw");
+            Assert.That(Body(code, "EvictCameras"), Does.Contain("camera == null || (idleToo && e.Value.frame != Time.frameCount)"),
+                "destroyed cameras' buffers go when a camera is added; live ones only when idle at the camera limit");
             Assert.That(update, Does.Contain("Bind(props, f.buffer)").And.Contain("Dispatch(r, cam, state, gpu, tiles, f)"), "bound and written: the same camera's buffer");
             Assert.That(code, Does.Not.Match(@"\bGraphicsBuffer\s+_factors\b"), "no buffer shared by every camera");
             string find = Body(code, "FindKernels");
